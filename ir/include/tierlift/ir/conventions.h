@@ -1,0 +1,24 @@
+// The conventions every device must state explicitly (design.md "Conventions"): one struct,
+// one place. The interpreter, the analytic model and the Vulkan device all read it.
+#pragma once
+
+namespace tierlift::ir {
+
+enum class PixelCenter {
+  D3D9,    // pixel (i, j) centred at integer screen position (i, j)
+  Modern,  // centred at (i + 0.5, j + 0.5) as in D3D10+, GL, Vulkan
+};
+
+struct Conventions {
+  PixelCenter pixel_center = PixelCenter::D3D9;
+  // Sub-texel precision of bilinear weights: 0 = exact, N = fractions quantised to N bits
+  // (lavapipe reports 8).
+  int subtexel_bits = 0;
+  // ps_1_x: registers clamp to [-max, +max] (PixelShader1xMaxValue; the default 1 is the
+  // minimum for ps_1_1–1_3). Constants always clamp to [-1, 1].
+  float ps1x_max_value = 1.0f;
+  // ps_1_x fixed-point emulation: 0 = off (fp32), 8 or 9 = fraction bits of the hardware.
+  int ps1x_fixed_bits = 0;
+};
+
+}  // namespace tierlift::ir

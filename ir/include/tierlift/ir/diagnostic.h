@@ -1,0 +1,55 @@
+// Diagnostics in the compilers' form: "file:line:col: error: message", the source line and
+// a caret. Every module reports through a DiagnosticSink; the CLI renders it as text or JSON.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "tierlift/ir/source.h"
+
+namespace tierlift::ir {
+
+enum class Severity { Error, Warning, Note };
+
+struct Diagnostic {
+  Severity severity = Severity::Error;
+  SourceLoc loc;
+  std::string message;
+  std::string rule;  // short id of the rule broken, e.g. "slot-limit", "read-before-write"
+};
+
+class DiagnosticSink {
+public:
+  void error(SourceLoc loc, std::string rule, std::string message) {
+    add({Severity::Error, loc, std::move(message), std::move(rule)});
+  }
+  void warning(SourceLoc loc, std::string rule, std::string message) {
+    add({Severity::Warning, loc, std::move(message), std::move(rule)});
+  }
+  void note(SourceLoc loc, std::string rule, std::string message) {
+    add({Severity::Note, loc, std::move(message), std::move(rule)});
+  }
+  void add(Diagnostic d) {
+    if (d.severity == Severity::Error) ++errors_;
+    if (d.severity == Severity::Warning) ++warnings_;
+    list_.push_back(std::move(d));
+  }
+  bool has_errors() const { return errors_ > 0; }
+  size_t error_count() const { return errors_; }
+  size_t warning_count() const { return warnings_; }
+  const std::vector<Diagnostic>& all() const { return list_; }
+  void clear() { list_.clear(); errors_ = warnings_ = 0; }
+
+private:
+  std::vector<Diagnostic> list_;
+  size_t errors_ = 0, warnings_ = 0;
+};
+
+// "file:12:5: error: message [rule]\n    line text\n    ^~~~\n"
+std::string render_text(const Diagnostic& d, const SourceManager& sm);
+// Every diagnostic of the sink, in order.
+std::string render_text(const DiagnosticSink& sink, const SourceManager& sm);
+// One JSON object per diagnostic: {"file","line","column","length","severity","rule","message"}.
+std::string render_json(const DiagnosticSink& sink, const SourceManager& sm);
+
+}  // namespace tierlift::ir

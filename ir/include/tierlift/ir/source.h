@@ -1,0 +1,36 @@
+// Source positions and the files they point into.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace tierlift::ir {
+
+// 1-based line and column; line 0 means "no position" (e.g. a program read from bytecode).
+struct SourceLoc {
+  uint32_t file = 0;    // index into SourceManager::files
+  uint32_t line = 0;
+  uint32_t col = 0;
+  uint32_t length = 0;  // characters the caret line underlines (at least 1 is shown)
+  bool valid() const { return line != 0; }
+};
+
+struct SourceFile {
+  std::string name;  // as given on the command line ("-" shows as "<stdin>")
+  std::string text;
+};
+
+// Owns every file a program was read from (the listing and its #includes), so that
+// diagnostics can quote the offending line.
+struct SourceManager {
+  std::vector<SourceFile> files;
+  uint32_t add(std::string name, std::string text) {
+    files.push_back({std::move(name), std::move(text)});
+    return static_cast<uint32_t>(files.size() - 1);
+  }
+  // The text of a 1-based line, without its newline; empty when out of range.
+  std::string line_text(uint32_t file, uint32_t line) const;
+};
+
+}  // namespace tierlift::ir

@@ -1,0 +1,58 @@
+#include "tierlift/ir/profile.h"
+
+#include <array>
+#include <string>
+
+namespace tierlift::ir {
+
+std::string_view profile_name(Profile p) {
+  static constexpr std::array<std::string_view, kProfileCount> names = {
+      "vs_1_1", "vs_2_0", "ps_1_1", "ps_1_2", "ps_1_3", "ps_1_4", "ps_2_0"};
+  return names[profile_index(p)];
+}
+
+std::optional<Profile> parse_profile(std::string_view text) {
+  if (text.size() != 6) return std::nullopt;
+  std::string canon(text);
+  // The dot spelling of D3D8 ("ps.1.3") means the same as the underscore one.
+  if (canon[2] == '.' && canon[4] == '.') canon[2] = canon[4] = '_';
+  for (Profile p : kAllProfiles)
+    if (profile_name(p) == canon) return p;
+  return std::nullopt;
+}
+
+uint32_t version_token(Profile p) {
+  uint32_t base = is_vertex(p) ? 0xFFFE0000u : 0xFFFF0000u;
+  return base | (uint32_t{major_of(p)} << 8) | minor_of(p);
+}
+
+std::optional<Profile> profile_from_version_token(uint32_t token) {
+  for (Profile p : kAllProfiles)
+    if (version_token(p) == token) return p;
+  return std::nullopt;
+}
+
+const ProfileLimits& limits(Profile p) {
+  // clang-format off
+  //                                slots tex arith temps  c   i   b  v  t  s  oT oD/oC l   ports: r  c  v  t
+  static const ProfileLimits vs11 {128,   0,  0,   12,  96,  0,  0, 16, 0, 0, 8, 2,  0,  3, 1, 1, 0};
+  static const ProfileLimits vs20 {256,   0,  0,   12, 256, 16, 16, 16, 0, 0, 8, 2, 16,  3, 1, 1, 0};
+  static const ProfileLimits ps11 { 12,   4,  8,    2,   8,  0,  0,  2, 4, 4, 0, 0,  0,  2, 2, 2, 2};
+  static const ProfileLimits ps12 { 12,   4,  8,    2,   8,  0,  0,  2, 4, 4, 0, 0,  0,  2, 2, 2, 3};
+  static const ProfileLimits ps13 { 12,   4,  8,    2,   8,  0,  0,  2, 4, 4, 0, 0,  0,  2, 2, 2, 3};
+  static const ProfileLimits ps14 { 28,   6,  8,    6,   8,  0,  0,  2, 6, 6, 0, 0,  0,  3, 2, 2, 1};
+  static const ProfileLimits ps20 { 96,  32, 64,   12,  32,  0,  0,  2, 8,16, 0, 4,  0,  3, 1, 1, 1};
+  // clang-format on
+  switch (p) {
+  case Profile::vs_1_1: return vs11;
+  case Profile::vs_2_0: return vs20;
+  case Profile::ps_1_1: return ps11;
+  case Profile::ps_1_2: return ps12;
+  case Profile::ps_1_3: return ps13;
+  case Profile::ps_1_4: return ps14;
+  case Profile::ps_2_0: return ps20;
+  }
+  return vs11;
+}
+
+}  // namespace tierlift::ir

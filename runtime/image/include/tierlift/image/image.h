@@ -1,0 +1,37 @@
+// Images as every device stores them: RGBA floats holding exactly the value the target
+// format stores (after quantisation), so that images of any two ways compare directly.
+#pragma once
+
+#include <cstdint>
+#include <string_view>
+#include <optional>
+#include <vector>
+
+namespace tierlift::img {
+
+enum class Format { RGBA8, RGBA16F, RGBA32F };
+std::string_view format_name(Format f);          // "rgba8", "rgba16f", "rgba32f"
+std::optional<Format> parse_format(std::string_view name);
+
+// Largest width or height tierlift accepts anywhere (images, targets, textures).
+inline constexpr uint32_t kMaxDimension = 16384;
+
+struct Image {
+  uint32_t width = 0, height = 0;
+  Format format = Format::RGBA32F;
+  std::vector<float> rgba;  // row-major, top row first, 4 floats per pixel
+
+  Image() = default;
+  Image(uint32_t w, uint32_t h, Format f = Format::RGBA32F)
+      : width(w), height(h), format(f), rgba(size_t{w} * h * 4, 0.0f) {}
+  float* at(uint32_t x, uint32_t y) { return &rgba[(size_t{y} * width + x) * 4]; }
+  const float* at(uint32_t x, uint32_t y) const { return &rgba[(size_t{y} * width + x) * 4]; }
+};
+
+// The store rule of a format: RGBA8 = clamp to [0,1] then round to nearest of 255 steps
+// (D3D9 / Vulkan UNORM conversion); RGBA16F = round to nearest even half float (overflow to
+// inf, NaN kept); RGBA32F = unchanged.
+float quantize(Format f, float value);
+void quantize_in_place(Image& image);
+
+}  // namespace tierlift::img
