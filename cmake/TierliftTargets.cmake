@@ -1,6 +1,9 @@
 # Warnings for our own code only: third-party headers come in as SYSTEM includes.
 function(tierlift_warnings target)
-  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Werror)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic)
+  if(TIERLIFT_WERROR)
+    target_compile_options(${target} PRIVATE -Werror)
+  endif()
 endfunction()
 
 # tierlift_library(NAME <target> SOURCES ... DEPS ...)

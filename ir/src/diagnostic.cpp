@@ -20,18 +20,47 @@ std::string file_name(const SourceManager& sm, const SourceLoc& loc) {
   return "<unknown>";
 }
 
-// Keep the quoted line printable: tabs become one space so the caret lines up, other
-// control bytes become '?'.
-std::string printable(std::string_view line) {
-  std::string out;
-  out.reserve(line.size());
-  for (char c : line) {
-    unsigned char u = static_cast<unsigned char>(c);
-    if (c == '\t') out += ' ';
-    else if (u < 0x20 || u == 0x7f) out += '?';
-    else out += c;
+// Length of the valid UTF-8 sequence starting at s[i], or 0 when it is not valid.
+size_t utf8_length(std::string_view s, size_t i) {
+  unsigned char c = static_cast<unsigned char>(s[i]);
+  size_t n = c < 0x80 ? 1 : (c >> 5) == 6 ? 2 : (c >> 4) == 14 ? 3 : (c >> 3) == 30 ? 4 : 0;
+  if (n == 0 || i + n > s.size()) return 0;
+  for (size_t k = 1; k < n; ++k)
+    if ((static_cast<unsigned char>(s[i + k]) >> 6) != 2) return 0;
+  return n;
+}
+
+// The quoted line made printable, and the caret's indentation counted in characters, not
+// bytes: tabs become one space, control bytes and invalid UTF-8 become '?', and a UTF-8
+// character (the no-break spaces of web-copied listings) takes one column.
+struct QuotedLine {
+  std::string text;
+  size_t caret_indent = 0;
+};
+
+QuotedLine quote(std::string_view line, size_t byte_col) {
+  QuotedLine q;
+  size_t chars = 0;
+  for (size_t i = 0; i < line.size();) {
+    if (i < byte_col) q.caret_indent = chars + 1;
+    unsigned char u = static_cast<unsigned char>(line[i]);
+    size_t n = utf8_length(line, i);
+    if (n == 0) {
+      q.text += '?';
+      n = 1;
+    } else if (n == 1) {
+      q.text += line[i] == '\t' ? ' ' : (u < 0x20 || u == 0x7f) ? '?' : line[i];
+    } else if (n == 2 && u == 0xC2 && static_cast<unsigned char>(line[i + 1]) == 0xA0) {
+      q.text += ' ';  // no-break space
+    } else {
+      q.text.append(line.substr(i, n));
+    }
+    i += n;
+    ++chars;
   }
-  return out;
+  if (byte_col == 0) q.caret_indent = 0;
+  if (byte_col >= line.size()) q.caret_indent = chars;
+  return q;
 }
 
 }  // namespace
@@ -48,12 +77,12 @@ std::string render_text(const Diagnostic& d, const SourceManager& sm) {
   if (d.loc.valid()) {
     std::string line = sm.line_text(d.loc.file, d.loc.line);
     if (line.size() > 400) line.resize(400);  // a 10 MB single-line file must not flood
-    out += "    " + printable(line) + "\n";
     size_t col = d.loc.col > 0 ? d.loc.col - 1 : 0;
-    if (col > line.size()) col = line.size();
+    QuotedLine q = quote(line, col);
     size_t len = d.loc.length > 0 ? d.loc.length : 1;
     if (len > 200) len = 200;
-    out += "    " + std::string(col, ' ') + "^" + std::string(len - 1, '~') + "\n";
+    out += "    " + q.text + "\n";
+    out += "    " + std::string(q.caret_indent, ' ') + "^" + std::string(len - 1, '~') + "\n";
   }
   return out;
 }

@@ -36,12 +36,14 @@ const ProfileLimits& limits(Profile p) {
   // clang-format off
   //                                slots tex arith temps  c   i   b  v  t  s  oT oD/oC l   ports: r  c  v  t
   static const ProfileLimits vs11 {128,   0,  0,   12,  96,  0,  0, 16, 0, 0, 8, 2,  0,  3, 1, 1, 0};
-  static const ProfileLimits vs20 {256,   0,  0,   12, 256, 16, 16, 16, 0, 0, 8, 2, 16,  3, 1, 1, 0};
+  static const ProfileLimits vs20 {256,   0,  0,   12, 256, 16, 16, 16, 0, 0, 8, 2, 16,  3, 2, 1, 0};
   static const ProfileLimits ps11 { 12,   4,  8,    2,   8,  0,  0,  2, 4, 4, 0, 0,  0,  2, 2, 2, 2};
   static const ProfileLimits ps12 { 12,   4,  8,    2,   8,  0,  0,  2, 4, 4, 0, 0,  0,  2, 2, 2, 3};
   static const ProfileLimits ps13 { 12,   4,  8,    2,   8,  0,  0,  2, 4, 4, 0, 0,  0,  2, 2, 2, 3};
   static const ProfileLimits ps14 { 28,   6,  8,    6,   8,  0,  0,  2, 6, 6, 0, 0,  0,  3, 2, 2, 1};
-  static const ProfileLimits ps20 { 96,  32, 64,   12,  32,  0,  0,  2, 8,16, 0, 4,  0,  3, 1, 1, 1};
+  static const ProfileLimits ps20 { 96,  32, 64,   12,  32,  0,  0,  2, 8,16, 0, 4,  0,  3, 2, 1, 1};
+  // vs_2_0/ps_2_0 c#: the docs list "read ports 1, reads per instruction 2"; sincos must
+  // name two different constants, so two distinct c# per instruction are allowed.
   // clang-format on
   switch (p) {
   case Profile::vs_1_1: return vs11;

@@ -9,6 +9,11 @@ namespace tierlift::as {
 
 // Canonical form: underscore version line, lower-case mnemonics, one statement per line,
 // shortest swizzles, floats in shortest round-trip form, "+" for co-issue.
+// Details: instruction modifiers in the order shift (_x2.._d8), _sat, _pp, _centroid;
+// vertex dcl names its usage and leaves index 0 out ("dcl_texcoord v3", "dcl_normal2 v1");
+// pixel dcl has no usage ("dcl_pp t0.xy"), samplers "dcl_2d s0"; relative addressing as
+// "c[a0.x + 4]" / "c[aL]"; NaN constants as their raw bits "0x7fc00001" (read back by the
+// parser), other floats via fmt "{}" (1, 0.5, -0, 1e-07, inf).
 std::string print_program(const ir::Program& program);
 std::string print_instruction(const ir::Instruction& ins, ir::Profile profile);
 

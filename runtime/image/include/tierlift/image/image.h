@@ -3,14 +3,14 @@
 #pragma once
 
 #include <cstdint>
-#include <string_view>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 namespace tierlift::img {
 
 enum class Format { RGBA8, RGBA16F, RGBA32F };
-std::string_view format_name(Format f);          // "rgba8", "rgba16f", "rgba32f"
+std::string_view format_name(Format f); // "rgba8", "rgba16f", "rgba32f"
 std::optional<Format> parse_format(std::string_view name);
 
 // Largest width or height tierlift accepts anywhere (images, targets, textures).
@@ -19,7 +19,7 @@ inline constexpr uint32_t kMaxDimension = 16384;
 struct Image {
   uint32_t width = 0, height = 0;
   Format format = Format::RGBA32F;
-  std::vector<float> rgba;  // row-major, top row first, 4 floats per pixel
+  std::vector<float> rgba; // row-major, top row first, 4 floats per pixel
 
   Image() = default;
   Image(uint32_t w, uint32_t h, Format f = Format::RGBA32F)
@@ -34,4 +34,4 @@ struct Image {
 float quantize(Format f, float value);
 void quantize_in_place(Image& image);
 
-}  // namespace tierlift::img
+} // namespace tierlift::img

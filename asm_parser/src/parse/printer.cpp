@@ -1,0 +1,160 @@
+// ir::Program → canonical text. Every choice here is made so that parse(print(p)) is p:
+// one spelling per construct, floats in shortest round-trip form, NaNs as raw bits.
+#include "tierlift/asm/printer.h"
+
+#include <bit>
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace tierlift::as {
+namespace {
+
+std::string_view usage_name(ir::DeclUsage u) {
+  static constexpr std::string_view names[] = {
+      "position", "blendweight", "blendindices", "normal", "psize", "texcoord", "tangent",
+      "binormal", "tessfactor",  "positiont",    "color",  "fog",   "depth",    "sample"};
+  auto i = static_cast<size_t>(u);
+  return i < std::size(names) ? names[i] : "position";
+}
+
+std::string float_text(uint32_t raw) {
+  float f = std::bit_cast<float>(raw);
+  // NaN payloads have no decimal spelling; the parser reads 0x… as the raw pattern.
+  if (std::isnan(f)) return fmt::format("0x{:08x}", raw);
+  return fmt::format("{}", f); // shortest text that reads back to the same float
+}
+
+// "c", "v", "oT": the register's name without its index, for c[a0.x + 4].
+std::string file_prefix(ir::RegFile f) {
+  std::string name = ir::register_name(f, 0);
+  if (!name.empty() && name.back() == '0') name.pop_back();
+  return name;
+}
+
+std::string_view src_mod_suffix(ir::SrcMod m) {
+  using M = ir::SrcMod;
+  switch (m) {
+  case M::Bias:
+  case M::BiasNeg: return "_bias";
+  case M::Bx2:
+  case M::Bx2Neg: return "_bx2";
+  case M::X2:
+  case M::X2Neg: return "_x2";
+  case M::Dz: return "_dz";
+  case M::Dw: return "_dw";
+  case M::Abs:
+  case M::AbsNeg: return "_abs";
+  default: return "";
+  }
+}
+
+std::string_view src_mod_prefix(ir::SrcMod m) {
+  using M = ir::SrcMod;
+  switch (m) {
+  case M::Neg:
+  case M::BiasNeg:
+  case M::Bx2Neg:
+  case M::X2Neg:
+  case M::AbsNeg: return "-";
+  case M::Comp: return "1-";
+  case M::Not: return "!";
+  default: return "";
+  }
+}
+
+std::string src_text(const ir::SrcOperand& s) {
+  std::string out(src_mod_prefix(s.mod));
+  if (s.rel) {
+    std::string reg = s.rel->file == ir::RegFile::Loop
+                          ? std::string("aL")
+                          : fmt::format("a0.{}", "xyzw"[s.rel->component & 3]);
+    out += s.index ? fmt::format("{}[{} + {}]", file_prefix(s.file), reg, s.index)
+                   : fmt::format("{}[{}]", file_prefix(s.file), reg);
+  } else {
+    out += ir::register_name(s.file, s.index);
+  }
+  out += src_mod_suffix(s.mod);
+  out += ir::swizzle_text(s.swizzle);
+  return out;
+}
+
+std::string dst_text(const ir::DstOperand& d) {
+  return ir::register_name(d.file, d.index) + ir::mask_text(d.mask);
+}
+
+// Fixed order: shift, _sat, _pp, _centroid.
+std::string mods_text(const ir::InstrMods& m) {
+  static constexpr std::string_view shifts[] = {"_d8", "_d4", "_d2", "", "_x2", "_x4", "_x8"};
+  std::string out;
+  if (m.shift >= -3 && m.shift <= 3) out += shifts[m.shift + 3];
+  if (m.sat) out += "_sat";
+  if (m.pp) out += "_pp";
+  if (m.centroid) out += "_centroid";
+  return out;
+}
+
+std::string decl_text(const ir::Declaration& d, ir::Profile profile) {
+  std::string out = "dcl";
+  // Vertex inputs always name their usage; index 0 is left out (dcl_texcoord = dcl_texcoord0).
+  bool usage = (ir::is_vertex(profile) && d.reg.file != ir::RegFile::Sampler) ||
+               d.usage != ir::DeclUsage::Position || d.usage_index != 0;
+  if (usage) {
+    out += fmt::format("_{}", usage_name(d.usage));
+    if (d.usage_index) out += fmt::format("{}", d.usage_index);
+  }
+  switch (d.sampler_type) {
+  case ir::SamplerType::Tex2D: out += "_2d"; break;
+  case ir::SamplerType::Cube: out += "_cube"; break;
+  case ir::SamplerType::Volume: out += "_volume"; break;
+  default: break;
+  }
+  out += mods_text(d.mods);
+  return out + " " + dst_text(d.reg);
+}
+
+std::string def_text(const ir::ConstDef& d) {
+  switch (d.file) {
+  case ir::RegFile::ConstInt:
+    return fmt::format("defi i{}, {}, {}, {}, {}", d.index, d.i(0), d.i(1), d.i(2), d.i(3));
+  case ir::RegFile::ConstBool:
+    return fmt::format("defb b{}, {}", d.index, d.b() ? "true" : "false");
+  default:
+    return fmt::format("def c{}, {}, {}, {}, {}", d.index, float_text(d.raw[0]),
+                       float_text(d.raw[1]), float_text(d.raw[2]), float_text(d.raw[3]));
+  }
+}
+
+} // namespace
+
+std::string print_instruction(const ir::Instruction& ins, ir::Profile /*profile*/) {
+  std::string out = ins.coissue ? "+" : "";
+  out += ir::op_info(ins.op).mnemonic;
+  out += mods_text(ins.mods);
+  bool first = true;
+  auto sep = [&] {
+    out += first ? " " : ", ";
+    first = false;
+  };
+  if (ins.dst) sep(), out += dst_text(*ins.dst);
+  for (const ir::SrcOperand& s : ins.src) sep(), out += src_text(s);
+  return out;
+}
+
+std::string print_program(const ir::Program& p) {
+  std::string out(ir::profile_name(p.profile));
+  out += '\n';
+  for (const auto& st : p.statements()) {
+    switch (st.kind) {
+    case ir::Program::Statement::Kind::Decl: out += decl_text(p.decls[st.index], p.profile); break;
+    case ir::Program::Statement::Kind::Def: out += def_text(p.defs[st.index]); break;
+    case ir::Program::Statement::Kind::Code:
+      out += print_instruction(p.code[st.index], p.profile);
+      break;
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+} // namespace tierlift::as

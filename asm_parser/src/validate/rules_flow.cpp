@@ -1,0 +1,170 @@
+// vs_2_0 static flow control (d3d9-isa.md §5.3): if/else/endif, loop/endloop and rep/endrep
+// nest properly; loop/rep nest one deep; calls go forward to defined labels and do not nest;
+// a label directly follows a ret; at most 16 static flow-control instructions; aL only
+// inside a loop; loop/rep counters within their ranges.
+#include <map>
+#include <vector>
+
+#include "context.h"
+
+namespace tierlift::as::detail {
+namespace {
+
+using ir::Opcode;
+using ir::RegFile;
+
+constexpr int kMaxStaticFlow = 16;
+
+struct Block {
+  Opcode op; // If, Loop or Rep
+  const ir::Instruction* open;
+  bool has_else = false;
+};
+
+const ir::ConstDef* find_int_def(const ir::Program& p, uint32_t index) {
+  const ir::ConstDef* last = nullptr; // the last definition wins
+  for (const ir::ConstDef& d : p.defs)
+    if (d.file == RegFile::ConstInt && d.index == index) last = &d;
+  return last;
+}
+
+void check_counter(Ctx& c, const ir::Instruction& ins) {
+  const ir::SrcOperand* ireg = nullptr;
+  for (const ir::SrcOperand& s : ins.src)
+    if (s.file == RegFile::ConstInt) ireg = &s;
+  if (!ireg) return;
+  const ir::ConstDef* d = find_int_def(c.prog, ireg->index);
+  if (!d) return; // set by the application: checked at run time
+  auto bad = [&](int k, int lo, int hi, const char* what) {
+    if (d->i(k) < lo || d->i(k) > hi)
+      c.error(ireg->loc, "flow",
+              fmt::format("{}.{} = {} is the {} and must be in {}..{}",
+                          reg_name(RegFile::ConstInt, ireg->index), "xyzw"[k], d -> i(k), what, lo,
+                          hi));
+  };
+  bad(0, 0, 255, "iteration count");
+  if (ins.op == Opcode::Loop) {
+    bad(1, 0, 255, "start value of aL");
+    bad(2, -128, 127, "step of aL");
+    bad(3, 0, 0, "unused w component");
+  }
+}
+
+bool uses_loop_reg(const ir::Instruction& ins) {
+  if (ins.op == Opcode::Loop) return false; // its own aL operand
+  for (const ir::SrcOperand& s : ins.src)
+    if (s.file == RegFile::Loop || (s.rel && s.rel->file == RegFile::Loop)) return true;
+  return false;
+}
+
+} // namespace
+
+void check_flow(Ctx& c) {
+  if (!c.vs20()) return;
+  const auto& code = c.prog.code;
+  std::vector<Block> stack;
+  std::map<uint32_t, size_t> labels; // label index → position
+  std::vector<size_t> calls;
+  bool in_sub = false;
+  int flow_count = 0;
+  auto loops_open = [&]() {
+    for (const Block& b : stack)
+      if (b.op != Opcode::If) return true;
+    return false;
+  };
+  for (size_t i = 0; i < code.size(); ++i) {
+    const ir::Instruction& ins = code[i];
+    bool counts = ins.op == Opcode::If || ins.op == Opcode::Loop || ins.op == Opcode::Rep ||
+                  ins.op == Opcode::Call || ins.op == Opcode::CallNz;
+    if (counts && ++flow_count == kMaxStaticFlow + 1)
+      c.error(ins.loc, "flow",
+              fmt::format("vs_2_0 allows {} static flow-control instructions (if, loop, rep, "
+                          "call, callnz); this is the {}",
+                          kMaxStaticFlow, ordinal(kMaxStaticFlow + 1)));
+    if (uses_loop_reg(ins) && !in_sub) {
+      bool in_loop = false;
+      for (const Block& b : stack) in_loop = in_loop || b.op == Opcode::Loop;
+      if (!in_loop) c.error(ins.loc, "flow", "aL is only valid inside a loop ... endloop block");
+    }
+    switch (ins.op) {
+    case Opcode::If: stack.push_back({Opcode::If, &ins}); break;
+    case Opcode::Loop:
+    case Opcode::Rep:
+      if (loops_open())
+        c.error(ins.loc, "flow",
+                fmt::format("vs_2_0 allows loop/rep nesting depth 1; this {} is inside another "
+                            "loop",
+                            mnemonic(ins)));
+      check_counter(c, ins);
+      stack.push_back({ins.op, &ins});
+      break;
+    case Opcode::Else:
+      if (stack.empty() || stack.back().op != Opcode::If || stack.back().has_else)
+        c.error(ins.loc, "flow", "else without a matching if");
+      else
+        stack.back().has_else = true;
+      break;
+    case Opcode::EndIf:
+    case Opcode::EndLoop:
+    case Opcode::EndRep: {
+      Opcode want = ins.op == Opcode::EndIf     ? Opcode::If
+                    : ins.op == Opcode::EndLoop ? Opcode::Loop
+                                                : Opcode::Rep;
+      if (stack.empty() || stack.back().op != want) {
+        std::string open =
+            stack.empty() ? std::string("no block is open")
+                          : fmt::format("the innermost open block is {} at line {}",
+                                        mnemonic(*stack.back().open), stack.back().open->loc.line);
+        c.error(ins.loc, "flow", fmt::format("{} does not match: {}", mnemonic(ins), open));
+      } else {
+        stack.pop_back();
+      }
+      break;
+    }
+    case Opcode::Call:
+    case Opcode::CallNz:
+      if (in_sub)
+        c.error(ins.loc, "flow", "vs_2_0 allows call nesting depth 1: no call inside a subroutine");
+      calls.push_back(i);
+      break;
+    case Opcode::Label:
+      if (i == 0 || code[i - 1].op != Opcode::Ret)
+        c.error(ins.loc, "flow", "label must directly follow a ret");
+      if (!stack.empty()) c.error(ins.loc, "flow", "label inside an open if/loop/rep block");
+      if (!ins.src.empty() && ins.src[0].file == RegFile::Label &&
+          !labels.insert({ins.src[0].index, i}).second)
+        c.error(ins.src[0].loc, "flow",
+                fmt::format("label l{} is defined twice", ins.src[0].index));
+      in_sub = true;
+      break;
+    case Opcode::Ret:
+      if (stack.empty() && i + 1 < code.size() && code[i + 1].op != Opcode::Label)
+        c.error(code[i + 1].loc, "flow",
+                "code after ret is unreachable: it must start a subroutine with label");
+      break;
+    default: break;
+    }
+  }
+  for (const Block& b : stack)
+    c.error(b.open->loc, "flow",
+            fmt::format("{} is never closed by {}", mnemonic(*b.open),
+                        b.op == Opcode::If     ? "endif"
+                        : b.op == Opcode::Loop ? "endloop"
+                                               : "endrep"));
+  if (in_sub && code.back().op != Opcode::Ret)
+    c.error(code.back().loc, "flow", "a subroutine must end with ret");
+  for (size_t i : calls) {
+    const ir::Instruction& call = code[i];
+    if (call.src.empty() || call.src[0].file != RegFile::Label) continue;
+    auto it = labels.find(call.src[0].index);
+    if (it == labels.end())
+      c.error(call.src[0].loc, "flow", fmt::format("label l{} is not defined", call.src[0].index));
+    else if (it->second < i)
+      c.error(call.src[0].loc, "flow",
+              fmt::format("vs_2_0 only allows forward calls: label l{} is at line {}, before "
+                          "this call",
+                          call.src[0].index, code[it->second].loc.line));
+  }
+}
+
+} // namespace tierlift::as::detail

@@ -1,0 +1,16 @@
+// Inputs the benchmarks share: every listing we hold, read once.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace tierlift::bench {
+
+struct ListingText {
+  std::string name, text;
+};
+// listings/**/*.vsh|*.psh and ../shared/corpus/*.vsh|*.psh (when present).
+const std::vector<ListingText>& all_listings();
+size_t total_bytes(const std::vector<ListingText>& listings);
+
+}  // namespace tierlift::bench

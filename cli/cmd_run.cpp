@@ -1,0 +1,187 @@
+// tierlift run: one pass of a vertex and/or pixel listing over the full-screen quad on the
+// CPU device. Only flags and printing live here; the work is tierlift::cpu::run_job.
+#include <cmath>
+#include <cstdio>
+#include <fmt/format.h>
+#include <memory>
+
+#include "commands.h"
+#include "front_end.h"
+#include "tierlift/cpu/run_job.h"
+
+namespace tierlift::cli {
+namespace {
+
+struct RunFlags {
+  std::string vs, ps, size = "256x256", format = "rgba8", filter = "point", address = "wrap";
+  std::string pixel_center = "d3d9", output;
+  std::vector<std::string> consts, inputs, attrs, textures, probes;
+  int subtexel_bits = 0;
+  float ps1x_max = 1.0f;
+  unsigned threads = 0;
+  bool json = false;
+};
+
+// A usage problem: message on stderr, exit 2.
+struct UsageError {
+  std::string message;
+};
+
+template <class T> T need(std::optional<T> value, const std::string& error) {
+  if (!value) throw UsageError{error};
+  return *value;
+}
+
+cpu::RunRequest build_request(const RunFlags& f) {
+  cpu::RunRequest r;
+  std::string err;
+  auto size = need(cpu::parse_size(f.size, err), err);
+  r.width = size[0];
+  r.height = size[1];
+  r.format = need(img::parse_format(f.format),
+                  fmt::format("--format '{}': expected rgba8, rgba16f or rgba32f", f.format));
+  for (const auto& s : f.consts) r.constants.push_back(need(cpu::parse_const_setting(s, err), err));
+  for (const auto& s : f.inputs) r.inputs.push_back(need(cpu::parse_input_setting(s, err), err));
+  for (const auto& s : f.attrs) r.attrs.push_back(need(cpu::parse_attr_setting(s, err), err));
+  for (const auto& s : f.textures)
+    r.textures.push_back(need(cpu::parse_texture_setting(s, err), err));
+  for (const auto& s : f.probes) {
+    cpu::ProbePoint p = need(cpu::parse_probe(s, err), err);
+    if (p.x >= r.width || p.y >= r.height)
+      throw UsageError{fmt::format("--probe {}: outside the {}x{} image", s, r.width, r.height)};
+    r.probes.push_back(p);
+  }
+  r.filter = need(cpu::parse_filter(f.filter),
+                  fmt::format("--filter '{}': expected point or linear", f.filter));
+  r.address =
+      need(cpu::parse_address(f.address),
+           fmt::format("--address '{}': expected clamp, wrap, mirror or border", f.address));
+  r.conventions.pixel_center =
+      need(cpu::parse_pixel_center(f.pixel_center),
+           fmt::format("--pixel-center '{}': expected d3d9 or modern", f.pixel_center));
+  if (f.subtexel_bits < 0 || f.subtexel_bits > 24)
+    throw UsageError{fmt::format("--subtexel-bits {}: expected 0 (exact) .. 24", f.subtexel_bits)};
+  r.conventions.subtexel_bits = f.subtexel_bits;
+  if (!(f.ps1x_max >= 1.0f) || !std::isfinite(f.ps1x_max))
+    throw UsageError{fmt::format("--ps1x-max {}: expected a finite value >= 1", f.ps1x_max)};
+  r.conventions.ps1x_max_value = f.ps1x_max;
+  r.threads = f.threads;
+  return r;
+}
+
+void print_other(const ir::DiagnosticSink& sink) {
+  for (const ir::Diagnostic& d : sink.all())
+    fmt::print(stderr, "tierlift run: {}: {}\n",
+               d.severity == ir::Severity::Error ? "error" : "warning", d.message);
+}
+
+nlohmann::json result_json(const RunFlags& f, const cpu::RunRequest& r, const cpu::RunResult& out,
+                           double write_ms) {
+  nlohmann::json probes = nlohmann::json::array();
+  for (const auto& p : out.probes)
+    probes.push_back(
+        {{"x", p.x}, {"y", p.y}, {"rgba", {p.value[0], p.value[1], p.value[2], p.value[3]}}});
+  return {{"size", {{"width", r.width}, {"height", r.height}}},
+          {"format", img::format_name(r.format)},
+          {"probes", probes},
+          {"output", f.output.empty() ? nlohmann::json() : nlohmann::json(f.output)},
+          {"pixels_shaded", out.stats.pixels_shaded},
+          {"pixels_killed", out.stats.pixels_killed},
+          {"timing_ms", {{"setup", out.setup_ms}, {"draw", out.draw_ms}, {"write", write_ms}}}};
+}
+
+int run(const RunFlags& f) {
+  cpu::RunRequest req;
+  try {
+    req = build_request(f);
+  } catch (const UsageError& e) {
+    fmt::print(stderr, "tierlift run: error: {}\n", e.message);
+    return kExitUsage;
+  }
+  // Each listing keeps its own SourceManager, so its diagnostics quote the right file.
+  std::optional<LoadedListing> vs, ps;
+  for (auto [path, slot] : {std::pair{&f.vs, &vs}, std::pair{&f.ps, &ps}}) {
+    if (path->empty()) continue;
+    *slot = load_listing(*path, FrontEndOptions{});
+    if ((*slot)->io_error) {
+      fmt::print(stderr, "tierlift run: error: {}\n", (*slot)->io_message);
+      return kExitUsage;
+    }
+  }
+  bool listings_ok = true;
+  for (auto* l : {&vs, &ps}) {
+    if (!*l) continue;
+    print_diagnostics(**l);
+    listings_ok = listings_ok && (*l)->program && !(*l)->diags.has_errors();
+  }
+  if (!listings_ok) return kExitInvalid;
+  if (vs) req.vs = std::make_shared<const ir::Program>(*vs->program);
+  if (ps) req.ps = std::make_shared<const ir::Program>(*ps->program);
+
+  cpu::RunDiagnostics diags;
+  cpu::RunResult out = cpu::run_job(req, diags);
+  if (vs) std::fputs(ir::render_text(diags.vs, vs->sources).c_str(), stderr);
+  if (ps) std::fputs(ir::render_text(diags.ps, ps->sources).c_str(), stderr);
+  print_other(diags.other);
+  if (!out.ok) {
+    for (const auto& d : diags.other.all())
+      if (d.severity == ir::Severity::Error && d.rule == cpu::kRuleTextureMissing)
+        return kExitUsage;
+    return kExitInvalid;
+  }
+
+  double write_ms = 0;
+  if (!f.output.empty()) {
+    auto t0 = std::chrono::steady_clock::now();
+    std::string warning;
+    std::string err = cpu::write_run_output(f.output, out.image, &warning);
+    if (!warning.empty()) fmt::print(stderr, "tierlift run: warning: {}\n", warning);
+    write_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    if (!err.empty()) {
+      fmt::print(stderr, "tierlift run: error: {}\n", err);
+      return kExitUsage;
+    }
+  }
+  if (f.json) {
+    fmt::print("{}\n", result_json(f, req, out, write_ms).dump(2));
+  } else {
+    for (const auto& p : out.probes)
+      fmt::print("{},{}: {} {} {} {}\n", p.x, p.y, p.value[0], p.value[1], p.value[2], p.value[3]);
+  }
+  return kExitOk;
+}
+
+} // namespace
+
+void register_run_command(CLI::App& app) {
+  auto f = std::make_shared<RunFlags>();
+  CLI::App* sub = app.add_subcommand(
+      "run", "Draw one pass (vertex and/or pixel listing) over the full-screen quad on the CPU");
+  sub->add_option("--vs", f->vs, "Vertex listing (vs_1_1, vs_2_0)");
+  sub->add_option("--ps", f->ps, "Pixel listing (ps_1_1 .. ps_2_0); none: oD0 passes through");
+  sub->add_option("--size", f->size, "Render target WxH (up to 16384x16384)")
+      ->capture_default_str();
+  sub->add_option("--format", f->format, "rgba8 | rgba16f | rgba32f")->capture_default_str();
+  sub->add_option("--const", f->consts,
+                  "[vs:|ps:]cN=x,y,z,w, iN=a,b,c,d or bN=true|false (no prefix: both stages)");
+  sub->add_option("--input", f->inputs, "Pixel-stage input v#|t#=x,y,z,w (without --vs)");
+  sub->add_option("--attr", f->attrs, "Vertex input vN=x,y,z,w or vN=quad-uv (with --vs)");
+  sub->add_option("--texture", f->textures, "sN=FILE.png|FILE.pfm|builtin:NAME[:WxH]");
+  sub->add_option("--filter", f->filter, "point | linear (all samplers)")->capture_default_str();
+  sub->add_option("--address", f->address, "clamp | wrap | mirror | border (all samplers)")
+      ->capture_default_str();
+  sub->add_option("--pixel-center", f->pixel_center, "d3d9 | modern")->capture_default_str();
+  sub->add_option("--subtexel-bits", f->subtexel_bits, "Bilinear fraction bits (0 = exact)")
+      ->capture_default_str();
+  sub->add_option("--ps1x-max", f->ps1x_max, "ps_1_x register range (MaxPixelShaderValue)")
+      ->capture_default_str();
+  sub->add_option("--probe", f->probes, "Print the stored value of pixel X,Y");
+  sub->add_option("-o,--output", f->output, "Write the image (.png, or .pfm for float RGB)");
+  sub->add_flag("--json", f->json, "Print a JSON summary (size, format, probes, timing)");
+  sub->add_option("--threads", f->threads, "Worker threads (0 = every core)")
+      ->capture_default_str();
+  set_action(sub, [f] { return run(*f); });
+}
+
+} // namespace tierlift::cli

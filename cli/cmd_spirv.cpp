@@ -1,0 +1,95 @@
+// tierlift spirv FILE [--pair OTHER]: a listing as a SPIR-V module (checked by spirv-val
+// in-process), optionally linked with its other stage so that what that stage never uses
+// is left out (--explain lists it).
+#include <fmt/format.h>
+
+#include "commands.h"
+#include "front_end.h"
+#include "tierlift/codegen/codegen.h"
+
+namespace tierlift::cli {
+
+void register_spirv_command(CLI::App& app) {
+  struct Opts {
+    std::string file, pair, output;
+    bool dis = false, opt = false, explain = false;
+    FrontEndOptions fe;
+  };
+  auto opts = std::make_shared<Opts>();
+  CLI::App* sub = app.add_subcommand("spirv", "Compile a listing to SPIR-V (validated by spirv-val)");
+  sub->add_option("file", opts->file, "Listing ('-' reads standard input)")->required();
+  sub->add_option("--pair", opts->pair,
+                  "The other stage's listing: link both and leave out what the pair never uses");
+  sub->add_option("-o,--output", opts->output, "Write FILE's module as a SPIR-V binary");
+  sub->add_flag("--dis", opts->dis, "Print the module as SPIR-V assembly text");
+  sub->add_flag("--opt", opts->opt, "Run spirv-opt's performance passes");
+  sub->add_flag("--explain", opts->explain, "List what linking with --pair left out");
+  add_front_end_options(sub, opts->fe, false);
+  set_action(sub, [opts] {
+    LoadedListing main = load_listing(opts->file, opts->fe);
+    std::optional<LoadedListing> other;
+    if (!opts->pair.empty()) other.emplace(load_listing(opts->pair, opts->fe));
+    for (const LoadedListing* l : {&main, other ? &*other : nullptr}) {
+      if (!l) continue;
+      if (l->io_error) {
+        fmt::print(stderr, "tierlift: error: {}\n", l->io_message);
+        return kExitUsage;
+      }
+      print_diagnostics(*l);
+      if (!l->program) return kExitInvalid;  // never compile a listing that failed validation
+    }
+    codegen::CodegenOptions copts;
+    copts.optimize = opts->opt;
+    ir::DiagnosticSink diags;
+    std::optional<codegen::ShaderModule> module;
+    std::vector<codegen::PrunedItem> pruned;
+    if (other) {
+      const ir::Program& a = *main.program;
+      const ir::Program& b = *other->program;
+      if (a.stage() == b.stage()) {
+        fmt::print(stderr, "tierlift: error: --pair needs one vertex and one pixel listing\n");
+        return kExitUsage;
+      }
+      const ir::Program& vs = a.stage() == ir::ShaderStage::Vertex ? a : b;
+      const ir::Program& ps = a.stage() == ir::ShaderStage::Vertex ? b : a;
+      if (auto pair = codegen::compile_pair(vs, ps, copts, diags)) {
+        module = a.stage() == ir::ShaderStage::Vertex ? pair->vs : pair->ps;
+        pruned = std::move(pair->pruned);
+      }
+    } else {
+      module = codegen::compile(*main.program, copts, diags);
+    }
+    std::fputs(ir::render_text(diags, main.sources).c_str(), stderr);
+    if (!module) {
+      fmt::print(stderr, "tierlift: error: SPIR-V generation failed\n");
+      return kExitInvalid;
+    }
+    if (opts->explain) {
+      std::string text = codegen::explain(pruned);
+      fmt::print("{}", text.empty() ? std::string("nothing was left out\n") : text);
+    }
+    if (opts->dis) {
+      std::string error;
+      std::string text = codegen::disassemble(module->words, &error);
+      if (text.empty()) {
+        fmt::print(stderr, "tierlift: error: {}\n", error);
+        return kExitInvalid;
+      }
+      fmt::print("{}", text);
+    }
+    if (!opts->output.empty()) {
+      std::string bytes(reinterpret_cast<const char*>(module->words.data()),
+                        module->words.size() * sizeof(uint32_t));
+      std::string error;
+      if (!write_file_atomically(opts->output, bytes, error)) {
+        fmt::print(stderr, "tierlift: error: {}\n", error);
+        return kExitUsage;
+      }
+    }
+    if (!opts->dis && !opts->explain && opts->output.empty())
+      fmt::print("{}: ok ({} words, spirv-val passed)\n", opts->file, module->words.size());
+    return kExitOk;
+  });
+}
+
+}  // namespace tierlift::cli

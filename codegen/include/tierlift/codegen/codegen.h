@@ -1,0 +1,156 @@
+// ir::Program → SPIR-V (Vulkan 1.1, SPIR-V 1.3). The resource and interface mapping is
+// docs/spirv-mapping.md; every emitted module is checked by spirv-val in-process and a
+// module that fails is reported as an error, never returned.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tierlift/ir/conventions.h"
+#include "tierlift/ir/diagnostic.h"
+#include "tierlift/ir/program.h"
+
+namespace tierlift::codegen {
+
+// Fixed resource bindings (descriptor set 0); see docs/spirv-mapping.md.
+inline constexpr uint32_t kDescriptorSet = 0;
+inline constexpr uint32_t kVertexConstantsBinding = 0;
+inline constexpr uint32_t kPixelConstantsBinding = 1;
+inline constexpr uint32_t kFirstSamplerBinding = 2; // binding = 2 + sampler/stage number
+// Interface locations shared by both stages: tN/oTN at N, vN/oDN at 8 + N, oFog at 10.
+inline constexpr uint32_t kTexCoordLocation = 0;
+inline constexpr uint32_t kColorLocation = 8;
+inline constexpr uint32_t kFogLocation = 10;
+// Specialization constant ids.
+inline constexpr uint32_t kSpecFlipY = 0;        // float, multiplies oPos.y (default -1)
+inline constexpr uint32_t kSpecPixelOffsetX = 1; // float, clip-space x += value * w
+inline constexpr uint32_t kSpecPixelOffsetY = 2; // float, clip-space y += value * w
+inline constexpr uint32_t kSpecPs1xMaxValue = 3; // float, ps_1_x register range clamp
+
+enum class KillMode {
+  Kill,   // OpKill (core SPIR-V; the invocation ends, no helper remains)
+  Demote, // OpDemoteToHelperInvocation (SPV_EXT_demote_to_helper_invocation)
+};
+
+struct CodegenOptions {
+  ir::Conventions conventions;
+  // Default values of the position fix-up specialization constants. D3D9 pixel centres on
+  // Vulkan need +1/width and +1/height (half a pixel in NDC); 0 leaves the fix-up to the
+  // viewport (x + 0.5, y + 0.5). flip_y = true negates y (D3D +y up, Vulkan +y down).
+  bool flip_y = true;
+  float pixel_offset_x = 0.0f, pixel_offset_y = 0.0f;
+  KillMode kill = KillMode::Kill;
+  // ps_1_1…1_3 have no sampler declarations: the texture type of each stage (2D default).
+  std::array<ir::SamplerType, 16> stage_texture_type{};
+  // ps_1_1…1_3 D3DTTFF_PROJECTED per stage: tex divides the coordinate by its w.
+  std::array<bool, 16> stage_projected{};
+  bool optimize = false; // run spirv-opt's performance passes after validation
+  // Entry point name.
+  std::string entry_point = "main";
+};
+
+enum class InterfaceKind {
+  Input,   // vertex attribute / interpolated varying
+  Output,  // varying / fragment colour
+  BuiltIn, // Position, PointSize, FragDepth
+};
+
+struct InterfaceVar {
+  InterfaceKind kind = InterfaceKind::Input;
+  ir::RegFile file = ir::RegFile::Input; // the D3D register it carries
+  uint32_t index = 0;
+  uint32_t location = 0;   // for Input/Output
+  uint32_t components = 4; // float components (vec4 except oFog)
+  std::string builtin;     // "Position", "PointSize", "FragDepth"
+  std::string name;        // "v0", "oT3", ...
+  // D3D usage the variable carries: vertex inputs from their dcl (position, texcoord3, …);
+  // varyings texcoordN (oT#/t#) or colorN (oD#/v#). A device binds vertex streams by it.
+  std::optional<ir::DeclUsage> usage;
+  uint8_t usage_index = 0;
+};
+
+struct UniformBlockInfo {
+  uint32_t set = kDescriptorSet, binding = 0;
+  uint32_t float_count = 0;         // vec4 c[float_count] at offset 0, stride 16
+  uint32_t int_offset = 0;          // ivec4 i[16] (0 when absent)
+  uint32_t bool_offset = 0;         // uint b[16], stride 16 (0 when absent)
+  uint32_t bump_offset = 0;         // ps_1_x: vec4 bumpenv[16] (0 when absent)
+  uint32_t size_bytes = 0;          // 0: no block
+  std::vector<uint32_t> float_used; // c# read by the program (after pruning)
+};
+
+struct SamplerInfo {
+  uint32_t set = kDescriptorSet, binding = 0;
+  uint32_t stage = 0; // s# / texture stage
+  ir::SamplerType type = ir::SamplerType::Tex2D;
+};
+
+struct SpecConstantInfo {
+  uint32_t id = 0; // SpecId
+  float default_value = 0.0f;
+  std::string name; // "flip_y", "pixel_offset_x", ...
+};
+
+struct ShaderModule {
+  ir::ShaderStage stage = ir::ShaderStage::Vertex;
+  std::vector<uint32_t> words;
+  std::string entry_point;
+  std::vector<InterfaceVar> interface;
+  UniformBlockInfo uniforms;
+  std::vector<SamplerInfo> samplers;
+  std::vector<SpecConstantInfo> spec_constants; // all float, 4 bytes each
+  bool writes_depth = false;
+  bool uses_kill = false;
+};
+
+// What linking-time pruning left out, one entry per item (for --explain).
+struct PrunedItem {
+  enum class Kind { VertexOutput, VertexInput, PixelInput, Constant, DeadInstruction } kind;
+  ir::ShaderStage stage = ir::ShaderStage::Vertex;
+  std::string what;   // "oT5", "v2", "c7", "add oT5, v3, c5"
+  std::string reason; // "the pixel shader never reads t5"
+  ir::SourceLoc loc;
+};
+
+struct CompiledPair {
+  ShaderModule vs, ps;
+  std::vector<PrunedItem> pruned;
+};
+
+// Compiles one program. Errors (unsupported construct, validator failure) go to diags with
+// a position; the result is then nullopt.
+std::optional<ShaderModule> compile(const ir::Program& program, const CodegenOptions& options,
+                                    ir::DiagnosticSink& diags);
+
+// Compiles a VS/PS pair, leaving out what the other stage never consumes.
+std::optional<CompiledPair> compile_pair(const ir::Program& vs, const ir::Program& ps,
+                                         const CodegenOptions& options, ir::DiagnosticSink& diags);
+
+// Values for a stage's uniform block (what D3D9 sets through SetVertexShaderConstantF/I/B,
+// SetPixelShaderConstantF and the D3DTSS_BUMPENV* texture-stage states).
+struct UniformValues {
+  std::vector<std::array<float, 4>> f; // c#; missing registers are 0
+  std::array<std::array<int32_t, 4>, 16> i{};
+  std::array<bool, 16> b{};
+  std::array<std::array<float, 4>, 8> bumpenv_mat{}; // per stage: M00, M01, M10, M11
+  std::array<std::array<float, 2>, 8> bumpenv_lum{}; // per stage: LSCALE, LOFFSET
+};
+// The bytes of the module's uniform block (std140, as docs/spirv-mapping.md), as 32-bit
+// words; empty when the module has no block.
+std::vector<uint32_t> pack_uniforms(const ShaderModule& module, const UniformValues& values);
+
+// One line per pruned item ("vertex: removed output oT5: the pixel shader never reads t5"),
+// for --explain.
+std::string explain(const std::vector<PrunedItem>& pruned);
+
+// spirv-val with the Vulkan 1.1 target environment. On failure *error gets the message.
+bool validate(const std::vector<uint32_t>& words, std::string* error);
+// Human-readable disassembly (spirv-dis); "" plus *error on failure.
+std::string disassemble(const std::vector<uint32_t>& words, std::string* error = nullptr);
+// spirv-opt performance passes; false (words unchanged) on failure.
+bool optimize(std::vector<uint32_t>& words, std::string* error);
+
+} // namespace tierlift::codegen

@@ -1,0 +1,163 @@
+// Internal to the code generator: the state shared by the per-opcode emit functions
+// (emit_*.cpp). Not part of the public API; codegen.h is.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "tierlift/codegen/codegen.h"
+#include "tierlift/codegen/spirv_builder.h"
+
+namespace tierlift::codegen {
+
+// Decided by the linker (pruning.cpp) before emission.
+struct EmitPlan {
+  // Instructions (indices into Program::code) left out as dead.
+  std::vector<bool> skip;
+  // Vertex stage in a pair: exactly these outputs are declared (file, index); others are
+  // not. nullopt: every output the program writes.
+  std::optional<std::set<std::pair<ir::RegFile, uint32_t>>> vs_outputs;
+};
+
+// A computed result waiting to be stored (co-issued pairs read before either writes).
+struct PendingStore {
+  ir::DstOperand dst;
+  ir::InstrMods mods;
+  Id value = 0;       // vec4
+  uint8_t mask = 0xF; // the destination mask, possibly narrowed by the opcode
+};
+
+class Emitter {
+public:
+  Emitter(const ir::Program& program, const CodegenOptions& options, const EmitPlan& plan,
+          ir::DiagnosticSink& diags);
+  std::optional<ShaderModule> run();
+
+  // ---- shared state, used by the emit_* files ----
+  const ir::Program& prog;
+  const CodegenOptions& opt;
+  const EmitPlan& plan;
+  ir::DiagnosticSink& diags;
+  SpirvBuilder b;
+  Id glsl = 0;
+  Id t_void = 0, t_bool = 0, t_bvec4 = 0, t_float = 0, t_vec2 = 0, t_vec3 = 0, t_vec4 = 0;
+  Id t_int = 0, t_ivec4 = 0, t_uint = 0;
+  bool failed = false;
+
+  // ---- numerics (emit_numerics.cpp): each mirrors the ir::numerics function of its name.
+  Id f(float v) { return b.const_float(v); }
+  Id vec4_const(float x, float y, float z, float w);
+  Id splat(Id scalar);                // float → vec4
+  Id bsplat(Id cond);                 // bool → bvec4
+  Id comp(Id vec4, uint32_t i);       // extract component
+  Id compose(Id x, Id y, Id z, Id w); // 4 floats → vec4
+  Id type_of_width(int n) const { return n == 1 ? t_float : t_vec4; }
+  Id bool_type(int n) const { return n == 1 ? t_bool : t_bvec4; }
+  // Arithmetic with NoContraction (one rounding each, as the interpreter).
+  Id fadd(Id a, Id c, int n = 4);
+  Id fsub(Id a, Id c, int n = 4);
+  Id fmul(Id a, Id c, int n = 4);
+  Id fdiv(Id a, Id c, int n = 4);
+  Id fneg(Id a, int n = 4);
+  Id cmp(spv::Op op, Id a, Id c, int n = 4); // ordered compare
+  Id select(Id cond, Id a, Id c, int n = 4);
+  Id glsl1(uint32_t inst, Id a, int n = 4); // GLSL.std.450 unary
+  Id legacy_mul(Id a, Id c, int n = 4);
+  Id legacy_mad(Id a, Id c, Id d, int n = 4);
+  Id legacy_dp(Id a, Id c, int count); // a, c vec4 → float
+  Id legacy_lrp(Id s0, Id s1, Id s2);
+  Id clamp_to_flt_max(Id x, int n = 1);
+  Id legacy_rcp(Id x); // scalars
+  Id legacy_rsq(Id x);
+  Id legacy_log(Id x);
+  Id legacy_exp(Id x);
+  Id legacy_pow(Id x, Id y);
+  Id legacy_nrm_scale(Id len2);
+  Id legacy_saturate(Id x, int n = 4);
+  Id legacy_frc(Id x, int n = 4);
+  Id legacy_sgn(Id x);
+  Id legacy_clamp_sym(Id x, Id max, int n = 4);     // ps1x_const / ps1x_range
+  Id legacy_fixed_quantise(Id x, int bits, Id max); // vec4
+  Id legacy_index(Id x);                            // clamp_index_float, float → int
+
+  // ---- registers and operands (emit_operands.cpp) ----
+  Id register_var(ir::RegFile file, uint32_t index); // Private vec4 (a0: ivec4)
+  Id input_var(ir::RegFile file, uint32_t index);    // Input vec4 at its location
+  Id load_register(ir::RegFile file, uint32_t index, const std::optional<ir::RelAddr>& rel);
+  Id load_src(const ir::SrcOperand& s, uint32_t index_offset = 0);
+  Id scalar_src(const ir::SrcOperand& s); // replicate-swizzle component (the w slot)
+  Id load_const(uint32_t index, const std::optional<ir::RelAddr>& rel);
+  Id load_int_const(uint32_t index);          // ivec4
+  Id load_bool_const(uint32_t index);         // bool
+  Id loop_var();                              // aL: Private int
+  uint32_t relative_limit() const;            // c[a0 + n] outside [0, limit) reads 0
+  Id bumpenv(uint32_t stage, uint32_t which); // ps_1_x: 0 matrix, 1 luminance (vec4)
+  Id aL_var_ = 0;
+  void store(const PendingStore& st, bool ps1x_range);
+  Id ps1x_max_value() const { return spec_max_value_; }
+
+  // ---- instruction emitters (emit_arith.cpp, emit_texture.cpp, emit_flow.cpp) ----
+  // Arithmetic: the vec4 result and the mask it may write (narrowed for macros).
+  bool emit_arith(const ir::Instruction& ins, PendingStore& out);
+  bool emit_texture(const ir::Instruction& ins, std::optional<PendingStore>& out);
+  bool emit_flow(const ir::Instruction& ins, size_t index);
+  void error(const ir::SourceLoc& loc, const std::string& message);
+
+  // Texture support (emit_texture.cpp).
+  Id sampler_var(uint32_t stage);
+  ir::SamplerType sampler_type(uint32_t stage) const;
+  Id sample(uint32_t stage, Id coord_vec4, std::optional<Id> bias = std::nullopt);
+  void kill_if_any_negative(Id value, int components);
+  Id texcoord_input(uint32_t m); // TC(m)
+  Id pad_value_[2] = {0, 0};     // texm3x2pad / texm3x3pad results (u', v')
+  uint32_t pad_count_ = 0;
+
+  // Flow state (emit_flow.cpp).
+  struct FlowFrame {
+    enum class Kind { If, Loop, Rep } kind;
+    Id merge = 0, else_label = 0, cont = 0, header = 0;
+    Id counter = 0;  // Private int: iterations left
+    Id step = 0;     // loop: aL increment
+    Id saved_al = 0; // loop: aL before the loop, restored after it
+    bool has_else = false;
+  };
+  std::vector<FlowFrame> flow_;
+  std::map<uint32_t, Id> label_fns_; // l# → function id
+  std::set<uint32_t> labels_defined_;
+  bool routine_ended_ = false; // a top-level ret ended the current routine
+  Id label_fn(uint32_t label);
+  Id clamp_int(Id v, int32_t lo, int32_t hi);
+
+  // Interface and resources (emit_module.cpp).
+  std::map<std::pair<ir::RegFile, uint32_t>, Id> regs_, inputs_;
+  std::map<uint32_t, Id> samplers_;
+  std::vector<InterfaceVar> interface_;
+  std::vector<Id> interface_ids_;
+  std::set<uint32_t> consts_read_;
+  bool const_relative_ = false;
+  Id uniform_var_ = 0, uniform_block_ = 0; // created in begin_module, sized at the end
+  Id spec_max_value_ = 0;
+  std::vector<SpecConstantInfo> spec_info_;
+  Id spec_float(uint32_t spec_id, float default_value, const std::string& name);
+  // Block members: 0 c[], then vs_2_0: 1 i[16], 2 b[16]; ps_1_x: 1 bumpenv[16].
+  static constexpr uint32_t kMemberFloat = 0, kMemberInt = 1, kMemberBool = 2, kMemberBump = 1;
+  uint32_t float_count_ = 0, offset_int_ = 0, offset_bool_ = 0, offset_bump_ = 0;
+  uint32_t size_bytes_ = 0;
+  bool writes_depth_ = false, uses_kill_ = false;
+  Id depth_out_var_ = 0;
+  Id fn_main_ = 0;
+
+private:
+  void begin_module();
+  void declare_uniforms();
+  void emit_code();
+  void emit_entry();
+  Id output_var(const InterfaceVar& iv, Id type);
+  void flush(std::vector<PendingStore>& pending);
+};
+
+} // namespace tierlift::codegen

@@ -1,0 +1,183 @@
+// The entry point: calls the D3D program, then copies output registers to the stage
+// interface (docs/spirv-mapping.md): the position fix-up (y flip, D3D9 half-pixel shift as
+// specialization constants), oD#/oFog saturation, fragment colours and depth. Then the
+// module is finished, validated and (optionally) optimised.
+#include <spirv/unified1/GLSL.std.450.h>
+
+#include "tierlift/codegen/emitter.h"
+
+namespace tierlift::codegen {
+
+using ir::RegFile;
+using spv::Op;
+using SC = spv::StorageClass;
+
+Id Emitter::output_var(const InterfaceVar& iv, Id type) {
+  const Id var = b.global_variable(b.type_pointer(SC::Output, type), SC::Output);
+  if (iv.kind == InterfaceKind::BuiltIn) {
+    const spv::BuiltIn bi = iv.builtin == "Position"    ? spv::BuiltIn::Position
+                            : iv.builtin == "PointSize" ? spv::BuiltIn::PointSize
+                                                        : spv::BuiltIn::FragDepth;
+    b.decorate(var, spv::Decoration::BuiltIn, static_cast<uint32_t>(bi));
+  } else {
+    b.decorate(var, spv::Decoration::Location, iv.location);
+  }
+  b.name(var, "out_" + iv.name);
+  interface_.push_back(iv);
+  interface_ids_.push_back(var);
+  return var;
+}
+
+namespace {
+InterfaceVar make_iv(InterfaceKind kind, RegFile file, uint32_t index, uint32_t location,
+                     uint32_t components, std::string builtin = {}) {
+  InterfaceVar iv;
+  iv.kind = kind;
+  iv.file = file;
+  iv.index = index;
+  iv.location = location;
+  iv.components = components;
+  iv.builtin = std::move(builtin);
+  iv.name = ir::register_name(file, index);
+  if (file == RegFile::TexCrdOut || file == RegFile::AttrOut) {
+    iv.usage = file == RegFile::TexCrdOut ? ir::DeclUsage::TexCoord : ir::DeclUsage::Color;
+    iv.usage_index = static_cast<uint8_t>(index);
+  }
+  return iv;
+}
+} // namespace
+
+void Emitter::emit_entry() {
+  const Id fn = b.fresh_id();
+  b.begin_function(t_void, b.type_function(t_void), fn);
+  b.name(fn, opt.entry_point);
+  b.begin_block(b.fresh_id());
+  b.op(Op::OpFunctionCall, t_void, {fn_main_});
+  const bool vertex = prog.stage() == ir::ShaderStage::Vertex;
+  auto load = [&](RegFile file, uint32_t index) {
+    return b.op(Op::OpLoad, t_vec4, {register_var(file, index)});
+  };
+  if (vertex) {
+    std::set<std::pair<RegFile, uint32_t>> outs;
+    if (plan.vs_outputs) {
+      outs = *plan.vs_outputs;
+    } else {
+      for (const auto& [key, var] : regs_)
+        if (key.first == RegFile::RastOut || key.first == RegFile::AttrOut ||
+            key.first == RegFile::TexCrdOut)
+          outs.insert(key);
+    }
+    outs.insert({RegFile::RastOut, ir::kRastPos});
+    for (const auto& [file, index] : outs) {
+      const Id v = load(file, index);
+      if (file == RegFile::RastOut && index == ir::kRastPos) {
+        const Id flip = spec_float(kSpecFlipY, opt.flip_y ? -1.0f : 1.0f, "flip_y");
+        const Id offx = spec_float(kSpecPixelOffsetX, opt.pixel_offset_x, "pixel_offset_x");
+        const Id offy = spec_float(kSpecPixelOffsetY, opt.pixel_offset_y, "pixel_offset_y");
+        const Id w = comp(v, 3);
+        const Id x = fadd(comp(v, 0), fmul(offx, w, 1), 1);
+        const Id y = fadd(fmul(flip, comp(v, 1), 1), fmul(offy, w, 1), 1);
+        const Id pos = compose(x, y, comp(v, 2), w);
+        const Id var =
+            output_var(make_iv(InterfaceKind::BuiltIn, file, index, 0, 4, "Position"), t_vec4);
+        b.op_void(Op::OpStore, {var, pos});
+      } else if (file == RegFile::RastOut) {
+        const bool fog = index == ir::kRastFog;
+        Id x = comp(v, 0);
+        if (fog) x = legacy_saturate(x, 1);
+        const Id var =
+            output_var(fog ? make_iv(InterfaceKind::Output, file, index, kFogLocation, 1)
+                           : make_iv(InterfaceKind::BuiltIn, file, index, 0, 1, "PointSize"),
+                       t_float);
+        b.op_void(Op::OpStore, {var, x});
+      } else {
+        // oD# reach the pixel stage saturated (d3d9-isa.md §3.1).
+        const bool color = file == RegFile::AttrOut;
+        const Id value = color ? legacy_saturate(v) : v;
+        const Id var =
+            output_var(make_iv(InterfaceKind::Output, file, index,
+                               color ? kColorLocation + index : kTexCoordLocation + index, 4),
+                       t_vec4);
+        b.op_void(Op::OpStore, {var, value});
+      }
+    }
+  } else {
+    if (ir::is_ps1x(prog.profile)) {
+      const Id var = output_var(make_iv(InterfaceKind::Output, RegFile::Temp, 0, 0, 4), t_vec4);
+      b.op_void(Op::OpStore, {var, load(RegFile::Temp, 0)});
+    } else {
+      std::vector<uint32_t> colors;
+      for (const auto& [key, var] : regs_)
+        if (key.first == RegFile::ColorOut) colors.push_back(key.second);
+      for (uint32_t n : colors) {
+        const Id var =
+            output_var(make_iv(InterfaceKind::Output, RegFile::ColorOut, n, n, 4), t_vec4);
+        b.op_void(Op::OpStore, {var, load(RegFile::ColorOut, n)});
+      }
+    }
+    if (writes_depth_) {
+      const Id var = output_var(
+          make_iv(InterfaceKind::BuiltIn, RegFile::DepthOut, 0, 0, 1, "FragDepth"), t_float);
+      b.op_void(Op::OpStore, {var, comp(load(RegFile::DepthOut, 0), 0)});
+    }
+  }
+  b.op_void(Op::OpReturn, {});
+  b.end_function();
+  b.entry_point(vertex ? spv::ExecutionModel::Vertex : spv::ExecutionModel::Fragment, fn,
+                opt.entry_point, interface_ids_);
+  if (!vertex) {
+    b.execution_mode(fn, spv::ExecutionMode::OriginUpperLeft);
+    if (writes_depth_) b.execution_mode(fn, spv::ExecutionMode::DepthReplacing);
+  }
+}
+
+std::optional<ShaderModule> Emitter::run() {
+  begin_module();
+  emit_code();
+  if (failed) return std::nullopt;
+  emit_entry();
+  declare_uniforms();
+  if (uses_kill_ && opt.kill == KillMode::Demote) {
+    b.capability(spv::Capability::DemoteToHelperInvocation);
+    b.extension("SPV_EXT_demote_to_helper_invocation");
+  }
+  ShaderModule m;
+  m.stage = prog.stage();
+  m.words = b.finish();
+  const ir::SourceLoc where = prog.version_loc;
+  std::string message;
+  if (!validate(m.words, &message)) {
+    diags.error(where, "spirv-val",
+                "internal error: the generated SPIR-V fails validation: " + message);
+    return std::nullopt;
+  }
+  if (opt.optimize) {
+    std::vector<uint32_t> optimised = m.words;
+    if (!optimize(optimised, &message) || !validate(optimised, &message)) {
+      diags.error(where, "spirv-opt", "internal error: optimisation failed: " + message);
+      return std::nullopt;
+    }
+    m.words = std::move(optimised);
+  }
+  m.entry_point = opt.entry_point;
+  m.interface = interface_;
+  if (uniform_var_) {
+    m.uniforms.binding =
+        prog.stage() == ir::ShaderStage::Vertex ? kVertexConstantsBinding : kPixelConstantsBinding;
+    m.uniforms.float_count = float_count_;
+    m.uniforms.int_offset = offset_int_;
+    m.uniforms.bool_offset = offset_bool_;
+    m.uniforms.bump_offset = offset_bump_;
+    m.uniforms.size_bytes = size_bytes_;
+    m.uniforms.float_used.assign(consts_read_.begin(), consts_read_.end());
+  }
+  for (const auto& [stage, var] : samplers_)
+    m.samplers.push_back(
+        {kDescriptorSet, kFirstSamplerBinding + stage, stage, sampler_type(stage)});
+  m.spec_constants = spec_info_;
+  m.writes_depth = writes_depth_;
+  m.uses_kill = uses_kill_;
+  return m;
+}
+
+} // namespace tierlift::codegen

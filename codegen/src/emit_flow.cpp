@@ -1,0 +1,200 @@
+// vs_2_0 static flow control as structured SPIR-V control flow: if/else/endif → selection
+// constructs, loop/rep → loop constructs with a Private iteration counter (i#.x clamped to
+// the legal 0–255 so a bad constant cannot hang the device), label/ret → one SPIR-V
+// function per subroutine (registers are Private, so subroutines share them), call/callnz
+// → OpFunctionCall. ps_1_4 phase needs no code.
+#include <algorithm>
+
+#include "tierlift/codegen/emitter.h"
+
+namespace tierlift::codegen {
+
+using ir::Opcode;
+using spv::Op;
+using SC = spv::StorageClass;
+
+Id Emitter::clamp_int(Id v, int32_t lo, int32_t hi) {
+  const Id l = b.const_int(lo), h = b.const_int(hi);
+  v = b.op(Op::OpSelect, t_int, {b.op(Op::OpSLessThan, t_bool, {v, l}), l, v});
+  return b.op(Op::OpSelect, t_int, {b.op(Op::OpSGreaterThan, t_bool, {v, h}), h, v});
+}
+
+Id Emitter::label_fn(uint32_t label) {
+  if (auto it = label_fns_.find(label); it != label_fns_.end()) return it->second;
+  const Id id = b.fresh_id();
+  label_fns_.emplace(label, id);
+  b.name(id, "l" + std::to_string(label));
+  return id;
+}
+
+namespace {
+constexpr uint32_t kNone = 0;
+}
+
+bool Emitter::emit_flow(const ir::Instruction& ins, size_t) {
+  const ir::OpInfo& info = ir::op_info(ins.op);
+  if (ins.src.size() < info.num_src) {
+    error(ins.loc, "malformed instruction '" + std::string(info.mnemonic) + "'");
+    return false;
+  }
+  auto branch_if_open = [&](Id target) {
+    if (b.block_open()) b.op_void(Op::OpBranch, {target});
+  };
+  auto bool_operand = [&](const ir::SrcOperand& s) {
+    Id c = load_bool_const(s.index);
+    if (s.mod == ir::SrcMod::Not) c = b.op(Op::OpLogicalNot, t_bool, {c});
+    return c;
+  };
+  auto begin_loop = [&](FlowFrame::Kind kind, uint32_t int_reg) {
+    FlowFrame fr;
+    fr.kind = kind;
+    const Id iv = load_int_const(int_reg);
+    const Id count = clamp_int(b.op(Op::OpCompositeExtract, t_int, {iv, 0}), 0, 255);
+    fr.counter = b.global_variable(b.type_pointer(SC::Private, t_int), SC::Private, b.const_int(0));
+    b.op_void(Op::OpStore, {fr.counter, count});
+    if (kind == FlowFrame::Kind::Loop) {
+      // aL starts at i.y clamped to 0–255 and steps by i.z clamped to −128–127 (the legal
+      // ranges, as the interpreter clamps them).
+      fr.saved_al = b.op(Op::OpLoad, t_int, {loop_var()});
+      b.op_void(Op::OpStore,
+                {loop_var(), clamp_int(b.op(Op::OpCompositeExtract, t_int, {iv, 1}), 0, 255)});
+      fr.step = clamp_int(b.op(Op::OpCompositeExtract, t_int, {iv, 2}), -128, 127);
+    }
+    fr.header = b.fresh_id();
+    fr.merge = b.fresh_id();
+    fr.cont = b.fresh_id();
+    const Id body = b.fresh_id();
+    b.op_void(Op::OpBranch, {fr.header});
+    b.begin_block(fr.header);
+    const Id n = b.op(Op::OpLoad, t_int, {fr.counter});
+    const Id more = b.op(Op::OpSGreaterThan, t_bool, {n, b.const_int(0)});
+    b.op_void(Op::OpLoopMerge,
+              {fr.merge, fr.cont, static_cast<uint32_t>(spv::LoopControlMask::MaskNone)});
+    b.op_void(Op::OpBranchConditional, {more, body, fr.merge});
+    b.begin_block(body);
+    flow_.push_back(fr);
+  };
+  auto end_loop = [&](FlowFrame::Kind kind) {
+    if (flow_.empty() || flow_.back().kind != kind) {
+      error(ins.loc, "'" + std::string(info.mnemonic) + "' without a matching opening");
+      return false;
+    }
+    const FlowFrame fr = flow_.back();
+    flow_.pop_back();
+    branch_if_open(fr.cont);
+    b.begin_block(fr.cont);
+    const Id n = b.op(Op::OpLoad, t_int, {fr.counter});
+    b.op_void(Op::OpStore, {fr.counter, b.op(Op::OpISub, t_int, {n, b.const_int(1)})});
+    if (kind == FlowFrame::Kind::Loop) {
+      const Id al = b.op(Op::OpLoad, t_int, {loop_var()});
+      b.op_void(Op::OpStore, {loop_var(), b.op(Op::OpIAdd, t_int, {al, fr.step})});
+    }
+    b.op_void(Op::OpBranch, {fr.header});
+    b.begin_block(fr.merge);
+    if (kind == FlowFrame::Kind::Loop) b.op_void(Op::OpStore, {loop_var(), fr.saved_al});
+    return true;
+  };
+
+  switch (ins.op) {
+  case Opcode::Phase:
+    // The alpha of every r# is lost across the marker; tierlift defines it as 0 (the
+    // interpreter's exec_phase, NUMERICS.md "phase alpha").
+    for (uint32_t r = 0; r < 6; ++r) {
+      if (!regs_.count({ir::RegFile::Temp, r})) continue; // never written: already 0
+      PendingStore st;
+      st.dst.file = ir::RegFile::Temp;
+      st.dst.index = r;
+      st.mask = 0x8;
+      st.value = vec4_const(0, 0, 0, 0);
+      store(st, false);
+    }
+    return true;
+  case Opcode::If: {
+    FlowFrame fr;
+    fr.kind = FlowFrame::Kind::If;
+    fr.merge = b.fresh_id();
+    fr.else_label = b.fresh_id();
+    const Id then = b.fresh_id();
+    const Id c = bool_operand(ins.src[0]);
+    b.op_void(Op::OpSelectionMerge,
+              {fr.merge, static_cast<uint32_t>(spv::SelectionControlMask::MaskNone)});
+    b.op_void(Op::OpBranchConditional, {c, then, fr.else_label});
+    b.begin_block(then);
+    flow_.push_back(fr);
+    return true;
+  }
+  case Opcode::Else: {
+    if (flow_.empty() || flow_.back().kind != FlowFrame::Kind::If || flow_.back().has_else) {
+      error(ins.loc, "'else' without a matching 'if'");
+      return false;
+    }
+    branch_if_open(flow_.back().merge);
+    b.begin_block(flow_.back().else_label);
+    flow_.back().has_else = true;
+    return true;
+  }
+  case Opcode::EndIf: {
+    if (flow_.empty() || flow_.back().kind != FlowFrame::Kind::If) {
+      error(ins.loc, "'endif' without a matching 'if'");
+      return false;
+    }
+    const FlowFrame fr = flow_.back();
+    flow_.pop_back();
+    branch_if_open(fr.merge);
+    if (!fr.has_else) {
+      b.begin_block(fr.else_label);
+      b.op_void(Op::OpBranch, {fr.merge});
+    }
+    b.begin_block(fr.merge);
+    return true;
+  }
+  case Opcode::Loop: begin_loop(FlowFrame::Kind::Loop, ins.src[1].index); return true;
+  case Opcode::Rep: begin_loop(FlowFrame::Kind::Rep, ins.src[0].index); return true;
+  case Opcode::EndLoop: return end_loop(FlowFrame::Kind::Loop);
+  case Opcode::EndRep: return end_loop(FlowFrame::Kind::Rep);
+  case Opcode::Call: b.op(Op::OpFunctionCall, t_void, {label_fn(ins.src[0].index)}); return true;
+  case Opcode::CallNz: {
+    const Id c = bool_operand(ins.src[1]);
+    const Id then = b.fresh_id(), merge = b.fresh_id();
+    b.op_void(Op::OpSelectionMerge,
+              {merge, static_cast<uint32_t>(spv::SelectionControlMask::MaskNone)});
+    b.op_void(Op::OpBranchConditional, {c, then, merge});
+    b.begin_block(then);
+    b.op(Op::OpFunctionCall, t_void, {label_fn(ins.src[0].index)});
+    b.op_void(Op::OpBranch, {merge});
+    b.begin_block(merge);
+    return true;
+  }
+  case Opcode::Ret:
+    if (b.block_open()) b.op_void(Op::OpReturn, {});
+    if (flow_.empty()) {
+      routine_ended_ = true; // the first top-level ret ends the routine
+    } else {
+      b.begin_block(b.fresh_id()); // the rest of the construct is unreachable
+    }
+    return true;
+  case Opcode::Label: {
+    if (!flow_.empty()) {
+      error(ins.loc, "'label' inside an open flow-control block");
+      return false;
+    }
+    if (b.block_open()) b.op_void(Op::OpReturn, {});
+    b.end_function();
+    const uint32_t l = ins.src[0].index;
+    if (!labels_defined_.insert(l).second) {
+      error(ins.loc, "label l" + std::to_string(l) + " is defined twice");
+      return false;
+    }
+    b.begin_function(t_void, b.type_function(t_void), label_fn(l));
+    b.begin_block(b.fresh_id());
+    routine_ended_ = false;
+    return true;
+  }
+  default: break;
+  }
+  (void)kNone;
+  error(ins.loc, "code generation for '" + std::string(info.mnemonic) + "' is not implemented");
+  return false;
+}
+
+} // namespace tierlift::codegen

@@ -1,0 +1,241 @@
+// Texture instructions (d3d9-isa.md §5.5–§5.7): sampling through combined image samplers
+// at set 0, binding 2 + stage; ps_1_1…1_3 texture-address instructions with their pad
+// rows; texkill as OpKill or OpDemoteToHelperInvocation.
+#include <spirv/unified1/GLSL.std.450.h>
+
+#include "tierlift/codegen/emitter.h"
+
+namespace tierlift::codegen {
+
+using ir::Opcode;
+using ir::RegFile;
+using spv::Op;
+using SC = spv::StorageClass;
+
+ir::SamplerType Emitter::sampler_type(uint32_t stage) const {
+  if (prog.profile == ir::Profile::ps_2_0) {
+    for (const ir::Declaration& d : prog.decls)
+      if (d.reg.file == RegFile::Sampler && d.reg.index == stage &&
+          d.sampler_type != ir::SamplerType::Unknown)
+        return d.sampler_type;
+    return ir::SamplerType::Tex2D;
+  }
+  const ir::SamplerType t = opt.stage_texture_type[stage & 15];
+  return t == ir::SamplerType::Unknown ? ir::SamplerType::Tex2D : t;
+}
+
+namespace {
+spv::Dim dim_of(ir::SamplerType t) {
+  switch (t) {
+  case ir::SamplerType::Cube: return spv::Dim::Cube;
+  case ir::SamplerType::Volume: return spv::Dim::Dim3D;
+  default: return spv::Dim::Dim2D;
+  }
+}
+} // namespace
+
+Id Emitter::sampler_var(uint32_t stage) {
+  if (auto it = samplers_.find(stage); it != samplers_.end()) return it->second;
+  const Id image = b.type_image(t_float, dim_of(sampler_type(stage)));
+  const Id sampled = b.type_sampled_image(image);
+  const Id var =
+      b.global_variable(b.type_pointer(SC::UniformConstant, sampled), SC::UniformConstant);
+  b.decorate(var, spv::Decoration::DescriptorSet, kDescriptorSet);
+  b.decorate(var, spv::Decoration::Binding, kFirstSamplerBinding + stage);
+  b.name(var, "s" + std::to_string(stage));
+  samplers_.emplace(stage, var);
+  return var;
+}
+
+Id Emitter::sample(uint32_t stage, Id coord, std::optional<Id> bias) {
+  const Id var = sampler_var(stage);
+  const ir::SamplerType type = sampler_type(stage);
+  const Id image = b.type_image(t_float, dim_of(type));
+  const Id si = b.op(Op::OpLoad, b.type_sampled_image(image), {var});
+  const Id c = type == ir::SamplerType::Tex2D
+                   ? b.op(Op::OpVectorShuffle, t_vec2, {coord, coord, 0, 1})
+                   : b.op(Op::OpVectorShuffle, t_vec3, {coord, coord, 0, 1, 2});
+  if (bias)
+    return b.op(Op::OpImageSampleImplicitLod, t_vec4,
+                {si, c, static_cast<uint32_t>(spv::ImageOperandsMask::Bias), *bias});
+  return b.op(Op::OpImageSampleImplicitLod, t_vec4, {si, c});
+}
+
+Id Emitter::texcoord_input(uint32_t m) {
+  return b.op(Op::OpLoad, t_vec4, {input_var(RegFile::Texture, m)});
+}
+
+void Emitter::kill_if_any_negative(Id value, int components) {
+  uses_kill_ = true;
+  Id any = 0;
+  for (int i = 0; i < components; ++i) {
+    const Id lt = cmp(Op::OpFOrdLessThan, comp(value, static_cast<uint32_t>(i)), f(0.0f), 1);
+    any = any ? b.op(Op::OpLogicalOr, t_bool, {any, lt}) : lt;
+  }
+  if (!any) return;
+  const Id kill = b.fresh_id(), merge = b.fresh_id();
+  b.op_void(Op::OpSelectionMerge,
+            {merge, static_cast<uint32_t>(spv::SelectionControlMask::MaskNone)});
+  b.op_void(Op::OpBranchConditional, {any, kill, merge});
+  b.begin_block(kill);
+  if (opt.kill == KillMode::Demote) {
+    b.op_void(Op::OpDemoteToHelperInvocation, {});
+    b.op_void(Op::OpBranch, {merge});
+  } else {
+    b.op_void(Op::OpKill, {});
+  }
+  b.begin_block(merge);
+}
+
+bool Emitter::emit_texture(const ir::Instruction& ins, std::optional<PendingStore>& out) {
+  const ir::OpInfo& info = ir::op_info(ins.op);
+  if (!ins.dst || ins.src.size() < info.num_src) {
+    error(ins.loc, "malformed instruction '" + std::string(info.mnemonic) + "'");
+    return false;
+  }
+  const uint32_t m = ins.dst->index;
+  const Id zero = f(0.0f);
+  auto result = [&](Id v) {
+    PendingStore st;
+    st.dst = *ins.dst;
+    st.mods = ins.mods;
+    st.mask = ins.dst->mask;
+    st.value = v;
+    out = st;
+    return true;
+  };
+  auto depth = [&](Id z) {
+    PendingStore st;
+    st.dst.file = RegFile::DepthOut;
+    st.dst.index = 0;
+    st.mask = 0x1;
+    st.value = splat(z);
+    out = st;
+    return true;
+  };
+  auto tc = [&](uint32_t stage) {
+    Id c = texcoord_input(stage);
+    if (opt.stage_projected[stage & 15] && sampler_type(stage) != ir::SamplerType::Cube) {
+      // (x/w, y/w, z/w, 1), as the interpreter's projected().
+      const Id w = comp(c, 3);
+      c = compose(fdiv(comp(c, 0), w, 1), fdiv(comp(c, 1), w, 1), fdiv(comp(c, 2), w, 1), f(1.0f));
+    }
+    return c;
+  };
+  auto dot3_tc = [&](uint32_t stage) {
+    return legacy_dp(texcoord_input(stage), load_src(ins.src[0]), 3);
+  };
+  switch (ins.op) {
+  case Opcode::Tex: return result(sample(m, tc(m)));
+  case Opcode::TexLd14: return result(sample(m, load_src(ins.src[0])));
+  case Opcode::TexLd:
+  case Opcode::TexLdP:
+  case Opcode::TexLdB: {
+    const uint32_t s = ins.src[1].index;
+    Id c = load_src(ins.src[0]);
+    if (ins.op == Opcode::TexLdP) return result(sample(s, fdiv(c, splat(comp(c, 3)))));
+    if (ins.op == Opcode::TexLdB) return result(sample(s, c, comp(c, 3)));
+    return result(sample(s, c));
+  }
+  case Opcode::TexCoord: {
+    const Id c = legacy_saturate(texcoord_input(m));
+    return result(compose(comp(c, 0), comp(c, 1), comp(c, 2), f(1.0f)));
+  }
+  case Opcode::TexCrd: return result(load_src(ins.src[0]));
+  case Opcode::TexKill: {
+    Id v;
+    int n = 3;
+    if (ir::is_ps11_13(prog.profile)) {
+      v = texcoord_input(m);
+    } else {
+      v = load_register(ins.dst->file, m, std::nullopt);
+      // SM2 tests all four components (Wine; the docs say three, d3d9-isa.md §5.7).
+      if (prog.profile == ir::Profile::ps_2_0) n = 4;
+    }
+    kill_if_any_negative(v, n);
+    return true;
+  }
+  case Opcode::TexBem:
+  case Opcode::TexBemL: {
+    const Id tn = load_src(ins.src[0]);
+    const Id c = tc(m);
+    const Id mat = bumpenv(m, 0);
+    const Id r = comp(tn, 0), g = comp(tn, 1);
+    const Id u = fadd(fadd(comp(c, 0), legacy_mul(comp(mat, 0), r, 1), 1),
+                      legacy_mul(comp(mat, 2), g, 1), 1);
+    const Id v = fadd(fadd(comp(c, 1), legacy_mul(comp(mat, 1), r, 1), 1),
+                      legacy_mul(comp(mat, 3), g, 1), 1);
+    Id s = sample(m, compose(u, v, comp(c, 2), comp(c, 3)));
+    if (ins.op == Opcode::TexBemL) {
+      const Id lum = bumpenv(m, 1);
+      const Id k = fadd(legacy_mul(comp(tn, 2), comp(lum, 0), 1), comp(lum, 1), 1);
+      s = legacy_mul(s, splat(k));
+    }
+    return result(s);
+  }
+  case Opcode::TexReg2Ar:
+  case Opcode::TexReg2Gb:
+  case Opcode::TexReg2Rgb: {
+    const Id tn = load_src(ins.src[0]);
+    const Id c = ins.op == Opcode::TexReg2Ar ? compose(comp(tn, 3), comp(tn, 0), zero, zero)
+                 : ins.op == Opcode::TexReg2Gb
+                     ? compose(comp(tn, 1), comp(tn, 2), zero, zero)
+                     : compose(comp(tn, 0), comp(tn, 1), comp(tn, 2), zero);
+    return result(sample(m, c));
+  }
+  case Opcode::TexM3x2Pad:
+  case Opcode::TexM3x3Pad:
+    pad_value_[pad_count_ & 1] = dot3_tc(m);
+    ++pad_count_;
+    return true;
+  case Opcode::TexM3x2Tex:
+  case Opcode::TexM3x2Depth: {
+    const Id v = dot3_tc(m);
+    const Id u = pad_value_[0] ? pad_value_[0] : zero;
+    pad_count_ = 0;
+    if (ins.op == Opcode::TexM3x2Tex) return result(sample(m, compose(u, v, zero, zero)));
+    const Id is0 = cmp(Op::OpFOrdEqual, v, zero, 1);
+    return depth(select(is0, f(1.0f), fdiv(u, select(is0, f(1.0f), v, 1), 1), 1));
+  }
+  case Opcode::TexM3x3Tex:
+  case Opcode::TexM3x3:
+  case Opcode::TexM3x3Spec:
+  case Opcode::TexM3x3VSpec: {
+    const Id w = dot3_tc(m);
+    const Id u = pad_value_[0] ? pad_value_[0] : zero;
+    const Id v = pad_value_[1] ? pad_value_[1] : zero;
+    pad_count_ = 0;
+    const Id n = compose(u, v, w, zero);
+    if (ins.op == Opcode::TexM3x3) return result(compose(u, v, w, f(1.0f)));
+    if (ins.op == Opcode::TexM3x3Tex) return result(sample(m, n));
+    Id e;
+    if (ins.op == Opcode::TexM3x3Spec) {
+      e = load_src(ins.src[1]);
+    } else {
+      const uint32_t m0 = m >= 2 ? m - 2 : 0, m1 = m >= 1 ? m - 1 : 0;
+      e = compose(comp(texcoord_input(m0), 3), comp(texcoord_input(m1), 3),
+                  comp(texcoord_input(m), 3), zero);
+    }
+    // legacy_reflect: k = N·N == 0 ? 0 : 2·(N·E)/(N·N); R = k·N − E.
+    const Id nn = legacy_dp(n, n, 3);
+    const Id is0 = cmp(Op::OpFOrdEqual, nn, zero, 1);
+    const Id k = select(
+        is0, zero, fdiv(fmul(f(2.0f), legacy_dp(n, e, 3), 1), select(is0, f(1.0f), nn, 1), 1), 1);
+    const Id r = fsub(legacy_mul(splat(k), n), e);
+    return result(sample(m, r));
+  }
+  case Opcode::TexDp3: return result(splat(dot3_tc(m)));
+  case Opcode::TexDp3Tex: return result(sample(m, compose(dot3_tc(m), zero, zero, zero)));
+  case Opcode::TexDepth: {
+    const Id r5 = load_register(RegFile::Temp, m, std::nullopt);
+    const Id r = comp(r5, 0), g = comp(r5, 1);
+    const Id is0 = cmp(Op::OpFOrdEqual, g, zero, 1);
+    return depth(select(is0, f(1.0f), fdiv(r, select(is0, f(1.0f), g, 1), 1), 1));
+  }
+  default:
+    error(ins.loc, "code generation for '" + std::string(info.mnemonic) + "' is not implemented");
+    return false;
+  }
+}
+
+} // namespace tierlift::codegen

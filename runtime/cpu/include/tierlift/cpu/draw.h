@@ -1,0 +1,120 @@
+// The CPU device's draw: one pass of Direct3D 9 fixed-function plumbing around the shader
+// VM — vertex stage, clipping, viewport transform, rasterisation with the top-left fill
+// rule, perspective-correct interpolation, pixel stage, texkill, blending, store
+// (d3d9-isa.md §9, §10; design.md "Conventions").
+//
+// How the geometry is placed:
+//   * Screen space: x_s = X + (x/w + 1)·W/2, y_s = Y + (1 − y/w)·H/2 (y down).
+//   * Pixel (i, j) is sampled at (i, j) under PixelCenter::D3D9 and at (i + 0.5, j + 0.5)
+//     under PixelCenter::Modern. So the full-screen quad interpolates u = i/W at pixel i
+//     with D3D9 centres and (i + 0.5)/W with modern ones.
+//   * Vertices are snapped to 1/256 pixel (8 sub-pixel bits, as lavapipe) and the edge
+//     functions are evaluated exactly in integers: a pixel whose sample point lies on an
+//     edge is drawn only when that edge is a top or left edge, so two triangles sharing an
+//     edge never both draw a pixel and never both miss one.
+//   * Clipping: 0 ≤ z ≤ w (D3D9's clip volume) and a guard band |x|, |y| ≤ 8·w; pixels
+//     outside the viewport and the target are not drawn.
+//
+// No culling (D3DCULL_NONE): both windings are drawn. No depth or stencil test.
+//
+// Interpolation: oT# and oD# are perspective-correct (oD# saturated per vertex first); z/w
+// is interpolated linearly in screen space into PixelInput::depth.
+//
+// Store: the pixel stage's oC0 (ps_1_x: r0; no pixel program: the interpolated oD0, as
+// D3D9's fixed function with no texture passes the diffuse colour) is blended in float with
+// the stored destination value and quantised with img::quantize(target.format). For RGBA8
+// targets the source colour and blend factors are clamped to [0, 1] before blending, as
+// Vulkan and D3D9 do for UNORM attachments. Blending applies to all four channels.
+//
+// Threads: rows are handed out in small bands to `threads` workers (0 = every core). Each
+// pixel is written by exactly one worker, in primitive order, so the image does not depend
+// on the thread count.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tierlift/cpu/shader_vm.h"
+#include "tierlift/cpu/texture.h"
+#include "tierlift/image/image.h"
+#include "tierlift/ir/conventions.h"
+#include "tierlift/ir/program.h"
+
+namespace tierlift::cpu {
+
+enum class BlendMode : uint8_t {
+  Replace,             // dst = src
+  OneOne,              // dst = src + dst
+  SrcAlphaOne,         // dst = src·src.a + dst
+  SrcAlphaInvSrcAlpha, // dst = src·src.a + dst·(1 − src.a)
+};
+
+// D3DVIEWPORT9. width/height 0 mean "the render target's size".
+struct Viewport {
+  int32_t x = 0, y = 0;
+  uint32_t width = 0, height = 0;
+  float min_z = 0.0f, max_z = 1.0f;
+};
+
+// Corners of the full-screen quad in clip space, in the order top-left, top-right,
+// bottom-left, bottom-right: (−1, 1), (1, 1), (−1, −1), (1, −1), z = 0, w = 1.
+inline constexpr std::array<Vec4, 4> kQuadCorners{Vec4{-1, 1, 0, 1}, Vec4{1, 1, 0, 1},
+                                                  Vec4{-1, -1, 0, 1}, Vec4{1, -1, 0, 1}};
+// (u, v, 0, 1) at the same corners: (0, 0) top-left … (1, 1) bottom-right.
+inline constexpr std::array<Vec4, 4> kQuadUV{Vec4{0, 0, 0, 1}, Vec4{1, 0, 0, 1}, Vec4{0, 1, 0, 1},
+                                             Vec4{1, 1, 0, 1}};
+// The quad's two triangles (indices into the corners above); they share the diagonal from
+// top-right to bottom-left.
+inline constexpr std::array<std::array<uint32_t, 3>, 2> kQuadTriangles{
+    std::array<uint32_t, 3>{0, 1, 2}, std::array<uint32_t, 3>{2, 1, 3}};
+
+// One pass. Which vertex stage runs:
+//   * vertex_program set: it runs once per entry of `vertices` (its inputs v#);
+//   * no vertex program, `transformed` not empty: those are the vertex outputs, as with
+//     D3D9's pre-transformed vertices but in clip space (pos is divided by w);
+//   * neither: the full-screen quad with pixel-stage inputs `constant_inputs`, exactly
+//     as given at every pixel (no interpolation, so constants stay bit-exact).
+// `triangles` index the vertices; empty means consecutive triples (0,1,2), (3,4,5), ….
+// Which pixel stage runs: pixel_program, or none (oD0 passes through).
+struct Pass {
+  std::shared_ptr<const ir::Program> vertex_program;
+  std::shared_ptr<const ir::Program> pixel_program;
+  ConstantBank vs_constants, ps_constants;
+  std::array<TextureBinding, kMaxSamplers> textures{}; // pixel-stage sampler stages
+
+  std::vector<VertexInput> vertices;
+  std::vector<VertexOutput> transformed;
+  std::vector<std::array<uint32_t, 3>> triangles;
+  PixelInput constant_inputs;
+
+  Viewport viewport;
+  BlendMode blend = BlendMode::Replace;
+  ir::Conventions conventions;
+};
+
+// Fills pass.vertices with the full-screen quad's four corners: `position_register` gets
+// kQuadCorners, every other input reads (0, 0, 0, 1); and sets pass.triangles.
+void set_full_screen_quad(Pass& pass, uint32_t position_register);
+
+struct DrawStats {
+  bool ok = true;
+  std::string error;          // why nothing was drawn (e.g. a program the VM refuses)
+  uint64_t triangles = 0;     // after clipping
+  uint64_t pixels_shaded = 0; // pixel-stage invocations
+  uint64_t pixels_killed = 0; // discarded by texkill
+};
+
+// Draws `pass` into `target` (its format decides the store rule). Never throws on bad
+// input: a program the VM cannot run, an index out of range or a target larger than
+// img::kMaxDimension returns ok = false and leaves the target unchanged.
+DrawStats draw(const Pass& pass, img::Image& target, unsigned threads = 0);
+
+// Blend `src` onto the stored `dst` and quantise for `format` (the per-pixel store rule,
+// exposed for tests).
+Vec4 blend_and_store(BlendMode mode, img::Format format, const Vec4& src, const Vec4& dst);
+
+} // namespace tierlift::cpu

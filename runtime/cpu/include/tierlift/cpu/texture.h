@@ -1,0 +1,64 @@
+// Texture sampling with Direct3D 9 rules (d3d9-isa.md §10): texel centres at (k + 0.5)/N,
+// point = floor(u·N), bilinear i0 = floor(u·N − 0.5) with α = frac(u·N − 0.5), address
+// modes applied to the integer texel index, unbound stages read (0, 0, 0, 1).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+
+#include "tierlift/cpu/shader_vm.h"
+#include "tierlift/image/image.h"
+
+namespace tierlift::cpu {
+
+enum class Filter : uint8_t { Point, Linear };
+enum class AddressMode : uint8_t { Wrap, Mirror, Clamp, Border, MirrorOnce };
+
+// D3DSAMP_* state of one sampler stage. The defaults are D3D9's (§10.2): POINT, WRAP,
+// border colour 0x00000000.
+struct SamplerState {
+  Filter filter = Filter::Point;
+  AddressMode address_u = AddressMode::Wrap;
+  AddressMode address_v = AddressMode::Wrap;
+  Vec4 border_color{0, 0, 0, 0};
+};
+
+// The texel index an address mode turns `i` into on an axis of `n` texels (n ≥ 1), or
+// nullopt when the border colour is read instead (Border, index outside [0, n−1]).
+std::optional<int64_t> address_texel(AddressMode mode, int64_t i, int64_t n);
+
+// Bilinear fraction quantised to `subtexel_bits` (0 = exact): round(α·2^N)/2^N, the
+// rounding Vulkan describes for subTexelPrecisionBits.
+double quantize_fraction(double alpha, int subtexel_bits);
+
+// Samples `image` at normalised (u, v). Point: floor(fl32(u·N)). Bilinear: u·N − 0.5 exact
+// in double, weights and sum in double, returned as float. NaN coordinates
+// read texel index 0; huge ones are clamped before conversion (no UB).
+Vec4 sample_texture(const img::Image& image, const SamplerState& sampler, float u, float v,
+                    int subtexel_bits);
+
+// What one sampler stage holds: a texture (shared, so one image can be bound to several
+// stages as Listing 4 does), the sampler state, and the ps_1_x texture-stage state.
+struct TextureBinding {
+  std::shared_ptr<const img::Image> image; // null: unbound, reads (0, 0, 0, 1)
+  SamplerState sampler;
+  StageState stage;
+};
+
+inline constexpr uint32_t kMaxSamplers = 16;
+
+// The TextureUnit the pixel stage of a draw sees: sample(stage, …) reads bindings[stage].
+class BoundTextures final : public TextureUnit {
+public:
+  BoundTextures(const std::array<TextureBinding, kMaxSamplers>& bindings, int subtexel_bits)
+      : bindings_(bindings), subtexel_bits_(subtexel_bits) {}
+  Vec4 sample(uint32_t stage, const Vec4& coord, float lod_bias) const override;
+  StageState stage_state(uint32_t stage) const override;
+
+private:
+  const std::array<TextureBinding, kMaxSamplers>& bindings_;
+  int subtexel_bits_;
+};
+
+} // namespace tierlift::cpu

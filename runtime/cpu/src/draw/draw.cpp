@@ -1,0 +1,248 @@
+// One pass: vertex stage, setup, then rows of pixels shaded and stored by worker threads.
+#include "tierlift/cpu/draw.h"
+
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+#include "raster.h"
+
+namespace tierlift::cpu {
+namespace {
+
+using detail::PixelRect;
+using detail::Triangle;
+
+constexpr int64_t kBandRows = 4;     // rows a worker takes at a time
+constexpr int64_t kMaxWorkers = 256; // --threads 100000 must not start 100000 threads
+
+float clamp01(float v) {
+  return v > 0 ? (v < 1 ? v : 1) : 0;
+}
+
+struct PassPrograms {
+  std::optional<ShaderVM> vs, ps;
+};
+
+// Everything the workers share, read-only except the target pixels they own.
+struct RasterJob {
+  const Pass& pass;
+  const std::vector<Triangle>& triangles;
+  const ShaderVM* ps;
+  bool constant_inputs;
+  int64_t sample_offset;
+  PixelRect scissor;
+  img::Image& target;
+  BoundTextures textures;
+};
+
+PixelInput interpolate(const Triangle& t, const int64_t e[3]) {
+  PixelInput in;
+  const double area = static_cast<double>(t.area);
+  double l[3], q[3], s = 0;
+  for (int k = 0; k < 3; ++k) {
+    l[k] = static_cast<double>(e[k]) / area;
+    q[k] = l[k] * t.v[k].inv_w;
+    s += q[k];
+  }
+  // Perspective-correct weights. When the three w are equal (every 2D pass) the screen
+  // weights are already right, and skipping the division keeps u = i/W as exact as the
+  // division E/area allows.
+  if (t.v[0].inv_w != t.v[1].inv_w || t.v[0].inv_w != t.v[2].inv_w)
+    for (int k = 0; k < 3; ++k) q[k] /= s;
+  else
+    for (int k = 0; k < 3; ++k) q[k] = l[k];
+  for (size_t r = 0; r < in.color.size(); ++r)
+    for (int c = 0; c < 4; ++c)
+      in.color[r][c] =
+          clamp01(static_cast<float>(q[0] * t.v[0].out.color[r][c] + q[1] * t.v[1].out.color[r][c] +
+                                     q[2] * t.v[2].out.color[r][c]));
+  for (size_t r = 0; r < in.tex.size(); ++r)
+    for (int c = 0; c < 4; ++c)
+      in.tex[r][c] = static_cast<float>(q[0] * t.v[0].out.tex[r][c] + q[1] * t.v[1].out.tex[r][c] +
+                                        q[2] * t.v[2].out.tex[r][c]);
+  in.depth = static_cast<float>(l[0] * t.v[0].z + l[1] * t.v[1].z + l[2] * t.v[2].z);
+  return in;
+}
+
+struct WorkerStats {
+  uint64_t shaded = 0, killed = 0;
+};
+
+void shade_pixel(const RasterJob& job, const PixelInput& in, int64_t x, int64_t y,
+                 WorkerStats& stats) {
+  Vec4 color = in.color[0];
+  ++stats.shaded;
+  if (job.ps) {
+    PixelOutput out = job.ps->run_pixel(in, job.pass.ps_constants, job.textures);
+    if (out.discarded) {
+      ++stats.killed;
+      return;
+    }
+    color = out.color[0];
+  }
+  float* px = job.target.at(static_cast<uint32_t>(x), static_cast<uint32_t>(y));
+  Vec4 stored =
+      blend_and_store(job.pass.blend, job.target.format, color, {px[0], px[1], px[2], px[3]});
+  std::copy(stored.begin(), stored.end(), px);
+}
+
+void raster_rows(const RasterJob& job, int64_t y0, int64_t y1, WorkerStats& stats) {
+  PixelInput constant = job.pass.constant_inputs;
+  for (auto& c : constant.color)
+    for (auto& v : c) v = clamp01(v);
+  for (const Triangle& t : job.triangles) {
+    int64_t ya = std::max(y0, t.bounds.y0), yb = std::min(y1, t.bounds.y1);
+    for (int64_t y = ya; y < yb; ++y) {
+      int64_t py = y * detail::kSubPixelOne + job.sample_offset;
+      for (int64_t x = t.bounds.x0; x < t.bounds.x1; ++x) {
+        int64_t px = x * detail::kSubPixelOne + job.sample_offset;
+        int64_t e[3];
+        bool inside = true;
+        for (int k = 0; k < 3 && inside; ++k) {
+          e[k] = detail::edge(t.v[(k + 1) % 3], t.v[(k + 2) % 3], px, py);
+          inside = e[k] > 0 || (e[k] == 0 && t.top_left[k]);
+        }
+        if (!inside) continue;
+        if (job.constant_inputs)
+          shade_pixel(job, constant, x, y, stats);
+        else
+          shade_pixel(job, interpolate(t, e), x, y, stats);
+      }
+    }
+  }
+}
+
+std::string check_inputs(const Pass& pass, const img::Image& target, const Viewport& vp) {
+  if (target.width > img::kMaxDimension || target.height > img::kMaxDimension)
+    return "render target larger than 16384x16384";
+  if (target.rgba.size() != size_t{target.width} * target.height * 4)
+    return "render target pixel buffer does not match its size";
+  constexpr int32_t kMax = static_cast<int32_t>(img::kMaxDimension);
+  if (vp.x < -kMax || vp.x > kMax || vp.y < -kMax || vp.y > kMax || vp.width > img::kMaxDimension ||
+      vp.height > img::kMaxDimension)
+    return "viewport outside the supported range";
+  if (pass.vertex_program && pass.vertex_program->stage() != ir::ShaderStage::Vertex)
+    return "the vertex program is not a vertex shader";
+  if (pass.pixel_program && pass.pixel_program->stage() != ir::ShaderStage::Pixel)
+    return "the pixel program is not a pixel shader";
+  if (pass.vertex_program && pass.vertices.empty())
+    return "a vertex program needs vertices (see set_full_screen_quad)";
+  return {};
+}
+
+} // namespace
+
+void set_full_screen_quad(Pass& pass, uint32_t position_register) {
+  pass.vertices.assign(4, VertexInput{});
+  for (size_t i = 0; i < 4; ++i)
+    if (position_register < 16) pass.vertices[i].v[position_register] = kQuadCorners[i];
+  pass.triangles.assign(kQuadTriangles.begin(), kQuadTriangles.end());
+}
+
+DrawStats draw(const Pass& pass, img::Image& target, unsigned threads) {
+  DrawStats stats;
+  Viewport vp = pass.viewport;
+  if (vp.width == 0) vp.width = target.width;
+  if (vp.height == 0) vp.height = target.height;
+  if (std::string why = check_inputs(pass, target, vp); !why.empty()) {
+    stats.ok = false;
+    stats.error = why;
+    return stats;
+  }
+
+  PassPrograms vms;
+  try {
+    if (pass.vertex_program) vms.vs.emplace(*pass.vertex_program, pass.conventions);
+    if (pass.pixel_program) vms.ps.emplace(*pass.pixel_program, pass.conventions);
+  } catch (const std::exception& e) {
+    stats.ok = false;
+    stats.error = std::string("the shader VM refused the program: ") + e.what();
+    return stats;
+  }
+
+  // Vertex stage.
+  std::vector<VertexOutput> outs;
+  std::vector<std::array<uint32_t, 3>> tris = pass.triangles;
+  const bool constant_inputs = !vms.vs && pass.transformed.empty();
+  if (vms.vs) {
+    outs.reserve(pass.vertices.size());
+    for (const VertexInput& v : pass.vertices)
+      outs.push_back(vms.vs->run_vertex(v, pass.vs_constants));
+  } else if (!constant_inputs) {
+    outs = pass.transformed;
+  } else {
+    for (const Vec4& c : kQuadCorners) outs.emplace_back().pos = c;
+    tris.assign(kQuadTriangles.begin(), kQuadTriangles.end());
+  }
+  if (tris.empty())
+    for (uint32_t i = 0; i + 2 < outs.size(); i += 3) tris.push_back({i, i + 1, i + 2});
+
+  // Setup.
+  const int64_t offset =
+      pass.conventions.pixel_center == ir::PixelCenter::Modern ? detail::kSubPixelOne / 2 : 0;
+  PixelRect scissor{std::max<int64_t>(0, vp.x), std::max<int64_t>(0, vp.y),
+                    std::min<int64_t>(target.width, int64_t{vp.x} + vp.width),
+                    std::min<int64_t>(target.height, int64_t{vp.y} + vp.height)};
+  std::vector<Triangle> setup;
+  for (const auto& t : tris) {
+    if (t[0] >= outs.size() || t[1] >= outs.size() || t[2] >= outs.size()) {
+      stats.ok = false;
+      stats.error = "triangle index out of range";
+      return stats;
+    }
+    detail::setup_triangle({&outs[t[0]], &outs[t[1]], &outs[t[2]]}, vp, scissor, offset, setup);
+  }
+  stats.triangles = setup.size();
+  if (setup.empty() || scissor.x0 >= scissor.x1 || scissor.y0 >= scissor.y1) return stats;
+
+  // Pixels: bands of rows handed out by an atomic counter. Which worker takes a band does
+  // not change any pixel, since a pixel's whole history lives in one band.
+  RasterJob job{pass,
+                setup,
+                vms.ps ? &*vms.ps : nullptr,
+                constant_inputs,
+                offset,
+                scissor,
+                target,
+                BoundTextures(pass.textures, pass.conventions.subtexel_bits)};
+  const int64_t bands = (scissor.y1 - scissor.y0 + kBandRows - 1) / kBandRows;
+  unsigned workers = threads ? threads : std::max(1u, std::thread::hardware_concurrency());
+  workers = static_cast<unsigned>(std::min<int64_t>({workers, bands, kMaxWorkers}));
+  std::atomic<int64_t> next{0};
+  std::mutex mutex;
+  std::string failure;
+  auto work = [&](WorkerStats& ws) {
+    try {
+      for (int64_t b = next++; b < bands; b = next++) {
+        int64_t y0 = scissor.y0 + b * kBandRows;
+        raster_rows(job, y0, std::min(scissor.y1, y0 + kBandRows), ws);
+      }
+    } catch (const std::exception& e) { // never let an exception cross a thread boundary
+      std::lock_guard lock(mutex);
+      failure = e.what();
+      next = bands;
+    }
+  };
+  std::vector<WorkerStats> per(workers);
+  if (workers <= 1) {
+    work(per[0]);
+  } else {
+    std::vector<std::thread> pool;
+    for (unsigned i = 0; i < workers; ++i) pool.emplace_back(work, std::ref(per[i]));
+    for (auto& th : pool) th.join();
+  }
+  for (const auto& w : per) {
+    stats.pixels_shaded += w.shaded;
+    stats.pixels_killed += w.killed;
+  }
+  if (!failure.empty()) {
+    stats.ok = false;
+    stats.error = "draw failed: " + failure;
+  }
+  return stats;
+}
+
+} // namespace tierlift::cpu

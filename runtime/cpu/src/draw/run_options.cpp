@@ -1,0 +1,207 @@
+// Parsers for the values of `tierlift run`'s flags. Each gives a value or a one-line reason.
+#include <charconv>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "tierlift/cpu/run_job.h"
+
+namespace tierlift::cpu {
+namespace {
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+  return s;
+}
+
+bool parse_u32(std::string_view s, uint32_t& out) {
+  s = trim(s);
+  auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
+  return ec == std::errc() && p == s.data() + s.size() && !s.empty();
+}
+
+bool parse_float(std::string_view s, float& out) {
+  s = trim(s);
+  if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+  auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
+  return ec == std::errc() && p == s.data() + s.size() && !s.empty();
+}
+
+bool parse_i32(std::string_view s, int32_t& out) {
+  s = trim(s);
+  if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+  auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
+  return ec == std::errc() && p == s.data() + s.size() && !s.empty();
+}
+
+// Splits "a,b,c,d" into exactly n fields.
+bool split_fields(std::string_view s, size_t n, std::vector<std::string_view>& out) {
+  out.clear();
+  size_t start = 0;
+  for (;;) {
+    size_t comma = s.find(',', start);
+    out.push_back(s.substr(start, comma == std::string_view::npos ? s.npos : comma - start));
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  return out.size() == n;
+}
+
+bool parse_vec4(std::string_view s, Vec4& v) {
+  std::vector<std::string_view> f;
+  if (!split_fields(s, 4, f)) return false;
+  for (int i = 0; i < 4; ++i)
+    if (!parse_float(f[i], v[i])) return false;
+  return true;
+}
+
+// "NAME=VALUE" → (NAME, VALUE).
+bool split_assignment(std::string_view text, std::string_view& name, std::string_view& value) {
+  size_t eq = text.find('=');
+  if (eq == std::string_view::npos) return false;
+  name = trim(text.substr(0, eq));
+  value = trim(text.substr(eq + 1));
+  return true;
+}
+
+// "c12" with prefix letter `letter` → 12, below `limit`.
+bool parse_reg(std::string_view name, std::string_view prefix, uint32_t limit, uint32_t& index) {
+  if (name.size() <= prefix.size() || name.substr(0, prefix.size()) != prefix) return false;
+  return parse_u32(name.substr(prefix.size()), index) && index < limit;
+}
+
+constexpr uint32_t kMaxConstRegisters = 4096;
+
+} // namespace
+
+std::optional<ConstSetting> parse_const_setting(std::string_view text, std::string& error) {
+  ConstSetting c;
+  std::string_view body = trim(text);
+  if (body.substr(0, 3) == "vs:")
+    c.stage = StageMask::Vertex, body.remove_prefix(3);
+  else if (body.substr(0, 3) == "ps:")
+    c.stage = StageMask::Pixel, body.remove_prefix(3);
+  std::string_view name, value;
+  if (!split_assignment(body, name, value)) {
+    error = fmt::format("--const '{}': expected [vs:|ps:]cN=x,y,z,w, iN=a,b,c,d or bN=true|false",
+                        text);
+    return std::nullopt;
+  }
+  if (parse_reg(name, "c", kMaxConstRegisters, c.index)) {
+    c.file = ir::RegFile::Const;
+    if (parse_vec4(value, c.f)) return c;
+    error = fmt::format("--const '{}': c# needs four numbers x,y,z,w", text);
+  } else if (parse_reg(name, "i", 16, c.index)) {
+    c.file = ir::RegFile::ConstInt;
+    std::vector<std::string_view> f;
+    bool ok = split_fields(value, 4, f);
+    for (int k = 0; ok && k < 4; ++k) ok = parse_i32(f[k], c.i[k]);
+    if (ok) return c;
+    error = fmt::format("--const '{}': i# needs four integers a,b,c,d", text);
+  } else if (parse_reg(name, "b", 16, c.index)) {
+    c.file = ir::RegFile::ConstBool;
+    if (value == "true" || value == "1")
+      c.b = true;
+    else if (value == "false" || value == "0")
+      c.b = false;
+    else {
+      error = fmt::format("--const '{}': b# is true or false", text);
+      return std::nullopt;
+    }
+    return c;
+  } else {
+    error = fmt::format("--const '{}': register must be c0..c{}, i0..i15 or b0..b15", text,
+                        kMaxConstRegisters - 1);
+  }
+  return std::nullopt;
+}
+
+std::optional<RegisterSetting> parse_input_setting(std::string_view text, std::string& error) {
+  RegisterSetting r;
+  std::string_view name, value;
+  bool named = split_assignment(text, name, value);
+  if (named && parse_reg(name, "v", 2, r.index))
+    r.file = ir::RegFile::Input;
+  else if (named && parse_reg(name, "t", 8, r.index))
+    r.file = ir::RegFile::Texture;
+  else {
+    error = fmt::format("--input '{}': expected v0|v1|t0..t7=x,y,z,w", text);
+    return std::nullopt;
+  }
+  if (parse_vec4(value, r.value)) return r;
+  error = fmt::format("--input '{}': the value needs four numbers x,y,z,w", text);
+  return std::nullopt;
+}
+
+std::optional<RegisterSetting> parse_attr_setting(std::string_view text, std::string& error) {
+  RegisterSetting r;
+  std::string_view name, value;
+  if (!split_assignment(text, name, value) || !parse_reg(name, "v", 16, r.index)) {
+    error = fmt::format("--attr '{}': expected v0..v15=x,y,z,w or v0..v15=quad-uv", text);
+    return std::nullopt;
+  }
+  if (value == "quad-uv") {
+    r.quad_uv = true;
+    return r;
+  }
+  if (parse_vec4(value, r.value)) return r;
+  error = fmt::format("--attr '{}': the value needs four numbers x,y,z,w or quad-uv", text);
+  return std::nullopt;
+}
+
+std::optional<TextureSetting> parse_texture_setting(std::string_view text, std::string& error) {
+  TextureSetting t;
+  std::string_view name, value;
+  if (!split_assignment(text, name, value) || !parse_reg(name, "s", kMaxSamplers, t.sampler) ||
+      value.empty()) {
+    error = fmt::format("--texture '{}': expected sN=FILE.png|FILE.pfm|builtin:NAME[:WxH]", text);
+    return std::nullopt;
+  }
+  t.source = std::string(value);
+  return t;
+}
+
+std::optional<ProbePoint> parse_probe(std::string_view text, std::string& error) {
+  std::vector<std::string_view> f;
+  ProbePoint p;
+  if (split_fields(text, 2, f) && parse_u32(f[0], p.x) && parse_u32(f[1], p.y)) return p;
+  error = fmt::format("--probe '{}': expected X,Y (non-negative integers)", text);
+  return std::nullopt;
+}
+
+std::optional<std::array<uint32_t, 2>> parse_size(std::string_view text, std::string& error) {
+  size_t x = text.find_first_of("xX");
+  uint32_t w = 0, h = 0;
+  if (x == std::string_view::npos || !parse_u32(text.substr(0, x), w) ||
+      !parse_u32(text.substr(x + 1), h)) {
+    error = fmt::format("--size '{}': expected WxH, e.g. 256x256", text);
+    return std::nullopt;
+  }
+  if (w == 0 || h == 0 || w > img::kMaxDimension || h > img::kMaxDimension) {
+    error = fmt::format("--size '{}': width and height must be 1..{}", text, img::kMaxDimension);
+    return std::nullopt;
+  }
+  return std::array<uint32_t, 2>{w, h};
+}
+
+std::optional<Filter> parse_filter(std::string_view text) {
+  if (text == "point") return Filter::Point;
+  if (text == "linear") return Filter::Linear;
+  return std::nullopt;
+}
+
+std::optional<AddressMode> parse_address(std::string_view text) {
+  if (text == "clamp") return AddressMode::Clamp;
+  if (text == "wrap") return AddressMode::Wrap;
+  if (text == "mirror") return AddressMode::Mirror;
+  if (text == "border") return AddressMode::Border;
+  return std::nullopt;
+}
+
+std::optional<ir::PixelCenter> parse_pixel_center(std::string_view text) {
+  if (text == "d3d9") return ir::PixelCenter::D3D9;
+  if (text == "modern") return ir::PixelCenter::Modern;
+  return std::nullopt;
+}
+
+} // namespace tierlift::cpu

@@ -1,0 +1,114 @@
+// Point and bilinear sampling on the integer texel grid (d3d9-isa.md §10.1, §10.2).
+#include <cmath>
+
+#include "tierlift/cpu/texture.h"
+
+namespace tierlift::cpu {
+namespace {
+
+// Mathematical (non-negative) modulo.
+int64_t mod_floor(int64_t a, int64_t n) {
+  int64_t r = a % n;
+  return r < 0 ? r + n : r;
+}
+int64_t mirror(int64_t n) {
+  return n >= 0 ? n : -(1 + n);
+}
+
+// Texel-space coordinate u·N as a double (exact: a float times an integer ≤ 2^14 fits in
+// 53 bits), so bilinear weights are exact before sub-texel quantisation. Clamped far outside any
+// address-mode period so the int64 conversion is defined; NaN becomes 0.
+double texel_space(float u, uint32_t n) {
+  double x = static_cast<double>(u) * n;
+  if (std::isnan(x)) return 0.0;
+  constexpr double kLimit = 1099511627776.0; // 2^40
+  return x < -kLimit ? -kLimit : (x > kLimit ? kLimit : x);
+}
+
+// Texel (i, j) after addressing (indices from address_texel); border colour when either
+// axis fell outside under Border.
+Vec4 fetch(const img::Image& image, const SamplerState& s, const std::optional<int64_t>& i,
+           const std::optional<int64_t>& j) {
+  if (!i || !j) return s.border_color;
+  const float* p = image.at(static_cast<uint32_t>(*i), static_cast<uint32_t>(*j));
+  return {p[0], p[1], p[2], p[3]};
+}
+
+} // namespace
+
+std::optional<int64_t> address_texel(AddressMode mode, int64_t i, int64_t n) {
+  if (n <= 0) return std::nullopt;
+  if (i >= 0 && i < n) return i; // every mode leaves indices inside the texture alone
+  switch (mode) {
+  case AddressMode::Wrap: return mod_floor(i, n);
+  case AddressMode::Mirror: {
+    int64_t t = mod_floor(i, 2 * n) - n;
+    return (n - 1) - mirror(t);
+  }
+  case AddressMode::Clamp: return i < 0 ? 0 : (i >= n ? n - 1 : i);
+  case AddressMode::Border:
+    if (i < 0 || i >= n) return std::nullopt;
+    return i;
+  case AddressMode::MirrorOnce: {
+    int64_t m = mirror(i);
+    return m >= n ? n - 1 : m;
+  }
+  }
+  return std::nullopt;
+}
+
+double quantize_fraction(double alpha, int subtexel_bits) {
+  if (subtexel_bits <= 0) return alpha;
+  double scale = std::ldexp(1.0, subtexel_bits > 30 ? 30 : subtexel_bits);
+  return std::nearbyint(alpha * scale) / scale;
+}
+
+Vec4 sample_texture(const img::Image& image, const SamplerState& sampler, float u, float v,
+                    int subtexel_bits) {
+  if (image.width == 0 || image.height == 0) return {0, 0, 0, 1};
+  double x = texel_space(u, image.width);
+  double y = texel_space(v, image.height);
+  if (sampler.filter == Filter::Point) {
+    // i = floor(u·N) with the product rounded to float, as a GPU's fp32 multiply rounds it:
+    // u = float(i/N), a texel corner that float cannot hold exactly, then still selects
+    // texel i rather than i − 1 whenever float(i/N)·N rounds back to i.
+    int64_t i = static_cast<int64_t>(std::floor(static_cast<float>(x)));
+    int64_t j = static_cast<int64_t>(std::floor(static_cast<float>(y)));
+    return fetch(image, sampler, address_texel(sampler.address_u, i, image.width),
+                 address_texel(sampler.address_v, j, image.height));
+  }
+
+  x -= 0.5;
+  y -= 0.5;
+  double fx = std::floor(x), fy = std::floor(y);
+  double a = quantize_fraction(x - fx, subtexel_bits);
+  double b = quantize_fraction(y - fy, subtexel_bits);
+  int64_t i0 = static_cast<int64_t>(fx), j0 = static_cast<int64_t>(fy);
+  const auto u0 = address_texel(sampler.address_u, i0, image.width);
+  const auto u1 = address_texel(sampler.address_u, i0 + 1, image.width);
+  const auto v0 = address_texel(sampler.address_v, j0, image.height);
+  const auto v1 = address_texel(sampler.address_v, j0 + 1, image.height);
+  Vec4 t00 = fetch(image, sampler, u0, v0), t10 = fetch(image, sampler, u1, v0);
+  Vec4 t01 = fetch(image, sampler, u0, v1), t11 = fetch(image, sampler, u1, v1);
+  Vec4 out;
+  for (int c = 0; c < 4; ++c) {
+    double r =
+        (1 - a) * (1 - b) * t00[c] + a * (1 - b) * t10[c] + (1 - a) * b * t01[c] + a * b * t11[c];
+    out[c] = static_cast<float>(r);
+  }
+  return out;
+}
+
+Vec4 BoundTextures::sample(uint32_t stage, const Vec4& coord, float lod_bias) const {
+  (void)lod_bias; // one mip level: the bias has nothing to select
+  if (stage >= kMaxSamplers || !bindings_[stage].image) return {0, 0, 0, 1};
+  const TextureBinding& b = bindings_[stage];
+  return sample_texture(*b.image, b.sampler, coord[0], coord[1], subtexel_bits_);
+}
+
+StageState BoundTextures::stage_state(uint32_t stage) const {
+  if (stage >= kMaxSamplers) return {};
+  return bindings_[stage].stage;
+}
+
+} // namespace tierlift::cpu

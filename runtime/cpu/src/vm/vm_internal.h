@@ -1,0 +1,171 @@
+// Private types of the shader VM: the prepared program (one Step per instruction with its
+// operands decoded once) and the per-invocation state that lives on the caller's stack.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "tierlift/cpu/shader_vm.h"
+#include "tierlift/ir/conventions.h"
+#include "tierlift/ir/program.h"
+
+namespace tierlift::cpu::vm {
+
+// One flat register array per invocation; every readable/writable file but c#, i#, b#
+// and a0 lives at a fixed base, so an operand is one precomputed slot number.
+inline constexpr int kTempBase = 0, kTempCount = 32;
+inline constexpr int kInputBase = 32, kInputCount = 16;
+inline constexpr int kTexBase = 48, kTexCount = 8;
+inline constexpr int kOutBase = 56, kOutCount = 16;
+inline constexpr int kSlotCount = kOutBase + kOutCount;
+// Output slots (relative to kOutBase). Vertex: oPos, oFog, oPts, oD0-1, oT0-7.
+// Pixel: oC0-3, oDepth.
+inline constexpr int kOutPos = 0, kOutFog = 1, kOutPts = 2, kOutD0 = 3, kOutT0 = 5;
+inline constexpr int kOutC0 = 0, kOutDepth = 4;
+
+inline constexpr int kMaxLoopDepth = 16;
+inline constexpr int kMaxCallDepth = 32;
+// A broken program cannot hang: the total number of backward jumps (loop and rep
+// iterations) per invocation is bounded. 255 × 255 nested iterations fit.
+inline constexpr uint32_t kMaxBackwardJumps = 1u << 16;
+
+struct Invocation;
+struct Step;
+
+using ExecFn = void (*)(const Step&, Invocation&);
+// Arithmetic: compute a 4-vector result from fetched sources (s[0..3]; matrix rows follow
+// src0 in s[1..4]). Never writes registers: the store is separate (co-issue, macros).
+using ComputeFn = void (*)(const Step&, const Vec4* s, Vec4& out, Invocation&);
+
+enum class SrcKind : uint8_t { Slot, Const, ConstRel, Zero };
+
+struct SrcDesc {
+  SrcKind kind = SrcKind::Zero;
+  uint16_t slot = 0; // flat slot (Slot) or constant index (Const/ConstRel base)
+  int8_t rel = -1;   // ConstRel: 0..3 = a0.x..w, 4 = aL
+  uint8_t swz[4] = {0, 1, 2, 3};
+  bool identity = true;
+  ir::SrcMod mod = ir::SrcMod::None;
+  bool clamp_const = false;  // ps_1_x: c# reads clamp to [-1, 1]
+  const Vec4* def = nullptr; // Const: value from the listing's def (overrides the bank)
+  bool simple = false;       // plain register read: no clamp, swizzle or modifier
+};
+
+enum class DstKind : uint8_t { None, Slot, AddrFloor, AddrRound };
+
+struct DstDesc {
+  DstKind kind = DstKind::None;
+  uint16_t slot = 0;
+  uint8_t mask = 0xF;
+  float scale = 1.0f; // instruction shift as a power of two (ps_1_x)
+  bool sat = false;
+  bool range = false; // ps_1_x: clamp to ±max_value
+  float max_value = 1.0f;
+  int fixed_bits = 0;   // ps_1_x fixed-point emulation (0 = off)
+  uint16_t out_bit = 0; // output slots: bit in Invocation::out_written
+  bool plain = false;   // register write with no shift, clamp, _sat or quantising
+};
+
+struct Step {
+  ExecFn exec = nullptr;
+  ComputeFn compute = nullptr;
+  std::array<SrcDesc, 4> src{};
+  uint8_t nsrc = 0;
+  uint8_t rows = 0; // matrix macros: rows fetched after src0
+  DstDesc dst;
+  int32_t target = -1; // flow: jump target (pc)
+  int32_t aux = 0;     // flow: i#/b# index; texture: stage / pad row; bem: stage
+  bool negate = false; // callnz !b#
+  int8_t pad_row = 0;  // texm3x2pad/texm3x3pad: 0 = u', 1 = v'
+  std::optional<std::array<int32_t, 4>> int_def; // defi for loop/rep
+  std::optional<bool> bool_def;                  // defb for if/callnz
+  const ir::Instruction* ins = nullptr;
+};
+
+// Steps point into `program` and `const_defs`: a Prepared may move (vector buffers move
+// with it) but never be copied.
+struct Prepared {
+  Prepared() = default;
+  Prepared(Prepared&&) noexcept = default;
+  Prepared& operator=(Prepared&&) noexcept = default;
+  Prepared(const Prepared&) = delete;
+  Prepared& operator=(const Prepared&) = delete;
+
+  ir::Program program;
+  ir::Conventions conv;
+  std::vector<Step> steps;
+  std::vector<std::optional<Vec4>> const_defs; // by c# index (for relative reads)
+  int32_t const_limit = 0;                     // relative reads outside [0, limit) → 0
+  bool ps1x = false;
+  bool ps11_13 = false;
+  bool ps14 = false;
+  bool vs11 = false;
+  uint8_t fog_component = 0, pts_component = 0; // scalar outputs written via .y etc.
+};
+
+struct LoopFrame {
+  int32_t remaining;
+  int32_t step;
+  int32_t saved_al;
+  int32_t body_pc;
+  bool is_loop; // loop (aL) vs rep
+};
+
+struct Invocation {
+  Vec4 reg[kSlotCount];
+  int32_t a0[4] = {0, 0, 0, 0};
+  int32_t al = 0;
+  uint32_t out_written = 0;
+  int32_t pc = 0;
+  bool stop = false;
+  uint32_t backward_jumps = 0;
+  int loop_depth = 0, call_depth = 0;
+  LoopFrame loops[kMaxLoopDepth];
+  int32_t calls[kMaxCallDepth];
+  float pad[2] = {0, 0}; // texm3x2pad / texm3x3pad results (u', v')
+  const Prepared* prog = nullptr;
+  const ConstantBank* consts = nullptr;
+  const TextureUnit* tex = nullptr;
+  const PixelInput* pin = nullptr;
+  PixelOutput* pout = nullptr;
+};
+
+// vm_program.cpp
+Prepared prepare(const ir::Program& program, const ir::Conventions& conv);
+void run(const Prepared& p, Invocation& inv);
+
+// vm_operands.cpp. fetch/store take a fast inline path for the common plain operands
+// (the VM runs per pixel) and fall back to the general functions otherwise.
+Vec4 fetch_general(const SrcDesc& s, const Invocation& inv);
+void store_general(const DstDesc& d, const Vec4& value, Invocation& inv);
+SrcDesc decode_src(const ir::SrcOperand& op, const Prepared& p);
+DstDesc decode_dst(const ir::DstOperand& op, const ir::InstrMods& mods, const Prepared& p);
+int flat_slot(ir::RegFile file, uint32_t index, ir::ShaderStage stage); // -1: not a slot
+Vec4 constant_value(int32_t index, const Invocation& inv);
+
+// vm_arith.cpp: the per-opcode compute table and the arithmetic executors.
+ComputeFn arith_compute(ir::Opcode op);
+void exec_arith(const Step& s, Invocation& inv);
+void exec_arith_pair(const Step& s, Invocation& inv);
+
+// vm_texture.cpp
+ExecFn texture_exec(ir::Opcode op);
+
+// vm_flow.cpp
+ExecFn flow_exec(ir::Opcode op);
+
+inline Vec4 fetch(const SrcDesc& s, const Invocation& inv) {
+  return s.simple ? inv.reg[s.slot] : fetch_general(s, inv);
+}
+inline void store(const DstDesc& d, const Vec4& value, Invocation& inv) {
+  if (d.plain && d.mask == 0xF) {
+    inv.reg[d.slot] = value;
+    inv.out_written |= d.out_bit;
+    return;
+  }
+  store_general(d, value, inv);
+}
+
+} // namespace tierlift::cpu::vm

@@ -1,0 +1,183 @@
+// Operand fetch and store in the order of d3d9-isa.md §7: fetch (ps_1_x constant clamp,
+// relative addressing), pre-swizzle _dz/_dw, swizzle, post-swizzle modifiers with negate
+// last; store: shift, ps_1_x range clamp, _sat, fixed-point quantise, write mask.
+#include <stdexcept>
+#include <string>
+
+#include "tierlift/ir/numerics.h"
+#include "vm_internal.h"
+
+namespace tierlift::cpu::vm {
+
+namespace num = ir::numerics;
+using ir::RegFile;
+using ir::SrcMod;
+
+int flat_slot(RegFile file, uint32_t index, ir::ShaderStage stage) {
+  const bool vertex = stage == ir::ShaderStage::Vertex;
+  auto in = [&](int base, uint32_t count) {
+    return index < count ? base + static_cast<int>(index) : -1;
+  };
+  switch (file) {
+  case RegFile::Temp: return in(kTempBase, kTempCount);
+  case RegFile::Input: return in(kInputBase, kInputCount);
+  case RegFile::Texture: return in(kTexBase, kTexCount);
+  case RegFile::RastOut: return vertex ? in(kOutBase + kOutPos, 3) : -1;
+  case RegFile::AttrOut: return vertex ? in(kOutBase + kOutD0, 2) : -1;
+  case RegFile::TexCrdOut: return vertex ? in(kOutBase + kOutT0, 8) : -1;
+  case RegFile::ColorOut: return vertex ? -1 : in(kOutBase + kOutC0, 4);
+  case RegFile::DepthOut: return vertex ? -1 : in(kOutBase + kOutDepth, 1);
+  default: return -1;
+  }
+}
+
+SrcDesc decode_src(const ir::SrcOperand& op, const Prepared& p) {
+  SrcDesc s;
+  for (int i = 0; i < 4; ++i) s.swz[i] = ir::swizzle_component(op.swizzle, i);
+  s.identity = op.swizzle == ir::kIdentitySwizzle;
+  s.mod = op.mod;
+  if (op.file == RegFile::Const) {
+    s.clamp_const = p.ps1x;
+    s.slot = static_cast<uint16_t>(op.index > 0xFFFF ? 0xFFFF : op.index);
+    if (op.rel) {
+      s.kind = SrcKind::ConstRel;
+      s.rel = op.rel->file == RegFile::Loop ? 4 : static_cast<int8_t>(op.rel->component & 3);
+    } else {
+      s.kind = SrcKind::Const;
+      if (op.index < p.const_defs.size() && p.const_defs[op.index])
+        s.def = &*p.const_defs[op.index];
+    }
+    return s;
+  }
+  int slot = flat_slot(op.file, op.index, p.program.stage());
+  if (slot < 0) {
+    // Samplers, labels, i#, b#, aL are not read as vectors: they stay Zero and the
+    // executor reads the operand itself.
+    s.kind = SrcKind::Zero;
+    return s;
+  }
+  s.kind = SrcKind::Slot;
+  s.slot = static_cast<uint16_t>(slot);
+  s.simple = s.identity && s.mod == SrcMod::None;
+  return s;
+}
+
+DstDesc decode_dst(const ir::DstOperand& op, const ir::InstrMods& mods, const Prepared& p) {
+  DstDesc d;
+  d.mask = op.mask & 0xF;
+  d.sat = mods.sat;
+  d.scale = std::ldexp(1.0f, mods.shift);
+  if (op.file == RegFile::Addr) {
+    d.kind = p.vs11 ? DstKind::AddrFloor : DstKind::AddrRound;
+    return d;
+  }
+  int slot = flat_slot(op.file, op.index, p.program.stage());
+  if (slot < 0)
+    throw std::invalid_argument("destination " + ir::register_name(op.file, op.index) +
+                                " is not writable in this profile");
+  d.kind = DstKind::Slot;
+  d.slot = static_cast<uint16_t>(slot);
+  if (slot >= kOutBase) d.out_bit = static_cast<uint16_t>(1u << (slot - kOutBase));
+  if (p.ps1x && (op.file == RegFile::Temp || op.file == RegFile::Texture)) {
+    d.range = true;
+    d.max_value = p.conv.ps1x_max_value;
+    d.fixed_bits = p.conv.ps1x_fixed_bits;
+  }
+  d.plain = d.scale == 1.0f && !d.sat && !d.range && d.fixed_bits == 0;
+  return d;
+}
+
+Vec4 constant_value(int32_t index, const Invocation& inv) {
+  const Prepared& p = *inv.prog;
+  if (index < 0 || index >= p.const_limit) return {0, 0, 0, 0};
+  auto i = static_cast<size_t>(index);
+  if (i < p.const_defs.size() && p.const_defs[i]) return *p.const_defs[i];
+  if (i < inv.consts->f.size()) return inv.consts->f[i];
+  return {0, 0, 0, 0};
+}
+
+namespace {
+
+Vec4 load(const SrcDesc& s, const Invocation& inv) {
+  switch (s.kind) {
+  case SrcKind::Slot: return inv.reg[s.slot];
+  case SrcKind::Const:
+    if (s.def) return *s.def;
+    return s.slot < inv.consts->f.size() ? inv.consts->f[s.slot] : Vec4{0, 0, 0, 0};
+  case SrcKind::ConstRel: {
+    int32_t off = s.rel == 4 ? inv.al : inv.a0[s.rel];
+    return constant_value(static_cast<int32_t>(s.slot) + off, inv);
+  }
+  case SrcKind::Zero: break;
+  }
+  return {0, 0, 0, 0};
+}
+
+// _dz / _dw (ps_1_4 texld/texcrd): x and y divided by z or w; a zero divisor makes them 1.
+void divide_xy(Vec4& v, int by) {
+  float d = v[by];
+  if (d == 0.0f) {
+    v[0] = v[1] = 1.0f;
+  } else {
+    v[0] /= d;
+    v[1] /= d;
+  }
+}
+
+float post_modifier(float x, SrcMod m) {
+  switch (m) {
+  case SrcMod::Neg: return -x;
+  case SrcMod::Bias: return num::legacy_bias(x);
+  case SrcMod::BiasNeg: return -num::legacy_bias(x);
+  case SrcMod::Bx2: return num::legacy_bx2(x);
+  case SrcMod::Bx2Neg: return -num::legacy_bx2(x);
+  case SrcMod::Comp: return num::legacy_comp(x);
+  case SrcMod::X2: return 2.0f * x;
+  case SrcMod::X2Neg: return -(2.0f * x);
+  case SrcMod::Abs: return std::fabs(x);
+  case SrcMod::AbsNeg: return -std::fabs(x);
+  default: return x; // None, Dz, Dw (pre-swizzle), Not (booleans only)
+  }
+}
+
+} // namespace
+
+Vec4 fetch_general(const SrcDesc& s, const Invocation& inv) {
+  Vec4 v = load(s, inv);
+  if (s.clamp_const)
+    for (float& x : v) x = num::legacy_ps1x_const(x);
+  if (s.mod == SrcMod::Dz) divide_xy(v, 2);
+  if (s.mod == SrcMod::Dw) divide_xy(v, 3);
+  if (!s.identity) v = Vec4{v[s.swz[0]], v[s.swz[1]], v[s.swz[2]], v[s.swz[3]]};
+  if (s.mod != SrcMod::None)
+    for (float& x : v) x = post_modifier(x, s.mod);
+  return v;
+}
+
+void store_general(const DstDesc& d, const Vec4& value, Invocation& inv) {
+  switch (d.kind) {
+  case DstKind::None: return;
+  case DstKind::AddrFloor:
+    for (int i = 0; i < 4; ++i)
+      if (d.mask & (1 << i)) inv.a0[i] = num::legacy_mov_a0_floor(value[i]);
+    return;
+  case DstKind::AddrRound:
+    for (int i = 0; i < 4; ++i)
+      if (d.mask & (1 << i)) inv.a0[i] = num::legacy_mova_round(value[i]);
+    return;
+  case DstKind::Slot: break;
+  }
+  Vec4& r = inv.reg[d.slot];
+  for (int i = 0; i < 4; ++i) {
+    if (!(d.mask & (1 << i))) continue;
+    float x = value[i];
+    if (d.scale != 1.0f) x *= d.scale;
+    if (d.range) x = num::legacy_ps1x_range(x, d.max_value);
+    if (d.sat) x = num::legacy_saturate(x);
+    if (d.fixed_bits > 0) x = num::legacy_fixed_quantise(x, d.fixed_bits, d.max_value);
+    r[i] = x;
+  }
+  inv.out_written |= d.out_bit;
+}
+
+} // namespace tierlift::cpu::vm

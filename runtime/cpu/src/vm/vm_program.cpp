@@ -1,0 +1,256 @@
+// Preparation: turns an ir::Program into Steps once (operands decoded, executor and
+// compute function chosen, flow control matched, labels resolved), so that running a
+// program per pixel does no decoding and no allocation.
+#include <algorithm>
+#include <bit>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "vm_internal.h"
+
+namespace tierlift::cpu::vm {
+
+using ir::OpClass;
+using ir::Opcode;
+using ir::RegFile;
+
+namespace {
+
+[[noreturn]] void broken(const ir::Instruction& ins, const std::string& what) {
+  throw std::invalid_argument("line " + std::to_string(ins.loc.line) + ": " +
+                              std::string(ir::op_info(ins.op).mnemonic) + ": " + what);
+}
+
+void collect_defs(Prepared& p, std::vector<std::optional<std::array<int32_t, 4>>>& ints,
+                  std::vector<std::optional<bool>>& bools) {
+  ints.assign(16, std::nullopt);
+  bools.assign(16, std::nullopt);
+  // Later definitions of the same register win (d3d9-isa.md §1.4).
+  for (const ir::ConstDef& d : p.program.defs) {
+    if (d.file == RegFile::Const) {
+      if (d.index >= 8192) continue;
+      if (p.const_defs.size() <= d.index) p.const_defs.resize(d.index + 1);
+      p.const_defs[d.index] = Vec4{d.f(0), d.f(1), d.f(2), d.f(3)};
+    } else if (d.file == RegFile::ConstInt && d.index < 16) {
+      ints[d.index] = std::array<int32_t, 4>{d.i(0), d.i(1), d.i(2), d.i(3)};
+    } else if (d.file == RegFile::ConstBool && d.index < 16) {
+      bools[d.index] = d.b();
+    }
+  }
+}
+
+uint8_t macro_rows(Opcode op) {
+  switch (op) {
+  case Opcode::M4x4: return 4;
+  case Opcode::M4x3: return 3;
+  case Opcode::M3x4: return 4;
+  case Opcode::M3x3: return 3;
+  case Opcode::M3x2: return 2;
+  default: return 0;
+  }
+}
+
+// Components an instruction produces at most; writes outside them are dropped, as DXVK
+// and wined3d do (d3d9-isa.md §4.4, §5.1).
+uint8_t produced_mask(Opcode op, bool vs11) {
+  switch (op) {
+  case Opcode::M4x3:
+  case Opcode::M3x3:
+  case Opcode::Crs: return 0x7;
+  case Opcode::M3x2:
+  case Opcode::SinCos:
+  case Opcode::Bem: return 0x3;
+  case Opcode::Frc: return vs11 ? 0x3 : 0xF; // the vs_1_1 macro writes x and y only
+  default: return 0xF;
+  }
+}
+
+void prepare_arith(Step& s, const ir::Instruction& ins, const Prepared& p) {
+  s.compute = arith_compute(ins.op);
+  if (!s.compute) broken(ins, "no interpreter function");
+  s.exec = exec_arith;
+  s.rows = macro_rows(ins.op);
+  if (ins.op == Opcode::Bem && ins.dst) s.aux = static_cast<int32_t>(ins.dst->index);
+  if (ins.dst) {
+    s.dst = decode_dst(*ins.dst, ins.mods, p);
+    s.dst.mask &= produced_mask(ins.op, p.vs11);
+  } else if (ins.op != Opcode::Nop) {
+    broken(ins, "missing destination");
+  }
+}
+
+void prepare_texture(Step& s, const ir::Instruction& ins, const Prepared& p) {
+  s.exec = texture_exec(ins.op);
+  if (!s.exec) broken(ins, "no interpreter function");
+  if (!ins.dst) broken(ins, "missing register operand");
+  s.aux = static_cast<int32_t>(ins.dst->index); // texture stage m = destination number
+  if (ins.op == Opcode::TexKill || ins.op == Opcode::TexDepth) {
+    // The operand is read, not written: texkill tests it, texdepth divides r5.r by r5.g.
+    ir::SrcOperand src;
+    src.file = ins.dst->file;
+    src.index = ins.dst->index;
+    s.src[0] = decode_src(src, p);
+    s.nsrc = 1;
+    s.dst.kind = DstKind::None;
+    return;
+  }
+  s.dst = decode_dst(*ins.dst, ins.mods, p);
+  if (ins.op == Opcode::TexLd || ins.op == Opcode::TexLdP || ins.op == Opcode::TexLdB) {
+    if (ins.src.size() < 2) broken(ins, "missing sampler");
+    s.aux = static_cast<int32_t>(ins.src[1].index);
+  }
+}
+
+void prepare_flow(Step& s, const ir::Instruction& ins,
+                  const std::vector<std::optional<std::array<int32_t, 4>>>& ints,
+                  const std::vector<std::optional<bool>>& bools) {
+  s.exec = flow_exec(ins.op);
+  if (!s.exec) broken(ins, "no interpreter function");
+  auto operand = [&](size_t k) -> const ir::SrcOperand& {
+    if (ins.src.size() <= k) broken(ins, "missing operand");
+    return ins.src[k];
+  };
+  switch (ins.op) {
+  case Opcode::Loop:
+  case Opcode::Rep: {
+    const ir::SrcOperand& i = operand(ins.op == Opcode::Loop ? 1 : 0);
+    if (i.index >= 16) broken(ins, "integer constant out of range");
+    s.aux = static_cast<int32_t>(i.index);
+    s.int_def = ints[i.index];
+    break;
+  }
+  case Opcode::If:
+  case Opcode::CallNz: {
+    const ir::SrcOperand& b = operand(ins.op == Opcode::If ? 0 : 1);
+    if (b.index >= 16) broken(ins, "boolean constant out of range");
+    s.aux = static_cast<int32_t>(b.index);
+    s.bool_def = bools[b.index];
+    s.negate = b.mod == ir::SrcMod::Not;
+    break;
+  }
+  default: break;
+  }
+}
+
+// Matches if/else/endif, loop/endloop, rep/endrep; resolves call targets to labels.
+void match_flow(Prepared& p) {
+  std::vector<int32_t> open;
+  std::vector<int32_t> label_pc(32, -1);
+  int depth = 0, max_depth = 0;
+  auto& code = p.program.code;
+  for (int32_t pc = 0; pc < static_cast<int32_t>(code.size()); ++pc) {
+    const ir::Instruction& ins = code[pc];
+    auto top_is = [&](std::initializer_list<Opcode> ops) {
+      return !open.empty() && std::find(ops.begin(), ops.end(), code[open.back()].op) != ops.end();
+    };
+    switch (ins.op) {
+    case Opcode::If: open.push_back(pc); break;
+    case Opcode::Loop:
+    case Opcode::Rep:
+      open.push_back(pc);
+      max_depth = std::max(max_depth, ++depth);
+      break;
+    case Opcode::Else:
+      if (!top_is({Opcode::If})) broken(ins, "else without if");
+      p.steps[open.back()].target = pc + 1; // a false condition runs the else block
+      open.back() = pc;
+      break;
+    case Opcode::EndIf:
+      if (!top_is({Opcode::If, Opcode::Else})) broken(ins, "endif without if");
+      p.steps[open.back()].target = pc + 1;
+      open.pop_back();
+      break;
+    case Opcode::EndLoop:
+    case Opcode::EndRep: {
+      Opcode want = ins.op == Opcode::EndLoop ? Opcode::Loop : Opcode::Rep;
+      if (!top_is({want})) broken(ins, "unmatched end of loop");
+      p.steps[open.back()].target = pc + 1; // a zero count skips the body
+      p.steps[pc].target = open.back() + 1; // the body starts after loop/rep
+      open.pop_back();
+      --depth;
+      break;
+    }
+    case Opcode::Label:
+      if (ins.src.empty() || ins.src[0].index >= label_pc.size()) broken(ins, "bad label");
+      label_pc[ins.src[0].index] = pc;
+      break;
+    default: break;
+    }
+  }
+  if (!open.empty()) broken(code[open.back()], "block is never closed");
+  if (max_depth > kMaxLoopDepth) broken(code.front(), "loops nest too deeply");
+  for (int32_t pc = 0; pc < static_cast<int32_t>(code.size()); ++pc) {
+    const ir::Instruction& ins = code[pc];
+    if (ins.op != Opcode::Call && ins.op != Opcode::CallNz) continue;
+    uint32_t l = ins.src.empty() ? 9999 : ins.src[0].index;
+    if (l >= label_pc.size() || label_pc[l] < 0) broken(ins, "call to a missing label");
+    p.steps[pc].target = label_pc[l] + 1;
+  }
+}
+
+} // namespace
+
+Prepared prepare(const ir::Program& program, const ir::Conventions& conv) {
+  Prepared p;
+  p.program = program;
+  p.conv = conv;
+  const ir::Profile prof = program.profile;
+  p.ps1x = ir::is_ps1x(prof);
+  p.ps11_13 = ir::is_ps11_13(prof);
+  p.ps14 = prof == ir::Profile::ps_1_4;
+  p.vs11 = prof == ir::Profile::vs_1_1;
+  // Relative reads may reach any constant the device offers: 256 for vertex shaders (the
+  // value DXVK and most D3D9 drivers report for MaxVertexShaderConst).
+  int32_t limit = ir::limits(prof).float_consts;
+  p.const_limit = ir::is_vertex(prof) ? std::max(limit, 256) : limit;
+
+  std::vector<std::optional<std::array<int32_t, 4>>> ints;
+  std::vector<std::optional<bool>> bools;
+  collect_defs(p, ints, bools);
+
+  const auto& code = p.program.code;
+  p.steps.resize(code.size());
+  int8_t pad_run = 0;
+  for (size_t i = 0; i < code.size(); ++i) {
+    const ir::Instruction& ins = code[i];
+    Step& s = p.steps[i];
+    s.ins = &ins;
+    const ir::OpInfo& info = ir::op_info(ins.op);
+    s.nsrc = static_cast<uint8_t>(std::min<size_t>(ins.src.size(), 4));
+    for (int k = 0; k < s.nsrc; ++k) s.src[k] = decode_src(ins.src[k], p);
+    switch (info.cls) {
+    case OpClass::Arith: prepare_arith(s, ins, p); break;
+    case OpClass::Texture: prepare_texture(s, ins, p); break;
+    case OpClass::Flow: prepare_flow(s, ins, ints, bools); break;
+    case OpClass::Decl: broken(ins, "declaration among the instructions");
+    }
+    // Pad rows count up within a run of texm3x2pad/texm3x3pad.
+    bool pad = ins.op == Opcode::TexM3x2Pad || ins.op == Opcode::TexM3x3Pad;
+    s.pad_row = pad ? std::min<int8_t>(pad_run, 1) : 0;
+    pad_run = pad ? static_cast<int8_t>(pad_run + 1) : 0;
+    if (ins.dst && ins.dst->file == RegFile::RastOut) {
+      uint8_t c =
+          static_cast<uint8_t>(std::countr_zero(static_cast<unsigned>(ins.dst->mask | 0x10)) & 3);
+      if (ins.dst->index == ir::kRastFog) p.fog_component = c;
+      if (ins.dst->index == ir::kRastPts) p.pts_component = c;
+    }
+  }
+  // Co-issued pairs: the first half runs both (read before write).
+  for (size_t i = 0; i + 1 < code.size(); ++i)
+    if (code[i + 1].coissue && p.steps[i].exec == exec_arith && p.steps[i + 1].exec == exec_arith)
+      p.steps[i].exec = exec_arith_pair;
+  match_flow(p);
+  return p;
+}
+
+void run(const Prepared& p, Invocation& inv) {
+  const Step* steps = p.steps.data();
+  const auto n = static_cast<int32_t>(p.steps.size());
+  while (inv.pc < n && !inv.stop) {
+    const Step& s = steps[inv.pc++];
+    s.exec(s, inv);
+  }
+}
+
+} // namespace tierlift::cpu::vm

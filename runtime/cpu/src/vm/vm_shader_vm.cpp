@@ -1,0 +1,85 @@
+// The public face of the VM: builds the prepared program once and runs it per vertex or
+// per pixel with all state on the caller's stack (thread-safe, no heap per invocation).
+#include <algorithm>
+
+#include "tierlift/ir/numerics.h"
+#include "vm_internal.h"
+
+namespace tierlift::cpu {
+
+struct ShaderVM::Impl {
+  vm::Prepared p;
+};
+
+ShaderVM::ShaderVM(const ir::Program& program, const ir::Conventions& conventions)
+    : impl_(std::make_unique<Impl>(Impl{vm::prepare(program, conventions)})) {}
+ShaderVM::~ShaderVM() = default;
+ShaderVM::ShaderVM(ShaderVM&&) noexcept = default;
+ShaderVM& ShaderVM::operator=(ShaderVM&&) noexcept = default;
+
+const ir::Program& ShaderVM::program() const {
+  return impl_->p.program;
+}
+
+namespace {
+
+void begin(vm::Invocation& inv, const vm::Prepared& p, const ConstantBank& constants) {
+  std::fill(std::begin(inv.reg), std::end(inv.reg), Vec4{0, 0, 0, 0});
+  inv.prog = &p;
+  inv.consts = &constants;
+}
+
+} // namespace
+
+VertexOutput ShaderVM::run_vertex(const VertexInput& in, const ConstantBank& constants) const {
+  const vm::Prepared& p = impl_->p;
+  vm::Invocation inv;
+  begin(inv, p, constants);
+  for (int i = 0; i < vm::kInputCount; ++i) inv.reg[vm::kInputBase + i] = in.v[i];
+  inv.reg[vm::kOutBase + vm::kOutPos] = {0, 0, 0, 1};
+  vm::run(p, inv);
+
+  VertexOutput out;
+  const Vec4* o = inv.reg + vm::kOutBase;
+  out.pos = o[vm::kOutPos];
+  out.fog = o[vm::kOutFog][p.fog_component];
+  out.point_size = o[vm::kOutPts][p.pts_component];
+  for (int i = 0; i < 2; ++i) out.color[i] = o[vm::kOutD0 + i];
+  for (int i = 0; i < 8; ++i) out.tex[i] = o[vm::kOutT0 + i];
+  out.color_written = static_cast<uint8_t>((inv.out_written >> vm::kOutD0) & 0x3);
+  out.tex_written = static_cast<uint8_t>((inv.out_written >> vm::kOutT0) & 0xFF);
+  return out;
+}
+
+PixelOutput ShaderVM::run_pixel(const PixelInput& in, const ConstantBank& constants,
+                                const TextureUnit& textures) const {
+  const vm::Prepared& p = impl_->p;
+  vm::Invocation inv;
+  begin(inv, p, constants);
+  PixelOutput out;
+  inv.tex = &textures;
+  inv.pin = &in;
+  inv.pout = &out;
+  // Colour inputs lie in [0, 1] in every pixel profile (d3d9-isa.md §3.3, §3.5).
+  for (int i = 0; i < 2; ++i)
+    for (int c = 0; c < 4; ++c)
+      inv.reg[vm::kInputBase + i][c] = ir::numerics::legacy_saturate(in.color[i][c]);
+  // ps_1_4 and ps_2_0 read t# as the interpolated coordinates; in ps_1_1–1_3 t# are
+  // registers that texture instructions fill.
+  if (!p.ps11_13)
+    for (int i = 0; i < vm::kTexCount; ++i) inv.reg[vm::kTexBase + i] = in.tex[i];
+  vm::run(p, inv);
+
+  const Vec4* o = inv.reg + vm::kOutBase;
+  if (p.ps1x) {
+    out.color[0] = inv.reg[vm::kTempBase]; // r0 is the colour
+    out.color_written = 1;
+  } else {
+    for (int i = 0; i < 4; ++i) out.color[i] = o[vm::kOutC0 + i];
+    out.color_written = static_cast<uint8_t>(inv.out_written & 0xF);
+    if (inv.out_written & (1u << vm::kOutDepth)) out.depth = o[vm::kOutDepth][0];
+  }
+  return out;
+}
+
+} // namespace tierlift::cpu

@@ -1,0 +1,240 @@
+// Texture instructions: ps_1_1–1_3 texture-address instructions (d3d9-isa.md §5.5),
+// ps_1_4 texld/texcrd/texkill/texdepth (§5.6) and ps_2_0 texld/texldp/texldb/texkill
+// (§5.7). Every sample goes through the TextureUnit; StageState supplies bump matrices
+// and the projected flag.
+#include "tierlift/ir/numerics.h"
+#include "vm_internal.h"
+
+namespace tierlift::cpu::vm {
+
+namespace num = ir::numerics;
+using ir::Opcode;
+
+namespace {
+
+// TC(m): the interpolated texture coordinate set m.
+Vec4 tc(const Invocation& inv, int32_t m) {
+  if (!inv.pin || m < 0 || m >= 8) return {0, 0, 0, 0};
+  return inv.pin->tex[static_cast<size_t>(m)];
+}
+
+Vec4 sample(const Invocation& inv, int32_t stage, const Vec4& coord, float bias = 0.0f) {
+  if (!inv.tex || stage < 0) return {0, 0, 0, 1}; // unbound: opaque black (§10.6)
+  return inv.tex->sample(static_cast<uint32_t>(stage), coord, bias);
+}
+
+StageState stage_state(const Invocation& inv, int32_t stage) {
+  if (!inv.tex || stage < 0) return {};
+  return inv.tex->stage_state(static_cast<uint32_t>(stage));
+}
+
+// D3DTTFF_PROJECTED (ps_1_1–1_3 tex, texbem): divide by the last coordinate, w (as DXVK).
+Vec4 projected(Vec4 c, const StageState& ss) {
+  if (!ss.projected) return c;
+  float w = c[3];
+  return {c[0] / w, c[1] / w, c[2] / w, 1.0f};
+}
+
+float dot3(const Vec4& a, const Vec4& b) {
+  return num::legacy_dp3(a.data(), b.data());
+}
+Vec4 splat(float x) {
+  return {x, x, x, x};
+}
+
+void discard(Invocation& inv) {
+  if (inv.pout) inv.pout->discarded = true;
+  inv.stop = true; // nothing a discarded pixel computes afterwards is visible
+}
+
+void set_depth(Invocation& inv, float z) {
+  if (inv.pout) inv.pout->depth = z;
+}
+
+// --- ps_1_1 .. ps_1_3 ----------------------------------------------------------------
+
+void ex_tex(const Step& s, Invocation& inv) {
+  Vec4 c = projected(tc(inv, s.aux), stage_state(inv, s.aux));
+  store(s.dst, sample(inv, s.aux, c), inv);
+}
+
+// texcoord: (sat x, sat y, sat z, 1); no texture is read.
+void ex_texcoord(const Step& s, Invocation& inv) {
+  Vec4 c = tc(inv, s.aux);
+  store(s.dst,
+        {num::legacy_saturate(c[0]), num::legacy_saturate(c[1]), num::legacy_saturate(c[2]), 1.0f},
+        inv);
+}
+
+// texkill: ps_1_1–1_3 test TC(m).xyz; ps_1_4 the register's xyz; ps_2_0 all four.
+void ex_texkill(const Step& s, Invocation& inv) {
+  const Prepared& p = *inv.prog;
+  Vec4 v = p.ps11_13 ? tc(inv, s.aux) : fetch(s.src[0], inv);
+  int n = p.ps1x ? 3 : 4;
+  for (int i = 0; i < n; ++i)
+    if (v[i] < 0.0f) return discard(inv);
+}
+
+// texbem/texbeml: offset TC(m) by stage m's 2×2 matrix times t(n).rg, then sample.
+Vec4 bump_sample(const Step& s, Invocation& inv, const Vec4& tn, const StageState& ss) {
+  Vec4 c = projected(tc(inv, s.aux), ss);
+  const auto& m = ss.bumpenv_mat; // M00, M01, M10, M11
+  float u = c[0] + num::legacy_mul(m[0], tn[0]) + num::legacy_mul(m[2], tn[1]);
+  float v = c[1] + num::legacy_mul(m[1], tn[0]) + num::legacy_mul(m[3], tn[1]);
+  return sample(inv, s.aux, {u, v, c[2], c[3]});
+}
+
+void ex_texbem(const Step& s, Invocation& inv) {
+  StageState ss = stage_state(inv, s.aux);
+  store(s.dst, bump_sample(s, inv, fetch(s.src[0], inv), ss), inv);
+}
+
+// texbeml: the sample times the luminance t(n).b·LSCALE + LOFFSET, not clamped (the
+// docs' formula and Wine; DXVK clamps it to [0,1]).
+void ex_texbeml(const Step& s, Invocation& inv) {
+  StageState ss = stage_state(inv, s.aux);
+  Vec4 tn = fetch(s.src[0], inv);
+  Vec4 r = bump_sample(s, inv, tn, ss);
+  float l = num::legacy_mad(tn[2], ss.bumpenv_lscale, ss.bumpenv_loffset);
+  for (float& x : r) x = num::legacy_mul(x, l);
+  store(s.dst, r, inv);
+}
+
+void ex_texreg2ar(const Step& s, Invocation& inv) {
+  Vec4 n = fetch(s.src[0], inv);
+  store(s.dst, sample(inv, s.aux, {n[3], n[0], 0, 0}), inv);
+}
+void ex_texreg2gb(const Step& s, Invocation& inv) {
+  Vec4 n = fetch(s.src[0], inv);
+  store(s.dst, sample(inv, s.aux, {n[1], n[2], 0, 0}), inv);
+}
+void ex_texreg2rgb(const Step& s, Invocation& inv) {
+  Vec4 n = fetch(s.src[0], inv);
+  store(s.dst, sample(inv, s.aux, {n[0], n[1], n[2], 0}), inv);
+}
+
+// Pads compute one row of the matrix product and write nothing (as DXVK).
+void ex_pad(const Step& s, Invocation& inv) {
+  inv.pad[s.pad_row] = dot3(tc(inv, s.aux), fetch(s.src[0], inv));
+}
+
+void ex_texm3x2tex(const Step& s, Invocation& inv) {
+  float v = dot3(tc(inv, s.aux), fetch(s.src[0], inv));
+  store(s.dst, sample(inv, s.aux, {inv.pad[0], v, 0, 0}), inv);
+}
+
+void ex_texm3x2depth(const Step& s, Invocation& inv) {
+  float w = dot3(tc(inv, s.aux), fetch(s.src[0], inv));
+  set_depth(inv, num::legacy_depth_ratio(inv.pad[0], w));
+}
+
+float third_row(const Step& s, Invocation& inv) {
+  return dot3(tc(inv, s.aux), fetch(s.src[0], inv));
+}
+
+void ex_texm3x3(const Step& s, Invocation& inv) {
+  float w = third_row(s, inv);
+  store(s.dst, {inv.pad[0], inv.pad[1], w, 1.0f}, inv);
+}
+
+void ex_texm3x3tex(const Step& s, Invocation& inv) {
+  float w = third_row(s, inv);
+  store(s.dst, sample(inv, s.aux, {inv.pad[0], inv.pad[1], w, 0}), inv);
+}
+
+void reflect_and_sample(const Step& s, Invocation& inv, float w, num::Vec3f eye) {
+  num::Vec3f r = num::legacy_reflect({inv.pad[0], inv.pad[1], w}, eye);
+  store(s.dst, sample(inv, s.aux, {r.x, r.y, r.z, 0}), inv);
+}
+
+void ex_texm3x3spec(const Step& s, Invocation& inv) {
+  float w = third_row(s, inv);
+  Vec4 e = fetch(s.src[1], inv);
+  reflect_and_sample(s, inv, w, {e[0], e[1], e[2]});
+}
+
+// vspec: the eye vector is the w of the three coordinate sets m, m+1, m+2.
+void ex_texm3x3vspec(const Step& s, Invocation& inv) {
+  float w = third_row(s, inv);
+  num::Vec3f e{tc(inv, s.aux - 2)[3], tc(inv, s.aux - 1)[3], tc(inv, s.aux)[3]};
+  reflect_and_sample(s, inv, w, e);
+}
+
+void ex_texdp3(const Step& s, Invocation& inv) {
+  store(s.dst, splat(dot3(tc(inv, s.aux), fetch(s.src[0], inv))), inv);
+}
+
+void ex_texdp3tex(const Step& s, Invocation& inv) {
+  float u = dot3(tc(inv, s.aux), fetch(s.src[0], inv));
+  store(s.dst, sample(inv, s.aux, {u, 0, 0, 0}), inv);
+}
+
+// --- ps_1_4 ----------------------------------------------------------------------------
+
+// texld rM, src: samples stage M at src.xyz (after _dz/_dw and the .xyz/.xyw selector).
+void ex_texld14(const Step& s, Invocation& inv) {
+  Vec4 c = fetch(s.src[0], inv);
+  store(s.dst, sample(inv, s.aux, {c[0], c[1], c[2], 0}), inv);
+}
+
+// texcrd: the coordinates themselves, not saturated.
+void ex_texcrd(const Step& s, Invocation& inv) {
+  store(s.dst, fetch(s.src[0], inv), inv);
+}
+
+void ex_texdepth(const Step& s, Invocation& inv) {
+  Vec4 r5 = fetch(s.src[0], inv);
+  set_depth(inv, num::legacy_depth_ratio(r5[0], r5[1]));
+}
+
+// --- ps_2_0 ----------------------------------------------------------------------------
+
+void ex_texld(const Step& s, Invocation& inv) {
+  store(s.dst, sample(inv, s.aux, fetch(s.src[0], inv)), inv);
+}
+
+// texldp: xyz / w; the coordinate handed on has w = 1.
+void ex_texldp(const Step& s, Invocation& inv) {
+  Vec4 c = fetch(s.src[0], inv);
+  float w = c[3];
+  store(s.dst, sample(inv, s.aux, {c[0] / w, c[1] / w, c[2] / w, 1.0f}), inv);
+}
+
+void ex_texldb(const Step& s, Invocation& inv) {
+  Vec4 c = fetch(s.src[0], inv);
+  store(s.dst, sample(inv, s.aux, c, c[3]), inv);
+}
+
+} // namespace
+
+ExecFn texture_exec(Opcode op) {
+  switch (op) {
+  case Opcode::Tex: return ex_tex;
+  case Opcode::TexCoord: return ex_texcoord;
+  case Opcode::TexKill: return ex_texkill;
+  case Opcode::TexBem: return ex_texbem;
+  case Opcode::TexBemL: return ex_texbeml;
+  case Opcode::TexReg2Ar: return ex_texreg2ar;
+  case Opcode::TexReg2Gb: return ex_texreg2gb;
+  case Opcode::TexReg2Rgb: return ex_texreg2rgb;
+  case Opcode::TexM3x2Pad:
+  case Opcode::TexM3x3Pad: return ex_pad;
+  case Opcode::TexM3x2Tex: return ex_texm3x2tex;
+  case Opcode::TexM3x2Depth: return ex_texm3x2depth;
+  case Opcode::TexM3x3: return ex_texm3x3;
+  case Opcode::TexM3x3Tex: return ex_texm3x3tex;
+  case Opcode::TexM3x3Spec: return ex_texm3x3spec;
+  case Opcode::TexM3x3VSpec: return ex_texm3x3vspec;
+  case Opcode::TexDp3: return ex_texdp3;
+  case Opcode::TexDp3Tex: return ex_texdp3tex;
+  case Opcode::TexLd14: return ex_texld14;
+  case Opcode::TexCrd: return ex_texcrd;
+  case Opcode::TexDepth: return ex_texdepth;
+  case Opcode::TexLd: return ex_texld;
+  case Opcode::TexLdP: return ex_texldp;
+  case Opcode::TexLdB: return ex_texldb;
+  default: return nullptr;
+  }
+}
+
+} // namespace tierlift::cpu::vm

@@ -1,0 +1,171 @@
+// Vertex listing → oT# as affine forms of the texcoord input: every register component is
+// Σ_c a_c · texcoord.c + k, or "opaque" (depends on something else, or is not affine).
+#include <fmt/format.h>
+#include <map>
+
+#include "linear_forms.h"
+#include "tierlift/ir/opcodes.h"
+
+namespace tierlift::ref::detail {
+
+namespace {
+
+struct Affine {
+  std::array<double, 4> tc{}; // coefficients on texcoord.x, .y, .z, .w
+  double k = 0;
+  std::string opaque; // non-empty: not affine in the texcoord; says why
+  bool is_constant() const { return opaque.empty() && tc == std::array<double, 4>{}; }
+};
+using Reg = std::array<Affine, 4>;
+
+Affine make_opaque(std::string why) {
+  Affine a;
+  a.opaque = std::move(why);
+  return a;
+}
+
+Affine scaled(Affine a, double s) {
+  for (double& c : a.tc) c *= s;
+  a.k *= s;
+  return a;
+}
+
+Affine sum(const Affine& a, const Affine& b) {
+  if (!a.opaque.empty()) return a;
+  if (!b.opaque.empty()) return b;
+  Affine r;
+  for (int c = 0; c < 4; ++c) r.tc[c] = a.tc[c] + b.tc[c];
+  r.k = a.k + b.k;
+  return r;
+}
+
+Affine product(const Affine& a, const Affine& b, const ir::SourceLoc& loc) {
+  if (!a.opaque.empty()) return a;
+  if (!b.opaque.empty()) return b;
+  if (a.is_constant()) return scaled(b, a.k);
+  if (b.is_constant()) return scaled(a, b.k);
+  return make_opaque(where(loc) + ": product of two texcoord terms");
+}
+
+class Evaluator {
+public:
+  Evaluator(const ir::Program& p, const std::vector<Vec4>& consts) : p_(p), consts_(consts) {}
+
+  CoordForms run() {
+    CoordForms out;
+    bool found = false;
+    for (const ir::Declaration& d : p_.decls)
+      if (!found && d.reg.file == ir::RegFile::Input && d.usage == ir::DeclUsage::TexCoord) {
+        out.texcoord_input = d.reg.index; // the first texcoord input is the quad's uv
+        found = true;
+      }
+    if (!found) {
+      out.error = "no dcl_texcoord input";
+      return out;
+    }
+    tc_input_ = out.texcoord_input;
+    for (const ir::Instruction& in : p_.code) {
+      std::string err = step(in);
+      if (!err.empty()) {
+        out.error = err;
+        return out;
+      }
+    }
+    for (uint32_t n = 0; n < 8; ++n) {
+      auto it = regs_.find({ir::RegFile::TexCrdOut, n});
+      if (it == regs_.end()) {
+        out.why_not[n] = fmt::format("oT{} is never written", n);
+        continue;
+      }
+      const Reg& r = it->second;
+      std::string why;
+      std::array<double, 2> off{};
+      for (int c = 0; c < 2 && why.empty(); ++c) {
+        const Affine& a = r[c];
+        if (!a.opaque.empty()) {
+          why = a.opaque;
+          break;
+        }
+        for (int s = 0; s < 4; ++s)
+          if (a.tc[s] != (s == c ? 1.0 : 0.0))
+            why = fmt::format("oT{}.{} is not texcoord.{} + constant", n, "xy"[c], "xy"[c]);
+        off[c] = a.k;
+      }
+      if (why.empty())
+        out.offset[n] = off;
+      else
+        out.why_not[n] = why;
+    }
+    return out;
+  }
+
+private:
+  Affine read(const ir::SrcOperand& s, int comp) {
+    int c = ir::swizzle_component(s.swizzle, comp);
+    Affine a;
+    if (s.rel) return make_opaque(where(s.loc) + ": relative addressing");
+    switch (s.file) {
+    case ir::RegFile::Input:
+      if (s.index != tc_input_)
+        return make_opaque(
+            fmt::format("{}: reads v{}, not the texcoord input", where(s.loc), s.index));
+      a.tc[c] = 1.0;
+      break;
+    case ir::RegFile::Const: a.k = constant_value(p_, consts_, s.index, false, nullptr)[c]; break;
+    case ir::RegFile::Temp: {
+      auto it = regs_.find({s.file, s.index});
+      if (it == regs_.end()) return make_opaque(where(s.loc) + ": reads an unwritten register");
+      a = it->second[c];
+      break;
+    }
+    default: return make_opaque(where(s.loc) + ": reads a register that is not v#, c# or r#");
+    }
+    if (s.mod == ir::SrcMod::None) return a;
+    if (s.mod == ir::SrcMod::Neg) return scaled(a, -1.0);
+    return make_opaque(where(s.loc) + ": source modifier");
+  }
+
+  std::string step(const ir::Instruction& in) {
+    const ir::OpInfo& info = ir::op_info(in.op);
+    if (info.cls == ir::OpClass::Flow && in.op != ir::Opcode::Label)
+      return fmt::format("{}: flow control ({}) is outside the linear model", where(in.loc),
+                         info.mnemonic);
+    if (!in.dst || in.op == ir::Opcode::Nop) return "";
+    if (in.src.size() < info.num_src)
+      return fmt::format("{}: {} has too few operands", where(in.loc), info.mnemonic);
+    const ir::DstOperand& d = *in.dst;
+    Reg& r = regs_[{d.file, d.index}];
+    Reg next = r;
+    for (int c = 0; c < 4; ++c) {
+      if (!(d.mask & (1u << c))) continue;
+      Affine v;
+      switch (in.op) {
+      case ir::Opcode::Mov: v = read(in.src[0], c); break;
+      case ir::Opcode::Add: v = sum(read(in.src[0], c), read(in.src[1], c)); break;
+      case ir::Opcode::Sub: v = sum(read(in.src[0], c), scaled(read(in.src[1], c), -1.0)); break;
+      case ir::Opcode::Mul: v = product(read(in.src[0], c), read(in.src[1], c), in.loc); break;
+      case ir::Opcode::Mad:
+        v = sum(product(read(in.src[0], c), read(in.src[1], c), in.loc), read(in.src[2], c));
+        break;
+      default: v = make_opaque(fmt::format("{}: {} is not linear", where(in.loc), info.mnemonic));
+      }
+      if (in.mods.sat) v = make_opaque(where(in.loc) + ": _sat");
+      next[c] = v;
+    }
+    r = next;
+    return "";
+  }
+
+  const ir::Program& p_;
+  const std::vector<Vec4>& consts_;
+  uint32_t tc_input_ = 0;
+  std::map<std::pair<ir::RegFile, uint32_t>, Reg> regs_;
+};
+
+} // namespace
+
+CoordForms evaluate_coords(const ir::Program& vs, const std::vector<Vec4>& consts) {
+  return Evaluator(vs, consts).run();
+}
+
+} // namespace tierlift::ref::detail

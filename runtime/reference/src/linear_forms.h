@@ -1,0 +1,45 @@
+// Internal to tap extraction: symbolic evaluation of the two listings.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tierlift/ir/program.h"
+#include "tierlift/reference/taps.h"
+
+namespace tierlift::ref::detail {
+
+// "line 12:5" of an instruction or operand (listings from bytecode have no lines).
+std::string where(const ir::SourceLoc& loc);
+
+// c# as the shader sees it: a `def` in the listing wins over the API-set value; missing
+// registers read 0. `clamped` is set when ps_1_x clamping to [-1, 1] changed a component.
+std::array<double, 4> constant_value(const ir::Program& p, const std::vector<Vec4>& api,
+                                     uint32_t index, bool ps1x_clamp, bool* clamped);
+
+// Source modifiers that are affine maps x → scale·x + bias (d3d9-isa.md §4.2).
+struct AffineMod {
+  double scale = 1, bias = 0;
+};
+std::optional<AffineMod> affine_modifier(ir::SrcMod mod);
+
+// Vertex side: oT# = texcoord input + constant, per coordinate register.
+struct CoordForms {
+  uint32_t texcoord_input = 0;
+  std::array<std::optional<std::array<double, 2>>, 8> offset; // per oT#, .xy
+  std::array<std::string, 8> why_not;                         // when offset is empty: the reason
+  std::string error; // fatal: the listing cannot be evaluated at all
+};
+CoordForms evaluate_coords(const ir::Program& vs, const std::vector<Vec4>& consts);
+
+// Pixel side: the output as Σ weight_k · sample_k.
+struct SumForm {
+  std::vector<Tap> taps; // offset not filled in
+  std::vector<std::string> notes;
+  std::string error;
+};
+SumForm evaluate_sum(const ir::Program& ps, const std::vector<Vec4>& consts);
+
+} // namespace tierlift::ref::detail

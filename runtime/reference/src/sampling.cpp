@@ -1,0 +1,98 @@
+// Sample positions and filtered reads of the analytic model, in double.
+#include <cmath>
+
+#include "tierlift/reference/blur_model.h"
+
+namespace tierlift::ref {
+
+std::array<double, 2> pixel_uv(uint32_t i, uint32_t j, uint32_t width, uint32_t height,
+                               const PassModel& model) {
+  const double shift = model.conventions.pixel_center == ir::PixelCenter::D3D9 ? 0.0 : 0.5;
+  double x = (i + shift) / width, y = (j + shift) / height;
+  return {model.u0 + (model.u1 - model.u0) * x, model.v0 + (model.v1 - model.v0) * y};
+}
+
+int64_t address_texel(int64_t i, int64_t n, Address mode) {
+  auto mod = [](int64_t a, int64_t m) { return ((a % m) + m) % m; };
+  auto mirror = [](int64_t k) { return k >= 0 ? k : -(1 + k); };
+  switch (mode) {
+  case Address::Wrap: return mod(i, n);
+  case Address::Mirror: {
+    int64_t t = mod(i, 2 * n) - n;
+    return (n - 1) - mirror(t);
+  }
+  case Address::Clamp: return i < 0 ? 0 : (i >= n ? n - 1 : i);
+  case Address::Border: return (i < 0 || i >= n) ? -1 : i;
+  case Address::MirrorOnce: {
+    int64_t m = mirror(i);
+    return m >= n ? n - 1 : m;
+  }
+  }
+  return -1;
+}
+
+namespace {
+
+// Far outside any texture, yet safe to convert to int64 and to add small offsets to.
+constexpr double kPositionLimit = 1e12;
+
+double limit_position(double p) {
+  if (std::isnan(p)) return 0.0;
+  return std::fmin(std::fmax(p, -kPositionLimit), kPositionLimit);
+}
+
+std::array<double, 4> texel(const img::Image& t, int64_t x, int64_t y, const SamplerModel& s) {
+  int64_t ax = address_texel(x, t.width, s.address_u);
+  int64_t ay = address_texel(y, t.height, s.address_v);
+  if (ax < 0 || ay < 0) return s.border;
+  const float* p = t.at(static_cast<uint32_t>(ax), static_cast<uint32_t>(ay));
+  return {p[0], p[1], p[2], p[3]};
+}
+
+// Texel-space position p = u·N − 0.5 split into the lower texel and the fraction.
+struct Split {
+  int64_t i0;
+  double frac;
+};
+Split split(double p, int subtexel_bits) {
+  p = limit_position(p);
+  double nearest = std::nearbyint(p);
+  if (std::fabs(p - nearest) < 1e-9) p = nearest; // on a texel centre: read it exactly
+  double f0 = std::floor(p);
+  double frac = p - f0;
+  auto i0 = static_cast<int64_t>(f0);
+  if (subtexel_bits > 0) {
+    double steps = std::ldexp(1.0, subtexel_bits);
+    frac = std::nearbyint(frac * steps) / steps;
+    if (frac >= 1.0) {
+      ++i0;
+      frac = 0.0;
+    }
+  }
+  return {i0, frac};
+}
+
+} // namespace
+
+std::array<double, 4> sample(const img::Image& t, double u, double v, const SamplerModel& s,
+                             int subtexel_bits) {
+  if (t.width == 0 || t.height == 0) return {0, 0, 0, 1};
+  const double w = t.width, h = t.height;
+  if (s.filter == Filter::Point) {
+    Split sx = split(u * w, 0), sy = split(v * h, 0);
+    return texel(t, sx.i0, sy.i0, s);
+  }
+  Split sx = split(u * w - 0.5, subtexel_bits), sy = split(v * h - 0.5, subtexel_bits);
+  std::array<double, 4> out{};
+  const double wx[2] = {1.0 - sx.frac, sx.frac}, wy[2] = {1.0 - sy.frac, sy.frac};
+  for (int b = 0; b < 2; ++b)
+    for (int a = 0; a < 2; ++a) {
+      double wgt = wx[a] * wy[b];
+      if (wgt == 0.0) continue; // keeps exact reads exact (and NaN texels out of 0-weight)
+      auto tx = texel(t, sx.i0 + a, sy.i0 + b, s);
+      for (int c = 0; c < 4; ++c) out[c] += wgt * tx[c];
+    }
+  return out;
+}
+
+} // namespace tierlift::ref

@@ -1,0 +1,86 @@
+// The Vulkan device: one headless Vulkan instance and logical device (lavapipe by default)
+// that draws the CPU device's pass description (cpu::Pass) with tierlift's own SPIR-V.
+//
+// How a pass maps onto Vulkan:
+//   * Programs: compile_pair(vertex, pixel) with link-time pruning. A pass without a vertex
+//     program gets a generated vs_2_0 pass-through (v0 → oPos, v1/v2 → oD0/oD1, v3+N → oTN)
+//     fed with `transformed` or, for `constant_inputs`, the full-screen quad carrying the
+//     same values at all four corners (equal vertex values interpolate to themselves). A pass
+//     without a pixel program gets `mov oC0, v0` (D3D9's fixed function passes oD0).
+//   * D3D9 pixel centres: the viewport is offset by (+0.5, +0.5) pixel (DXVK's choice; the
+//     shader's fix-up specialization constants stay 0). An exact binary offset, so vertex
+//     positions snap to the same 1/256-pixel grid as the CPU device's rasteriser. Modern
+//     centres: no offset. The scissor is the D3D9 viewport clipped to the target.
+//   * Render targets RGBA8 UNORM, RGBA16F, RGBA32F; the target image's current contents are
+//     uploaded first (loadOp LOAD), so blending sees the stored destination, and read back
+//     as floats (RGBA8: k/255; RGBA16F: the half's value).
+//   * Textures: each bound stage's img::Image uploaded as R32G32B32A32_SFLOAT; unbound
+//     stages get a 1×1 (0, 0, 0, 1) texture. Samplers: point/linear, wrap/mirror/clamp/
+//     border with D3D9's transparent black border (opaque black/white also map; any other
+//     border colour or MirrorOnce is an error). One mip level, unnormalised LOD 0.
+//   * Constants: codegen::pack_uniforms with the pass's ConstantBanks and bump-env states.
+// Nothing throws: every failure is returned as a message.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "tierlift/cpu/draw.h"
+#include "tierlift/image/image.h"
+
+namespace tierlift::vulkan {
+
+struct DeviceOptions {
+  // Enable VK_LAYER_KHRONOS_validation with a messenger that collects every warning and
+  // error (tests require none).
+  bool validation = false;
+  // Case-insensitive substring of the physical device name. Empty: prefer a CPU device
+  // (lavapipe, "llvmpipe"), else the first device.
+  std::string gpu_filter;
+};
+
+struct DrawOptions {
+  // Test aid: decorate every pixel-stage input Flat, so a varying is the provoking vertex's
+  // value bit for bit. Only meaningful when all vertices of a primitive carry the same
+  // outputs (then the CPU device's interpolation also returns that value); it keeps ±inf
+  // varyings from turning into NaN in the rasteriser's attribute gradients.
+  bool flat_varyings = false;
+};
+
+struct DrawResult {
+  bool ok = false;
+  std::string error;
+  double setup_ms = 0; // compile, pipeline, resources, uploads
+  double draw_ms = 0;  // submit to fence (the draw itself and the readback copy)
+};
+
+class Device {
+public:
+  // nullptr and *error on failure (no Vulkan loader/driver, no device matching the filter,
+  // validation layer missing); the message names the Debian package to install.
+  static std::unique_ptr<Device> create(const DeviceOptions& options, std::string* error);
+  ~Device();
+  Device(const Device&) = delete;
+  Device& operator=(const Device&) = delete;
+
+  std::string name() const;       // physical device name, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
+  uint32_t subtexel_bits() const; // VkPhysicalDeviceLimits::subTexelPrecisionBits
+
+  // Draws `pass` into `target`: its format selects the attachment format, its current
+  // pixels are the destination blending reads; on success it holds the stored result.
+  // On failure the target is unchanged.
+  DrawResult draw(const cpu::Pass& pass, img::Image& target, const DrawOptions& options = {});
+
+  // Validation messages collected so far (one line each: severity, id, text).
+  std::vector<std::string> messages() const;
+  void clear_messages();
+
+  struct Impl;
+
+private:
+  explicit Device(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+} // namespace tierlift::vulkan

@@ -1,0 +1,210 @@
+// Instance, physical device choice, queue and command pool; the validation messenger.
+#include <algorithm>
+#include <cctype>
+#include <cstring>
+
+#include <fmt/format.h>
+
+#include "vk_internal.h"
+
+namespace tierlift::vulkan {
+namespace {
+
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+constexpr const char* kNoDriverHint =
+    "no Vulkan device found: install a Vulkan driver, e.g. the Debian package "
+    "mesa-vulkan-drivers (lavapipe, a CPU implementation)";
+
+VKAPI_ATTR VkBool32 VKAPI_CALL on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                          VkDebugUtilsMessageTypeFlagsEXT,
+                                          const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                          void* user) {
+  auto* impl = static_cast<Device::Impl*>(user);
+  const char* sev = severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "error" : "warning";
+  std::string line =
+      fmt::format("{}: [{}] {}", sev, data && data->pMessageIdName ? data->pMessageIdName : "",
+                  data && data->pMessage ? data->pMessage : "");
+  std::lock_guard<std::mutex> lock(impl->messages_mutex);
+  impl->messages.push_back(std::move(line));
+  return VK_FALSE; // never abort the call
+}
+
+VkDebugUtilsMessengerCreateInfoEXT messenger_info(Device::Impl* impl) {
+  VkDebugUtilsMessengerCreateInfoEXT ci{};
+  ci.sType = VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT;
+  ci.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
+                       VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+  ci.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                   VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                   VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+  ci.pfnUserCallback = on_message;
+  ci.pUserData = impl;
+  return ci;
+}
+
+bool has_layer(const char* name) {
+  uint32_t n = 0;
+  if (vkEnumerateInstanceLayerProperties(&n, nullptr) != VK_SUCCESS) return false;
+  std::vector<VkLayerProperties> layers(n);
+  if (vkEnumerateInstanceLayerProperties(&n, layers.data()) != VK_SUCCESS) return false;
+  return std::any_of(layers.begin(), layers.end(), [&](const VkLayerProperties& l) {
+    return std::strcmp(l.layerName, name) == 0;
+  });
+}
+
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+} // namespace
+
+std::string vk_error(const char* what, VkResult r) {
+  return fmt::format("{} failed: VkResult {}", what, static_cast<int>(r));
+}
+
+Device::Impl::~Impl() {
+  if (device) {
+    vkDeviceWaitIdle(device);
+    if (pool) vkDestroyCommandPool(device, pool, nullptr);
+    vkDestroyDevice(device, nullptr);
+  }
+  if (messenger) {
+    auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
+    if (destroy) destroy(instance, messenger, nullptr);
+  }
+  if (instance) vkDestroyInstance(instance, nullptr);
+}
+
+Device::Device(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+Device::~Device() = default;
+
+std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string* error) {
+  auto fail = [&](std::string msg) -> std::unique_ptr<Device> {
+    if (error) *error = std::move(msg);
+    return nullptr;
+  };
+  auto impl = std::make_unique<Impl>();
+
+  std::vector<const char*> layers, extensions;
+  if (options.validation) {
+    if (!has_layer(kValidationLayer))
+      return fail("the Vulkan validation layer VK_LAYER_KHRONOS_validation is not installed: "
+                  "install the Debian package vulkan-validationlayers");
+    layers.push_back(kValidationLayer);
+    extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+  }
+  VkApplicationInfo app{};
+  app.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO;
+  app.pApplicationName = "tierlift";
+  app.apiVersion = VK_API_VERSION_1_1;
+  VkInstanceCreateInfo ici{};
+  ici.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO;
+  ici.pApplicationInfo = &app;
+  ici.enabledLayerCount = static_cast<uint32_t>(layers.size());
+  ici.ppEnabledLayerNames = layers.data();
+  ici.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
+  ici.ppEnabledExtensionNames = extensions.data();
+  VkDebugUtilsMessengerCreateInfoEXT mci = messenger_info(impl.get());
+  if (options.validation) ici.pNext = &mci; // messages of vkCreate/DestroyInstance too
+  VkResult r = vkCreateInstance(&ici, nullptr, &impl->instance);
+  if (r != VK_SUCCESS) {
+    impl->instance = VK_NULL_HANDLE;
+    if (r == VK_ERROR_INCOMPATIBLE_DRIVER) return fail(kNoDriverHint);
+    return fail(vk_error("vkCreateInstance", r) + " (" + kNoDriverHint + ")");
+  }
+  if (options.validation) {
+    auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(impl->instance, "vkCreateDebugUtilsMessengerEXT"));
+    if (!create || create(impl->instance, &mci, nullptr, &impl->messenger) != VK_SUCCESS)
+      return fail("cannot create the VK_EXT_debug_utils messenger of the validation layer");
+  }
+
+  uint32_t count = 0;
+  vkEnumeratePhysicalDevices(impl->instance, &count, nullptr);
+  std::vector<VkPhysicalDevice> devices(count);
+  if (count) vkEnumeratePhysicalDevices(impl->instance, &count, devices.data());
+  devices.resize(count);
+  if (devices.empty()) return fail(kNoDriverHint);
+  VkPhysicalDevice chosen = VK_NULL_HANDLE;
+  std::string names;
+  for (VkPhysicalDevice pd : devices) {
+    VkPhysicalDeviceProperties p;
+    vkGetPhysicalDeviceProperties(pd, &p);
+    names += std::string(names.empty() ? "" : ", ") + p.deviceName;
+    bool match = options.gpu_filter.empty()
+                     ? p.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU
+                     : lower(p.deviceName).find(lower(options.gpu_filter)) != std::string::npos;
+    if (match && !chosen) chosen = pd;
+  }
+  if (!chosen && options.gpu_filter.empty()) chosen = devices.front();
+  if (!chosen)
+    return fail(
+        fmt::format("no Vulkan device matches \"{}\" (found: {})", options.gpu_filter, names));
+  impl->physical = chosen;
+  vkGetPhysicalDeviceProperties(chosen, &impl->props);
+  vkGetPhysicalDeviceMemoryProperties(chosen, &impl->memory);
+  if (impl->props.apiVersion < VK_API_VERSION_1_1)
+    return fail(fmt::format("{} supports only Vulkan {}.{}; tierlift needs 1.1",
+                            impl->props.deviceName, VK_API_VERSION_MAJOR(impl->props.apiVersion),
+                            VK_API_VERSION_MINOR(impl->props.apiVersion)));
+
+  uint32_t qcount = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(chosen, &qcount, nullptr);
+  std::vector<VkQueueFamilyProperties> families(qcount);
+  vkGetPhysicalDeviceQueueFamilyProperties(chosen, &qcount, families.data());
+  families.resize(qcount);
+  bool found = false;
+  for (uint32_t i = 0; i < families.size() && !found; ++i)
+    if (families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) {
+      impl->queue_family = i;
+      found = true;
+    }
+  if (!found) return fail(fmt::format("{} has no graphics queue", impl->props.deviceName));
+
+  float priority = 1.0f;
+  VkDeviceQueueCreateInfo qci{};
+  qci.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO;
+  qci.queueFamilyIndex = impl->queue_family;
+  qci.queueCount = 1;
+  qci.pQueuePriorities = &priority;
+  VkDeviceCreateInfo dci{};
+  dci.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
+  dci.queueCreateInfoCount = 1;
+  dci.pQueueCreateInfos = &qci;
+  r = vkCreateDevice(chosen, &dci, nullptr, &impl->device);
+  if (r != VK_SUCCESS) {
+    impl->device = VK_NULL_HANDLE;
+    return fail(vk_error("vkCreateDevice", r));
+  }
+  vkGetDeviceQueue(impl->device, impl->queue_family, 0, &impl->queue);
+  VkCommandPoolCreateInfo pci{};
+  pci.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
+  pci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+  pci.queueFamilyIndex = impl->queue_family;
+  r = vkCreateCommandPool(impl->device, &pci, nullptr, &impl->pool);
+  if (r != VK_SUCCESS) {
+    impl->pool = VK_NULL_HANDLE;
+    return fail(vk_error("vkCreateCommandPool", r));
+  }
+  return std::unique_ptr<Device>(new Device(std::move(impl)));
+}
+
+std::string Device::name() const {
+  return impl_->props.deviceName;
+}
+uint32_t Device::subtexel_bits() const {
+  return impl_->props.limits.subTexelPrecisionBits;
+}
+
+std::vector<std::string> Device::messages() const {
+  std::lock_guard<std::mutex> lock(impl_->messages_mutex);
+  return impl_->messages;
+}
+void Device::clear_messages() {
+  std::lock_guard<std::mutex> lock(impl_->messages_mutex);
+  impl_->messages.clear();
+}
+
+} // namespace tierlift::vulkan

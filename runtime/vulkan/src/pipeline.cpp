@@ -1,0 +1,208 @@
+// Render pass, framebuffer, sampler and graphics pipeline of one pass.
+#include "pipeline.h"
+
+#include <fmt/format.h>
+
+namespace tierlift::vulkan {
+namespace {
+
+VkSamplerAddressMode address_mode(cpu::AddressMode m) {
+  switch (m) {
+  case cpu::AddressMode::Wrap: return VK_SAMPLER_ADDRESS_MODE_REPEAT;
+  case cpu::AddressMode::Mirror: return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
+  case cpu::AddressMode::Clamp: return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  case cpu::AddressMode::Border: return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER;
+  case cpu::AddressMode::MirrorOnce: return VK_SAMPLER_ADDRESS_MODE_MAX_ENUM;
+  }
+  return VK_SAMPLER_ADDRESS_MODE_MAX_ENUM;
+}
+
+std::string shader_module(Device::Impl& d, Cleanup& cleanup, const std::vector<uint32_t>& words,
+                          VkShaderModule& out) {
+  VkShaderModuleCreateInfo ci{};
+  ci.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
+  ci.codeSize = words.size() * sizeof(uint32_t);
+  ci.pCode = words.data();
+  VkResult r = vkCreateShaderModule(d.device, &ci, nullptr, &out);
+  if (r != VK_SUCCESS) return vk_error("vkCreateShaderModule", r);
+  VkDevice dev = d.device;
+  VkShaderModule m = out;
+  cleanup.add([dev, m] { vkDestroyShaderModule(dev, m, nullptr); });
+  return {};
+}
+
+} // namespace
+
+std::string create_render_pass(Device::Impl& d, Cleanup& cleanup, VkFormat format,
+                               VkRenderPass& out) {
+  VkAttachmentDescription att{};
+  att.format = format;
+  att.samples = VK_SAMPLE_COUNT_1_BIT;
+  att.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+  att.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  att.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+  att.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  att.initialLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  att.finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  VkAttachmentReference ref{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+  VkSubpassDescription sub{};
+  sub.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  sub.colorAttachmentCount = 1;
+  sub.pColorAttachments = &ref;
+  VkRenderPassCreateInfo ci{};
+  ci.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO;
+  ci.attachmentCount = 1;
+  ci.pAttachments = &att;
+  ci.subpassCount = 1;
+  ci.pSubpasses = &sub;
+  VkResult r = vkCreateRenderPass(d.device, &ci, nullptr, &out);
+  if (r != VK_SUCCESS) return vk_error("vkCreateRenderPass", r);
+  VkDevice dev = d.device;
+  VkRenderPass rp = out;
+  cleanup.add([dev, rp] { vkDestroyRenderPass(dev, rp, nullptr); });
+  return {};
+}
+
+std::string create_framebuffer(Device::Impl& d, Cleanup& cleanup, VkRenderPass rp,
+                               const Image2D& target, VkFramebuffer& out) {
+  VkFramebufferCreateInfo ci{};
+  ci.sType = VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO;
+  ci.renderPass = rp;
+  ci.attachmentCount = 1;
+  ci.pAttachments = &target.view;
+  ci.width = target.width;
+  ci.height = target.height;
+  ci.layers = 1;
+  VkResult r = vkCreateFramebuffer(d.device, &ci, nullptr, &out);
+  if (r != VK_SUCCESS) return vk_error("vkCreateFramebuffer", r);
+  VkDevice dev = d.device;
+  VkFramebuffer fb = out;
+  cleanup.add([dev, fb] { vkDestroyFramebuffer(dev, fb, nullptr); });
+  return {};
+}
+
+std::string create_sampler(Device::Impl& d, Cleanup& cleanup, const cpu::SamplerState& s,
+                           VkSampler& out) {
+  VkSamplerCreateInfo ci{};
+  ci.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
+  VkFilter f = s.filter == cpu::Filter::Linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
+  ci.magFilter = ci.minFilter = f;
+  ci.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  ci.addressModeU = address_mode(s.address_u);
+  ci.addressModeV = address_mode(s.address_v);
+  ci.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  if (ci.addressModeU == VK_SAMPLER_ADDRESS_MODE_MAX_ENUM ||
+      ci.addressModeV == VK_SAMPLER_ADDRESS_MODE_MAX_ENUM)
+    return "the Vulkan device does not support the MirrorOnce address mode";
+  const cpu::Vec4& b = s.border_color;
+  if (b == cpu::Vec4{0, 0, 0, 0})
+    ci.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
+  else if (b == cpu::Vec4{0, 0, 0, 1})
+    ci.borderColor = VK_BORDER_COLOR_FLOAT_OPAQUE_BLACK;
+  else if (b == cpu::Vec4{1, 1, 1, 1})
+    ci.borderColor = VK_BORDER_COLOR_FLOAT_OPAQUE_WHITE;
+  else
+    return fmt::format("the Vulkan device supports border colours (0,0,0,0), (0,0,0,1) and "
+                       "(1,1,1,1) only, not ({},{},{},{})",
+                       b[0], b[1], b[2], b[3]);
+  ci.minLod = ci.maxLod = 0.0f;
+  VkResult r = vkCreateSampler(d.device, &ci, nullptr, &out);
+  if (r != VK_SUCCESS) return vk_error("vkCreateSampler", r);
+  VkDevice dev = d.device;
+  VkSampler smp = out;
+  cleanup.add([dev, smp] { vkDestroySampler(dev, smp, nullptr); });
+  return {};
+}
+
+std::string create_pipeline(Device::Impl& d, Cleanup& cleanup, const PipelineDesc& desc,
+                            VkPipeline& out) {
+  VkShaderModule vsm = VK_NULL_HANDLE, psm = VK_NULL_HANDLE;
+  std::string err = shader_module(d, cleanup, desc.vs->words, vsm);
+  if (err.empty()) err = shader_module(d, cleanup, desc.ps_words, psm);
+  if (!err.empty()) return err;
+  VkPipelineShaderStageCreateInfo stages[2]{};
+  stages[0].sType = stages[1].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+  stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
+  stages[0].module = vsm;
+  stages[0].pName = desc.vs->entry_point.c_str();
+  stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
+  stages[1].module = psm;
+  stages[1].pName = desc.ps->entry_point.c_str();
+
+  // One interleaved binding: all sixteen input registers of a vertex, v# at 16·#.
+  VkVertexInputBindingDescription binding{0, desc.vertex_stride, VK_VERTEX_INPUT_RATE_VERTEX};
+  std::vector<VkVertexInputAttributeDescription> attrs;
+  for (const auto& iv : desc.vs->interface)
+    if (iv.kind == codegen::InterfaceKind::Input)
+      attrs.push_back({iv.location, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 16 * iv.index});
+  VkPipelineVertexInputStateCreateInfo vi{};
+  vi.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
+  vi.vertexBindingDescriptionCount = 1;
+  vi.pVertexBindingDescriptions = &binding;
+  vi.vertexAttributeDescriptionCount = static_cast<uint32_t>(attrs.size());
+  vi.pVertexAttributeDescriptions = attrs.data();
+  VkPipelineInputAssemblyStateCreateInfo ia{};
+  ia.sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO;
+  ia.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+  VkPipelineViewportStateCreateInfo vp{};
+  vp.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO;
+  vp.viewportCount = vp.scissorCount = 1;
+  VkPipelineRasterizationStateCreateInfo rs{};
+  rs.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO;
+  rs.polygonMode = VK_POLYGON_MODE_FILL;
+  rs.cullMode = VK_CULL_MODE_NONE; // D3DCULL_NONE, as the CPU device
+  rs.frontFace = VK_FRONT_FACE_CLOCKWISE;
+  rs.lineWidth = 1.0f;
+  VkPipelineMultisampleStateCreateInfo ms{};
+  ms.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;
+  ms.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+  VkPipelineColorBlendAttachmentState cba{};
+  cba.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
+                       VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+  cba.colorBlendOp = cba.alphaBlendOp = VK_BLEND_OP_ADD;
+  // Blending applies to all four channels, as in the CPU device.
+  auto factors = [&](VkBlendFactor src, VkBlendFactor dst) {
+    cba.blendEnable = VK_TRUE;
+    cba.srcColorBlendFactor = cba.srcAlphaBlendFactor = src;
+    cba.dstColorBlendFactor = cba.dstAlphaBlendFactor = dst;
+  };
+  switch (desc.blend) {
+  case cpu::BlendMode::Replace: break;
+  case cpu::BlendMode::OneOne: factors(VK_BLEND_FACTOR_ONE, VK_BLEND_FACTOR_ONE); break;
+  case cpu::BlendMode::SrcAlphaOne: factors(VK_BLEND_FACTOR_SRC_ALPHA, VK_BLEND_FACTOR_ONE); break;
+  case cpu::BlendMode::SrcAlphaInvSrcAlpha:
+    factors(VK_BLEND_FACTOR_SRC_ALPHA, VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA);
+    break;
+  }
+  VkPipelineColorBlendStateCreateInfo cb{};
+  cb.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
+  cb.attachmentCount = 1;
+  cb.pAttachments = &cba;
+  VkDynamicState dyn[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+  VkPipelineDynamicStateCreateInfo ds{};
+  ds.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO;
+  ds.dynamicStateCount = 2;
+  ds.pDynamicStates = dyn;
+
+  VkGraphicsPipelineCreateInfo ci{};
+  ci.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO;
+  ci.stageCount = 2;
+  ci.pStages = stages;
+  ci.pVertexInputState = &vi;
+  ci.pInputAssemblyState = &ia;
+  ci.pViewportState = &vp;
+  ci.pRasterizationState = &rs;
+  ci.pMultisampleState = &ms;
+  ci.pColorBlendState = &cb;
+  ci.pDynamicState = &ds;
+  ci.layout = desc.layout;
+  ci.renderPass = desc.render_pass;
+  VkResult r = vkCreateGraphicsPipelines(d.device, VK_NULL_HANDLE, 1, &ci, nullptr, &out);
+  if (r != VK_SUCCESS) return vk_error("vkCreateGraphicsPipelines", r);
+  VkDevice dev = d.device;
+  VkPipeline p = out;
+  cleanup.add([dev, p] { vkDestroyPipeline(dev, p, nullptr); });
+  return {};
+}
+
+} // namespace tierlift::vulkan

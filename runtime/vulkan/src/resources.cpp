@@ -1,0 +1,273 @@
+// Buffers, images, one-shot submits and pixel conversion for the Vulkan device.
+#include <bit>
+#include <cmath>
+#include <cstring>
+
+#include "vk_internal.h"
+
+namespace tierlift::vulkan {
+namespace {
+
+// A memory type allowed by `bits` with all `flags`, or UINT32_MAX.
+uint32_t find_memory(const Device::Impl& d, uint32_t bits, VkMemoryPropertyFlags flags) {
+  for (uint32_t i = 0; i < d.memory.memoryTypeCount; ++i)
+    if ((bits & (1u << i)) && (d.memory.memoryTypes[i].propertyFlags & flags) == flags) return i;
+  return UINT32_MAX;
+}
+
+std::string allocate(Device::Impl& d, Cleanup& cleanup, const VkMemoryRequirements& req,
+                     VkMemoryPropertyFlags flags, VkDeviceMemory& out) {
+  uint32_t type = find_memory(d, req.memoryTypeBits, flags);
+  if (type == UINT32_MAX) type = find_memory(d, req.memoryTypeBits, 0);
+  if (type == UINT32_MAX) return "no suitable Vulkan memory type";
+  VkMemoryAllocateInfo ai{};
+  ai.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
+  ai.allocationSize = req.size;
+  ai.memoryTypeIndex = type;
+  VkResult r = vkAllocateMemory(d.device, &ai, nullptr, &out);
+  if (r != VK_SUCCESS) return vk_error("vkAllocateMemory", r);
+  VkDevice dev = d.device;
+  VkDeviceMemory mem = out;
+  cleanup.add([dev, mem] { vkFreeMemory(dev, mem, nullptr); });
+  return {};
+}
+
+} // namespace
+
+std::string create_buffer(Device::Impl& d, Cleanup& cleanup, VkDeviceSize size,
+                          VkBufferUsageFlags usage, Buffer& out) {
+  VkBufferCreateInfo bi{};
+  bi.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
+  bi.size = size == 0 ? 16 : size;
+  bi.usage = usage;
+  bi.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  VkResult r = vkCreateBuffer(d.device, &bi, nullptr, &out.buffer);
+  if (r != VK_SUCCESS) return vk_error("vkCreateBuffer", r);
+  VkDevice dev = d.device;
+  VkBuffer buf = out.buffer;
+  VkMemoryRequirements req;
+  vkGetBufferMemoryRequirements(dev, buf, &req);
+  // Memory is freed after the buffer is destroyed (cleanup runs in reverse order).
+  std::string err = allocate(
+      d, cleanup, req, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
+      out.memory);
+  if (!err.empty()) {
+    vkDestroyBuffer(dev, buf, nullptr);
+    return err;
+  }
+  cleanup.add([dev, buf] { vkDestroyBuffer(dev, buf, nullptr); });
+  if ((r = vkBindBufferMemory(dev, buf, out.memory, 0)) != VK_SUCCESS)
+    return vk_error("vkBindBufferMemory", r);
+  if ((r = vkMapMemory(dev, out.memory, 0, VK_WHOLE_SIZE, 0, &out.mapped)) != VK_SUCCESS)
+    return vk_error("vkMapMemory", r);
+  out.size = bi.size;
+  return {};
+}
+
+std::string create_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint32_t height,
+                         VkFormat format, VkImageUsageFlags usage, Image2D& out) {
+  VkImageCreateInfo ii{};
+  ii.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
+  ii.imageType = VK_IMAGE_TYPE_2D;
+  ii.format = format;
+  ii.extent = {width, height, 1};
+  ii.mipLevels = 1;
+  ii.arrayLayers = 1;
+  ii.samples = VK_SAMPLE_COUNT_1_BIT;
+  ii.tiling = VK_IMAGE_TILING_OPTIMAL;
+  ii.usage = usage;
+  ii.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  ii.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  VkResult r = vkCreateImage(d.device, &ii, nullptr, &out.image);
+  if (r != VK_SUCCESS) return vk_error("vkCreateImage", r);
+  VkDevice dev = d.device;
+  VkImage img = out.image;
+  VkMemoryRequirements req;
+  vkGetImageMemoryRequirements(dev, img, &req);
+  std::string err = allocate(d, cleanup, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, out.memory);
+  if (!err.empty()) {
+    vkDestroyImage(dev, img, nullptr);
+    return err;
+  }
+  cleanup.add([dev, img] { vkDestroyImage(dev, img, nullptr); });
+  if ((r = vkBindImageMemory(dev, img, out.memory, 0)) != VK_SUCCESS)
+    return vk_error("vkBindImageMemory", r);
+  VkImageViewCreateInfo vi{};
+  vi.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
+  vi.image = img;
+  vi.viewType = VK_IMAGE_VIEW_TYPE_2D;
+  vi.format = format;
+  vi.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  if ((r = vkCreateImageView(dev, &vi, nullptr, &out.view)) != VK_SUCCESS)
+    return vk_error("vkCreateImageView", r);
+  VkImageView view = out.view;
+  cleanup.add([dev, view] { vkDestroyImageView(dev, view, nullptr); });
+  out.format = format;
+  out.width = width;
+  out.height = height;
+  return {};
+}
+
+std::string submit_and_wait(Device::Impl& d, const std::function<void(VkCommandBuffer)>& record) {
+  VkCommandBufferAllocateInfo ai{};
+  ai.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
+  ai.commandPool = d.pool;
+  ai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  ai.commandBufferCount = 1;
+  VkCommandBuffer cb = VK_NULL_HANDLE;
+  VkResult r = vkAllocateCommandBuffers(d.device, &ai, &cb);
+  if (r != VK_SUCCESS) return vk_error("vkAllocateCommandBuffers", r);
+  Cleanup cleanup;
+  cleanup.add([&] { vkFreeCommandBuffers(d.device, d.pool, 1, &cb); });
+  VkCommandBufferBeginInfo bi{};
+  bi.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
+  bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  if ((r = vkBeginCommandBuffer(cb, &bi)) != VK_SUCCESS) return vk_error("vkBeginCommandBuffer", r);
+  record(cb);
+  if ((r = vkEndCommandBuffer(cb)) != VK_SUCCESS) return vk_error("vkEndCommandBuffer", r);
+  VkFenceCreateInfo fi{};
+  fi.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
+  VkFence fence = VK_NULL_HANDLE;
+  if ((r = vkCreateFence(d.device, &fi, nullptr, &fence)) != VK_SUCCESS)
+    return vk_error("vkCreateFence", r);
+  cleanup.add([&] { vkDestroyFence(d.device, fence, nullptr); });
+  VkSubmitInfo si{};
+  si.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
+  si.commandBufferCount = 1;
+  si.pCommandBuffers = &cb;
+  if ((r = vkQueueSubmit(d.queue, 1, &si, fence)) != VK_SUCCESS)
+    return vk_error("vkQueueSubmit", r);
+  if ((r = vkWaitForFences(d.device, 1, &fence, VK_TRUE, UINT64_MAX)) != VK_SUCCESS)
+    return vk_error("vkWaitForFences", r);
+  return {};
+}
+
+void image_barrier(VkCommandBuffer cb, VkImage image, VkImageLayout from, VkImageLayout to,
+                   VkAccessFlags src_access, VkAccessFlags dst_access,
+                   VkPipelineStageFlags src_stage, VkPipelineStageFlags dst_stage) {
+  VkImageMemoryBarrier b{};
+  b.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
+  b.srcAccessMask = src_access;
+  b.dstAccessMask = dst_access;
+  b.oldLayout = from;
+  b.newLayout = to;
+  b.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  b.image = image;
+  b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  vkCmdPipelineBarrier(cb, src_stage, dst_stage, 0, 0, nullptr, 0, nullptr, 1, &b);
+}
+
+VkFormat vk_format(img::Format f) {
+  switch (f) {
+  case img::Format::RGBA8: return VK_FORMAT_R8G8B8A8_UNORM;
+  case img::Format::RGBA16F: return VK_FORMAT_R16G16B16A16_SFLOAT;
+  case img::Format::RGBA32F: return VK_FORMAT_R32G32B32A32_SFLOAT;
+  }
+  return VK_FORMAT_R32G32B32A32_SFLOAT;
+}
+
+uint32_t bytes_per_pixel(img::Format f) {
+  switch (f) {
+  case img::Format::RGBA8: return 4;
+  case img::Format::RGBA16F: return 8;
+  case img::Format::RGBA32F: return 16;
+  }
+  return 16;
+}
+
+uint16_t float_to_half(float value) {
+  uint32_t x = std::bit_cast<uint32_t>(value);
+  uint32_t sign = (x >> 16) & 0x8000u;
+  uint32_t exp = (x >> 23) & 0xFFu;
+  uint32_t man = x & 0x7FFFFFu;
+  if (exp == 0xFF) return static_cast<uint16_t>(sign | 0x7C00u | (man ? 0x200u | (man >> 13) : 0));
+  int e = static_cast<int>(exp) - 127 + 15;
+  if (e >= 31) return static_cast<uint16_t>(sign | 0x7C00u);
+  uint32_t m = man | 0x800000u;     // implicit bit
+  int shift = e <= 0 ? 14 - e : 13; // subnormal halves shift further
+  if (shift > 24) return static_cast<uint16_t>(sign);
+  uint32_t half = m >> shift;
+  uint32_t rest = m & ((1u << shift) - 1u), mid = 1u << (shift - 1);
+  if (rest > mid || (rest == mid && (half & 1u))) ++half; // nearest even; may carry into exp
+  uint32_t bits = e <= 0 ? half : ((static_cast<uint32_t>(e) << 10) + (half - 0x400u));
+  return static_cast<uint16_t>(sign | bits);
+}
+
+float half_to_float(uint16_t h) {
+  uint32_t sign = (h & 0x8000u) ? 1u : 0u;
+  uint32_t exp = (h >> 10) & 0x1Fu, man = h & 0x3FFu;
+  float v;
+  if (exp == 0)
+    v = std::ldexp(static_cast<float>(man), -24);
+  else if (exp == 31)
+    v = man ? std::numeric_limits<float>::quiet_NaN() : INFINITY;
+  else
+    v = std::ldexp(static_cast<float>(man | 0x400u), static_cast<int>(exp) - 25);
+  return sign ? -v : v;
+}
+
+void pack_pixels(const img::Image& image, void* dst) {
+  size_t n = image.rgba.size();
+  switch (image.format) {
+  case img::Format::RGBA8: {
+    auto* p = static_cast<uint8_t*>(dst);
+    for (size_t i = 0; i < n; ++i) {
+      float v = image.rgba[i];
+      v = v > 0 ? (v < 1 ? v : 1) : 0; // NaN → 0
+      p[i] = static_cast<uint8_t>(std::lround(v * 255.0f));
+    }
+    break;
+  }
+  case img::Format::RGBA16F: {
+    auto* p = static_cast<uint16_t*>(dst);
+    for (size_t i = 0; i < n; ++i) p[i] = float_to_half(image.rgba[i]);
+    break;
+  }
+  case img::Format::RGBA32F: std::memcpy(dst, image.rgba.data(), n * sizeof(float)); break;
+  }
+}
+
+void unpack_pixels(const void* src, img::Image& image) {
+  size_t n = image.rgba.size();
+  switch (image.format) {
+  case img::Format::RGBA8: {
+    auto* p = static_cast<const uint8_t*>(src);
+    for (size_t i = 0; i < n; ++i) image.rgba[i] = static_cast<float>(p[i]) / 255.0f;
+    break;
+  }
+  case img::Format::RGBA16F: {
+    auto* p = static_cast<const uint16_t*>(src);
+    for (size_t i = 0; i < n; ++i) image.rgba[i] = half_to_float(p[i]);
+    break;
+  }
+  case img::Format::RGBA32F: std::memcpy(image.rgba.data(), src, n * sizeof(float)); break;
+  }
+}
+
+std::vector<uint32_t> decorate_inputs_flat(const std::vector<uint32_t>& words) {
+  // Header: 5 words. Collect Input variables and find where annotations may go: before the
+  // first type/constant/variable declaration (OpDecorate belongs to the annotation section).
+  if (words.size() < 5) return words;
+  std::vector<uint32_t> inputs;
+  size_t insert_at = 0;
+  for (size_t i = 5; i < words.size();) {
+    uint32_t count = words[i] >> 16, op = words[i] & 0xFFFFu;
+    if (count == 0 || i + count > words.size()) return words;
+    if (op == 59 /* OpVariable */ && count >= 4 && words[i + 3] == 1 /* Input */)
+      inputs.push_back(words[i + 2]);
+    if (insert_at == 0 && op >= 19 /* OpTypeVoid */ && op <= 59 /* OpVariable */) insert_at = i;
+    i += count;
+  }
+  if (insert_at == 0) return words;
+  std::vector<uint32_t> out(words.begin(), words.begin() + static_cast<long>(insert_at));
+  for (uint32_t id : inputs) {
+    out.push_back((3u << 16) | 71u /* OpDecorate */);
+    out.push_back(id);
+    out.push_back(14u /* Flat */);
+  }
+  out.insert(out.end(), words.begin() + static_cast<long>(insert_at), words.end());
+  return out;
+}
+
+} // namespace tierlift::vulkan

@@ -1,0 +1,59 @@
+#include "synthetic_programs.h"
+
+namespace tierlift::vulkan {
+namespace {
+
+ir::Instruction mov(ir::RegFile dst_file, uint32_t dst_index, ir::RegFile src_file,
+                    uint32_t src_index) {
+  ir::Instruction ins;
+  ins.op = ir::Opcode::Mov;
+  ins.dst = ir::DstOperand{dst_file, dst_index, ir::kFullMask, {}};
+  ir::SrcOperand s;
+  s.file = src_file;
+  s.index = src_index;
+  ins.src.push_back(s);
+  return ins;
+}
+
+ir::Declaration input_decl(uint32_t index, ir::DeclUsage usage, uint8_t usage_index) {
+  ir::Declaration d;
+  d.reg = ir::DstOperand{ir::RegFile::Input, index, ir::kFullMask, {}};
+  d.usage = usage;
+  d.usage_index = usage_index;
+  return d;
+}
+
+} // namespace
+
+std::shared_ptr<const ir::Program> passthrough_vertex_program() {
+  auto p = std::make_shared<ir::Program>();
+  p->profile = ir::Profile::vs_2_0;
+  p->decls.push_back(input_decl(kPassPosition, ir::DeclUsage::Position, 0));
+  for (uint8_t n = 0; n < 2; ++n)
+    p->decls.push_back(input_decl(kPassColor + n, ir::DeclUsage::Color, n));
+  for (uint8_t n = 0; n < 8; ++n)
+    p->decls.push_back(input_decl(kPassTex + n, ir::DeclUsage::TexCoord, n));
+  p->code.push_back(mov(ir::RegFile::RastOut, ir::kRastPos, ir::RegFile::Input, kPassPosition));
+  for (uint32_t n = 0; n < 2; ++n)
+    p->code.push_back(mov(ir::RegFile::AttrOut, n, ir::RegFile::Input, kPassColor + n));
+  for (uint32_t n = 0; n < 8; ++n)
+    p->code.push_back(mov(ir::RegFile::TexCrdOut, n, ir::RegFile::Input, kPassTex + n));
+  uint32_t seq = 0;
+  for (auto& d : p->decls) d.seq = seq++;
+  for (auto& c : p->code) c.seq = seq++;
+  return p;
+}
+
+std::shared_ptr<const ir::Program> passthrough_pixel_program() {
+  auto p = std::make_shared<ir::Program>();
+  p->profile = ir::Profile::ps_2_0;
+  ir::Declaration d;
+  d.reg = ir::DstOperand{ir::RegFile::Input, 0, ir::kFullMask, {}};
+  d.seq = 0;
+  p->decls.push_back(d);
+  p->code.push_back(mov(ir::RegFile::ColorOut, 0, ir::RegFile::Input, 0));
+  p->code.back().seq = 1;
+  return p;
+}
+
+} // namespace tierlift::vulkan

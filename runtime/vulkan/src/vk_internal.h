@@ -1,0 +1,93 @@
+// Internal to the Vulkan device: the state behind Device and the small resource helpers the
+// draw uses. Not part of the public API (device.h is).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "tierlift/vulkan/device.h"
+
+namespace tierlift::vulkan {
+
+// "vkCreateImage failed: VK_ERROR_OUT_OF_HOST_MEMORY"
+std::string vk_error(const char* what, VkResult r);
+
+struct Device::Impl {
+  VkInstance instance = VK_NULL_HANDLE;
+  VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
+  VkPhysicalDevice physical = VK_NULL_HANDLE;
+  VkDevice device = VK_NULL_HANDLE;
+  VkQueue queue = VK_NULL_HANDLE;
+  uint32_t queue_family = 0;
+  VkCommandPool pool = VK_NULL_HANDLE;
+  VkPhysicalDeviceProperties props{};
+  VkPhysicalDeviceMemoryProperties memory{};
+
+  mutable std::mutex messages_mutex;
+  std::vector<std::string> messages;
+
+  ~Impl();
+};
+
+// Destroys what was created, in reverse order, when it goes out of scope: every early
+// return of the draw cleans up without a goto ladder.
+class Cleanup {
+public:
+  Cleanup() = default;
+  Cleanup(const Cleanup&) = delete;
+  Cleanup& operator=(const Cleanup&) = delete;
+  ~Cleanup() {
+    for (auto it = fns_.rbegin(); it != fns_.rend(); ++it) (*it)();
+  }
+  void add(std::function<void()> fn) { fns_.push_back(std::move(fn)); }
+
+private:
+  std::vector<std::function<void()>> fns_;
+};
+
+// A host-visible, coherent, persistently mapped buffer.
+struct Buffer {
+  VkBuffer buffer = VK_NULL_HANDLE;
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  VkDeviceSize size = 0;
+  void* mapped = nullptr;
+};
+// Empty string on success; the buffer is registered with `cleanup`.
+std::string create_buffer(Device::Impl& d, Cleanup& cleanup, VkDeviceSize size,
+                          VkBufferUsageFlags usage, Buffer& out);
+
+struct Image2D {
+  VkImage image = VK_NULL_HANDLE;
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  VkImageView view = VK_NULL_HANDLE;
+  VkFormat format = VK_FORMAT_UNDEFINED;
+  uint32_t width = 0, height = 0;
+};
+std::string create_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint32_t height,
+                         VkFormat format, VkImageUsageFlags usage, Image2D& out);
+
+// Records commands into a fresh primary command buffer, submits it and waits for it.
+std::string submit_and_wait(Device::Impl& d, const std::function<void(VkCommandBuffer)>& record);
+
+// Layout transition of a whole colour image (one level, one layer).
+void image_barrier(VkCommandBuffer cb, VkImage image, VkImageLayout from, VkImageLayout to,
+                   VkAccessFlags src_access, VkAccessFlags dst_access,
+                   VkPipelineStageFlags src_stage, VkPipelineStageFlags dst_stage);
+
+// Pixels of an img::Image in a Vulkan format's bytes and back.
+VkFormat vk_format(img::Format f);
+uint32_t bytes_per_pixel(img::Format f);
+void pack_pixels(const img::Image& image, void* dst);
+void unpack_pixels(const void* src, img::Image& image);
+uint16_t float_to_half(float f); // round to nearest even, overflow to inf, NaN kept
+float half_to_float(uint16_t h);
+
+// SPIR-V rewrite for DrawOptions::flat_varyings: every Input variable gets Flat.
+std::vector<uint32_t> decorate_inputs_flat(const std::vector<uint32_t>& words);
+
+} // namespace tierlift::vulkan

@@ -1,0 +1,171 @@
+// Texture sampling (d3d9-isa.md §10.1, §10.2, §10.6): point vs bilinear on the sheet's
+// worked examples, every address mode on hand-computed indices, sub-texel quantisation.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "tierlift/cpu/texture.h"
+
+namespace tierlift::cpu {
+namespace {
+
+// 4×4 texture whose texel (x, y) holds R = x + 4y (distinct values), G = x, B = y, A = 1.
+img::Image numbered4x4() {
+  img::Image im(4, 4, img::Format::RGBA32F);
+  for (uint32_t y = 0; y < 4; ++y)
+    for (uint32_t x = 0; x < 4; ++x) {
+      float* p = im.at(x, y);
+      p[0] = static_cast<float>(x + 4 * y);
+      p[1] = static_cast<float>(x);
+      p[2] = static_cast<float>(y);
+      p[3] = 1;
+    }
+  return im;
+}
+
+SamplerState linear_clamp() {
+  SamplerState s;
+  s.filter = Filter::Linear;
+  s.address_u = s.address_v = AddressMode::Clamp;
+  return s;
+}
+
+// §10.1: bilinear at (0.5, 0.5) is the equal mix of texels (1,1), (2,1), (1,2), (2,2):
+// R = (5 + 6 + 9 + 10)/4 = 7.5.
+TEST(Sampling, BilinearAtCentreMixesFourCentralTexels) {
+  img::Image t = numbered4x4();
+  Vec4 r = sample_texture(t, linear_clamp(), 0.5f, 0.5f, 0);
+  EXPECT_FLOAT_EQ(r[0], 7.5f);
+  EXPECT_FLOAT_EQ(r[1], 1.5f);
+  EXPECT_FLOAT_EQ(r[2], 1.5f);
+  EXPECT_FLOAT_EQ(r[3], 1.0f);
+}
+
+// §10.1: bilinear at (0.375, 0.375) is exactly texel (1,1): R = 5.
+TEST(Sampling, BilinearAtTexelCentreIsThatTexel) {
+  img::Image t = numbered4x4();
+  Vec4 r = sample_texture(t, linear_clamp(), 0.375f, 0.375f, 0);
+  EXPECT_EQ(r[0], 5.0f);
+  EXPECT_EQ(r[1], 1.0f);
+  EXPECT_EQ(r[2], 1.0f);
+}
+
+// Point: i = floor(u·N). (0.5, 0.5) → u·N = 2 → texel (2,2), R = 10; (0.375, 0.375) →
+// 1.5 → texel (1,1); just below 0.5 → texel (1,1).
+TEST(Sampling, PointSampling) {
+  img::Image t = numbered4x4();
+  SamplerState s; // D3D9 defaults: point, wrap
+  EXPECT_EQ(sample_texture(t, s, 0.5f, 0.5f, 0)[0], 10.0f);
+  EXPECT_EQ(sample_texture(t, s, 0.375f, 0.375f, 0)[0], 5.0f);
+  EXPECT_EQ(sample_texture(t, s, 0.4999f, 0.4999f, 0)[0], 5.0f);
+}
+
+// Indices −1, N, 2N+1 with N = 4, by the formulas of §10.2:
+//   wrap:   i mod 4                        → 3, 0, 1
+//   mirror: t = (i mod 8) − 4, 3 − mirror(t) → −1: t=3 → 0;  4: t=0 → 3;  9: t=−3 → 1
+//   clamp:  clamp(i, 0, 3)                 → 0, 3, 3
+//   border: outside [0,3]                  → border, border, border
+//   mirroronce: clamp(mirror(i), 0, 3)     → 0, 3, 3
+TEST(Addressing, EveryModeOnIndicesOutside) {
+  struct Case {
+    AddressMode mode;
+    std::optional<int64_t> minus1, n, two_n_plus1;
+  };
+  const Case cases[] = {
+      {AddressMode::Wrap, 3, 0, 1},
+      {AddressMode::Mirror, 0, 3, 1},
+      {AddressMode::Clamp, 0, 3, 3},
+      {AddressMode::Border, std::nullopt, std::nullopt, std::nullopt},
+      {AddressMode::MirrorOnce, 0, 3, 3},
+  };
+  for (const Case& c : cases) {
+    EXPECT_EQ(address_texel(c.mode, -1, 4), c.minus1) << static_cast<int>(c.mode);
+    EXPECT_EQ(address_texel(c.mode, 4, 4), c.n) << static_cast<int>(c.mode);
+    EXPECT_EQ(address_texel(c.mode, 9, 4), c.two_n_plus1) << static_cast<int>(c.mode);
+    for (int64_t i = 0; i < 4; ++i) EXPECT_EQ(address_texel(c.mode, i, 4), i);
+  }
+  // Mirror's period: 0 1 2 3 3 2 1 0 | 0 1 …; negative side −1..−8: 0 1 2 3 3 2 1 0.
+  const int64_t mirror_neg[] = {0, 1, 2, 3, 3, 2, 1, 0};
+  for (int k = 1; k <= 8; ++k)
+    EXPECT_EQ(address_texel(AddressMode::Mirror, -k, 4), mirror_neg[k - 1]);
+}
+
+// The same through the sampler: point sampling at the centre of texel index −1, 4, 9 on
+// the u axis (row 0), R = texel x.
+TEST(Addressing, ThroughThePointSampler) {
+  img::Image t = numbered4x4();
+  auto at_index = [](int i) { return static_cast<float>((i + 0.5) / 4.0); };
+  SamplerState s;
+  s.border_color = {0.25f, 0.5f, 0.75f, 1.0f};
+  const std::pair<AddressMode, std::array<float, 3>> cases[] = {
+      {AddressMode::Wrap, {3, 0, 1}},
+      {AddressMode::Mirror, {0, 3, 1}},
+      {AddressMode::Clamp, {0, 3, 3}},
+      {AddressMode::Border, {0.25f, 0.25f, 0.25f}}};
+  for (const auto& [mode, want] : cases) {
+    s.address_u = mode;
+    s.address_v = AddressMode::Clamp;
+    int k = 0;
+    for (int i : {-1, 4, 9}) {
+      Vec4 r = sample_texture(t, s, at_index(i), 0.125f, 0);
+      EXPECT_EQ(r[0], want[k++]) << "mode " << static_cast<int>(mode) << " index " << i;
+    }
+  }
+}
+
+// Bilinear next to the border blends the border colour in: at u = 0 (x = −0.5) texels −1
+// and 0 are mixed half and half: (border 0.25 + texel 0 (R=0)) / 2 on row 0 centre.
+TEST(Addressing, BilinearBlendsBorderColour) {
+  img::Image t = numbered4x4();
+  SamplerState s = linear_clamp();
+  s.address_u = AddressMode::Border;
+  s.border_color = {0.25f, 0, 0, 0};
+  Vec4 r = sample_texture(t, s, 0.0f, 0.125f, 0);
+  EXPECT_FLOAT_EQ(r[0], 0.125f);
+  EXPECT_FLOAT_EQ(r[3], 0.5f);
+}
+
+// 2×1 texture (0 | 1), clamp: bilinear at u gives α = frac(2u − 0.5). u = 0.4 gives
+// α = 0.3000000119 exactly (float 0.4 times 2), which 8 sub-texel bits round to
+// round(76.80000305) / 256 = 77/256 = 0.30078125; with 0 bits it stays 0.3000000119.
+TEST(Sampling, SubTexelQuantisation) {
+  img::Image t(2, 1, img::Format::RGBA32F);
+  t.at(1, 0)[0] = 1;
+  SamplerState s = linear_clamp();
+  EXPECT_NEAR(sample_texture(t, s, 0.4f, 0.5f, 0)[0], 0.3000000119, 1e-7);
+  EXPECT_EQ(sample_texture(t, s, 0.4f, 0.5f, 8)[0], 77.0f / 256.0f);
+  EXPECT_EQ(sample_texture(t, s, 0.4f, 0.5f, 4)[0], 5.0f / 16.0f); // round(4.8) = 5
+  EXPECT_EQ(quantize_fraction(0.3, 1), 0.5);
+  EXPECT_EQ(quantize_fraction(0.2, 1), 0.0);
+  EXPECT_EQ(quantize_fraction(0.99, 2), 1.0); // rounds up to the next texel: weight 1
+}
+
+TEST(Sampling, UnboundStageReadsOpaqueBlack) {
+  std::array<TextureBinding, kMaxSamplers> none{};
+  BoundTextures unit(none, 0);
+  Vec4 r = unit.sample(3, {0.5f, 0.5f, 0, 1}, 0);
+  EXPECT_EQ(r, (Vec4{0, 0, 0, 1}));
+  EXPECT_EQ(unit.sample(999, {0.5f, 0.5f, 0, 1}, 0), (Vec4{0, 0, 0, 1}));
+}
+
+TEST(Sampling, ExtremeCoordinatesDoNotCrash) {
+  img::Image t = numbered4x4();
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  for (AddressMode m : {AddressMode::Wrap, AddressMode::Mirror, AddressMode::Clamp,
+                        AddressMode::Border, AddressMode::MirrorOnce})
+    for (Filter f : {Filter::Point, Filter::Linear}) {
+      SamplerState s;
+      s.filter = f;
+      s.address_u = s.address_v = m;
+      for (float u : {nan, inf, -inf, 3e38f, -3e38f, 1e9f}) {
+        Vec4 r = sample_texture(t, s, u, u, 8);
+        (void)r;
+      }
+    }
+  SUCCEED();
+}
+
+} // namespace
+} // namespace tierlift::cpu
