@@ -23,12 +23,12 @@ void add_folder(std::vector<ListingText>& out, const std::filesystem::path& dir,
   std::sort(files.begin(), files.end());
   for (const auto& f : files) {
     std::ifstream in(f, std::ios::binary);
-    out.push_back({f.filename().string(),
-                   std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>())});
+    out.push_back({f.filename().string(), std::string(std::istreambuf_iterator<char>(in),
+                                                      std::istreambuf_iterator<char>())});
   }
 }
 
-}  // namespace
+} // namespace
 
 const std::vector<ListingText>& all_listings() {
   static const std::vector<ListingText> listings = [] {
@@ -46,4 +46,4 @@ size_t total_bytes(const std::vector<ListingText>& listings) {
   return n;
 }
 
-}  // namespace tierlift::bench
+} // namespace tierlift::bench

@@ -13,4 +13,4 @@ struct ListingText {
 const std::vector<ListingText>& all_listings();
 size_t total_bytes(const std::vector<ListingText>& listings);
 
-}  // namespace tierlift::bench
+} // namespace tierlift::bench

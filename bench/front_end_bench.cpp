@@ -126,6 +126,6 @@ void BM_Peer_SpirvToolsAssemble(benchmark::State& state) {
 }
 BENCHMARK(BM_Peer_SpirvToolsAssemble);
 
-}  // namespace
+} // namespace
 
 BENCHMARK_MAIN();

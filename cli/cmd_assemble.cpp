@@ -19,7 +19,7 @@ std::string c_array(const std::vector<uint32_t>& tokens, const std::string& name
   return out + "};\n";
 }
 
-}  // namespace
+} // namespace
 
 void register_assemble_command(CLI::App& app) {
   struct Opts {
@@ -43,8 +43,10 @@ void register_assemble_command(CLI::App& app) {
     // The checked form: a field the token stream cannot carry is an error, not truncated.
     std::optional<std::vector<uint32_t>> tokens;
     if (l.program) tokens = as::assemble(*l.program, l.diags);
-    if (opts->fe.json) fmt::print("{}\n", diagnostics_json(l).dump(2));
-    else print_diagnostics(l);
+    if (opts->fe.json)
+      fmt::print("{}\n", diagnostics_json(l).dump(2));
+    else
+      print_diagnostics(l);
     if (!tokens) return kExitInvalid;
     std::string bytes =
         opts->c_array ? c_array(*tokens, opts->c_name) : as::tokens_to_bytes(*tokens);
@@ -57,4 +59,4 @@ void register_assemble_command(CLI::App& app) {
   });
 }
 
-}  // namespace tierlift::cli
+} // namespace tierlift::cli

@@ -15,8 +15,7 @@ void register_check_command(CLI::App& app) {
   };
   auto opts = std::make_shared<Opts>();
   CLI::App* sub = app.add_subcommand("check", "Parse and validate listings against their profile");
-  sub->add_option("files", opts->files, "Listings to check ('-' reads standard input)")
-      ->required();
+  sub->add_option("files", opts->files, "Listings to check ('-' reads standard input)")->required();
   add_front_end_options(sub, opts->fe, false);
   set_action(sub, [opts] {
     int worst = kExitOk;
@@ -32,15 +31,15 @@ void register_check_command(CLI::App& app) {
       bool valid = l.program.has_value() && !l.diags.has_errors();
       if (!valid && worst == kExitOk) worst = kExitInvalid;
       if (opts->fe.json) {
-        nlohmann::json entry = {{"file", path}, {"valid", valid},
-                                {"diagnostics", diagnostics_json(l)}};
+        nlohmann::json entry = {
+            {"file", path}, {"valid", valid}, {"diagnostics", diagnostics_json(l)}};
         if (l.program) entry["profile"] = ir::profile_name(l.program->profile);
         report.push_back(std::move(entry));
       } else {
         print_diagnostics(l);
         if (valid)
-          fmt::print("{}: ok ({}, {} instructions{})\n", path,
-                     ir::profile_name(l.program->profile), l.program->code.size(),
+          fmt::print("{}: ok ({}, {} instructions{})\n", path, ir::profile_name(l.program->profile),
+                     l.program->code.size(),
                      l.diags.warning_count() ? fmt::format(", {} warnings", l.diags.warning_count())
                                              : std::string());
       }
@@ -50,4 +49,4 @@ void register_check_command(CLI::App& app) {
   });
 }
 
-}  // namespace tierlift::cli
+} // namespace tierlift::cli

@@ -50,12 +50,14 @@ void register_disasm_command(CLI::App& app) {
       }
       if (!as::validate(*program, target, l.diags)) program.reset();
     }
-    if (opts->fe.json) fmt::print(stderr, "{}\n", diagnostics_json(l).dump(2));
-    else print_diagnostics(l);
+    if (opts->fe.json)
+      fmt::print(stderr, "{}\n", diagnostics_json(l).dump(2));
+    else
+      print_diagnostics(l);
     if (!program) return kExitInvalid;
     fmt::print("{}", as::print_program(*program));
     return kExitOk;
   });
 }
 
-}  // namespace tierlift::cli
+} // namespace tierlift::cli

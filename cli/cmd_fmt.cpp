@@ -23,8 +23,10 @@ void register_fmt_command(CLI::App& app) {
       fmt::print(stderr, "tierlift: error: {}\n", l.io_message);
       return kExitUsage;
     }
-    if (opts->fe.json) fmt::print(stderr, "{}\n", diagnostics_json(l).dump(2));
-    else print_diagnostics(l);
+    if (opts->fe.json)
+      fmt::print(stderr, "{}\n", diagnostics_json(l).dump(2));
+    else
+      print_diagnostics(l);
     if (!l.program) return kExitInvalid;
     std::string text = as::print_program(*l.program);
     if (opts->output.empty()) {
@@ -40,4 +42,4 @@ void register_fmt_command(CLI::App& app) {
   });
 }
 
-}  // namespace tierlift::cli
+} // namespace tierlift::cli

@@ -35,4 +35,4 @@ void register_listings_command(CLI::App& app) {
   });
 }
 
-}  // namespace tierlift::cli
+} // namespace tierlift::cli

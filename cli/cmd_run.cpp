@@ -1,6 +1,8 @@
 // tierlift run: one pass of a vertex and/or pixel listing over the full-screen quad on the
 // CPU device. Only flags and printing live here; the work is tierlift::cpu::run_job.
+#include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <cstdio>
 #include <fmt/format.h>
 #include <memory>
@@ -8,6 +10,8 @@
 #include "commands.h"
 #include "front_end.h"
 #include "tierlift/cpu/run_job.h"
+#include "tierlift/image/compare.h"
+#include "tierlift/vulkan/run_job.h"
 
 namespace tierlift::cli {
 namespace {
@@ -20,6 +24,7 @@ struct RunFlags {
   float ps1x_max = 1.0f;
   unsigned threads = 0;
   bool json = false;
+  std::string backend = "cpu", gpu;
 };
 
 // A usage problem: message on stderr, exit 2.
@@ -118,37 +123,116 @@ int run(const RunFlags& f) {
   if (vs) req.vs = std::make_shared<const ir::Program>(*vs->program);
   if (ps) req.ps = std::make_shared<const ir::Program>(*ps->program);
 
+  const bool want_cpu = f.backend != "vulkan", want_vulkan = f.backend != "cpu";
   cpu::RunDiagnostics diags;
-  cpu::RunResult out = cpu::run_job(req, diags);
-  if (vs) std::fputs(ir::render_text(diags.vs, vs->sources).c_str(), stderr);
-  if (ps) std::fputs(ir::render_text(diags.ps, ps->sources).c_str(), stderr);
-  print_other(diags.other);
-  if (!out.ok) {
-    for (const auto& d : diags.other.all())
-      if (d.severity == ir::Severity::Error && d.rule == cpu::kRuleTextureMissing)
+  auto print_run_diagnostics = [&](const cpu::RunDiagnostics& d) {
+    if (vs) std::fputs(ir::render_text(d.vs, vs->sources).c_str(), stderr);
+    if (ps) std::fputs(ir::render_text(d.ps, ps->sources).c_str(), stderr);
+    print_other(d.other);
+  };
+  auto failure_code = [](const cpu::RunDiagnostics& d) {
+    for (const auto& e : d.other.all())
+      if (e.severity == ir::Severity::Error && e.rule == cpu::kRuleTextureMissing)
         return kExitUsage;
     return kExitInvalid;
+  };
+
+  cpu::RunResult out;
+  if (want_cpu) {
+    out = cpu::run_job(req, diags);
+    print_run_diagnostics(diags);
+    if (!out.ok) return failure_code(diags);
+  }
+  vulkan::VulkanRunResult vk;
+  if (want_vulkan) {
+    cpu::RunDiagnostics vk_diags;  // the same request: print its warnings only once
+    vulkan::DeviceOptions options;
+    options.gpu_filter = f.gpu;
+    vk = vulkan::run_job_vulkan(req, vk_diags, options);
+    if (!want_cpu) print_run_diagnostics(vk_diags);
+    if (vk.no_device) {
+      fmt::print(stderr, "tierlift run: error: {}\n", vk.error);
+      return kExitUsage;
+    }
+    if (!vk.ok) {
+      if (!vk.error.empty()) fmt::print(stderr, "tierlift run: error: vulkan: {}\n", vk.error);
+      return want_cpu ? kExitInvalid : failure_code(vk_diags);
+    }
+    if (!want_cpu) {
+      out.ok = true;
+      out.image = vk.image;
+      out.probes = vk.probes;
+      out.setup_ms = vk.setup_ms;
+      out.draw_ms = vk.draw_ms;
+    }
+  }
+
+  // --backend both: the two devices must agree at design.md's targets for the format.
+  std::optional<img::Comparison> agreement;
+  std::optional<img::Verdict> verdict;
+  if (want_cpu && want_vulkan) {
+    std::string err;
+    agreement = img::compare(out.image, vk.image, &err);
+    if (!agreement) {
+      fmt::print(stderr, "tierlift run: error: {}\n", err);
+      return kExitInvalid;
+    }
+    verdict = img::judge(*agreement, req.format);
   }
 
   double write_ms = 0;
   if (!f.output.empty()) {
     auto t0 = std::chrono::steady_clock::now();
-    std::string warning;
-    std::string err = cpu::write_run_output(f.output, out.image, &warning);
-    if (!warning.empty()) fmt::print(stderr, "tierlift run: warning: {}\n", warning);
+    std::vector<std::pair<std::string, const img::Image*>> files{{f.output, &out.image}};
+    if (want_cpu && want_vulkan) {
+      std::filesystem::path p(f.output);
+      std::string second = (p.parent_path() / (p.stem().string() + "-vulkan")).string() +
+                           p.extension().string();
+      files.emplace_back(second, &vk.image);
+    }
+    for (const auto& [path, image] : files) {
+      std::string warning;
+      std::string err = cpu::write_run_output(path, *image, &warning);
+      if (!warning.empty()) fmt::print(stderr, "tierlift run: warning: {}\n", warning);
+      if (!err.empty()) {
+        fmt::print(stderr, "tierlift run: error: {}\n", err);
+        return kExitUsage;
+      }
+    }
     write_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    if (!err.empty()) {
-      fmt::print(stderr, "tierlift run: error: {}\n", err);
-      return kExitUsage;
-    }
   }
   if (f.json) {
-    fmt::print("{}\n", result_json(f, req, out, write_ms).dump(2));
+    nlohmann::json j = result_json(f, req, out, write_ms);
+    j["backend"] = f.backend;
+    if (want_vulkan) j["vulkan_device"] = vk.device_name;
+    if (agreement) {
+      j["agreement"] = {{"max_abs", agreement->max_abs},
+                        {"rmse", agreement->rmse},
+                        {"identical_share", agreement->identical_share},
+                        {"within_targets", verdict->pass},
+                        {"summary", verdict->summary}};
+      j["timing_ms"]["vulkan_setup"] = vk.setup_ms;
+      j["timing_ms"]["vulkan_draw"] = vk.draw_ms;
+    }
+    fmt::print("{}\n", j.dump(2));
   } else {
     for (const auto& p : out.probes)
       fmt::print("{},{}: {} {} {} {}\n", p.x, p.y, p.value[0], p.value[1], p.value[2], p.value[3]);
+    if (agreement) {
+      for (const auto& p : vk.probes)
+        fmt::print("{},{} (vulkan): {} {} {} {}\n", p.x, p.y, p.value[0], p.value[1], p.value[2],
+                   p.value[3]);
+      fmt::print("cpu vs vulkan ({}): max abs per channel {:.3g} {:.3g} {:.3g} {:.3g}, rmse "
+                 "{:.3g}, identical pixels {:.2f} %: {}\n",
+                 vk.device_name, agreement->max_abs[0], agreement->max_abs[1],
+                 agreement->max_abs[2], agreement->max_abs[3], agreement->rmse_all,
+                 agreement->identical_share * 100.0,
+                 verdict->pass ? "within targets" : "BEYOND TARGETS");
+      if (!verdict->pass) fmt::print(stderr, "tierlift run: error: {}\n", verdict->summary);
+    }
   }
+  if (verdict && !verdict->pass) return kExitInvalid;
   return kExitOk;
 }
 
@@ -157,7 +241,7 @@ int run(const RunFlags& f) {
 void register_run_command(CLI::App& app) {
   auto f = std::make_shared<RunFlags>();
   CLI::App* sub = app.add_subcommand(
-      "run", "Draw one pass (vertex and/or pixel listing) over the full-screen quad on the CPU");
+      "run", "Draw one pass (vertex and/or pixel listing) over the full-screen quad on the CPU interpreter, on Vulkan, or both");
   sub->add_option("--vs", f->vs, "Vertex listing (vs_1_1, vs_2_0)");
   sub->add_option("--ps", f->ps, "Pixel listing (ps_1_1 .. ps_2_0); none: oD0 passes through");
   sub->add_option("--size", f->size, "Render target WxH (up to 16384x16384)")
@@ -181,6 +265,11 @@ void register_run_command(CLI::App& app) {
   sub->add_flag("--json", f->json, "Print a JSON summary (size, format, probes, timing)");
   sub->add_option("--threads", f->threads, "Worker threads (0 = every core)")
       ->capture_default_str();
+  sub->add_option("--backend", f->backend,
+                  "cpu | vulkan | both (both: compare the two devices at the agreement targets)")
+      ->check(CLI::IsMember({"cpu", "vulkan", "both"}))
+      ->capture_default_str();
+  sub->add_option("--gpu", f->gpu, "Vulkan device name filter (default: lavapipe)");
   set_action(sub, [f] { return run(*f); });
 }
 

@@ -16,7 +16,8 @@ void register_spirv_command(CLI::App& app) {
     FrontEndOptions fe;
   };
   auto opts = std::make_shared<Opts>();
-  CLI::App* sub = app.add_subcommand("spirv", "Compile a listing to SPIR-V (validated by spirv-val)");
+  CLI::App* sub =
+      app.add_subcommand("spirv", "Compile a listing to SPIR-V (validated by spirv-val)");
   sub->add_option("file", opts->file, "Listing ('-' reads standard input)")->required();
   sub->add_option("--pair", opts->pair,
                   "The other stage's listing: link both and leave out what the pair never uses");
@@ -36,7 +37,7 @@ void register_spirv_command(CLI::App& app) {
         return kExitUsage;
       }
       print_diagnostics(*l);
-      if (!l->program) return kExitInvalid;  // never compile a listing that failed validation
+      if (!l->program) return kExitInvalid; // never compile a listing that failed validation
     }
     codegen::CodegenOptions copts;
     copts.optimize = opts->opt;
@@ -92,4 +93,4 @@ void register_spirv_command(CLI::App& app) {
   });
 }
 
-}  // namespace tierlift::cli
+} // namespace tierlift::cli

@@ -10,7 +10,7 @@ std::map<const CLI::App*, std::function<int()>>& actions() {
   static std::map<const CLI::App*, std::function<int()>> m;
   return m;
 }
-}  // namespace
+} // namespace
 
 void set_action(CLI::App* sub, std::function<int()> action) {
   actions()[sub] = std::move(action);
@@ -25,4 +25,4 @@ int run_selected(CLI::App& app) {
   return kExitUsage;
 }
 
-}  // namespace tierlift::cli
+} // namespace tierlift::cli

@@ -10,8 +10,8 @@ namespace tierlift::cli {
 
 // Exit codes shared by every subcommand.
 inline constexpr int kExitOk = 0;
-inline constexpr int kExitInvalid = 1;  // the input is wrong (diagnostics say why)
-inline constexpr int kExitUsage = 2;    // bad flags, unreadable or unwritable files
+inline constexpr int kExitInvalid = 1; // the input is wrong (diagnostics say why)
+inline constexpr int kExitUsage = 2;   // bad flags, unreadable or unwritable files
 
 // Binds `action` to `sub`; its return value becomes the exit code.
 void set_action(CLI::App* sub, std::function<int()> action);
@@ -26,4 +26,4 @@ void register_listings_command(CLI::App& app);
 void register_run_command(CLI::App& app);
 void register_spirv_command(CLI::App& app);
 
-}  // namespace tierlift::cli
+} // namespace tierlift::cli

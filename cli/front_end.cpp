@@ -108,8 +108,10 @@ LoadedListing load_listing(const std::string& path, const FrontEndOptions& optio
   as::ParseOptions popts;
   for (const std::string& d : options.defines) {
     auto eq = d.find('=');
-    if (eq == std::string::npos) popts.defines.emplace_back(d, "1");
-    else popts.defines.emplace_back(d.substr(0, eq), d.substr(eq + 1));
+    if (eq == std::string::npos)
+      popts.defines.emplace_back(d, "1");
+    else
+      popts.defines.emplace_back(d.substr(0, eq), d.substr(eq + 1));
   }
   popts.include_dirs = options.include_dirs;
   uint32_t file = out.sources.add(path == "-" ? "<stdin>" : path, std::move(*text));
@@ -138,4 +140,4 @@ void print_diagnostics(const LoadedListing& listing) {
   std::fputs(text.c_str(), stderr);
 }
 
-}  // namespace tierlift::cli
+} // namespace tierlift::cli

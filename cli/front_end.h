@@ -16,11 +16,11 @@
 namespace tierlift::cli {
 
 struct FrontEndOptions {
-  std::vector<std::string> defines;       // -D NAME[=VALUE]
-  std::vector<std::string> include_dirs;  // -I DIR
-  std::string profile;                    // --profile: validate against this instead
-  bool skip_validation = false;           // --skip-validation (fxc /Vd)
-  bool json = false;                      // --json
+  std::vector<std::string> defines;      // -D NAME[=VALUE]
+  std::vector<std::string> include_dirs; // -I DIR
+  std::string profile;                   // --profile: validate against this instead
+  bool skip_validation = false;          // --skip-validation (fxc /Vd)
+  bool json = false;                     // --json
 };
 
 // Adds -D, -I, --profile, --json and (when asked) --skip-validation to a subcommand.
@@ -29,8 +29,8 @@ void add_front_end_options(CLI::App* sub, FrontEndOptions& options, bool skip_va
 struct LoadedListing {
   ir::SourceManager sources;
   ir::DiagnosticSink diags;
-  std::optional<ir::Program> program;  // set when it parsed (and validated, unless skipped)
-  bool io_error = false;               // could not be read: exit 2
+  std::optional<ir::Program> program; // set when it parsed (and validated, unless skipped)
+  bool io_error = false;              // could not be read: exit 2
   std::string io_message;
 };
 
@@ -48,4 +48,4 @@ nlohmann::json diagnostics_json(const LoadedListing& listing);
 // Text diagnostics to stderr.
 void print_diagnostics(const LoadedListing& listing);
 
-}  // namespace tierlift::cli
+} // namespace tierlift::cli

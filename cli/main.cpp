@@ -18,7 +18,7 @@ constexpr const char* kExamples = R"(Examples:
 Exit codes: 0 ok, 1 invalid input, 2 usage or I/O error.
 )";
 
-}  // namespace
+} // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"tierlift: lift Direct3D shader assembly (vs/ps 1.x-2.0) onto Vulkan"};

@@ -23,7 +23,10 @@ Id Emitter::label_fn(uint32_t label) {
   if (auto it = label_fns_.find(label); it != label_fns_.end()) return it->second;
   const Id id = b.fresh_id();
   label_fns_.emplace(label, id);
-  b.name(id, "l" + std::to_string(label));
+  // Built with append: GCC 12 at -O3 reports a false -Wrestrict on "l" + std::string.
+  std::string name = "l";
+  name += std::to_string(label);
+  b.name(id, name);
   return id;
 }
 
@@ -76,7 +79,9 @@ bool Emitter::emit_flow(const ir::Instruction& ins, size_t) {
   };
   auto end_loop = [&](FlowFrame::Kind kind) {
     if (flow_.empty() || flow_.back().kind != kind) {
-      error(ins.loc, "'" + std::string(info.mnemonic) + "' without a matching opening");
+      std::string message = "'";
+      message.append(info.mnemonic).append("' without a matching opening");
+      error(ins.loc, message);
       return false;
     }
     const FlowFrame fr = flow_.back();

@@ -51,7 +51,7 @@ QuotedLine quote(std::string_view line, size_t byte_col) {
     } else if (n == 1) {
       q.text += line[i] == '\t' ? ' ' : (u < 0x20 || u == 0x7f) ? '?' : line[i];
     } else if (n == 2 && u == 0xC2 && static_cast<unsigned char>(line[i + 1]) == 0xA0) {
-      q.text += ' ';  // no-break space
+      q.text += ' '; // no-break space
     } else {
       q.text.append(line.substr(i, n));
     }
@@ -63,7 +63,7 @@ QuotedLine quote(std::string_view line, size_t byte_col) {
   return q;
 }
 
-}  // namespace
+} // namespace
 
 std::string render_text(const Diagnostic& d, const SourceManager& sm) {
   std::string out;
@@ -76,7 +76,7 @@ std::string render_text(const Diagnostic& d, const SourceManager& sm) {
   out += '\n';
   if (d.loc.valid()) {
     std::string line = sm.line_text(d.loc.file, d.loc.line);
-    if (line.size() > 400) line.resize(400);  // a 10 MB single-line file must not flood
+    if (line.size() > 400) line.resize(400); // a 10 MB single-line file must not flood
     size_t col = d.loc.col > 0 ? d.loc.col - 1 : 0;
     QuotedLine q = quote(line, col);
     size_t len = d.loc.length > 0 ? d.loc.length : 1;
@@ -109,4 +109,4 @@ std::string render_json(const DiagnosticSink& sink, const SourceManager& sm) {
   return arr.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
-}  // namespace tierlift::ir
+} // namespace tierlift::ir

@@ -17,7 +17,8 @@ using S = std::array<int8_t, kProfileCount>;
 constexpr OpInfo row(Opcode op, std::string_view mn, uint16_t code, OpClass cls, bool dst,
                      std::initializer_list<K> srcs, S slots, std::string_view summary,
                      uint8_t control = 0, uint8_t extra_arith = 0) {
-  OpInfo info{op, mn, code, control, cls, dst, 0, {K::None, K::None, K::None, K::None},
+  OpInfo info{op,    mn,          code,   control,
+              cls,   dst,         0,      {K::None, K::None, K::None, K::None},
               slots, extra_arith, summary};
   for (K k : srcs) info.src[info.num_src++] = k;
   return info;
@@ -135,11 +136,15 @@ const Index& index() {
   return idx;
 }
 
-}  // namespace
+} // namespace
 
-std::span<const OpInfo> opcode_table() { return kTable; }
+std::span<const OpInfo> opcode_table() {
+  return kTable;
+}
 
-const OpInfo& op_info(Opcode op) { return *index().by_op[static_cast<int>(op)]; }
+const OpInfo& op_info(Opcode op) {
+  return *index().by_op[static_cast<int>(op)];
+}
 
 std::span<const OpInfo* const> rows_for_mnemonic(std::string_view mnemonic) {
   const auto& m = index().by_mnemonic;
@@ -162,4 +167,4 @@ const OpInfo* find_opcode_by_code(uint16_t code, uint8_t control, Profile p) {
   return nullptr;
 }
 
-}  // namespace tierlift::ir
+} // namespace tierlift::ir

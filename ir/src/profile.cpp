@@ -57,4 +57,4 @@ const ProfileLimits& limits(Profile p) {
   return vs11;
 }
 
-}  // namespace tierlift::ir
+} // namespace tierlift::ir

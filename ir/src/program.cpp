@@ -44,7 +44,7 @@ std::string where(const SourceLoc& loc) {
   return loc.valid() ? fmt::format(" (line {})", loc.line) : std::string();
 }
 
-}  // namespace
+} // namespace
 
 std::string ir_difference(const Program& a, const Program& b) {
   if (a.profile != b.profile) return "profiles differ";
@@ -86,6 +86,8 @@ std::string ir_difference(const Program& a, const Program& b) {
   return {};
 }
 
-bool same_ir(const Program& a, const Program& b) { return ir_difference(a, b).empty(); }
+bool same_ir(const Program& a, const Program& b) {
+  return ir_difference(a, b).empty();
+}
 
-}  // namespace tierlift::ir
+} // namespace tierlift::ir

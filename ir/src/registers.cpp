@@ -52,8 +52,7 @@ std::string register_name(RegFile f, uint32_t index) {
   case RegFile::Const: return fmt::format("c{}", index);
   case RegFile::Addr: return "a0";
   case RegFile::Texture: return fmt::format("t{}", index);
-  case RegFile::RastOut:
-    return index == kRastPos ? "oPos" : index == kRastFog ? "oFog" : "oPts";
+  case RegFile::RastOut: return index == kRastPos ? "oPos" : index == kRastFog ? "oFog" : "oPts";
   case RegFile::AttrOut: return fmt::format("oD{}", index);
   case RegFile::TexCrdOut: return fmt::format("oT{}", index);
   case RegFile::ConstInt: return fmt::format("i{}", index);
@@ -87,4 +86,4 @@ std::string mask_text(uint8_t mask) {
   return s;
 }
 
-}  // namespace tierlift::ir
+} // namespace tierlift::ir

@@ -17,4 +17,4 @@ std::string SourceManager::line_text(uint32_t file, uint32_t line) const {
   return s;
 }
 
-}  // namespace tierlift::ir
+} // namespace tierlift::ir

@@ -8,4 +8,4 @@ std::optional<std::string_view> find_embedded(std::string_view path) {
   return std::nullopt;
 }
 
-}  // namespace tierlift::listings
+} // namespace tierlift::listings

@@ -28,7 +28,7 @@ const char* kAllArticleListings =
     "listing1_blur8_coords.vsh listing2_blur8_weighted_sum.psh listing3_blur4_coords.vsh "
     "listing4_blur4_weighted_sum.psh";
 
-}  // namespace
+} // namespace
 
 TEST(CliCheck, ArticleListingsAreValid) {
   std::string args = "check";
@@ -115,7 +115,8 @@ TEST(CliAssemble, RoundTripThroughDisasm) {
   fs::create_directories(dir);
   auto bin = dir / "l2.bin";
   fs::remove(bin);
-  auto a = run_cli("assemble " + listing("listing2_blur8_weighted_sum.psh") + " -o " + bin.string());
+  auto a =
+      run_cli("assemble " + listing("listing2_blur8_weighted_sum.psh") + " -o " + bin.string());
   ASSERT_EQ(a.exit_code, 0) << a.err;
   // ps_2_0 version token, little-endian, first.
   std::string bytes = tierlift::test::read_all(bin);
@@ -142,7 +143,7 @@ TEST(CliAssemble, InvalidInputWritesNothing) {
   fs::create_directories(dir);
   auto out = dir / "never.bin";
   fs::remove(out);
-  auto p = temp_file("nooutput.vsh", "vs.1.1\nmov r0, v0\n");  // oPos never written
+  auto p = temp_file("nooutput.vsh", "vs.1.1\nmov r0, v0\n"); // oPos never written
   auto r = run_cli("assemble " + p.string() + " -o " + out.string());
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_FALSE(fs::exists(out));
@@ -179,4 +180,43 @@ TEST(CliListings, BuiltInListingsCheckFromAnyDirectory) {
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("gpugems21/listing1_blur8_coords.vsh: ok (vs_2_0"), std::string::npos);
   EXPECT_NE(r.out.find("gpugems21/listing4_blur4_weighted_sum.psh: ok (ps_1_3"), std::string::npos);
+}
+
+TEST(CliSpirv, CompilesValidatesAndExplainsPruning) {
+  auto ok = run_cli("spirv " + listing("listing2_blur8_weighted_sum.psh"));
+  EXPECT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_NE(ok.out.find("spirv-val passed"), std::string::npos) << ok.out;
+  // Listing 1 writes oT0..oT7, Listing 4 reads t0..t3: oT4..oT7 are left out.
+  auto pruned = run_cli("spirv " + listing("listing1_blur8_coords.vsh") + " --pair " +
+                        listing("listing4_blur4_weighted_sum.psh") + " --explain");
+  EXPECT_EQ(pruned.exit_code, 0) << pruned.err;
+  for (const char* reg : {"oT4", "oT5", "oT6", "oT7"})
+    EXPECT_NE(pruned.out.find(reg), std::string::npos) << reg << "\n" << pruned.out;
+  EXPECT_EQ(pruned.out.find("oT3"), std::string::npos) << pruned.out;
+  auto dis = run_cli("spirv --dis " + listing("listing4_blur4_weighted_sum.psh"));
+  EXPECT_EQ(dis.exit_code, 0) << dis.err;
+  EXPECT_NE(dis.out.find("OpEntryPoint Fragment"), std::string::npos);
+  // A listing that fails validation never reaches codegen.
+  auto bad = run_cli("spirv -", "vs.1.1\nmov r0, v0\n");
+  EXPECT_EQ(bad.exit_code, 1);
+}
+
+TEST(CliRun, BothBackendsAgreeOnListings3And4) {
+  // A 4-tap box blur of noise: the CPU interpreter and lavapipe must agree (RGBA8: ≤ 1 LSB,
+  // ≥ 99.9 % identical). Offsets carry the half texel: (k + 0.5)/64 for k = -2..1.
+  std::string args = "run --vs " + listing("listing3_blur4_coords.vsh") + " --ps " +
+                     listing("listing4_blur4_weighted_sum.psh") +
+                     " --size 64x64 --format rgba8 --attr v3=quad-uv --filter linear"
+                     " --address clamp --backend both";
+  const char* offsets[] = {"-0.0234375", "-0.0078125", "0.0078125", "0.0234375"};
+  for (int k = 0; k < 4; ++k) {
+    args += " --const vs:c" + std::to_string(k) + "=" + offsets[k] + ",0,0,0";
+    args += " --const ps:c" + std::to_string(k) + "=0.25,0.25,0.25,0.25";
+    args += " --texture s" + std::to_string(k) + "=builtin:noise:64x64";
+  }
+  auto r = run_cli(args);
+  if (r.exit_code == 2 && r.err.find("mesa-vulkan-drivers") != std::string::npos)
+    GTEST_SKIP() << "no Vulkan device: " << r.err;
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("within targets"), std::string::npos) << r.out;
 }

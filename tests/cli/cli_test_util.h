@@ -1,11 +1,11 @@
 // Runs the built `tierlift` binary in a shell and captures its exit code and output.
 #pragma once
 
+#include <atomic>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <atomic>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -45,4 +45,4 @@ inline std::string listing(const std::string& name) {
   return std::string(TIERLIFT_SOURCE_DIR) + "/listings/gpugems21/" + name;
 }
 
-}  // namespace tierlift::test
+} // namespace tierlift::test

@@ -111,6 +111,33 @@ TEST_F(VulkanTest, TransformedTriangleMatchesTheCpuDevice) {
   }
 }
 
+// D3D9 clamps the viewport depth range to [0, 1]; passing 2 straight to Vulkan is a
+// validation error (VUID-VkViewport-minDepth-01234), which the fixture would report.
+TEST_F(VulkanTest, ViewportDepthRangeIsClamped) {
+  cpu::Pass p;
+  p.constant_inputs.color[0] = {1, 0, 0, 1};
+  p.viewport.min_z = 2.0f;
+  p.viewport.max_z = -1.0f;
+  img::Image t(4, 4);
+  ASSERT_TRUE(dev->draw(p, t).ok);
+  EXPECT_EQ(t.at(3, 3)[0], 1.0f);
+}
+
+// A D3D9 viewport smaller than the target: only its pixels are drawn, on both devices.
+TEST_F(VulkanTest, ViewportLimitsThePixelsDrawn) {
+  cpu::Pass p;
+  p.constant_inputs.color[0] = {1, 1, 1, 1};
+  p.viewport = {3, 2, 5, 4, 0, 1};
+  TwoWays t = draw_both(*dev, p, 12, 10, img::Format::RGBA8);
+  ASSERT_TRUE(t.ok);
+  EXPECT_EQ(t.cmp.identical_pixels, t.cmp.pixels) << img::describe(t.cmp);
+  EXPECT_EQ(t.vk.at(3, 2)[0], 1.0f);
+  EXPECT_EQ(t.vk.at(7, 5)[0], 1.0f);
+  EXPECT_EQ(t.vk.at(8, 5)[0], 0.0f);
+  EXPECT_EQ(t.vk.at(7, 6)[0], 0.0f);
+  EXPECT_EQ(t.vk.at(2, 2)[0], 0.0f);
+}
+
 TEST_F(VulkanTest, BadInputIsAnErrorNotACrash) {
   cpu::Pass p;
   p.transformed.resize(3);

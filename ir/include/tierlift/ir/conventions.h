@@ -5,8 +5,8 @@
 namespace tierlift::ir {
 
 enum class PixelCenter {
-  D3D9,    // pixel (i, j) centred at integer screen position (i, j)
-  Modern,  // centred at (i + 0.5, j + 0.5) as in D3D10+, GL, Vulkan
+  D3D9,   // pixel (i, j) centred at integer screen position (i, j)
+  Modern, // centred at (i + 0.5, j + 0.5) as in D3D10+, GL, Vulkan
 };
 
 struct Conventions {
@@ -21,4 +21,4 @@ struct Conventions {
   int ps1x_fixed_bits = 0;
 };
 
-}  // namespace tierlift::ir
+} // namespace tierlift::ir

@@ -15,7 +15,7 @@ struct Diagnostic {
   Severity severity = Severity::Error;
   SourceLoc loc;
   std::string message;
-  std::string rule;  // short id of the rule broken, e.g. "slot-limit", "read-before-write"
+  std::string rule; // short id of the rule broken, e.g. "slot-limit", "read-before-write"
 };
 
 class DiagnosticSink {
@@ -38,7 +38,10 @@ public:
   size_t error_count() const { return errors_; }
   size_t warning_count() const { return warnings_; }
   const std::vector<Diagnostic>& all() const { return list_; }
-  void clear() { list_.clear(); errors_ = warnings_ = 0; }
+  void clear() {
+    list_.clear();
+    errors_ = warnings_ = 0;
+  }
 
 private:
   std::vector<Diagnostic> list_;
@@ -52,4 +55,4 @@ std::string render_text(const DiagnosticSink& sink, const SourceManager& sm);
 // One JSON object per diagnostic: {"file","line","column","length","severity","rule","message"}.
 std::string render_json(const DiagnosticSink& sink, const SourceManager& sm);
 
-}  // namespace tierlift::ir
+} // namespace tierlift::ir

@@ -13,6 +13,7 @@
 
 namespace tierlift::ir {
 
+// clang-format off
 enum class Opcode : uint8_t {
   // arithmetic (shared)
   Nop, Mov, Add, Sub, Mad, Mul, Rcp, Rsq, Dp3, Dp4, Min, Max, Slt, Sge, Exp, Log, Lit, Dst,
@@ -29,37 +30,38 @@ enum class Opcode : uint8_t {
   Dcl, Def, DefI, DefB,
   Count
 };
+// clang-format on
 inline constexpr int kOpcodeCount = static_cast<int>(Opcode::Count);
 
 enum class OpClass : uint8_t {
-  Arith,    // counts arithmetic slots
-  Texture,  // counts texture slots in pixel profiles
-  Flow,     // vs_2_0 static flow control, ps_1_4 phase
-  Decl,     // dcl, def, defi, defb: no slots
+  Arith,   // counts arithmetic slots
+  Texture, // counts texture slots in pixel profiles
+  Flow,    // vs_2_0 static flow control, ps_1_4 phase
+  Decl,    // dcl, def, defi, defb: no slots
 };
 
 // What a source operand position expects.
 enum class OperandKind : uint8_t {
   None,
-  Vector,    // any readable register, swizzle allowed
-  Scalar,    // replicate swizzle required (.x/.y/.z/.w); default .x when none given? no: see validator
-  Matrix,    // base register of a matrix macro: no swizzle, no negate
-  Sampler,   // s#
-  Bool,      // b# (optionally !b# for callnz)
-  Int,       // i#
-  Label,     // l#
-  LoopReg,   // aL
-  Const,     // c# only (sincos constants, texm3x3spec eye vector)
-  Temp,      // r# only (sgn scratch registers)
+  Vector, // any readable register, swizzle allowed
+  Scalar, // replicate swizzle required (.x/.y/.z/.w); default .x when none given? no: see validator
+  Matrix, // base register of a matrix macro: no swizzle, no negate
+  Sampler, // s#
+  Bool,    // b# (optionally !b# for callnz)
+  Int,     // i#
+  Label,   // l#
+  LoopReg, // aL
+  Const,   // c# only (sincos constants, texm3x3spec eye vector)
+  Temp,    // r# only (sgn scratch registers)
 };
 
 struct OpInfo {
   Opcode op;
   std::string_view mnemonic;
-  uint16_t code;        // bytecode opcode (bits 0–15 of the instruction token)
-  uint8_t control;      // bits 16–23 (texld: 0 plain, 1 texldp, 2 texldb)
+  uint16_t code;   // bytecode opcode (bits 0–15 of the instruction token)
+  uint8_t control; // bits 16–23 (texld: 0 plain, 1 texldp, 2 texldb)
   OpClass cls;
-  bool has_dst;         // texkill's operand is a destination token in bytecode
+  bool has_dst; // texkill's operand is a destination token in bytecode
   uint8_t num_src;
   std::array<OperandKind, 4> src;
   // Slot cost per profile (index = profile_index), -1 where the row is not legal. For
@@ -67,13 +69,15 @@ struct OpInfo {
   // (texbeml costs one of each).
   std::array<int8_t, kProfileCount> slots;
   uint8_t extra_arith;
-  std::string_view summary;  // one line for --help and docs
+  std::string_view summary; // one line for --help and docs
 };
 
 std::span<const OpInfo> opcode_table();
 const OpInfo& op_info(Opcode op);
 
-inline bool legal_in(const OpInfo& info, Profile p) { return info.slots[profile_index(p)] >= 0; }
+inline bool legal_in(const OpInfo& info, Profile p) {
+  return info.slots[profile_index(p)] >= 0;
+}
 
 // The row for a mnemonic in a profile. When no row is legal in that profile, returns the
 // first row with that mnemonic (so the validator can say "not legal in ps_1_1"), and
@@ -84,4 +88,4 @@ std::span<const OpInfo* const> rows_for_mnemonic(std::string_view mnemonic);
 // Bytecode lookup: opcode + control field + profile → row.
 const OpInfo* find_opcode_by_code(uint16_t code, uint8_t control, Profile p);
 
-}  // namespace tierlift::ir
+} // namespace tierlift::ir

@@ -16,12 +16,18 @@ inline constexpr Profile kAllProfiles[kProfileCount] = {
     Profile::vs_1_1, Profile::vs_2_0, Profile::ps_1_1, Profile::ps_1_2,
     Profile::ps_1_3, Profile::ps_1_4, Profile::ps_2_0};
 
-constexpr int profile_index(Profile p) { return static_cast<int>(p); }
+constexpr int profile_index(Profile p) {
+  return static_cast<int>(p);
+}
 constexpr ShaderStage stage_of(Profile p) {
   return (p == Profile::vs_1_1 || p == Profile::vs_2_0) ? ShaderStage::Vertex : ShaderStage::Pixel;
 }
-constexpr bool is_vertex(Profile p) { return stage_of(p) == ShaderStage::Vertex; }
-constexpr bool is_pixel(Profile p) { return stage_of(p) == ShaderStage::Pixel; }
+constexpr bool is_vertex(Profile p) {
+  return stage_of(p) == ShaderStage::Vertex;
+}
+constexpr bool is_pixel(Profile p) {
+  return stage_of(p) == ShaderStage::Pixel;
+}
 // ps_1_1 … ps_1_4: the fixed-point-era pixel profiles with range clamps and modifiers.
 constexpr bool is_ps1x(Profile p) {
   return p == Profile::ps_1_1 || p == Profile::ps_1_2 || p == Profile::ps_1_3 ||
@@ -59,19 +65,19 @@ struct ProfileLimits {
   uint16_t max_slots;
   uint8_t max_tex_slots;
   uint8_t max_arith_slots;
-  uint8_t temps;          // r#
-  uint16_t float_consts;  // c#
-  uint8_t int_consts;     // i#
-  uint8_t bool_consts;    // b#
-  uint8_t inputs;         // v#
-  uint8_t texcoords;      // t# (pixel) — texture registers / interpolated coordinates
-  uint8_t samplers;       // s# (ps_2_0) or texture stages (ps_1_x)
-  uint8_t tex_outputs;    // oT# (vertex)
-  uint8_t color_outputs;  // oD# (vertex) or oC# (ps_2_0)
-  uint8_t labels;         // l# (vs_2_0)
+  uint8_t temps;         // r#
+  uint16_t float_consts; // c#
+  uint8_t int_consts;    // i#
+  uint8_t bool_consts;   // b#
+  uint8_t inputs;        // v#
+  uint8_t texcoords;     // t# (pixel) — texture registers / interpolated coordinates
+  uint8_t samplers;      // s# (ps_2_0) or texture stages (ps_1_x)
+  uint8_t tex_outputs;   // oT# (vertex)
+  uint8_t color_outputs; // oD# (vertex) or oC# (ps_2_0)
+  uint8_t labels;        // l# (vs_2_0)
   // Read ports: distinct registers of one file one instruction may read.
   uint8_t temp_ports, const_ports, input_ports, texture_ports;
 };
 const ProfileLimits& limits(Profile p);
 
-}  // namespace tierlift::ir
+} // namespace tierlift::ir

@@ -17,15 +17,27 @@ namespace tierlift::ir {
 
 // Source modifiers, numbered as in bytecode bits 24–27 (d3d9-isa.md §4.2).
 enum class SrcMod : uint8_t {
-  None = 0, Neg = 1, Bias = 2, BiasNeg = 3, Bx2 = 4, Bx2Neg = 5, Comp = 6, X2 = 7, X2Neg = 8,
-  Dz = 9, Dw = 10, Abs = 11, AbsNeg = 12, Not = 13
+  None = 0,
+  Neg = 1,
+  Bias = 2,
+  BiasNeg = 3,
+  Bx2 = 4,
+  Bx2Neg = 5,
+  Comp = 6,
+  X2 = 7,
+  X2Neg = 8,
+  Dz = 9,
+  Dw = 10,
+  Abs = 11,
+  AbsNeg = 12,
+  Not = 13
 };
 
 // Relative addressing: c[a0.x + n], c[aL + n]. The constant offset lives in the operand's
 // index; this names the register that is added to it.
 struct RelAddr {
-  RegFile file = RegFile::Addr;  // Addr (a0) or Loop (aL)
-  uint8_t component = 0;         // 0..3 = x..w (aL: 0)
+  RegFile file = RegFile::Addr; // Addr (a0) or Loop (aL)
+  uint8_t component = 0;        // 0..3 = x..w (aL: 0)
   SourceLoc loc;
 };
 
@@ -56,26 +68,38 @@ struct InstrMods {
 struct Instruction {
   Opcode op = Opcode::Nop;
   InstrMods mods;
-  bool coissue = false;  // "+" prefix (ps_1_x)
+  bool coissue = false; // "+" prefix (ps_1_x)
   std::optional<DstOperand> dst;
   std::vector<SrcOperand> src;
-  SourceLoc loc;  // the mnemonic
-  uint32_t seq = 0;  // position among all statements of the listing (decls, defs, code)
+  SourceLoc loc;    // the mnemonic
+  uint32_t seq = 0; // position among all statements of the listing (decls, defs, code)
 };
 
 enum class DeclUsage : uint8_t {
-  Position = 0, BlendWeight, BlendIndices, Normal, PSize, TexCoord, Tangent, Binormal,
-  TessFactor, PositionT, Color, Fog, Depth, Sample
+  Position = 0,
+  BlendWeight,
+  BlendIndices,
+  Normal,
+  PSize,
+  TexCoord,
+  Tangent,
+  Binormal,
+  TessFactor,
+  PositionT,
+  Color,
+  Fog,
+  Depth,
+  Sample
 };
 enum class SamplerType : uint8_t { Unknown = 0, Tex2D = 2, Cube = 3, Volume = 4 };
 
 // dcl_usage[N] v# (vertex), dcl[_pp][_centroid] v#/t#[.mask] (ps_2_0), dcl_2d/cube/volume s#.
 struct Declaration {
   DstOperand reg;
-  DeclUsage usage = DeclUsage::Position;  // vertex inputs only
+  DeclUsage usage = DeclUsage::Position; // vertex inputs only
   uint8_t usage_index = 0;
-  SamplerType sampler_type = SamplerType::Unknown;  // samplers only
-  InstrMods mods;                                   // _pp, _centroid on ps_2_0 dcl
+  SamplerType sampler_type = SamplerType::Unknown; // samplers only
+  InstrMods mods;                                  // _pp, _centroid on ps_2_0 dcl
   SourceLoc loc;
   uint32_t seq = 0;
 };
@@ -83,9 +107,9 @@ struct Declaration {
 // def c#, defi i#, defb b#. Values are kept as raw 32-bit patterns so that NaN, -0 and
 // denormals survive printing, bytecode and comparison unchanged.
 struct ConstDef {
-  RegFile file = RegFile::Const;  // Const, ConstInt or ConstBool
+  RegFile file = RegFile::Const; // Const, ConstInt or ConstBool
   uint32_t index = 0;
-  std::array<uint32_t, 4> raw{};  // ConstBool uses raw[0] (0 or 1)
+  std::array<uint32_t, 4> raw{}; // ConstBool uses raw[0] (0 or 1)
   SourceLoc loc;
   uint32_t seq = 0;
   float f(int i) const { return std::bit_cast<float>(raw[i]); }
@@ -98,7 +122,7 @@ struct Program {
   SourceLoc version_loc;
   std::vector<Declaration> decls;
   std::vector<ConstDef> defs;
-  std::vector<Instruction> code;  // executable instructions, in order (incl. phase, labels)
+  std::vector<Instruction> code; // executable instructions, in order (incl. phase, labels)
 
   ShaderStage stage() const { return stage_of(profile); }
   // Statements in listing order (decls, defs and code interleaved by seq).
@@ -114,4 +138,4 @@ bool same_ir(const Program& a, const Program& b);
 // First difference as a readable line, or "" when same_ir holds.
 std::string ir_difference(const Program& a, const Program& b);
 
-}  // namespace tierlift::ir
+} // namespace tierlift::ir

@@ -9,15 +9,15 @@ namespace tierlift::ir {
 
 // 1-based line and column; line 0 means "no position" (e.g. a program read from bytecode).
 struct SourceLoc {
-  uint32_t file = 0;    // index into SourceManager::files
+  uint32_t file = 0; // index into SourceManager::files
   uint32_t line = 0;
   uint32_t col = 0;
-  uint32_t length = 0;  // characters the caret line underlines (at least 1 is shown)
+  uint32_t length = 0; // characters the caret line underlines (at least 1 is shown)
   bool valid() const { return line != 0; }
 };
 
 struct SourceFile {
-  std::string name;  // as given on the command line ("-" shows as "<stdin>")
+  std::string name; // as given on the command line ("-" shows as "<stdin>")
   std::string text;
 };
 
@@ -33,4 +33,4 @@ struct SourceManager {
   std::string line_text(uint32_t file, uint32_t line) const;
 };
 
-}  // namespace tierlift::ir
+} // namespace tierlift::ir

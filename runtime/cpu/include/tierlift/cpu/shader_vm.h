@@ -18,9 +18,9 @@ using Vec4 = std::array<float, 4>;
 
 // Texture-stage state the ps_1_x texture instructions read (D3DTSS_*).
 struct StageState {
-  std::array<float, 4> bumpenv_mat{0, 0, 0, 0};  // M00, M01, M10, M11
+  std::array<float, 4> bumpenv_mat{0, 0, 0, 0}; // M00, M01, M10, M11
   float bumpenv_lscale = 0, bumpenv_loffset = 0;
-  bool projected = false;  // D3DTTFF_PROJECTED: divide by the last coordinate (w)
+  bool projected = false; // D3DTTFF_PROJECTED: divide by the last coordinate (w)
 };
 
 // What the VM asks of the device for every texture read. coord holds (u, v, w, q);
@@ -38,36 +38,36 @@ public:
 
 // API-set constants. Listing defs override these for the shader (as in D3D9).
 struct ConstantBank {
-  std::vector<Vec4> f;  // c#, any size; missing registers read (0,0,0,0)
+  std::vector<Vec4> f; // c#, any size; missing registers read (0,0,0,0)
   std::array<std::array<int32_t, 4>, 16> i{};
   std::array<bool, 16> b{};
 };
 
 struct VertexInput {
-  std::array<Vec4, 16> v;  // missing components read (0,0,0,1)
+  std::array<Vec4, 16> v; // missing components read (0,0,0,1)
   VertexInput() { v.fill({0, 0, 0, 1}); }
 };
 
 struct VertexOutput {
   Vec4 pos{0, 0, 0, 1};
-  std::array<Vec4, 2> color{};  // oD0, oD1 (not yet saturated; the rasteriser saturates)
-  std::array<Vec4, 8> tex{};    // oT0..oT7
+  std::array<Vec4, 2> color{}; // oD0, oD1 (not yet saturated; the rasteriser saturates)
+  std::array<Vec4, 8> tex{};   // oT0..oT7
   float fog = 0, point_size = 0;
-  uint8_t color_written = 0;  // bit n: oDn written
-  uint8_t tex_written = 0;    // bit n: oTn written
+  uint8_t color_written = 0; // bit n: oDn written
+  uint8_t tex_written = 0;   // bit n: oTn written
 };
 
 struct PixelInput {
-  std::array<Vec4, 2> color{};  // v0, v1 in [0,1]
-  std::array<Vec4, 8> tex{};    // TC(0..7), interpolated texture coordinates
-  float depth = 0;              // interpolated z (for texdepth / texm3x2depth defaults)
+  std::array<Vec4, 2> color{}; // v0, v1 in [0,1]
+  std::array<Vec4, 8> tex{};   // TC(0..7), interpolated texture coordinates
+  float depth = 0;             // interpolated z (for texdepth / texm3x2depth defaults)
 };
 
 struct PixelOutput {
-  std::array<Vec4, 4> color{};  // oC0..oC3; ps_1_x: color[0] = r0
+  std::array<Vec4, 4> color{}; // oC0..oC3; ps_1_x: color[0] = r0
   uint8_t color_written = 0;
   std::optional<float> depth;
-  bool discarded = false;  // texkill
+  bool discarded = false; // texkill
 };
 
 class ShaderVM {
@@ -91,4 +91,4 @@ private:
   std::unique_ptr<Impl> impl_;
 };
 
-}  // namespace tierlift::cpu
+} // namespace tierlift::cpu

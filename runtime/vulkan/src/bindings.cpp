@@ -1,0 +1,151 @@
+// Descriptor set 0 of a pass: the uniform blocks filled with codegen::pack_uniforms, the
+// sampled textures with their samplers, and the pipeline layout over them.
+#include "bindings.h"
+
+#include <cstring>
+
+#include <fmt/format.h>
+
+#include "pipeline.h"
+
+namespace tierlift::vulkan {
+namespace {
+
+codegen::UniformValues uniform_values(const cpu::ConstantBank& bank, const cpu::Pass& pass) {
+  codegen::UniformValues u;
+  u.f = bank.f;
+  u.i = bank.i;
+  u.b = bank.b;
+  for (uint32_t s = 0; s < 8; ++s) {
+    const cpu::StageState& st = pass.textures[s].stage;
+    u.bumpenv_mat[s] = st.bumpenv_mat;
+    u.bumpenv_lum[s] = {st.bumpenv_lscale, st.bumpenv_loffset};
+  }
+  return u;
+}
+
+} // namespace
+
+std::string create_bindings(Device::Impl& d, Cleanup& cleanup, const codegen::CompiledPair& pair,
+                            const cpu::Pass& pass, Bindings& out) {
+  std::string err;
+  // Descriptor bindings: uniform blocks, then combined image samplers.
+  std::vector<VkDescriptorSetLayoutBinding> bindings;
+  struct Ubo {
+    Buffer buf;
+    uint32_t binding;
+  };
+  std::vector<Ubo> ubos;
+  auto add_ubo = [&](const codegen::ShaderModule& m, const cpu::ConstantBank& bank,
+                     VkShaderStageFlags stage) {
+    if (m.uniforms.size_bytes == 0 || !err.empty()) return;
+    std::vector<uint32_t> words = codegen::pack_uniforms(m, uniform_values(bank, pass));
+    Ubo u{{}, m.uniforms.binding};
+    err = create_buffer(d, cleanup, words.size() * 4, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, u.buf);
+    if (!err.empty()) return;
+    std::memcpy(u.buf.mapped, words.data(), words.size() * 4);
+    bindings.push_back({u.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, stage, nullptr});
+    ubos.push_back(u);
+  };
+  add_ubo(pair.vs, pass.vs_constants, VK_SHADER_STAGE_VERTEX_BIT);
+  add_ubo(pair.ps, pass.ps_constants, VK_SHADER_STAGE_FRAGMENT_BIT);
+  if (!err.empty()) return err;
+
+  VkFormatProperties tex_props;
+  vkGetPhysicalDeviceFormatProperties(d.physical, VK_FORMAT_R32G32B32A32_SFLOAT, &tex_props);
+  std::vector<Texture>& textures = out.textures;
+  img::Image unbound(1, 1);
+  unbound.rgba = {0, 0, 0, 1}; // an unbound stage reads (0, 0, 0, 1), as in D3D9
+  for (const auto& si : pair.ps.samplers) {
+    if (si.type != ir::SamplerType::Tex2D)
+      return fmt::format("s{}: only 2D textures are supported on the Vulkan device", si.stage);
+    const cpu::TextureBinding& tb = pass.textures.at(si.stage % cpu::kMaxSamplers);
+    const img::Image& im = tb.image ? *tb.image : unbound;
+    if (im.width == 0 || im.height == 0 || im.rgba.size() != size_t{im.width} * im.height * 4)
+      return fmt::format("s{}: texture has no pixels", si.stage);
+    if (tb.sampler.filter == cpu::Filter::Linear &&
+        !(tex_props.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT))
+      return "the Vulkan device cannot filter RGBA32F textures linearly";
+    Texture t;
+    t.binding = si.binding;
+    err = create_image(d, cleanup, im.width, im.height, VK_FORMAT_R32G32B32A32_SFLOAT,
+                       VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, t.image);
+    if (err.empty())
+      err = create_buffer(d, cleanup, im.rgba.size() * 4, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                          t.staging);
+    if (err.empty()) err = create_sampler(d, cleanup, tb.sampler, t.sampler);
+    if (!err.empty()) return err;
+    std::memcpy(t.staging.mapped, im.rgba.data(), im.rgba.size() * 4);
+    bindings.push_back({t.binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+                        VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
+    textures.push_back(t);
+  }
+
+  // Descriptor set layout, pool, set; pipeline layout.
+  VkDescriptorSetLayoutCreateInfo dli{};
+  dli.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
+  dli.bindingCount = static_cast<uint32_t>(bindings.size());
+  dli.pBindings = bindings.data();
+  VkDescriptorSetLayout dsl = VK_NULL_HANDLE;
+  VkResult r = vkCreateDescriptorSetLayout(d.device, &dli, nullptr, &dsl);
+  if (r != VK_SUCCESS) return vk_error("vkCreateDescriptorSetLayout", r);
+  VkDevice dev = d.device;
+  cleanup.add([dev, dsl] { vkDestroyDescriptorSetLayout(dev, dsl, nullptr); });
+  VkPipelineLayoutCreateInfo pli{};
+  pli.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
+  pli.setLayoutCount = 1;
+  pli.pSetLayouts = &dsl;
+  VkPipelineLayout& layout = out.layout;
+  if ((r = vkCreatePipelineLayout(dev, &pli, nullptr, &layout)) != VK_SUCCESS)
+    return vk_error("vkCreatePipelineLayout", r);
+  cleanup.add([dev, layout] { vkDestroyPipelineLayout(dev, layout, nullptr); });
+  VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2},
+                                   {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 16}};
+  VkDescriptorPoolCreateInfo dpi{};
+  dpi.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
+  dpi.maxSets = 1;
+  dpi.poolSizeCount = 2;
+  dpi.pPoolSizes = sizes;
+  VkDescriptorPool dpool = VK_NULL_HANDLE;
+  if ((r = vkCreateDescriptorPool(dev, &dpi, nullptr, &dpool)) != VK_SUCCESS)
+    return vk_error("vkCreateDescriptorPool", r);
+  cleanup.add([dev, dpool] { vkDestroyDescriptorPool(dev, dpool, nullptr); });
+  VkDescriptorSetAllocateInfo dsa{};
+  dsa.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
+  dsa.descriptorPool = dpool;
+  dsa.descriptorSetCount = 1;
+  dsa.pSetLayouts = &dsl;
+  VkDescriptorSet& set = out.set;
+  if ((r = vkAllocateDescriptorSets(dev, &dsa, &set)) != VK_SUCCESS)
+    return vk_error("vkAllocateDescriptorSets", r);
+  std::vector<VkDescriptorBufferInfo> buffer_infos(ubos.size());
+  std::vector<VkDescriptorImageInfo> image_infos(textures.size());
+  std::vector<VkWriteDescriptorSet> writes;
+  for (size_t k = 0; k < ubos.size(); ++k) {
+    buffer_infos[k] = {ubos[k].buf.buffer, 0, VK_WHOLE_SIZE};
+    VkWriteDescriptorSet w{};
+    w.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+    w.dstSet = set;
+    w.dstBinding = ubos[k].binding;
+    w.descriptorCount = 1;
+    w.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    w.pBufferInfo = &buffer_infos[k];
+    writes.push_back(w);
+  }
+  for (size_t k = 0; k < textures.size(); ++k) {
+    image_infos[k] = {textures[k].sampler, textures[k].image.view,
+                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    VkWriteDescriptorSet w{};
+    w.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+    w.dstSet = set;
+    w.dstBinding = textures[k].binding;
+    w.descriptorCount = 1;
+    w.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    w.pImageInfo = &image_infos[k];
+    writes.push_back(w);
+  }
+  vkUpdateDescriptorSets(dev, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
+  return {};
+}
+
+} // namespace tierlift::vulkan
