@@ -4,12 +4,10 @@
 // bench/run.sh prints the ratios.
 #include <benchmark/benchmark.h>
 
-#include <glslang/Public/ResourceLimits.h>
-#include <glslang/Public/ShaderLang.h>
-#include <glslang/SPIRV/GlslangToSpv.h>
 #include <spirv-tools/libspirv.hpp>
 
 #include "bench_inputs.h"
+#include "glslang_peer.h"
 #include "tierlift/asm/bytecode.h"
 #include "tierlift/asm/parser.h"
 #include "tierlift/asm/validator.h"
@@ -79,34 +77,14 @@ BENCHMARK(BM_Disassemble);
 
 // The peer's input: SPIR-V assembly text of the same 8-tap blur as Listing 2.
 std::string peer_spirv_text() {
-  static const char* kGlsl = R"(#version 450
-layout(location = 0) in vec4 t[8];
-layout(set = 0, binding = 2) uniform sampler2D s0;
-layout(set = 0, binding = 1, std140) uniform PS { vec4 c[8]; };
-layout(location = 0) out vec4 oC0;
-void main() {
-  vec4 r0 = texture(s0, t[0].xy) * c[0];
-  for (int k = 1; k < 8; ++k) r0 += texture(s0, t[k].xy) * c[k];
-  oC0 = r0;
-})";
   glslang::InitializeProcess();
-  glslang::TShader shader(EShLangFragment);
-  shader.setStrings(&kGlsl, 1);
-  shader.setEnvInput(glslang::EShSourceGlsl, EShLangFragment, glslang::EShClientVulkan, 100);
-  shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1);
-  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
-  std::string text;
-  if (shader.parse(GetDefaultResources(), 100, false, EShMsgDefault)) {
-    glslang::TProgram program;
-    program.addShader(&shader);
-    if (program.link(EShMsgDefault)) {
-      std::vector<uint32_t> words;
-      glslang::GlslangToSpv(*program.getIntermediate(EShLangFragment), words);
-      spvtools::SpirvTools tools(SPV_ENV_VULKAN_1_1);
-      tools.Disassemble(words, &text, SPV_BINARY_TO_TEXT_OPTION_NONE);
-    }
-  }
+  std::vector<uint32_t> words = bench::glslang_to_spirv(EShLangFragment, bench::kGlslFragment8);
   glslang::FinalizeProcess();
+  std::string text;
+  if (!words.empty()) {
+    spvtools::SpirvTools tools(SPV_ENV_VULKAN_1_1);
+    tools.Disassemble(words, &text, SPV_BINARY_TO_TEXT_OPTION_NONE);
+  }
   return text;
 }
 

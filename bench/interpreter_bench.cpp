@@ -28,7 +28,9 @@ std::shared_ptr<const ir::Program> listing(const char* name) {
 }
 
 // Horizontal taps at -3.5 … +3.5 texels with the half texel (texel centres), weights 1/8.
-float offset(int k) { return (float(k) - 3.5f + 0.5f) / float(kW); }
+float offset(int k) {
+  return (float(k) - 3.5f + 0.5f) / float(kW);
+}
 
 std::optional<cpu::Pass> blur_pass() {
   cpu::RunRequest r;
@@ -65,12 +67,16 @@ void interpreter(benchmark::State& state, unsigned threads) {
     benchmark::DoNotOptimize(stats.pixels_shaded);
   }
   state.SetItemsProcessed(int64_t(state.iterations()) * kW * kH);
-  state.counters["Mpix/s"] = benchmark::Counter(double(kW) * kH * 1e-6,
-                                                benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["Mpix/s"] =
+      benchmark::Counter(double(kW) * kH * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
 }
 
-void BM_Interpreter_Listing2_OneCore(benchmark::State& s) { interpreter(s, 1); }
-void BM_Interpreter_Listing2_AllCores(benchmark::State& s) { interpreter(s, 0); }
+void BM_Interpreter_Listing2_OneCore(benchmark::State& s) {
+  interpreter(s, 1);
+}
+void BM_Interpreter_Listing2_AllCores(benchmark::State& s) {
+  interpreter(s, 0);
+}
 
 // The peer: the same pass as straight-line C++ (D3D9 centres: u = x/W + offset).
 void BM_Peer_PlainLoop(benchmark::State& state) {
@@ -104,14 +110,14 @@ void BM_Peer_PlainLoop(benchmark::State& state) {
     benchmark::DoNotOptimize(target.rgba.data());
   }
   state.SetItemsProcessed(int64_t(state.iterations()) * kW * kH);
-  state.counters["Mpix/s"] = benchmark::Counter(double(kW) * kH * 1e-6,
-                                                benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["Mpix/s"] =
+      benchmark::Counter(double(kW) * kH * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
 }
 
 BENCHMARK(BM_Interpreter_Listing2_OneCore)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_Interpreter_Listing2_AllCores)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_Peer_PlainLoop)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-}  // namespace
+} // namespace
 
 BENCHMARK_MAIN();

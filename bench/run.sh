@@ -37,6 +37,7 @@ pairs = [
     ("BM_Translate_Listing2", "BM_Peer_Glslang_Fragment8", "time"),
     ("BM_Interpreter_Listing2_OneCore", "BM_Peer_PlainLoop", "time"),
     ("BM_Interpreter_Listing2_AllCores", "BM_Peer_PlainLoop", "time"),
+    ("BM_Vulkan_Listing2", "BM_Vulkan_PeerInterpreter_Listing2_AllCores", "time"),
 ]
 for ours, peer, what in pairs:
     if ours in rows and peer in rows:

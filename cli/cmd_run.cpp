@@ -2,8 +2,8 @@
 // CPU device. Only flags and printing live here; the work is tierlift::cpu::run_job.
 #include <chrono>
 #include <cmath>
-#include <filesystem>
 #include <cstdio>
+#include <filesystem>
 #include <fmt/format.h>
 #include <memory>
 
@@ -145,7 +145,7 @@ int run(const RunFlags& f) {
   }
   vulkan::VulkanRunResult vk;
   if (want_vulkan) {
-    cpu::RunDiagnostics vk_diags;  // the same request: print its warnings only once
+    cpu::RunDiagnostics vk_diags; // the same request: print its warnings only once
     vulkan::DeviceOptions options;
     options.gpu_filter = f.gpu;
     vk = vulkan::run_job_vulkan(req, vk_diags, options);
@@ -186,8 +186,8 @@ int run(const RunFlags& f) {
     std::vector<std::pair<std::string, const img::Image*>> files{{f.output, &out.image}};
     if (want_cpu && want_vulkan) {
       std::filesystem::path p(f.output);
-      std::string second = (p.parent_path() / (p.stem().string() + "-vulkan")).string() +
-                           p.extension().string();
+      std::string second =
+          (p.parent_path() / (p.stem().string() + "-vulkan")).string() + p.extension().string();
       files.emplace_back(second, &vk.image);
     }
     for (const auto& [path, image] : files) {
@@ -240,8 +240,9 @@ int run(const RunFlags& f) {
 
 void register_run_command(CLI::App& app) {
   auto f = std::make_shared<RunFlags>();
-  CLI::App* sub = app.add_subcommand(
-      "run", "Draw one pass (vertex and/or pixel listing) over the full-screen quad on the CPU interpreter, on Vulkan, or both");
+  CLI::App* sub =
+      app.add_subcommand("run", "Draw one pass (vertex and/or pixel listing) over the full-screen "
+                                "quad on the CPU interpreter, on Vulkan, or both");
   sub->add_option("--vs", f->vs, "Vertex listing (vs_1_1, vs_2_0)");
   sub->add_option("--ps", f->ps, "Pixel listing (ps_1_1 .. ps_2_0); none: oD0 passes through");
   sub->add_option("--size", f->size, "Render target WxH (up to 16384x16384)")

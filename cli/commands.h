@@ -25,5 +25,6 @@ void register_disasm_command(CLI::App& app);
 void register_listings_command(CLI::App& app);
 void register_run_command(CLI::App& app);
 void register_spirv_command(CLI::App& app);
+void register_glow_command(CLI::App& app);
 
 } // namespace tierlift::cli

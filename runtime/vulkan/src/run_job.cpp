@@ -31,4 +31,4 @@ VulkanRunResult run_job_vulkan(const cpu::RunRequest& request, cpu::RunDiagnosti
   return out;
 }
 
-}  // namespace tierlift::vulkan
+} // namespace tierlift::vulkan

@@ -37,8 +37,7 @@ std::optional<ir::Program> disassemble(const std::vector<uint32_t>& tokens,
 // multiple of 4 bytes and holds bytes no text has (NUL, control characters), is raw; any
 // other file is C text. Problems in the text are diagnostics at line:col of `file`.
 std::optional<std::vector<uint32_t>> read_token_file(const std::string& bytes,
-                                                     ir::DiagnosticSink& diags,
-                                                     uint32_t file = 0);
-std::string tokens_to_bytes(const std::vector<uint32_t>& tokens);  // little-endian
+                                                     ir::DiagnosticSink& diags, uint32_t file = 0);
+std::string tokens_to_bytes(const std::vector<uint32_t>& tokens); // little-endian
 
-}  // namespace tierlift::as
+} // namespace tierlift::as

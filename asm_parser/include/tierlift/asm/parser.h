@@ -51,4 +51,4 @@ struct ParseResult {
 ParseResult parse_text(std::string text, std::string name = "<text>",
                        const ParseOptions& options = {});
 
-}  // namespace tierlift::as
+} // namespace tierlift::as

@@ -17,4 +17,4 @@ namespace tierlift::as {
 std::string print_program(const ir::Program& program);
 std::string print_instruction(const ir::Instruction& ins, ir::Profile profile);
 
-}  // namespace tierlift::as
+} // namespace tierlift::as

@@ -9,16 +9,30 @@ enum class PixelCenter {
   Modern, // centred at (i + 0.5, j + 0.5) as in D3D10+, GL, Vulkan
 };
 
+// Where D3D9 leaves the rounding to the hardware — attribute interpolation and the bilinear
+// filter's arithmetic — the CPU device either reproduces Mesa's llvmpipe (lavapipe) bit for
+// bit or computes exactly. A device-matching choice: the Vulkan device ignores it.
+enum class Rounding {
+  // Float plane equations a0 + dadx·x + dady·y evaluated with FMA, times 1/w; bilinear
+  // weights frac(fl32(u·N) − 0.5) in float, lerps with FMA (runtime/cpu/.../draw.h).
+  Llvmpipe,
+  // Perspective-correct barycentrics from exact edge functions and bilinear weights from
+  // u·N − 0.5, both in double, rounded once.
+  Exact,
+};
+
 struct Conventions {
   PixelCenter pixel_center = PixelCenter::D3D9;
   // Sub-texel precision of bilinear weights: 0 = exact, N = fractions quantised to N bits
-  // (lavapipe reports 8).
+  // (lavapipe reports 8, but its float-texture path does not quantise: 0 matches it).
   int subtexel_bits = 0;
   // ps_1_x: registers clamp to [-max, +max] (PixelShader1xMaxValue; the default 1 is the
   // minimum for ps_1_1–1_3). Constants always clamp to [-1, 1].
   float ps1x_max_value = 1.0f;
   // ps_1_x fixed-point emulation: 0 = off (fp32), 8 or 9 = fraction bits of the hardware.
   int ps1x_fixed_bits = 0;
+  // Llvmpipe (default) makes the CPU and Vulkan devices agree at every target size.
+  Rounding rounding = Rounding::Llvmpipe;
 };
 
 } // namespace tierlift::ir

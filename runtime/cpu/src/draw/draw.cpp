@@ -38,35 +38,6 @@ struct RasterJob {
   BoundTextures textures;
 };
 
-PixelInput interpolate(const Triangle& t, const int64_t e[3]) {
-  PixelInput in;
-  const double area = static_cast<double>(t.area);
-  double l[3], q[3], s = 0;
-  for (int k = 0; k < 3; ++k) {
-    l[k] = static_cast<double>(e[k]) / area;
-    q[k] = l[k] * t.v[k].inv_w;
-    s += q[k];
-  }
-  // Perspective-correct weights. When the three w are equal (every 2D pass) the screen
-  // weights are already right, and skipping the division keeps u = i/W as exact as the
-  // division E/area allows.
-  if (t.v[0].inv_w != t.v[1].inv_w || t.v[0].inv_w != t.v[2].inv_w)
-    for (int k = 0; k < 3; ++k) q[k] /= s;
-  else
-    for (int k = 0; k < 3; ++k) q[k] = l[k];
-  for (size_t r = 0; r < in.color.size(); ++r)
-    for (int c = 0; c < 4; ++c)
-      in.color[r][c] =
-          clamp01(static_cast<float>(q[0] * t.v[0].out.color[r][c] + q[1] * t.v[1].out.color[r][c] +
-                                     q[2] * t.v[2].out.color[r][c]));
-  for (size_t r = 0; r < in.tex.size(); ++r)
-    for (int c = 0; c < 4; ++c)
-      in.tex[r][c] = static_cast<float>(q[0] * t.v[0].out.tex[r][c] + q[1] * t.v[1].out.tex[r][c] +
-                                        q[2] * t.v[2].out.tex[r][c]);
-  in.depth = static_cast<float>(l[0] * t.v[0].z + l[1] * t.v[1].z + l[2] * t.v[2].z);
-  return in;
-}
-
 struct WorkerStats {
   uint64_t shaded = 0, killed = 0;
 };
@@ -109,7 +80,7 @@ void raster_rows(const RasterJob& job, int64_t y0, int64_t y1, WorkerStats& stat
         if (job.constant_inputs)
           shade_pixel(job, constant, x, y, stats);
         else
-          shade_pixel(job, interpolate(t, e), x, y, stats);
+          shade_pixel(job, detail::interpolate(t, e, x, y), x, y, stats);
       }
     }
   }
@@ -181,8 +152,7 @@ DrawStats draw(const Pass& pass, img::Image& target, unsigned threads) {
     for (uint32_t i = 0; i + 2 < outs.size(); i += 3) tris.push_back({i, i + 1, i + 2});
 
   // Setup.
-  const int64_t offset =
-      pass.conventions.pixel_center == ir::PixelCenter::Modern ? detail::kSubPixelOne / 2 : 0;
+  const int64_t offset = detail::sample_offset(pass.conventions);
   PixelRect scissor{std::max<int64_t>(0, vp.x), std::max<int64_t>(0, vp.y),
                     std::min<int64_t>(target.width, int64_t{vp.x} + vp.width),
                     std::min<int64_t>(target.height, int64_t{vp.y} + vp.height)};
@@ -193,7 +163,8 @@ DrawStats draw(const Pass& pass, img::Image& target, unsigned threads) {
       stats.error = "triangle index out of range";
       return stats;
     }
-    detail::setup_triangle({&outs[t[0]], &outs[t[1]], &outs[t[2]]}, vp, scissor, offset, setup);
+    detail::setup_triangle({&outs[t[0]], &outs[t[1]], &outs[t[2]]}, vp, scissor, pass.conventions,
+                           setup);
   }
   stats.triangles = setup.size();
   if (setup.empty() || scissor.x0 >= scissor.x1 || scissor.y0 >= scissor.y1) return stats;
@@ -207,7 +178,8 @@ DrawStats draw(const Pass& pass, img::Image& target, unsigned threads) {
                 offset,
                 scissor,
                 target,
-                BoundTextures(pass.textures, pass.conventions.subtexel_bits)};
+                BoundTextures(pass.textures, pass.conventions.subtexel_bits,
+                              pass.conventions.rounding == ir::Rounding::Llvmpipe)};
   const int64_t bands = (scissor.y1 - scissor.y0 + kBandRows - 1) / kBandRows;
   unsigned workers = threads ? threads : std::max(1u, std::thread::hardware_concurrency());
   workers = static_cast<unsigned>(std::min<int64_t>({workers, bands, kMaxWorkers}));

@@ -22,7 +22,25 @@ struct ScreenVertex {
   int64_t x = 0, y = 0; // screen position in 1/256 pixel
   double inv_w = 1.0;   // 1/w for perspective correction
   double z = 0.0;       // z_s, interpolated linearly in screen space
-  VertexOutput out;     // colours already saturated
+  // Rounding::Llvmpipe: the unsnapped float position in Vulkan's frame (pixel i spans
+  // [i, i + 1)) and 1/w, rounded as lavapipe's vertex pipeline rounds them.
+  float fx = 0, fy = 0, oow = 1;
+  VertexOutput out; // colours already saturated
+};
+
+// One attribute channel as a plane over pixel indices: value(i, j) = a0 + dadx·i + dady·j.
+struct Plane {
+  float a0 = 0, dadx = 0, dady = 0;
+};
+
+// Rounding::Llvmpipe's planes of one triangle: each channel premultiplied by 1/w, and
+// 1/w itself. `zero` marks registers that are +0 at all three vertices (they stay +0).
+struct AttributePlanes {
+  std::array<std::array<Plane, 4>, 2> color;
+  std::array<std::array<Plane, 4>, 8> tex;
+  Plane oow;
+  std::array<bool, 2> color_zero{};
+  std::array<bool, 8> tex_zero{};
 };
 
 // A triangle ready to rasterise: counter-clockwise-agnostic, normalised so that `area`
@@ -32,12 +50,23 @@ struct Triangle {
   int64_t area = 0;
   std::array<bool, 3> top_left{}; // edge k runs from v[k+1] to v[k+2]
   PixelRect bounds;               // pixels whose sample point may be inside, ∩ scissor
+  bool llvmpipe = false;          // interpolate with `planes` (else exact barycentrics)
+  AttributePlanes planes;
 };
 
 // Clips (0 ≤ z ≤ w, guard band) and transforms one triangle of vertex-stage outputs;
 // appends 0..n triangles (a clipped polygon is fanned).
 void setup_triangle(const std::array<const VertexOutput*, 3>& tri, const Viewport& viewport,
-                    const PixelRect& scissor, int64_t sample_offset, std::vector<Triangle>& out);
+                    const PixelRect& scissor, const ir::Conventions& conventions,
+                    std::vector<Triangle>& out);
+
+// Sample offset of pixel (i, j) in 1/256 pixel: 0 for D3D9 centres, 128 for modern ones.
+int64_t sample_offset(const ir::Conventions& conventions);
+
+// Interpolation (interpolation.cpp). `e` are the edge functions at the pixel's sample
+// point (all ≥ 0 inside), (x, y) its pixel index.
+void setup_planes(Triangle& t);
+PixelInput interpolate(const Triangle& t, const int64_t e[3], int64_t x, int64_t y);
 
 // Edge function of edge a→b at point (px, py), all in 1/256 pixel.
 inline int64_t edge(const ScreenVertex& a, const ScreenVertex& b, int64_t px, int64_t py) {

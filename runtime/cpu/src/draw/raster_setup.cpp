@@ -82,8 +82,20 @@ int64_t snap(double screen) {
   return static_cast<int64_t>(std::nearbyint(screen * kSubPixelOne));
 }
 
-ScreenVertex to_screen(const VertexOutput& v, const Viewport& vp) {
+// Lavapipe's viewport transform, for Rounding::Llvmpipe: 1/w as a float division, the
+// position times it, then one fused multiply-add with the viewport's half size and centre.
+// The Vulkan device shifts D3D9 centres by +0.5 pixel through the viewport and flips y.
+void lavapipe_position(const VertexOutput& v, const Viewport& vp, float shift, ScreenVertex& s) {
+  const float half_w = 0.5f * static_cast<float>(vp.width);
+  const float half_h = 0.5f * static_cast<float>(vp.height);
+  s.oow = 1.0f / v.pos[3];
+  s.fx = std::fma(v.pos[0] * s.oow, half_w, half_w + (static_cast<float>(vp.x) + shift));
+  s.fy = std::fma(-v.pos[1] * s.oow, half_h, half_h + (static_cast<float>(vp.y) + shift));
+}
+
+ScreenVertex to_screen(const VertexOutput& v, const Viewport& vp, float shift) {
   ScreenVertex s;
+  lavapipe_position(v, vp, shift, s);
   double w = v.pos[3];
   // Clipping leaves |x/w|, |y/w| ≤ kGuard up to rounding; the clamp only guards the
   // float→int conversion against vertices rounded across the w ≥ kMinW plane.
@@ -110,7 +122,7 @@ int64_t floor_pixel(int64_t v, int64_t offset) {
 }
 
 void emit(ScreenVertex a, ScreenVertex b, ScreenVertex c, const PixelRect& scissor, int64_t offset,
-          std::vector<Triangle>& out) {
+          bool llvmpipe, std::vector<Triangle>& out) {
   Triangle t;
   t.v = {a, b, c};
   t.area = edge(a, b, c.x, c.y);
@@ -134,21 +146,34 @@ void emit(ScreenVertex a, ScreenVertex b, ScreenVertex c, const PixelRect& sciss
   t.bounds.y0 = std::max(scissor.y0, ceil_pixel(miny, offset));
   t.bounds.y1 = std::min(scissor.y1, floor_pixel(maxy, offset) + 1);
   if (t.bounds.x0 >= t.bounds.x1 || t.bounds.y0 >= t.bounds.y1) return;
+  // The swap above keeps v[0]; lavapipe's setup also keeps its first vertex and its planes do
+  // not depend on the order of the other two, so t.v is the order lavapipe uses.
+  t.llvmpipe = llvmpipe;
+  if (llvmpipe) setup_planes(t);
   out.push_back(std::move(t));
 }
 
 } // namespace
 
+int64_t sample_offset(const ir::Conventions& conventions) {
+  return conventions.pixel_center == ir::PixelCenter::Modern ? kSubPixelOne / 2 : 0;
+}
+
 void setup_triangle(const std::array<const VertexOutput*, 3>& tri, const Viewport& viewport,
-                    const PixelRect& scissor, int64_t sample_offset, std::vector<Triangle>& out) {
+                    const PixelRect& scissor, const ir::Conventions& conventions,
+                    std::vector<Triangle>& out) {
+  const int64_t offset = sample_offset(conventions);
+  const float shift = conventions.pixel_center == ir::PixelCenter::D3D9 ? 0.5f : 0.0f;
+  const bool llvmpipe = conventions.rounding == ir::Rounding::Llvmpipe;
   std::vector<VertexOutput> poly{*tri[0], *tri[1], *tri[2]};
   if (!(inside_all(poly[0]) && inside_all(poly[1]) && inside_all(poly[2])))
     poly = clip_polygon(std::move(poly));
   if (poly.size() < 3) return;
   std::vector<ScreenVertex> s;
   s.reserve(poly.size());
-  for (const auto& v : poly) s.push_back(to_screen(v, viewport));
-  for (size_t i = 1; i + 1 < s.size(); ++i) emit(s[0], s[i], s[i + 1], scissor, sample_offset, out);
+  for (const auto& v : poly) s.push_back(to_screen(v, viewport, shift));
+  for (size_t i = 1; i + 1 < s.size(); ++i)
+    emit(s[0], s[i], s[i + 1], scissor, offset, llvmpipe, out);
 }
 
 } // namespace tierlift::cpu::detail

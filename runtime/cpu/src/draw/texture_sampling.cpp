@@ -103,7 +103,9 @@ Vec4 BoundTextures::sample(uint32_t stage, const Vec4& coord, float lod_bias) co
   (void)lod_bias; // one mip level: the bias has nothing to select
   if (stage >= kMaxSamplers || !bindings_[stage].image) return {0, 0, 0, 1};
   const TextureBinding& b = bindings_[stage];
-  return sample_texture(*b.image, b.sampler, coord[0], coord[1], subtexel_bits_);
+  return llvmpipe_
+             ? sample_texture_llvmpipe(*b.image, b.sampler, coord[0], coord[1], subtexel_bits_)
+             : sample_texture(*b.image, b.sampler, coord[0], coord[1], subtexel_bits_);
 }
 
 StageState BoundTextures::stage_state(uint32_t stage) const {

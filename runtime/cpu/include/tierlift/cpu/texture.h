@@ -38,6 +38,15 @@ double quantize_fraction(double alpha, int subtexel_bits);
 Vec4 sample_texture(const img::Image& image, const SamplerState& sampler, float u, float v,
                     int subtexel_bits);
 
+// The same with Mesa llvmpipe's float-texture arithmetic (ir::Rounding::Llvmpipe): bilinear
+// x = fl32(u·N) − 0.5 in float (Clamp: min(u·N, N) first and max(x, 0) after, as llvmpipe
+// clamps coordinates rather than indices), α = x − floor(x) unquantised unless subtexel_bits
+// > 0, rows lerped as fma(α, t1 − t0, t0), then the two rows the same way. lavapipe reports
+// subTexelPrecisionBits = 8 but weights float textures with full float fractions, so 0
+// matches it. Point sampling is the same as sample_texture's.
+Vec4 sample_texture_llvmpipe(const img::Image& image, const SamplerState& sampler, float u, float v,
+                             int subtexel_bits);
+
 // What one sampler stage holds: a texture (shared, so one image can be bound to several
 // stages as Listing 4 does), the sampler state, and the ps_1_x texture-stage state.
 struct TextureBinding {
@@ -51,14 +60,16 @@ inline constexpr uint32_t kMaxSamplers = 16;
 // The TextureUnit the pixel stage of a draw sees: sample(stage, …) reads bindings[stage].
 class BoundTextures final : public TextureUnit {
 public:
-  BoundTextures(const std::array<TextureBinding, kMaxSamplers>& bindings, int subtexel_bits)
-      : bindings_(bindings), subtexel_bits_(subtexel_bits) {}
+  BoundTextures(const std::array<TextureBinding, kMaxSamplers>& bindings, int subtexel_bits,
+                bool llvmpipe = false)
+      : bindings_(bindings), subtexel_bits_(subtexel_bits), llvmpipe_(llvmpipe) {}
   Vec4 sample(uint32_t stage, const Vec4& coord, float lod_bias) const override;
   StageState stage_state(uint32_t stage) const override;
 
 private:
   const std::array<TextureBinding, kMaxSamplers>& bindings_;
   int subtexel_bits_;
+  bool llvmpipe_; // sample_texture_llvmpipe instead of sample_texture
 };
 
 } // namespace tierlift::cpu

@@ -12,7 +12,7 @@ namespace tierlift::vulkan {
 
 struct VulkanRunResult {
   bool ok = false;
-  bool no_device = false;  // no Vulkan driver/device/layer: an environment problem (exit 2)
+  bool no_device = false; // no Vulkan driver/device/layer: an environment problem (exit 2)
   std::string error;
   std::string device_name;
   img::Image image;
@@ -24,4 +24,4 @@ struct VulkanRunResult {
 VulkanRunResult run_job_vulkan(const cpu::RunRequest& request, cpu::RunDiagnostics& diags,
                                const DeviceOptions& options);
 
-}  // namespace tierlift::vulkan
+} // namespace tierlift::vulkan

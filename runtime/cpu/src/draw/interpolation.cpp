@@ -1,0 +1,157 @@
+// Attribute interpolation of one pixel, two ways (ir::Rounding):
+//   * Exact: perspective-correct barycentrics from the exact integer edge functions, in
+//     double, rounded to float once.
+//   * Llvmpipe: the arithmetic of Mesa's llvmpipe (lavapipe's rasteriser), reproduced so that
+//     the CPU and Vulkan devices compute the same float texture coordinates. u = i/1920 is not
+//     a float, so any two schemes round it differently, and with 8-bit bilinear weights a one-ulp
+//     difference can move a weight by 1/256: matching the rounding is the only way to agree at
+//     sizes that are not powers of two. Measured bit-exact against lavapipe (Mesa 22.3, x86-64
+//     with FMA) on full-screen quads and on random triangles with w ≠ 1.
+//
+// llvmpipe's scheme, per triangle (its "setup" function, all in float, no fused operations):
+//   positions (x_k, y_k) in the framebuffer with pixel i spanning [i, i + 1);
+//   dx01 = x0 − x1, dy01 = y0 − y1, dx20 = x2 − x0, dy20 = y2 − y0;
+//   ooa = 1 / (dx01·dy20 − dy01·dx20); each of the four differences is multiplied by ooa;
+//   per channel, with a_k = value_k · (1/w_k):
+//     da01 = a0 − a1, da20 = a2 − a0;
+//     dadx = da01·dy20o − da20·dy01o;  dady = da20·dx01o − da01·dx20o;
+//     a0' = a0 − (dadx·(x0 − ½) + dady·(y0 − ½))   (the plane's value at pixel (0, 0)'s centre)
+//   and the same plane for 1/w. Per pixel (i, j) (its "interp" code, with llvm.fmuladd, which
+//   is fused on FMA hardware): p = fma(dady, j, fma(dadx, i, a0')); value = p · (1 / w_ij)
+//   where w_ij is the 1/w plane evaluated the same way.
+// The planes are invariant under swapping vertices 1 and 2 (each product changes sign twice),
+// so only the first vertex has to be lavapipe's first vertex.
+#include <cmath>
+
+#include "raster.h"
+
+namespace tierlift::cpu::detail {
+namespace {
+
+float clamp01(float v) {
+  return v > 0 ? (v < 1 ? v : 1) : 0;
+} // NaN → 0
+
+// The triangle's shared terms of llvmpipe's setup.
+struct SetupTerms {
+  float x0c, y0c;                   // first vertex relative to pixel (0, 0)'s centre
+  float dx01o, dy01o, dx20o, dy20o; // edge vectors divided by twice the signed area
+};
+
+SetupTerms setup_terms(const Triangle& t) {
+  const ScreenVertex &v0 = t.v[0], &v1 = t.v[1], &v2 = t.v[2];
+  SetupTerms s;
+  s.x0c = v0.fx - 0.5f;
+  s.y0c = v0.fy - 0.5f;
+  const float dx01 = v0.fx - v1.fx, dy01 = v0.fy - v1.fy;
+  const float dx20 = v2.fx - v0.fx, dy20 = v2.fy - v0.fy;
+  const float e = dx01 * dy20, f = dy01 * dx20;
+  const float ooa = 1.0f / (e - f);
+  s.dx01o = dx01 * ooa;
+  s.dy01o = dy01 * ooa;
+  s.dx20o = dx20 * ooa;
+  s.dy20o = dy20 * ooa;
+  return s;
+}
+
+Plane plane(const SetupTerms& s, float a0, float a1, float a2) {
+  // The same infinity or NaN at all three vertices stays itself (as a flat varying would;
+  // llvmpipe's differences inf − inf would make it NaN). Equal finite values come out of the
+  // arithmetic below unchanged anyway when w is 1.
+  if (!std::isfinite(a0) && (a0 == a1 || (std::isnan(a0) && std::isnan(a1))) &&
+      (a0 == a2 || (std::isnan(a0) && std::isnan(a2))))
+    return Plane{a0, 0, 0};
+  const float da01 = a0 - a1, da20 = a2 - a0;
+  Plane p;
+  p.dadx = da01 * s.dy20o - da20 * s.dy01o;
+  p.dady = da20 * s.dx01o - da01 * s.dx20o;
+  p.a0 = a0 - (p.dadx * s.x0c + p.dady * s.y0c);
+  return p;
+}
+
+float eval(const Plane& p, float x, float y) {
+  return std::fma(p.dady, y, std::fma(p.dadx, x, p.a0));
+}
+
+bool all_positive_zero(const Vec4& a, const Vec4& b, const Vec4& c) {
+  for (int i = 0; i < 4; ++i)
+    for (float v : {a[i], b[i], c[i]})
+      if (v != 0 || std::signbit(v)) return false;
+  return true;
+}
+
+PixelInput interpolate_exact(const Triangle& t, const int64_t e[3]) {
+  PixelInput in;
+  const double area = static_cast<double>(t.area);
+  double l[3], q[3], s = 0;
+  for (int k = 0; k < 3; ++k) {
+    l[k] = static_cast<double>(e[k]) / area;
+    q[k] = l[k] * t.v[k].inv_w;
+    s += q[k];
+  }
+  // Perspective-correct weights. When the three w are equal (every 2D pass) the screen
+  // weights are already right, and skipping the division keeps u = i/W as exact as the
+  // division E/area allows.
+  if (t.v[0].inv_w != t.v[1].inv_w || t.v[0].inv_w != t.v[2].inv_w)
+    for (int k = 0; k < 3; ++k) q[k] /= s;
+  else
+    for (int k = 0; k < 3; ++k) q[k] = l[k];
+  for (size_t r = 0; r < in.color.size(); ++r)
+    for (int c = 0; c < 4; ++c)
+      in.color[r][c] =
+          clamp01(static_cast<float>(q[0] * t.v[0].out.color[r][c] + q[1] * t.v[1].out.color[r][c] +
+                                     q[2] * t.v[2].out.color[r][c]));
+  for (size_t r = 0; r < in.tex.size(); ++r)
+    for (int c = 0; c < 4; ++c)
+      in.tex[r][c] = static_cast<float>(q[0] * t.v[0].out.tex[r][c] + q[1] * t.v[1].out.tex[r][c] +
+                                        q[2] * t.v[2].out.tex[r][c]);
+  return in;
+}
+
+PixelInput interpolate_llvmpipe(const Triangle& t, int64_t x, int64_t y) {
+  PixelInput in;
+  const AttributePlanes& p = t.planes;
+  // Pixel indices are below 2^15 (img::kMaxDimension), exact in float.
+  const float fx = static_cast<float>(x), fy = static_cast<float>(y);
+  const float oow = 1.0f / eval(p.oow, fx, fy);
+  for (size_t r = 0; r < in.color.size(); ++r)
+    if (!p.color_zero[r])
+      for (int c = 0; c < 4; ++c) in.color[r][c] = clamp01(eval(p.color[r][c], fx, fy) * oow);
+  for (size_t r = 0; r < in.tex.size(); ++r)
+    if (!p.tex_zero[r])
+      for (int c = 0; c < 4; ++c) in.tex[r][c] = eval(p.tex[r][c], fx, fy) * oow;
+  return in;
+}
+
+} // namespace
+
+void setup_planes(Triangle& t) {
+  const SetupTerms s = setup_terms(t);
+  const ScreenVertex &v0 = t.v[0], &v1 = t.v[1], &v2 = t.v[2];
+  AttributePlanes& p = t.planes;
+  p.oow = plane(s, v0.oow, v1.oow, v2.oow);
+  for (size_t r = 0; r < p.color.size(); ++r) {
+    p.color_zero[r] = all_positive_zero(v0.out.color[r], v1.out.color[r], v2.out.color[r]);
+    for (int c = 0; c < 4; ++c)
+      p.color[r][c] = plane(s, v0.out.color[r][c] * v0.oow, v1.out.color[r][c] * v1.oow,
+                            v2.out.color[r][c] * v2.oow);
+  }
+  for (size_t r = 0; r < p.tex.size(); ++r) {
+    p.tex_zero[r] = all_positive_zero(v0.out.tex[r], v1.out.tex[r], v2.out.tex[r]);
+    for (int c = 0; c < 4; ++c)
+      p.tex[r][c] =
+          plane(s, v0.out.tex[r][c] * v0.oow, v1.out.tex[r][c] * v1.oow, v2.out.tex[r][c] * v2.oow);
+  }
+}
+
+PixelInput interpolate(const Triangle& t, const int64_t e[3], int64_t x, int64_t y) {
+  PixelInput in = t.llvmpipe ? interpolate_llvmpipe(t, x, y) : interpolate_exact(t, e);
+  // Depth is linear in screen space (z/w per vertex) under both schemes.
+  const double area = static_cast<double>(t.area);
+  double z = 0;
+  for (int k = 0; k < 3; ++k) z += static_cast<double>(e[k]) / area * t.v[k].z;
+  in.depth = static_cast<float>(z);
+  return in;
+}
+
+} // namespace tierlift::cpu::detail

@@ -1,0 +1,75 @@
+// Bilinear sampling with the arithmetic of Mesa llvmpipe's float-texture path (lavapipe's
+// sampler for the RGBA32F textures the Vulkan device binds), for ir::Rounding::Llvmpipe.
+// Why: u·N is rounded to float before the weights are taken, and the weights are not
+// quantised; at sizes that are not powers of two, fl32(u·N) differs from u·N by up to
+// N·2^-24 texel, which moves a tap's weight by as much. Reproducing the float steps (measured
+// bit-exact against lavapipe, Mesa 22.3 on x86-64, at 1920×1080 with taps on texel centres,
+// corners and arbitrary offsets) is what makes the two devices agree.
+#include <cmath>
+
+#include "tierlift/cpu/texture.h"
+
+namespace tierlift::cpu {
+namespace {
+
+struct Axis {
+  int64_t i0 = 0; // left (top) texel before addressing
+  float alpha = 0;
+};
+
+Axis linear_axis(float u, uint32_t n, AddressMode mode, int subtexel_bits) {
+  const float size = static_cast<float>(n);
+  float x = u * size;
+  if (mode == AddressMode::Clamp) {
+    // llvmpipe clamps the coordinate, not the index: min(u·N, N) with NaN → N, then − 0.5,
+    // then max(·, 0). The result lies in [0, N − 0.5], so the conversion below is defined.
+    x = x < size ? x : size;
+    x = x - 0.5f;
+    x = x > 0 ? x : 0;
+  } else {
+    x = x - 0.5f;
+    constexpr float kLimit = 1099511627776.0f; // 2^40: far outside any address period
+    if (std::isnan(x)) x = 0;
+    x = x < -kLimit ? -kLimit : (x > kLimit ? kLimit : x);
+  }
+  const float f = std::floor(x);
+  Axis a;
+  a.i0 = static_cast<int64_t>(f);
+  a.alpha = x - f; // exact (Sterbenz)
+  if (subtexel_bits > 0) a.alpha = static_cast<float>(quantize_fraction(a.alpha, subtexel_bits));
+  return a;
+}
+
+Vec4 fetch(const img::Image& image, const SamplerState& s, const std::optional<int64_t>& i,
+           const std::optional<int64_t>& j) {
+  if (!i || !j) return s.border_color;
+  const float* p = image.at(static_cast<uint32_t>(*i), static_cast<uint32_t>(*j));
+  return {p[0], p[1], p[2], p[3]};
+}
+
+// llvmpipe's lerp: v0 + α·(v1 − v0) as one fused multiply-add.
+float lerp(float alpha, float v0, float v1) {
+  return std::fma(alpha, v1 - v0, v0);
+}
+
+} // namespace
+
+Vec4 sample_texture_llvmpipe(const img::Image& image, const SamplerState& sampler, float u, float v,
+                             int subtexel_bits) {
+  if (image.width == 0 || image.height == 0 || sampler.filter == Filter::Point)
+    return sample_texture(image, sampler, u, v, subtexel_bits);
+  const Axis x = linear_axis(u, image.width, sampler.address_u, subtexel_bits);
+  const Axis y = linear_axis(v, image.height, sampler.address_v, subtexel_bits);
+  const auto u0 = address_texel(sampler.address_u, x.i0, image.width);
+  const auto u1 = address_texel(sampler.address_u, x.i0 + 1, image.width);
+  const auto v0 = address_texel(sampler.address_v, y.i0, image.height);
+  const auto v1 = address_texel(sampler.address_v, y.i0 + 1, image.height);
+  const Vec4 t00 = fetch(image, sampler, u0, v0), t10 = fetch(image, sampler, u1, v0);
+  const Vec4 t01 = fetch(image, sampler, u0, v1), t11 = fetch(image, sampler, u1, v1);
+  Vec4 out;
+  for (int c = 0; c < 4; ++c)
+    out[c] = lerp(y.alpha, lerp(x.alpha, t00[c], t10[c]), lerp(x.alpha, t01[c], t11[c]));
+  return out;
+}
+
+} // namespace tierlift::cpu

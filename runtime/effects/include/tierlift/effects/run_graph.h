@@ -1,0 +1,42 @@
+// Running an effect graph on one device: passes in order, images in a map between passes.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tierlift/effects/device.h"
+#include "tierlift/effects/graph.h"
+
+namespace tierlift::effects {
+
+using ImageMap = std::map<std::string, img::Image, std::less<>>;
+
+struct PassRecord {
+  std::string pass, target;
+  img::Image result; // the target after this pass (only when keep_pass_images)
+  double ms = 0;
+};
+
+struct GraphRun {
+  bool ok = false;
+  std::string error; // names the pass that failed
+  std::vector<PassRecord> passes;
+  double total_ms = 0;
+};
+
+// The cpu::Pass a pass description becomes: full-screen quad (the vertex listing's
+// dcl_position input gets the corners, every dcl_texcoord input the quad uv (0,0) top-left
+// … (1,1) bottom-right), constants, bound textures from `images`, blend, conventions.
+// Textures not in `images` are an error (returned in *error, nullopt).
+std::optional<cpu::Pass> make_pass(const PassDesc& desc, const ImageMap& images,
+                                   const ir::Conventions& conventions, std::string* error);
+
+// Checks the graph, requires every input texture in `images` at its declared size (it is
+// converted to the declared format with img::quantize), then draws each pass. `images`
+// holds every texture afterwards.
+GraphRun run_graph(const EffectGraph& graph, PassDevice& device, ImageMap& images,
+                   bool keep_pass_images = false);
+
+} // namespace tierlift::effects

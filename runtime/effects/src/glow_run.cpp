@@ -1,0 +1,17 @@
+#include "tierlift/effects/glow_run.h"
+
+namespace tierlift::effects {
+
+GlowRun run_glow(const GlowPlan& plan, const img::Image& scene, PassDevice& device,
+                 bool keep_pass_images) {
+  GlowRun out;
+  if (!plan) {
+    out.run.error = plan.error;
+    return out;
+  }
+  out.images.emplace(std::string(kSceneTexture), scene);
+  out.run = run_graph(plan.graph, device, out.images, keep_pass_images);
+  return out;
+}
+
+} // namespace tierlift::effects

@@ -1,0 +1,106 @@
+#include "tierlift/effects/run_graph.h"
+
+#include <chrono>
+
+#include <fmt/format.h>
+
+namespace tierlift::effects {
+namespace {
+
+// The vertex input a dcl_position declares (v0 for a listing without one, D3D8 style).
+uint32_t position_input(const ir::Program& vs) {
+  for (const ir::Declaration& d : vs.decls)
+    if (d.reg.file == ir::RegFile::Input && d.usage == ir::DeclUsage::Position) return d.reg.index;
+  return 0;
+}
+
+double ms_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// An input as the graph declares it: right size, stored in the declared format.
+std::string prepare_input(const TextureDesc& t, ImageMap& images) {
+  auto it = images.find(t.name);
+  if (it == images.end()) return fmt::format("input texture '{}' was not given", t.name);
+  img::Image& im = it->second;
+  if (im.width != t.width || im.height != t.height)
+    return fmt::format("input texture '{}' is {}x{}, the graph expects {}x{}", t.name, im.width,
+                       im.height, t.width, t.height);
+  if (im.format != t.format) {
+    im.format = t.format;
+    img::quantize_in_place(im);
+  }
+  return {};
+}
+
+} // namespace
+
+std::optional<cpu::Pass> make_pass(const PassDesc& desc, const ImageMap& images,
+                                   const ir::Conventions& conventions, std::string* error) {
+  if (!desc.vs) {
+    if (error) *error = fmt::format("pass '{}': no vertex listing", desc.name);
+    return std::nullopt;
+  }
+  cpu::Pass pass;
+  pass.vertex_program = desc.vs;
+  pass.pixel_program = desc.ps;
+  pass.vs_constants.f = desc.vs_constants;
+  pass.ps_constants.f = desc.ps_constants;
+  cpu::set_full_screen_quad(pass, position_input(*desc.vs));
+  for (const ir::Declaration& d : desc.vs->decls) {
+    if (d.reg.file != ir::RegFile::Input || d.usage != ir::DeclUsage::TexCoord) continue;
+    if (d.reg.index >= 16) continue;
+    for (size_t c = 0; c < 4; ++c) pass.vertices[c].v[d.reg.index] = cpu::kQuadUV[c];
+  }
+  for (const TextureBind& b : desc.textures) {
+    auto it = images.find(b.texture);
+    if (it == images.end() || b.stage >= cpu::kMaxSamplers) {
+      if (error) *error = fmt::format("pass '{}': texture '{}' has no image", desc.name, b.texture);
+      return std::nullopt;
+    }
+    cpu::TextureBinding& binding = pass.textures[b.stage];
+    binding.image = std::make_shared<const img::Image>(it->second);
+    binding.sampler = b.sampler;
+  }
+  pass.blend = desc.blend;
+  pass.conventions = conventions;
+  return pass;
+}
+
+GraphRun run_graph(const EffectGraph& graph, PassDevice& device, ImageMap& images,
+                   bool keep_pass_images) {
+  GraphRun run;
+  auto t_all = std::chrono::steady_clock::now();
+  run.error = check_graph(graph);
+  for (const TextureDesc& t : graph.textures)
+    if (run.error.empty() && t.input) run.error = prepare_input(t, images);
+  if (!run.error.empty()) return run;
+
+  for (const PassDesc& desc : graph.passes) {
+    auto t0 = std::chrono::steady_clock::now();
+    std::optional<cpu::Pass> pass = make_pass(desc, images, graph.conventions, &run.error);
+    if (!pass) return run;
+    const TextureDesc& td = *graph.find_texture(desc.target);
+    auto it = images.find(td.name);
+    if (it == images.end())
+      it = images.emplace(td.name, img::Image(td.width, td.height, td.format)).first;
+    else if (it->second.width != td.width || it->second.height != td.height ||
+             it->second.format != td.format)
+      it->second = img::Image(td.width, td.height, td.format); // a stale image from elsewhere
+    // Draw into a copy: a failed draw must leave the map as it was.
+    img::Image target = it->second;
+    if (std::string e = device.draw(*pass, target); !e.empty()) {
+      run.error = fmt::format("pass '{}' on {}: {}", desc.name, device.name(), e);
+      return run;
+    }
+    it->second = std::move(target);
+    PassRecord rec{desc.name, desc.target, {}, ms_since(t0)};
+    if (keep_pass_images) rec.result = it->second;
+    run.passes.push_back(std::move(rec));
+  }
+  run.ok = true;
+  run.total_ms = ms_since(t_all);
+  return run;
+}
+
+} // namespace tierlift::effects

@@ -1,0 +1,67 @@
+// `tierlift glow` end to end on the CPU device: files written, JSON summary, usage errors.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+int run_cli(const std::string& args, const fs::path& out_file) {
+  const std::string cmd =
+      std::string(TIERLIFT_CLI_PATH) + " " + args + " > " + out_file.string() + " 2>&1";
+  const int status = std::system(cmd.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+class CliGlow : public ::testing::Test {
+protected:
+  void SetUp() override {
+    if (!fs::exists(TIERLIFT_CLI_PATH)) GTEST_SKIP() << "tierlift not built";
+    dir = fs::temp_directory_path() /
+          ("tierlift_glow_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+           "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+  }
+  void TearDown() override {
+    if (!dir.empty()) fs::remove_all(dir);
+  }
+  std::string read(const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+  }
+  fs::path dir;
+};
+
+TEST_F(CliGlow, CpuRunWritesTheThreeImages) {
+  const fs::path log = dir / "log.txt";
+  ASSERT_EQ(run_cli("glow --backend cpu --downsample 4 --json -o " + (dir / "out").string(), log),
+            0)
+      << read(log);
+  for (const char* f : {"scene-cpu.png", "glow-cpu.png", "final-cpu.png"})
+    EXPECT_TRUE(fs::exists(dir / "out" / f)) << f;
+  EXPECT_FALSE(fs::exists(dir / "out" / "final-vulkan.png"));
+  const std::string text = read(log);
+  // 1280×720 / 4 = 320×180; σ 8 px / 4 → 13 taps; 1 + 1 + 2 + 2 + 1 passes.
+  EXPECT_NE(text.find("\"taps\": 13"), std::string::npos) << text;
+  EXPECT_NE(text.find("\"passes\": 7"), std::string::npos) << text;
+  EXPECT_NE(text.find("\"width\": 320"), std::string::npos) << text;
+}
+
+TEST_F(CliGlow, BadFlagsAreUsageErrors) {
+  const fs::path log = dir / "log.txt";
+  EXPECT_EQ(run_cli("glow --downsample 5", log), 2) << read(log);
+  EXPECT_EQ(run_cli("glow --format rgba16f --backend cpu", log), 2) << read(log);
+  EXPECT_NE(read(log).find("expected rgba8 or rgba32f"), std::string::npos);
+  EXPECT_EQ(run_cli("glow --backend gpu", log), 2) << read(log);
+}
+
+} // namespace

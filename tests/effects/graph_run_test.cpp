@@ -1,0 +1,112 @@
+// Running graphs on the CPU device: the graph checks, the extract and composite passes, and
+// the separable blur of one lit texel against the outer product of the taps.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "tierlift/effects/builtin_listing.h"
+#include "tierlift/effects/default_scene.h"
+#include "tierlift/effects/glow_run.h"
+
+namespace tierlift::effects {
+namespace {
+
+GlowPlan small_plan(unsigned n, img::Format f, BlurProfile profile = default_blur_profile()) {
+  GlowParams p;
+  p.width = 128;
+  p.height = 64;
+  p.downsample = n;
+  p.format = f;
+  p.profile = std::move(profile);
+  GlowPlan plan = build_glow_dx9(p);
+  EXPECT_TRUE(plan) << plan.error;
+  return plan;
+}
+
+TEST(Graph, ChecksNamesAndTargets) {
+  GlowPlan plan = small_plan(2, img::Format::RGBA32F);
+  EXPECT_EQ(check_graph(plan.graph), "");
+  EffectGraph g = plan.graph;
+  g.passes[0].textures[0].texture = "nowhere";
+  EXPECT_NE(check_graph(g).find("unknown texture 'nowhere'"), std::string::npos);
+  g = plan.graph;
+  g.passes[0].textures[0].texture = g.passes[0].target;
+  EXPECT_NE(check_graph(g).find("reads its own target"), std::string::npos);
+  g = plan.graph;
+  g.passes[0].target = std::string(kSceneTexture);
+  EXPECT_NE(check_graph(g).find("input texture"), std::string::npos);
+  g = plan.graph;
+  g.passes[1].name = g.passes[0].name;
+  EXPECT_NE(check_graph(g).find("appears twice"), std::string::npos);
+}
+
+TEST(Graph, MissingOrWrongSizedInputIsAnError) {
+  GlowPlan plan = small_plan(2, img::Format::RGBA32F);
+  CpuPassDevice dev(2);
+  ImageMap images;
+  GraphRun r = run_graph(plan.graph, dev, images);
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("'scene' was not given"), std::string::npos) << r.error;
+  GlowRun g = run_glow(plan, img::Image(10, 10), dev);
+  EXPECT_FALSE(g.run.ok);
+  EXPECT_NE(g.run.error.find("expects 128x64"), std::string::npos) << g.run.error;
+}
+
+TEST(BuiltinListing, UnknownAndKnown) {
+  std::string err;
+  EXPECT_EQ(builtin_listing("glow/nothing.psh", &err), nullptr);
+  EXPECT_NE(err.find("no built-in listing"), std::string::npos);
+  for (const char* p :
+       {"glow/quad4_coords.vsh", "glow/extract_sources.psh", "glow/extract_sources_ps11.psh",
+        "glow/downsample4.psh", "glow/composite_add.psh"})
+    EXPECT_NE(builtin_listing(p, &err), nullptr) << p << ": " << err;
+}
+
+// With alpha 0 everywhere nothing glows: the composite must return the scene exactly.
+TEST(GlowCpu, NothingGlowsGivesTheSceneBack) {
+  for (img::Format f : {img::Format::RGBA32F, img::Format::RGBA8}) {
+    img::Image scene = make_default_scene(128, 64, f);
+    for (size_t i = 3; i < scene.rgba.size(); i += 4) scene.rgba[i] = 0.0f;
+    CpuPassDevice dev(2);
+    GlowRun g = run_glow(small_plan(2, f), scene, dev);
+    ASSERT_TRUE(g.run.ok) << g.run.error;
+    EXPECT_EQ(g.images.at(std::string(kFinalTexture)).rgba, scene.rgba);
+    for (float v : g.images.at(std::string(kGlowTexture)).rgba) ASSERT_EQ(v, 0.0f);
+  }
+}
+
+// One glowing texel, no downsampling, σ = 1: the glow is w_i·w_j·colour·alpha around it
+// (the separable convolution), and the final frame is scene + glow where the glow texel
+// is read at a texel centre (n = 1: exactly).
+TEST(GlowCpu, OneTexelGlowsAsTheOuterProductOfTheTaps) {
+  img::Image scene(32, 16);
+  for (size_t i = 0; i < scene.rgba.size(); i += 4) scene.rgba[i + 3] = 0.0f;
+  float* lit = scene.at(12, 7);
+  lit[0] = 1.0f, lit[1] = 0.5f, lit[2] = 0.25f, lit[3] = 0.5f;
+  GlowParams p;
+  p.width = 32;
+  p.height = 16;
+  p.downsample = 1;
+  p.profile = BlurProfile{{{1.0, 1.0}}};
+  GlowPlan plan = build_glow_dx9(p);
+  ASSERT_TRUE(plan) << plan.error;
+  ASSERT_EQ(plan.taps.size(), 7u);
+  CpuPassDevice dev(2);
+  GlowRun g = run_glow(plan, scene, dev);
+  ASSERT_TRUE(g.run.ok) << g.run.error;
+  const img::Image& glow = g.images.at(std::string(kGlowTexture));
+  const img::Image& final_frame = g.images.at(std::string(kFinalTexture));
+  const double norm = 1 + 2 * (std::exp(-0.5) + std::exp(-2.0) + std::exp(-4.5));
+  auto w = [&](int k) { return std::abs(k) > 3 ? 0.0 : std::exp(-k * k / 2.0) / norm; };
+  const double src[3] = {0.5, 0.25, 0.125}; // rgb × alpha
+  for (uint32_t y = 0; y < 16; ++y)
+    for (uint32_t x = 0; x < 32; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const double want = w(int(x) - 12) * w(int(y) - 7) * src[c];
+        ASSERT_NEAR(glow.at(x, y)[c], want, 1e-6) << x << "," << y << " c" << c;
+        ASSERT_NEAR(final_frame.at(x, y)[c], scene.at(x, y)[c] + want, 1e-6);
+      }
+}
+
+} // namespace
+} // namespace tierlift::effects
