@@ -14,6 +14,7 @@
 #include <optional>
 #include <string>
 
+#include "blur8_pass.h"
 #include "tierlift/asm/parser.h"
 #include "tierlift/cpu/draw.h"
 #include "tierlift/cpu/run_job.h"
@@ -24,41 +25,10 @@ using namespace tierlift;
 
 namespace {
 
-constexpr uint32_t kW = 1920, kH = 1080;
-
-std::shared_ptr<const ir::Program> listing(const char* name) {
-  auto text = listings::find_embedded(std::string("gpugems21/") + name);
-  auto r = as::parse_text(std::string(text.value_or("")), name);
-  return r.program ? std::make_shared<const ir::Program>(std::move(*r.program)) : nullptr;
-}
-
-// Horizontal taps at -3.5 … +3.5 texels with the half texel (texel centres), weights 1/8:
-// the same pass as bench/interpreter_bench.cpp.
-float offset(int k) {
-  return (float(k) - 3.5f + 0.5f) / float(kW);
-}
+constexpr uint32_t kW = bench::kBlurWidth, kH = bench::kBlurHeight;
 
 std::optional<cpu::Pass> blur_pass() {
-  cpu::RunRequest r;
-  r.vs = listing("listing1_blur8_coords.vsh");
-  r.ps = listing("listing2_blur8_weighted_sum.psh");
-  if (!r.vs || !r.ps) return std::nullopt;
-  r.width = kW;
-  r.height = kH;
-  r.format = img::Format::RGBA8;
-  std::string err;
-  for (int k = 0; k < 8; ++k) {
-    r.constants.push_back(*cpu::parse_const_setting(
-        "vs:c" + std::to_string(k) + "=" + std::to_string(offset(k)) + ",0,0,0", err));
-    r.constants.push_back(
-        *cpu::parse_const_setting("ps:c" + std::to_string(k) + "=0.125,0.125,0.125,0.125", err));
-  }
-  r.attrs.push_back(*cpu::parse_attr_setting("v3=quad-uv", err));
-  r.textures.push_back({0, "builtin:noise:1920x1080"});
-  r.filter = cpu::Filter::Linear;
-  r.address = cpu::AddressMode::Clamp;
-  cpu::RunDiagnostics d;
-  return cpu::pass_from_request(r, d);
+  return bench::blur8_pass();
 }
 
 void set_rate(benchmark::State& state) {
