@@ -26,6 +26,7 @@ function(tierlift_test)
   endif()
   add_executable(${TL_NAME} ${_srcs})
   target_link_libraries(${TL_NAME} PRIVATE ${TL_DEPS} GTest::gtest GTest::gtest_main GTest::gmock)
+  target_include_directories(${TL_NAME} PRIVATE ${PROJECT_SOURCE_DIR}/tests/common)
   target_compile_definitions(${TL_NAME} PRIVATE
     TIERLIFT_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
     TIERLIFT_SHARED_DIR="${PROJECT_SOURCE_DIR}/../shared"

@@ -11,28 +11,17 @@
 #include "tierlift/asm/parser.h"
 #include "tierlift/asm/printer.h"
 
+#include "listing_files.h"
+
 namespace fs = std::filesystem;
 using tierlift::ir::DiagnosticSink;
 using Tokens = std::vector<uint32_t>;
 
 namespace {
 
+using tierlift::test::listings_in;
 std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-std::vector<fs::path> listings_in(const fs::path& dir) {
-  std::vector<fs::path> out;
-  if (!fs::is_directory(dir)) return out;
-  for (const auto& e : fs::directory_iterator(dir)) {
-    auto ext = e.path().extension();
-    if (ext == ".vsh" || ext == ".psh") out.push_back(e.path());
-  }
-  std::sort(out.begin(), out.end());
-  return out;
+  return tierlift::test::read_file(p);
 }
 
 std::string first_message(const DiagnosticSink& d) {

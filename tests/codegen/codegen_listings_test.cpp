@@ -10,17 +10,14 @@
 #include "tierlift/asm/parser.h"
 #include "tierlift/codegen/codegen.h"
 
+#include "listing_files.h"
+
 namespace fs = std::filesystem;
 using namespace tierlift;
 
 namespace {
 
-std::string read_file(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using tierlift::test::read_file;
 
 void compile_listing(const fs::path& path) {
   SCOPED_TRACE(path.string());
@@ -42,15 +39,7 @@ void compile_listing(const fs::path& path) {
   EXPECT_LE(optimised->words.size(), module->words.size());
 }
 
-std::vector<fs::path> listings_in(const fs::path& dir) {
-  std::vector<fs::path> out;
-  for (const auto& e : fs::directory_iterator(dir)) {
-    const auto ext = e.path().extension();
-    if (ext == ".vsh" || ext == ".psh") out.push_back(e.path());
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
+using tierlift::test::listings_in;
 
 } // namespace
 

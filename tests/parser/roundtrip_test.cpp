@@ -7,27 +7,16 @@
 #include "test_util.h"
 #include "tierlift/asm/printer.h"
 
+#include "listing_files.h"
+
 namespace tierlift::as::test {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_file(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
+using tierlift::test::read_file;
 std::vector<fs::path> listings_in(const fs::path& dir) {
-  std::vector<fs::path> out;
-  std::error_code ec;
-  for (const auto& e : fs::recursive_directory_iterator(dir, ec)) {
-    auto ext = e.path().extension();
-    if (ext == ".vsh" || ext == ".psh") out.push_back(e.path());
-  }
-  std::sort(out.begin(), out.end());
-  return out;
+  return tierlift::test::listings_in(dir, /*recursive=*/true);
 }
 
 void expect_round_trip(const fs::path& file) {

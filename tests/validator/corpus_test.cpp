@@ -6,25 +6,20 @@
 
 #include "validator_test_util.h"
 
+#include "listing_files.h"
+
 namespace fs = std::filesystem;
 using namespace tierlift;
 
 namespace {
 
-std::string read(const fs::path& p) {
-  std::ifstream f(p, std::ios::binary);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
+using tierlift::test::read_file;
 
 int check_folder(const fs::path& dir) {
   int n = 0;
-  for (const auto& e : fs::directory_iterator(dir)) {
-    auto ext = e.path().extension();
-    if (ext != ".vsh" && ext != ".psh") continue;
-    SCOPED_TRACE(e.path().string());
-    EXPECT_TRUE(vtest::is_clean(read(e.path())));
+  for (const fs::path& file : tierlift::test::listings_in(dir)) {
+    SCOPED_TRACE(file.string());
+    EXPECT_TRUE(vtest::is_clean(read_file(file)));
     ++n;
   }
   return n;
@@ -43,8 +38,8 @@ TEST(ValidatorCorpus, SharedCorpusValidates) {
 // The article's dx8 pixel listing is exactly at the ps_1_3 texture limit (4 tex) and uses 4
 // of its 8 arithmetic slots; as ps_1_1 it is still legal, as ps_1_4 `tex` does not exist.
 TEST(ValidatorCorpus, Listing4AgainstOtherProfiles) {
-  std::string text = read(fs::path(TIERLIFT_SOURCE_DIR) / "listings" / "gpugems21" /
-                          "listing4_blur4_weighted_sum.psh");
+  std::string text = read_file(fs::path(TIERLIFT_SOURCE_DIR) / "listings" / "gpugems21" /
+                               "listing4_blur4_weighted_sum.psh");
   vtest::Run r = vtest::run(text, ir::Profile::ps_1_1);
   EXPECT_FALSE(r.diags.has_errors()) << vtest::dump(r);
   EXPECT_TRUE(
@@ -65,7 +60,7 @@ TEST(ValidatorCorpus, EveryListingAgainstEveryProfile) {
   }
   for (const fs::path& f : files) {
     for (ir::Profile p : ir::kAllProfiles) {
-      vtest::Run r = vtest::run(read(f), p);
+      vtest::Run r = vtest::run(read_file(f), p);
       ASSERT_TRUE(r.parsed.program) << f;
       bool same_stage = ir::stage_of(p) == r.parsed.program->stage();
       if (!same_stage) {
