@@ -1,6 +1,8 @@
 #include "tierlift/effects/builtin_listing.h"
 
 #include <fmt/format.h>
+#include <fstream>
+#include <sstream>
 
 #include "tierlift/asm/parser.h"
 #include "tierlift/asm/validator.h"
@@ -8,16 +10,17 @@
 
 namespace tierlift::effects {
 
-std::shared_ptr<const ir::Program> builtin_listing(std::string_view path, std::string* error) {
+namespace {
+
+std::shared_ptr<const ir::Program> parse_and_validate(std::string text, std::string name,
+                                                      bool allow_include, std::string* error) {
   auto fail = [&](std::string why) -> std::shared_ptr<const ir::Program> {
     if (error) *error = std::move(why);
     return nullptr;
   };
-  std::optional<std::string_view> text = listings::find_embedded(path);
-  if (!text) return fail(fmt::format("no built-in listing '{}'", path));
   as::ParseOptions options;
-  options.allow_include = false; // built-in text never reads files
-  as::ParseResult r = as::parse_text(std::string(*text), std::string(path), options);
+  options.allow_include = allow_include; // built-in text never reads files
+  as::ParseResult r = as::parse_text(std::move(text), std::move(name), options);
   if (!r.program) return fail(ir::render_text(r.diags, r.sources));
   ir::DiagnosticSink diags;
   as::ValidateOptions vo;
@@ -25,6 +28,34 @@ std::shared_ptr<const ir::Program> builtin_listing(std::string_view path, std::s
   if (!as::validate(*r.program, r.program->profile, diags, vo))
     return fail(ir::render_text(diags, r.sources));
   return std::make_shared<const ir::Program>(std::move(*r.program));
+}
+
+} // namespace
+
+std::shared_ptr<const ir::Program> builtin_listing(std::string_view path, std::string* error) {
+  std::optional<std::string_view> text = listings::find_embedded(path);
+  if (!text) {
+    if (error) *error = fmt::format("no built-in listing '{}'", path);
+    return nullptr;
+  }
+  return parse_and_validate(std::string(*text), std::string(path), false, error);
+}
+
+std::shared_ptr<const ir::Program>
+glow_listing(std::string_view path, const std::map<std::string, std::string, std::less<>>& files,
+             std::string* error) {
+  auto it = files.find(path);
+  if (it == files.end()) return builtin_listing(path, error);
+  std::ifstream in(it->second, std::ios::binary);
+  if (!in) {
+    if (error)
+      *error = fmt::format("{}: error: cannot read listing (it replaces built-in '{}')", it->second,
+                           path);
+    return nullptr;
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_and_validate(text.str(), it->second, true, error);
 }
 
 } // namespace tierlift::effects

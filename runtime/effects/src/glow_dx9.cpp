@@ -13,7 +13,7 @@ struct Listings {
   std::shared_ptr<const ir::Program> quad4, extract, downsample, composite, blur_vs, blur_ps;
 };
 
-std::optional<Listings> load_listings(std::string* error) {
+std::optional<Listings> load_listings(const GlowParams& p, std::string* error) {
   Listings l;
   const std::pair<std::shared_ptr<const ir::Program>*, const char*> wanted[] = {
       {&l.quad4, "glow/quad4_coords.vsh"},
@@ -23,7 +23,7 @@ std::optional<Listings> load_listings(std::string* error) {
       {&l.blur_vs, "gpugems21/listing1_blur8_coords.vsh"},
       {&l.blur_ps, "gpugems21/listing2_blur8_weighted_sum.psh"}};
   for (const auto& [slot, path] : wanted) {
-    *slot = builtin_listing(path, error);
+    *slot = glow_listing(path, p.listing_files, error);
     if (!*slot) return std::nullopt;
   }
   return l;
@@ -63,6 +63,7 @@ PassDesc pass(std::string name, std::shared_ptr<const ir::Program> vs,
 
 PassDesc extract_pass(const Listings& l, const GlowParams& p) {
   PassDesc d = pass("extract", l.quad4, l.extract, kSourcesTexture);
+  d.analytic = AnalyticForm::MaskByAlpha;
   // Point reads at texel centres: offset ½ texel, scale 1.
   d.vs_constants = quad4_constants({{0.5 / p.width, 0.5 / p.height, 1, 1}});
   d.textures.push_back({0, std::string(kSceneTexture), sampler(cpu::Filter::Point)});
@@ -92,12 +93,12 @@ void blur_passes(const Listings& l, const GlowParams& p, const std::vector<BlurT
                  bool vertical, const std::string& source, const std::string& target, uint32_t gw,
                  uint32_t gh, std::vector<PassDesc>& out) {
   const double h = p.half_texel ? 0.5 : 0.0;
-  const size_t count = (taps.size() + kTapsPerBlurPass - 1) / kTapsPerBlurPass;
+  const size_t count = (taps.size() + kTapsPerBlurPassDx9 - 1) / kTapsPerBlurPassDx9;
   for (size_t i = 0; i < count; ++i) {
     PassDesc d =
         pass(fmt::format("{}.{}", vertical ? "blur_v" : "blur_h", i), l.blur_vs, l.blur_ps, target);
-    for (size_t k = 0; k < kTapsPerBlurPass; ++k) {
-      const size_t t = i * kTapsPerBlurPass + k;
+    for (size_t k = 0; k < kTapsPerBlurPassDx9; ++k) {
+      const size_t t = i * kTapsPerBlurPassDx9 + k;
       // Padding taps read the centre with weight 0 (adds exactly 0 for finite images).
       const double off = t < taps.size() ? taps[t].offset : 0.0;
       const double w = t < taps.size() ? taps[t].weight : 0.0;
@@ -148,7 +149,7 @@ GlowPlan build_glow_dx9(const GlowParams& p) {
   }
   plan.taps = sample_blur_profile(p.profile, p.downsample, &plan.error);
   if (plan.taps.empty()) return plan;
-  std::optional<Listings> l = load_listings(&plan.error);
+  std::optional<Listings> l = load_listings(p, &plan.error);
   if (!l) return plan;
 
   const uint32_t gw = (p.width + p.downsample - 1) / p.downsample;
@@ -174,7 +175,7 @@ GlowPlan build_glow_dx9(const GlowParams& p) {
   blur_passes(*l, p, plan.taps, true, std::string(kBlurHTexture), std::string(kGlowTexture), gw, gh,
               g.passes);
   plan.blur_passes_per_axis =
-      unsigned((plan.taps.size() + kTapsPerBlurPass - 1) / kTapsPerBlurPass);
+      unsigned((plan.taps.size() + kTapsPerBlurPassDx9 - 1) / kTapsPerBlurPassDx9);
   g.passes.push_back(composite_pass(*l, p, gw, gh));
   plan.error = check_graph(g);
   return plan;

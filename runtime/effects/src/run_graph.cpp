@@ -74,30 +74,38 @@ GraphRun run_graph(const EffectGraph& graph, PassDevice& device, ImageMap& image
   run.error = check_graph(graph);
   for (const TextureDesc& t : graph.textures)
     if (run.error.empty() && t.input) run.error = prepare_input(t, images);
+  if (run.error.empty()) {
+    ImageMap inputs;
+    for (const TextureDesc& t : graph.textures)
+      if (t.input) inputs.emplace(t.name, images.find(t.name)->second);
+    if (std::string e = device.begin_run(graph, inputs); !e.empty())
+      run.error = fmt::format("{}: {}", device.name(), e);
+  }
   if (!run.error.empty()) return run;
 
   for (const PassDesc& desc : graph.passes) {
     auto t0 = std::chrono::steady_clock::now();
-    std::optional<cpu::Pass> pass = make_pass(desc, images, graph.conventions, &run.error);
-    if (!pass) return run;
-    const TextureDesc& td = *graph.find_texture(desc.target);
-    auto it = images.find(td.name);
-    if (it == images.end())
-      it = images.emplace(td.name, img::Image(td.width, td.height, td.format)).first;
-    else if (it->second.width != td.width || it->second.height != td.height ||
-             it->second.format != td.format)
-      it->second = img::Image(td.width, td.height, td.format); // a stale image from elsewhere
-    // Draw into a copy: a failed draw must leave the map as it was.
-    img::Image target = it->second;
-    if (std::string e = device.draw(*pass, target); !e.empty()) {
+    if (std::string e = device.run_pass(desc); !e.empty()) {
       run.error = fmt::format("pass '{}' on {}: {}", desc.name, device.name(), e);
       return run;
     }
-    it->second = std::move(target);
     PassRecord rec{desc.name, desc.target, {}, ms_since(t0)};
-    if (keep_pass_images) rec.result = it->second;
+    if (keep_pass_images)
+      if (std::string e = device.read_texture(desc.target, rec.result); !e.empty()) {
+        run.error = fmt::format("pass '{}' on {}: reading '{}' back: {}", desc.name, device.name(),
+                                desc.target, e);
+        return run;
+      }
     run.passes.push_back(std::move(rec));
   }
+  // Every texture back into the map (a failed run leaves the map as it was given).
+  ImageMap out;
+  for (const TextureDesc& t : graph.textures)
+    if (std::string e = device.read_texture(t.name, out[t.name]); !e.empty()) {
+      run.error = fmt::format("{}: reading '{}' back: {}", device.name(), t.name, e);
+      return run;
+    }
+  for (auto& [name, image] : out) images[name] = std::move(image);
   run.ok = true;
   run.total_ms = ms_since(t_all);
   return run;

@@ -1,11 +1,16 @@
-// What runs one pass of an effect graph: the CPU device (cpu::draw) or the Vulkan device
-// (vulkan::Device::draw). Both take the same cpu::Pass.
+// What runs an effect graph's passes: the CPU device (the interpreter, cpu::draw), the
+// Vulkan device (SPIR-V on lavapipe) and the analytic device (the same graph as math, in
+// double; analytic_device.h). A device owns the graph's textures for the length of a run:
+// inputs are handed over once (begin_run), every pass renders into a texture the device
+// keeps (on Vulkan: device memory, no readback between passes), and images come back only
+// when asked for (read_texture: the agreement table, the files, the end of the run).
 #pragma once
 
+#include <map>
 #include <memory>
 #include <string>
 
-#include "tierlift/cpu/draw.h"
+#include "tierlift/effects/graph.h"
 #include "tierlift/image/image.h"
 
 namespace tierlift::vulkan {
@@ -14,22 +19,37 @@ class Device;
 
 namespace tierlift::effects {
 
+using ImageMap = std::map<std::string, img::Image, std::less<>>;
+
 class PassDevice {
 public:
   virtual ~PassDevice() = default;
-  virtual std::string name() const = 0; // "cpu", "vulkan"
-  // Draws into `target` (its format is the store rule). Empty string on success, else why.
-  virtual std::string draw(const cpu::Pass& pass, img::Image& target) = 0;
+  virtual std::string name() const = 0; // "cpu", "vulkan", "analytic"
+  // Starts a run of `graph` (already checked by check_graph): every texture is created at
+  // its declared size and format; inputs take their image from `inputs` (already at the
+  // declared size and stored in the declared format); every other texture starts at zero.
+  // Empty string on success, else why. A device runs one graph at a time; begin_run drops
+  // what an earlier run left.
+  virtual std::string begin_run(const EffectGraph& graph, const ImageMap& inputs) = 0;
+  // Runs one pass of that graph: it samples the textures it binds and renders into its
+  // target with its blend mode; the target's format is the store rule.
+  virtual std::string run_pass(const PassDesc& pass) = 0;
+  // A texture's current contents (in its declared format). Empty string on success.
+  virtual std::string read_texture(const std::string& name, img::Image& out) = 0;
 };
 
 class CpuPassDevice final : public PassDevice {
 public:
   explicit CpuPassDevice(unsigned threads = 0) : threads_(threads) {}
   std::string name() const override { return "cpu"; }
-  std::string draw(const cpu::Pass& pass, img::Image& target) override;
+  std::string begin_run(const EffectGraph& graph, const ImageMap& inputs) override;
+  std::string run_pass(const PassDesc& pass) override;
+  std::string read_texture(const std::string& name, img::Image& out) override;
 
 private:
   unsigned threads_;
+  const EffectGraph* graph_ = nullptr;
+  ImageMap images_;
 };
 
 // Wraps a device the caller owns (and keeps alive). Only when tierlift_vulkan is built.

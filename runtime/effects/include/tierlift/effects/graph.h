@@ -33,8 +33,16 @@ struct TextureBind {
   cpu::SamplerState sampler;
 };
 
+// What the analytic device computes for a pass. Linear: the pixel is a weighted sum of
+// texture reads, and the taps (texture, coordinate scale and offset, weight) are read off
+// the pass's own listings and constants (ref::extract_taps), never from the generator's
+// parameters. MaskByAlpha: the one non-linear helper, rgb × alpha of a single read at the
+// pass's sample point (glow source extraction); alpha passes through.
+enum class AnalyticForm { Linear, MaskByAlpha };
+
 struct PassDesc {
   std::string name; // unique, e.g. "blur_h.1"
+  AnalyticForm analytic = AnalyticForm::Linear;
   std::shared_ptr<const ir::Program> vs, ps;
   std::vector<cpu::Vec4> vs_constants, ps_constants; // c0, c1, …
   std::vector<TextureBind> textures;

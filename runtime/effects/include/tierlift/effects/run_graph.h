@@ -11,12 +11,10 @@
 
 namespace tierlift::effects {
 
-using ImageMap = std::map<std::string, img::Image, std::less<>>;
-
 struct PassRecord {
   std::string pass, target;
   img::Image result; // the target after this pass (only when keep_pass_images)
-  double ms = 0;
+  double ms = 0;     // run_pass only (a readback for keep_pass_images is not counted)
 };
 
 struct GraphRun {
@@ -34,8 +32,9 @@ std::optional<cpu::Pass> make_pass(const PassDesc& desc, const ImageMap& images,
                                    const ir::Conventions& conventions, std::string* error);
 
 // Checks the graph, requires every input texture in `images` at its declared size (it is
-// converted to the declared format with img::quantize), then draws each pass. `images`
-// holds every texture afterwards.
+// converted to the declared format with img::quantize), hands the inputs to the device,
+// runs each pass there (reading its target back after it only when keep_pass_images), then
+// reads every texture back: `images` holds every texture afterwards.
 GraphRun run_graph(const EffectGraph& graph, PassDevice& device, ImageMap& images,
                    bool keep_pass_images = false);
 
