@@ -6,7 +6,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build}
 benches=(bench_front_end bench_codegen)
-for extra in bench_interpreter bench_vulkan; do
+for extra in bench_interpreter bench_vulkan bench_glow; do
   if grep -q "$extra" "$build/build.ninja" 2>/dev/null; then benches+=("$extra"); fi
 done
 cmake --build "$build" --target "${benches[@]}" >/dev/null
@@ -24,10 +24,14 @@ for f in sorted(os.listdir(sys.argv[1])):
 def sec(b):
     scale = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}[b.get("time_unit", "ns")]
     return b["real_time"] * scale
-print(f"{'benchmark':44} {'time':>12} {'MB/s':>9} {'items/s':>12}")
+def find(base):
+    # A row by its function (and BENCHMARK_CAPTURE) name: Google Benchmark appends
+    # "/real_time", "/iterations:N", "/min_time:…" to the name it reports.
+    return next((b for n, b in rows.items() if n == base or n.startswith(base + "/")), None)
+print(f"{'benchmark':56} {'time':>12} {'MB/s':>9} {'items/s':>12}")
 for name, b in rows.items():
     mbs = b.get("bytes_per_second", 0) / 1e6
-    print(f"{name:44} {sec(b)*1e6:10.1f}us {mbs:9.2f} {b.get('items_per_second', 0):12.0f}")
+    print(f"{name:56} {sec(b)*1e6:10.1f}us {mbs:9.2f} {b.get('items_per_second', 0):12.0f}")
 print()
 # (ours, peer, what): ratio > 1 means ours is faster.
 pairs = [
@@ -40,12 +44,24 @@ pairs = [
     ("BM_Vulkan_Listing2", "BM_Vulkan_PeerInterpreter_Listing2_AllCores", "time"),
 ]
 for ours, peer, what in pairs:
-    if ours in rows and peer in rows:
+    o, p = find(ours), find(peer)
+    if o and p:
         if what == "time":
-            r = sec(rows[peer]) / sec(rows[ours])
+            r = sec(p) / sec(o)
             print(f"speed-up {ours} vs {peer}: {r:.2f}x (peer time / our time)")
         else:
-            r = rows[ours]["bytes_per_second"] / rows[peer]["bytes_per_second"]
+            r = o["bytes_per_second"] / p["bytes_per_second"]
             print(f"throughput ratio {ours} / {peer}: {r:.2f}")
+# The glow of issue 5 (bench_glow): frame time at 1920x1080, downsample 4, against the same
+# glow written with OpenCV. Here the ratio is our frame time / OpenCV's (> 1: slower).
+glow_peer = find("BM_Glow_OpenCV")
+if glow_peer:
+    for case in ("dx9_rgba32f", "dx9_rgba8", "dx8_rgba8"):
+        for what, bench in (("lavapipe", "BM_Glow_Vulkan"), ("interpreter", "BM_Glow_Interpreter")):
+            ours = find(f"{bench}/{case}")
+            if ours:
+                r = sec(ours) / sec(glow_peer)
+                print(f"glow 1080p/4 {case} {what} vs OpenCV: {r:.1f}x "
+                      f"({sec(ours)*1e3:.0f} ms vs {sec(glow_peer)*1e3:.1f} ms a frame)")
 PY
 rm -rf "$tmp"

@@ -1,171 +1,195 @@
-// tierlift glow: the Real-Time Glow (tier dx9) over the built-in scene, on the CPU device,
-// on Vulkan, or both with a per-pass agreement table. Only flags and printing live here;
-// the work is tierlift::effects.
-#include <filesystem>
+// tierlift glow: the Real-Time Glow (GPU Gems ch. 21) over a scene — the built-in one, a
+// JSON scene file or a PNG with alpha — on the interpreter, on Vulkan and as analytic math,
+// with the agreement table of every pair of ways. Only flags, the order of the steps and
+// printing live here; the work is tierlift::effects.
+#include <algorithm>
 #include <fmt/format.h>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <unistd.h>
 
 #include "commands.h"
-#include "tierlift/cpu/run_job.h"
-#include "tierlift/effects/agreement.h"
-#include "tierlift/effects/default_scene.h"
-#include "tierlift/effects/glow_run.h"
+#include "glow_report.h"
+#include "tierlift/effects/analytic_device.h"
+#include "tierlift/effects/scene.h"
 #include "tierlift/vulkan/device.h"
 
 namespace tierlift::cli {
 namespace {
 
 struct GlowFlags {
-  std::string backend = "all", format = "rgba32f", output, gpu;
-  unsigned downsample = 2;
-  bool no_half_texel = false, json = false;
+  std::string scene, image, tier, format, backend = "all", output, gpu;
+  unsigned downsample = 0; // 0: the scene's
+  bool no_half_texel = false, json = false, quiet = false;
   unsigned threads = 0;
 };
 
-struct DeviceRun {
-  std::string name;
-  effects::GlowRun glow;
-};
+void error(const std::string& message) {
+  fmt::print(stderr, "tierlift glow: error: {}\n", message);
+}
 
-// Writes DIR/{scene,glow,final}-<device>.png; empty on success.
-std::string write_outputs(const std::string& dir, const DeviceRun& r) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) return fmt::format("cannot create '{}': {}", dir, ec.message());
-  for (std::string_view tex :
-       {effects::kSceneTexture, effects::kGlowTexture, effects::kFinalTexture}) {
-    const auto it = r.glow.images.find(tex);
-    if (it == r.glow.images.end()) continue;
-    const std::string path =
-        (std::filesystem::path(dir) / fmt::format("{}-{}.png", tex, r.name)).string();
-    // Opaque copies: the scene's alpha is the glow mask, and a PNG viewer would show the
-    // dark ground (alpha 0) as transparent.
-    img::Image opaque = it->second;
-    for (size_t i = 3; i < opaque.rgba.size(); i += 4) opaque.rgba[i] = 1.0f;
-    std::string warning;
-    if (std::string err = cpu::write_run_output(path, opaque, &warning); !err.empty()) return err;
+// The scene the flags name (default: the built-in one), with flag overrides applied.
+// nullopt after printing the error.
+std::optional<effects::Scene> scene_from_flags(const GlowFlags& f, int* exit_code) {
+  effects::SceneLoad load;
+  if (!f.scene.empty())
+    load = effects::load_scene_file(f.scene);
+  else if (!f.image.empty())
+    load = effects::scene_from_png(f.image);
+  else
+    load.scene = effects::default_scene();
+  if (!load.scene) {
+    fmt::print(stderr, "{}{}", load.error, load.error.ends_with('\n') ? "" : "\n");
+    *exit_code = kExitInvalid;
+    return std::nullopt;
   }
-  return {};
+  effects::GlowParams& p = load.scene->params;
+  if (!f.tier.empty()) p.tier = *effects::parse_tier(f.tier); // CLI11 checked the name
+  if (f.downsample != 0) p.downsample = f.downsample;
+  if (!f.format.empty()) p.format = *img::parse_format(f.format);
+  if (f.no_half_texel) p.half_texel = false;
+  return load.scene;
 }
 
-nlohmann::json agreement_json(const effects::RunAgreement& a) {
-  nlohmann::json rows = nlohmann::json::array();
-  for (const auto& p : a.passes)
-    rows.push_back({{"pass", p.pass},
-                    {"target", p.target},
-                    {"max_abs", p.comparison.max_abs_all},
-                    {"rmse", p.comparison.rmse_all},
-                    {"identical_share", p.comparison.identical_share},
-                    {"within_targets", p.verdict.pass},
-                    {"summary", p.verdict.summary}});
-  return {{"rows", rows}, {"all_within_targets", a.all_pass}};
+// Prints which pass runs on which device: one line updated in place on a terminal, a line
+// per pass otherwise.
+effects::PassProgress progress_printer(const std::string& way, bool quiet) {
+  if (quiet) return {};
+  const bool tty = isatty(STDERR_FILENO) != 0;
+  return [way, tty](size_t i, size_t n, const effects::PassDesc& pass) {
+    const std::string line =
+        fmt::format("[{}] pass {}/{}: {} → {}", way, i + 1, n, pass.name, pass.target);
+    if (tty)
+      fmt::print(stderr, "\r\033[K{}{}", line, i + 1 == n ? "\n" : "");
+    else
+      fmt::print(stderr, "{}\n", line);
+  };
 }
 
-void print_table(const effects::RunAgreement& a) {
-  fmt::print("{:<12} {:<13} {:>10} {:>10} {:>10}  {}\n", "pass", "target", "max abs", "rmse",
-             "identical", "verdict");
-  for (const auto& p : a.passes)
-    fmt::print("{:<12} {:<13} {:>10.3g} {:>10.3g} {:>9.3f}%  {}\n", p.pass, p.target,
-               p.comparison.max_abs_all, p.comparison.rmse_all,
-               100.0 * p.comparison.identical_share, p.verdict.pass ? "ok" : "BEYOND TARGETS");
+nlohmann::json summary_json(const effects::Scene& scene, const effects::GlowPlan& plan,
+                            const std::vector<GlowWay>& ways) {
+  const effects::GlowParams& p = scene.params;
+  nlohmann::json j = {
+      {"scene",
+       {{"file", scene.file}, {"image", scene.image}, {"width", p.width}, {"height", p.height}}},
+      {"tier", effects::tier_name(p.tier)},
+      {"format", img::format_name(p.format)},
+      {"downsample", p.downsample},
+      {"half_texel", p.half_texel},
+      {"intensity", p.intensity},
+      {"glow", {{"width", plan.glow_width}, {"height", plan.glow_height}}},
+      {"taps", plan.taps.size()},
+      {"blur_passes_per_axis", plan.blur_passes_per_axis},
+      {"passes", plan.graph.passes.size()},
+      {"warnings", scene.warnings}};
+  for (const GlowWay& w : ways) {
+    nlohmann::json passes = nlohmann::json::array();
+    for (const effects::PassRecord& r : w.glow.run.passes)
+      passes.push_back({{"pass", r.pass}, {"ms", r.ms}});
+    j["timing_ms"][w.name] = {{"total", w.glow.run.total_ms}, {"passes", passes}};
+  }
+  return j;
 }
 
 int run(const GlowFlags& f) {
-  effects::GlowParams params;
-  auto format = img::parse_format(f.format);
-  if (!format || *format == img::Format::RGBA16F) {
-    fmt::print(stderr, "tierlift glow: error: --format '{}': expected rgba8 or rgba32f\n",
-               f.format);
-    return kExitUsage;
-  }
-  params.format = *format;
-  params.downsample = f.downsample;
-  params.half_texel = !f.no_half_texel;
-  const bool want_cpu = f.backend != "vulkan", want_vulkan = f.backend != "cpu";
+  int exit_code = kExitOk;
+  std::optional<effects::Scene> scene = scene_from_flags(f, &exit_code);
+  if (!scene) return exit_code;
+  const effects::GlowParams& params = scene->params;
+  const std::string where = scene->file.empty() ? "tierlift glow" : scene->file;
 
+  effects::GlowPlan plan = effects::build_glow(params);
+  if (!plan) {
+    fmt::print(stderr, "{}: error: {}\n", where, plan.error);
+    return kExitInvalid;
+  }
+  img::LoadResult image = effects::load_scene_image(*scene);
+  if (!image) {
+    fmt::print(stderr, "{}\n", image.error);
+    return kExitInvalid;
+  }
+  // The parameters' warnings after the flags' overrides, then the scene's own (the image's).
+  std::vector<std::string> warnings = effects::glow_warnings(params);
+  for (const std::string& w : scene->warnings)
+    if (std::find(warnings.begin(), warnings.end(), w) == warnings.end()) warnings.push_back(w);
+  for (const std::string& w : warnings) fmt::print(stderr, "{}: warning: {}\n", where, w);
+  scene->warnings = warnings;
+
+  const bool all = f.backend == "all";
   std::unique_ptr<vulkan::Device> vk;
-  if (want_vulkan) {
+  if (all || f.backend == "vulkan") {
     vulkan::DeviceOptions o;
     o.gpu_filter = f.gpu;
     std::string err;
     vk = vulkan::Device::create(o, &err);
     if (!vk) {
-      fmt::print(stderr, "tierlift glow: error: {}\n", err);
-      return kExitUsage;
-    }
-    // Exact bilinear weights on both devices: the Vulkan device samples float textures
-    // (R32G32B32A32_SFLOAT) and lavapipe weights those in float, not with the 8 sub-texel
-    // bits it reports (measured: a read 0.3/256 texel off a centre returns the exact blend).
-  }
-  effects::GlowPlan plan = effects::build_glow_dx9(params);
-  if (!plan) {
-    fmt::print(stderr, "tierlift glow: error: {}\n", plan.error);
-    return kExitUsage;
-  }
-  const img::Image scene = effects::make_default_scene(params.width, params.height);
-
-  std::vector<DeviceRun> runs;
-  const bool keep = want_cpu && want_vulkan;
-  if (want_cpu) {
-    effects::CpuPassDevice dev(f.threads);
-    runs.push_back({"cpu", effects::run_glow(plan, scene, dev, keep)});
-  }
-  if (want_vulkan) {
-    auto dev = effects::make_vulkan_pass_device(*vk);
-    runs.push_back({"vulkan", effects::run_glow(plan, scene, *dev, keep)});
-  }
-  for (const DeviceRun& r : runs) {
-    if (!r.glow.run.ok) {
-      fmt::print(stderr, "tierlift glow: error: {}\n", r.glow.run.error);
-      return kExitInvalid;
-    }
-    if (f.output.empty()) continue;
-    if (std::string err = write_outputs(f.output, r); !err.empty()) {
-      fmt::print(stderr, "tierlift glow: error: {}\n", err);
+      error(err);
       return kExitUsage;
     }
   }
+  std::vector<std::pair<std::string, std::unique_ptr<effects::PassDevice>>> devices;
+  if (all || f.backend == "cpu")
+    devices.emplace_back("cpu", std::make_unique<effects::CpuPassDevice>(f.threads));
+  if (vk) devices.emplace_back("vulkan", effects::make_vulkan_pass_device(*vk));
+  if (all || f.backend == "analytic")
+    devices.emplace_back("analytic", effects::make_analytic_pass_device());
 
-  std::optional<effects::RunAgreement> agreement;
-  if (keep) {
-    agreement = effects::compare_runs(runs[0].glow.run, runs[0].glow.images, runs[1].glow.run,
-                                      runs[1].glow.images, std::string(effects::kFinalTexture));
-    if (!agreement->error.empty()) {
-      fmt::print(stderr, "tierlift glow: error: {}\n", agreement->error);
+  const bool keep = devices.size() > 1;
+  std::vector<GlowWay> ways;
+  for (auto& [name, device] : devices) {
+    ways.push_back({name, effects::run_glow(plan, *image.image, *device, keep,
+                                            progress_printer(name, f.quiet || f.json))});
+    if (!ways.back().glow.run.ok) {
+      error(ways.back().glow.run.error);
       return kExitInvalid;
     }
   }
+  std::string err;
+  const std::vector<PairAgreement> pairs = compare_ways(ways, &err);
+  if (!err.empty()) {
+    error(err);
+    return kExitInvalid;
+  }
+  std::vector<std::string> written;
+  if (!f.output.empty())
+    if (err = write_glow_images(f.output, ways, params.format != img::Format::RGBA8, &written);
+        !err.empty()) {
+      error(err);
+      return kExitUsage;
+    }
+
+  bool all_within = true;
+  for (const PairAgreement& p : pairs) all_within = all_within && p.agreement.all_pass;
   if (f.json) {
-    nlohmann::json j = {{"scene", {{"width", params.width}, {"height", params.height}}},
-                        {"format", img::format_name(params.format)},
-                        {"downsample", params.downsample},
-                        {"half_texel", params.half_texel},
-                        {"glow", {{"width", plan.glow_width}, {"height", plan.glow_height}}},
-                        {"taps", plan.taps.size()},
-                        {"passes", plan.graph.passes.size()}};
-    for (const DeviceRun& r : runs) j["timing_ms"][r.name] = r.glow.run.total_ms;
+    nlohmann::json j = summary_json(*scene, plan, ways);
     if (vk) j["vulkan_device"] = vk->name();
-    if (agreement) j["agreement"] = agreement_json(*agreement);
+    j["agreement"] = agreement_json(pairs);
+    j["all_within_targets"] = all_within;
+    j["written"] = written;
     fmt::print("{}\n", j.dump(2));
   } else {
-    fmt::print("glow dx9: {}x{} {}, downsample {} ({}x{}), {} taps, {} blur passes per axis, "
+    fmt::print("glow {}: {}x{} {}, downsample {} ({}x{}), {} taps, {} blur passes per axis, "
                "half texel {}\n",
-               params.width, params.height, img::format_name(params.format), params.downsample,
-               plan.glow_width, plan.glow_height, plan.taps.size(), plan.blur_passes_per_axis,
+               effects::tier_name(params.tier), params.width, params.height,
+               img::format_name(params.format), params.downsample, plan.glow_width,
+               plan.glow_height, plan.taps.size(), plan.blur_passes_per_axis,
                params.half_texel ? "on" : "off");
-    for (const DeviceRun& r : runs)
-      fmt::print("{}: {} passes in {:.1f} ms\n", r.name, r.glow.run.passes.size(),
-                 r.glow.run.total_ms);
-    if (agreement) {
-      fmt::print("cpu vs vulkan ({}):\n", vk->name());
-      print_table(*agreement);
-    }
+    for (const GlowWay& w : ways)
+      fmt::print("{}: {} passes in {:.1f} ms{}\n", w.name, w.glow.run.passes.size(),
+                 w.glow.run.total_ms, w.name == "vulkan" ? fmt::format(" ({})", vk->name()) : "");
+    print_agreement_table(pairs);
+    if (!pairs.empty())
+      fmt::print("{}\n", all_within ? "every pair within design.md's targets"
+                                    : "BEYOND TARGETS where marked '!'");
+    for (const std::string& file : written) fmt::print("wrote {}\n", file);
   }
-  if (agreement && !agreement->all_pass) {
-    for (const auto& p : agreement->passes)
-      if (!p.verdict.pass) fmt::print(stderr, "tierlift glow: {}: {}\n", p.pass, p.verdict.summary);
-    fmt::print(stderr, "tierlift glow: error: cpu and vulkan differ beyond the targets\n");
+  if (!all_within) {
+    for (const PairAgreement& p : pairs)
+      for (const effects::PassAgreement& row : p.agreement.passes)
+        if (!row.verdict.pass)
+          fmt::print(stderr, "tierlift glow: {} vs {}, {}: {}\n", p.a, p.b, row.pass,
+                     row.verdict.summary);
+    error("the ways differ beyond the targets");
     return kExitInvalid;
   }
   return kExitOk;
@@ -176,19 +200,28 @@ int run(const GlowFlags& f) {
 void register_glow_command(CLI::App& app) {
   auto f = std::make_shared<GlowFlags>();
   CLI::App* sub = app.add_subcommand(
-      "glow", "Run the Real-Time Glow (tier dx9: Listings 1 + 2) over the built-in scene");
-  sub->add_option("--backend", f->backend, "cpu | vulkan | all (all: compare the devices)")
-      ->check(CLI::IsMember({"cpu", "vulkan", "all"}))
-      ->capture_default_str();
+      "glow", "Run the Real-Time Glow (GPU Gems ch. 21) on the interpreter, on Vulkan and as "
+              "analytic math, and print how they agree");
+  auto* scene = sub->add_option("--scene", f->scene, "Scene file (JSON, listings/scenes/)");
+  sub->add_option("--image", f->image, "PNG with alpha as the scene (default glow parameters)")
+      ->excludes(scene);
+  sub->add_option("--tier", f->tier, "dx9 (Listings 1 + 2) | dx8 (Listings 3 + 4)")
+      ->check(CLI::IsMember({"dx9", "dx8"}));
   sub->add_option("--downsample", f->downsample, "Glow resolution 1/N, N = 1..4")
-      ->check(CLI::Range(1u, 4u))
+      ->check(CLI::Range(1u, 4u));
+  sub->add_option("--format", f->format, "rgba8 | rgba16f | rgba32f (every texture)")
+      ->check(CLI::IsMember({"rgba8", "rgba16f", "rgba32f"}));
+  sub->add_option("--backend", f->backend,
+                  "cpu | vulkan | analytic | all (all: the three ways and their agreement)")
+      ->check(CLI::IsMember({"cpu", "vulkan", "analytic", "all"}))
       ->capture_default_str();
-  sub->add_option("--format", f->format, "rgba8 | rgba32f (every texture)")->capture_default_str();
   sub->add_flag("--no-half-texel", f->no_half_texel,
                 "Leave the half texel out of the blur offsets (taps land on texel corners)");
   sub->add_option("-o,--output", f->output,
-                  "Folder for {scene,glow,final}-{cpu,vulkan}.png (written opaque)");
-  sub->add_flag("--json", f->json, "Print a JSON summary");
+                  "Folder for {scene,glow,final}-{cpu,vulkan,analytic}.png (opaque; .pfm too "
+                  "for float formats)");
+  sub->add_flag("--json", f->json, "Print a JSON summary (no progress lines)");
+  sub->add_flag("-q,--quiet", f->quiet, "No progress lines");
   sub->add_option("--threads", f->threads, "CPU worker threads (0 = every core)")
       ->capture_default_str();
   sub->add_option("--gpu", f->gpu, "Vulkan device name filter (default: lavapipe)");

@@ -12,4 +12,5 @@ $SUDO apt-get install -y --no-install-recommends \
   glslang-dev glslang-tools spirv-tools spirv-headers \
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers \
   libglm-dev libgtest-dev libgmock-dev libbenchmark-dev \
-  libcli11-dev libfmt-dev nlohmann-json3-dev libstb-dev libpng-dev zlib1g-dev
+  libcli11-dev libfmt-dev nlohmann-json3-dev libstb-dev libpng-dev zlib1g-dev \
+  libopencv-imgproc-dev  # OpenCV core + imgproc (~6.5 MB): the glow benchmark's peer only

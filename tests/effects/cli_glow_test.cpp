@@ -46,22 +46,39 @@ TEST_F(CliGlow, CpuRunWritesTheThreeImages) {
   ASSERT_EQ(run_cli("glow --backend cpu --downsample 4 --json -o " + (dir / "out").string(), log),
             0)
       << read(log);
-  for (const char* f : {"scene-cpu.png", "glow-cpu.png", "final-cpu.png"})
-    EXPECT_TRUE(fs::exists(dir / "out" / f)) << f;
+  // RGBA32F (the default): PNG and PFM of each image.
+  for (const char* f : {"scene-cpu", "glow-cpu", "final-cpu"})
+    for (const char* ext : {".png", ".pfm"})
+      EXPECT_TRUE(fs::exists(dir / "out" / (std::string(f) + ext))) << f << ext;
   EXPECT_FALSE(fs::exists(dir / "out" / "final-vulkan.png"));
+  EXPECT_FALSE(fs::exists(dir / "out" / "final-analytic.png"));
   const std::string text = read(log);
-  // 1280×720 / 4 = 320×180; σ 8 px / 4 → 13 taps; 1 + 1 + 2 + 2 + 1 passes.
+  // 1280×720 / 4 = 320×180; σ 8 px / 4 → R = 6, 13 taps → 2 dx9 passes an axis; a 4×4
+  // block takes 4 downsample passes of 4 point reads: 1 + 4 + 2 + 2 + 1 passes.
   EXPECT_NE(text.find("\"taps\": 13"), std::string::npos) << text;
-  EXPECT_NE(text.find("\"passes\": 7"), std::string::npos) << text;
+  EXPECT_NE(text.find("\"passes\": 10"), std::string::npos) << text;
   EXPECT_NE(text.find("\"width\": 320"), std::string::npos) << text;
+  EXPECT_NE(text.find("\"tier\": \"dx9\""), std::string::npos) << text;
 }
 
 TEST_F(CliGlow, BadFlagsAreUsageErrors) {
   const fs::path log = dir / "log.txt";
   EXPECT_EQ(run_cli("glow --downsample 5", log), 2) << read(log);
-  EXPECT_EQ(run_cli("glow --format rgba16f --backend cpu", log), 2) << read(log);
-  EXPECT_NE(read(log).find("expected rgba8 or rgba32f"), std::string::npos);
+  EXPECT_EQ(run_cli("glow --format rgba4", log), 2) << read(log);
+  EXPECT_EQ(run_cli("glow --tier dx7", log), 2) << read(log);
   EXPECT_EQ(run_cli("glow --backend gpu", log), 2) << read(log);
+  EXPECT_EQ(run_cli("glow --scene a.json --image b.png", log), 2) << read(log);
+}
+
+TEST_F(CliGlow, MissingSceneFileIsAnErrorAndWritesNothing) {
+  const fs::path log = dir / "log.txt";
+  EXPECT_EQ(
+      run_cli("glow --scene " + (dir / "nope.json").string() + " -o " + (dir / "out").string(),
+              log),
+      1)
+      << read(log);
+  EXPECT_NE(read(log).find("nope.json"), std::string::npos) << read(log);
+  EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
 } // namespace

@@ -132,14 +132,16 @@ TEST(ExtractTaps, NonLinearListingsAreErrors) {
     EXPECT_TRUE(t.taps.empty());
     EXPECT_NE(t.error.find(k.needle), std::string::npos) << k.ps << " → " << t.error;
   }
-  // A vertex listing that scales the texcoord is not "texcoord + offset".
+  // A vertex listing that swaps the texcoord's axes is not "texcoord · scale + offset"
+  // (scaling alone is: scaled_coords_test.cpp).
   auto ps = parse(read_listing("listing2_blur8_weighted_sum.psh"), "listing2");
-  auto scaled = parse("vs.2.0\ndcl_position v0\ndcl_texcoord v3\nmov oPos, v0\n"
-                      "mul oT0, v3, c0\n",
-                      "vs");
-  auto t = ref::extract_taps(scaled, c, ps, c);
+  auto swapped = parse("vs.2.0\ndcl_position v0\ndcl_texcoord v3\nmov oPos, v0\n"
+                       "mul oT0, v3.yxzw, c0\n",
+                       "vs");
+  auto t = ref::extract_taps(swapped, c, ps, c);
   EXPECT_FALSE(t);
-  EXPECT_NE(t.error.find("oT0"), std::string::npos) << t.error;
+  EXPECT_NE(t.error.find("oT0.x is not texcoord.x"), std::string::npos) << t.error;
+  EXPECT_NE(t.error.find("reads texcoord.y"), std::string::npos) << t.error;
   // oT1..oT7 never written.
   auto partial = parse("vs.2.0\ndcl_position v0\ndcl_texcoord v3\nmov oPos, v0\n"
                        "add oT0, v3, c0\n",

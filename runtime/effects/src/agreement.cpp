@@ -1,22 +1,70 @@
 #include "tierlift/effects/agreement.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <fmt/format.h>
 
 namespace tierlift::effects {
 namespace {
 
+// Pixels that differ where either run's device gives slack (PassDevice::rounding_midpoints:
+// how many 8-bit steps a float device may store away from it), by no more than that slack
+// in every channel.
+std::vector<size_t> explained_pixels(const img::Image& a, const img::Image& b,
+                                     const std::vector<uint8_t>& mask_a,
+                                     const std::vector<uint8_t>& mask_b) {
+  const size_t pixels = size_t(a.width) * a.height;
+  std::vector<size_t> out;
+  if (a.format != img::Format::RGBA8 || (mask_a.size() != pixels && mask_b.size() != pixels) ||
+      b.rgba.size() != a.rgba.size())
+    return out;
+  for (size_t p = 0; p < pixels; ++p) {
+    const int slack =
+        std::max(mask_a.size() == pixels ? mask_a[p] : 0, mask_b.size() == pixels ? mask_b[p] : 0);
+    if (slack == 0) continue;
+    bool differs = false, within_slack = true;
+    for (size_t c = 0; c < 4; ++c) {
+      const double d = std::fabs(double(a.rgba[4 * p + c]) - double(b.rgba[4 * p + c]));
+      differs = differs || d != 0;
+      within_slack = within_slack && d <= slack / 255.0 + 1e-7;
+    }
+    if (differs && within_slack) out.push_back(p);
+  }
+  return out;
+}
+
 bool add_row(RunAgreement& out, const std::string& pass, const std::string& target,
-             const img::Image& a, const img::Image& b) {
+             const img::Image& a, const img::Image& b, const std::vector<uint8_t>& mask_a,
+             const std::vector<uint8_t>& mask_b) {
   std::string err;
   auto c = img::compare(a, b, &err);
   if (!c) {
     out.error = fmt::format("{}: {}", pass, err);
     return false;
   }
+  const std::vector<size_t> explained = explained_pixels(a, b, mask_a, mask_b);
+  PassAgreement row{pass, target, *c, explained.size(), c->identical_share, {}};
+  // The verdict sees explained pixels as identical: in the share and in the max abs.
+  img::Comparison judged = *c;
+  if (!explained.empty()) {
+    img::Image b_explained = b;
+    for (size_t p : explained)
+      std::copy_n(a.rgba.begin() + 4 * p, 4, b_explained.rgba.begin() + 4 * p);
+    judged = *img::compare(a, b_explained);
+    judged.full_scale = c->full_scale;
+  }
+  row.identical_share_with_midpoints = judged.identical_share;
   // Judge by the format the target stores (both images carry it).
-  img::Verdict v = img::judge(*c, a.format);
-  out.passes.push_back({pass, target, *c, v});
+  row.verdict = img::judge(judged, a.format);
+  out.passes.push_back(std::move(row));
   return true;
+}
+
+const std::vector<uint8_t>& mask_of(const GraphRun& run, const std::string& texture) {
+  static const std::vector<uint8_t> kNone;
+  auto it = run.midpoints.find(texture);
+  return it == run.midpoints.end() ? kNone : it->second;
 }
 
 } // namespace
@@ -35,14 +83,16 @@ RunAgreement compare_runs(const GraphRun& a, const ImageMap& a_images, const Gra
           fmt::format("pass {} is '{}' in one run and '{}' in the other", i, pa.pass, pb.pass);
       return out;
     }
-    if (!add_row(out, pa.pass, pa.target, pa.result, pb.result)) return out;
+    if (!add_row(out, pa.pass, pa.target, pa.result, pb.result, pa.midpoints, pb.midpoints))
+      return out;
   }
   auto fa = a_images.find(frame), fb = b_images.find(frame);
   if (fa == a_images.end() || fb == b_images.end()) {
     out.error = fmt::format("no texture '{}' to compare as the frame", frame);
     return out;
   }
-  if (!add_row(out, "frame", frame, fa->second, fb->second)) return out;
+  if (!add_row(out, "frame", frame, fa->second, fb->second, mask_of(a, frame), mask_of(b, frame)))
+    return out;
   out.all_pass = true;
   for (const PassAgreement& p : out.passes) out.all_pass = out.all_pass && p.verdict.pass;
   return out;

@@ -68,7 +68,7 @@ std::optional<cpu::Pass> make_pass(const PassDesc& desc, const ImageMap& images,
 }
 
 GraphRun run_graph(const EffectGraph& graph, PassDevice& device, ImageMap& images,
-                   bool keep_pass_images) {
+                   bool keep_pass_images, const PassProgress& progress) {
   GraphRun run;
   auto t_all = std::chrono::steady_clock::now();
   run.error = check_graph(graph);
@@ -84,18 +84,20 @@ GraphRun run_graph(const EffectGraph& graph, PassDevice& device, ImageMap& image
   if (!run.error.empty()) return run;
 
   for (const PassDesc& desc : graph.passes) {
+    if (progress) progress(run.passes.size(), graph.passes.size(), desc);
     auto t0 = std::chrono::steady_clock::now();
     if (std::string e = device.run_pass(desc); !e.empty()) {
       run.error = fmt::format("pass '{}' on {}: {}", desc.name, device.name(), e);
       return run;
     }
-    PassRecord rec{desc.name, desc.target, {}, ms_since(t0)};
+    PassRecord rec{desc.name, desc.target, {}, ms_since(t0), {}};
     if (keep_pass_images)
       if (std::string e = device.read_texture(desc.target, rec.result); !e.empty()) {
         run.error = fmt::format("pass '{}' on {}: reading '{}' back: {}", desc.name, device.name(),
                                 desc.target, e);
         return run;
       }
+    if (keep_pass_images) device.rounding_midpoints(desc.target, rec.midpoints);
     run.passes.push_back(std::move(rec));
   }
   // Every texture back into the map (a failed run leaves the map as it was given).
@@ -106,6 +108,9 @@ GraphRun run_graph(const EffectGraph& graph, PassDevice& device, ImageMap& image
       return run;
     }
   for (auto& [name, image] : out) images[name] = std::move(image);
+  for (const TextureDesc& t : graph.textures)
+    if (std::vector<uint8_t> mask; device.rounding_midpoints(t.name, mask))
+      run.midpoints[t.name] = std::move(mask);
   run.ok = true;
   run.total_ms = ms_since(t_all);
   return run;

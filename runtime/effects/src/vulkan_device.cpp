@@ -1,4 +1,6 @@
-// The Vulkan device behind the PassDevice interface (built only with tierlift_vulkan).
+// The Vulkan device behind the PassDevice interface (built only with tierlift_vulkan): the
+// graph's textures live in a vulkan::TextureSet for the run, so passes read and write device
+// memory and nothing comes back to the host until read_texture asks for it.
 #include "tierlift/effects/device.h"
 
 #if TIERLIFT_HAVE_VULKAN
@@ -6,47 +8,69 @@
 
 #include "tierlift/effects/run_graph.h"
 #include "tierlift/vulkan/device.h"
+#include "tierlift/vulkan/texture_set.h"
 
 namespace tierlift::effects {
 namespace {
 
 class VulkanPassDevice final : public PassDevice {
 public:
-  explicit VulkanPassDevice(vulkan::Device& device) : device_(device) {}
+  explicit VulkanPassDevice(vulkan::Device& device) : textures_(device) {}
   std::string name() const override { return "vulkan"; }
 
   std::string begin_run(const EffectGraph& graph, const ImageMap& inputs) override {
-    graph_ = &graph;
-    images_.clear();
+    graph_ = nullptr;
+    ids_.clear();
+    placeholders_.clear();
+    textures_.clear();
     for (const TextureDesc& t : graph.textures) {
-      auto it = inputs.find(t.name);
-      images_[t.name] = it != inputs.end() ? it->second : img::Image(t.width, t.height, t.format);
+      vulkan::TextureId id{};
+      std::string e = textures_.create(t.width, t.height, t.format, id);
+      if (auto it = inputs.find(t.name); e.empty() && it != inputs.end())
+        e = textures_.upload(id, it->second);
+      if (!e.empty()) {
+        textures_.clear();
+        ids_.clear();
+        placeholders_.clear();
+        return fmt::format("texture '{}': {}", t.name, e);
+      }
+      ids_[t.name] = id;
+      // make_pass wants an image per bound texture; the draw samples the resident one.
+      placeholders_.emplace(t.name, img::Image());
     }
+    graph_ = &graph;
     return {};
   }
 
   std::string run_pass(const PassDesc& desc) override {
     if (!graph_) return "no run was begun";
     std::string error;
-    std::optional<cpu::Pass> pass = make_pass(desc, images_, graph_->conventions, &error);
+    std::optional<cpu::Pass> pass = make_pass(desc, placeholders_, graph_->conventions, &error);
     if (!pass) return error;
-    auto it = images_.find(desc.target);
-    if (it == images_.end()) return fmt::format("no texture '{}'", desc.target);
-    vulkan::DrawResult r = device_.draw(*pass, it->second);
+    auto target = ids_.find(desc.target);
+    if (target == ids_.end()) return fmt::format("no texture '{}'", desc.target);
+    vulkan::StageTextures stages{};
+    for (const TextureBind& b : desc.textures) {
+      auto it = ids_.find(b.texture); // make_pass checked the name and the stage already
+      if (it == ids_.end() || b.stage >= stages.size())
+        return fmt::format("pass '{}': texture '{}' has no image", desc.name, b.texture);
+      stages[b.stage] = it->second;
+    }
+    vulkan::DrawResult r = textures_.draw(*pass, stages, target->second);
     return r.ok ? std::string() : r.error;
   }
 
   std::string read_texture(const std::string& name, img::Image& out) override {
-    auto it = images_.find(name);
-    if (it == images_.end()) return fmt::format("no texture '{}'", name);
-    out = it->second;
-    return {};
+    auto it = ids_.find(name);
+    if (it == ids_.end()) return fmt::format("no texture '{}'", name);
+    return textures_.read(it->second, out);
   }
 
 private:
-  vulkan::Device& device_;
+  vulkan::TextureSet textures_;
   const EffectGraph* graph_ = nullptr;
-  ImageMap images_;
+  std::map<std::string, vulkan::TextureId, std::less<>> ids_;
+  ImageMap placeholders_;
 };
 
 } // namespace

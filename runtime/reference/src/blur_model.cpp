@@ -26,9 +26,10 @@ std::optional<Size> target_size(const img::Image& src, const PassModel& m, std::
   return s;
 }
 
-void store(img::Image& out, uint32_t x, uint32_t y, const std::array<double, 4>& v) {
+void store(img::Image& out, uint32_t x, uint32_t y, const std::array<double, 4>& v,
+           Unorm8Ties ties) {
   float* p = out.at(x, y);
-  for (int c = 0; c < 4; ++c) p[c] = img::quantize(out.format, static_cast<float>(v[c]));
+  for (int c = 0; c < 4; ++c) p[c] = store_value(out.format, v[c], ties);
 }
 
 } // namespace
@@ -44,11 +45,11 @@ img::LoadResult blur_pass(const std::vector<Tap>& taps, const img::Image& source
       auto uv = pixel_uv(i, j, size->w, size->h, model);
       std::array<double, 4> sum{};
       for (const Tap& t : taps) {
-        auto s = sample(source, uv[0] + t.offset[0], uv[1] + t.offset[1], model.sampler,
-                        model.conventions.subtexel_bits);
+        auto s = sample(source, t.scale[0] * uv[0] + t.offset[0], t.scale[1] * uv[1] + t.offset[1],
+                        model.sampler, model.conventions.subtexel_bits);
         for (int c = 0; c < 4; ++c) sum[c] += t.weight[c] * s[c];
       }
-      store(out, i, j, sum);
+      store(out, i, j, sum, model.unorm8_ties);
     }
   return {std::move(out), ""};
 }
@@ -81,13 +82,13 @@ img::LoadResult discrete_convolution(const std::vector<TexelTap>& taps, const im
         int64_t x = address_texel(int64_t{i} + t.dx, source.width, model.sampler.address_u);
         int64_t y = address_texel(int64_t{j} + t.dy, source.height, model.sampler.address_v);
         for (int c = 0; c < 4; ++c) {
-          double v = (x < 0 || y < 0)
-                         ? model.sampler.border[c]
-                         : source.at(static_cast<uint32_t>(x), static_cast<uint32_t>(y))[c];
+          double v = (x < 0 || y < 0) ? model.sampler.border[c]
+                                      : texel_value(source, static_cast<uint32_t>(x),
+                                                    static_cast<uint32_t>(y), c);
           sum[c] += t.weight[c] * v;
         }
       }
-      store(out, i, j, sum);
+      store(out, i, j, sum, model.unorm8_ties);
     }
   return {std::move(out), ""};
 }
@@ -128,8 +129,8 @@ img::LoadResult corner_model(const std::vector<Tap>& taps, const img::Image& sou
       auto uv = pixel_uv(i, j, size->w, size->h, model);
       std::array<double, 4> sum{};
       for (const Tap& t : taps) {
-        auto sx = straddle((uv[0] + t.offset[0]) * w - 0.5);
-        auto sy = straddle((uv[1] + t.offset[1]) * h - 0.5);
+        auto sx = straddle((t.scale[0] * uv[0] + t.offset[0]) * w - 0.5);
+        auto sy = straddle((t.scale[1] * uv[1] + t.offset[1]) * h - 0.5);
         if (!sx || !sy)
           return {std::nullopt, fmt::format("tap at offset ({}, {}) lands neither on a texel "
                                             "centre nor half-way between texels",
@@ -140,14 +141,14 @@ img::LoadResult corner_model(const std::vector<Tap>& taps, const img::Image& sou
             int64_t x = address_texel(sx->first + a, source.width, model.sampler.address_u);
             int64_t y = address_texel(sy->first + b, source.height, model.sampler.address_v);
             for (int c = 0; c < 4; ++c) {
-              double v = (x < 0 || y < 0)
-                             ? model.sampler.border[c]
-                             : source.at(static_cast<uint32_t>(x), static_cast<uint32_t>(y))[c];
+              double v = (x < 0 || y < 0) ? model.sampler.border[c]
+                                          : texel_value(source, static_cast<uint32_t>(x),
+                                                        static_cast<uint32_t>(y), c);
               sum[c] += t.weight[c] * share * v;
             }
           }
       }
-      store(out, i, j, sum);
+      store(out, i, j, sum, model.unorm8_ties);
     }
   return {std::move(out), ""};
 }
@@ -156,6 +157,12 @@ std::optional<CornerPrediction> predict_corner_difference(const std::vector<Tap>
                                                           const img::Image& source,
                                                           const PassModel& model,
                                                           std::string* error) {
+  for (const Tap& t : taps)
+    if (t.scale != std::array<double, 2>{1, 1}) {
+      // A scaled coordinate moves by a different amount at every pixel: no fixed texel.
+      if (error) *error = "the corner prediction needs taps of the form texcoord + offset";
+      return std::nullopt;
+    }
   PassModel exact = model;
   exact.target_format = img::Format::RGBA32F; // the prediction itself is not stored
   auto corner = corner_model(taps, source, exact);

@@ -1,5 +1,6 @@
 // Vertex listing → oT# as affine forms of the texcoord input: every register component is
 // Σ_c a_c · texcoord.c + k, or "opaque" (depends on something else, or is not affine).
+#include <cmath>
 #include <fmt/format.h>
 #include <map>
 
@@ -79,20 +80,26 @@ public:
       }
       const Reg& r = it->second;
       std::string why;
-      std::array<double, 2> off{};
+      CoordAffine form;
       for (int c = 0; c < 2 && why.empty(); ++c) {
         const Affine& a = r[c];
         if (!a.opaque.empty()) {
           why = a.opaque;
           break;
         }
+        // u' = scale·u + offset: no cross term (u' from v, or from the texcoord's z/w).
         for (int s = 0; s < 4; ++s)
-          if (a.tc[s] != (s == c ? 1.0 : 0.0))
-            why = fmt::format("oT{}.{} is not texcoord.{} + constant", n, "xy"[c], "xy"[c]);
-        off[c] = a.k;
+          if (s != c && a.tc[s] != 0.0)
+            why = fmt::format("oT{}.{} is not texcoord.{} · scale + constant (it reads "
+                              "texcoord.{})",
+                              n, "xy"[c], "xy"[c], "xyzw"[s]);
+        if (why.empty() && !(std::isfinite(a.tc[c]) && std::isfinite(a.k)))
+          why = fmt::format("oT{}.{}: scale or offset is not finite", n, "xy"[c]);
+        form.scale[c] = a.tc[c];
+        form.offset[c] = a.k;
       }
       if (why.empty())
-        out.offset[n] = off;
+        out.coord[n] = form;
       else
         out.why_not[n] = why;
     }

@@ -46,6 +46,19 @@ std::optional<AffineMod> affine_modifier(ir::SrcMod mod) {
   }
 }
 
+std::string place_taps(const CoordForms& coords, std::vector<Tap>& taps) {
+  for (Tap& t : taps) {
+    if (t.texcoord >= coords.coord.size() || !coords.coord[t.texcoord])
+      return fmt::format("vertex listing: oT{} (sampled by the pixel listing) is not the "
+                         "texcoord input times a scale plus a constant: {}",
+                         t.texcoord,
+                         t.texcoord < 8 ? coords.why_not[t.texcoord] : "no such register");
+    t.offset = coords.coord[t.texcoord]->offset;
+    t.scale = coords.coord[t.texcoord]->scale;
+  }
+  return "";
+}
+
 } // namespace detail
 
 TapExtraction extract_taps(const ir::Program& vs, const std::vector<Vec4>& vs_consts,
@@ -65,15 +78,9 @@ TapExtraction extract_taps(const ir::Program& vs, const std::vector<Vec4>& vs_co
     out.error = "pixel listing: " + sum.error;
     return out;
   }
-  for (Tap& t : sum.taps) {
-    if (t.texcoord >= coords.offset.size() || !coords.offset[t.texcoord]) {
-      out.error =
-          fmt::format("vertex listing: oT{} (sampled by the pixel listing) is not the "
-                      "texcoord input plus a constant: {}",
-                      t.texcoord, t.texcoord < 8 ? coords.why_not[t.texcoord] : "no such register");
-      return out;
-    }
-    t.offset = *coords.offset[t.texcoord];
+  if (std::string e = detail::place_taps(coords, sum.taps); !e.empty()) {
+    out.error = e;
+    return out;
   }
   out.taps = std::move(sum.taps);
   out.notes = std::move(sum.notes);

@@ -25,12 +25,15 @@ struct AffineMod {
 };
 std::optional<AffineMod> affine_modifier(ir::SrcMod mod);
 
-// Vertex side: oT# = texcoord input + constant, per coordinate register.
+// Vertex side: oT# = texcoord input · scale + constant, per coordinate register and axis.
+struct CoordAffine {
+  std::array<double, 2> scale{1, 1}, offset{}; // .xy
+};
 struct CoordForms {
   uint32_t texcoord_input = 0;
-  std::array<std::optional<std::array<double, 2>>, 8> offset; // per oT#, .xy
-  std::array<std::string, 8> why_not;                         // when offset is empty: the reason
-  std::string error; // fatal: the listing cannot be evaluated at all
+  std::array<std::optional<CoordAffine>, 8> coord; // per oT#
+  std::array<std::string, 8> why_not;              // when coord is empty: the reason
+  std::string error;                               // fatal: the listing cannot be evaluated at all
 };
 CoordForms evaluate_coords(const ir::Program& vs, const std::vector<Vec4>& consts);
 
@@ -41,5 +44,14 @@ struct SumForm {
   std::string error;
 };
 SumForm evaluate_sum(const ir::Program& ps, const std::vector<Vec4>& consts);
+
+// Fills each tap's offset and scale from its oT#'s form; an error when that oT# has none.
+std::string place_taps(const CoordForms& coords, std::vector<Tap>& taps);
+
+// The (texcoord, sampler) a sampling instruction reads, nullopt for an instruction that
+// samples nothing, or *error (naming the instruction) for a read the model cannot place
+// (dependent or modified coordinates, texture ops other than plain samples).
+std::optional<std::pair<uint32_t, uint32_t>> sample_key(const ir::Instruction& in,
+                                                        std::string* error);
 
 } // namespace tierlift::ref::detail

@@ -45,8 +45,9 @@ std::array<double, 4> texel(const img::Image& t, int64_t x, int64_t y, const Sam
   int64_t ax = address_texel(x, t.width, s.address_u);
   int64_t ay = address_texel(y, t.height, s.address_v);
   if (ax < 0 || ay < 0) return s.border;
-  const float* p = t.at(static_cast<uint32_t>(ax), static_cast<uint32_t>(ay));
-  return {p[0], p[1], p[2], p[3]};
+  const auto px = static_cast<uint32_t>(ax), py = static_cast<uint32_t>(ay);
+  return {texel_value(t, px, py, 0), texel_value(t, px, py, 1), texel_value(t, px, py, 2),
+          texel_value(t, px, py, 3)};
 }
 
 // Texel-space position p = u·N − 0.5 split into the lower texel and the fraction.
@@ -54,10 +55,12 @@ struct Split {
   int64_t i0;
   double frac;
 };
-Split split(double p, int subtexel_bits) {
+Split split(double p, int subtexel_bits, double snap) {
   p = limit_position(p);
-  double nearest = std::nearbyint(p);
-  if (std::fabs(p - nearest) < 1e-9) p = nearest; // on a texel centre: read it exactly
+  // On a texel centre (integer) or half-way between two (integer + ½), within `snap`: read
+  // exactly there (see blur_model.h).
+  const double nearest = std::nearbyint(2.0 * p) / 2.0;
+  if (std::fabs(p - nearest) <= snap) p = nearest;
   double f0 = std::floor(p);
   double frac = p - f0;
   auto i0 = static_cast<int64_t>(f0);
@@ -74,15 +77,21 @@ Split split(double p, int subtexel_bits) {
 
 } // namespace
 
+double snap_tolerance(uint32_t texels) {
+  return std::fmax(1e-9, std::ldexp(double(texels), -21));
+}
+
 std::array<double, 4> sample(const img::Image& t, double u, double v, const SamplerModel& s,
                              int subtexel_bits) {
   if (t.width == 0 || t.height == 0) return {0, 0, 0, 1};
   const double w = t.width, h = t.height;
   if (s.filter == Filter::Point) {
-    Split sx = split(u * w, 0), sy = split(v * h, 0);
+    // floor(u·N): only a position within 1e-9 of a texel edge is moved onto it.
+    Split sx = split(u * w, 0, 1e-9), sy = split(v * h, 0, 1e-9);
     return texel(t, sx.i0, sy.i0, s);
   }
-  Split sx = split(u * w - 0.5, subtexel_bits), sy = split(v * h - 0.5, subtexel_bits);
+  Split sx = split(u * w - 0.5, subtexel_bits, snap_tolerance(t.width)),
+        sy = split(v * h - 0.5, subtexel_bits, snap_tolerance(t.height));
   std::array<double, 4> out{};
   const double wx[2] = {1.0 - sx.frac, sx.frac}, wy[2] = {1.0 - sy.frac, sy.frac};
   for (int b = 0; b < 2; ++b)

@@ -107,8 +107,9 @@ public:
     if (clamped_) out.notes.push_back("ps_1_x constants were clamped to [-1, 1]");
     if (ps1x)
       out.notes.push_back(
-          "ps_1_x register clamps to [-1, 1] are not modelled: exact while partial sums stay "
-          "in range (non-negative weights summing to at most 1)");
+          "ps_1_x register clamps to [-1, 1] are not part of the taps: linear_pass clamps "
+          "the samples and the final sum, exact while no partial sum leaves the range and "
+          "comes back (non-negative weights and samples)");
     return out;
   }
 
@@ -149,16 +150,6 @@ private:
     return affine(f, m->scale, m->bias);
   }
 
-  // texld / tex: the coordinate register must be an unmodified t# read as .xy.
-  std::string check_coord(const ir::SrcOperand& s) {
-    if (s.file != ir::RegFile::Texture)
-      return where(s.loc) + ": dependent read (coordinate is not a t# register)";
-    if (s.mod != ir::SrcMod::None || ir::swizzle_component(s.swizzle, 0) != 0 ||
-        ir::swizzle_component(s.swizzle, 1) != 1)
-      return where(s.loc) + ": coordinate is modified or swizzled";
-    return "";
-  }
-
   std::string step(const ir::Instruction& in) {
     const ir::OpInfo& info = ir::op_info(in.op);
     if (info.cls == ir::OpClass::Flow && in.op != ir::Opcode::Phase)
@@ -168,21 +159,9 @@ private:
     if (in.src.size() < info.num_src)
       return fmt::format("{}: {} has too few operands", where(in.loc), info.mnemonic);
     const ir::DstOperand& d = *in.dst;
-    std::optional<SampleKey> sampled;
-    switch (in.op) {
-    case ir::Opcode::Tex: sampled = SampleKey{d.index, d.index}; break;
-    case ir::Opcode::TexLd:
-    case ir::Opcode::TexLd14:
-      if (in.src.empty()) return where(in.loc) + ": texld without a coordinate";
-      if (auto e = check_coord(in.src[0]); !e.empty()) return e;
-      sampled =
-          SampleKey{in.src[0].index,
-                    in.op == ir::Opcode::TexLd && in.src.size() > 1 ? in.src[1].index : d.index};
-      break;
-    default:
-      if (info.cls == ir::OpClass::Texture)
-        return fmt::format("{}: {} is not a plain texture sample", where(in.loc), info.mnemonic);
-    }
+    std::string error;
+    std::optional<SampleKey> sampled = sample_key(in, &error);
+    if (!error.empty()) return error;
     Reg& r = regs_[{d.file, d.index}];
     Reg next = r;
     const double scale = std::ldexp(1.0, in.mods.shift); // _x2 … _d8
@@ -219,6 +198,39 @@ private:
 };
 
 } // namespace
+
+// texld / tex: the coordinate register must be an unmodified t# read as .xy.
+std::optional<SampleKey> sample_key(const ir::Instruction& in, std::string* error) {
+  const ir::OpInfo& info = ir::op_info(in.op);
+  if (!in.dst) return std::nullopt;
+  const ir::DstOperand& d = *in.dst;
+  switch (in.op) {
+  case ir::Opcode::Tex: return SampleKey{d.index, d.index};
+  case ir::Opcode::TexLd:
+  case ir::Opcode::TexLd14: {
+    if (in.src.empty()) {
+      *error = where(in.loc) + ": texld without a coordinate";
+      return std::nullopt;
+    }
+    const ir::SrcOperand& s = in.src[0];
+    if (s.file != ir::RegFile::Texture) {
+      *error = where(s.loc) + ": dependent read (coordinate is not a t# register)";
+      return std::nullopt;
+    }
+    if (s.mod != ir::SrcMod::None || ir::swizzle_component(s.swizzle, 0) != 0 ||
+        ir::swizzle_component(s.swizzle, 1) != 1) {
+      *error = where(s.loc) + ": coordinate is modified or swizzled";
+      return std::nullopt;
+    }
+    return SampleKey{s.index,
+                     in.op == ir::Opcode::TexLd && in.src.size() > 1 ? in.src[1].index : d.index};
+  }
+  default:
+    if (info.cls == ir::OpClass::Texture)
+      *error = fmt::format("{}: {} is not a plain texture sample", where(in.loc), info.mnemonic);
+    return std::nullopt;
+  }
+}
 
 SumForm evaluate_sum(const ir::Program& ps, const std::vector<Vec4>& consts) {
   return Evaluator(ps, consts).run();

@@ -1,5 +1,5 @@
 // Descriptor set 0 of a pass: the uniform blocks filled with codegen::pack_uniforms, the
-// sampled textures with their samplers, and the pipeline layout over them.
+// sampled images with their samplers, and the pipeline layout over them.
 #include "bindings.h"
 
 #include <cstring>
@@ -27,7 +27,7 @@ codegen::UniformValues uniform_values(const cpu::ConstantBank& bank, const cpu::
 } // namespace
 
 std::string create_bindings(Device::Impl& d, Cleanup& cleanup, const codegen::CompiledPair& pair,
-                            const cpu::Pass& pass, Bindings& out) {
+                            const cpu::Pass& pass, const SampledImages& images, Bindings& out) {
   std::string err;
   // Descriptor bindings: uniform blocks, then combined image samplers.
   std::vector<VkDescriptorSetLayoutBinding> bindings;
@@ -53,29 +53,25 @@ std::string create_bindings(Device::Impl& d, Cleanup& cleanup, const codegen::Co
 
   VkFormatProperties tex_props;
   vkGetPhysicalDeviceFormatProperties(d.physical, VK_FORMAT_R32G32B32A32_SFLOAT, &tex_props);
-  std::vector<Texture>& textures = out.textures;
-  img::Image unbound(1, 1);
-  unbound.rgba = {0, 0, 0, 1}; // an unbound stage reads (0, 0, 0, 1), as in D3D9
+  struct Texture {
+    VkImageView view = VK_NULL_HANDLE;
+    VkSampler sampler = VK_NULL_HANDLE;
+    uint32_t binding = 0;
+  };
+  std::vector<Texture> textures;
   for (const auto& si : pair.ps.samplers) {
     if (si.type != ir::SamplerType::Tex2D)
       return fmt::format("s{}: only 2D textures are supported on the Vulkan device", si.stage);
-    const cpu::TextureBinding& tb = pass.textures.at(si.stage % cpu::kMaxSamplers);
-    const img::Image& im = tb.image ? *tb.image : unbound;
-    if (im.width == 0 || im.height == 0 || im.rgba.size() != size_t{im.width} * im.height * 4)
-      return fmt::format("s{}: texture has no pixels", si.stage);
+    const uint32_t stage = si.stage % cpu::kMaxSamplers;
+    const cpu::TextureBinding& tb = pass.textures[stage];
+    if (!images[stage]) return fmt::format("s{}: no texture to sample", si.stage);
     if (tb.sampler.filter == cpu::Filter::Linear &&
         !(tex_props.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT))
       return "the Vulkan device cannot filter RGBA32F textures linearly";
     Texture t;
     t.binding = si.binding;
-    err = create_image(d, cleanup, im.width, im.height, VK_FORMAT_R32G32B32A32_SFLOAT,
-                       VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, t.image);
-    if (err.empty())
-      err = create_buffer(d, cleanup, im.rgba.size() * 4, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                          t.staging);
-    if (err.empty()) err = create_sampler(d, cleanup, tb.sampler, t.sampler);
-    if (!err.empty()) return err;
-    std::memcpy(t.staging.mapped, im.rgba.data(), im.rgba.size() * 4);
+    t.view = images[stage]->view;
+    if (err = create_sampler(d, cleanup, tb.sampler, t.sampler); !err.empty()) return err;
     bindings.push_back({t.binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
                         VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
     textures.push_back(t);
@@ -133,7 +129,7 @@ std::string create_bindings(Device::Impl& d, Cleanup& cleanup, const codegen::Co
     writes.push_back(w);
   }
   for (size_t k = 0; k < textures.size(); ++k) {
-    image_infos[k] = {textures[k].sampler, textures[k].image.view,
+    image_infos[k] = {textures[k].sampler, textures[k].view,
                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     VkWriteDescriptorSet w{};
     w.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;

@@ -2,6 +2,7 @@
 // blocks, textures and samplers, the set layout and the pipeline layout.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -11,23 +12,18 @@
 
 namespace tierlift::vulkan {
 
-// A sampled texture: the image, the staging buffer its pixels wait in until the upload
-// submit, and its sampler at binding 2 + stage.
-struct Texture {
-  Image2D image;
-  Buffer staging;
-  VkSampler sampler = VK_NULL_HANDLE;
-  uint32_t binding = 0;
-};
+// The image each sampler stage reads (R32G32B32A32_SFLOAT, in SHADER_READ_ONLY_OPTIMAL when
+// the draw runs); only the stages the pixel program samples need one.
+using SampledImages = std::array<const Image2D*, cpu::kMaxSamplers>;
 
 struct Bindings {
-  std::vector<Texture> textures; // still to be uploaded (staging → image)
   VkPipelineLayout layout = VK_NULL_HANDLE;
   VkDescriptorSet set = VK_NULL_HANDLE;
 };
 
-// Empty string on success; every object is registered with `cleanup`.
+// Empty string on success; every object is registered with `cleanup`. Samplers come from
+// pass.textures[stage].sampler, images from `images`.
 std::string create_bindings(Device::Impl& d, Cleanup& cleanup, const codegen::CompiledPair& pair,
-                            const cpu::Pass& pass, Bindings& out);
+                            const cpu::Pass& pass, const SampledImages& images, Bindings& out);
 
 } // namespace tierlift::vulkan

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "unorm8_to_float.h"
 #include "vk_internal.h"
 
 namespace tierlift::vulkan {
@@ -66,6 +67,7 @@ std::string vk_error(const char* what, VkResult r) {
 Device::Impl::~Impl() {
   if (device) {
     vkDeviceWaitIdle(device);
+    unorm8.reset();
     if (pool) vkDestroyCommandPool(device, pool, nullptr);
     vkDestroyDevice(device, nullptr);
   }
@@ -94,6 +96,8 @@ std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string
                   "install the Debian package vulkan-validationlayers");
     layers.push_back(kValidationLayer);
     extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    if (options.synchronization_validation)
+      extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME); // provided by the layer
   }
   VkApplicationInfo app{};
   app.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO;
@@ -108,6 +112,16 @@ std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string
   ici.ppEnabledExtensionNames = extensions.data();
   VkDebugUtilsMessengerCreateInfoEXT mci = messenger_info(impl.get());
   if (options.validation) ici.pNext = &mci; // messages of vkCreate/DestroyInstance too
+  const VkValidationFeatureEnableEXT sync =
+      VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT;
+  VkValidationFeaturesEXT features{};
+  features.sType = VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT;
+  features.enabledValidationFeatureCount = 1;
+  features.pEnabledValidationFeatures = &sync;
+  if (options.validation && options.synchronization_validation) {
+    features.pNext = &mci;
+    ici.pNext = &features;
+  }
   VkResult r = vkCreateInstance(&ici, nullptr, &impl->instance);
   if (r != VK_SUCCESS) {
     impl->instance = VK_NULL_HANDLE;

@@ -1,4 +1,5 @@
 // Buffers, images, one-shot submits and pixel conversion for the Vulkan device.
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -232,8 +233,14 @@ void unpack_pixels(const void* src, img::Image& image) {
   size_t n = image.rgba.size();
   switch (image.format) {
   case img::Format::RGBA8: {
+    // k/255.0f from a table: the same correctly rounded values, without a division each.
+    static const std::array<float, 256> levels = [] {
+      std::array<float, 256> t{};
+      for (uint32_t k = 0; k < 256; ++k) t[k] = static_cast<float>(k) / 255.0f;
+      return t;
+    }();
     auto* p = static_cast<const uint8_t*>(src);
-    for (size_t i = 0; i < n; ++i) image.rgba[i] = static_cast<float>(p[i]) / 255.0f;
+    for (size_t i = 0; i < n; ++i) image.rgba[i] = levels[p[i]];
     break;
   }
   case img::Format::RGBA16F: {

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -17,6 +18,8 @@ namespace tierlift::vulkan {
 // "vkCreateImage failed: VK_ERROR_OUT_OF_HOST_MEMORY"
 std::string vk_error(const char* what, VkResult r);
 
+struct Unorm8Converter; // unorm8_to_float.h
+
 struct Device::Impl {
   VkInstance instance = VK_NULL_HANDLE;
   VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
@@ -27,6 +30,8 @@ struct Device::Impl {
   VkCommandPool pool = VK_NULL_HANDLE;
   VkPhysicalDeviceProperties props{};
   VkPhysicalDeviceMemoryProperties memory{};
+
+  std::unique_ptr<Unorm8Converter> unorm8; // created on first use
 
   mutable std::mutex messages_mutex;
   std::vector<std::string> messages;

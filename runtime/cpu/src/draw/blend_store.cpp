@@ -1,14 +1,21 @@
-// Blending in float on the stored destination value, then the format's store rule.
+// Blending on the stored destination value, then the format's store rule. Two ways, chosen by
+// ir::Conventions::rounding: Exact blends in float and rounds once (img::quantize); Llvmpipe
+// reproduces lavapipe, which converts the source to UNORM8 first and blends in 8-bit integers,
+// and stores RGBA16F rounded toward zero.
+#include <algorithm>
+#include <cmath>
+
 #include "tierlift/cpu/draw.h"
 
 namespace tierlift::cpu {
 namespace {
+
 float clamp01(float v) {
   return v > 0 ? (v < 1 ? v : 1) : 0;
 } // NaN → 0
-} // namespace
 
-Vec4 blend_and_store(BlendMode mode, img::Format format, const Vec4& src_in, const Vec4& dst) {
+Vec4 blend_float(BlendMode mode, img::Format format, const Vec4& src_in, const Vec4& dst,
+                 ir::Rounding rounding) {
   Vec4 src = src_in;
   // UNORM attachments clamp the source colour (and so the SRCALPHA factors) to [0, 1]
   // before blending (Vulkan "Blend Operations"; D3D9 hardware does the same).
@@ -23,9 +30,57 @@ Vec4 blend_and_store(BlendMode mode, img::Format format, const Vec4& src_in, con
     case BlendMode::SrcAlphaOne: out[c] = src[c] * a + dst[c]; break;
     case BlendMode::SrcAlphaInvSrcAlpha: out[c] = src[c] * a + dst[c] * (1.0f - a); break;
     }
-    out[c] = img::quantize(format, out[c]);
+    out[c] = format == img::Format::RGBA16F && rounding == ir::Rounding::Llvmpipe
+                 ? img::half_toward_zero(out[c])
+                 : img::quantize(format, out[c]);
   }
   return out;
+}
+
+// llvmpipe's normalised 8-bit product a·b/255: (t + (t >> 8) + 128) >> 8 with t = a·b
+// (lp_build_mul_norm, after Jim Blinn). It is the nearest integer to a·b/255 for all but 24
+// of the 65536 byte pairs; those 24 are kept as llvmpipe computes them.
+int mul_norm8(int a, int b) {
+  const int t = a * b;
+  return (t + (t >> 8) + 0x80) >> 8;
+}
+
+// lavapipe's blend on an R8G8B8A8_UNORM attachment (Mesa llvmpipe's AoS blend): the shader's
+// colour is converted with img::unorm8_llvmpipe, the destination is read as its byte, factors
+// multiply with mul_norm8, the two terms add with saturation at 255. SRC_ALPHA/
+// ONE_MINUS_SRC_ALPHA is src·a + dst·(255 − a) with both products rounded separately (not
+// llvmpipe's lerp shortcut: measured, the lerp form does not match).
+Vec4 blend_unorm8_llvmpipe(BlendMode mode, const Vec4& src_in, const Vec4& dst_in) {
+  int src[4], dst[4];
+  for (int c = 0; c < 4; ++c) {
+    src[c] = img::unorm8_llvmpipe(src_in[c]);
+    // An RGBA8 target holds k/255: its byte is the exact rounding of value·255.
+    dst[c] = static_cast<int>(std::lround(img::quantize(img::Format::RGBA8, dst_in[c]) * 255.0f));
+  }
+  const int a = src[3];
+  Vec4 out;
+  for (int c = 0; c < 4; ++c) {
+    int v = 0;
+    switch (mode) {
+    case BlendMode::Replace: v = src[c]; break;
+    case BlendMode::OneOne: v = src[c] + dst[c]; break;
+    case BlendMode::SrcAlphaOne: v = mul_norm8(src[c], a) + dst[c]; break;
+    case BlendMode::SrcAlphaInvSrcAlpha:
+      v = mul_norm8(src[c], a) + mul_norm8(dst[c], 255 - a);
+      break;
+    }
+    out[c] = static_cast<float>(std::min(v, 255)) / 255.0f;
+  }
+  return out;
+}
+
+} // namespace
+
+Vec4 blend_and_store(BlendMode mode, img::Format format, const Vec4& src, const Vec4& dst,
+                     ir::Rounding rounding) {
+  if (format == img::Format::RGBA8 && rounding == ir::Rounding::Llvmpipe)
+    return blend_unorm8_llvmpipe(mode, src, dst);
+  return blend_float(mode, format, src, dst, rounding);
 }
 
 } // namespace tierlift::cpu

@@ -55,8 +55,8 @@ void shade_pixel(const RasterJob& job, const PixelInput& in, int64_t x, int64_t 
     color = out.color[0];
   }
   float* px = job.target.at(static_cast<uint32_t>(x), static_cast<uint32_t>(y));
-  Vec4 stored =
-      blend_and_store(job.pass.blend, job.target.format, color, {px[0], px[1], px[2], px[3]});
+  Vec4 stored = blend_and_store(job.pass.blend, job.target.format, color,
+                                {px[0], px[1], px[2], px[3]}, job.pass.conventions.rounding);
   std::copy(stored.begin(), stored.end(), px);
 }
 

@@ -39,14 +39,17 @@
 //     weights from u·N − 0.5 in double (sample_texture).
 // Measured (Listings 1+2, 8 bilinear taps of noise, 1920×1080, subtexel_bits 0): Exact
 // differs from lavapipe by up to 6e-5 (RGBA32F) and 99.5 % identical pixels (RGBA8);
-// Llvmpipe is bit-identical in RGBA32F and 99.998 % identical in RGBA8 (the rest 1 LSB, from
-// the float→unorm8 store).
+// Llvmpipe is bit-identical in RGBA32F and, with lavapipe's RGBA8 store and blend (below), in
+// RGBA8 too (99.998 % with the exact store rule).
 //
 // Store: the pixel stage's oC0 (ps_1_x: r0; no pixel program: the interpolated oD0, as
-// D3D9's fixed function with no texture passes the diffuse colour) is blended in float with
-// the stored destination value and quantised with img::quantize(target.format). For RGBA8
-// targets the source colour and blend factors are clamped to [0, 1] before blending, as
-// Vulkan and D3D9 do for UNORM attachments. Blending applies to all four channels.
+// D3D9's fixed function with no texture passes the diffuse colour) is blended with the stored
+// destination value and stored (blend_and_store). Float and half targets, and RGBA8 under
+// Rounding::Exact: blended in float, quantised with img::quantize(target.format), the source
+// colour and blend factors clamped to [0, 1] first for RGBA8 as Vulkan and D3D9 do for UNORM
+// attachments. RGBA8 under Rounding::Llvmpipe: lavapipe's way — the source converted with
+// img::unorm8_llvmpipe (ties to even of fl32(x·255)), then blended in 8-bit integers
+// (NUMERICS.md rule 34). Blending applies to all four channels.
 //
 // Threads: rows are handed out in small bands to `threads` workers (0 = every core). Each
 // pixel is written by exactly one worker, in primitive order, so the image does not depend
@@ -136,7 +139,11 @@ struct DrawStats {
 DrawStats draw(const Pass& pass, img::Image& target, unsigned threads = 0);
 
 // Blend `src` onto the stored `dst` and quantise for `format` (the per-pixel store rule,
-// exposed for tests).
-Vec4 blend_and_store(BlendMode mode, img::Format format, const Vec4& src, const Vec4& dst);
+// exposed for tests). `rounding` is the pass's ir::Conventions::rounding: for RGBA8 targets
+// Llvmpipe converts the source with img::unorm8_llvmpipe and blends in 8-bit integers as
+// lavapipe does (NUMERICS.md rule 34); Exact, and every other format, blend in float and store
+// with img::quantize.
+Vec4 blend_and_store(BlendMode mode, img::Format format, const Vec4& src, const Vec4& dst,
+                     ir::Rounding rounding = ir::Conventions{}.rounding);
 
 } // namespace tierlift::cpu

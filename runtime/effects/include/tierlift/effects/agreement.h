@@ -1,6 +1,6 @@
 // Two devices' runs of the same graph compared pass by pass (each pass's target right
 // after it) and for the final frame, judged against design.md's agreement targets for the
-// target's format (img::judge).
+// target's format (img::judge), with RGBA8 rounding midpoints counted as agreeing.
 #pragma once
 
 #include <string>
@@ -13,7 +13,13 @@ namespace tierlift::effects {
 
 struct PassAgreement {
   std::string pass, target;
-  img::Comparison comparison;
+  img::Comparison comparison; // the plain comparison (identical means bit for bit)
+  // RGBA8: pixels that differ by no more than one run's device says a float device may
+  // (PassDevice::rounding_midpoints: the analytic model's slack, in 8-bit steps, where its
+  // exact value or its inputs sit at midpoints between steps). The verdict counts them as
+  // identical, in the identical share and in the max abs.
+  uint64_t midpoint_pixels = 0;
+  double identical_share_with_midpoints = 1;
   img::Verdict verdict;
 };
 

@@ -6,9 +6,11 @@
 // when asked for (read_texture: the agreement table, the files, the end of the run).
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "tierlift/effects/graph.h"
 #include "tierlift/image/image.h"
@@ -36,6 +38,15 @@ public:
   virtual std::string run_pass(const PassDesc& pass) = 0;
   // A texture's current contents (in its declared format). Empty string on success.
   virtual std::string read_texture(const std::string& name, img::Image& out) = 0;
+  // RGBA8 textures only, and only a device that knows its exact values (the analytic one):
+  // one entry per pixel, the number of 8-bit steps a float device's stored value may lie
+  // from this device's (ref::LinearPassInput::slack: exact values at, or inputs carried
+  // from, midpoints between two steps, where either rounding is right). compare_runs counts
+  // a difference within it as agreement. False: no mask (every pixel determined).
+  virtual bool rounding_midpoints(const std::string& /*texture*/,
+                                  std::vector<uint8_t>& /*mask*/) const {
+    return false;
+  }
 };
 
 class CpuPassDevice final : public PassDevice {

@@ -13,6 +13,6 @@ struct GlowRun {
 
 // The scene must have the plan's scene size; it is stored in the plan's format first.
 GlowRun run_glow(const GlowPlan& plan, const img::Image& scene, PassDevice& device,
-                 bool keep_pass_images = false);
+                 bool keep_pass_images = false, const PassProgress& progress = {});
 
 } // namespace tierlift::effects

@@ -1,6 +1,7 @@
 // Running an effect graph on one device: passes in order, images in a map between passes.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -13,8 +14,9 @@ namespace tierlift::effects {
 
 struct PassRecord {
   std::string pass, target;
-  img::Image result; // the target after this pass (only when keep_pass_images)
-  double ms = 0;     // run_pass only (a readback for keep_pass_images is not counted)
+  img::Image result;              // the target after this pass (only when keep_pass_images)
+  double ms = 0;                  // run_pass only (a readback for keep_pass_images is not counted)
+  std::vector<uint8_t> midpoints; // the device's rounding-midpoint mask of `result`, if any
 };
 
 struct GraphRun {
@@ -22,6 +24,8 @@ struct GraphRun {
   std::string error; // names the pass that failed
   std::vector<PassRecord> passes;
   double total_ms = 0;
+  // Every texture's rounding-midpoint mask after the run, where the device keeps one.
+  std::map<std::string, std::vector<uint8_t>, std::less<>> midpoints;
 };
 
 // The cpu::Pass a pass description becomes: full-screen quad (the vertex listing's
@@ -35,7 +39,9 @@ std::optional<cpu::Pass> make_pass(const PassDesc& desc, const ImageMap& images,
 // converted to the declared format with img::quantize), hands the inputs to the device,
 // runs each pass there (reading its target back after it only when keep_pass_images), then
 // reads every texture back: `images` holds every texture afterwards.
+// `progress`, when set, is called before each pass runs (index from 0, pass count).
+using PassProgress = std::function<void(size_t index, size_t count, const PassDesc& pass)>;
 GraphRun run_graph(const EffectGraph& graph, PassDevice& device, ImageMap& images,
-                   bool keep_pass_images = false);
+                   bool keep_pass_images = false, const PassProgress& progress = {});
 
 } // namespace tierlift::effects

@@ -27,8 +27,25 @@ struct SamplerModel {
   std::array<double, 4> border{0, 0, 0, 0}; // BORDER colour (D3D9 default 0x00000000)
 };
 
+// How an RGBA8 store rounds a value exactly half-way between two steps. D3D9 and Vulkan
+// leave it open ("one of the two nearest"); D3D10's rule adds ½ and truncates (HalfUp, the
+// rule of img::quantize); lavapipe rounds to even (img::unorm8_llvmpipe). Ties are common
+// in the glow: bilinear midpoints and power-of-two weights average 8-bit texels exactly.
+enum class Unorm8Ties { HalfUp, ToEven };
+
+// The value a texel of `image` holds, in double: RGBA8 texels are exactly k/255 (the float
+// in the image is only the nearest float to it), other formats their float.
+double texel_value(const img::Image& image, uint32_t x, uint32_t y, int channel);
+
+// The store rule of a target format, from an exact (double) value: RGBA8 clamps to [0, 1]
+// (NaN → 0) and rounds to the nearest k/255, a value within 1e-9 of a step of a midpoint
+// being a tie that goes by `ties` (the tolerance absorbs double rounding of sums that are
+// exact midpoints); other formats: img::quantize of the value as float.
+float store_value(img::Format format, double value, Unorm8Ties ties);
+
 struct PassModel {
   ir::Conventions conventions; // pixel_center and subtexel_bits are used
+  Unorm8Ties unorm8_ties = Unorm8Ties::HalfUp;
   SamplerModel sampler;
   uint32_t target_width = 0, target_height = 0; // 0 = the source's size
   img::Format target_format = img::Format::RGBA32F;
@@ -42,15 +59,27 @@ std::array<double, 2> pixel_uv(uint32_t i, uint32_t j, uint32_t width, uint32_t 
                                const PassModel& model);
 
 // One filtered read at (u, v), in double. Linear: i0 = floor(u·N − 0.5), α = frac, with
-// positions within 1e-9 texel of a texel centre snapped onto it (the tap is meant to hit
-// it; double rounding must not turn an exact read into a 1e-16 blend); α quantised to
-// subtexel_bits (round to nearest) when > 0. Point: floor(u·N).
+// positions within snap_tolerance(N) texel of a texel centre or of the midpoint between two
+// texels snapped onto it; α quantised to subtexel_bits (round to nearest) when > 0.
+// Point: floor(u·N) (positions within 1e-9 of a texel edge snapped onto it).
+// Why snap: a pass's taps are meant to hit centres (the half-texel rule) or midpoints (the
+// downsample's averaging reads, taps without the half texel), but its coordinates come from
+// float constants (k/W is rarely a float) and devices interpolate them in float, so the
+// position is off by up to a few ulps of u times N texels, and a device cannot tell where
+// within that it is. At a midpoint that matters beyond its size: averaging two 8-bit texels
+// lands exactly on a rounding tie, and a 1e-7 texel shift decides which way the store
+// rounds. The model takes the meant position; the shift it drops moves a value by at most
+// snap·|texel difference|, far below every RGBA32F target at sizes up to kMaxDimension
+// (16384 · 2^-21 = 0.008 texel would not be; at 1920 texels it is 0.0009).
+double snap_tolerance(uint32_t texels); // max(1e-9, N · 2^-21) texels
 std::array<double, 4> sample(const img::Image& texture, double u, double v,
                              const SamplerModel& sampler, int subtexel_bits = 0);
 // The texel index an address mode maps i to, or -1 for "border colour".
 int64_t address_texel(int64_t i, int64_t n, Address mode);
 
-// The blur pass: pixel = Σ_k weight_k · sample(uv + offset_k), stored with img::quantize.
+// The blur pass: pixel = Σ_k weight_k · sample(scale_k·uv + offset_k), one texture (every
+// tap's sampler stage reads `source`), stored with img::quantize. linear_pass.h has the
+// general form (several textures, blending, ps_1_x ranges).
 img::LoadResult blur_pass(const std::vector<Tap>& taps, const img::Image& source,
                           const PassModel& model);
 
@@ -60,7 +89,8 @@ struct TexelTap {
   std::array<double, 4> weight{};
 };
 // The texels the author meant: offset·size rounded down (+1e-6 slack), so (k + 0.5)/W
-// (the article's half-texel offsets) and k/W (without them) both mean tap k.
+// (the article's half-texel offsets) and k/W (without them) both mean tap k. For taps of
+// the form texcoord + offset (scale 1; the scale is not read).
 std::vector<TexelTap> intended_texel_taps(const std::vector<Tap>& taps, uint32_t width,
                                           uint32_t height);
 // out(i, j) = Σ_k w_k · T[addr(i + dx_k), addr(j + dy_k)], stored with img::quantize.
@@ -79,7 +109,8 @@ img::LoadResult corner_model(const std::vector<Tap>& taps, const img::Image& sou
 
 // What the corner model predicts the no-half-texel pass differs from the plain convolution
 // by: corner_model − discrete_convolution(intended_texel_taps), per value, unquantised
-// (RGBA32F image of signed differences), and its largest magnitude.
+// (RGBA32F image of signed differences), and its largest magnitude. Taps must have scale 1
+// (an error otherwise).
 struct CornerPrediction {
   img::Image difference;
   double max_abs = 0;

@@ -13,7 +13,8 @@
 //     centres: no offset. The scissor is the D3D9 viewport clipped to the target.
 //   * Render targets RGBA8 UNORM, RGBA16F, RGBA32F; the target image's current contents are
 //     uploaded first (loadOp LOAD), so blending sees the stored destination, and read back
-//     as floats (RGBA8: k/255; RGBA16F: the half's value).
+//     as floats (RGBA8: k/255; RGBA16F: the half's value). TextureSet (texture_set.h) keeps
+//     targets and textures on the device between draws instead; both paths share one draw.
 //   * Textures: each bound stage's img::Image uploaded as R32G32B32A32_SFLOAT; unbound
 //     stages get a 1×1 (0, 0, 0, 1) texture. Samplers: point/linear, wrap/mirror/clamp/
 //     border with D3D9's transparent black border (opaque black/white also map; any other
@@ -31,6 +32,8 @@
 
 namespace tierlift::vulkan {
 
+class TextureSet;
+
 struct DeviceOptions {
   // Enable VK_LAYER_KHRONOS_validation with a messenger that collects every warning and
   // error (tests require none).
@@ -38,6 +41,9 @@ struct DeviceOptions {
   // Case-insensitive substring of the physical device name. Empty: prefer a CPU device
   // (lavapipe, "llvmpipe"), else the first device.
   std::string gpu_filter;
+  // With `validation`: also enable the layer's synchronization validation (hazards between
+  // commands: missing or wrong barriers). Slower; tests of barrier-heavy paths use it.
+  bool synchronization_validation = false;
 };
 
 struct DrawOptions {
@@ -51,8 +57,8 @@ struct DrawOptions {
 struct DrawResult {
   bool ok = false;
   std::string error;
-  double setup_ms = 0; // compile, pipeline, resources, uploads
-  double draw_ms = 0;  // submit to fence (the draw itself and the readback copy)
+  double setup_ms = 0; // compile, pipeline, resources, uploads of host images
+  double draw_ms = 0;  // submit to fence (float copies of sampled textures, the draw, readback)
 };
 
 class Device {
@@ -79,6 +85,7 @@ public:
   struct Impl;
 
 private:
+  friend class TextureSet; // draws with the same internals (texture_set.h)
   explicit Device(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
 };

@@ -1,0 +1,107 @@
+#include "glow_report.h"
+
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "tierlift/effects/glow.h"
+#include "tierlift/image/io.h"
+
+namespace tierlift::cli {
+
+std::vector<PairAgreement> compare_ways(const std::vector<GlowWay>& ways, std::string* error) {
+  std::vector<PairAgreement> pairs;
+  for (size_t i = 0; i < ways.size(); ++i)
+    for (size_t j = i + 1; j < ways.size(); ++j) {
+      PairAgreement p{ways[i].name, ways[j].name,
+                      effects::compare_runs(ways[i].glow.run, ways[i].glow.images, ways[j].glow.run,
+                                            ways[j].glow.images,
+                                            std::string(effects::kFinalTexture))};
+      if (!p.agreement.error.empty()) {
+        if (error) *error = fmt::format("{} vs {}: {}", p.a, p.b, p.agreement.error);
+        return {};
+      }
+      pairs.push_back(std::move(p));
+    }
+  return pairs;
+}
+
+void print_agreement_table(const std::vector<PairAgreement>& pairs) {
+  if (pairs.empty()) return;
+  constexpr int kCell = 28; // "  max abs     rmse   ident."
+  std::string head = fmt::format("{:<12} {:<13}", "", "");
+  std::string cols = fmt::format("{:<12} {:<13}", "pass", "target");
+  for (const PairAgreement& p : pairs) {
+    head += fmt::format(" {:^{}}", fmt::format("{} · {}", p.a, p.b), kCell);
+    cols += fmt::format(" {:>9} {:>9} {:>8}", "max abs", "rmse", "ident.");
+  }
+  fmt::print("{}\n{}\n", head, cols);
+  const size_t rows = pairs.front().agreement.passes.size();
+  for (size_t r = 0; r < rows; ++r) {
+    const effects::PassAgreement& first = pairs.front().agreement.passes[r];
+    std::string line = fmt::format("{:<12} {:<13}", first.pass, first.target);
+    for (const PairAgreement& p : pairs) {
+      const effects::PassAgreement& row = p.agreement.passes[r];
+      const img::Comparison& c = row.comparison;
+      line += fmt::format(" {:>9.2g} {:>9.2g} {:>7.3f}%{}", c.max_abs_all, c.rmse_all,
+                          100.0 * row.identical_share_with_midpoints, row.verdict.pass ? "" : "!");
+      if (row.verdict.pass) line += " ";
+    }
+    fmt::print("{}\n", line);
+  }
+  uint64_t midpoints = 0;
+  for (const PairAgreement& p : pairs)
+    for (const effects::PassAgreement& row : p.agreement.passes) midpoints += row.midpoint_pixels;
+  if (midpoints > 0)
+    fmt::print("ident. also counts {} pixels (summed over rows and pairs) one 8-bit step apart "
+               "where the analytic value\nlies within 1/1024 step of a midpoint between two "
+               "steps: either rounding is right there.\n",
+               midpoints);
+}
+
+nlohmann::json agreement_json(const std::vector<PairAgreement>& pairs) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const PairAgreement& p : pairs) {
+    nlohmann::json rows = nlohmann::json::array();
+    for (const effects::PassAgreement& row : p.agreement.passes)
+      rows.push_back({{"pass", row.pass},
+                      {"target", row.target},
+                      {"max_abs", row.comparison.max_abs_all},
+                      {"rmse", row.comparison.rmse_all},
+                      {"identical_share", row.comparison.identical_share},
+                      {"midpoint_pixels", row.midpoint_pixels},
+                      {"identical_share_with_midpoints", row.identical_share_with_midpoints},
+                      {"within_targets", row.verdict.pass},
+                      {"summary", row.verdict.summary}});
+    out.push_back(
+        {{"pair", {p.a, p.b}}, {"rows", rows}, {"all_within_targets", p.agreement.all_pass}});
+  }
+  return out;
+}
+
+std::string write_glow_images(const std::string& dir, const std::vector<GlowWay>& ways,
+                              bool float_targets, std::vector<std::string>* written) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) return fmt::format("cannot create '{}': {}", dir, ec.message());
+  for (const GlowWay& way : ways)
+    for (std::string_view tex :
+         {effects::kSceneTexture, effects::kGlowTexture, effects::kFinalTexture}) {
+      const auto it = way.glow.images.find(tex);
+      if (it == way.glow.images.end()) continue;
+      img::Image opaque = it->second;
+      for (size_t i = 3; i < opaque.rgba.size(); i += 4) opaque.rgba[i] = 1.0f;
+      const std::filesystem::path base =
+          std::filesystem::path(dir) / fmt::format("{}-{}", tex, way.name);
+      img::Status s = img::write_png(base.string() + ".png", opaque);
+      if (!s) return s.error;
+      if (written) written->push_back(base.string() + ".png");
+      if (!float_targets) continue;
+      s = img::write_pfm(base.string() + ".pfm", it->second);
+      if (!s) return s.error;
+      if (written) written->push_back(base.string() + ".pfm");
+    }
+  return {};
+}
+
+} // namespace tierlift::cli

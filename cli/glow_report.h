@@ -1,0 +1,43 @@
+// What `tierlift glow` prints and writes once the ways have run: the agreement table (per
+// pass and for the frame, every pair of ways), its JSON form, and the image files.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "tierlift/effects/agreement.h"
+#include "tierlift/effects/glow_run.h"
+
+namespace tierlift::cli {
+
+// One way of computing the glow ("cpu", "vulkan", "analytic") and its run.
+struct GlowWay {
+  std::string name;
+  effects::GlowRun glow;
+};
+
+// The agreement of two ways, `a` and `b` naming them.
+struct PairAgreement {
+  std::string a, b;
+  effects::RunAgreement agreement;
+};
+
+// Every pair of `ways` in order (cpu·vulkan, cpu·analytic, vulkan·analytic); an error
+// message (both runs have passes but cannot be compared) in *error.
+std::vector<PairAgreement> compare_ways(const std::vector<GlowWay>& ways, std::string* error);
+
+// The table: one row per pass and one for the frame; for each pair max abs, RMSE and the
+// share of identical pixels, a '!' after a pair beyond design.md's targets.
+void print_agreement_table(const std::vector<PairAgreement>& pairs);
+nlohmann::json agreement_json(const std::vector<PairAgreement>& pairs);
+
+// Writes DIR/{scene,glow,final}-<way>.png for each way (opaque copies: the scene's alpha is
+// the glow mask, and viewers would show the ground as transparent), plus .pfm of each when
+// the target format is a float format. Empty string on success. Every file is written to a
+// temporary name and renamed into place.
+std::string write_glow_images(const std::string& dir, const std::vector<GlowWay>& ways,
+                              bool float_targets, std::vector<std::string>* written);
+
+} // namespace tierlift::cli

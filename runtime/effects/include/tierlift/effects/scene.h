@@ -1,0 +1,70 @@
+// Glow scenes: the scene image (the built-in neon scene or a PNG with alpha), its size and
+// the glow parameters, read from a JSON file (schema: listings/scenes/README.md and
+// listings/scenes/scene.schema.json). Loading validates everything; every problem becomes
+// a compiler-style diagnostic naming the field by its JSON pointer:
+//   scene.json:4:19: error: /glow/downsample: 9 is outside 1..4
+//       "downsample": 9,
+//                     ^
+// No exception escapes on bad input.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "tierlift/effects/glow.h"
+#include "tierlift/image/io.h"
+
+namespace tierlift::effects {
+
+inline constexpr std::string_view kBuiltinNeon = "builtin:neon";
+
+struct Scene {
+  std::string file;  // the JSON file it came from ("" for the built-in default or --image)
+  std::string image; // "builtin:neon" (make_default_scene) or a resolved PNG path
+  GlowParams params; // width/height = the image's size; tier, downsample, format, half_texel,
+                     // profile, intensity, listing_files
+  // One line each, without a "warning:" prefix: glow_warnings(params) (the CLI prints those
+  // itself) followed by what only the image shows (an alpha that is 1 or 0 everywhere).
+  std::vector<std::string> warnings;
+};
+
+struct SceneLoad {
+  std::optional<Scene> scene;
+  std::string error; // rendered diagnostics (file:line:col, source line, caret), '\n'-ended
+  explicit operator bool() const { return scene.has_value(); }
+};
+
+// Reads and validates a scene file; relative paths in it are relative to its folder.
+SceneLoad load_scene_file(const std::string& path);
+// The same for text already read: `file_name` is what diagnostics show, `base_dir` the
+// folder that relative paths start from ("" = the working directory).
+SceneLoad parse_scene(std::string_view json_text, const std::string& file_name,
+                      const std::string& base_dir);
+
+// builtin:neon at 1280×720 with the default glow parameters (GlowParams{}).
+Scene default_scene();
+
+// `--image`: a PNG with alpha (alpha marks what glows) and the default glow parameters at
+// the PNG's size. Errors: "FILE: error: …".
+SceneLoad scene_from_png(const std::string& png_path);
+
+// The scene image as RGBA32F: the built-in made in code at params' size, or the PNG read
+// again (its size must still equal params.width × params.height).
+img::LoadResult load_scene_image(const Scene& scene);
+
+// What a run with these parameters should be told, one line each; empty when all is well.
+// Weights that do not sum to one: "profile weights sum to 0.98: the glow is 3.96 % darker
+// than its sources (0.9604 after both axes)" — the blur runs on x, then on y, so the
+// glow's brightness is scaled by the square of the sum.
+std::vector<std::string> glow_warnings(const GlowParams& params);
+
+// The keys a scene may have at the top level, in "glow" and in "glow/profile" — the loader
+// rejects every other key; the schema file lists the same ones (a test keeps them equal).
+std::span<const std::string_view> scene_keys();
+std::span<const std::string_view> scene_glow_keys();
+std::span<const std::string_view> scene_profile_keys();
+
+} // namespace tierlift::effects

@@ -1,0 +1,253 @@
+// The glow graph both tiers build (glow_common.h, glow.h).
+#include "glow_common.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "tierlift/effects/builtin_listing.h"
+
+namespace tierlift::effects::detail {
+namespace {
+
+using ProgramPtr = std::shared_ptr<const ir::Program>;
+
+struct Listings {
+  ProgramPtr helper_vs, extract, downsample, composite, blur_vs, blur_ps;
+};
+
+std::optional<Listings> load_listings(const GlowParams& p, const TierListingPaths& paths,
+                                      std::string* error) {
+  Listings l;
+  const std::pair<ProgramPtr*, std::string_view> wanted[] = {
+      {&l.helper_vs, paths.helper_vs},      {&l.extract, paths.extract_ps},
+      {&l.downsample, paths.downsample_ps}, {&l.composite, paths.composite_ps},
+      {&l.blur_vs, paths.blur_vs},          {&l.blur_ps, paths.blur_ps}};
+  for (const auto& [slot, path] : wanted) {
+    *slot = glow_listing(path, p.listing_files, error);
+    if (!*slot) return std::nullopt;
+  }
+  return l;
+}
+
+cpu::SamplerState sampler(cpu::Filter filter) {
+  cpu::SamplerState s;
+  s.filter = filter;
+  s.address_u = s.address_v = cpu::AddressMode::Clamp;
+  return s;
+}
+
+cpu::Vec4 splat(double w) {
+  const float f = static_cast<float>(w);
+  return {f, f, f, f};
+}
+
+// One coordinate of a helper pass: offset (u, v) and scale (u, v) of the quad uv.
+struct Coord {
+  double du = 0, dv = 0, su = 1, sv = 1;
+};
+
+// The helper vertex listing's constants: offsets c0..c3, scales c4..c7 (unused ones read 0).
+std::vector<cpu::Vec4> helper_vs_constants(const std::vector<Coord>& coords) {
+  std::vector<cpu::Vec4> c(8, cpu::Vec4{0, 0, 0, 0});
+  for (size_t k = 0; k < coords.size() && k < 4; ++k) {
+    c[k] = {float(coords[k].du), float(coords[k].dv), 0, 0};
+    c[k + 4] = {float(coords[k].su), float(coords[k].sv), 0, 0};
+  }
+  return c;
+}
+
+class Builder {
+public:
+  Builder(const GlowParams& p, const TierRecipe& r, const Listings& l, uint32_t gw, uint32_t gh)
+      : p_(p), r_(r), l_(l), gw_(gw), gh_(gh) {}
+
+  PassDesc extract() const {
+    PassDesc d = pass("extract", l_.helper_vs, l_.extract, kSourcesTexture);
+    d.analytic = AnalyticForm::MaskByAlpha;
+    // Point reads at texel centres: offset ½ texel, scale 1.
+    d.vs_constants = helper_vs_constants({{0.5 / p_.width, 0.5 / p_.height}});
+    bind(d, 0, kSceneTexture, cpu::Filter::Point, 1);
+    return d;
+  }
+
+  // The box average of each N×N block, as point reads at texel centres, four a pass (the
+  // helper listings have four coordinates), the passes summed by ONE/ONE blending (the first
+  // replaces). Point reads, not bilinear reads between texels: a texture coordinate is an
+  // fp32 value, about N·2^-24 texel off at N texels (6e-5 at 1280), and a bilinear read
+  // meant for a midpoint turns that into a weight error of the same size, visible at the
+  // sharp edges of the glow sources; a point read at a texel centre is 0.5 texel from any
+  // other texel, so every device and the analytic model read the same texels.
+  void downsample(std::vector<PassDesc>& out) const {
+    const unsigned n = p_.downsample;
+    // Pixel i of the small target reads source texels n·i … n·i + n − 1: scale the quad uv
+    // so that u·W_src = n·i, then add the read position within the block.
+    const double su = double(n) * gw_ / p_.width, sv = double(n) * gh_ / p_.height;
+    std::vector<std::pair<Coord, double>> reads;
+    for (const AxisRead& ry : downsample_reads(n))
+      for (const AxisRead& rx : downsample_reads(n))
+        reads.push_back(
+            {{rx.position / p_.width, ry.position / p_.height, su, sv}, rx.weight * ry.weight});
+    constexpr size_t kPerPass = 4;
+    for (size_t first = 0; first < reads.size(); first += kPerPass) {
+      PassDesc d = pass(fmt::format("downsample.{}", first / kPerPass), l_.helper_vs, l_.downsample,
+                        kSmallTexture);
+      std::vector<Coord> coords;
+      for (size_t k = first; k < std::min(reads.size(), first + kPerPass); ++k) {
+        coords.push_back(reads[k].first);
+        d.ps_constants.push_back(splat(reads[k].second));
+      }
+      d.vs_constants = helper_vs_constants(coords);
+      // Reads beyond those needed have weight 0 and read texel (0, 0): they add exactly 0.
+      d.ps_constants.resize(kPerPass, cpu::Vec4{0, 0, 0, 0});
+      bind(d, 0, kSourcesTexture, cpu::Filter::Point, kPerPass);
+      d.blend = first == 0 ? cpu::BlendMode::Replace : cpu::BlendMode::OneOne;
+      out.push_back(std::move(d));
+    }
+  }
+
+  // The blur passes of one axis: taps_per_blur_pass taps each, offsets (k + ½)/size in the
+  // blur listing's c0.., weights in the pixel listing's c0.. (the article's rule).
+  void blur(const std::vector<BlurTap>& taps, bool vertical, std::string_view source,
+            std::string_view target, std::vector<PassDesc>& out) const {
+    const double h = p_.half_texel ? 0.5 : 0.0;
+    const unsigned per = r_.taps_per_blur_pass;
+    const size_t count = (taps.size() + per - 1) / per;
+    for (size_t i = 0; i < count; ++i) {
+      PassDesc d = pass(fmt::format("{}.{}", vertical ? "blur_v" : "blur_h", i), l_.blur_vs,
+                        l_.blur_ps, target);
+      for (size_t k = 0; k < per; ++k) {
+        const size_t t = i * per + k;
+        // Padding taps read the centre with weight 0 (adds exactly 0 for finite images).
+        const double off = t < taps.size() ? taps[t].offset : 0.0;
+        const double w = t < taps.size() ? taps[t].weight : 0.0;
+        const double du = vertical ? h : off + h, dv = vertical ? off + h : h;
+        d.vs_constants.push_back({float(du / gw_), float(dv / gh_), 0, 0});
+        d.ps_constants.push_back(splat(w));
+      }
+      bind(d, 0, source, p_.half_texel ? cpu::Filter::Point : cpu::Filter::Linear, per);
+      d.blend = i == 0 ? cpu::BlendMode::Replace : cpu::BlendMode::OneOne;
+      out.push_back(std::move(d));
+    }
+  }
+
+  PassDesc composite() const {
+    PassDesc d = pass("composite", l_.helper_vs, l_.composite, kFinalTexture);
+    // Full-resolution pixel i lies at (i + ½)/n glow texels: u = v·W/(n·gw) + ½/(n·gw).
+    const double nw = double(p_.downsample) * gw_, nh = double(p_.downsample) * gh_;
+    d.vs_constants = helper_vs_constants(
+        {{0.5 / p_.width, 0.5 / p_.height}, {0.5 / nw, 0.5 / nh, p_.width / nw, p_.height / nh}});
+    // check_params keeps intensity finite and within the tier's limit (≤ FLT_MAX).
+    const auto s = static_cast<float>(p_.intensity / r_.composite_divisor);
+    d.ps_constants = {cpu::Vec4{s, s, s, 0}};
+    // Scene on stage / sampler 0, glow on 1, in both tiers (t0/s0 and t1/s1).
+    bind(d, 0, kSceneTexture, cpu::Filter::Point, 1);
+    bind(d, 1, kGlowTexture, cpu::Filter::Linear, 1);
+    return d;
+  }
+
+private:
+  static PassDesc pass(std::string name, ProgramPtr vs, ProgramPtr ps, std::string_view target) {
+    PassDesc d;
+    d.name = std::move(name);
+    d.vs = std::move(vs);
+    d.ps = std::move(ps);
+    d.target = std::string(target);
+    return d;
+  }
+
+  // A texture the pixel listing reads `reads` times from `stage` on: once on that sampler
+  // (ps_2_0), or on stages stage..stage + reads − 1 (ps_1_x, t# reads stage #).
+  void bind(PassDesc& d, uint32_t stage, std::string_view texture, cpu::Filter filter,
+            unsigned reads) const {
+    const unsigned stages = r_.one_stage_per_read ? reads : 1;
+    for (unsigned k = 0; k < stages; ++k)
+      d.textures.push_back({stage + k, std::string(texture), sampler(filter)});
+  }
+
+  const GlowParams& p_;
+  const TierRecipe& r_;
+  const Listings& l_;
+  uint32_t gw_, gh_;
+};
+
+std::string check_params(const GlowParams& p, const TierRecipe& r) {
+  if (p.downsample < 1 || p.downsample > 4)
+    return fmt::format("downsample {}: expected 1..4", p.downsample);
+  if (p.width == 0 || p.height == 0 || p.width > img::kMaxDimension ||
+      p.height > img::kMaxDimension)
+    return fmt::format("scene size {}x{}: expected 1..{}", p.width, p.height, img::kMaxDimension);
+  if (!std::isfinite(p.intensity) || p.intensity < 0)
+    return fmt::format("intensity {}: expected a finite value >= 0", p.intensity);
+  if (p.intensity > r.max_intensity)
+    return fmt::format("intensity {}: tier {} reaches at most {} ({})", p.intensity, r.tier,
+                       r.max_intensity, r.why_limit);
+  if (r.taps_per_blur_pass == 0) return fmt::format("tier {}: no taps per blur pass", r.tier);
+  return {};
+}
+
+} // namespace
+
+GlowPlan build_glow_graph(const GlowParams& p, const TierRecipe& r) {
+  GlowPlan plan;
+  plan.error = check_params(p, r);
+  if (!plan.error.empty()) return plan;
+  plan.taps = sample_blur_profile(p.profile, p.downsample, &plan.error);
+  if (plan.taps.empty()) return plan;
+  if (r.constants_clamp_to_one) {
+    size_t above = 0;
+    double top = 0;
+    for (const BlurTap& t : plan.taps)
+      if (t.weight > 1) ++above, top = std::max(top, t.weight);
+    if (above > 0)
+      plan.warnings.push_back(
+          fmt::format("profile: {} tap weight(s) above 1 (up to {}); tier {} uses 1 for them (a "
+                      "ps.1.x constant clamps to [-1, 1])",
+                      above, top, r.tier));
+  }
+  std::optional<Listings> l = load_listings(p, r.listings, &plan.error);
+  if (!l) return plan;
+
+  const uint32_t gw = (p.width + p.downsample - 1) / p.downsample;
+  const uint32_t gh = (p.height + p.downsample - 1) / p.downsample;
+  plan.glow_width = gw;
+  plan.glow_height = gh;
+  EffectGraph& g = plan.graph;
+  g.conventions.subtexel_bits = p.subtexel_bits;
+  auto tex = [&](std::string_view name, uint32_t w, uint32_t h, bool input = false) {
+    g.textures.push_back({std::string(name), w, h, p.format, input});
+  };
+  tex(kSceneTexture, p.width, p.height, true);
+  tex(kSourcesTexture, p.width, p.height);
+  if (p.downsample > 1) tex(kSmallTexture, gw, gh);
+  tex(kBlurHTexture, gw, gh);
+  tex(kGlowTexture, gw, gh);
+  tex(kFinalTexture, p.width, p.height);
+
+  const Builder b(p, r, *l, gw, gh);
+  g.passes.push_back(b.extract());
+  if (p.downsample > 1) b.downsample(g.passes);
+  const std::string_view blur_src = p.downsample > 1 ? kSmallTexture : kSourcesTexture;
+  b.blur(plan.taps, false, blur_src, kBlurHTexture, g.passes);
+  b.blur(plan.taps, true, kBlurHTexture, kGlowTexture, g.passes);
+  plan.blur_passes_per_axis =
+      unsigned((plan.taps.size() + r.taps_per_blur_pass - 1) / r.taps_per_blur_pass);
+  g.passes.push_back(b.composite());
+  plan.error = check_graph(g);
+  return plan;
+}
+
+} // namespace tierlift::effects::detail
+
+namespace tierlift::effects {
+
+std::vector<AxisRead> downsample_reads(unsigned n) {
+  std::vector<AxisRead> reads;
+  for (unsigned k = 0; k < n && n <= 4; ++k) reads.push_back({k + 0.5, 1.0 / n});
+  return reads;
+}
+
+} // namespace tierlift::effects

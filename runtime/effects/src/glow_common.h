@@ -1,0 +1,46 @@
+// What the glow tiers share (internal): parameter checks, the texture list, where every
+// helper pass reads (texel centres, exact midpoints for the downsample, the scale for sizes
+// that are not multiples of N), the blur constants by the article's rule, and the graph's
+// assembly. A tier (glow_dx9.cpp, glow_dx8.cpp) says only what differs: its listings, its
+// taps per blur pass, how a pixel listing reaches its texture (one sampler for every read,
+// or one texture stage per read), its composite constant and its intensity limit.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "tierlift/effects/glow.h"
+
+namespace tierlift::effects::detail {
+
+// Built-in listing paths ("glow/…", "gpugems21/…") of one tier.
+struct TierListingPaths {
+  std::string_view helper_vs; // every helper pass: oTk = uv · c(k+4) + ck, k = 0..3
+  std::string_view extract_ps, downsample_ps, composite_ps;
+  std::string_view blur_vs, blur_ps; // the article's listings
+};
+
+struct TierRecipe {
+  std::string_view tier; // "dx9", "dx8": for messages
+  TierListingPaths listings;
+  unsigned taps_per_blur_pass = 0;
+  // ps_2_0 samples every read through one sampler s0 (texld tk, s0); ps_1_1..1_3 read
+  // t# from texture stage #, so a texture read k times is bound to stages 0..k−1.
+  bool one_stage_per_read = false;
+  // The composite's c0.rgb = intensity / composite_divisor multiplies the glow (the dx8
+  // listing for intensities above 1 scales it back with _x4); c0.a is unused.
+  double composite_divisor = 1;
+  // ps.1.x: constants clamp to [-1, 1], so a tap weight above 1 is used as 1 (a warning).
+  bool constants_clamp_to_one = false;
+  // Intensity above this is an error; why_limit explains it in the message.
+  double max_intensity = 0;
+  std::string_view why_limit;
+};
+
+// Checks the parameters every tier shares (downsample, size, intensity ≥ 0 and finite,
+// intensity ≤ recipe.max_intensity), loads the listings, samples the profile and builds
+// the graph. Errors name the parameter (or the listing) at fault.
+GlowPlan build_glow_graph(const GlowParams& params, const TierRecipe& recipe);
+
+} // namespace tierlift::effects::detail

@@ -1,0 +1,105 @@
+// Scenes that do not come from JSON text (the default, --image), the scene image, and the
+// warnings a set of glow parameters deserves.
+#include "tierlift/effects/scene.h"
+
+#include <cmath>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "scene_parts.h"
+#include "tierlift/effects/default_scene.h"
+
+namespace tierlift::effects {
+namespace {
+
+// "PATH: what" (img's messages) → "PATH: error: what".
+std::string file_error(const std::string& path, const std::string& message) {
+  const std::string head = path + ": ";
+  const std::string what = message.starts_with(head) ? message.substr(head.size()) : message;
+  return fmt::format("{}: error: {}\n", path, what);
+}
+
+} // namespace
+
+std::vector<std::string> glow_warnings(const GlowParams& params) {
+  std::vector<std::string> out;
+  const double sum = profile_weight_sum(params.profile);
+  // One axis scales the glow by the sum, the second axis by the sum again.
+  if (std::isfinite(sum) && sum > 0 && std::abs(sum - 1) > 1e-9) {
+    const double both = sum * sum;
+    out.push_back(fmt::format("profile weights sum to {:.6g}: the glow is {:.3g} % {} than its "
+                              "sources ({:.4g} after both axes)",
+                              sum, std::abs(both - 1) * 100, both < 1 ? "darker" : "brighter",
+                              both));
+  }
+  return out;
+}
+
+std::vector<std::string> image_warnings(const img::Image& image) {
+  bool all_one = true, all_zero = true;
+  for (size_t i = 3; i < image.rgba.size(); i += 4) {
+    all_one = all_one && image.rgba[i] >= 1.0f;
+    all_zero = all_zero && image.rgba[i] <= 0.0f;
+  }
+  if (image.rgba.empty()) return {};
+  if (all_one) return {"the image's alpha is 1 everywhere: all of it glows (no alpha channel?)"};
+  if (all_zero) return {"the image's alpha is 0 everywhere: nothing glows"};
+  return {};
+}
+
+SceneLoad load_scene_file(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    return {std::nullopt, file_error(path, "is a folder, not a scene file")};
+  std::string error;
+  std::optional<std::vector<uint8_t>> bytes = img::read_file_bytes(path, error);
+  if (!bytes) return {std::nullopt, file_error(path, error)};
+  const std::string base_dir = std::filesystem::path(path).parent_path().string();
+  const std::string_view text(reinterpret_cast<const char*>(bytes->data()), bytes->size());
+  return parse_scene(text, path, base_dir);
+}
+
+Scene default_scene() {
+  Scene s;
+  s.image = std::string(kBuiltinNeon);
+  s.params.width = kDefaultSceneWidth;
+  s.params.height = kDefaultSceneHeight;
+  s.warnings = glow_warnings(s.params);
+  return s;
+}
+
+SceneLoad scene_from_png(const std::string& png_path) {
+  img::LoadResult png = img::read_png(png_path);
+  if (!png) return {std::nullopt, file_error(png_path, png.error)};
+  Scene s;
+  s.image = png_path;
+  s.params.width = png.image->width;
+  s.params.height = png.image->height;
+  s.warnings = glow_warnings(s.params);
+  for (std::string& w : image_warnings(*png.image)) s.warnings.push_back(std::move(w));
+  return {std::move(s), {}};
+}
+
+img::LoadResult load_scene_image(const Scene& scene) {
+  const GlowParams& p = scene.params;
+  if (p.width == 0 || p.height == 0 || p.width > img::kMaxDimension ||
+      p.height > img::kMaxDimension)
+    return {std::nullopt, fmt::format("{}: the scene size {}x{} is outside 1..{}", scene.image,
+                                      p.width, p.height, img::kMaxDimension)};
+  if (scene.image == kBuiltinNeon)
+    return {make_default_scene(p.width, p.height, img::Format::RGBA32F), {}};
+  if (scene.image.starts_with("builtin:"))
+    return {std::nullopt, fmt::format("{}: not a built-in image (the built-in is {})", scene.image,
+                                      kBuiltinNeon)};
+  img::LoadResult png = img::read_png(scene.image);
+  if (!png) return png;
+  if (png.image->width != p.width || png.image->height != p.height)
+    return {std::nullopt,
+            fmt::format("{}: the image is {}x{} but the scene is {}x{} (did the file change?)",
+                        scene.image, png.image->width, png.image->height, p.width, p.height)};
+  png.image->format = img::Format::RGBA32F; // 8-bit values k/255 are exact floats already
+  return png;
+}
+
+} // namespace tierlift::effects

@@ -1,0 +1,178 @@
+// Reads a scene's JSON text: syntax, the top-level keys ("image", "size"), the scene image
+// (to learn its size and to report a missing or broken PNG where the scene names it), and
+// hands "glow" to scene_glow.cpp. Every problem is a diagnostic at the field's position.
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "scene_parts.h"
+#include "tierlift/effects/default_scene.h"
+#include "tierlift/effects/scene.h"
+#include "tierlift/image/io.h"
+
+namespace tierlift::effects {
+namespace {
+
+constexpr std::string_view kSceneKeys[] = {"$schema", "description", "image", "size", "glow"};
+constexpr size_t kMaxSceneBytes = size_t{1} << 20; // a scene is a few hundred bytes
+constexpr int kMaxNesting = 32;                    // a scene nests 5 deep
+
+struct Size {
+  uint32_t width = 0, height = 0;
+};
+
+const Json* member(const Json& object, std::string_view key) {
+  auto it = object.find(key);
+  return it == object.end() ? nullptr : &*it;
+}
+
+// nlohmann's message without its "[json.exception…] parse error at line…, column…:" head:
+// the position is ours.
+std::string syntax_message(const Json::parse_error& e) {
+  std::string_view what = e.what();
+  const size_t at = what.find("syntax error");
+  return std::string(at == std::string_view::npos ? what : what.substr(at));
+}
+
+std::optional<Size> read_size(const Json& v, FieldChecker& c) {
+  if (!v.is_array() || v.size() != 2) {
+    c.error("/size", fmt::format("{} is not [width, height]", FieldChecker::shown(v)));
+    return std::nullopt;
+  }
+  auto w = c.integer(v[0], "/size/0", 1, img::kMaxDimension);
+  auto h = c.integer(v[1], "/size/1", 1, img::kMaxDimension);
+  if (!w || !h) return std::nullopt;
+  return Size{uint32_t(*w), uint32_t(*h)};
+}
+
+// "image" and "size" → scene.image, params.width/height, the image's warnings.
+void read_image(const Json& j, const std::string& base_dir, FieldChecker& c, Scene& s,
+                std::vector<std::string>& warnings) {
+  std::optional<Size> size;
+  const Json* size_json = member(j, "size");
+  if (size_json) size = read_size(*size_json, c);
+  std::string image(kBuiltinNeon);
+  if (const Json* v = member(j, "image")) {
+    std::optional<std::string> name = c.string(*v, "/image");
+    if (!name) return;
+    image = *name;
+  }
+  if (image.starts_with("builtin:")) {
+    if (image != kBuiltinNeon) {
+      c.error("/image", fmt::format("\"{}\" is not a built-in image; expected \"{}\" or a PNG file",
+                                    image, kBuiltinNeon));
+      return;
+    }
+    s.image = image;
+    if (size) {
+      s.params.width = size->width;
+      s.params.height = size->height;
+    }
+    return;
+  }
+  if (image.empty()) {
+    c.error("/image", fmt::format("is empty; expected \"{}\" or a PNG file", kBuiltinNeon));
+    return;
+  }
+  s.image = resolve_path(base_dir, image);
+  img::LoadResult png = img::read_png(s.image);
+  if (!png) {
+    c.error("/image", fmt::format("cannot read the image: {}", png.error));
+    return;
+  }
+  s.params.width = png.image->width;
+  s.params.height = png.image->height;
+  if (size_json && size && (size->width != s.params.width || size->height != s.params.height))
+    c.error("/size", fmt::format("{} does not match the image, which is {}x{} (\"size\" may be "
+                                 "left out)",
+                                 FieldChecker::shown(*size_json), s.params.width, s.params.height));
+  warnings = image_warnings(*png.image);
+}
+
+void read_scene(const Json& j, const std::string& base_dir, FieldChecker& c, Scene& s) {
+  if (!j.is_object()) {
+    c.error("", fmt::format("a scene is a JSON object {{\"image\": …, \"glow\": {{…}}}}, not {}",
+                            j.is_array() ? "an array" : FieldChecker::shown(j)));
+    return;
+  }
+  c.object(j, "", kSceneKeys);
+  if (const Json* v = member(j, "$schema")) c.string(*v, "/$schema");
+  if (const Json* v = member(j, "description")) c.string(*v, "/description");
+  std::vector<std::string> image_warns;
+  read_image(j, base_dir, c, s, image_warns);
+  if (const Json* v = member(j, "glow")) read_glow(*v, c, base_dir, s.params);
+  s.warnings = glow_warnings(s.params);
+  s.warnings.insert(s.warnings.end(), image_warns.begin(), image_warns.end());
+}
+
+// Everything up to the validated scene; diagnostics left in `c`.
+std::optional<Scene> parse(std::string_view text, const std::string& file_name,
+                           const std::string& base_dir, FieldChecker& c, JsonLocations& where) {
+  if (text.size() > kMaxSceneBytes) {
+    c.error_at(0, 0,
+               fmt::format("the scene is {} bytes; a scene may have at most {}", text.size(),
+                           kMaxSceneBytes));
+    return std::nullopt;
+  }
+  if (auto deep = nesting_beyond(text, kMaxNesting)) {
+    c.error_at(*deep, 1, fmt::format("nested deeper than {} levels", kMaxNesting));
+    return std::nullopt;
+  }
+  Json j;
+  try {
+    j = Json::parse(text);
+  } catch (const Json::parse_error& e) {
+    c.error_at(e.byte > 0 ? e.byte - 1 : 0, 1, syntax_message(e));
+    return std::nullopt;
+  } catch (const Json::exception& e) { // a number beyond the range of a double
+    where = locate_json(text);
+    const TextSpan s = where.number_overflow.value_or(TextSpan{});
+    c.error_at(s.offset, s.length,
+               where.number_overflow ? "number out of the range of a double" : e.what());
+    return std::nullopt;
+  }
+  where = locate_json(text);
+  for (const auto& [pointer, key] : where.duplicate_keys)
+    c.error_at(key.offset, key.length, fmt::format("{}: duplicate key", pointer));
+  Scene s;
+  s.file = file_name;
+  read_scene(j, base_dir, c, s);
+  if (c.failed()) return std::nullopt;
+  return s;
+}
+
+} // namespace
+
+std::span<const std::string_view> scene_keys() {
+  return kSceneKeys;
+}
+
+std::string resolve_path(const std::string& base_dir, const std::string& path) {
+  namespace fs = std::filesystem;
+  if (base_dir.empty() || fs::path(path).is_absolute()) return path;
+  return (fs::path(base_dir) / path).lexically_normal().string();
+}
+
+SceneLoad parse_scene(std::string_view json_text, const std::string& file_name,
+                      const std::string& base_dir) {
+  ir::SourceManager sm;
+  const uint32_t file = sm.add(file_name, std::string(json_text));
+  JsonLocations where;
+  FieldChecker check(sm.files[file].text, file, where);
+  SceneLoad load;
+  try {
+    load.scene = parse(sm.files[file].text, file_name, base_dir, check, where);
+  } catch (const std::exception& e) { // not expected; never let it escape
+    load.scene.reset();
+    check.error_at(0, 0, fmt::format("internal error while reading the scene: {}", e.what()));
+  }
+  if (check.failed()) {
+    load.scene.reset();
+    ir::DiagnosticSink sink;
+    check.move_to(sink);
+    load.error = ir::render_text(sink, sm);
+  }
+  return load;
+}
+
+} // namespace tierlift::effects

@@ -1,0 +1,24 @@
+// The pieces of scene loading shared between its files (scene_parse.cpp reads the top level
+// and the image, scene_glow.cpp the "glow" object, scene.cpp the rest of scene.h).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "scene_check.h"
+#include "tierlift/effects/glow.h"
+#include "tierlift/image/image.h"
+
+namespace tierlift::effects {
+
+// "/glow": every field into `params` (what is absent keeps its default).
+void read_glow(const Json& glow, FieldChecker& check, const std::string& base_dir,
+               GlowParams& params);
+
+// `path` as seen from `base_dir` ("" = the working directory); absolute paths stay.
+std::string resolve_path(const std::string& base_dir, const std::string& path);
+
+// What a scene image's alpha says that its maker may not have meant.
+std::vector<std::string> image_warnings(const img::Image& image);
+
+} // namespace tierlift::effects

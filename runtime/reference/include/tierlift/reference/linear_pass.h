@@ -1,0 +1,79 @@
+// A general pass as math, in double: the taps (read off the pass's listings by
+// extract_taps) over the textures bound to their sampler stages, the target's size, the
+// blend with what the target already holds, the ps_1_x range rule and the store rule.
+// Shares no code with the CPU device: only the sampling model of blur_model.h.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "tierlift/image/image.h"
+#include "tierlift/image/io.h"
+#include "tierlift/reference/blur_model.h"
+#include "tierlift/reference/taps.h"
+
+namespace tierlift::ref {
+
+// One sampler stage (s# of ps_2_0, texture stage of ps_1_x) and what it holds. A stage
+// without an entry reads (0, 0, 0, 1), as D3D9 does for an unbound stage.
+struct StageTexture {
+  uint32_t stage = 0;
+  const img::Image* image = nullptr; // not owned; must outlive the call
+  SamplerModel sampler;
+  // RGBA8 textures written by an earlier pass: per texel, how many 8-bit steps a float
+  // device's stored texel may lie from this one (its `slack` output; nullptr or a size other
+  // than the image's: 0 everywhere).
+  const std::vector<uint8_t>* slack = nullptr;
+};
+
+// How the pass's colour meets the target: Replace, or ONE/ONE (dst = src + dst; the passes
+// of a wide blur are summed this way). On an RGBA8 target the source colour is clamped to
+// [0, 1] before blending, as UNORM attachments do (Vulkan, D3D9).
+enum class Blend { Replace, OneOne };
+
+struct LinearPassInput {
+  std::vector<StageTexture> textures;
+  PassModel model; // conventions, target size (both > 0) and format, quad uv; not .sampler
+  Blend blend = Blend::Replace;
+  const img::Image* destination = nullptr; // OneOne: the target's stored contents
+  // The pixel listing is ps_1_x: every sample (a t# write) and the output clamp to
+  // [-m, m], m = model.conventions.ps1x_max_value (NUMERICS.md rule 25). The model clamps
+  // the final sum only: with non-negative weights and non-negative samples every partial
+  // sum of the listing's mul/mad chain lies between 0 and the final sum, so clamping the end
+  // equals clamping each step. Where a weight or a sample is negative that no longer holds
+  // and a note says so.
+  bool ps1x_clamp = false;
+  // RGBA8 only. Float devices store a value that lies at (or within float noise of) a
+  // midpoint between two 8-bit steps either way: the noise (their k/255 texels, fp32 sums,
+  // fp32 texture coordinates; about 1e-7 relative) decides, and exact math cannot predict
+  // it. So the model carries an interval: a value v whose inputs may each lie `slack`
+  // steps from the model's (the stages' slack, weighted by |weight| and the bilinear
+  // weights; the destination's slack for ONE/ONE) may come out as any store of
+  // [v − u − band, v + u + band] with band = kUnorm8MidpointBand steps.
+  // When set (target width × height entries), each entry receives the most steps any store
+  // of that interval lies from the model's own store, over the four channels (0: the
+  // stored value is determined; 1 at an exact midpoint; capped at 255).
+  std::vector<uint8_t>* slack = nullptr;
+  const std::vector<uint8_t>* destination_slack = nullptr; // ONE/ONE: the target's slack
+};
+
+// In 8-bit steps: 1/1024 of a step covers a float device's own noise on values up to 255
+// steps (fp32 sums: ~255 · 2^-23 step; bilinear weights off by W · 2^-24 texel on smooth
+// inputs).
+inline constexpr double kUnorm8MidpointBand = 1.0 / 1024;
+
+// out(i, j) = Σ_k w_k · sample(tex[stage_k], scale_k·uv + offset_k), uv = pixel_uv(i, j) of
+// the target, then the ps_1_x rule, the blend, and the target format's store rule
+// (store_value: img::quantize, with model.unorm8_ties deciding exact RGBA8 midpoints).
+// Target and texture sizes are independent (downsampling, upsampling).
+// `notes`, when given, receives the assumptions the model made for this pass.
+img::LoadResult linear_pass(const std::vector<Tap>& taps, const LinearPassInput& in,
+                            std::vector<std::string>* notes = nullptr);
+
+// The glow's source extraction: out = (r·a, g·a, b·a, a) of the one read (its stage and
+// coordinate from `read`; its weight is not used), with the same ps_1_x rule, blend and store.
+img::LoadResult mask_by_alpha_pass(const Tap& read, const LinearPassInput& in,
+                                   std::vector<std::string>* notes = nullptr);
+
+} // namespace tierlift::ref

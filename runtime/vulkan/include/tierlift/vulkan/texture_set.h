@@ -1,0 +1,83 @@
+// Textures that live on the Vulkan device: a multi-pass effect uploads its inputs once,
+// every pass samples earlier passes' targets and renders into its own without a trip
+// through host memory, and images come back only when read.
+//
+//   vulkan::TextureSet set(device);
+//   vulkan::TextureId scene, glow;
+//   set.create(1280, 720, img::Format::RGBA8, scene);   // zeros until written
+//   set.upload(scene, image);                           // stored with RGBA8's store rule
+//   set.create(1280, 720, img::Format::RGBA8, glow);
+//   vulkan::StageTextures stages{};
+//   stages[0] = scene;                                  // s0 samples `scene`
+//   set.draw(pass, stages, glow);                       // no upload, no readback
+//   set.read(glow, out);                                // out: RGBA8 values as floats
+//
+// What a texture is on the device:
+//   * Stored in its own format (RGBA8 UNORM, RGBA16F, RGBA32F): a draw renders into it with
+//     loadOp LOAD, so blending reads the stored destination exactly as Device::draw does
+//     with a host target, and read() returns it as Device::draw reads a target back (RGBA8:
+//     k/255; RGBA16F: the half's value).
+//   * Sampled as R32G32B32A32_SFLOAT, as Device::draw samples host images: RGBA32F textures
+//     directly; RGBA8 and RGBA16F through a float copy made on the device when a pass
+//     samples the texture after it changed — exactly k/255.0f and the half's value (RGBA16F:
+//     a same-size NEAREST blit; RGBA8: a table lookup in a compute shader, since lavapipe's
+//     blit computes k·fl(1/255), one ulp off in 126 of 256 levels). lavapipe filters float
+//     textures with exact float weights; that is what keeps the CPU device and lavapipe
+//     bit-identical, and a pass drawn here returns the same bits as through Device::draw.
+// Layouts and barriers between uses are tracked per texture; every call waits for its own
+// work (no call leaves work in flight). A pass may not sample its own target.
+// Nothing throws: every failure is returned as a message; a failed call changes no texture.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "tierlift/cpu/draw.h"
+#include "tierlift/image/image.h"
+#include "tierlift/vulkan/device.h"
+
+namespace tierlift::vulkan {
+
+// A texture of one TextureSet. None (0) is no texture; ids are never reused within a set.
+enum class TextureId : uint32_t { None = 0 };
+
+// The texture each pixel-stage sampler stage reads in TextureSet::draw. None: the pass's
+// own host image for that stage (pass.textures[s].image, uploaded for that draw only, as
+// Device::draw does), or the unbound texture (0, 0, 0, 1) when it has none. Sampler state
+// always comes from pass.textures[s].sampler.
+using StageTextures = std::array<TextureId, cpu::kMaxSamplers>;
+
+class TextureSet {
+public:
+  // `device` must outlive the set. Destroying the set frees every texture.
+  explicit TextureSet(Device& device);
+  ~TextureSet();
+  TextureSet(const TextureSet&) = delete;
+  TextureSet& operator=(const TextureSet&) = delete;
+
+  // A `width` × `height` texture (1..img::kMaxDimension each) stored in `format`, all zero.
+  std::string create(uint32_t width, uint32_t height, img::Format format, TextureId& out);
+  // Replaces the texture's contents with `image` (same size; stored with the texture's
+  // format's store rule whatever image.format says).
+  std::string upload(TextureId id, const img::Image& image);
+  // The texture's contents: out becomes width × height in its format.
+  std::string read(TextureId id, img::Image& out);
+  // Draws `pass` into `target`, sampling `stages` (see StageTextures). The target's current
+  // contents are the destination blending reads. Nothing is read back.
+  DrawResult draw(const cpu::Pass& pass, const StageTextures& stages, TextureId target,
+                  const DrawOptions& options = {});
+  // Frees one texture (unknown ids are ignored) or all of them.
+  void destroy(TextureId id);
+  void clear();
+  size_t size() const;
+
+  struct State;
+
+private:
+  Device& device_;
+  std::unique_ptr<State> state_;
+};
+
+} // namespace tierlift::vulkan

@@ -1,0 +1,173 @@
+// Resident textures: creation, the float shadow, and the recorded moves between uses.
+#include "resident.h"
+
+#include <fmt/format.h>
+
+namespace tierlift::vulkan {
+namespace {
+
+constexpr VkFormat kSampledFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+
+struct Use {
+  VkPipelineStageFlags stage;
+  VkAccessFlags access;
+};
+
+// What the commands that left an image in `layout` did to it (the barrier's first scope).
+// Read-only layouts contribute an execution dependency only (write-after-read).
+Use last_use(VkImageLayout layout) {
+  switch (layout) {
+  case VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL:
+    return {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT};
+  case VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL: return {VK_PIPELINE_STAGE_TRANSFER_BIT, 0};
+  case VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL:
+    return {VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT};
+  case VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL: return {VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0};
+  default: return {VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0};
+  }
+}
+
+// What the commands after the barrier do in `layout` (its second scope).
+Use next_use(VkImageLayout layout) {
+  switch (layout) {
+  case VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL:
+    return {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT};
+  case VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL:
+    return {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT};
+  case VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL:
+    // loadOp LOAD and blending read the attachment, the store writes it.
+    return {VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+            VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT};
+  case VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL:
+    return {VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT};
+  default: return {VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0};
+  }
+}
+
+bool read_only(VkImageLayout layout) {
+  return layout == VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL ||
+         layout == VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+}
+
+// A texture never written holds zeros: clear it before its first use.
+void clear_if_new(VkCommandBuffer cb, Resident& r) {
+  if (r.stored.layout != VK_IMAGE_LAYOUT_UNDEFINED) return;
+  transition(cb, r.stored, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+  const VkClearColorValue zero{};
+  const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  vkCmdClearColorImage(cb, r.stored.image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1,
+                       &range);
+  r.shadow_current = false;
+}
+
+VkBufferImageCopy whole_image(const Resident& r) {
+  VkBufferImageCopy copy{};
+  copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  copy.imageExtent = {r.width, r.height, 1};
+  return copy;
+}
+
+} // namespace
+
+std::string create_resident(Device::Impl& d, uint32_t width, uint32_t height, img::Format format,
+                            std::unique_ptr<Resident>& out) {
+  auto r = std::make_unique<Resident>();
+  r->width = width;
+  r->height = height;
+  r->format = format;
+  const VkFormat vf = vk_format(format);
+  VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                            VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  if (r->samples_stored()) usage |= VK_IMAGE_USAGE_SAMPLED_BIT;
+  if (std::string err = create_image(d, r->objects, width, height, vf, usage, r->stored.image);
+      !err.empty())
+    return err;
+  out = std::move(r);
+  return {};
+}
+
+std::string ensure_shadow(Device::Impl& d, Resident& r) {
+  if (r.samples_stored() || r.shadow.image.image != VK_NULL_HANDLE) return {};
+  const bool unorm8 = r.format == img::Format::RGBA8;
+  VkFormatProperties src, dst;
+  vkGetPhysicalDeviceFormatProperties(d.physical, vk_format(r.format), &src);
+  vkGetPhysicalDeviceFormatProperties(d.physical, kSampledFormat, &dst);
+  const bool can = unorm8 || ((src.optimalTilingFeatures & VK_FORMAT_FEATURE_BLIT_SRC_BIT) &&
+                              (dst.optimalTilingFeatures & VK_FORMAT_FEATURE_BLIT_DST_BIT));
+  if (!can)
+    return fmt::format("the Vulkan device cannot convert {} textures to RGBA32F for sampling",
+                       img::format_name(r.format));
+  Image2D shadow;
+  std::string err =
+      create_image(d, r.objects, r.width, r.height, kSampledFormat,
+                   VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, shadow);
+  if (err.empty() && unorm8) err = create_unorm8_scratch(d, r.objects, r.width, r.height, r.unorm8);
+  if (!err.empty()) return err;
+  r.shadow.image = shadow; // only once complete: a failed call leaves no half-made shadow
+  return {};
+}
+
+void transition(VkCommandBuffer cb, TrackedImage& t, VkImageLayout to) {
+  if (t.layout == to && read_only(to)) return;
+  const Use src = last_use(t.layout), dst = next_use(to);
+  image_barrier(cb, t.image.image, t.layout, to, src.access, dst.access, src.stage, dst.stage);
+  t.layout = to;
+}
+
+void record_upload(VkCommandBuffer cb, Resident& r, VkBuffer staging) {
+  transition(cb, r.stored, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+  const VkBufferImageCopy copy = whole_image(r);
+  vkCmdCopyBufferToImage(cb, staging, r.stored.image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+                         &copy);
+  r.shadow_current = false;
+}
+
+void record_as_target(VkCommandBuffer cb, Resident& r) {
+  clear_if_new(cb, r);
+  transition(cb, r.stored, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+  r.shadow_current = false; // the pass about to run writes it
+}
+
+void record_as_sampled(VkCommandBuffer cb, const Device::Impl& d, Resident& r) {
+  clear_if_new(cb, r);
+  if (r.format == img::Format::RGBA8 && !r.shadow_current) {
+    transition(cb, r.stored, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+    transition(cb, r.shadow, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+    record_unorm8_to_float(cb, d, r.unorm8, r.stored.image.image, r.shadow.image.image, r.width,
+                           r.height);
+    r.shadow_current = true;
+  } else if (!r.samples_stored() && !r.shadow_current) {
+    // NEAREST blit of the same size: every texel converted on its own, no filtering.
+    transition(cb, r.stored, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+    transition(cb, r.shadow, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+    VkImageBlit blit{};
+    blit.srcSubresource = blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    blit.srcOffsets[1] =
+        blit.dstOffsets[1] = {static_cast<int32_t>(r.width), static_cast<int32_t>(r.height), 1};
+    vkCmdBlitImage(cb, r.stored.image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                   r.shadow.image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit,
+                   VK_FILTER_NEAREST);
+    r.shadow_current = true;
+  }
+  transition(cb, r.samples_stored() ? r.stored : r.shadow,
+             VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+}
+
+void record_readback(VkCommandBuffer cb, Resident& r, VkBuffer staging) {
+  clear_if_new(cb, r);
+  transition(cb, r.stored, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+  const VkBufferImageCopy copy = whole_image(r);
+  vkCmdCopyImageToBuffer(cb, r.stored.image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging, 1,
+                         &copy);
+  VkBufferMemoryBarrier bb{};
+  bb.sType = VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER;
+  bb.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+  bb.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+  bb.srcQueueFamilyIndex = bb.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  bb.buffer = staging;
+  bb.size = VK_WHOLE_SIZE;
+  vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0,
+                       nullptr, 1, &bb, 0, nullptr);
+}
+
+} // namespace tierlift::vulkan

@@ -1,0 +1,68 @@
+// Internal: one texture that lives in device memory, and the commands that move it between
+// its uses (upload, render target, sampled, readback) with the barriers each use needs.
+//
+// A texture is stored in its own format (RGBA8 UNORM, RGBA16F, RGBA32F): that is where a
+// pass renders and blends (loadOp LOAD) and what a readback returns. Passes sample a
+// R32G32B32A32_SFLOAT image: lavapipe filters float textures with exact float weights, which
+// is what keeps the CPU device and lavapipe bit-identical (an RGBA8 UNORM texture may be
+// filtered with fixed-point weights). For RGBA32F the stored image is sampled directly; for
+// RGBA8 and RGBA16F a float "shadow" copy is made on the device when a pass samples the
+// texture after it changed, exactly: RGBA16F by a same-size NEAREST blit (every half is a
+// float; measured exact for all 63 490 non-NaN halves), RGBA8 through a table of k/255.0f
+// (unorm8_to_float.h: lavapipe's blit is one ulp off in 126 of 256 levels).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "tierlift/image/image.h"
+#include "unorm8_to_float.h"
+#include "vk_internal.h"
+
+namespace tierlift::vulkan {
+
+// An image and the layout its last command left it in. UNDEFINED: never written.
+struct TrackedImage {
+  Image2D image;
+  VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
+};
+
+struct Resident {
+  uint32_t width = 0, height = 0;
+  img::Format format = img::Format::RGBA32F;
+  TrackedImage stored;         // in `format`
+  TrackedImage shadow;         // RGBA8 / RGBA16F only, created on first sampling
+  bool shadow_current = false; // shadow holds the stored values
+  Unorm8Scratch unorm8;        // RGBA8: what the conversion into the shadow needs
+  Cleanup objects;             // owns the Vulkan objects above (destroyed with the texture)
+
+  bool samples_stored() const { return format == img::Format::RGBA32F; }
+  // The image passes sample (valid after prepare_sampled).
+  const Image2D& sampled() const { return samples_stored() ? stored.image : shadow.image; }
+};
+
+// A texture of `width` × `height` in `format` (sizes already checked by the caller). Its
+// contents are zero until written: a texture whose stored layout is still UNDEFINED is
+// cleared by the first command that uses it.
+std::string create_resident(Device::Impl& d, uint32_t width, uint32_t height, img::Format format,
+                            std::unique_ptr<Resident>& out);
+// Creates the float shadow if the texture needs one and has none (before recording).
+std::string ensure_shadow(Device::Impl& d, Resident& r);
+
+// Layout change with the stages and accesses both layouts imply. Read-only to the same
+// read-only layout records nothing (no hazard); every other pair records a barrier, so a
+// write is always made available to the next use, across submits too.
+void transition(VkCommandBuffer cb, TrackedImage& t, VkImageLayout to);
+
+// Recorders. Each leaves the texture in the layout its use needs.
+// Copies `staging` (pixels packed in r.format, pack_pixels) into the stored image.
+void record_upload(VkCommandBuffer cb, Resident& r, VkBuffer staging);
+// Makes the stored image the colour attachment of a render pass (loadOp LOAD reads it).
+void record_as_target(VkCommandBuffer cb, Resident& r);
+// Makes the image passes sample current and SHADER_READ_ONLY_OPTIMAL (ensure_shadow first).
+void record_as_sampled(VkCommandBuffer cb, const Device::Impl& d, Resident& r);
+// Copies the stored image into `staging` and makes it visible to the host.
+void record_readback(VkCommandBuffer cb, Resident& r, VkBuffer staging);
+
+} // namespace tierlift::vulkan

@@ -1,0 +1,142 @@
+// The RGBA8 store and blend rules of ir::Rounding::Llvmpipe (NUMERICS.md rule 34) against
+// Rounding::Exact, on values where the two differ. Every expected byte is worked out by hand
+// below from the rule: p = fl32(x·255) (the float product, rounded to 24 bits), then ties to
+// even; products of bytes with (t + (t >> 8) + 128) >> 8, t = a·b; sums saturate at 255.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "tierlift/cpu/draw.h"
+
+namespace tierlift::cpu {
+namespace {
+
+const img::Format U8 = img::Format::RGBA8;
+constexpr ir::Rounding kLlvmpipe = ir::Rounding::Llvmpipe, kExact = ir::Rounding::Exact;
+
+float byte(int k) {
+  return static_cast<float>(k) / 255.0f;
+}
+
+// The float nearest 0.5/255 is 0x1.010102p-9; times 255 it is 0.5 + 2.96e-8, and the float
+// spacing at 0.5 is 2^-24 = 5.96e-8, so fl32 gives exactly 0.5: even → 0 (exact rule: 1).
+TEST(Rgba8StoreLlvmpipe, ProductRoundingOntoAMidpointGoesToEven) {
+  const float half_lsb = 0x1.010102p-9f;
+  EXPECT_EQ(img::unorm8_llvmpipe(half_lsb), 0);
+  EXPECT_EQ(img::quantize(U8, half_lsb), byte(1));
+  // 2.5/255 ≈ 0x1.414142p-7: times 255 = 2.5 + 8.8e-8, spacing at 2.5 is 2^-22 = 2.4e-7 →
+  // fl32 = 2.5 → 2 (exact: 3).
+  EXPECT_EQ(img::unorm8_llvmpipe(0x1.414142p-7f), 2);
+  EXPECT_EQ(img::quantize(U8, 0x1.414142p-7f), byte(3));
+  // 0.3f = 0x1.333334p-2: times 255 = 76.5000030, spacing at 76.5 is 2^-17 = 7.6e-6 →
+  // fl32 = 76.5 → 76 (exact: 77).
+  EXPECT_EQ(img::unorm8_llvmpipe(0.3f), 76);
+  EXPECT_EQ(img::quantize(U8, 0.3f), byte(77));
+  // 0.9f = 0x1.cccccc p-1: times 255 = 229.4999939, spacing 2^-16 = 1.5e-5 → fl32 = 229.5 →
+  // 230 (exact: 229). The float rule can also round up where the exact one rounds down.
+  EXPECT_EQ(img::unorm8_llvmpipe(0.9f), 230);
+  EXPECT_EQ(img::quantize(U8, 0.9f), byte(229));
+}
+
+TEST(Rgba8StoreLlvmpipe, AgreesWithExactAwayFromMidpointsAndAtTheEnds) {
+  EXPECT_EQ(img::unorm8_llvmpipe(0.5f), 128); // 127.5 exactly: even is 128, as half up
+  EXPECT_EQ(img::unorm8_llvmpipe(0.25f), 64); // 63.75
+  EXPECT_EQ(img::unorm8_llvmpipe(0.1f), 26);  // 25.50000038 → fl32 25.5 → even 26
+  EXPECT_EQ(img::unorm8_llvmpipe(0.05f), 13); // 12.75
+  EXPECT_EQ(img::unorm8_llvmpipe(1.0f), 255);
+  EXPECT_EQ(img::unorm8_llvmpipe(std::nextafter(1.0f, 0.0f)), 255); // 254.99998
+  EXPECT_EQ(img::unorm8_llvmpipe(0.0f), 0);
+  EXPECT_EQ(img::unorm8_llvmpipe(-0.0f), 0);
+  EXPECT_EQ(img::unorm8_llvmpipe(-3.0f), 0);
+  EXPECT_EQ(img::unorm8_llvmpipe(7.0f), 255);
+  EXPECT_EQ(img::unorm8_llvmpipe(std::numeric_limits<float>::infinity()), 255);
+  EXPECT_EQ(img::unorm8_llvmpipe(-std::numeric_limits<float>::infinity()), 0);
+  EXPECT_EQ(img::unorm8_llvmpipe(std::numeric_limits<float>::quiet_NaN()), 0);
+  EXPECT_EQ(img::unorm8_llvmpipe(1e-40f), 0); // denormal: 2.55e-38 rounds to 0
+}
+
+TEST(Rgba8StoreLlvmpipe, ReplaceStoresTheLlvmpipeByte) {
+  const Vec4 src{0.3f, 0.9f, 0x1.010102p-9f, 0.5f};
+  EXPECT_EQ(blend_and_store(BlendMode::Replace, U8, src, {}, kLlvmpipe),
+            (Vec4{byte(76), byte(230), byte(0), byte(128)}));
+  EXPECT_EQ(blend_and_store(BlendMode::Replace, U8, src, {}, kExact),
+            (Vec4{byte(77), byte(229), byte(1), byte(128)}));
+}
+
+// ONE/ONE adds the source byte to the destination byte: 0.5/255 → 0, plus 10 = 10; the float
+// blend gives 10.5000000296/255 → 11. 0.9 → 230, plus 30 = 260 → saturates at 255.
+TEST(Rgba8StoreLlvmpipe, OneOneAddsBytes) {
+  const Vec4 src{0x1.010102p-9f, 0.3f, 0.9f, 0.0f};
+  const Vec4 dst{byte(10), byte(100), byte(30), byte(7)};
+  EXPECT_EQ(blend_and_store(BlendMode::OneOne, U8, src, dst, kLlvmpipe),
+            (Vec4{byte(10), byte(176), byte(255), byte(7)}));
+  EXPECT_EQ(blend_and_store(BlendMode::OneOne, U8, src, dst, kExact)[0], byte(11));
+}
+
+// SRCALPHA/ONE: src 0.3 → 76, alpha 0.4 → fl32(102.0000015) = 102 → 102. 76·102 = 7752;
+// (7752 + 30 + 128) >> 8 = 7910 >> 8 = 30. The float blend: 0.3·0.4·255 = 30.6 → 31.
+// Alpha channel: 102·102 = 10404; (10404 + 40 + 128) >> 8 = 10572 >> 8 = 41; plus 200 = 241.
+TEST(Rgba8StoreLlvmpipe, SrcAlphaOneMultipliesBytesWithRounding) {
+  const Vec4 src{0.3f, 0.1f, 1.0f, 0.4f};
+  const Vec4 dst{0, byte(5), byte(250), byte(200)};
+  // Green: 0.1 → 26; 26·102 = 2652; (2652 + 10 + 128) >> 8 = 2790 >> 8 = 10; + 5 = 15.
+  // Blue: 255·102 = 26010; (26010 + 101 + 128) >> 8 = 26239 >> 8 = 102; + 250 → 255.
+  EXPECT_EQ(blend_and_store(BlendMode::SrcAlphaOne, U8, src, dst, kLlvmpipe),
+            (Vec4{byte(30), byte(15), byte(255), byte(241)}));
+  EXPECT_EQ(blend_and_store(BlendMode::SrcAlphaOne, U8, src, dst, kExact)[0], byte(31));
+}
+
+// The byte product is not always the nearest integer: 152·229 = 34808, 34808/255 = 136.502,
+// but (34808 + 135 + 128) >> 8 = 35071 >> 8 = 136. The float blend rounds to 137.
+TEST(Rgba8StoreLlvmpipe, ByteProductKeepsLlvmpipesRounding) {
+  const Vec4 src{byte(152), 0, 0, byte(229)};
+  EXPECT_EQ(blend_and_store(BlendMode::SrcAlphaOne, U8, src, {}, kLlvmpipe)[0], byte(136));
+  EXPECT_EQ(blend_and_store(BlendMode::SrcAlphaOne, U8, src, {}, kExact)[0], byte(137));
+}
+
+// SRCALPHA/INVSRCALPHA: both products rounded on their own, then added. src 0.05 → 13,
+// alpha 0.5 → 128, dst 100: 13·128 = 1664 → (1664 + 6 + 128) >> 8 = 7; 100·127 = 12700 →
+// (12700 + 49 + 128) >> 8 = 12877 >> 8 = 50; 7 + 50 = 57. The float blend:
+// (0.05·0.5 + 100/255·0.5)·255 = 56.375 → 56.
+TEST(Rgba8StoreLlvmpipe, SrcAlphaInvSrcAlphaRoundsEachProduct) {
+  const Vec4 src{0.05f, 0.05f, 0.05f, 0.5f};
+  const Vec4 dst{byte(100), byte(100), byte(100), byte(100)};
+  const Vec4 got = blend_and_store(BlendMode::SrcAlphaInvSrcAlpha, U8, src, dst, kLlvmpipe);
+  EXPECT_EQ(got[0], byte(57));
+  // Alpha: 128·128 = 16384 → (16384 + 64 + 128) >> 8 = 64; 100·127 → 50; 114.
+  EXPECT_EQ(got[3], byte(114));
+  EXPECT_EQ(blend_and_store(BlendMode::SrcAlphaInvSrcAlpha, U8, src, dst, kExact)[0], byte(56));
+}
+
+// Other formats are not affected by the convention.
+TEST(Rgba8StoreLlvmpipe, FloatFormatsFollowTheirOwnRules) {
+  const Vec4 src{0.3f, 0.9f, 2.0f, -1.0f};
+  EXPECT_EQ(blend_and_store(BlendMode::Replace, img::Format::RGBA32F, src, {}, kLlvmpipe), src);
+  // RGBA16F under Llvmpipe rounds toward zero (NUMERICS.md rule 35): 0.3 lies in
+  // [0.25, 0.5), steps of 2^-12, 0.3 · 4096 = 1228.8 → 1228 (nearest-even gives 1229).
+  EXPECT_EQ(
+      blend_and_store(BlendMode::Replace, img::Format::RGBA16F, {0.3f, 0, 0, 0}, {}, kLlvmpipe)[0],
+      1228.0f / 4096);
+  EXPECT_EQ(
+      blend_and_store(BlendMode::Replace, img::Format::RGBA16F, {0.3f, 0, 0, 0}, {}, kExact)[0],
+      1229.0f / 4096);
+}
+
+// cpu::draw stores with the pass's convention: 0.3 stores 76 under Llvmpipe (the default)
+// and 77 under Exact.
+TEST(Rgba8StoreLlvmpipe, DrawFollowsThePassConvention) {
+  Pass p;
+  p.constant_inputs.color[0] = {0.3f, 0.9f, 0.5f, 1.0f};
+  img::Image a(2, 2, U8), b(2, 2, U8);
+  ASSERT_TRUE(draw(p, a, 1).ok);
+  EXPECT_EQ(a.at(1, 1)[0], byte(76));
+  EXPECT_EQ(a.at(1, 1)[1], byte(230));
+  p.conventions.rounding = kExact;
+  ASSERT_TRUE(draw(p, b, 1).ok);
+  EXPECT_EQ(b.at(1, 1)[0], byte(77));
+  EXPECT_EQ(b.at(1, 1)[1], byte(229));
+}
+
+} // namespace
+} // namespace tierlift::cpu

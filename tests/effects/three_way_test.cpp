@@ -1,0 +1,346 @@
+// Three ways, one answer (design.md): the glow graph run by the interpreter (CpuPassDevice),
+// by Vulkan on lavapipe (validation layer on; it must stay silent) and by the analytic
+// device (the passes as math, in double), every pair compared per pass and for the final
+// frame against design.md's targets (img::judge). Then the half-texel rule, shown both ways
+// on the analytic blur passes: with the half texel they equal the plain discrete convolution
+// of their intended texel taps; without it they differ from it by exactly what the corner
+// model predicts.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <random>
+
+#include "../vulkan/vk_test_util.h"
+#include "tierlift/effects/agreement.h"
+#include "tierlift/effects/analytic_device.h"
+#include "tierlift/effects/builtin_listing.h"
+#include "tierlift/effects/default_scene.h"
+#include "tierlift/effects/glow_run.h"
+#include "tierlift/reference/blur_model.h"
+#include "tierlift/reference/taps.h"
+
+namespace tierlift::effects {
+namespace {
+
+// Until the dx8 generator lands (the lead removes this at integration).
+constexpr const char* kDx8NotBuilt = "tier dx8: not built yet";
+
+enum class Scene { RandomBinaryAlpha, RandomAlpha, Default };
+
+// Odd sizes; rgb random multiples of 1/255; alpha in {0, 1} or a random multiple of 1/255.
+img::Image make_scene(Scene s, uint32_t& w, uint32_t& h) {
+  if (s == Scene::Default) {
+    w = 96, h = 54;
+    return make_default_scene(w, h);
+  }
+  const bool binary = s == Scene::RandomBinaryAlpha;
+  w = binary ? 37 : 50;
+  h = binary ? 23 : 31;
+  img::Image im(w, h);
+  std::mt19937 rng(binary ? 2026u : 1122u);
+  std::uniform_int_distribution<int> byte(0, 255), coin(0, 1);
+  for (size_t i = 0; i < im.rgba.size(); i += 4) {
+    for (int c = 0; c < 3; ++c) im.rgba[i + c] = float(byte(rng)) / 255.0f;
+    im.rgba[i + 3] = binary ? float(coin(rng)) : float(byte(rng)) / 255.0f;
+  }
+  return im;
+}
+
+struct Case {
+  Tier tier;
+  unsigned downsample;
+  img::Format format;
+  bool half_texel;
+  Scene scene;
+};
+
+std::string case_name(const ::testing::TestParamInfo<Case>& info) {
+  const Case& c = info.param;
+  const char* scene[] = {"Random37x23", "Random50x31", "Default96x54"};
+  return std::string(tier_name(c.tier)) + "_ds" + std::to_string(c.downsample) + "_" +
+         std::string(img::format_name(c.format)) + (c.half_texel ? "_half" : "_nohalf") + "_" +
+         scene[int(c.scene)];
+}
+
+// The worst figures per pair of ways and format over every test, printed at the end.
+struct PairFigures {
+  double max_abs = 0;
+  double min_identical = 1;
+  size_t rows = 0;
+};
+std::map<std::string, PairFigures>& figures() {
+  static std::map<std::string, PairFigures> f;
+  return f;
+}
+class FiguresPrinter : public ::testing::Environment {
+public:
+  void TearDown() override {
+    for (const auto& [key, f] : figures())
+      if (key.ends_with("beyond target"))
+        std::printf("[three-way] %-28s %zu rows (measured, not held to the targets)\n", key.c_str(),
+                    f.rows);
+      else
+        std::printf(
+            "[three-way] %-28s max abs %.3g, identical (midpoints counted) >= %.4f %% (%zu rows)\n",
+            key.c_str(), f.max_abs, 100.0 * f.min_identical, f.rows);
+  }
+};
+[[maybe_unused]] auto* const kPrinter = ::testing::AddGlobalTestEnvironment(new FiguresPrinter);
+
+struct Way {
+  std::string name;
+  GlowRun run;
+};
+
+// RGBA8 and the analytic device: averaging 8-bit texels with weights 1/4 or 1/16 lands on
+// exact rounding midpoints (about a quarter of the values at N = 2 on random scenes), where
+// either rounding is right and float noise picks one; the devices then hand the blur inputs
+// that differ by a step there. The analytic device carries that as slack (linear_pass.h)
+// into every value computed from such texels, and compare_runs counts a difference within
+// the slack as agreement. Every row is held to the targets.
+
+// Every pair of ways within the targets, per pass and for the final frame.
+void expect_agreement(const std::vector<Way>& ways, size_t passes, img::Format format) {
+  for (size_t a = 0; a < ways.size(); ++a)
+    for (size_t b = a + 1; b < ways.size(); ++b) {
+      const Way &x = ways[a], &y = ways[b];
+      RunAgreement agree = compare_runs(x.run.run, x.run.images, y.run.run, y.run.images,
+                                        std::string(kFinalTexture));
+      ASSERT_EQ(agree.error, "") << x.name << " vs " << y.name;
+      ASSERT_EQ(agree.passes.size(), passes + 1);
+      const std::string key = x.name + "-" + y.name + " " + std::string(img::format_name(format));
+      PairFigures& f = figures()[key];
+      for (const PassAgreement& row : agree.passes) {
+        EXPECT_TRUE(row.verdict.pass)
+            << x.name << " vs " << y.name << ", " << row.pass << ": " << row.verdict.summary;
+        f.max_abs = std::max(f.max_abs, row.comparison.max_abs_all);
+        f.min_identical = std::min(f.min_identical, row.identical_share_with_midpoints);
+        ++f.rows;
+      }
+      EXPECT_TRUE(agree.all_pass) << x.name << " vs " << y.name;
+    }
+}
+
+class ThreeWay : public vulkan::test::VulkanTest, public ::testing::WithParamInterface<Case> {};
+
+TEST_P(ThreeWay, EveryPairAgreesOnEveryPass) {
+  const Case c = GetParam();
+  GlowParams p;
+  p.tier = c.tier;
+  p.downsample = c.downsample;
+  p.format = c.format;
+  p.half_texel = c.half_texel;
+  p.subtexel_bits = 0; // lavapipe weights float textures exactly
+  const img::Image scene = make_scene(c.scene, p.width, p.height);
+  GlowPlan plan = build_glow(p);
+  if (c.tier == Tier::Dx8 && plan.error == kDx8NotBuilt) GTEST_SKIP() << plan.error;
+  ASSERT_TRUE(plan) << plan.error;
+
+  CpuPassDevice cpu_dev(2);
+  AnalyticPassDevice analytic;
+  auto vk_dev = make_vulkan_pass_device(*dev);
+  std::vector<Way> ways;
+  ways.push_back({"cpu", run_glow(plan, scene, cpu_dev, true)});
+  ways.push_back({"vulkan", run_glow(plan, scene, *vk_dev, true)});
+  ways.push_back({"analytic", run_glow(plan, scene, analytic, true)});
+  for (const Way& w : ways) ASSERT_TRUE(w.run.run.ok) << w.name << ": " << w.run.run.error;
+  EXPECT_TRUE(dev->messages().empty()) << dev->messages().front();
+  expect_agreement(ways, plan.graph.passes.size(), c.format);
+  // The glow is there: the final frame is not the scene (some texel has alpha > 0).
+  const img::Image& fin = ways[2].run.images.at(std::string(kFinalTexture));
+  EXPECT_NE(fin.rgba, ways[2].run.images.at(std::string(kSceneTexture)).rgba);
+}
+
+std::vector<Case> all_cases() {
+  std::vector<Case> out;
+  for (Tier t : {Tier::Dx9, Tier::Dx8})
+    for (unsigned n : {1u, 2u, 4u})
+      for (img::Format f : {img::Format::RGBA8, img::Format::RGBA32F})
+        for (bool half : {true, false})
+          for (Scene s : {Scene::RandomBinaryAlpha, Scene::RandomAlpha, Scene::Default})
+            out.push_back({t, n, f, half, s});
+  return out;
+}
+
+INSTANTIATE_TEST_SUITE_P(Glow, ThreeWay, ::testing::ValuesIn(all_cases()), case_name);
+
+// The default scene at full size, as `tierlift glow` runs it, every pair held to the targets
+// on every pass. RGBA32F: the downsample and the blur (with the half texel) read texels by
+// point at their centres, so the fp32 texture coordinates (off by up to ~1280·2^-24 texel)
+// cannot move a weight, as a bilinear read between texels would. RGBA8: the default scene's
+// glow sources are mostly flat, so the rounding midpoints of the downsample (flagged, and
+// counted as agreeing) stay few and what they spread through the blur stays within 0.1 %.
+struct FullSize {
+  Tier tier;
+  unsigned downsample;
+  img::Format format;
+};
+
+class ThreeWayFullSize : public vulkan::test::VulkanTest,
+                         public ::testing::WithParamInterface<FullSize> {};
+
+TEST_P(ThreeWayFullSize, DefaultSceneEveryPairAgrees) {
+  const FullSize c = GetParam();
+  GlowParams p; // 1280×720
+  p.tier = c.tier;
+  p.downsample = c.downsample;
+  p.format = c.format;
+  p.subtexel_bits = 0;
+  GlowPlan plan = build_glow(p);
+  ASSERT_TRUE(plan) << plan.error;
+  const img::Image scene = make_default_scene(p.width, p.height);
+  CpuPassDevice cpu_dev(2);
+  AnalyticPassDevice analytic;
+  auto vk_dev = make_vulkan_pass_device(*dev);
+  std::vector<Way> ways;
+  for (auto [name, device] : {std::pair<const char*, PassDevice*>{"cpu", &cpu_dev},
+                              {"vulkan", vk_dev.get()},
+                              {"analytic", &analytic}}) {
+    auto t0 = std::chrono::steady_clock::now();
+    ways.push_back({name, run_glow(plan, scene, *device, true)});
+    std::printf(
+        "[three-way] 1280x720 %s ds%u %s on %s: %.0f ms\n", std::string(tier_name(c.tier)).c_str(),
+        c.downsample, std::string(img::format_name(c.format)).c_str(), name,
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    ASSERT_TRUE(ways.back().run.run.ok) << name << ": " << ways.back().run.run.error;
+  }
+  EXPECT_TRUE(dev->messages().empty()) << dev->messages().front();
+  expect_agreement(ways, plan.graph.passes.size(), p.format);
+}
+
+INSTANTIATE_TEST_SUITE_P(Glow, ThreeWayFullSize,
+                         // Both tiers and N = 2, 4 in RGBA8 (about 1.5-3 s each here;
+                         // dx9 ds4 and dx8 ds2 pass as well, left out for time).
+                         ::testing::Values(FullSize{Tier::Dx9, 4, img::Format::RGBA32F},
+                                           FullSize{Tier::Dx9, 2, img::Format::RGBA8},
+                                           FullSize{Tier::Dx8, 4, img::Format::RGBA8}),
+                         [](const ::testing::TestParamInfo<FullSize>& info) {
+                           return std::string(tier_name(info.param.tier)) + "_ds" +
+                                  std::to_string(info.param.downsample) + "_" +
+                                  std::string(img::format_name(info.param.format));
+                         });
+
+// The half-texel rule on the analytic blur passes (the first pass of each axis, which
+// replaces its target, so it holds that pass's taps alone), both ways, for each tier.
+void check_half_texel_rule(Tier tier, bool half_texel) {
+  GlowParams p;
+  p.tier = tier;
+  p.downsample = 2;
+  p.format = img::Format::RGBA32F;
+  p.half_texel = half_texel;
+  const img::Image scene = make_scene(Scene::RandomAlpha, p.width, p.height);
+  GlowPlan plan = build_glow(p);
+  if (tier == Tier::Dx8 && plan.error == kDx8NotBuilt) GTEST_SKIP() << plan.error;
+  ASSERT_TRUE(plan) << plan.error;
+  AnalyticPassDevice analytic;
+  GlowRun run = run_glow(plan, scene, analytic, true);
+  ASSERT_TRUE(run.run.ok) << run.run.error;
+  const unsigned per_pass = tier == Tier::Dx9 ? kTapsPerBlurPassDx9 : kTapsPerBlurPassDx8;
+  for (const char* name : {"blur_h.0", "blur_v.0"}) {
+    SCOPED_TRACE(name);
+    const bool vertical = name[5] == 'v';
+    size_t index = 0;
+    while (index < plan.graph.passes.size() && plan.graph.passes[index].name != name) ++index;
+    ASSERT_LT(index, plan.graph.passes.size());
+    const PassDesc& d = plan.graph.passes[index];
+    ASSERT_EQ(d.blend, cpu::BlendMode::Replace);
+    ASSERT_FALSE(d.textures.empty());
+    // With the half texel every tap sits on a texel centre and the pass reads by point
+    // (bilinear there is the texel itself); without it, bilinear at texel corners.
+    ASSERT_EQ(d.textures[0].sampler.filter, half_texel ? cpu::Filter::Point : cpu::Filter::Linear);
+    ASSERT_EQ(d.textures[0].sampler.address_u, cpu::AddressMode::Clamp);
+    ASSERT_EQ(d.textures[0].sampler.address_v, cpu::AddressMode::Clamp);
+    const img::Image& source = run.images.at(d.textures[0].texture);
+    ref::TapExtraction ex = ref::extract_taps(*d.vs, d.vs_constants, *d.ps, d.ps_constants);
+    ASSERT_TRUE(ex) << ex.error;
+    ASSERT_EQ(ex.taps.size(), per_pass);
+    // The intended taps are the profile's first taps along the axis (padding: weight 0).
+    const auto texel_taps = ref::intended_texel_taps(ex.taps, source.width, source.height);
+    for (size_t k = 0; k < per_pass && k < plan.taps.size(); ++k) {
+      EXPECT_EQ(vertical ? texel_taps[k].dy : texel_taps[k].dx, plan.taps[k].offset) << k;
+      EXPECT_EQ(vertical ? texel_taps[k].dx : texel_taps[k].dy, 0) << k;
+      EXPECT_NEAR(texel_taps[k].weight[0], plan.taps[k].weight, 1e-7) << k;
+    }
+    // The models are bilinear with clamp: the pass's sampler without the half texel, and with
+    // it equal to the point read, since every tap lies on a texel centre.
+    ref::PassModel m;
+    m.conventions = plan.graph.conventions;
+    m.target_format = img::Format::RGBA32F;
+    img::LoadResult conv = ref::discrete_convolution(texel_taps, source, m);
+    ASSERT_TRUE(conv) << conv.error;
+    const img::Image& result = run.run.passes[index].result;
+    ASSERT_EQ(result.rgba.size(), conv.image->rgba.size());
+    std::string err;
+    auto pred = ref::predict_corner_difference(ex.taps, source, m, &err);
+    ASSERT_TRUE(pred) << err;
+    double worst = 0;
+    for (size_t v = 0; v < result.rgba.size(); ++v) {
+      const double diff = double(result.rgba[v]) - double(conv.image->rgba[v]);
+      const double want = half_texel ? 0.0 : double(pred->difference.rgba[v]);
+      worst = std::max(worst, std::abs(diff - want));
+    }
+    EXPECT_LE(worst, 1e-6);
+    // With the half texel every tap hits a texel centre: the corner model predicts no shift;
+    // without it the shift is there to see.
+    if (half_texel)
+      EXPECT_EQ(pred->max_abs, 0.0);
+    else
+      EXPECT_GT(pred->max_abs, 1e-4); // well above the 1e-6 the equality is checked to
+    std::printf("[three-way] %s %s %s: |analytic - conv - predicted| <= %.2g, predicted shift "
+                "max %.3g\n",
+                std::string(tier_name(tier)).c_str(), name,
+                half_texel ? "half texel" : "no half texel", worst, pred->max_abs);
+  }
+}
+
+TEST(ThreeWayHalfTexel, Dx9WithHalfTexelBlurIsThePlainConvolution) {
+  check_half_texel_rule(Tier::Dx9, true);
+}
+TEST(ThreeWayHalfTexel, Dx9WithoutHalfTexelBlurShiftsAsTheCornerModelSays) {
+  check_half_texel_rule(Tier::Dx9, false);
+}
+TEST(ThreeWayHalfTexel, Dx8WithHalfTexelBlurIsThePlainConvolution) {
+  check_half_texel_rule(Tier::Dx8, true);
+}
+TEST(ThreeWayHalfTexel, Dx8WithoutHalfTexelBlurShiftsAsTheCornerModelSays) {
+  check_half_texel_rule(Tier::Dx8, false);
+}
+
+// A pass the model cannot take is an error naming the pass and the instruction.
+TEST(ThreeWayAnalytic, UnmodelledPassesAreErrors) {
+  GlowParams p;
+  const img::Image scene = make_scene(Scene::RandomAlpha, p.width, p.height);
+  GlowPlan plan = build_glow(p);
+  ASSERT_TRUE(plan) << plan.error;
+  std::string err;
+  auto product = builtin_listing("glow/extract_sources.psh", &err); // rgb × alpha
+  ASSERT_NE(product, nullptr) << err;
+  GlowPlan bad = plan;
+  bad.graph.passes.back().ps = product; // the composite, still declared Linear
+  AnalyticPassDevice analytic;
+  GlowRun r = run_glow(bad, scene, analytic);
+  EXPECT_FALSE(r.run.ok);
+  EXPECT_NE(r.run.error.find("pass 'composite'"), std::string::npos) << r.run.error;
+  EXPECT_NE(r.run.error.find("line 7:1"), std::string::npos) << r.run.error;
+  EXPECT_NE(r.run.error.find("product of two samples"), std::string::npos) << r.run.error;
+  bad = plan;
+  bad.graph.passes.back().blend = cpu::BlendMode::SrcAlphaOne;
+  r = run_glow(bad, scene, analytic);
+  EXPECT_NE(r.run.error.find("Replace and ONE/ONE"), std::string::npos) << r.run.error;
+  bad = plan;
+  bad.graph.passes[0].analytic = AnalyticForm::MaskByAlpha;
+  bad.graph.passes.back().analytic = AnalyticForm::MaskByAlpha; // reads two textures
+  r = run_glow(bad, scene, analytic);
+  EXPECT_NE(r.run.error.find("2 different reads"), std::string::npos) << r.run.error;
+  // And the plan itself runs, with no notes for ps_2_0 passes.
+  r = run_glow(plan, scene, analytic);
+  EXPECT_TRUE(r.run.ok) << r.run.error;
+  EXPECT_TRUE(analytic.notes().empty()) << analytic.notes().front();
+}
+
+} // namespace
+} // namespace tierlift::effects

@@ -1,0 +1,195 @@
+// A multi-pass chain through resident textures (TextureSet) returns the same bits as the same
+// chain through Device::draw, pass by pass with host images in between (the path the glow
+// took before textures stayed on the device) — in RGBA8, RGBA16F and RGBA32F. And the float
+// copy a sampled RGBA8 / RGBA16F texture gets on the device holds exactly k/255 and the
+// half's value (checked against values computed here, not by the code under test).
+#include <cmath>
+#include <map>
+
+#include "resident_fixture.h"
+
+namespace tierlift::vulkan::test {
+namespace {
+
+constexpr uint32_t kW = 37, kH = 23, kSmallW = 19, kSmallH = 12; // odd sizes on purpose
+
+// Seeded noise; float formats also get values above 1 and below 0.
+img::Image noise(uint32_t w, uint32_t h, img::Format f, uint64_t seed) {
+  img::Image im(w, h, f);
+  uint64_t s = seed;
+  for (float& v : im.rgba) {
+    s = s * 6364136223846793005ull + 1442695040888963407ull;
+    const float u = static_cast<float>(s >> 40) / static_cast<float>(1ull << 24); // [0, 1)
+    v = f == img::Format::RGBA8 ? u : u * 2.5f - 0.5f;
+  }
+  img::quantize_in_place(im); // an input as the graph stores it
+  return im;
+}
+
+struct Step {
+  std::string source, target;
+  cpu::BlendMode blend;
+  std::vector<cpu::Vec4> offsets; // vs c0, c1: tap offsets in uv
+  std::vector<cpu::Vec4> weights; // ps c0, c1
+  cpu::Filter filter = cpu::Filter::Linear;
+};
+
+// in → a → b (+= in) → c (half size) → a again (after being sampled) → d (ONE/ONE into a
+// texture no pass wrote before).
+std::vector<Step> chain() {
+  const float du = 1.0f / kW, dv = 1.0f / kH;
+  using cpu::BlendMode;
+  return {
+      {"in",
+       "a",
+       BlendMode::Replace,
+       {{0.3f * du, -0.2f * dv, 0, 0}, {-1.7f * du, 0.45f * dv, 0, 0}},
+       {{0.6f, 0.6f, 0.6f, 0.6f}, {0.5f, 0.5f, 0.5f, 0.5f}}},
+      {"a",
+       "b",
+       BlendMode::Replace,
+       {{0.5f * du, 0.5f * dv, 0, 0}, {2.25f * du, -0.75f * dv, 0, 0}},
+       {{0.75f, 0.5f, 0.25f, 1}, {0.3f, 0.3f, 0.3f, 0.3f}}},
+      {"in",
+       "b",
+       BlendMode::OneOne,
+       {{-0.1f * du, 0.9f * dv, 0, 0}, {0, 0, 0, 0}},
+       {{0.2f, 0.2f, 0.2f, 0.2f}, {0.1f, 0.1f, 0.1f, 0.1f}}},
+      {"b",
+       "c",
+       BlendMode::Replace,
+       {{0.5f * du, 0.5f * dv, 0, 0}, {-0.5f * du, -0.5f * dv, 0, 0}},
+       {{0.5f, 0.5f, 0.5f, 0.5f}, {0.5f, 0.5f, 0.5f, 0.5f}}},
+      {"c",
+       "a",
+       BlendMode::Replace,
+       {{0.13f * du, 0.37f * dv, 0, 0}, {0, 0, 0, 0}},
+       {{1, 1, 1, 1}, {0.25f, 0.25f, 0.25f, 0.25f}}},
+      {"a",
+       "d",
+       BlendMode::OneOne,
+       {{0.7f * du, 0.1f * dv, 0, 0}, {-0.3f * du, 0.2f * dv, 0, 0}},
+       {{0.4f, 0.4f, 0.4f, 0.4f}, {0.7f, 0.7f, 0.7f, 0.7f}}},
+  };
+}
+
+cpu::Pass step_pass(const Step& s) {
+  cpu::Pass p = quad_pass(two_coords_vs(), two_taps_ps(), s.offsets, s.weights, s.blend);
+  p.textures[0].sampler.filter = s.filter;
+  p.textures[0].sampler.address_u = p.textures[0].sampler.address_v = cpu::AddressMode::Clamp;
+  return p;
+}
+
+class ResidentChain : public ResidentTest, public ::testing::WithParamInterface<img::Format> {};
+
+TEST_P(ResidentChain, EqualsDrawPerPassBitForBit) {
+  const img::Format f = GetParam();
+  const std::map<std::string, std::pair<uint32_t, uint32_t>> sizes = {{"in", {kW, kH}},
+                                                                      {"a", {kW, kH}},
+                                                                      {"b", {kW, kH}},
+                                                                      {"c", {kSmallW, kSmallH}},
+                                                                      {"d", {kW, kH}}};
+
+  // Old path: host images between passes, Device::draw per pass.
+  std::map<std::string, img::Image> host;
+  for (const auto& [name, wh] : sizes) host[name] = img::Image(wh.first, wh.second, f);
+  host["in"] = noise(kW, kH, f, 7);
+  for (const Step& s : chain()) {
+    cpu::Pass p = step_pass(s);
+    p.textures[0].image = std::make_shared<const img::Image>(host[s.source]);
+    DrawResult r = dev->draw(p, host[s.target]);
+    ASSERT_TRUE(r.ok) << r.error;
+  }
+
+  // New path: every texture resident, the input uploaded once, nothing read until the end.
+  TextureSet set(*dev);
+  std::map<std::string, TextureId> ids;
+  for (const auto& [name, wh] : sizes) ASSERT_EQ(set.create(wh.first, wh.second, f, ids[name]), "");
+  ASSERT_EQ(set.upload(ids["in"], noise(kW, kH, f, 7)), "");
+  for (const Step& s : chain()) {
+    StageTextures stages{};
+    stages[0] = ids[s.source];
+    DrawResult r = set.draw(step_pass(s), stages, ids[s.target]);
+    ASSERT_TRUE(r.ok) << r.error;
+  }
+
+  for (const auto& [name, id] : ids) {
+    img::Image out;
+    ASSERT_EQ(set.read(id, out), "") << name;
+    std::string where;
+    EXPECT_TRUE(same_bits(host[name], out, &where)) << name << ": " << where;
+  }
+  // The chain is not trivial: the last target is neither zero nor the input.
+  EXPECT_NE(host["d"].rgba, img::Image(kW, kH, f).rgba);
+  EXPECT_NE(host["d"].rgba, host["in"].rgba);
+}
+
+INSTANTIATE_TEST_SUITE_P(Formats, ResidentChain,
+                         ::testing::Values(img::Format::RGBA8, img::Format::RGBA16F,
+                                           img::Format::RGBA32F),
+                         [](const auto& info) {
+                           return std::string(img::format_name(info.param));
+                         });
+
+// Point-samples every texel of `im` (stored in `f`) into an RGBA32F texture on the device.
+img::Image sampled_copy(Device& dev, const img::Image& im, img::Format f) {
+  TextureSet set(dev);
+  TextureId src{}, dst{};
+  EXPECT_EQ(set.create(im.width, im.height, f, src), "");
+  EXPECT_EQ(set.create(im.width, im.height, img::Format::RGBA32F, dst), "");
+  EXPECT_EQ(set.upload(src, im), "");
+  // Texel centres: the quad's uv (u = i/W at pixel i, D3D9 centres) plus half a texel.
+  const cpu::Vec4 half{0.5f / im.width, 0.5f / im.height, 0, 0};
+  cpu::Pass p = quad_pass(two_coords_vs(), copy_ps(), {half, half}, {}, cpu::BlendMode::Replace);
+  StageTextures stages{};
+  stages[0] = src;
+  DrawResult r = set.draw(p, stages, dst);
+  EXPECT_TRUE(r.ok) << r.error;
+  img::Image out;
+  EXPECT_EQ(set.read(dst, out), "");
+  return out;
+}
+
+TEST_F(ResidentTest, Rgba8SamplesExactlyKOver255) {
+  img::Image im(16, 16, img::Format::RGBA8);
+  for (uint32_t p = 0; p < 256; ++p)
+    for (uint32_t c = 0; c < 4; ++c) im.rgba[p * 4 + c] = float((p + 64 * c) % 256) / 255.0f;
+  img::Image out = sampled_copy(*dev, im, img::Format::RGBA8);
+  ASSERT_EQ(out.rgba.size(), im.rgba.size());
+  for (uint32_t p = 0; p < 256; ++p)
+    for (uint32_t c = 0; c < 4; ++c) {
+      const uint32_t k = (p + 64 * c) % 256;
+      ASSERT_EQ(out.rgba[p * 4 + c], float(k) / 255.0f) << "level " << k;
+    }
+}
+
+// The value of half-float bits h, from the definition (sign, 5-bit exponent, 10-bit mantissa).
+double half_value(uint32_t h) {
+  const double sign = (h & 0x8000u) ? -1.0 : 1.0;
+  const int e = int((h >> 10) & 31u);
+  const double m = double(h & 1023u);
+  if (e == 31) return sign * INFINITY; // NaN patterns are not used
+  return e == 0 ? sign * std::ldexp(m, -24) : sign * std::ldexp(1024.0 + m, e - 25);
+}
+
+TEST_F(ResidentTest, Rgba16fSamplesEveryHalfExactly) {
+  // 128 × 128 × 4 = 65536 values: every half pattern once (NaN patterns replaced by 0).
+  img::Image im(128, 128, img::Format::RGBA16F);
+  auto is_nan = [](uint32_t h) { return ((h >> 10) & 31u) == 31u && (h & 1023u) != 0; };
+  for (uint32_t h = 0; h < 65536; ++h)
+    im.rgba[h] = is_nan(h) ? 0.0f : static_cast<float>(half_value(h));
+  img::Image out = sampled_copy(*dev, im, img::Format::RGBA16F);
+  ASSERT_EQ(out.rgba.size(), im.rgba.size());
+  uint32_t checked = 0;
+  for (uint32_t h = 0; h < 65536; ++h) {
+    if (is_nan(h)) continue;
+    const float want = static_cast<float>(half_value(h));
+    ASSERT_EQ(std::memcmp(&out.rgba[h], &want, 4), 0)
+        << fmt::format("half 0x{:04x}: {} vs {}", h, out.rgba[h], want);
+    ++checked;
+  }
+  EXPECT_EQ(checked, 65536u - 2 * 1023u);
+}
+
+} // namespace
+} // namespace tierlift::vulkan::test

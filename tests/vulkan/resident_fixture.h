@@ -1,0 +1,99 @@
+// Shared by the resident-texture tests (resident_*.cpp): a device with the validation layer
+// AND its synchronization validation on (TextureSet's barriers are what these tests check),
+// a fixture that fails a test on any message, and passes built from small ps_2_0 listings.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <fmt/format.h>
+#include <string>
+
+#include "tierlift/vulkan/texture_set.h"
+#include "vk_test_util.h"
+
+namespace tierlift::vulkan::test {
+
+// Kept for the process, like shared_device (vk_test_util.h), for the same LeakSanitizer reason.
+inline Device* sync_validated_device(std::string* error) {
+  static std::string err;
+  static Device* dev = [] {
+    DeviceOptions o;
+    o.validation = true;
+    o.synchronization_validation = true;
+    return Device::create(o, &err).release();
+  }();
+  if (error) *error = err;
+  return dev;
+}
+
+class ResidentTest : public ::testing::Test {
+protected:
+  void SetUp() override {
+    std::string err;
+    dev = sync_validated_device(&err);
+    if (!dev) {
+      if (err.find("no Vulkan device found") != std::string::npos) GTEST_SKIP() << err;
+      FAIL() << err;
+    }
+    dev->clear_messages();
+  }
+  void TearDown() override {
+    if (!dev) return;
+    for (const auto& m : dev->messages()) ADD_FAILURE() << "validation layer: " << m;
+    dev->clear_messages();
+  }
+  Device* dev = nullptr;
+};
+
+// vs_2_0: oPos = v0, oT0 = v1 + c0, oT1 = v1 + c1 (v1: the quad's uv).
+inline std::shared_ptr<const ir::Program> two_coords_vs() {
+  return parse_listing("vs_2_0\ndcl_position v0\ndcl_texcoord v1\nmov oPos, v0\n"
+                       "add oT0, v1, c0\nadd oT1, v1, c1\n",
+                       "two_coords.vsh");
+}
+// ps_2_0: oC0 = tex(s0, t0)·c0 + tex(s0, t1)·c1.
+inline std::shared_ptr<const ir::Program> two_taps_ps() {
+  return parse_listing("ps_2_0\ndcl t0.xy\ndcl t1.xy\ndcl_2d s0\ntexld r0, t0, s0\n"
+                       "texld r1, t1, s0\nmul r0, r0, c0\nmad r0, r1, c1, r0\nmov oC0, r0\n",
+                       "two_taps.psh");
+}
+// ps_2_0: oC0 = tex(s0, t0) (no arithmetic: inf and -0 pass through).
+inline std::shared_ptr<const ir::Program> copy_ps() {
+  return parse_listing("ps_2_0\ndcl t0.xy\ndcl_2d s0\ntexld r0, t0, s0\nmov oC0, r0\n", "copy.psh");
+}
+
+// A full-screen pass: v0 the quad's corners, v1 its uv (0,0) top-left … (1,1) bottom-right.
+inline cpu::Pass quad_pass(std::shared_ptr<const ir::Program> vs,
+                           std::shared_ptr<const ir::Program> ps, std::vector<cpu::Vec4> vs_c,
+                           std::vector<cpu::Vec4> ps_c, cpu::BlendMode blend) {
+  cpu::Pass p;
+  p.vertex_program = std::move(vs);
+  p.pixel_program = std::move(ps);
+  p.vs_constants.f = std::move(vs_c);
+  p.ps_constants.f = std::move(ps_c);
+  cpu::set_full_screen_quad(p, 0);
+  for (size_t c = 0; c < 4; ++c) p.vertices[c].v[1] = cpu::kQuadUV[c];
+  p.blend = blend;
+  return p;
+}
+
+// Bit-for-bit equality of two images (NaN equals NaN only with the same bits); the first
+// difference in *where.
+inline bool same_bits(const img::Image& a, const img::Image& b, std::string* where) {
+  if (a.width != b.width || a.height != b.height || a.format != b.format ||
+      a.rgba.size() != b.rgba.size()) {
+    *where = "size or format";
+    return false;
+  }
+  for (size_t i = 0; i < a.rgba.size(); ++i)
+    if (std::memcmp(&a.rgba[i], &b.rgba[i], sizeof(float)) != 0) {
+      const size_t px = i / 4;
+      *where = fmt::format("pixel ({}, {}) channel {}: {} vs {}", px % a.width, px / a.width, i % 4,
+                           a.rgba[i], b.rgba[i]);
+      return false;
+    }
+  return true;
+}
+
+} // namespace tierlift::vulkan::test
