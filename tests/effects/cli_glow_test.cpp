@@ -81,4 +81,48 @@ TEST_F(CliGlow, MissingSceneFileIsAnErrorAndWritesNothing) {
   EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
+// A small scene file, every way, both tiers: exit 0 (every pair within the targets) and the
+// nine images; the same scene with a bad field: exit 1, a positioned error, nothing written.
+TEST_F(CliGlow, SceneFileThreeWaysBothTiers) {
+  const fs::path scene = dir / "small.json";
+  std::ofstream(scene) << R"({"size": [96, 54], "glow": {"downsample": 2, "format": "rgba8"}})";
+  for (const char* tier : {"dx9", "dx8"}) {
+    const fs::path log = dir / "log.txt", out = dir / tier;
+    ASSERT_EQ(run_cli("glow -q --tier " + std::string(tier) + " --scene " + scene.string() +
+                          " -o " + out.string(),
+                      log),
+              0)
+        << read(log);
+    const std::string text = read(log);
+    EXPECT_NE(text.find("every pair within design.md's targets"), std::string::npos) << text;
+    EXPECT_NE(text.find("glow " + std::string(tier) + ": 96x54 rgba8"), std::string::npos) << text;
+    for (const char* way : {"cpu", "vulkan", "analytic"})
+      for (const char* image : {"scene", "glow", "final"})
+        EXPECT_TRUE(fs::exists(out / (std::string(image) + "-" + way + ".png"))) << way << image;
+    EXPECT_FALSE(fs::exists(out / "final-cpu.pfm")); // RGBA8: PNG only
+  }
+}
+
+TEST_F(CliGlow, BadSceneFieldExitsOneAndWritesNothing) {
+  const fs::path scene = dir / "bad.json", log = dir / "log.txt";
+  std::ofstream(scene) << "{\n  \"glow\": { \"downsample\": 9 }\n}\n";
+  EXPECT_EQ(run_cli("glow --scene " + scene.string() + " -o " + (dir / "out").string(), log), 1)
+      << read(log);
+  // Line 2, column 27: two spaces, "glow": { "downsample": and a space, then the 9.
+  EXPECT_NE(read(log).find("bad.json:2:27: error: /glow/downsample: 9 is outside 1..4"),
+            std::string::npos)
+      << read(log);
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+TEST_F(CliGlow, PngSceneRunsWithDefaultParameters) {
+  const fs::path png = fs::path(TIERLIFT_SOURCE_DIR) / "listings" / "scenes" / "sign.png";
+  const fs::path log = dir / "log.txt";
+  ASSERT_EQ(run_cli("glow -q --json --backend analytic --image " + png.string(), log), 0)
+      << read(log);
+  const std::string text = read(log);
+  EXPECT_NE(text.find("\"width\": 160"), std::string::npos) << text;
+  EXPECT_NE(text.find("\"height\": 96"), std::string::npos) << text;
+}
+
 } // namespace

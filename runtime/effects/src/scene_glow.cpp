@@ -137,9 +137,10 @@ void read_glow(const Json& g, FieldChecker& c, const std::string& base_dir, Glow
   if (const Json* v = member(g, "intensity"))
     if (auto x = c.number(*v, at + "/intensity", kIntensity)) {
       p.intensity = *x;
-      if (p.tier == Tier::Dx8 && *x > 1) // a ps.1.x constant cannot hold more than 1
+      // A ps.1.x constant holds at most 1; the dx8 composite reaches 4 with _x4 (glow.h).
+      if (p.tier == Tier::Dx8 && *x > 4)
         c.error(at + "/intensity",
-                fmt::format("{} is outside 0..1, the range of tier dx8", FieldChecker::shown(*v)));
+                fmt::format("{} is outside 0..4, the range of tier dx8", FieldChecker::shown(*v)));
     }
   if (const Json* v = member(g, "format"))
     if (auto name = c.string(*v, at + "/format")) {

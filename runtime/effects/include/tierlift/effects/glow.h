@@ -32,7 +32,12 @@
 // (k + ½)/W, the half texel added on the CPU (`half_texel`; without it the taps land on texel
 // corners and bilinear filtering averages the neighbours, as on D3D9 hardware); padding taps
 // of a pass's last group read the centre with weight 0. Helper passes always sample where
-// they mean to; only the blur offsets follow `half_texel`.
+// they mean to; only the blur offsets follow `half_texel`. Blur filtering: with the half
+// texel every tap sits on a texel centre, where a bilinear read is that texel, and the
+// passes say so with point filtering — which also keeps fp32 texture-coordinate error
+// (≈ W·2^-24 texel: a bilinear weight off by that much at a sharp edge, 2e-5 at 640 texels)
+// out of the result; without it the taps sit on corners and bilinear filtering averages the
+// four texels around each, the article's failure case.
 #pragma once
 
 #include <cstdint>

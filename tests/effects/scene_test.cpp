@@ -1,0 +1,181 @@
+// Glow scenes (scene.h): the files in listings/scenes load and build, bad fields are named
+// with file:line:col and a caret, weights that do not sum to one warn with the right figure,
+// and the schema file lists the keys the loader accepts. Expected positions are counted by
+// hand in the JSON texts below (columns 1-based, in bytes).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <string>
+
+#include "listing_files.h"
+#include "tierlift/effects/scene.h"
+
+namespace tierlift::effects {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kScenes = fs::path(TIERLIFT_SOURCE_DIR) / "listings" / "scenes";
+
+SceneLoad parse(const std::string& text) {
+  return parse_scene(text, "s.json", kScenes.string());
+}
+
+TEST(Scene, EveryShippedSceneLoadsAndBuilds) {
+  size_t n = 0;
+  for (const auto& e : fs::directory_iterator(kScenes)) {
+    if (e.path().extension() != ".json" || e.path().filename() == "scene.schema.json") continue;
+    ++n;
+    SceneLoad s = load_scene_file(e.path().string());
+    ASSERT_TRUE(s) << e.path() << "\n" << s.error;
+    GlowPlan plan = build_glow(s.scene->params);
+    EXPECT_TRUE(plan) << e.path() << ": " << plan.error;
+    img::LoadResult image = load_scene_image(*s.scene);
+    ASSERT_TRUE(image) << image.error;
+    EXPECT_EQ(image.image->width, s.scene->params.width);
+  }
+  EXPECT_EQ(n, 4u);
+}
+
+TEST(Scene, DefaultJsonSaysWhatTheBuiltInDefaultIs) {
+  SceneLoad s = load_scene_file((kScenes / "default.json").string());
+  ASSERT_TRUE(s) << s.error;
+  const GlowParams &a = s.scene->params, &b = default_scene().params;
+  EXPECT_EQ(s.scene->image, "builtin:neon");
+  EXPECT_EQ(a.width, 1280u);
+  EXPECT_EQ(a.height, 720u);
+  EXPECT_EQ(a.width, b.width);
+  EXPECT_EQ(a.tier, b.tier);
+  EXPECT_EQ(a.downsample, b.downsample);
+  EXPECT_EQ(a.format, b.format);
+  EXPECT_EQ(a.half_texel, b.half_texel);
+  EXPECT_EQ(a.intensity, b.intensity);
+  ASSERT_EQ(a.profile.terms.size(), 2u);
+  ASSERT_EQ(b.profile.terms.size(), 2u);
+  for (size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(a.profile.terms[i].sigma, b.profile.terms[i].sigma);
+    EXPECT_EQ(a.profile.terms[i].weight, b.profile.terms[i].weight);
+  }
+}
+
+TEST(Scene, FieldsAreRead) {
+  SceneLoad s = parse(R"({"size": [64, 48], "glow": {"tier": "dx8", "downsample": 3,
+    "format": "rgba8", "half_texel": false, "intensity": 0.5, "taps": 5,
+    "profile": {"gaussians": [{"sigma": 2, "weight": 1}]}}})");
+  ASSERT_TRUE(s) << s.error;
+  const GlowParams& p = s.scene->params;
+  EXPECT_EQ(p.width, 64u);
+  EXPECT_EQ(p.height, 48u);
+  EXPECT_EQ(p.tier, Tier::Dx8);
+  EXPECT_EQ(p.downsample, 3u);
+  EXPECT_EQ(p.format, img::Format::RGBA8);
+  EXPECT_FALSE(p.half_texel);
+  EXPECT_EQ(p.intensity, 0.5);
+  EXPECT_EQ(p.profile.max_taps, 5u);
+}
+
+// Each bad field: the message names the JSON pointer at line:col of its value, then the
+// source line and a caret under that column.
+struct Bad {
+  const char* text;
+  const char* where; // "s.json:L:C: error: /pointer"
+  const char* says;
+};
+
+class SceneErrors : public ::testing::TestWithParam<Bad> {};
+
+TEST_P(SceneErrors, NameTheFieldWithItsPosition) {
+  const Bad& b = GetParam();
+  SceneLoad s = parse(b.text);
+  ASSERT_FALSE(s) << b.text;
+  EXPECT_NE(s.error.find(b.where), std::string::npos) << s.error;
+  EXPECT_NE(s.error.find(b.says), std::string::npos) << s.error;
+  // The caret sits under the column the message gives.
+  const std::string head = b.where;
+  const size_t c1 = head.find(':'), c2 = head.find(':', c1 + 1), c3 = head.find(':', c2 + 1);
+  const int col = std::stoi(head.substr(c2 + 1, c3 - c2 - 1));
+  const size_t caret_line = s.error.find('^');
+  ASSERT_NE(caret_line, std::string::npos) << s.error;
+  const size_t line_start = s.error.rfind('\n', caret_line) + 1;
+  const size_t src_start = s.error.rfind('\n', line_start - 2) + 1;
+  // Both the source line and the caret line carry the same indent.
+  const std::string src = s.error.substr(src_start, line_start - 1 - src_start);
+  const size_t indent = src.find_first_not_of(' ');
+  EXPECT_EQ(caret_line - line_start, col - 1 + (indent == std::string::npos ? 0 : 4)) << s.error;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Fields, SceneErrors,
+    ::testing::Values(
+        Bad{"{\n  \"glow\": {\n    \"tier\": \"dx7\"\n  }\n}", "s.json:3:13: error: /glow/tier",
+            "not a tier"},
+        Bad{"{\"glow\": {\"downsample\": 0}}", "s.json:1:25: error: /glow/downsample",
+            "outside 1..4"},
+        Bad{"{\"glow\": {\"downsample\": 9}}", "s.json:1:25: error: /glow/downsample",
+            "outside 1..4"},
+        Bad{"{\"glow\": {\"profile\": {\"gaussians\": [{\"sigma\": -1, \"weight\": 1}]}}}",
+            "s.json:1:47: error: /glow/profile/gaussians/0/sigma", "must be > 0"},
+        Bad{"{\"size\": [16385, 10]}", "s.json:1:11: error: /size/0", "outside 1..16384"},
+        Bad{"{\"image\": \"no-such.png\"}", "s.json:1:11: error: /image", "cannot read"},
+        Bad{"{\"glow\": {\"colour\": 1}}", "s.json:1:11: error: /glow/colour", "unknown key"},
+        Bad{"{\"glow\": {\"tier\": \"dx8\", \"intensity\": 5}}",
+            "s.json:1:39: error: /glow/intensity", "outside 0..4"},
+        Bad{"{\"glow\": {\"taps\": 4}}", "s.json:1:19: error: /glow/taps", "even"}));
+
+TEST(Scene, SyntaxErrorsHaveAPosition) {
+  SceneLoad s = parse("{\n  \"glow\": {\"tier\": \"dx9\", }\n}");
+  ASSERT_FALSE(s);
+  EXPECT_NE(s.error.find("s.json:2:27: error: syntax error"), std::string::npos) << s.error;
+}
+
+TEST(Scene, WeightsThatDoNotSumToOneWarnByHowMuch) {
+  SceneLoad s = parse(R"({"glow": {"profile": {"gaussians": [
+      {"sigma": 3, "weight": 0.49}, {"sigma": 1, "weight": 0.49}]}}})");
+  ASSERT_TRUE(s) << s.error;
+  // 0.98 per axis, 0.98² = 0.9604 after both: 3.96 % darker.
+  const std::vector<std::string> w = glow_warnings(s.scene->params);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_EQ(w[0], "profile weights sum to 0.98: the glow is 3.96 % darker than its sources "
+                  "(0.9604 after both axes)");
+  EXPECT_TRUE(glow_warnings(default_scene().params).empty());
+}
+
+TEST(Scene, SawtoothTapsByHand) {
+  // period 2 px, radius 3 px, N = 1: saw(x) = 1 − frac(|x|/2) → x = 0: 1, ±1: ½, ±2: 1, ±3: ½;
+  // the sum is 5, so the taps are 0.2, 0.1, 0.2, 0.1 from the centre out.
+  SceneLoad s = parse(R"({"glow": {"downsample": 1,
+      "profile": {"sawtooth": {"period": 2, "radius": 3, "weight": 1}}}})");
+  ASSERT_TRUE(s) << s.error;
+  std::string err;
+  std::vector<BlurTap> taps = sample_blur_profile(s.scene->params.profile, 1, &err);
+  ASSERT_EQ(taps.size(), 7u) << err;
+  const double want[7] = {0.1, 0.2, 0.1, 0.2, 0.1, 0.2, 0.1};
+  for (int k = 0; k < 7; ++k) {
+    EXPECT_EQ(taps[k].offset, k - 3);
+    EXPECT_NEAR(taps[k].weight, want[k], 1e-12) << k;
+  }
+}
+
+std::set<std::string> keys_of(const nlohmann::json& props) {
+  std::set<std::string> out;
+  for (auto it = props.begin(); it != props.end(); ++it) out.insert(it.key());
+  return out;
+}
+
+std::set<std::string> keys_of(std::span<const std::string_view> keys) {
+  return {keys.begin(), keys.end()};
+}
+
+TEST(Scene, TheSchemaFileListsTheKeysTheLoaderAccepts) {
+  const auto schema = nlohmann::json::parse(test::read_file(kScenes / "scene.schema.json"));
+  EXPECT_EQ(keys_of(schema["properties"]), keys_of(scene_keys()));
+  EXPECT_EQ(keys_of(schema["properties"]["glow"]["properties"]), keys_of(scene_glow_keys()));
+  EXPECT_EQ(keys_of(schema["properties"]["glow"]["properties"]["profile"]["properties"]),
+            keys_of(scene_profile_keys()));
+}
+
+} // namespace
+} // namespace tierlift::effects
