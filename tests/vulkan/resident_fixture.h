@@ -27,23 +27,10 @@ inline Device* sync_validated_device(std::string* error) {
   return dev;
 }
 
-class ResidentTest : public ::testing::Test {
+// VulkanTest's checks (skip without a device, fail on any message) on that device.
+class ResidentTest : public VulkanTest {
 protected:
-  void SetUp() override {
-    std::string err;
-    dev = sync_validated_device(&err);
-    if (!dev) {
-      if (err.find("no Vulkan device found") != std::string::npos) GTEST_SKIP() << err;
-      FAIL() << err;
-    }
-    dev->clear_messages();
-  }
-  void TearDown() override {
-    if (!dev) return;
-    for (const auto& m : dev->messages()) ADD_FAILURE() << "validation layer: " << m;
-    dev->clear_messages();
-  }
-  Device* dev = nullptr;
+  Device* acquire_device(std::string* error) override { return sync_validated_device(error); }
 };
 
 // vs_2_0: oPos = v0, oT0 = v1 + c0, oT1 = v1 + c1 (v1: the quad's uv).

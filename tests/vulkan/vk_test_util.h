@@ -42,9 +42,12 @@ inline vulkan::Device* shared_device(std::string* error) {
 
 class VulkanTest : public ::testing::Test {
 protected:
+  // The device the fixture runs on; a fixture needing other validation options overrides it.
+  virtual vulkan::Device* acquire_device(std::string* error) { return shared_device(error); }
+
   void SetUp() override {
     std::string err;
-    dev = shared_device(&err);
+    dev = acquire_device(&err);
     if (!dev) {
       // Only a machine without any Vulkan device may skip; a missing validation layer or any
       // other failure is a test failure.

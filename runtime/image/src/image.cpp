@@ -41,19 +41,19 @@ float quantize_half(float value) {
   double a = std::fabs(static_cast<double>(value));
   // 65504 is the largest half; values from the midpoint to 65536 (65520) round up to inf.
   if (a >= 65520.0) return std::copysign(std::numeric_limits<float>::infinity(), value);
-  double step;
-  if (a < 0x1p-14) {
-    step = 0x1p-24; // subnormal halves: fixed spacing
-  } else {
-    int e = 0;
-    std::frexp(a, &e);                  // a = m·2^e, m in [0.5, 1)
-    step = std::ldexp(1.0, e - 1 - 10); // 10 fraction bits below the leading one
-  }
+  const double step = half_step(a);
   double r = std::rint(a / step) * step;
   return std::copysign(static_cast<float>(r), value);
 }
 
 } // namespace
+
+double half_step(double a) {
+  if (a < 0x1p-14) return 0x1p-24; // subnormal halves: fixed spacing
+  int e = 0;
+  std::frexp(a, &e);                  // a = m·2^e, m in [0.5, 1)
+  return std::ldexp(1.0, e - 1 - 10); // 10 fraction bits below the leading one
+}
 
 float quantize(Format f, float value) {
   switch (f) {

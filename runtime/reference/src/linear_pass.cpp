@@ -116,18 +116,6 @@ private:
   const LinearPassInput& in_;
 };
 
-// A double to the half next to it toward zero, computed on the exact value (no float
-// rounding on the way): ±65504 beyond the range, NaN and ±inf kept.
-float half_toward_zero(double v) {
-  if (std::isnan(v) || std::isinf(v)) return static_cast<float>(v);
-  const double a = std::fabs(v);
-  if (a >= 65504.0) return static_cast<float>(std::copysign(65504.0, v));
-  int e = 0;
-  std::frexp(a, &e); // a = m·2^e, m in [0.5, 1)
-  const double step = a < 0x1p-14 ? 0x1p-24 : std::ldexp(1.0, e - 1 - 10);
-  return static_cast<float>(std::copysign(std::floor(a / step) * step, v));
-}
-
 // The ps_1_x output clamp, the blend with the stored destination and the store rule.
 // `u`: how far (value units) the devices' value may lie from v, from their inputs' slack.
 void store(img::Image& out, const LinearPassInput& in, const Setup& s, uint32_t i, uint32_t j,
@@ -147,7 +135,7 @@ void store(img::Image& out, const LinearPassInput& in, const Setup& s, uint32_t 
   // RGBA16F under Rounding::Llvmpipe: the store rounds toward zero (NUMERICS.md rule 35), a
   // property of the target the model states like the 8-bit midpoint rule.
   if (out.format == img::Format::RGBA16F && in.model.conventions.rounding == ir::Rounding::Llvmpipe)
-    for (int c = 0; c < 4; ++c) p[c] = half_toward_zero(v[c]);
+    for (int c = 0; c < 4; ++c) p[c] = img::half_toward_zero(v[c]);
   const size_t pixel = size_t(j) * out.width + i, pixels = size_t(out.width) * out.height;
   if (!unorm || !in.slack || in.slack->size() != pixels) return;
   if (in.blend == Blend::OneOne && in.destination_slack && in.destination_slack->size() == pixels)

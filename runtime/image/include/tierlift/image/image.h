@@ -51,6 +51,12 @@ uint8_t unorm8_llvmpipe(float value);
 // nearest-even where they differ), so a finite value beyond 65504 stores ±65504; NaN and
 // ±inf stay. quantize keeps nearest-even (the exact rule); the CPU device uses this one
 // under ir::Rounding::Llvmpipe. NUMERICS.md rule 35.
-float half_toward_zero(float value);
+// Takes a double so that the analytic model rounds its exact value (no float on the way).
+float half_toward_zero(double value);
+
+// The spacing of binary16 values at magnitude `a` (finite, ≥ 0): 2^-24 below 2^-14
+// (subnormals), else 2^(e−10) in [2^e, 2^(e+1)). Dividing by it is exact (a power of two),
+// so every half rounding is a rounding of a / half_step(a) to an integer.
+double half_step(double a);
 
 } // namespace tierlift::img
