@@ -159,7 +159,7 @@ std::vector<Case> all_cases() {
   std::vector<Case> out;
   for (Tier t : {Tier::Dx9, Tier::Dx8})
     for (unsigned n : {1u, 2u, 4u})
-      for (img::Format f : {img::Format::RGBA8, img::Format::RGBA32F})
+      for (img::Format f : {img::Format::RGBA8, img::Format::RGBA16F, img::Format::RGBA32F})
         for (bool half : {true, false})
           for (Scene s : {Scene::RandomBinaryAlpha, Scene::RandomAlpha, Scene::Default})
             out.push_back({t, n, f, half, s});

@@ -99,7 +99,7 @@ public:
   }
 
   // Every tap's coordinate is the devices' own: the RGBA8 store can then settle the values
-  // the double sum leaves open in their fp32 arithmetic (store_unorm8).
+  // the double sum leaves open in their fp32 arithmetic (store_settled).
   bool all_fp32() const {
     for (const auto& c : coords_)
       if (!c) return false;
@@ -140,7 +140,8 @@ public:
     const StageTexture* st = t.sampler < kMaxStages ? s_.stage[t.sampler] : nullptr;
     if (!st) return {0, 0, 0, 1};
     const auto uv = coords_[k]->at(i, j);
-    auto v = sample_fp32(*st->image, uv[0], uv[1], st->sampler, in_.model.conventions.subtexel_bits);
+    auto v =
+        sample_fp32(*st->image, uv[0], uv[1], st->sampler, in_.model.conventions.subtexel_bits);
     if (in_.ps1x_clamp)
       for (float& c : v) c = clamp_fp32(c);
     return v;
@@ -211,37 +212,64 @@ void store(img::Image& out, const LinearPassInput& in, const Setup& s, uint32_t 
   (*in.slack)[pixel] = static_cast<uint8_t>(std::min(most, 255));
 }
 
-// The RGBA8 store when every coordinate is the devices' own (Rounding::Llvmpipe): per
-// channel, the double value v settles the stored step unless the devices' fp32 value, which
-// lies within e[c] of it, may fall on either side of a rounding boundary; then the pass's
-// fp32 arithmetic (`fp32`, computed once for the pixel) decides as the devices do. ONE/ONE
-// adds the destination's step to the source's, saturating at 255 (NUMERICS.md rule 34).
-// Returns whether a channel's fp32 value x·255 fell exactly half-way: the one store D3D9 and
-// Vulkan leave open (the slack of linear_pass.h).
+// The RGBA8 and RGBA16F stores when every coordinate is the devices' own
+// (Rounding::Llvmpipe): per channel, the double value v settles what is stored unless the
+// devices' fp32 value, which lies within e[c] of it, may fall on either side of a rounding
+// boundary; then the pass's fp32 arithmetic (`fp32`, computed once for the pixel) decides as
+// the devices do. RGBA8: ONE/ONE adds the destination's step to the source's, saturating at
+// 255 (NUMERICS.md rule 34). RGBA16F: ONE/ONE adds in fp32 (one more rounding, within
+// 2^-24 of the sum) and the sum is stored toward zero (rule 35).
+// Returns whether an RGBA8 channel's fp32 value x·255 fell exactly half-way: the one store
+// D3D9 and Vulkan leave open (the slack of linear_pass.h).
 template <class Fp32>
-bool store_unorm8(img::Image& out, const LinearPassInput& in, uint32_t i, uint32_t j,
-                  const Rgba& v, const Rgba& e, const Fp32& fp32) {
+bool store_settled(img::Image& out, const LinearPassInput& in, uint32_t i, uint32_t j, Rgba v,
+                   Rgba e, const Fp32& fp32) {
   bool tie_any = false, have = false;
   std::array<float, 4> x{};
   float* p = out.at(i, j);
+  const bool one_one = in.blend == Blend::OneOne;
   for (int c = 0; c < 4; ++c) {
-    int step = 0;
-    if (auto settled = detail::unorm8_settled(v[c], e[c])) {
-      step = *settled;
+    if (out.format == img::Format::RGBA8) {
+      int step = 0;
+      if (auto settled = detail::unorm8_settled(v[c], e[c])) {
+        step = *settled;
+      } else {
+        if (!have) x = fp32(), have = true;
+        bool tie = false;
+        step = detail::unorm8_of_fp32(x[c], in.model.unorm8_ties, &tie);
+        tie_any = tie_any || tie;
+      }
+      if (one_one)
+        step =
+            std::min(255, step + int(std::lround(texel_value(*in.destination, i, j, c) * 255.0)));
+      p[c] = static_cast<float>(step / 255.0); // the float every RGBA8 image holds for a step
+      continue;
+    }
+    const float dst = one_one ? in.destination->at(i, j)[c] : 0.0f;
+    if (one_one) {
+      v[c] += dst;
+      e[c] += detail::kFp32Unit * (std::fabs(v[c]) + e[c]);
+    }
+    const float lo = half_toward_zero_model(v[c] - e[c]), hi = half_toward_zero_model(v[c] + e[c]);
+    if (lo == hi || std::isnan(v[c])) { // toward zero is monotone: every value between agrees
+      p[c] = half_toward_zero_model(v[c]);
     } else {
       if (!have) x = fp32(), have = true;
-      bool tie = false;
-      step = detail::unorm8_of_fp32(x[c], in.model.unorm8_ties, &tie);
-      tie_any = tie_any || tie;
+      p[c] = half_toward_zero_model(one_one ? double(x[c] + dst) : double(x[c]));
     }
-    if (in.blend == Blend::OneOne)
-      step = std::min(255, step + int(std::lround(texel_value(*in.destination, i, j, c) * 255.0)));
-    p[c] = static_cast<float>(step / 255.0); // the float every RGBA8 image holds for a step
   }
   return tie_any;
 }
 
-void mark_slack(const LinearPassInput& in, const img::Image& out, uint32_t i, uint32_t j, bool tie) {
+// Formats whose store the model settles exactly (store_settled) under Rounding::Llvmpipe.
+bool settles_store(const LinearPassInput& in) {
+  return in.model.conventions.rounding == ir::Rounding::Llvmpipe &&
+         (in.model.target_format == img::Format::RGBA8 ||
+          in.model.target_format == img::Format::RGBA16F);
+}
+
+void mark_slack(const LinearPassInput& in, const img::Image& out, uint32_t i, uint32_t j,
+                bool tie) {
   const size_t pixels = size_t(out.width) * out.height;
   if (in.slack && in.slack->size() == pixels) (*in.slack)[size_t(j) * out.width + i] = tie ? 1 : 0;
 }
@@ -262,10 +290,10 @@ void add_notes(std::vector<std::string>* notes, const LinearPassInput& in, const
   }
 }
 
-// RGBA8 under Rounding::Llvmpipe with every coordinate the devices' own: the exact store.
-bool exact_unorm8(const LinearPassInput& in, const Reader& reader) {
-  return in.model.target_format == img::Format::RGBA8 &&
-         in.model.conventions.rounding == ir::Rounding::Llvmpipe && reader.all_fp32();
+// RGBA8 or RGBA16F under Rounding::Llvmpipe with every coordinate the devices' own: the
+// exact store.
+bool exact_store(const LinearPassInput& in, const Reader& reader) {
+  return settles_store(in) && reader.all_fp32();
 }
 
 } // namespace
@@ -280,7 +308,7 @@ img::LoadResult linear_pass(const std::vector<Tap>& taps, const LinearPassInput&
     for (double w : t.weight) negative_weight = negative_weight || w < 0;
   img::Image out(s->width, s->height, in.model.target_format);
   Reader reader(*s, in, taps);
-  if (exact_unorm8(in, reader)) {
+  if (exact_store(in, reader)) {
     for (uint32_t j = 0; j < s->height; ++j)
       for (uint32_t i = 0; i < s->width; ++i) {
         // S = Σ|w|·(largest texel a read weighs) bounds every partial sum; each of the n
@@ -324,7 +352,7 @@ img::LoadResult linear_pass(const std::vector<Tap>& taps, const LinearPassInput&
           }
           return r;
         };
-        mark_slack(in, out, i, j, store_unorm8(out, in, i, j, sum, e, fp32));
+        mark_slack(in, out, i, j, store_settled(out, in, i, j, sum, e, fp32));
       }
     add_notes(notes, in, reader, negative_weight);
     return {std::move(out), ""};
@@ -358,7 +386,7 @@ img::LoadResult mask_by_alpha_pass(const Tap& read, const LinearPassInput& in,
   img::Image out(s->width, s->height, in.model.target_format);
   const std::vector<Tap> one{read};
   Reader reader(*s, in, one);
-  if (exact_unorm8(in, reader)) {
+  if (exact_store(in, reader)) {
     for (uint32_t j = 0; j < s->height; ++j)
       for (uint32_t i = 0; i < s->width; ++i) {
         Rgba most{};
@@ -379,7 +407,7 @@ img::LoadResult mask_by_alpha_pass(const Tap& read, const LinearPassInput& in,
           for (int c = 0; c < 3; ++c) r[c] = reader.clamp_fp32(detail::product_fp32(r[c], r[3]));
           return r;
         };
-        mark_slack(in, out, i, j, store_unorm8(out, in, i, j, v, e, fp32));
+        mark_slack(in, out, i, j, store_settled(out, in, i, j, v, e, fp32));
       }
     add_notes(notes, in, reader, false);
     return {std::move(out), ""};

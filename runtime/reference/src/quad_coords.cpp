@@ -8,7 +8,7 @@ namespace tierlift::ref {
 namespace {
 
 struct Corner {
-  float x, y;        // screen position (Vulkan frame, pixel i spans [i, i + 1))
+  float x, y; // screen position (Vulkan frame, pixel i spans [i, i + 1))
   std::array<float, 2> uv;
 };
 
@@ -57,7 +57,8 @@ std::array<float, 2> QuadCoords::at(uint32_t i, uint32_t j) const {
   // The diagonal runs from the top-right corner to the bottom-left one; the sample point
   // (px, py) in pixels from the top-left corner lies before it when px/W + py/H < 1, in
   // integers (doubled for the modern centre at i + ½): the first triangle's side.
-  const uint64_t px2 = 2 * uint64_t{i} + (modern_ ? 1 : 0), py2 = 2 * uint64_t{j} + (modern_ ? 1 : 0);
+  const uint64_t px2 = 2 * uint64_t{i} + (modern_ ? 1 : 0),
+                 py2 = 2 * uint64_t{j} + (modern_ ? 1 : 0);
   const Triangle& t = tri_[px2 * height_ + py2 * width_ < 2 * width_ * height_ ? 0 : 1];
   const float x = static_cast<float>(i), y = static_cast<float>(j);
   auto eval = [x, y](const Plane& p) { return std::fma(p.dady, y, std::fma(p.dadx, x, p.a0)); };

@@ -150,9 +150,8 @@ int64_t float_point(float u, uint32_t n) {
 
 } // namespace
 
-std::array<double, 4> sample_at_float(const img::Image& t, float u, float v,
-                                      const SamplerModel& s, int subtexel_bits,
-                                      std::array<double, 4>* texel_max) {
+std::array<double, 4> sample_at_float(const img::Image& t, float u, float v, const SamplerModel& s,
+                                      int subtexel_bits, std::array<double, 4>* texel_max) {
   if (texel_max) *texel_max = {0, 0, 0, 0};
   auto note = [texel_max](const std::array<double, 4>& tx) {
     if (texel_max)

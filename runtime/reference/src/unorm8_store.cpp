@@ -10,9 +10,10 @@ std::optional<int> unorm8_settled(double v, double e) {
   // In steps: the value's reach, widened by the rounding of x·255 to fp32 and by the double
   // rounding of v·255 itself (far below either).
   const double y = v * 255.0;
-  const double reach = 255.0 * e + kFp32Unit * (std::fabs(y) + 255.0 * e) + 1e-12 * (1 + std::fabs(y));
+  const double reach =
+      255.0 * e + kFp32Unit * (std::fabs(y) + 255.0 * e) + 1e-12 * (1 + std::fabs(y));
   const double lo = y - reach, hi = y + reach;
-  if (hi < 0.5) return 0;    // every x stores 0 (x ≤ 0 included)
+  if (hi < 0.5) return 0;     // every x stores 0 (x ≤ 0 included)
   if (lo > 254.5) return 255; // every x stores 255 (x ≥ 1 included)
   // Boundaries k + ½ within [lo, hi]: none when ⌊hi − ½⌋ < ⌈lo − ½⌉.
   if (std::floor(hi - 0.5) < std::ceil(lo - 0.5)) return static_cast<int>(std::floor(y + 0.5));

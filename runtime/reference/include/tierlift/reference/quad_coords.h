@@ -33,8 +33,7 @@ using QuadCorners = std::array<std::array<float, 2>, 4>;
 
 class QuadCoords {
 public:
-  QuadCoords(const QuadCorners& corners, uint32_t width, uint32_t height,
-             ir::PixelCenter center);
+  QuadCoords(const QuadCorners& corners, uint32_t width, uint32_t height, ir::PixelCenter center);
   // (u, v) at pixel (i, j) of the width × height target.
   std::array<float, 2> at(uint32_t i, uint32_t j) const;
 
