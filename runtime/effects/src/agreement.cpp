@@ -9,7 +9,7 @@ namespace tierlift::effects {
 namespace {
 
 // Pixels that differ where either run's device gives slack (PassDevice::rounding_midpoints:
-// how many 8-bit steps a float device may store away from it), by no more than that slack
+// a proven rounding tie, one 8-bit step either way), by no more than that slack
 // in every channel.
 std::vector<size_t> explained_pixels(const img::Image& a, const img::Image& b,
                                      const std::vector<uint8_t>& mask_a,
@@ -20,8 +20,9 @@ std::vector<size_t> explained_pixels(const img::Image& a, const img::Image& b,
       b.rgba.size() != a.rgba.size())
     return out;
   for (size_t p = 0; p < pixels; ++p) {
-    const int slack =
-        std::max(mask_a.size() == pixels ? mask_a[p] : 0, mask_b.size() == pixels ? mask_b[p] : 0);
+    // One step at most, whatever a mask holds: a proven rounding tie moves a store by one.
+    const int slack = std::min(1, std::max(mask_a.size() == pixels ? mask_a[p] : 0,
+                                           mask_b.size() == pixels ? mask_b[p] : 0));
     if (slack == 0) continue;
     bool differs = false, within_slack = true;
     for (size_t c = 0; c < 4; ++c) {
@@ -55,7 +56,13 @@ bool add_row(RunAgreement& out, const std::string& pass, const std::string& targ
     return false;
   }
   const std::vector<size_t> explained = explained_pixels(a, b, mask_a, mask_b);
-  PassAgreement row{pass, target, *c, explained.size(), c->identical_share, {}};
+  PassAgreement row{pass,
+                    target,
+                    *c,
+                    explained.size(),
+                    c->pixels ? double(explained.size()) / double(c->pixels) : 0.0,
+                    c->identical_share,
+                    {}};
   // The verdict sees explained pixels as identical: in the share and in the max abs.
   img::Comparison judged = *c;
   if (!explained.empty()) {

@@ -25,9 +25,6 @@ double clamp_range(double v, double m) {
 // What the pass reads and where it writes, checked once.
 struct Setup {
   std::array<const StageTexture*, kMaxStages> stage{};
-  // A stage's slack as an image (slack / 255 in every channel), sampled like the texture:
-  // the bilinear weights carry it exactly as they carry the texel values.
-  std::array<std::optional<img::Image>, kMaxStages> slack;
   uint32_t width = 0, height = 0;
   double ps1x_max = 1;
 };
@@ -57,12 +54,6 @@ std::optional<Setup> check(const LinearPassInput& in, std::string& error) {
       return std::nullopt;
     }
     s.stage[t.stage] = &t;
-    if (t.slack && t.slack->size() == size_t{im->width} * im->height) {
-      img::Image sl(im->width, im->height, img::Format::RGBA32F);
-      for (size_t p = 0; p < t.slack->size(); ++p)
-        for (int c = 0; c < 4; ++c) sl.rgba[4 * p + c] = float((*t.slack)[p]) / 255.0f;
-      s.slack[t.stage] = std::move(sl);
-    }
   }
   if (in.blend == Blend::OneOne) {
     const img::Image* d = in.destination;
@@ -124,16 +115,6 @@ public:
     return v;
   }
 
-  // How far (in value units) the devices' read may lie from read(k, i, j): the texels' slack
-  // under the same filter weights.
-  double slack(size_t k, uint32_t i, uint32_t j) const {
-    const Tap& t = taps_[k];
-    if (t.sampler >= kMaxStages) return 0;
-    const std::optional<img::Image>& sl = s_.slack[t.sampler]; // no copy: images are large
-    if (!sl) return 0;
-    return filtered(k, *sl, s_.stage[t.sampler]->sampler, i, j)[0];
-  }
-
   // The same read in the devices' fp32 arithmetic (needs all_fp32), with the t# clamp.
   std::array<float, 4> read_fp32(size_t k, uint32_t i, uint32_t j) const {
     const Tap& t = taps_[k];
@@ -174,10 +155,12 @@ private:
   std::vector<std::optional<QuadCoords>> coords_;
 };
 
-// The ps_1_x output clamp, the blend with the stored destination and the store rule.
-// `u`: how far (value units) the devices' value may lie from v, from their inputs' slack.
+// The ps_1_x output clamp, the blend with the stored destination and the store rule, in
+// double (the path for coordinates the model does not take from the devices, and for
+// Rounding::Exact): an RGBA8 value within kUnorm8MidpointBand of a midpoint gets one step
+// of slack.
 void store(img::Image& out, const LinearPassInput& in, const Setup& s, uint32_t i, uint32_t j,
-           Rgba v, double u) {
+           Rgba v) {
   if (in.ps1x_clamp)
     for (double& c : v) c = clamp_range(c, s.ps1x_max);
   const bool unorm = in.model.target_format == img::Format::RGBA8;
@@ -196,9 +179,7 @@ void store(img::Image& out, const LinearPassInput& in, const Setup& s, uint32_t 
     for (int c = 0; c < 4; ++c) p[c] = half_toward_zero_model(v[c]);
   const size_t pixel = size_t(j) * out.width + i, pixels = size_t(out.width) * out.height;
   if (!unorm || !in.slack || in.slack->size() != pixels) return;
-  if (in.blend == Blend::OneOne && in.destination_slack && in.destination_slack->size() == pixels)
-    u += (*in.destination_slack)[pixel] / 255.0;
-  const double reach = u + kUnorm8MidpointBand / 255.0;
+  const double reach = kUnorm8MidpointBand / 255.0;
   int most = 0;
   for (int c = 0; c < 4; ++c) {
     if (std::isnan(v[c])) continue; // NaN stores 0 on every device
@@ -209,7 +190,7 @@ void store(img::Image& out, const LinearPassInput& in, const Setup& s, uint32_t 
         int(std::lround(store_value(out.format, v[c] + reach, in.model.unorm8_ties) * 255.0));
     most = std::max({most, mine - lo, hi - mine});
   }
-  (*in.slack)[pixel] = static_cast<uint8_t>(std::min(most, 255));
+  if (most > 0) (*in.slack)[pixel] = 1;
 }
 
 // The RGBA8 and RGBA16F stores when every coordinate is the devices' own
@@ -271,7 +252,7 @@ bool settles_store(const LinearPassInput& in) {
 void mark_slack(const LinearPassInput& in, const img::Image& out, uint32_t i, uint32_t j,
                 bool tie) {
   const size_t pixels = size_t(out.width) * out.height;
-  if (in.slack && in.slack->size() == pixels) (*in.slack)[size_t(j) * out.width + i] = tie ? 1 : 0;
+  if (tie && in.slack && in.slack->size() == pixels) (*in.slack)[size_t(j) * out.width + i] = 1;
 }
 
 void add_notes(std::vector<std::string>* notes, const LinearPassInput& in, const Reader& r,
@@ -360,19 +341,13 @@ img::LoadResult linear_pass(const std::vector<Tap>& taps, const LinearPassInput&
   for (uint32_t j = 0; j < s->height; ++j)
     for (uint32_t i = 0; i < s->width; ++i) {
       Rgba sum{};
-      double u = 0;
       for (size_t k = 0; k < taps.size(); ++k) {
         const Tap& t = taps[k];
         const Rgba v = reader.read(k, i, j);
-        double w_most = 0;
         for (int c = 0; c < 4; ++c)
-          if (t.weight[c] != 0) {
-            sum[c] += t.weight[c] * v[c]; // 0-weight taps add exactly 0
-            w_most = std::max(w_most, std::fabs(t.weight[c]));
-          }
-        if (w_most != 0) u += w_most * reader.slack(k, i, j);
+          if (t.weight[c] != 0) sum[c] += t.weight[c] * v[c]; // 0-weight taps add exactly 0
       }
-      store(out, in, *s, i, j, sum, u);
+      store(out, in, *s, i, j, sum);
     }
   add_notes(notes, in, reader, negative_weight);
   return {std::move(out), ""};
@@ -415,9 +390,7 @@ img::LoadResult mask_by_alpha_pass(const Tap& read, const LinearPassInput& in,
   for (uint32_t j = 0; j < s->height; ++j)
     for (uint32_t i = 0; i < s->width; ++i) {
       const Rgba v = reader.read(0, i, j);
-      // (x + dx)(a + da) − x·a ≤ dx·a + x·da + dx·da for x, a in [0, 1], |dx|, |da| ≤ d.
-      const double d = reader.slack(0, i, j);
-      store(out, in, *s, i, j, {v[0] * v[3], v[1] * v[3], v[2] * v[3], v[3]}, d * (2 + d));
+      store(out, in, *s, i, j, {v[0] * v[3], v[1] * v[3], v[2] * v[3], v[3]});
     }
   reader.negative_sample = false; // one product, no partial sums: the clamps are exact
   add_notes(notes, in, reader, false);
