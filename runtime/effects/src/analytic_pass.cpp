@@ -82,19 +82,18 @@ std::string run_analytic_pass(const PassDesc& pass, const EffectGraph& graph, Im
   ref::LinearPassInput in;
   if (std::string e = prepare(pass, graph, images, in); !e.empty()) return e;
 
-  // Slack (linear_pass.h) of the RGBA8 textures the pass reads and of its target.
+  // RGBA8: the pixels whose store is a proven rounding tie (linear_pass.h, `slack`); ONE/ONE
+  // keeps the ties of the passes summed into the target before.
   std::vector<uint8_t> mask;
   if (in.model.target_format == img::Format::RGBA8) {
     const size_t size = size_t(in.model.target_width) * in.model.target_height;
-    if (auto it = midpoints.find(pass.target); it != midpoints.end() && it->second.size() == size)
-      in.destination_slack = &it->second;
-    mask.assign(size, 0);
+    auto it = midpoints.find(pass.target);
+    if (in.blend == ref::Blend::OneOne && it != midpoints.end() && it->second.size() == size)
+      mask = it->second;
+    else
+      mask.assign(size, 0);
     in.slack = &mask;
   }
-  for (ref::StageTexture& st : in.textures)
-    for (const TextureBind& b : pass.textures)
-      if (b.stage == st.stage)
-        if (auto it = midpoints.find(b.texture); it != midpoints.end()) st.slack = &it->second;
   std::vector<std::string> pass_notes;
   img::LoadResult result;
   if (pass.analytic == AnalyticForm::Linear) {

@@ -18,8 +18,8 @@ ref::SamplerModel sampler_model(const cpu::SamplerState& s);
 // Computes `pass` from `images` (every texture of `graph`) and replaces its target there.
 // Empty string on success (notes appended to *notes), else why, naming the pass; the
 // images are unchanged then.
-// `midpoints` holds each RGBA8 texture's midpoint mask (ref::LinearPassInput::midpoints);
-// the target's is updated with the pass.
+// `midpoints` holds each RGBA8 texture's mask of proven rounding ties (ref::LinearPassInput::
+// slack); the target's is updated with the pass.
 using MidpointMasks = std::map<std::string, std::vector<uint8_t>, std::less<>>;
 std::string run_analytic_pass(const PassDesc& pass, const EffectGraph& graph, ImageMap& images,
                               MidpointMasks& midpoints, std::vector<std::string>* notes);

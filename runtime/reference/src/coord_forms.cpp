@@ -11,9 +11,17 @@ namespace tierlift::ref::detail {
 
 namespace {
 
+// The texcoord input (u, v, 0, 1) at the quad's corners: top-left, top-right, bottom-left,
+// bottom-right (the vertex data every full-screen pass is drawn with).
+constexpr float kQuadCornerUv[4][4] = {{0, 0, 0, 1}, {1, 0, 0, 1}, {0, 1, 0, 1}, {1, 1, 0, 1}};
+
 struct Affine {
   std::array<double, 4> tc{}; // coefficients on texcoord.x, .y, .z, .w
   double k = 0;
+  // The component's value at the quad's four corners, computed as the devices' vertex stage
+  // computes it: each instruction in fp32, one rounding per operation (NUMERICS.md rules 8,
+  // 14: a product with a zero factor is +0, mad is not fused).
+  std::array<float, 4> at{};
   std::string opaque; // non-empty: not affine in the texcoord; says why
   bool is_constant() const { return opaque.empty() && tc == std::array<double, 4>{}; }
 };
@@ -25,9 +33,11 @@ Affine make_opaque(std::string why) {
   return a;
 }
 
-Affine scaled(Affine a, double s) {
-  for (double& c : a.tc) c *= s;
-  a.k *= s;
+// Negation (the only scaling a source modifier of vs_1_1/vs_2_0 applies): exact in fp32.
+Affine negated(Affine a) {
+  for (double& c : a.tc) c = -c;
+  a.k = -a.k;
+  for (float& v : a.at) v = -v;
   return a;
 }
 
@@ -37,15 +47,29 @@ Affine sum(const Affine& a, const Affine& b) {
   Affine r;
   for (int c = 0; c < 4; ++c) r.tc[c] = a.tc[c] + b.tc[c];
   r.k = a.k + b.k;
+  for (int q = 0; q < 4; ++q) r.at[q] = a.at[q] + b.at[q];
   return r;
+}
+
+// fp32 product with D3D9's zero rule, written from its definition (NUMERICS.md rule 8).
+float legacy_product(float x, float y) {
+  return (x == 0.0f || y == 0.0f) ? 0.0f : x * y;
 }
 
 Affine product(const Affine& a, const Affine& b, const ir::SourceLoc& loc) {
   if (!a.opaque.empty()) return a;
   if (!b.opaque.empty()) return b;
-  if (a.is_constant()) return scaled(b, a.k);
-  if (b.is_constant()) return scaled(a, b.k);
-  return make_opaque(where(loc) + ": product of two texcoord terms");
+  Affine r;
+  if (a.is_constant() || b.is_constant()) {
+    const Affine& konst = a.is_constant() ? a : b;
+    const Affine& other = a.is_constant() ? b : a;
+    for (int c = 0; c < 4; ++c) r.tc[c] = other.tc[c] * konst.k;
+    r.k = other.k * konst.k;
+  } else {
+    return make_opaque(where(loc) + ": product of two texcoord terms");
+  }
+  for (int q = 0; q < 4; ++q) r.at[q] = legacy_product(a.at[q], b.at[q]);
+  return r;
 }
 
 class Evaluator {
@@ -97,6 +121,7 @@ public:
           why = fmt::format("oT{}.{}: scale or offset is not finite", n, "xy"[c]);
         form.scale[c] = a.tc[c];
         form.offset[c] = a.k;
+        for (int q = 0; q < 4; ++q) form.corner[q][c] = a.at[q];
       }
       if (why.empty())
         out.coord[n] = form;
@@ -117,8 +142,12 @@ private:
         return make_opaque(
             fmt::format("{}: reads v{}, not the texcoord input", where(s.loc), s.index));
       a.tc[c] = 1.0;
+      for (int q = 0; q < 4; ++q) a.at[q] = kQuadCornerUv[q][c];
       break;
-    case ir::RegFile::Const: a.k = constant_value(p_, consts_, s.index, false, nullptr)[c]; break;
+    case ir::RegFile::Const:
+      a.k = constant_value(p_, consts_, s.index, false, nullptr)[c];
+      a.at.fill(static_cast<float>(a.k)); // API constants are floats: exact
+      break;
     case ir::RegFile::Temp: {
       auto it = regs_.find({s.file, s.index});
       if (it == regs_.end()) return make_opaque(where(s.loc) + ": reads an unwritten register");
@@ -128,7 +157,7 @@ private:
     default: return make_opaque(where(s.loc) + ": reads a register that is not v#, c# or r#");
     }
     if (s.mod == ir::SrcMod::None) return a;
-    if (s.mod == ir::SrcMod::Neg) return scaled(a, -1.0);
+    if (s.mod == ir::SrcMod::Neg) return negated(a);
     return make_opaque(where(s.loc) + ": source modifier");
   }
 
@@ -149,7 +178,7 @@ private:
       switch (in.op) {
       case ir::Opcode::Mov: v = read(in.src[0], c); break;
       case ir::Opcode::Add: v = sum(read(in.src[0], c), read(in.src[1], c)); break;
-      case ir::Opcode::Sub: v = sum(read(in.src[0], c), scaled(read(in.src[1], c), -1.0)); break;
+      case ir::Opcode::Sub: v = sum(read(in.src[0], c), negated(read(in.src[1], c))); break;
       case ir::Opcode::Mul: v = product(read(in.src[0], c), read(in.src[1], c), in.loc); break;
       case ir::Opcode::Mad:
         v = sum(product(read(in.src[0], c), read(in.src[1], c), in.loc), read(in.src[2], c));

@@ -55,6 +55,7 @@ std::string place_taps(const CoordForms& coords, std::vector<Tap>& taps) {
                          t.texcoord < 8 ? coords.why_not[t.texcoord] : "no such register");
     t.offset = coords.coord[t.texcoord]->offset;
     t.scale = coords.coord[t.texcoord]->scale;
+    t.corners = coords.coord[t.texcoord]->corner;
   }
   return "";
 }

@@ -27,7 +27,8 @@ std::optional<AffineMod> affine_modifier(ir::SrcMod mod);
 
 // Vertex side: oT# = texcoord input · scale + constant, per coordinate register and axis.
 struct CoordAffine {
-  std::array<double, 2> scale{1, 1}, offset{}; // .xy
+  std::array<double, 2> scale{1, 1}, offset{};  // .xy
+  std::array<std::array<float, 2>, 4> corner{}; // .xy at the quad's corners, in fp32 (Tap)
 };
 struct CoordForms {
   uint32_t texcoord_input = 0;

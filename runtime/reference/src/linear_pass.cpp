@@ -8,6 +8,9 @@
 #include <fmt/format.h>
 #include <optional>
 
+#include "tierlift/reference/quad_coords.h"
+#include "unorm8_store.h"
+
 namespace tierlift::ref {
 namespace {
 
@@ -22,9 +25,6 @@ double clamp_range(double v, double m) {
 // What the pass reads and where it writes, checked once.
 struct Setup {
   std::array<const StageTexture*, kMaxStages> stage{};
-  // A stage's slack as an image (slack / 255 in every channel), sampled like the texture:
-  // the bilinear weights carry it exactly as they carry the texel values.
-  std::array<std::optional<img::Image>, kMaxStages> slack;
   uint32_t width = 0, height = 0;
   double ps1x_max = 1;
 };
@@ -54,12 +54,6 @@ std::optional<Setup> check(const LinearPassInput& in, std::string& error) {
       return std::nullopt;
     }
     s.stage[t.stage] = &t;
-    if (t.slack && t.slack->size() == size_t{im->width} * im->height) {
-      img::Image sl(im->width, im->height, img::Format::RGBA32F);
-      for (size_t p = 0; p < t.slack->size(); ++p)
-        for (int c = 0; c < 4; ++c) sl.rgba[4 * p + c] = float((*t.slack)[p]) / 255.0f;
-      s.slack[t.stage] = std::move(sl);
-    }
   }
   if (in.blend == Blend::OneOne) {
     const img::Image* d = in.destination;
@@ -77,19 +71,42 @@ std::optional<Setup> check(const LinearPassInput& in, std::string& error) {
   return s;
 }
 
-// The pass's own stage list, with notes for reads of unbound stages.
+// The pass's own stage list, with notes for reads of unbound stages. Each tap's coordinate
+// at a pixel: the devices' fp32 interpolation of the vertex listing's corner values
+// (quad_coords.h) under Rounding::Llvmpipe when extract_taps gave them and the quad spans
+// uv (0, 0)–(1, 1); else scale·pixel_uv + offset in double.
 class Reader {
 public:
-  Reader(const Setup& s, const LinearPassInput& in) : s_(s), in_(in) {}
+  Reader(const Setup& s, const LinearPassInput& in, const std::vector<Tap>& taps)
+      : s_(s), in_(in), taps_(taps) {
+    const PassModel& m = in.model;
+    const bool unit_quad = m.u0 == 0 && m.v0 == 0 && m.u1 == 1 && m.v1 == 1;
+    for (const Tap& t : taps)
+      if (t.corners && unit_quad && m.conventions.rounding == ir::Rounding::Llvmpipe)
+        coords_.emplace_back(std::in_place, *t.corners, s.width, s.height,
+                             m.conventions.pixel_center);
+      else
+        coords_.emplace_back(std::nullopt);
+  }
 
-  Rgba read(const Tap& t, const std::array<double, 2>& uv) {
+  // Every tap's coordinate is the devices' own: the RGBA8 store can then settle the values
+  // the double sum leaves open in their fp32 arithmetic (store_settled).
+  bool all_fp32() const {
+    for (const auto& c : coords_)
+      if (!c) return false;
+    return true;
+  }
+
+  // `texel_max` (needs all_fp32): the largest |texel| the read weighs, per channel.
+  Rgba read(size_t k, uint32_t i, uint32_t j, Rgba* texel_max = nullptr) {
+    const Tap& t = taps_[k];
     const StageTexture* st = t.sampler < kMaxStages ? s_.stage[t.sampler] : nullptr;
     if (!st) {
       unbound_read = true;
+      if (texel_max) *texel_max = {0, 0, 0, 1};
       return {0, 0, 0, 1}; // D3D9: an unbound stage reads (0, 0, 0, 1)
     }
-    Rgba v = sample(*st->image, t.scale[0] * uv[0] + t.offset[0], t.scale[1] * uv[1] + t.offset[1],
-                    st->sampler, in_.model.conventions.subtexel_bits);
+    Rgba v = filtered(k, *st->image, st->sampler, i, j, texel_max);
     if (in_.ps1x_clamp)
       for (double& c : v) {
         if (c < 0) negative_sample = true;
@@ -98,28 +115,52 @@ public:
     return v;
   }
 
-  // How far (in value units) the devices' read may lie from read(t, uv): the texels' slack
-  // under the same filter weights.
-  double slack(const Tap& t, const std::array<double, 2>& uv) const {
-    if (t.sampler >= kMaxStages) return 0;
-    const std::optional<img::Image>& sl = s_.slack[t.sampler]; // no copy: images are large
-    if (!sl) return 0;
-    const StageTexture* st = s_.stage[t.sampler];
-    return sample(*sl, t.scale[0] * uv[0] + t.offset[0], t.scale[1] * uv[1] + t.offset[1],
-                  st->sampler, in_.model.conventions.subtexel_bits)[0];
+  // The same read in the devices' fp32 arithmetic (needs all_fp32), with the t# clamp.
+  std::array<float, 4> read_fp32(size_t k, uint32_t i, uint32_t j) const {
+    const Tap& t = taps_[k];
+    const StageTexture* st = t.sampler < kMaxStages ? s_.stage[t.sampler] : nullptr;
+    if (!st) return {0, 0, 0, 1};
+    const auto uv = coords_[k]->at(i, j);
+    auto v =
+        sample_fp32(*st->image, uv[0], uv[1], st->sampler, in_.model.conventions.subtexel_bits);
+    if (in_.ps1x_clamp)
+      for (float& c : v) c = clamp_fp32(c);
+    return v;
+  }
+
+  float clamp_fp32(float v) const {
+    const auto m = static_cast<float>(s_.ps1x_max);
+    return std::isnan(v) ? v : std::clamp(v, -m, m);
   }
 
   bool unbound_read = false, negative_sample = false;
 
 private:
+  Rgba filtered(size_t k, const img::Image& image, const SamplerModel& sampler, uint32_t i,
+                uint32_t j, Rgba* texel_max = nullptr) const {
+    const int bits = in_.model.conventions.subtexel_bits;
+    if (coords_[k]) {
+      const auto uv = coords_[k]->at(i, j);
+      return sample_at_float(image, uv[0], uv[1], sampler, bits, texel_max);
+    }
+    const Tap& t = taps_[k];
+    const auto uv = pixel_uv(i, j, s_.width, s_.height, in_.model);
+    return sample(image, t.scale[0] * uv[0] + t.offset[0], t.scale[1] * uv[1] + t.offset[1],
+                  sampler, bits);
+  }
+
   const Setup& s_;
   const LinearPassInput& in_;
+  const std::vector<Tap>& taps_;
+  std::vector<std::optional<QuadCoords>> coords_;
 };
 
-// The ps_1_x output clamp, the blend with the stored destination and the store rule.
-// `u`: how far (value units) the devices' value may lie from v, from their inputs' slack.
+// The ps_1_x output clamp, the blend with the stored destination and the store rule, in
+// double (the path for coordinates the model does not take from the devices, and for
+// Rounding::Exact): an RGBA8 value within kUnorm8MidpointBand of a midpoint gets one step
+// of slack.
 void store(img::Image& out, const LinearPassInput& in, const Setup& s, uint32_t i, uint32_t j,
-           Rgba v, double u) {
+           Rgba v) {
   if (in.ps1x_clamp)
     for (double& c : v) c = clamp_range(c, s.ps1x_max);
   const bool unorm = in.model.target_format == img::Format::RGBA8;
@@ -135,12 +176,10 @@ void store(img::Image& out, const LinearPassInput& in, const Setup& s, uint32_t 
   // RGBA16F under Rounding::Llvmpipe: the store rounds toward zero (NUMERICS.md rule 35), a
   // property of the target the model states like the 8-bit midpoint rule.
   if (out.format == img::Format::RGBA16F && in.model.conventions.rounding == ir::Rounding::Llvmpipe)
-    for (int c = 0; c < 4; ++c) p[c] = img::half_toward_zero(v[c]);
+    for (int c = 0; c < 4; ++c) p[c] = half_toward_zero_model(v[c]);
   const size_t pixel = size_t(j) * out.width + i, pixels = size_t(out.width) * out.height;
   if (!unorm || !in.slack || in.slack->size() != pixels) return;
-  if (in.blend == Blend::OneOne && in.destination_slack && in.destination_slack->size() == pixels)
-    u += (*in.destination_slack)[pixel] / 255.0;
-  const double reach = u + kUnorm8MidpointBand / 255.0;
+  const double reach = kUnorm8MidpointBand / 255.0;
   int most = 0;
   for (int c = 0; c < 4; ++c) {
     if (std::isnan(v[c])) continue; // NaN stores 0 on every device
@@ -151,7 +190,69 @@ void store(img::Image& out, const LinearPassInput& in, const Setup& s, uint32_t 
         int(std::lround(store_value(out.format, v[c] + reach, in.model.unorm8_ties) * 255.0));
     most = std::max({most, mine - lo, hi - mine});
   }
-  (*in.slack)[pixel] = static_cast<uint8_t>(std::min(most, 255));
+  if (most > 0) (*in.slack)[pixel] = 1;
+}
+
+// The RGBA8 and RGBA16F stores when every coordinate is the devices' own
+// (Rounding::Llvmpipe): per channel, the double value v settles what is stored unless the
+// devices' fp32 value, which lies within e[c] of it, may fall on either side of a rounding
+// boundary; then the pass's fp32 arithmetic (`fp32`, computed once for the pixel) decides as
+// the devices do. RGBA8: ONE/ONE adds the destination's step to the source's, saturating at
+// 255 (NUMERICS.md rule 34). RGBA16F: ONE/ONE adds in fp32 (one more rounding, within
+// 2^-24 of the sum) and the sum is stored toward zero (rule 35).
+// Returns whether an RGBA8 channel's fp32 value x·255 fell exactly half-way: the one store
+// D3D9 and Vulkan leave open (the slack of linear_pass.h).
+template <class Fp32>
+bool store_settled(img::Image& out, const LinearPassInput& in, uint32_t i, uint32_t j, Rgba v,
+                   Rgba e, const Fp32& fp32) {
+  bool tie_any = false, have = false;
+  std::array<float, 4> x{};
+  float* p = out.at(i, j);
+  const bool one_one = in.blend == Blend::OneOne;
+  for (int c = 0; c < 4; ++c) {
+    if (out.format == img::Format::RGBA8) {
+      int step = 0;
+      if (auto settled = detail::unorm8_settled(v[c], e[c])) {
+        step = *settled;
+      } else {
+        if (!have) x = fp32(), have = true;
+        bool tie = false;
+        step = detail::unorm8_of_fp32(x[c], in.model.unorm8_ties, &tie);
+        tie_any = tie_any || tie;
+      }
+      if (one_one)
+        step =
+            std::min(255, step + int(std::lround(texel_value(*in.destination, i, j, c) * 255.0)));
+      p[c] = static_cast<float>(step / 255.0); // the float every RGBA8 image holds for a step
+      continue;
+    }
+    const float dst = one_one ? in.destination->at(i, j)[c] : 0.0f;
+    if (one_one) {
+      v[c] += dst;
+      e[c] += detail::kFp32Unit * (std::fabs(v[c]) + e[c]);
+    }
+    const float lo = half_toward_zero_model(v[c] - e[c]), hi = half_toward_zero_model(v[c] + e[c]);
+    if (lo == hi || std::isnan(v[c])) { // toward zero is monotone: every value between agrees
+      p[c] = half_toward_zero_model(v[c]);
+    } else {
+      if (!have) x = fp32(), have = true;
+      p[c] = half_toward_zero_model(one_one ? double(x[c] + dst) : double(x[c]));
+    }
+  }
+  return tie_any;
+}
+
+// Formats whose store the model settles exactly (store_settled) under Rounding::Llvmpipe.
+bool settles_store(const LinearPassInput& in) {
+  return in.model.conventions.rounding == ir::Rounding::Llvmpipe &&
+         (in.model.target_format == img::Format::RGBA8 ||
+          in.model.target_format == img::Format::RGBA16F);
+}
+
+void mark_slack(const LinearPassInput& in, const img::Image& out, uint32_t i, uint32_t j,
+                bool tie) {
+  const size_t pixels = size_t(out.width) * out.height;
+  if (tie && in.slack && in.slack->size() == pixels) (*in.slack)[size_t(j) * out.width + i] = 1;
 }
 
 void add_notes(std::vector<std::string>* notes, const LinearPassInput& in, const Reader& r,
@@ -170,6 +271,12 @@ void add_notes(std::vector<std::string>* notes, const LinearPassInput& in, const
   }
 }
 
+// RGBA8 or RGBA16F under Rounding::Llvmpipe with every coordinate the devices' own: the
+// exact store.
+bool exact_store(const LinearPassInput& in, const Reader& reader) {
+  return settles_store(in) && reader.all_fp32();
+}
+
 } // namespace
 
 img::LoadResult linear_pass(const std::vector<Tap>& taps, const LinearPassInput& in,
@@ -181,23 +288,66 @@ img::LoadResult linear_pass(const std::vector<Tap>& taps, const LinearPassInput&
   for (const Tap& t : taps)
     for (double w : t.weight) negative_weight = negative_weight || w < 0;
   img::Image out(s->width, s->height, in.model.target_format);
-  Reader reader(*s, in);
+  Reader reader(*s, in, taps);
+  if (exact_store(in, reader)) {
+    for (uint32_t j = 0; j < s->height; ++j)
+      for (uint32_t i = 0; i < s->width; ++i) {
+        // S = Σ|w|·(largest texel a read weighs) bounds every partial sum; each of the n
+        // products and n − 1 sums of the listing's chain rounds once (≤ 2^-24 of S each), and
+        // each read is off by at most 8·2^-24 of its largest texel (the texel's own float,
+        // two lerps of three roundings each): |fp32 − v| ≤ (2n + 8)·2^-24·S < e.
+        Rgba sum{}, bound{};
+        std::array<int, 4> n{};
+        for (size_t k = 0; k < taps.size(); ++k) {
+          const Tap& t = taps[k];
+          Rgba most{};
+          const Rgba v = reader.read(k, i, j, &most);
+          for (int c = 0; c < 4; ++c)
+            if (t.weight[c] != 0) {
+              sum[c] += t.weight[c] * v[c];
+              bound[c] += std::fabs(t.weight[c]) * most[c];
+              ++n[c];
+            }
+        }
+        Rgba e{};
+        for (int c = 0; c < 4; ++c) {
+          if (in.ps1x_clamp) sum[c] = clamp_range(sum[c], s->ps1x_max);
+          e[c] = (2.0 * n[c] + 10.0) * detail::kFp32Unit * bound[c];
+        }
+        // The listing's chain in fp32: r = w0·s0, then r = w_k·s_k + r (mul, then mad), in
+        // the order it first samples — the order of every glow listing and the article's.
+        auto fp32 = [&] {
+          std::array<float, 4> r{};
+          std::array<bool, 4> started{};
+          for (size_t k = 0; k < taps.size(); ++k) {
+            const Tap& t = taps[k];
+            if (t.weight == Rgba{}) continue; // adds exactly 0
+            const auto smp = reader.read_fp32(k, i, j);
+            for (int c = 0; c < 4; ++c) {
+              if (t.weight[c] == 0) continue;
+              const float prod = detail::product_fp32(static_cast<float>(t.weight[c]), smp[c]);
+              r[c] = started[c] ? prod + r[c] : prod;
+              started[c] = true;
+              if (in.ps1x_clamp) r[c] = reader.clamp_fp32(r[c]);
+            }
+          }
+          return r;
+        };
+        mark_slack(in, out, i, j, store_settled(out, in, i, j, sum, e, fp32));
+      }
+    add_notes(notes, in, reader, negative_weight);
+    return {std::move(out), ""};
+  }
   for (uint32_t j = 0; j < s->height; ++j)
     for (uint32_t i = 0; i < s->width; ++i) {
-      const auto uv = pixel_uv(i, j, s->width, s->height, in.model);
       Rgba sum{};
-      double u = 0;
-      for (const Tap& t : taps) {
-        const Rgba v = reader.read(t, uv);
-        double w_most = 0;
+      for (size_t k = 0; k < taps.size(); ++k) {
+        const Tap& t = taps[k];
+        const Rgba v = reader.read(k, i, j);
         for (int c = 0; c < 4; ++c)
-          if (t.weight[c] != 0) {
-            sum[c] += t.weight[c] * v[c]; // 0-weight taps add exactly 0
-            w_most = std::max(w_most, std::fabs(t.weight[c]));
-          }
-        if (w_most != 0) u += w_most * reader.slack(t, uv);
+          if (t.weight[c] != 0) sum[c] += t.weight[c] * v[c]; // 0-weight taps add exactly 0
       }
-      store(out, in, *s, i, j, sum, u);
+      store(out, in, *s, i, j, sum);
     }
   add_notes(notes, in, reader, negative_weight);
   return {std::move(out), ""};
@@ -209,14 +359,38 @@ img::LoadResult mask_by_alpha_pass(const Tap& read, const LinearPassInput& in,
   auto s = check(in, error);
   if (!s) return {std::nullopt, error};
   img::Image out(s->width, s->height, in.model.target_format);
-  Reader reader(*s, in);
+  const std::vector<Tap> one{read};
+  Reader reader(*s, in, one);
+  if (exact_store(in, reader)) {
+    for (uint32_t j = 0; j < s->height; ++j)
+      for (uint32_t i = 0; i < s->width; ++i) {
+        Rgba most{};
+        Rgba v = reader.read(0, i, j, &most);
+        // The read is off by at most 8·2^-24 of its largest texel per channel (see
+        // linear_pass), the product rounds once: |fp32 − r·a| ≤ 8u·R·A + 8u·A·R + u·R·A,
+        // plus second-order terms, below 20u·R·A.
+        Rgba e{};
+        for (int c = 0; c < 3; ++c) {
+          v[c] *= v[3];
+          e[c] = 20.0 * detail::kFp32Unit * most[c] * most[3];
+        }
+        e[3] = 10.0 * detail::kFp32Unit * most[3];
+        if (in.ps1x_clamp)
+          for (double& c : v) c = clamp_range(c, s->ps1x_max);
+        auto fp32 = [&] {
+          auto r = reader.read_fp32(0, i, j);
+          for (int c = 0; c < 3; ++c) r[c] = reader.clamp_fp32(detail::product_fp32(r[c], r[3]));
+          return r;
+        };
+        mark_slack(in, out, i, j, store_settled(out, in, i, j, v, e, fp32));
+      }
+    add_notes(notes, in, reader, false);
+    return {std::move(out), ""};
+  }
   for (uint32_t j = 0; j < s->height; ++j)
     for (uint32_t i = 0; i < s->width; ++i) {
-      const auto uv = pixel_uv(i, j, s->width, s->height, in.model);
-      const Rgba v = reader.read(read, uv);
-      // (x + dx)(a + da) − x·a ≤ dx·a + x·da + dx·da for x, a in [0, 1], |dx|, |da| ≤ d.
-      const double d = reader.slack(read, uv);
-      store(out, in, *s, i, j, {v[0] * v[3], v[1] * v[3], v[2] * v[3], v[3]}, d * (2 + d));
+      const Rgba v = reader.read(0, i, j);
+      store(out, in, *s, i, j, {v[0] * v[3], v[1] * v[3], v[2] * v[3], v[3]});
     }
   reader.negative_sample = false; // one product, no partial sums: the clamps are exact
   add_notes(notes, in, reader, false);

@@ -105,3 +105,112 @@ std::array<double, 4> sample(const img::Image& t, double u, double v, const Samp
 }
 
 } // namespace tierlift::ref
+
+namespace tierlift::ref {
+namespace {
+
+// One axis of a bilinear read at the devices' float coordinate: the position x = fl32(u·N)
+// − ½ in fp32 (clamp addressing clamps the coordinate first: min(u·N, N), NaN → N, then
+// max(x, 0), so the index stays in the texture), its lower texel and the fraction x − ⌊x⌋,
+// which is exact in fp32; the fraction quantised to subtexel_bits by rounding to nearest.
+struct FloatSplit {
+  int64_t i0;
+  double frac;
+};
+FloatSplit float_split(float u, uint32_t n, Address mode, int subtexel_bits) {
+  const float size = static_cast<float>(n);
+  float x = u * size;
+  if (mode == Address::Clamp) {
+    x = x < size ? x : size;
+    x = x - 0.5f;
+    x = x > 0.0f ? x : 0.0f;
+  } else {
+    x = x - 0.5f;
+    constexpr float kLimit = 1099511627776.0f; // 2^40, far outside any address period
+    if (std::isnan(x)) x = 0.0f;
+    x = std::fmin(std::fmax(x, -kLimit), kLimit);
+  }
+  const float f = std::floor(x);
+  double frac = double(x) - double(f);
+  if (subtexel_bits > 0) {
+    const double steps = std::ldexp(1.0, subtexel_bits > 30 ? 30 : subtexel_bits);
+    frac = std::nearbyint(frac * steps) / steps; // may reach 1: all weight on texel i0 + 1
+  }
+  return {static_cast<int64_t>(f), frac};
+}
+
+// Point reads: texel ⌊fl32(u·N)⌋ (NaN → 0, far positions limited as above).
+int64_t float_point(float u, uint32_t n) {
+  float x = u * static_cast<float>(n);
+  constexpr float kLimit = 1099511627776.0f;
+  if (std::isnan(x)) x = 0.0f;
+  x = std::fmin(std::fmax(x, -kLimit), kLimit);
+  return static_cast<int64_t>(std::floor(x));
+}
+
+} // namespace
+
+std::array<double, 4> sample_at_float(const img::Image& t, float u, float v, const SamplerModel& s,
+                                      int subtexel_bits, std::array<double, 4>* texel_max) {
+  if (texel_max) *texel_max = {0, 0, 0, 0};
+  auto note = [texel_max](const std::array<double, 4>& tx) {
+    if (texel_max)
+      for (int c = 0; c < 4; ++c) (*texel_max)[c] = std::fmax((*texel_max)[c], std::fabs(tx[c]));
+  };
+  if (t.width == 0 || t.height == 0) return {0, 0, 0, 1};
+  if (s.filter == Filter::Point) {
+    const auto tx = texel(t, float_point(u, t.width), float_point(v, t.height), s);
+    note(tx);
+    return tx;
+  }
+  const FloatSplit sx = float_split(u, t.width, s.address_u, subtexel_bits);
+  const FloatSplit sy = float_split(v, t.height, s.address_v, subtexel_bits);
+  std::array<double, 4> out{};
+  const double wx[2] = {1.0 - sx.frac, sx.frac}, wy[2] = {1.0 - sy.frac, sy.frac};
+  for (int b = 0; b < 2; ++b)
+    for (int a = 0; a < 2; ++a) {
+      const double wgt = wx[a] * wy[b];
+      if (wgt == 0.0) continue; // keeps exact reads exact (and NaN texels out of 0-weight)
+      const auto tx = texel(t, sx.i0 + a, sy.i0 + b, s);
+      note(tx);
+      for (int c = 0; c < 4; ++c) out[c] += wgt * tx[c];
+    }
+  return out;
+}
+
+namespace {
+
+// A texel as the devices hold it: the image's float (RGBA8: the float nearest k/255).
+std::array<float, 4> texel_fp32(const img::Image& t, int64_t x, int64_t y, const SamplerModel& s) {
+  const int64_t ax = address_texel(x, t.width, s.address_u);
+  const int64_t ay = address_texel(y, t.height, s.address_v);
+  if (ax < 0 || ay < 0)
+    return {float(s.border[0]), float(s.border[1]), float(s.border[2]), float(s.border[3])};
+  const float* p = t.at(static_cast<uint32_t>(ax), static_cast<uint32_t>(ay));
+  return {p[0], p[1], p[2], p[3]};
+}
+
+// The filter unit's interpolation: a + α·(b − a) as one fused multiply-add.
+float lerp_fp32(float alpha, float a, float b) {
+  return std::fma(alpha, b - a, a);
+}
+
+} // namespace
+
+std::array<float, 4> sample_fp32(const img::Image& t, float u, float v, const SamplerModel& s,
+                                 int subtexel_bits) {
+  if (t.width == 0 || t.height == 0) return {0, 0, 0, 1};
+  if (s.filter == Filter::Point)
+    return texel_fp32(t, float_point(u, t.width), float_point(v, t.height), s);
+  const FloatSplit sx = float_split(u, t.width, s.address_u, subtexel_bits);
+  const FloatSplit sy = float_split(v, t.height, s.address_v, subtexel_bits);
+  const float a = static_cast<float>(sx.frac), b = static_cast<float>(sy.frac);
+  const auto t00 = texel_fp32(t, sx.i0, sy.i0, s), t10 = texel_fp32(t, sx.i0 + 1, sy.i0, s);
+  const auto t01 = texel_fp32(t, sx.i0, sy.i0 + 1, s), t11 = texel_fp32(t, sx.i0 + 1, sy.i0 + 1, s);
+  std::array<float, 4> out{};
+  for (int c = 0; c < 4; ++c)
+    out[c] = lerp_fp32(b, lerp_fp32(a, t00[c], t10[c]), lerp_fp32(a, t01[c], t11[c]));
+  return out;
+}
+
+} // namespace tierlift::ref

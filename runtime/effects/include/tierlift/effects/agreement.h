@@ -14,11 +14,12 @@ namespace tierlift::effects {
 struct PassAgreement {
   std::string pass, target;
   img::Comparison comparison; // the plain comparison (identical means bit for bit)
-  // RGBA8: pixels that differ by no more than one run's device says a float device may
-  // (PassDevice::rounding_midpoints: the analytic model's slack, in 8-bit steps, where its
-  // exact value or its inputs sit at midpoints between steps). The verdict counts them as
-  // identical, in the identical share and in the max abs.
+  // RGBA8: pixels that differ by one step where one run's device proved a rounding tie
+  // (PassDevice::rounding_midpoints, at most one step whatever the mask holds). The verdict
+  // counts them as identical, in the identical share and in the max abs; midpoint_share is
+  // their share of the pixels (the "slack used" figure of the glow table).
   uint64_t midpoint_pixels = 0;
+  double midpoint_share = 0;
   double identical_share_with_midpoints = 1;
   img::Verdict verdict;
 };

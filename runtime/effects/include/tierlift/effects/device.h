@@ -39,10 +39,10 @@ public:
   // A texture's current contents (in its declared format). Empty string on success.
   virtual std::string read_texture(const std::string& name, img::Image& out) = 0;
   // RGBA8 textures only, and only a device that knows its exact values (the analytic one):
-  // one entry per pixel, the number of 8-bit steps a float device's stored value may lie
-  // from this device's (ref::LinearPassInput::slack: exact values at, or inputs carried
-  // from, midpoints between two steps, where either rounding is right). compare_runs counts
-  // a difference within it as agreement. False: no mask (every pixel determined).
+  // one entry per pixel, 1 where a store of it was a proven rounding tie (ref::
+  // LinearPassInput::slack: the fp32 value x·255 exactly half-way between two steps, where
+  // D3D9 and Vulkan allow either), else 0. compare_runs counts a difference of one step
+  // there as agreement. False: no mask (every pixel determined).
   virtual bool rounding_midpoints(const std::string& /*texture*/,
                                   std::vector<uint8_t>& /*mask*/) const {
     return false;

@@ -43,6 +43,11 @@ double texel_value(const img::Image& image, uint32_t x, uint32_t y, int channel)
 // exact midpoints); other formats: img::quantize of the value as float.
 float store_value(img::Format format, double value, Unorm8Ties ties);
 
+// RGBA16F as lavapipe stores it (NUMERICS.md rule 35): the half float toward zero from the
+// value, finite values beyond 65504 as ±65504, ±inf and NaN kept. The model's own rounding,
+// written from the IEEE 754 binary16 definition (it shares nothing with img::).
+float half_toward_zero_model(double value);
+
 struct PassModel {
   ir::Conventions conventions; // pixel_center and subtexel_bits are used
   Unorm8Ties unorm8_ties = Unorm8Ties::HalfUp;
@@ -74,6 +79,21 @@ std::array<double, 2> pixel_uv(uint32_t i, uint32_t j, uint32_t width, uint32_t 
 double snap_tolerance(uint32_t texels); // max(1e-9, N · 2^-21) texels
 std::array<double, 4> sample(const img::Image& texture, double u, double v,
                              const SamplerModel& sampler, int subtexel_bits = 0);
+// One filtered read at a float coordinate as the devices take it (quad_coords.h gives the
+// coordinate): point: texel ⌊fl32(u·N)⌋; linear: x = fl32(u·N) − ½ in fp32 (clamp addressing
+// clamps u·N to N and x to 0 first), weights 1 − α and α with α = x − ⌊x⌋ (exact in fp32,
+// quantised when subtexel_bits > 0); weights and the weighted sum in double. No snapping:
+// the position is the devices' own.
+// `texel_max`, when given, receives the largest |texel| per channel among those read.
+std::array<double, 4> sample_at_float(const img::Image& texture, float u, float v,
+                                      const SamplerModel& sampler, int subtexel_bits = 0,
+                                      std::array<double, 4>* texel_max = nullptr);
+// The same read in the devices' own fp32 arithmetic, for the few values the double model
+// cannot place on one side of an RGBA8 rounding boundary (linear_pass.h): the texels' floats;
+// bilinear as lerp(β, lerp(α, t00, t10), lerp(α, t01, t11)) with lerp(a, x, y) =
+// fma(a, y − x, x), the filter unit's arithmetic in lavapipe's float-texture path.
+std::array<float, 4> sample_fp32(const img::Image& texture, float u, float v,
+                                 const SamplerModel& sampler, int subtexel_bits = 0);
 // The texel index an address mode maps i to, or -1 for "border colour".
 int64_t address_texel(int64_t i, int64_t n, Address mode);
 

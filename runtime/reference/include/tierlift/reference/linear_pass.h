@@ -21,10 +21,6 @@ struct StageTexture {
   uint32_t stage = 0;
   const img::Image* image = nullptr; // not owned; must outlive the call
   SamplerModel sampler;
-  // RGBA8 textures written by an earlier pass: per texel, how many 8-bit steps a float
-  // device's stored texel may lie from this one (its `slack` output; nullptr or a size other
-  // than the image's: 0 everywhere).
-  const std::vector<uint8_t>* slack = nullptr;
 };
 
 // How the pass's colour meets the target: Replace, or ONE/ONE (dst = src + dst; the passes
@@ -44,23 +40,25 @@ struct LinearPassInput {
   // equals clamping each step. Where a weight or a sample is negative that no longer holds
   // and a note says so.
   bool ps1x_clamp = false;
-  // RGBA8 only. Float devices store a value that lies at (or within float noise of) a
-  // midpoint between two 8-bit steps either way: the noise (their k/255 texels, fp32 sums,
-  // fp32 texture coordinates; about 1e-7 relative) decides, and exact math cannot predict
-  // it. So the model carries an interval: a value v whose inputs may each lie `slack`
-  // steps from the model's (the stages' slack, weighted by |weight| and the bilinear
-  // weights; the destination's slack for ONE/ONE) may come out as any store of
-  // [v − u − band, v + u + band] with band = kUnorm8MidpointBand steps.
-  // When set (target width × height entries), each entry receives the most steps any store
-  // of that interval lies from the model's own store, over the four channels (0: the
-  // stored value is determined; 1 at an exact midpoint; capped at 255).
+  // RGBA8 and RGBA16F stores. With every tap's coordinate the devices' own (Tap::corners,
+  // Rounding::Llvmpipe) the model stores exactly what the float devices store: the double
+  // value settles the stored step or half wherever the devices' fp32 value, which lies within
+  // a bound worked out from the pass's fp32 operations (linear_pass.cpp), cannot cross a
+  // rounding boundary; elsewhere — exact midpoints, where averaging 8-bit texels with
+  // power-of-two weights lands, and values within that bound of one — the pass's own fp32
+  // arithmetic decides (the listing's mul/mad chain in the order it samples, bilinear lerps
+  // as fused multiply-adds, the store's fl32(x·255) with ties to even for lavapipe).
+  // RGBA8 only: when set (target width × height entries), each entry receives 1 where a
+  // channel's fp32 x·255 lies exactly half-way between two steps (a proven tie, which D3D9
+  // and Vulkan leave to the device: one step of slack for compare_runs); other entries are
+  // left as they are (start from 0s, or from the target's mask under ONE/ONE). Without the
+  // devices' coordinates (hand-made taps, Rounding::Exact) the store is decided in double and
+  // the entry is set where a value lies within kUnorm8MidpointBand of a midpoint.
   std::vector<uint8_t>* slack = nullptr;
-  const std::vector<uint8_t>* destination_slack = nullptr; // ONE/ONE: the target's slack
 };
 
-// In 8-bit steps: 1/1024 of a step covers a float device's own noise on values up to 255
-// steps (fp32 sums: ~255 · 2^-23 step; bilinear weights off by W · 2^-24 texel on smooth
-// inputs).
+// In 8-bit steps, for the double-only store: 1/1024 of a step covers a float device's own
+// noise on values up to 255 steps (fp32 sums: ~255 · 2^-23 step).
 inline constexpr double kUnorm8MidpointBand = 1.0 / 1024;
 
 // out(i, j) = Σ_k w_k · sample(tex[stage_k], scale_k·uv + offset_k), uv = pixel_uv(i, j) of

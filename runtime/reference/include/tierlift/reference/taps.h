@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,11 @@ struct Tap {
   std::array<double, 2> offset{};    // (u, v) added to the texcoord input: the vs constant .xy
   std::array<double, 2> scale{1, 1}; // (u, v) the texcoord input is multiplied by first
   std::array<double, 4> weight{};    // per channel R, G, B, A: the ps constant (ps_1_x: clamped)
+  // oT#.xy at the full-screen quad's corners (top-left, top-right, bottom-left, bottom-right;
+  // texcoord input (0,0), (1,0), (0,1), (1,1)) as the vertex listing computes them in fp32,
+  // one rounding per instruction. Set by extract_taps / extract_reads; with them the model
+  // interpolates the coordinate as the devices do (quad_coords.h) instead of in double.
+  std::optional<std::array<std::array<float, 2>, 4>> corners;
 };
 
 struct TapExtraction {
