@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "skip_policy.h"
 #include "tierlift/asm/bytecode.h"
 #include "tierlift/asm/parser.h"
 #include "tierlift/asm/printer.h"
@@ -74,7 +75,8 @@ TEST(BytecodeRoundTrip, ArticleListings) {
 
 TEST(BytecodeRoundTrip, SharedCorpus) {
   auto files = listings_in(fs::path(TIERLIFT_SHARED_DIR) / "corpus");
-  if (files.empty()) GTEST_SKIP() << "no shared corpus";
+  if (files.empty())
+    TIERLIFT_SKIP_UNLESS_REQUIRED(::tierlift::test::kRequireCorpus, "no shared corpus");
   for (const auto& f : files) round_trip(f);
 }
 

@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include "skip_policy.h"
 #include "tierlift/asm/parser.h"
 #include "tierlift/codegen/codegen.h"
 
@@ -51,7 +52,9 @@ TEST(CodegenListings, GpuGemsListingsCompileAndValidate) {
 
 TEST(CodegenListings, SharedCorpusCompilesAndValidates) {
   const fs::path dir = fs::path(TIERLIFT_SHARED_DIR) / "corpus";
-  if (!fs::exists(dir)) GTEST_SKIP() << "no shared corpus at " << dir;
+  if (!fs::exists(dir))
+    TIERLIFT_SKIP_UNLESS_REQUIRED(::tierlift::test::kRequireCorpus,
+                                  "no shared corpus at " + dir.string());
   const auto files = listings_in(dir);
   ASSERT_FALSE(files.empty());
   for (const auto& f : files) compile_listing(f);
@@ -59,7 +62,9 @@ TEST(CodegenListings, SharedCorpusCompilesAndValidates) {
 
 TEST(CodegenListings, EveryCorpusVertexShaderPairsWithEveryPixelShader) {
   const fs::path dir = fs::path(TIERLIFT_SHARED_DIR) / "corpus";
-  if (!fs::exists(dir)) GTEST_SKIP() << "no shared corpus at " << dir;
+  if (!fs::exists(dir))
+    TIERLIFT_SKIP_UNLESS_REQUIRED(::tierlift::test::kRequireCorpus,
+                                  "no shared corpus at " + dir.string());
   std::vector<ir::Program> vs, ps;
   auto files = listings_in(dir);
   for (const auto& f : listings_in(fs::path(TIERLIFT_SOURCE_DIR) / "listings/gpugems21"))

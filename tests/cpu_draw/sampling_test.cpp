@@ -149,22 +149,61 @@ TEST(Sampling, UnboundStageReadsOpaqueBlack) {
   EXPECT_EQ(unit.sample(999, {0.5f, 0.5f, 0, 1}, 0), (Vec4{0, 0, 0, 1}));
 }
 
-TEST(Sampling, ExtremeCoordinatesDoNotCrash) {
+// Coordinates no texture holds: texel_space turns NaN into 0 and clamps u·N to ±2^40 (far
+// outside any address-mode period, so the index conversion is defined). With u = v every
+// result sits on the diagonal, so R = 5·G and B = G (numbered4x4); G is computed by hand:
+//   point:  i = floor(u·N): NaN → 0; +inf, 3e38 → 2^40; 1e9 → 4e9; −inf, −3e38 → −2^40.
+//           Wrap: every one ≡ 0 (mod 4) → 0. Mirror: ≡ 0 (mod 8), or −2^40 → t = −4 → 0.
+//           Clamp: 0 / 3 / 0. MirrorOnce: 0 for NaN, else beyond the texture → 3.
+//   linear: x = u·N − ½ straddles texels i0, i0 + 1 with weight ½: NaN → (−1, 0); +big →
+//           (k − 1, k), k ≡ 0 (mod 8); −big → (−2^40 − 1, −2^40). Wrap: columns 3 and 0
+//           → 1.5. Mirror: both map to 0. Clamp: 0 / 3 / 0. MirrorOnce: NaN → 0, else 3.
+//   Border (transparent black): any index outside is the border; NaN's linear tap keeps
+//   texel (0, 0) with weight ¼ (A = ¼), point keeps texel (0, 0); every other one is border.
+TEST(Sampling, ExtremeCoordinatesFollowTheAddressRules) {
   img::Image t = numbered4x4();
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const float inf = std::numeric_limits<float>::infinity();
-  for (AddressMode m : {AddressMode::Wrap, AddressMode::Mirror, AddressMode::Clamp,
-                        AddressMode::Border, AddressMode::MirrorOnce})
-    for (Filter f : {Filter::Point, Filter::Linear}) {
-      SamplerState s;
-      s.filter = f;
-      s.address_u = s.address_v = m;
-      for (float u : {nan, inf, -inf, 3e38f, -3e38f, 1e9f}) {
-        Vec4 r = sample_texture(t, s, u, u, 8);
-        (void)r;
+  const float coords[] = {nan, inf, -inf, 3e38f, -3e38f, 1e9f};
+  struct Row {
+    AddressMode mode;
+    Filter filter;
+    float g[6]; // G for each of `coords`; -1: the border colour
+  };
+  const Row rows[] = {
+      {AddressMode::Wrap, Filter::Point, {0, 0, 0, 0, 0, 0}},
+      {AddressMode::Mirror, Filter::Point, {0, 0, 0, 0, 0, 0}},
+      {AddressMode::Clamp, Filter::Point, {0, 3, 0, 3, 0, 3}},
+      {AddressMode::Border, Filter::Point, {0, -1, -1, -1, -1, -1}},
+      {AddressMode::MirrorOnce, Filter::Point, {0, 3, 3, 3, 3, 3}},
+      {AddressMode::Wrap, Filter::Linear, {1.5f, 1.5f, 1.5f, 1.5f, 1.5f, 1.5f}},
+      {AddressMode::Mirror, Filter::Linear, {0, 0, 0, 0, 0, 0}},
+      {AddressMode::Clamp, Filter::Linear, {0, 3, 0, 3, 0, 3}},
+      {AddressMode::Border, Filter::Linear, {0, -1, -1, -1, -1, -1}},
+      {AddressMode::MirrorOnce, Filter::Linear, {0, 3, 3, 3, 3, 3}},
+  };
+  for (const Row& row : rows) {
+    SamplerState s;
+    s.filter = row.filter;
+    s.address_u = s.address_v = row.mode;
+    for (int k = 0; k < 6; ++k) {
+      SCOPED_TRACE("mode " + std::to_string(static_cast<int>(row.mode)) + ", filter " +
+                   std::to_string(static_cast<int>(row.filter)) +
+                   ", u = v = " + std::to_string(coords[k]));
+      Vec4 r = sample_texture(t, s, coords[k], coords[k], 8);
+      if (row.g[k] < 0) {
+        EXPECT_EQ(r, (Vec4{0, 0, 0, 0}));
+        continue;
       }
+      const bool border_nan_linear =
+          row.mode == AddressMode::Border && row.filter == Filter::Linear;
+      const float a = border_nan_linear ? 0.25f : 1.0f;
+      EXPECT_EQ(r[0], 5 * row.g[k]);
+      EXPECT_EQ(r[1], row.g[k]);
+      EXPECT_EQ(r[2], row.g[k]);
+      EXPECT_EQ(r[3], a);
     }
-  SUCCEED();
+  }
 }
 
 } // namespace

@@ -26,9 +26,6 @@
 namespace tierlift::effects {
 namespace {
 
-// Until the dx8 generator lands (the lead removes this at integration).
-constexpr const char* kDx8NotBuilt = "tier dx8: not built yet";
-
 enum class Scene { RandomBinaryAlpha, RandomAlpha, Default };
 
 // Odd sizes; rgb random multiples of 1/255; alpha in {0, 1} or a random multiple of 1/255.
@@ -137,7 +134,6 @@ TEST_P(ThreeWay, EveryPairAgreesOnEveryPass) {
   p.subtexel_bits = 0; // lavapipe weights float textures exactly
   const img::Image scene = make_scene(c.scene, p.width, p.height);
   GlowPlan plan = build_glow(p);
-  if (c.tier == Tier::Dx8 && plan.error == kDx8NotBuilt) GTEST_SKIP() << plan.error;
   ASSERT_TRUE(plan) << plan.error;
 
   CpuPassDevice cpu_dev(2);
@@ -232,7 +228,6 @@ void check_half_texel_rule(Tier tier, bool half_texel) {
   p.half_texel = half_texel;
   const img::Image scene = make_scene(Scene::RandomAlpha, p.width, p.height);
   GlowPlan plan = build_glow(p);
-  if (tier == Tier::Dx8 && plan.error == kDx8NotBuilt) GTEST_SKIP() << plan.error;
   ASSERT_TRUE(plan) << plan.error;
   AnalyticPassDevice analytic;
   GlowRun run = run_glow(plan, scene, analytic, true);

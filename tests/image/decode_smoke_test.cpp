@@ -1,6 +1,10 @@
-// Random and randomly damaged input through every decoder: an error or an image, never a
-// crash (this runs under ASan/UBSan in CI). Seeded, so a failure reproduces.
+// Random and randomly damaged input through every decoder: rejected with a message, or, where
+// the format allows the damage, read exactly as the bytes say; never a crash (this runs
+// under ASan/UBSan in CI). Seeded, so a failure reproduces.
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstring>
 
 #include "tierlift/image/builtin.h"
 #include "tierlift/image/io.h"
@@ -23,7 +27,10 @@ std::vector<uint8_t> mutate(std::vector<uint8_t> b, uint64_t& state) {
 }
 } // namespace
 
-TEST(DecodeSmoke, RandomBytesNeverCrash) {
+// Random bytes are never an image: after a PNG signature the first chunk's CRC (or its
+// type, IHDR) cannot match by chance (2^-32 per try), and after "PF" the header needs white
+// space, two decimal sizes and a scale. Every one is rejected with a message.
+TEST(DecodeSmoke, RandomBytesAreRejected) {
   uint64_t state = 99;
   for (int i = 0; i < 2000; ++i) {
     std::vector<uint8_t> b(img::splitmix64(state) % 200);
@@ -33,33 +40,76 @@ TEST(DecodeSmoke, RandomBytesNeverCrash) {
       std::copy(sig, sig + 8, b.begin());
     }
     auto png = img::decode_png(b);
-    EXPECT_TRUE(png || !png.error.empty());
+    EXPECT_FALSE(png) << "random bytes " << i << " decoded as a PNG";
+    EXPECT_FALSE(png.error.empty());
     if (b.size() >= 2) {
       b[0] = 'P';
       b[1] = 'F';
     }
     auto pfm = img::decode_pfm(b);
-    EXPECT_TRUE(pfm || !pfm.error.empty());
+    EXPECT_FALSE(pfm) << "random bytes " << i << " decoded as a PFM";
+    EXPECT_FALSE(pfm.error.empty());
   }
 }
 
-TEST(DecodeSmoke, DamagedValidFilesNeverCrash) {
+// Damaged files: every PNG chunk carries a CRC and the reader checks them all, so a PNG
+// decodes only when it is byte for byte the original (then to the original's pixels). A PFM
+// has an exact size: a longer or shorter one is rejected; one of the same size whose header
+// survived decodes, every float read from its own 4 bytes (little endian, rows bottom to
+// top: the file's scale is -1).
+TEST(DecodeSmoke, DamagedFilesAreRejectedOrReadExactly) {
   img::Image noise = img::builtin_noise(7, 5, 3);
-  const std::vector<uint8_t> files[] = {
-      img::encode_png(noise, img::PngDepth::Bits8), img::encode_png(noise, img::PngDepth::Bits16),
-      img::encode_pfm(noise), img::encode_pfm(noise, img::PfmChannels::Grey)};
+  struct File {
+    std::vector<uint8_t> bytes;
+    bool png;
+    uint32_t channels; // PFM: 3 (PF) or 1 (Pf)
+  };
+  const File files[] = {{img::encode_png(noise, img::PngDepth::Bits8), true, 4},
+                        {img::encode_png(noise, img::PngDepth::Bits16), true, 4},
+                        {img::encode_pfm(noise), false, 3},
+                        {img::encode_pfm(noise, img::PfmChannels::Grey), false, 1}};
   uint64_t state = 5;
-  for (const auto& f : files) {
-    ASSERT_FALSE(f.empty());
+  int decoded_damaged = 0;
+  for (const File& f : files) {
+    ASSERT_FALSE(f.bytes.empty());
+    const auto original = f.png ? img::decode_png(f.bytes) : img::decode_pfm(f.bytes);
+    ASSERT_TRUE(original) << original.error;
+    const size_t raster = size_t{7} * 5 * f.channels * 4;
+    const size_t header = f.bytes.size() - raster; // PFM only
     for (int i = 0; i < 1500; ++i) {
-      auto b = mutate(f, state);
-      auto r = (b.size() >= 2 && b[0] == 'P') ? img::decode_pfm(b) : img::decode_png(b);
-      if (r) {
-        EXPECT_LE(r.image->width, img::kMaxDimension);
-        EXPECT_EQ(r.image->rgba.size(), size_t{r.image->width} * r.image->height * 4);
-      } else {
-        EXPECT_FALSE(r.error.empty());
+      auto b = mutate(f.bytes, state);
+      auto r = f.png ? img::decode_png(b) : img::decode_pfm(b);
+      if (b == f.bytes) {
+        ASSERT_TRUE(r) << r.error;
+        EXPECT_EQ(r.image->rgba, original.image->rgba);
+        continue;
       }
+      if (f.png || b.size() != f.bytes.size()) {
+        EXPECT_FALSE(r) << (f.png ? "damaged PNG" : "PFM of the wrong size") << " decoded";
+        EXPECT_FALSE(r.error.empty());
+        continue;
+      }
+      if (!std::equal(b.begin(), b.begin() + static_cast<long>(header), f.bytes.begin()))
+        continue; // a damaged header may still read as some header: either answer is right
+      ASSERT_TRUE(r) << r.error;
+      ++decoded_damaged;
+      ASSERT_EQ(r.image->width, 7u);
+      ASSERT_EQ(r.image->height, 5u);
+      for (uint32_t y = 0; y < 5; ++y)
+        for (uint32_t x = 0; x < 7; ++x)
+          for (uint32_t c = 0; c < 4; ++c) {
+            float want = 1.0f;
+            if (c < 3) {
+              const size_t k = ((4 - y) * 7 + x) * f.channels + (f.channels == 3 ? c : 0);
+              const uint8_t* p = b.data() + header + 4 * k;
+              uint32_t bits = uint32_t{p[0]} | uint32_t{p[1]} << 8 | uint32_t{p[2]} << 16 |
+                              uint32_t{p[3]} << 24;
+              std::memcpy(&want, &bits, 4);
+            }
+            const float got = r.image->at(x, y)[c];
+            EXPECT_EQ(std::memcmp(&got, &want, 4), 0) << x << "," << y << " channel " << c;
+          }
     }
   }
+  EXPECT_GT(decoded_damaged, 0); // the raster-only damage did happen
 }

@@ -30,6 +30,7 @@
 #include <set>
 
 #include "diff_harness.h"
+#include "skip_policy.h"
 
 namespace tierlift::vulkan::test {
 namespace {
@@ -176,7 +177,8 @@ class CorpusAgreement : public VulkanTest, public ::testing::WithParamInterface<
 
 TEST_P(CorpusAgreement, CpuAndVulkanAgree) {
   const std::string file = GetParam();
-  if (file == "absent") GTEST_SKIP() << kCorpus << " is absent";
+  if (file == "absent")
+    TIERLIFT_SKIP_UNLESS_REQUIRED(::tierlift::test::kRequireCorpus, kCorpus + " is absent");
   auto prog = parse_listing(read_text(kCorpus + "/" + file), file);
   ASSERT_TRUE(prog);
   const bool vertex = prog->stage() == ir::ShaderStage::Vertex;

@@ -14,23 +14,26 @@
 
 namespace tierlift::vulkan::test {
 
-// Kept for the process, like shared_device (vk_test_util.h), for the same LeakSanitizer reason.
-inline Device* sync_validated_device(std::string* error) {
-  static std::string err;
-  static Device* dev = [] {
+// Owned by the program and destroyed at its end, like shared_device (vk_test_util.h).
+inline Device* sync_validated_device(std::string* error, CreateFailure* failure) {
+  static SharedDevice shared = [] {
+    SharedDevice s;
     DeviceOptions o;
-    o.validation = true;
     o.synchronization_validation = true;
-    return Device::create(o, &err).release();
+    s.device = program_device(o, &s.error, &s.failure);
+    return s;
   }();
-  if (error) *error = err;
-  return dev;
+  if (error) *error = shared.error;
+  if (failure) *failure = shared.failure;
+  return shared.device;
 }
 
 // VulkanTest's checks (skip without a device, fail on any message) on that device.
 class ResidentTest : public VulkanTest {
 protected:
-  Device* acquire_device(std::string* error) override { return sync_validated_device(error); }
+  Device* acquire_device(std::string* error, CreateFailure* failure) override {
+    return sync_validated_device(error, failure);
+  }
 };
 
 // vs_2_0: oPos = v0, oT0 = v1 + c0, oT1 = v1 + c1 (v1: the quad's uv).

@@ -1,18 +1,24 @@
-// Shared by the Vulkan tests: one validated device for the whole test program, a fixture that
-// fails a test when the validation layer said anything, listing loaders, and the CPU/Vulkan
+// Shared by the Vulkan tests: one validated device for the whole test program (destroyed at
+// its end, where the layer's leak report fails the program), a fixture that fails a test
+// when the validation layer said anything, listing loaders, and the CPU/Vulkan
 // comparison of one pass.
 #pragma once
 
+#include <dlfcn.h>
 #include <gtest/gtest.h>
+#include <link.h>
 
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <memory>
+#include <mutex>
 #include <sstream>
 #include <string>
+#include <vector>
 
+#include "skip_policy.h"
 #include "tierlift/asm/parser.h"
 #include "tierlift/asm/validator.h"
 #include "tierlift/codegen/codegen.h"
@@ -24,34 +30,107 @@
 
 namespace tierlift::vulkan::test {
 
-// The device every test shares (instance creation with validation costs ~100 ms). nullptr
-// when no Vulkan device exists at all; `error` then says why. It is deliberately never
-// destroyed: destroying the last instance at exit unloads the driver (dlclose), and the few
-// bytes Mesa keeps for the process's lifetime then show up in LeakSanitizer as leaks from an
-// "<unknown module>"; kept alive, they stay reachable.
-inline vulkan::Device* shared_device(std::string* error) {
-  static std::string err;
-  static vulkan::Device* dev = [] {
-    DeviceOptions o;
-    o.validation = true;
-    return Device::create(o, &err).release();
+// Devices the test program keeps until it ends. DeviceTeardown (below) destroys them after
+// the last test, with the validation layer still watching: vkDestroyDevice and
+// vkDestroyInstance report every Vulkan object tierlift created and never destroyed, and any
+// message then fails the program.
+struct ProgramDevices {
+  std::vector<std::unique_ptr<Device>> devices;
+  std::vector<std::string> messages_at_destruction;
+  std::mutex mutex;
+};
+inline ProgramDevices& program_devices() {
+  static ProgramDevices d;
+  return d;
+}
+
+// Keeps every shared object loaded now (lavapipe, LLVM, the validation layer) loaded for the
+// rest of the process: vkDestroyInstance would dlclose the driver and the layer, and the
+// bytes they keep for the process's lifetime would then reach LeakSanitizer from an
+// "<unknown module>" that no suppression by library name matches.
+inline void pin_loaded_modules() {
+  dl_iterate_phdr(
+      [](dl_phdr_info* info, size_t, void*) {
+        if (info->dlpi_name && *info->dlpi_name)
+          (void)dlopen(info->dlpi_name, RTLD_LAZY | RTLD_NOLOAD);
+        return 0;
+      },
+      nullptr);
+}
+
+// A validated device owned by the program (destroyed at its end). nullptr when creation
+// failed: *error says why, *failure whether there is simply no device.
+inline Device* program_device(DeviceOptions o, std::string* error, CreateFailure* failure) {
+  o.validation = true;
+  o.on_destroyed = [](const std::vector<std::string>& messages) {
+    ProgramDevices& p = program_devices();
+    std::lock_guard<std::mutex> lock(p.mutex);
+    p.messages_at_destruction.insert(p.messages_at_destruction.end(), messages.begin(),
+                                     messages.end());
+  };
+  std::unique_ptr<Device> d = Device::create(o, error, failure);
+  if (!d) return nullptr;
+  pin_loaded_modules();
+  ProgramDevices& p = program_devices();
+  std::lock_guard<std::mutex> lock(p.mutex);
+  p.devices.push_back(std::move(d));
+  return p.devices.back().get();
+}
+
+class DeviceTeardown : public ::testing::Environment {
+public:
+  void TearDown() override {
+    ProgramDevices& p = program_devices();
+    std::vector<std::unique_ptr<Device>> devices;
+    {
+      std::lock_guard<std::mutex> lock(p.mutex);
+      devices.swap(p.devices);
+    }
+    devices.clear(); // reports into messages_at_destruction
+    std::lock_guard<std::mutex> lock(p.mutex);
+    for (const auto& m : p.messages_at_destruction)
+      ADD_FAILURE() << "validation layer at device destruction: " << m;
+    p.messages_at_destruction.clear();
+  }
+};
+// Registered once per program (an inline variable), before main runs the tests.
+inline const bool kDeviceTeardownRegistered =
+    (::testing::AddGlobalTestEnvironment(new DeviceTeardown), true);
+
+// The device every test shares (instance creation with validation costs ~100 ms).
+struct SharedDevice {
+  Device* device = nullptr;
+  std::string error;
+  CreateFailure failure = CreateFailure::None;
+};
+inline Device* shared_device(std::string* error, CreateFailure* failure = nullptr) {
+  static SharedDevice shared = [] {
+    SharedDevice s;
+    s.device = program_device({}, &s.error, &s.failure);
+    return s;
   }();
-  if (error) *error = err;
-  return dev;
+  if (error) *error = shared.error;
+  if (failure) *failure = shared.failure;
+  return shared.device;
 }
 
 class VulkanTest : public ::testing::Test {
 protected:
   // The device the fixture runs on; a fixture needing other validation options overrides it.
-  virtual vulkan::Device* acquire_device(std::string* error) { return shared_device(error); }
+  virtual vulkan::Device* acquire_device(std::string* error, CreateFailure* failure) {
+    return shared_device(error, failure);
+  }
 
   void SetUp() override {
     std::string err;
-    dev = acquire_device(&err);
+    CreateFailure failure = CreateFailure::None;
+    dev = acquire_device(&err, &failure);
     if (!dev) {
-      // Only a machine without any Vulkan device may skip; a missing validation layer or any
-      // other failure is a test failure.
-      if (err.find("no Vulkan device found") != std::string::npos) GTEST_SKIP() << err;
+      // Only a machine without any Vulkan device may skip (and not under
+      // TIERLIFT_REQUIRE_VULKAN); a missing validation layer or any other failure is a test
+      // failure.
+      if (failure == CreateFailure::NoDevice)
+        TIERLIFT_SKIP_UNLESS_REQUIRED(::tierlift::test::kRequireVulkan, err);
       FAIL() << err;
     }
     dev->clear_messages();

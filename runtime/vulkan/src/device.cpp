@@ -77,16 +77,27 @@ Device::Impl::~Impl() {
     if (destroy) destroy(instance, messenger, nullptr);
   }
   if (instance) vkDestroyInstance(instance, nullptr);
+  // The messenger given to vkCreateInstance stays active through vkDestroyInstance, so the
+  // layer's leak reports of both destroy calls are in `messages` by now.
+  if (on_destroyed) {
+    std::lock_guard<std::mutex> lock(messages_mutex);
+    on_destroyed(messages);
+  }
 }
 
 Device::Device(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 Device::~Device() = default;
 
-std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string* error) {
-  auto fail = [&](std::string msg) -> std::unique_ptr<Device> {
+std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string* error,
+                                       CreateFailure* failure) {
+  if (failure) *failure = CreateFailure::None;
+  // Every failure is Other unless it is one of the two "no device" cases below.
+  auto fail_as = [&](CreateFailure kind, std::string msg) -> std::unique_ptr<Device> {
     if (error) *error = std::move(msg);
+    if (failure) *failure = kind;
     return nullptr;
   };
+  auto fail = [&](std::string msg) { return fail_as(CreateFailure::Other, std::move(msg)); };
   auto impl = std::make_unique<Impl>();
 
   std::vector<const char*> layers, extensions;
@@ -125,8 +136,11 @@ std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string
   VkResult r = vkCreateInstance(&ici, nullptr, &impl->instance);
   if (r != VK_SUCCESS) {
     impl->instance = VK_NULL_HANDLE;
-    if (r == VK_ERROR_INCOMPATIBLE_DRIVER) return fail(kNoDriverHint);
-    return fail(vk_error("vkCreateInstance", r) + " (" + kNoDriverHint + ")");
+    // The loader answers INCOMPATIBLE_DRIVER when it finds no driver (ICD) at all. Anything
+    // else (out of memory, a layer or extension missing, initialization failed) is a fault
+    // of an installed Vulkan, not its absence.
+    if (r == VK_ERROR_INCOMPATIBLE_DRIVER) return fail_as(CreateFailure::NoDevice, kNoDriverHint);
+    return fail(vk_error("vkCreateInstance", r));
   }
   if (options.validation) {
     auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
@@ -136,11 +150,13 @@ std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string
   }
 
   uint32_t count = 0;
-  vkEnumeratePhysicalDevices(impl->instance, &count, nullptr);
+  r = vkEnumeratePhysicalDevices(impl->instance, &count, nullptr);
+  if (r != VK_SUCCESS) return fail(vk_error("vkEnumeratePhysicalDevices", r));
   std::vector<VkPhysicalDevice> devices(count);
-  if (count) vkEnumeratePhysicalDevices(impl->instance, &count, devices.data());
+  if (count) r = vkEnumeratePhysicalDevices(impl->instance, &count, devices.data());
+  if (r != VK_SUCCESS && r != VK_INCOMPLETE) return fail(vk_error("vkEnumeratePhysicalDevices", r));
   devices.resize(count);
-  if (devices.empty()) return fail(kNoDriverHint);
+  if (devices.empty()) return fail_as(CreateFailure::NoDevice, kNoDriverHint);
   VkPhysicalDevice chosen = VK_NULL_HANDLE;
   std::string names;
   for (VkPhysicalDevice pd : devices) {
@@ -202,6 +218,7 @@ std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string
     impl->pool = VK_NULL_HANDLE;
     return fail(vk_error("vkCreateCommandPool", r));
   }
+  impl->on_destroyed = options.on_destroyed; // a device that was never made has nothing to report
   return std::unique_ptr<Device>(new Device(std::move(impl)));
 }
 

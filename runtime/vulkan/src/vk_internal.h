@@ -35,6 +35,8 @@ struct Device::Impl {
 
   mutable std::mutex messages_mutex;
   std::vector<std::string> messages;
+  // DeviceOptions::on_destroyed: told the messages left after the handles are destroyed.
+  std::function<void(const std::vector<std::string>&)> on_destroyed;
 
   ~Impl();
 };

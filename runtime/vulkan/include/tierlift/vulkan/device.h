@@ -23,6 +23,7 @@
 // Nothing throws: every failure is returned as a message.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -44,6 +45,11 @@ struct DeviceOptions {
   // With `validation`: also enable the layer's synchronization validation (hazards between
   // commands: missing or wrong barriers). Slower; tests of barrier-heavy paths use it.
   bool synchronization_validation = false;
+  // Called once when the device is destroyed, after vkDestroyDevice and vkDestroyInstance,
+  // with every message not cleared before. With `validation` these include the layer's
+  // report of Vulkan objects created and never destroyed (it checks at both calls); tests
+  // fail on any.
+  std::function<void(const std::vector<std::string>&)> on_destroyed;
 };
 
 struct DrawOptions {
@@ -61,11 +67,18 @@ struct DrawResult {
   double draw_ms = 0;  // submit to fence (float copies of sampled textures, the draw, readback)
 };
 
+// Why Device::create failed. Only NoDevice (the loader found no driver, or the driver
+// enumerates no physical device) describes a machine without Vulkan, which a caller may
+// treat as "cannot run here"; every other failure is a fault to report.
+enum class CreateFailure { None, NoDevice, Other };
+
 class Device {
 public:
-  // nullptr and *error on failure (no Vulkan loader/driver, no device matching the filter,
-  // validation layer missing); the message names the Debian package to install.
-  static std::unique_ptr<Device> create(const DeviceOptions& options, std::string* error);
+  // nullptr and *error on failure (no Vulkan driver, no device matching the filter,
+  // validation layer missing, any Vulkan call failing); the message names the Debian package
+  // to install where one is missing. *failure (when given) says which kind of failure.
+  static std::unique_ptr<Device> create(const DeviceOptions& options, std::string* error,
+                                        CreateFailure* failure = nullptr);
   ~Device();
   Device(const Device&) = delete;
   Device& operator=(const Device&) = delete;

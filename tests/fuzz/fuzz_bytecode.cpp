@@ -1,0 +1,50 @@
+// Feeds arbitrary bytes to the bytecode reader: the file forms (raw DWORDs or a C array,
+// read_token_file) and the same bytes taken directly as little-endian DWORDs. Any crash,
+// hang or sanitizer report is a finding, and so is a broken invariant: a stream the reader
+// accepts must come back unchanged in meaning after assemble → disassemble.
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "tierlift/asm/bytecode.h"
+#include "tierlift/asm/printer.h"
+#include "tierlift/asm/validator.h"
+
+using namespace tierlift;
+
+namespace {
+
+void check_stream(const std::vector<uint32_t>& tokens) {
+  ir::DiagnosticSink diags;
+  auto program = as::disassemble(tokens, diags);
+  if (!program) {
+    if (!diags.has_errors()) std::abort(); // a rejection always says why
+    return;
+  }
+  (void)as::validate(*program, diags);
+  (void)as::print_program(*program);
+  // What the reader built, the writer must carry back to the same program.
+  ir::DiagnosticSink d2;
+  auto again = as::assemble(*program, d2);
+  if (!again) return; // the writer says which statement it cannot carry
+  ir::DiagnosticSink d3;
+  auto back = as::disassemble(*again, d3);
+  if (!back || !ir::same_ir(*program, *back)) std::abort();
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  const std::string bytes(reinterpret_cast<const char*>(data), size);
+  ir::DiagnosticSink diags;
+  if (auto tokens = as::read_token_file(bytes, diags))
+    check_stream(*tokens);
+  else if (!diags.has_errors())
+    std::abort();
+  std::vector<uint32_t> raw(size / 4);
+  if (!raw.empty()) std::memcpy(raw.data(), data, raw.size() * 4);
+  check_stream(raw);
+  return 0;
+}
