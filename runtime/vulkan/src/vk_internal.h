@@ -78,6 +78,11 @@ std::string create_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint
 
 // Records commands into a fresh primary command buffer, submits it and waits for it.
 std::string submit_and_wait(Device::Impl& d, const std::function<void(VkCommandBuffer)>& record);
+// The same in two halves, for a command buffer recorded over several calls (TextureSet's
+// batch: one submit for a whole frame). submit_commands ends, submits, waits for and frees
+// `cb`, which is VK_NULL_HANDLE afterwards (also on failure).
+std::string begin_commands(Device::Impl& d, VkCommandBuffer& cb);
+std::string submit_commands(Device::Impl& d, VkCommandBuffer& cb);
 
 // Layout transition of a whole colour image (one level, one layer).
 void image_barrier(VkCommandBuffer cb, VkImage image, VkImageLayout from, VkImageLayout to,
