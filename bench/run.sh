@@ -12,9 +12,12 @@ for extra in bench_interpreter bench_vulkan bench_glow; do
 done
 cmake --build "$build" --target "${benches[@]}" >/dev/null
 tmp=$(mktemp -d)
+filter=${TIERLIFT_BENCH_FILTER:-.}
 for b in "${benches[@]}"; do
+  # A program with nothing the filter matches is left out (it would print no JSON).
+  "$build/bench/$b" --benchmark_list_tests --benchmark_filter="$filter" | grep -q . || continue
   "$build/bench/$b" --benchmark_format=json --benchmark_min_time=0.5 \
-    --benchmark_filter="${TIERLIFT_BENCH_FILTER:-.}" >"$tmp/$b.json"
+    --benchmark_filter="$filter" >"$tmp/$b.json"
 done
 python3 - "$tmp" <<'PY'
 import json, os, sys

@@ -20,7 +20,7 @@ namespace {
 
 class VulkanPassDevice final : public PassDevice {
 public:
-  explicit VulkanPassDevice(vulkan::Device& device) : textures_(device) {}
+  explicit VulkanPassDevice(vulkan::Device& device) : device_(device), textures_(device) {}
   std::string name() const override { return "vulkan"; }
 
   std::string begin_run(const EffectGraph& graph, const ImageMap& inputs) override {
@@ -51,6 +51,7 @@ public:
         return fmt::format("pass '{}': {}", desc.name, e);
       }
     }
+    device_.save_pipeline_cache(); // for the next run (a no-op when nothing was added)
     return textures_.set_batching(true);
   }
 
@@ -101,6 +102,7 @@ private:
     placeholders_.clear();
   }
 
+  vulkan::Device& device_;
   vulkan::TextureSet textures_;
   const EffectGraph* graph_ = nullptr;
   std::map<std::string, vulkan::TextureId, std::less<>> ids_;

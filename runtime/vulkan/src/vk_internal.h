@@ -32,6 +32,9 @@ struct Device::Impl {
   VkPhysicalDeviceMemoryProperties memory{};
 
   std::unique_ptr<Unorm8Converter> unorm8; // created on first use
+  // pipeline_cache.h: created on first use, saved when pipelines were added.
+  VkPipelineCache pipeline_cache = VK_NULL_HANDLE;
+  bool pipeline_cache_failed = false, pipeline_cache_dirty = false;
 
   mutable std::mutex messages_mutex;
   std::vector<std::string> messages;
