@@ -28,10 +28,6 @@
 namespace tierlift::cpu::detail {
 namespace {
 
-float clamp01(float v) {
-  return v > 0 ? (v < 1 ? v : 1) : 0;
-} // NaN → 0
-
 // The triangle's shared terms of llvmpipe's setup.
 struct SetupTerms {
   float x0c, y0c;                   // first vertex relative to pixel (0, 0)'s centre
@@ -67,10 +63,6 @@ Plane plane(const SetupTerms& s, float a0, float a1, float a2) {
   p.dady = da20 * s.dx01o - da01 * s.dx20o;
   p.a0 = a0 - (p.dadx * s.x0c + p.dady * s.y0c);
   return p;
-}
-
-float eval(const Plane& p, float x, float y) {
-  return std::fma(p.dady, y, std::fma(p.dadx, x, p.a0));
 }
 
 bool all_positive_zero(const Vec4& a, const Vec4& b, const Vec4& c) {
@@ -152,6 +144,43 @@ PixelInput interpolate(const Triangle& t, const int64_t e[3], int64_t x, int64_t
   for (int k = 0; k < 3; ++k) z += static_cast<double>(e[k]) / area * t.v[k].z;
   in.depth = static_cast<float>(z);
   return in;
+}
+
+void interpolate_block(const Triangle& t, const int64_t (*e)[3], const int64_t* x, int64_t y, int n,
+                       uint8_t color_reads, uint8_t tex_reads, PixelBlockInput& in) {
+  if (!t.llvmpipe) {
+    for (int l = 0; l < n; ++l) {
+      const PixelInput p = interpolate(t, e[l], x[l], y);
+      for (int r = 0; r < 2; ++r)
+        if (color_reads & (1u << r))
+          for (int c = 0; c < 4; ++c) in.color[r].c[c][l] = p.color[r][c];
+      for (int r = 0; r < 8; ++r)
+        if (tex_reads & (1u << r))
+          for (int c = 0; c < 4; ++c) in.tex[r].c[c][l] = p.tex[r][c];
+    }
+    return;
+  }
+  // interpolate_llvmpipe, one channel across the lanes at a time.
+  const AttributePlanes& p = t.planes;
+  const float fy = static_cast<float>(y);
+  float fx[kBlockLanes], oow[kBlockLanes];
+  for (int l = 0; l < n; ++l) {
+    fx[l] = static_cast<float>(x[l]);
+    oow[l] = 1.0f / eval(p.oow, fx[l], fy);
+  }
+  for (size_t r = 0; r < 2; ++r) {
+    if (!(color_reads & (1u << r))) continue;
+    for (int c = 0; c < 4; ++c)
+      for (int l = 0; l < n; ++l)
+        in.color[r].c[c][l] =
+            p.color_zero[r] ? 0.0f : clamp01(eval(p.color[r][c], fx[l], fy) * oow[l]);
+  }
+  for (size_t r = 0; r < 8; ++r) {
+    if (!(tex_reads & (1u << r))) continue;
+    for (int c = 0; c < 4; ++c)
+      for (int l = 0; l < n; ++l)
+        in.tex[r].c[c][l] = p.tex_zero[r] ? 0.0f : eval(p.tex[r][c], fx[l], fy) * oow[l];
+  }
 }
 
 } // namespace tierlift::cpu::detail

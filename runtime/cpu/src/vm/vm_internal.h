@@ -9,6 +9,7 @@
 
 #include "tierlift/cpu/shader_vm.h"
 #include "tierlift/ir/conventions.h"
+#include "tierlift/ir/numerics.h"
 #include "tierlift/ir/program.h"
 
 namespace tierlift::cpu::vm {
@@ -140,6 +141,9 @@ void run(const Prepared& p, Invocation& inv);
 // (the VM runs per pixel) and fall back to the general functions otherwise.
 Vec4 fetch_general(const SrcDesc& s, const Invocation& inv);
 void store_general(const DstDesc& d, const Vec4& value, Invocation& inv);
+// What fetch_general does after the load (ps_1_x constant clamp, _dz/_dw, swizzle,
+// post-modifiers): one definition for the per-pixel and the block executor.
+Vec4 modify_src(const SrcDesc& s, Vec4 v);
 SrcDesc decode_src(const ir::SrcOperand& op, const Prepared& p);
 DstDesc decode_dst(const ir::DstOperand& op, const ir::InstrMods& mods, const Prepared& p);
 int flat_slot(ir::RegFile file, uint32_t index, ir::ShaderStage stage); // -1: not a slot
@@ -155,6 +159,16 @@ ExecFn texture_exec(ir::Opcode op);
 
 // vm_flow.cpp
 ExecFn flow_exec(ir::Opcode op);
+
+// The store's per-component rule (shift, ps_1_x range clamp, _sat, fixed-point quantise), in
+// that order; shared by store_general and the block executor.
+inline float dst_transform(const DstDesc& d, float x) {
+  if (d.scale != 1.0f) x *= d.scale;
+  if (d.range) x = ir::numerics::legacy_ps1x_range(x, d.max_value);
+  if (d.sat) x = ir::numerics::legacy_saturate(x);
+  if (d.fixed_bits > 0) x = ir::numerics::legacy_fixed_quantise(x, d.fixed_bits, d.max_value);
+  return x;
+}
 
 inline Vec4 fetch(const SrcDesc& s, const Invocation& inv) {
   return s.simple ? inv.reg[s.slot] : fetch_general(s, inv);

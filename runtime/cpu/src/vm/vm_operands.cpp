@@ -143,7 +143,10 @@ float post_modifier(float x, SrcMod m) {
 } // namespace
 
 Vec4 fetch_general(const SrcDesc& s, const Invocation& inv) {
-  Vec4 v = load(s, inv);
+  return modify_src(s, load(s, inv));
+}
+
+Vec4 modify_src(const SrcDesc& s, Vec4 v) {
   if (s.clamp_const)
     for (float& x : v) x = num::legacy_ps1x_const(x);
   if (s.mod == SrcMod::Dz) divide_xy(v, 2);
@@ -170,12 +173,7 @@ void store_general(const DstDesc& d, const Vec4& value, Invocation& inv) {
   Vec4& r = inv.reg[d.slot];
   for (int i = 0; i < 4; ++i) {
     if (!(d.mask & (1 << i))) continue;
-    float x = value[i];
-    if (d.scale != 1.0f) x *= d.scale;
-    if (d.range) x = num::legacy_ps1x_range(x, d.max_value);
-    if (d.sat) x = num::legacy_saturate(x);
-    if (d.fixed_bits > 0) x = num::legacy_fixed_quantise(x, d.fixed_bits, d.max_value);
-    r[i] = x;
+    r[i] = dst_transform(d, value[i]);
   }
   inv.out_written |= d.out_bit;
 }

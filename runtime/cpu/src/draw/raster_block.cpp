@@ -1,0 +1,80 @@
+// The pixel loop for the block executor: the same coverage test, the same pixel order and the
+// same store as raster_rows in draw.cpp, but covered pixels are gathered kBlockLanes at a time
+// along a row, their inputs interpolated per block, the program run once per block and the
+// results blended and stored pixel by pixel.
+#include <algorithm>
+
+#include "raster.h"
+
+namespace tierlift::cpu::detail {
+namespace {
+
+void fill_constant_inputs(const PixelInput& constant, PixelBlockInput& in) {
+  for (int r = 0; r < 2; ++r)
+    for (int c = 0; c < 4; ++c)
+      std::fill(std::begin(in.color[r].c[c]), std::end(in.color[r].c[c]),
+                clamp01(constant.color[r][c]));
+  for (int r = 0; r < 8; ++r)
+    for (int c = 0; c < 4; ++c)
+      std::fill(std::begin(in.tex[r].c[c]), std::end(in.tex[r].c[c]), constant.tex[r][c]);
+}
+
+void shade_block(const RasterJob& job, const Triangle& t, int64_t y, int n, BlockWorker& w,
+                 WorkerStats& stats) {
+  const PixelBlockVM& vm = *job.block;
+  w.in.count = n;
+  if (!job.constant_inputs)
+    interpolate_block(t, w.e, w.x, y, n, vm.color_reads(), vm.tex_reads(), w.in);
+  vm.run(w.in, job.textures, w.out, *w.scratch);
+  const Pass& pass = job.pass;
+  stats.block += static_cast<uint64_t>(n);
+  for (int l = 0; l < n; ++l) {
+    ++stats.shaded;
+    if (w.out.discarded[static_cast<size_t>(l)]) {
+      ++stats.killed;
+      continue;
+    }
+    float* px = job.target.at(static_cast<uint32_t>(w.x[l]), static_cast<uint32_t>(y));
+    const Vec4 color{w.out.color.c[0][l], w.out.color.c[1][l], w.out.color.c[2][l],
+                     w.out.color.c[3][l]};
+    const Vec4 stored = blend_and_store(pass.blend, job.target.format, color,
+                                        {px[0], px[1], px[2], px[3]}, pass.conventions.rounding);
+    std::copy(stored.begin(), stored.end(), px);
+  }
+}
+
+} // namespace
+
+BlockWorker::BlockWorker(const PixelBlockVM& vm, const RasterJob& job)
+    : scratch(vm.make_scratch()) {
+  if (job.constant_inputs) fill_constant_inputs(job.pass.constant_inputs, in);
+}
+
+void raster_rows_block(const RasterJob& job, int64_t y0, int64_t y1, BlockWorker& w,
+                       WorkerStats& stats) {
+  for (const Triangle& t : job.triangles) {
+    const int64_t ya = std::max(y0, t.bounds.y0), yb = std::min(y1, t.bounds.y1);
+    for (int64_t y = ya; y < yb; ++y) {
+      const int64_t py = y * kSubPixelOne + job.sample_offset;
+      int n = 0;
+      for (int64_t x = t.bounds.x0; x < t.bounds.x1; ++x) {
+        const int64_t px = x * kSubPixelOne + job.sample_offset;
+        int64_t* e = w.e[n];
+        bool inside = true;
+        for (int k = 0; k < 3 && inside; ++k) {
+          e[k] = edge(t.v[(k + 1) % 3], t.v[(k + 2) % 3], px, py);
+          inside = e[k] > 0 || (e[k] == 0 && t.top_left[k]);
+        }
+        if (!inside) continue;
+        w.x[n] = x;
+        if (++n == kBlockLanes) {
+          shade_block(job, t, y, n, w, stats);
+          n = 0;
+        }
+      }
+      if (n) shade_block(job, t, y, n, w, stats);
+    }
+  }
+}
+
+} // namespace tierlift::cpu::detail
