@@ -21,6 +21,7 @@
 //   where w_ij is the 1/w plane evaluated the same way.
 // The planes are invariant under swapping vertices 1 and 2 (each product changes sign twice),
 // so only the first vertex has to be lavapipe's first vertex.
+#include <algorithm>
 #include <cmath>
 
 #include "raster.h"
@@ -146,6 +147,75 @@ PixelInput interpolate(const Triangle& t, const int64_t e[3], int64_t x, int64_t
   return in;
 }
 
+namespace {
+
+// interpolate_llvmpipe, one channel across all the lanes at a time (lanes past the block's
+// count compute values nobody reads). Inlined into two functions: one built for AVX2 + FMA,
+// where std::fma becomes one vector instruction, and the baseline one, where it is a call
+// into libm; both round exactly once per fma, so they agree bit for bit.
+[[gnu::always_inline]] inline void llvmpipe_lanes_body(const Triangle& t, const int64_t* x,
+                                                       int64_t y, uint8_t color_reads,
+                                                       uint8_t tex_reads, PixelBlockInput& in) {
+  const AttributePlanes& p = t.planes;
+  const float fy = static_cast<float>(y);
+  float fx[kBlockLanes], oow[kBlockLanes];
+  for (int l = 0; l < kBlockLanes; ++l) {
+    fx[l] = static_cast<float>(x[l]);
+    oow[l] = 1.0f / eval(p.oow, fx[l], fy);
+  }
+  for (size_t r = 0; r < 2; ++r) {
+    if (!(color_reads & (1u << r))) continue;
+    for (int c = 0; c < 4; ++c) {
+      float* out = in.color[r].c[c];
+      if (p.color_zero[r]) {
+        std::fill(out, out + kBlockLanes, 0.0f);
+        continue;
+      }
+      const Plane& pl = p.color[r][c];
+      for (int l = 0; l < kBlockLanes; ++l) out[l] = clamp01(eval(pl, fx[l], fy) * oow[l]);
+    }
+  }
+  for (size_t r = 0; r < 8; ++r) {
+    if (!(tex_reads & (1u << r))) continue;
+    for (int c = 0; c < 4; ++c) {
+      float* out = in.tex[r].c[c];
+      if (p.tex_zero[r]) {
+        std::fill(out, out + kBlockLanes, 0.0f);
+        continue;
+      }
+      const Plane& pl = p.tex[r][c];
+      for (int l = 0; l < kBlockLanes; ++l) out[l] = eval(pl, fx[l], fy) * oow[l];
+    }
+  }
+}
+
+void llvmpipe_lanes(const Triangle& t, const int64_t* x, int64_t y, uint8_t color_reads,
+                    uint8_t tex_reads, PixelBlockInput& in) {
+  llvmpipe_lanes_body(t, x, y, color_reads, tex_reads, in);
+}
+
+#if defined(__x86_64__) && defined(__GNUC__)
+[[gnu::target("avx2,fma")]] void llvmpipe_lanes_fma(const Triangle& t, const int64_t* x, int64_t y,
+                                                    uint8_t color_reads, uint8_t tex_reads,
+                                                    PixelBlockInput& in) {
+  llvmpipe_lanes_body(t, x, y, color_reads, tex_reads, in);
+}
+bool fma_hardware() {
+  static const bool yes = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  return yes;
+}
+#else
+void llvmpipe_lanes_fma(const Triangle& t, const int64_t* x, int64_t y, uint8_t color_reads,
+                        uint8_t tex_reads, PixelBlockInput& in) {
+  llvmpipe_lanes_body(t, x, y, color_reads, tex_reads, in);
+}
+bool fma_hardware() {
+  return false;
+}
+#endif
+
+} // namespace
+
 void interpolate_block(const Triangle& t, const int64_t (*e)[3], const int64_t* x, int64_t y, int n,
                        uint8_t color_reads, uint8_t tex_reads, PixelBlockInput& in) {
   if (!t.llvmpipe) {
@@ -160,27 +230,10 @@ void interpolate_block(const Triangle& t, const int64_t (*e)[3], const int64_t* 
     }
     return;
   }
-  // interpolate_llvmpipe, one channel across the lanes at a time.
-  const AttributePlanes& p = t.planes;
-  const float fy = static_cast<float>(y);
-  float fx[kBlockLanes], oow[kBlockLanes];
-  for (int l = 0; l < n; ++l) {
-    fx[l] = static_cast<float>(x[l]);
-    oow[l] = 1.0f / eval(p.oow, fx[l], fy);
-  }
-  for (size_t r = 0; r < 2; ++r) {
-    if (!(color_reads & (1u << r))) continue;
-    for (int c = 0; c < 4; ++c)
-      for (int l = 0; l < n; ++l)
-        in.color[r].c[c][l] =
-            p.color_zero[r] ? 0.0f : clamp01(eval(p.color[r][c], fx[l], fy) * oow[l]);
-  }
-  for (size_t r = 0; r < 8; ++r) {
-    if (!(tex_reads & (1u << r))) continue;
-    for (int c = 0; c < 4; ++c)
-      for (int l = 0; l < n; ++l)
-        in.tex[r].c[c][l] = p.tex_zero[r] ? 0.0f : eval(p.tex[r][c], fx[l], fy) * oow[l];
-  }
+  if (fma_hardware())
+    llvmpipe_lanes_fma(t, x, y, color_reads, tex_reads, in);
+  else
+    llvmpipe_lanes(t, x, y, color_reads, tex_reads, in);
 }
 
 } // namespace tierlift::cpu::detail

@@ -103,8 +103,8 @@ struct BlockWorker {
   std::unique_ptr<PixelBlockVM::Scratch, void (*)(PixelBlockVM::Scratch*)> scratch;
   PixelBlockInput in;
   PixelBlockOutput out;
-  int64_t x[kBlockLanes];
-  int64_t e[kBlockLanes][3];
+  int64_t x[kBlockLanes]{};
+  int64_t e[kBlockLanes][3]{};
 };
 
 // Rows [y0, y1) of every triangle, in primitive order, kBlockLanes covered pixels of a row at a

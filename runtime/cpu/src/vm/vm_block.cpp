@@ -84,7 +84,9 @@ struct PixelBlockVM::Impl {
   vm::Prepared p;
   std::vector<BlockStep> steps;
   std::vector<LaneVec4> folded;
-  std::vector<uint16_t> zero_slots; // registers read, written or returned: zeroed per block
+  // Register components that may be read (or returned) before the program writes them: the
+  // per-pixel VM starts every register at zero, so these are zeroed per block.
+  std::vector<std::pair<uint16_t, uint8_t>> zero_components;
   uint8_t color_reads = 0, tex_reads = 0;
   uint16_t out_slot = 0;
 };
@@ -288,6 +290,66 @@ void kill_lanes(const View& v, int comps, int n, PixelBlockOutput& out) {
 
 } // namespace
 
+namespace {
+
+// Which register components a run may read before it writes them: the inputs run() fills
+// count as written; every other component a source may touch (all four of its swizzle, all
+// four under _dz/_dw and the other per-lane modifiers) and every component of the returned
+// register left unwritten must start at zero, as in the per-pixel VM.
+void find_zero_components(Impl& im) {
+  std::array<uint8_t, vm::kSlotCount> written{}, need{};
+  for (int i = 0; i < 2; ++i)
+    if (im.color_reads & (1u << i)) written[vm::kInputBase + i] = 0xF;
+  if (!im.p.ps11_13)
+    for (int i = 0; i < vm::kTexCount; ++i)
+      if (im.tex_reads & (1u << i)) written[vm::kTexBase + i] = 0xF;
+  auto reads = [&](const BlockStep& b) {
+    for (int k = 0; k < b.step->nsrc; ++k) {
+      const BlockSrc& s = b.src[static_cast<size_t>(k)];
+      if (s.way == SrcWay::Folded) continue;
+      if (b.step->src[static_cast<size_t>(k)].kind != vm::SrcKind::Slot) continue;
+      uint8_t comps = 0;
+      for (int c = 0; c < 4; ++c) comps |= static_cast<uint8_t>(1u << s.comp[c]);
+      if (s.way == SrcWay::General) comps = 0xF;
+      need[s.slot] |= static_cast<uint8_t>(comps & ~written[s.slot]);
+    }
+  };
+  auto writes = [&](const BlockStep& b) {
+    if (b.step->dst.kind == vm::DstKind::Slot) written[b.step->dst.slot] |= b.step->dst.mask;
+  };
+  for (size_t i = 0; i < im.steps.size(); ++i) {
+    const BlockStep& b = im.steps[i];
+    switch (b.op) {
+    case BlockOp::Skip: break;
+    case BlockOp::ArithPair: // both halves read before either writes
+      reads(b);
+      reads(im.steps[i + 1]);
+      writes(b);
+      writes(im.steps[i + 1]);
+      break;
+    case BlockOp::Phase:
+      for (int r = 0; r < 6; ++r) written[vm::kTempBase + r] |= 0x8;
+      break;
+    case BlockOp::Tex:
+    case BlockOp::TexCoord: writes(b); break;
+    case BlockOp::TexKill:
+      if (!im.p.ps11_13) reads(b);
+      break;
+    default:
+      reads(b);
+      writes(b);
+      break;
+    }
+  }
+  need[im.out_slot] |= static_cast<uint8_t>(~written[im.out_slot] & 0xF);
+  for (int s = 0; s < vm::kSlotCount; ++s)
+    for (int c = 0; c < 4; ++c)
+      if (need[s] & (1u << c))
+        im.zero_components.emplace_back(static_cast<uint16_t>(s), static_cast<uint8_t>(c));
+}
+
+} // namespace
+
 std::unique_ptr<PixelBlockVM> PixelBlockVM::create(const ir::Program& program,
                                                    const ir::Conventions& conventions,
                                                    const ConstantBank& constants) {
@@ -301,7 +363,7 @@ std::unique_ptr<PixelBlockVM> PixelBlockVM::create(const ir::Program& program,
   const vm::Prepared& p = im->p;
   const size_t n = p.steps.size();
   im->steps.resize(n);
-  std::vector<bool> read(vm::kSlotCount, false), written(vm::kSlotCount, false);
+  std::vector<bool> read(vm::kSlotCount, false);
   for (size_t i = 0; i < n; ++i) {
     const vm::Step& st = p.steps[i];
     BlockStep& b = im->steps[i];
@@ -313,7 +375,6 @@ std::unique_ptr<PixelBlockVM> PixelBlockVM::create(const ir::Program& program,
     if (b.op == BlockOp::Arith && st.exec == vm::exec_arith_pair) b.op = BlockOp::ArithPair;
     if (st.dst.kind == vm::DstKind::AddrFloor || st.dst.kind == vm::DstKind::AddrRound)
       return nullptr;
-    if (st.dst.kind == vm::DstKind::Slot) written[st.dst.slot] = true;
     // Operands the executor reads (texkill reads its register as src[0]).
     const bool reads_srcs = b.op != BlockOp::Tex && b.op != BlockOp::TexCoord &&
                             !(b.op == BlockOp::TexKill && p.ps11_13) && b.op != BlockOp::Phase;
@@ -332,15 +393,13 @@ std::unique_ptr<PixelBlockVM> PixelBlockVM::create(const ir::Program& program,
   for (size_t i = 0; i + 1 < n; ++i)
     if (im->steps[i].op == BlockOp::ArithPair) im->steps[i + 1].op = BlockOp::Skip;
 
-  im->out_slot = static_cast<uint16_t>(p.ps1x ? vm::kTempBase : vm::kOutBase + vm::kOutC0);
-  for (int s = 0; s < vm::kSlotCount; ++s)
-    if (read[s] || written[s] || s == im->out_slot)
-      im->zero_slots.push_back(static_cast<uint16_t>(s));
   for (int i = 0; i < 2; ++i)
     if (read[vm::kInputBase + i]) im->color_reads |= static_cast<uint8_t>(1u << i);
   if (!p.ps11_13)
     for (int i = 0; i < vm::kTexCount; ++i)
       if (read[vm::kTexBase + i]) im->tex_reads |= static_cast<uint8_t>(1u << i);
+  im->out_slot = static_cast<uint16_t>(p.ps1x ? vm::kTempBase : vm::kOutBase + vm::kOutC0);
+  find_zero_components(*im);
   return std::unique_ptr<PixelBlockVM>(new PixelBlockVM(std::move(im)));
 }
 
@@ -366,7 +425,8 @@ void PixelBlockVM::run(const PixelBlockInput& in, const TextureUnit& textures,
   const Impl& im = *impl_;
   const vm::Prepared& p = im.p;
   const int n = std::clamp(in.count, 0, L);
-  for (uint16_t s : im.zero_slots) sc.reg[s] = LaneVec4{};
+  for (const auto& [slot, c] : im.zero_components)
+    std::fill(std::begin(sc.reg[slot].c[c]), std::end(sc.reg[slot].c[c]), 0.0f);
   // The inputs as run_pixel sets them: colours saturated; t# are the coordinates except in
   // ps_1_1–1_3, where texture instructions fill them.
   for (int i = 0; i < 2; ++i)
