@@ -60,7 +60,7 @@ std::string frame(effects::PassDevice& dev, const effects::GlowPlan& plan,
 }
 
 void run_cpu(benchmark::State& state, uint32_t w, uint32_t h, int taps, effects::Tier tier,
-             img::Format format, cpu::Executor executor) {
+             img::Format format, cpu::Executor executor, unsigned threads = 0) {
   const effects::GlowPlan plan = make_plan(w, h, taps, tier, format);
   if (!plan) {
     state.SkipWithError(plan.error.c_str());
@@ -70,7 +70,7 @@ void run_cpu(benchmark::State& state, uint32_t w, uint32_t h, int taps, effects:
   input.format = format;
   img::quantize_in_place(input);
   const effects::ImageMap inputs{{std::string(effects::kSceneTexture), input}};
-  effects::CpuPassDevice dev(0, executor);
+  effects::CpuPassDevice dev(threads, executor);
   img::Image out;
   for (auto _ : state) {
     if (std::string e = frame(dev, plan, inputs, out); !e.empty()) {
@@ -132,6 +132,34 @@ BENCHMARK(BM_CpuGlow_Scalar)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->Iterations(2);
+
+// ---- one thread each (OpenCV too), 1080p, 13 taps: CPU time is the figure to read on a
+// machine shared with other work (the wall-clock rows above suffer from it).
+
+void BM_CpuGlow_OneThread_OpenCV(benchmark::State& state) {
+  const int before = cv::getNumThreads();
+  cv::setNumThreads(1);
+  const effects::GlowPlan plan =
+      make_plan(1920, 1080, 13, effects::Tier::Dx9, img::Format::RGBA32F);
+  bench::OpenCvGlow g(plan.taps, kDownsample);
+  const cv::Mat in = bench::wrap(scene(1920, 1080));
+  for (auto _ : state) {
+    const cv::Mat& f = g.run(in);
+    benchmark::DoNotOptimize(f.data);
+    benchmark::ClobberMemory();
+  }
+  cv::setNumThreads(before);
+}
+void BM_CpuGlow_OneThread_Block(benchmark::State& state) {
+  run_cpu(state, 1920, 1080, 13, effects::Tier::Dx9, img::Format::RGBA32F, cpu::Executor::Auto, 1);
+}
+void BM_CpuGlow_OneThread_Scalar(benchmark::State& state) {
+  run_cpu(state, 1920, 1080, 13, effects::Tier::Dx9, img::Format::RGBA32F, cpu::Executor::Scalar,
+          1);
+}
+BENCHMARK(BM_CpuGlow_OneThread_OpenCV)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CpuGlow_OneThread_Block)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CpuGlow_OneThread_Scalar)->Unit(benchmark::kMillisecond)->Iterations(2);
 
 // ---- the tiers and formats of bench_glow.cpp at 1080p, block and per-pixel ----------------
 

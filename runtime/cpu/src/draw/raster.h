@@ -112,6 +112,12 @@ struct BlockWorker {
 void raster_rows_block(const RasterJob& job, int64_t y0, int64_t y1, BlockWorker& w,
                        WorkerStats& stats);
 
+// blend_and_store for lanes 0..n−1 of a block on one row (`row`: the target's row, pixel x[l]
+// at row + 4·x[l]), discarded lanes left alone; RGBA32F targets take an inlined loop.
+void store_block(BlendMode mode, img::Format format, ir::Rounding rounding, const LaneVec4& src,
+                 const std::array<bool, kBlockLanes>& discarded, const int64_t* x, int n,
+                 float* row);
+
 // The inputs `reads` names (bits 0–1 colours, 8–15 texture coordinates) of n pixels (x[l], y)
 // into lanes 0..n−1, bit-identical to interpolate().
 void interpolate_block(const Triangle& t, const int64_t (*e)[3], const int64_t* x, int64_t y, int n,

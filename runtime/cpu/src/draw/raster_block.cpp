@@ -26,21 +26,11 @@ void shade_block(const RasterJob& job, const Triangle& t, int64_t y, int n, Bloc
   if (!job.constant_inputs)
     interpolate_block(t, w.e, w.x, y, n, vm.color_reads(), vm.tex_reads(), w.in);
   vm.run(w.in, job.textures, w.out, *w.scratch);
-  const Pass& pass = job.pass;
   stats.block += static_cast<uint64_t>(n);
-  for (int l = 0; l < n; ++l) {
-    ++stats.shaded;
-    if (w.out.discarded[static_cast<size_t>(l)]) {
-      ++stats.killed;
-      continue;
-    }
-    float* px = job.target.at(static_cast<uint32_t>(w.x[l]), static_cast<uint32_t>(y));
-    const Vec4 color{w.out.color.c[0][l], w.out.color.c[1][l], w.out.color.c[2][l],
-                     w.out.color.c[3][l]};
-    const Vec4 stored = blend_and_store(pass.blend, job.target.format, color,
-                                        {px[0], px[1], px[2], px[3]}, pass.conventions.rounding);
-    std::copy(stored.begin(), stored.end(), px);
-  }
+  stats.shaded += static_cast<uint64_t>(n);
+  for (int l = 0; l < n; ++l) stats.killed += w.out.discarded[static_cast<size_t>(l)] ? 1 : 0;
+  store_block(job.pass.blend, job.target.format, job.pass.conventions.rounding, w.out.color,
+              w.out.discarded, w.x, n, job.target.at(0, static_cast<uint32_t>(y)));
 }
 
 } // namespace
@@ -56,14 +46,23 @@ void raster_rows_block(const RasterJob& job, int64_t y0, int64_t y1, BlockWorker
     const int64_t ya = std::max(y0, t.bounds.y0), yb = std::min(y1, t.bounds.y1);
     for (int64_t y = ya; y < yb; ++y) {
       const int64_t py = y * kSubPixelOne + job.sample_offset;
+      // The edge functions at the row's first pixel, then stepped by their exact integer
+      // x-increments: the same integers edge() gives at every pixel, without the products.
+      int64_t e0[3], step[3];
+      const int64_t px0 = t.bounds.x0 * kSubPixelOne + job.sample_offset;
+      for (int k = 0; k < 3; ++k) {
+        const ScreenVertex &a = t.v[(k + 1) % 3], &b = t.v[(k + 2) % 3];
+        e0[k] = edge(a, b, px0, py);
+        step[k] = -(b.y - a.y) * kSubPixelOne;
+      }
       int n = 0;
       for (int64_t x = t.bounds.x0; x < t.bounds.x1; ++x) {
-        const int64_t px = x * kSubPixelOne + job.sample_offset;
         int64_t* e = w.e[n];
         bool inside = true;
-        for (int k = 0; k < 3 && inside; ++k) {
-          e[k] = edge(t.v[(k + 1) % 3], t.v[(k + 2) % 3], px, py);
-          inside = e[k] > 0 || (e[k] == 0 && t.top_left[k]);
+        for (int k = 0; k < 3; ++k) {
+          e[k] = e0[k];
+          e0[k] += step[k];
+          inside = inside && (e[k] > 0 || (e[k] == 0 && t.top_left[k]));
         }
         if (!inside) continue;
         w.x[n] = x;

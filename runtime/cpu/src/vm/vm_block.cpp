@@ -171,18 +171,32 @@ View fetch(const Impl& im, const BlockStep& b, int k, int half, Scratch& sc) {
   return v;
 }
 
-// d[c][l] = f(a[c][l], …) for every component and lane: one rule function per lane.
+// d[c][l] = f(a[c][l], …) for every component and lane: one rule function per lane. The
+// result never shares memory with a source (it goes to Scratch::dst), which __restrict tells
+// the vectoriser.
 template <typename F> void lanes1(LaneVec4& d, const View& a, F f) {
-  for (int c = 0; c < 4; ++c)
-    for (int l = 0; l < L; ++l) d.c[c][l] = f(a.c[c][l]);
+  for (int c = 0; c < 4; ++c) {
+    float* __restrict o = d.c[c];
+    const float* __restrict x = a.c[c];
+    for (int l = 0; l < L; ++l) o[l] = f(x[l]);
+  }
 }
 template <typename F> void lanes2(LaneVec4& d, const View& a, const View& b, F f) {
-  for (int c = 0; c < 4; ++c)
-    for (int l = 0; l < L; ++l) d.c[c][l] = f(a.c[c][l], b.c[c][l]);
+  for (int c = 0; c < 4; ++c) {
+    float* __restrict o = d.c[c];
+    const float* __restrict x = a.c[c];
+    const float* __restrict y = b.c[c];
+    for (int l = 0; l < L; ++l) o[l] = f(x[l], y[l]);
+  }
 }
 template <typename F> void lanes3(LaneVec4& d, const View& a, const View& b, const View& e, F f) {
-  for (int c = 0; c < 4; ++c)
-    for (int l = 0; l < L; ++l) d.c[c][l] = f(a.c[c][l], b.c[c][l], e.c[c][l]);
+  for (int c = 0; c < 4; ++c) {
+    float* __restrict o = d.c[c];
+    const float* __restrict x = a.c[c];
+    const float* __restrict y = b.c[c];
+    const float* __restrict z = e.c[c];
+    for (int l = 0; l < L; ++l) o[l] = f(x[l], y[l], z[l]);
+  }
 }
 // A dot product per lane, splatted to all four components (as the VM's splat).
 template <typename F> void lanes_dot(LaneVec4& d, const View& a, const View& b, F dot) {
@@ -215,15 +229,33 @@ void compute(const Impl& im, const BlockStep& b, int half, int n, Scratch& sc, L
   case Opcode::Mov: lanes1(d, s[0], [](float a) { return a; }); return;
   case Opcode::Add: lanes2(d, s[0], s[1], [](float a, float e) { return a + e; }); return;
   case Opcode::Sub: lanes2(d, s[0], s[1], [](float a, float e) { return a - e; }); return;
-  case Opcode::Mul: lanes2(d, s[0], s[1], num::legacy_mul); return;
-  case Opcode::Mad: lanes3(d, s[0], s[1], s[2], num::legacy_mad); return;
-  case Opcode::Min: lanes2(d, s[0], s[1], num::legacy_min); return;
-  case Opcode::Max: lanes2(d, s[0], s[1], num::legacy_max); return;
-  case Opcode::Slt: lanes2(d, s[0], s[1], num::legacy_slt); return;
-  case Opcode::Sge: lanes2(d, s[0], s[1], num::legacy_sge); return;
-  case Opcode::Lrp: lanes3(d, s[0], s[1], s[2], num::legacy_lrp); return;
-  case Opcode::Cmp: lanes3(d, s[0], s[1], s[2], num::legacy_cmp); return;
-  case Opcode::Cnd: lanes3(d, s[0], s[1], s[2], num::legacy_cnd); return;
+  case Opcode::Mul:
+    lanes2(d, s[0], s[1], [](float a, float e) { return num::legacy_mul(a, e); });
+    return;
+  case Opcode::Mad:
+    lanes3(d, s[0], s[1], s[2], [](float a, float e, float f) { return num::legacy_mad(a, e, f); });
+    return;
+  case Opcode::Min:
+    lanes2(d, s[0], s[1], [](float a, float e) { return num::legacy_min(a, e); });
+    return;
+  case Opcode::Max:
+    lanes2(d, s[0], s[1], [](float a, float e) { return num::legacy_max(a, e); });
+    return;
+  case Opcode::Slt:
+    lanes2(d, s[0], s[1], [](float a, float e) { return num::legacy_slt(a, e); });
+    return;
+  case Opcode::Sge:
+    lanes2(d, s[0], s[1], [](float a, float e) { return num::legacy_sge(a, e); });
+    return;
+  case Opcode::Lrp:
+    lanes3(d, s[0], s[1], s[2], [](float a, float e, float f) { return num::legacy_lrp(a, e, f); });
+    return;
+  case Opcode::Cmp:
+    lanes3(d, s[0], s[1], s[2], [](float a, float e, float f) { return num::legacy_cmp(a, e, f); });
+    return;
+  case Opcode::Cnd:
+    lanes3(d, s[0], s[1], s[2], [](float a, float e, float f) { return num::legacy_cnd(a, e, f); });
+    return;
   case Opcode::Abs: lanes1(d, s[0], [](float a) { return std::fabs(a); }); return;
   case Opcode::Dp3:
     lanes_dot(d, s[0], s[1],
