@@ -33,6 +33,14 @@ void shade_block(const RasterJob& job, const Triangle& t, int64_t y, int n, Bloc
               w.out.discarded, w.x, n, job.target.at(0, static_cast<uint32_t>(y)));
 }
 
+// Integer division rounded toward −∞ / +∞ (d > 0).
+int64_t floor_div(int64_t a, int64_t d) {
+  return a >= 0 ? a / d : -((-a + d - 1) / d);
+}
+int64_t ceil_div(int64_t a, int64_t d) {
+  return -floor_div(-a, d);
+}
+
 } // namespace
 
 BlockWorker::BlockWorker(const PixelBlockVM& vm, const RasterJob& job)
@@ -46,26 +54,29 @@ void raster_rows_block(const RasterJob& job, int64_t y0, int64_t y1, BlockWorker
     const int64_t ya = std::max(y0, t.bounds.y0), yb = std::min(y1, t.bounds.y1);
     for (int64_t y = ya; y < yb; ++y) {
       const int64_t py = y * kSubPixelOne + job.sample_offset;
-      // The edge functions at the row's first pixel, then stepped by their exact integer
-      // x-increments: the same integers edge() gives at every pixel, without the products.
-      int64_t e0[3], step[3];
+      // Along the row each edge function is E + S·i at pixel x0 + i (exact integers), and a
+      // pixel is inside when every one is ≥ 1, or ≥ 0 on a top-left edge: solved for i, that
+      // is one span [lo, hi) — the pixels raster_rows tests one by one.
       const int64_t px0 = t.bounds.x0 * kSubPixelOne + job.sample_offset;
+      int64_t e0[3], step[3];
+      int64_t lo = 0, hi = t.bounds.x1 - t.bounds.x0;
       for (int k = 0; k < 3; ++k) {
         const ScreenVertex &a = t.v[(k + 1) % 3], &b = t.v[(k + 2) % 3];
         e0[k] = edge(a, b, px0, py);
         step[k] = -(b.y - a.y) * kSubPixelOne;
+        const int64_t need = t.top_left[k] ? 0 : 1;
+        if (step[k] == 0) {
+          if (e0[k] < need) hi = 0;
+        } else if (step[k] > 0) {
+          lo = std::max(lo, ceil_div(need - e0[k], step[k]));
+        } else {
+          hi = std::min(hi, floor_div(e0[k] - need, -step[k]) + 1);
+        }
       }
       int n = 0;
-      for (int64_t x = t.bounds.x0; x < t.bounds.x1; ++x) {
-        int64_t* e = w.e[n];
-        bool inside = true;
-        for (int k = 0; k < 3; ++k) {
-          e[k] = e0[k];
-          e0[k] += step[k];
-          inside = inside && (e[k] > 0 || (e[k] == 0 && t.top_left[k]));
-        }
-        if (!inside) continue;
-        w.x[n] = x;
+      for (int64_t i = lo; i < hi; ++i) {
+        for (int k = 0; k < 3; ++k) w.e[n][k] = e0[k] + step[k] * i;
+        w.x[n] = t.bounds.x0 + i;
         if (++n == kBlockLanes) {
           shade_block(job, t, y, n, w, stats);
           n = 0;
