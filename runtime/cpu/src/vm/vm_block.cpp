@@ -172,12 +172,15 @@ View fetch(const Impl& im, const BlockStep& b, int k, int half, Scratch& sc) {
 }
 
 // d[c][l] = f(a[c][l], …) for every component and lane: one rule function per lane. The
-// result never shares memory with a source (it goes to Scratch::dst), which __restrict tells
-// the vectoriser.
+// result never shares memory with a source (it goes to Scratch::dst). "unroll 1" keeps GCC
+// from unrolling the lane loop completely before the loop vectoriser sees it: the vectoriser
+// if-converts the rule functions' selects, the straight-line vectoriser after unrolling
+// cannot.
 template <typename F> void lanes1(LaneVec4& d, const View& a, F f) {
   for (int c = 0; c < 4; ++c) {
     float* __restrict o = d.c[c];
     const float* __restrict x = a.c[c];
+#pragma GCC unroll 1
     for (int l = 0; l < L; ++l) o[l] = f(x[l]);
   }
 }
@@ -186,6 +189,7 @@ template <typename F> void lanes2(LaneVec4& d, const View& a, const View& b, F f
     float* __restrict o = d.c[c];
     const float* __restrict x = a.c[c];
     const float* __restrict y = b.c[c];
+#pragma GCC unroll 1
     for (int l = 0; l < L; ++l) o[l] = f(x[l], y[l]);
   }
 }
@@ -195,6 +199,7 @@ template <typename F> void lanes3(LaneVec4& d, const View& a, const View& b, con
     const float* __restrict x = a.c[c];
     const float* __restrict y = b.c[c];
     const float* __restrict z = e.c[c];
+#pragma GCC unroll 1
     for (int l = 0; l < L; ++l) o[l] = f(x[l], y[l], z[l]);
   }
 }
