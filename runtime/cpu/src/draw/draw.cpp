@@ -112,7 +112,8 @@ DrawStats draw(const Pass& pass, img::Image& target, unsigned threads) {
     if (pass.vertex_program) vms.vs.emplace(*pass.vertex_program, pass.conventions);
     if (pass.pixel_program) vms.ps.emplace(*pass.pixel_program, pass.conventions);
     if (pass.pixel_program && pass.executor == Executor::Auto)
-      block = PixelBlockVM::create(*pass.pixel_program, pass.conventions, pass.ps_constants);
+      block = PixelBlockVM::create(*pass.pixel_program, pass.conventions, pass.ps_constants,
+                                   /*coords_2d=*/true); // BoundTextures reads u, v only
   } catch (const std::exception& e) {
     stats.ok = false;
     stats.error = std::string("the shader VM refused the program: ") + e.what();

@@ -155,13 +155,16 @@ namespace {
 // into libm; both round exactly once per fma, so they agree bit for bit.
 [[gnu::always_inline]] inline void llvmpipe_lanes_body(const Triangle& t, const int64_t* x,
                                                        int64_t y, uint8_t color_reads,
-                                                       uint8_t tex_reads, PixelBlockInput& in) {
+                                                       uint32_t tex_components,
+                                                       PixelBlockInput& in) {
   const AttributePlanes& p = t.planes;
   const float fy = static_cast<float>(y);
   float fx[kBlockLanes], oow[kBlockLanes];
+  const Plane w = p.oow;
+#pragma GCC unroll 1
   for (int l = 0; l < kBlockLanes; ++l) {
     fx[l] = static_cast<float>(x[l]);
-    oow[l] = 1.0f / eval(p.oow, fx[l], fy);
+    oow[l] = 1.0f / eval(w, fx[l], fy);
   }
   for (size_t r = 0; r < 2; ++r) {
     if (!(color_reads & (1u << r))) continue;
@@ -171,34 +174,36 @@ namespace {
         std::fill(out, out + kBlockLanes, 0.0f);
         continue;
       }
-      const Plane& pl = p.color[r][c];
+      const Plane pl = p.color[r][c]; // a copy: no store to `out` can change it
+#pragma GCC unroll 1
       for (int l = 0; l < kBlockLanes; ++l) out[l] = clamp01(eval(pl, fx[l], fy) * oow[l]);
     }
   }
   for (size_t r = 0; r < 8; ++r) {
-    if (!(tex_reads & (1u << r))) continue;
     for (int c = 0; c < 4; ++c) {
+      if (!(tex_components & (1u << (4 * r + c)))) continue;
       float* out = in.tex[r].c[c];
       if (p.tex_zero[r]) {
         std::fill(out, out + kBlockLanes, 0.0f);
         continue;
       }
-      const Plane& pl = p.tex[r][c];
+      const Plane pl = p.tex[r][c];
+#pragma GCC unroll 1
       for (int l = 0; l < kBlockLanes; ++l) out[l] = eval(pl, fx[l], fy) * oow[l];
     }
   }
 }
 
 void llvmpipe_lanes(const Triangle& t, const int64_t* x, int64_t y, uint8_t color_reads,
-                    uint8_t tex_reads, PixelBlockInput& in) {
-  llvmpipe_lanes_body(t, x, y, color_reads, tex_reads, in);
+                    uint32_t tex_components, PixelBlockInput& in) {
+  llvmpipe_lanes_body(t, x, y, color_reads, tex_components, in);
 }
 
 #if defined(__x86_64__) && defined(__GNUC__)
 [[gnu::target("avx2,fma")]] void llvmpipe_lanes_fma(const Triangle& t, const int64_t* x, int64_t y,
-                                                    uint8_t color_reads, uint8_t tex_reads,
+                                                    uint8_t color_reads, uint32_t tex_components,
                                                     PixelBlockInput& in) {
-  llvmpipe_lanes_body(t, x, y, color_reads, tex_reads, in);
+  llvmpipe_lanes_body(t, x, y, color_reads, tex_components, in);
 }
 bool fma_hardware() {
   static const bool yes = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
@@ -206,8 +211,8 @@ bool fma_hardware() {
 }
 #else
 void llvmpipe_lanes_fma(const Triangle& t, const int64_t* x, int64_t y, uint8_t color_reads,
-                        uint8_t tex_reads, PixelBlockInput& in) {
-  llvmpipe_lanes_body(t, x, y, color_reads, tex_reads, in);
+                        uint32_t tex_components, PixelBlockInput& in) {
+  llvmpipe_lanes_body(t, x, y, color_reads, tex_components, in);
 }
 bool fma_hardware() {
   return false;
@@ -217,7 +222,7 @@ bool fma_hardware() {
 } // namespace
 
 void interpolate_block(const Triangle& t, const int64_t (*e)[3], const int64_t* x, int64_t y, int n,
-                       uint8_t color_reads, uint8_t tex_reads, PixelBlockInput& in) {
+                       uint8_t color_reads, uint32_t tex_components, PixelBlockInput& in) {
   if (!t.llvmpipe) {
     for (int l = 0; l < n; ++l) {
       const PixelInput p = interpolate(t, e[l], x[l], y);
@@ -225,15 +230,15 @@ void interpolate_block(const Triangle& t, const int64_t (*e)[3], const int64_t* 
         if (color_reads & (1u << r))
           for (int c = 0; c < 4; ++c) in.color[r].c[c][l] = p.color[r][c];
       for (int r = 0; r < 8; ++r)
-        if (tex_reads & (1u << r))
-          for (int c = 0; c < 4; ++c) in.tex[r].c[c][l] = p.tex[r][c];
+        for (int c = 0; c < 4; ++c)
+          if (tex_components & (1u << (4 * r + c))) in.tex[r].c[c][l] = p.tex[r][c];
     }
     return;
   }
   if (fma_hardware())
-    llvmpipe_lanes_fma(t, x, y, color_reads, tex_reads, in);
+    llvmpipe_lanes_fma(t, x, y, color_reads, tex_components, in);
   else
-    llvmpipe_lanes(t, x, y, color_reads, tex_reads, in);
+    llvmpipe_lanes(t, x, y, color_reads, tex_components, in);
 }
 
 } // namespace tierlift::cpu::detail

@@ -121,7 +121,7 @@ void store_block(BlendMode mode, img::Format format, ir::Rounding rounding, cons
 // The inputs `reads` names (bits 0–1 colours, 8–15 texture coordinates) of n pixels (x[l], y)
 // into lanes 0..n−1, bit-identical to interpolate().
 void interpolate_block(const Triangle& t, const int64_t (*e)[3], const int64_t* x, int64_t y, int n,
-                       uint8_t color_reads, uint8_t tex_reads, PixelBlockInput& in);
+                       uint8_t color_reads, uint32_t tex_components, PixelBlockInput& in);
 
 // Edge function of edge a→b at point (px, py), all in 1/256 pixel.
 inline int64_t edge(const ScreenVertex& a, const ScreenVertex& b, int64_t px, int64_t py) {

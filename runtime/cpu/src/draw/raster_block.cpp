@@ -24,7 +24,7 @@ void shade_block(const RasterJob& job, const Triangle& t, int64_t y, int n, Bloc
   const PixelBlockVM& vm = *job.block;
   w.in.count = n;
   if (!job.constant_inputs)
-    interpolate_block(t, w.e, w.x, y, n, vm.color_reads(), vm.tex_reads(), w.in);
+    interpolate_block(t, w.e, w.x, y, n, vm.color_reads(), vm.tex_components(), w.in);
   vm.run(w.in, job.textures, w.out, *w.scratch);
   stats.block += static_cast<uint64_t>(n);
   stats.shaded += static_cast<uint64_t>(n);

@@ -88,6 +88,7 @@ struct PixelBlockVM::Impl {
   // per-pixel VM starts every register at zero, so these are zeroed per block.
   std::vector<std::pair<uint16_t, uint8_t>> zero_components;
   uint8_t color_reads = 0, tex_reads = 0;
+  uint32_t tex_components = 0; // bits 4r..4r+3: the components of TC(r) that matter
   uint16_t out_slot = 0;
 };
 
@@ -389,7 +390,7 @@ void find_zero_components(Impl& im) {
 
 std::unique_ptr<PixelBlockVM> PixelBlockVM::create(const ir::Program& program,
                                                    const ir::Conventions& conventions,
-                                                   const ConstantBank& constants) {
+                                                   const ConstantBank& constants, bool coords_2d) {
   if (program.stage() != ir::ShaderStage::Pixel) return nullptr;
   auto im = std::make_unique<Impl>();
   try {
@@ -420,11 +421,24 @@ std::unique_ptr<PixelBlockVM> PixelBlockVM::create(const ir::Program& program,
         if (!plan_src(st.src[static_cast<size_t>(k)], *im, constants,
                       b.src[static_cast<size_t>(k)]))
           return nullptr;
-        if (st.src[static_cast<size_t>(k)].kind == vm::SrcKind::Slot)
-          read[st.src[static_cast<size_t>(k)].slot] = true;
+        const vm::SrcDesc& sd = st.src[static_cast<size_t>(k)];
+        if (sd.kind != vm::SrcKind::Slot) continue;
+        read[sd.slot] = true;
+        if (sd.slot < vm::kTexBase || sd.slot >= vm::kTexBase + vm::kTexCount) continue;
+        // The components of t# this operand can pass on: its swizzle's, all four under a
+        // per-lane modifier (_dz/_dw read z or w); only u and v when a plain coordinate goes
+        // straight to a texture unit that reads 2D coordinates.
+        const BlockSrc& bs = b.src[static_cast<size_t>(k)];
+        uint32_t comps = 0;
+        for (int c = 0; c < 4; ++c) comps |= 1u << bs.comp[c];
+        if (bs.way == SrcWay::General) comps = 0xF;
+        if (coords_2d && k == 0 && bs.way == SrcWay::Reg &&
+            (b.op == BlockOp::TexLd || b.op == BlockOp::TexLd14))
+          comps = (1u << bs.comp[0]) | (1u << bs.comp[1]);
+        im->tex_components |= comps << (4 * (sd.slot - vm::kTexBase));
       }
     if (!reads_srcs && b.op != BlockOp::Phase && st.aux >= 0 && st.aux < 8)
-      im->tex_reads |= static_cast<uint8_t>(1u << st.aux); // TC(m)
+      im->tex_components |= 0xFu << (4 * st.aux); // TC(m), all of it
   }
   // The second half of a pair runs inside the first.
   for (size_t i = 0; i + 1 < n; ++i)
@@ -432,9 +446,8 @@ std::unique_ptr<PixelBlockVM> PixelBlockVM::create(const ir::Program& program,
 
   for (int i = 0; i < 2; ++i)
     if (read[vm::kInputBase + i]) im->color_reads |= static_cast<uint8_t>(1u << i);
-  if (!p.ps11_13)
-    for (int i = 0; i < vm::kTexCount; ++i)
-      if (read[vm::kTexBase + i]) im->tex_reads |= static_cast<uint8_t>(1u << i);
+  for (int i = 0; i < vm::kTexCount; ++i)
+    if (im->tex_components & (0xFu << (4 * i))) im->tex_reads |= static_cast<uint8_t>(1u << i);
   im->out_slot = static_cast<uint16_t>(p.ps1x ? vm::kTempBase : vm::kOutBase + vm::kOutC0);
   find_zero_components(*im);
   return std::unique_ptr<PixelBlockVM>(new PixelBlockVM(std::move(im)));
@@ -448,6 +461,9 @@ uint8_t PixelBlockVM::color_reads() const {
 }
 uint8_t PixelBlockVM::tex_reads() const {
   return impl_->tex_reads;
+}
+uint32_t PixelBlockVM::tex_components() const {
+  return impl_->tex_components;
 }
 
 std::unique_ptr<PixelBlockVM::Scratch, void (*)(PixelBlockVM::Scratch*)>

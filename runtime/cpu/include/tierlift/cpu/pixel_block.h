@@ -45,10 +45,13 @@ class PixelBlockVM {
 public:
   // nullptr when the program has an instruction the block path does not run (see the top of
   // the file) or the VM refuses it. `constants` is read once here: the block executor folds
-  // every constant operand (clamped, swizzled, modified) into lane arrays.
+  // every constant operand (clamped, swizzled, modified) into lane arrays. `coords_2d`: the
+  // texture unit it will run with reads only u and v of a texld coordinate (BoundTextures),
+  // so tex_components() may leave the other two out.
   static std::unique_ptr<PixelBlockVM> create(const ir::Program& program,
                                               const ir::Conventions& conventions,
-                                              const ConstantBank& constants);
+                                              const ConstantBank& constants,
+                                              bool coords_2d = false);
   ~PixelBlockVM();
   PixelBlockVM(const PixelBlockVM&) = delete;
   PixelBlockVM& operator=(const PixelBlockVM&) = delete;
@@ -56,6 +59,9 @@ public:
   // Bit n: v(n) / TC(n) is read by the program (the other inputs may be left unset).
   uint8_t color_reads() const;
   uint8_t tex_reads() const;
+  // Bits 4r..4r+3: the components of TC(r) that can reach the output (the others may be left
+  // unset in PixelBlockInput).
+  uint32_t tex_components() const;
 
   // Per-thread working memory (the register file of one block).
   struct Scratch;
