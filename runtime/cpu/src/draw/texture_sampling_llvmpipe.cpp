@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "tierlift/cpu/texture.h"
+#include "tierlift/ir/numerics.h"
 
 namespace tierlift::cpu {
 namespace {
@@ -47,9 +48,13 @@ Vec4 fetch(const img::Image& image, const SamplerState& s, const std::optional<i
   return {p[0], p[1], p[2], p[3]};
 }
 
-// llvmpipe's lerp: v0 + α·(v1 − v0) as one fused multiply-add.
+// llvmpipe's lerp: v0 + α·(v1 − v0) as one fused multiply-add, with the x86 DAZ and FTZ bits
+// set: denormal texels and results are zeros of their sign (NUMERICS.md rule 13).
 float lerp(float alpha, float v0, float v1) {
-  return std::fma(alpha, v1 - v0, v0);
+  using ir::numerics::flush_denormal;
+  v0 = flush_denormal(v0);
+  v1 = flush_denormal(v1);
+  return flush_denormal(std::fma(alpha, flush_denormal(v1 - v0), v0));
 }
 
 } // namespace

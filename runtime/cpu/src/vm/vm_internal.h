@@ -64,6 +64,7 @@ struct DstDesc {
   bool range = false; // ps_1_x: clamp to ±max_value
   float max_value = 1.0f;
   int fixed_bits = 0;   // ps_1_x fixed-point emulation (0 = off)
+  bool flush = false;   // denormals flushed (NUMERICS.md rule 13, Rounding::Llvmpipe)
   uint16_t out_bit = 0; // output slots: bit in Invocation::out_written
   bool plain = false;   // register write with no shift, clamp, _sat or quantising
 };
@@ -99,6 +100,9 @@ struct Prepared {
   std::vector<std::optional<Vec4>> const_defs; // by c# index (for relative reads)
   int32_t const_limit = 0;                     // relative reads outside [0, limit) → 0
   bool ps1x = false;
+  // NUMERICS.md rule 13: Rounding::Llvmpipe flushes denormals in and out of every operation
+  // (numerics::Denormals::Flush) and loads def constants' denormals as zeros of their sign.
+  bool flush = false;
   bool ps11_13 = false;
   bool ps14 = false;
   bool vs11 = false;
@@ -146,12 +150,12 @@ int flat_slot(ir::RegFile file, uint32_t index, ir::ShaderStage stage); // -1: n
 Vec4 constant_value(int32_t index, const Invocation& inv);
 
 // vm_arith.cpp: the per-opcode compute table and the arithmetic executors.
-ComputeFn arith_compute(ir::Opcode op);
+ComputeFn arith_compute(ir::Opcode op, bool flush_denormals);
 void exec_arith(const Step& s, Invocation& inv);
 void exec_arith_pair(const Step& s, Invocation& inv);
 
 // vm_texture.cpp
-ExecFn texture_exec(ir::Opcode op);
+ExecFn texture_exec(ir::Opcode op, bool flush_denormals);
 
 // vm_flow.cpp
 ExecFn flow_exec(ir::Opcode op);
