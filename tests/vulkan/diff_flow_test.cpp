@@ -82,6 +82,7 @@ TEST_P(FlowDiff, CpuAndVulkanAgree) {
       p.vs_constants.b[5] = seed != 1;
     });
     expect_agree(r, fmt::format("{} seed {}", c.name, seed));
+    print_case_agreement(r, fmt::format("{} seed {}", c.name, seed));
     g_flow.add(r.diff);
   }
 }

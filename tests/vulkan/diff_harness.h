@@ -248,6 +248,25 @@ struct FamilyMax {
   }
 };
 
+// Share of pixels whose four values are identical on both devices (NaN matches NaN), and the
+// largest absolute difference over finite pairs: the per-case figures of the report lines.
+inline void print_case_agreement(const DiffResult& r, const std::string& what) {
+  size_t same = 0, pixels = r.cpu.rgba.size() / 4;
+  double max_abs = 0;
+  for (size_t p = 0; p < pixels; ++p) {
+    bool all = true;
+    for (size_t k = 0; k < 4; ++k) {
+      float x = r.cpu.rgba[p * 4 + k], y = r.vk.rgba[p * 4 + k];
+      all = all && (x == y || (std::isnan(x) && std::isnan(y)));
+      if (std::isfinite(x) && std::isfinite(y))
+        max_abs = std::max(max_abs, std::fabs(double(x) - double(y)));
+    }
+    same += all;
+  }
+  std::printf("[vk-agreement] case %-32s max abs %.3g, identical %.2f %%\n", what.c_str(), max_abs,
+              pixels ? 100.0 * double(same) / double(pixels) : 0.0);
+}
+
 inline void expect_agree(const DiffResult& r, const std::string& what) {
   ASSERT_TRUE(r.ok) << what;
   EXPECT_EQ(r.diff.special_mismatch, 0u) << what << ": " << r.diff.first_bad;
