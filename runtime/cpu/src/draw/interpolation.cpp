@@ -25,6 +25,7 @@
 #include <cmath>
 
 #include "raster.h"
+#include "tierlift/ir/numerics.h"
 
 namespace tierlift::cpu::detail {
 namespace {
@@ -58,11 +59,14 @@ Plane plane(const SetupTerms& s, float a0, float a1, float a2) {
   if (!std::isfinite(a0) && (a0 == a1 || (std::isnan(a0) && std::isnan(a1))) &&
       (a0 == a2 || (std::isnan(a0) && std::isnan(a2))))
     return Plane{a0, 0, 0};
-  const float da01 = a0 - a1, da20 = a2 - a0;
+  a0 = ftz(a0);
+  a1 = ftz(a1);
+  a2 = ftz(a2);
+  const float da01 = ftz(a0 - a1), da20 = ftz(a2 - a0);
   Plane p;
-  p.dadx = da01 * s.dy20o - da20 * s.dy01o;
-  p.dady = da20 * s.dx01o - da01 * s.dx20o;
-  p.a0 = a0 - (p.dadx * s.x0c + p.dady * s.y0c);
+  p.dadx = ftz(ftz(da01 * s.dy20o) - ftz(da20 * s.dy01o));
+  p.dady = ftz(ftz(da20 * s.dx01o) - ftz(da01 * s.dx20o));
+  p.a0 = ftz(a0 - ftz(ftz(p.dadx * s.x0c) + ftz(p.dady * s.y0c)));
   return p;
 }
 
@@ -109,10 +113,10 @@ PixelInput interpolate_llvmpipe(const Triangle& t, int64_t x, int64_t y) {
   const float oow = 1.0f / eval(p.oow, fx, fy);
   for (size_t r = 0; r < in.color.size(); ++r)
     if (!p.color_zero[r])
-      for (int c = 0; c < 4; ++c) in.color[r][c] = clamp01(eval(p.color[r][c], fx, fy) * oow);
+      for (int c = 0; c < 4; ++c) in.color[r][c] = clamp01(perspective(p.color[r][c], fx, fy, oow));
   for (size_t r = 0; r < in.tex.size(); ++r)
     if (!p.tex_zero[r])
-      for (int c = 0; c < 4; ++c) in.tex[r][c] = eval(p.tex[r][c], fx, fy) * oow;
+      for (int c = 0; c < 4; ++c) in.tex[r][c] = perspective(p.tex[r][c], fx, fy, oow);
   return in;
 }
 
@@ -126,14 +130,15 @@ void setup_planes(Triangle& t) {
   for (size_t r = 0; r < p.color.size(); ++r) {
     p.color_zero[r] = all_positive_zero(v0.out.color[r], v1.out.color[r], v2.out.color[r]);
     for (int c = 0; c < 4; ++c)
-      p.color[r][c] = plane(s, v0.out.color[r][c] * v0.oow, v1.out.color[r][c] * v1.oow,
-                            v2.out.color[r][c] * v2.oow);
+      p.color[r][c] =
+          plane(s, ftz(ftz(v0.out.color[r][c]) * v0.oow), ftz(ftz(v1.out.color[r][c]) * v1.oow),
+                ftz(ftz(v2.out.color[r][c]) * v2.oow));
   }
   for (size_t r = 0; r < p.tex.size(); ++r) {
     p.tex_zero[r] = all_positive_zero(v0.out.tex[r], v1.out.tex[r], v2.out.tex[r]);
     for (int c = 0; c < 4; ++c)
-      p.tex[r][c] =
-          plane(s, v0.out.tex[r][c] * v0.oow, v1.out.tex[r][c] * v1.oow, v2.out.tex[r][c] * v2.oow);
+      p.tex[r][c] = plane(s, ftz(ftz(v0.out.tex[r][c]) * v0.oow),
+                          ftz(ftz(v1.out.tex[r][c]) * v1.oow), ftz(ftz(v2.out.tex[r][c]) * v2.oow));
   }
 }
 
@@ -176,7 +181,7 @@ namespace {
       }
       const Plane pl = p.color[r][c]; // a copy: no store to `out` can change it
 #pragma GCC unroll 1
-      for (int l = 0; l < kBlockLanes; ++l) out[l] = clamp01(eval(pl, fx[l], fy) * oow[l]);
+      for (int l = 0; l < kBlockLanes; ++l) out[l] = clamp01(perspective(pl, fx[l], fy, oow[l]));
     }
   }
   for (size_t r = 0; r < 8; ++r) {
@@ -189,7 +194,7 @@ namespace {
       }
       const Plane pl = p.tex[r][c];
 #pragma GCC unroll 1
-      for (int l = 0; l < kBlockLanes; ++l) out[l] = eval(pl, fx[l], fy) * oow[l];
+      for (int l = 0; l < kBlockLanes; ++l) out[l] = perspective(pl, fx[l], fy, oow[l]);
     }
   }
 }

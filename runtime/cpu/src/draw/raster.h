@@ -9,6 +9,7 @@
 
 #include "tierlift/cpu/draw.h"
 #include "tierlift/cpu/pixel_block.h"
+#include "tierlift/ir/numerics.h"
 
 namespace tierlift::cpu::detail {
 
@@ -71,9 +72,22 @@ int64_t sample_offset(const ir::Conventions& conventions);
 void setup_planes(Triangle& t);
 PixelInput interpolate(const Triangle& t, const int64_t e[3], int64_t x, int64_t y);
 
-// Rounding::Llvmpipe's evaluation of a plane at pixel (x, y) (see interpolation.cpp).
+// llvmpipe runs setup and interpolation with the x86 DAZ and FTZ bits set: every operand and
+// result below 2^-126 is a zero of its sign (NUMERICS.md rule 13, measured in
+// tests/vulkan/denormals_test.cpp). ftz() is the identity on every other value.
+inline float ftz(float x) {
+  return ir::numerics::flush_denormal(x);
+}
+
+// Rounding::Llvmpipe's evaluation of a plane at pixel (x, y) (see interpolation.cpp). The
+// per-pixel and the block interpolation both call it and perspective(), so they agree bit for bit.
 inline float eval(const Plane& p, float x, float y) {
-  return std::fma(p.dady, y, std::fma(p.dadx, x, p.a0));
+  return ftz(std::fma(p.dady, y, ftz(std::fma(p.dadx, x, p.a0))));
+}
+
+// One perspective-corrected channel: the plane's value times 1/w at the pixel, flushed.
+inline float perspective(const Plane& p, float x, float y, float oow) {
+  return ftz(eval(p, x, y) * oow);
 }
 
 inline float clamp01(float v) {

@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "tierlift/cpu/texture.h"
+#include "tierlift/ir/numerics.h"
 
 namespace tierlift::cpu::detail {
 
@@ -56,9 +57,13 @@ inline LinearAxis llvmpipe_linear_axis(float u, uint32_t n, AddressMode mode, in
   return a;
 }
 
-// llvmpipe's lerp: v0 + α·(v1 − v0) as one fused multiply-add.
+// llvmpipe's lerp: v0 + α·(v1 − v0) as one fused multiply-add, with the x86 DAZ and FTZ bits
+// set: denormal texels and results are zeros of their sign (NUMERICS.md rule 13).
 inline float llvmpipe_lerp(float alpha, float v0, float v1) {
-  return std::fma(alpha, v1 - v0, v0);
+  using ir::numerics::flush_denormal;
+  v0 = flush_denormal(v0);
+  v1 = flush_denormal(v1);
+  return flush_denormal(std::fma(alpha, flush_denormal(v1 - v0), v0));
 }
 
 } // namespace tierlift::cpu::detail

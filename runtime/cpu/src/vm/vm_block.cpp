@@ -1,7 +1,9 @@
 // The block executor (pixel_block.h): the prepared program of the per-pixel VM, run one
 // instruction at a time over kBlockLanes pixels. Every value is computed by the functions the
 // per-pixel VM calls (ir/numerics.h, vm::modify_src, vm::dst_transform, the VM's compute table),
-// lane by lane and in the same order, so the two executors agree bit for bit; what the block
+// lane by lane, in the same order and under the program's denormal mode (NUMERICS.md rule 13:
+// everything below is a template on it, chosen once per run), so the two executors agree bit
+// for bit; what the block
 // saves is the decoding, the dispatch and the copies, paid once per block instead of per pixel,
 // and its lane loops are plain enough for the compiler to vectorise.
 #include <algorithm>
@@ -17,6 +19,7 @@ namespace tierlift::cpu {
 
 namespace num = ir::numerics;
 using ir::Opcode;
+using num::Denormals;
 
 namespace {
 
@@ -138,6 +141,7 @@ bool plan_src(const vm::SrcDesc& s, Impl& im, const ConstantBank& bank, BlockSrc
   return true;
 }
 
+template <Denormals D>
 View fetch(const Impl& im, const BlockStep& b, int k, int half, Scratch& sc) {
   const BlockSrc& s = b.src[static_cast<size_t>(k)];
   View v;
@@ -162,7 +166,7 @@ View fetch(const Impl& im, const BlockStep& b, int k, int half, Scratch& sc) {
     const LaneVec4& r = sc.reg[s.slot];
     const vm::SrcDesc& d = b.step->src[static_cast<size_t>(k)];
     for (int l = 0; l < L; ++l) {
-      Vec4 x = vm::modify_src(d, {r.c[0][l], r.c[1][l], r.c[2][l], r.c[3][l]});
+      Vec4 x = vm::modify_src<D>(d, {r.c[0][l], r.c[1][l], r.c[2][l], r.c[3][l]});
       for (int c = 0; c < 4; ++c) out.c[c][l] = x[c];
     }
     for (int c = 0; c < 4; ++c) v.c[c] = out.c[c];
@@ -226,62 +230,74 @@ void compute_per_lane(const vm::Step& st, const View* s, int n, LaneVec4& d, vm:
   }
 }
 
+// The VM's compute functions of the same opcodes (vm_arith.cpp) call the same rules with the
+// same D; compute_per_lane calls the VM's own, taken from the table of the program's mode.
+template <Denormals D>
 void compute(const Impl& im, const BlockStep& b, int half, int n, Scratch& sc, LaneVec4& d,
              vm::Invocation& inv) {
   const vm::Step& st = *b.step;
   View s[4];
-  for (int k = 0; k < st.nsrc; ++k) s[k] = fetch(im, b, k, half, sc);
+  for (int k = 0; k < st.nsrc; ++k) s[k] = fetch<D>(im, b, k, half, sc);
   switch (st.ins->op) {
   case Opcode::Mov: lanes1(d, s[0], [](float a) { return a; }); return;
-  case Opcode::Add: lanes2(d, s[0], s[1], [](float a, float e) { return a + e; }); return;
-  case Opcode::Sub: lanes2(d, s[0], s[1], [](float a, float e) { return a - e; }); return;
+  case Opcode::Add:
+    lanes2(d, s[0], s[1], [](float a, float e) { return num::legacy_add<D>(a, e); });
+    return;
+  case Opcode::Sub:
+    lanes2(d, s[0], s[1], [](float a, float e) { return num::legacy_sub<D>(a, e); });
+    return;
   case Opcode::Mul:
-    lanes2(d, s[0], s[1], [](float a, float e) { return num::legacy_mul(a, e); });
+    lanes2(d, s[0], s[1], [](float a, float e) { return num::legacy_mul<D>(a, e); });
     return;
   case Opcode::Mad:
-    lanes3(d, s[0], s[1], s[2], [](float a, float e, float f) { return num::legacy_mad(a, e, f); });
+    lanes3(d, s[0], s[1], s[2],
+           [](float a, float e, float f) { return num::legacy_mad<D>(a, e, f); });
     return;
   case Opcode::Min:
-    lanes2(d, s[0], s[1], [](float a, float e) { return num::legacy_min(a, e); });
+    lanes2(d, s[0], s[1], [](float a, float e) { return num::legacy_min<D>(a, e); });
     return;
   case Opcode::Max:
-    lanes2(d, s[0], s[1], [](float a, float e) { return num::legacy_max(a, e); });
+    lanes2(d, s[0], s[1], [](float a, float e) { return num::legacy_max<D>(a, e); });
     return;
   case Opcode::Slt:
-    lanes2(d, s[0], s[1], [](float a, float e) { return num::legacy_slt(a, e); });
+    lanes2(d, s[0], s[1], [](float a, float e) { return num::legacy_slt<D>(a, e); });
     return;
   case Opcode::Sge:
-    lanes2(d, s[0], s[1], [](float a, float e) { return num::legacy_sge(a, e); });
+    lanes2(d, s[0], s[1], [](float a, float e) { return num::legacy_sge<D>(a, e); });
     return;
   case Opcode::Lrp:
-    lanes3(d, s[0], s[1], s[2], [](float a, float e, float f) { return num::legacy_lrp(a, e, f); });
+    lanes3(d, s[0], s[1], s[2],
+           [](float a, float e, float f) { return num::legacy_lrp<D>(a, e, f); });
     return;
   case Opcode::Cmp:
-    lanes3(d, s[0], s[1], s[2], [](float a, float e, float f) { return num::legacy_cmp(a, e, f); });
+    lanes3(d, s[0], s[1], s[2],
+           [](float a, float e, float f) { return num::legacy_cmp<D>(a, e, f); });
     return;
   case Opcode::Cnd:
-    lanes3(d, s[0], s[1], s[2], [](float a, float e, float f) { return num::legacy_cnd(a, e, f); });
+    lanes3(d, s[0], s[1], s[2],
+           [](float a, float e, float f) { return num::legacy_cnd<D>(a, e, f); });
     return;
   case Opcode::Abs: lanes1(d, s[0], [](float a) { return std::fabs(a); }); return;
   case Opcode::Dp3:
     lanes_dot(d, s[0], s[1],
-              [](const float* x, const float* y, int) { return num::legacy_dp3(x, y); });
+              [](const float* x, const float* y, int) { return num::legacy_dp3<D>(x, y); });
     return;
   case Opcode::Dp4:
     lanes_dot(d, s[0], s[1],
-              [](const float* x, const float* y, int) { return num::legacy_dp4(x, y); });
+              [](const float* x, const float* y, int) { return num::legacy_dp4<D>(x, y); });
     return;
   case Opcode::Dp2Add: {
     const float* w = s[2].c[3]; // the scalar operand reads its 4th swizzle slot
-    lanes_dot(d, s[0], s[1],
-              [w](const float* x, const float* y, int l) { return num::legacy_dp2(x, y) + w[l]; });
+    lanes_dot(d, s[0], s[1], [w](const float* x, const float* y, int l) {
+      return num::legacy_add<D>(num::legacy_dp2<D>(x, y), w[l]);
+    });
     return;
   }
   default: compute_per_lane(st, s, n, d, inv); return;
   }
 }
 
-void store(const vm::DstDesc& d, const LaneVec4& v, Scratch& sc) {
+template <Denormals D> void store(const vm::DstDesc& d, const LaneVec4& v, Scratch& sc) {
   if (d.kind != vm::DstKind::Slot) return; // address registers never reach the block path
   LaneVec4& r = sc.reg[d.slot];
   for (int c = 0; c < 4; ++c) {
@@ -289,7 +305,7 @@ void store(const vm::DstDesc& d, const LaneVec4& v, Scratch& sc) {
     if (d.plain) {
       std::memcpy(r.c[c], v.c[c], sizeof(Lanes));
     } else {
-      for (int l = 0; l < L; ++l) r.c[c][l] = vm::dst_transform(d, v.c[c][l]);
+      for (int l = 0; l < L; ++l) r.c[c][l] = vm::dst_transform<D>(d, v.c[c][l]);
     }
   }
 }
@@ -308,22 +324,22 @@ void sample(const TextureUnit& t, int32_t stage, const View& coord, const float*
 }
 
 // x/w, y/w, z/w, 1 (D3DTTFF_PROJECTED and texldp), per lane as the VM divides.
-View projected(const View& c, Scratch& sc) {
+template <Denormals D> View projected(const View& c, Scratch& sc) {
   LaneVec4& out = sc.coord;
   for (int l = 0; l < L; ++l) {
     const float w = c.c[3][l];
-    out.c[0][l] = c.c[0][l] / w;
-    out.c[1][l] = c.c[1][l] / w;
-    out.c[2][l] = c.c[2][l] / w;
+    out.c[0][l] = num::legacy_div<D>(c.c[0][l], w);
+    out.c[1][l] = num::legacy_div<D>(c.c[1][l], w);
+    out.c[2][l] = num::legacy_div<D>(c.c[2][l], w);
     out.c[3][l] = 1.0f;
   }
   return {{out.c[0], out.c[1], out.c[2], out.c[3]}};
 }
 
-void kill_lanes(const View& v, int comps, int n, PixelBlockOutput& out) {
+template <Denormals D> void kill_lanes(const View& v, int comps, int n, PixelBlockOutput& out) {
   for (int l = 0; l < n; ++l)
     for (int i = 0; i < comps; ++i)
-      if (v.c[i][l] < 0.0f) out.discarded[static_cast<size_t>(l)] = true;
+      if (num::dz<D>(v.c[i][l]) < 0.0f) out.discarded[static_cast<size_t>(l)] = true;
 }
 
 } // namespace
@@ -473,9 +489,11 @@ PixelBlockVM::make_scratch() const {
   return {s, [](Scratch* p) { delete p; }};
 }
 
-void PixelBlockVM::run(const PixelBlockInput& in, const TextureUnit& textures,
-                       PixelBlockOutput& out, Scratch& sc) const {
-  const Impl& im = *impl_;
+namespace {
+
+template <Denormals D>
+void run_steps(const Impl& im, const PixelBlockInput& in, const TextureUnit& textures,
+               PixelBlockOutput& out, Scratch& sc) {
   const vm::Prepared& p = im.p;
   const int n = std::clamp(in.count, 0, L);
   for (const auto& [slot, c] : im.zero_components)
@@ -486,7 +504,7 @@ void PixelBlockVM::run(const PixelBlockInput& in, const TextureUnit& textures,
     if (im.color_reads & (1u << i))
       for (int c = 0; c < 4; ++c)
         for (int l = 0; l < L; ++l)
-          sc.reg[vm::kInputBase + i].c[c][l] = num::legacy_saturate(in.color[i].c[c][l]);
+          sc.reg[vm::kInputBase + i].c[c][l] = num::legacy_saturate<D>(in.color[i].c[c][l]);
   if (!p.ps11_13)
     for (int i = 0; i < vm::kTexCount; ++i)
       if (im.tex_reads & (1u << i)) sc.reg[vm::kTexBase + i] = in.tex[i];
@@ -501,62 +519,62 @@ void PixelBlockVM::run(const PixelBlockInput& in, const TextureUnit& textures,
     switch (b.op) {
     case BlockOp::Skip: break;
     case BlockOp::Arith:
-      compute(im, b, 0, n, sc, d0, inv);
-      store(st.dst, d0, sc);
+      compute<D>(im, b, 0, n, sc, d0, inv);
+      store<D>(st.dst, d0, sc);
       break;
     case BlockOp::ArithPair: {
       // Both halves read before either writes.
       const BlockStep& second = (&b)[1];
-      compute(im, b, 0, n, sc, d0, inv);
-      compute(im, second, 1, n, sc, sc.dst[1], inv);
-      store(st.dst, d0, sc);
-      store(second.step->dst, sc.dst[1], sc);
+      compute<D>(im, b, 0, n, sc, d0, inv);
+      compute<D>(im, second, 1, n, sc, sc.dst[1], inv);
+      store<D>(st.dst, d0, sc);
+      store<D>(second.step->dst, sc.dst[1], sc);
       break;
     }
     case BlockOp::Tex: {
       View c = tex_coord(in, st.aux, sc);
-      if (textures.stage_state(static_cast<uint32_t>(st.aux)).projected) c = projected(c, sc);
+      if (textures.stage_state(static_cast<uint32_t>(st.aux)).projected) c = projected<D>(c, sc);
       sample(textures, st.aux, c, nullptr, n, d0);
-      store(st.dst, d0, sc);
+      store<D>(st.dst, d0, sc);
       break;
     }
     case BlockOp::TexCoord: {
       const View c = tex_coord(in, st.aux, sc);
       for (int k = 0; k < 3; ++k)
-        for (int l = 0; l < L; ++l) d0.c[k][l] = num::legacy_saturate(c.c[k][l]);
+        for (int l = 0; l < L; ++l) d0.c[k][l] = num::legacy_saturate<D>(c.c[k][l]);
       std::fill(std::begin(d0.c[3]), std::end(d0.c[3]), 1.0f);
-      store(st.dst, d0, sc);
+      store<D>(st.dst, d0, sc);
       break;
     }
     case BlockOp::TexKill:
-      kill_lanes(p.ps11_13 ? tex_coord(in, st.aux, sc) : fetch(im, b, 0, 0, sc), p.ps1x ? 3 : 4, n,
-                 out);
+      kill_lanes<D>(p.ps11_13 ? tex_coord(in, st.aux, sc) : fetch<D>(im, b, 0, 0, sc),
+                    p.ps1x ? 3 : 4, n, out);
       break;
     case BlockOp::TexLd14: {
-      View c = fetch(im, b, 0, 0, sc);
+      View c = fetch<D>(im, b, 0, 0, sc);
       c.c[3] = sc.zero;
       sample(textures, st.aux, c, nullptr, n, d0);
-      store(st.dst, d0, sc);
+      store<D>(st.dst, d0, sc);
       break;
     }
     case BlockOp::TexCrd: {
-      const View c = fetch(im, b, 0, 0, sc);
+      const View c = fetch<D>(im, b, 0, 0, sc);
       for (int k = 0; k < 4; ++k) std::memcpy(d0.c[k], c.c[k], sizeof(Lanes));
-      store(st.dst, d0, sc);
+      store<D>(st.dst, d0, sc);
       break;
     }
     case BlockOp::TexLd:
-      sample(textures, st.aux, fetch(im, b, 0, 0, sc), nullptr, n, d0);
-      store(st.dst, d0, sc);
+      sample(textures, st.aux, fetch<D>(im, b, 0, 0, sc), nullptr, n, d0);
+      store<D>(st.dst, d0, sc);
       break;
     case BlockOp::TexLdP:
-      sample(textures, st.aux, projected(fetch(im, b, 0, 0, sc), sc), nullptr, n, d0);
-      store(st.dst, d0, sc);
+      sample(textures, st.aux, projected<D>(fetch<D>(im, b, 0, 0, sc), sc), nullptr, n, d0);
+      store<D>(st.dst, d0, sc);
       break;
     case BlockOp::TexLdB: {
-      const View c = fetch(im, b, 0, 0, sc);
+      const View c = fetch<D>(im, b, 0, 0, sc);
       sample(textures, st.aux, c, c.c[3], n, d0);
-      store(st.dst, d0, sc);
+      store<D>(st.dst, d0, sc);
       break;
     }
     case BlockOp::Phase:
@@ -567,6 +585,16 @@ void PixelBlockVM::run(const PixelBlockInput& in, const TextureUnit& textures,
     }
   }
   out.color = sc.reg[im.out_slot];
+}
+
+} // namespace
+
+void PixelBlockVM::run(const PixelBlockInput& in, const TextureUnit& textures,
+                       PixelBlockOutput& out, Scratch& sc) const {
+  if (impl_->p.flush)
+    run_steps<Denormals::Flush>(*impl_, in, textures, out, sc);
+  else
+    run_steps<Denormals::Keep>(*impl_, in, textures, out, sc);
 }
 
 void TextureUnit::sample_block(uint32_t stage, const float* const coord[4], const float* bias,
