@@ -18,7 +18,7 @@ using Vec4 = std::array<float, 4>;
 
 // Pixels the block executor (pixel_block.h) runs at once, each register held as four arrays
 // of this many lanes (structure of arrays).
-inline constexpr int kBlockLanes = 16;
+inline constexpr int kBlockLanes = 64;
 using Lanes = float[kBlockLanes];
 
 // Texture-stage state the ps_1_x texture instructions read (D3DTSS_*).
