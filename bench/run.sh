@@ -107,3 +107,46 @@ for device, pts in sorted(scale.items()):
             print(f"  exponent of time against pixels x taps: {b:.2f} (1.0: linear)")
 PY
 rm -rf "$tmp"
+
+# ---- the CPU device (bench_cpu_glow): block executor against the per-pixel VM it replaced and
+# against OpenCV, glow at 480x270, 1920x1080, 3840x2160 (downsample 4), 13 and 25 taps ----------
+if grep -q bench_cpu_glow "$build/build.ninja" 2>/dev/null; then
+  cmake --build "$build" --target bench_cpu_glow >/dev/null
+  cpu_json=$(mktemp)
+  "$build/bench/bench_cpu_glow" --benchmark_format=json --benchmark_min_time=1 >"$cpu_json"
+  python3 - "$cpu_json" <<'PY'
+import json, math, sys
+rows = {b["name"]: b for b in json.load(open(sys.argv[1]))["benchmarks"] if "error_occurred" not in b}
+def get(prefix):
+    return next((b for n, b in rows.items() if n == prefix or n.startswith(prefix + "/")), None)
+def ms(b, key="real_time"):
+    return b[key] * {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}[b.get("time_unit", "ns")]
+sizes = {0: "480x270", 1: "1920x1080", 2: "3840x2160"}
+print("\nCPU device glow (dx9, RGBA32F, downsample 4), wall clock, all cores:")
+print(f"{'size':>10} {'taps':>4} {'block ms':>9} {'OpenCV ms':>10} {'block/OpenCV':>13}")
+fit = []
+for s, name in sizes.items():
+    for taps in (13, 25):
+        b, o = get(f"BM_CpuGlow_Block/size:{s}/taps:{taps}"), get(f"BM_CpuGlow_OpenCV/size:{s}/taps:{taps}")
+        if b and o:
+            print(f"{name:>10} {taps:>4} {ms(b):9.1f} {ms(o):10.2f} {ms(b)/ms(o):12.1f}x")
+            fit.append((math.log(b["pixels"] * taps), math.log(ms(b))))
+if len(fit) >= 2:
+    mx = sum(x for x, _ in fit) / len(fit); my = sum(y for _, y in fit) / len(fit)
+    k = sum((x - mx) * (y - my) for x, y in fit) / sum((x - mx) ** 2 for x, _ in fit)
+    print(f"time ~ (pixels x taps)^{k:.2f} (least squares over the block rows)")
+old, new = get("BM_CpuGlow_Scalar/size:1/taps:13"), get("BM_CpuGlow_Block/size:1/taps:13")
+if old and new:
+    print(f"block vs per-pixel VM, 1080p 13 taps, all cores: {ms(old)/ms(new):.1f}x faster")
+o1, b1, s1 = (get(f"BM_CpuGlow_OneThread_{k}") for k in ("OpenCV", "Block", "Scalar"))
+if o1 and b1 and s1:
+    print(f"one thread, CPU time (1080p, 13 taps): block {ms(b1, 'cpu_time'):.1f} ms, per-pixel VM "
+          f"{ms(s1, 'cpu_time'):.1f} ms ({ms(s1, 'cpu_time')/ms(b1, 'cpu_time'):.1f}x), OpenCV "
+          f"{ms(o1, 'cpu_time'):.1f} ms (block/OpenCV {ms(b1, 'cpu_time')/ms(o1, 'cpu_time'):.1f}x)")
+for tier in ("dx9_rgba8", "dx8_rgba8"):
+    b, s = get(f"BM_CpuGlow_Tier/block_{tier}"), get(f"BM_CpuGlow_Tier/scalar_{tier}")
+    if b and s:
+        print(f"{tier} 1080p: block {ms(b):.0f} ms, per-pixel VM {ms(s):.0f} ms ({ms(s)/ms(b):.1f}x)")
+PY
+  rm -f "$cpu_json"
+fi

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "tierlift/codegen/emitter.h"
+#include "tierlift/ir/numerics.h"
 #include "tierlift/ir/profile.h"
 
 namespace tierlift::codegen {
@@ -29,8 +30,14 @@ const ir::ConstDef* find_def(const ir::Program& p, RegFile file, uint32_t index)
 } // namespace
 
 Id Emitter::load_const(uint32_t index, const std::optional<ir::RelAddr>& rel) {
+  // NUMERICS.md rule 13: under Rounding::Llvmpipe a def's denormals load as zeros of their
+  // sign, as the interpreter loads them (runtime/cpu/src/vm/vm_program.cpp): the driver
+  // would fold def-only arithmetic with denormals kept, the same arithmetic at run time
+  // flushes them.
+  const bool flush = opt.conventions.rounding == ir::Rounding::Llvmpipe;
   auto def_value = [&](const ir::ConstDef& d) {
-    return vec4_const(d.f(0), d.f(1), d.f(2), d.f(3));
+    auto c = [&](int i) { return flush ? ir::numerics::flush_denormal(d.f(i)) : d.f(i); };
+    return vec4_const(c(0), c(1), c(2), c(3));
   };
   const Id ptr_vec4 = b.type_pointer(SC::Uniform, t_vec4);
   if (!rel) {

@@ -3,6 +3,7 @@
 #include <cfloat>
 #include <cmath>
 
+#include "tierlift/ir/numerics.h"
 #include "vm_test_util.h"
 
 using namespace vmtest;
@@ -24,12 +25,17 @@ TEST(Numerics, RcpOfOneIsExact) {
 }
 
 TEST(Numerics, RcpOverflowClampsToFltMax) {
-  // 2^-140 is a denormal; 1/2^-140 = 2^140 > FLT_MAX (≈ 2^128) → clamps to ±FLT_MAX.
+  // 2^-140 is a denormal; 1/2^-140 = 2^140 > FLT_MAX (≈ 2^128) → clamps to ±FLT_MAX when
+  // denormals are kept (Rounding::Exact; under Llvmpipe it is rcp(±0), rule 13).
   float tiny = std::ldexp(1.0f, -140);
-  auto o =
-      vs20("rcp r4, r0.x\nmov oT0, r4\nrcp r5, r0.y\nmov oT1, r5\n", bank({{tiny, -tiny, 0, 0}}));
+  tierlift::ir::Conventions exact;
+  exact.rounding = tierlift::ir::Rounding::Exact;
+  auto o = vs("vs_2_0", "rcp r4, r0.x\nmov oT0, r4\nrcp r5, r0.y\nmov oT1, r5\n",
+              bank({{tiny, -tiny, 0, 0}}), exact);
   EXPECT_EQ(o.tex[0][0], FLT_MAX);
   EXPECT_EQ(o.tex[1][0], -FLT_MAX);
+  // rcp(2^127) = 2^-127, a denormal result, kept.
+  EXPECT_EQ(tierlift::ir::numerics::legacy_rcp(0x1p127f), 0x1p-127f);
 }
 
 TEST(Numerics, RsqOfZeroIsFltMax) {
@@ -137,12 +143,66 @@ TEST(Numerics, SgnOfNan) {
 }
 
 TEST(Numerics, DenormalsAreKept) {
-  // 2^-140 · 0.5 = 2^-141 (a denormal, exact); 2^-140 + 0 = 2^-140: no flush to zero.
+  // Rounding::Exact: 2^-140 · 0.5 = 2^-141 (a denormal, exact); 2^-140 + 0 = 2^-140.
   float d = std::ldexp(1.0f, -140);
-  auto o = vs20("mul r4, r0, r1\nmov oT0, r4\nadd r5, r0, r2\nmov oT1, r5\n",
-                bank({{d, d, d, d}, {0.5f, 0.5f, 0.5f, 0.5f}, {0, 0, 0, 0}}));
+  tierlift::ir::Conventions exact;
+  exact.rounding = tierlift::ir::Rounding::Exact;
+  auto o = vs("vs_2_0", "mul r4, r0, r1\nmov oT0, r4\nadd r5, r0, r2\nmov oT1, r5\n",
+              bank({{d, d, d, d}, {0.5f, 0.5f, 0.5f, 0.5f}, {0, 0, 0, 0}}), exact);
   EXPECT_EQ(o.tex[0][0], std::ldexp(1.0f, -141));
   EXPECT_EQ(o.tex[1][0], d);
+}
+
+TEST(Numerics, DenormalsFlushLikeLavapipe) {
+  // Rounding::Llvmpipe (the default): an operation reads a denormal as the zero of its sign
+  // and writes a denormal result as the zero of its sign; mov keeps the bits.
+  namespace num = tierlift::ir::numerics;
+  constexpr auto F = num::Denormals::Flush;
+  const float d = 0x1p-140f;
+  auto sign = [](float x) { return std::signbit(x); };
+  // The function the rules share: the zero of the denormal's sign, everything else kept.
+  EXPECT_EQ(num::flush_denormal(d), 0.0f);
+  EXPECT_FALSE(sign(num::flush_denormal(d)));
+  EXPECT_TRUE(sign(num::flush_denormal(-d)));
+  EXPECT_EQ(num::flush_denormal(FLT_MIN), FLT_MIN);
+  EXPECT_TRUE(std::isnan(num::flush_denormal(nan_f())));
+  // Operand flushed: (−0) + (+0) = +0 (a flushed result would be −0).
+  EXPECT_FALSE(sign(num::legacy_add<F>(-d, 0.0f)));
+  EXPECT_EQ(num::legacy_add<F>(d, FLT_MIN), FLT_MIN);
+  // Result flushed, sign kept: 2^-70 · −2^-70 = −2^-140 → −0 (legacy_mul's product).
+  EXPECT_TRUE(sign(num::legacy_mul<F>(0x1p-70f, -0x1p-70f)));
+  EXPECT_EQ(num::legacy_mul<F>(-d, 0x1p100f), 0.0f); // rule 8: a zero factor gives +0
+  EXPECT_FALSE(sign(num::legacy_mul<F>(-d, 0x1p100f)));
+  // mad: the product 2^-140 is flushed before the sum.
+  EXPECT_EQ(num::legacy_mad<F>(0x1p-70f, 0x1p-70f, FLT_MIN), FLT_MIN);
+  // The issue-16 cases: rcp/rsq/log of ±denormal are those of ±0 (rules 1, 3, 5).
+  EXPECT_EQ(num::legacy_rcp<F>(-d), FLT_MAX);
+  EXPECT_EQ(num::legacy_rsq<F>(d), FLT_MAX);
+  EXPECT_EQ(num::legacy_log<F>(-d), -FLT_MAX);
+  // exp: 2^-130 is below 2^-126 → 0.
+  EXPECT_EQ(num::legacy_exp<F>(-130.0f), 0.0f);
+  // Comparisons read zeros; the select hands on the operand's own bits.
+  EXPECT_EQ(num::legacy_cmp<F>(-d, 1.0f, 2.0f), 1.0f);
+  EXPECT_EQ(num::legacy_slt<F>(-d, 0.0f), 0.0f);
+  EXPECT_EQ(num::legacy_min<F>(-d, 0.0f), 0.0f); // −0 < +0 is false → src1
+  EXPECT_EQ(num::legacy_max<F>(-d, 0.0f), -d);   // −0 ≥ +0 → src0, its bits
+  EXPECT_EQ(num::legacy_sgn<F>(d), 0.0f);
+  EXPECT_EQ(num::legacy_frc<F>(-d), 0.0f); // not rule 22's 1.0
+  EXPECT_EQ(num::legacy_saturate<F>(d), 0.0f);
+  EXPECT_EQ(num::legacy_mov_a0_floor<F>(-d), 0);
+  // ps_1_x clamps flush (lavapipe's min/max instructions).
+  EXPECT_TRUE(sign(num::legacy_ps1x_const<F>(-d)));
+  EXPECT_EQ(num::legacy_ps1x_const<F>(-d), 0.0f);
+  // Through the VM: mov keeps, add flushes, a def loads flushed.
+  auto o = vs20("mov oT0, r0\nadd r5, r0, r2\nmov oT1, r5\n", bank({{d, -d, d, -d}, {}, {}}));
+  EXPECT_EQ(o.tex[0][1], -d);
+  EXPECT_EQ(o.tex[1][0], 0.0f);
+  EXPECT_FALSE(sign(o.tex[1][1]));
+  auto def = make_vm("vs_2_0\ndef c10, 1e-40, -1e-40, 0, 0\ndcl_position v0\nmov oPos, v0\n"
+                     "mov oT0, c10\n")
+                 .run_vertex(VertexInput{}, bank({}));
+  EXPECT_EQ(def.tex[0][0], 0.0f);
+  EXPECT_TRUE(sign(def.tex[0][1]));
 }
 
 TEST(Numerics, MadIsNotFused) {

@@ -52,6 +52,10 @@ const OpCase kPs20Cases[] = {
     {"rcp_neg_w", "rcp r3, -r0.w"},
     {"dp3_sat", "dp3_sat r3, r0, c3"},
     {"constants", "mad r3, c4, c5, r0"},
+    // Denormals through def (c11) and through the constant bank (c6 = ±1e-40, ±2^-140).
+    {"def_denormals", "rcp r3.x, c11.y\nrsq r3.y, c11.x\nlog r3.z, c11.w\nmad r3.w, r0.w, c11.x, c11.y"},
+    {"const_denormals", "rcp r3.x, c6.y\nrsq r3.y, c6.x\nlog r3.z, c6.w\ncmp r3.w, c6.y, r0.w, r1.w"},
+    {"def_denormals_select", "cmp r3, c11, r0, r1\nmin r3, r3, c11\nmax r3, r3, -c11"},
 };
 // clang-format on
 
@@ -60,6 +64,7 @@ std::string ps_text(const std::string& body) {
          "def c8, -1.5500992e-006, -2.1701389e-005, 0.0026041667, 0.00026041668\n"
          "def c9, -0.020833334, -0.12500000, 1.0, 0.50000000\n"
          "def c10, 3.14159265, 0.5, 0, 0\n"
+         "def c11, 1e-40, -1e-40, 7.1746481e-43, -7.1746481e-43\n"
          "dcl t0\ndcl_2d s0\ndcl_2d s1\ndcl_2d s2\ndcl_2d s3\n"
          "texld r0, t0, s0\ntexld r1, t0, s1\ntexld r2, t0, s2\ntexld r4, t0, s3\n" +
          body + "\nmov oC0, r3\n";
@@ -80,6 +85,7 @@ TEST_P(Ps20Diff, CpuAndVulkanAgree) {
     // s3 feeds sincos, whose input must lie in [−π, π] (d3d9-isa.md §5.1).
     s.textures.push_back(random_texture(seed * 10 + 3, {-3.14159f, 3.14159f, 0.0f}));
     s.ps_c = random_constants(seed * 100, 8, {-2, 2, 0.2f});
+    s.ps_c[6] = {1e-40f, -1e-40f, 0x1p-140f, -0x1p-140f};
     DiffResult r = run_diff(*dev, kQuadVs, ps_text(c.body), s);
     expect_agree(r, fmt::format("{} seed {}", c.name, seed));
     g_ps20.add(r.diff);

@@ -1,5 +1,7 @@
 // The CPU device: the graph's textures in a map in host memory, each pass drawn by the
-// interpreter (cpu::draw).
+// interpreter (cpu::draw). Textures are bound to a pass by reference, not copied, and a run
+// reuses the buffers of the run before (same graph, same sizes): at 1920×1080 a copy or a
+// fresh allocation of one texture costs about as much as a blur pass.
 #include <fmt/format.h>
 
 #include "tierlift/cpu/draw.h"
@@ -7,13 +9,39 @@
 #include "tierlift/effects/run_graph.h"
 
 namespace tierlift::effects {
+namespace {
+
+// `im` becomes a w×h image of `format` holding `pixels` (or zeros), in its own buffer when
+// that is large enough.
+void reset_image(img::Image& im, uint32_t w, uint32_t h, img::Format format,
+                 const img::Image* pixels) {
+  im.width = w;
+  im.height = h;
+  im.format = format;
+  if (pixels)
+    im.rgba.assign(pixels->rgba.begin(), pixels->rgba.end());
+  else
+    im.rgba.assign(size_t{w} * h * 4, 0.0f);
+}
+
+} // namespace
 
 std::string CpuPassDevice::begin_run(const EffectGraph& graph, const ImageMap& inputs) {
   graph_ = &graph;
-  images_.clear();
+  ImageMap kept;
+  kept.swap(images_);
+  placeholders_.clear();
   for (const TextureDesc& t : graph.textures) {
-    auto it = inputs.find(t.name);
-    images_[t.name] = it != inputs.end() ? it->second : img::Image(t.width, t.height, t.format);
+    auto in = inputs.find(t.name);
+    auto old = kept.find(t.name);
+    img::Image& im = images_[t.name];
+    if (old != kept.end()) im = std::move(old->second);
+    if (in != inputs.end())
+      reset_image(im, in->second.width, in->second.height, in->second.format, &in->second);
+    else
+      reset_image(im, t.width, t.height, t.format, nullptr);
+    // make_pass wants an image per bound texture; run_pass binds the real one by reference.
+    placeholders_.emplace(t.name, img::Image());
   }
   return {};
 }
@@ -21,14 +49,24 @@ std::string CpuPassDevice::begin_run(const EffectGraph& graph, const ImageMap& i
 std::string CpuPassDevice::run_pass(const PassDesc& desc) {
   if (!graph_) return "no run was begun";
   std::string error;
-  std::optional<cpu::Pass> pass = make_pass(desc, images_, graph_->conventions, &error);
+  std::optional<cpu::Pass> pass = make_pass(desc, placeholders_, graph_->conventions, &error);
   if (!pass) return error;
+  pass->executor = executor_;
   auto it = images_.find(desc.target);
   if (it == images_.end()) return fmt::format("no texture '{}'", desc.target);
-  img::Image target = it->second; // a failed draw leaves the texture as it was
-  cpu::DrawStats s = cpu::draw(*pass, target, threads_);
+  for (const TextureBind& b : desc.textures) {
+    auto tex = images_.find(b.texture); // make_pass checked the name and the stage already
+    if (tex == images_.end() || b.stage >= cpu::kMaxSamplers)
+      return fmt::format("pass '{}': texture '{}' has no image", desc.name, b.texture);
+    // Not owned: the image outlives the draw, and check_graph refuses a pass that reads its
+    // own target, so no texture is written while it is sampled.
+    pass->textures[b.stage].image =
+        std::shared_ptr<const img::Image>(std::shared_ptr<void>(), &tex->second);
+  }
+  // In place: cpu::draw fails only before it writes a pixel, so a failed draw leaves the
+  // texture as it was.
+  cpu::DrawStats s = cpu::draw(*pass, it->second, threads_);
   if (!s.ok) return s.error;
-  it->second = std::move(target);
   return {};
 }
 

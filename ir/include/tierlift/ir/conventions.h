@@ -11,13 +11,16 @@ enum class PixelCenter {
 
 // Where D3D9 leaves the rounding to the hardware — attribute interpolation and the bilinear
 // filter's arithmetic — the CPU device either reproduces Mesa's llvmpipe (lavapipe) bit for
-// bit or computes exactly. A device-matching choice: the Vulkan device ignores it.
+// bit or computes exactly. A device-matching choice: the Vulkan device ignores it (but for
+// the def denormals the code generator loads flushed under Llvmpipe).
 enum class Rounding {
   // Float plane equations a0 + dadx·x + dady·y evaluated with FMA, times 1/w; bilinear
   // weights frac(fl32(u·N) − 0.5) in float, lerps with FMA (runtime/cpu/.../draw.h).
+  // Denormals flushed in and out of every operation, def denormals loaded as zeros, on the
+  // CPU device and in the emitted SPIR-V (NUMERICS.md rule 13).
   Llvmpipe,
   // Perspective-correct barycentrics from exact edge functions and bilinear weights from
-  // u·N − 0.5, both in double, rounded once.
+  // u·N − 0.5, both in double, rounded once. Denormals kept (IEEE).
   Exact,
 };
 

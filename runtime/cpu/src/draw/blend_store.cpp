@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "raster.h"
 #include "tierlift/cpu/draw.h"
 
 namespace tierlift::cpu {
@@ -13,6 +14,30 @@ namespace {
 float clamp01(float v) {
   return v > 0 ? (v < 1 ? v : 1) : 0;
 } // NaN → 0
+
+// The blend equation of one channel in float (a: the source alpha).
+inline float blend_equation(BlendMode mode, float s, float a, float d) {
+  switch (mode) {
+  case BlendMode::Replace: return s;
+  case BlendMode::OneOne: return s + d;
+  case BlendMode::SrcAlphaOne: return s * a + d;
+  case BlendMode::SrcAlphaInvSrcAlpha: return s * a + d * (1.0f - a);
+  }
+  return s;
+}
+
+// RGBA32F's store rule is the identity (img::quantize): each stored value is the blend
+// equation itself, written over the destination in place.
+template <BlendMode kMode>
+void store_block_float32(const LaneVec4& src, const std::array<bool, kBlockLanes>& discarded,
+                         const int64_t* x, int n, float* row) {
+  for (int l = 0; l < n; ++l) {
+    if (discarded[static_cast<size_t>(l)]) continue;
+    float* p = row + 4 * x[l];
+    const float a = src.c[3][l];
+    for (int c = 0; c < 4; ++c) p[c] = blend_equation(kMode, src.c[c][l], a, p[c]);
+  }
+}
 
 Vec4 blend_float(BlendMode mode, img::Format format, const Vec4& src_in, const Vec4& dst,
                  ir::Rounding rounding) {
@@ -24,12 +49,7 @@ Vec4 blend_float(BlendMode mode, img::Format format, const Vec4& src_in, const V
   Vec4 out;
   const float a = src[3];
   for (int c = 0; c < 4; ++c) {
-    switch (mode) {
-    case BlendMode::Replace: out[c] = src[c]; break;
-    case BlendMode::OneOne: out[c] = src[c] + dst[c]; break;
-    case BlendMode::SrcAlphaOne: out[c] = src[c] * a + dst[c]; break;
-    case BlendMode::SrcAlphaInvSrcAlpha: out[c] = src[c] * a + dst[c] * (1.0f - a); break;
-    }
+    out[c] = blend_equation(mode, src[c], a, dst[c]);
     out[c] = format == img::Format::RGBA16F && rounding == ir::Rounding::Llvmpipe
                  ? img::half_toward_zero(out[c])
                  : img::quantize(format, out[c]);
@@ -83,4 +103,32 @@ Vec4 blend_and_store(BlendMode mode, img::Format format, const Vec4& src, const 
   return blend_float(mode, format, src, dst, rounding);
 }
 
+namespace detail {
+
+void store_block(BlendMode mode, img::Format format, ir::Rounding rounding, const LaneVec4& src,
+                 const std::array<bool, kBlockLanes>& discarded, const int64_t* x, int n,
+                 float* row) {
+  if (format == img::Format::RGBA32F) {
+    switch (mode) {
+    case BlendMode::Replace:
+      return store_block_float32<BlendMode::Replace>(src, discarded, x, n, row);
+    case BlendMode::OneOne:
+      return store_block_float32<BlendMode::OneOne>(src, discarded, x, n, row);
+    case BlendMode::SrcAlphaOne:
+      return store_block_float32<BlendMode::SrcAlphaOne>(src, discarded, x, n, row);
+    case BlendMode::SrcAlphaInvSrcAlpha:
+      return store_block_float32<BlendMode::SrcAlphaInvSrcAlpha>(src, discarded, x, n, row);
+    }
+  }
+  for (int l = 0; l < n; ++l) {
+    if (discarded[static_cast<size_t>(l)]) continue;
+    float* p = row + 4 * x[l];
+    const Vec4 v =
+        blend_and_store(mode, format, {src.c[0][l], src.c[1][l], src.c[2][l], src.c[3][l]},
+                        {p[0], p[1], p[2], p[3]}, rounding);
+    std::copy(v.begin(), v.end(), p);
+  }
+}
+
+} // namespace detail
 } // namespace tierlift::cpu

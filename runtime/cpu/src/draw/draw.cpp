@@ -13,33 +13,15 @@ namespace tierlift::cpu {
 namespace {
 
 using detail::PixelRect;
+using detail::RasterJob;
 using detail::Triangle;
+using detail::WorkerStats;
 
 constexpr int64_t kBandRows = 4;     // rows a worker takes at a time
 constexpr int64_t kMaxWorkers = 256; // --threads 100000 must not start 100000 threads
 
-float clamp01(float v) {
-  return v > 0 ? (v < 1 ? v : 1) : 0;
-}
-
 struct PassPrograms {
   std::optional<ShaderVM> vs, ps;
-};
-
-// Everything the workers share, read-only except the target pixels they own.
-struct RasterJob {
-  const Pass& pass;
-  const std::vector<Triangle>& triangles;
-  const ShaderVM* ps;
-  bool constant_inputs;
-  int64_t sample_offset;
-  PixelRect scissor;
-  img::Image& target;
-  BoundTextures textures;
-};
-
-struct WorkerStats {
-  uint64_t shaded = 0, killed = 0;
 };
 
 void shade_pixel(const RasterJob& job, const PixelInput& in, int64_t x, int64_t y,
@@ -63,7 +45,7 @@ void shade_pixel(const RasterJob& job, const PixelInput& in, int64_t x, int64_t 
 void raster_rows(const RasterJob& job, int64_t y0, int64_t y1, WorkerStats& stats) {
   PixelInput constant = job.pass.constant_inputs;
   for (auto& c : constant.color)
-    for (auto& v : c) v = clamp01(v);
+    for (auto& v : c) v = detail::clamp01(v);
   for (const Triangle& t : job.triangles) {
     int64_t ya = std::max(y0, t.bounds.y0), yb = std::min(y1, t.bounds.y1);
     for (int64_t y = ya; y < yb; ++y) {
@@ -125,9 +107,13 @@ DrawStats draw(const Pass& pass, img::Image& target, unsigned threads) {
   }
 
   PassPrograms vms;
+  std::unique_ptr<PixelBlockVM> block;
   try {
     if (pass.vertex_program) vms.vs.emplace(*pass.vertex_program, pass.conventions);
     if (pass.pixel_program) vms.ps.emplace(*pass.pixel_program, pass.conventions);
+    if (pass.pixel_program && pass.executor == Executor::Auto)
+      block = PixelBlockVM::create(*pass.pixel_program, pass.conventions, pass.ps_constants,
+                                   /*coords_2d=*/true); // BoundTextures reads u, v only
   } catch (const std::exception& e) {
     stats.ok = false;
     stats.error = std::string("the shader VM refused the program: ") + e.what();
@@ -174,6 +160,7 @@ DrawStats draw(const Pass& pass, img::Image& target, unsigned threads) {
   RasterJob job{pass,
                 setup,
                 vms.ps ? &*vms.ps : nullptr,
+                block.get(),
                 constant_inputs,
                 offset,
                 scissor,
@@ -183,14 +170,30 @@ DrawStats draw(const Pass& pass, img::Image& target, unsigned threads) {
   const int64_t bands = (scissor.y1 - scissor.y0 + kBandRows - 1) / kBandRows;
   unsigned workers = threads ? threads : std::max(1u, std::thread::hardware_concurrency());
   workers = static_cast<unsigned>(std::min<int64_t>({workers, bands, kMaxWorkers}));
+  // Each worker's block state is allocated here, before any pixel is written: once the
+  // workers run nothing allocates or throws, so a draw fails only before it touches the target.
+  std::vector<std::unique_ptr<detail::BlockWorker>> block_workers(workers);
+  try {
+    if (job.block)
+      for (auto& bw : block_workers) bw = std::make_unique<detail::BlockWorker>(*job.block, job);
+  } catch (const std::exception& e) {
+    stats.ok = false;
+    stats.error = std::string("draw failed: ") + e.what();
+    return stats;
+  }
   std::atomic<int64_t> next{0};
   std::mutex mutex;
   std::string failure;
-  auto work = [&](WorkerStats& ws) {
+  auto work = [&](unsigned index, WorkerStats& ws) {
     try {
+      detail::BlockWorker* bw = block_workers[index].get();
       for (int64_t b = next++; b < bands; b = next++) {
         int64_t y0 = scissor.y0 + b * kBandRows;
-        raster_rows(job, y0, std::min(scissor.y1, y0 + kBandRows), ws);
+        const int64_t y1 = std::min(scissor.y1, y0 + kBandRows);
+        if (bw)
+          detail::raster_rows_block(job, y0, y1, *bw, ws);
+        else
+          raster_rows(job, y0, y1, ws);
       }
     } catch (const std::exception& e) { // never let an exception cross a thread boundary
       std::lock_guard lock(mutex);
@@ -199,16 +202,24 @@ DrawStats draw(const Pass& pass, img::Image& target, unsigned threads) {
     }
   };
   std::vector<WorkerStats> per(workers);
-  if (workers <= 1) {
-    work(per[0]);
-  } else {
+  {
+    // This thread is worker 0. A thread that cannot be started leaves its bands to the
+    // others (the counter hands out whatever is left).
     std::vector<std::thread> pool;
-    for (unsigned i = 0; i < workers; ++i) pool.emplace_back(work, std::ref(per[i]));
+    for (unsigned i = 1; i < workers; ++i) {
+      try {
+        pool.emplace_back(work, i, std::ref(per[i]));
+      } catch (const std::exception&) {
+        break;
+      }
+    }
+    work(0, per[0]);
     for (auto& th : pool) th.join();
   }
   for (const auto& w : per) {
     stats.pixels_shaded += w.shaded;
     stats.pixels_killed += w.killed;
+    stats.pixels_block += w.block;
   }
   if (!failure.empty()) {
     stats.ok = false;

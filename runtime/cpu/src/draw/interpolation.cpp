@@ -21,16 +21,14 @@
 //   where w_ij is the 1/w plane evaluated the same way.
 // The planes are invariant under swapping vertices 1 and 2 (each product changes sign twice),
 // so only the first vertex has to be lavapipe's first vertex.
+#include <algorithm>
 #include <cmath>
 
 #include "raster.h"
+#include "tierlift/ir/numerics.h"
 
 namespace tierlift::cpu::detail {
 namespace {
-
-float clamp01(float v) {
-  return v > 0 ? (v < 1 ? v : 1) : 0;
-} // NaN → 0
 
 // The triangle's shared terms of llvmpipe's setup.
 struct SetupTerms {
@@ -61,16 +59,15 @@ Plane plane(const SetupTerms& s, float a0, float a1, float a2) {
   if (!std::isfinite(a0) && (a0 == a1 || (std::isnan(a0) && std::isnan(a1))) &&
       (a0 == a2 || (std::isnan(a0) && std::isnan(a2))))
     return Plane{a0, 0, 0};
-  const float da01 = a0 - a1, da20 = a2 - a0;
+  a0 = ftz(a0);
+  a1 = ftz(a1);
+  a2 = ftz(a2);
+  const float da01 = ftz(a0 - a1), da20 = ftz(a2 - a0);
   Plane p;
-  p.dadx = da01 * s.dy20o - da20 * s.dy01o;
-  p.dady = da20 * s.dx01o - da01 * s.dx20o;
-  p.a0 = a0 - (p.dadx * s.x0c + p.dady * s.y0c);
+  p.dadx = ftz(ftz(da01 * s.dy20o) - ftz(da20 * s.dy01o));
+  p.dady = ftz(ftz(da20 * s.dx01o) - ftz(da01 * s.dx20o));
+  p.a0 = ftz(a0 - ftz(ftz(p.dadx * s.x0c) + ftz(p.dady * s.y0c)));
   return p;
-}
-
-float eval(const Plane& p, float x, float y) {
-  return std::fma(p.dady, y, std::fma(p.dadx, x, p.a0));
 }
 
 bool all_positive_zero(const Vec4& a, const Vec4& b, const Vec4& c) {
@@ -116,10 +113,10 @@ PixelInput interpolate_llvmpipe(const Triangle& t, int64_t x, int64_t y) {
   const float oow = 1.0f / eval(p.oow, fx, fy);
   for (size_t r = 0; r < in.color.size(); ++r)
     if (!p.color_zero[r])
-      for (int c = 0; c < 4; ++c) in.color[r][c] = clamp01(eval(p.color[r][c], fx, fy) * oow);
+      for (int c = 0; c < 4; ++c) in.color[r][c] = clamp01(perspective(p.color[r][c], fx, fy, oow));
   for (size_t r = 0; r < in.tex.size(); ++r)
     if (!p.tex_zero[r])
-      for (int c = 0; c < 4; ++c) in.tex[r][c] = eval(p.tex[r][c], fx, fy) * oow;
+      for (int c = 0; c < 4; ++c) in.tex[r][c] = perspective(p.tex[r][c], fx, fy, oow);
   return in;
 }
 
@@ -133,14 +130,15 @@ void setup_planes(Triangle& t) {
   for (size_t r = 0; r < p.color.size(); ++r) {
     p.color_zero[r] = all_positive_zero(v0.out.color[r], v1.out.color[r], v2.out.color[r]);
     for (int c = 0; c < 4; ++c)
-      p.color[r][c] = plane(s, v0.out.color[r][c] * v0.oow, v1.out.color[r][c] * v1.oow,
-                            v2.out.color[r][c] * v2.oow);
+      p.color[r][c] =
+          plane(s, ftz(ftz(v0.out.color[r][c]) * v0.oow), ftz(ftz(v1.out.color[r][c]) * v1.oow),
+                ftz(ftz(v2.out.color[r][c]) * v2.oow));
   }
   for (size_t r = 0; r < p.tex.size(); ++r) {
     p.tex_zero[r] = all_positive_zero(v0.out.tex[r], v1.out.tex[r], v2.out.tex[r]);
     for (int c = 0; c < 4; ++c)
-      p.tex[r][c] =
-          plane(s, v0.out.tex[r][c] * v0.oow, v1.out.tex[r][c] * v1.oow, v2.out.tex[r][c] * v2.oow);
+      p.tex[r][c] = plane(s, ftz(ftz(v0.out.tex[r][c]) * v0.oow),
+                          ftz(ftz(v1.out.tex[r][c]) * v1.oow), ftz(ftz(v2.out.tex[r][c]) * v2.oow));
   }
 }
 
@@ -152,6 +150,100 @@ PixelInput interpolate(const Triangle& t, const int64_t e[3], int64_t x, int64_t
   for (int k = 0; k < 3; ++k) z += static_cast<double>(e[k]) / area * t.v[k].z;
   in.depth = static_cast<float>(z);
   return in;
+}
+
+namespace {
+
+// interpolate_llvmpipe, one channel across all the lanes at a time (lanes past the block's
+// count compute values nobody reads). Inlined into two functions: one built for AVX2 + FMA,
+// where std::fma becomes one vector instruction, and the baseline one, where it is a call
+// into libm; both round exactly once per fma, so they agree bit for bit.
+[[gnu::always_inline]] inline void llvmpipe_lanes_body(const Triangle& t, const int64_t* x,
+                                                       int64_t y, uint8_t color_reads,
+                                                       uint32_t tex_components,
+                                                       PixelBlockInput& in) {
+  const AttributePlanes& p = t.planes;
+  const float fy = static_cast<float>(y);
+  float fx[kBlockLanes], oow[kBlockLanes];
+  const Plane w = p.oow;
+#pragma GCC unroll 1
+  for (int l = 0; l < kBlockLanes; ++l) {
+    fx[l] = static_cast<float>(x[l]);
+    oow[l] = 1.0f / eval(w, fx[l], fy);
+  }
+  for (size_t r = 0; r < 2; ++r) {
+    if (!(color_reads & (1u << r))) continue;
+    for (int c = 0; c < 4; ++c) {
+      float* out = in.color[r].c[c];
+      if (p.color_zero[r]) {
+        std::fill(out, out + kBlockLanes, 0.0f);
+        continue;
+      }
+      const Plane pl = p.color[r][c]; // a copy: no store to `out` can change it
+#pragma GCC unroll 1
+      for (int l = 0; l < kBlockLanes; ++l) out[l] = clamp01(perspective(pl, fx[l], fy, oow[l]));
+    }
+  }
+  for (size_t r = 0; r < 8; ++r) {
+    for (int c = 0; c < 4; ++c) {
+      if (!(tex_components & (1u << (4 * r + c)))) continue;
+      float* out = in.tex[r].c[c];
+      if (p.tex_zero[r]) {
+        std::fill(out, out + kBlockLanes, 0.0f);
+        continue;
+      }
+      const Plane pl = p.tex[r][c];
+#pragma GCC unroll 1
+      for (int l = 0; l < kBlockLanes; ++l) out[l] = perspective(pl, fx[l], fy, oow[l]);
+    }
+  }
+}
+
+void llvmpipe_lanes(const Triangle& t, const int64_t* x, int64_t y, uint8_t color_reads,
+                    uint32_t tex_components, PixelBlockInput& in) {
+  llvmpipe_lanes_body(t, x, y, color_reads, tex_components, in);
+}
+
+#if defined(__x86_64__) && defined(__GNUC__)
+[[gnu::target("avx2,fma")]] void llvmpipe_lanes_fma(const Triangle& t, const int64_t* x, int64_t y,
+                                                    uint8_t color_reads, uint32_t tex_components,
+                                                    PixelBlockInput& in) {
+  llvmpipe_lanes_body(t, x, y, color_reads, tex_components, in);
+}
+bool fma_hardware() {
+  static const bool yes = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  return yes;
+}
+#else
+void llvmpipe_lanes_fma(const Triangle& t, const int64_t* x, int64_t y, uint8_t color_reads,
+                        uint32_t tex_components, PixelBlockInput& in) {
+  llvmpipe_lanes_body(t, x, y, color_reads, tex_components, in);
+}
+bool fma_hardware() {
+  return false;
+}
+#endif
+
+} // namespace
+
+void interpolate_block(const Triangle& t, const int64_t (*e)[3], const int64_t* x, int64_t y, int n,
+                       uint8_t color_reads, uint32_t tex_components, PixelBlockInput& in) {
+  if (!t.llvmpipe) {
+    for (int l = 0; l < n; ++l) {
+      const PixelInput p = interpolate(t, e[l], x[l], y);
+      for (int r = 0; r < 2; ++r)
+        if (color_reads & (1u << r))
+          for (int c = 0; c < 4; ++c) in.color[r].c[c][l] = p.color[r][c];
+      for (int r = 0; r < 8; ++r)
+        for (int c = 0; c < 4; ++c)
+          if (tex_components & (1u << (4 * r + c))) in.tex[r].c[c][l] = p.tex[r][c];
+    }
+    return;
+  }
+  if (fma_hardware())
+    llvmpipe_lanes_fma(t, x, y, color_reads, tex_components, in);
+  else
+    llvmpipe_lanes(t, x, y, color_reads, tex_components, in);
 }
 
 } // namespace tierlift::cpu::detail

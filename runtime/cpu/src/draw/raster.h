@@ -2,10 +2,14 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "tierlift/cpu/draw.h"
+#include "tierlift/cpu/pixel_block.h"
+#include "tierlift/ir/numerics.h"
 
 namespace tierlift::cpu::detail {
 
@@ -67,6 +71,71 @@ int64_t sample_offset(const ir::Conventions& conventions);
 // point (all ≥ 0 inside), (x, y) its pixel index.
 void setup_planes(Triangle& t);
 PixelInput interpolate(const Triangle& t, const int64_t e[3], int64_t x, int64_t y);
+
+// llvmpipe runs setup and interpolation with the x86 DAZ and FTZ bits set: every operand and
+// result below 2^-126 is a zero of its sign (NUMERICS.md rule 13, measured in
+// tests/vulkan/denormals_test.cpp). ftz() is the identity on every other value.
+inline float ftz(float x) {
+  return ir::numerics::flush_denormal(x);
+}
+
+// Rounding::Llvmpipe's evaluation of a plane at pixel (x, y) (see interpolation.cpp). The
+// per-pixel and the block interpolation both call it and perspective(), so they agree bit for bit.
+inline float eval(const Plane& p, float x, float y) {
+  return ftz(std::fma(p.dady, y, ftz(std::fma(p.dadx, x, p.a0))));
+}
+
+// One perspective-corrected channel: the plane's value times 1/w at the pixel, flushed.
+inline float perspective(const Plane& p, float x, float y, float oow) {
+  return ftz(eval(p, x, y) * oow);
+}
+
+inline float clamp01(float v) {
+  return v > 0 ? (v < 1 ? v : 1) : 0;
+} // NaN → 0
+
+// Everything the workers share, read-only except the target pixels they own.
+struct RasterJob {
+  const Pass& pass;
+  const std::vector<Triangle>& triangles;
+  const ShaderVM* ps;
+  const PixelBlockVM* block; // set: the pixel stage runs on the block executor
+  bool constant_inputs;
+  int64_t sample_offset;
+  PixelRect scissor;
+  img::Image& target;
+  BoundTextures textures;
+};
+
+struct WorkerStats {
+  uint64_t shaded = 0, killed = 0, block = 0;
+};
+
+// One worker's state for the block executor (raster_block.cpp).
+struct BlockWorker {
+  BlockWorker(const PixelBlockVM& vm, const RasterJob& job);
+  std::unique_ptr<PixelBlockVM::Scratch, void (*)(PixelBlockVM::Scratch*)> scratch;
+  PixelBlockInput in;
+  PixelBlockOutput out;
+  int64_t x[kBlockLanes]{};
+  int64_t e[kBlockLanes][3]{};
+};
+
+// Rows [y0, y1) of every triangle, in primitive order, kBlockLanes covered pixels of a row at a
+// time through job.block; the same pixels and values as the per-pixel path.
+void raster_rows_block(const RasterJob& job, int64_t y0, int64_t y1, BlockWorker& w,
+                       WorkerStats& stats);
+
+// blend_and_store for lanes 0..n−1 of a block on one row (`row`: the target's row, pixel x[l]
+// at row + 4·x[l]), discarded lanes left alone; RGBA32F targets take an inlined loop.
+void store_block(BlendMode mode, img::Format format, ir::Rounding rounding, const LaneVec4& src,
+                 const std::array<bool, kBlockLanes>& discarded, const int64_t* x, int n,
+                 float* row);
+
+// The inputs `reads` names (bits 0–1 colours, 8–15 texture coordinates) of n pixels (x[l], y)
+// into lanes 0..n−1, bit-identical to interpolate().
+void interpolate_block(const Triangle& t, const int64_t (*e)[3], const int64_t* x, int64_t y, int n,
+                       uint8_t color_reads, uint32_t tex_components, PixelBlockInput& in);
 
 // Edge function of edge a→b at point (px, py), all in 1/256 pixel.
 inline int64_t edge(const ScreenVertex& a, const ScreenVertex& b, int64_t px, int64_t py) {

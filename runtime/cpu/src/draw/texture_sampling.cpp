@@ -1,6 +1,7 @@
 // Point and bilinear sampling on the integer texel grid (d3d9-isa.md §10.1, §10.2).
 #include <cmath>
 
+#include "sampling_rules.h"
 #include "tierlift/cpu/texture.h"
 
 namespace tierlift::cpu {
@@ -13,16 +14,6 @@ int64_t mod_floor(int64_t a, int64_t n) {
 }
 int64_t mirror(int64_t n) {
   return n >= 0 ? n : -(1 + n);
-}
-
-// Texel-space coordinate u·N as a double (exact: a float times an integer ≤ 2^14 fits in
-// 53 bits), so bilinear weights are exact before sub-texel quantisation. Clamped far outside any
-// address-mode period so the int64 conversion is defined; NaN becomes 0.
-double texel_space(float u, uint32_t n) {
-  double x = static_cast<double>(u) * n;
-  if (std::isnan(x)) return 0.0;
-  constexpr double kLimit = 1099511627776.0; // 2^40
-  return x < -kLimit ? -kLimit : (x > kLimit ? kLimit : x);
 }
 
 // Texel (i, j) after addressing (indices from address_texel); border colour when either
@@ -66,20 +57,15 @@ double quantize_fraction(double alpha, int subtexel_bits) {
 Vec4 sample_texture(const img::Image& image, const SamplerState& sampler, float u, float v,
                     int subtexel_bits) {
   if (image.width == 0 || image.height == 0) return {0, 0, 0, 1};
-  double x = texel_space(u, image.width);
-  double y = texel_space(v, image.height);
   if (sampler.filter == Filter::Point) {
-    // i = floor(u·N) with the product rounded to float, as a GPU's fp32 multiply rounds it:
-    // u = float(i/N), a texel corner that float cannot hold exactly, then still selects
-    // texel i rather than i − 1 whenever float(i/N)·N rounds back to i.
-    int64_t i = static_cast<int64_t>(std::floor(static_cast<float>(x)));
-    int64_t j = static_cast<int64_t>(std::floor(static_cast<float>(y)));
+    const int64_t i = detail::point_texel(u, image.width);
+    const int64_t j = detail::point_texel(v, image.height);
     return fetch(image, sampler, address_texel(sampler.address_u, i, image.width),
                  address_texel(sampler.address_v, j, image.height));
   }
 
-  x -= 0.5;
-  y -= 0.5;
+  double x = detail::texel_space(u, image.width) - 0.5;
+  double y = detail::texel_space(v, image.height) - 0.5;
   double fx = std::floor(x), fy = std::floor(y);
   double a = quantize_fraction(x - fx, subtexel_bits);
   double b = quantize_fraction(y - fy, subtexel_bits);

@@ -7,38 +7,11 @@
 // corners and arbitrary offsets) is what makes the two devices agree.
 #include <cmath>
 
+#include "sampling_rules.h"
 #include "tierlift/cpu/texture.h"
 
 namespace tierlift::cpu {
 namespace {
-
-struct Axis {
-  int64_t i0 = 0; // left (top) texel before addressing
-  float alpha = 0;
-};
-
-Axis linear_axis(float u, uint32_t n, AddressMode mode, int subtexel_bits) {
-  const float size = static_cast<float>(n);
-  float x = u * size;
-  if (mode == AddressMode::Clamp) {
-    // llvmpipe clamps the coordinate, not the index: min(u·N, N) with NaN → N, then − 0.5,
-    // then max(·, 0). The result lies in [0, N − 0.5], so the conversion below is defined.
-    x = x < size ? x : size;
-    x = x - 0.5f;
-    x = x > 0 ? x : 0;
-  } else {
-    x = x - 0.5f;
-    constexpr float kLimit = 1099511627776.0f; // 2^40: far outside any address period
-    if (std::isnan(x)) x = 0;
-    x = x < -kLimit ? -kLimit : (x > kLimit ? kLimit : x);
-  }
-  const float f = std::floor(x);
-  Axis a;
-  a.i0 = static_cast<int64_t>(f);
-  a.alpha = x - f; // exact (Sterbenz)
-  if (subtexel_bits > 0) a.alpha = static_cast<float>(quantize_fraction(a.alpha, subtexel_bits));
-  return a;
-}
 
 Vec4 fetch(const img::Image& image, const SamplerState& s, const std::optional<int64_t>& i,
            const std::optional<int64_t>& j) {
@@ -47,19 +20,16 @@ Vec4 fetch(const img::Image& image, const SamplerState& s, const std::optional<i
   return {p[0], p[1], p[2], p[3]};
 }
 
-// llvmpipe's lerp: v0 + α·(v1 − v0) as one fused multiply-add.
-float lerp(float alpha, float v0, float v1) {
-  return std::fma(alpha, v1 - v0, v0);
-}
-
 } // namespace
 
 Vec4 sample_texture_llvmpipe(const img::Image& image, const SamplerState& sampler, float u, float v,
                              int subtexel_bits) {
   if (image.width == 0 || image.height == 0 || sampler.filter == Filter::Point)
     return sample_texture(image, sampler, u, v, subtexel_bits);
-  const Axis x = linear_axis(u, image.width, sampler.address_u, subtexel_bits);
-  const Axis y = linear_axis(v, image.height, sampler.address_v, subtexel_bits);
+  const detail::LinearAxis x =
+      detail::llvmpipe_linear_axis(u, image.width, sampler.address_u, subtexel_bits);
+  const detail::LinearAxis y =
+      detail::llvmpipe_linear_axis(v, image.height, sampler.address_v, subtexel_bits);
   const auto u0 = address_texel(sampler.address_u, x.i0, image.width);
   const auto u1 = address_texel(sampler.address_u, x.i0 + 1, image.width);
   const auto v0 = address_texel(sampler.address_v, y.i0, image.height);
@@ -68,7 +38,8 @@ Vec4 sample_texture_llvmpipe(const img::Image& image, const SamplerState& sample
   const Vec4 t01 = fetch(image, sampler, u0, v1), t11 = fetch(image, sampler, u1, v1);
   Vec4 out;
   for (int c = 0; c < 4; ++c)
-    out[c] = lerp(y.alpha, lerp(x.alpha, t00[c], t10[c]), lerp(x.alpha, t01[c], t11[c]));
+    out[c] = detail::llvmpipe_lerp(y.alpha, detail::llvmpipe_lerp(x.alpha, t00[c], t10[c]),
+                                   detail::llvmpipe_lerp(x.alpha, t01[c], t11[c]));
   return out;
 }
 

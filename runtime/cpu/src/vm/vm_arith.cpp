@@ -2,7 +2,8 @@
 // indexed by ir::Opcode. Each one only computes; the executor fetches every source first
 // and stores afterwards, which gives matrix macros and co-issued pairs their
 // read-before-write semantics (d3d9-isa.md §4.6, §5.1). Every numeric rule comes from
-// ir/numerics.h.
+// ir/numerics.h; each compute function exists twice, once per denormal mode
+// (NUMERICS.md rule 13), and the table of the program's mode is chosen at preparation.
 #include <array>
 #include <cmath>
 
@@ -13,6 +14,7 @@ namespace tierlift::cpu::vm {
 
 namespace num = ir::numerics;
 using ir::Opcode;
+using num::Denormals;
 
 namespace {
 
@@ -36,6 +38,7 @@ template <typename F> inline Vec4 each(const Vec4& a, const Vec4& b, const Vec4&
 
 // Every compute function has the same signature; most use only some of the parameters.
 #define VM_OP(name)                                                                                \
+  template <Denormals D>                                                                           \
   void name([[maybe_unused]] const Step& st, [[maybe_unused]] const Vec4* s,                       \
             [[maybe_unused]] Vec4& d, [[maybe_unused]] Invocation& inv)
 
@@ -44,101 +47,102 @@ VM_OP(op_mov) {
   d = s[0];
 }
 VM_OP(op_add) {
-  d = each(s[0], s[1], [](float a, float b) { return a + b; });
+  d = each(s[0], s[1], num::legacy_add<D>);
 }
 VM_OP(op_sub) {
-  d = each(s[0], s[1], [](float a, float b) { return a - b; });
+  d = each(s[0], s[1], num::legacy_sub<D>);
 }
 VM_OP(op_mul) {
-  d = each(s[0], s[1], num::legacy_mul);
+  d = each(s[0], s[1], num::legacy_mul<D>);
 }
 VM_OP(op_mad) {
-  d = each(s[0], s[1], s[2], num::legacy_mad);
+  d = each(s[0], s[1], s[2], num::legacy_mad<D>);
 }
 VM_OP(op_dp3) {
-  d = splat(num::legacy_dp3(s[0].data(), s[1].data()));
+  d = splat(num::legacy_dp3<D>(s[0].data(), s[1].data()));
 }
 VM_OP(op_dp4) {
-  d = splat(num::legacy_dp4(s[0].data(), s[1].data()));
+  d = splat(num::legacy_dp4<D>(s[0].data(), s[1].data()));
 }
 VM_OP(op_min) {
-  d = each(s[0], s[1], num::legacy_min);
+  d = each(s[0], s[1], num::legacy_min<D>);
 }
 VM_OP(op_max) {
-  d = each(s[0], s[1], num::legacy_max);
+  d = each(s[0], s[1], num::legacy_max<D>);
 }
 VM_OP(op_slt) {
-  d = each(s[0], s[1], num::legacy_slt);
+  d = each(s[0], s[1], num::legacy_slt<D>);
 }
 VM_OP(op_sge) {
-  d = each(s[0], s[1], num::legacy_sge);
+  d = each(s[0], s[1], num::legacy_sge<D>);
 }
 VM_OP(op_rcp) {
-  d = splat(num::legacy_rcp(sc(s[0])));
+  d = splat(num::legacy_rcp<D>(sc(s[0])));
 }
 VM_OP(op_rsq) {
-  d = splat(num::legacy_rsq(sc(s[0])));
+  d = splat(num::legacy_rsq<D>(sc(s[0])));
 }
 VM_OP(op_exp) {
-  d = splat(num::legacy_exp(sc(s[0])));
+  d = splat(num::legacy_exp<D>(sc(s[0])));
 }
 VM_OP(op_log) {
-  d = splat(num::legacy_log(sc(s[0])));
+  d = splat(num::legacy_log<D>(sc(s[0])));
 }
 VM_OP(op_pow) {
-  d = splat(num::legacy_pow(sc(s[0]), sc(s[1])));
+  d = splat(num::legacy_pow<D>(sc(s[0]), sc(s[1])));
 }
 VM_OP(op_abs) {
   d = each(s[0], [](float a) { return std::fabs(a); });
 }
 VM_OP(op_frc) {
-  d = each(s[0], num::legacy_frc);
+  d = each(s[0], num::legacy_frc<D>);
 }
 VM_OP(op_sgn) {
-  d = each(s[0], num::legacy_sgn);
+  d = each(s[0], num::legacy_sgn<D>);
 }
 VM_OP(op_lrp) {
-  d = each(s[0], s[1], s[2], num::legacy_lrp);
+  d = each(s[0], s[1], s[2], num::legacy_lrp<D>);
 }
 VM_OP(op_cmp) {
-  d = each(s[0], s[1], s[2], num::legacy_cmp);
+  d = each(s[0], s[1], s[2], num::legacy_cmp<D>);
 }
 
 // cnd: ps_1_1–1_3 compare r0.a (the validator requires src0 = r0.a, a replicate swizzle,
 // so every component of s[0] already holds it); ps_1_4 compares per component.
 VM_OP(op_cnd) {
-  d = each(s[0], s[1], s[2], num::legacy_cnd);
+  d = each(s[0], s[1], s[2], num::legacy_cnd<D>);
 }
 
 VM_OP(op_lit) {
-  num::LitResult r = num::legacy_lit(s[0][0], s[0][1], s[0][3]);
+  num::LitResult r = num::legacy_lit<D>(s[0][0], s[0][1], s[0][3]);
   d = {r.x, r.y, r.z, r.w};
 }
 
 VM_OP(op_dst) {
-  d = {1.0f, num::legacy_mul(s[0][1], s[1][1]), s[0][2], s[1][3]};
+  d = {1.0f, num::legacy_mul<D>(s[0][1], s[1][1]), s[0][2], s[1][3]};
 }
 
 VM_OP(op_crs) {
   const Vec4 &a = s[0], &b = s[1];
-  auto m = num::legacy_mul;
-  d = {m(a[1], b[2]) - m(a[2], b[1]), m(a[2], b[0]) - m(a[0], b[2]), m(a[0], b[1]) - m(a[1], b[0]),
-       0.0f};
+  auto m = num::legacy_mul<D>;
+  auto sub = num::legacy_sub<D>;
+  d = {sub(m(a[1], b[2]), m(a[2], b[1])), sub(m(a[2], b[0]), m(a[0], b[2])),
+       sub(m(a[0], b[1]), m(a[1], b[0])), 0.0f};
 }
 
 VM_OP(op_nrm) {
-  float f = num::legacy_nrm_scale(num::legacy_dp3(s[0].data(), s[0].data()));
-  d = each(s[0], [f](float a) { return num::legacy_mul(a, f); });
+  float f = num::legacy_nrm_scale<D>(num::legacy_dp3<D>(s[0].data(), s[0].data()));
+  d = each(s[0], [f](float a) { return num::legacy_mul<D>(a, f); });
 }
 
 // sincos: d.x = cos, d.y = sin; the mask was limited to .xy at preparation.
 VM_OP(op_sincos) {
   float a = sc(s[0]);
-  d = {std::cos(a), std::sin(a), 0.0f, 0.0f};
+  d = {num::legacy_cos<D>(a), num::legacy_sin<D>(a), 0.0f, 0.0f};
 }
 
 VM_OP(op_dp2add) {
-  d = splat(num::legacy_dp2(s[0].data(), s[1].data()) + sc(s[2]));
+  d = splat(num::legacy_add<D>(num::legacy_dp2<D>(s[0].data(), s[1].data()), sc(s[2])));
 }
 
 // expp: vs_1_1 is the D3D8 vector macro (2^floor(v), v − floor(v), 2^v, 1); vs_2_0 is
@@ -146,84 +150,86 @@ VM_OP(op_dp2add) {
 VM_OP(op_expp) {
   float v = sc(s[0]);
   if (!inv.prog->vs11) {
-    d = splat(num::legacy_exp(v));
+    d = splat(num::legacy_exp<D>(v));
     return;
   }
-  float fl = std::floor(v);
-  d = {num::legacy_exp(fl), v - fl, num::legacy_exp(v), 1.0f};
+  float fl = num::legacy_floor<D>(v);
+  d = {num::legacy_exp<D>(fl), num::legacy_sub<D>(v, fl), num::legacy_exp<D>(v), 1.0f};
 }
 
 // logp: the D3D9 docs define it, in every version, as the scalar log of |v|.
 VM_OP(op_logp) {
-  d = splat(num::legacy_log(sc(s[0])));
+  d = splat(num::legacy_log<D>(sc(s[0])));
 }
 
 // Matrix macros: d[i] = dot(src0, row i); rows were fetched into s[1..rows].
 VM_OP(op_m4) {
   d = {0, 0, 0, 0};
-  for (int i = 0; i < st.rows; ++i) d[i] = num::legacy_dp4(s[0].data(), s[1 + i].data());
+  for (int i = 0; i < st.rows; ++i) d[i] = num::legacy_dp4<D>(s[0].data(), s[1 + i].data());
 }
 VM_OP(op_m3) {
   d = {0, 0, 0, 0};
-  for (int i = 0; i < st.rows; ++i) d[i] = num::legacy_dp3(s[0].data(), s[1 + i].data());
+  for (int i = 0; i < st.rows; ++i) d[i] = num::legacy_dp3<D>(s[0].data(), s[1 + i].data());
 }
 
 // bem (ps_1_4): the bump matrix of the stage named by the destination register.
 VM_OP(op_bem) {
   StageState ss = inv.tex ? inv.tex->stage_state(static_cast<uint32_t>(st.aux)) : StageState{};
   const auto& m = ss.bumpenv_mat; // M00, M01, M10, M11
-  auto mul = num::legacy_mul;
-  d = {s[0][0] + mul(m[0], s[1][0]) + mul(m[2], s[1][1]),
-       s[0][1] + mul(m[1], s[1][0]) + mul(m[3], s[1][1]), 0.0f, 0.0f};
+  auto mul = num::legacy_mul<D>;
+  auto add = num::legacy_add<D>;
+  d = {add(add(s[0][0], mul(m[0], s[1][0])), mul(m[2], s[1][1])),
+       add(add(s[0][1], mul(m[1], s[1][0])), mul(m[3], s[1][1])), 0.0f, 0.0f};
 }
 
 #undef VM_OP
 
-struct ComputeTable {
+template <Denormals D> struct ComputeTable {
   std::array<ComputeFn, ir::kOpcodeCount> fn{};
   constexpr ComputeTable() {
     auto set = [this](Opcode op, ComputeFn f) { fn[static_cast<int>(op)] = f; };
-    set(Opcode::Nop, op_nop);
-    set(Opcode::Mov, op_mov);
-    set(Opcode::Mova, op_mov); // the conversion happens at the store (DstKind::AddrRound)
-    set(Opcode::Add, op_add);
-    set(Opcode::Sub, op_sub);
-    set(Opcode::Mad, op_mad);
-    set(Opcode::Mul, op_mul);
-    set(Opcode::Rcp, op_rcp);
-    set(Opcode::Rsq, op_rsq);
-    set(Opcode::Dp3, op_dp3);
-    set(Opcode::Dp4, op_dp4);
-    set(Opcode::Min, op_min);
-    set(Opcode::Max, op_max);
-    set(Opcode::Slt, op_slt);
-    set(Opcode::Sge, op_sge);
-    set(Opcode::Exp, op_exp);
-    set(Opcode::Log, op_log);
-    set(Opcode::Lit, op_lit);
-    set(Opcode::Dst, op_dst);
-    set(Opcode::Lrp, op_lrp);
-    set(Opcode::Frc, op_frc);
-    set(Opcode::M4x4, op_m4);
-    set(Opcode::M4x3, op_m4);
-    set(Opcode::M3x4, op_m3);
-    set(Opcode::M3x3, op_m3);
-    set(Opcode::M3x2, op_m3);
-    set(Opcode::Pow, op_pow);
-    set(Opcode::Crs, op_crs);
-    set(Opcode::Sgn, op_sgn);
-    set(Opcode::Abs, op_abs);
-    set(Opcode::Nrm, op_nrm);
-    set(Opcode::SinCos, op_sincos);
-    set(Opcode::Expp, op_expp);
-    set(Opcode::Logp, op_logp);
-    set(Opcode::Cnd, op_cnd);
-    set(Opcode::Cmp, op_cmp);
-    set(Opcode::Bem, op_bem);
-    set(Opcode::Dp2Add, op_dp2add);
+    set(Opcode::Nop, op_nop<D>);
+    set(Opcode::Mov, op_mov<D>);
+    set(Opcode::Mova, op_mov<D>); // the conversion happens at the store (DstKind::AddrRound)
+    set(Opcode::Add, op_add<D>);
+    set(Opcode::Sub, op_sub<D>);
+    set(Opcode::Mad, op_mad<D>);
+    set(Opcode::Mul, op_mul<D>);
+    set(Opcode::Rcp, op_rcp<D>);
+    set(Opcode::Rsq, op_rsq<D>);
+    set(Opcode::Dp3, op_dp3<D>);
+    set(Opcode::Dp4, op_dp4<D>);
+    set(Opcode::Min, op_min<D>);
+    set(Opcode::Max, op_max<D>);
+    set(Opcode::Slt, op_slt<D>);
+    set(Opcode::Sge, op_sge<D>);
+    set(Opcode::Exp, op_exp<D>);
+    set(Opcode::Log, op_log<D>);
+    set(Opcode::Lit, op_lit<D>);
+    set(Opcode::Dst, op_dst<D>);
+    set(Opcode::Lrp, op_lrp<D>);
+    set(Opcode::Frc, op_frc<D>);
+    set(Opcode::M4x4, op_m4<D>);
+    set(Opcode::M4x3, op_m4<D>);
+    set(Opcode::M3x4, op_m3<D>);
+    set(Opcode::M3x3, op_m3<D>);
+    set(Opcode::M3x2, op_m3<D>);
+    set(Opcode::Pow, op_pow<D>);
+    set(Opcode::Crs, op_crs<D>);
+    set(Opcode::Sgn, op_sgn<D>);
+    set(Opcode::Abs, op_abs<D>);
+    set(Opcode::Nrm, op_nrm<D>);
+    set(Opcode::SinCos, op_sincos<D>);
+    set(Opcode::Expp, op_expp<D>);
+    set(Opcode::Logp, op_logp<D>);
+    set(Opcode::Cnd, op_cnd<D>);
+    set(Opcode::Cmp, op_cmp<D>);
+    set(Opcode::Bem, op_bem<D>);
+    set(Opcode::Dp2Add, op_dp2add<D>);
   }
 };
-constexpr ComputeTable kCompute;
+constexpr ComputeTable<Denormals::Keep> kComputeKeep;
+constexpr ComputeTable<Denormals::Flush> kComputeFlush;
 
 // Fetches every source of one arithmetic step (matrix rows included) into s.
 inline void fetch_all(const Step& st, Vec4* s, const Invocation& inv) {
@@ -245,8 +251,8 @@ inline void fetch_all(const Step& st, Vec4* s, const Invocation& inv) {
 
 } // namespace
 
-ComputeFn arith_compute(Opcode op) {
-  return kCompute.fn[static_cast<int>(op)];
+ComputeFn arith_compute(Opcode op, bool flush_denormals) {
+  return (flush_denormals ? kComputeFlush.fn : kComputeKeep.fn)[static_cast<int>(op)];
 }
 
 void exec_arith(const Step& st, Invocation& inv) {

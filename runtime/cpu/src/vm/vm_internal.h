@@ -9,6 +9,7 @@
 
 #include "tierlift/cpu/shader_vm.h"
 #include "tierlift/ir/conventions.h"
+#include "tierlift/ir/numerics.h"
 #include "tierlift/ir/program.h"
 
 namespace tierlift::cpu::vm {
@@ -64,6 +65,7 @@ struct DstDesc {
   bool range = false; // ps_1_x: clamp to ±max_value
   float max_value = 1.0f;
   int fixed_bits = 0;   // ps_1_x fixed-point emulation (0 = off)
+  bool flush = false;   // denormals flushed (NUMERICS.md rule 13, Rounding::Llvmpipe)
   uint16_t out_bit = 0; // output slots: bit in Invocation::out_written
   bool plain = false;   // register write with no shift, clamp, _sat or quantising
 };
@@ -99,6 +101,9 @@ struct Prepared {
   std::vector<std::optional<Vec4>> const_defs; // by c# index (for relative reads)
   int32_t const_limit = 0;                     // relative reads outside [0, limit) → 0
   bool ps1x = false;
+  // NUMERICS.md rule 13: Rounding::Llvmpipe flushes denormals in and out of every operation
+  // (numerics::Denormals::Flush) and loads def constants' denormals as zeros of their sign.
+  bool flush = false;
   bool ps11_13 = false;
   bool ps14 = false;
   bool vs11 = false;
@@ -140,21 +145,37 @@ void run(const Prepared& p, Invocation& inv);
 // (the VM runs per pixel) and fall back to the general functions otherwise.
 Vec4 fetch_general(const SrcDesc& s, const Invocation& inv);
 void store_general(const DstDesc& d, const Vec4& value, Invocation& inv);
+// What fetch_general does after the load (ps_1_x constant clamp, _dz/_dw, swizzle,
+// post-modifiers) under the program's denormal mode (NUMERICS.md rule 13): one definition for
+// the per-pixel and the block executor, instantiated for both modes in vm_operands.cpp.
+template <ir::numerics::Denormals D> Vec4 modify_src(const SrcDesc& s, Vec4 v);
 SrcDesc decode_src(const ir::SrcOperand& op, const Prepared& p);
 DstDesc decode_dst(const ir::DstOperand& op, const ir::InstrMods& mods, const Prepared& p);
 int flat_slot(ir::RegFile file, uint32_t index, ir::ShaderStage stage); // -1: not a slot
 Vec4 constant_value(int32_t index, const Invocation& inv);
 
 // vm_arith.cpp: the per-opcode compute table and the arithmetic executors.
-ComputeFn arith_compute(ir::Opcode op);
+ComputeFn arith_compute(ir::Opcode op, bool flush_denormals);
 void exec_arith(const Step& s, Invocation& inv);
 void exec_arith_pair(const Step& s, Invocation& inv);
 
 // vm_texture.cpp
-ExecFn texture_exec(ir::Opcode op);
+ExecFn texture_exec(ir::Opcode op, bool flush_denormals);
 
 // vm_flow.cpp
 ExecFn flow_exec(ir::Opcode op);
+
+// The store's per-component rule (shift, ps_1_x range clamp, _sat, fixed-point quantise), in
+// that order, under denormal mode D (d.flush picks it per program); shared by store_general
+// and the block executor.
+template <ir::numerics::Denormals D> inline float dst_transform(const DstDesc& d, float x) {
+  namespace num = ir::numerics;
+  if (d.scale != 1.0f) x = num::legacy_scale<D>(x, d.scale);
+  if (d.range) x = num::legacy_ps1x_range<D>(x, d.max_value);
+  if (d.sat) x = num::legacy_saturate<D>(x);
+  if (d.fixed_bits > 0) x = num::legacy_fixed_quantise<D>(x, d.fixed_bits, d.max_value);
+  return x;
+}
 
 inline Vec4 fetch(const SrcDesc& s, const Invocation& inv) {
   return s.simple ? inv.reg[s.slot] : fetch_general(s, inv);

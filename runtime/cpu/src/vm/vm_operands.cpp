@@ -12,6 +12,7 @@ namespace tierlift::cpu::vm {
 namespace num = ir::numerics;
 using ir::RegFile;
 using ir::SrcMod;
+using num::Denormals;
 
 int flat_slot(RegFile file, uint32_t index, ir::ShaderStage stage) {
   const bool vertex = stage == ir::ShaderStage::Vertex;
@@ -67,6 +68,7 @@ DstDesc decode_dst(const ir::DstOperand& op, const ir::InstrMods& mods, const Pr
   d.mask = op.mask & 0xF;
   d.sat = mods.sat;
   d.scale = std::ldexp(1.0f, mods.shift);
+  d.flush = p.flush;
   if (op.file == RegFile::Addr) {
     d.kind = p.vs11 ? DstKind::AddrFloor : DstKind::AddrRound;
     return d;
@@ -114,26 +116,27 @@ Vec4 load(const SrcDesc& s, const Invocation& inv) {
 }
 
 // _dz / _dw (ps_1_4 texld/texcrd): x and y divided by z or w; a zero divisor makes them 1.
-void divide_xy(Vec4& v, int by) {
+template <Denormals D> void divide_xy(Vec4& v, int by) {
   float d = v[by];
-  if (d == 0.0f) {
+  if (num::dz<D>(d) == 0.0f) {
     v[0] = v[1] = 1.0f;
   } else {
-    v[0] /= d;
-    v[1] /= d;
+    v[0] = num::legacy_div<D>(v[0], d);
+    v[1] = num::legacy_div<D>(v[1], d);
   }
 }
 
-float post_modifier(float x, SrcMod m) {
+// Negation and abs move bits (no denormal flush); the others are arithmetic.
+template <Denormals D> float post_modifier(float x, SrcMod m) {
   switch (m) {
   case SrcMod::Neg: return -x;
-  case SrcMod::Bias: return num::legacy_bias(x);
-  case SrcMod::BiasNeg: return -num::legacy_bias(x);
-  case SrcMod::Bx2: return num::legacy_bx2(x);
-  case SrcMod::Bx2Neg: return -num::legacy_bx2(x);
-  case SrcMod::Comp: return num::legacy_comp(x);
-  case SrcMod::X2: return 2.0f * x;
-  case SrcMod::X2Neg: return -(2.0f * x);
+  case SrcMod::Bias: return num::legacy_bias<D>(x);
+  case SrcMod::BiasNeg: return -num::legacy_bias<D>(x);
+  case SrcMod::Bx2: return num::legacy_bx2<D>(x);
+  case SrcMod::Bx2Neg: return -num::legacy_bx2<D>(x);
+  case SrcMod::Comp: return num::legacy_comp<D>(x);
+  case SrcMod::X2: return num::legacy_scale<D>(2.0f, x);
+  case SrcMod::X2Neg: return -num::legacy_scale<D>(2.0f, x);
   case SrcMod::Abs: return std::fabs(x);
   case SrcMod::AbsNeg: return -std::fabs(x);
   default: return x; // None, Dz, Dw (pre-swizzle), Not (booleans only)
@@ -142,42 +145,54 @@ float post_modifier(float x, SrcMod m) {
 
 } // namespace
 
-Vec4 fetch_general(const SrcDesc& s, const Invocation& inv) {
-  Vec4 v = load(s, inv);
+template <Denormals D> Vec4 modify_src(const SrcDesc& s, Vec4 v) {
   if (s.clamp_const)
-    for (float& x : v) x = num::legacy_ps1x_const(x);
-  if (s.mod == SrcMod::Dz) divide_xy(v, 2);
-  if (s.mod == SrcMod::Dw) divide_xy(v, 3);
+    for (float& x : v) x = num::legacy_ps1x_const<D>(x);
+  if (s.mod == SrcMod::Dz) divide_xy<D>(v, 2);
+  if (s.mod == SrcMod::Dw) divide_xy<D>(v, 3);
   if (!s.identity) v = Vec4{v[s.swz[0]], v[s.swz[1]], v[s.swz[2]], v[s.swz[3]]};
   if (s.mod != SrcMod::None)
-    for (float& x : v) x = post_modifier(x, s.mod);
+    for (float& x : v) x = post_modifier<D>(x, s.mod);
   return v;
 }
+template Vec4 modify_src<Denormals::Keep>(const SrcDesc& s, Vec4 v);
+template Vec4 modify_src<Denormals::Flush>(const SrcDesc& s, Vec4 v);
 
-void store_general(const DstDesc& d, const Vec4& value, Invocation& inv) {
+namespace {
+
+template <Denormals D> void store_modified(const DstDesc& d, const Vec4& value, Invocation& inv) {
   switch (d.kind) {
   case DstKind::None: return;
   case DstKind::AddrFloor:
     for (int i = 0; i < 4; ++i)
-      if (d.mask & (1 << i)) inv.a0[i] = num::legacy_mov_a0_floor(value[i]);
+      if (d.mask & (1 << i)) inv.a0[i] = num::legacy_mov_a0_floor<D>(value[i]);
     return;
   case DstKind::AddrRound:
     for (int i = 0; i < 4; ++i)
-      if (d.mask & (1 << i)) inv.a0[i] = num::legacy_mova_round(value[i]);
+      if (d.mask & (1 << i)) inv.a0[i] = num::legacy_mova_round<D>(value[i]);
     return;
   case DstKind::Slot: break;
   }
   Vec4& r = inv.reg[d.slot];
   for (int i = 0; i < 4; ++i) {
     if (!(d.mask & (1 << i))) continue;
-    float x = value[i];
-    if (d.scale != 1.0f) x *= d.scale;
-    if (d.range) x = num::legacy_ps1x_range(x, d.max_value);
-    if (d.sat) x = num::legacy_saturate(x);
-    if (d.fixed_bits > 0) x = num::legacy_fixed_quantise(x, d.fixed_bits, d.max_value);
-    r[i] = x;
+    r[i] = dst_transform<D>(d, value[i]);
   }
   inv.out_written |= d.out_bit;
+}
+
+} // namespace
+
+Vec4 fetch_general(const SrcDesc& s, const Invocation& inv) {
+  return inv.prog->flush ? modify_src<Denormals::Flush>(s, load(s, inv))
+                         : modify_src<Denormals::Keep>(s, load(s, inv));
+}
+
+void store_general(const DstDesc& d, const Vec4& value, Invocation& inv) {
+  if (d.flush)
+    store_modified<Denormals::Flush>(d, value, inv);
+  else
+    store_modified<Denormals::Keep>(d, value, inv);
 }
 
 } // namespace tierlift::cpu::vm

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "tierlift/ir/numerics.h"
 #include "vm_internal.h"
 
 namespace tierlift::cpu::vm {
@@ -31,7 +32,14 @@ void collect_defs(Prepared& p, std::vector<std::optional<std::array<int32_t, 4>>
     if (d.file == RegFile::Const) {
       if (d.index >= 8192) continue;
       if (p.const_defs.size() <= d.index) p.const_defs.resize(d.index + 1);
-      p.const_defs[d.index] = Vec4{d.f(0), d.f(1), d.f(2), d.f(3)};
+      Vec4 v{d.f(0), d.f(1), d.f(2), d.f(3)};
+      // NUMERICS.md rule 13: lavapipe folds arithmetic on def constants at compile time with
+      // denormals kept, and flushes the same arithmetic at run time; loading a def's
+      // denormals as zeros of their sign (as the SPIR-V does under the same convention) makes
+      // the folding invisible.
+      if (p.flush)
+        for (float& x : v) x = ir::numerics::flush_denormal(x);
+      p.const_defs[d.index] = v;
     } else if (d.file == RegFile::ConstInt && d.index < 16) {
       ints[d.index] = std::array<int32_t, 4>{d.i(0), d.i(1), d.i(2), d.i(3)};
     } else if (d.file == RegFile::ConstBool && d.index < 16) {
@@ -67,7 +75,7 @@ uint8_t produced_mask(Opcode op, bool vs11) {
 }
 
 void prepare_arith(Step& s, const ir::Instruction& ins, const Prepared& p) {
-  s.compute = arith_compute(ins.op);
+  s.compute = arith_compute(ins.op, p.flush);
   if (!s.compute) broken(ins, "no interpreter function");
   s.exec = exec_arith;
   s.rows = macro_rows(ins.op);
@@ -81,7 +89,7 @@ void prepare_arith(Step& s, const ir::Instruction& ins, const Prepared& p) {
 }
 
 void prepare_texture(Step& s, const ir::Instruction& ins, const Prepared& p) {
-  s.exec = texture_exec(ins.op);
+  s.exec = texture_exec(ins.op, p.flush);
   if (!s.exec) broken(ins, "no interpreter function");
   if (!ins.dst) broken(ins, "missing register operand");
   s.aux = static_cast<int32_t>(ins.dst->index); // texture stage m = destination number
@@ -200,6 +208,7 @@ Prepared prepare(const ir::Program& program, const ir::Conventions& conv) {
   p.ps11_13 = ir::is_ps11_13(prof);
   p.ps14 = prof == ir::Profile::ps_1_4;
   p.vs11 = prof == ir::Profile::vs_1_1;
+  p.flush = conv.rounding == ir::Rounding::Llvmpipe;
   // Relative reads may reach any constant the device offers: 256 for vertex shaders (the
   // value DXVK and most D3D9 drivers report for MaxVertexShaderConst).
   int32_t limit = ir::limits(prof).float_consts;

@@ -61,9 +61,11 @@ PixelOutput ShaderVM::run_pixel(const PixelInput& in, const ConstantBank& consta
   inv.pin = &in;
   inv.pout = &out;
   // Colour inputs lie in [0, 1] in every pixel profile (d3d9-isa.md §3.3, §3.5).
+  namespace num = ir::numerics;
   for (int i = 0; i < 2; ++i)
     for (int c = 0; c < 4; ++c)
-      inv.reg[vm::kInputBase + i][c] = ir::numerics::legacy_saturate(in.color[i][c]);
+      inv.reg[vm::kInputBase + i][c] = p.flush ? num::legacy_saturate<num::kFlush>(in.color[i][c])
+                                               : num::legacy_saturate(in.color[i][c]);
   // ps_1_4 and ps_2_0 read t# as the interpolated coordinates; in ps_1_1–1_3 t# are
   // registers that texture instructions fill.
   if (!p.ps11_13)

@@ -1,7 +1,7 @@
 // Texture instructions: ps_1_1–1_3 texture-address instructions (d3d9-isa.md §5.5),
 // ps_1_4 texld/texcrd/texkill/texdepth (§5.6) and ps_2_0 texld/texldp/texldb/texkill
 // (§5.7). Every sample goes through the TextureUnit; StageState supplies bump matrices
-// and the projected flag.
+// and the projected flag. Each executor exists once per denormal mode (NUMERICS.md rule 13).
 #include "tierlift/ir/numerics.h"
 #include "vm_internal.h"
 
@@ -9,6 +9,7 @@ namespace tierlift::cpu::vm {
 
 namespace num = ir::numerics;
 using ir::Opcode;
+using num::Denormals;
 
 namespace {
 
@@ -29,14 +30,15 @@ StageState stage_state(const Invocation& inv, int32_t stage) {
 }
 
 // D3DTTFF_PROJECTED (ps_1_1–1_3 tex, texbem): divide by the last coordinate, w (as DXVK).
-Vec4 projected(Vec4 c, const StageState& ss) {
+template <Denormals D> Vec4 projected(Vec4 c, const StageState& ss) {
   if (!ss.projected) return c;
   float w = c[3];
-  return {c[0] / w, c[1] / w, c[2] / w, 1.0f};
+  return {num::legacy_div<D>(c[0], w), num::legacy_div<D>(c[1], w), num::legacy_div<D>(c[2], w),
+          1.0f};
 }
 
-float dot3(const Vec4& a, const Vec4& b) {
-  return num::legacy_dp3(a.data(), b.data());
+template <Denormals D> float dot3(const Vec4& a, const Vec4& b) {
+  return num::legacy_dp3<D>(a.data(), b.data());
 }
 Vec4 splat(float x) {
   return {x, x, x, x};
@@ -53,188 +55,203 @@ void set_depth(Invocation& inv, float z) {
 
 // --- ps_1_1 .. ps_1_3 ----------------------------------------------------------------
 
-void ex_tex(const Step& s, Invocation& inv) {
-  Vec4 c = projected(tc(inv, s.aux), stage_state(inv, s.aux));
+template <Denormals D> void ex_tex(const Step& s, Invocation& inv) {
+  Vec4 c = projected<D>(tc(inv, s.aux), stage_state(inv, s.aux));
   store(s.dst, sample(inv, s.aux, c), inv);
 }
 
 // texcoord: (sat x, sat y, sat z, 1); no texture is read.
-void ex_texcoord(const Step& s, Invocation& inv) {
+template <Denormals D> void ex_texcoord(const Step& s, Invocation& inv) {
   Vec4 c = tc(inv, s.aux);
   store(s.dst,
-        {num::legacy_saturate(c[0]), num::legacy_saturate(c[1]), num::legacy_saturate(c[2]), 1.0f},
+        {num::legacy_saturate<D>(c[0]), num::legacy_saturate<D>(c[1]),
+         num::legacy_saturate<D>(c[2]), 1.0f},
         inv);
 }
 
 // texkill: ps_1_1–1_3 test TC(m).xyz; ps_1_4 the register's xyz; ps_2_0 all four.
-void ex_texkill(const Step& s, Invocation& inv) {
+template <Denormals D> void ex_texkill(const Step& s, Invocation& inv) {
   const Prepared& p = *inv.prog;
   Vec4 v = p.ps11_13 ? tc(inv, s.aux) : fetch(s.src[0], inv);
   int n = p.ps1x ? 3 : 4;
   for (int i = 0; i < n; ++i)
-    if (v[i] < 0.0f) return discard(inv);
+    if (num::dz<D>(v[i]) < 0.0f) return discard(inv);
 }
 
 // texbem/texbeml: offset TC(m) by stage m's 2×2 matrix times t(n).rg, then sample.
+template <Denormals D>
 Vec4 bump_sample(const Step& s, Invocation& inv, const Vec4& tn, const StageState& ss) {
-  Vec4 c = projected(tc(inv, s.aux), ss);
+  Vec4 c = projected<D>(tc(inv, s.aux), ss);
   const auto& m = ss.bumpenv_mat; // M00, M01, M10, M11
-  float u = c[0] + num::legacy_mul(m[0], tn[0]) + num::legacy_mul(m[2], tn[1]);
-  float v = c[1] + num::legacy_mul(m[1], tn[0]) + num::legacy_mul(m[3], tn[1]);
+  auto mul = num::legacy_mul<D>;
+  auto add = num::legacy_add<D>;
+  float u = add(add(c[0], mul(m[0], tn[0])), mul(m[2], tn[1]));
+  float v = add(add(c[1], mul(m[1], tn[0])), mul(m[3], tn[1]));
   return sample(inv, s.aux, {u, v, c[2], c[3]});
 }
 
-void ex_texbem(const Step& s, Invocation& inv) {
+template <Denormals D> void ex_texbem(const Step& s, Invocation& inv) {
   StageState ss = stage_state(inv, s.aux);
-  store(s.dst, bump_sample(s, inv, fetch(s.src[0], inv), ss), inv);
+  store(s.dst, bump_sample<D>(s, inv, fetch(s.src[0], inv), ss), inv);
 }
 
 // texbeml: the sample times the luminance t(n).b·LSCALE + LOFFSET, not clamped (the
 // docs' formula and Wine; DXVK clamps it to [0,1]).
-void ex_texbeml(const Step& s, Invocation& inv) {
+template <Denormals D> void ex_texbeml(const Step& s, Invocation& inv) {
   StageState ss = stage_state(inv, s.aux);
   Vec4 tn = fetch(s.src[0], inv);
-  Vec4 r = bump_sample(s, inv, tn, ss);
-  float l = num::legacy_mad(tn[2], ss.bumpenv_lscale, ss.bumpenv_loffset);
-  for (float& x : r) x = num::legacy_mul(x, l);
+  Vec4 r = bump_sample<D>(s, inv, tn, ss);
+  float l = num::legacy_mad<D>(tn[2], ss.bumpenv_lscale, ss.bumpenv_loffset);
+  for (float& x : r) x = num::legacy_mul<D>(x, l);
   store(s.dst, r, inv);
 }
 
-void ex_texreg2ar(const Step& s, Invocation& inv) {
+template <Denormals D> void ex_texreg2ar(const Step& s, Invocation& inv) {
   Vec4 n = fetch(s.src[0], inv);
   store(s.dst, sample(inv, s.aux, {n[3], n[0], 0, 0}), inv);
 }
-void ex_texreg2gb(const Step& s, Invocation& inv) {
+template <Denormals D> void ex_texreg2gb(const Step& s, Invocation& inv) {
   Vec4 n = fetch(s.src[0], inv);
   store(s.dst, sample(inv, s.aux, {n[1], n[2], 0, 0}), inv);
 }
-void ex_texreg2rgb(const Step& s, Invocation& inv) {
+template <Denormals D> void ex_texreg2rgb(const Step& s, Invocation& inv) {
   Vec4 n = fetch(s.src[0], inv);
   store(s.dst, sample(inv, s.aux, {n[0], n[1], n[2], 0}), inv);
 }
 
 // Pads compute one row of the matrix product and write nothing (as DXVK).
-void ex_pad(const Step& s, Invocation& inv) {
-  inv.pad[s.pad_row] = dot3(tc(inv, s.aux), fetch(s.src[0], inv));
+template <Denormals D> void ex_pad(const Step& s, Invocation& inv) {
+  inv.pad[s.pad_row] = dot3<D>(tc(inv, s.aux), fetch(s.src[0], inv));
 }
 
-void ex_texm3x2tex(const Step& s, Invocation& inv) {
-  float v = dot3(tc(inv, s.aux), fetch(s.src[0], inv));
+template <Denormals D> void ex_texm3x2tex(const Step& s, Invocation& inv) {
+  float v = dot3<D>(tc(inv, s.aux), fetch(s.src[0], inv));
   store(s.dst, sample(inv, s.aux, {inv.pad[0], v, 0, 0}), inv);
 }
 
-void ex_texm3x2depth(const Step& s, Invocation& inv) {
-  float w = dot3(tc(inv, s.aux), fetch(s.src[0], inv));
-  set_depth(inv, num::legacy_depth_ratio(inv.pad[0], w));
+template <Denormals D> void ex_texm3x2depth(const Step& s, Invocation& inv) {
+  float w = dot3<D>(tc(inv, s.aux), fetch(s.src[0], inv));
+  set_depth(inv, num::legacy_depth_ratio<D>(inv.pad[0], w));
 }
 
-float third_row(const Step& s, Invocation& inv) {
-  return dot3(tc(inv, s.aux), fetch(s.src[0], inv));
+template <Denormals D> float third_row(const Step& s, Invocation& inv) {
+  return dot3<D>(tc(inv, s.aux), fetch(s.src[0], inv));
 }
 
-void ex_texm3x3(const Step& s, Invocation& inv) {
-  float w = third_row(s, inv);
+template <Denormals D> void ex_texm3x3(const Step& s, Invocation& inv) {
+  float w = third_row<D>(s, inv);
   store(s.dst, {inv.pad[0], inv.pad[1], w, 1.0f}, inv);
 }
 
-void ex_texm3x3tex(const Step& s, Invocation& inv) {
-  float w = third_row(s, inv);
+template <Denormals D> void ex_texm3x3tex(const Step& s, Invocation& inv) {
+  float w = third_row<D>(s, inv);
   store(s.dst, sample(inv, s.aux, {inv.pad[0], inv.pad[1], w, 0}), inv);
 }
 
+template <Denormals D>
 void reflect_and_sample(const Step& s, Invocation& inv, float w, num::Vec3f eye) {
-  num::Vec3f r = num::legacy_reflect({inv.pad[0], inv.pad[1], w}, eye);
+  num::Vec3f r = num::legacy_reflect<D>({inv.pad[0], inv.pad[1], w}, eye);
   store(s.dst, sample(inv, s.aux, {r.x, r.y, r.z, 0}), inv);
 }
 
-void ex_texm3x3spec(const Step& s, Invocation& inv) {
-  float w = third_row(s, inv);
+template <Denormals D> void ex_texm3x3spec(const Step& s, Invocation& inv) {
+  float w = third_row<D>(s, inv);
   Vec4 e = fetch(s.src[1], inv);
-  reflect_and_sample(s, inv, w, {e[0], e[1], e[2]});
+  reflect_and_sample<D>(s, inv, w, {e[0], e[1], e[2]});
 }
 
 // vspec: the eye vector is the w of the three coordinate sets m, m+1, m+2.
-void ex_texm3x3vspec(const Step& s, Invocation& inv) {
-  float w = third_row(s, inv);
+template <Denormals D> void ex_texm3x3vspec(const Step& s, Invocation& inv) {
+  float w = third_row<D>(s, inv);
   num::Vec3f e{tc(inv, s.aux - 2)[3], tc(inv, s.aux - 1)[3], tc(inv, s.aux)[3]};
-  reflect_and_sample(s, inv, w, e);
+  reflect_and_sample<D>(s, inv, w, e);
 }
 
-void ex_texdp3(const Step& s, Invocation& inv) {
-  store(s.dst, splat(dot3(tc(inv, s.aux), fetch(s.src[0], inv))), inv);
+template <Denormals D> void ex_texdp3(const Step& s, Invocation& inv) {
+  store(s.dst, splat(dot3<D>(tc(inv, s.aux), fetch(s.src[0], inv))), inv);
 }
 
-void ex_texdp3tex(const Step& s, Invocation& inv) {
-  float u = dot3(tc(inv, s.aux), fetch(s.src[0], inv));
+template <Denormals D> void ex_texdp3tex(const Step& s, Invocation& inv) {
+  float u = dot3<D>(tc(inv, s.aux), fetch(s.src[0], inv));
   store(s.dst, sample(inv, s.aux, {u, 0, 0, 0}), inv);
 }
 
 // --- ps_1_4 ----------------------------------------------------------------------------
 
 // texld rM, src: samples stage M at src.xyz (after _dz/_dw and the .xyz/.xyw selector).
-void ex_texld14(const Step& s, Invocation& inv) {
+template <Denormals D> void ex_texld14(const Step& s, Invocation& inv) {
   Vec4 c = fetch(s.src[0], inv);
   store(s.dst, sample(inv, s.aux, {c[0], c[1], c[2], 0}), inv);
 }
 
 // texcrd: the coordinates themselves, not saturated.
-void ex_texcrd(const Step& s, Invocation& inv) {
+template <Denormals D> void ex_texcrd(const Step& s, Invocation& inv) {
   store(s.dst, fetch(s.src[0], inv), inv);
 }
 
-void ex_texdepth(const Step& s, Invocation& inv) {
+template <Denormals D> void ex_texdepth(const Step& s, Invocation& inv) {
   Vec4 r5 = fetch(s.src[0], inv);
-  set_depth(inv, num::legacy_depth_ratio(r5[0], r5[1]));
+  set_depth(inv, num::legacy_depth_ratio<D>(r5[0], r5[1]));
 }
 
 // --- ps_2_0 ----------------------------------------------------------------------------
 
-void ex_texld(const Step& s, Invocation& inv) {
+template <Denormals D> void ex_texld(const Step& s, Invocation& inv) {
   store(s.dst, sample(inv, s.aux, fetch(s.src[0], inv)), inv);
 }
 
 // texldp: xyz / w; the coordinate handed on has w = 1.
-void ex_texldp(const Step& s, Invocation& inv) {
+template <Denormals D> void ex_texldp(const Step& s, Invocation& inv) {
   Vec4 c = fetch(s.src[0], inv);
   float w = c[3];
-  store(s.dst, sample(inv, s.aux, {c[0] / w, c[1] / w, c[2] / w, 1.0f}), inv);
+  auto div = num::legacy_div<D>;
+  store(s.dst, sample(inv, s.aux, {div(c[0], w), div(c[1], w), div(c[2], w), 1.0f}), inv);
 }
 
-void ex_texldb(const Step& s, Invocation& inv) {
+template <Denormals D> void ex_texldb(const Step& s, Invocation& inv) {
   Vec4 c = fetch(s.src[0], inv);
   store(s.dst, sample(inv, s.aux, c, c[3]), inv);
 }
 
 } // namespace
 
-ExecFn texture_exec(Opcode op) {
+namespace {
+
+template <Denormals D> ExecFn texture_exec_for(Opcode op) {
   switch (op) {
-  case Opcode::Tex: return ex_tex;
-  case Opcode::TexCoord: return ex_texcoord;
-  case Opcode::TexKill: return ex_texkill;
-  case Opcode::TexBem: return ex_texbem;
-  case Opcode::TexBemL: return ex_texbeml;
-  case Opcode::TexReg2Ar: return ex_texreg2ar;
-  case Opcode::TexReg2Gb: return ex_texreg2gb;
-  case Opcode::TexReg2Rgb: return ex_texreg2rgb;
+  case Opcode::Tex: return ex_tex<D>;
+  case Opcode::TexCoord: return ex_texcoord<D>;
+  case Opcode::TexKill: return ex_texkill<D>;
+  case Opcode::TexBem: return ex_texbem<D>;
+  case Opcode::TexBemL: return ex_texbeml<D>;
+  case Opcode::TexReg2Ar: return ex_texreg2ar<D>;
+  case Opcode::TexReg2Gb: return ex_texreg2gb<D>;
+  case Opcode::TexReg2Rgb: return ex_texreg2rgb<D>;
   case Opcode::TexM3x2Pad:
-  case Opcode::TexM3x3Pad: return ex_pad;
-  case Opcode::TexM3x2Tex: return ex_texm3x2tex;
-  case Opcode::TexM3x2Depth: return ex_texm3x2depth;
-  case Opcode::TexM3x3: return ex_texm3x3;
-  case Opcode::TexM3x3Tex: return ex_texm3x3tex;
-  case Opcode::TexM3x3Spec: return ex_texm3x3spec;
-  case Opcode::TexM3x3VSpec: return ex_texm3x3vspec;
-  case Opcode::TexDp3: return ex_texdp3;
-  case Opcode::TexDp3Tex: return ex_texdp3tex;
-  case Opcode::TexLd14: return ex_texld14;
-  case Opcode::TexCrd: return ex_texcrd;
-  case Opcode::TexDepth: return ex_texdepth;
-  case Opcode::TexLd: return ex_texld;
-  case Opcode::TexLdP: return ex_texldp;
-  case Opcode::TexLdB: return ex_texldb;
+  case Opcode::TexM3x3Pad: return ex_pad<D>;
+  case Opcode::TexM3x2Tex: return ex_texm3x2tex<D>;
+  case Opcode::TexM3x2Depth: return ex_texm3x2depth<D>;
+  case Opcode::TexM3x3: return ex_texm3x3<D>;
+  case Opcode::TexM3x3Tex: return ex_texm3x3tex<D>;
+  case Opcode::TexM3x3Spec: return ex_texm3x3spec<D>;
+  case Opcode::TexM3x3VSpec: return ex_texm3x3vspec<D>;
+  case Opcode::TexDp3: return ex_texdp3<D>;
+  case Opcode::TexDp3Tex: return ex_texdp3tex<D>;
+  case Opcode::TexLd14: return ex_texld14<D>;
+  case Opcode::TexCrd: return ex_texcrd<D>;
+  case Opcode::TexDepth: return ex_texdepth<D>;
+  case Opcode::TexLd: return ex_texld<D>;
+  case Opcode::TexLdP: return ex_texldp<D>;
+  case Opcode::TexLdB: return ex_texldb<D>;
   default: return nullptr;
   }
+}
+
+} // namespace
+
+ExecFn texture_exec(Opcode op, bool flush_denormals) {
+  return flush_denormals ? texture_exec_for<Denormals::Flush>(op)
+                         : texture_exec_for<Denormals::Keep>(op);
 }
 
 } // namespace tierlift::cpu::vm

@@ -97,6 +97,12 @@ inline constexpr std::array<Vec4, 4> kQuadUV{Vec4{0, 0, 0, 1}, Vec4{1, 0, 0, 1},
 inline constexpr std::array<std::array<uint32_t, 3>, 2> kQuadTriangles{
     std::array<uint32_t, 3>{0, 1, 2}, std::array<uint32_t, 3>{2, 1, 3}};
 
+// Which executor runs the pixel stage. Auto: the block executor (pixel_block.h) whenever it
+// takes the program, else the per-pixel ShaderVM; Scalar: always the per-pixel ShaderVM (the
+// reference, and the "before" of bench/bench_cpu_glow.cpp). Both give the same image, bit for
+// bit (tests/cpu_draw/executor_identity_test.cpp).
+enum class Executor : uint8_t { Auto, Scalar };
+
 // One pass. Which vertex stage runs:
 //   * vertex_program set: it runs once per entry of `vertices` (its inputs v#);
 //   * no vertex program, `transformed` not empty: those are the vertex outputs, as with
@@ -119,6 +125,7 @@ struct Pass {
   Viewport viewport;
   BlendMode blend = BlendMode::Replace;
   ir::Conventions conventions;
+  Executor executor = Executor::Auto;
 };
 
 // Fills pass.vertices with the full-screen quad's four corners: `position_register` gets
@@ -131,6 +138,7 @@ struct DrawStats {
   uint64_t triangles = 0;     // after clipping
   uint64_t pixels_shaded = 0; // pixel-stage invocations
   uint64_t pixels_killed = 0; // discarded by texkill
+  uint64_t pixels_block = 0;  // of pixels_shaded, those the block executor ran
 };
 
 // Draws `pass` into `target` (its format decides the store rule). Never throws on bad

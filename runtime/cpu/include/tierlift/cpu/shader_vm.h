@@ -16,6 +16,11 @@ namespace tierlift::cpu {
 
 using Vec4 = std::array<float, 4>;
 
+// Pixels the block executor (pixel_block.h) runs at once, each register held as four arrays
+// of this many lanes (structure of arrays).
+inline constexpr int kBlockLanes = 64;
+using Lanes = float[kBlockLanes];
+
 // Texture-stage state the ps_1_x texture instructions read (D3DTSS_*).
 struct StageState {
   std::array<float, 4> bumpenv_mat{0, 0, 0, 0}; // M00, M01, M10, M11
@@ -34,6 +39,11 @@ public:
     (void)stage;
     return {};
   }
+  // The block executor's read: lanes 0..n−1 at coordinates (coord[0][l], …, coord[3][l]) with
+  // bias[l] (nullptr: 0), results into out[c][l]. Must give exactly what n calls of sample()
+  // give; this default makes those calls.
+  virtual void sample_block(uint32_t stage, const float* const coord[4], const float* bias, int n,
+                            Lanes out[4]) const;
 };
 
 // API-set constants. Listing defs override these for the shader (as in D3D9).

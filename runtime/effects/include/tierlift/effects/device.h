@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "tierlift/cpu/draw.h"
 #include "tierlift/effects/graph.h"
 #include "tierlift/image/image.h"
 
@@ -54,7 +55,9 @@ public:
 
 class CpuPassDevice final : public PassDevice {
 public:
-  explicit CpuPassDevice(unsigned threads = 0) : threads_(threads) {}
+  // `executor`: cpu::Executor::Scalar forces the per-pixel VM (benchmarks' "before").
+  explicit CpuPassDevice(unsigned threads = 0, cpu::Executor executor = cpu::Executor::Auto)
+      : threads_(threads), executor_(executor) {}
   std::string name() const override { return "cpu"; }
   std::string begin_run(const EffectGraph& graph, const ImageMap& inputs) override;
   std::string run_pass(const PassDesc& pass) override;
@@ -62,8 +65,10 @@ public:
 
 private:
   unsigned threads_;
+  cpu::Executor executor_;
   const EffectGraph* graph_ = nullptr;
   ImageMap images_;
+  ImageMap placeholders_; // an empty image per texture name, for make_pass
 };
 
 // Wraps a device the caller owns (and keeps alive). Only when tierlift_vulkan is built.

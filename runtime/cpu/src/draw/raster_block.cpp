@@ -1,0 +1,90 @@
+// The pixel loop for the block executor: the same coverage test, the same pixel order and the
+// same store as raster_rows in draw.cpp, but covered pixels are gathered kBlockLanes at a time
+// along a row, their inputs interpolated per block, the program run once per block and the
+// results blended and stored pixel by pixel.
+#include <algorithm>
+
+#include "raster.h"
+
+namespace tierlift::cpu::detail {
+namespace {
+
+void fill_constant_inputs(const PixelInput& constant, PixelBlockInput& in) {
+  for (int r = 0; r < 2; ++r)
+    for (int c = 0; c < 4; ++c)
+      std::fill(std::begin(in.color[r].c[c]), std::end(in.color[r].c[c]),
+                clamp01(constant.color[r][c]));
+  for (int r = 0; r < 8; ++r)
+    for (int c = 0; c < 4; ++c)
+      std::fill(std::begin(in.tex[r].c[c]), std::end(in.tex[r].c[c]), constant.tex[r][c]);
+}
+
+void shade_block(const RasterJob& job, const Triangle& t, int64_t y, int n, BlockWorker& w,
+                 WorkerStats& stats) {
+  const PixelBlockVM& vm = *job.block;
+  w.in.count = n;
+  if (!job.constant_inputs)
+    interpolate_block(t, w.e, w.x, y, n, vm.color_reads(), vm.tex_components(), w.in);
+  vm.run(w.in, job.textures, w.out, *w.scratch);
+  stats.block += static_cast<uint64_t>(n);
+  stats.shaded += static_cast<uint64_t>(n);
+  for (int l = 0; l < n; ++l) stats.killed += w.out.discarded[static_cast<size_t>(l)] ? 1 : 0;
+  store_block(job.pass.blend, job.target.format, job.pass.conventions.rounding, w.out.color,
+              w.out.discarded, w.x, n, job.target.at(0, static_cast<uint32_t>(y)));
+}
+
+// Integer division rounded toward −∞ / +∞ (d > 0).
+int64_t floor_div(int64_t a, int64_t d) {
+  return a >= 0 ? a / d : -((-a + d - 1) / d);
+}
+int64_t ceil_div(int64_t a, int64_t d) {
+  return -floor_div(-a, d);
+}
+
+} // namespace
+
+BlockWorker::BlockWorker(const PixelBlockVM& vm, const RasterJob& job)
+    : scratch(vm.make_scratch()) {
+  if (job.constant_inputs) fill_constant_inputs(job.pass.constant_inputs, in);
+}
+
+void raster_rows_block(const RasterJob& job, int64_t y0, int64_t y1, BlockWorker& w,
+                       WorkerStats& stats) {
+  for (const Triangle& t : job.triangles) {
+    const int64_t ya = std::max(y0, t.bounds.y0), yb = std::min(y1, t.bounds.y1);
+    for (int64_t y = ya; y < yb; ++y) {
+      const int64_t py = y * kSubPixelOne + job.sample_offset;
+      // Along the row each edge function is E + S·i at pixel x0 + i (exact integers), and a
+      // pixel is inside when every one is ≥ 1, or ≥ 0 on a top-left edge: solved for i, that
+      // is one span [lo, hi) — the pixels raster_rows tests one by one.
+      const int64_t px0 = t.bounds.x0 * kSubPixelOne + job.sample_offset;
+      int64_t e0[3], step[3];
+      int64_t lo = 0, hi = t.bounds.x1 - t.bounds.x0;
+      for (int k = 0; k < 3; ++k) {
+        const ScreenVertex &a = t.v[(k + 1) % 3], &b = t.v[(k + 2) % 3];
+        e0[k] = edge(a, b, px0, py);
+        step[k] = -(b.y - a.y) * kSubPixelOne;
+        const int64_t need = t.top_left[k] ? 0 : 1;
+        if (step[k] == 0) {
+          if (e0[k] < need) hi = 0;
+        } else if (step[k] > 0) {
+          lo = std::max(lo, ceil_div(need - e0[k], step[k]));
+        } else {
+          hi = std::min(hi, floor_div(e0[k] - need, -step[k]) + 1);
+        }
+      }
+      int n = 0;
+      for (int64_t i = lo; i < hi; ++i) {
+        for (int k = 0; k < 3; ++k) w.e[n][k] = e0[k] + step[k] * i;
+        w.x[n] = t.bounds.x0 + i;
+        if (++n == kBlockLanes) {
+          shade_block(job, t, y, n, w, stats);
+          n = 0;
+        }
+      }
+      if (n) shade_block(job, t, y, n, w, stats);
+    }
+  }
+}
+
+} // namespace tierlift::cpu::detail
