@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "tierlift/io/bounded_read.h"
 #include "tierlift/ir/diagnostic.h"
 #include "tierlift/ir/program.h"
 
@@ -23,25 +24,36 @@ struct FrontEndOptions {
   bool json = false;                     // --json
 };
 
-// Adds -D, -I, --profile, --json and (when asked) --skip-validation to a subcommand.
-void add_front_end_options(CLI::App* sub, FrontEndOptions& options, bool skip_validation_flag);
+// Adds -D, -I (one value each, repeatable), --profile, --skip-validation (when asked) and
+// --json (when asked: run and glow print results, not only diagnostics, under it).
+void add_front_end_options(CLI::App* sub, FrontEndOptions& options, bool skip_validation_flag,
+                           bool json_flag = true);
 
 struct LoadedListing {
   ir::SourceManager sources;
   ir::DiagnosticSink diags;
   std::optional<ir::Program> program; // set when it parsed (and validated, unless skipped)
-  bool io_error = false;              // could not be read: exit 2
+  bool io_error = false;              // could not be read, or a bad flag: exit 2
   std::string io_message;
 };
 
-// Reads `path` ("-" = standard input), parses it, and validates it unless skipped.
+// Reads `path` ("-" = standard input; a UTF-8 byte-order mark is skipped) within
+// io::kListingCap, parses it, and validates it unless skipped.
 LoadedListing load_listing(const std::string& path, const FrontEndOptions& options);
 
-// Reads a whole file as bytes; "-" reads standard input. nullopt + message on failure.
-std::optional<std::string> read_file(const std::string& path, std::string& error);
-// Writes to a temporary file beside `path`, then renames it over `path`, so a failed or
-// interrupted write never leaves a half-written output.
-bool write_file_atomically(const std::string& path, std::string_view bytes, std::string& error);
+// Reads a whole file within `cap` ("-" = standard input); nullopt + "PATH: why" on failure.
+std::optional<std::string> read_file(const std::string& path, const io::ReadCap& cap,
+                                     std::string& error);
+// "" when `output` ("-" = standard output) may be written: it is none of `inputs` (same
+// device and inode). Commands check this before doing any work, so nothing is touched.
+std::string output_conflict(const std::string& output, const std::vector<std::string>& inputs);
+// output_conflict, and also refuses "-o -" together with --json (both want standard
+// output).
+std::string check_output(const std::string& output, const std::vector<std::string>& inputs,
+                         bool json);
+// io::write_output: "-" is standard output, FIFOs and devices are written through, anything
+// else goes through a temporary file renamed into place. "" on success.
+std::string write_output(const std::string& path, std::string_view bytes);
 
 // Diagnostics of one listing as JSON (the objects of ir::render_json).
 nlohmann::json diagnostics_json(const LoadedListing& listing);

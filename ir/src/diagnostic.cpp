@@ -63,7 +63,35 @@ QuotedLine quote(std::string_view line, size_t byte_col) {
   return q;
 }
 
+bool blank(char c) {
+  return c == ' ' || c == '\t' || c == '\n' || c == '\r';
+}
+
 } // namespace
+
+std::string shorten_long_words(std::string message) {
+  if (message.size() <= kMaxEchoedWord) return message; // the common case: nothing to cut
+  std::string out;
+  for (size_t i = 0; i < message.size();) {
+    if (blank(message[i])) {
+      out += message[i++];
+      continue;
+    }
+    size_t end = i;
+    while (end < message.size() && !blank(message[end])) ++end;
+    const size_t len = end - i;
+    if (len <= kMaxEchoedWord) {
+      out.append(message, i, len);
+    } else {
+      size_t head = kEchoedWordHead; // back up to a UTF-8 character boundary
+      while (head > 0 && (static_cast<unsigned char>(message[i + head]) & 0xC0) == 0x80) --head;
+      out.append(message, i, head);
+      out += fmt::format("… ({} bytes)", len);
+    }
+    i = end;
+  }
+  return out;
+}
 
 std::string render_text(const Diagnostic& d, const SourceManager& sm) {
   std::string out;

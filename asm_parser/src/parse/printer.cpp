@@ -127,6 +127,14 @@ std::string def_text(const ir::ConstDef& d) {
 
 } // namespace
 
+std::string print_declaration(const ir::Declaration& d, ir::Profile profile) {
+  return decl_text(d, profile);
+}
+
+std::string print_definition(const ir::ConstDef& d) {
+  return def_text(d);
+}
+
 std::string print_instruction(const ir::Instruction& ins, ir::Profile /*profile*/) {
   std::string out = ins.coissue ? "+" : "";
   out += ir::op_info(ins.op).mnemonic;

@@ -1,11 +1,10 @@
 #include "tierlift/effects/builtin_listing.h"
 
 #include <fmt/format.h>
-#include <fstream>
-#include <sstream>
 
 #include "tierlift/asm/parser.h"
 #include "tierlift/asm/validator.h"
+#include "tierlift/io/bounded_read.h"
 #include "tierlift/listings/embedded.h"
 
 namespace tierlift::effects {
@@ -46,16 +45,18 @@ glow_listing(std::string_view path, const std::map<std::string, std::string, std
              std::string* error) {
   auto it = files.find(path);
   if (it == files.end()) return builtin_listing(path, error);
-  std::ifstream in(it->second, std::ios::binary);
-  if (!in) {
+  std::string why;
+  std::optional<std::string> text = io::read_bounded(it->second, io::kListingCap, why);
+  if (!text) {
+    // "PATH: why" → "PATH: error: why", the form of the other diagnostics.
+    const std::string head = it->second + ": ";
+    if (why.starts_with(head)) why.erase(0, head.size());
     if (error)
-      *error = fmt::format("{}: error: cannot read listing (it replaces built-in '{}')", it->second,
-                           path);
+      *error = fmt::format("{}: error: {} (it replaces built-in '{}')", it->second, why, path);
     return nullptr;
   }
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_and_validate(text.str(), it->second, true, error);
+  if (text->starts_with("\xEF\xBB\xBF")) text->erase(0, 3); // a UTF-8 byte-order mark
+  return parse_and_validate(std::move(*text), it->second, true, error);
 }
 
 } // namespace tierlift::effects
