@@ -34,6 +34,8 @@ void register_check_command(CLI::App& app) {
         nlohmann::json entry = {
             {"file", path}, {"valid", valid}, {"diagnostics", diagnostics_json(l)}};
         if (l.program) entry["profile"] = ir::profile_name(l.program->profile);
+        entry["form"] = as::listing_form_name(l.form);
+        if (l.constants) entry["constants"] = constants_json(*l.constants);
         report.push_back(std::move(entry));
       } else {
         print_diagnostics(l);

@@ -1,13 +1,12 @@
 // tierlift disasm FILE: a D3D9 token stream (raw bytes or a C array of hex DWORDs) back
-// into the IR, validated, printed as canonical text.
+// into the IR, validated, printed as canonical text; the CTAB constant table, when the
+// stream has one, heads the text as comments.
 #include <fmt/format.h>
 
 #include "commands.h"
 #include "front_end.h"
-#include "tierlift/asm/bytecode.h"
+#include "tierlift/asm/constant_table.h"
 #include "tierlift/asm/printer.h"
-#include "tierlift/asm/validator.h"
-#include "tierlift/ir/profile.h"
 
 namespace tierlift::cli {
 
@@ -20,42 +19,33 @@ void register_disasm_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("disasm", "Disassemble a D3D9 token stream");
   sub->add_option("file", opts->file, "Token stream: raw little-endian or a C array ('-' = stdin)")
       ->required();
-  sub->add_flag("--json", opts->fe.json, "Print diagnostics as JSON");
+  sub->add_flag("--json", opts->fe.json, "Print diagnostics (and the CTAB constants) as JSON");
   sub->add_flag("--skip-validation", opts->fe.skip_validation, "Do not apply the profile rules");
   sub->add_option("--profile", opts->fe.profile, "Validate against this profile");
+  add_strict_flag(sub, opts->fe);
   set_action(sub, [opts] {
-    LoadedListing l;
-    std::string error;
-    auto bytes = read_file(opts->file, error);
-    if (!bytes) {
-      fmt::print(stderr, "tierlift: error: {}\n", error);
+    LoadedListing l = load_listing(opts->file, opts->fe);
+    if (l.io_error) {
+      fmt::print(stderr, "tierlift: error: {}\n", l.io_message);
       return kExitUsage;
     }
-    // A C-array file is text: keep it so that its diagnostics can quote the line.
-    bool is_text = bytes->find('\0') == std::string::npos;
-    uint32_t file =
-        l.sources.add(opts->file == "-" ? "<stdin>" : opts->file, is_text ? *bytes : "");
-    std::optional<ir::Program> program;
-    if (auto tokens = as::read_token_file(*bytes, l.diags, file))
-      program = as::disassemble(*tokens, l.diags, file);
-    if (program && !opts->fe.skip_validation) {
-      ir::Profile target = program->profile;
-      if (!opts->fe.profile.empty()) {
-        auto p = ir::parse_profile(opts->fe.profile);
-        if (!p) {
-          fmt::print(stderr, "tierlift: error: unknown profile '{}'\n", opts->fe.profile);
-          return kExitUsage;
-        }
-        target = *p;
-      }
-      if (!as::validate(*program, target, l.diags)) program.reset();
+    if (l.form == as::ListingForm::Text) {
+      fmt::print(stderr,
+                 "{}: error: this is assembly text, not a token stream; `tierlift fmt` prints "
+                 "it in canonical form, `tierlift assemble` makes a token stream of it\n",
+                 opts->file);
+      return kExitInvalid;
     }
-    if (opts->fe.json)
-      fmt::print(stderr, "{}\n", diagnostics_json(l).dump(2));
-    else
+    if (opts->fe.json) {
+      nlohmann::json j = {{"diagnostics", diagnostics_json(l)}};
+      if (l.constants) j["constants"] = constants_json(*l.constants);
+      fmt::print(stderr, "{}\n", j.dump(2));
+    } else {
       print_diagnostics(l);
-    if (!program) return kExitInvalid;
-    fmt::print("{}", as::print_program(*program));
+    }
+    if (!l.program) return kExitInvalid;
+    if (l.constants) fmt::print("{}", as::print_constant_table(*l.constants));
+    fmt::print("{}", as::print_program(*l.program));
     return kExitOk;
   });
 }

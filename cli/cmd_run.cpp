@@ -9,8 +9,10 @@
 
 #include "commands.h"
 #include "front_end.h"
+#include "named_constants.h"
 #include "tierlift/cpu/run_job.h"
 #include "tierlift/image/compare.h"
+#include "tierlift/ir/ps1x_range.h"
 #include "tierlift/vulkan/run_job.h"
 
 namespace tierlift::cli {
@@ -21,7 +23,8 @@ struct RunFlags {
   std::string pixel_center = "d3d9", output;
   std::vector<std::string> consts, inputs, attrs, textures, probes;
   int subtexel_bits = 0;
-  float ps1x_max = 1.0f;
+  std::string ps1x_max{ir::kDefaultPs1xPreset};
+  bool strict = false;
   unsigned threads = 0;
   bool json = false;
   std::string backend = "cpu", gpu;
@@ -67,9 +70,7 @@ cpu::RunRequest build_request(const RunFlags& f) {
   if (f.subtexel_bits < 0 || f.subtexel_bits > 24)
     throw UsageError{fmt::format("--subtexel-bits {}: expected 0 (exact) .. 24", f.subtexel_bits)};
   r.conventions.subtexel_bits = f.subtexel_bits;
-  if (!(f.ps1x_max >= 1.0f) || !std::isfinite(f.ps1x_max))
-    throw UsageError{fmt::format("--ps1x-max {}: expected a finite value >= 1", f.ps1x_max)};
-  r.conventions.ps1x_max_value = f.ps1x_max;
+  r.conventions.ps1x_max_value = need(ir::parse_ps1x_max(f.ps1x_max, &err), "--ps1x-max " + err);
   r.threads = f.threads;
   return r;
 }
@@ -88,6 +89,9 @@ nlohmann::json result_json(const RunFlags& f, const cpu::RunRequest& r, const cp
         {{"x", p.x}, {"y", p.y}, {"rgba", {p.value[0], p.value[1], p.value[2], p.value[3]}}});
   return {{"size", {{"width", r.width}, {"height", r.height}}},
           {"format", img::format_name(r.format)},
+          {"ps1x_max",
+           {{"preset", ir::ps1x_max_label(r.conventions.ps1x_max_value)},
+            {"value", r.conventions.ps1x_max_value}}},
           {"probes", probes},
           {"output", f.output.empty() ? nlohmann::json() : nlohmann::json(f.output)},
           {"pixels_shaded", out.stats.pixels_shaded},
@@ -96,18 +100,13 @@ nlohmann::json result_json(const RunFlags& f, const cpu::RunRequest& r, const cp
 }
 
 int run(const RunFlags& f) {
-  cpu::RunRequest req;
-  try {
-    req = build_request(f);
-  } catch (const UsageError& e) {
-    fmt::print(stderr, "tierlift run: error: {}\n", e.message);
-    return kExitUsage;
-  }
   // Each listing keeps its own SourceManager, so its diagnostics quote the right file.
   std::optional<LoadedListing> vs, ps;
   for (auto [path, slot] : {std::pair{&f.vs, &vs}, std::pair{&f.ps, &ps}}) {
     if (path->empty()) continue;
-    *slot = load_listing(*path, FrontEndOptions{});
+    FrontEndOptions fe;
+    fe.strict = f.strict;
+    *slot = load_listing(*path, fe);
     if ((*slot)->io_error) {
       fmt::print(stderr, "tierlift run: error: {}\n", (*slot)->io_message);
       return kExitUsage;
@@ -120,6 +119,25 @@ int run(const RunFlags& f) {
     listings_ok = listings_ok && (*l)->program && !(*l)->diags.has_errors();
   }
   if (!listings_ok) return kExitInvalid;
+  // Constants named by a token stream's CTAB become the registers they cover.
+  auto table = [](const std::optional<LoadedListing>& l) {
+    return l && l->constants ? &*l->constants : nullptr;
+  };
+  std::string const_error;
+  auto consts = resolve_named_constants(f.consts, table(vs), table(ps), const_error);
+  if (!consts) {
+    fmt::print(stderr, "tierlift run: error: {}\n", const_error);
+    return kExitUsage;
+  }
+  RunFlags resolved = f;
+  resolved.consts = std::move(*consts);
+  cpu::RunRequest req;
+  try {
+    req = build_request(resolved);
+  } catch (const UsageError& e) {
+    fmt::print(stderr, "tierlift run: error: {}\n", e.message);
+    return kExitUsage;
+  }
   if (vs) req.vs = std::make_shared<const ir::Program>(*vs->program);
   if (ps) req.ps = std::make_shared<const ir::Program>(*ps->program);
 
@@ -249,7 +267,8 @@ void register_run_command(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--format", f->format, "rgba8 | rgba16f | rgba32f")->capture_default_str();
   sub->add_option("--const", f->consts,
-                  "[vs:|ps:]cN=x,y,z,w, iN=a,b,c,d or bN=true|false (no prefix: both stages)");
+                  "[vs:|ps:]cN=x,y,z,w, iN=a,b,c,d, bN=true|false, or NAME=… for a constant "
+                  "named in a token stream's CTAB (no prefix: both stages)");
   sub->add_option("--input", f->inputs, "Pixel-stage input v#|t#=x,y,z,w (without --vs)");
   sub->add_option("--attr", f->attrs, "Vertex input vN=x,y,z,w or vN=quad-uv (with --vs)");
   sub->add_option("--texture", f->textures, "sN=FILE.png|FILE.pfm|builtin:NAME[:WxH]");
@@ -259,8 +278,12 @@ void register_run_command(CLI::App& app) {
   sub->add_option("--pixel-center", f->pixel_center, "d3d9 | modern")->capture_default_str();
   sub->add_option("--subtexel-bits", f->subtexel_bits, "Bilinear fraction bits (0 = exact)")
       ->capture_default_str();
-  sub->add_option("--ps1x-max", f->ps1x_max, "ps_1_x register range (MaxPixelShaderValue)")
+  sub->add_option("--ps1x-max", f->ps1x_max,
+                  "ps_1_x register range (MaxPixelShaderValue): geforce3 (1), radeon8500 (8), "
+                  "d3d9, max, or a number >= 1")
       ->capture_default_str();
+  sub->add_flag("--strict", f->strict,
+                "The documented rules only: reject what the Direct3D runtimes took beyond them");
   sub->add_option("--probe", f->probes, "Print the stored value of pixel X,Y");
   sub->add_option("-o,--output", f->output, "Write the image (.png, or .pfm for float RGB)");
   sub->add_flag("--json", f->json, "Print a JSON summary (size, format, probes, timing)");
