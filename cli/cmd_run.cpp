@@ -70,7 +70,8 @@ cpu::RunRequest build_request(const RunFlags& f) {
   if (f.subtexel_bits < 0 || f.subtexel_bits > 24)
     throw UsageError{fmt::format("--subtexel-bits {}: expected 0 (exact) .. 24", f.subtexel_bits)};
   r.conventions.subtexel_bits = f.subtexel_bits;
-  r.conventions.ps1x_max_value = need(ir::parse_ps1x_max(f.ps1x_max, &err), "--ps1x-max " + err);
+  auto ps1x_max = ir::parse_ps1x_max(f.ps1x_max, &err); // before `need` reads err
+  r.conventions.ps1x_max_value = need(ps1x_max, "--ps1x-max " + err);
   r.threads = f.threads;
   return r;
 }
