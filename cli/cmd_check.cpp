@@ -34,10 +34,12 @@ void register_check_command(CLI::App& app) {
       if (!valid && worst == kExitOk) worst = kExitInvalid;
       report.diagnostics(l.diags, l.sources);
       nlohmann::json entry = {{"file", path}, {"valid", valid}};
+      entry["form"] = as::listing_form_name(l.form);
       if (l.program) {
         entry["profile"] = ir::profile_name(l.program->profile);
         entry["instructions"] = l.program->code.size();
       }
+      if (l.constants) entry["constants"] = constants_json(*l.constants);
       files.push_back(std::move(entry));
       if (valid && !report.json())
         fmt::print("{}: ok ({}, {} instructions{})\n", path, ir::profile_name(l.program->profile),

@@ -1,14 +1,13 @@
 // tierlift disasm FILE: a D3D9 token stream (raw bytes or a C array of hex DWORDs) back
-// into the IR, validated, printed as canonical text.
+// into the IR, validated, printed as canonical text; the CTAB constant table, when the
+// stream has one, heads the text as comments.
 #include <fmt/format.h>
 
 #include "commands.h"
 #include "front_end.h"
 #include "report.h"
-#include "tierlift/asm/bytecode.h"
+#include "tierlift/asm/constant_table.h"
 #include "tierlift/asm/printer.h"
-#include "tierlift/asm/validator.h"
-#include "tierlift/ir/profile.h"
 
 namespace tierlift::cli {
 
@@ -24,43 +23,37 @@ void register_disasm_command(CLI::App& app) {
   sub->add_option("-o,--output", opts->output, "Output file ('-': standard output)")
       ->capture_default_str();
   sub->add_flag("--json", opts->fe.json,
-                "Print one JSON document on standard output (docs/command-line.md)");
+                "Print one JSON document on standard output, the CTAB constants included "
+                "(docs/command-line.md)");
   sub->add_flag("--skip-validation", opts->fe.skip_validation, "Do not apply the profile rules");
   sub->add_option("--profile", opts->fe.profile, "Validate against this profile");
+  add_strict_flag(sub, opts->fe);
   set_action(sub, [opts] {
     Report report("disasm", opts->fe.json);
     if (std::string why = output_conflict(opts->output, {opts->file}); !why.empty()) {
       report.error("io", why, opts->output);
       return report.finish(kExitUsage);
     }
-    std::optional<ir::Profile> target;
-    if (!opts->fe.profile.empty()) {
-      target = ir::parse_profile(opts->fe.profile);
-      if (!target) {
-        report.error("usage", fmt::format("unknown profile '{}'", opts->fe.profile));
-        return report.finish(kExitUsage);
-      }
-    }
-    LoadedListing l;
-    std::string error;
-    auto bytes = read_file(opts->file, io::kTokenFileCap, error);
-    if (!bytes) {
-      report.error("io", error, opts->file);
+    // The loader reads within the token-file cap, tells a token stream from text by content,
+    // validates (unless skipped) and reads the CTAB.
+    LoadedListing l = load_listing(opts->file, opts->fe, io::kTokenFileCap);
+    if (l.io_error) {
+      report.error("io", l.io_message, opts->file);
       return report.finish(kExitUsage);
     }
-    // A C-array file is text: keep it so that its diagnostics can quote the line.
-    bool is_text = bytes->find('\0') == std::string::npos;
-    uint32_t file =
-        l.sources.add(opts->file == "-" ? "<stdin>" : opts->file, is_text ? *bytes : "");
-    std::optional<ir::Program> program;
-    if (auto tokens = as::read_token_file(*bytes, l.diags, file))
-      program = as::disassemble(*tokens, l.diags, file);
-    if (program && !opts->fe.skip_validation &&
-        !as::validate(*program, target.value_or(program->profile), l.diags))
-      program.reset();
+    if (l.form == as::ListingForm::Text) {
+      report.error("listing-form",
+                   "this is assembly text, not a token stream; `tierlift fmt` prints it in "
+                   "canonical form, `tierlift assemble` makes a token stream of it",
+                   opts->file);
+      return report.finish(kExitInvalid);
+    }
     report.diagnostics(l.diags, l.sources);
-    if (!program) return report.finish(kExitInvalid);
-    std::string text = as::print_program(*program);
+    report.result()["form"] = as::listing_form_name(l.form);
+    if (l.constants) report.result()["constants"] = constants_json(*l.constants);
+    if (!l.program || l.diags.has_errors()) return report.finish(kExitInvalid);
+    std::string text = as::print_program(*l.program);
+    if (l.constants) text = as::print_constant_table(*l.constants) + text;
     if (opts->output == "-") {
       report.output("text", text);
       return report.finish(kExitOk);

@@ -13,13 +13,14 @@
 #include "report.h"
 #include "tierlift/effects/analytic_device.h"
 #include "tierlift/effects/scene.h"
+#include "tierlift/ir/ps1x_range.h"
 #include "tierlift/vulkan/device.h"
 
 namespace tierlift::cli {
 namespace {
 
 struct GlowFlags {
-  std::string scene, image, tier, format, backend = "all", output, gpu;
+  std::string scene, image, tier, format, backend = "all", output, gpu, ps1x_max;
   unsigned downsample = 0; // 0: the scene's
   bool no_half_texel = false, json = false, quiet = false;
   bool both_devices() const { return backend == "both"; } // cpu and vulkan, no analytic
@@ -51,6 +52,16 @@ std::optional<effects::Scene> scene_from_flags(const GlowFlags& f, Report& repor
   if (f.downsample != 0) p.downsample = f.downsample;
   if (!f.format.empty()) p.format = *img::parse_format(f.format);
   if (f.no_half_texel) p.half_texel = false;
+  if (!f.ps1x_max.empty()) {
+    std::string why;
+    auto m = ir::parse_ps1x_max(f.ps1x_max, &why);
+    if (!m) {
+      report.error("usage", "--ps1x-max " + why);
+      *exit_code = kExitUsage;
+      return std::nullopt;
+    }
+    p.ps1x_max = *m;
+  }
   return load.scene;
 }
 
@@ -80,6 +91,7 @@ nlohmann::json summary_json(const effects::Scene& scene, const effects::GlowPlan
       {"downsample", p.downsample},
       {"half_texel", p.half_texel},
       {"intensity", p.intensity},
+      {"ps1x_max", {{"preset", ir::ps1x_max_label(p.ps1x_max)}, {"value", p.ps1x_max}}},
       {"glow", {{"width", plan.glow_width}, {"height", plan.glow_height}}},
       {"taps", plan.taps.size()},
       {"blur_passes_per_axis", plan.blur_passes_per_axis},
@@ -182,11 +194,11 @@ int run(const GlowFlags& f) {
     j["written"] = written;
   } else {
     fmt::print("glow {}: {}x{} {}, downsample {} ({}x{}), {} taps, {} blur passes per axis, "
-               "half texel {}\n",
+               "half texel {}, ps1x-max {}\n",
                effects::tier_name(params.tier), params.width, params.height,
                img::format_name(params.format), params.downsample, plan.glow_width,
                plan.glow_height, plan.taps.size(), plan.blur_passes_per_axis,
-               params.half_texel ? "on" : "off");
+               params.half_texel ? "on" : "off", ir::ps1x_max_label(params.ps1x_max));
     for (const GlowWay& w : ways)
       fmt::print("{}: {} passes in {:.1f} ms{}\n", w.name, w.glow.run.passes.size(),
                  w.glow.run.total_ms, w.name == "vulkan" ? fmt::format(" ({})", vk->name()) : "");
@@ -229,6 +241,9 @@ void register_glow_command(CLI::App& app) {
                   "ways; their agreement is printed)")
       ->check(CLI::IsMember({"cpu", "vulkan", "analytic", "both", "all"}))
       ->capture_default_str();
+  sub->add_option("--ps1x-max", f->ps1x_max,
+                  "ps_1_x register range of tier dx8: geforce3 (1), radeon8500 (8), d3d9 "
+                  "(default), max, or a number >= 1");
   sub->add_flag("--no-half-texel", f->no_half_texel,
                 "Leave the half texel out of the blur offsets (taps land on texel corners)");
   sub->add_option("-o,--output", f->output,

@@ -9,9 +9,11 @@
 
 #include "commands.h"
 #include "front_end.h"
+#include "named_constants.h"
 #include "report.h"
 #include "tierlift/cpu/run_job.h"
 #include "tierlift/image/compare.h"
+#include "tierlift/ir/ps1x_range.h"
 #include "tierlift/vulkan/run_job.h"
 
 namespace tierlift::cli {
@@ -22,10 +24,10 @@ struct RunFlags {
   std::string pixel_center = "d3d9", output;
   std::vector<std::string> consts, inputs, attrs, textures, probes;
   int subtexel_bits = 0;
-  float ps1x_max = 1.0f;
+  std::string ps1x_max{ir::kDefaultPs1xPreset};
   unsigned threads = 0;
   std::string backend = "cpu", gpu;
-  FrontEndOptions fe; // -D, -I, --profile, --skip-validation, --json
+  FrontEndOptions fe; // -D, -I, --profile, --strict, --skip-validation, --json
 };
 
 // A usage problem: message on stderr, exit 2.
@@ -38,6 +40,15 @@ template <class T> T need(std::optional<T> value, const std::string& error) {
   return *value;
 }
 
+// --const settings, names already resolved to registers (named_constants.h).
+std::vector<cpu::ConstSetting> parse_constants(const std::vector<std::string>& settings) {
+  std::vector<cpu::ConstSetting> out;
+  std::string err;
+  for (const auto& s : settings) out.push_back(need(cpu::parse_const_setting(s, err), err));
+  return out;
+}
+
+// Every flag but --const (read once the listings' constant tables are known).
 cpu::RunRequest build_request(const RunFlags& f) {
   cpu::RunRequest r;
   std::string err;
@@ -46,7 +57,6 @@ cpu::RunRequest build_request(const RunFlags& f) {
   r.height = size[1];
   r.format = need(img::parse_format(f.format),
                   fmt::format("--format '{}': expected rgba8, rgba16f or rgba32f", f.format));
-  for (const auto& s : f.consts) r.constants.push_back(need(cpu::parse_const_setting(s, err), err));
   for (const auto& s : f.inputs) r.inputs.push_back(need(cpu::parse_input_setting(s, err), err));
   for (const auto& s : f.attrs) r.attrs.push_back(need(cpu::parse_attr_setting(s, err), err));
   for (const auto& s : f.textures)
@@ -68,9 +78,8 @@ cpu::RunRequest build_request(const RunFlags& f) {
   if (f.subtexel_bits < 0 || f.subtexel_bits > 24)
     throw UsageError{fmt::format("--subtexel-bits {}: expected 0 (exact) .. 24", f.subtexel_bits)};
   r.conventions.subtexel_bits = f.subtexel_bits;
-  if (!(f.ps1x_max >= 1.0f) || !std::isfinite(f.ps1x_max))
-    throw UsageError{fmt::format("--ps1x-max {}: expected a finite value >= 1", f.ps1x_max)};
-  r.conventions.ps1x_max_value = f.ps1x_max;
+  auto ps1x_max = ir::parse_ps1x_max(f.ps1x_max, &err); // before `need` reads err
+  r.conventions.ps1x_max_value = need(ps1x_max, "--ps1x-max " + err);
   r.threads = f.threads;
   return r;
 }
@@ -105,6 +114,9 @@ nlohmann::json result_json(const RunFlags& f, const cpu::RunRequest& r, const cp
         {{"x", p.x}, {"y", p.y}, {"rgba", {p.value[0], p.value[1], p.value[2], p.value[3]}}});
   return {{"size", {{"width", r.width}, {"height", r.height}}},
           {"format", img::format_name(r.format)},
+          {"ps1x_max",
+           {{"preset", ir::ps1x_max_label(r.conventions.ps1x_max_value)},
+            {"value", r.conventions.ps1x_max_value}}},
           {"probes", probes},
           {"output", f.output.empty() ? nlohmann::json() : nlohmann::json(f.output)},
           {"pixels_shaded", out.stats.pixels_shaded},
@@ -120,6 +132,8 @@ int run(const RunFlags& f) {
     report.error("usage", "nothing to draw: give --vs, --ps or --input (tierlift run --help)");
     return report.finish(kExitUsage);
   }
+  // Every flag but --const is checked before any file is read; --const may name a constant
+  // of a token stream's CTAB, so it is read once the listings are loaded.
   cpu::RunRequest req;
   try {
     req = build_request(f);
@@ -156,6 +170,22 @@ int run(const RunFlags& f) {
     listings_ok = listings_ok && (*l)->program && !(*l)->diags.has_errors();
   }
   if (!listings_ok) return report.finish(kExitInvalid);
+  // Constants named by a token stream's CTAB become the registers they cover.
+  auto table = [](const std::optional<LoadedListing>& l) {
+    return l && l->constants ? &*l->constants : nullptr;
+  };
+  std::string const_error;
+  auto consts = resolve_named_constants(f.consts, table(vs), table(ps), const_error);
+  if (!consts) {
+    report.error("usage", const_error);
+    return report.finish(kExitUsage);
+  }
+  try {
+    req.constants = parse_constants(*consts);
+  } catch (const UsageError& e) {
+    report.error("usage", e.message);
+    return report.finish(kExitUsage);
+  }
   if (vs) req.vs = std::make_shared<const ir::Program>(*vs->program);
   if (ps) req.ps = std::make_shared<const ir::Program>(*ps->program);
 
@@ -281,7 +311,8 @@ void register_run_command(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--format", f->format, "rgba8 | rgba16f | rgba32f")->capture_default_str();
   sub->add_option("--const", f->consts,
-                  "[vs:|ps:]cN=x,y,z,w, iN=a,b,c,d or bN=true|false (no prefix: both stages)");
+                  "[vs:|ps:]cN=x,y,z,w, iN=a,b,c,d, bN=true|false, or NAME=… for a constant "
+                  "named in a token stream's CTAB (no prefix: both stages)");
   sub->add_option("--input", f->inputs, "Pixel-stage input v#|t#=x,y,z,w (without --vs)");
   sub->add_option("--attr", f->attrs, "Vertex input vN=x,y,z,w or vN=quad-uv (with --vs)");
   sub->add_option("--texture", f->textures, "sN=FILE.png|FILE.pfm|builtin:NAME[:WxH]");
@@ -291,7 +322,9 @@ void register_run_command(CLI::App& app) {
   sub->add_option("--pixel-center", f->pixel_center, "d3d9 | modern")->capture_default_str();
   sub->add_option("--subtexel-bits", f->subtexel_bits, "Bilinear fraction bits (0 = exact)")
       ->capture_default_str();
-  sub->add_option("--ps1x-max", f->ps1x_max, "ps_1_x register range (MaxPixelShaderValue)")
+  sub->add_option("--ps1x-max", f->ps1x_max,
+                  "ps_1_x register range (MaxPixelShaderValue): geforce3 (1), radeon8500 (8), "
+                  "d3d9, max, or a number >= 1")
       ->capture_default_str();
   sub->add_option("--probe", f->probes, "Print the stored value of pixel X,Y");
   sub->add_option("-o,--output", f->output,

@@ -4,12 +4,16 @@
 
 #include <fmt/format.h>
 
-#include "tierlift/asm/parser.h"
-#include "tierlift/asm/validator.h"
 #include "tierlift/io/output_file.h"
 #include "tierlift/ir/profile.h"
 
 namespace tierlift::cli {
+
+void add_strict_flag(CLI::App* sub, FrontEndOptions& o) {
+  sub->add_flag("--strict", o.strict,
+                "The documented rules only: reject what the Direct3D runtimes took beyond them "
+                "(scalar sources without a replicate swizzle, ps_1_4 texcrd without a mask)");
+}
 
 void add_front_end_options(CLI::App* sub, FrontEndOptions& o, bool skip_validation_flag,
                            bool json_flag) {
@@ -24,6 +28,7 @@ void add_front_end_options(CLI::App* sub, FrontEndOptions& o, bool skip_validati
   if (json_flag)
     sub->add_flag("--json", o.json,
                   "Print one JSON document on standard output (docs/command-line.md)");
+  add_strict_flag(sub, o);
   if (skip_validation_flag)
     sub->add_flag("--skip-validation", o.skip_validation,
                   "Do not apply the profile rules (like fxc /Vd): a fragment that parses is "
@@ -49,10 +54,11 @@ std::string write_output(const std::string& path, std::string_view bytes) {
   return io::write_output(path, bytes);
 }
 
-LoadedListing load_listing(const std::string& path, const FrontEndOptions& options) {
+LoadedListing load_listing(const std::string& path, const FrontEndOptions& options,
+                           const io::ReadCap& cap) {
   LoadedListing out;
   std::string error;
-  auto text = read_file(path, io::kListingCap, error);
+  auto text = read_file(path, cap, error);
   if (!text) {
     out.io_error = true;
     out.io_message = error;
@@ -71,34 +77,41 @@ LoadedListing load_listing(const std::string& path, const FrontEndOptions& optio
       return out;
     }
   }
-  as::ParseOptions popts;
+  as::LoadOptions lopts;
   for (const std::string& d : options.defines) {
     auto eq = d.find('=');
     if (eq == std::string::npos)
-      popts.defines.emplace_back(d, "1");
+      lopts.parse.defines.emplace_back(d, "1");
     else
-      popts.defines.emplace_back(d.substr(0, eq), d.substr(eq + 1));
+      lopts.parse.defines.emplace_back(d.substr(0, eq), d.substr(eq + 1));
   }
-  popts.include_dirs = options.include_dirs;
+  lopts.parse.include_dirs = options.include_dirs;
+  lopts.profile = target;
+  lopts.skip_validation = options.skip_validation;
+  lopts.strict = options.strict;
   uint32_t file = out.sources.add(path == "-" ? "<stdin>" : path, std::move(*text));
-  auto program = as::parse_program(file, out.sources, out.diags, popts);
-  if (!program) return out;
-  ir::Profile profile = target.value_or(program->profile);
-  if (ir::stage_of(profile) != program->stage()) {
-    out.diags.error(program->version_loc, "profile",
-                    fmt::format("--profile {} is a {} profile, but the listing is {}",
-                                ir::profile_name(profile),
-                                ir::is_vertex(profile) ? "vertex" : "pixel",
-                                ir::profile_name(program->profile)));
-    return out;
-  }
-  if (!options.skip_validation && !as::validate(*program, profile, out.diags)) return out;
-  out.program = std::move(program);
+  as::LoadResult r = as::load_listing(file, out.sources, out.diags, lopts);
+  out.form = r.form;
+  out.constants = std::move(r.constants);
+  out.program = std::move(r.program);
   return out;
 }
 
 nlohmann::json diagnostics_json(const LoadedListing& listing) {
   return nlohmann::json::parse(ir::render_json(listing.diags, listing.sources));
+}
+
+nlohmann::json constants_json(const as::ConstantTable& table) {
+  static constexpr const char* kSets[] = {"bool", "int4", "float4", "sampler"};
+  nlohmann::json out = nlohmann::json::array();
+  for (const as::NamedConstant& c : table.constants)
+    out.push_back({{"name", c.name},
+                   {"registers", c.registers()},
+                   {"set", kSets[static_cast<int>(c.set)]},
+                   {"index", c.index},
+                   {"count", c.count},
+                   {"type", c.type}});
+  return out;
 }
 
 void print_diagnostics(const LoadedListing& listing) {

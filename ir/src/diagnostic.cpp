@@ -98,6 +98,9 @@ std::string render_text(const Diagnostic& d, const SourceManager& sm) {
   if (d.loc.valid())
     out = fmt::format("{}:{}:{}: {}: {}", file_name(sm, d.loc), d.loc.line, d.loc.col,
                       severity_name(d.severity), d.message);
+  else if (d.loc.has_offset())
+    out = fmt::format("{}:+0x{:x}: {}: {}", file_name(sm, d.loc), d.loc.byte_offset,
+                      severity_name(d.severity), d.message);
   else
     out = fmt::format("{}: {}: {}", file_name(sm, d.loc), severity_name(d.severity), d.message);
   if (!d.rule.empty()) out += fmt::format(" [{}]", d.rule);
@@ -129,6 +132,7 @@ std::string render_json(const DiagnosticSink& sink, const SourceManager& sm) {
     j["line"] = d.loc.line;
     j["column"] = d.loc.col;
     j["length"] = d.loc.length;
+    if (d.loc.has_offset()) j["offset"] = d.loc.byte_offset; // a token stream's byte offset
     j["severity"] = severity_name(d.severity);
     j["rule"] = d.rule;
     j["message"] = d.message;
