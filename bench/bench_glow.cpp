@@ -1,13 +1,16 @@
-// The glow of issue 5 at 1920×1080, downsample 4, default blur profile: frame time on the
-// Vulkan device (lavapipe) and on the CPU interpreter, against the same glow written with
-// OpenCV (rgb × alpha, resize INTER_AREA, sepFilter2D with the plan's own taps, resize
-// INTER_LINEAR, add) in float, measured in the same run. bench/run.sh prints the ratios.
-//
-// What one frame is, on a tierlift device: begin_run (the scene handed over), every pass of
-// the plan in order, and the final frame read back — what `tierlift glow` does for one
-// image, minus reading the intermediate textures back. Building the plan (parsing the
-// listings) and creating the Vulkan device happen once, outside the loop. On the OpenCV side
-// one frame is the five calls below into buffers kept across frames (the idiomatic use).
+// The glow of issue 5 at 1920×1080, downsample 4, default blur profile, measured in one run:
+//   * BM_Glow_Vulkan/<case>: the steady-state frame on the Vulkan device (lavapipe);
+//   * BM_Glow_VulkanVsGlsl/<case>: the Vulkan frame and the same graph written by hand in
+//     GLSL (glsl_glow_peer.h) on the same device, alternating frame for frame; run.sh
+//     prints Vulkan / GLSL (the lift's cost: ≤ 1.0 is the aim);
+//   * BM_Glow_Interpreter/<case>: the steady-state frame on the CPU device;
+//   * BM_Glow_OpenCV: the same glow written with OpenCV (rgb × alpha, resize INTER_AREA,
+//     sepFilter2D with the plan's own taps, resize INTER_LINEAR, add) in float;
+//   * BM_GlowScale_<device>/<w>x<h>/taps:<n> (glow_frames.h): frame time against size and
+//     taps; run.sh fits the exponent of time against pixels × taps.
+// A frame on a tierlift device is glow_frames.h's (every pass, then finish(); setup
+// outside the loop). On the OpenCV side one frame is the five calls below into buffers kept
+// across frames (the idiomatic use).
 //
 // Each device benchmark also compares its final frame with OpenCV's once, after the loop
 // (counters max_abs_vs_opencv, rmse_vs_opencv, identical_vs_opencv): a sanity check that the
@@ -18,6 +21,7 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <memory>
 #include <string>
@@ -25,11 +29,12 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "tierlift/effects/default_scene.h"
-#include "tierlift/effects/device.h"
+#include <glslang/Public/ShaderLang.h>
+
+#include "glow_frames.h"
+#include "glsl_glow_peer.h"
 #include "tierlift/effects/glow.h"
 #include "tierlift/image/compare.h"
-#include "tierlift/vulkan/device.h"
 
 using namespace tierlift;
 
@@ -41,19 +46,11 @@ constexpr unsigned kDownsample = 4;
 // The scene every benchmark draws, made once, in RGBA32F (its colours are multiples of
 // 1/255, so RGBA8 stores them exactly).
 const img::Image& scene() {
-  static const img::Image s = effects::make_default_scene(kW, kH, img::Format::RGBA32F);
-  return s;
+  return bench::glow_scene(kW, kH);
 }
 
 effects::GlowPlan make_plan(effects::Tier tier, img::Format format) {
-  effects::GlowParams p;
-  p.tier = tier;
-  p.width = kW;
-  p.height = kH;
-  p.downsample = kDownsample;
-  p.format = format;
-  p.subtexel_bits = 0; // as the tests and `tierlift glow` run it (exact bilinear weights)
-  return effects::build_glow(p);
+  return bench::glow_plan(tier, format, kW, kH);
 }
 
 // ---- the OpenCV glow ----------------------------------------------------------------------
@@ -124,35 +121,11 @@ void BM_Glow_OpenCV(benchmark::State& state) {
 
 // ---- the glow on a tierlift device --------------------------------------------------------
 
-// One frame (see the top of the file). Empty string on success.
-std::string device_frame(effects::PassDevice& dev, const effects::GlowPlan& plan,
-                         const effects::ImageMap& inputs, img::Image& final_frame) {
-  if (std::string e = dev.begin_run(plan.graph, inputs); !e.empty()) return e;
-  for (const effects::PassDesc& p : plan.graph.passes)
-    if (std::string e = dev.run_pass(p); !e.empty()) return p.name + ": " + e;
-  return dev.read_texture(std::string(effects::kFinalTexture), final_frame);
-}
-
 void run_device(benchmark::State& state, effects::PassDevice& dev, effects::Tier tier,
                 img::Format format) {
   const effects::GlowPlan plan = make_plan(tier, format);
-  if (!plan) { // e.g. a tier whose generator is not built ("tier dx8: not built yet")
-    state.SkipWithError(plan.error.c_str());
-    return;
-  }
-  img::Image input = scene();
-  input.format = format;
-  img::quantize_in_place(input); // stored in the graph's format, as run_graph does
-  const effects::ImageMap inputs{{std::string(effects::kSceneTexture), input}};
   img::Image final_frame;
-  for (auto _ : state) {
-    if (std::string e = device_frame(dev, plan, inputs, final_frame); !e.empty()) {
-      state.SkipWithError(e.c_str());
-      return;
-    }
-    benchmark::DoNotOptimize(final_frame.rgba.data());
-  }
-  state.counters["passes"] = double(plan.graph.passes.size());
+  if (!bench::run_device_frames(state, dev, plan, scene(), &final_frame)) return;
   // OpenCV works in float throughout; its final frame gets the target's store rule (RGBA8:
   // clamp to [0, 1] and 255 steps) so that the check compares like with like. The RGBA8
   // graph also rounds every intermediate texture, so a few LSB differ there.
@@ -166,24 +139,76 @@ void run_device(benchmark::State& state, effects::PassDevice& dev, effects::Tier
   }
 }
 
-// Created once for every Vulkan benchmark (instance and logical device, no validation).
-vulkan::Device* vulkan_device(std::string* error) {
-  static std::string create_error;
-  static const std::unique_ptr<vulkan::Device> dev = vulkan::Device::create({}, &create_error);
-  *error = create_error;
-  return dev.get();
-}
-
-// A frame takes about a second on lavapipe: MinTime 2 s gives a few frames.
 void BM_Glow_Vulkan(benchmark::State& state, effects::Tier tier, img::Format format) {
   std::string error;
-  vulkan::Device* vk = vulkan_device(&error);
+  vulkan::Device* vk = bench::bench_vulkan_device(&error);
   if (!vk) {
     state.SkipWithError(error.c_str());
     return;
   }
   std::unique_ptr<effects::PassDevice> dev = effects::make_vulkan_pass_device(*vk);
   run_device(state, *dev, tier, format);
+  state.SetLabel(vk->name());
+}
+
+// Vulkan against the hand-written GLSL chain of the same graph on the same device (its own
+// instance), frame for frame: each iteration runs one frame of each, so a load that comes
+// and goes on the machine falls on both. Counters: the median frame of each and their
+// ratio (bench/run.sh prints it; the aim is <= 1.0).
+void BM_Glow_VulkanVsGlsl(benchmark::State& state, effects::Tier tier, img::Format format) {
+  static const bool glslang_ready = glslang::InitializeProcess();
+  const effects::GlowPlan plan = make_plan(tier, format);
+  std::string error;
+  vulkan::Device* vk = bench::bench_vulkan_device(&error);
+  if (!plan || !glslang_ready || !vk) {
+    state.SkipWithError(!plan ? plan.error.c_str() : vk ? "glslang failed" : error.c_str());
+    return;
+  }
+  img::Image input = scene();
+  input.format = format;
+  img::quantize_in_place(input);
+  std::unique_ptr<bench::GlslGlowPeer> peer =
+      bench::GlslGlowPeer::create(plan.graph, input, &error);
+  std::unique_ptr<effects::PassDevice> ours = effects::make_vulkan_pass_device(*vk);
+  const effects::ImageMap inputs{{std::string(effects::kSceneTexture), input}};
+  if (peer && (error = ours->begin_run(plan.graph, inputs)).empty())
+    error = peer->frame(); // both warm: first-touch of every texture's pages
+  for (const effects::PassDesc& p : plan.graph.passes)
+    if (error.empty()) error = ours->run_pass(p);
+  if (error.empty()) error = ours->finish();
+  if (!error.empty()) {
+    state.SkipWithError(error.c_str());
+    return;
+  }
+  using Clock = std::chrono::steady_clock;
+  auto ms = [](Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double, std::milli>(b - a).count();
+  };
+  std::vector<double> ours_ms, peer_ms;
+  for (auto _ : state) {
+    const auto t0 = Clock::now();
+    for (const effects::PassDesc& p : plan.graph.passes)
+      if (error.empty()) error = ours->run_pass(p);
+    if (error.empty()) error = ours->finish();
+    const auto t1 = Clock::now();
+    if (error.empty()) error = peer->frame();
+    const auto t2 = Clock::now();
+    if (!error.empty()) {
+      state.SkipWithError(error.c_str());
+      return;
+    }
+    ours_ms.push_back(ms(t0, t1));
+    peer_ms.push_back(ms(t1, t2));
+  }
+  auto median = [](std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const size_t n = v.size();
+    return n == 0 ? 0.0 : n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+  };
+  state.counters["vulkan_ms"] = median(ours_ms);
+  state.counters["glsl_ms"] = median(peer_ms);
+  state.counters["vulkan_over_glsl"] = median(ours_ms) / median(peer_ms);
+  state.counters["passes"] = double(plan.graph.passes.size());
   state.SetLabel(vk->name());
 }
 
@@ -198,31 +223,30 @@ using img::Format;
 
 BENCHMARK(BM_Glow_OpenCV)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-BENCHMARK_CAPTURE(BM_Glow_Vulkan, dx9_rgba32f, Tier::Dx9, Format::RGBA32F)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime()
-    ->MinTime(2.0);
-BENCHMARK_CAPTURE(BM_Glow_Vulkan, dx9_rgba8, Tier::Dx9, Format::RGBA8)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime()
-    ->MinTime(2.0);
-BENCHMARK_CAPTURE(BM_Glow_Vulkan, dx8_rgba8, Tier::Dx8, Format::RGBA8)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime()
-    ->MinTime(2.0);
+#define TIERLIFT_GLOW_CASES(fn, ...)                                                               \
+  BENCHMARK_CAPTURE(fn, dx9_rgba32f, Tier::Dx9, Format::RGBA32F)->__VA_ARGS__;                     \
+  BENCHMARK_CAPTURE(fn, dx9_rgba8, Tier::Dx9, Format::RGBA8)->__VA_ARGS__;                         \
+  BENCHMARK_CAPTURE(fn, dx8_rgba8, Tier::Dx8, Format::RGBA8)->__VA_ARGS__
+TIERLIFT_GLOW_CASES(BM_Glow_Vulkan, Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0));
+TIERLIFT_GLOW_CASES(BM_Glow_VulkanVsGlsl,
+                    Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0));
+TIERLIFT_GLOW_CASES(BM_Glow_Interpreter,
+                    Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(2));
 
-BENCHMARK_CAPTURE(BM_Glow_Interpreter, dx9_rgba32f, Tier::Dx9, Format::RGBA32F)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime()
-    ->Iterations(2);
-BENCHMARK_CAPTURE(BM_Glow_Interpreter, dx9_rgba8, Tier::Dx9, Format::RGBA8)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime()
-    ->Iterations(2);
-BENCHMARK_CAPTURE(BM_Glow_Interpreter, dx8_rgba8, Tier::Dx8, Format::RGBA8)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime()
-    ->Iterations(2);
+// Scaling of the devices this file knows (another device's file registers its own).
+[[maybe_unused]] const bool kScalingRegistered = [] {
+  bench::register_glow_scaling("Vulkan", [](std::string* error) {
+    vulkan::Device* vk = bench::bench_vulkan_device(error);
+    return vk ? effects::make_vulkan_pass_device(*vk) : nullptr;
+  });
+  bench::register_glow_scaling(
+      "Interpreter",
+      [](std::string*) -> std::unique_ptr<effects::PassDevice> {
+        return std::make_unique<effects::CpuPassDevice>(0);
+      },
+      1);
+  return true;
+}();
 
 } // namespace
 

@@ -122,4 +122,26 @@ std::string write_glow_images(const std::string& dir, const std::vector<GlowWay>
   return {};
 }
 
+void print_frames_table(const std::vector<FrameReport>& frames) {
+  if (frames.empty()) return;
+  fmt::print("frames: setup once, then {} steady-state frame(s) per device\n",
+             frames.front().times.frame_ms.size());
+  fmt::print("{:<10} {:>10} {:>10} {:>10} {:>10}\n", "device", "setup ms", "median ms", "min ms",
+             "max ms");
+  for (const FrameReport& r : frames)
+    fmt::print("{:<10} {:>10.1f} {:>10.2f} {:>10.2f} {:>10.2f}\n", r.device, r.times.setup_ms,
+               r.times.median_ms(), r.times.min_ms(), r.times.max_ms());
+}
+
+nlohmann::json frames_json(const std::vector<FrameReport>& frames) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const FrameReport& r : frames)
+    j[r.device] = {{"setup_ms", r.times.setup_ms},
+                   {"median_ms", r.times.median_ms()},
+                   {"min_ms", r.times.min_ms()},
+                   {"max_ms", r.times.max_ms()},
+                   {"n", r.times.frame_ms.size()}};
+  return j;
+}
+
 } // namespace tierlift::cli

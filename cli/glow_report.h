@@ -33,6 +33,16 @@ std::vector<PairAgreement> compare_ways(const std::vector<GlowWay>& ways, std::s
 void print_agreement_table(const std::vector<PairAgreement>& pairs);
 nlohmann::json agreement_json(const std::vector<PairAgreement>& pairs);
 
+// `--frames N`: one device's setup and steady-state frames (effects::run_frames).
+struct FrameReport {
+  std::string device;
+  effects::FrameTimes times;
+};
+// "frames: setup, then N frames each" and one row per device: setup, median, min, max ms.
+void print_frames_table(const std::vector<FrameReport>& frames);
+// {"<device>": {"setup_ms", "median_ms", "min_ms", "max_ms", "n"}}
+nlohmann::json frames_json(const std::vector<FrameReport>& frames);
+
 // Writes DIR/{scene,glow,final}-<way>.png for each way (opaque copies: the scene's alpha is
 // the glow mask, and viewers would show the ground as transparent), plus .pfm of each when
 // the target format is a float format. Empty string on success. Every file is written to a

@@ -1,5 +1,6 @@
 #include "tierlift/effects/run_graph.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include <fmt/format.h>
@@ -67,26 +68,47 @@ std::optional<cpu::Pass> make_pass(const PassDesc& desc, const ImageMap& images,
   return pass;
 }
 
+namespace {
+
+// check_graph, the inputs at their declared size and format, begin_run. Empty on success.
+std::string begin_graph(const EffectGraph& graph, PassDevice& device, ImageMap& images) {
+  std::string error = check_graph(graph);
+  for (const TextureDesc& t : graph.textures)
+    if (error.empty() && t.input) error = prepare_input(t, images);
+  if (!error.empty()) return error;
+  ImageMap inputs;
+  for (const TextureDesc& t : graph.textures)
+    if (t.input) inputs.emplace(t.name, images.find(t.name)->second);
+  if (std::string e = device.begin_run(graph, inputs); !e.empty())
+    return fmt::format("{}: {}", device.name(), e);
+  return {};
+}
+
+// Every texture back into `images` (a failure leaves the map as it was given).
+std::string read_all(const EffectGraph& graph, PassDevice& device, ImageMap& images) {
+  ImageMap out;
+  for (const TextureDesc& t : graph.textures)
+    if (std::string e = device.read_texture(t.name, out[t.name]); !e.empty())
+      return fmt::format("{}: reading '{}' back: {}", device.name(), t.name, e);
+  for (auto& [name, image] : out) images[name] = std::move(image);
+  return {};
+}
+
+} // namespace
+
 GraphRun run_graph(const EffectGraph& graph, PassDevice& device, ImageMap& images,
                    bool keep_pass_images, const PassProgress& progress) {
   GraphRun run;
   auto t_all = std::chrono::steady_clock::now();
-  run.error = check_graph(graph);
-  for (const TextureDesc& t : graph.textures)
-    if (run.error.empty() && t.input) run.error = prepare_input(t, images);
-  if (run.error.empty()) {
-    ImageMap inputs;
-    for (const TextureDesc& t : graph.textures)
-      if (t.input) inputs.emplace(t.name, images.find(t.name)->second);
-    if (std::string e = device.begin_run(graph, inputs); !e.empty())
-      run.error = fmt::format("{}: {}", device.name(), e);
-  }
+  run.error = begin_graph(graph, device, images);
   if (!run.error.empty()) return run;
 
   for (const PassDesc& desc : graph.passes) {
     if (progress) progress(run.passes.size(), graph.passes.size(), desc);
     auto t0 = std::chrono::steady_clock::now();
-    if (std::string e = device.run_pass(desc); !e.empty()) {
+    std::string e = device.run_pass(desc);
+    if (e.empty()) e = device.finish(); // the pass's own time, not the time it was queued
+    if (!e.empty()) {
       run.error = fmt::format("pass '{}' on {}: {}", desc.name, device.name(), e);
       return run;
     }
@@ -101,18 +123,53 @@ GraphRun run_graph(const EffectGraph& graph, PassDevice& device, ImageMap& image
     run.passes.push_back(std::move(rec));
   }
   // Every texture back into the map (a failed run leaves the map as it was given).
-  ImageMap out;
-  for (const TextureDesc& t : graph.textures)
-    if (std::string e = device.read_texture(t.name, out[t.name]); !e.empty()) {
-      run.error = fmt::format("{}: reading '{}' back: {}", device.name(), t.name, e);
-      return run;
-    }
-  for (auto& [name, image] : out) images[name] = std::move(image);
+  run.error = read_all(graph, device, images);
+  if (!run.error.empty()) return run;
   for (const TextureDesc& t : graph.textures)
     if (std::vector<uint8_t> mask; device.rounding_midpoints(t.name, mask))
       run.midpoints[t.name] = std::move(mask);
   run.ok = true;
   run.total_ms = ms_since(t_all);
+  return run;
+}
+
+double FrameTimes::median_ms() const {
+  if (frame_ms.empty()) return 0;
+  std::vector<double> v = frame_ms;
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+}
+double FrameTimes::min_ms() const {
+  return frame_ms.empty() ? 0 : *std::min_element(frame_ms.begin(), frame_ms.end());
+}
+double FrameTimes::max_ms() const {
+  return frame_ms.empty() ? 0 : *std::max_element(frame_ms.begin(), frame_ms.end());
+}
+
+FramesRun run_frames(const EffectGraph& graph, PassDevice& device, ImageMap& images,
+                     unsigned frames) {
+  FramesRun run;
+  auto t0 = std::chrono::steady_clock::now();
+  run.error = begin_graph(graph, device, images);
+  if (!run.error.empty()) return run;
+  run.times.setup_ms = ms_since(t0);
+  for (unsigned f = 0; f < frames; ++f) {
+    auto t = std::chrono::steady_clock::now();
+    for (const PassDesc& desc : graph.passes)
+      if (std::string e = device.run_pass(desc); !e.empty()) {
+        run.error =
+            fmt::format("frame {}, pass '{}' on {}: {}", f + 1, desc.name, device.name(), e);
+        return run;
+      }
+    if (std::string e = device.finish(); !e.empty()) {
+      run.error = fmt::format("frame {} on {}: {}", f + 1, device.name(), e);
+      return run;
+    }
+    run.times.frame_ms.push_back(ms_since(t));
+  }
+  run.error = read_all(graph, device, images);
+  run.ok = run.error.empty();
   return run;
 }
 

@@ -1,6 +1,11 @@
 // The Vulkan device behind the PassDevice interface (built only with tierlift_vulkan): the
 // graph's textures live in a vulkan::TextureSet for the run, so passes read and write device
 // memory and nothing comes back to the host until read_texture asks for it.
+//
+// begin_run makes every pass's draw ahead (SPIR-V, pipeline, descriptor set, framebuffer:
+// the set keeps them), so a pass costs its commands only; passes are recorded into one
+// command buffer, with barriers between them, that finish() or a read submits: one submit
+// per frame instead of a submit and a wait per pass.
 #include "tierlift/effects/device.h"
 
 #if TIERLIFT_HAVE_VULKAN
@@ -15,7 +20,7 @@ namespace {
 
 class VulkanPassDevice final : public PassDevice {
 public:
-  explicit VulkanPassDevice(vulkan::Device& device) : textures_(device) {}
+  explicit VulkanPassDevice(vulkan::Device& device) : device_(device), textures_(device) {}
   std::string name() const override { return "vulkan"; }
 
   std::string begin_run(const EffectGraph& graph, const ImageMap& inputs) override {
@@ -29,9 +34,7 @@ public:
       if (auto it = inputs.find(t.name); e.empty() && it != inputs.end())
         e = textures_.upload(id, it->second);
       if (!e.empty()) {
-        textures_.clear();
-        ids_.clear();
-        placeholders_.clear();
+        drop();
         return fmt::format("texture '{}': {}", t.name, e);
       }
       ids_[t.name] = id;
@@ -39,26 +42,28 @@ public:
       placeholders_.emplace(t.name, img::Image());
     }
     graph_ = &graph;
-    return {};
+    for (const PassDesc& desc : graph.passes) {
+      Draw draw;
+      std::string e = make_draw(desc, draw);
+      if (e.empty()) e = textures_.prepare(draw.pass, draw.stages, draw.target);
+      if (!e.empty()) {
+        drop();
+        return fmt::format("pass '{}': {}", desc.name, e);
+      }
+    }
+    device_.save_pipeline_cache(); // for the next run (a no-op when nothing was added)
+    return textures_.set_batching(true);
   }
 
   std::string run_pass(const PassDesc& desc) override {
     if (!graph_) return "no run was begun";
-    std::string error;
-    std::optional<cpu::Pass> pass = make_pass(desc, placeholders_, graph_->conventions, &error);
-    if (!pass) return error;
-    auto target = ids_.find(desc.target);
-    if (target == ids_.end()) return fmt::format("no texture '{}'", desc.target);
-    vulkan::StageTextures stages{};
-    for (const TextureBind& b : desc.textures) {
-      auto it = ids_.find(b.texture); // make_pass checked the name and the stage already
-      if (it == ids_.end() || b.stage >= stages.size())
-        return fmt::format("pass '{}': texture '{}' has no image", desc.name, b.texture);
-      stages[b.stage] = it->second;
-    }
-    vulkan::DrawResult r = textures_.draw(*pass, stages, target->second);
+    Draw draw;
+    if (std::string e = make_draw(desc, draw); !e.empty()) return e;
+    vulkan::DrawResult r = textures_.draw(draw.pass, draw.stages, draw.target);
     return r.ok ? std::string() : r.error;
   }
+
+  std::string finish() override { return textures_.flush(); }
 
   std::string read_texture(const std::string& name, img::Image& out) override {
     auto it = ids_.find(name);
@@ -67,6 +72,37 @@ public:
   }
 
 private:
+  struct Draw {
+    cpu::Pass pass;
+    vulkan::StageTextures stages{};
+    vulkan::TextureId target{};
+  };
+
+  std::string make_draw(const PassDesc& desc, Draw& out) const {
+    std::string error;
+    std::optional<cpu::Pass> pass = make_pass(desc, placeholders_, graph_->conventions, &error);
+    if (!pass) return error;
+    auto target = ids_.find(desc.target);
+    if (target == ids_.end()) return fmt::format("no texture '{}'", desc.target);
+    for (const TextureBind& b : desc.textures) {
+      auto it = ids_.find(b.texture); // make_pass checked the name and the stage already
+      if (it == ids_.end() || b.stage >= out.stages.size())
+        return fmt::format("pass '{}': texture '{}' has no image", desc.name, b.texture);
+      out.stages[b.stage] = it->second;
+    }
+    out.pass = std::move(*pass);
+    out.target = target->second;
+    return {};
+  }
+
+  void drop() {
+    graph_ = nullptr;
+    textures_.clear();
+    ids_.clear();
+    placeholders_.clear();
+  }
+
+  vulkan::Device& device_;
   vulkan::TextureSet textures_;
   const EffectGraph* graph_ = nullptr;
   std::map<std::string, vulkan::TextureId, std::less<>> ids_;

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "pipeline_cache.h"
 #include "unorm8_to_float.h"
 #include "vk_internal.h"
 
@@ -68,6 +69,8 @@ Device::Impl::~Impl() {
   if (device) {
     vkDeviceWaitIdle(device);
     unorm8.reset();
+    vulkan::save_pipeline_cache(*this);
+    if (pipeline_cache) vkDestroyPipelineCache(device, pipeline_cache, nullptr);
     if (pool) vkDestroyCommandPool(device, pool, nullptr);
     vkDestroyDevice(device, nullptr);
   }

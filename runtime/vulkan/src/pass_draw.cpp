@@ -1,5 +1,6 @@
-// draw_pass: one cpu::Pass on Vulkan — programs, vertex data, constants, sampled textures,
-// descriptors, pipeline, the draw (see device.h for the mapping, pass_draw.h for the split).
+// prepare_draw / record_draw / draw_pass: one cpu::Pass on Vulkan — programs, vertex data,
+// constants, sampled textures, descriptors, pipeline, the draw (see device.h for the
+// mapping, pass_draw.h for the split).
 #include "pass_draw.h"
 
 #include <chrono>
@@ -77,28 +78,26 @@ std::string join_diagnostics(const ir::DiagnosticSink& diags) {
   return out.empty() ? "code generation failed" : out;
 }
 
-// Textures made for this draw only: host images of stages without a resident texture, as
-// the old per-pass path did (R32G32B32A32_SFLOAT, the floats as given).
-struct Transients {
-  std::vector<std::unique_ptr<Resident>> textures;
-  std::vector<std::pair<Resident*, Buffer>> uploads;
-};
-
-std::string host_texture(Device::Impl& d, Cleanup& cleanup, uint32_t stage, const img::Image& im,
-                         Transients& out, Resident*& r) {
+// A host image of a stage without a resident texture, as the old per-pass path did
+// (R32G32B32A32_SFLOAT, the floats as given), uploaded now: it belongs to the draw.
+std::string host_texture(Device::Impl& d, uint32_t stage, const img::Image& im, PreparedDraw& out,
+                         Resident*& r) {
   if (im.width == 0 || im.height == 0 || im.width > img::kMaxDimension ||
       im.height > img::kMaxDimension || im.rgba.size() != size_t{im.width} * im.height * 4)
     return fmt::format("s{}: texture has no pixels", stage);
   std::unique_ptr<Resident> t;
+  Cleanup staging_objects;
   Buffer staging;
   std::string err = create_resident(d, im.width, im.height, img::Format::RGBA32F, t);
   if (err.empty())
-    err = create_buffer(d, cleanup, im.rgba.size() * 4, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, staging);
+    err = create_buffer(d, staging_objects, im.rgba.size() * 4, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                        staging);
   if (!err.empty()) return err;
   std::memcpy(staging.mapped, im.rgba.data(), im.rgba.size() * 4);
+  err = submit_and_wait(d, [&](VkCommandBuffer cb) { record_upload(cb, *t, staging.buffer); });
+  if (!err.empty()) return err;
   r = t.get();
-  out.uploads.emplace_back(r, staging);
-  out.textures.push_back(std::move(t));
+  out.host_textures.push_back(std::move(t));
   return {};
 }
 
@@ -119,21 +118,15 @@ struct LayoutSnapshot {
 
 } // namespace
 
-DrawResult draw_pass(Device::Impl& d, const cpu::Pass& pass, const DrawTextures& textures,
-                     const DrawOptions& options) {
-  DrawResult res;
-  auto fail = [&](std::string msg) {
-    res.ok = false;
-    res.error = std::move(msg);
-    return res;
-  };
-  const auto t0 = Clock::now();
-  if (!textures.target) return fail("no render target");
+std::string prepare_draw(Device::Impl& d, const cpu::Pass& pass, const DrawTextures& textures,
+                         const DrawOptions& options, PreparedDraw& out) {
+  if (!textures.target) return "no render target";
   Resident& target = *textures.target;
+  out.target = &target;
   if (pass.vertex_program && pass.vertex_program->stage() != ir::ShaderStage::Vertex)
-    return fail("the vertex program is not a vertex shader");
+    return "the vertex program is not a vertex shader";
   if (pass.pixel_program && pass.pixel_program->stage() != ir::ShaderStage::Pixel)
-    return fail("the pixel program is not a pixel shader");
+    return "the pixel program is not a pixel shader";
 
   // Programs → SPIR-V.
   auto vs_prog = pass.vertex_program ? pass.vertex_program : passthrough_vertex_program();
@@ -144,145 +137,169 @@ DrawResult draw_pass(Device::Impl& d, const cpu::Pass& pass, const DrawTextures&
     co.stage_projected[s] = pass.textures[s].stage.projected;
   ir::DiagnosticSink diags;
   auto pair = codegen::compile_pair(*vs_prog, *ps_prog, co, diags);
-  if (!pair) return fail(join_diagnostics(diags));
-  if (!pair->vs.samplers.empty()) return fail("vertex-stage texture sampling is not supported");
+  if (!pair) return join_diagnostics(diags);
+  if (!pair->vs.samplers.empty()) return "vertex-stage texture sampling is not supported";
 
   Geometry geo;
-  if (std::string e = build_geometry(pass, geo); !e.empty()) return fail(e);
+  if (std::string e = build_geometry(pass, geo); !e.empty()) return e;
 
-  Cleanup cleanup;
+  Cleanup& cleanup = out.objects;
   std::string err;
   // The textures the pixel program samples: resident ones, else host images for this draw.
-  Transients transients;
-  std::array<Resident*, cpu::kMaxSamplers> sampled{};
   SampledImages images{};
   img::Image unbound(1, 1);
   unbound.rgba = {0, 0, 0, 1}; // an unbound stage reads (0, 0, 0, 1), as in D3D9
   for (const auto& si : pair->ps.samplers) {
     const uint32_t s = si.stage % cpu::kMaxSamplers;
-    if (sampled[s]) continue;
-    sampled[s] = textures.stages[s];
-    if (sampled[s] == &target)
-      return fail(fmt::format("s{}: a pass cannot sample its own render target", si.stage));
-    if (!sampled[s]) {
+    Resident*& r = out.sampled[s];
+    if (r) continue;
+    r = textures.stages[s];
+    if (r == &target)
+      return fmt::format("s{}: a pass cannot sample its own render target", si.stage);
+    if (!r) {
       const img::Image& im = pass.textures[s].image ? *pass.textures[s].image : unbound;
-      err = host_texture(d, cleanup, si.stage, im, transients, sampled[s]);
+      err = host_texture(d, si.stage, im, out, r);
     }
-    if (err.empty()) err = ensure_shadow(d, *sampled[s]);
-    if (!err.empty()) return fail(err);
-    images[s] = &sampled[s]->sampled();
+    if (err.empty()) err = ensure_shadow(d, *r);
+    if (!err.empty()) return err;
+    images[s] = &r->sampled();
   }
 
   // Vertex and index buffers.
-  Buffer vbuf, ibuf;
   err = create_buffer(d, cleanup, geo.vertices.size() * kVertexStride,
-                      VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, vbuf);
+                      VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, out.vertices);
   if (err.empty())
-    err = create_buffer(d, cleanup, geo.indices.size() * 4, VK_BUFFER_USAGE_INDEX_BUFFER_BIT, ibuf);
-  if (!err.empty()) return fail(err);
+    err = create_buffer(d, cleanup, geo.indices.size() * 4, VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+                        out.indices);
+  if (!err.empty()) return err;
   if (!geo.vertices.empty())
-    std::memcpy(vbuf.mapped, geo.vertices.data(), geo.vertices.size() * kVertexStride);
-  if (!geo.indices.empty()) std::memcpy(ibuf.mapped, geo.indices.data(), geo.indices.size() * 4);
+    std::memcpy(out.vertices.mapped, geo.vertices.data(), geo.vertices.size() * kVertexStride);
+  if (!geo.indices.empty())
+    std::memcpy(out.indices.mapped, geo.indices.data(), geo.indices.size() * 4);
+  out.index_count = static_cast<uint32_t>(geo.indices.size());
 
   // Descriptor set 0 and the pipeline layout.
   Bindings bound;
   err = create_bindings(d, cleanup, *pair, pass, images, bound);
-  if (!err.empty()) return fail(err);
+  if (!err.empty()) return err;
+  out.layout = bound.layout;
+  out.set = bound.set;
 
-  // Render pass, pipeline, and the staging buffer of a host target (upload, then readback).
+  // Render pass, framebuffer, pipeline.
   const VkFormat rt_format = target.stored.image.format;
   VkFormatProperties rt_props;
   vkGetPhysicalDeviceFormatProperties(d.physical, rt_format, &rt_props);
   if (!(rt_props.optimalTilingFeatures & VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT) ||
       (pass.blend != cpu::BlendMode::Replace &&
        !(rt_props.optimalTilingFeatures & VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT)))
-    return fail(fmt::format("the Vulkan device cannot render (and blend) to {}",
-                            img::format_name(target.format)));
-  Buffer rt_staging;
-  if (textures.host_target) {
-    const VkDeviceSize rt_bytes =
-        VkDeviceSize{target.width} * target.height * bytes_per_pixel(target.format);
-    err = create_buffer(d, cleanup, rt_bytes,
-                        VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                        rt_staging);
-    if (!err.empty()) return fail(err);
-    pack_pixels(*textures.host_target, rt_staging.mapped);
-    transients.uploads.emplace_back(&target, rt_staging);
-  }
-  VkRenderPass rp = VK_NULL_HANDLE;
-  VkFramebuffer fb = VK_NULL_HANDLE;
-  VkPipeline pipeline = VK_NULL_HANDLE;
-  err = create_render_pass(d, cleanup, rt_format, rp);
-  if (err.empty()) err = create_framebuffer(d, cleanup, rp, target.stored.image, fb);
+    return fmt::format("the Vulkan device cannot render (and blend) to {}",
+                       img::format_name(target.format));
+  err = create_render_pass(d, cleanup, rt_format, out.render_pass);
+  if (err.empty())
+    err = create_framebuffer(d, cleanup, out.render_pass, target.stored.image, out.framebuffer);
   PipelineDesc pd;
   pd.vs = &pair->vs;
   pd.ps = &pair->ps;
   pd.ps_words = options.flat_varyings ? decorate_inputs_flat(pair->ps.words) : pair->ps.words;
   pd.blend = pass.blend;
-  pd.render_pass = rp;
+  pd.render_pass = out.render_pass;
   pd.layout = bound.layout;
   pd.vertex_stride = kVertexStride;
-  if (err.empty()) err = create_pipeline(d, cleanup, pd, pipeline);
-  if (!err.empty()) return fail(err);
-
-  // Host data (the old path's textures and target) goes up first, in its own submit.
-  LayoutSnapshot snapshot;
-  snapshot.save(target);
-  for (Resident* r : sampled)
-    if (r) snapshot.save(*r);
-  if (!transients.uploads.empty()) {
-    err = submit_and_wait(d, [&](VkCommandBuffer cb) {
-      for (auto& [r, staging] : transients.uploads) record_upload(cb, *r, staging.buffer);
-    });
-    if (!err.empty()) {
-      snapshot.restore();
-      return fail(err);
-    }
-  }
+  if (err.empty()) err = create_pipeline(d, cleanup, pd, out.pipeline);
+  if (!err.empty()) return err;
 
   // Viewport (D3D9 centres: +0.5 pixel) and scissor (the D3D9 viewport within the target).
   const cpu::Viewport& v = pass.viewport;
   const uint32_t vw = v.width ? v.width : target.width, vh = v.height ? v.height : target.height;
   const float shift = pass.conventions.pixel_center == ir::PixelCenter::D3D9 ? 0.5f : 0.0f;
-  VkViewport viewport{static_cast<float>(v.x) + shift,
-                      static_cast<float>(v.y) + shift,
-                      static_cast<float>(vw),
-                      static_cast<float>(vh),
-                      clamp01(v.min_z),
-                      clamp01(v.max_z)};
+  out.viewport = {static_cast<float>(v.x) + shift,
+                  static_cast<float>(v.y) + shift,
+                  static_cast<float>(vw),
+                  static_cast<float>(vh),
+                  clamp01(v.min_z),
+                  clamp01(v.max_z)};
   int64_t sx0 = std::max<int64_t>(v.x, 0), sy0 = std::max<int64_t>(v.y, 0);
   int64_t sx1 = std::min<int64_t>(int64_t{v.x} + vw, target.width);
   int64_t sy1 = std::min<int64_t>(int64_t{v.y} + vh, target.height);
-  const bool visible = sx1 > sx0 && sy1 > sy0 && !geo.indices.empty();
-  VkRect2D scissor{
-      {static_cast<int32_t>(visible ? sx0 : 0), static_cast<int32_t>(visible ? sy0 : 0)},
-      {static_cast<uint32_t>(visible ? sx1 - sx0 : 1),
-       static_cast<uint32_t>(visible ? sy1 - sy0 : 1)}};
+  out.visible = sx1 > sx0 && sy1 > sy0 && !geo.indices.empty();
+  out.scissor = {
+      {static_cast<int32_t>(out.visible ? sx0 : 0), static_cast<int32_t>(out.visible ? sy0 : 0)},
+      {static_cast<uint32_t>(out.visible ? sx1 - sx0 : 1),
+       static_cast<uint32_t>(out.visible ? sy1 - sy0 : 1)}};
+  return {};
+}
+
+void record_draw(VkCommandBuffer cb, const Device::Impl& d, PreparedDraw& p) {
+  for (Resident* r : p.sampled)
+    if (r) record_as_sampled(cb, d, *r);
+  Resident& target = *p.target;
+  record_as_target(cb, target);
+  VkRenderPassBeginInfo rbi{};
+  rbi.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
+  rbi.renderPass = p.render_pass;
+  rbi.framebuffer = p.framebuffer;
+  rbi.renderArea = {{0, 0}, {target.width, target.height}};
+  vkCmdBeginRenderPass(cb, &rbi, VK_SUBPASS_CONTENTS_INLINE);
+  if (p.visible) {
+    vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, p.pipeline);
+    vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, p.layout, 0, 1, &p.set, 0,
+                            nullptr);
+    VkDeviceSize offset = 0;
+    vkCmdBindVertexBuffers(cb, 0, 1, &p.vertices.buffer, &offset);
+    vkCmdBindIndexBuffer(cb, p.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
+    vkCmdSetViewport(cb, 0, 1, &p.viewport);
+    vkCmdSetScissor(cb, 0, 1, &p.scissor);
+    vkCmdDrawIndexed(cb, p.index_count, 1, 0, 0, 0);
+  }
+  vkCmdEndRenderPass(cb);
+}
+
+std::string submit_draw(Device::Impl& d, PreparedDraw& draw) {
+  LayoutSnapshot snapshot;
+  snapshot.save(*draw.target);
+  for (Resident* r : draw.sampled)
+    if (r) snapshot.save(*r);
+  std::string err = submit_and_wait(d, [&](VkCommandBuffer cb) { record_draw(cb, d, draw); });
+  if (!err.empty()) snapshot.restore();
+  return err;
+}
+
+DrawResult draw_pass(Device::Impl& d, const cpu::Pass& pass, const DrawTextures& textures,
+                     const DrawOptions& options) {
+  DrawResult res;
+  auto fail = [&](std::string msg) {
+    res.ok = false;
+    res.error = std::move(msg);
+    return res;
+  };
+  const auto t0 = Clock::now();
+  PreparedDraw prepared;
+  if (std::string e = prepare_draw(d, pass, textures, options, prepared); !e.empty())
+    return fail(e);
+  Resident& target = *textures.target;
+
+  // The staging buffer of a host target: its contents go up, the result comes back.
+  Cleanup cleanup;
+  Buffer rt_staging;
+  if (textures.host_target) {
+    const VkDeviceSize rt_bytes =
+        VkDeviceSize{target.width} * target.height * bytes_per_pixel(target.format);
+    std::string err = create_buffer(
+        d, cleanup, rt_bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+        rt_staging);
+    if (!err.empty()) return fail(err);
+    pack_pixels(*textures.host_target, rt_staging.mapped);
+  }
   res.setup_ms = ms_since(t0);
 
+  LayoutSnapshot snapshot;
+  snapshot.save(target);
+  for (Resident* r : prepared.sampled)
+    if (r) snapshot.save(*r);
   const auto t1 = Clock::now();
-  err = submit_and_wait(d, [&](VkCommandBuffer cb) {
-    for (Resident* r : sampled)
-      if (r) record_as_sampled(cb, d, *r);
-    record_as_target(cb, target);
-    VkRenderPassBeginInfo rbi{};
-    rbi.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
-    rbi.renderPass = rp;
-    rbi.framebuffer = fb;
-    rbi.renderArea = {{0, 0}, {target.width, target.height}};
-    vkCmdBeginRenderPass(cb, &rbi, VK_SUBPASS_CONTENTS_INLINE);
-    if (visible) {
-      vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
-      vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, bound.layout, 0, 1, &bound.set,
-                              0, nullptr);
-      VkDeviceSize offset = 0;
-      vkCmdBindVertexBuffers(cb, 0, 1, &vbuf.buffer, &offset);
-      vkCmdBindIndexBuffer(cb, ibuf.buffer, 0, VK_INDEX_TYPE_UINT32);
-      vkCmdSetViewport(cb, 0, 1, &viewport);
-      vkCmdSetScissor(cb, 0, 1, &scissor);
-      vkCmdDrawIndexed(cb, static_cast<uint32_t>(geo.indices.size()), 1, 0, 0, 0);
-    }
-    vkCmdEndRenderPass(cb);
+  std::string err = submit_and_wait(d, [&](VkCommandBuffer cb) {
+    if (textures.host_target) record_upload(cb, target, rt_staging.buffer);
+    record_draw(cb, d, prepared);
     if (textures.host_target) record_readback(cb, target, rt_staging.buffer);
   });
   if (!err.empty()) {

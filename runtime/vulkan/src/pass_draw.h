@@ -1,10 +1,16 @@
 // Internal: the one draw both public paths share. Device::draw (host images in, host image
 // out) and TextureSet::draw (textures that stay on the device) differ only in where the
 // sampled textures and the target come from; programs, geometry, descriptors, pipeline,
-// barriers and the render pass are this function's.
+// barriers and the render pass are this file's.
+//
+// A draw is made in two steps: prepare_draw creates every object the draw needs (SPIR-V,
+// pipeline, descriptor set, framebuffer, vertex and uniform buffers) and record_draw records
+// it into a command buffer. TextureSet keeps prepared draws (draw_cache.h), so a pass drawn
+// again — the next frame of an effect — records its commands and nothing else.
 #pragma once
 
 #include <array>
+#include <memory>
 
 #include "resident.h"
 #include "tierlift/cpu/draw.h"
@@ -23,8 +29,40 @@ struct DrawTextures {
   img::Image* host_target = nullptr;
 };
 
-// Draws `pass` into textures.target. On failure nothing was submitted that changes any
-// texture, and host_target is unchanged.
+// Everything one draw of one pass needs, owned by `objects` (destroyed with the entry).
+// Host textures of the pass (and the unbound texture) are uploaded by prepare_draw.
+struct PreparedDraw {
+  Cleanup objects;
+  std::vector<std::unique_ptr<Resident>> host_textures;
+  std::array<Resident*, cpu::kMaxSamplers> sampled{}; // the stages the pixel program reads
+  Resident* target = nullptr;
+  VkRenderPass render_pass = VK_NULL_HANDLE;
+  VkFramebuffer framebuffer = VK_NULL_HANDLE;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  VkDescriptorSet set = VK_NULL_HANDLE;
+  Buffer vertices, indices;
+  uint32_t index_count = 0;
+  VkViewport viewport{};
+  VkRect2D scissor{};
+  bool visible = false; // something to draw (the render pass still runs: loadOp LOAD)
+};
+
+// Creates what drawing `pass` into textures.target needs (host_target is ignored here).
+// Empty string on success; on failure `out` holds nothing that outlives it.
+std::string prepare_draw(Device::Impl& d, const cpu::Pass& pass, const DrawTextures& textures,
+                         const DrawOptions& options, PreparedDraw& out);
+
+// Records the draw: sampled textures made current and readable, the target made the colour
+// attachment, the render pass with the draw. Advances the textures' tracked layouts.
+void record_draw(VkCommandBuffer cb, const Device::Impl& d, PreparedDraw& draw);
+
+// Records `draw` alone, submits it and waits. On failure the textures' tracked layouts are
+// restored (nothing changed on the device).
+std::string submit_draw(Device::Impl& d, PreparedDraw& draw);
+
+// Draws `pass` into textures.target now (prepare, submit, wait). On failure nothing was
+// submitted that changes any texture, and host_target is unchanged.
 DrawResult draw_pass(Device::Impl& d, const cpu::Pass& pass, const DrawTextures& textures,
                      const DrawOptions& options);
 

@@ -1,6 +1,8 @@
 // Render pass, framebuffer, sampler and graphics pipeline of one pass.
 #include "pipeline.h"
 
+#include "pipeline_cache.h"
+
 #include <fmt/format.h>
 
 namespace tierlift::vulkan {
@@ -197,8 +199,9 @@ std::string create_pipeline(Device::Impl& d, Cleanup& cleanup, const PipelineDes
   ci.pDynamicState = &ds;
   ci.layout = desc.layout;
   ci.renderPass = desc.render_pass;
-  VkResult r = vkCreateGraphicsPipelines(d.device, VK_NULL_HANDLE, 1, &ci, nullptr, &out);
+  VkResult r = vkCreateGraphicsPipelines(d.device, pipeline_cache(d), 1, &ci, nullptr, &out);
   if (r != VK_SUCCESS) return vk_error("vkCreateGraphicsPipelines", r);
+  d.pipeline_cache_dirty = true;
   VkDevice dev = d.device;
   VkPipeline p = out;
   cleanup.add([dev, p] { vkDestroyPipeline(dev, p, nullptr); });

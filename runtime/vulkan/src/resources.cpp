@@ -109,23 +109,36 @@ std::string create_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint
   return {};
 }
 
-std::string submit_and_wait(Device::Impl& d, const std::function<void(VkCommandBuffer)>& record) {
+std::string begin_commands(Device::Impl& d, VkCommandBuffer& cb) {
   VkCommandBufferAllocateInfo ai{};
   ai.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
   ai.commandPool = d.pool;
   ai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
   ai.commandBufferCount = 1;
-  VkCommandBuffer cb = VK_NULL_HANDLE;
+  cb = VK_NULL_HANDLE;
   VkResult r = vkAllocateCommandBuffers(d.device, &ai, &cb);
-  if (r != VK_SUCCESS) return vk_error("vkAllocateCommandBuffers", r);
-  Cleanup cleanup;
-  cleanup.add([&] { vkFreeCommandBuffers(d.device, d.pool, 1, &cb); });
+  if (r != VK_SUCCESS) {
+    cb = VK_NULL_HANDLE;
+    return vk_error("vkAllocateCommandBuffers", r);
+  }
   VkCommandBufferBeginInfo bi{};
   bi.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
   bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  if ((r = vkBeginCommandBuffer(cb, &bi)) != VK_SUCCESS) return vk_error("vkBeginCommandBuffer", r);
-  record(cb);
-  if ((r = vkEndCommandBuffer(cb)) != VK_SUCCESS) return vk_error("vkEndCommandBuffer", r);
+  if ((r = vkBeginCommandBuffer(cb, &bi)) != VK_SUCCESS) {
+    vkFreeCommandBuffers(d.device, d.pool, 1, &cb);
+    cb = VK_NULL_HANDLE;
+    return vk_error("vkBeginCommandBuffer", r);
+  }
+  return {};
+}
+
+std::string submit_commands(Device::Impl& d, VkCommandBuffer& cb) {
+  Cleanup cleanup;
+  VkCommandBuffer owned = cb;
+  cb = VK_NULL_HANDLE;
+  cleanup.add([&] { vkFreeCommandBuffers(d.device, d.pool, 1, &owned); });
+  VkResult r = vkEndCommandBuffer(owned);
+  if (r != VK_SUCCESS) return vk_error("vkEndCommandBuffer", r);
   VkFenceCreateInfo fi{};
   fi.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
   VkFence fence = VK_NULL_HANDLE;
@@ -135,12 +148,19 @@ std::string submit_and_wait(Device::Impl& d, const std::function<void(VkCommandB
   VkSubmitInfo si{};
   si.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
   si.commandBufferCount = 1;
-  si.pCommandBuffers = &cb;
+  si.pCommandBuffers = &owned;
   if ((r = vkQueueSubmit(d.queue, 1, &si, fence)) != VK_SUCCESS)
     return vk_error("vkQueueSubmit", r);
   if ((r = vkWaitForFences(d.device, 1, &fence, VK_TRUE, UINT64_MAX)) != VK_SUCCESS)
     return vk_error("vkWaitForFences", r);
   return {};
+}
+
+std::string submit_and_wait(Device::Impl& d, const std::function<void(VkCommandBuffer)>& record) {
+  VkCommandBuffer cb = VK_NULL_HANDLE;
+  if (std::string err = begin_commands(d, cb); !err.empty()) return err;
+  record(cb);
+  return submit_commands(d, cb);
 }
 
 void image_barrier(VkCommandBuffer cb, VkImage image, VkImageLayout from, VkImageLayout to,

@@ -1,21 +1,35 @@
 // TextureSet: textures kept in device memory between draws (texture_set.h).
 #include "tierlift/vulkan/texture_set.h"
 
+#include <chrono>
 #include <map>
 
 #include <fmt/format.h>
 
+#include "draw_cache.h"
 #include "pass_draw.h"
 
 namespace tierlift::vulkan {
 
 struct TextureSet::State {
+  explicit State(Device::Impl& impl) : d(impl) {}
+  ~State() {
+    if (pending != VK_NULL_HANDLE) (void)submit_commands(d, pending);
+  }
+
+  Device::Impl& d;
   std::map<uint32_t, std::unique_ptr<Resident>> textures;
+  DrawCache draws;                          // destroyed before the textures it refers to
+  VkCommandBuffer pending = VK_NULL_HANDLE; // batched draws not yet submitted
+  bool batching = false;
   uint32_t next_id = 1;
 
   Resident* find(TextureId id) {
     auto it = textures.find(static_cast<uint32_t>(id));
     return it == textures.end() ? nullptr : it->second.get();
+  }
+  std::string flush() {
+    return pending == VK_NULL_HANDLE ? std::string() : submit_commands(d, pending);
   }
 };
 
@@ -25,9 +39,14 @@ std::string unknown(TextureId id) {
   return fmt::format("no texture {} in this set", static_cast<uint32_t>(id));
 }
 
+double ms_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
+}
+
 } // namespace
 
-TextureSet::TextureSet(Device& device) : device_(device), state_(std::make_unique<State>()) {}
+TextureSet::TextureSet(Device& device)
+    : device_(device), state_(std::make_unique<State>(*device.impl_)) {}
 TextureSet::~TextureSet() = default;
 
 std::string TextureSet::create(uint32_t width, uint32_t height, img::Format format,
@@ -51,6 +70,7 @@ std::string TextureSet::upload(TextureId id, const img::Image& image) {
       image.rgba.size() != size_t{image.width} * image.height * 4)
     return fmt::format("upload of a {}x{} image into the {}x{} texture {}", image.width,
                        image.height, r->width, r->height, static_cast<uint32_t>(id));
+  if (std::string err = state_->flush(); !err.empty()) return err;
   Device::Impl& d = *device_.impl_;
   Cleanup cleanup;
   Buffer staging;
@@ -79,6 +99,7 @@ std::string TextureSet::upload(TextureId id, const img::Image& image) {
 std::string TextureSet::read(TextureId id, img::Image& out) {
   Resident* r = state_->find(id);
   if (!r) return unknown(id);
+  if (std::string err = state_->flush(); !err.empty()) return err;
   Device::Impl& d = *device_.impl_;
   Cleanup cleanup;
   Buffer staging;
@@ -99,30 +120,106 @@ std::string TextureSet::read(TextureId id, img::Image& out) {
   return {};
 }
 
+namespace {
+
+// The textures of a draw by id; an error names the unknown one.
+std::string resolve(TextureSet::State& s, const StageTextures& stages, TextureId target,
+                    DrawTextures& out) {
+  out.target = s.find(target);
+  if (!out.target) return "render target: " + unknown(target);
+  for (uint32_t k = 0; k < cpu::kMaxSamplers; ++k) {
+    if (stages[k] == TextureId::None) continue;
+    out.stages[k] = s.find(stages[k]);
+    if (!out.stages[k]) return fmt::format("s{}: {}", k, unknown(stages[k]));
+  }
+  return {};
+}
+
+// The cached draw of `pass`, made now if there is none; nullptr (and *error) on failure,
+// nullptr and no error when the pass is not cached.
+PreparedDraw* cached_draw(TextureSet::State& s, const cpu::Pass& pass, const DrawTextures& t,
+                          const DrawOptions& options, std::string* error) {
+  std::optional<std::string> key = draw_key(pass, t, options);
+  if (!key) return nullptr;
+  if (PreparedDraw* p = s.draws.find(*key)) return p;
+  auto entry = std::make_unique<CachedDraw>();
+  if (std::string e = prepare_draw(s.d, pass, t, options, entry->draw); !e.empty()) {
+    *error = e;
+    return nullptr;
+  }
+  return &s.draws.insert(*key, pass, std::move(entry));
+}
+
+} // namespace
+
+std::string TextureSet::prepare(const cpu::Pass& pass, const StageTextures& stages,
+                                TextureId target, const DrawOptions& options) {
+  DrawTextures textures;
+  if (std::string e = resolve(*state_, stages, target, textures); !e.empty()) return e;
+  std::string error;
+  cached_draw(*state_, pass, textures, options, &error);
+  return error;
+}
+
 DrawResult TextureSet::draw(const cpu::Pass& pass, const StageTextures& stages, TextureId target,
                             const DrawOptions& options) {
   DrawTextures textures;
-  textures.target = state_->find(target);
   DrawResult res;
-  if (!textures.target) {
-    res.error = "render target: " + unknown(target);
+  if (std::string e = resolve(*state_, stages, target, textures); !e.empty()) {
+    res.error = e;
     return res;
   }
-  for (uint32_t s = 0; s < cpu::kMaxSamplers; ++s) {
-    if (stages[s] == TextureId::None) continue;
-    textures.stages[s] = state_->find(stages[s]);
-    if (!textures.stages[s]) {
-      res.error = fmt::format("s{}: {}", s, unknown(stages[s]));
+  const auto t0 = std::chrono::steady_clock::now();
+  PreparedDraw* p = cached_draw(*state_, pass, textures, options, &res.error);
+  if (!res.error.empty()) return res;
+  if (!p) { // not cached: made, drawn and destroyed now
+    if (std::string e = state_->flush(); !e.empty()) {
+      res.error = e;
+      return res;
+    }
+    return draw_pass(*device_.impl_, pass, textures, options);
+  }
+  res.setup_ms = ms_since(t0);
+  const auto t1 = std::chrono::steady_clock::now();
+  Device::Impl& d = *device_.impl_;
+  if (state_->batching) {
+    if (state_->pending == VK_NULL_HANDLE)
+      if (std::string e = begin_commands(d, state_->pending); !e.empty()) {
+        res.error = e;
+        return res;
+      }
+    record_draw(state_->pending, d, *p);
+  } else {
+    if (std::string e = submit_draw(d, *p); !e.empty()) {
+      res.error = e;
       return res;
     }
   }
-  return draw_pass(*device_.impl_, pass, textures, options);
+  res.draw_ms = ms_since(t1);
+  res.ok = true;
+  return res;
+}
+
+std::string TextureSet::set_batching(bool on) {
+  std::string err = state_->flush();
+  state_->batching = on;
+  return err;
+}
+
+std::string TextureSet::flush() {
+  return state_->flush();
 }
 
 void TextureSet::destroy(TextureId id) {
+  (void)state_->flush();
+  Resident* r = state_->find(id);
+  if (!r) return;
+  state_->draws.forget(r);
   state_->textures.erase(static_cast<uint32_t>(id));
 }
 void TextureSet::clear() {
+  (void)state_->flush();
+  state_->draws.clear();
   state_->textures.clear();
 }
 size_t TextureSet::size() const {

@@ -32,6 +32,9 @@ struct Device::Impl {
   VkPhysicalDeviceMemoryProperties memory{};
 
   std::unique_ptr<Unorm8Converter> unorm8; // created on first use
+  // pipeline_cache.h: created on first use, saved when pipelines were added.
+  VkPipelineCache pipeline_cache = VK_NULL_HANDLE;
+  bool pipeline_cache_failed = false, pipeline_cache_dirty = false;
 
   mutable std::mutex messages_mutex;
   std::vector<std::string> messages;
@@ -78,6 +81,11 @@ std::string create_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint
 
 // Records commands into a fresh primary command buffer, submits it and waits for it.
 std::string submit_and_wait(Device::Impl& d, const std::function<void(VkCommandBuffer)>& record);
+// The same in two halves, for a command buffer recorded over several calls (TextureSet's
+// batch: one submit for a whole frame). submit_commands ends, submits, waits for and frees
+// `cb`, which is VK_NULL_HANDLE afterwards (also on failure).
+std::string begin_commands(Device::Impl& d, VkCommandBuffer& cb);
+std::string submit_commands(Device::Impl& d, VkCommandBuffer& cb);
 
 // Layout transition of a whole colour image (one level, one layer).
 void image_barrier(VkCommandBuffer cb, VkImage image, VkImageLayout from, VkImageLayout to,

@@ -36,6 +36,9 @@ public:
   // Runs one pass of that graph: it samples the textures it binds and renders into its
   // target with its blend mode; the target's format is the store rule.
   virtual std::string run_pass(const PassDesc& pass) = 0;
+  // Waits until every pass run so far is done (a device may queue passes: Vulkan records a
+  // frame's passes into one command buffer). Empty string on success, else why.
+  virtual std::string finish() { return {}; }
   // A texture's current contents (in its declared format). Empty string on success.
   virtual std::string read_texture(const std::string& name, img::Image& out) = 0;
   // RGBA8 textures only, and only a device that knows its exact values (the analytic one):

@@ -15,4 +15,14 @@ struct GlowRun {
 GlowRun run_glow(const GlowPlan& plan, const img::Image& scene, PassDevice& device,
                  bool keep_pass_images = false, const PassProgress& progress = {});
 
+struct GlowFrames {
+  FramesRun run;
+  ImageMap images; // every texture after the last frame
+};
+
+// `frames` frames of the plan over the scene on one device (run_frames): setup apart from
+// the steady state.
+GlowFrames run_glow_frames(const GlowPlan& plan, const img::Image& scene, PassDevice& device,
+                           unsigned frames);
+
 } // namespace tierlift::effects

@@ -44,4 +44,28 @@ using PassProgress = std::function<void(size_t index, size_t count, const PassDe
 GraphRun run_graph(const EffectGraph& graph, PassDevice& device, ImageMap& images,
                    bool keep_pass_images = false, const PassProgress& progress = {});
 
+// Setup apart from the steady state: what a graph costs to start on a device, and then
+// what each frame costs.
+struct FrameTimes {
+  double setup_ms = 0;          // check, inputs, begin_run (textures, uploads, pipelines)
+  std::vector<double> frame_ms; // each frame: every pass, then finish()
+  double median_ms() const;     // 0 without frames
+  double min_ms() const;
+  double max_ms() const;
+};
+
+struct FramesRun {
+  bool ok = false;
+  std::string error;
+  FrameTimes times;
+};
+
+// Starts the graph once (as run_graph does), then runs all its passes `frames` times, the
+// textures carried from one frame into the next (a pass that blends onto its target sees
+// what the frame before left there: what feedback effects such as an after-image need; a
+// graph whose every texture is first written by a Replace pass gives the same image every
+// frame). Nothing is read back between frames; `images` holds every texture afterwards.
+FramesRun run_frames(const EffectGraph& graph, PassDevice& device, ImageMap& images,
+                     unsigned frames);
+
 } // namespace tierlift::effects

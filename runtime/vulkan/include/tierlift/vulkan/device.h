@@ -78,6 +78,10 @@ public:
   // On failure the target is unchanged.
   DrawResult draw(const cpu::Pass& pass, img::Image& target, const DrawOptions& options = {});
 
+  // Stores the pipelines made so far in the user's cache directory for the next run
+  // (pipeline_cache.h; also done when the device is destroyed). Failures are ignored.
+  void save_pipeline_cache();
+
   // Validation messages collected so far (one line each: severity, id, text).
   std::vector<std::string> messages() const;
   void clear_messages();

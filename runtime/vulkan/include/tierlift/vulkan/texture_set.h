@@ -24,8 +24,17 @@
 //     blit computes k·fl(1/255), one ulp off in 126 of 256 levels). lavapipe filters float
 //     textures with exact float weights; that is what keeps the CPU device and lavapipe
 //     bit-identical, and a pass drawn here returns the same bits as through Device::draw.
-// Layouts and barriers between uses are tracked per texture; every call waits for its own
-// work (no call leaves work in flight). A pass may not sample its own target.
+// Layouts and barriers between uses are tracked per texture. Every call waits for its own
+// work (no call leaves work in flight), except draws while batching is on: they are
+// recorded into one command buffer, with barriers between them, that the next other call
+// (or flush) submits and waits for — one submit per frame of an effect instead of one per
+// pass. A pass may not sample its own target.
+//
+// What a draw needs besides commands (SPIR-V, pipeline, descriptor set, framebuffer, vertex
+// and uniform buffers) is made once and kept while its textures exist: drawing the same
+// pass again (same programs, constants, states, textures) only records it. prepare() makes
+// it ahead of the first draw (an effect's setup). Passes without a vertex program, or with a
+// stage sampling a host image, are made anew on every draw.
 // Nothing throws: every failure is returned as a message; a failed call changes no texture.
 #pragma once
 
@@ -68,7 +77,15 @@ public:
   // contents are the destination blending reads. Nothing is read back.
   DrawResult draw(const cpu::Pass& pass, const StageTextures& stages, TextureId target,
                   const DrawOptions& options = {});
-  // Frees one texture (unknown ids are ignored) or all of them.
+  // Makes what draw(pass, stages, target, options) needs, without drawing.
+  std::string prepare(const cpu::Pass& pass, const StageTextures& stages, TextureId target,
+                      const DrawOptions& options = {});
+  // Batching on: draw() records; off: draw() submits and waits (flushing first). A draw's
+  // DrawResult::draw_ms is then the recording time; the work is timed by flush().
+  std::string set_batching(bool on);
+  // Submits what batched draws recorded and waits for it. Empty string on success.
+  std::string flush();
+  // Frees one texture (unknown ids are ignored) or all of them (after a flush).
   void destroy(TextureId id);
   void clear();
   size_t size() const;

@@ -1,0 +1,54 @@
+// Memory known before running: the bytes a run of an effect graph holds at its peak on each
+// device, computed from the graph alone (texture sizes and formats, the passes' bindings),
+// so a scene that cannot fit is refused before anything is allocated.
+//
+// The model follows what the code keeps, per texture of w × h pixels (host images are
+// img::Image: four floats a pixel, whatever the format):
+//   * every device: the run's copy of every texture handed back at the end (run_graph's
+//     images), and with per-pass images kept (the agreement table) one image per pass;
+//   * cpu: its own copy of every texture, plus during a pass a copy of the target and of
+//     each bound texture (make_pass gives every stage its own image: ps_1_x binds a texture
+//     on several stages);
+//   * vulkan (lavapipe: device memory is host memory): every texture in its own format,
+//     plus for RGBA8 / RGBA16F textures that passes sample the float copy (16 B/px) and,
+//     RGBA8, the conversion's byte and float buffers (20 B/px); during a read or an upload
+//     a staging buffer in the texture's format;
+//   * analytic: its own copy of every texture and a midpoint mask (1 B/px) of each RGBA8
+//     one, plus during a pass the new target and, RGBA8, a float slack image of each read.
+// Devices run one after another and their results stay (the agreement table compares them),
+// so the peak is what the earlier devices keep plus the largest transient of any.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "tierlift/effects/graph.h"
+
+namespace tierlift::effects {
+
+struct DeviceMemory {
+  std::string device;     // "cpu", "vulkan", "analytic"
+  uint64_t kept = 0;      // held from its run until the end
+  uint64_t transient = 0; // held only while it runs (beyond `kept`)
+};
+
+struct MemoryPlan {
+  std::vector<DeviceMemory> devices;
+  uint64_t peak = 0; // Σ kept + max transient + the caller's extra
+};
+
+// `devices` in the order they run; `keep_pass_images`: one image per pass kept (run_graph);
+// `extra`: bytes the caller holds throughout (e.g. the scene as loaded). Unknown device
+// names count as the cpu device.
+MemoryPlan plan_memory(const EffectGraph& graph, const std::vector<std::string>& devices,
+                       bool keep_pass_images, uint64_t extra = 0);
+
+// The memory this machine can give now: MemAvailable of /proc/meminfo, lowered to the
+// process's address-space limit (RLIMIT_AS) when one is set. 0 when unknown.
+uint64_t available_memory();
+
+// "1.5 GiB (1610612736 bytes)"
+std::string format_bytes(uint64_t bytes);
+
+} // namespace tierlift::effects

@@ -1,0 +1,106 @@
+// The prepared-draw cache of TextureSet (draw_cache.h).
+#include "draw_cache.h"
+
+#include <cstring>
+#include <type_traits>
+
+namespace tierlift::vulkan {
+namespace {
+
+// Appends values as raw bytes; floats by their bits (so −0 and NaN payloads stay distinct).
+class KeyWriter {
+public:
+  template <typename T> void put(const T& v) {
+    static_assert(std::is_arithmetic_v<T> || std::is_enum_v<T> || std::is_pointer_v<T>);
+    char bytes[sizeof(T)];
+    std::memcpy(bytes, &v, sizeof(T));
+    key_.append(bytes, sizeof(T));
+  }
+  void put(const cpu::Vec4& v) {
+    for (float f : v) put(f);
+  }
+  void put(const cpu::ConstantBank& bank) {
+    put(bank.f.size());
+    for (const cpu::Vec4& v : bank.f) put(v);
+    for (const auto& i : bank.i)
+      for (int32_t x : i) put(x);
+    for (bool b : bank.b) put(b);
+  }
+  std::string take() { return std::move(key_); }
+
+private:
+  std::string key_;
+};
+
+} // namespace
+
+std::optional<std::string> draw_key(const cpu::Pass& pass, const DrawTextures& textures,
+                                    const DrawOptions& options) {
+  if (!pass.vertex_program || !textures.target) return std::nullopt;
+  KeyWriter k;
+  k.put(pass.vertex_program.get());
+  k.put(pass.pixel_program.get());
+  k.put(options.flat_varyings);
+  const ir::Conventions& c = pass.conventions;
+  k.put(c.pixel_center);
+  k.put(c.subtexel_bits);
+  k.put(c.ps1x_max_value);
+  k.put(c.ps1x_fixed_bits);
+  k.put(c.rounding);
+  k.put(textures.target);
+  for (uint32_t s = 0; s < cpu::kMaxSamplers; ++s) {
+    const cpu::TextureBinding& b = pass.textures[s];
+    if (!textures.stages[s] && b.image) return std::nullopt; // host pixels: not cached
+    k.put(textures.stages[s]);
+    k.put(b.sampler.filter);
+    k.put(b.sampler.address_u);
+    k.put(b.sampler.address_v);
+    k.put(b.sampler.border_color);
+    for (float m : b.stage.bumpenv_mat) k.put(m);
+    k.put(b.stage.bumpenv_lscale);
+    k.put(b.stage.bumpenv_loffset);
+    k.put(b.stage.projected);
+  }
+  k.put(pass.vs_constants);
+  k.put(pass.ps_constants);
+  // With a vertex program the geometry is the pass's vertices and triangles only.
+  k.put(pass.vertices.size());
+  for (const cpu::VertexInput& v : pass.vertices)
+    for (const cpu::Vec4& r : v.v) k.put(r);
+  k.put(pass.triangles.size());
+  for (const auto& t : pass.triangles)
+    for (uint32_t i : t) k.put(i);
+  k.put(pass.viewport.x);
+  k.put(pass.viewport.y);
+  k.put(pass.viewport.width);
+  k.put(pass.viewport.height);
+  k.put(pass.viewport.min_z);
+  k.put(pass.viewport.max_z);
+  k.put(pass.blend);
+  return k.take();
+}
+
+PreparedDraw* DrawCache::find(const std::string& key) {
+  auto it = entries_.find(key);
+  return it == entries_.end() ? nullptr : &it->second->draw;
+}
+
+PreparedDraw& DrawCache::insert(const std::string& key, const cpu::Pass& pass,
+                                std::unique_ptr<CachedDraw> entry) {
+  entry->vs = pass.vertex_program;
+  entry->ps = pass.pixel_program;
+  auto& slot = entries_[key];
+  slot = std::move(entry);
+  return slot->draw;
+}
+
+void DrawCache::forget(const Resident* r) {
+  for (auto it = entries_.begin(); it != entries_.end();) {
+    const PreparedDraw& d = it->second->draw;
+    bool uses = d.target == r;
+    for (const Resident* s : d.sampled) uses = uses || s == r;
+    it = uses ? entries_.erase(it) : std::next(it);
+  }
+}
+
+} // namespace tierlift::vulkan

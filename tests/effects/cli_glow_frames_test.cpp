@@ -1,0 +1,107 @@
+// `tierlift glow --frames N` (setup apart from steady-state frames, in the table and the
+// JSON) and the refusal of a scene that does not fit in memory (before anything is made).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+class CliGlowFrames : public ::testing::Test {
+protected:
+  void SetUp() override {
+    if (!fs::exists(TIERLIFT_CLI_PATH)) GTEST_SKIP() << "tierlift not built";
+    dir = fs::temp_directory_path() /
+          ("tierlift_frames_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+           "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+  }
+  void TearDown() override {
+    if (!dir.empty()) fs::remove_all(dir);
+  }
+  // Exit status; stdout and stderr in out and err.
+  int run(const std::string& args, std::string& out, std::string& err,
+          const std::string& prefix = "") {
+    const std::string cmd = prefix + std::string(TIERLIFT_CLI_PATH) + " " + args + " > " +
+                            (dir / "out.txt").string() + " 2> " + (dir / "err.txt").string();
+    const int status = std::system(cmd.c_str());
+    out = read(dir / "out.txt");
+    err = read(dir / "err.txt");
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+  std::string read(const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+  }
+  fs::path scene(uint32_t w, uint32_t h) {
+    const fs::path p = dir / "scene.json";
+    std::ofstream(p) << "{\"size\": [" << w << ", " << h << "]}\n";
+    return p;
+  }
+  fs::path dir;
+};
+
+TEST_F(CliGlowFrames, JsonReportsSetupAndSteadyFramesPerDevice) {
+  std::string out, err;
+  ASSERT_EQ(
+      run("glow --scene " + scene(64, 32).string() + " --backend cpu --frames 3 --json", out, err),
+      0)
+      << err;
+  const nlohmann::json j = nlohmann::json::parse(out)["result"]; // docs/command-line.md
+  ASSERT_TRUE(j.contains("frames")) << out;
+  const nlohmann::json& f = j["frames"]["cpu"];
+  EXPECT_EQ(f["n"], 3);
+  for (const char* k : {"setup_ms", "median_ms", "min_ms", "max_ms"})
+    ASSERT_TRUE(f[k].is_number()) << k;
+  EXPECT_LE(f["min_ms"].get<double>(), f["median_ms"].get<double>());
+  EXPECT_LE(f["median_ms"].get<double>(), f["max_ms"].get<double>());
+  EXPECT_FALSE(j["frames"].contains("vulkan")); // only the devices that ran
+}
+
+TEST_F(CliGlowFrames, TableHasARowPerDevice) {
+  std::string out, err;
+  ASSERT_EQ(
+      run("glow --scene " + scene(64, 32).string() + " --backend analytic --frames 2 -q", out, err),
+      0)
+      << err;
+  EXPECT_NE(out.find("setup ms"), std::string::npos) << out;
+  EXPECT_NE(out.find("\nanalytic "), std::string::npos) << out;
+}
+
+TEST_F(CliGlowFrames, FramesOutOfRangeIsAUsageError) {
+  std::string out, err;
+  EXPECT_EQ(run("glow --frames 0", out, err), 2) << err;
+}
+
+// 16384² RGBA32F: one host copy is 4 GiB, the three ways keep ~20 of them. Refused with the
+// bytes needed and available and the knobs, exit 1, and nothing written.
+TEST_F(CliGlowFrames, SceneBeyondMemoryIsRefusedBeforeRunning) {
+  std::string out, err;
+  const fs::path o = dir / "images";
+  // An address-space limit of 16 GiB (the planner honours RLIMIT_AS) makes the verdict the
+  // same on any machine; the run needs far more.
+  EXPECT_EQ(run("glow --scene " + scene(16384, 16384).string() + " -o " + o.string(), out, err,
+                "ulimit -v 16777216; "),
+            1);
+  EXPECT_NE(err.find("tierlift glow: error: "), std::string::npos) << err;
+  EXPECT_NE(err.find("scene.json: the glow at 16384x16384"), std::string::npos) << err;
+  EXPECT_NE(err.find("needs"), std::string::npos) << err;
+  EXPECT_NE(err.find("available"), std::string::npos) << err;
+  for (const char* knob : {"--format", "--downsample", "--backend"})
+    EXPECT_NE(err.find(knob), std::string::npos) << knob << ": " << err;
+  EXPECT_FALSE(fs::exists(o));
+  EXPECT_EQ(out, "");
+}
+
+} // namespace

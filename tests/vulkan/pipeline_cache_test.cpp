@@ -1,0 +1,102 @@
+// The pipeline cache kept across runs: after a draw and save_pipeline_cache(), the user's
+// cache directory holds the driver's cache data, which starts with the header the Vulkan
+// specification fixes (VkPipelineCacheHeaderVersionOne: 32 bytes, version 1); with
+// TIERLIFT_PIPELINE_CACHE=off nothing is written.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <vector>
+
+#include "resident_fixture.h"
+
+namespace tierlift::vulkan::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Draws one small pass on a device of its own (the cache belongs to the device).
+void draw_once(Device& d) {
+  TextureSet set(d);
+  TextureId src{}, dst{};
+  ASSERT_EQ(set.create(4, 4, img::Format::RGBA32F, src), "");
+  ASSERT_EQ(set.create(4, 4, img::Format::RGBA32F, dst), "");
+  StageTextures stages{};
+  stages[0] = src;
+  cpu::Pass p = quad_pass(two_coords_vs(), copy_ps(), {{0, 0, 0, 0}, {0, 0, 0, 0}}, {},
+                          cpu::BlendMode::Replace);
+  DrawResult r = set.draw(p, stages, dst);
+  ASSERT_TRUE(r.ok) << r.error;
+}
+
+class PipelineCacheFile : public ::testing::Test {
+protected:
+  void SetUp() override {
+    dir = fs::temp_directory_path() /
+          ("tierlift_pcache_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+           "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir);
+    const char* old = std::getenv("XDG_CACHE_HOME");
+    saved = old ? old : "";
+    had = old != nullptr;
+    setenv("XDG_CACHE_HOME", dir.c_str(), 1);
+  }
+  void TearDown() override {
+    if (had)
+      setenv("XDG_CACHE_HOME", saved.c_str(), 1);
+    else
+      unsetenv("XDG_CACHE_HOME");
+    unsetenv("TIERLIFT_PIPELINE_CACHE");
+    fs::remove_all(dir);
+  }
+  std::vector<fs::path> files() const {
+    std::vector<fs::path> out;
+    if (fs::exists(dir / "tierlift"))
+      for (const auto& e : fs::directory_iterator(dir / "tierlift")) out.push_back(e.path());
+    return out;
+  }
+  fs::path dir;
+  std::string saved;
+  bool had = false;
+};
+
+TEST_F(PipelineCacheFile, SavedWithTheSpecsHeader) {
+  std::string err;
+  std::unique_ptr<Device> d = Device::create({}, &err);
+  if (!d) GTEST_SKIP() << err;
+  draw_once(*d);
+  d->save_pipeline_cache();
+  const std::vector<fs::path> saved_files = files();
+  ASSERT_EQ(saved_files.size(), 1u);
+  EXPECT_EQ(saved_files[0].extension(), ".bin");
+  std::ifstream in(saved_files[0], std::ios::binary);
+  std::vector<char> data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_GE(data.size(), 32u);
+  uint32_t header_size = 0, version = 0;
+  std::memcpy(&header_size, data.data(), 4);
+  std::memcpy(&version, data.data() + 4, 4);
+  EXPECT_EQ(header_size, 32u);
+  EXPECT_EQ(version, 1u); // VK_PIPELINE_CACHE_HEADER_VERSION_ONE
+  // A second device starts from that file and draws the same (the driver accepts it).
+  std::unique_ptr<Device> again = Device::create({}, &err);
+  ASSERT_TRUE(again) << err;
+  draw_once(*again);
+}
+
+TEST_F(PipelineCacheFile, OffWritesNothing) {
+  setenv("TIERLIFT_PIPELINE_CACHE", "off", 1);
+  std::string err;
+  std::unique_ptr<Device> d = Device::create({}, &err);
+  if (!d) GTEST_SKIP() << err;
+  draw_once(*d);
+  d->save_pipeline_cache();
+  d.reset();
+  EXPECT_TRUE(files().empty());
+}
+
+} // namespace
+} // namespace tierlift::vulkan::test
