@@ -4,6 +4,7 @@
 
 #include "commands.h"
 #include "front_end.h"
+#include "report.h"
 #include "tierlift/asm/bytecode.h"
 
 namespace tierlift::cli {
@@ -30,32 +31,35 @@ void register_assemble_command(CLI::App& app) {
   auto opts = std::make_shared<Opts>();
   CLI::App* sub = app.add_subcommand("assemble", "Assemble a listing into a D3D9 token stream");
   sub->add_option("file", opts->file, "Listing ('-' reads standard input)")->required();
-  sub->add_option("-o,--output", opts->output, "Output file")->required();
+  sub->add_option("-o,--output", opts->output, "Output file ('-': standard output)")->required();
   sub->add_flag("--c-array", opts->c_array, "Write a C array of hex DWORDs instead of raw bytes");
   sub->add_option("--c-name", opts->c_name, "Name of the C array")->default_val("g_shader");
   add_front_end_options(sub, opts->fe, true);
   set_action(sub, [opts] {
+    Report report("assemble", opts->fe.json);
+    if (std::string why = check_output(opts->output, {opts->file}, opts->fe.json); !why.empty()) {
+      report.error("io", why, opts->output);
+      return report.finish(kExitUsage);
+    }
     LoadedListing l = load_listing(opts->file, opts->fe);
     if (l.io_error) {
-      fmt::print(stderr, "tierlift: error: {}\n", l.io_message);
-      return kExitUsage;
+      report.error("io", l.io_message, opts->file);
+      return report.finish(kExitUsage);
     }
     // The checked form: a field the token stream cannot carry is an error, not truncated.
     std::optional<std::vector<uint32_t>> tokens;
     if (l.program) tokens = as::assemble(*l.program, l.diags);
-    if (opts->fe.json)
-      fmt::print("{}\n", diagnostics_json(l).dump(2));
-    else
-      print_diagnostics(l);
-    if (!tokens) return kExitInvalid;
+    report.diagnostics(l.diags, l.sources);
+    if (!tokens) return report.finish(kExitInvalid);
     std::string bytes =
         opts->c_array ? c_array(*tokens, opts->c_name) : as::tokens_to_bytes(*tokens);
-    std::string error;
-    if (!write_file_atomically(opts->output, bytes, error)) {
-      fmt::print(stderr, "tierlift: error: {}\n", error);
-      return kExitUsage;
+    if (std::string error = write_output(opts->output, bytes); !error.empty()) {
+      report.error("io", error, opts->output);
+      return report.finish(kExitUsage);
     }
-    return kExitOk;
+    report.result()["written"] = opts->output;
+    report.result()["tokens"] = tokens->size();
+    return report.finish(kExitOk);
   });
 }
 

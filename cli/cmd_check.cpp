@@ -4,6 +4,7 @@
 
 #include "commands.h"
 #include "front_end.h"
+#include "report.h"
 #include "tierlift/ir/profile.h"
 
 namespace tierlift::cli {
@@ -18,34 +19,36 @@ void register_check_command(CLI::App& app) {
   sub->add_option("files", opts->files, "Listings to check ('-' reads standard input)")->required();
   add_front_end_options(sub, opts->fe, false);
   set_action(sub, [opts] {
+    Report report("check", opts->fe.json);
     int worst = kExitOk;
-    nlohmann::json report = nlohmann::json::array();
+    nlohmann::json files = nlohmann::json::array();
     for (const std::string& path : opts->files) {
       LoadedListing l = load_listing(path, opts->fe);
       if (l.io_error) {
-        fmt::print(stderr, "tierlift: error: {}\n", l.io_message);
+        report.error("io", l.io_message, path);
         worst = kExitUsage;
-        report.push_back({{"file", path}, {"valid", false}, {"error", l.io_message}});
+        files.push_back({{"file", path}, {"valid", false}});
         continue;
       }
       bool valid = l.program.has_value() && !l.diags.has_errors();
       if (!valid && worst == kExitOk) worst = kExitInvalid;
-      if (opts->fe.json) {
-        nlohmann::json entry = {
-            {"file", path}, {"valid", valid}, {"diagnostics", diagnostics_json(l)}};
-        if (l.program) entry["profile"] = ir::profile_name(l.program->profile);
-        report.push_back(std::move(entry));
-      } else {
-        print_diagnostics(l);
-        if (valid)
-          fmt::print("{}: ok ({}, {} instructions{})\n", path, ir::profile_name(l.program->profile),
-                     l.program->code.size(),
-                     l.diags.warning_count() ? fmt::format(", {} warnings", l.diags.warning_count())
-                                             : std::string());
+      report.diagnostics(l.diags, l.sources);
+      nlohmann::json entry = {{"file", path}, {"valid", valid}};
+      entry["form"] = as::listing_form_name(l.form);
+      if (l.program) {
+        entry["profile"] = ir::profile_name(l.program->profile);
+        entry["instructions"] = l.program->code.size();
       }
+      if (l.constants) entry["constants"] = constants_json(*l.constants);
+      files.push_back(std::move(entry));
+      if (valid && !report.json())
+        fmt::print("{}: ok ({}, {} instructions{})\n", path, ir::profile_name(l.program->profile),
+                   l.program->code.size(),
+                   l.diags.warning_count() ? fmt::format(", {} warnings", l.diags.warning_count())
+                                           : std::string());
     }
-    if (opts->fe.json) fmt::print("{}\n", report.dump(2));
-    return worst;
+    report.result()["files"] = std::move(files);
+    return report.finish(worst);
   });
 }
 

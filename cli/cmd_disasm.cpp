@@ -1,62 +1,69 @@
 // tierlift disasm FILE: a D3D9 token stream (raw bytes or a C array of hex DWORDs) back
-// into the IR, validated, printed as canonical text.
+// into the IR, validated, printed as canonical text; the CTAB constant table, when the
+// stream has one, heads the text as comments.
 #include <fmt/format.h>
 
 #include "commands.h"
 #include "front_end.h"
-#include "tierlift/asm/bytecode.h"
+#include "report.h"
+#include "tierlift/asm/constant_table.h"
 #include "tierlift/asm/printer.h"
-#include "tierlift/asm/validator.h"
-#include "tierlift/ir/profile.h"
 
 namespace tierlift::cli {
 
 void register_disasm_command(CLI::App& app) {
   struct Opts {
-    std::string file;
+    std::string file, output = "-";
     FrontEndOptions fe;
   };
   auto opts = std::make_shared<Opts>();
   CLI::App* sub = app.add_subcommand("disasm", "Disassemble a D3D9 token stream");
   sub->add_option("file", opts->file, "Token stream: raw little-endian or a C array ('-' = stdin)")
       ->required();
-  sub->add_flag("--json", opts->fe.json, "Print diagnostics as JSON");
+  sub->add_option("-o,--output", opts->output, "Output file ('-': standard output)")
+      ->capture_default_str();
+  sub->add_flag("--json", opts->fe.json,
+                "Print one JSON document on standard output, the CTAB constants included "
+                "(docs/command-line.md)");
   sub->add_flag("--skip-validation", opts->fe.skip_validation, "Do not apply the profile rules");
   sub->add_option("--profile", opts->fe.profile, "Validate against this profile");
+  add_strict_flag(sub, opts->fe);
   set_action(sub, [opts] {
-    LoadedListing l;
-    std::string error;
-    auto bytes = read_file(opts->file, error);
-    if (!bytes) {
-      fmt::print(stderr, "tierlift: error: {}\n", error);
-      return kExitUsage;
+    Report report("disasm", opts->fe.json);
+    if (std::string why = output_conflict(opts->output, {opts->file}); !why.empty()) {
+      report.error("io", why, opts->output);
+      return report.finish(kExitUsage);
     }
-    // A C-array file is text: keep it so that its diagnostics can quote the line.
-    bool is_text = bytes->find('\0') == std::string::npos;
-    uint32_t file =
-        l.sources.add(opts->file == "-" ? "<stdin>" : opts->file, is_text ? *bytes : "");
-    std::optional<ir::Program> program;
-    if (auto tokens = as::read_token_file(*bytes, l.diags, file))
-      program = as::disassemble(*tokens, l.diags, file);
-    if (program && !opts->fe.skip_validation) {
-      ir::Profile target = program->profile;
-      if (!opts->fe.profile.empty()) {
-        auto p = ir::parse_profile(opts->fe.profile);
-        if (!p) {
-          fmt::print(stderr, "tierlift: error: unknown profile '{}'\n", opts->fe.profile);
-          return kExitUsage;
-        }
-        target = *p;
-      }
-      if (!as::validate(*program, target, l.diags)) program.reset();
+    // The loader reads within the token-file cap, tells a token stream from text by content,
+    // validates (unless skipped) and reads the CTAB.
+    LoadedListing l = load_listing(opts->file, opts->fe, io::kTokenFileCap);
+    if (l.io_error) {
+      report.error("io", l.io_message, opts->file);
+      return report.finish(kExitUsage);
     }
-    if (opts->fe.json)
-      fmt::print(stderr, "{}\n", diagnostics_json(l).dump(2));
-    else
-      print_diagnostics(l);
-    if (!program) return kExitInvalid;
-    fmt::print("{}", as::print_program(*program));
-    return kExitOk;
+    if (l.form == as::ListingForm::Text) {
+      report.error("listing-form",
+                   "this is assembly text, not a token stream; `tierlift fmt` prints it in "
+                   "canonical form, `tierlift assemble` makes a token stream of it",
+                   opts->file);
+      return report.finish(kExitInvalid);
+    }
+    report.diagnostics(l.diags, l.sources);
+    report.result()["form"] = as::listing_form_name(l.form);
+    if (l.constants) report.result()["constants"] = constants_json(*l.constants);
+    if (!l.program || l.diags.has_errors()) return report.finish(kExitInvalid);
+    std::string text = as::print_program(*l.program);
+    if (l.constants) text = as::print_constant_table(*l.constants) + text;
+    if (opts->output == "-") {
+      report.output("text", text);
+      return report.finish(kExitOk);
+    }
+    if (std::string err = write_output(opts->output, text); !err.empty()) {
+      report.error("io", err, opts->output);
+      return report.finish(kExitUsage);
+    }
+    report.result()["written"] = opts->output;
+    return report.finish(kExitOk);
   });
 }
 

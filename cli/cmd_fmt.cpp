@@ -1,44 +1,50 @@
-// tierlift fmt FILE: the canonical text of a listing (parse → IR → print).
+// tierlift fmt FILE: the canonical text of a listing (parse → IR → print), with its
+// comments and blank-line structure kept.
 #include <fmt/format.h>
 
 #include "commands.h"
 #include "front_end.h"
+#include "report.h"
 #include "tierlift/asm/printer.h"
 
 namespace tierlift::cli {
 
 void register_fmt_command(CLI::App& app) {
   struct Opts {
-    std::string file, output;
+    std::string file, output = "-";
     FrontEndOptions fe;
   };
   auto opts = std::make_shared<Opts>();
   CLI::App* sub = app.add_subcommand("fmt", "Print a listing in canonical form");
   sub->add_option("file", opts->file, "Listing ('-' reads standard input)")->required();
-  sub->add_option("-o,--output", opts->output, "Write to this file instead of standard output");
+  sub->add_option("-o,--output", opts->output, "Output file ('-': standard output)")
+      ->capture_default_str();
   add_front_end_options(sub, opts->fe, true);
   set_action(sub, [opts] {
+    Report report("fmt", opts->fe.json);
+    if (std::string why = output_conflict(opts->output, {opts->file}); !why.empty()) {
+      report.error("io", why, opts->output);
+      return report.finish(kExitUsage);
+    }
     LoadedListing l = load_listing(opts->file, opts->fe);
     if (l.io_error) {
-      fmt::print(stderr, "tierlift: error: {}\n", l.io_message);
-      return kExitUsage;
+      report.error("io", l.io_message, opts->file);
+      return report.finish(kExitUsage);
     }
-    if (opts->fe.json)
-      fmt::print(stderr, "{}\n", diagnostics_json(l).dump(2));
-    else
-      print_diagnostics(l);
-    if (!l.program) return kExitInvalid;
-    std::string text = as::print_program(*l.program);
-    if (opts->output.empty()) {
-      fmt::print("{}", text);
-      return kExitOk;
+    report.diagnostics(l.diags, l.sources);
+    if (!l.program) return report.finish(kExitInvalid);
+    // The listing's comments and paragraphs stay; a formatter must not delete them.
+    std::string text = as::print_program_with_comments(*l.program, l.sources.files[0].text, 0);
+    if (opts->output == "-") {
+      report.output("text", text);
+      return report.finish(kExitOk);
     }
-    std::string error;
-    if (!write_file_atomically(opts->output, text, error)) {
-      fmt::print(stderr, "tierlift: error: {}\n", error);
-      return kExitUsage;
+    if (std::string error = write_output(opts->output, text); !error.empty()) {
+      report.error("io", error, opts->output);
+      return report.finish(kExitUsage);
     }
-    return kExitOk;
+    report.result()["written"] = opts->output;
+    return report.finish(kExitOk);
   });
 }
 

@@ -12,29 +12,28 @@
 
 #include "commands.h"
 #include "glow_report.h"
+#include "report.h"
 #include "tierlift/effects/analytic_device.h"
 #include "tierlift/effects/memory_plan.h"
 #include "tierlift/effects/scene.h"
+#include "tierlift/ir/ps1x_range.h"
 #include "tierlift/vulkan/device.h"
 
 namespace tierlift::cli {
 namespace {
 
 struct GlowFlags {
-  std::string scene, image, tier, format, backend = "all", output, gpu;
+  std::string scene, image, tier, format, backend = "all", output, gpu, ps1x_max;
   unsigned downsample = 0; // 0: the scene's
   bool no_half_texel = false, json = false, quiet = false;
+  bool both_devices() const { return backend == "both"; } // cpu and vulkan, no analytic
   unsigned threads = 0;
   unsigned frames = 0; // --frames N: setup and N steady-state frames per device (0: off)
 };
 
-void error(const std::string& message) {
-  fmt::print(stderr, "tierlift glow: error: {}\n", message);
-}
-
 // The scene the flags name (default: the built-in one), with flag overrides applied.
 // nullopt after printing the error.
-std::optional<effects::Scene> scene_from_flags(const GlowFlags& f, int* exit_code) {
+std::optional<effects::Scene> scene_from_flags(const GlowFlags& f, Report& report, int* exit_code) {
   effects::SceneLoad load;
   if (!f.scene.empty())
     load = effects::load_scene_file(f.scene);
@@ -43,8 +42,13 @@ std::optional<effects::Scene> scene_from_flags(const GlowFlags& f, int* exit_cod
   else
     load.scene = effects::default_scene();
   if (!load.scene) {
-    fmt::print(stderr, "{}{}", load.error, load.error.ends_with('\n') ? "" : "\n");
-    *exit_code = kExitInvalid;
+    // The loaders' messages are rendered diagnostics ("FILE:LINE:COL: error: ..." and a
+    // caret line) already.
+    if (report.json())
+      report.error(load.io_error ? "io" : "scene", load.error, f.scene.empty() ? f.image : f.scene);
+    else
+      fmt::print(stderr, "{}{}", load.error, load.error.ends_with('\n') ? "" : "\n");
+    *exit_code = load.io_error ? kExitUsage : kExitInvalid;
     return std::nullopt;
   }
   effects::GlowParams& p = load.scene->params;
@@ -52,6 +56,16 @@ std::optional<effects::Scene> scene_from_flags(const GlowFlags& f, int* exit_cod
   if (f.downsample != 0) p.downsample = f.downsample;
   if (!f.format.empty()) p.format = *img::parse_format(f.format);
   if (f.no_half_texel) p.half_texel = false;
+  if (!f.ps1x_max.empty()) {
+    std::string why;
+    auto m = ir::parse_ps1x_max(f.ps1x_max, &why);
+    if (!m) {
+      report.error("usage", "--ps1x-max " + why);
+      *exit_code = kExitUsage;
+      return std::nullopt;
+    }
+    p.ps1x_max = *m;
+  }
   return load.scene;
 }
 
@@ -73,13 +87,14 @@ effects::PassProgress progress_printer(const std::string& way, bool quiet) {
 // The devices the flags run, in order.
 std::vector<std::string> device_names(const GlowFlags& f) {
   if (f.backend == "all") return {"cpu", "vulkan", "analytic"};
+  if (f.both_devices()) return {"cpu", "vulkan"};
   return {f.backend};
 }
 
 // Memory known before running: the run's peak (effects::plan_memory) against what the
 // machine has. False after printing why the scene does not fit, and what would.
 bool memory_fits(const effects::GlowPlan& plan, const GlowFlags& f, const std::string& where,
-                 uint64_t* planned) {
+                 Report& report, uint64_t* planned) {
   const uint64_t available = effects::available_memory();
   const std::vector<std::string> names = device_names(f);
   // The scene as loaded stays beside the run; --frames runs each device once more, alone.
@@ -103,12 +118,13 @@ bool memory_fits(const effects::GlowPlan& plan, const GlowFlags& f, const std::s
     if (names.size() > 1 && peak({d}) <= available)
       alone += fmt::format("{}--backend {} alone needs {}", alone.empty() ? "; " : ", ", d,
                            effects::format_bytes(peak({d})));
-  fmt::print(stderr,
-             "{}: error: the glow at {}x{} ({}, {}) needs {} of memory at its peak and {} is "
-             "available; a smaller --format, a larger --downsample or fewer devices "
-             "(--backend) need less{}\n",
-             where, in.width, in.height, img::format_name(in.format), fmt::join(names, " + "),
-             effects::format_bytes(need), effects::format_bytes(available), alone);
+  report.error("memory",
+               fmt::format("{}: the glow at {}x{} ({}, {}) needs {} of memory at its peak and {} "
+                           "is available; a smaller --format, a larger --downsample or fewer "
+                           "devices (--backend) need less{}",
+                           where, in.width, in.height, img::format_name(in.format),
+                           fmt::join(names, " + "), effects::format_bytes(need),
+                           effects::format_bytes(available), alone));
   return false;
 }
 
@@ -153,6 +169,7 @@ nlohmann::json summary_json(const effects::Scene& scene, const effects::GlowPlan
       {"downsample", p.downsample},
       {"half_texel", p.half_texel},
       {"intensity", p.intensity},
+      {"ps1x_max", {{"preset", ir::ps1x_max_label(p.ps1x_max)}, {"value", p.ps1x_max}}},
       {"glow", {{"width", plan.glow_width}, {"height", plan.glow_height}}},
       {"taps", plan.taps.size()},
       {"blur_passes_per_axis", plan.blur_passes_per_axis},
@@ -168,54 +185,59 @@ nlohmann::json summary_json(const effects::Scene& scene, const effects::GlowPlan
 }
 
 int run(const GlowFlags& f) {
+  Report report("glow", f.json);
   int exit_code = kExitOk;
-  std::optional<effects::Scene> scene = scene_from_flags(f, &exit_code);
-  if (!scene) return exit_code;
+  if (f.output == "-") {
+    report.error("usage", "-o names a folder for glow (several images); '-' is not one");
+    return report.finish(kExitUsage);
+  }
+  std::optional<effects::Scene> scene = scene_from_flags(f, report, &exit_code);
+  if (!scene) return report.finish(exit_code);
   const effects::GlowParams& params = scene->params;
   const std::string where = scene->file.empty() ? "tierlift glow" : scene->file;
 
   effects::GlowPlan plan = effects::build_glow(params);
   if (!plan) {
-    fmt::print(stderr, "{}: error: {}\n", where, plan.error);
-    return kExitInvalid;
+    report.error("scene", fmt::format("{}: {}", where, plan.error), scene->file);
+    return report.finish(kExitInvalid);
   }
   uint64_t planned_bytes = 0;
-  if (!memory_fits(plan, f, where, &planned_bytes)) return kExitInvalid;
+  if (!memory_fits(plan, f, where, report, &planned_bytes)) return report.finish(kExitInvalid);
   img::LoadResult image = effects::load_scene_image(*scene);
   if (!image) {
-    fmt::print(stderr, "{}\n", image.error);
-    return kExitInvalid;
+    report.error(image.io_error ? "io" : "scene", image.error, scene->image);
+    return report.finish(image.io_error ? kExitUsage : kExitInvalid);
   }
   // The parameters' warnings after the flags' overrides, then the scene's own (the image's).
   std::vector<std::string> warnings = effects::glow_warnings(params);
   for (const std::string& w : scene->warnings)
     if (std::find(warnings.begin(), warnings.end(), w) == warnings.end()) warnings.push_back(w);
-  for (const std::string& w : warnings) fmt::print(stderr, "{}: warning: {}\n", where, w);
+  for (const std::string& w : warnings) report.warning("scene", fmt::format("{}: {}", where, w));
   scene->warnings = warnings;
 
-  const bool all = f.backend == "all";
+  const bool all = f.backend == "all", both = f.both_devices();
   // The device lives until the process ends (never destroyed): lavapipe then stays loaded,
   // so LeakSanitizer can attribute the driver's process-lifetime allocations to its module
   // (tests/lsan.supp), as `tierlift run` does.
   static vulkan::Device* vk = nullptr; // a global root: reachable, so not a leak either
   double vk_create_ms = 0;
-  if ((all || f.backend == "vulkan") && !vk) {
+  if ((all || both || f.backend == "vulkan") && !vk) {
     const auto t0 = std::chrono::steady_clock::now();
     vulkan::DeviceOptions o;
     o.gpu_filter = f.gpu;
     std::string err;
     vk = vulkan::Device::create(o, &err).release();
     if (!vk) {
-      error(err);
-      return kExitUsage;
+      report.error("device", err);
+      return report.finish(kExitUsage);
     }
     vk_create_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   }
   std::vector<std::pair<std::string, std::unique_ptr<effects::PassDevice>>> devices;
-  if (all || f.backend == "cpu")
+  if (all || both || f.backend == "cpu")
     devices.emplace_back("cpu", std::make_unique<effects::CpuPassDevice>(f.threads));
-  if (vk && (all || f.backend == "vulkan"))
+  if (vk && (all || both || f.backend == "vulkan"))
     devices.emplace_back("vulkan", effects::make_vulkan_pass_device(*vk));
   if (all || f.backend == "analytic")
     devices.emplace_back("analytic", effects::make_analytic_pass_device());
@@ -226,49 +248,50 @@ int run(const GlowFlags& f) {
     ways.push_back({name, effects::run_glow(plan, *image.image, *device, keep,
                                             progress_printer(name, f.quiet || f.json))});
     if (!ways.back().glow.run.ok) {
-      error(ways.back().glow.run.error);
-      return kExitInvalid;
+      report.error("run", ways.back().glow.run.error);
+      return report.finish(kExitInvalid);
     }
   }
   std::string err;
   const std::vector<PairAgreement> pairs = compare_ways(ways, &err);
   if (!err.empty()) {
-    error(err);
-    return kExitInvalid;
+    report.error("agreement", err);
+    return report.finish(kExitInvalid);
   }
   std::vector<FrameReport> frames;
   if (f.frames > 0)
     if (err = run_frames(plan, *image.image, ways, f, vk, vk_create_ms, frames); !err.empty()) {
-      error(err);
-      return kExitInvalid;
+      report.error("frames", err);
+      return report.finish(kExitInvalid);
     }
   std::vector<std::string> written;
   if (!f.output.empty())
-    if (err = write_glow_images(f.output, ways, params.format != img::Format::RGBA8, &written);
+    if (err = write_glow_images(f.output, ways, params.format != img::Format::RGBA8,
+                                {f.scene, f.image, scene->image}, &written);
         !err.empty()) {
-      error(err);
-      return kExitUsage;
+      report.error("io", err, f.output);
+      return report.finish(kExitUsage);
     }
 
   bool all_within = true;
   for (const PairAgreement& p : pairs) all_within = all_within && p.agreement.all_pass;
-  if (f.json) {
-    nlohmann::json j = summary_json(*scene, plan, ways);
-    if (vk && (all || f.backend == "vulkan")) j["vulkan_device"] = vk->name();
+  if (report.json()) {
+    nlohmann::json& j = report.result();
+    j = summary_json(*scene, plan, ways);
+    if (vk && (all || both || f.backend == "vulkan")) j["vulkan_device"] = vk->name();
     j["agreement"] = agreement_json(pairs);
     if (!frames.empty()) j["frames"] = frames_json(frames);
     j["memory"] = {{"planned_peak_bytes", planned_bytes},
                    {"available_bytes", effects::available_memory()}};
     j["all_within_targets"] = all_within;
     j["written"] = written;
-    fmt::print("{}\n", j.dump(2));
   } else {
     fmt::print("glow {}: {}x{} {}, downsample {} ({}x{}), {} taps, {} blur passes per axis, "
-               "half texel {}\n",
+               "half texel {}, ps1x-max {}\n",
                effects::tier_name(params.tier), params.width, params.height,
                img::format_name(params.format), params.downsample, plan.glow_width,
                plan.glow_height, plan.taps.size(), plan.blur_passes_per_axis,
-               params.half_texel ? "on" : "off");
+               params.half_texel ? "on" : "off", ir::ps1x_max_label(params.ps1x_max));
     for (const GlowWay& w : ways)
       fmt::print("{}: {} passes in {:.1f} ms{}\n", w.name, w.glow.run.passes.size(),
                  w.glow.run.total_ms, w.name == "vulkan" ? fmt::format(" ({})", vk->name()) : "");
@@ -283,12 +306,12 @@ int run(const GlowFlags& f) {
     for (const PairAgreement& p : pairs)
       for (const effects::PassAgreement& row : p.agreement.passes)
         if (!row.verdict.pass)
-          fmt::print(stderr, "tierlift glow: {} vs {}, {}: {}\n", p.a, p.b, row.pass,
-                     row.verdict.summary);
-    error("the ways differ beyond the targets");
-    return kExitInvalid;
+          report.error("agreement",
+                       fmt::format("{} vs {}, {}: {}", p.a, p.b, row.pass, row.verdict.summary));
+    report.error("agreement", "the ways differ beyond the targets");
+    return report.finish(kExitInvalid);
   }
-  return kExitOk;
+  return report.finish(kExitOk);
 }
 
 } // namespace
@@ -308,15 +331,21 @@ void register_glow_command(CLI::App& app) {
   sub->add_option("--format", f->format, "rgba8 | rgba16f | rgba32f (every texture)")
       ->check(CLI::IsMember({"rgba8", "rgba16f", "rgba32f"}));
   sub->add_option("--backend", f->backend,
-                  "cpu | vulkan | analytic | all (all: the three ways and their agreement)")
-      ->check(CLI::IsMember({"cpu", "vulkan", "analytic", "all"}))
+                  "cpu | vulkan | analytic | both | all (both: cpu and vulkan; all: the three "
+                  "ways; their agreement is printed)")
+      ->check(CLI::IsMember({"cpu", "vulkan", "analytic", "both", "all"}))
       ->capture_default_str();
+  sub->add_option("--ps1x-max", f->ps1x_max,
+                  "ps_1_x register range of tier dx8: geforce3 (1), radeon8500 (8), d3d9 "
+                  "(default), max, or a number >= 1");
   sub->add_flag("--no-half-texel", f->no_half_texel,
                 "Leave the half texel out of the blur offsets (taps land on texel corners)");
   sub->add_option("-o,--output", f->output,
                   "Folder for {scene,glow,final}-{cpu,vulkan,analytic}.png (opaque; .pfm too "
                   "for float formats)");
-  sub->add_flag("--json", f->json, "Print a JSON summary (no progress lines)");
+  sub->add_flag("--json", f->json,
+                "Print one JSON document on standard output (docs/command-line.md; no "
+                "progress lines)");
   sub->add_flag("-q,--quiet", f->quiet, "No progress lines");
   sub->add_option("--threads", f->threads, "CPU worker threads (0 = every core)")
       ->capture_default_str();

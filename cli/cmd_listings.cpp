@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "commands.h"
+#include "report.h"
 #include "tierlift/asm/parser.h"
 #include "tierlift/asm/printer.h"
 #include "tierlift/asm/validator.h"
@@ -12,26 +13,43 @@
 namespace tierlift::cli {
 
 void register_listings_command(CLI::App& app) {
-  auto quiet = std::make_shared<bool>(false);
+  struct Opts {
+    bool quiet = false, json = false;
+  };
+  auto opts = std::make_shared<Opts>();
   CLI::App* sub = app.add_subcommand(
       "listings", "Check the built-in listings (GPU Gems ch. 21 Listings 1-4) and print them");
-  sub->add_flag("-q,--quiet", *quiet, "Only the verdict line of each listing");
-  set_action(sub, [quiet] {
+  sub->add_flag("-q,--quiet", opts->quiet, "Only the verdict line of each listing");
+  sub->add_flag("--json", opts->json,
+                "Print one JSON document on standard output (docs/command-line.md)");
+  set_action(sub, [opts] {
+    Report report("listings", opts->json);
     int result = kExitOk;
+    nlohmann::json entries = nlohmann::json::array();
     for (const auto& l : listings::embedded_listings()) {
-      auto parsed = as::parse_text(std::string(l.text), "listings/" + std::string(l.path));
+      const std::string path = "listings/" + std::string(l.path);
+      auto parsed = as::parse_text(std::string(l.text), path);
       bool ok = parsed.program && as::validate(*parsed.program, parsed.diags);
-      std::fputs(ir::render_text(parsed.diags, parsed.sources).c_str(), stderr);
+      report.diagnostics(parsed.diags, parsed.sources);
+      nlohmann::json entry = {{"file", path}, {"valid", ok}};
       if (!ok) {
-        fmt::print("listings/{}: INVALID\n", l.path);
+        if (!report.json()) fmt::print("{}: INVALID\n", path);
+        entries.push_back(std::move(entry));
         result = kExitInvalid;
         continue;
       }
-      fmt::print("listings/{}: ok ({}, {} instructions)\n", l.path,
-                 ir::profile_name(parsed.program->profile), parsed.program->code.size());
-      if (!*quiet) fmt::print("{}\n", as::print_program(*parsed.program));
+      entry["profile"] = ir::profile_name(parsed.program->profile);
+      entry["instructions"] = parsed.program->code.size();
+      std::string text = as::print_program(*parsed.program);
+      if (!opts->quiet) entry["text"] = text;
+      entries.push_back(std::move(entry));
+      if (report.json()) continue;
+      fmt::print("{}: ok ({}, {} instructions)\n", path, ir::profile_name(parsed.program->profile),
+                 parsed.program->code.size());
+      if (!opts->quiet) fmt::print("{}\n", text);
     }
-    return result;
+    report.result()["listings"] = std::move(entries);
+    return report.finish(result);
   });
 }
 

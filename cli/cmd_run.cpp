@@ -9,8 +9,11 @@
 
 #include "commands.h"
 #include "front_end.h"
+#include "named_constants.h"
+#include "report.h"
 #include "tierlift/cpu/run_job.h"
 #include "tierlift/image/compare.h"
+#include "tierlift/ir/ps1x_range.h"
 #include "tierlift/vulkan/run_job.h"
 
 namespace tierlift::cli {
@@ -21,10 +24,10 @@ struct RunFlags {
   std::string pixel_center = "d3d9", output;
   std::vector<std::string> consts, inputs, attrs, textures, probes;
   int subtexel_bits = 0;
-  float ps1x_max = 1.0f;
+  std::string ps1x_max{ir::kDefaultPs1xPreset};
   unsigned threads = 0;
-  bool json = false;
   std::string backend = "cpu", gpu;
+  FrontEndOptions fe; // -D, -I, --profile, --strict, --skip-validation, --json
 };
 
 // A usage problem: message on stderr, exit 2.
@@ -37,6 +40,15 @@ template <class T> T need(std::optional<T> value, const std::string& error) {
   return *value;
 }
 
+// --const settings, names already resolved to registers (named_constants.h).
+std::vector<cpu::ConstSetting> parse_constants(const std::vector<std::string>& settings) {
+  std::vector<cpu::ConstSetting> out;
+  std::string err;
+  for (const auto& s : settings) out.push_back(need(cpu::parse_const_setting(s, err), err));
+  return out;
+}
+
+// Every flag but --const (read once the listings' constant tables are known).
 cpu::RunRequest build_request(const RunFlags& f) {
   cpu::RunRequest r;
   std::string err;
@@ -45,7 +57,6 @@ cpu::RunRequest build_request(const RunFlags& f) {
   r.height = size[1];
   r.format = need(img::parse_format(f.format),
                   fmt::format("--format '{}': expected rgba8, rgba16f or rgba32f", f.format));
-  for (const auto& s : f.consts) r.constants.push_back(need(cpu::parse_const_setting(s, err), err));
   for (const auto& s : f.inputs) r.inputs.push_back(need(cpu::parse_input_setting(s, err), err));
   for (const auto& s : f.attrs) r.attrs.push_back(need(cpu::parse_attr_setting(s, err), err));
   for (const auto& s : f.textures)
@@ -67,17 +78,32 @@ cpu::RunRequest build_request(const RunFlags& f) {
   if (f.subtexel_bits < 0 || f.subtexel_bits > 24)
     throw UsageError{fmt::format("--subtexel-bits {}: expected 0 (exact) .. 24", f.subtexel_bits)};
   r.conventions.subtexel_bits = f.subtexel_bits;
-  if (!(f.ps1x_max >= 1.0f) || !std::isfinite(f.ps1x_max))
-    throw UsageError{fmt::format("--ps1x-max {}: expected a finite value >= 1", f.ps1x_max)};
-  r.conventions.ps1x_max_value = f.ps1x_max;
+  auto ps1x_max = ir::parse_ps1x_max(f.ps1x_max, &err); // before `need` reads err
+  r.conventions.ps1x_max_value = need(ps1x_max, "--ps1x-max " + err);
   r.threads = f.threads;
   return r;
 }
 
-void print_other(const ir::DiagnosticSink& sink) {
-  for (const ir::Diagnostic& d : sink.all())
-    fmt::print(stderr, "tierlift run: {}: {}\n",
-               d.severity == ir::Severity::Error ? "error" : "warning", d.message);
+void print_other(const ir::DiagnosticSink& sink, Report& report) {
+  for (const ir::Diagnostic& d : sink.all()) {
+    if (d.severity == ir::Severity::Error)
+      report.error(d.rule, d.message);
+    else
+      report.warning(d.rule, d.message);
+  }
+}
+
+// --backend both writes the Vulkan image beside the CPU one: out.png → out-vulkan.png.
+std::string vulkan_output(const std::string& output) {
+  std::filesystem::path p(output);
+  return (p.parent_path() / (p.stem().string() + "-vulkan")).string() + p.extension().string();
+}
+
+// The files the run reads, which no output may replace.
+std::vector<std::string> input_files(const RunFlags& f, const cpu::RunRequest& r) {
+  std::vector<std::string> inputs{f.vs, f.ps};
+  for (const cpu::TextureSetting& t : r.textures) inputs.push_back(t.source);
+  return inputs;
 }
 
 nlohmann::json result_json(const RunFlags& f, const cpu::RunRequest& r, const cpu::RunResult& out,
@@ -88,6 +114,9 @@ nlohmann::json result_json(const RunFlags& f, const cpu::RunRequest& r, const cp
         {{"x", p.x}, {"y", p.y}, {"rgba", {p.value[0], p.value[1], p.value[2], p.value[3]}}});
   return {{"size", {{"width", r.width}, {"height", r.height}}},
           {"format", img::format_name(r.format)},
+          {"ps1x_max",
+           {{"preset", ir::ps1x_max_label(r.conventions.ps1x_max_value)},
+            {"value", r.conventions.ps1x_max_value}}},
           {"probes", probes},
           {"output", f.output.empty() ? nlohmann::json() : nlohmann::json(f.output)},
           {"pixels_shaded", out.stats.pixels_shaded},
@@ -96,39 +125,75 @@ nlohmann::json result_json(const RunFlags& f, const cpu::RunRequest& r, const cp
 }
 
 int run(const RunFlags& f) {
+  Report report("run", f.fe.json);
+  // Without listings the quad shows its pixel inputs (--input); with none of the three
+  // there is nothing to draw, and a bare `tierlift run` is a usage error.
+  if (f.vs.empty() && f.ps.empty() && f.inputs.empty()) {
+    report.error("usage", "nothing to draw: give --vs, --ps or --input (tierlift run --help)");
+    return report.finish(kExitUsage);
+  }
+  // Every flag but --const is checked before any file is read; --const may name a constant
+  // of a token stream's CTAB, so it is read once the listings are loaded.
   cpu::RunRequest req;
   try {
     req = build_request(f);
   } catch (const UsageError& e) {
-    fmt::print(stderr, "tierlift run: error: {}\n", e.message);
-    return kExitUsage;
+    report.error("usage", e.message);
+    return report.finish(kExitUsage);
+  }
+  const bool want_cpu = f.backend != "vulkan", want_vulkan = f.backend != "cpu";
+  if (!f.output.empty()) {
+    std::string why = check_output(f.output, input_files(f, req), f.fe.json);
+    if (why.empty() && f.output == "-" && want_cpu && want_vulkan)
+      why = "-o - takes one image; --backend both writes two (give -o a file)";
+    if (why.empty() && want_cpu && want_vulkan)
+      why = output_conflict(vulkan_output(f.output), input_files(f, req));
+    if (!why.empty()) {
+      report.error(f.output == "-" ? "usage" : "io", why, f.output);
+      return report.finish(kExitUsage);
+    }
   }
   // Each listing keeps its own SourceManager, so its diagnostics quote the right file.
   std::optional<LoadedListing> vs, ps;
   for (auto [path, slot] : {std::pair{&f.vs, &vs}, std::pair{&f.ps, &ps}}) {
     if (path->empty()) continue;
-    *slot = load_listing(*path, FrontEndOptions{});
+    *slot = load_listing(*path, f.fe);
     if ((*slot)->io_error) {
-      fmt::print(stderr, "tierlift run: error: {}\n", (*slot)->io_message);
-      return kExitUsage;
+      report.error("io", (*slot)->io_message, *path);
+      return report.finish(kExitUsage);
     }
   }
   bool listings_ok = true;
   for (auto* l : {&vs, &ps}) {
     if (!*l) continue;
-    print_diagnostics(**l);
+    report.diagnostics((*l)->diags, (*l)->sources);
     listings_ok = listings_ok && (*l)->program && !(*l)->diags.has_errors();
   }
-  if (!listings_ok) return kExitInvalid;
+  if (!listings_ok) return report.finish(kExitInvalid);
+  // Constants named by a token stream's CTAB become the registers they cover.
+  auto table = [](const std::optional<LoadedListing>& l) {
+    return l && l->constants ? &*l->constants : nullptr;
+  };
+  std::string const_error;
+  auto consts = resolve_named_constants(f.consts, table(vs), table(ps), const_error);
+  if (!consts) {
+    report.error("usage", const_error);
+    return report.finish(kExitUsage);
+  }
+  try {
+    req.constants = parse_constants(*consts);
+  } catch (const UsageError& e) {
+    report.error("usage", e.message);
+    return report.finish(kExitUsage);
+  }
   if (vs) req.vs = std::make_shared<const ir::Program>(*vs->program);
   if (ps) req.ps = std::make_shared<const ir::Program>(*ps->program);
 
-  const bool want_cpu = f.backend != "vulkan", want_vulkan = f.backend != "cpu";
   cpu::RunDiagnostics diags;
   auto print_run_diagnostics = [&](const cpu::RunDiagnostics& d) {
-    if (vs) std::fputs(ir::render_text(d.vs, vs->sources).c_str(), stderr);
-    if (ps) std::fputs(ir::render_text(d.ps, ps->sources).c_str(), stderr);
-    print_other(d.other);
+    if (vs) report.diagnostics(d.vs, vs->sources);
+    if (ps) report.diagnostics(d.ps, ps->sources);
+    print_other(d.other, report);
   };
   auto failure_code = [](const cpu::RunDiagnostics& d) {
     for (const auto& e : d.other.all())
@@ -141,7 +206,7 @@ int run(const RunFlags& f) {
   if (want_cpu) {
     out = cpu::run_job(req, diags);
     print_run_diagnostics(diags);
-    if (!out.ok) return failure_code(diags);
+    if (!out.ok) return report.finish(failure_code(diags));
   }
   vulkan::VulkanRunResult vk;
   if (want_vulkan) {
@@ -151,12 +216,12 @@ int run(const RunFlags& f) {
     vk = vulkan::run_job_vulkan(req, vk_diags, options);
     if (!want_cpu) print_run_diagnostics(vk_diags);
     if (vk.no_device) {
-      fmt::print(stderr, "tierlift run: error: {}\n", vk.error);
-      return kExitUsage;
+      report.error("device", vk.error);
+      return report.finish(kExitUsage);
     }
     if (!vk.ok) {
-      if (!vk.error.empty()) fmt::print(stderr, "tierlift run: error: vulkan: {}\n", vk.error);
-      return want_cpu ? kExitInvalid : failure_code(vk_diags);
+      if (!vk.error.empty()) report.error("vulkan", "vulkan: " + vk.error);
+      return report.finish(want_cpu ? kExitInvalid : failure_code(vk_diags));
     }
     if (!want_cpu) {
       out.ok = true;
@@ -174,8 +239,8 @@ int run(const RunFlags& f) {
     std::string err;
     agreement = img::compare(out.image, vk.image, &err);
     if (!agreement) {
-      fmt::print(stderr, "tierlift run: error: {}\n", err);
-      return kExitInvalid;
+      report.error("agreement", err);
+      return report.finish(kExitInvalid);
     }
     verdict = img::judge(*agreement, req.format);
   }
@@ -184,26 +249,22 @@ int run(const RunFlags& f) {
   if (!f.output.empty()) {
     auto t0 = std::chrono::steady_clock::now();
     std::vector<std::pair<std::string, const img::Image*>> files{{f.output, &out.image}};
-    if (want_cpu && want_vulkan) {
-      std::filesystem::path p(f.output);
-      std::string second =
-          (p.parent_path() / (p.stem().string() + "-vulkan")).string() + p.extension().string();
-      files.emplace_back(second, &vk.image);
-    }
+    if (want_cpu && want_vulkan) files.emplace_back(vulkan_output(f.output), &vk.image);
     for (const auto& [path, image] : files) {
       std::string warning;
       std::string err = cpu::write_run_output(path, *image, &warning);
-      if (!warning.empty()) fmt::print(stderr, "tierlift run: warning: {}\n", warning);
+      if (!warning.empty()) report.warning("clamped", warning, path);
       if (!err.empty()) {
-        fmt::print(stderr, "tierlift run: error: {}\n", err);
-        return kExitUsage;
+        report.error("io", err, path);
+        return report.finish(kExitUsage);
       }
     }
     write_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   }
-  if (f.json) {
-    nlohmann::json j = result_json(f, req, out, write_ms);
+  if (report.json()) {
+    nlohmann::json& j = report.result();
+    j = result_json(f, req, out, write_ms);
     j["backend"] = f.backend;
     if (want_vulkan) j["vulkan_device"] = vk.device_name;
     if (agreement) {
@@ -215,7 +276,6 @@ int run(const RunFlags& f) {
       j["timing_ms"]["vulkan_setup"] = vk.setup_ms;
       j["timing_ms"]["vulkan_draw"] = vk.draw_ms;
     }
-    fmt::print("{}\n", j.dump(2));
   } else {
     for (const auto& p : out.probes)
       fmt::print("{},{}: {} {} {} {}\n", p.x, p.y, p.value[0], p.value[1], p.value[2], p.value[3]);
@@ -229,11 +289,13 @@ int run(const RunFlags& f) {
                  agreement->max_abs[2], agreement->max_abs[3], agreement->rmse_all,
                  agreement->identical_share * 100.0,
                  verdict->pass ? "within targets" : "BEYOND TARGETS");
-      if (!verdict->pass) fmt::print(stderr, "tierlift run: error: {}\n", verdict->summary);
     }
   }
-  if (verdict && !verdict->pass) return kExitInvalid;
-  return kExitOk;
+  if (verdict && !verdict->pass) {
+    report.error("agreement", verdict->summary);
+    return report.finish(kExitInvalid);
+  }
+  return report.finish(kExitOk);
 }
 
 } // namespace
@@ -249,7 +311,8 @@ void register_run_command(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--format", f->format, "rgba8 | rgba16f | rgba32f")->capture_default_str();
   sub->add_option("--const", f->consts,
-                  "[vs:|ps:]cN=x,y,z,w, iN=a,b,c,d or bN=true|false (no prefix: both stages)");
+                  "[vs:|ps:]cN=x,y,z,w, iN=a,b,c,d, bN=true|false, or NAME=… for a constant "
+                  "named in a token stream's CTAB (no prefix: both stages)");
   sub->add_option("--input", f->inputs, "Pixel-stage input v#|t#=x,y,z,w (without --vs)");
   sub->add_option("--attr", f->attrs, "Vertex input vN=x,y,z,w or vN=quad-uv (with --vs)");
   sub->add_option("--texture", f->textures, "sN=FILE.png|FILE.pfm|builtin:NAME[:WxH]");
@@ -259,16 +322,21 @@ void register_run_command(CLI::App& app) {
   sub->add_option("--pixel-center", f->pixel_center, "d3d9 | modern")->capture_default_str();
   sub->add_option("--subtexel-bits", f->subtexel_bits, "Bilinear fraction bits (0 = exact)")
       ->capture_default_str();
-  sub->add_option("--ps1x-max", f->ps1x_max, "ps_1_x register range (MaxPixelShaderValue)")
+  sub->add_option("--ps1x-max", f->ps1x_max,
+                  "ps_1_x register range (MaxPixelShaderValue): geforce3 (1), radeon8500 (8), "
+                  "d3d9, max, or a number >= 1")
       ->capture_default_str();
   sub->add_option("--probe", f->probes, "Print the stored value of pixel X,Y");
-  sub->add_option("-o,--output", f->output, "Write the image (.png, or .pfm for float RGB)");
-  sub->add_flag("--json", f->json, "Print a JSON summary (size, format, probes, timing)");
+  sub->add_option("-o,--output", f->output,
+                  "Write the image (.png, or .pfm for float RGB; '-': PNG on standard output)");
+  add_front_end_options(sub, f->fe, true);
   sub->add_option("--threads", f->threads, "Worker threads (0 = every core)")
       ->capture_default_str();
   sub->add_option("--backend", f->backend,
-                  "cpu | vulkan | both (both: compare the two devices at the agreement targets)")
-      ->check(CLI::IsMember({"cpu", "vulkan", "both"}))
+                  "cpu | vulkan | both (both, or its alias all: compare the two devices at the "
+                  "agreement targets)")
+      ->check(CLI::IsMember({"cpu", "vulkan", "both", "all"}))
+      ->transform([](std::string s) { return s == "all" ? std::string("both") : s; })
       ->capture_default_str();
   sub->add_option("--gpu", f->gpu, "Vulkan device name filter (default: lavapipe)");
   set_action(sub, [f] { return run(*f); });

@@ -5,6 +5,7 @@
 
 #include "commands.h"
 #include "front_end.h"
+#include "report.h"
 #include "tierlift/codegen/codegen.h"
 
 namespace tierlift::cli {
@@ -21,23 +22,35 @@ void register_spirv_command(CLI::App& app) {
   sub->add_option("file", opts->file, "Listing ('-' reads standard input)")->required();
   sub->add_option("--pair", opts->pair,
                   "The other stage's listing: link both and leave out what the pair never uses");
-  sub->add_option("-o,--output", opts->output, "Write FILE's module as a SPIR-V binary");
+  sub->add_option("-o,--output", opts->output,
+                  "Write FILE's module as a SPIR-V binary ('-': standard output)");
   sub->add_flag("--dis", opts->dis, "Print the module as SPIR-V assembly text");
   sub->add_flag("--opt", opts->opt, "Run spirv-opt's performance passes");
   sub->add_flag("--explain", opts->explain, "List what linking with --pair left out");
   add_front_end_options(sub, opts->fe, false);
   set_action(sub, [opts] {
+    Report report("spirv", opts->fe.json);
+    if (!opts->output.empty()) {
+      std::string why = check_output(opts->output, {opts->file, opts->pair}, opts->fe.json);
+      if (why.empty() && opts->output == "-" && (opts->dis || opts->explain))
+        why = "-o - writes the binary module to standard output; --dis and --explain print "
+              "there too";
+      if (!why.empty()) {
+        report.error(opts->output == "-" ? "usage" : "io", why, opts->output);
+        return report.finish(kExitUsage);
+      }
+    }
     LoadedListing main = load_listing(opts->file, opts->fe);
     std::optional<LoadedListing> other;
     if (!opts->pair.empty()) other.emplace(load_listing(opts->pair, opts->fe));
     for (const LoadedListing* l : {&main, other ? &*other : nullptr}) {
       if (!l) continue;
       if (l->io_error) {
-        fmt::print(stderr, "tierlift: error: {}\n", l->io_message);
-        return kExitUsage;
+        report.error("io", l->io_message);
+        return report.finish(kExitUsage);
       }
-      print_diagnostics(*l);
-      if (!l->program) return kExitInvalid; // never compile a listing that failed validation
+      report.diagnostics(l->diags, l->sources);
+      if (!l->program) return report.finish(kExitInvalid); // never compile an invalid listing
     }
     codegen::CodegenOptions copts;
     copts.optimize = opts->opt;
@@ -48,8 +61,8 @@ void register_spirv_command(CLI::App& app) {
       const ir::Program& a = *main.program;
       const ir::Program& b = *other->program;
       if (a.stage() == b.stage()) {
-        fmt::print(stderr, "tierlift: error: --pair needs one vertex and one pixel listing\n");
-        return kExitUsage;
+        report.error("usage", "--pair needs one vertex and one pixel listing");
+        return report.finish(kExitUsage);
       }
       const ir::Program& vs = a.stage() == ir::ShaderStage::Vertex ? a : b;
       const ir::Program& ps = a.stage() == ir::ShaderStage::Vertex ? b : a;
@@ -60,36 +73,37 @@ void register_spirv_command(CLI::App& app) {
     } else {
       module = codegen::compile(*main.program, copts, diags);
     }
-    std::fputs(ir::render_text(diags, main.sources).c_str(), stderr);
+    report.diagnostics(diags, main.sources);
     if (!module) {
-      fmt::print(stderr, "tierlift: error: SPIR-V generation failed\n");
-      return kExitInvalid;
+      report.error("codegen", "SPIR-V generation failed");
+      return report.finish(kExitInvalid);
     }
+    report.result()["words"] = module->words.size();
     if (opts->explain) {
       std::string text = codegen::explain(pruned);
-      fmt::print("{}", text.empty() ? std::string("nothing was left out\n") : text);
+      report.output("explain", text.empty() ? std::string("nothing was left out\n") : text);
     }
     if (opts->dis) {
       std::string error;
       std::string text = codegen::disassemble(module->words, &error);
       if (text.empty()) {
-        fmt::print(stderr, "tierlift: error: {}\n", error);
-        return kExitInvalid;
+        report.error("codegen", error);
+        return report.finish(kExitInvalid);
       }
-      fmt::print("{}", text);
+      report.output("disassembly", text);
     }
     if (!opts->output.empty()) {
       std::string bytes(reinterpret_cast<const char*>(module->words.data()),
                         module->words.size() * sizeof(uint32_t));
-      std::string error;
-      if (!write_file_atomically(opts->output, bytes, error)) {
-        fmt::print(stderr, "tierlift: error: {}\n", error);
-        return kExitUsage;
+      if (std::string error = write_output(opts->output, bytes); !error.empty()) {
+        report.error("io", error, opts->output);
+        return report.finish(kExitUsage);
       }
+      report.result()["written"] = opts->output;
     }
-    if (!opts->dis && !opts->explain && opts->output.empty())
+    if (!opts->dis && !opts->explain && opts->output.empty() && !report.json())
       fmt::print("{}: ok ({} words, spirv-val passed)\n", opts->file, module->words.size());
-    return kExitOk;
+    return report.finish(kExitOk);
   });
 }
 

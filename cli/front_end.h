@@ -10,6 +10,8 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "tierlift/asm/load.h"
+#include "tierlift/io/bounded_read.h"
 #include "tierlift/ir/diagnostic.h"
 #include "tierlift/ir/program.h"
 
@@ -21,30 +23,51 @@ struct FrontEndOptions {
   std::string profile;                   // --profile: validate against this instead
   bool skip_validation = false;          // --skip-validation (fxc /Vd)
   bool json = false;                     // --json
+  bool strict = false;                   // --strict: the documented rules only
 };
 
-// Adds -D, -I, --profile, --json and (when asked) --skip-validation to a subcommand.
-void add_front_end_options(CLI::App* sub, FrontEndOptions& options, bool skip_validation_flag);
+// Adds -D, -I (one value each, repeatable), --profile, --strict, --skip-validation (when
+// asked) and --json (when asked: run and glow print results, not only diagnostics, under it).
+void add_front_end_options(CLI::App* sub, FrontEndOptions& options, bool skip_validation_flag,
+                           bool json_flag = true);
+// --strict alone (commands that take only some of the front-end flags).
+void add_strict_flag(CLI::App* sub, FrontEndOptions& options);
 
 struct LoadedListing {
   ir::SourceManager sources;
   ir::DiagnosticSink diags;
   std::optional<ir::Program> program; // set when it parsed (and validated, unless skipped)
-  bool io_error = false;              // could not be read: exit 2
+  as::ListingForm form = as::ListingForm::Text; // text or token stream (detected by content)
+  std::optional<as::ConstantTable> constants;   // a token stream's CTAB
+  bool io_error = false;                        // could not be read, or a bad flag: exit 2
   std::string io_message;
 };
 
-// Reads `path` ("-" = standard input), parses it, and validates it unless skipped.
-LoadedListing load_listing(const std::string& path, const FrontEndOptions& options);
+// Reads `path` ("-" = standard input) within io::kListingCap — assembly text (a UTF-8
+// byte-order mark is skipped) or a D3D9 token stream, told apart by content
+// (as::load_listing) — parses it, and validates it unless skipped.
+// `cap` is the reader's limit (disasm reads within io::kTokenFileCap).
+LoadedListing load_listing(const std::string& path, const FrontEndOptions& options,
+                           const io::ReadCap& cap = io::kListingCap);
 
-// Reads a whole file as bytes; "-" reads standard input. nullopt + message on failure.
-std::optional<std::string> read_file(const std::string& path, std::string& error);
-// Writes to a temporary file beside `path`, then renames it over `path`, so a failed or
-// interrupted write never leaves a half-written output.
-bool write_file_atomically(const std::string& path, std::string_view bytes, std::string& error);
+// Reads a whole file within `cap` ("-" = standard input); nullopt + "PATH: why" on failure.
+std::optional<std::string> read_file(const std::string& path, const io::ReadCap& cap,
+                                     std::string& error);
+// "" when `output` ("-" = standard output) may be written: it is none of `inputs` (same
+// device and inode). Commands check this before doing any work, so nothing is touched.
+std::string output_conflict(const std::string& output, const std::vector<std::string>& inputs);
+// output_conflict, and also refuses "-o -" together with --json (both want standard
+// output).
+std::string check_output(const std::string& output, const std::vector<std::string>& inputs,
+                         bool json);
+// io::write_output: "-" is standard output, FIFOs and devices are written through, anything
+// else goes through a temporary file renamed into place. "" on success.
+std::string write_output(const std::string& path, std::string_view bytes);
 
 // Diagnostics of one listing as JSON (the objects of ir::render_json).
 nlohmann::json diagnostics_json(const LoadedListing& listing);
+// A CTAB as JSON: [{"name", "registers", "set", "index", "count", "type"}].
+nlohmann::json constants_json(const as::ConstantTable& table);
 // Text diagnostics to stderr.
 void print_diagnostics(const LoadedListing& listing);
 

@@ -7,6 +7,7 @@
 
 #include "tierlift/effects/glow.h"
 #include "tierlift/image/io.h"
+#include "tierlift/io/output_file.h"
 
 namespace tierlift::cli {
 
@@ -86,27 +87,43 @@ nlohmann::json agreement_json(const std::vector<PairAgreement>& pairs) {
 }
 
 std::string write_glow_images(const std::string& dir, const std::vector<GlowWay>& ways,
-                              bool float_targets, std::vector<std::string>* written) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) return fmt::format("cannot create '{}': {}", dir, ec.message());
+                              bool float_targets, const std::vector<std::string>& inputs,
+                              std::vector<std::string>* written) {
+  if (dir == "-") return "-o names a folder for glow (several images); '-' is not one";
+  struct File {
+    std::string path;
+    const img::Image* image;
+    bool pfm;
+  };
+  std::vector<File> files;
   for (const GlowWay& way : ways)
     for (std::string_view tex :
          {effects::kSceneTexture, effects::kGlowTexture, effects::kFinalTexture}) {
       const auto it = way.glow.images.find(tex);
       if (it == way.glow.images.end()) continue;
-      img::Image opaque = it->second;
-      for (size_t i = 3; i < opaque.rgba.size(); i += 4) opaque.rgba[i] = 1.0f;
       const std::filesystem::path base =
           std::filesystem::path(dir) / fmt::format("{}-{}", tex, way.name);
-      img::Status s = img::write_png(base.string() + ".png", opaque);
-      if (!s) return s.error;
-      if (written) written->push_back(base.string() + ".png");
-      if (!float_targets) continue;
-      s = img::write_pfm(base.string() + ".pfm", it->second);
-      if (!s) return s.error;
-      if (written) written->push_back(base.string() + ".pfm");
+      files.push_back({base.string() + ".png", &it->second, false});
+      if (float_targets) files.push_back({base.string() + ".pfm", &it->second, true});
     }
+  // Every name is checked before the first is written: an input is never replaced.
+  for (const File& f : files)
+    if (std::string why = io::refuse_if_input(f.path, inputs); !why.empty()) return why;
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) return fmt::format("{}: cannot create the folder: {}", dir, ec.message());
+  for (const File& f : files) {
+    img::Status s;
+    if (f.pfm) {
+      s = img::write_pfm(f.path, *f.image);
+    } else {
+      img::Image opaque = *f.image;
+      for (size_t i = 3; i < opaque.rgba.size(); i += 4) opaque.rgba[i] = 1.0f;
+      s = img::write_png(f.path, opaque);
+    }
+    if (!s) return s.error;
+    if (written) written->push_back(f.path);
+  }
   return {};
 }
 

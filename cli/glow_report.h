@@ -46,8 +46,10 @@ nlohmann::json frames_json(const std::vector<FrameReport>& frames);
 // Writes DIR/{scene,glow,final}-<way>.png for each way (opaque copies: the scene's alpha is
 // the glow mask, and viewers would show the ground as transparent), plus .pfm of each when
 // the target format is a float format. Empty string on success. Every file is written to a
-// temporary name and renamed into place.
+// temporary name and renamed into place. A name that is one of `inputs` (the same file) is
+// refused before anything is written.
 std::string write_glow_images(const std::string& dir, const std::vector<GlowWay>& ways,
-                              bool float_targets, std::vector<std::string>* written);
+                              bool float_targets, const std::vector<std::string>& inputs,
+                              std::vector<std::string>* written);
 
 } // namespace tierlift::cli

@@ -63,12 +63,43 @@ QuotedLine quote(std::string_view line, size_t byte_col) {
   return q;
 }
 
+bool blank(char c) {
+  return c == ' ' || c == '\t' || c == '\n' || c == '\r';
+}
+
 } // namespace
+
+std::string shorten_long_words(std::string message) {
+  if (message.size() <= kMaxEchoedWord) return message; // the common case: nothing to cut
+  std::string out;
+  for (size_t i = 0; i < message.size();) {
+    if (blank(message[i])) {
+      out += message[i++];
+      continue;
+    }
+    size_t end = i;
+    while (end < message.size() && !blank(message[end])) ++end;
+    const size_t len = end - i;
+    if (len <= kMaxEchoedWord) {
+      out.append(message, i, len);
+    } else {
+      size_t head = kEchoedWordHead; // back up to a UTF-8 character boundary
+      while (head > 0 && (static_cast<unsigned char>(message[i + head]) & 0xC0) == 0x80) --head;
+      out.append(message, i, head);
+      out += fmt::format("… ({} bytes)", len);
+    }
+    i = end;
+  }
+  return out;
+}
 
 std::string render_text(const Diagnostic& d, const SourceManager& sm) {
   std::string out;
   if (d.loc.valid())
     out = fmt::format("{}:{}:{}: {}: {}", file_name(sm, d.loc), d.loc.line, d.loc.col,
+                      severity_name(d.severity), d.message);
+  else if (d.loc.has_offset())
+    out = fmt::format("{}:+0x{:x}: {}: {}", file_name(sm, d.loc), d.loc.byte_offset,
                       severity_name(d.severity), d.message);
   else
     out = fmt::format("{}: {}: {}", file_name(sm, d.loc), severity_name(d.severity), d.message);
@@ -101,6 +132,7 @@ std::string render_json(const DiagnosticSink& sink, const SourceManager& sm) {
     j["line"] = d.loc.line;
     j["column"] = d.loc.col;
     j["length"] = d.loc.length;
+    if (d.loc.has_offset()) j["offset"] = d.loc.byte_offset; // a token stream's byte offset
     j["severity"] = severity_name(d.severity);
     j["rule"] = d.rule;
     j["message"] = d.message;

@@ -37,7 +37,8 @@ bool same(const SrcOperand& a, const SrcOperand& b) {
   if (a.file != b.file || a.index != b.index || a.swizzle != b.swizzle || a.mod != b.mod)
     return false;
   if (a.rel.has_value() != b.rel.has_value()) return false;
-  return !a.rel || (a.rel->file == b.rel->file && a.rel->component == b.rel->component);
+  return !a.rel || (a.rel->file == b.rel->file && a.rel->component == b.rel->component &&
+                    a.rel->token_swizzle() == b.rel->token_swizzle());
 }
 
 std::string where(const SourceLoc& loc) {

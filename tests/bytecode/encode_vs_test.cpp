@@ -89,7 +89,10 @@ TEST(BytecodeHand, Vs20RelativeAddressAddsAddressToken) {
                          0xC00F0000,
                          0x80E40000,
                          0xA0E42002,
-                         0xF0000800, // aL: type 15 → 0x7000_0800 | bit 31, swizzle .xxxx
+                         // aL: type 15 → 0x7000_0800 | bit 31, and the identity swizzle
+                         // 0xE4 that Microsoft's assembler writes there (Wine's d3dcompiler
+                         // asm tests), not .xxxx
+                         0xF0E40800,
                          0x0000FFFF,
                      });
 }

@@ -31,7 +31,7 @@ inline SrcOperand S(RegFile f, uint32_t index, uint8_t swizzle = kIdentitySwizzl
 }
 
 inline SrcOperand Rel(SrcOperand s, RegFile by, uint8_t component) {
-  s.rel = RelAddr{by, component, {}};
+  s.rel = RelAddr{by, component, {}, std::nullopt};
   return s;
 }
 

@@ -141,7 +141,10 @@ TEST(BytecodeMalformed, Vs20RelativeToken) {
                               0xA0E42001, 0xB0000000, 0x0000FFFF};
   DiagnosticSink diags;
   EXPECT_TRUE(disassemble(ok, diags).has_value());
-  expect_error(with(ok, 4, 0xB0E40000), 4, "one component");
+  // a0 takes any swizzle (Microsoft writes a0.xyww as it stands); aL only the identity or a
+  // replicate.
+  EXPECT_TRUE(disassemble(with(ok, 4, 0xB0F40000), diags).has_value());
+  expect_error(with(ok, 4, 0xF0F40800), 4, "identity or a replicate");
   expect_error(with(ok, 4, 0x80000000), 4, "not a0 or aL");
   expect_error(with(ok, 4, 0xB1000000), 4, "modifier");
   // The address token is missing: the length field only covers two operands.

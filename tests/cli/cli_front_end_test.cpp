@@ -25,6 +25,21 @@ fs::path temp_file(const std::string& name, const std::string& text) {
   return p;
 }
 
+// fmt's text minus its comment lines, trailing comments and blank lines.
+std::string without_comments(const std::string& text) {
+  std::string out;
+  size_t start = 0;
+  while (start < text.size()) {
+    size_t end = text.find('\n', start);
+    std::string line = text.substr(start, end - start);
+    start = end + 1;
+    if (size_t c = line.find("  //"); c != std::string::npos) line.resize(c);
+    if (line.empty() || line.starts_with("//")) continue;
+    out += line + "\n";
+  }
+  return out;
+}
+
 const char* kAllArticleListings =
     "listing1_blur8_coords.vsh listing2_blur8_weighted_sum.psh listing3_blur4_coords.vsh "
     "listing4_blur4_weighted_sum.psh";
@@ -80,12 +95,15 @@ TEST(CliCheck, JsonDiagnostics) {
   auto r = run_cli("check --json -", "vs.1.1\nmov oPos, r0\n");
   EXPECT_EQ(r.exit_code, 1);
   auto j = nlohmann::json::parse(r.out);
-  ASSERT_TRUE(j.is_array());
-  ASSERT_EQ(j.size(), 1u);
-  EXPECT_FALSE(j[0]["valid"].get<bool>());
-  ASSERT_FALSE(j[0]["diagnostics"].empty());
-  EXPECT_EQ(j[0]["diagnostics"][0]["line"].get<int>(), 2);
-  EXPECT_EQ(j[0]["diagnostics"][0]["severity"].get<std::string>(), "error");
+  ASSERT_TRUE(j.is_object());
+  EXPECT_EQ(j["command"], "check");
+  EXPECT_EQ(j["exit_code"], 1);
+  ASSERT_EQ(j["result"]["files"].size(), 1u);
+  EXPECT_FALSE(j["result"]["files"][0]["valid"].get<bool>());
+  ASSERT_FALSE(j["diagnostics"].empty());
+  EXPECT_EQ(j["diagnostics"][0]["file"].get<std::string>(), "<stdin>");
+  EXPECT_EQ(j["diagnostics"][0]["line"].get<int>(), 2);
+  EXPECT_EQ(j["diagnostics"][0]["severity"].get<std::string>(), "error");
 }
 
 TEST(CliCheck, ProfileOverride) {
@@ -105,10 +123,25 @@ TEST(CliCheck, ProfileOverride) {
 TEST(CliFmt, CanonicalTextReparsesToTheSameText) {
   auto first = run_cli("fmt " + listing("listing2_blur8_weighted_sum.psh"));
   ASSERT_EQ(first.exit_code, 0) << first.err;
-  EXPECT_EQ(first.out.rfind("ps_2_0", 0), 0u) << first.out;
+  EXPECT_EQ(first.out.rfind("ps_2_0\n", 0), 0u) << first.out;
   auto second = run_cli("fmt -", first.out);
   ASSERT_EQ(second.exit_code, 0) << second.err;
   EXPECT_EQ(first.out, second.out);
+}
+
+TEST(CliFmt, KeepsCommentsAndParagraphs) {
+  const std::string in =
+      "// header\n\nps.2.0   ; version comment\ndef c0, 1.0, 0, 0, 1 // red\n\n\n"
+      "/* block\n   comment */\nmov oC0, c0\n; trailing\n\n";
+  // Written by hand: canonical statements, comments where they were, one blank line per
+  // run of blank lines, none at the end.
+  const std::string want = "// header\n\nps_2_0  ; version comment\ndef c0, 1, 0, 0, 1  // red\n\n"
+                           "/* block\ncomment */\nmov oC0, c0\n; trailing\n";
+  auto r = run_cli("fmt -", in);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out, want);
+  auto again = run_cli("fmt -", r.out);
+  EXPECT_EQ(again.out, want);
 }
 
 TEST(CliAssemble, RoundTripThroughDisasm) {
@@ -128,7 +161,9 @@ TEST(CliAssemble, RoundTripThroughDisasm) {
   EXPECT_EQ(static_cast<unsigned char>(bytes[3]), 0xFF);
   auto d = run_cli("disasm " + bin.string());
   ASSERT_EQ(d.exit_code, 0) << d.err;
+  // A token stream has no comments: it reads back as fmt's text without them.
   auto f = run_cli("fmt " + listing("listing2_blur8_weighted_sum.psh"));
+  f.out = without_comments(f.out);
   EXPECT_EQ(d.out, f.out);
   // The C-array form reads back the same.
   auto carr = dir / "l2.h";

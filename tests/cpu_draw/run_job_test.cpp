@@ -4,6 +4,9 @@
 // corner between t−1 and t reads their mean t/16 (clamped at the edges).
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <limits>
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -320,6 +323,18 @@ TEST(RunOptions, ParsersAcceptAndRefuse) {
   EXPECT_TRUE(b->b);
   for (const char* bad : {"c0=1,2,3", "c0", "x0=1,2,3,4", "c0=a,b,c,d", "b1=maybe", "i0=1.5,0,0,0",
                           "c99999=0,0,0,0", "gs:c0=0,0,0,0"})
+    EXPECT_FALSE(parse_const_setting(bad, err)) << bad;
+  // Numbers as def reads them: raw bit patterns, names, an 'f' suffix, denormals kept.
+  auto d = parse_const_setting("c0=0x7fc00000,-inf,1e-40f,+0.5", err);
+  ASSERT_TRUE(d) << err;
+  EXPECT_EQ(std::bit_cast<uint32_t>(d->f[0]), 0x7fc00000u);
+  EXPECT_EQ(d->f[1], -std::numeric_limits<float>::infinity());
+  EXPECT_EQ(std::bit_cast<uint32_t>(d->f[2]), 71362u); // 1e-40 / 2^-149 = 71362.4 → 71362
+  EXPECT_EQ(d->f[3], 0.5f);
+  auto neg_zero = parse_const_setting("c0=-0,nan,NaN,0x0", err);
+  ASSERT_TRUE(neg_zero) << err;
+  EXPECT_EQ(std::bit_cast<uint32_t>(neg_zero->f[0]), 0x80000000u);
+  for (const char* bad : {"c0=1e39,0,0,0", "c0=-0x1,0,0,0", "c0=0x,0,0,0", "c0=0x100000000,0,0,0"})
     EXPECT_FALSE(parse_const_setting(bad, err)) << bad;
   EXPECT_TRUE(parse_attr_setting("v15=quad-uv", err));
   EXPECT_FALSE(parse_attr_setting("v16=quad-uv", err));

@@ -58,7 +58,7 @@ TEST_F(CliGlowFrames, JsonReportsSetupAndSteadyFramesPerDevice) {
       run("glow --scene " + scene(64, 32).string() + " --backend cpu --frames 3 --json", out, err),
       0)
       << err;
-  const nlohmann::json j = nlohmann::json::parse(out);
+  const nlohmann::json j = nlohmann::json::parse(out)["result"]; // docs/command-line.md
   ASSERT_TRUE(j.contains("frames")) << out;
   const nlohmann::json& f = j["frames"]["cpu"];
   EXPECT_EQ(f["n"], 3);
@@ -94,7 +94,8 @@ TEST_F(CliGlowFrames, SceneBeyondMemoryIsRefusedBeforeRunning) {
   EXPECT_EQ(run("glow --scene " + scene(16384, 16384).string() + " -o " + o.string(), out, err,
                 "ulimit -v 16777216; "),
             1);
-  EXPECT_NE(err.find("scene.json: error: "), std::string::npos) << err;
+  EXPECT_NE(err.find("tierlift glow: error: "), std::string::npos) << err;
+  EXPECT_NE(err.find("scene.json: the glow at 16384x16384"), std::string::npos) << err;
   EXPECT_NE(err.find("needs"), std::string::npos) << err;
   EXPECT_NE(err.find("available"), std::string::npos) << err;
   for (const char* knob : {"--format", "--downsample", "--backend"})

@@ -184,3 +184,29 @@ TEST(Png, AtomicWriteLeavesNoTemporaryFiles) {
   ASSERT_TRUE(back);
   EXPECT_EQ(back.image->format, img::Format::RGBA32F); // the 16-bit file replaced the 8-bit
 }
+
+TEST(Png, DecodeBudgetIsCheckedBeforeInflating) {
+  // 8192 × 8192 RGBA floats are 8192² × 16 bytes = 2^30, exactly the budget: allowed past
+  // the check (and refused later for its missing pixels); one column more is over it.
+  auto at_budget = img::decode_png(handmade_png(8192, 8192, 8, 6, {0}));
+  EXPECT_FALSE(at_budget);
+  EXPECT_EQ(at_budget.error.find("budget"), std::string::npos) << at_budget.error;
+  auto over = img::decode_png(handmade_png(8193, 8192, 8, 6, {0}));
+  EXPECT_FALSE(over);
+  EXPECT_NE(over.error.find("image 8193x8192 needs 1024 MiB as RGBA floats, over the decode "
+                            "budget of 1024 MiB"),
+            std::string::npos)
+      << over.error;
+  auto bomb = img::decode_png(handmade_png(16384, 16384, 8, 6, {0}));
+  EXPECT_NE(bomb.error.find("needs 4096 MiB"), std::string::npos) << bomb.error;
+}
+
+TEST(Png, ReadErrorsTellIoFromInvalidContent) {
+  tierlift::test::TempDir dir("pngkind");
+  auto missing = img::read_png(dir.file("nope.png"));
+  EXPECT_TRUE(missing.io_error);
+  auto zero = img::read_image("/dev/zero"); // refused from its first bytes, not read whole
+  EXPECT_FALSE(zero);
+  EXPECT_FALSE(zero.io_error);
+  EXPECT_NE(zero.error.find("unknown signature"), std::string::npos) << zero.error;
+}

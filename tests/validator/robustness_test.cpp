@@ -22,8 +22,10 @@ ir::SrcOperand random_src(std::mt19937& rng) {
   s.swizzle = static_cast<uint8_t>(R(rng));
   s.mod = static_cast<ir::SrcMod>(R(rng) % 14);
   if (R(rng) % 8 == 0)
-    s.rel = ir::RelAddr{
-        R(rng) % 2 ? ir::RegFile::Addr : ir::RegFile::Loop, static_cast<uint8_t>(R(rng) % 4), {}};
+    s.rel = ir::RelAddr{R(rng) % 2 ? ir::RegFile::Addr : ir::RegFile::Loop,
+                        static_cast<uint8_t>(R(rng) % 4),
+                        {},
+                        std::nullopt};
   s.loc = {0, 1 + R(rng) % 50, 1 + R(rng) % 30, 2};
   return s;
 }

@@ -93,7 +93,7 @@ private:
       problem(s.rel->loc, "relative addressing needs a0 or aL");
     if (s.rel->component > 3) problem(s.rel->loc, "relative component out of range");
     body.push_back(register_bits(s.rel->file, 0) |
-                   (uint32_t{ir::replicate_swizzle(s.rel->component & 3)} << bc::kSwizzleShift));
+                   (uint32_t{s.rel->token_swizzle()} << bc::kSwizzleShift));
   }
 
   void emit(const ir::OpInfo& info, bool coissue, const std::vector<uint32_t>& body) {

@@ -50,7 +50,7 @@ bool TokenReader::dst(uint32_t tok, size_t at, ir::DstOperand& out, ir::InstrMod
   out.mask = static_cast<uint8_t>((tok & kMaskMask) >> kMaskShift);
   // No assembler writes an empty mask, and no text could spell one.
   if (out.mask == 0) return fail(at, "empty write mask");
-  out.loc = loc();
+  out.loc = loc_at(at);
   mods.sat = (resmod & kResultSat) != 0;
   mods.pp = (resmod & kResultPp) != 0;
   mods.centroid = (resmod & kResultCentroid) != 0;
@@ -65,13 +65,13 @@ bool TokenReader::src(uint32_t tok, size_t at, ir::SrcOperand& out) {
     return fail(at, fmt::format("unknown source modifier {}", mod));
   out.swizzle = static_cast<uint8_t>((tok & kSwizzleMask) >> kSwizzleShift);
   out.mod = static_cast<ir::SrcMod>(mod);
-  out.loc = loc();
+  out.loc = loc_at(at);
   if (!(tok & kRelativeBit)) return true;
   if (p_.stage() != ir::ShaderStage::Vertex)
     return fail(at, "relative addressing in a pixel shader");
   if (!has_length_field(p_.profile)) {
     // vs_1_1: the bit alone; a0.x is implied and no address token follows.
-    out.rel = ir::RelAddr{ir::RegFile::Addr, 0, loc()};
+    out.rel = ir::RelAddr{ir::RegFile::Addr, 0, loc_at(at), std::nullopt};
     return true;
   }
   return relative(out);
@@ -89,9 +89,14 @@ bool TokenReader::relative(ir::SrcOperand& out) {
     return fail(at, "relative address register is not a0 or aL");
   if (tok & (kRelativeBit | kSrcModMask))
     return fail(at, "relative address token with a modifier or relative bit");
+  // Any swizzle: Microsoft's assembler writes "a0.xyww" as it stands and the identity for a
+  // bare a0 and for aL; the first component selected is the one added. It is kept so that
+  // the tokens assemble back unchanged.
   uint8_t swz = static_cast<uint8_t>((tok & kSwizzleMask) >> kSwizzleShift);
-  if (!ir::is_replicate(swz)) return fail(at, "relative address swizzle must select one component");
-  out.rel = ir::RelAddr{file, static_cast<uint8_t>(swz & 3), loc()};
+  if (file == ir::RegFile::Loop && swz != ir::kIdentitySwizzle && !ir::is_replicate(swz))
+    return fail(at, "the aL address token takes the identity or a replicate swizzle");
+  out.rel = ir::RelAddr{file, static_cast<uint8_t>(file == ir::RegFile::Loop ? 0 : swz & 3),
+                        loc_at(at), swz};
   return true;
 }
 

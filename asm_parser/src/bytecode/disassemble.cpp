@@ -1,6 +1,8 @@
 // Direct3D 9 token stream → ir::Program: version token, statements, comments, end token.
 // Operand counts come from the opcode table (SM1 has no length field); in SM2 the length
 // field is checked against what the operands actually take.
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "tierlift/asm/bytecode.h"
@@ -13,7 +15,7 @@ namespace bc {
 bool TokenReader::fail(size_t at, const std::string& message) {
   std::string head = at < t_.size() ? fmt::format("token {} (0x{:08X})", at, t_[at])
                                     : fmt::format("token {} (past the end)", at);
-  diags_.error(loc(), "bytecode", head + ": " + message);
+  diags_.error(loc_at(std::min(at, t_.size())), "bytecode", head + ": " + message);
   return false;
 }
 
@@ -42,7 +44,7 @@ bool TokenReader::version() {
     return fail(0, "not a shader version token (expected 0xFFFE.... or 0xFFFF....)");
   }
   p_.profile = *profile;
-  p_.version_loc = loc();
+  p_.version_loc = loc_at(0);
   pos_ = 1;
   return true;
 }

@@ -39,7 +39,10 @@ private:
   bool next(uint32_t& tok, size_t& at);
   // "token 12 (0x0200001F): message" with rule "bytecode"; always returns false.
   bool fail(size_t at, const std::string& message);
-  ir::SourceLoc loc() const { return {file_, 0, 0, 0}; }
+  // The byte offset of token `index` ("shader.bin:+0x1c: error: ..."); loc() is that of the
+  // current instruction token.
+  ir::SourceLoc loc_at(size_t index) const { return ir::SourceLoc::at_byte(file_, 4 * index); }
+  ir::SourceLoc loc() const { return loc_at(instr_at_); }
 
   const std::vector<uint32_t>& t_;
   ir::DiagnosticSink& diags_;

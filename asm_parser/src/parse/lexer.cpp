@@ -75,6 +75,8 @@ public:
                  static_cast<unsigned char>(text_[pos_ + 1]) == 0xA0) {
         pos_ += 2; // U+00A0 NO-BREAK SPACE (copied from web pages) is white space
         space_ = true;
+      } else if (c == '\\' && splice_line()) {
+        space_ = true;
       } else if (c == ';' || (c == '/' && peek(1) == '/')) {
         skip_to_newline();
         space_ = true;
@@ -139,6 +141,19 @@ private:
       return;
     }
     diags_.error(loc_at(offset, len), std::move(rule), std::move(msg));
+  }
+
+  // A backslash that ends a line (white space after it allowed) joins the next line to this
+  // one, as in C: "#define REG 1 + 2 +\" / "3 + 4" defines REG as 1 + 2 + 3 + 4, which is
+  // how Microsoft's assembler reads it (Wine's d3dcompiler asm tests check c[REG] = c10).
+  bool splice_line() {
+    size_t p = pos_ + 1;
+    while (p < text_.size() && (text_[p] == ' ' || text_[p] == '\t' || text_[p] == '\r')) ++p;
+    if (p >= text_.size() || text_[p] != '\n') return false;
+    pos_ = p + 1;
+    ++line_;
+    line_start_ = pos_;
+    return true;
   }
 
   void skip_to_newline() {

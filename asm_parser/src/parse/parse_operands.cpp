@@ -178,16 +178,28 @@ bool Parser::relative(Operand& out, bool has_index) {
     rel.file = reg == "al" ? ir::RegFile::Loop : ir::RegFile::Addr;
     rel.loc = t.loc;
     advance();
-    if (rel.file == ir::RegFile::Addr && at_punct(".")) {
-      advance();
-      const Token& c = cur();
-      std::string comp = c.kind == TokKind::Ident ? lower(c.text) : std::string();
-      if (comp.size() != 1 || component_of(comp[0]) < 0)
-        return fail(c.loc, "syntax",
-                    fmt::format("expected one component of a0, found {}", describe(c)));
-      rel.component = static_cast<uint8_t>(component_of(comp[0]));
-      advance();
-      rel.loc = span_to_prev(t.loc);
+    if (rel.file == ir::RegFile::Addr) {
+      // Microsoft's assembler writes the swizzle into the vs_2_0 address token as it stands:
+      // identity for a bare a0, 0xF4 for a0.xyww (a short one repeats its last letter); the
+      // first component selected is the one added (DXVK, wined3d read it the same way).
+      int comps[4] = {0, 1, 2, 3};
+      if (at_punct(".")) {
+        advance();
+        const Token& c = cur();
+        std::string letters = c.kind == TokKind::Ident ? lower(c.text) : std::string();
+        bool ok = !letters.empty() && letters.size() <= 4;
+        for (size_t i = 0; ok && i < 4; ++i) {
+          comps[i] = component_of(letters[i < letters.size() ? i : letters.size() - 1]);
+          ok = comps[i] >= 0;
+        }
+        if (!ok)
+          return fail(c.loc, "syntax",
+                      fmt::format("expected components of a0 (.x … .xyzw), found {}", describe(c)));
+        advance();
+        rel.loc = span_to_prev(t.loc);
+      }
+      rel.swizzle = ir::make_swizzle(comps[0], comps[1], comps[2], comps[3]);
+      rel.component = static_cast<uint8_t>(comps[0]);
     }
     out.rel = rel;
   }

@@ -63,12 +63,23 @@ std::string_view src_mod_prefix(ir::SrcMod m) {
   }
 }
 
+// The address register's swizzle: replicates as one letter (a0.x), the identity as
+// nothing, anything else with its four letters.
+std::string rel_swizzle_text(uint8_t swz) {
+  if (swz == ir::kIdentitySwizzle) return "";
+  if (ir::is_replicate(swz)) return fmt::format(".{}", "xyzw"[swz & 3]);
+  std::string out = ".";
+  for (int i = 0; i < 4; ++i) out += "xyzw"[ir::swizzle_component(swz, i)];
+  return out;
+}
+
 std::string src_text(const ir::SrcOperand& s) {
   std::string out(src_mod_prefix(s.mod));
   if (s.rel) {
+    // a0 as the address token has it: "a0" (identity), "a0.x", or "a0.xyww" as written.
     std::string reg = s.rel->file == ir::RegFile::Loop
                           ? std::string("aL")
-                          : fmt::format("a0.{}", "xyzw"[s.rel->component & 3]);
+                          : "a0" + rel_swizzle_text(s.rel->token_swizzle());
     out += s.index ? fmt::format("{}[{} + {}]", file_prefix(s.file), reg, s.index)
                    : fmt::format("{}[{}]", file_prefix(s.file), reg);
   } else {
@@ -126,6 +137,14 @@ std::string def_text(const ir::ConstDef& d) {
 }
 
 } // namespace
+
+std::string print_declaration(const ir::Declaration& d, ir::Profile profile) {
+  return decl_text(d, profile);
+}
+
+std::string print_definition(const ir::ConstDef& d) {
+  return def_text(d);
+}
 
 std::string print_instruction(const ir::Instruction& ins, ir::Profile /*profile*/) {
   std::string out = ins.coissue ? "+" : "";

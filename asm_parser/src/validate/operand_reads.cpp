@@ -16,13 +16,11 @@ uint8_t through_swizzle(uint8_t lanes, uint8_t swz) {
   return out;
 }
 
-// Scalar operands: with a replicate swizzle every lane is the same component. A bare rcp/rsq
-// source is read as .x (d3d9-isa.md §4.3: "the assembler uses .x"); any other swizzle is
-// already an error, and the interpreter's rule (the 4th slot) is used for it.
-uint8_t scalar_component(const ir::Instruction& ins, const ir::SrcOperand& s) {
-  if (ir::is_replicate(s.swizzle)) return static_cast<uint8_t>(1 << (s.swizzle & 3));
-  if (s.swizzle == ir::kIdentitySwizzle && (ins.op == Opcode::Rcp || ins.op == Opcode::Rsq))
-    return 1;
+// Scalar operands: with a replicate swizzle every lane is the same component. (A bare
+// rcp/rsq source in text is already .x: the parser applies the assembler's rule.) Any
+// other swizzle is an error or was rewritten by apply_windows_leniency; the devices' rule,
+// the 4th slot, is used for it.
+uint8_t scalar_component(const ir::Instruction&, const ir::SrcOperand& s) {
   return static_cast<uint8_t>(1 << ir::swizzle_component(s.swizzle, 3));
 }
 

@@ -177,7 +177,8 @@ std::string swizzle_problem(const Ctx& c, const ir::Instruction& ins, size_t k) 
     return identity ? "" : fmt::format("{} takes no swizzle", reg_name(s.file, s.index));
   case OperandKind::Scalar:
     if (ir::is_replicate(swz)) return {};
-    if (identity && (ins.op == Opcode::Rcp || ins.op == Opcode::Rsq)) return {}; // reads .x
+    // An identity swizzle only comes from a token stream (the parser gives a bare rcp/rsq
+    // source .x); apply_windows_leniency rewrites it to .w unless --strict.
     return fmt::format("source {} of {} is a scalar and needs a replicate swizzle (.x, .y, .z "
                        "or .w), not {}",
                        k + 1, info.mnemonic, sw);

@@ -1,32 +1,30 @@
 #include "tierlift/effects/builtin_listing.h"
 
 #include <fmt/format.h>
-#include <fstream>
-#include <sstream>
 
-#include "tierlift/asm/parser.h"
-#include "tierlift/asm/validator.h"
+#include "tierlift/asm/load.h"
+#include "tierlift/io/bounded_read.h"
 #include "tierlift/listings/embedded.h"
 
 namespace tierlift::effects {
 
 namespace {
 
+// Text or a D3D9 token stream (raw or a C array), told apart by content: a scene's
+// "listings" may name a .pso/.vso as well as a .psh/.vsh (as::load_listing).
 std::shared_ptr<const ir::Program> parse_and_validate(std::string text, std::string name,
                                                       bool allow_include, std::string* error) {
-  auto fail = [&](std::string why) -> std::shared_ptr<const ir::Program> {
-    if (error) *error = std::move(why);
-    return nullptr;
-  };
-  as::ParseOptions options;
-  options.allow_include = allow_include; // built-in text never reads files
-  as::ParseResult r = as::parse_text(std::move(text), std::move(name), options);
-  if (!r.program) return fail(ir::render_text(r.diags, r.sources));
+  ir::SourceManager sources;
   ir::DiagnosticSink diags;
-  as::ValidateOptions vo;
-  vo.warnings = false; // Listing 1 declares inputs it never reads; that is the article's text
-  if (!as::validate(*r.program, r.program->profile, diags, vo))
-    return fail(ir::render_text(diags, r.sources));
+  uint32_t file = sources.add(std::move(name), std::move(text));
+  as::LoadOptions options;
+  options.parse.allow_include = allow_include; // built-in text never reads files
+  options.warnings = false; // Listing 1 declares inputs it never reads; that is the article's
+  as::LoadResult r = as::load_listing(file, sources, diags, options);
+  if (!r.program) {
+    if (error) *error = ir::render_text(diags, sources);
+    return nullptr;
+  }
   return std::make_shared<const ir::Program>(std::move(*r.program));
 }
 
@@ -46,16 +44,19 @@ glow_listing(std::string_view path, const std::map<std::string, std::string, std
              std::string* error) {
   auto it = files.find(path);
   if (it == files.end()) return builtin_listing(path, error);
-  std::ifstream in(it->second, std::ios::binary);
-  if (!in) {
+  std::string why;
+  std::optional<std::string> text = io::read_bounded(it->second, io::kListingCap, why);
+  if (!text) {
+    // "PATH: why" → "PATH: error: why", the form of the other diagnostics.
+    const std::string head = it->second + ": ";
+    if (why.starts_with(head)) why.erase(0, head.size());
     if (error)
-      *error = fmt::format("{}: error: cannot read listing (it replaces built-in '{}')", it->second,
-                           path);
+      *error = fmt::format("{}: error: {} (it replaces built-in '{}')", it->second, why, path);
     return nullptr;
   }
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_and_validate(text.str(), it->second, true, error);
+  // A UTF-8 byte-order mark is not part of the text; a token stream is read as it stands.
+  if (text->starts_with("\xEF\xBB\xBF")) text->erase(0, 3);
+  return parse_and_validate(std::move(*text), it->second, true, error);
 }
 
 } // namespace tierlift::effects

@@ -217,6 +217,7 @@ GlowPlan build_glow_graph(const GlowParams& p, const TierRecipe& r) {
   plan.glow_height = gh;
   EffectGraph& g = plan.graph;
   g.conventions.subtexel_bits = p.subtexel_bits;
+  g.conventions.ps1x_max_value = p.ps1x_max;
   auto tex = [&](std::string_view name, uint32_t w, uint32_t h, bool input = false) {
     g.textures.push_back({std::string(name), w, h, p.format, input});
   };

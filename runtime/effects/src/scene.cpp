@@ -9,6 +9,7 @@
 
 #include "scene_parts.h"
 #include "tierlift/effects/default_scene.h"
+#include "tierlift/io/bounded_read.h"
 
 namespace tierlift::effects {
 namespace {
@@ -49,15 +50,13 @@ std::vector<std::string> image_warnings(const img::Image& image) {
 }
 
 SceneLoad load_scene_file(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    return {std::nullopt, file_error(path, "is a folder, not a scene file")};
   std::string error;
-  std::optional<std::vector<uint8_t>> bytes = img::read_file_bytes(path, error);
-  if (!bytes) return {std::nullopt, file_error(path, error)};
-  const std::string base_dir = std::filesystem::path(path).parent_path().string();
-  const std::string_view text(reinterpret_cast<const char*>(bytes->data()), bytes->size());
-  return parse_scene(text, path, base_dir);
+  // Within the scene cap: a device or a pipe given as the scene is refused after 1 MiB.
+  std::optional<std::string> text = io::read_bounded(path, io::kSceneCap, error);
+  if (!text) return {std::nullopt, file_error(path == "-" ? "<stdin>" : path, error), true};
+  const std::string base_dir =
+      path == "-" ? std::string() : std::filesystem::path(path).parent_path().string();
+  return parse_scene(*text, path == "-" ? "<stdin>" : path, base_dir);
 }
 
 Scene default_scene() {
@@ -71,7 +70,7 @@ Scene default_scene() {
 
 SceneLoad scene_from_png(const std::string& png_path) {
   img::LoadResult png = img::read_png(png_path);
-  if (!png) return {std::nullopt, file_error(png_path, png.error)};
+  if (!png) return {std::nullopt, file_error(png_path, png.error), png.io_error};
   Scene s;
   s.image = png_path;
   s.params.width = png.image->width;

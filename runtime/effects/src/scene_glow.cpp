@@ -11,8 +11,9 @@
 namespace tierlift::effects {
 namespace {
 
-constexpr std::string_view kGlowKeys[] = {"tier",      "downsample", "profile",    "taps",
-                                          "intensity", "format",     "half_texel", "listings"};
+constexpr std::string_view kGlowKeys[] = {"tier",       "downsample", "profile",
+                                          "taps",       "intensity",  "format",
+                                          "half_texel", "listings",   "ps1x_max"};
 constexpr std::string_view kProfileKeys[] = {"gaussians", "sawtooth"};
 constexpr std::string_view kGaussianKeys[] = {"sigma", "weight"};
 constexpr std::string_view kSawtoothKeys[] = {"period", "radius", "weight"};
@@ -103,6 +104,24 @@ void read_listings(const Json& v, const std::string& at, const std::string& base
   }
 }
 
+// "ps1x_max": a preset name ("geforce3", "radeon8500", "d3d9", "max") or a number >= 1.
+void read_ps1x_max(const Json& v, const std::string& at, FieldChecker& c, GlowParams& p) {
+  std::string text;
+  if (v.is_string()) {
+    text = v.get<std::string>();
+  } else if (v.is_number()) {
+    text = fmt::format("{}", v.get<double>());
+  } else {
+    c.error(at, fmt::format("{} is not a preset name or a number", FieldChecker::shown(v)));
+    return;
+  }
+  std::string why;
+  if (auto m = ir::parse_ps1x_max(text, &why))
+    p.ps1x_max = *m;
+  else
+    c.error(at, why);
+}
+
 } // namespace
 
 std::span<const std::string_view> scene_glow_keys() {
@@ -154,6 +173,7 @@ void read_glow(const Json& g, FieldChecker& c, const std::string& base_dir, Glow
   if (const Json* v = member(g, "half_texel"))
     if (auto b = c.boolean(*v, at + "/half_texel")) p.half_texel = *b;
   if (const Json* v = member(g, "listings")) read_listings(*v, at + "/listings", base_dir, c, p);
+  if (const Json* v = member(g, "ps1x_max")) read_ps1x_max(*v, at + "/ps1x_max", c, p);
 
   // What only the fields together say: the kernel's radius at this downsample factor.
   if (c.failed()) return;

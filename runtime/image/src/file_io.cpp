@@ -1,8 +1,5 @@
-// Whole-file reads, atomic writes, and format dispatch by content or extension.
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
+// Whole-file reads (within the image cap), safe writes (tierlift::io), and format dispatch
+// by content or extension.
 #include <cctype>
 #include <cerrno>
 #include <cstdio>
@@ -11,118 +8,74 @@
 #include <fmt/format.h>
 
 #include "tierlift/image/io.h"
+#include "tierlift/io/bounded_read.h"
+#include "tierlift/io/output_file.h"
 
 namespace tierlift::img {
 
 namespace {
-// Larger than any valid image file we accept (16384² RGBA 16-bit PNG, stored, or PFM RGB
-// plus headroom), so a runaway read cannot exhaust memory.
-constexpr uint64_t kMaxFileBytes = uint64_t{16384} * 16384 * 8 + (uint64_t{1} << 24);
 
-std::string errno_text(int err) {
-  return std::strerror(err);
-}
-} // namespace
-
-std::optional<std::vector<uint8_t>> read_file_bytes(const std::string& path, std::string& error) {
-  std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (!f) {
-    error = fmt::format("{}: cannot open: {}", path, errno_text(errno));
-    return std::nullopt;
-  }
-  std::vector<uint8_t> bytes;
-  uint8_t buffer[65536];
-  for (;;) {
-    size_t n = std::fread(buffer, 1, sizeof buffer, f);
-    bytes.insert(bytes.end(), buffer, buffer + n);
-    if (bytes.size() > kMaxFileBytes) {
-      std::fclose(f);
-      error = fmt::format("{}: file too large (over {} bytes)", path, kMaxFileBytes);
-      return std::nullopt;
-    }
-    if (n < sizeof buffer) break;
-  }
-  bool failed = std::ferror(f) != 0;
-  std::fclose(f);
-  if (failed) {
-    error = fmt::format("{}: read error", path);
-    return std::nullopt;
-  }
-  return bytes;
+// Refuses, from its first bytes, a file that is neither PNG nor PFM, before more of it
+// is read (a device or a pipe of noise is then refused at once).
+std::string image_signature(std::string_view first) {
+  static constexpr unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+  const bool png = first.size() >= 8 && std::memcmp(first.data(), kPng, 8) == 0;
+  const bool pfm = first.size() >= 2 && first[0] == 'P' && (first[1] == 'F' || first[1] == 'f');
+  return png || pfm ? "" : "not a PNG or PFM file (unknown signature)";
 }
 
-Status write_file_atomic(const std::string& path, std::span<const uint8_t> bytes) {
-  namespace fs = std::filesystem;
-  fs::path target(path);
-  fs::path dir = target.parent_path();
-  if (dir.empty()) dir = ".";
-  // Hidden temp file beside the target: rename() is atomic only within one file system.
-  std::string tmpl = (dir / ("." + target.filename().string() + ".tmpXXXXXX")).string();
-  std::vector<char> name(tmpl.begin(), tmpl.end());
-  name.push_back('\0');
-  int fd = ::mkstemp(name.data());
-  if (fd < 0) return {fmt::format("{}: cannot create temporary file: {}", path, errno_text(errno))};
-  auto fail = [&](std::string what) {
-    int err = errno;
-    ::close(fd);
-    ::unlink(name.data());
-    return Status{fmt::format("{}: {}: {}", path, what, errno_text(err))};
-  };
-  size_t done = 0;
-  while (done < bytes.size()) {
-    ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      return fail("write failed");
-    }
-    done += static_cast<size_t>(n);
+// The file, read within the image cap; io_error set when it cannot be read at all.
+LoadResult read_image_file(const std::string& path, std::string& bytes) {
+  std::string error;
+  std::optional<std::string> read =
+      io::read_bounded(path, io::kImageFileCap, error, image_signature);
+  if (!read) {
+    LoadResult r{std::nullopt, error};
+    // A file that is there but not an image is invalid input, not an I/O error.
+    r.io_error = error.find("unknown signature") == std::string::npos;
+    return r;
   }
-  // mkstemp creates 0600; images are ordinary output files.
-  if (::fchmod(fd, 0644) != 0) return fail("cannot set permissions");
-  if (::fsync(fd) != 0) return fail("fsync failed");
-  if (::close(fd) != 0) {
-    int err = errno;
-    ::unlink(name.data());
-    return {fmt::format("{}: close failed: {}", path, errno_text(err))};
-  }
-  if (std::rename(name.data(), path.c_str()) != 0) {
-    int err = errno;
-    ::unlink(name.data());
-    return {fmt::format("{}: cannot rename temporary file into place: {}", path, errno_text(err))};
-  }
+  bytes = std::move(*read);
   return {};
 }
 
+std::span<const uint8_t> as_bytes(const std::string& s) {
+  return {reinterpret_cast<const uint8_t*>(s.data()), s.size()};
+}
+
+} // namespace
+
+std::optional<std::vector<uint8_t>> read_file_bytes(const std::string& path, std::string& error) {
+  std::optional<std::string> read = io::read_bounded(path, io::kImageFileCap, error);
+  if (!read) return std::nullopt;
+  return std::vector<uint8_t>(read->begin(), read->end());
+}
+
+Status write_file_atomic(const std::string& path, std::span<const uint8_t> bytes) {
+  return {io::write_output(
+      path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()))};
+}
+
 LoadResult read_png(const std::string& path) {
-  std::string error;
-  auto bytes = read_file_bytes(path, error);
-  if (!bytes) return {std::nullopt, error};
-  LoadResult r = decode_png(*bytes);
+  std::string bytes;
+  if (LoadResult r = read_image_file(path, bytes); !r.error.empty()) return r;
+  LoadResult r = decode_png(as_bytes(bytes));
   if (!r) r.error = path + ": " + r.error;
   return r;
 }
 
 LoadResult read_pfm(const std::string& path) {
-  std::string error;
-  auto bytes = read_file_bytes(path, error);
-  if (!bytes) return {std::nullopt, error};
-  LoadResult r = decode_pfm(*bytes);
+  std::string bytes;
+  if (LoadResult r = read_image_file(path, bytes); !r.error.empty()) return r;
+  LoadResult r = decode_pfm(as_bytes(bytes));
   if (!r) r.error = path + ": " + r.error;
   return r;
 }
 
 LoadResult read_image(const std::string& path) {
-  std::string error;
-  auto bytes = read_file_bytes(path, error);
-  if (!bytes) return {std::nullopt, error};
-  LoadResult r;
-  if (bytes->size() >= 2 && (*bytes)[0] == 'P' && ((*bytes)[1] == 'F' || (*bytes)[1] == 'f')) {
-    r = decode_pfm(*bytes);
-  } else if (bytes->size() >= 1 && (*bytes)[0] == 0x89) {
-    r = decode_png(*bytes);
-  } else {
-    r.error = "not a PNG or PFM file (unknown signature)";
-  }
+  std::string bytes;
+  if (LoadResult r = read_image_file(path, bytes); !r.error.empty()) return r;
+  LoadResult r = bytes[0] == 'P' ? decode_pfm(as_bytes(bytes)) : decode_png(as_bytes(bytes));
   if (!r) r.error = path + ": " + r.error;
   return r;
 }

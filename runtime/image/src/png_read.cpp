@@ -123,6 +123,14 @@ LoadResult decode_png(std::span<const uint8_t> bytes) {
   Header h;
   if (std::string err = check_structure(bytes, h); !err.empty()) return {std::nullopt, err};
   if (bytes.size() > static_cast<size_t>(INT_MAX)) return {std::nullopt, "file too large"};
+  // Before inflating: the float image we would build (16 bytes a pixel; stb's own buffer
+  // is a quarter or half of that on top) must fit the budget.
+  const uint64_t need = uint64_t{h.width} * h.height * 4 * sizeof(float);
+  if (need > kDecodeBudgetBytes)
+    return {std::nullopt,
+            fmt::format("image {}x{} needs {} MiB as RGBA floats, over the decode budget of {} "
+                        "MiB",
+                        h.width, h.height, need >> 20, kDecodeBudgetBytes >> 20)};
   const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
   int len = static_cast<int>(bytes.size());
   int w = 0, hgt = 0, comp = 0;

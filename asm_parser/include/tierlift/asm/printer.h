@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 #include "tierlift/ir/program.h"
 
@@ -16,5 +17,15 @@ namespace tierlift::as {
 // parser), other floats via fmt "{}" (1, 0.5, -0, 1e-07, inf).
 std::string print_program(const ir::Program& program);
 std::string print_instruction(const ir::Instruction& ins, ir::Profile profile);
+std::string print_declaration(const ir::Declaration& d, ir::Profile profile);
+std::string print_definition(const ir::ConstDef& d);
+
+// print_program, keeping the comments and paragraphs of `source` (the text of sm.files[file]
+// the program was parsed from): comment-only lines stay where they were, a statement's
+// trailing comment stays on its line, runs of blank lines become one blank line. Lines of
+// preprocessor directives are left out (their statements print expanded, as always).
+// Parsing the result gives the same IR.
+std::string print_program_with_comments(const ir::Program& program, std::string_view source,
+                                        uint32_t file);
 
 } // namespace tierlift::as

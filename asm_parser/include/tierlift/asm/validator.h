@@ -35,6 +35,15 @@
 
 namespace tierlift::as {
 
+// What the Direct3D 8/9 runtimes accepted beyond the documented rules, rewritten to what
+// Windows executed, each with a warning that names the rule (NUMERICS.md, "Windows
+// leniency"). Run it before validate() unless the user asked for --strict:
+//   swizzle     a scalar source (rcp, rsq, exp, log, expp, logp, pow) with the identity
+//               swizzle, as D3D8-era token streams carry it: read as .w
+//   write-mask  ps_1_4 texcrd with no write mask: writes .xyz (.xy with _dw)
+// Returns the number of rewrites (= warnings added).
+size_t apply_windows_leniency(ir::Program& program, ir::Profile target, ir::DiagnosticSink& diags);
+
 struct ValidateOptions {
   bool warnings = true; // legal-but-suspicious code (unread declared input, def twice, ...)
 };

@@ -18,6 +18,13 @@ struct Diagnostic {
   std::string rule; // short id of the rule broken, e.g. "slot-limit", "read-before-write"
 };
 
+// A message with every word (run of non-blanks) longer than kMaxEchoedWord bytes cut to
+// its first kEchoedWordHead bytes, "…" and its length: a diagnostic echoes the offending
+// token, and a 50 MB register index must not become 50 MB of standard error.
+inline constexpr size_t kMaxEchoedWord = 200;
+inline constexpr size_t kEchoedWordHead = 96;
+std::string shorten_long_words(std::string message);
+
 class DiagnosticSink {
 public:
   void error(SourceLoc loc, std::string rule, std::string message) {
@@ -30,6 +37,7 @@ public:
     add({Severity::Note, loc, std::move(message), std::move(rule)});
   }
   void add(Diagnostic d) {
+    d.message = shorten_long_words(std::move(d.message));
     if (d.severity == Severity::Error) ++errors_;
     if (d.severity == Severity::Warning) ++warnings_;
     list_.push_back(std::move(d));

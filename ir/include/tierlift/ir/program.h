@@ -37,8 +37,17 @@ enum class SrcMod : uint8_t {
 // index; this names the register that is added to it.
 struct RelAddr {
   RegFile file = RegFile::Addr; // Addr (a0) or Loop (aL)
-  uint8_t component = 0;        // 0..3 = x..w (aL: 0)
+  uint8_t component = 0;        // 0..3 = x..w, the one component added (aL: 0)
   SourceLoc loc;
+  // The swizzle field of the vs_2_0 address token, when the text or the stream gave one:
+  // Microsoft's assembler keeps "a0.xyww" as written (0xF4) and writes the identity for a
+  // bare "a0" and for aL (Wine's d3dcompiler asm tests). The component added is the first
+  // one selected. Unset: the replicate of `component` for a0, the identity for aL.
+  std::optional<uint8_t> swizzle;
+  uint8_t token_swizzle() const {
+    if (swizzle) return *swizzle;
+    return file == RegFile::Loop ? kIdentitySwizzle : replicate_swizzle(component & 3);
+  }
 };
 
 struct SrcOperand {

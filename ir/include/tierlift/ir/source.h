@@ -1,6 +1,7 @@
 // Source positions and the files they point into.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -13,7 +14,17 @@ struct SourceLoc {
   uint32_t line = 0;
   uint32_t col = 0;
   uint32_t length = 0; // characters the caret line underlines (at least 1 is shown)
+  // A position in a token stream (a program read from bytecode): the byte offset of the
+  // token, shown as "shader.bin:+0x1c:"; -1 = none.
+  int64_t byte_offset = -1;
   bool valid() const { return line != 0; }
+  bool has_offset() const { return byte_offset >= 0; }
+  static SourceLoc at_byte(uint32_t file, size_t offset) {
+    SourceLoc l;
+    l.file = file;
+    l.byte_offset = static_cast<int64_t>(offset);
+    return l;
+  }
 };
 
 struct SourceFile {

@@ -96,7 +96,8 @@ bool bind_textures(const RunRequest& req, Pass& pass, RunDiagnostics& diags) {
     if (it == loaded.end()) {
       img::LoadResult r = img::load_texture(t.source);
       if (!r) {
-        bool missing = !img::is_builtin_spec(t.source) && !std::filesystem::exists(t.source);
+        // Could not be read at all (missing, a folder, over the cap): an I/O error.
+        bool missing = !img::is_builtin_spec(t.source) && r.io_error;
         diags.other.error({}, std::string(missing ? kRuleTextureMissing : "texture"),
                           fmt::format("--texture s{}: {}", t.sampler, r.error));
         ok = false;

@@ -1,7 +1,12 @@
 // Parsers for the values of `tierlift run`'s flags. Each gives a value or a one-line reason.
+#include <bit>
+#include <cctype>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <fmt/format.h>
+#include <string>
 
 #include "tierlift/cpu/run_job.h"
 
@@ -20,11 +25,38 @@ bool parse_u32(std::string_view s, uint32_t& out) {
   return ec == std::errc() && p == s.data() + s.size() && !s.empty();
 }
 
+// What `def` takes (the parser's float_value), so that a value can move between a listing
+// and the command line: [+|-] decimal with an optional 'f' suffix, read by strtof (a value
+// that underflows to a denormal or zero is kept, one that overflows is refused), inf, nan,
+// or 0x… as the raw 32-bit pattern (not negatable).
 bool parse_float(std::string_view s, float& out) {
   s = trim(s);
-  if (!s.empty() && s.front() == '+') s.remove_prefix(1);
-  auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
-  return ec == std::errc() && p == s.data() + s.size() && !s.empty();
+  bool neg = false;
+  if (!s.empty() && (s.front() == '+' || s.front() == '-')) {
+    neg = s.front() == '-';
+    s.remove_prefix(1);
+  }
+  std::string text(s);
+  for (char& ch : text) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  uint32_t raw = 0;
+  if (text == "inf" || text == "nan") {
+    raw = text == "inf" ? 0x7F800000u : 0x7FC00000u;
+  } else if (text.starts_with("0x")) {
+    auto [p, ec] = std::from_chars(text.data() + 2, text.data() + text.size(), raw, 16);
+    if (neg || text.size() == 2 || ec != std::errc() || p != text.data() + text.size())
+      return false;
+  } else {
+    if (text.ends_with('f')) text.pop_back();
+    if (text.empty() || text.find_first_not_of("0123456789.e+-") != std::string::npos) return false;
+    errno = 0;
+    char* end = nullptr;
+    float f = std::strtof(text.c_str(), &end);
+    if (end != text.c_str() + text.size() || (errno == ERANGE && std::isinf(f))) return false;
+    raw = std::bit_cast<uint32_t>(f);
+  }
+  if (neg) raw ^= 0x80000000u;
+  out = std::bit_cast<float>(raw);
+  return true;
 }
 
 bool parse_i32(std::string_view s, int32_t& out) {

@@ -49,6 +49,7 @@
 
 #include "tierlift/effects/blur_profile.h"
 #include "tierlift/effects/graph.h"
+#include "tierlift/ir/ps1x_range.h"
 
 namespace tierlift::effects {
 
@@ -81,6 +82,9 @@ struct GlowParams {
   // to read instead (a scene that names its own listing). Empty: every listing built in.
   std::map<std::string, std::string, std::less<>> listing_files;
   int subtexel_bits = 0; // conventions of every pass: match the device (lavapipe: 8)
+  // ps_1_x register range of every pass (tier dx8): the preset d3d9 unless a scene or
+  // --ps1x-max names another (ir/ps1x_range.h).
+  float ps1x_max = ir::default_ps1x_max();
 };
 
 struct GlowPlan {

@@ -33,11 +33,13 @@ struct Scene {
 
 struct SceneLoad {
   std::optional<Scene> scene;
-  std::string error; // rendered diagnostics (file:line:col, source line, caret), '\n'-ended
+  std::string error;     // rendered diagnostics (file:line:col, source line, caret), '\n'-ended
+  bool io_error = false; // the file itself could not be read (missing, over the cap): exit 2
   explicit operator bool() const { return scene.has_value(); }
 };
 
-// Reads and validates a scene file; relative paths in it are relative to its folder.
+// Reads (within io::kSceneCap; "-" = standard input) and validates a scene file; relative
+// paths in it are relative to its folder.
 SceneLoad load_scene_file(const std::string& path);
 // The same for text already read: `file_name` is what diagnostics show, `base_dir` the
 // folder that relative paths start from ("" = the working directory).

@@ -17,7 +17,8 @@ namespace tierlift::img {
 // An image or the reason there is none.
 struct LoadResult {
   std::optional<Image> image;
-  std::string error; // empty when image is set
+  std::string error;     // empty when image is set
+  bool io_error = false; // the file could not be read (missing, unreadable, over the cap)
   explicit operator bool() const { return image.has_value(); }
 };
 
@@ -32,7 +33,10 @@ struct Status {
 // grey and palette are accepted too) → RGBA floats in [0, 1]: value / 255 or / 65535.
 // Grey fills R, G and B; a missing alpha reads 1. gAMA/sRGB chunks are ignored (values
 // are taken as stored). The result's format is RGBA8 for 8-bit files (values are exactly
-// RGBA8 store values) and RGBA32F otherwise.
+// RGBA8 store values) and RGBA32F otherwise. IHDR's width × height is checked against
+// kDecodeBudgetBytes before anything is inflated, so a small file claiming a huge image is
+// refused at once.
+inline constexpr uint64_t kDecodeBudgetBytes = uint64_t{1} << 30; // 1 GiB of RGBA floats
 LoadResult decode_png(std::span<const uint8_t> bytes);
 LoadResult read_png(const std::string& path);
 
@@ -62,9 +66,10 @@ Status write_pfm(const std::string& path, const Image& image,
 // By extension: ".pfm" → PFM (RGB), anything else → 8-bit PNG.
 Status write_image(const std::string& path, const Image& image);
 
-// Writes bytes atomically: temp file in the same folder, then rename over `path`.
+// Writes bytes with tierlift::io::write_output: temp file in the same folder renamed over
+// `path` (symbolic links followed), FIFOs and character devices written straight through.
 Status write_file_atomic(const std::string& path, std::span<const uint8_t> bytes);
-// Whole file, or an error.
+// Whole file within io::kImageFileCap, or an error.
 std::optional<std::vector<uint8_t>> read_file_bytes(const std::string& path, std::string& error);
 
 } // namespace tierlift::img

@@ -1,0 +1,62 @@
+// One listing from the bytes of a file, whatever its form: assembly text, or a Direct3D 9
+// token stream — raw (.bin, .fxo, .vso/.pso as fxc and D3DX write them) or a C array as fxc
+// /Fh writes it — told apart by content, never by the file's extension. Every command that
+// takes a listing (check, fmt, spirv, run, the scenes' "listings") reads it through here.
+//
+// Diagnostics on a token stream name the byte offset of the token ("shader.pso:+0x1c:
+// error: …"). A file that is neither (a PNG, a D3D10+ DXBC container, an fx_2_0 effect)
+// gets one line saying what it looks like and which command takes it (rule binary-input).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "tierlift/asm/constant_table.h"
+#include "tierlift/asm/parser.h"
+#include "tierlift/ir/diagnostic.h"
+#include "tierlift/ir/program.h"
+#include "tierlift/ir/source.h"
+
+namespace tierlift::as {
+
+enum class ListingForm {
+  Text,        // shader assembly
+  TokenStream, // raw little-endian DWORDs starting with a version token
+  TokenArray,  // C source holding the DWORDs (or bytes) of a token stream
+  Binary,      // something else that is not text
+};
+std::string_view listing_form_name(ListingForm form); // "text", "token stream", ...
+
+// The form of `bytes`. A C array counts as a TokenArray only when its first value is a
+// version token (0xFFFE…/0xFFFF…); anything else that is text is Text.
+ListingForm detect_listing_form(std::string_view bytes);
+
+// For ListingForm::Binary: "a PNG image; `tierlift glow --image` and `run --texture` take
+// it" and the like.
+std::string describe_binary(std::string_view bytes);
+
+struct LoadOptions {
+  ParseOptions parse;                 // text only: -D, -I
+  std::optional<ir::Profile> profile; // validate against this instead of the version's
+  bool skip_validation = false;
+  // false: apply_windows_leniency (validator.h) before validating — what Windows took is
+  // taken, with a warning. true: the documented rules only.
+  bool strict = false;
+  bool warnings = true; // ValidateOptions::warnings (legal-but-suspicious code)
+};
+
+struct LoadResult {
+  std::optional<ir::Program> program; // set when it was read (and validated, unless skipped)
+  ListingForm form = ListingForm::Text;
+  std::optional<ConstantTable> constants; // a token stream's CTAB comment
+  std::vector<uint32_t> tokens;           // a token stream's tokens
+};
+
+// Reads sm.files[file] (its text holds the file's bytes). For a raw token stream the stored
+// text is emptied afterwards: its diagnostics carry byte offsets, never lines to quote.
+LoadResult load_listing(uint32_t file, ir::SourceManager& sm, ir::DiagnosticSink& diags,
+                        const LoadOptions& options = {});
+
+} // namespace tierlift::as

@@ -1,0 +1,56 @@
+// Writing an output file without ever losing a user's file:
+//  - "-" is standard output;
+//  - a FIFO or a character device (a terminal, /dev/null, /dev/stdout) is written straight
+//    through, never replaced by a regular file;
+//  - a symbolic link is followed: the file it points to is replaced, the link stays;
+//  - anything else is written to a hidden temporary file beside the target and renamed over
+//    it, so a failed or interrupted write leaves the old file (or none) and no half-written
+//    one; the temporary file is removed when SIGINT, SIGTERM or SIGHUP ends the process;
+//  - an output that is one of the command's inputs (the same device and inode, whatever
+//    the names) is refused before anything is written (refuse_if_input).
+#pragma once
+
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace tierlift::io {
+
+// Writes `bytes` to `path` as above. "" on success, otherwise "PATH: what failed: why".
+std::string write_output(const std::string& path, std::string_view bytes);
+
+// True when `a` and `b` both exist and are the same file (device and inode, symbolic links
+// followed). "-" is never the same as a file.
+bool same_file(const std::string& a, const std::string& b);
+
+// "" when `output` is none of `inputs`; otherwise a message naming both.
+std::string refuse_if_input(const std::string& output, std::span<const std::string> inputs);
+
+// A temporary file beside a target, renamed over the target by commit(); removed by the
+// destructor when not committed, and by SIGINT/SIGTERM/SIGHUP while it exists. Exposed for
+// writers that produce their bytes in pieces, and for the test of the signal clean-up.
+class AtomicFile {
+public:
+  // Creates the temporary file beside `target` (after following symbolic links). On
+  // failure ok() is false and error() says why.
+  explicit AtomicFile(const std::string& target);
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  bool ok() const { return error_.empty(); }
+  const std::string& error() const { return error_; }
+  const std::string& temp_path() const { return temp_; }
+  bool write(std::string_view bytes);
+  // fsync, close and rename over the target. False (and the temporary removed) on failure.
+  bool commit();
+
+private:
+  void fail(const std::string& what, int err);
+  std::string target_, shown_, temp_, error_;
+  int fd_ = -1;
+  int slot_ = -1;
+  bool committed_ = false;
+};
+
+} // namespace tierlift::io

@@ -1,0 +1,74 @@
+// A scene's "listings" may name a token stream as well as text (as::load_listing decides by
+// content), and "ps1x_max" picks the ps_1_x range preset of tier dx8.
+#include <gtest/gtest.h>
+
+#include <cfloat>
+#include <filesystem>
+#include <fstream>
+
+#include "listing_files.h"
+#include "tierlift/asm/bytecode.h"
+#include "tierlift/asm/parser.h"
+#include "tierlift/effects/builtin_listing.h"
+#include "tierlift/effects/scene.h"
+
+namespace tierlift::effects {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path scratch_dir() {
+  auto dir = fs::temp_directory_path() / ("tierlift_scene_bc_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return dir;
+}
+
+TEST(SceneBytecode, ListingFileMayBeATokenStream) {
+  const std::string name = "gpugems21/listing4_blur4_weighted_sum.psh";
+  auto text = test::read_file(fs::path(TIERLIFT_SOURCE_DIR) / "listings" / name);
+  auto parsed = as::parse_text(text);
+  ASSERT_TRUE(parsed.program.has_value());
+  auto pso = scratch_dir() / "l4.pso";
+  std::ofstream(pso, std::ios::binary) << as::tokens_to_bytes(as::assemble(*parsed.program));
+  std::string error;
+  auto from_tokens = glow_listing(name, {{name, pso.string()}}, &error);
+  ASSERT_TRUE(from_tokens) << error;
+  auto built_in = builtin_listing(name, &error);
+  ASSERT_TRUE(built_in) << error;
+  EXPECT_TRUE(ir::same_ir(*from_tokens, *built_in)) << ir::ir_difference(*from_tokens, *built_in);
+  // And through a scene file that names it.
+  auto scene = scratch_dir() / "s.json";
+  std::ofstream(scene) << R"({"glow": {"tier": "dx8", "listings": {")" << name
+                       << R"(": "l4.pso"}}})";
+  SceneLoad s = load_scene_file(scene.string());
+  ASSERT_TRUE(s) << s.error;
+  GlowPlan plan = build_glow(s.scene->params);
+  EXPECT_TRUE(plan) << plan.error;
+}
+
+TEST(SceneBytecode, Ps1xMaxPresets) {
+  auto load = [](const std::string& value) {
+    return parse_scene(R"({"glow": {"tier": "dx8", "ps1x_max": )" + value + "}}", "s.json", "");
+  };
+  SceneLoad d = parse_scene(R"({"glow": {"tier": "dx8"}})", "s.json", "");
+  ASSERT_TRUE(d) << d.error;
+  EXPECT_EQ(d.scene->params.ps1x_max, FLT_MAX); // the d3d9 preset
+  SceneLoad g = load(R"("geforce3")");
+  ASSERT_TRUE(g) << g.error;
+  EXPECT_EQ(g.scene->params.ps1x_max, 1.0f);
+  SceneLoad r = load(R"("radeon8500")");
+  ASSERT_TRUE(r) << r.error;
+  EXPECT_EQ(r.scene->params.ps1x_max, 8.0f);
+  SceneLoad n = load("4");
+  ASSERT_TRUE(n) << n.error;
+  EXPECT_EQ(n.scene->params.ps1x_max, 4.0f);
+  GlowPlan plan = build_glow(r.scene->params);
+  ASSERT_TRUE(plan) << plan.error;
+  EXPECT_EQ(plan.graph.conventions.ps1x_max_value, 8.0f);
+  SceneLoad bad = load("0.5");
+  EXPECT_FALSE(bad);
+  EXPECT_NE(bad.error.find("/glow/ps1x_max"), std::string::npos) << bad.error;
+}
+
+} // namespace
+} // namespace tierlift::effects

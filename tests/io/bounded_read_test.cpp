@@ -1,0 +1,128 @@
+// io::read_bounded: sizes are checked before reading, pipes and devices are read for at most
+// cap + 1 bytes, and every refusal names the cap.
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "tierlift/io/bounded_read.h"
+
+namespace fs = std::filesystem;
+using tierlift::io::read_bounded;
+using tierlift::io::ReadCap;
+
+namespace {
+
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    path = fs::temp_directory_path() /
+           ("tierlift_io_read_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(path);
+  }
+  ~TempDir() { fs::remove_all(path); }
+  std::string file(const std::string& name, const std::string& bytes) const {
+    std::ofstream(path / name, std::ios::binary) << bytes;
+    return (path / name).string();
+  }
+};
+
+constexpr ReadCap kTiny{16, "test input"};
+
+} // namespace
+
+TEST(BoundedRead, ReadsAFileUpToTheCapExactly) {
+  TempDir dir;
+  std::string error;
+  auto at_cap = read_bounded(dir.file("a", std::string(16, 'x')), kTiny, error);
+  ASSERT_TRUE(at_cap) << error;
+  EXPECT_EQ(*at_cap, std::string(16, 'x'));
+  auto empty = read_bounded(dir.file("e", ""), kTiny, error);
+  ASSERT_TRUE(empty) << error;
+  EXPECT_TRUE(empty->empty());
+}
+
+TEST(BoundedRead, RefusesAFileOneByteOverTheCapNamingIt) {
+  TempDir dir;
+  std::string error;
+  EXPECT_FALSE(read_bounded(dir.file("a", std::string(17, 'x')), kTiny, error));
+  EXPECT_NE(error.find("too large for a test input"), std::string::npos) << error;
+  EXPECT_NE(error.find("16 bytes"), std::string::npos) << error;
+}
+
+TEST(BoundedRead, RefusesDevZeroAtTheCap) {
+  std::string error;
+  const ReadCap cap{uint64_t{1} << 20, "listing"};
+  EXPECT_FALSE(read_bounded("/dev/zero", cap, error));
+  EXPECT_NE(error.find("/dev/zero: too large for a listing: the cap is 1 MiB"), std::string::npos)
+      << error;
+}
+
+TEST(BoundedRead, StopsReadingAnEndlessPipeAfterCapPlusOneBytes) {
+  int fds[2];
+  ASSERT_EQ(::pipe(fds), 0);
+  pid_t writer = ::fork();
+  ASSERT_GE(writer, 0);
+  if (writer == 0) { // writes until the reader goes away (SIGPIPE ends it)
+    ::close(fds[0]);
+    char block[4096] = {};
+    for (;;)
+      if (::write(fds[1], block, sizeof block) < 0) ::_exit(0);
+  }
+  ::close(fds[1]);
+  std::string error;
+  auto r = read_bounded("/dev/fd/" + std::to_string(fds[0]), ReadCap{100000, "scene"}, error);
+  ::close(fds[0]);
+  int status = 0;
+  ::waitpid(writer, &status, 0);
+  EXPECT_FALSE(r);
+  EXPECT_NE(error.find("too large for a scene"), std::string::npos) << error;
+}
+
+TEST(BoundedRead, ReadsAShortPipeWhole) {
+  int fds[2];
+  ASSERT_EQ(::pipe(fds), 0);
+  ASSERT_EQ(::write(fds[1], "ps_2_0\n", 7), 7);
+  ::close(fds[1]);
+  std::string error;
+  auto r = read_bounded("/dev/fd/" + std::to_string(fds[0]), kTiny, error);
+  ::close(fds[0]);
+  ASSERT_TRUE(r) << error;
+  EXPECT_EQ(*r, "ps_2_0\n");
+}
+
+TEST(BoundedRead, DirectoriesAndMissingFilesAreErrors) {
+  TempDir dir;
+  std::string error;
+  EXPECT_FALSE(read_bounded(dir.path.string(), kTiny, error));
+  EXPECT_NE(error.find("is a directory"), std::string::npos) << error;
+  EXPECT_FALSE(read_bounded((dir.path / "missing").string(), kTiny, error));
+  EXPECT_NE(error.find("cannot read"), std::string::npos) << error;
+}
+
+TEST(BoundedRead, PrefixCheckStopsBeforeTheRest) {
+  std::string error;
+  std::string seen;
+  auto check = [&](std::string_view first) {
+    seen = std::string(first.substr(0, 4));
+    return std::string("no signature");
+  };
+  // /dev/zero with a 1 GiB cap: refused from its first block, long before the cap.
+  EXPECT_FALSE(read_bounded("/dev/zero", ReadCap{uint64_t{1} << 30, "image file"}, error, check));
+  EXPECT_EQ(error, "/dev/zero: no signature");
+  EXPECT_EQ(seen, std::string(4, '\0'));
+}
+
+TEST(BoundedRead, FormatsCapsInBinaryUnits) {
+  EXPECT_EQ(tierlift::io::format_size(uint64_t{4} << 20), "4 MiB");
+  EXPECT_EQ(tierlift::io::format_size(uint64_t{1} << 30), "1 GiB");
+  EXPECT_EQ(tierlift::io::format_size(3000), "3000 bytes");
+  EXPECT_EQ(tierlift::io::format_size(2048), "2 KiB");
+}

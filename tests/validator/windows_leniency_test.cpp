@@ -1,0 +1,108 @@
+// What the Direct3D runtimes took beyond the documented rules (NUMERICS.md, "Windows
+// leniency"): taken with a warning that names the rule, rewritten to what Windows ran;
+// rejected under strict. Streams written out by hand (d3d9-isa.md §9): vs_1_1 =
+// 0xFFFE0101; mov = 0x01, rcp = 0x06, exp = 0x0E; oPos = 0xC00F0000, oD0 = 0xD00F0000,
+// r0 = 0x800F0000; c# = 0xA0E4000n with the identity swizzle .xyzw (0xE4).
+#include <gtest/gtest.h>
+
+#include "tierlift/asm/bytecode.h"
+#include "tierlift/asm/load.h"
+
+namespace {
+
+using namespace tierlift;
+using Tokens = std::vector<uint32_t>;
+
+struct Loaded {
+  ir::SourceManager sm;
+  ir::DiagnosticSink diags;
+  as::LoadResult r;
+  std::string rendered;
+  size_t count(ir::Severity s, const std::string& rule) const {
+    size_t n = 0;
+    for (const auto& d : diags.all()) n += d.severity == s && d.rule == rule;
+    return n;
+  }
+};
+
+Loaded load(std::string bytes, bool strict) {
+  Loaded l;
+  uint32_t f = l.sm.add("s.vso", std::move(bytes));
+  as::LoadOptions o;
+  o.strict = strict;
+  l.r = as::load_listing(f, l.sm, l.diags, o);
+  l.rendered = ir::render_text(l.diags, l.sm);
+  return l;
+}
+
+// mov oPos, c0 / OP r0, c1 (identity swizzle) / mov oD0, r0
+Tokens d3d8_scalar_stream(uint32_t opcode) {
+  return {0xFFFE0101, 0x00000001, 0xC00F0000, 0xA0E40000, opcode,    0x800F0000,
+          0xA0E40001, 0x00000001, 0xD00F0000, 0x80E40000, 0x0000FFFF};
+}
+
+} // namespace
+
+TEST(WindowsLeniency, ScalarSourceWithoutReplicateReadsW) {
+  for (uint32_t opcode : {0x0Eu /* exp */, 0x0Fu /* log */, 0x06u /* rcp */, 0x07u /* rsq */}) {
+    SCOPED_TRACE(opcode);
+    Loaded l = load(as::tokens_to_bytes(d3d8_scalar_stream(opcode)), false);
+    ASSERT_TRUE(l.r.program.has_value()) << l.rendered;
+    EXPECT_EQ(l.count(ir::Severity::Warning, "swizzle"), 1u) << l.rendered;
+    // The warning sits on the source token (index 6, byte 0x18) and names c1.w.
+    EXPECT_NE(l.rendered.find("s.vso:+0x18: warning: "), std::string::npos) << l.rendered;
+    EXPECT_NE(l.rendered.find("c1.w"), std::string::npos) << l.rendered;
+    // The IR reads .w: replicate w = 0b11'11'11'11.
+    EXPECT_EQ(l.r.program->code[1].src[0].swizzle, 0xFF);
+  }
+}
+
+TEST(WindowsLeniency, StrictRejectsTheScalarSource) {
+  Loaded l = load(as::tokens_to_bytes(d3d8_scalar_stream(0x0E)), true);
+  EXPECT_FALSE(l.r.program.has_value());
+  EXPECT_EQ(l.count(ir::Severity::Error, "swizzle"), 1u) << l.rendered;
+  EXPECT_NE(l.rendered.find("s.vso:+0x18: error: "), std::string::npos) << l.rendered;
+}
+
+// Text keeps the assembler's rule: a bare rcp source is .x (d3d9-isa.md §4.3), no warning.
+TEST(WindowsLeniency, BareRcpInTextStillReadsX) {
+  Loaded l = load("vs.1.1\nmov oPos, c0\nrcp r0, c1\nmov oD0, r0\n", false);
+  ASSERT_TRUE(l.r.program.has_value()) << l.rendered;
+  EXPECT_EQ(l.r.program->code[1].src[0].swizzle, 0x00);
+  EXPECT_EQ(l.diags.warning_count(), 0u) << l.rendered;
+}
+
+// ps_1_4 "texcrd r0, t0" without a mask writes .xyz. The stream Wine's d3d8 cnd_test
+// lists as "texcrd r0, t0" carries exactly that mask (0x80070000): the whole shader
+// assembles to its tokens (def = 0x51, texcrd = 0x40, cnd = 0x50; 1.0f = 0x3F800000).
+TEST(WindowsLeniency, Ps14TexcrdWithoutMaskWritesXyz) {
+  const char* text = "ps_1_4\ndef c0, 0, 0, 0, 1\ntexcrd r0, t0\nmov r0.a, c0.a\n"
+                     "cnd r0, r0, c1, c2\n";
+  Loaded l = load(text, false);
+  ASSERT_TRUE(l.r.program.has_value()) << l.rendered;
+  EXPECT_EQ(l.count(ir::Severity::Warning, "write-mask"), 1u) << l.rendered;
+  EXPECT_EQ(l.r.program->code[0].dst->mask, 0x7);
+  Tokens expected = {0xFFFF0104, 0x00000051, 0xA00F0000, 0x00000000, 0x00000000,
+                     0x00000000, 0x3F800000, 0x00000040, 0x80070000, 0xB0E40000,
+                     0x00000001, 0x80080000, 0xA0FF0000, 0x00000050, 0x800F0000,
+                     0x80E40000, 0xA0E40001, 0xA0E40002, 0x0000FFFF};
+  EXPECT_EQ(as::assemble(*l.r.program), expected);
+  // _dw writes .rg.
+  Loaded dw = load("ps_1_4\ntexcrd r0, t0_dw.xyw\nmov r0.a, c0.a\n", false);
+  ASSERT_TRUE(dw.r.program.has_value()) << dw.rendered;
+  EXPECT_EQ(dw.r.program->code[0].dst->mask, 0x3);
+}
+
+TEST(WindowsLeniency, StrictRejectsTexcrdWithoutMask) {
+  Loaded l = load("ps_1_4\ntexcrd r0, t0\nmov r0.a, c0.a\n", true);
+  EXPECT_FALSE(l.r.program.has_value());
+  EXPECT_EQ(l.count(ir::Severity::Error, "write-mask"), 1u) << l.rendered;
+}
+
+// ps_1_4 texld takes no mask at all: nothing to forgive, in either mode.
+TEST(WindowsLeniency, Ps14TexldWithoutMaskIsLegal) {
+  for (bool strict : {false, true}) {
+    Loaded l = load("ps_1_4\ntexld r0, t0\n", strict);
+    EXPECT_TRUE(l.r.program.has_value()) << l.rendered;
+  }
+}
