@@ -43,7 +43,9 @@ struct RelAddr {
   // Microsoft's assembler keeps "a0.xyww" as written (0xF4) and writes the identity for a
   // bare "a0" and for aL (Wine's d3dcompiler asm tests). The component added is the first
   // one selected. Unset: the replicate of `component` for a0, the identity for aL.
-  std::optional<uint8_t> swizzle;
+  // (Initialised, so that RelAddr{file, component, loc} stays free of
+  // -Wmissing-field-initializers.)
+  std::optional<uint8_t> swizzle = std::nullopt;
   uint8_t token_swizzle() const {
     if (swizzle) return *swizzle;
     return file == RegFile::Loop ? kIdentitySwizzle : replicate_swizzle(component & 3);
