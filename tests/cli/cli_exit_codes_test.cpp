@@ -291,3 +291,37 @@ TEST(ExitCodes, JsonIsOneDocumentOnStandardOutput) {
   EXPECT_EQ(nlohmann::json::parse(fmt.out)["result"]["text"].get<std::string>().rfind("ps_2_0", 0),
             0u);
 }
+
+// Errors the argument parser itself finds (unknown flag, missing value, bad choice) give
+// the same one document under --json: exit 2, the usage error as a diagnostic.
+TEST(ExitCodes, JsonParserErrorsAreOneDocument) {
+  Scratch s;
+  const std::string ps = s.file("a.psh", kValidPs);
+  struct Case {
+    std::string args, command;
+  };
+  for (const Case& c : {Case{"check --json --no-such-flag " + ps, "check"},
+                        Case{"run --json --ps " + ps + " --size", "run"},
+                        Case{"run --json --ps " + ps + " --backend nowhere", "run"},
+                        Case{"--json --no-such-flag", "tierlift"}}) {
+    auto r = run_cli(c.args);
+    EXPECT_EQ(r.exit_code, 2) << c.args;
+    EXPECT_TRUE(r.err.empty()) << c.args << ": " << r.err;
+    nlohmann::json j;
+    ASSERT_NO_THROW(j = nlohmann::json::parse(r.out)) << c.args << ": " << r.out;
+    EXPECT_EQ(j["command"], c.command) << c.args;
+    EXPECT_EQ(j["exit_code"], 2);
+    EXPECT_EQ(j["ok"], false);
+    ASSERT_EQ(j["diagnostics"].size(), 1u) << j.dump(2);
+    EXPECT_EQ(j["diagnostics"][0]["rule"], "usage");
+    EXPECT_EQ(j["diagnostics"][0]["severity"], "error");
+    EXPECT_EQ(j["diagnostics"][0]["line"], 0);
+    EXPECT_FALSE(j["diagnostics"][0]["message"].get<std::string>().empty());
+    EXPECT_TRUE(j["result"].is_object());
+  }
+  // Without --json the parser's text on standard error, nothing on standard output.
+  auto text = run_cli("check --no-such-flag " + ps);
+  EXPECT_EQ(text.exit_code, 2);
+  EXPECT_TRUE(text.out.empty()) << text.out;
+  EXPECT_NE(text.err.find("no-such-flag"), std::string::npos) << text.err;
+}
