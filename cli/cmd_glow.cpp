@@ -222,7 +222,9 @@ void register_glow_command(CLI::App& app) {
       ->check(CLI::IsMember({"dx9", "dx8"}));
   sub->add_option("--downsample", f->downsample, "Glow resolution 1/N, N = 1..4")
       ->check(CLI::Range(1u, 4u));
-  sub->add_option("--format", f->format, "rgba8 | rgba16f | rgba32f (every texture)")
+  sub->add_option("--format", f->format,
+                  "rgba8 | rgba16f | rgba32f (every texture; default: the scene's format, "
+                  "rgba32f when it names none)")
       ->check(CLI::IsMember({"rgba8", "rgba16f", "rgba32f"}));
   sub->add_option("--backend", f->backend,
                   "cpu | vulkan | analytic | both | all (both: cpu and vulkan; all: the three "
