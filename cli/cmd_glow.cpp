@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "commands.h"
+#include "front_end.h"
 #include "glow_report.h"
 #include "report.h"
 #include "tierlift/effects/analytic_device.h"
@@ -22,6 +23,7 @@ struct GlowFlags {
   std::string scene, image, tier, format, backend = "all", output, gpu;
   unsigned downsample = 0; // 0: the scene's
   bool no_half_texel = false, json = false, quiet = false;
+  FrontEndOptions listing; // -D, -I, --profile, --skip-validation (its json is unused)
   bool both_devices() const { return backend == "both"; } // cpu and vulkan, no analytic
   unsigned threads = 0;
 };
@@ -51,6 +53,10 @@ std::optional<effects::Scene> scene_from_flags(const GlowFlags& f, Report& repor
   if (f.downsample != 0) p.downsample = f.downsample;
   if (!f.format.empty()) p.format = *img::parse_format(f.format);
   if (f.no_half_texel) p.half_texel = false;
+  p.listing_options.defines = split_defines(f.listing.defines);
+  p.listing_options.include_dirs = f.listing.include_dirs;
+  p.listing_options.skip_validation = f.listing.skip_validation;
+  if (!f.listing.profile.empty()) p.listing_options.profile = ir::parse_profile(f.listing.profile);
   return load.scene;
 }
 
@@ -99,6 +105,12 @@ int run(const GlowFlags& f) {
   int exit_code = kExitOk;
   if (f.output == "-") {
     report.error("usage", "-o names a folder for glow (several images); '-' is not one");
+    return report.finish(kExitUsage);
+  }
+  if (!f.listing.profile.empty() && !ir::parse_profile(f.listing.profile)) {
+    report.error("usage", fmt::format("--profile '{}': expected one of vs_1_1 vs_2_0 ps_1_1 "
+                                      "ps_1_2 ps_1_3 ps_1_4 ps_2_0",
+                                      f.listing.profile));
     return report.finish(kExitUsage);
   }
   std::optional<effects::Scene> scene = scene_from_flags(f, report, &exit_code);
@@ -236,6 +248,9 @@ void register_glow_command(CLI::App& app) {
   sub->add_option("-o,--output", f->output,
                   "Folder for {scene,glow,final}-{cpu,vulkan,analytic}.png (opaque; .pfm too "
                   "for float formats)");
+  // The listing flags of run, for every listing (built-in or a scene's); --profile applies
+  // to the listings of its stage.
+  add_front_end_options(sub, f->listing, /*skip_validation_flag=*/true, /*json_flag=*/false);
   sub->add_flag("--json", f->json,
                 "Print one JSON document on standard output (docs/command-line.md; no "
                 "progress lines)");

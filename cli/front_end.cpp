@@ -49,6 +49,19 @@ std::string write_output(const std::string& path, std::string_view bytes) {
   return io::write_output(path, bytes);
 }
 
+std::vector<std::pair<std::string, std::string>>
+split_defines(const std::vector<std::string>& defines) {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const std::string& d : defines) {
+    auto eq = d.find('=');
+    if (eq == std::string::npos)
+      out.emplace_back(d, "1");
+    else
+      out.emplace_back(d.substr(0, eq), d.substr(eq + 1));
+  }
+  return out;
+}
+
 LoadedListing load_listing(const std::string& path, const FrontEndOptions& options) {
   LoadedListing out;
   std::string error;
@@ -72,13 +85,7 @@ LoadedListing load_listing(const std::string& path, const FrontEndOptions& optio
     }
   }
   as::ParseOptions popts;
-  for (const std::string& d : options.defines) {
-    auto eq = d.find('=');
-    if (eq == std::string::npos)
-      popts.defines.emplace_back(d, "1");
-    else
-      popts.defines.emplace_back(d.substr(0, eq), d.substr(eq + 1));
-  }
+  popts.defines = split_defines(options.defines);
   popts.include_dirs = options.include_dirs;
   uint32_t file = out.sources.add(path == "-" ? "<stdin>" : path, std::move(*text));
   auto program = as::parse_program(file, out.sources, out.diags, popts);

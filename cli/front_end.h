@@ -29,6 +29,10 @@ struct FrontEndOptions {
 void add_front_end_options(CLI::App* sub, FrontEndOptions& options, bool skip_validation_flag,
                            bool json_flag = true);
 
+// -D NAME[=VALUE] words as (NAME, VALUE) pairs; a bare NAME is defined as 1.
+std::vector<std::pair<std::string, std::string>>
+split_defines(const std::vector<std::string>& defines);
+
 struct LoadedListing {
   ir::SourceManager sources;
   ir::DiagnosticSink diags;
