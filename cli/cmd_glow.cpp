@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "commands.h"
+#include "front_end.h"
 #include "glow_report.h"
 #include "report.h"
 #include "tierlift/effects/analytic_device.h"
@@ -26,6 +27,7 @@ struct GlowFlags {
   std::string scene, image, tier, format, backend = "all", output, gpu, ps1x_max;
   unsigned downsample = 0; // 0: the scene's
   bool no_half_texel = false, json = false, quiet = false;
+  FrontEndOptions listing; // -D, -I, --profile, --skip-validation (its json is unused)
   bool both_devices() const { return backend == "both"; } // cpu and vulkan, no analytic
   unsigned threads = 0;
   unsigned frames = 0; // --frames N: setup and N steady-state frames per device (0: off)
@@ -66,6 +68,10 @@ std::optional<effects::Scene> scene_from_flags(const GlowFlags& f, Report& repor
     }
     p.ps1x_max = *m;
   }
+  p.listing_options.defines = split_defines(f.listing.defines);
+  p.listing_options.include_dirs = f.listing.include_dirs;
+  p.listing_options.skip_validation = f.listing.skip_validation;
+  if (!f.listing.profile.empty()) p.listing_options.profile = ir::parse_profile(f.listing.profile);
   return load.scene;
 }
 
@@ -189,6 +195,12 @@ int run(const GlowFlags& f) {
   int exit_code = kExitOk;
   if (f.output == "-") {
     report.error("usage", "-o names a folder for glow (several images); '-' is not one");
+    return report.finish(kExitUsage);
+  }
+  if (!f.listing.profile.empty() && !ir::parse_profile(f.listing.profile)) {
+    report.error("usage", fmt::format("--profile '{}': expected one of vs_1_1 vs_2_0 ps_1_1 "
+                                      "ps_1_2 ps_1_3 ps_1_4 ps_2_0",
+                                      f.listing.profile));
     return report.finish(kExitUsage);
   }
   std::optional<effects::Scene> scene = scene_from_flags(f, report, &exit_code);
@@ -328,7 +340,9 @@ void register_glow_command(CLI::App& app) {
       ->check(CLI::IsMember({"dx9", "dx8"}));
   sub->add_option("--downsample", f->downsample, "Glow resolution 1/N, N = 1..4")
       ->check(CLI::Range(1u, 4u));
-  sub->add_option("--format", f->format, "rgba8 | rgba16f | rgba32f (every texture)")
+  sub->add_option("--format", f->format,
+                  "rgba8 | rgba16f | rgba32f (every texture; default: the scene's format, "
+                  "rgba32f when it names none)")
       ->check(CLI::IsMember({"rgba8", "rgba16f", "rgba32f"}));
   sub->add_option("--backend", f->backend,
                   "cpu | vulkan | analytic | both | all (both: cpu and vulkan; all: the three "
@@ -343,6 +357,9 @@ void register_glow_command(CLI::App& app) {
   sub->add_option("-o,--output", f->output,
                   "Folder for {scene,glow,final}-{cpu,vulkan,analytic}.png (opaque; .pfm too "
                   "for float formats)");
+  // The listing flags of run, for every listing (built-in or a scene's); --profile applies
+  // to the listings of its stage.
+  add_front_end_options(sub, f->listing, /*skip_validation_flag=*/true, /*json_flag=*/false);
   sub->add_flag("--json", f->json,
                 "Print one JSON document on standard output (docs/command-line.md; no "
                 "progress lines)");

@@ -20,7 +20,7 @@ namespace tierlift::cli {
 namespace {
 
 struct RunFlags {
-  std::string vs, ps, size = "256x256", format = "rgba8", filter = "point", address = "wrap";
+  std::string vs, ps, size = "256x256", format = "rgba32f", filter = "point", address = "wrap";
   std::string pixel_center = "d3d9", output;
   std::vector<std::string> consts, inputs, attrs, textures, probes;
   int subtexel_bits = 0;
@@ -309,7 +309,9 @@ void register_run_command(CLI::App& app) {
   sub->add_option("--ps", f->ps, "Pixel listing (ps_1_1 .. ps_2_0); none: oD0 passes through");
   sub->add_option("--size", f->size, "Render target WxH (up to 16384x16384)")
       ->capture_default_str();
-  sub->add_option("--format", f->format, "rgba8 | rgba16f | rgba32f")->capture_default_str();
+  // rgba32f by default, as glow: lossless, so comparisons see the shader's own values.
+  sub->add_option("--format", f->format, "Render target format: rgba8 | rgba16f | rgba32f")
+      ->capture_default_str();
   sub->add_option("--const", f->consts,
                   "[vs:|ps:]cN=x,y,z,w, iN=a,b,c,d, bN=true|false, or NAME=… for a constant "
                   "named in a token stream's CTAB (no prefix: both stages)");

@@ -54,6 +54,19 @@ std::string write_output(const std::string& path, std::string_view bytes) {
   return io::write_output(path, bytes);
 }
 
+std::vector<std::pair<std::string, std::string>>
+split_defines(const std::vector<std::string>& defines) {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const std::string& d : defines) {
+    auto eq = d.find('=');
+    if (eq == std::string::npos)
+      out.emplace_back(d, "1");
+    else
+      out.emplace_back(d.substr(0, eq), d.substr(eq + 1));
+  }
+  return out;
+}
+
 LoadedListing load_listing(const std::string& path, const FrontEndOptions& options,
                            const io::ReadCap& cap) {
   LoadedListing out;
@@ -78,13 +91,7 @@ LoadedListing load_listing(const std::string& path, const FrontEndOptions& optio
     }
   }
   as::LoadOptions lopts;
-  for (const std::string& d : options.defines) {
-    auto eq = d.find('=');
-    if (eq == std::string::npos)
-      lopts.parse.defines.emplace_back(d, "1");
-    else
-      lopts.parse.defines.emplace_back(d.substr(0, eq), d.substr(eq + 1));
-  }
+  lopts.parse.defines = split_defines(options.defines);
   lopts.parse.include_dirs = options.include_dirs;
   lopts.profile = target;
   lopts.skip_validation = options.skip_validation;

@@ -33,6 +33,10 @@ void add_front_end_options(CLI::App* sub, FrontEndOptions& options, bool skip_va
 // --strict alone (commands that take only some of the front-end flags).
 void add_strict_flag(CLI::App* sub, FrontEndOptions& options);
 
+// -D NAME[=VALUE] words as (NAME, VALUE) pairs; a bare NAME is defined as 1.
+std::vector<std::pair<std::string, std::string>>
+split_defines(const std::vector<std::string>& defines);
+
 struct LoadedListing {
   ir::SourceManager sources;
   ir::DiagnosticSink diags;

@@ -2,7 +2,10 @@
 // by the modules (asm_parser, runtime, codegen).
 #include <fmt/format.h>
 
+#include <string_view>
+
 #include "commands.h"
+#include "report.h"
 
 namespace {
 
@@ -25,6 +28,28 @@ Conventions (every command; docs/command-line.md):
   --backend cpu | vulkan | both (cpu and vulkan) | all (every way: glow adds analytic).
 Exit codes: 0 ok, 1 invalid input or disagreement, 2 usage or I/O error.
 )";
+
+// The subcommand a failed parse was meant for: the first argument that names one (CLI11
+// stops at the error, so the parsed state may not say). "tierlift" when none does.
+std::string intended_command(const CLI::App& app, int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view arg = argv[i];
+    if (arg == "--") break;
+    for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+      if (sub->get_name() == arg) return sub->get_name();
+  }
+  return "tierlift";
+}
+
+// --json anywhere before "--" asks for the JSON document, even when the parse failed.
+bool json_requested(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view arg = argv[i];
+    if (arg == "--") return false;
+    if (arg == "--json") return true;
+  }
+  return false;
+}
 
 } // namespace
 
@@ -50,6 +75,13 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
+    // An unknown flag, a missing value, a bad choice: with --json the same one document
+    // every other error gives (docs/command-line.md), the usage error as a diagnostic.
+    if (json_requested(argc, argv)) {
+      tierlift::cli::Report report(intended_command(app, argc, argv), true);
+      report.error("usage", e.what());
+      return report.finish(tierlift::cli::kExitUsage);
+    }
     app.exit(e);
     return tierlift::cli::kExitUsage;
   }

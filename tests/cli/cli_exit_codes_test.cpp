@@ -291,3 +291,71 @@ TEST(ExitCodes, JsonIsOneDocumentOnStandardOutput) {
   EXPECT_EQ(nlohmann::json::parse(fmt.out)["result"]["text"].get<std::string>().rfind("ps_2_0", 0),
             0u);
 }
+
+// Errors the argument parser itself finds (unknown flag, missing value, bad choice) give
+// the same one document under --json: exit 2, the usage error as a diagnostic.
+TEST(ExitCodes, JsonParserErrorsAreOneDocument) {
+  Scratch s;
+  const std::string ps = s.file("a.psh", kValidPs);
+  struct Case {
+    std::string args, command;
+  };
+  for (const Case& c : {Case{"check --json --no-such-flag " + ps, "check"},
+                        Case{"run --json --ps " + ps + " --size", "run"},
+                        Case{"run --json --ps " + ps + " --backend nowhere", "run"},
+                        Case{"--json --no-such-flag", "tierlift"}}) {
+    auto r = run_cli(c.args);
+    EXPECT_EQ(r.exit_code, 2) << c.args;
+    EXPECT_TRUE(r.err.empty()) << c.args << ": " << r.err;
+    nlohmann::json j;
+    ASSERT_NO_THROW(j = nlohmann::json::parse(r.out)) << c.args << ": " << r.out;
+    EXPECT_EQ(j["command"], c.command) << c.args;
+    EXPECT_EQ(j["exit_code"], 2);
+    EXPECT_EQ(j["ok"], false);
+    ASSERT_EQ(j["diagnostics"].size(), 1u) << j.dump(2);
+    EXPECT_EQ(j["diagnostics"][0]["rule"], "usage");
+    EXPECT_EQ(j["diagnostics"][0]["severity"], "error");
+    EXPECT_EQ(j["diagnostics"][0]["line"], 0);
+    EXPECT_FALSE(j["diagnostics"][0]["message"].get<std::string>().empty());
+    EXPECT_TRUE(j["result"].is_object());
+  }
+  // Without --json the parser's text on standard error, nothing on standard output.
+  auto text = run_cli("check --no-such-flag " + ps);
+  EXPECT_EQ(text.exit_code, 2);
+  EXPECT_TRUE(text.out.empty()) << text.out;
+  EXPECT_NE(text.err.find("no-such-flag"), std::string::npos) << text.err;
+}
+
+// glow takes run's listing flags, for a scene's listing files and the built-in listings.
+TEST(ExitCodes, GlowTakesTheListingFlags) {
+  Scratch s;
+  // extract_sources.psh (rgb × alpha) with its mul spelled as a macro.
+  s.file("ex.psh", "ps_2_0\ndcl t0.xy\ndcl_2d s0\ntexld r0, t0, s0\nMULOP r0.rgb, r0, r0.a\n"
+                   "mov oC0, r0\n");
+  const std::string macro = s.file("m.json", R"({"image": "builtin:neon", "size": [32, 16],
+                    "glow": {"listings": {"glow/extract_sources.psh": "ex.psh"}}})");
+  EXPECT_EQ(run_cli("glow --backend cpu -q --scene " + macro).exit_code, 1);
+  auto defined = run_cli("glow --backend cpu -q --scene " + macro + " -D MULOP=mul");
+  EXPECT_EQ(defined.exit_code, 0) << defined.err;
+  // 70 movs: past ps_2_0's 64 arithmetic slots; it still draws what extract_sources does.
+  std::string big = "ps_2_0\ndcl t0.xy\ndcl_2d s0\ntexld r0, t0, s0\n";
+  for (int i = 0; i < 70; ++i) big += "mov r0, r0\n";
+  s.file("big.psh", big + "mul r0.rgb, r0, r0.a\nmov oC0, r0\n");
+  const std::string over = s.file("b.json", R"({"image": "builtin:neon", "size": [32, 16],
+                    "glow": {"listings": {"glow/extract_sources.psh": "big.psh"}}})");
+  auto refused = run_cli("glow --backend cpu -q --scene " + over);
+  EXPECT_EQ(refused.exit_code, 1);
+  EXPECT_NE(refused.err.find("[slot-limit]"), std::string::npos) << refused.err;
+  auto skipped = run_cli("glow --backend cpu -q --skip-validation --scene " + over);
+  EXPECT_EQ(skipped.exit_code, 0) << skipped.err;
+  // --profile ps_1_1 on the built-in dx9 listings: ps_1_1 has no dcl; line 4 of
+  // glow/extract_sources.psh is its first dcl, column 1.
+  const std::string plain = s.file("p.json", R"({"image": "builtin:neon", "size": [32, 16]})");
+  EXPECT_EQ(run_cli("glow --backend cpu -q --scene " + plain).exit_code, 0);
+  auto strict = run_cli("glow --backend cpu -q --profile ps_1_1 --scene " + plain);
+  EXPECT_EQ(strict.exit_code, 1);
+  EXPECT_NE(strict.err.find("glow/extract_sources.psh:4:1: error:"), std::string::npos)
+      << strict.err;
+  EXPECT_NE(strict.err.find("[not-in-profile]"), std::string::npos) << strict.err;
+  EXPECT_EQ(run_cli("glow --backend cpu -q --profile ps_9_9 --scene " + plain).exit_code, 2);
+}

@@ -91,7 +91,8 @@ TEST_F(CliRun, JsonSummary) {
   Result r = run_cli("--input v0=1,0,0,1 --size 3x2 --probe 2,1 --json");
   ASSERT_EQ(r.code, 0);
   EXPECT_NE(r.out.find("\"width\": 3"), std::string::npos);
-  EXPECT_NE(r.out.find("\"format\": \"rgba8\""), std::string::npos);
+  // One default format for run and glow: rgba32f (docs/command-line.md).
+  EXPECT_NE(r.out.find("\"format\": \"rgba32f\""), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\"timing_ms\""), std::string::npos);
 }
 

@@ -13,13 +13,29 @@ namespace {
 // Text or a D3D9 token stream (raw or a C array), told apart by content: a scene's
 // "listings" may name a .pso/.vso as well as a .psh/.vsh (as::load_listing).
 std::shared_ptr<const ir::Program> parse_and_validate(std::string text, std::string name,
-                                                      bool allow_include, std::string* error) {
+                                                      bool allow_include,
+                                                      const ListingOptions& listing,
+                                                      std::string* error) {
   ir::SourceManager sources;
   ir::DiagnosticSink diags;
   uint32_t file = sources.add(std::move(name), std::move(text));
   as::LoadOptions options;
+  options.parse.defines = listing.defines;
+  options.parse.include_dirs = listing.include_dirs;
   options.parse.allow_include = allow_include; // built-in text never reads files
+  options.skip_validation = listing.skip_validation;
   options.warnings = false; // Listing 1 declares inputs it never reads; that is the article's
+  if (listing.profile) {
+    // --profile checks the listings of its own stage only: every pass has one of each. The
+    // stage is known once the listing is read, so read it first without validating.
+    ir::SourceManager probe_sources = sources;
+    ir::DiagnosticSink probe_diags;
+    as::LoadOptions probe = options;
+    probe.skip_validation = true;
+    as::LoadResult p = as::load_listing(file, probe_sources, probe_diags, probe);
+    if (p.program && ir::stage_of(*listing.profile) == p.program->stage())
+      options.profile = listing.profile;
+  }
   as::LoadResult r = as::load_listing(file, sources, diags, options);
   if (!r.program) {
     if (error) *error = ir::render_text(diags, sources);
@@ -30,20 +46,21 @@ std::shared_ptr<const ir::Program> parse_and_validate(std::string text, std::str
 
 } // namespace
 
-std::shared_ptr<const ir::Program> builtin_listing(std::string_view path, std::string* error) {
+std::shared_ptr<const ir::Program> builtin_listing(std::string_view path, std::string* error,
+                                                   const ListingOptions& options) {
   std::optional<std::string_view> text = listings::find_embedded(path);
   if (!text) {
     if (error) *error = fmt::format("no built-in listing '{}'", path);
     return nullptr;
   }
-  return parse_and_validate(std::string(*text), std::string(path), false, error);
+  return parse_and_validate(std::string(*text), std::string(path), false, options, error);
 }
 
 std::shared_ptr<const ir::Program>
 glow_listing(std::string_view path, const std::map<std::string, std::string, std::less<>>& files,
-             std::string* error) {
+             std::string* error, const ListingOptions& options) {
   auto it = files.find(path);
-  if (it == files.end()) return builtin_listing(path, error);
+  if (it == files.end()) return builtin_listing(path, error, options);
   std::string why;
   std::optional<std::string> text = io::read_bounded(it->second, io::kListingCap, why);
   if (!text) {
@@ -56,7 +73,7 @@ glow_listing(std::string_view path, const std::map<std::string, std::string, std
   }
   // A UTF-8 byte-order mark is not part of the text; a token stream is read as it stands.
   if (text->starts_with("\xEF\xBB\xBF")) text->erase(0, 3);
-  return parse_and_validate(std::move(*text), it->second, true, error);
+  return parse_and_validate(std::move(*text), it->second, true, options, error);
 }
 
 } // namespace tierlift::effects

@@ -27,7 +27,7 @@ std::optional<Listings> load_listings(const GlowParams& p, const TierListingPath
       {&l.downsample, paths.downsample_ps}, {&l.composite, paths.composite_ps},
       {&l.blur_vs, paths.blur_vs},          {&l.blur_ps, paths.blur_ps}};
   for (const auto& [slot, path] : wanted) {
-    *slot = glow_listing(path, p.listing_files, error);
+    *slot = glow_listing(path, p.listing_files, error, p.listing_options);
     if (!*slot) return std::nullopt;
   }
   return l;

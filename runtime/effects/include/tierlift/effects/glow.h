@@ -48,6 +48,7 @@
 #include <vector>
 
 #include "tierlift/effects/blur_profile.h"
+#include "tierlift/effects/builtin_listing.h"
 #include "tierlift/effects/graph.h"
 #include "tierlift/ir/ps1x_range.h"
 
@@ -81,6 +82,8 @@ struct GlowParams {
   // Built-in listing path ("gpugems21/listing2_blur8_weighted_sum.psh", "glow/…") → a file
   // to read instead (a scene that names its own listing). Empty: every listing built in.
   std::map<std::string, std::string, std::less<>> listing_files;
+  // -D, -I, --profile, --skip-validation for every listing, built-in or from a file.
+  ListingOptions listing_options;
   int subtexel_bits = 0; // conventions of every pass: match the device (lavapipe: 8)
   // ps_1_x register range of every pass (tier dx8): the preset d3d9 unless a scene or
   // --ps1x-max names another (ir/ps1x_range.h).
