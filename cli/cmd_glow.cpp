@@ -71,6 +71,7 @@ std::optional<effects::Scene> scene_from_flags(const GlowFlags& f, Report& repor
   p.listing_options.defines = split_defines(f.listing.defines);
   p.listing_options.include_dirs = f.listing.include_dirs;
   p.listing_options.skip_validation = f.listing.skip_validation;
+  p.listing_options.strict = f.listing.strict;
   if (!f.listing.profile.empty()) p.listing_options.profile = ir::parse_profile(f.listing.profile);
   return load.scene;
 }

@@ -24,6 +24,7 @@ std::shared_ptr<const ir::Program> parse_and_validate(std::string text, std::str
   options.parse.include_dirs = listing.include_dirs;
   options.parse.allow_include = allow_include; // built-in text never reads files
   options.skip_validation = listing.skip_validation;
+  options.strict = listing.strict;
   options.warnings = false; // Listing 1 declares inputs it never reads; that is the article's
   if (listing.profile) {
     // --profile checks the listings of its own stage only: every pass has one of each. The

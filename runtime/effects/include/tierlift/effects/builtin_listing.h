@@ -25,6 +25,7 @@ struct ListingOptions {
   // stage, so the other stage keeps its own).
   std::optional<ir::Profile> profile;
   bool skip_validation = false; // fxc /Vd: a listing that parses is enough
+  bool strict = false;          // --strict: the documented rules only, no Windows leniency
 };
 
 // "gpugems21/listing2_blur8_weighted_sum.psh", "glow/downsample4.psh", …: the parsed and
