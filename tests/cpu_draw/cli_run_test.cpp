@@ -35,7 +35,8 @@ Result run_cli(const std::string& args) {
 class CliRun : public ::testing::Test {
 protected:
   void SetUp() override {
-    if (!fs::exists(TIERLIFT_CLI_PATH)) GTEST_SKIP() << "tierlift CLI not built";
+    // The CLI is built with the tests; its absence is a broken build, never a skip.
+    ASSERT_TRUE(fs::exists(TIERLIFT_CLI_PATH)) << "tierlift CLI not built: " << TIERLIFT_CLI_PATH;
     dir_ = fs::temp_directory_path() / ("tierlift_cli_run_" + std::to_string(::getpid()));
     fs::create_directories(dir_);
   }

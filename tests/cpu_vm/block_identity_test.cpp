@@ -10,6 +10,7 @@
 #include <sstream>
 #include <vector>
 
+#include "skip_policy.h"
 #include "tierlift/cpu/pixel_block.h"
 #include "vm_test_util.h"
 
@@ -191,7 +192,9 @@ TEST(BlockIdentity, ListingsInTheRepository) {
 
 TEST(BlockIdentity, SharedCorpus) {
   fs::path corpus = fs::path(TIERLIFT_SHARED_DIR) / "corpus";
-  if (!fs::exists(corpus)) GTEST_SKIP() << "no shared corpus at " << corpus;
+  if (!fs::exists(corpus))
+    TIERLIFT_SKIP_UNLESS_REQUIRED(tierlift::test::kRequireCorpus,
+                                  "no shared corpus at " + corpus.string());
   FolderResult r;
   run_folder(corpus, r);
   std::printf("corpus pixel listings: %d on the block path, %d per pixel\n", r.taken, r.refused);

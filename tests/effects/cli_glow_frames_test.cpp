@@ -18,7 +18,8 @@ namespace fs = std::filesystem;
 class CliGlowFrames : public ::testing::Test {
 protected:
   void SetUp() override {
-    if (!fs::exists(TIERLIFT_CLI_PATH)) GTEST_SKIP() << "tierlift not built";
+    // The CLI is built with the tests; its absence is a broken build, never a skip.
+    ASSERT_TRUE(fs::exists(TIERLIFT_CLI_PATH)) << "tierlift not built: " << TIERLIFT_CLI_PATH;
     dir = fs::temp_directory_path() /
           ("tierlift_frames_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
            "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());

@@ -24,7 +24,8 @@ int run_cli(const std::string& args, const fs::path& out_file) {
 class CliGlow : public ::testing::Test {
 protected:
   void SetUp() override {
-    if (!fs::exists(TIERLIFT_CLI_PATH)) GTEST_SKIP() << "tierlift not built";
+    // The CLI is built with the tests; its absence is a broken build, never a skip.
+    ASSERT_TRUE(fs::exists(TIERLIFT_CLI_PATH)) << "tierlift not built: " << TIERLIFT_CLI_PATH;
     dir = fs::temp_directory_path() /
           ("tierlift_glow_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
            "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
