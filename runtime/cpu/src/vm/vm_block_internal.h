@@ -1,0 +1,82 @@
+// What the block executor's two halves share: the plan made once per program
+// (vm_block_plan.cpp) and the lanes it runs over per block (vm_block.cpp).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "tierlift/cpu/pixel_block.h"
+#include "vm_internal.h"
+
+namespace tierlift::cpu {
+
+namespace block {
+
+constexpr int L = kBlockLanes;
+
+enum class BlockOp : uint8_t {
+  Skip, // nop, the second half of a co-issued pair (run by the first)
+  Arith,
+  ArithPair,
+  Tex,      // ps_1_1–1_3 tex
+  TexCoord, // ps_1_1–1_3 texcoord
+  TexKill,
+  TexLd14,
+  TexCrd,
+  TexLd,
+  TexLdP,
+  TexLdB,
+  Phase,
+};
+
+// How a source operand reaches the lanes.
+enum class SrcWay : uint8_t {
+  Reg,     // a register's lane arrays, swizzle applied by choosing arrays
+  Folded,  // a constant (or a read-as-zero operand), fetched and modified once per draw
+  Neg,     // a register negated after the swizzle
+  General, // per lane through vm::modify_src
+};
+
+struct BlockSrc {
+  SrcWay way = SrcWay::Folded;
+  uint16_t slot = 0;
+  uint8_t comp[4] = {0, 1, 2, 3};
+  int32_t folded = -1;
+};
+
+struct BlockStep {
+  const vm::Step* step = nullptr;
+  BlockOp op = BlockOp::Skip;
+  std::array<BlockSrc, 4> src{};
+};
+
+struct View {
+  const float* c[4];
+};
+
+} // namespace block
+
+struct PixelBlockVM::Impl {
+  vm::Prepared p;
+  std::vector<block::BlockStep> steps;
+  std::vector<LaneVec4> folded;
+  // Register components that may be read (or returned) before the program writes them: the
+  // per-pixel VM starts every register at zero, so these are zeroed per block.
+  std::vector<std::pair<uint16_t, uint8_t>> zero_components;
+  uint8_t color_reads = 0, tex_reads = 0;
+  uint32_t tex_components = 0; // bits 4r..4r+3: the components of TC(r) that matter
+  uint16_t out_slot = 0;
+};
+
+struct PixelBlockVM::Scratch {
+  LaneVec4 reg[vm::kSlotCount]{};
+  LaneVec4 src[2][4]{}; // sources modified per lane: [pair half][operand]
+  LaneVec4 dst[2]{};    // results before the store: [pair half]
+  LaneVec4 coord{};     // texture coordinates built per lane
+  Lanes zero{}, one{};
+};
+
+} // namespace tierlift::cpu

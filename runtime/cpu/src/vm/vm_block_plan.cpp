@@ -1,0 +1,191 @@
+// The block executor's plan (pixel_block.h): which instructions and sources the block path
+// takes, which constants are folded once per draw, and which register components start at
+// zero. Programs it does not take run on the per-pixel VM.
+#include <algorithm>
+#include <stdexcept>
+
+#include "tierlift/ir/numerics.h"
+#include "vm_block_internal.h"
+
+namespace tierlift::cpu {
+
+using namespace block;
+using ir::Opcode;
+
+namespace {
+
+using Impl = PixelBlockVM::Impl;
+
+std::optional<BlockOp> block_op(Opcode op, ir::OpClass cls) {
+  if (cls == ir::OpClass::Arith) return op == Opcode::Nop ? BlockOp::Skip : BlockOp::Arith;
+  switch (op) {
+  case Opcode::Tex: return BlockOp::Tex;
+  case Opcode::TexCoord: return BlockOp::TexCoord;
+  case Opcode::TexKill: return BlockOp::TexKill;
+  case Opcode::TexLd14: return BlockOp::TexLd14;
+  case Opcode::TexCrd: return BlockOp::TexCrd;
+  case Opcode::TexLd: return BlockOp::TexLd;
+  case Opcode::TexLdP: return BlockOp::TexLdP;
+  case Opcode::TexLdB: return BlockOp::TexLdB;
+  case Opcode::Phase: return BlockOp::Phase;
+  default: return std::nullopt;
+  }
+}
+
+LaneVec4 splat4(const Vec4& v) {
+  LaneVec4 out;
+  for (int c = 0; c < 4; ++c) std::fill(std::begin(out.c[c]), std::end(out.c[c]), v[c]);
+  return out;
+}
+
+// Decides how one source is read; false when the block path does not take it.
+bool plan_src(const vm::SrcDesc& s, Impl& im, const ConstantBank& bank, BlockSrc& out) {
+  switch (s.kind) {
+  case vm::SrcKind::ConstRel: return false;
+  case vm::SrcKind::Const:
+  case vm::SrcKind::Zero: {
+    vm::Invocation inv;
+    inv.prog = &im.p;
+    inv.consts = &bank;
+    out.way = SrcWay::Folded;
+    out.folded = static_cast<int32_t>(im.folded.size());
+    im.folded.push_back(splat4(vm::fetch_general(s, inv)));
+    return true;
+  }
+  case vm::SrcKind::Slot: break;
+  }
+  out.slot = s.slot;
+  for (int i = 0; i < 4; ++i) out.comp[i] = s.swz[i];
+  if (s.mod == ir::SrcMod::None && !s.clamp_const)
+    out.way = SrcWay::Reg;
+  else if (s.mod == ir::SrcMod::Neg && !s.clamp_const)
+    out.way = SrcWay::Neg;
+  else
+    out.way = SrcWay::General;
+  return true;
+}
+
+// Which register components a run may read before it writes them: the inputs run() fills
+// count as written; every other component a source may touch (all four of its swizzle, all
+// four under _dz/_dw and the other per-lane modifiers) and every component of the returned
+// register left unwritten must start at zero, as in the per-pixel VM.
+void find_zero_components(Impl& im) {
+  std::array<uint8_t, vm::kSlotCount> written{}, need{};
+  for (int i = 0; i < 2; ++i)
+    if (im.color_reads & (1u << i)) written[vm::kInputBase + i] = 0xF;
+  if (!im.p.ps11_13)
+    for (int i = 0; i < vm::kTexCount; ++i)
+      if (im.tex_reads & (1u << i)) written[vm::kTexBase + i] = 0xF;
+  auto reads = [&](const BlockStep& b) {
+    for (int k = 0; k < b.step->nsrc; ++k) {
+      const BlockSrc& s = b.src[static_cast<size_t>(k)];
+      if (s.way == SrcWay::Folded) continue;
+      if (b.step->src[static_cast<size_t>(k)].kind != vm::SrcKind::Slot) continue;
+      uint8_t comps = 0;
+      for (int c = 0; c < 4; ++c) comps |= static_cast<uint8_t>(1u << s.comp[c]);
+      if (s.way == SrcWay::General) comps = 0xF;
+      need[s.slot] |= static_cast<uint8_t>(comps & ~written[s.slot]);
+    }
+  };
+  auto writes = [&](const BlockStep& b) {
+    if (b.step->dst.kind == vm::DstKind::Slot) written[b.step->dst.slot] |= b.step->dst.mask;
+  };
+  for (size_t i = 0; i < im.steps.size(); ++i) {
+    const BlockStep& b = im.steps[i];
+    switch (b.op) {
+    case BlockOp::Skip: break;
+    case BlockOp::ArithPair: // both halves read before either writes
+      reads(b);
+      reads(im.steps[i + 1]);
+      writes(b);
+      writes(im.steps[i + 1]);
+      break;
+    case BlockOp::Phase:
+      for (int r = 0; r < 6; ++r) written[vm::kTempBase + r] |= 0x8;
+      break;
+    case BlockOp::Tex:
+    case BlockOp::TexCoord: writes(b); break;
+    case BlockOp::TexKill:
+      if (!im.p.ps11_13) reads(b);
+      break;
+    default:
+      reads(b);
+      writes(b);
+      break;
+    }
+  }
+  need[im.out_slot] |= static_cast<uint8_t>(~written[im.out_slot] & 0xF);
+  for (int s = 0; s < vm::kSlotCount; ++s)
+    for (int c = 0; c < 4; ++c)
+      if (need[s] & (1u << c))
+        im.zero_components.emplace_back(static_cast<uint16_t>(s), static_cast<uint8_t>(c));
+}
+
+} // namespace
+
+std::unique_ptr<PixelBlockVM> PixelBlockVM::create(const ir::Program& program,
+                                                   const ir::Conventions& conventions,
+                                                   const ConstantBank& constants, bool coords_2d) {
+  if (program.stage() != ir::ShaderStage::Pixel) return nullptr;
+  auto im = std::make_unique<Impl>();
+  try {
+    im->p = vm::prepare(program, conventions);
+  } catch (const std::invalid_argument&) {
+    return nullptr;
+  }
+  const vm::Prepared& p = im->p;
+  const size_t n = p.steps.size();
+  im->steps.resize(n);
+  std::vector<bool> read(vm::kSlotCount, false);
+  for (size_t i = 0; i < n; ++i) {
+    const vm::Step& st = p.steps[i];
+    BlockStep& b = im->steps[i];
+    b.step = &st;
+    const ir::Opcode op = st.ins->op;
+    std::optional<BlockOp> bop = block_op(op, ir::op_info(op).cls);
+    if (!bop || st.rows) return nullptr;
+    b.op = *bop;
+    if (b.op == BlockOp::Arith && st.exec == vm::exec_arith_pair) b.op = BlockOp::ArithPair;
+    if (st.dst.kind == vm::DstKind::AddrFloor || st.dst.kind == vm::DstKind::AddrRound)
+      return nullptr;
+    // Operands the executor reads (texkill reads its register as src[0]).
+    const bool reads_srcs = b.op != BlockOp::Tex && b.op != BlockOp::TexCoord &&
+                            !(b.op == BlockOp::TexKill && p.ps11_13) && b.op != BlockOp::Phase;
+    if (reads_srcs)
+      for (int k = 0; k < st.nsrc; ++k) {
+        if (!plan_src(st.src[static_cast<size_t>(k)], *im, constants,
+                      b.src[static_cast<size_t>(k)]))
+          return nullptr;
+        const vm::SrcDesc& sd = st.src[static_cast<size_t>(k)];
+        if (sd.kind != vm::SrcKind::Slot) continue;
+        read[sd.slot] = true;
+        if (sd.slot < vm::kTexBase || sd.slot >= vm::kTexBase + vm::kTexCount) continue;
+        // The components of t# this operand can pass on: its swizzle's, all four under a
+        // per-lane modifier (_dz/_dw read z or w); only u and v when a plain coordinate goes
+        // straight to a texture unit that reads 2D coordinates.
+        const BlockSrc& bs = b.src[static_cast<size_t>(k)];
+        uint32_t comps = 0;
+        for (int c = 0; c < 4; ++c) comps |= 1u << bs.comp[c];
+        if (bs.way == SrcWay::General) comps = 0xF;
+        if (coords_2d && k == 0 && bs.way == SrcWay::Reg &&
+            (b.op == BlockOp::TexLd || b.op == BlockOp::TexLd14))
+          comps = (1u << bs.comp[0]) | (1u << bs.comp[1]);
+        im->tex_components |= comps << (4 * (sd.slot - vm::kTexBase));
+      }
+    if (!reads_srcs && b.op != BlockOp::Phase && st.aux >= 0 && st.aux < 8)
+      im->tex_components |= 0xFu << (4 * st.aux); // TC(m), all of it
+  }
+  // The second half of a pair runs inside the first.
+  for (size_t i = 0; i + 1 < n; ++i)
+    if (im->steps[i].op == BlockOp::ArithPair) im->steps[i + 1].op = BlockOp::Skip;
+
+  for (int i = 0; i < 2; ++i)
+    if (read[vm::kInputBase + i]) im->color_reads |= static_cast<uint8_t>(1u << i);
+  for (int i = 0; i < vm::kTexCount; ++i)
+    if (im->tex_components & (0xFu << (4 * i))) im->tex_reads |= static_cast<uint8_t>(1u << i);
+  im->out_slot = static_cast<uint16_t>(p.ps1x ? vm::kTempBase : vm::kOutBase + vm::kOutC0);
+  find_zero_components(*im);
+  return std::unique_ptr<PixelBlockVM>(new PixelBlockVM(std::move(im)));
+}
+
+} // namespace tierlift::cpu
