@@ -4,7 +4,7 @@
 // (lavapipe), one command buffer a frame. It is what the lift must cost no more than.
 //
 // What a hand-written chain does and ours need not: it samples RGBA8 and RGBA16F textures
-// directly (tierlift samples an exact float copy, see runtime/vulkan/src/resident.h), and
+// directly (tierlift samples an exact float copy, see runtime/devices/vulkan/src/resident.h), and
 // a pass that replaces its target does not load it (loadOp DONT_CARE).
 #pragma once
 

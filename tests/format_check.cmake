@@ -2,7 +2,7 @@
 # (.clang-format at the root). Run `clang-format -i` on the files it names.
 file(GLOB_RECURSE _files
   ${ROOT}/ir/*.cpp ${ROOT}/ir/*.h ${ROOT}/asm_parser/*.cpp ${ROOT}/asm_parser/*.h
-  ${ROOT}/codegen/*.cpp ${ROOT}/codegen/*.h ${ROOT}/runtime/*.cpp ${ROOT}/runtime/*.h
+  ${ROOT}/codegen/*.cpp ${ROOT}/codegen/*.h ${ROOT}/runtime/*.cpp ${ROOT}/runtime/*.h ${ROOT}/effects/*.cpp ${ROOT}/effects/*.h
   ${ROOT}/listings/*.cpp ${ROOT}/listings/*.h ${ROOT}/cli/*.cpp ${ROOT}/cli/*.h
   ${ROOT}/tests/*.cpp ${ROOT}/tests/*.h ${ROOT}/bench/*.cpp ${ROOT}/bench/*.h)
 execute_process(COMMAND ${CLANG_FORMAT} --dry-run --Werror ${_files}

@@ -1,5 +1,5 @@
 // Operand fetch and store in the order of d3d9-isa.md §7, the same order the interpreter
-// uses (runtime/cpu/src/vm/vm_operands.cpp): fetch (constant defs override the uniform
+// uses (runtime/devices/cpu/src/vm/vm_operands.cpp): fetch (constant defs override the uniform
 // block, relative addressing with out-of-range → 0, ps_1_x constant clamp), pre-swizzle
 // _dz/_dw, swizzle, post-swizzle modifiers with negate last; store: shift, ps_1_x range
 // clamp, _sat, fixed-point quantise, write mask.
@@ -31,7 +31,7 @@ const ir::ConstDef* find_def(const ir::Program& p, RegFile file, uint32_t index)
 
 Id Emitter::load_const(uint32_t index, const std::optional<ir::RelAddr>& rel) {
   // NUMERICS.md rule 13: under Rounding::Llvmpipe a def's denormals load as zeros of their
-  // sign, as the interpreter loads them (runtime/cpu/src/vm/vm_program.cpp): the driver
+  // sign, as the interpreter loads them (runtime/devices/cpu/src/vm/vm_program.cpp): the driver
   // would fold def-only arithmetic with denormals kept, the same arithmetic at run time
   // flushes them.
   const bool flush = opt.conventions.rounding == ir::Rounding::Llvmpipe;
@@ -80,7 +80,7 @@ Id Emitter::load_const(uint32_t index, const std::optional<ir::RelAddr>& rel) {
 
 uint32_t Emitter::relative_limit() const {
   // Relative reads may reach any constant the device offers: 256 in a vertex shader (as
-  // the interpreter, runtime/cpu/src/vm/vm_program.cpp); outside → (0, 0, 0, 0).
+  // the interpreter, runtime/devices/cpu/src/vm/vm_program.cpp); outside → (0, 0, 0, 0).
   const uint32_t limit = ir::limits(prog.profile).float_consts;
   return ir::is_vertex(prog.profile) ? std::max<uint32_t>(limit, 256) : limit;
 }

@@ -1,4 +1,7 @@
 #include "tierlift/ir/diagnostic.h"
+#include "tierlift/ir/result.h"
+
+#include <cassert>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -101,6 +104,8 @@ std::string render_text(const Diagnostic& d, const SourceManager& sm) {
   else if (d.loc.has_offset())
     out = fmt::format("{}:+0x{:x}: {}: {}", file_name(sm, d.loc), d.loc.byte_offset,
                       severity_name(d.severity), d.message);
+  else if (!d.subject.empty())
+    out = fmt::format("{}: {}: {}", d.subject, severity_name(d.severity), d.message);
   else
     out = fmt::format("{}: {}: {}", file_name(sm, d.loc), severity_name(d.severity), d.message);
   if (!d.rule.empty()) out += fmt::format(" [{}]", d.rule);
@@ -128,7 +133,8 @@ std::string render_json(const DiagnosticSink& sink, const SourceManager& sm) {
   nlohmann::json arr = nlohmann::json::array();
   for (const Diagnostic& d : sink.all()) {
     nlohmann::json j;
-    j["file"] = file_name(sm, d.loc);
+    j["file"] =
+        d.loc.valid() || d.loc.has_offset() || d.subject.empty() ? file_name(sm, d.loc) : d.subject;
     j["line"] = d.loc.line;
     j["column"] = d.loc.col;
     j["length"] = d.loc.length;
@@ -139,6 +145,22 @@ std::string render_json(const DiagnosticSink& sink, const SourceManager& sm) {
     arr.push_back(std::move(j));
   }
   return arr.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+Failure fail(std::string subject, std::string rule, std::string message) {
+  Diagnostic d{Severity::Error, SourceLoc{}, shorten_long_words(std::move(message)),
+               std::move(rule), std::move(subject)};
+  return Failure{{std::move(d)}};
+}
+
+Failure fail_at(SourceLoc loc, std::string rule, std::string message) {
+  return Failure{{Diagnostic{
+      Severity::Error, loc, shorten_long_words(std::move(message)), std::move(rule), {}}}};
+}
+
+Failure fail(const DiagnosticSink& sink) {
+  assert(sink.has_errors());
+  return Failure{sink.all()};
 }
 
 } // namespace tierlift::ir

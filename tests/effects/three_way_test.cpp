@@ -15,13 +15,13 @@
 #include <random>
 
 #include "../vulkan/vk_test_util.h"
+#include "tierlift/analytic/blur_model.h"
+#include "tierlift/analytic/taps.h"
 #include "tierlift/effects/agreement.h"
 #include "tierlift/effects/analytic_device.h"
 #include "tierlift/effects/builtin_listing.h"
 #include "tierlift/effects/default_scene.h"
 #include "tierlift/effects/glow_run.h"
-#include "tierlift/reference/blur_model.h"
-#include "tierlift/reference/taps.h"
 
 namespace tierlift::effects {
 namespace {
@@ -248,11 +248,12 @@ void check_half_texel_rule(Tier tier, bool half_texel) {
     ASSERT_EQ(d.textures[0].sampler.address_u, cpu::AddressMode::Clamp);
     ASSERT_EQ(d.textures[0].sampler.address_v, cpu::AddressMode::Clamp);
     const img::Image& source = run.images.at(d.textures[0].texture);
-    ref::TapExtraction ex = ref::extract_taps(*d.vs, d.vs_constants, *d.ps, d.ps_constants);
+    analytic::TapExtraction ex =
+        analytic::extract_taps(*d.vs, d.vs_constants, *d.ps, d.ps_constants);
     ASSERT_TRUE(ex) << ex.error;
     ASSERT_EQ(ex.taps.size(), per_pass);
     // The intended taps are the profile's first taps along the axis (padding: weight 0).
-    const auto texel_taps = ref::intended_texel_taps(ex.taps, source.width, source.height);
+    const auto texel_taps = analytic::intended_texel_taps(ex.taps, source.width, source.height);
     for (size_t k = 0; k < per_pass && k < plan.taps.size(); ++k) {
       EXPECT_EQ(vertical ? texel_taps[k].dy : texel_taps[k].dx, plan.taps[k].offset) << k;
       EXPECT_EQ(vertical ? texel_taps[k].dx : texel_taps[k].dy, 0) << k;
@@ -260,15 +261,15 @@ void check_half_texel_rule(Tier tier, bool half_texel) {
     }
     // The models are bilinear with clamp: the pass's sampler without the half texel, and with
     // it equal to the point read, since every tap lies on a texel centre.
-    ref::PassModel m;
+    analytic::PassModel m;
     m.conventions = plan.graph.conventions;
     m.target_format = img::Format::RGBA32F;
-    img::LoadResult conv = ref::discrete_convolution(texel_taps, source, m);
+    img::LoadResult conv = analytic::discrete_convolution(texel_taps, source, m);
     ASSERT_TRUE(conv) << conv.error;
     const img::Image& result = run.run.passes[index].result;
     ASSERT_EQ(result.rgba.size(), conv.image->rgba.size());
     std::string err;
-    auto pred = ref::predict_corner_difference(ex.taps, source, m, &err);
+    auto pred = analytic::predict_corner_difference(ex.taps, source, m, &err);
     ASSERT_TRUE(pred) << err;
     double worst = 0;
     for (size_t v = 0; v < result.rgba.size(); ++v) {

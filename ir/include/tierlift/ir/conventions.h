@@ -15,7 +15,7 @@ enum class PixelCenter {
 // the def denormals the code generator loads flushed under Llvmpipe).
 enum class Rounding {
   // Float plane equations a0 + dadx·x + dady·y evaluated with FMA, times 1/w; bilinear
-  // weights frac(fl32(u·N) − 0.5) in float, lerps with FMA (runtime/cpu/.../draw.h).
+  // weights frac(fl32(u·N) − 0.5) in float, lerps with FMA (runtime/devices/cpu/.../draw.h).
   // Denormals flushed in and out of every operation, def denormals loaded as zeros, on the
   // CPU device and in the emitted SPIR-V (NUMERICS.md rule 13).
   Llvmpipe,

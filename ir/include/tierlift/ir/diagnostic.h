@@ -16,6 +16,9 @@ struct Diagnostic {
   SourceLoc loc;
   std::string message;
   std::string rule; // short id of the rule broken, e.g. "slot-limit", "read-before-write"
+  // What the message is about when it has no position in a source file (a path, "vulkan"):
+  // rendered in the file name's place.
+  std::string subject;
 };
 
 // A message with every word (run of non-blanks) longer than kMaxEchoedWord bytes cut to
@@ -28,13 +31,13 @@ std::string shorten_long_words(std::string message);
 class DiagnosticSink {
 public:
   void error(SourceLoc loc, std::string rule, std::string message) {
-    add({Severity::Error, loc, std::move(message), std::move(rule)});
+    add({Severity::Error, loc, std::move(message), std::move(rule), {}});
   }
   void warning(SourceLoc loc, std::string rule, std::string message) {
-    add({Severity::Warning, loc, std::move(message), std::move(rule)});
+    add({Severity::Warning, loc, std::move(message), std::move(rule), {}});
   }
   void note(SourceLoc loc, std::string rule, std::string message) {
-    add({Severity::Note, loc, std::move(message), std::move(rule)});
+    add({Severity::Note, loc, std::move(message), std::move(rule), {}});
   }
   void add(Diagnostic d) {
     d.message = shorten_long_words(std::move(d.message));

@@ -1,0 +1,77 @@
+// What runs an effect graph's passes: the CPU device (the interpreter, cpu::draw), the
+// Vulkan device (SPIR-V on lavapipe) and the analytic device (the same graph as math, in
+// double; analytic_device.h). A device owns the graph's textures for the length of a run:
+// inputs are handed over once (begin_run), every pass renders into a texture the device
+// keeps (on Vulkan: device memory, no readback between passes), and images come back only
+// when asked for (read_texture: the agreement table, the files, the end of the run).
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "tierlift/cpu/draw.h"
+#include "tierlift/effects/graph.h"
+#include "tierlift/image/image.h"
+
+namespace tierlift::vulkan {
+class Device;
+}
+
+namespace tierlift::effects {
+
+using ImageMap = std::map<std::string, img::Image, std::less<>>;
+
+class PassDevice {
+public:
+  virtual ~PassDevice() = default;
+  virtual std::string name() const = 0; // "cpu", "vulkan", "analytic"
+  // Starts a run of `graph` (already checked by check_graph): every texture is created at
+  // its declared size and format; inputs take their image from `inputs` (already at the
+  // declared size and stored in the declared format); every other texture starts at zero.
+  // Empty string on success, else why. A device runs one graph at a time; begin_run drops
+  // what an earlier run left.
+  virtual std::string begin_run(const EffectGraph& graph, const ImageMap& inputs) = 0;
+  // Runs one pass of that graph: it samples the textures it binds and renders into its
+  // target with its blend mode; the target's format is the store rule.
+  virtual std::string run_pass(const PassDesc& pass) = 0;
+  // Waits until every pass run so far is done (a device may queue passes: Vulkan records a
+  // frame's passes into one command buffer). Empty string on success, else why.
+  virtual std::string finish() { return {}; }
+  // A texture's current contents (in its declared format). Empty string on success.
+  virtual std::string read_texture(const std::string& name, img::Image& out) = 0;
+  // RGBA8 textures only, and only a device that knows its exact values (the analytic one):
+  // one entry per pixel, 1 where a store of it was a proven rounding tie (analytic::
+  // LinearPassInput::slack: the fp32 value x·255 exactly half-way between two steps, where
+  // D3D9 and Vulkan allow either), else 0. compare_runs counts a difference of one step
+  // there as agreement. False: no mask (every pixel determined).
+  virtual bool rounding_midpoints(const std::string& /*texture*/,
+                                  std::vector<uint8_t>& /*mask*/) const {
+    return false;
+  }
+};
+
+class CpuPassDevice final : public PassDevice {
+public:
+  // `executor`: cpu::Executor::Scalar forces the per-pixel VM (benchmarks' "before").
+  explicit CpuPassDevice(unsigned threads = 0, cpu::Executor executor = cpu::Executor::Auto)
+      : threads_(threads), executor_(executor) {}
+  std::string name() const override { return "cpu"; }
+  std::string begin_run(const EffectGraph& graph, const ImageMap& inputs) override;
+  std::string run_pass(const PassDesc& pass) override;
+  std::string read_texture(const std::string& name, img::Image& out) override;
+
+private:
+  unsigned threads_;
+  cpu::Executor executor_;
+  const EffectGraph* graph_ = nullptr;
+  ImageMap images_;
+  ImageMap placeholders_; // an empty image per texture name, for make_pass
+};
+
+// Wraps a device the caller owns (and keeps alive). Only when tierlift_vulkan is built.
+std::unique_ptr<PassDevice> make_vulkan_pass_device(vulkan::Device& device);
+
+} // namespace tierlift::effects

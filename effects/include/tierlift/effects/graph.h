@@ -1,0 +1,67 @@
+// An effect graph: named textures and an ordered list of full-screen passes over them.
+// Each pass is a legacy vertex + pixel listing (ir::Program) with its constants, the
+// textures it samples (by name, with sampler state), the texture it renders into and the
+// blend mode. A device runs the passes in order (run_graph.h); images live in a map
+// between passes. The graph says nothing about which device runs it.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "tierlift/cpu/draw.h"
+#include "tierlift/image/image.h"
+#include "tierlift/ir/conventions.h"
+#include "tierlift/ir/program.h"
+
+namespace tierlift::effects {
+
+struct TextureDesc {
+  std::string name;
+  uint32_t width = 0, height = 0;
+  img::Format format = img::Format::RGBA32F;
+  // Inputs are supplied by the caller before the run (e.g. the scene); every other texture
+  // starts as zero when a pass first renders into it.
+  bool input = false;
+};
+
+struct TextureBind {
+  uint32_t stage = 0; // sampler stage s# (ps_2_0) / texture stage (ps_1_x)
+  std::string texture;
+  cpu::SamplerState sampler;
+};
+
+// What the analytic device computes for a pass. Linear: the pixel is a weighted sum of
+// texture reads, and the taps (texture, coordinate scale and offset, weight) are read off
+// the pass's own listings and constants (analytic::extract_taps), never from the generator's
+// parameters. MaskByAlpha: the one non-linear helper, rgb × alpha of a single read at the
+// pass's sample point (glow source extraction); alpha passes through.
+enum class AnalyticForm { Linear, MaskByAlpha };
+
+struct PassDesc {
+  std::string name; // unique, e.g. "blur_h.1"
+  AnalyticForm analytic = AnalyticForm::Linear;
+  std::shared_ptr<const ir::Program> vs, ps;
+  std::vector<cpu::Vec4> vs_constants, ps_constants; // c0, c1, …
+  std::vector<TextureBind> textures;
+  std::string target;
+  cpu::BlendMode blend = cpu::BlendMode::Replace;
+};
+
+struct EffectGraph {
+  std::vector<TextureDesc> textures;
+  std::vector<PassDesc> passes;
+  ir::Conventions conventions; // for every pass (subtexel_bits: match the device)
+
+  const TextureDesc* find_texture(std::string_view name) const;
+};
+
+// Empty when the graph is well formed; otherwise the first problem: duplicate or unknown
+// texture or pass names, a pass without both listings, a pass that reads its own target,
+// sizes of 0 or above img::kMaxDimension, a sampler stage bound twice, an input used as a
+// target.
+std::string check_graph(const EffectGraph& graph);
+
+} // namespace tierlift::effects

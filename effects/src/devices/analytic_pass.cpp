@@ -1,0 +1,127 @@
+// One pass of an effect graph as math (analytic_device.h): the pass's listings read
+// symbolically (analytic::extract_taps / extract_reads), the bound textures and sampler states,
+// the graph's conventions and the target's size, format and blend handed to analytic::.
+#include "analytic_pass.h"
+
+#include <fmt/format.h>
+
+#include "tierlift/analytic/linear_pass.h"
+#include "tierlift/analytic/taps.h"
+
+namespace tierlift::effects::detail {
+namespace {
+
+analytic::Address address(cpu::AddressMode m) {
+  switch (m) {
+  case cpu::AddressMode::Wrap: return analytic::Address::Wrap;
+  case cpu::AddressMode::Mirror: return analytic::Address::Mirror;
+  case cpu::AddressMode::Clamp: return analytic::Address::Clamp;
+  case cpu::AddressMode::Border: return analytic::Address::Border;
+  case cpu::AddressMode::MirrorOnce: return analytic::Address::MirrorOnce;
+  }
+  return analytic::Address::Wrap;
+}
+
+// The parts of a pass that do not depend on its form: stages, model, blend, ps_1_x rule.
+std::string prepare(const PassDesc& pass, const EffectGraph& graph, const ImageMap& images,
+                    analytic::LinearPassInput& in) {
+  const TextureDesc* target = graph.find_texture(pass.target);
+  if (!target) return fmt::format("pass '{}': unknown target '{}'", pass.name, pass.target);
+  for (const TextureBind& b : pass.textures) {
+    auto it = images.find(b.texture);
+    if (it == images.end())
+      return fmt::format("pass '{}': texture '{}' has no image", pass.name, b.texture);
+    in.textures.push_back({b.stage, &it->second, sampler_model(b.sampler)});
+  }
+  in.model.conventions = graph.conventions;
+  // RGBA8 midpoints: the graph's devices round them as lavapipe does (to even) under
+  // Rounding::Llvmpipe and by img::quantize (half up) under Exact; the model states the
+  // same convention (D3D9 and Vulkan leave ties open, so neither is an error).
+  in.model.unorm8_ties = graph.conventions.rounding == ir::Rounding::Llvmpipe
+                             ? analytic::Unorm8Ties::ToEven
+                             : analytic::Unorm8Ties::HalfUp;
+  in.model.target_width = target->width;
+  in.model.target_height = target->height;
+  in.model.target_format = target->format;
+  switch (pass.blend) {
+  case cpu::BlendMode::Replace: in.blend = analytic::Blend::Replace; break;
+  case cpu::BlendMode::OneOne: in.blend = analytic::Blend::OneOne; break;
+  default:
+    return fmt::format("pass '{}': the analytic model knows Replace and ONE/ONE blending only",
+                       pass.name);
+  }
+  auto dst = images.find(pass.target);
+  if (dst == images.end())
+    return fmt::format("pass '{}': target '{}' has no image", pass.name, pass.target);
+  in.destination = &dst->second;
+  in.ps1x_clamp = ir::is_ps1x(pass.ps->profile);
+  if (in.ps1x_clamp && graph.conventions.ps1x_fixed_bits != 0)
+    return fmt::format("pass '{}': ps_1_x fixed-point emulation ({} bits) is not modelled",
+                       pass.name, graph.conventions.ps1x_fixed_bits);
+  if (std::string e = analytic::check_position_passthrough(*pass.vs); !e.empty())
+    return fmt::format("cannot model pass '{}' (a full-screen quad): vertex listing: {}", pass.name,
+                       e);
+  return "";
+}
+
+} // namespace
+
+analytic::SamplerModel sampler_model(const cpu::SamplerState& s) {
+  analytic::SamplerModel m;
+  m.filter = s.filter == cpu::Filter::Linear ? analytic::Filter::Linear : analytic::Filter::Point;
+  m.address_u = address(s.address_u);
+  m.address_v = address(s.address_v);
+  for (int c = 0; c < 4; ++c) m.border[c] = s.border_color[c];
+  return m;
+}
+
+std::string run_analytic_pass(const PassDesc& pass, const EffectGraph& graph, ImageMap& images,
+                              MidpointMasks& midpoints, std::vector<std::string>* notes) {
+  if (!pass.vs || !pass.ps)
+    return fmt::format("pass '{}': needs a vertex and a pixel listing", pass.name);
+  analytic::LinearPassInput in;
+  if (std::string e = prepare(pass, graph, images, in); !e.empty()) return e;
+
+  // RGBA8: the pixels whose store is a proven rounding tie (linear_pass.h, `slack`); ONE/ONE
+  // keeps the ties of the passes summed into the target before.
+  std::vector<uint8_t> mask;
+  if (in.model.target_format == img::Format::RGBA8) {
+    const size_t size = size_t(in.model.target_width) * in.model.target_height;
+    auto it = midpoints.find(pass.target);
+    if (in.blend == analytic::Blend::OneOne && it != midpoints.end() && it->second.size() == size)
+      mask = it->second;
+    else
+      mask.assign(size, 0);
+    in.slack = &mask;
+  }
+  std::vector<std::string> pass_notes;
+  img::LoadResult result;
+  if (pass.analytic == AnalyticForm::Linear) {
+    analytic::TapExtraction ex =
+        analytic::extract_taps(*pass.vs, pass.vs_constants, *pass.ps, pass.ps_constants);
+    if (!ex)
+      return fmt::format("cannot model pass '{}' as a weighted sum of reads: {}", pass.name,
+                         ex.error);
+    pass_notes = ex.notes;
+    result = analytic::linear_pass(ex.taps, in, &pass_notes);
+  } else {
+    analytic::ReadExtraction ex = analytic::extract_reads(*pass.vs, pass.vs_constants, *pass.ps);
+    if (!ex)
+      return fmt::format("cannot model pass '{}' as rgb × alpha of one read: {}", pass.name,
+                         ex.error);
+    if (ex.reads.size() != 1)
+      return fmt::format("cannot model pass '{}' as rgb × alpha of one read: the pixel listing "
+                         "takes {} different reads",
+                         pass.name, ex.reads.size());
+    result = analytic::mask_by_alpha_pass(ex.reads[0], in, &pass_notes);
+  }
+  if (!result) return fmt::format("pass '{}': {}", pass.name, result.error);
+  images[pass.target] = std::move(*result.image);
+  if (in.slack) midpoints[pass.target] = std::move(mask);
+  if (notes)
+    for (const std::string& n : pass_notes)
+      notes->push_back(fmt::format("pass '{}': {}", pass.name, n));
+  return "";
+}
+
+} // namespace tierlift::effects::detail

@@ -1,0 +1,83 @@
+// The one error style of tierlift's libraries: a function that can fail returns
+// Result<T> (a value, or the diagnostics that say why there is none) or Status (Result of
+// nothing). Diagnostics that point into a listing or a scene carry a SourceLoc; the others (a
+// file that cannot be read, a device that cannot start) name their subject instead. The CLI
+// renders them (ir::render_text / render_json) and turns them into exit codes; no library
+// prints, throws across its interface, or reports through an out-parameter string.
+#pragma once
+
+#include <cassert>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "tierlift/ir/diagnostic.h"
+
+namespace tierlift::ir {
+
+// What a failed call hands back: at least one error, possibly warnings and notes beside it.
+struct Failure {
+  std::vector<Diagnostic> diagnostics;
+};
+
+// A failure with one error. `subject` is what the message is about when there is no
+// position (a path, "vulkan"); `rule` the short id of the rule broken ("io", "format", …).
+Failure fail(std::string subject, std::string rule, std::string message);
+// A failure with one positioned error.
+Failure fail_at(SourceLoc loc, std::string rule, std::string message);
+// Everything a sink collected (it must hold at least one error).
+Failure fail(const DiagnosticSink& sink);
+
+template <class T> class [[nodiscard]] Result {
+public:
+  Result(T value) : value_(std::move(value)) {}
+  Result(Failure failure) : diagnostics_(std::move(failure.diagnostics)) {
+    assert(!diagnostics_.empty());
+  }
+
+  bool ok() const { return value_.has_value(); }
+  explicit operator bool() const { return ok(); }
+
+  T& value() & {
+    assert(ok());
+    return *value_;
+  }
+  const T& value() const& {
+    assert(ok());
+    return *value_;
+  }
+  T&& value() && {
+    assert(ok());
+    return std::move(*value_);
+  }
+  T& operator*() & { return value(); }
+  const T& operator*() const& { return value(); }
+  T* operator->() { return &value(); }
+  const T* operator->() const { return &value(); }
+
+  // Errors of a failure; warnings and notes of a success or a failure.
+  const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
+  void add(Diagnostic d) { diagnostics_.push_back(std::move(d)); }
+  // The first error's message, for callers that wrap it into a diagnostic of their own.
+  std::string message() const {
+    for (const Diagnostic& d : diagnostics_)
+      if (d.severity == Severity::Error) return d.message;
+    return {};
+  }
+  // The failure, to hand on to this function's own caller (only when !ok()).
+  Failure failure() const& { return Failure{diagnostics_}; }
+  Failure failure() && { return Failure{std::move(diagnostics_)}; }
+
+private:
+  std::optional<T> value_;
+  std::vector<Diagnostic> diagnostics_;
+};
+
+struct Ok {};
+using Status = Result<Ok>;
+inline Status ok_status() {
+  return Status(Ok{});
+}
+
+} // namespace tierlift::ir

@@ -1,0 +1,92 @@
+// Helpers shared by the vertex and pixel evaluators, and the public extract_taps().
+#include <algorithm>
+#include <fmt/format.h>
+
+#include "linear_forms.h"
+
+namespace tierlift::analytic {
+
+namespace detail {
+
+std::string where(const ir::SourceLoc& loc) {
+  if (!loc.valid()) return "(no position)";
+  return fmt::format("line {}:{}", loc.line, loc.col);
+}
+
+std::array<double, 4> constant_value(const ir::Program& p, const std::vector<Vec4>& api,
+                                     uint32_t index, bool ps1x_clamp, bool* clamped) {
+  std::array<double, 4> v{};
+  if (index < api.size())
+    for (int c = 0; c < 4; ++c) v[c] = api[index][c];
+  for (const ir::ConstDef& d : p.defs)
+    if (d.file == ir::RegFile::Const && d.index == index)
+      for (int c = 0; c < 4; ++c) v[c] = d.f(c);
+  if (ps1x_clamp)
+    for (double& x : v) {
+      double y = std::clamp(x, -1.0, 1.0);
+      if (y != x && clamped) *clamped = true;
+      x = y;
+    }
+  return v;
+}
+
+std::optional<AffineMod> affine_modifier(ir::SrcMod mod) {
+  using M = ir::SrcMod;
+  switch (mod) {
+  case M::None: return AffineMod{1, 0};
+  case M::Neg: return AffineMod{-1, 0};
+  case M::Bias: return AffineMod{1, -0.5};
+  case M::BiasNeg: return AffineMod{-1, 0.5};
+  case M::Bx2: return AffineMod{2, -1};
+  case M::Bx2Neg: return AffineMod{-2, 1};
+  case M::Comp: return AffineMod{-1, 1};
+  case M::X2: return AffineMod{2, 0};
+  case M::X2Neg: return AffineMod{-2, 0};
+  default: return std::nullopt; // _dz, _dw, _abs, ! are not affine
+  }
+}
+
+std::string place_taps(const CoordForms& coords, std::vector<Tap>& taps) {
+  for (Tap& t : taps) {
+    if (t.texcoord >= coords.coord.size() || !coords.coord[t.texcoord])
+      return fmt::format("vertex listing: oT{} (sampled by the pixel listing) is not the "
+                         "texcoord input times a scale plus a constant: {}",
+                         t.texcoord,
+                         t.texcoord < 8 ? coords.why_not[t.texcoord] : "no such register");
+    t.offset = coords.coord[t.texcoord]->offset;
+    t.scale = coords.coord[t.texcoord]->scale;
+    t.corners = coords.coord[t.texcoord]->corner;
+  }
+  return "";
+}
+
+} // namespace detail
+
+TapExtraction extract_taps(const ir::Program& vs, const std::vector<Vec4>& vs_consts,
+                           const ir::Program& ps, const std::vector<Vec4>& ps_consts) {
+  TapExtraction out;
+  if (!ir::is_vertex(vs.profile) || !ir::is_pixel(ps.profile)) {
+    out.error = "extract_taps needs a vertex listing and a pixel listing";
+    return out;
+  }
+  detail::CoordForms coords = detail::evaluate_coords(vs, vs_consts);
+  if (!coords.error.empty()) {
+    out.error = "vertex listing: " + coords.error;
+    return out;
+  }
+  detail::SumForm sum = detail::evaluate_sum(ps, ps_consts);
+  if (!sum.error.empty()) {
+    out.error = "pixel listing: " + sum.error;
+    return out;
+  }
+  if (std::string e = detail::place_taps(coords, sum.taps); !e.empty()) {
+    out.error = e;
+    return out;
+  }
+  out.taps = std::move(sum.taps);
+  out.notes = std::move(sum.notes);
+  out.texcoord_input = coords.texcoord_input;
+  return out;
+}
+
+} // namespace tierlift::analytic

@@ -1,0 +1,58 @@
+// Internal to tap extraction: symbolic evaluation of the two listings.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tierlift/analytic/taps.h"
+#include "tierlift/ir/program.h"
+
+namespace tierlift::analytic::detail {
+
+// "line 12:5" of an instruction or operand (listings from bytecode have no lines).
+std::string where(const ir::SourceLoc& loc);
+
+// c# as the shader sees it: a `def` in the listing wins over the API-set value; missing
+// registers read 0. `clamped` is set when ps_1_x clamping to [-1, 1] changed a component.
+std::array<double, 4> constant_value(const ir::Program& p, const std::vector<Vec4>& api,
+                                     uint32_t index, bool ps1x_clamp, bool* clamped);
+
+// Source modifiers that are affine maps x → scale·x + bias (d3d9-isa.md §4.2).
+struct AffineMod {
+  double scale = 1, bias = 0;
+};
+std::optional<AffineMod> affine_modifier(ir::SrcMod mod);
+
+// Vertex side: oT# = texcoord input · scale + constant, per coordinate register and axis.
+struct CoordAffine {
+  std::array<double, 2> scale{1, 1}, offset{};  // .xy
+  std::array<std::array<float, 2>, 4> corner{}; // .xy at the quad's corners, in fp32 (Tap)
+};
+struct CoordForms {
+  uint32_t texcoord_input = 0;
+  std::array<std::optional<CoordAffine>, 8> coord; // per oT#
+  std::array<std::string, 8> why_not;              // when coord is empty: the reason
+  std::string error;                               // fatal: the listing cannot be evaluated at all
+};
+CoordForms evaluate_coords(const ir::Program& vs, const std::vector<Vec4>& consts);
+
+// Pixel side: the output as Σ weight_k · sample_k.
+struct SumForm {
+  std::vector<Tap> taps; // offset not filled in
+  std::vector<std::string> notes;
+  std::string error;
+};
+SumForm evaluate_sum(const ir::Program& ps, const std::vector<Vec4>& consts);
+
+// Fills each tap's offset and scale from its oT#'s form; an error when that oT# has none.
+std::string place_taps(const CoordForms& coords, std::vector<Tap>& taps);
+
+// The (texcoord, sampler) a sampling instruction reads, nullopt for an instruction that
+// samples nothing, or *error (naming the instruction) for a read the model cannot place
+// (dependent or modified coordinates, texture ops other than plain samples).
+std::optional<std::pair<uint32_t, uint32_t>> sample_key(const ir::Instruction& in,
+                                                        std::string* error);
+
+} // namespace tierlift::analytic::detail

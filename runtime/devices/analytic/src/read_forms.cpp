@@ -1,0 +1,46 @@
+// The texture reads of a pixel listing, placed by the vertex listing's coordinate forms,
+// for passes whose output is not a weighted sum (the analytic device's rgb × alpha form).
+#include <algorithm>
+
+#include "linear_forms.h"
+
+namespace tierlift::analytic {
+
+ReadExtraction extract_reads(const ir::Program& vs, const std::vector<Vec4>& vs_consts,
+                             const ir::Program& ps) {
+  ReadExtraction out;
+  if (!ir::is_vertex(vs.profile) || !ir::is_pixel(ps.profile)) {
+    out.error = "extract_reads needs a vertex listing and a pixel listing";
+    return out;
+  }
+  detail::CoordForms coords = detail::evaluate_coords(vs, vs_consts);
+  if (!coords.error.empty()) {
+    out.error = "vertex listing: " + coords.error;
+    return out;
+  }
+  std::vector<Tap> reads;
+  for (const ir::Instruction& in : ps.code) {
+    std::string error;
+    auto key = detail::sample_key(in, &error);
+    if (!error.empty()) {
+      out.error = "pixel listing: " + error;
+      return out;
+    }
+    if (!key) continue;
+    auto same = [&](const Tap& t) { return t.texcoord == key->first && t.sampler == key->second; };
+    if (std::none_of(reads.begin(), reads.end(), same)) {
+      Tap t;
+      t.texcoord = key->first;
+      t.sampler = key->second;
+      reads.push_back(t);
+    }
+  }
+  if (std::string e = detail::place_taps(coords, reads); !e.empty()) {
+    out.error = e;
+    return out;
+  }
+  out.reads = std::move(reads);
+  return out;
+}
+
+} // namespace tierlift::analytic

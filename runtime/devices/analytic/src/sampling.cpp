@@ -1,0 +1,216 @@
+// Sample positions and filtered reads of the analytic model, in double.
+#include <cmath>
+
+#include "tierlift/analytic/blur_model.h"
+
+namespace tierlift::analytic {
+
+std::array<double, 2> pixel_uv(uint32_t i, uint32_t j, uint32_t width, uint32_t height,
+                               const PassModel& model) {
+  const double shift = model.conventions.pixel_center == ir::PixelCenter::D3D9 ? 0.0 : 0.5;
+  double x = (i + shift) / width, y = (j + shift) / height;
+  return {model.u0 + (model.u1 - model.u0) * x, model.v0 + (model.v1 - model.v0) * y};
+}
+
+int64_t address_texel(int64_t i, int64_t n, Address mode) {
+  auto mod = [](int64_t a, int64_t m) { return ((a % m) + m) % m; };
+  auto mirror = [](int64_t k) { return k >= 0 ? k : -(1 + k); };
+  switch (mode) {
+  case Address::Wrap: return mod(i, n);
+  case Address::Mirror: {
+    int64_t t = mod(i, 2 * n) - n;
+    return (n - 1) - mirror(t);
+  }
+  case Address::Clamp: return i < 0 ? 0 : (i >= n ? n - 1 : i);
+  case Address::Border: return (i < 0 || i >= n) ? -1 : i;
+  case Address::MirrorOnce: {
+    int64_t m = mirror(i);
+    return m >= n ? n - 1 : m;
+  }
+  }
+  return -1;
+}
+
+namespace {
+
+// Far outside any texture, yet safe to convert to int64 and to add small offsets to.
+constexpr double kPositionLimit = 1e12;
+
+double limit_position(double p) {
+  if (std::isnan(p)) return 0.0;
+  return std::fmin(std::fmax(p, -kPositionLimit), kPositionLimit);
+}
+
+std::array<double, 4> texel(const img::Image& t, int64_t x, int64_t y, const SamplerModel& s) {
+  int64_t ax = address_texel(x, t.width, s.address_u);
+  int64_t ay = address_texel(y, t.height, s.address_v);
+  if (ax < 0 || ay < 0) return s.border;
+  const auto px = static_cast<uint32_t>(ax), py = static_cast<uint32_t>(ay);
+  return {texel_value(t, px, py, 0), texel_value(t, px, py, 1), texel_value(t, px, py, 2),
+          texel_value(t, px, py, 3)};
+}
+
+// Texel-space position p = u·N − 0.5 split into the lower texel and the fraction.
+struct Split {
+  int64_t i0;
+  double frac;
+};
+Split split(double p, int subtexel_bits, double snap) {
+  p = limit_position(p);
+  // On a texel centre (integer) or half-way between two (integer + ½), within `snap`: read
+  // exactly there (see blur_model.h).
+  const double nearest = std::nearbyint(2.0 * p) / 2.0;
+  if (std::fabs(p - nearest) <= snap) p = nearest;
+  double f0 = std::floor(p);
+  double frac = p - f0;
+  auto i0 = static_cast<int64_t>(f0);
+  if (subtexel_bits > 0) {
+    double steps = std::ldexp(1.0, subtexel_bits);
+    frac = std::nearbyint(frac * steps) / steps;
+    if (frac >= 1.0) {
+      ++i0;
+      frac = 0.0;
+    }
+  }
+  return {i0, frac};
+}
+
+} // namespace
+
+double snap_tolerance(uint32_t texels) {
+  return std::fmax(1e-9, std::ldexp(double(texels), -21));
+}
+
+std::array<double, 4> sample(const img::Image& t, double u, double v, const SamplerModel& s,
+                             int subtexel_bits) {
+  if (t.width == 0 || t.height == 0) return {0, 0, 0, 1};
+  const double w = t.width, h = t.height;
+  if (s.filter == Filter::Point) {
+    // floor(u·N): only a position within 1e-9 of a texel edge is moved onto it.
+    Split sx = split(u * w, 0, 1e-9), sy = split(v * h, 0, 1e-9);
+    return texel(t, sx.i0, sy.i0, s);
+  }
+  Split sx = split(u * w - 0.5, subtexel_bits, snap_tolerance(t.width)),
+        sy = split(v * h - 0.5, subtexel_bits, snap_tolerance(t.height));
+  std::array<double, 4> out{};
+  const double wx[2] = {1.0 - sx.frac, sx.frac}, wy[2] = {1.0 - sy.frac, sy.frac};
+  for (int b = 0; b < 2; ++b)
+    for (int a = 0; a < 2; ++a) {
+      double wgt = wx[a] * wy[b];
+      if (wgt == 0.0) continue; // keeps exact reads exact (and NaN texels out of 0-weight)
+      auto tx = texel(t, sx.i0 + a, sy.i0 + b, s);
+      for (int c = 0; c < 4; ++c) out[c] += wgt * tx[c];
+    }
+  return out;
+}
+
+} // namespace tierlift::analytic
+
+namespace tierlift::analytic {
+namespace {
+
+// One axis of a bilinear read at the devices' float coordinate: the position x = fl32(u·N)
+// − ½ in fp32 (clamp addressing clamps the coordinate first: min(u·N, N), NaN → N, then
+// max(x, 0), so the index stays in the texture), its lower texel and the fraction x − ⌊x⌋,
+// which is exact in fp32; the fraction quantised to subtexel_bits by rounding to nearest.
+struct FloatSplit {
+  int64_t i0;
+  double frac;
+};
+FloatSplit float_split(float u, uint32_t n, Address mode, int subtexel_bits) {
+  const float size = static_cast<float>(n);
+  float x = u * size;
+  if (mode == Address::Clamp) {
+    x = x < size ? x : size;
+    x = x - 0.5f;
+    x = x > 0.0f ? x : 0.0f;
+  } else {
+    x = x - 0.5f;
+    constexpr float kLimit = 1099511627776.0f; // 2^40, far outside any address period
+    if (std::isnan(x)) x = 0.0f;
+    x = std::fmin(std::fmax(x, -kLimit), kLimit);
+  }
+  const float f = std::floor(x);
+  double frac = double(x) - double(f);
+  if (subtexel_bits > 0) {
+    const double steps = std::ldexp(1.0, subtexel_bits > 30 ? 30 : subtexel_bits);
+    frac = std::nearbyint(frac * steps) / steps; // may reach 1: all weight on texel i0 + 1
+  }
+  return {static_cast<int64_t>(f), frac};
+}
+
+// Point reads: texel ⌊fl32(u·N)⌋ (NaN → 0, far positions limited as above).
+int64_t float_point(float u, uint32_t n) {
+  float x = u * static_cast<float>(n);
+  constexpr float kLimit = 1099511627776.0f;
+  if (std::isnan(x)) x = 0.0f;
+  x = std::fmin(std::fmax(x, -kLimit), kLimit);
+  return static_cast<int64_t>(std::floor(x));
+}
+
+} // namespace
+
+std::array<double, 4> sample_at_float(const img::Image& t, float u, float v, const SamplerModel& s,
+                                      int subtexel_bits, std::array<double, 4>* texel_max) {
+  if (texel_max) *texel_max = {0, 0, 0, 0};
+  auto note = [texel_max](const std::array<double, 4>& tx) {
+    if (texel_max)
+      for (int c = 0; c < 4; ++c) (*texel_max)[c] = std::fmax((*texel_max)[c], std::fabs(tx[c]));
+  };
+  if (t.width == 0 || t.height == 0) return {0, 0, 0, 1};
+  if (s.filter == Filter::Point) {
+    const auto tx = texel(t, float_point(u, t.width), float_point(v, t.height), s);
+    note(tx);
+    return tx;
+  }
+  const FloatSplit sx = float_split(u, t.width, s.address_u, subtexel_bits);
+  const FloatSplit sy = float_split(v, t.height, s.address_v, subtexel_bits);
+  std::array<double, 4> out{};
+  const double wx[2] = {1.0 - sx.frac, sx.frac}, wy[2] = {1.0 - sy.frac, sy.frac};
+  for (int b = 0; b < 2; ++b)
+    for (int a = 0; a < 2; ++a) {
+      const double wgt = wx[a] * wy[b];
+      if (wgt == 0.0) continue; // keeps exact reads exact (and NaN texels out of 0-weight)
+      const auto tx = texel(t, sx.i0 + a, sy.i0 + b, s);
+      note(tx);
+      for (int c = 0; c < 4; ++c) out[c] += wgt * tx[c];
+    }
+  return out;
+}
+
+namespace {
+
+// A texel as the devices hold it: the image's float (RGBA8: the float nearest k/255).
+std::array<float, 4> texel_fp32(const img::Image& t, int64_t x, int64_t y, const SamplerModel& s) {
+  const int64_t ax = address_texel(x, t.width, s.address_u);
+  const int64_t ay = address_texel(y, t.height, s.address_v);
+  if (ax < 0 || ay < 0)
+    return {float(s.border[0]), float(s.border[1]), float(s.border[2]), float(s.border[3])};
+  const float* p = t.at(static_cast<uint32_t>(ax), static_cast<uint32_t>(ay));
+  return {p[0], p[1], p[2], p[3]};
+}
+
+// The filter unit's interpolation: a + α·(b − a) as one fused multiply-add.
+float lerp_fp32(float alpha, float a, float b) {
+  return std::fma(alpha, b - a, a);
+}
+
+} // namespace
+
+std::array<float, 4> sample_fp32(const img::Image& t, float u, float v, const SamplerModel& s,
+                                 int subtexel_bits) {
+  if (t.width == 0 || t.height == 0) return {0, 0, 0, 1};
+  if (s.filter == Filter::Point)
+    return texel_fp32(t, float_point(u, t.width), float_point(v, t.height), s);
+  const FloatSplit sx = float_split(u, t.width, s.address_u, subtexel_bits);
+  const FloatSplit sy = float_split(v, t.height, s.address_v, subtexel_bits);
+  const float a = static_cast<float>(sx.frac), b = static_cast<float>(sy.frac);
+  const auto t00 = texel_fp32(t, sx.i0, sy.i0, s), t10 = texel_fp32(t, sx.i0 + 1, sy.i0, s);
+  const auto t01 = texel_fp32(t, sx.i0, sy.i0 + 1, s), t11 = texel_fp32(t, sx.i0 + 1, sy.i0 + 1, s);
+  std::array<float, 4> out{};
+  for (int c = 0; c < 4; ++c)
+    out[c] = lerp_fp32(b, lerp_fp32(a, t00[c], t10[c]), lerp_fp32(a, t01[c], t11[c]));
+  return out;
+}
+
+} // namespace tierlift::analytic
