@@ -1,11 +1,11 @@
 // Arithmetic instructions: one case per opcode-table row, each the SPIR-V twin of the
-// interpreter's compute function (d3d9-isa.md §5; numeric rules from ir/numerics.h).
+// interpreter's compute function (d3d9-isa.md §5), both instantiating the numeric rules of
+// ir/numeric_rules.h (v4: vec4 width, s1: scalar).
 // The result is returned as a pending store so that co-issued pairs and matrix macros read
 // every source before anything is written.
 #include <spirv/unified1/GLSL.std.450.h>
 
 #include "tierlift/codegen/emitter.h"
-#include "tierlift/ir/numerics.h"
 
 namespace tierlift::codegen {
 
@@ -25,11 +25,12 @@ bool Emitter::emit_arith(const ir::Instruction& ins, PendingStore& out) {
   auto src = [&](size_t i) { return load_src(ins.src[i]); };
   auto sc = [&](size_t i) { return scalar_src(ins.src[i]); };
   const Id zero = f(0.0f);
+  const SpirvArith v4 = arith(4), s1 = arith(1);
   auto matrix = [&](int rows, int cols) {
     const Id v = src(0);
     Id r[4] = {zero, zero, zero, zero};
     for (int i = 0; i < rows; ++i)
-      r[i] = legacy_dp(v, load_src(ins.src[1], static_cast<uint32_t>(i)), cols);
+      r[i] = dot(v, load_src(ins.src[1], static_cast<uint32_t>(i)), cols);
     out.mask &= static_cast<uint8_t>((1u << rows) - 1);
     return compose(r[0], r[1], r[2], r[3]);
   };
@@ -37,84 +38,76 @@ bool Emitter::emit_arith(const ir::Instruction& ins, PendingStore& out) {
   switch (ins.op) {
   case Opcode::Mov:
   case Opcode::Mova: v = src(0); break;
-  case Opcode::Add: v = fadd(src(0), src(1)); break;
-  case Opcode::Sub: v = fsub(src(0), src(1)); break;
-  case Opcode::Mul: v = legacy_mul(src(0), src(1)); break;
+  case Opcode::Add: v = v4.add(src(0), src(1)); break;
+  case Opcode::Sub: v = v4.sub(src(0), src(1)); break;
+  case Opcode::Mul: v = rule::mul(v4, src(0), src(1)); break;
   case Opcode::Mad: {
     const Id a = src(0), c = src(1), d = src(2);
-    v = legacy_mad(a, c, d);
+    v = rule::mad(v4, a, c, d);
     break;
   }
-  case Opcode::Dp3: v = splat(legacy_dp(src(0), src(1), 3)); break;
-  case Opcode::Dp4: v = splat(legacy_dp(src(0), src(1), 4)); break;
+  case Opcode::Dp3: v = splat(dot(src(0), src(1), 3)); break;
+  case Opcode::Dp4: v = splat(dot(src(0), src(1), 4)); break;
   case Opcode::Dp2Add: {
     const Id a = src(0), c = src(1), d = sc(2);
-    v = splat(fadd(legacy_dp(a, c, 2), d, 1));
+    v = splat(s1.add(dot(a, c, 2), d));
     break;
   }
   case Opcode::Min: {
     const Id a = src(0), c = src(1);
-    v = select(cmp(Op::OpFOrdLessThan, a, c), a, c);
+    v = rule::min(v4, a, c);
     break;
   }
   case Opcode::Max: {
     const Id a = src(0), c = src(1);
-    v = select(cmp(Op::OpFOrdGreaterThanEqual, a, c), a, c);
+    v = rule::max(v4, a, c);
     break;
   }
   case Opcode::Slt:
   case Opcode::Sge: {
     const Id a = src(0), c = src(1);
-    v = select(cmp(ins.op == Opcode::Slt ? Op::OpFOrdLessThan : Op::OpFOrdGreaterThanEqual, a, c),
-               vec4_const(1, 1, 1, 1), vec4_const(0, 0, 0, 0));
+    v = ins.op == Opcode::Slt ? rule::slt(v4, a, c) : rule::sge(v4, a, c);
     break;
   }
-  case Opcode::Rcp: v = splat(legacy_rcp(sc(0))); break;
-  case Opcode::Rsq: v = splat(legacy_rsq(sc(0))); break;
-  case Opcode::Exp: v = splat(legacy_exp(sc(0))); break;
+  case Opcode::Rcp: v = splat(rule::rcp(s1, sc(0))); break;
+  case Opcode::Rsq: v = splat(rule::rsq(s1, sc(0))); break;
+  case Opcode::Exp: v = splat(rule::exp(s1, sc(0))); break;
   case Opcode::Log:
-  case Opcode::Logp: v = splat(legacy_log(sc(0))); break;
+  case Opcode::Logp: v = splat(rule::log(s1, sc(0))); break;
   case Opcode::Expp: {
     const Id x = sc(0);
     if (prog.profile == ir::Profile::vs_1_1) {
-      // (2^floor(v), v − floor(v), 2^v, 1) — the D3D8 partial-precision vector.
-      const Id fl = glsl1(GLSLstd450Floor, x, 1);
-      v = compose(legacy_exp(fl), fsub(x, fl, 1), legacy_exp(x), f(1.0f));
+      const rule::Lanes4<Id> d = rule::expp_partial(s1, x);
+      v = compose(d.x, d.y, d.z, d.w);
     } else {
-      v = splat(legacy_exp(x));
+      v = splat(rule::exp(s1, x));
     }
     break;
   }
   case Opcode::Pow: {
     const Id x = sc(0), y = sc(1);
-    v = splat(legacy_pow(x, y));
+    v = splat(rule::pow(s1, x, y));
     break;
   }
   case Opcode::Lit: {
     const Id s = src(0);
     const Id sx = comp(s, 0), sy = comp(s, 1), sw = comp(s, 3);
-    const Id lim = f(ir::numerics::kLitPowerLimit), nlim = f(-ir::numerics::kLitPowerLimit);
-    const Id p = select(cmp(Op::OpFOrdGreaterThan, sw, lim, 1), lim,
-                        select(cmp(Op::OpFOrdLessThan, sw, nlim, 1), nlim, sw, 1), 1);
-    const Id x_pos = cmp(Op::OpFOrdGreaterThan, sx, zero, 1);
-    const Id y_pos = cmp(Op::OpFOrdGreaterThan, sy, zero, 1);
-    const Id both = b.op(Op::OpLogicalAnd, t_bool, {x_pos, y_pos});
-    const Id z = select(both, legacy_pow(sy, p), zero, 1);
-    v = compose(f(1.0f), select(x_pos, sx, zero, 1), z, f(1.0f));
+    const rule::Lanes4<Id> d = rule::lit(s1, sx, sy, sw);
+    v = compose(d.x, d.y, d.z, d.w);
     break;
   }
   case Opcode::Dst: {
     const Id a = src(0), c = src(1);
-    v = compose(f(1.0f), legacy_mul(comp(a, 1), comp(c, 1), 1), comp(a, 2), comp(c, 3));
+    v = compose(f(1.0f), rule::mul(s1, comp(a, 1), comp(c, 1)), comp(a, 2), comp(c, 3));
     break;
   }
   case Opcode::Lrp: {
     const Id a = src(0), c = src(1), d = src(2);
-    v = legacy_lrp(a, c, d);
+    v = rule::lrp(v4, a, c, d);
     break;
   }
   case Opcode::Frc:
-    v = legacy_frc(src(0));
+    v = rule::frc(v4, src(0));
     if (prog.profile == ir::Profile::vs_1_1) out.mask &= 0x3; // the macro writes x, y only
     break;
   case Opcode::M4x4: v = matrix(4, 4); break;
@@ -124,22 +117,20 @@ bool Emitter::emit_arith(const ir::Instruction& ins, PendingStore& out) {
   case Opcode::M3x2: v = matrix(2, 3); break;
   case Opcode::Crs: {
     const Id a = src(0), c = src(1);
-    const Id x =
-        fsub(legacy_mul(comp(a, 1), comp(c, 2), 1), legacy_mul(comp(a, 2), comp(c, 1), 1), 1);
-    const Id y =
-        fsub(legacy_mul(comp(a, 2), comp(c, 0), 1), legacy_mul(comp(a, 0), comp(c, 2), 1), 1);
-    const Id z =
-        fsub(legacy_mul(comp(a, 0), comp(c, 1), 1), legacy_mul(comp(a, 1), comp(c, 0), 1), 1);
+    auto cross = [&](uint32_t i, uint32_t j) {
+      return rule::cross_component(s1, comp(a, i), comp(c, j), comp(a, j), comp(c, i));
+    };
+    const Id x = cross(1, 2), y = cross(2, 0), z = cross(0, 1);
     v = compose(x, y, z, zero);
     out.mask &= 0x7;
     break;
   }
-  case Opcode::Sgn: v = legacy_sgn(src(0)); break;
-  case Opcode::Abs: v = glsl1(GLSLstd450FAbs, src(0)); break;
+  case Opcode::Sgn: v = rule::sgn(v4, src(0)); break;
+  case Opcode::Abs: v = v4.abs(src(0)); break;
   case Opcode::Nrm: {
     const Id a = src(0);
-    const Id scale = legacy_nrm_scale(legacy_dp(a, a, 3));
-    v = legacy_mul(a, splat(scale));
+    const Id scale = rule::nrm_scale(s1, dot(a, a, 3));
+    v = rule::mul(v4, a, splat(scale));
     break;
   }
   case Opcode::SinCos: {
@@ -150,22 +141,20 @@ bool Emitter::emit_arith(const ir::Instruction& ins, PendingStore& out) {
   }
   case Opcode::Cnd: {
     const Id c = src(0), a = src(1), d = src(2);
-    v = select(cmp(Op::OpFOrdGreaterThan, c, vec4_const(0.5f, 0.5f, 0.5f, 0.5f)), a, d);
+    v = rule::cnd(v4, c, a, d);
     break;
   }
   case Opcode::Cmp: {
     const Id c = src(0), a = src(1), d = src(2);
-    v = select(cmp(Op::OpFOrdGreaterThanEqual, c, vec4_const(0, 0, 0, 0)), a, d);
+    v = rule::cmp(v4, c, a, d);
     break;
   }
   case Opcode::Bem: {
     // d.r = s0.r + M00·s1.r + M10·s1.g; d.g = s0.g + M01·s1.r + M11·s1.g (stage = dst#).
     const Id a = src(0), c = src(1);
     const Id m = bumpenv(ins.dst->index, 0);
-    const Id r = fadd(fadd(comp(a, 0), legacy_mul(comp(m, 0), comp(c, 0), 1), 1),
-                      legacy_mul(comp(m, 2), comp(c, 1), 1), 1);
-    const Id g = fadd(fadd(comp(a, 1), legacy_mul(comp(m, 1), comp(c, 0), 1), 1),
-                      legacy_mul(comp(m, 3), comp(c, 1), 1), 1);
+    const Id r = rule::bump_offset(s1, comp(a, 0), comp(m, 0), comp(c, 0), comp(m, 2), comp(c, 1));
+    const Id g = rule::bump_offset(s1, comp(a, 1), comp(m, 1), comp(c, 0), comp(m, 3), comp(c, 1));
     v = compose(r, g, zero, zero);
     out.mask &= 0x3;
     break;

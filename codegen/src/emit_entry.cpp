@@ -84,7 +84,7 @@ void Emitter::emit_entry() {
       } else if (file == RegFile::RastOut) {
         const bool fog = index == ir::kRastFog;
         Id x = comp(v, 0);
-        if (fog) x = legacy_saturate(x, 1);
+        if (fog) x = rule::saturate(arith(1), x);
         const Id var =
             output_var(fog ? make_iv(InterfaceKind::Output, file, index, kFogLocation, 1)
                            : make_iv(InterfaceKind::BuiltIn, file, index, 0, 1, "PointSize"),
@@ -93,7 +93,7 @@ void Emitter::emit_entry() {
       } else {
         // oD# reach the pixel stage saturated (d3d9-isa.md §3.1).
         const bool color = file == RegFile::AttrOut;
-        const Id value = color ? legacy_saturate(v) : v;
+        const Id value = color ? rule::saturate(arith(4), v) : v;
         const Id var =
             output_var(make_iv(InterfaceKind::Output, file, index,
                                color ? kColorLocation + index : kTexCoordLocation + index, 4),

@@ -1,15 +1,12 @@
-// SPIR-V for the legacy numeric rules of ir/numerics.h. Each function emits exactly the
-// operation sequence of the ir::numerics function with the same name: the same compares
-// (ordered, so a NaN takes the false branch), the same order of additions, and every
-// add/sub/mul decorated NoContraction so no driver fuses what the interpreter rounds twice.
+// The SPIR-V primitives and the arithmetic back end (SpirvArith) through which the code
+// generator instantiates the numeric rules of ir/numeric_rules.h: the same templates the
+// interpreter runs, so the same compares (ordered, a NaN takes the false branch), the same
+// order of additions, and every add/sub/mul/div decorated NoContraction so no driver fuses
+// what the interpreter rounds twice.
 #include <spirv/unified1/GLSL.std.450.h>
 
-#include <algorithm>
-#include <cfloat>
-#include <cmath>
-#include <limits>
-
 #include "tierlift/codegen/emitter.h"
+#include "tierlift/ir/numeric_rules.h"
 
 namespace tierlift::codegen {
 
@@ -73,127 +70,80 @@ Id Emitter::glsl1(uint32_t inst, Id a, int n) {
   return b.ext_inst(glsl, type_of_width(n), inst, args);
 }
 
-// The zero of the right width for selects.
-static Id zero_of(Emitter& e, int n) {
-  return n == 1 ? e.f(0.0f) : e.vec4_const(0, 0, 0, 0);
+SpirvArith Emitter::arith(int n) {
+  return SpirvArith{*this, n};
 }
 
-Id Emitter::legacy_mul(Id a, Id c, int n) {
-  const Id z = zero_of(*this, n);
-  const Id az = cmp(Op::OpFOrdEqual, a, z, n);
-  const Id cz = cmp(Op::OpFOrdEqual, c, z, n);
-  const Id either = b.op(Op::OpLogicalOr, bool_type(n), {az, cz});
-  return select(either, z, fmul(a, c, n), n);
+Id SpirvArith::k(float x) const {
+  return n == 1 ? e.f(x) : e.vec4_const(x, x, x, x);
+}
+Id SpirvArith::add(Id a, Id c) const {
+  return e.fadd(a, c, n);
+}
+Id SpirvArith::sub(Id a, Id c) const {
+  return e.fsub(a, c, n);
+}
+Id SpirvArith::fmul(Id a, Id c) const {
+  return e.fmul(a, c, n);
+}
+Id SpirvArith::div(Id a, Id c) const {
+  return e.fdiv(a, c, n);
+}
+Id SpirvArith::neg(Id a) const {
+  return e.fneg(a, n);
+}
+Id SpirvArith::abs(Id a) const {
+  return e.glsl1(GLSLstd450FAbs, a, n);
+}
+Id SpirvArith::floor(Id a) const {
+  return e.glsl1(GLSLstd450Floor, a, n);
+}
+Id SpirvArith::sqrt(Id a) const {
+  return e.glsl1(GLSLstd450Sqrt, a, n);
+}
+Id SpirvArith::exp2(Id a) const {
+  return e.glsl1(GLSLstd450Exp2, a, n);
+}
+// Vulkan leaves Log2(0) undefined: the rules only ever take it of a non-zero value.
+Id SpirvArith::log2(Id a) const {
+  return e.glsl1(GLSLstd450Log2, a, n);
+}
+Id SpirvArith::eq(Id a, Id c) const {
+  return e.cmp(Op::OpFOrdEqual, a, c, n);
+}
+Id SpirvArith::lt(Id a, Id c) const {
+  return e.cmp(Op::OpFOrdLessThan, a, c, n);
+}
+Id SpirvArith::gt(Id a, Id c) const {
+  return e.cmp(Op::OpFOrdGreaterThan, a, c, n);
+}
+Id SpirvArith::ge(Id a, Id c) const {
+  return e.cmp(Op::OpFOrdGreaterThanEqual, a, c, n);
+}
+Id SpirvArith::lor(Id a, Id c) const {
+  return e.b.op(Op::OpLogicalOr, e.bool_type(n), {a, c});
+}
+Id SpirvArith::land(Id a, Id c) const {
+  return e.b.op(Op::OpLogicalAnd, e.bool_type(n), {a, c});
+}
+Id SpirvArith::is_nan(Id a) const {
+  return e.b.op(Op::OpIsNan, e.bool_type(n), {a});
+}
+Id SpirvArith::select(Id c, Id a, Id b) const {
+  return e.select(c, a, b, n);
 }
 
-Id Emitter::legacy_mad(Id a, Id c, Id d, int n) {
-  return fadd(legacy_mul(a, c, n), d, n);
+Id Emitter::dot(Id a, Id c, int count) {
+  Id x[4], y[4];
+  for (int i = 0; i < count; ++i) {
+    x[i] = comp(a, static_cast<uint32_t>(i));
+    y[i] = comp(c, static_cast<uint32_t>(i));
+  }
+  return ir::numerics::rule::dot(arith(1), x, y, count);
 }
 
-Id Emitter::legacy_dp(Id a, Id c, int count) {
-  Id sum = legacy_mul(comp(a, 0), comp(c, 0), 1);
-  for (int i = 1; i < count; ++i)
-    sum = fadd(sum,
-               legacy_mul(comp(a, static_cast<uint32_t>(i)), comp(c, static_cast<uint32_t>(i)), 1),
-               1);
-  return sum;
-}
-
-Id Emitter::legacy_lrp(Id s0, Id s1, Id s2) {
-  return fadd(legacy_mul(s0, fsub(s1, s2)), s2);
-}
-
-Id Emitter::clamp_to_flt_max(Id x, int n) {
-  const Id hi = n == 1 ? f(FLT_MAX) : splat(f(FLT_MAX));
-  const Id lo = n == 1 ? f(-FLT_MAX) : splat(f(-FLT_MAX));
-  const Id inner = select(cmp(Op::OpFOrdLessThan, x, lo, n), lo, x, n);
-  return select(cmp(Op::OpFOrdGreaterThan, x, hi, n), hi, inner, n);
-}
-
-Id Emitter::legacy_rcp(Id x) {
-  const Id q = clamp_to_flt_max(fdiv(f(1.0f), x, 1));
-  const Id zero_case = select(cmp(Op::OpFOrdEqual, x, f(0.0f), 1), f(FLT_MAX), q, 1);
-  return select(cmp(Op::OpFOrdEqual, x, f(1.0f), 1), f(1.0f), zero_case, 1);
-}
-
-Id Emitter::legacy_rsq(Id x) {
-  const Id a = glsl1(GLSLstd450FAbs, x, 1);
-  const Id q = clamp_to_flt_max(fdiv(f(1.0f), glsl1(GLSLstd450Sqrt, a, 1), 1));
-  const Id zero_case = select(cmp(Op::OpFOrdEqual, a, f(0.0f), 1), f(FLT_MAX), q, 1);
-  return select(cmp(Op::OpFOrdEqual, a, f(1.0f), 1), f(1.0f), zero_case, 1);
-}
-
-Id Emitter::legacy_log(Id x) {
-  const Id a = glsl1(GLSLstd450FAbs, x, 1);
-  // Log2 is only evaluated on a non-zero input (its result for 0 is not defined in Vulkan).
-  const Id is0 = cmp(Op::OpFOrdEqual, a, f(0.0f), 1);
-  const Id safe = select(is0, f(1.0f), a, 1);
-  return select(is0, f(-FLT_MAX), glsl1(GLSLstd450Log2, safe, 1), 1);
-}
-
-Id Emitter::legacy_exp(Id x) {
-  return clamp_to_flt_max(glsl1(GLSLstd450Exp2, x, 1));
-}
-
-Id Emitter::legacy_pow(Id x, Id y) {
-  // std::log2(0) = -inf; Vulkan leaves Log2(0) undefined, so the -inf is selected here.
-  const Id a = glsl1(GLSLstd450FAbs, x, 1);
-  const Id is0 = cmp(Op::OpFOrdEqual, a, f(0.0f), 1);
-  const Id log = select(is0, f(-std::numeric_limits<float>::infinity()),
-                        glsl1(GLSLstd450Log2, select(is0, f(1.0f), a, 1), 1), 1);
-  const Id r = legacy_exp(legacy_mul(y, log, 1));
-  return select(cmp(Op::OpFOrdEqual, y, f(0.0f), 1), f(1.0f), r, 1);
-}
-
-Id Emitter::legacy_nrm_scale(Id len2) {
-  return select(cmp(Op::OpFOrdEqual, len2, f(0.0f), 1), f(0.0f), legacy_rsq(len2), 1);
-}
-
-Id Emitter::legacy_saturate(Id x, int n) {
-  const Id zero = zero_of(*this, n);
-  const Id one = n == 1 ? f(1.0f) : vec4_const(1, 1, 1, 1);
-  const Id inner = select(cmp(Op::OpFOrdLessThan, x, one, n), x, one, n);
-  return select(cmp(Op::OpFOrdGreaterThan, x, zero, n), inner, zero, n);
-}
-
-Id Emitter::legacy_frc(Id x, int n) {
-  return fsub(x, glsl1(GLSLstd450Floor, x, n), n);
-}
-
-Id Emitter::legacy_sgn(Id x) {
-  const Id z = zero_of(*this, 4);
-  const Id inner = select(cmp(Op::OpFOrdEqual, x, z), z, vec4_const(1, 1, 1, 1));
-  return select(cmp(Op::OpFOrdLessThan, x, z), vec4_const(-1, -1, -1, -1), inner);
-}
-
-Id Emitter::legacy_clamp_sym(Id x, Id max, int n) {
-  const Id hi = n == 1 ? max : splat(max);
-  const Id lo = fneg(hi, n);
-  const Id inner = select(cmp(Op::OpFOrdLessThan, x, lo, n), lo, x, n);
-  return select(cmp(Op::OpFOrdGreaterThan, x, hi, n), hi, inner, n);
-}
-
-Id Emitter::legacy_fixed_quantise(Id x, int bits, Id max) {
-  const float scale = std::ldexp(1.0f, std::clamp(bits, 1, 23));
-  const Id s = splat(f(scale));
-  const Id lim = glsl1(GLSLstd450Floor, fmul(splat(max), s));
-  const Id u0 = glsl1(GLSLstd450Floor, fadd(fmul(x, s), splat(f(0.5f))));
-  const Id neg_lim = fneg(lim);
-  const Id u1 = select(cmp(Op::OpFOrdGreaterThan, u0, lim), lim,
-                       select(cmp(Op::OpFOrdLessThan, u0, neg_lim), neg_lim, u0));
-  const Id q = fdiv(u1, s);
-  const Id is_nan = b.op(Op::OpIsNan, t_bvec4, {x});
-  return select(is_nan, zero_of(*this, 4), q);
-}
-
-Id Emitter::legacy_index(Id x) {
-  // clamp_index_float: NaN → 0, clamp to ±2^20, truncate.
-  const Id is_nan = b.op(Op::OpIsNan, t_bool, {x});
-  const Id hi = f(1048576.0f), lo = f(-1048576.0f);
-  Id v = select(cmp(Op::OpFOrdGreaterThan, x, hi, 1), hi, x, 1);
-  v = select(cmp(Op::OpFOrdLessThan, v, lo, 1), lo, v, 1);
-  v = select(is_nan, f(0.0f), v, 1);
-  return b.op(Op::OpConvertFToS, t_int, {v});
+Id Emitter::to_index(Id x) {
+  return b.op(Op::OpConvertFToS, t_int, {ir::numerics::rule::index_range(arith(1), x)});
 }
 
 } // namespace tierlift::codegen

@@ -11,6 +11,7 @@
 #include "tierlift/codegen/emitter.h"
 #include "tierlift/ir/numerics.h"
 #include "tierlift/ir/profile.h"
+#include "tierlift/ir/source_modifiers.h"
 
 namespace tierlift::codegen {
 
@@ -120,7 +121,7 @@ Id Emitter::load_register(RegFile file, uint32_t index, const std::optional<ir::
   case RegFile::Input: {
     const Id v = b.op(Op::OpLoad, t_vec4, {input_var(file, index)});
     // Pixel colour inputs are saturated on input in every pixel profile (NUMERICS.md 26).
-    return prog.stage() == ir::ShaderStage::Pixel ? legacy_saturate(v) : v;
+    return prog.stage() == ir::ShaderStage::Pixel ? rule::saturate(arith(4), v) : v;
   }
   case RegFile::Texture:
     // ps_1_1…1_3: t# are read/write registers filled by texture instructions; later
@@ -140,12 +141,11 @@ Id Emitter::load_register(RegFile file, uint32_t index, const std::optional<ir::
 
 Id Emitter::load_src(const ir::SrcOperand& s, uint32_t index_offset) {
   Id v = load_register(s.file, s.index + index_offset, s.rel);
-  if (s.file == RegFile::Const && ir::is_ps1x(prog.profile)) v = legacy_clamp_sym(v, f(1.0f));
-  if (s.mod == SrcMod::Dz || s.mod == SrcMod::Dw) {
-    const Id d = comp(v, s.mod == SrcMod::Dz ? 2 : 3);
-    const Id is0 = cmp(Op::OpFOrdEqual, d, f(0.0f), 1);
-    const Id x = select(is0, f(1.0f), fdiv(comp(v, 0), d, 1), 1);
-    const Id y = select(is0, f(1.0f), fdiv(comp(v, 1), d, 1), 1);
+  if (s.file == RegFile::Const && ir::is_ps1x(prog.profile))
+    v = rule::clamp_sym(arith(4), v, splat(f(1.0f)));
+  if (const int8_t by = ir::src_mod_info(s.mod).divide_by; by >= 0) {
+    Id x = comp(v, 0), y = comp(v, 1);
+    rule::project_divide(arith(1), x, y, comp(v, static_cast<uint32_t>(by)));
     v = compose(x, y, comp(v, 2), comp(v, 3));
   }
   if (s.swizzle != ir::kIdentitySwizzle) {
@@ -153,20 +153,7 @@ Id Emitter::load_src(const ir::SrcOperand& s, uint32_t index_offset) {
              {v, v, ir::swizzle_component(s.swizzle, 0), ir::swizzle_component(s.swizzle, 1),
               ir::swizzle_component(s.swizzle, 2), ir::swizzle_component(s.swizzle, 3)});
   }
-  auto all = [&](float x) { return vec4_const(x, x, x, x); };
-  switch (s.mod) {
-  case SrcMod::Neg: return fneg(v);
-  case SrcMod::Bias: return fsub(v, all(0.5f));
-  case SrcMod::BiasNeg: return fneg(fsub(v, all(0.5f)));
-  case SrcMod::Bx2: return fsub(fmul(all(2.0f), v), all(1.0f));
-  case SrcMod::Bx2Neg: return fneg(fsub(fmul(all(2.0f), v), all(1.0f)));
-  case SrcMod::Comp: return fsub(all(1.0f), v);
-  case SrcMod::X2: return fmul(all(2.0f), v);
-  case SrcMod::X2Neg: return fneg(fmul(all(2.0f), v));
-  case SrcMod::Abs: return glsl1(GLSLstd450FAbs, v);
-  case SrcMod::AbsNeg: return fneg(glsl1(GLSLstd450FAbs, v));
-  default: return v;
-  }
+  return ir::apply_source_modifier(arith(4), s.mod, v);
 }
 
 Id Emitter::scalar_src(const ir::SrcOperand& s) {
@@ -189,14 +176,8 @@ void Emitter::store(const PendingStore& st, bool ps1x_range) {
         continue;
       }
       const Id x = comp(st.value, i);
-      Id r;
-      if (floor_mode) {
-        r = glsl1(GLSLstd450Floor, x, 1);
-      } else { // sign(x) · floor(|x| + 0.5)
-        const Id fl = glsl1(GLSLstd450Floor, fadd(glsl1(GLSLstd450FAbs, x, 1), f(0.5f), 1), 1);
-        r = select(cmp(Op::OpFOrdLessThan, x, f(0.0f), 1), fneg(fl, 1), fl, 1);
-      }
-      parts[i] = legacy_index(r);
+      parts[i] =
+          to_index(floor_mode ? rule::mov_a0_floor(arith(1), x) : rule::mova_round(arith(1), x));
     }
     b.op_void(Op::OpStore, {var, b.op(Op::OpCompositeConstruct, t_ivec4,
                                       {parts[0], parts[1], parts[2], parts[3]})});
@@ -207,10 +188,12 @@ void Emitter::store(const PendingStore& st, bool ps1x_range) {
     const float scale = std::ldexp(1.0f, std::clamp<int>(st.mods.shift, -8, 8));
     v = fmul(v, vec4_const(scale, scale, scale, scale));
   }
-  if (ps1x_range) v = legacy_clamp_sym(v, ps1x_max_value());
-  if (st.mods.sat) v = legacy_saturate(v);
-  if (ps1x_range && opt.conventions.ps1x_fixed_bits > 0)
-    v = legacy_fixed_quantise(v, opt.conventions.ps1x_fixed_bits, ps1x_max_value());
+  if (ps1x_range) v = rule::clamp_sym(arith(4), v, splat(ps1x_max_value()));
+  if (st.mods.sat) v = rule::saturate(arith(4), v);
+  if (ps1x_range && opt.conventions.ps1x_fixed_bits > 0) {
+    const float scale = std::ldexp(1.0f, std::clamp(opt.conventions.ps1x_fixed_bits, 1, 23));
+    v = rule::fixed_quantise(arith(4), v, splat(f(scale)), splat(ps1x_max_value()));
+  }
   if (st.dst.file == RegFile::DepthOut) writes_depth_ = true;
   const Id var = register_var(st.dst.file, st.dst.index);
   if (mask != 0xF) {

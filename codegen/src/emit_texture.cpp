@@ -123,7 +123,7 @@ bool Emitter::emit_texture(const ir::Instruction& ins, std::optional<PendingStor
     return c;
   };
   auto dot3_tc = [&](uint32_t stage) {
-    return legacy_dp(texcoord_input(stage), load_src(ins.src[0]), 3);
+    return dot(texcoord_input(stage), load_src(ins.src[0]), 3);
   };
   switch (ins.op) {
   case Opcode::Tex: return result(sample(m, tc(m)));
@@ -138,7 +138,7 @@ bool Emitter::emit_texture(const ir::Instruction& ins, std::optional<PendingStor
     return result(sample(s, c));
   }
   case Opcode::TexCoord: {
-    const Id c = legacy_saturate(texcoord_input(m));
+    const Id c = rule::saturate(arith(4), texcoord_input(m));
     return result(compose(comp(c, 0), comp(c, 1), comp(c, 2), f(1.0f)));
   }
   case Opcode::TexCrd: return result(load_src(ins.src[0]));
@@ -161,15 +161,13 @@ bool Emitter::emit_texture(const ir::Instruction& ins, std::optional<PendingStor
     const Id c = tc(m);
     const Id mat = bumpenv(m, 0);
     const Id r = comp(tn, 0), g = comp(tn, 1);
-    const Id u = fadd(fadd(comp(c, 0), legacy_mul(comp(mat, 0), r, 1), 1),
-                      legacy_mul(comp(mat, 2), g, 1), 1);
-    const Id v = fadd(fadd(comp(c, 1), legacy_mul(comp(mat, 1), r, 1), 1),
-                      legacy_mul(comp(mat, 3), g, 1), 1);
+    const Id u = rule::bump_offset(arith(1), comp(c, 0), comp(mat, 0), r, comp(mat, 2), g);
+    const Id v = rule::bump_offset(arith(1), comp(c, 1), comp(mat, 1), r, comp(mat, 3), g);
     Id s = sample(m, compose(u, v, comp(c, 2), comp(c, 3)));
     if (ins.op == Opcode::TexBemL) {
       const Id lum = bumpenv(m, 1);
-      const Id k = fadd(legacy_mul(comp(tn, 2), comp(lum, 0), 1), comp(lum, 1), 1);
-      s = legacy_mul(s, splat(k));
+      const Id k = rule::bump_luminance(arith(1), comp(tn, 2), comp(lum, 0), comp(lum, 1));
+      s = rule::mul(arith(4), s, splat(k));
     }
     return result(s);
   }
@@ -194,8 +192,7 @@ bool Emitter::emit_texture(const ir::Instruction& ins, std::optional<PendingStor
     const Id u = pad_value_[0] ? pad_value_[0] : zero;
     pad_count_ = 0;
     if (ins.op == Opcode::TexM3x2Tex) return result(sample(m, compose(u, v, zero, zero)));
-    const Id is0 = cmp(Op::OpFOrdEqual, v, zero, 1);
-    return depth(select(is0, f(1.0f), fdiv(u, select(is0, f(1.0f), v, 1), 1), 1));
+    return depth(rule::depth_ratio(arith(1), u, v));
   }
   case Opcode::TexM3x3Tex:
   case Opcode::TexM3x3:
@@ -216,12 +213,8 @@ bool Emitter::emit_texture(const ir::Instruction& ins, std::optional<PendingStor
       e = compose(comp(texcoord_input(m0), 3), comp(texcoord_input(m1), 3),
                   comp(texcoord_input(m), 3), zero);
     }
-    // legacy_reflect: k = N·N == 0 ? 0 : 2·(N·E)/(N·N); R = k·N − E.
-    const Id nn = legacy_dp(n, n, 3);
-    const Id is0 = cmp(Op::OpFOrdEqual, nn, zero, 1);
-    const Id k = select(
-        is0, zero, fdiv(fmul(f(2.0f), legacy_dp(n, e, 3), 1), select(is0, f(1.0f), nn, 1), 1), 1);
-    const Id r = fsub(legacy_mul(splat(k), n), e);
+    const Id k = rule::reflect_scale(arith(1), dot(n, e, 3), dot(n, n, 3));
+    const Id r = rule::reflect_component(arith(4), splat(k), n, e);
     return result(sample(m, r));
   }
   case Opcode::TexDp3: return result(splat(dot3_tc(m)));
@@ -229,8 +222,7 @@ bool Emitter::emit_texture(const ir::Instruction& ins, std::optional<PendingStor
   case Opcode::TexDepth: {
     const Id r5 = load_register(RegFile::Temp, m, std::nullopt);
     const Id r = comp(r5, 0), g = comp(r5, 1);
-    const Id is0 = cmp(Op::OpFOrdEqual, g, zero, 1);
-    return depth(select(is0, f(1.0f), fdiv(r, select(is0, f(1.0f), g, 1), 1), 1));
+    return depth(rule::depth_ratio(arith(1), r, g));
   }
   default:
     error(ins.loc, "code generation for '" + std::string(info.mnemonic) + "' is not implemented");

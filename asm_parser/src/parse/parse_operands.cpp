@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "parser_impl.h"
+#include "tierlift/ir/source_modifiers.h"
 
 namespace tierlift::as::detail {
 namespace {
@@ -242,22 +243,29 @@ bool Parser::to_src(const Operand& in, ir::SrcOperand& out) {
   out.loc = in.loc;
   M mod = in.neg ? M::Neg : in.comp ? M::Comp : in.bnot ? M::Not : M::None;
   if (!in.modifier.empty()) {
-    static constexpr std::pair<std::string_view, std::pair<M, M>> mods[] = {
-        {"bias", {M::Bias, M::BiasNeg}}, {"bx2", {M::Bx2, M::Bx2Neg}}, {"x2", {M::X2, M::X2Neg}},
-        {"dz", {M::Dz, M::Dz}},          {"db", {M::Dz, M::Dz}},       {"dw", {M::Dw, M::Dw}},
-        {"da", {M::Dw, M::Dw}},          {"abs", {M::Abs, M::AbsNeg}}};
-    auto it = std::find_if(std::begin(mods), std::end(mods),
-                           [&](const auto& m) { return m.first == in.modifier; });
-    if (it == std::end(mods))
+    // The suffix spellings come from the modifier table; _db and _da are the rgba names of
+    // _dz and _dw.
+    const std::string_view name = in.modifier == "db"   ? "dz"
+                                  : in.modifier == "da" ? "dw"
+                                                        : std::string_view(in.modifier);
+    auto spelled = [&](const ir::SrcModInfo& m, bool negated) {
+      return m.suffix.size() == name.size() + 1 && m.suffix.substr(1) == name &&
+             m.negate == negated;
+    };
+    auto plain = std::find_if(std::begin(ir::kSrcMods), std::end(ir::kSrcMods),
+                              [&](const auto& m) { return spelled(m, false); });
+    auto negated = std::find_if(std::begin(ir::kSrcMods), std::end(ir::kSrcMods),
+                                [&](const auto& m) { return spelled(m, true); });
+    if (plain == std::end(ir::kSrcMods))
       return fail(in.modifier_loc, "unknown-modifier",
                   fmt::format("unknown source modifier '_{}'", in.modifier));
-    if (in.comp || in.bnot || (in.neg && it->second.first == it->second.second))
+    if (in.comp || in.bnot || (in.neg && negated == std::end(ir::kSrcMods)))
       return fail(in.loc, "syntax",
                   fmt::format("'_{}' cannot be combined with {}", in.modifier,
                               in.comp   ? "'1-'"
                               : in.bnot ? "'!'"
                                         : "negation"));
-    mod = in.neg ? it->second.second : it->second.first;
+    mod = in.neg ? negated->mod : plain->mod;
   }
   out.mod = mod;
   out.swizzle = ir::kIdentitySwizzle;

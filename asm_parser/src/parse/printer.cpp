@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include "tierlift/ir/source_modifiers.h"
+
 namespace tierlift::as {
 namespace {
 
@@ -33,34 +35,11 @@ std::string file_prefix(ir::RegFile f) {
 }
 
 std::string_view src_mod_suffix(ir::SrcMod m) {
-  using M = ir::SrcMod;
-  switch (m) {
-  case M::Bias:
-  case M::BiasNeg: return "_bias";
-  case M::Bx2:
-  case M::Bx2Neg: return "_bx2";
-  case M::X2:
-  case M::X2Neg: return "_x2";
-  case M::Dz: return "_dz";
-  case M::Dw: return "_dw";
-  case M::Abs:
-  case M::AbsNeg: return "_abs";
-  default: return "";
-  }
+  return ir::src_mod_info(m).suffix;
 }
 
 std::string_view src_mod_prefix(ir::SrcMod m) {
-  using M = ir::SrcMod;
-  switch (m) {
-  case M::Neg:
-  case M::BiasNeg:
-  case M::Bx2Neg:
-  case M::X2Neg:
-  case M::AbsNeg: return "-";
-  case M::Comp: return "1-";
-  case M::Not: return "!";
-  default: return "";
-  }
+  return ir::src_mod_info(m).prefix;
 }
 
 // The address register's swizzle: replicates as one letter (a0.x), the identity as

@@ -3,6 +3,7 @@
 #include <map>
 
 #include "context.h"
+#include "tierlift/ir/source_modifiers.h"
 
 namespace tierlift::as::detail {
 namespace {
@@ -28,22 +29,7 @@ std::string shift_text(int shift) {
 }
 
 std::string_view srcmod_text(SrcMod m) {
-  switch (m) {
-  case SrcMod::Neg: return "negate (-)";
-  case SrcMod::Bias: return "_bias";
-  case SrcMod::BiasNeg: return "-_bias";
-  case SrcMod::Bx2: return "_bx2";
-  case SrcMod::Bx2Neg: return "-_bx2";
-  case SrcMod::Comp: return "1-";
-  case SrcMod::X2: return "_x2";
-  case SrcMod::X2Neg: return "-_x2";
-  case SrcMod::Dz: return "_dz";
-  case SrcMod::Dw: return "_dw";
-  case SrcMod::Abs: return "_abs";
-  case SrcMod::AbsNeg: return "-_abs";
-  case SrcMod::Not: return "!";
-  default: return "none";
-  }
+  return ir::src_mod_info(m).name;
 }
 
 void check_instr_mods(Ctx& c, const ir::Instruction& ins) {

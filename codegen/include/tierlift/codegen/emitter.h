@@ -11,8 +11,12 @@
 
 #include "tierlift/codegen/codegen.h"
 #include "tierlift/codegen/spirv_builder.h"
+#include "tierlift/ir/numeric_rules.h"
 
 namespace tierlift::codegen {
+
+// The numeric rules every emit_* file instantiates with SpirvArith.
+namespace rule = ir::numerics::rule;
 
 // Decided by the linker (pruning.cpp) before emission.
 struct EmitPlan {
@@ -29,6 +33,38 @@ struct PendingStore {
   ir::InstrMods mods;
   Id value = 0;       // vec4
   uint8_t mask = 0xF; // the destination mask, possibly narrowed by the opcode
+};
+
+class Emitter;
+
+// The arithmetic back end of ir/numeric_rules.h for SPIR-V: values are ids, and each
+// operation emits one instruction at width n (add/sub/mul/div decorated NoContraction).
+// ftz is the identity: the device flushes its own min/max results.
+struct SpirvArith {
+  using V = Id;
+  using B = Id;
+  Emitter& e;
+  int n = 4;
+  Id k(float x) const;
+  Id add(Id a, Id c) const;
+  Id sub(Id a, Id c) const;
+  Id fmul(Id a, Id c) const;
+  Id div(Id a, Id c) const;
+  Id neg(Id a) const;
+  Id abs(Id a) const;
+  Id floor(Id a) const;
+  Id sqrt(Id a) const;
+  Id exp2(Id a) const;
+  Id log2(Id a) const;
+  Id eq(Id a, Id c) const;
+  Id lt(Id a, Id c) const;
+  Id gt(Id a, Id c) const;
+  Id ge(Id a, Id c) const;
+  Id lor(Id a, Id c) const;
+  Id land(Id a, Id c) const;
+  Id is_nan(Id a) const;
+  Id select(Id c, Id a, Id b) const;
+  Id ftz(Id a) const { return a; }
 };
 
 class Emitter {
@@ -48,7 +84,7 @@ public:
   Id t_int = 0, t_ivec4 = 0, t_uint = 0;
   bool failed = false;
 
-  // ---- numerics (emit_numerics.cpp): each mirrors the ir::numerics function of its name.
+  // ---- numerics (emit_numerics.cpp): SPIR-V primitives; the rules come from ir/numeric_rules.h.
   Id f(float v) { return b.const_float(v); }
   Id vec4_const(float x, float y, float z, float w);
   Id splat(Id scalar);                // float → vec4
@@ -66,23 +102,11 @@ public:
   Id cmp(spv::Op op, Id a, Id c, int n = 4); // ordered compare
   Id select(Id cond, Id a, Id c, int n = 4);
   Id glsl1(uint32_t inst, Id a, int n = 4); // GLSL.std.450 unary
-  Id legacy_mul(Id a, Id c, int n = 4);
-  Id legacy_mad(Id a, Id c, Id d, int n = 4);
-  Id legacy_dp(Id a, Id c, int count); // a, c vec4 → float
-  Id legacy_lrp(Id s0, Id s1, Id s2);
-  Id clamp_to_flt_max(Id x, int n = 1);
-  Id legacy_rcp(Id x); // scalars
-  Id legacy_rsq(Id x);
-  Id legacy_log(Id x);
-  Id legacy_exp(Id x);
-  Id legacy_pow(Id x, Id y);
-  Id legacy_nrm_scale(Id len2);
-  Id legacy_saturate(Id x, int n = 4);
-  Id legacy_frc(Id x, int n = 4);
-  Id legacy_sgn(Id x);
-  Id legacy_clamp_sym(Id x, Id max, int n = 4);     // ps1x_const / ps1x_range
-  Id legacy_fixed_quantise(Id x, int bits, Id max); // vec4
-  Id legacy_index(Id x);                            // clamp_index_float, float → int
+  // The SPIR-V back end of the numeric rules (ir/numeric_rules.h) at width n (1: float,
+  // 4: vec4); every rule is instantiated with it, never rewritten here.
+  SpirvArith arith(int n = 4);
+  Id dot(Id a, Id c, int count); // rule::dot over the first count components of two vec4
+  Id to_index(Id x);             // rule::index_range, then float → int
 
   // ---- registers and operands (emit_operands.cpp) ----
   Id register_var(ir::RegFile file, uint32_t index); // Private vec4 (a0: ivec4)

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "linear_forms.h"
+#include "tierlift/ir/source_modifiers.h"
 
 namespace tierlift::analytic {
 
@@ -31,19 +32,9 @@ std::array<double, 4> constant_value(const ir::Program& p, const std::vector<Vec
 }
 
 std::optional<AffineMod> affine_modifier(ir::SrcMod mod) {
-  using M = ir::SrcMod;
-  switch (mod) {
-  case M::None: return AffineMod{1, 0};
-  case M::Neg: return AffineMod{-1, 0};
-  case M::Bias: return AffineMod{1, -0.5};
-  case M::BiasNeg: return AffineMod{-1, 0.5};
-  case M::Bx2: return AffineMod{2, -1};
-  case M::Bx2Neg: return AffineMod{-2, 1};
-  case M::Comp: return AffineMod{-1, 1};
-  case M::X2: return AffineMod{2, 0};
-  case M::X2Neg: return AffineMod{-2, 0};
-  default: return std::nullopt; // _dz, _dw, _abs, ! are not affine
-  }
+  const ir::SrcModInfo& m = ir::src_mod_info(mod);
+  if (!m.affine) return std::nullopt; // _dz, _dw, _abs, ! are not affine
+  return AffineMod{m.scale, m.bias};
 }
 
 std::string place_taps(const CoordForms& coords, std::vector<Tap>& taps) {

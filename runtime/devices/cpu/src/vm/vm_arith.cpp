@@ -1,9 +1,9 @@
-// The arithmetic instructions: one compute function per opcode, dispatched through a table
-// indexed by ir::Opcode. Each one only computes; the executor fetches every source first
-// and stores afterwards, which gives matrix macros and co-issued pairs their
-// read-before-write semantics (d3d9-isa.md §4.6, §5.1). Every numeric rule comes from
-// ir/numerics.h; each compute function exists twice, once per denormal mode
-// (NUMERICS.md rule 13), and the table of the program's mode is chosen at preparation.
+// The arithmetic instructions: one compute function per opcode, dispatched through an
+// OpcodeTable (the VM's one dispatch style, vm_internal.h). Each one only computes; the executor
+// fetches every source first and stores afterwards, which gives matrix macros and co-issued pairs
+// their read-before-write semantics (d3d9-isa.md §4.6, §5.1). Every numeric rule comes from
+// ir/numeric_rules.h (through ir/numerics.h); each compute function exists twice, once per denormal
+// mode (NUMERICS.md rule 13), and the table of the program's mode is chosen at preparation.
 #include <array>
 #include <cmath>
 
@@ -124,10 +124,10 @@ VM_OP(op_dst) {
 
 VM_OP(op_crs) {
   const Vec4 &a = s[0], &b = s[1];
-  auto m = num::legacy_mul<D>;
-  auto sub = num::legacy_sub<D>;
-  d = {sub(m(a[1], b[2]), m(a[2], b[1])), sub(m(a[2], b[0]), m(a[0], b[2])),
-       sub(m(a[0], b[1]), m(a[1], b[0])), 0.0f};
+  auto cross = [&](int i, int j) {
+    return num::rule::cross_component(num::FloatArith<D>{}, a[i], b[j], a[j], b[i]);
+  };
+  d = {cross(1, 2), cross(2, 0), cross(0, 1), 0.0f};
 }
 
 VM_OP(op_nrm) {
@@ -142,7 +142,7 @@ VM_OP(op_sincos) {
 }
 
 VM_OP(op_dp2add) {
-  d = splat(num::legacy_add<D>(num::legacy_dp2<D>(s[0].data(), s[1].data()), sc(s[2])));
+  d = splat(num::rule::dp2add(num::FloatArith<D>{}, s[0].data(), s[1].data(), sc(s[2])));
 }
 
 // expp: vs_1_1 is the D3D8 vector macro (2^floor(v), v − floor(v), 2^v, 1); vs_2_0 is
@@ -153,8 +153,8 @@ VM_OP(op_expp) {
     d = splat(num::legacy_exp<D>(v));
     return;
   }
-  float fl = num::legacy_floor<D>(v);
-  d = {num::legacy_exp<D>(fl), num::legacy_sub<D>(v, fl), num::legacy_exp<D>(v), 1.0f};
+  const auto r = num::rule::expp_partial(num::FloatArith<D>{}, v);
+  d = {r.x, r.y, r.z, r.w};
 }
 
 // logp: the D3D9 docs define it, in every version, as the scalar log of |v|.
@@ -176,60 +176,33 @@ VM_OP(op_m3) {
 VM_OP(op_bem) {
   StageState ss = inv.tex ? inv.tex->stage_state(static_cast<uint32_t>(st.aux)) : StageState{};
   const auto& m = ss.bumpenv_mat; // M00, M01, M10, M11
-  auto mul = num::legacy_mul<D>;
-  auto add = num::legacy_add<D>;
-  d = {add(add(s[0][0], mul(m[0], s[1][0])), mul(m[2], s[1][1])),
-       add(add(s[0][1], mul(m[1], s[1][0])), mul(m[3], s[1][1])), 0.0f, 0.0f};
+  const num::FloatArith<D> a;
+  d = {num::rule::bump_offset(a, s[0][0], m[0], s[1][0], m[2], s[1][1]),
+       num::rule::bump_offset(a, s[0][1], m[1], s[1][0], m[3], s[1][1]), 0.0f, 0.0f};
 }
 
 #undef VM_OP
 
-template <Denormals D> struct ComputeTable {
-  std::array<ComputeFn, ir::kOpcodeCount> fn{};
-  constexpr ComputeTable() {
-    auto set = [this](Opcode op, ComputeFn f) { fn[static_cast<int>(op)] = f; };
-    set(Opcode::Nop, op_nop<D>);
-    set(Opcode::Mov, op_mov<D>);
-    set(Opcode::Mova, op_mov<D>); // the conversion happens at the store (DstKind::AddrRound)
-    set(Opcode::Add, op_add<D>);
-    set(Opcode::Sub, op_sub<D>);
-    set(Opcode::Mad, op_mad<D>);
-    set(Opcode::Mul, op_mul<D>);
-    set(Opcode::Rcp, op_rcp<D>);
-    set(Opcode::Rsq, op_rsq<D>);
-    set(Opcode::Dp3, op_dp3<D>);
-    set(Opcode::Dp4, op_dp4<D>);
-    set(Opcode::Min, op_min<D>);
-    set(Opcode::Max, op_max<D>);
-    set(Opcode::Slt, op_slt<D>);
-    set(Opcode::Sge, op_sge<D>);
-    set(Opcode::Exp, op_exp<D>);
-    set(Opcode::Log, op_log<D>);
-    set(Opcode::Lit, op_lit<D>);
-    set(Opcode::Dst, op_dst<D>);
-    set(Opcode::Lrp, op_lrp<D>);
-    set(Opcode::Frc, op_frc<D>);
-    set(Opcode::M4x4, op_m4<D>);
-    set(Opcode::M4x3, op_m4<D>);
-    set(Opcode::M3x4, op_m3<D>);
-    set(Opcode::M3x3, op_m3<D>);
-    set(Opcode::M3x2, op_m3<D>);
-    set(Opcode::Pow, op_pow<D>);
-    set(Opcode::Crs, op_crs<D>);
-    set(Opcode::Sgn, op_sgn<D>);
-    set(Opcode::Abs, op_abs<D>);
-    set(Opcode::Nrm, op_nrm<D>);
-    set(Opcode::SinCos, op_sincos<D>);
-    set(Opcode::Expp, op_expp<D>);
-    set(Opcode::Logp, op_logp<D>);
-    set(Opcode::Cnd, op_cnd<D>);
-    set(Opcode::Cmp, op_cmp<D>);
-    set(Opcode::Bem, op_bem<D>);
-    set(Opcode::Dp2Add, op_dp2add<D>);
-  }
-};
-constexpr ComputeTable<Denormals::Keep> kComputeKeep;
-constexpr ComputeTable<Denormals::Flush> kComputeFlush;
+// Mova computes a mov: the conversion happens at the store (DstKind::AddrRound).
+template <Denormals D> constexpr OpcodeTable<ComputeFn> compute_table() {
+  const std::pair<Opcode, ComputeFn> rows[] = {
+      {Opcode::Nop, op_nop<D>},   {Opcode::Mov, op_mov<D>},       {Opcode::Mova, op_mov<D>},
+      {Opcode::Add, op_add<D>},   {Opcode::Sub, op_sub<D>},       {Opcode::Mad, op_mad<D>},
+      {Opcode::Mul, op_mul<D>},   {Opcode::Rcp, op_rcp<D>},       {Opcode::Rsq, op_rsq<D>},
+      {Opcode::Dp3, op_dp3<D>},   {Opcode::Dp4, op_dp4<D>},       {Opcode::Min, op_min<D>},
+      {Opcode::Max, op_max<D>},   {Opcode::Slt, op_slt<D>},       {Opcode::Sge, op_sge<D>},
+      {Opcode::Exp, op_exp<D>},   {Opcode::Log, op_log<D>},       {Opcode::Lit, op_lit<D>},
+      {Opcode::Dst, op_dst<D>},   {Opcode::Lrp, op_lrp<D>},       {Opcode::Frc, op_frc<D>},
+      {Opcode::M4x4, op_m4<D>},   {Opcode::M4x3, op_m4<D>},       {Opcode::M3x4, op_m3<D>},
+      {Opcode::M3x3, op_m3<D>},   {Opcode::M3x2, op_m3<D>},       {Opcode::Pow, op_pow<D>},
+      {Opcode::Crs, op_crs<D>},   {Opcode::Sgn, op_sgn<D>},       {Opcode::Abs, op_abs<D>},
+      {Opcode::Nrm, op_nrm<D>},   {Opcode::SinCos, op_sincos<D>}, {Opcode::Expp, op_expp<D>},
+      {Opcode::Logp, op_logp<D>}, {Opcode::Cnd, op_cnd<D>},       {Opcode::Cmp, op_cmp<D>},
+      {Opcode::Bem, op_bem<D>},   {Opcode::Dp2Add, op_dp2add<D>}};
+  return OpcodeTable<ComputeFn>(rows);
+}
+constexpr OpcodeTable<ComputeFn> kComputeKeep = compute_table<Denormals::Keep>();
+constexpr OpcodeTable<ComputeFn> kComputeFlush = compute_table<Denormals::Flush>();
 
 // Fetches every source of one arithmetic step (matrix rows included) into s.
 inline void fetch_all(const Step& st, Vec4* s, const Invocation& inv) {
@@ -252,7 +225,7 @@ inline void fetch_all(const Step& st, Vec4* s, const Invocation& inv) {
 } // namespace
 
 ComputeFn arith_compute(Opcode op, bool flush_denormals) {
-  return (flush_denormals ? kComputeFlush.fn : kComputeKeep.fn)[static_cast<int>(op)];
+  return (flush_denormals ? kComputeFlush : kComputeKeep)[op];
 }
 
 void exec_arith(const Step& st, Invocation& inv) {

@@ -112,24 +112,17 @@ void exec_phase(const Step& s, Invocation& inv) {
   for (int r = 0; r < 6; ++r) inv.reg[kTempBase + r][3] = 0.0f;
 }
 
+constexpr std::pair<Opcode, ExecFn> kFlowRows[] = {
+    {Opcode::Loop, exec_loop},      {Opcode::Rep, exec_rep},      {Opcode::EndLoop, exec_endloop},
+    {Opcode::EndRep, exec_endloop}, {Opcode::If, exec_if},        {Opcode::Else, exec_else},
+    {Opcode::EndIf, exec_marker},   {Opcode::Label, exec_marker}, {Opcode::Call, exec_call},
+    {Opcode::CallNz, exec_callnz},  {Opcode::Ret, exec_ret},      {Opcode::Phase, exec_phase}};
+constexpr OpcodeTable<ExecFn> kFlow{kFlowRows};
+
 } // namespace
 
 ExecFn flow_exec(Opcode op) {
-  switch (op) {
-  case Opcode::Loop: return exec_loop;
-  case Opcode::Rep: return exec_rep;
-  case Opcode::EndLoop:
-  case Opcode::EndRep: return exec_endloop;
-  case Opcode::If: return exec_if;
-  case Opcode::Else: return exec_else;
-  case Opcode::EndIf:
-  case Opcode::Label: return exec_marker;
-  case Opcode::Call: return exec_call;
-  case Opcode::CallNz: return exec_callnz;
-  case Opcode::Ret: return exec_ret;
-  case Opcode::Phase: return exec_phase;
-  default: return nullptr;
-  }
+  return kFlow[op];
 }
 
 } // namespace tierlift::cpu::vm

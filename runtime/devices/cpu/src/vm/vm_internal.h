@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "tierlift/cpu/shader_vm.h"
@@ -153,6 +154,20 @@ SrcDesc decode_src(const ir::SrcOperand& op, const Prepared& p);
 DstDesc decode_dst(const ir::DstOperand& op, const ir::InstrMods& mods, const Prepared& p);
 int flat_slot(ir::RegFile file, uint32_t index, ir::ShaderStage stage); // -1: not a slot
 Vec4 constant_value(int32_t index, const Invocation& inv);
+
+// The one dispatch style of the VM: each instruction family (arithmetic, texture, flow)
+// fills a constexpr table of handlers indexed by ir::Opcode, once per denormal mode where
+// the handlers depend on it; preparation looks the handler up once per instruction.
+template <class Fn> struct OpcodeTable {
+  std::array<Fn, ir::kOpcodeCount> fn{};
+  template <size_t N> constexpr explicit OpcodeTable(const std::pair<ir::Opcode, Fn> (&rows)[N]) {
+    for (const auto& [op, f] : rows) fn[static_cast<size_t>(op)] = f;
+  }
+  constexpr Fn operator[](ir::Opcode op) const {
+    const auto i = static_cast<size_t>(op);
+    return i < fn.size() ? fn[i] : nullptr;
+  }
+};
 
 // vm_arith.cpp: the per-opcode compute table and the arithmetic executors.
 ComputeFn arith_compute(ir::Opcode op, bool flush_denormals);

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "tierlift/ir/numerics.h"
+#include "tierlift/ir/source_modifiers.h"
 #include "vm_internal.h"
 
 namespace tierlift::cpu::vm {
@@ -115,44 +116,19 @@ Vec4 load(const SrcDesc& s, const Invocation& inv) {
   return {0, 0, 0, 0};
 }
 
-// _dz / _dw (ps_1_4 texld/texcrd): x and y divided by z or w; a zero divisor makes them 1.
-template <Denormals D> void divide_xy(Vec4& v, int by) {
-  float d = v[by];
-  if (num::dz<D>(d) == 0.0f) {
-    v[0] = v[1] = 1.0f;
-  } else {
-    v[0] = num::legacy_div<D>(v[0], d);
-    v[1] = num::legacy_div<D>(v[1], d);
-  }
-}
-
-// Negation and abs move bits (no denormal flush); the others are arithmetic.
-template <Denormals D> float post_modifier(float x, SrcMod m) {
-  switch (m) {
-  case SrcMod::Neg: return -x;
-  case SrcMod::Bias: return num::legacy_bias<D>(x);
-  case SrcMod::BiasNeg: return -num::legacy_bias<D>(x);
-  case SrcMod::Bx2: return num::legacy_bx2<D>(x);
-  case SrcMod::Bx2Neg: return -num::legacy_bx2<D>(x);
-  case SrcMod::Comp: return num::legacy_comp<D>(x);
-  case SrcMod::X2: return num::legacy_scale<D>(2.0f, x);
-  case SrcMod::X2Neg: return -num::legacy_scale<D>(2.0f, x);
-  case SrcMod::Abs: return std::fabs(x);
-  case SrcMod::AbsNeg: return -std::fabs(x);
-  default: return x; // None, Dz, Dw (pre-swizzle), Not (booleans only)
-  }
-}
-
 } // namespace
 
 template <Denormals D> Vec4 modify_src(const SrcDesc& s, Vec4 v) {
+  const num::FloatArith<D> a;
   if (s.clamp_const)
     for (float& x : v) x = num::legacy_ps1x_const<D>(x);
-  if (s.mod == SrcMod::Dz) divide_xy<D>(v, 2);
-  if (s.mod == SrcMod::Dw) divide_xy<D>(v, 3);
+  if (s.mod != SrcMod::None) {
+    const ir::SrcModInfo& info = ir::src_mod_info(s.mod);
+    if (info.divide_by >= 0) num::rule::project_divide(a, v[0], v[1], v[info.divide_by]);
+  }
   if (!s.identity) v = Vec4{v[s.swz[0]], v[s.swz[1]], v[s.swz[2]], v[s.swz[3]]};
   if (s.mod != SrcMod::None)
-    for (float& x : v) x = post_modifier<D>(x, s.mod);
+    for (float& x : v) x = ir::apply_source_modifier(a, s.mod, x);
   return v;
 }
 template Vec4 modify_src<Denormals::Keep>(const SrcDesc& s, Vec4 v);

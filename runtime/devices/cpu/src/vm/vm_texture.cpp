@@ -1,7 +1,8 @@
 // Texture instructions: ps_1_1–1_3 texture-address instructions (d3d9-isa.md §5.5),
 // ps_1_4 texld/texcrd/texkill/texdepth (§5.6) and ps_2_0 texld/texldp/texldb/texkill
 // (§5.7). Every sample goes through the TextureUnit; StageState supplies bump matrices
-// and the projected flag. Each executor exists once per denormal mode (NUMERICS.md rule 13).
+// and the projected flag. Each executor exists once per denormal mode (NUMERICS.md rule 13),
+// dispatched through an OpcodeTable (the VM's one dispatch style, vm_internal.h).
 #include "tierlift/ir/numerics.h"
 #include "vm_internal.h"
 
@@ -83,10 +84,9 @@ template <Denormals D>
 Vec4 bump_sample(const Step& s, Invocation& inv, const Vec4& tn, const StageState& ss) {
   Vec4 c = projected<D>(tc(inv, s.aux), ss);
   const auto& m = ss.bumpenv_mat; // M00, M01, M10, M11
-  auto mul = num::legacy_mul<D>;
-  auto add = num::legacy_add<D>;
-  float u = add(add(c[0], mul(m[0], tn[0])), mul(m[2], tn[1]));
-  float v = add(add(c[1], mul(m[1], tn[0])), mul(m[3], tn[1]));
+  const num::FloatArith<D> a;
+  float u = num::rule::bump_offset(a, c[0], m[0], tn[0], m[2], tn[1]);
+  float v = num::rule::bump_offset(a, c[1], m[1], tn[0], m[3], tn[1]);
   return sample(inv, s.aux, {u, v, c[2], c[3]});
 }
 
@@ -101,7 +101,8 @@ template <Denormals D> void ex_texbeml(const Step& s, Invocation& inv) {
   StageState ss = stage_state(inv, s.aux);
   Vec4 tn = fetch(s.src[0], inv);
   Vec4 r = bump_sample<D>(s, inv, tn, ss);
-  float l = num::legacy_mad<D>(tn[2], ss.bumpenv_lscale, ss.bumpenv_loffset);
+  float l =
+      num::rule::bump_luminance(num::FloatArith<D>{}, tn[2], ss.bumpenv_lscale, ss.bumpenv_loffset);
   for (float& x : r) x = num::legacy_mul<D>(x, l);
   store(s.dst, r, inv);
 }
@@ -217,41 +218,40 @@ template <Denormals D> void ex_texldb(const Step& s, Invocation& inv) {
 
 namespace {
 
-template <Denormals D> ExecFn texture_exec_for(Opcode op) {
-  switch (op) {
-  case Opcode::Tex: return ex_tex<D>;
-  case Opcode::TexCoord: return ex_texcoord<D>;
-  case Opcode::TexKill: return ex_texkill<D>;
-  case Opcode::TexBem: return ex_texbem<D>;
-  case Opcode::TexBemL: return ex_texbeml<D>;
-  case Opcode::TexReg2Ar: return ex_texreg2ar<D>;
-  case Opcode::TexReg2Gb: return ex_texreg2gb<D>;
-  case Opcode::TexReg2Rgb: return ex_texreg2rgb<D>;
-  case Opcode::TexM3x2Pad:
-  case Opcode::TexM3x3Pad: return ex_pad<D>;
-  case Opcode::TexM3x2Tex: return ex_texm3x2tex<D>;
-  case Opcode::TexM3x2Depth: return ex_texm3x2depth<D>;
-  case Opcode::TexM3x3: return ex_texm3x3<D>;
-  case Opcode::TexM3x3Tex: return ex_texm3x3tex<D>;
-  case Opcode::TexM3x3Spec: return ex_texm3x3spec<D>;
-  case Opcode::TexM3x3VSpec: return ex_texm3x3vspec<D>;
-  case Opcode::TexDp3: return ex_texdp3<D>;
-  case Opcode::TexDp3Tex: return ex_texdp3tex<D>;
-  case Opcode::TexLd14: return ex_texld14<D>;
-  case Opcode::TexCrd: return ex_texcrd<D>;
-  case Opcode::TexDepth: return ex_texdepth<D>;
-  case Opcode::TexLd: return ex_texld<D>;
-  case Opcode::TexLdP: return ex_texldp<D>;
-  case Opcode::TexLdB: return ex_texldb<D>;
-  default: return nullptr;
-  }
+template <Denormals D> constexpr OpcodeTable<ExecFn> texture_table() {
+  const std::pair<Opcode, ExecFn> rows[] = {{Opcode::Tex, ex_tex<D>},
+                                            {Opcode::TexCoord, ex_texcoord<D>},
+                                            {Opcode::TexKill, ex_texkill<D>},
+                                            {Opcode::TexBem, ex_texbem<D>},
+                                            {Opcode::TexBemL, ex_texbeml<D>},
+                                            {Opcode::TexReg2Ar, ex_texreg2ar<D>},
+                                            {Opcode::TexReg2Gb, ex_texreg2gb<D>},
+                                            {Opcode::TexReg2Rgb, ex_texreg2rgb<D>},
+                                            {Opcode::TexM3x2Pad, ex_pad<D>},
+                                            {Opcode::TexM3x3Pad, ex_pad<D>},
+                                            {Opcode::TexM3x2Tex, ex_texm3x2tex<D>},
+                                            {Opcode::TexM3x2Depth, ex_texm3x2depth<D>},
+                                            {Opcode::TexM3x3, ex_texm3x3<D>},
+                                            {Opcode::TexM3x3Tex, ex_texm3x3tex<D>},
+                                            {Opcode::TexM3x3Spec, ex_texm3x3spec<D>},
+                                            {Opcode::TexM3x3VSpec, ex_texm3x3vspec<D>},
+                                            {Opcode::TexDp3, ex_texdp3<D>},
+                                            {Opcode::TexDp3Tex, ex_texdp3tex<D>},
+                                            {Opcode::TexLd14, ex_texld14<D>},
+                                            {Opcode::TexCrd, ex_texcrd<D>},
+                                            {Opcode::TexDepth, ex_texdepth<D>},
+                                            {Opcode::TexLd, ex_texld<D>},
+                                            {Opcode::TexLdP, ex_texldp<D>},
+                                            {Opcode::TexLdB, ex_texldb<D>}};
+  return OpcodeTable<ExecFn>(rows);
 }
+constexpr OpcodeTable<ExecFn> kTextureKeep = texture_table<Denormals::Keep>();
+constexpr OpcodeTable<ExecFn> kTextureFlush = texture_table<Denormals::Flush>();
 
 } // namespace
 
 ExecFn texture_exec(Opcode op, bool flush_denormals) {
-  return flush_denormals ? texture_exec_for<Denormals::Flush>(op)
-                         : texture_exec_for<Denormals::Keep>(op);
+  return (flush_denormals ? kTextureFlush : kTextureKeep)[op];
 }
 
 } // namespace tierlift::cpu::vm
