@@ -1,5 +1,5 @@
 // The source-modifier table and the rule templates on fp32: each modifier's spelling and
-// value against hand-computed results (d3d9-isa.md §4.2), and the rules a back end can only
+// value against hand-computed results, and the rules a back end can only
 // get right by running the operations in the documented order.
 #include <gtest/gtest.h>
 

@@ -247,7 +247,7 @@ template <class A, class V = typename A::V> V fixed_quantise(const A& a, V x, V 
   return a.select(a.is_nan(x), a.k(0.0f), q);
 }
 
-// The arithmetic source modifiers (d3d9-isa.md §4.2, NUMERICS.md), each one rounding.
+// The arithmetic source modifiers (source_modifiers.h, NUMERICS.md), each one rounding.
 template <class A, class V = typename A::V> V bias(const A& a, V x) {
   return a.sub(x, a.k(0.5f));
 }

@@ -1,6 +1,7 @@
-// The source modifiers as one table (d3d9-isa.md §4.2): how each is written, what it
-// computes, and in which order. The parser and printer read the spelling, the validator the
-// names, and the interpreter and the SPIR-V code generator apply the arithmetic through
+// The source modifiers (-, _bias, _bx2, 1-, _x2, _dz, _dw, _abs, !) as one table: how each
+// is written, what it computes, and in which order. The parser and printer read the
+// spelling, the validator the names, the analytic model the affine columns, and the
+// interpreter and the SPIR-V code generator apply the arithmetic through
 // apply_source_modifier, one definition over the arithmetic back ends of numeric_rules.h.
 //
 // Order of a source read (NUMERICS.md): the pre-swizzle divide (_dz/_dw, rule 32), the
