@@ -14,12 +14,15 @@
 
 #include <fmt/format.h>
 
+#include "run_flags.h"
 #include "tierlift/asm/parser.h"
 #include "tierlift/asm/validator.h"
 #include "tierlift/cpu/run_job.h"
 
 namespace tierlift::cpu {
 namespace {
+
+using namespace tierlift::cli; // the flag parsers
 
 constexpr uint32_t N = 16;
 
