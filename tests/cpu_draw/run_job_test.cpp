@@ -228,7 +228,7 @@ TEST(RunJob, BadTextureIsAnError) {
   RunDiagnostics d;
   EXPECT_FALSE(run_job(r, d).ok);
   ASSERT_EQ(d.other.error_count(), 2u);
-  EXPECT_EQ(d.other.all()[0].rule, kRuleTextureMissing);
+  EXPECT_EQ(d.other.all()[0].rule, pass::kRuleTextureMissing);
   EXPECT_EQ(d.other.all()[1].rule, "texture");
 }
 
