@@ -4,6 +4,9 @@
 #include <string>
 
 #include "tierlift/asm/parser.h"
+#include <cstdlib>
+#include <string>
+
 #include "tierlift/cpu/run_job.h"
 #include "tierlift/listings/embedded.h"
 
@@ -30,19 +33,25 @@ std::optional<cpu::Pass> blur8_pass() {
   r.width = kBlurWidth;
   r.height = kBlurHeight;
   r.format = img::Format::RGBA8;
-  std::string err;
-  for (int k = 0; k < 8; ++k) {
-    r.constants.push_back(*cpu::parse_const_setting(
-        "vs:c" + std::to_string(k) + "=" + std::to_string(blur8_offset(k)) + ",0,0,0", err));
+  for (uint32_t k = 0; k < 8; ++k) {
+    // Through six decimals, as the bench always passed it (a --const text).
+    const float offset =
+        std::strtof(std::to_string(blur8_offset(static_cast<int>(k))).c_str(), nullptr);
     r.constants.push_back(
-        *cpu::parse_const_setting("ps:c" + std::to_string(k) + "=0.125,0.125,0.125,0.125", err));
+        {pass::StageMask::Vertex, ir::RegFile::Const, k, {offset, 0, 0, 0}, {}, false});
+    r.constants.push_back({pass::StageMask::Pixel,
+                           ir::RegFile::Const,
+                           k,
+                           {0.125f, 0.125f, 0.125f, 0.125f},
+                           {},
+                           false});
   }
-  r.attrs.push_back(*cpu::parse_attr_setting("v3=quad-uv", err));
+  r.attrs.push_back({ir::RegFile::Input, 3, {0, 0, 0, 1}, true}); // v3 = the quad uv
   r.textures.push_back({0, "builtin:noise:1920x1080"});
   r.filter = cpu::Filter::Linear;
   r.address = cpu::AddressMode::Clamp;
   cpu::RunDiagnostics d;
-  return cpu::pass_from_request(r, d);
+  return pass::prepare_pass(r, d);
 }
 
 } // namespace tierlift::bench

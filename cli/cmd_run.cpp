@@ -1,17 +1,22 @@
-// tierlift run: one pass of a vertex and/or pixel listing over the full-screen quad on the
-// CPU device. Only flags and printing live here; the work is tierlift::cpu::run_job.
+// tierlift run: one pass of a vertex and/or pixel listing over the full-screen quad, a graph of
+// one pass: the flags become one pass::Pass (pass::prepare_pass: listings and textures read
+// once), which the CPU device, the Vulkan device or both draw. Only flags and printing live
+// here.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fmt/format.h>
 #include <memory>
+#include <new>
 
 #include "commands.h"
 #include "front_end.h"
 #include "named_constants.h"
 #include "report.h"
-#include "tierlift/cpu/run_job.h"
+#include "run_flags.h"
+#include "run_output.h"
+#include "tierlift/cpu/device.h"
 #include "tierlift/image/compare.h"
 #include "tierlift/ir/ps1x_range.h"
 #include "tierlift/vulkan/run_job.h"
@@ -41,39 +46,38 @@ template <class T> T need(std::optional<T> value, const std::string& error) {
 }
 
 // --const settings, names already resolved to registers (named_constants.h).
-std::vector<cpu::ConstSetting> parse_constants(const std::vector<std::string>& settings) {
-  std::vector<cpu::ConstSetting> out;
+std::vector<pass::ConstSetting> parse_constants(const std::vector<std::string>& settings) {
+  std::vector<pass::ConstSetting> out;
   std::string err;
-  for (const auto& s : settings) out.push_back(need(cpu::parse_const_setting(s, err), err));
+  for (const auto& s : settings) out.push_back(need(parse_const_setting(s, err), err));
   return out;
 }
 
 // Every flag but --const (read once the listings' constant tables are known).
-cpu::RunRequest build_request(const RunFlags& f) {
-  cpu::RunRequest r;
+pass::RunRequest build_request(const RunFlags& f) {
+  pass::RunRequest r;
   std::string err;
-  auto size = need(cpu::parse_size(f.size, err), err);
+  auto size = need(parse_size(f.size, err), err);
   r.width = size[0];
   r.height = size[1];
   r.format = need(img::parse_format(f.format),
                   fmt::format("--format '{}': expected rgba8, rgba16f or rgba32f", f.format));
-  for (const auto& s : f.inputs) r.inputs.push_back(need(cpu::parse_input_setting(s, err), err));
-  for (const auto& s : f.attrs) r.attrs.push_back(need(cpu::parse_attr_setting(s, err), err));
-  for (const auto& s : f.textures)
-    r.textures.push_back(need(cpu::parse_texture_setting(s, err), err));
+  for (const auto& s : f.inputs) r.inputs.push_back(need(parse_input_setting(s, err), err));
+  for (const auto& s : f.attrs) r.attrs.push_back(need(parse_attr_setting(s, err), err));
+  for (const auto& s : f.textures) r.textures.push_back(need(parse_texture_setting(s, err), err));
   for (const auto& s : f.probes) {
-    cpu::ProbePoint p = need(cpu::parse_probe(s, err), err);
+    pass::ProbePoint p = need(parse_probe(s, err), err);
     if (p.x >= r.width || p.y >= r.height)
       throw UsageError{fmt::format("--probe {}: outside the {}x{} image", s, r.width, r.height)};
     r.probes.push_back(p);
   }
-  r.filter = need(cpu::parse_filter(f.filter),
+  r.filter = need(parse_filter(f.filter),
                   fmt::format("--filter '{}': expected point or linear", f.filter));
   r.address =
-      need(cpu::parse_address(f.address),
+      need(parse_address(f.address),
            fmt::format("--address '{}': expected clamp, wrap, mirror or border", f.address));
   r.conventions.pixel_center =
-      need(cpu::parse_pixel_center(f.pixel_center),
+      need(parse_pixel_center(f.pixel_center),
            fmt::format("--pixel-center '{}': expected d3d9 or modern", f.pixel_center));
   if (f.subtexel_bits < 0 || f.subtexel_bits > 24)
     throw UsageError{fmt::format("--subtexel-bits {}: expected 0 (exact) .. 24", f.subtexel_bits)};
@@ -100,16 +104,53 @@ std::string vulkan_output(const std::string& output) {
 }
 
 // The files the run reads, which no output may replace.
-std::vector<std::string> input_files(const RunFlags& f, const cpu::RunRequest& r) {
+std::vector<std::string> input_files(const RunFlags& f, const pass::RunRequest& r) {
   std::vector<std::string> inputs{f.vs, f.ps};
-  for (const cpu::TextureSetting& t : r.textures) inputs.push_back(t.source);
+  for (const pass::TextureSetting& t : r.textures) inputs.push_back(t.source);
   return inputs;
 }
 
-nlohmann::json result_json(const RunFlags& f, const cpu::RunRequest& r, const cpu::RunResult& out,
+// One device's draw of the prepared pass: a new target of the request's size and format, the
+// pass, the probes. Diagnostics go to `report`; ok is false after an error.
+struct DeviceRun {
+  bool ok = false;
+  img::Image image;
+  std::vector<pass::ProbeValue> probes;
+  pass::DrawReport report;
+};
+
+DeviceRun draw_on(pass::Device& device, const pass::Pass& prepared, const pass::RunRequest& req,
+                  Report& report) {
+  DeviceRun out;
+  const auto t0 = std::chrono::steady_clock::now();
+  try { // a 16384² float target is 4 GiB: running out of memory is an error, not a crash
+    out.image = img::Image(req.width, req.height, req.format);
+  } catch (const std::bad_alloc&) {
+    report.error("memory", fmt::format("not enough memory for a {}x{} target and its textures",
+                                       req.width, req.height));
+    return out;
+  }
+  const double alloc_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  ir::Result<pass::DrawReport> drawn = device.draw(prepared, out.image);
+  for (const ir::Diagnostic& d : drawn.diagnostics()) {
+    if (d.severity == ir::Severity::Error)
+      report.error(d.rule, d.message);
+    else
+      report.warning(d.rule, d.message);
+  }
+  if (!drawn) return out;
+  out.report = *drawn;
+  out.report.setup_ms += alloc_ms;
+  out.probes = pass::read_probes(out.image, req.probes);
+  out.ok = true;
+  return out;
+}
+
+nlohmann::json result_json(const RunFlags& f, const pass::RunRequest& r, const DeviceRun& run,
                            double write_ms) {
   nlohmann::json probes = nlohmann::json::array();
-  for (const auto& p : out.probes)
+  for (const auto& p : run.probes)
     probes.push_back(
         {{"x", p.x}, {"y", p.y}, {"rgba", {p.value[0], p.value[1], p.value[2], p.value[3]}}});
   return {{"size", {{"width", r.width}, {"height", r.height}}},
@@ -119,9 +160,10 @@ nlohmann::json result_json(const RunFlags& f, const cpu::RunRequest& r, const cp
             {"value", r.conventions.ps1x_max_value}}},
           {"probes", probes},
           {"output", f.output.empty() ? nlohmann::json() : nlohmann::json(f.output)},
-          {"pixels_shaded", out.stats.pixels_shaded},
-          {"pixels_killed", out.stats.pixels_killed},
-          {"timing_ms", {{"setup", out.setup_ms}, {"draw", out.draw_ms}, {"write", write_ms}}}};
+          {"pixels_shaded", run.report.pixels_shaded},
+          {"pixels_killed", run.report.pixels_killed},
+          {"timing_ms",
+           {{"setup", run.report.setup_ms}, {"draw", run.report.draw_ms}, {"write", write_ms}}}};
 }
 
 int run(const RunFlags& f) {
@@ -134,7 +176,7 @@ int run(const RunFlags& f) {
   }
   // Every flag but --const is checked before any file is read; --const may name a constant
   // of a token stream's CTAB, so it is read once the listings are loaded.
-  cpu::RunRequest req;
+  pass::RunRequest req;
   try {
     req = build_request(f);
   } catch (const UsageError& e) {
@@ -189,48 +231,58 @@ int run(const RunFlags& f) {
   if (vs) req.vs = std::make_shared<const ir::Program>(*vs->program);
   if (ps) req.ps = std::make_shared<const ir::Program>(*ps->program);
 
-  cpu::RunDiagnostics diags;
-  auto print_run_diagnostics = [&](const cpu::RunDiagnostics& d) {
+  pass::RunDiagnostics diags;
+  auto print_run_diagnostics = [&](const pass::RunDiagnostics& d) {
     if (vs) report.diagnostics(d.vs, vs->sources);
     if (ps) report.diagnostics(d.ps, ps->sources);
     print_other(d.other, report);
   };
-  auto failure_code = [](const cpu::RunDiagnostics& d) {
+  auto failure_code = [](const pass::RunDiagnostics& d) {
     for (const auto& e : d.other.all())
-      if (e.severity == ir::Severity::Error && e.rule == cpu::kRuleTextureMissing)
+      if (e.severity == ir::Severity::Error && e.rule == pass::kRuleTextureMissing)
         return kExitUsage;
     return kExitInvalid;
   };
 
-  cpu::RunResult out;
-  if (want_cpu) {
-    out = cpu::run_job(req, diags);
-    print_run_diagnostics(diags);
-    if (!out.ok) return report.finish(failure_code(diags));
+  // The one pass both devices draw: listings, constants and textures are read once here.
+  const auto t_prepare = std::chrono::steady_clock::now();
+  std::optional<pass::Pass> prepared;
+  try { // a huge texture may not fit: running out of memory is an error, not a crash
+    prepared = pass::prepare_pass(req, diags);
+  } catch (const std::bad_alloc&) {
+    diags.other.error({}, "memory",
+                      fmt::format("not enough memory for a {}x{} target and its textures",
+                                  req.width, req.height));
   }
-  vulkan::VulkanRunResult vk;
+  const double prepare_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_prepare)
+          .count();
+  print_run_diagnostics(diags);
+  if (!prepared) return report.finish(failure_code(diags));
+  // The same pass on each device asked for, through the one device interface.
+  DeviceRun out, vk;
+  std::string vk_name;
+  if (want_cpu) {
+    cpu::PassDevice device(req.threads);
+    out = draw_on(device, *prepared, req, report);
+    out.report.setup_ms += prepare_ms;
+    if (!out.ok) return report.finish(kExitInvalid);
+  }
   if (want_vulkan) {
-    cpu::RunDiagnostics vk_diags; // the same request: print its warnings only once
     vulkan::DeviceOptions options;
     options.gpu_filter = f.gpu;
-    vk = vulkan::run_job_vulkan(req, vk_diags, options);
-    if (!want_cpu) print_run_diagnostics(vk_diags);
-    if (vk.no_device) {
-      report.error("device", vk.error);
+    ir::Result<vulkan::Device*> device = vulkan::process_device(options);
+    if (!device) {
+      report.error("device", device.message());
       return report.finish(kExitUsage);
     }
-    if (!vk.ok) {
-      if (!vk.error.empty()) report.error("vulkan", "vulkan: " + vk.error);
-      return report.finish(want_cpu ? kExitInvalid : failure_code(vk_diags));
-    }
-    if (!want_cpu) {
-      out.ok = true;
-      out.image = vk.image;
-      out.probes = vk.probes;
-      out.setup_ms = vk.setup_ms;
-      out.draw_ms = vk.draw_ms;
-    }
+    vk_name = (*device)->name();
+    vulkan::PassDevice pass_device(**device);
+    vk = draw_on(pass_device, *prepared, req, report);
+    if (!vk.ok) return report.finish(kExitInvalid);
   }
+  // What the run reports as its image and probes: the CPU device's, else the Vulkan one's.
+  const DeviceRun& shown = want_cpu ? out : vk;
 
   // --backend both: the two devices must agree at design.md's targets for the format.
   std::optional<img::Comparison> agreement;
@@ -248,11 +300,11 @@ int run(const RunFlags& f) {
   double write_ms = 0;
   if (!f.output.empty()) {
     auto t0 = std::chrono::steady_clock::now();
-    std::vector<std::pair<std::string, const img::Image*>> files{{f.output, &out.image}};
+    std::vector<std::pair<std::string, const img::Image*>> files{{f.output, &shown.image}};
     if (want_cpu && want_vulkan) files.emplace_back(vulkan_output(f.output), &vk.image);
     for (const auto& [path, image] : files) {
       std::string warning;
-      std::string err = cpu::write_run_output(path, *image, &warning);
+      std::string err = write_run_output(path, *image, &warning);
       if (!warning.empty()) report.warning("clamped", warning, path);
       if (!err.empty()) {
         report.error("io", err, path);
@@ -264,20 +316,20 @@ int run(const RunFlags& f) {
   }
   if (report.json()) {
     nlohmann::json& j = report.result();
-    j = result_json(f, req, out, write_ms);
+    j = result_json(f, req, shown, write_ms);
     j["backend"] = f.backend;
-    if (want_vulkan) j["vulkan_device"] = vk.device_name;
+    if (want_vulkan) j["vulkan_device"] = vk_name;
     if (agreement) {
       j["agreement"] = {{"max_abs", agreement->max_abs},
                         {"rmse", agreement->rmse},
                         {"identical_share", agreement->identical_share},
                         {"within_targets", verdict->pass},
                         {"summary", verdict->summary}};
-      j["timing_ms"]["vulkan_setup"] = vk.setup_ms;
-      j["timing_ms"]["vulkan_draw"] = vk.draw_ms;
+      j["timing_ms"]["vulkan_setup"] = vk.report.setup_ms;
+      j["timing_ms"]["vulkan_draw"] = vk.report.draw_ms;
     }
   } else {
-    for (const auto& p : out.probes)
+    for (const auto& p : shown.probes)
       fmt::print("{},{}: {} {} {} {}\n", p.x, p.y, p.value[0], p.value[1], p.value[2], p.value[3]);
     if (agreement) {
       for (const auto& p : vk.probes)
@@ -285,9 +337,8 @@ int run(const RunFlags& f) {
                    p.value[3]);
       fmt::print("cpu vs vulkan ({}): max abs per channel {:.3g} {:.3g} {:.3g} {:.3g}, rmse "
                  "{:.3g}, identical pixels {:.2f} %: {}\n",
-                 vk.device_name, agreement->max_abs[0], agreement->max_abs[1],
-                 agreement->max_abs[2], agreement->max_abs[3], agreement->rmse_all,
-                 agreement->identical_share * 100.0,
+                 vk_name, agreement->max_abs[0], agreement->max_abs[1], agreement->max_abs[2],
+                 agreement->max_abs[3], agreement->rmse_all, agreement->identical_share * 100.0,
                  verdict->pass ? "within targets" : "BEYOND TARGETS");
     }
   }

@@ -14,12 +14,15 @@
 
 #include <fmt/format.h>
 
+#include "run_flags.h"
 #include "tierlift/asm/parser.h"
 #include "tierlift/asm/validator.h"
 #include "tierlift/cpu/run_job.h"
 
 namespace tierlift::cpu {
 namespace {
+
+using namespace tierlift::cli; // the flag parsers
 
 constexpr uint32_t N = 16;
 
@@ -225,7 +228,7 @@ TEST(RunJob, BadTextureIsAnError) {
   RunDiagnostics d;
   EXPECT_FALSE(run_job(r, d).ok);
   ASSERT_EQ(d.other.error_count(), 2u);
-  EXPECT_EQ(d.other.all()[0].rule, kRuleTextureMissing);
+  EXPECT_EQ(d.other.all()[0].rule, pass::kRuleTextureMissing);
   EXPECT_EQ(d.other.all()[1].rule, "texture");
 }
 

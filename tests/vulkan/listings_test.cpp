@@ -4,6 +4,7 @@
 // pruning (Listing 1 linked with Listing 4) does not change the image.
 #include <fmt/format.h>
 
+#include "run_flags.h"
 #include "vk_test_util.h"
 
 namespace tierlift::vulkan::test {
@@ -13,7 +14,7 @@ constexpr uint32_t W = 64, H = 48;
 
 cpu::ConstSetting cst(std::string_view text) {
   std::string err;
-  auto c = cpu::parse_const_setting(text, err);
+  auto c = cli::parse_const_setting(text, err);
   EXPECT_TRUE(c) << err;
   return c.value_or(cpu::ConstSetting{});
 }
@@ -37,7 +38,7 @@ cpu::RunRequest blur_request(int taps, double half, img::Format format, uint32_t
     r.constants.push_back(cst(fmt::format("ps:c{}={},{},{},{}", k, wk, wk, wk, wk)));
   }
   std::string err;
-  r.attrs.push_back(*cpu::parse_attr_setting("v3=quad-uv", err));
+  r.attrs.push_back(*cli::parse_attr_setting("v3=quad-uv", err));
   auto noise = std::make_shared<const img::Image>(img::builtin_noise(w, h, 7));
   for (uint32_t s = 0; s < (taps == 4 ? 4u : 1u); ++s) r.textures.push_back({s, "noise", noise});
   r.filter = cpu::Filter::Linear;
@@ -47,7 +48,7 @@ cpu::RunRequest blur_request(int taps, double half, img::Format format, uint32_t
 
 cpu::Pass make_pass(const cpu::RunRequest& r, int subtexel_bits) {
   cpu::RunDiagnostics d;
-  auto p = cpu::pass_from_request(r, d);
+  auto p = pass::prepare_pass(r, d);
   EXPECT_TRUE(p.has_value()) << ir::render_text(d.other, {});
   if (!p) return {};
   p->conventions.subtexel_bits = subtexel_bits;

@@ -11,13 +11,13 @@
 namespace tierlift::effects::detail {
 namespace {
 
-analytic::Address address(cpu::AddressMode m) {
+analytic::Address address(pass::AddressMode m) {
   switch (m) {
-  case cpu::AddressMode::Wrap: return analytic::Address::Wrap;
-  case cpu::AddressMode::Mirror: return analytic::Address::Mirror;
-  case cpu::AddressMode::Clamp: return analytic::Address::Clamp;
-  case cpu::AddressMode::Border: return analytic::Address::Border;
-  case cpu::AddressMode::MirrorOnce: return analytic::Address::MirrorOnce;
+  case pass::AddressMode::Wrap: return analytic::Address::Wrap;
+  case pass::AddressMode::Mirror: return analytic::Address::Mirror;
+  case pass::AddressMode::Clamp: return analytic::Address::Clamp;
+  case pass::AddressMode::Border: return analytic::Address::Border;
+  case pass::AddressMode::MirrorOnce: return analytic::Address::MirrorOnce;
   }
   return analytic::Address::Wrap;
 }
@@ -44,8 +44,8 @@ std::string prepare(const PassDesc& pass, const EffectGraph& graph, const ImageM
   in.model.target_height = target->height;
   in.model.target_format = target->format;
   switch (pass.blend) {
-  case cpu::BlendMode::Replace: in.blend = analytic::Blend::Replace; break;
-  case cpu::BlendMode::OneOne: in.blend = analytic::Blend::OneOne; break;
+  case pass::BlendMode::Replace: in.blend = analytic::Blend::Replace; break;
+  case pass::BlendMode::OneOne: in.blend = analytic::Blend::OneOne; break;
   default:
     return fmt::format("pass '{}': the analytic model knows Replace and ONE/ONE blending only",
                        pass.name);
@@ -66,9 +66,9 @@ std::string prepare(const PassDesc& pass, const EffectGraph& graph, const ImageM
 
 } // namespace
 
-analytic::SamplerModel sampler_model(const cpu::SamplerState& s) {
+analytic::SamplerModel sampler_model(const pass::SamplerState& s) {
   analytic::SamplerModel m;
-  m.filter = s.filter == cpu::Filter::Linear ? analytic::Filter::Linear : analytic::Filter::Point;
+  m.filter = s.filter == pass::Filter::Linear ? analytic::Filter::Linear : analytic::Filter::Point;
   m.address_u = address(s.address_u);
   m.address_v = address(s.address_v);
   for (int c = 0; c < 4; ++c) m.border[c] = s.border_color[c];

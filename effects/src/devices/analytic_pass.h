@@ -13,7 +13,7 @@
 namespace tierlift::effects::detail {
 
 // D3DSAMP_* state as the analytic model's sampler.
-analytic::SamplerModel sampler_model(const cpu::SamplerState& s);
+analytic::SamplerModel sampler_model(const pass::SamplerState& s);
 
 // Computes `pass` from `images` (every texture of `graph`) and replaces its target there.
 // Empty string on success (notes appended to *notes), else why, naming the pass; the

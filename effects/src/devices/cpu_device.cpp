@@ -49,14 +49,14 @@ std::string CpuPassDevice::begin_run(const EffectGraph& graph, const ImageMap& i
 std::string CpuPassDevice::run_pass(const PassDesc& desc) {
   if (!graph_) return "no run was begun";
   std::string error;
-  std::optional<cpu::Pass> pass = make_pass(desc, placeholders_, graph_->conventions, &error);
+  std::optional<pass::Pass> pass = make_pass(desc, placeholders_, graph_->conventions, &error);
   if (!pass) return error;
   pass->executor = executor_;
   auto it = images_.find(desc.target);
   if (it == images_.end()) return fmt::format("no texture '{}'", desc.target);
   for (const TextureBind& b : desc.textures) {
     auto tex = images_.find(b.texture); // make_pass checked the name and the stage already
-    if (tex == images_.end() || b.stage >= cpu::kMaxSamplers)
+    if (tex == images_.end() || b.stage >= pass::kMaxSamplers)
       return fmt::format("pass '{}': texture '{}' has no image", desc.name, b.texture);
     // Not owned: the image outlives the draw, and check_graph refuses a pass that reads its
     // own target, so no texture is written while it is sampled.

@@ -73,14 +73,14 @@ public:
 
 private:
   struct Draw {
-    cpu::Pass pass;
+    pass::Pass pass;
     vulkan::StageTextures stages{};
     vulkan::TextureId target{};
   };
 
   std::string make_draw(const PassDesc& desc, Draw& out) const {
     std::string error;
-    std::optional<cpu::Pass> pass = make_pass(desc, placeholders_, graph_->conventions, &error);
+    std::optional<pass::Pass> pass = make_pass(desc, placeholders_, graph_->conventions, &error);
     if (!pass) return error;
     auto target = ids_.find(desc.target);
     if (target == ids_.end()) return fmt::format("no texture '{}'", desc.target);

@@ -33,14 +33,14 @@ std::optional<Listings> load_listings(const GlowParams& p, const TierListingPath
   return l;
 }
 
-cpu::SamplerState sampler(cpu::Filter filter) {
-  cpu::SamplerState s;
+pass::SamplerState sampler(pass::Filter filter) {
+  pass::SamplerState s;
   s.filter = filter;
-  s.address_u = s.address_v = cpu::AddressMode::Clamp;
+  s.address_u = s.address_v = pass::AddressMode::Clamp;
   return s;
 }
 
-cpu::Vec4 splat(double w) {
+pass::Vec4 splat(double w) {
   const float f = static_cast<float>(w);
   return {f, f, f, f};
 }
@@ -51,8 +51,8 @@ struct Coord {
 };
 
 // The helper vertex listing's constants: offsets c0..c3, scales c4..c7 (unused ones read 0).
-std::vector<cpu::Vec4> helper_vs_constants(const std::vector<Coord>& coords) {
-  std::vector<cpu::Vec4> c(8, cpu::Vec4{0, 0, 0, 0});
+std::vector<pass::Vec4> helper_vs_constants(const std::vector<Coord>& coords) {
+  std::vector<pass::Vec4> c(8, pass::Vec4{0, 0, 0, 0});
   for (size_t k = 0; k < coords.size() && k < 4; ++k) {
     c[k] = {float(coords[k].du), float(coords[k].dv), 0, 0};
     c[k + 4] = {float(coords[k].su), float(coords[k].sv), 0, 0};
@@ -70,7 +70,7 @@ public:
     d.analytic = AnalyticForm::MaskByAlpha;
     // Point reads at texel centres: offset ½ texel, scale 1.
     d.vs_constants = helper_vs_constants({{0.5 / p_.width, 0.5 / p_.height}});
-    bind(d, 0, kSceneTexture, cpu::Filter::Point, 1);
+    bind(d, 0, kSceneTexture, pass::Filter::Point, 1);
     return d;
   }
 
@@ -102,9 +102,9 @@ public:
       }
       d.vs_constants = helper_vs_constants(coords);
       // Reads beyond those needed have weight 0 and read texel (0, 0): they add exactly 0.
-      d.ps_constants.resize(kPerPass, cpu::Vec4{0, 0, 0, 0});
-      bind(d, 0, kSourcesTexture, cpu::Filter::Point, kPerPass);
-      d.blend = first == 0 ? cpu::BlendMode::Replace : cpu::BlendMode::OneOne;
+      d.ps_constants.resize(kPerPass, pass::Vec4{0, 0, 0, 0});
+      bind(d, 0, kSourcesTexture, pass::Filter::Point, kPerPass);
+      d.blend = first == 0 ? pass::BlendMode::Replace : pass::BlendMode::OneOne;
       out.push_back(std::move(d));
     }
   }
@@ -128,8 +128,8 @@ public:
         d.vs_constants.push_back({float(du / gw_), float(dv / gh_), 0, 0});
         d.ps_constants.push_back(splat(w));
       }
-      bind(d, 0, source, p_.half_texel ? cpu::Filter::Point : cpu::Filter::Linear, per);
-      d.blend = i == 0 ? cpu::BlendMode::Replace : cpu::BlendMode::OneOne;
+      bind(d, 0, source, p_.half_texel ? pass::Filter::Point : pass::Filter::Linear, per);
+      d.blend = i == 0 ? pass::BlendMode::Replace : pass::BlendMode::OneOne;
       out.push_back(std::move(d));
     }
   }
@@ -142,10 +142,10 @@ public:
         {{0.5 / p_.width, 0.5 / p_.height}, {0.5 / nw, 0.5 / nh, p_.width / nw, p_.height / nh}});
     // check_params keeps intensity finite and within the tier's limit (≤ FLT_MAX).
     const auto s = static_cast<float>(p_.intensity / r_.composite_divisor);
-    d.ps_constants = {cpu::Vec4{s, s, s, 0}};
+    d.ps_constants = {pass::Vec4{s, s, s, 0}};
     // Scene on stage / sampler 0, glow on 1, in both tiers (t0/s0 and t1/s1).
-    bind(d, 0, kSceneTexture, cpu::Filter::Point, 1);
-    bind(d, 1, kGlowTexture, cpu::Filter::Linear, 1);
+    bind(d, 0, kSceneTexture, pass::Filter::Point, 1);
+    bind(d, 1, kGlowTexture, pass::Filter::Linear, 1);
     return d;
   }
 
@@ -161,7 +161,7 @@ private:
 
   // A texture the pixel listing reads `reads` times from `stage` on: once on that sampler
   // (ps_2_0), or on stages stage..stage + reads − 1 (ps_1_x, t# reads stage #).
-  void bind(PassDesc& d, uint32_t stage, std::string_view texture, cpu::Filter filter,
+  void bind(PassDesc& d, uint32_t stage, std::string_view texture, pass::Filter filter,
             unsigned reads) const {
     const unsigned stages = r_.one_stage_per_read ? reads : 1;
     for (unsigned k = 0; k < stages; ++k)

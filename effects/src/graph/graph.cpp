@@ -35,7 +35,7 @@ std::string check_pass(const EffectGraph& g, const PassDesc& p) {
     return fmt::format("pass '{}': renders into the input texture '{}'", p.name, p.target);
   std::set<uint32_t> stages;
   for (const TextureBind& b : p.textures) {
-    if (b.stage >= cpu::kMaxSamplers)
+    if (b.stage >= pass::kMaxSamplers)
       return fmt::format("pass '{}': sampler stage {} out of range", p.name, b.stage);
     if (!stages.insert(b.stage).second)
       return fmt::format("pass '{}': sampler stage {} bound twice", p.name, b.stage);

@@ -8,13 +8,6 @@
 namespace tierlift::effects {
 namespace {
 
-// The vertex input a dcl_position declares (v0 for a listing without one, D3D8 style).
-uint32_t position_input(const ir::Program& vs) {
-  for (const ir::Declaration& d : vs.decls)
-    if (d.reg.file == ir::RegFile::Input && d.usage == ir::DeclUsage::Position) return d.reg.index;
-  return 0;
-}
-
 double ms_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -36,30 +29,25 @@ std::string prepare_input(const TextureDesc& t, ImageMap& images) {
 
 } // namespace
 
-std::optional<cpu::Pass> make_pass(const PassDesc& desc, const ImageMap& images,
-                                   const ir::Conventions& conventions, std::string* error) {
+std::optional<pass::Pass> make_pass(const PassDesc& desc, const ImageMap& images,
+                                    const ir::Conventions& conventions, std::string* error) {
   if (!desc.vs) {
     if (error) *error = fmt::format("pass '{}': no vertex listing", desc.name);
     return std::nullopt;
   }
-  cpu::Pass pass;
+  pass::Pass pass;
   pass.vertex_program = desc.vs;
   pass.pixel_program = desc.ps;
   pass.vs_constants.f = desc.vs_constants;
   pass.ps_constants.f = desc.ps_constants;
-  cpu::set_full_screen_quad(pass, position_input(*desc.vs));
-  for (const ir::Declaration& d : desc.vs->decls) {
-    if (d.reg.file != ir::RegFile::Input || d.usage != ir::DeclUsage::TexCoord) continue;
-    if (d.reg.index >= 16) continue;
-    for (size_t c = 0; c < 4; ++c) pass.vertices[c].v[d.reg.index] = cpu::kQuadUV[c];
-  }
+  pass::set_full_screen_quad_uv(pass);
   for (const TextureBind& b : desc.textures) {
     auto it = images.find(b.texture);
-    if (it == images.end() || b.stage >= cpu::kMaxSamplers) {
+    if (it == images.end() || b.stage >= pass::kMaxSamplers) {
       if (error) *error = fmt::format("pass '{}': texture '{}' has no image", desc.name, b.texture);
       return std::nullopt;
     }
-    cpu::TextureBinding& binding = pass.textures[b.stage];
+    pass::TextureBinding& binding = pass.textures[b.stage];
     binding.image = std::make_shared<const img::Image>(it->second);
     binding.sampler = b.sampler;
   }

@@ -11,10 +11,10 @@
 #include <string_view>
 #include <vector>
 
-#include "tierlift/cpu/draw.h"
 #include "tierlift/image/image.h"
 #include "tierlift/ir/conventions.h"
 #include "tierlift/ir/program.h"
+#include "tierlift/pass/pass.h"
 
 namespace tierlift::effects {
 
@@ -30,7 +30,7 @@ struct TextureDesc {
 struct TextureBind {
   uint32_t stage = 0; // sampler stage s# (ps_2_0) / texture stage (ps_1_x)
   std::string texture;
-  cpu::SamplerState sampler;
+  pass::SamplerState sampler;
 };
 
 // What the analytic device computes for a pass. Linear: the pixel is a weighted sum of
@@ -44,10 +44,10 @@ struct PassDesc {
   std::string name; // unique, e.g. "blur_h.1"
   AnalyticForm analytic = AnalyticForm::Linear;
   std::shared_ptr<const ir::Program> vs, ps;
-  std::vector<cpu::Vec4> vs_constants, ps_constants; // c0, c1, …
+  std::vector<pass::Vec4> vs_constants, ps_constants; // c0, c1, …
   std::vector<TextureBind> textures;
   std::string target;
-  cpu::BlendMode blend = cpu::BlendMode::Replace;
+  pass::BlendMode blend = pass::BlendMode::Replace;
 };
 
 struct EffectGraph {

@@ -28,12 +28,12 @@ struct GraphRun {
   std::map<std::string, std::vector<uint8_t>, std::less<>> midpoints;
 };
 
-// The cpu::Pass a pass description becomes: full-screen quad (the vertex listing's
-// dcl_position input gets the corners, every dcl_texcoord input the quad uv (0,0) top-left
-// … (1,1) bottom-right), constants, bound textures from `images`, blend, conventions.
-// Textures not in `images` are an error (returned in *error, nullopt).
-std::optional<cpu::Pass> make_pass(const PassDesc& desc, const ImageMap& images,
-                                   const ir::Conventions& conventions, std::string* error);
+// The pass::Pass a pass description becomes: full-screen quad (pass::set_full_screen_quad_uv:
+// the vertex listing's position input gets the corners, every dcl_texcoord input the quad uv
+// (0,0) top-left … (1,1) bottom-right), constants, bound textures from `images`, blend,
+// conventions. Textures not in `images` are an error (returned in *error, nullopt).
+std::optional<pass::Pass> make_pass(const PassDesc& desc, const ImageMap& images,
+                                    const ir::Conventions& conventions, std::string* error);
 
 // Checks the graph, requires every input texture in `images` at its declared size (it is
 // converted to the declared format with img::quantize), hands the inputs to the device,

@@ -1,11 +1,13 @@
 // Vertex listing → oT# as affine forms of the texcoord input: every register component is
 // Σ_c a_c · texcoord.c + k, or "opaque" (depends on something else, or is not affine).
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 #include <map>
 
 #include "linear_forms.h"
 #include "tierlift/ir/opcodes.h"
+#include "tierlift/pass/pass.h"
 
 namespace tierlift::analytic::detail {
 
@@ -78,17 +80,14 @@ public:
 
   CoordForms run() {
     CoordForms out;
-    bool found = false;
-    for (const ir::Declaration& d : p_.decls)
-      if (!found && d.reg.file == ir::RegFile::Input && d.usage == ir::DeclUsage::TexCoord) {
-        out.texcoord_input = d.reg.index; // the first texcoord input is the quad's uv
-        found = true;
-      }
-    if (!found) {
+    // Every texcoord input carries the quad's uv (pass::texcoord_inputs, the rule the
+    // devices feed the quad by); the first one is reported.
+    tc_inputs_ = pass::texcoord_inputs(p_);
+    if (tc_inputs_.empty()) {
       out.error = "no dcl_texcoord input";
       return out;
     }
-    tc_input_ = out.texcoord_input;
+    out.texcoord_input = tc_inputs_.front();
     for (const ir::Instruction& in : p_.code) {
       std::string err = step(in);
       if (!err.empty()) {
@@ -138,7 +137,7 @@ private:
     if (s.rel) return make_opaque(where(s.loc) + ": relative addressing");
     switch (s.file) {
     case ir::RegFile::Input:
-      if (s.index != tc_input_)
+      if (std::find(tc_inputs_.begin(), tc_inputs_.end(), s.index) == tc_inputs_.end())
         return make_opaque(
             fmt::format("{}: reads v{}, not the texcoord input", where(s.loc), s.index));
       a.tc[c] = 1.0;
@@ -194,7 +193,7 @@ private:
 
   const ir::Program& p_;
   const std::vector<Vec4>& consts_;
-  uint32_t tc_input_ = 0;
+  std::vector<uint32_t> tc_inputs_;
   std::map<std::pair<ir::RegFile, uint32_t>, Reg> regs_;
 };
 

@@ -11,13 +11,13 @@
 namespace tierlift::vulkan {
 namespace {
 
-codegen::UniformValues uniform_values(const cpu::ConstantBank& bank, const cpu::Pass& pass) {
+codegen::UniformValues uniform_values(const pass::ConstantBank& bank, const pass::Pass& pass) {
   codegen::UniformValues u;
   u.f = bank.f;
   u.i = bank.i;
   u.b = bank.b;
   for (uint32_t s = 0; s < 8; ++s) {
-    const cpu::StageState& st = pass.textures[s].stage;
+    const pass::StageState& st = pass.textures[s].stage;
     u.bumpenv_mat[s] = st.bumpenv_mat;
     u.bumpenv_lum[s] = {st.bumpenv_lscale, st.bumpenv_loffset};
   }
@@ -27,7 +27,7 @@ codegen::UniformValues uniform_values(const cpu::ConstantBank& bank, const cpu::
 } // namespace
 
 std::string create_bindings(Device::Impl& d, Cleanup& cleanup, const codegen::CompiledPair& pair,
-                            const cpu::Pass& pass, const SampledImages& images, Bindings& out) {
+                            const pass::Pass& pass, const SampledImages& images, Bindings& out) {
   std::string err;
   // Descriptor bindings: uniform blocks, then combined image samplers.
   std::vector<VkDescriptorSetLayoutBinding> bindings;
@@ -36,7 +36,7 @@ std::string create_bindings(Device::Impl& d, Cleanup& cleanup, const codegen::Co
     uint32_t binding;
   };
   std::vector<Ubo> ubos;
-  auto add_ubo = [&](const codegen::ShaderModule& m, const cpu::ConstantBank& bank,
+  auto add_ubo = [&](const codegen::ShaderModule& m, const pass::ConstantBank& bank,
                      VkShaderStageFlags stage) {
     if (m.uniforms.size_bytes == 0 || !err.empty()) return;
     std::vector<uint32_t> words = codegen::pack_uniforms(m, uniform_values(bank, pass));
@@ -62,10 +62,10 @@ std::string create_bindings(Device::Impl& d, Cleanup& cleanup, const codegen::Co
   for (const auto& si : pair.ps.samplers) {
     if (si.type != ir::SamplerType::Tex2D)
       return fmt::format("s{}: only 2D textures are supported on the Vulkan device", si.stage);
-    const uint32_t stage = si.stage % cpu::kMaxSamplers;
-    const cpu::TextureBinding& tb = pass.textures[stage];
+    const uint32_t stage = si.stage % pass::kMaxSamplers;
+    const pass::TextureBinding& tb = pass.textures[stage];
     if (!images[stage]) return fmt::format("s{}: no texture to sample", si.stage);
-    if (tb.sampler.filter == cpu::Filter::Linear &&
+    if (tb.sampler.filter == pass::Filter::Linear &&
         !(tex_props.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT))
       return "the Vulkan device cannot filter RGBA32F textures linearly";
     Texture t;

@@ -7,14 +7,14 @@
 #include <vector>
 
 #include "tierlift/codegen/codegen.h"
-#include "tierlift/cpu/draw.h"
+#include "tierlift/pass/pass.h"
 #include "vk_internal.h"
 
 namespace tierlift::vulkan {
 
 // The image each sampler stage reads (R32G32B32A32_SFLOAT, in SHADER_READ_ONLY_OPTIMAL when
 // the draw runs); only the stages the pixel program samples need one.
-using SampledImages = std::array<const Image2D*, cpu::kMaxSamplers>;
+using SampledImages = std::array<const Image2D*, pass::kMaxSamplers>;
 
 struct Bindings {
   VkPipelineLayout layout = VK_NULL_HANDLE;
@@ -24,6 +24,6 @@ struct Bindings {
 // Empty string on success; every object is registered with `cleanup`. Samplers come from
 // pass.textures[stage].sampler, images from `images`.
 std::string create_bindings(Device::Impl& d, Cleanup& cleanup, const codegen::CompiledPair& pair,
-                            const cpu::Pass& pass, const SampledImages& images, Bindings& out);
+                            const pass::Pass& pass, const SampledImages& images, Bindings& out);
 
 } // namespace tierlift::vulkan

@@ -1,4 +1,4 @@
-// Device::draw: one cpu::Pass with host images in and out. The target becomes a texture for
+// Device::draw: one pass::Pass with host images in and out. The target becomes a texture for
 // this draw only; the work itself is draw_pass (pass_draw.h), shared with TextureSet::draw.
 #include <chrono>
 
@@ -6,7 +6,7 @@
 
 namespace tierlift::vulkan {
 
-DrawResult Device::draw(const cpu::Pass& pass, img::Image& target, const DrawOptions& options) {
+DrawResult Device::draw(const pass::Pass& pass, img::Image& target, const DrawOptions& options) {
   DrawResult res;
   if (target.width == 0 || target.height == 0 || target.width > img::kMaxDimension ||
       target.height > img::kMaxDimension) {

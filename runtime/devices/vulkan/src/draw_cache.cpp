@@ -16,12 +16,12 @@ public:
     std::memcpy(bytes, &v, sizeof(T));
     key_.append(bytes, sizeof(T));
   }
-  void put(const cpu::Vec4& v) {
+  void put(const pass::Vec4& v) {
     for (float f : v) put(f);
   }
-  void put(const cpu::ConstantBank& bank) {
+  void put(const pass::ConstantBank& bank) {
     put(bank.f.size());
-    for (const cpu::Vec4& v : bank.f) put(v);
+    for (const pass::Vec4& v : bank.f) put(v);
     for (const auto& i : bank.i)
       for (int32_t x : i) put(x);
     for (bool b : bank.b) put(b);
@@ -34,7 +34,7 @@ private:
 
 } // namespace
 
-std::optional<std::string> draw_key(const cpu::Pass& pass, const DrawTextures& textures,
+std::optional<std::string> draw_key(const pass::Pass& pass, const DrawTextures& textures,
                                     const DrawOptions& options) {
   if (!pass.vertex_program || !textures.target) return std::nullopt;
   KeyWriter k;
@@ -48,8 +48,8 @@ std::optional<std::string> draw_key(const cpu::Pass& pass, const DrawTextures& t
   k.put(c.ps1x_fixed_bits);
   k.put(c.rounding);
   k.put(textures.target);
-  for (uint32_t s = 0; s < cpu::kMaxSamplers; ++s) {
-    const cpu::TextureBinding& b = pass.textures[s];
+  for (uint32_t s = 0; s < pass::kMaxSamplers; ++s) {
+    const pass::TextureBinding& b = pass.textures[s];
     if (!textures.stages[s] && b.image) return std::nullopt; // host pixels: not cached
     k.put(textures.stages[s]);
     k.put(b.sampler.filter);
@@ -65,8 +65,8 @@ std::optional<std::string> draw_key(const cpu::Pass& pass, const DrawTextures& t
   k.put(pass.ps_constants);
   // With a vertex program the geometry is the pass's vertices and triangles only.
   k.put(pass.vertices.size());
-  for (const cpu::VertexInput& v : pass.vertices)
-    for (const cpu::Vec4& r : v.v) k.put(r);
+  for (const pass::VertexInput& v : pass.vertices)
+    for (const pass::Vec4& r : v.v) k.put(r);
   k.put(pass.triangles.size());
   for (const auto& t : pass.triangles)
     for (uint32_t i : t) k.put(i);
@@ -85,7 +85,7 @@ PreparedDraw* DrawCache::find(const std::string& key) {
   return it == entries_.end() ? nullptr : &it->second->draw;
 }
 
-PreparedDraw& DrawCache::insert(const std::string& key, const cpu::Pass& pass,
+PreparedDraw& DrawCache::insert(const std::string& key, const pass::Pass& pass,
                                 std::unique_ptr<CachedDraw> entry) {
   entry->vs = pass.vertex_program;
   entry->ps = pass.pixel_program;

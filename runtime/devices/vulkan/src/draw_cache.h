@@ -19,7 +19,7 @@ namespace tierlift::vulkan {
 // constants, vertices, viewport, blend, sampler and stage states, the resident textures of
 // every stage and the target, the options. nullopt: not cached (a pass without a vertex
 // program, or a stage sampling a host image, whose pixels may change between draws).
-std::optional<std::string> draw_key(const cpu::Pass& pass, const DrawTextures& textures,
+std::optional<std::string> draw_key(const pass::Pass& pass, const DrawTextures& textures,
                                     const DrawOptions& options);
 
 struct CachedDraw {
@@ -31,7 +31,7 @@ class DrawCache {
 public:
   // The entry under `key`, nullptr if none.
   PreparedDraw* find(const std::string& key);
-  PreparedDraw& insert(const std::string& key, const cpu::Pass& pass,
+  PreparedDraw& insert(const std::string& key, const pass::Pass& pass,
                        std::unique_ptr<CachedDraw> entry);
   // Drops every entry that samples or renders into `r` (before `r` is destroyed).
   void forget(const Resident* r);

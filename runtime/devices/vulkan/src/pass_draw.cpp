@@ -1,4 +1,4 @@
-// prepare_draw / record_draw / draw_pass: one cpu::Pass on Vulkan — programs, vertex data,
+// prepare_draw / record_draw / draw_pass: one pass::Pass on Vulkan — programs, vertex data,
 // constants, sampled textures, descriptors, pipeline, the draw (see device.h for the
 // mapping, pass_draw.h for the split).
 #include "pass_draw.h"
@@ -29,15 +29,15 @@ float clamp01(float v) {
 constexpr uint32_t kVertexStride = 16 * 16; // sixteen vec4 input registers
 
 struct Geometry {
-  std::vector<std::array<cpu::Vec4, 16>> vertices;
+  std::vector<std::array<pass::Vec4, 16>> vertices;
   std::vector<uint32_t> indices;
 };
 
 // The vertex stream of the pass (see device.h): the pass's own vertices with a vertex
 // program, otherwise the inputs of the pass-through vertex program.
-std::string build_geometry(const cpu::Pass& pass, Geometry& g) {
-  auto from_output = [](const cpu::VertexOutput& o) {
-    std::array<cpu::Vec4, 16> v;
+std::string build_geometry(const pass::Pass& pass, Geometry& g) {
+  auto from_output = [](const pass::VertexOutput& o) {
+    std::array<pass::Vec4, 16> v;
     v.fill({0, 0, 0, 1});
     v[kPassPosition] = o.pos;
     v[kPassColor] = o.color[0];
@@ -51,14 +51,14 @@ std::string build_geometry(const cpu::Pass& pass, Geometry& g) {
   } else if (!pass.transformed.empty()) {
     for (const auto& o : pass.transformed) g.vertices.push_back(from_output(o));
   } else {
-    cpu::VertexOutput o;
+    pass::VertexOutput o;
     o.color = pass.constant_inputs.color;
     o.tex = pass.constant_inputs.tex;
-    for (const auto& corner : cpu::kQuadCorners) {
+    for (const auto& corner : pass::kQuadCorners) {
       o.pos = corner;
       g.vertices.push_back(from_output(o));
     }
-    tris.assign(cpu::kQuadTriangles.begin(), cpu::kQuadTriangles.end());
+    tris.assign(pass::kQuadTriangles.begin(), pass::kQuadTriangles.end());
   }
   if (tris.empty())
     for (uint32_t k = 0; k + 2 < g.vertices.size(); k += 3) tris.push_back({k, k + 1, k + 2});
@@ -118,7 +118,7 @@ struct LayoutSnapshot {
 
 } // namespace
 
-std::string prepare_draw(Device::Impl& d, const cpu::Pass& pass, const DrawTextures& textures,
+std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawTextures& textures,
                          const DrawOptions& options, PreparedDraw& out) {
   if (!textures.target) return "no render target";
   Resident& target = *textures.target;
@@ -127,13 +127,14 @@ std::string prepare_draw(Device::Impl& d, const cpu::Pass& pass, const DrawTextu
     return "the vertex program is not a vertex shader";
   if (pass.pixel_program && pass.pixel_program->stage() != ir::ShaderStage::Pixel)
     return "the pixel program is not a pixel shader";
+  if (ir::Status s = pass::check_supported(pass, kCapabilities, "vulkan"); !s) return s.message();
 
   // Programs → SPIR-V.
   auto vs_prog = pass.vertex_program ? pass.vertex_program : passthrough_vertex_program();
   auto ps_prog = pass.pixel_program ? pass.pixel_program : passthrough_pixel_program();
   codegen::CodegenOptions co;
   co.conventions = pass.conventions;
-  for (uint32_t s = 0; s < cpu::kMaxSamplers; ++s)
+  for (uint32_t s = 0; s < pass::kMaxSamplers; ++s)
     co.stage_projected[s] = pass.textures[s].stage.projected;
   ir::DiagnosticSink diags;
   auto pair = codegen::compile_pair(*vs_prog, *ps_prog, co, diags);
@@ -150,7 +151,7 @@ std::string prepare_draw(Device::Impl& d, const cpu::Pass& pass, const DrawTextu
   img::Image unbound(1, 1);
   unbound.rgba = {0, 0, 0, 1}; // an unbound stage reads (0, 0, 0, 1), as in D3D9
   for (const auto& si : pair->ps.samplers) {
-    const uint32_t s = si.stage % cpu::kMaxSamplers;
+    const uint32_t s = si.stage % pass::kMaxSamplers;
     Resident*& r = out.sampled[s];
     if (r) continue;
     r = textures.stages[s];
@@ -190,7 +191,7 @@ std::string prepare_draw(Device::Impl& d, const cpu::Pass& pass, const DrawTextu
   VkFormatProperties rt_props;
   vkGetPhysicalDeviceFormatProperties(d.physical, rt_format, &rt_props);
   if (!(rt_props.optimalTilingFeatures & VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT) ||
-      (pass.blend != cpu::BlendMode::Replace &&
+      (pass.blend != pass::BlendMode::Replace &&
        !(rt_props.optimalTilingFeatures & VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT)))
     return fmt::format("the Vulkan device cannot render (and blend) to {}",
                        img::format_name(target.format));
@@ -209,7 +210,7 @@ std::string prepare_draw(Device::Impl& d, const cpu::Pass& pass, const DrawTextu
   if (!err.empty()) return err;
 
   // Viewport (D3D9 centres: +0.5 pixel) and scissor (the D3D9 viewport within the target).
-  const cpu::Viewport& v = pass.viewport;
+  const pass::Viewport& v = pass.viewport;
   const uint32_t vw = v.width ? v.width : target.width, vh = v.height ? v.height : target.height;
   const float shift = pass.conventions.pixel_center == ir::PixelCenter::D3D9 ? 0.5f : 0.0f;
   out.viewport = {static_cast<float>(v.x) + shift,
@@ -264,7 +265,7 @@ std::string submit_draw(Device::Impl& d, PreparedDraw& draw) {
   return err;
 }
 
-DrawResult draw_pass(Device::Impl& d, const cpu::Pass& pass, const DrawTextures& textures,
+DrawResult draw_pass(Device::Impl& d, const pass::Pass& pass, const DrawTextures& textures,
                      const DrawOptions& options) {
   DrawResult res;
   auto fail = [&](std::string msg) {

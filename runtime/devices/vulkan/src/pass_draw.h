@@ -13,7 +13,7 @@
 #include <memory>
 
 #include "resident.h"
-#include "tierlift/cpu/draw.h"
+#include "tierlift/pass/pass.h"
 
 namespace tierlift::vulkan {
 
@@ -21,7 +21,7 @@ struct DrawTextures {
   // The texture each sampler stage reads. nullptr: the pass's own host image for that stage
   // (pass.textures[s].image, uploaded as R32G32B32A32_SFLOAT for this draw only), or the
   // unbound texture (0, 0, 0, 1) when it has none.
-  std::array<Resident*, cpu::kMaxSamplers> stages{};
+  std::array<Resident*, pass::kMaxSamplers> stages{};
   Resident* target = nullptr;
   // Device::draw: the target's starting contents, uploaded before the draw (setup), and
   // where the result is read back to after it (in the same submit as the draw). Must have
@@ -34,7 +34,7 @@ struct DrawTextures {
 struct PreparedDraw {
   Cleanup objects;
   std::vector<std::unique_ptr<Resident>> host_textures;
-  std::array<Resident*, cpu::kMaxSamplers> sampled{}; // the stages the pixel program reads
+  std::array<Resident*, pass::kMaxSamplers> sampled{}; // the stages the pixel program reads
   Resident* target = nullptr;
   VkRenderPass render_pass = VK_NULL_HANDLE;
   VkFramebuffer framebuffer = VK_NULL_HANDLE;
@@ -50,7 +50,7 @@ struct PreparedDraw {
 
 // Creates what drawing `pass` into textures.target needs (host_target is ignored here).
 // Empty string on success; on failure `out` holds nothing that outlives it.
-std::string prepare_draw(Device::Impl& d, const cpu::Pass& pass, const DrawTextures& textures,
+std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawTextures& textures,
                          const DrawOptions& options, PreparedDraw& out);
 
 // Records the draw: sampled textures made current and readable, the target made the colour
@@ -63,7 +63,7 @@ std::string submit_draw(Device::Impl& d, PreparedDraw& draw);
 
 // Draws `pass` into textures.target now (prepare, submit, wait). On failure nothing was
 // submitted that changes any texture, and host_target is unchanged.
-DrawResult draw_pass(Device::Impl& d, const cpu::Pass& pass, const DrawTextures& textures,
+DrawResult draw_pass(Device::Impl& d, const pass::Pass& pass, const DrawTextures& textures,
                      const DrawOptions& options);
 
 } // namespace tierlift::vulkan

@@ -8,13 +8,13 @@
 namespace tierlift::vulkan {
 namespace {
 
-VkSamplerAddressMode address_mode(cpu::AddressMode m) {
+VkSamplerAddressMode address_mode(pass::AddressMode m) {
   switch (m) {
-  case cpu::AddressMode::Wrap: return VK_SAMPLER_ADDRESS_MODE_REPEAT;
-  case cpu::AddressMode::Mirror: return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
-  case cpu::AddressMode::Clamp: return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  case cpu::AddressMode::Border: return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER;
-  case cpu::AddressMode::MirrorOnce: return VK_SAMPLER_ADDRESS_MODE_MAX_ENUM;
+  case pass::AddressMode::Wrap: return VK_SAMPLER_ADDRESS_MODE_REPEAT;
+  case pass::AddressMode::Mirror: return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
+  case pass::AddressMode::Clamp: return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  case pass::AddressMode::Border: return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER;
+  case pass::AddressMode::MirrorOnce: return VK_SAMPLER_ADDRESS_MODE_MAX_ENUM;
   }
   return VK_SAMPLER_ADDRESS_MODE_MAX_ENUM;
 }
@@ -83,11 +83,11 @@ std::string create_framebuffer(Device::Impl& d, Cleanup& cleanup, VkRenderPass r
   return {};
 }
 
-std::string create_sampler(Device::Impl& d, Cleanup& cleanup, const cpu::SamplerState& s,
+std::string create_sampler(Device::Impl& d, Cleanup& cleanup, const pass::SamplerState& s,
                            VkSampler& out) {
   VkSamplerCreateInfo ci{};
   ci.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
-  VkFilter f = s.filter == cpu::Filter::Linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
+  VkFilter f = s.filter == pass::Filter::Linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
   ci.magFilter = ci.minFilter = f;
   ci.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
   ci.addressModeU = address_mode(s.address_u);
@@ -96,12 +96,12 @@ std::string create_sampler(Device::Impl& d, Cleanup& cleanup, const cpu::Sampler
   if (ci.addressModeU == VK_SAMPLER_ADDRESS_MODE_MAX_ENUM ||
       ci.addressModeV == VK_SAMPLER_ADDRESS_MODE_MAX_ENUM)
     return "the Vulkan device does not support the MirrorOnce address mode";
-  const cpu::Vec4& b = s.border_color;
-  if (b == cpu::Vec4{0, 0, 0, 0})
+  const pass::Vec4& b = s.border_color;
+  if (b == pass::Vec4{0, 0, 0, 0})
     ci.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
-  else if (b == cpu::Vec4{0, 0, 0, 1})
+  else if (b == pass::Vec4{0, 0, 0, 1})
     ci.borderColor = VK_BORDER_COLOR_FLOAT_OPAQUE_BLACK;
-  else if (b == cpu::Vec4{1, 1, 1, 1})
+  else if (b == pass::Vec4{1, 1, 1, 1})
     ci.borderColor = VK_BORDER_COLOR_FLOAT_OPAQUE_WHITE;
   else
     return fmt::format("the Vulkan device supports border colours (0,0,0,0), (0,0,0,1) and "
@@ -169,10 +169,10 @@ std::string create_pipeline(Device::Impl& d, Cleanup& cleanup, const PipelineDes
     cba.dstColorBlendFactor = cba.dstAlphaBlendFactor = dst;
   };
   switch (desc.blend) {
-  case cpu::BlendMode::Replace: break;
-  case cpu::BlendMode::OneOne: factors(VK_BLEND_FACTOR_ONE, VK_BLEND_FACTOR_ONE); break;
-  case cpu::BlendMode::SrcAlphaOne: factors(VK_BLEND_FACTOR_SRC_ALPHA, VK_BLEND_FACTOR_ONE); break;
-  case cpu::BlendMode::SrcAlphaInvSrcAlpha:
+  case pass::BlendMode::Replace: break;
+  case pass::BlendMode::OneOne: factors(VK_BLEND_FACTOR_ONE, VK_BLEND_FACTOR_ONE); break;
+  case pass::BlendMode::SrcAlphaOne: factors(VK_BLEND_FACTOR_SRC_ALPHA, VK_BLEND_FACTOR_ONE); break;
+  case pass::BlendMode::SrcAlphaInvSrcAlpha:
     factors(VK_BLEND_FACTOR_SRC_ALPHA, VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA);
     break;
   }

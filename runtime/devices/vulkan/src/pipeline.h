@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "tierlift/codegen/codegen.h"
-#include "tierlift/cpu/draw.h"
+#include "tierlift/pass/pass.h"
 #include "vk_internal.h"
 
 namespace tierlift::vulkan {
@@ -19,14 +19,14 @@ std::string create_framebuffer(Device::Impl& d, Cleanup& cleanup, VkRenderPass r
                                const Image2D& target, VkFramebuffer& out);
 // D3D9 sampler state → VkSampler (one level). Errors for MirrorOnce and border colours other
 // than transparent black, opaque black and opaque white.
-std::string create_sampler(Device::Impl& d, Cleanup& cleanup, const cpu::SamplerState& s,
+std::string create_sampler(Device::Impl& d, Cleanup& cleanup, const pass::SamplerState& s,
                            VkSampler& out);
 
 struct PipelineDesc {
   const codegen::ShaderModule* vs = nullptr;
   const codegen::ShaderModule* ps = nullptr;
   std::vector<uint32_t> ps_words; // possibly rewritten (flat varyings)
-  cpu::BlendMode blend = cpu::BlendMode::Replace;
+  pass::BlendMode blend = pass::BlendMode::Replace;
   VkRenderPass render_pass = VK_NULL_HANDLE;
   VkPipelineLayout layout = VK_NULL_HANDLE;
   uint32_t vertex_stride = 0; // bytes per vertex; input vN at offset 16·N

@@ -127,7 +127,7 @@ std::string resolve(TextureSet::State& s, const StageTextures& stages, TextureId
                     DrawTextures& out) {
   out.target = s.find(target);
   if (!out.target) return "render target: " + unknown(target);
-  for (uint32_t k = 0; k < cpu::kMaxSamplers; ++k) {
+  for (uint32_t k = 0; k < pass::kMaxSamplers; ++k) {
     if (stages[k] == TextureId::None) continue;
     out.stages[k] = s.find(stages[k]);
     if (!out.stages[k]) return fmt::format("s{}: {}", k, unknown(stages[k]));
@@ -137,7 +137,7 @@ std::string resolve(TextureSet::State& s, const StageTextures& stages, TextureId
 
 // The cached draw of `pass`, made now if there is none; nullptr (and *error) on failure,
 // nullptr and no error when the pass is not cached.
-PreparedDraw* cached_draw(TextureSet::State& s, const cpu::Pass& pass, const DrawTextures& t,
+PreparedDraw* cached_draw(TextureSet::State& s, const pass::Pass& pass, const DrawTextures& t,
                           const DrawOptions& options, std::string* error) {
   std::optional<std::string> key = draw_key(pass, t, options);
   if (!key) return nullptr;
@@ -152,7 +152,7 @@ PreparedDraw* cached_draw(TextureSet::State& s, const cpu::Pass& pass, const Dra
 
 } // namespace
 
-std::string TextureSet::prepare(const cpu::Pass& pass, const StageTextures& stages,
+std::string TextureSet::prepare(const pass::Pass& pass, const StageTextures& stages,
                                 TextureId target, const DrawOptions& options) {
   DrawTextures textures;
   if (std::string e = resolve(*state_, stages, target, textures); !e.empty()) return e;
@@ -161,7 +161,7 @@ std::string TextureSet::prepare(const cpu::Pass& pass, const StageTextures& stag
   return error;
 }
 
-DrawResult TextureSet::draw(const cpu::Pass& pass, const StageTextures& stages, TextureId target,
+DrawResult TextureSet::draw(const pass::Pass& pass, const StageTextures& stages, TextureId target,
                             const DrawOptions& options) {
   DrawTextures textures;
   DrawResult res;

@@ -83,17 +83,11 @@ std::string check_inputs(const Pass& pass, const img::Image& target, const Viewp
     return "the pixel program is not a pixel shader";
   if (pass.vertex_program && pass.vertices.empty())
     return "a vertex program needs vertices (see set_full_screen_quad)";
+  if (ir::Status s = pass::check_supported(pass, kCapabilities, "cpu"); !s) return s.message();
   return {};
 }
 
 } // namespace
-
-void set_full_screen_quad(Pass& pass, uint32_t position_register) {
-  pass.vertices.assign(4, VertexInput{});
-  for (size_t i = 0; i < 4; ++i)
-    if (position_register < 16) pass.vertices[i].v[position_register] = kQuadCorners[i];
-  pass.triangles.assign(kQuadTriangles.begin(), kQuadTriangles.end());
-}
 
 DrawStats draw(const Pass& pass, img::Image& target, unsigned threads) {
   DrawStats stats;

@@ -1,15 +1,9 @@
-// `tierlift run` as a library: request → pass (constants, inputs, textures) → draw → probes.
+// `tierlift run` on the CPU device: prepared pass → draw → probes.
 #include "tierlift/cpu/run_job.h"
 
 #include <chrono>
-#include <filesystem>
 #include <fmt/format.h>
-#include <map>
 #include <new>
-
-#include "program_reads.h"
-#include "tierlift/image/builtin.h"
-#include "tierlift/image/io.h"
 
 namespace tierlift::cpu {
 namespace {
@@ -19,220 +13,24 @@ double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-bool applies(StageMask m, ir::ShaderStage stage) {
-  return m == StageMask::Both || (m == StageMask::Vertex) == (stage == ir::ShaderStage::Vertex);
-}
-
-void apply_constant(ConstantBank& bank, const ConstSetting& c) {
-  switch (c.file) {
-  case ir::RegFile::Const:
-    if (bank.f.size() <= c.index) bank.f.resize(c.index + 1, Vec4{0, 0, 0, 0});
-    bank.f[c.index] = c.f;
-    break;
-  case ir::RegFile::ConstInt: bank.i[c.index] = c.i; break;
-  default: bank.b[c.index] = c.b; break;
-  }
-}
-
-bool given(const std::vector<ConstSetting>& list, ir::ShaderStage stage, ir::RegFile f,
-           uint32_t index) {
-  for (const auto& c : list)
-    if (applies(c.stage, stage) && c.file == f && c.index == index) return true;
-  return false;
-}
-
-std::string_view stage_prefix(ir::ShaderStage s) {
-  return s == ir::ShaderStage::Vertex ? "vs" : "ps";
-}
-
-// Constants of one stage; an error for every register read but neither given nor def'd.
-bool build_constants(const ir::Program& program, const std::vector<ConstSetting>& list,
-                     ConstantBank& bank, ir::DiagnosticSink& diags) {
-  const ir::ShaderStage stage = program.stage();
-  for (const auto& c : list)
-    if (applies(c.stage, stage)) apply_constant(bank, c);
-  bool ok = true;
-  std::vector<detail::RegRead> relative;
-  for (const auto& r : detail::constant_reads(program, &relative)) {
-    if (given(list, stage, r.file, r.index) || detail::is_defined(program, r.file, r.index))
-      continue;
-    std::string reg = ir::register_name(r.file, r.index);
-    std::string example = r.file == ir::RegFile::ConstBool ? "true" : "x,y,z,w";
-    if (r.file == ir::RegFile::ConstInt) example = "a,b,c,d";
-    diags.error(r.loc, "constant-not-set",
-                fmt::format("{} is read but neither given nor defined; pass --const {}:{}={}", reg,
-                            stage_prefix(stage), reg, example));
-    ok = false;
-  }
-  for (const auto& r : relative)
-    diags.warning(r.loc, "constant-relative",
-                  fmt::format("relative read based at {}: registers it reaches that are "
-                              "neither given nor defined read 0",
-                              ir::register_name(r.file, r.index)));
-  return ok;
-}
-
-void set_sampler(const RunRequest& req, TextureBinding& b) {
-  b.sampler.filter = req.filter;
-  b.sampler.address_u = b.sampler.address_v = req.address;
-}
-
-bool bind_textures(const RunRequest& req, Pass& pass, RunDiagnostics& diags) {
-  std::map<std::string, std::shared_ptr<const img::Image>> loaded; // one load per source
-  bool ok = true;
-  for (const TextureSetting& t : req.textures) {
-    if (t.sampler >= kMaxSamplers) {
-      diags.other.error({}, "texture",
-                        fmt::format("sampler s{} does not exist (s0..s15)", t.sampler));
-      ok = false;
-      continue;
-    }
-    if (t.image) {
-      pass.textures[t.sampler].image = t.image;
-      set_sampler(req, pass.textures[t.sampler]);
-      continue;
-    }
-    auto it = loaded.find(t.source);
-    if (it == loaded.end()) {
-      img::LoadResult r = img::load_texture(t.source);
-      if (!r) {
-        // Could not be read at all (missing, a folder, over the cap): an I/O error.
-        bool missing = !img::is_builtin_spec(t.source) && r.io_error;
-        diags.other.error({}, std::string(missing ? kRuleTextureMissing : "texture"),
-                          fmt::format("--texture s{}: {}", t.sampler, r.error));
-        ok = false;
-        continue;
-      }
-      it = loaded.emplace(t.source, std::make_shared<const img::Image>(std::move(*r.image))).first;
-    }
-    pass.textures[t.sampler].image = it->second;
-    set_sampler(req, pass.textures[t.sampler]);
-  }
-  std::vector<detail::RegRead> used;
-  if (req.ps) used = detail::sampler_reads(*req.ps);
-  if (!ok) return false; // the load error says it all; no unbound-stage warnings on top
-  for (const auto& r : used)
-    if (r.index >= kMaxSamplers || !pass.textures[r.index].image)
-      diags.ps.warning(r.loc, "unbound-sampler",
-                       fmt::format("sampler stage {} has no texture (--texture s{}=...); it reads "
-                                   "(0,0,0,1)",
-                                   r.index, r.index));
-  for (const TextureSetting& t : req.textures) {
-    bool read = false;
-    for (const auto& r : used) read = read || r.index == t.sampler;
-    if (!read)
-      diags.other.warning({}, "unused-texture",
-                          fmt::format("--texture s{}: the pixel listing never samples stage {}",
-                                      t.sampler, t.sampler));
-  }
-  return ok;
-}
-
-void set_vertex_inputs(const RunRequest& req, Pass& pass, RunDiagnostics& diags) {
-  const uint32_t pos = detail::position_register(*req.vs);
-  set_full_screen_quad(pass, pos);
-  for (const RegisterSetting& a : req.attrs) {
-    if (a.index == pos) {
-      diags.other.warning({}, "attr-position",
-                          fmt::format("--attr v{}: v{} is the position input and gets the quad's "
-                                      "corners; the value is ignored",
-                                      a.index, a.index));
-      continue;
-    }
-    for (size_t corner = 0; corner < 4; ++corner)
-      pass.vertices[corner].v[a.index] = a.quad_uv ? kQuadUV[corner] : a.value;
-  }
-  if (!req.inputs.empty())
-    diags.other.warning({}, "input-ignored",
-                        "--input is for runs without --vs; the vertex listing's outputs feed the "
-                        "pixel stage instead");
-}
-
-void set_pixel_inputs(const RunRequest& req, Pass& pass, RunDiagnostics& diags) {
-  for (const RegisterSetting& in : req.inputs) {
-    if (in.file == ir::RegFile::Input)
-      pass.constant_inputs.color[in.index] = in.value;
-    else
-      pass.constant_inputs.tex[in.index] = in.value;
-  }
-  if (!req.attrs.empty())
-    diags.other.warning({}, "attr-ignored",
-                        "--attr needs --vs; without a vertex listing it is ignored");
-}
-
-// Settings built in code rather than by the parsers may carry any index: refuse those
-// the pass has no register for, instead of writing out of bounds.
-bool check_indices(const RunRequest& req, RunDiagnostics& diags) {
-  bool ok = true;
-  auto refuse = [&](std::string what) {
-    diags.other.error({}, "register", what + " does not exist");
-    ok = false;
-  };
-  for (const auto& c : req.constants) {
-    uint32_t limit = c.file == ir::RegFile::Const ? 4096 : 16;
-    if (c.index >= limit) refuse(ir::register_name(c.file, c.index));
-  }
-  for (const auto& a : req.attrs)
-    if (a.index >= 16) refuse(fmt::format("vertex input v{}", a.index));
-  for (const auto& in : req.inputs)
-    if (in.index >= (in.file == ir::RegFile::Input ? 2u : 8u))
-      refuse("pixel input " + ir::register_name(in.file, in.index));
-  return ok;
-}
-
 } // namespace
 
-std::optional<Pass> pass_from_request(const RunRequest& req, RunDiagnostics& diags) {
-  Pass pass;
-  bool ok = true;
-  if (req.vs && req.vs->stage() != ir::ShaderStage::Vertex) {
-    diags.vs.error(req.vs->version_loc, "stage", "--vs expects a vertex listing (vs_1_1, vs_2_0)");
-    ok = false;
-  }
-  if (req.ps && req.ps->stage() != ir::ShaderStage::Pixel) {
-    diags.ps.error(req.ps->version_loc, "stage", "--ps expects a pixel listing (ps_1_1 .. ps_2_0)");
-    ok = false;
-  }
-  if (!ok || !check_indices(req, diags)) return std::nullopt;
-  pass.vertex_program = req.vs;
-  pass.pixel_program = req.ps;
-  pass.conventions = req.conventions;
-  if (req.vs) ok = build_constants(*req.vs, req.constants, pass.vs_constants, diags.vs) && ok;
-  if (req.ps) ok = build_constants(*req.ps, req.constants, pass.ps_constants, diags.ps) && ok;
-  ok = bind_textures(req, pass, diags) && ok;
-  if (req.vs)
-    set_vertex_inputs(req, pass, diags);
-  else
-    set_pixel_inputs(req, pass, diags);
-  if (!ok) return std::nullopt;
-  return pass;
-}
-
-RunResult run_job(const RunRequest& req, RunDiagnostics& diags) {
+RunResult run_pass(const Pass& pass, uint32_t width, uint32_t height, img::Format format,
+                   const std::vector<ProbePoint>& probes, unsigned threads, RunDiagnostics& diags) {
   RunResult result;
   auto t0 = Clock::now();
-  if (req.width == 0 || req.height == 0 || req.width > img::kMaxDimension ||
-      req.height > img::kMaxDimension) {
-    diags.other.error(
-        {}, "size",
-        fmt::format("size {}x{} outside 1..{}", req.width, req.height, img::kMaxDimension));
-    return result;
-  }
-  std::optional<Pass> pass;
   try { // a 16384² float target is 4 GiB: running out of memory is an error, not a crash
-    pass = pass_from_request(req, diags);
-    if (!pass) return result;
-    result.image = img::Image(req.width, req.height, req.format);
+    result.image = img::Image(width, height, format);
   } catch (const std::bad_alloc&) {
-    diags.other.error({}, "memory",
-                      fmt::format("not enough memory for a {}x{} target and its textures",
-                                  req.width, req.height));
+    diags.other.error(
+        {}, "memory",
+        fmt::format("not enough memory for a {}x{} target and its textures", width, height));
     return result;
   }
   result.setup_ms = ms_since(t0);
 
   auto t1 = Clock::now();
-  result.stats = draw(*pass, result.image, req.threads);
+  result.stats = draw(pass, result.image, threads);
   result.draw_ms = ms_since(t1);
   if (!result.stats.ok) {
     diags.other.error({}, "draw", result.stats.error);
@@ -242,36 +40,35 @@ RunResult run_job(const RunRequest& req, RunDiagnostics& diags) {
     diags.other.warning({}, "nothing-drawn",
                         "no triangle reached the screen (the vertex listing's oPos is "
                         "degenerate, behind the eye or clipped away): the image is empty");
-  for (const ProbePoint& p : req.probes) {
-    if (p.x >= req.width || p.y >= req.height) {
-      diags.other.error({}, "probe",
-                        fmt::format("--probe {},{} lies outside the {}x{} image", p.x, p.y,
-                                    req.width, req.height));
+  for (const ProbePoint& p : probes)
+    if (p.x >= width || p.y >= height) {
+      diags.other.error(
+          {}, "probe",
+          fmt::format("--probe {},{} lies outside the {}x{} image", p.x, p.y, width, height));
       return result;
     }
-    const float* px = result.image.at(p.x, p.y);
-    result.probes.push_back({p.x, p.y, {px[0], px[1], px[2], px[3]}});
-  }
+  result.probes = pass::read_probes(result.image, probes);
   result.ok = true;
   return result;
 }
 
-std::string write_run_output(const std::string& path, const img::Image& image,
-                             std::string* warning) {
-  const bool pfm = path.size() >= 4 && (path.ends_with(".pfm") || path.ends_with(".PFM"));
-  if (!pfm && warning) {
-    size_t clamped = 0;
-    for (float v : image.rgba) clamped += !(v >= 0.0f && v <= 1.0f);
-    if (clamped)
-      *warning = fmt::format("{}: {} channel values outside [0, 1] are clamped in PNG; write "
-                             ".pfm to keep them",
-                             path, clamped);
+RunResult run_job(const RunRequest& req, RunDiagnostics& diags) {
+  auto t0 = Clock::now();
+  std::optional<Pass> pass;
+  try { // a huge texture may not fit either
+    pass = pass::prepare_pass(req, diags);
+  } catch (const std::bad_alloc&) {
+    diags.other.error({}, "memory",
+                      fmt::format("not enough memory for a {}x{} target and its textures",
+                                  req.width, req.height));
+    return {};
   }
-  img::Status s = pfm ? img::write_pfm(path, image)
-                      : img::write_png(path, image,
-                                       image.format == img::Format::RGBA8 ? img::PngDepth::Bits8
-                                                                          : img::PngDepth::Bits16);
-  return s.error;
+  if (!pass) return {};
+  const double prepare_ms = ms_since(t0);
+  RunResult result =
+      run_pass(*pass, req.width, req.height, req.format, req.probes, req.threads, diags);
+  result.setup_ms += prepare_ms;
+  return result;
 }
 
 } // namespace tierlift::cpu

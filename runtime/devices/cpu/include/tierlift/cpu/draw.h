@@ -71,66 +71,18 @@
 
 namespace tierlift::cpu {
 
-enum class BlendMode : uint8_t {
-  Replace,             // dst = src
-  OneOne,              // dst = src + dst
-  SrcAlphaOne,         // dst = src·src.a + dst
-  SrcAlphaInvSrcAlpha, // dst = src·src.a + dst·(1 − src.a)
-};
+// The pass a draw takes is the device-neutral pass state (tierlift/pass/pass.h).
+using pass::BlendMode;
+using pass::Executor;
+using pass::kQuadCorners;
+using pass::kQuadTriangles;
+using pass::kQuadUV;
+using pass::Pass;
+using pass::set_full_screen_quad;
+using pass::Viewport;
 
-// D3DVIEWPORT9. width/height 0 mean "the render target's size".
-struct Viewport {
-  int32_t x = 0, y = 0;
-  uint32_t width = 0, height = 0;
-  float min_z = 0.0f, max_z = 1.0f;
-};
-
-// Corners of the full-screen quad in clip space, in the order top-left, top-right,
-// bottom-left, bottom-right: (−1, 1), (1, 1), (−1, −1), (1, −1), z = 0, w = 1.
-inline constexpr std::array<Vec4, 4> kQuadCorners{Vec4{-1, 1, 0, 1}, Vec4{1, 1, 0, 1},
-                                                  Vec4{-1, -1, 0, 1}, Vec4{1, -1, 0, 1}};
-// (u, v, 0, 1) at the same corners: (0, 0) top-left … (1, 1) bottom-right.
-inline constexpr std::array<Vec4, 4> kQuadUV{Vec4{0, 0, 0, 1}, Vec4{1, 0, 0, 1}, Vec4{0, 1, 0, 1},
-                                             Vec4{1, 1, 0, 1}};
-// The quad's two triangles (indices into the corners above); they share the diagonal from
-// top-right to bottom-left.
-inline constexpr std::array<std::array<uint32_t, 3>, 2> kQuadTriangles{
-    std::array<uint32_t, 3>{0, 1, 2}, std::array<uint32_t, 3>{2, 1, 3}};
-
-// Which executor runs the pixel stage. Auto: the block executor (pixel_block.h) whenever it
-// takes the program, else the per-pixel ShaderVM; Scalar: always the per-pixel ShaderVM (the
-// reference, and the "before" of bench/bench_cpu_glow.cpp). Both give the same image, bit for
-// bit (tests/cpu_draw/executor_identity_test.cpp).
-enum class Executor : uint8_t { Auto, Scalar };
-
-// One pass. Which vertex stage runs:
-//   * vertex_program set: it runs once per entry of `vertices` (its inputs v#);
-//   * no vertex program, `transformed` not empty: those are the vertex outputs, as with
-//     D3D9's pre-transformed vertices but in clip space (pos is divided by w);
-//   * neither: the full-screen quad with pixel-stage inputs `constant_inputs`, exactly
-//     as given at every pixel (no interpolation, so constants stay bit-exact).
-// `triangles` index the vertices; empty means consecutive triples (0,1,2), (3,4,5), ….
-// Which pixel stage runs: pixel_program, or none (oD0 passes through).
-struct Pass {
-  std::shared_ptr<const ir::Program> vertex_program;
-  std::shared_ptr<const ir::Program> pixel_program;
-  ConstantBank vs_constants, ps_constants;
-  std::array<TextureBinding, kMaxSamplers> textures{}; // pixel-stage sampler stages
-
-  std::vector<VertexInput> vertices;
-  std::vector<VertexOutput> transformed;
-  std::vector<std::array<uint32_t, 3>> triangles;
-  PixelInput constant_inputs;
-
-  Viewport viewport;
-  BlendMode blend = BlendMode::Replace;
-  ir::Conventions conventions;
-  Executor executor = Executor::Auto;
-};
-
-// Fills pass.vertices with the full-screen quad's four corners: `position_register` gets
-// kQuadCorners, every other input reads (0, 0, 0, 1); and sets pass.triangles.
-void set_full_screen_quad(Pass& pass, uint32_t position_register);
+// What the CPU device draws beyond one colour target with programmable stages: nothing yet.
+inline constexpr pass::Capabilities kCapabilities{};
 
 struct DrawStats {
   bool ok = true;

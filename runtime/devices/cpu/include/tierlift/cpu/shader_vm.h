@@ -11,22 +11,23 @@
 
 #include "tierlift/ir/conventions.h"
 #include "tierlift/ir/program.h"
+#include "tierlift/pass/registers.h"
 
 namespace tierlift::cpu {
 
-using Vec4 = std::array<float, 4>;
+// The register values of a pass (constants, vertex inputs and outputs, constant pixel
+// inputs, texture-stage state) are the device-neutral pass state's (tierlift/pass).
+using pass::ConstantBank;
+using pass::PixelInput;
+using pass::StageState;
+using pass::Vec4;
+using pass::VertexInput;
+using pass::VertexOutput;
 
 // Pixels the block executor (pixel_block.h) runs at once, each register held as four arrays
 // of this many lanes (structure of arrays).
 inline constexpr int kBlockLanes = 64;
 using Lanes = float[kBlockLanes];
-
-// Texture-stage state the ps_1_x texture instructions read (D3DTSS_*).
-struct StageState {
-  std::array<float, 4> bumpenv_mat{0, 0, 0, 0}; // M00, M01, M10, M11
-  float bumpenv_lscale = 0, bumpenv_loffset = 0;
-  bool projected = false; // D3DTTFF_PROJECTED: divide by the last coordinate (w)
-};
 
 // What the VM asks of the device for every texture read. coord holds (u, v, w, q);
 // how many components matter is the bound texture's business (2D: u,v). Unbound stages
@@ -44,33 +45,6 @@ public:
   // give; this default makes those calls.
   virtual void sample_block(uint32_t stage, const float* const coord[4], const float* bias, int n,
                             Lanes out[4]) const;
-};
-
-// API-set constants. Listing defs override these for the shader (as in D3D9).
-struct ConstantBank {
-  std::vector<Vec4> f; // c#, any size; missing registers read (0,0,0,0)
-  std::array<std::array<int32_t, 4>, 16> i{};
-  std::array<bool, 16> b{};
-};
-
-struct VertexInput {
-  std::array<Vec4, 16> v; // missing components read (0,0,0,1)
-  VertexInput() { v.fill({0, 0, 0, 1}); }
-};
-
-struct VertexOutput {
-  Vec4 pos{0, 0, 0, 1};
-  std::array<Vec4, 2> color{}; // oD0, oD1 (not yet saturated; the rasteriser saturates)
-  std::array<Vec4, 8> tex{};   // oT0..oT7
-  float fog = 0, point_size = 0;
-  uint8_t color_written = 0; // bit n: oDn written
-  uint8_t tex_written = 0;   // bit n: oTn written
-};
-
-struct PixelInput {
-  std::array<Vec4, 2> color{}; // v0, v1 in [0,1]
-  std::array<Vec4, 8> tex{};   // TC(0..7), interpolated texture coordinates
-  float depth = 0;             // interpolated z (for texdepth / texm3x2depth defaults)
 };
 
 struct PixelOutput {

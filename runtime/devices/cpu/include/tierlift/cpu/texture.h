@@ -9,20 +9,16 @@
 
 #include "tierlift/cpu/shader_vm.h"
 #include "tierlift/image/image.h"
+#include "tierlift/pass/pass.h"
 
 namespace tierlift::cpu {
 
-enum class Filter : uint8_t { Point, Linear };
-enum class AddressMode : uint8_t { Wrap, Mirror, Clamp, Border, MirrorOnce };
-
-// D3DSAMP_* state of one sampler stage. The defaults are D3D9's (§10.2): POINT, WRAP,
-// border colour 0x00000000.
-struct SamplerState {
-  Filter filter = Filter::Point;
-  AddressMode address_u = AddressMode::Wrap;
-  AddressMode address_v = AddressMode::Wrap;
-  Vec4 border_color{0, 0, 0, 0};
-};
+// Sampler state and stage bindings are the device-neutral pass state's (tierlift/pass).
+using pass::AddressMode;
+using pass::Filter;
+using pass::kMaxSamplers;
+using pass::SamplerState;
+using pass::TextureBinding;
 
 // The texel index an address mode turns `i` into on an axis of `n` texels (n ≥ 1), or
 // nullopt when the border colour is read instead (Border, index outside [0, n−1]).
@@ -46,16 +42,6 @@ Vec4 sample_texture(const img::Image& image, const SamplerState& sampler, float 
 // matches it. Point sampling is the same as sample_texture's.
 Vec4 sample_texture_llvmpipe(const img::Image& image, const SamplerState& sampler, float u, float v,
                              int subtexel_bits);
-
-// What one sampler stage holds: a texture (shared, so one image can be bound to several
-// stages as Listing 4 does), the sampler state, and the ps_1_x texture-stage state.
-struct TextureBinding {
-  std::shared_ptr<const img::Image> image; // null: unbound, reads (0, 0, 0, 1)
-  SamplerState sampler;
-  StageState stage;
-};
-
-inline constexpr uint32_t kMaxSamplers = 16;
 
 // The TextureUnit the pixel stage of a draw sees: sample(stage, …) reads bindings[stage].
 class BoundTextures final : public TextureUnit {

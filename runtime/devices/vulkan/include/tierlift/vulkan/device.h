@@ -1,5 +1,5 @@
 // The Vulkan device: one headless Vulkan instance and logical device (lavapipe by default)
-// that draws the CPU device's pass description (cpu::Pass) with tierlift's own SPIR-V.
+// that draws the device-neutral pass description (pass::Pass) with tierlift's own SPIR-V.
 //
 // How a pass maps onto Vulkan:
 //   * Programs: compile_pair(vertex, pixel) with link-time pruning. A pass without a vertex
@@ -28,12 +28,16 @@
 #include <string>
 #include <vector>
 
-#include "tierlift/cpu/draw.h"
 #include "tierlift/image/image.h"
+#include "tierlift/pass/pass.h"
 
 namespace tierlift::vulkan {
 
 class TextureSet;
+
+// What the Vulkan device draws beyond one colour target with programmable stages: nothing yet
+// (a pass asking for more is refused, pass::check_supported).
+inline constexpr pass::Capabilities kCapabilities{};
 
 struct DeviceOptions {
   // Enable VK_LAYER_KHRONOS_validation with a messenger that collects every warning and
@@ -89,7 +93,7 @@ public:
   // Draws `pass` into `target`: its format selects the attachment format, its current
   // pixels are the destination blending reads; on success it holds the stored result.
   // On failure the target is unchanged.
-  DrawResult draw(const cpu::Pass& pass, img::Image& target, const DrawOptions& options = {});
+  DrawResult draw(const pass::Pass& pass, img::Image& target, const DrawOptions& options = {});
 
   // Stores the pipelines made so far in the user's cache directory for the next run
   // (pipeline_cache.h; also done when the device is destroyed). Failures are ignored.

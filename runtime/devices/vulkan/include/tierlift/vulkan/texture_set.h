@@ -43,8 +43,8 @@
 #include <memory>
 #include <string>
 
-#include "tierlift/cpu/draw.h"
 #include "tierlift/image/image.h"
+#include "tierlift/pass/pass.h"
 #include "tierlift/vulkan/device.h"
 
 namespace tierlift::vulkan {
@@ -56,7 +56,7 @@ enum class TextureId : uint32_t { None = 0 };
 // own host image for that stage (pass.textures[s].image, uploaded for that draw only, as
 // Device::draw does), or the unbound texture (0, 0, 0, 1) when it has none. Sampler state
 // always comes from pass.textures[s].sampler.
-using StageTextures = std::array<TextureId, cpu::kMaxSamplers>;
+using StageTextures = std::array<TextureId, pass::kMaxSamplers>;
 
 class TextureSet {
 public:
@@ -75,10 +75,10 @@ public:
   std::string read(TextureId id, img::Image& out);
   // Draws `pass` into `target`, sampling `stages` (see StageTextures). The target's current
   // contents are the destination blending reads. Nothing is read back.
-  DrawResult draw(const cpu::Pass& pass, const StageTextures& stages, TextureId target,
+  DrawResult draw(const pass::Pass& pass, const StageTextures& stages, TextureId target,
                   const DrawOptions& options = {});
   // Makes what draw(pass, stages, target, options) needs, without drawing.
-  std::string prepare(const cpu::Pass& pass, const StageTextures& stages, TextureId target,
+  std::string prepare(const pass::Pass& pass, const StageTextures& stages, TextureId target,
                       const DrawOptions& options = {});
   // Batching on: draw() records; off: draw() submits and waits (flushing first). A draw's
   // DrawResult::draw_ms is then the recording time; the work is timed by flush().

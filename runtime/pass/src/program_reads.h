@@ -6,7 +6,7 @@
 
 #include "tierlift/ir/program.h"
 
-namespace tierlift::cpu::detail {
+namespace tierlift::pass::detail {
 
 struct RegRead {
   ir::RegFile file;
@@ -20,8 +20,6 @@ std::vector<RegRead> constant_reads(const ir::Program& program, std::vector<RegR
 // Sampler stages the program samples: s# of ps_2_0 texld*, the stage of ps_1_x texture
 // instructions that sample (tex, texld, texbem, texm3x3tex, ...). Stages as RegFile::Sampler.
 std::vector<RegRead> sampler_reads(const ir::Program& program);
-// v# declared dcl_position (usage index 0), or v0 when the listing has no such dcl.
-uint32_t position_register(const ir::Program& program);
 bool is_defined(const ir::Program& program, ir::RegFile file, uint32_t index);
 
-} // namespace tierlift::cpu::detail
+} // namespace tierlift::pass::detail

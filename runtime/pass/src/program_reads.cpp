@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-namespace tierlift::cpu::detail {
+namespace tierlift::pass::detail {
 namespace {
 
 // Rows a matrix macro reads from its second source (m4x4 c0 reads c0..c3).
@@ -75,17 +75,9 @@ std::vector<RegRead> sampler_reads(const ir::Program& program) {
   return out;
 }
 
-uint32_t position_register(const ir::Program& program) {
-  for (const ir::Declaration& d : program.decls)
-    if (d.reg.file == ir::RegFile::Input && d.usage == ir::DeclUsage::Position &&
-        d.usage_index == 0)
-      return d.reg.index;
-  return 0;
-}
-
 bool is_defined(const ir::Program& program, ir::RegFile file, uint32_t index) {
   return std::any_of(program.defs.begin(), program.defs.end(),
                      [&](const ir::ConstDef& d) { return d.file == file && d.index == index; });
 }
 
-} // namespace tierlift::cpu::detail
+} // namespace tierlift::pass::detail

@@ -1,4 +1,5 @@
-// Parsers for the values of `tierlift run`'s flags. Each gives a value or a one-line reason.
+// Parsers for the values of `tierlift run`'s flags into the pass settings (tierlift/pass/
+// setup.h). Each gives a value or a one-line reason.
 #include <bit>
 #include <cctype>
 #include <cerrno>
@@ -8,9 +9,9 @@
 #include <fmt/format.h>
 #include <string>
 
-#include "tierlift/cpu/run_job.h"
+#include "run_flags.h"
 
-namespace tierlift::cpu {
+namespace tierlift::cli {
 namespace {
 
 std::string_view trim(std::string_view s) {
@@ -236,4 +237,4 @@ std::optional<ir::PixelCenter> parse_pixel_center(std::string_view text) {
   return std::nullopt;
 }
 
-} // namespace tierlift::cpu
+} // namespace tierlift::cli

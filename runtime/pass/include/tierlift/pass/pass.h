@@ -1,0 +1,174 @@
+// One draw, described once for every device: the programs, one constant bank per stage, the
+// sampler stages with their sampler and texture-stage state, the geometry, the viewport, the
+// blend and the output-merger state, the conventions. The CPU interpreter (cpu::draw), the
+// Vulkan device (vulkan::Device::draw) and the analytic model all consume this type; none of
+// them defines its own. The effect graph builds one per pass (effects/run_graph.h) and
+// `tierlift run` builds one from its flags (setup.h).
+//
+// Room for what comes next is made here as state, not as implementations: several render
+// targets, a depth/stencil buffer with D3D9's stencil state, fixed-function texture stages.
+// A device checks the state it cannot honour with check_supported (below) and refuses the
+// pass with an error instead of drawing something else. Frames that feed back are a graph
+// property (effects/graph.h, TextureDesc::feedback).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string_view>
+#include <vector>
+
+#include "tierlift/image/image.h"
+#include "tierlift/ir/conventions.h"
+#include "tierlift/ir/program.h"
+#include "tierlift/ir/result.h"
+#include "tierlift/pass/registers.h"
+
+namespace tierlift::pass {
+
+enum class Filter : uint8_t { Point, Linear };
+enum class AddressMode : uint8_t { Wrap, Mirror, Clamp, Border, MirrorOnce };
+
+// D3DSAMP_* state of one sampler stage. The defaults are D3D9's: POINT, WRAP, border colour
+// 0x00000000.
+struct SamplerState {
+  Filter filter = Filter::Point;
+  AddressMode address_u = AddressMode::Wrap;
+  AddressMode address_v = AddressMode::Wrap;
+  Vec4 border_color{0, 0, 0, 0};
+};
+
+// What one sampler stage holds: a texture (shared, so one image can be bound to several
+// stages as Listing 4 does), the sampler state, and the ps_1_x texture-stage state.
+struct TextureBinding {
+  std::shared_ptr<const img::Image> image; // null: unbound, reads (0, 0, 0, 1)
+  SamplerState sampler;
+  StageState stage;
+};
+
+inline constexpr uint32_t kMaxSamplers = 16;
+
+enum class BlendMode : uint8_t {
+  Replace,             // dst = src
+  OneOne,              // dst = src + dst
+  SrcAlphaOne,         // dst = src·src.a + dst
+  SrcAlphaInvSrcAlpha, // dst = src·src.a + dst·(1 − src.a)
+};
+
+// D3DVIEWPORT9. width/height 0 mean "the render target's size".
+struct Viewport {
+  int32_t x = 0, y = 0;
+  uint32_t width = 0, height = 0;
+  float min_z = 0.0f, max_z = 1.0f;
+};
+
+// D3DCMPFUNC and D3DSTENCILOP, for the depth/stencil state below.
+enum class CompareFunc : uint8_t {
+  Never,
+  Less,
+  Equal,
+  LessEqual,
+  Greater,
+  NotEqual,
+  GreaterEqual,
+  Always
+};
+enum class StencilOp : uint8_t { Keep, Zero, Replace, IncrSat, DecrSat, Invert, Incr, Decr };
+
+// D3DRS_ZENABLE … D3DRS_STENCILWRITEMASK (one-sided stencil). Disabled by default: no
+// depth/stencil buffer is bound and nothing is tested.
+struct DepthStencilState {
+  bool depth_test = false, depth_write = false;
+  CompareFunc depth_func = CompareFunc::LessEqual;
+  bool stencil_test = false;
+  CompareFunc stencil_func = CompareFunc::Always;
+  StencilOp stencil_fail = StencilOp::Keep, stencil_depth_fail = StencilOp::Keep,
+            stencil_pass = StencilOp::Keep;
+  uint32_t stencil_ref = 0, stencil_read_mask = 0xffffffffu, stencil_write_mask = 0xffffffffu;
+  bool enabled() const { return depth_test || depth_write || stencil_test; }
+};
+
+// D3DTSS_COLOROP / ALPHAOP and their arguments for one fixed-function texture stage (the
+// dx7 tier: passes without a pixel program). Only the operations named here are described.
+enum class StageOp : uint8_t { Disable, SelectArg1, SelectArg2, Modulate, Add, Subtract };
+enum class StageArg : uint8_t { Current, Diffuse, Texture, TFactor };
+struct FixedStage {
+  StageOp color_op = StageOp::Disable, alpha_op = StageOp::Disable;
+  StageArg color_arg1 = StageArg::Texture, color_arg2 = StageArg::Current;
+  StageArg alpha_arg1 = StageArg::Texture, alpha_arg2 = StageArg::Current;
+};
+
+// Corners of the full-screen quad in clip space, in the order top-left, top-right,
+// bottom-left, bottom-right: (−1, 1), (1, 1), (−1, −1), (1, −1), z = 0, w = 1.
+inline constexpr std::array<Vec4, 4> kQuadCorners{Vec4{-1, 1, 0, 1}, Vec4{1, 1, 0, 1},
+                                                  Vec4{-1, -1, 0, 1}, Vec4{1, -1, 0, 1}};
+// (u, v, 0, 1) at the same corners: (0, 0) top-left … (1, 1) bottom-right.
+inline constexpr std::array<Vec4, 4> kQuadUV{Vec4{0, 0, 0, 1}, Vec4{1, 0, 0, 1}, Vec4{0, 1, 0, 1},
+                                             Vec4{1, 1, 0, 1}};
+// The quad's two triangles (indices into the corners above); they share the diagonal from
+// top-right to bottom-left.
+inline constexpr std::array<std::array<uint32_t, 3>, 2> kQuadTriangles{
+    std::array<uint32_t, 3>{0, 1, 2}, std::array<uint32_t, 3>{2, 1, 3}};
+
+// Which executor the CPU device runs the pixel stage with (other devices ignore it). Auto:
+// the block executor whenever it takes the program, else the per-pixel ShaderVM; Scalar:
+// always the per-pixel ShaderVM (the reference). Both give the same image, bit for bit.
+enum class Executor : uint8_t { Auto, Scalar };
+
+// One pass. Which vertex stage runs:
+//   * vertex_program set: it runs once per entry of `vertices` (its inputs v#);
+//   * no vertex program, `transformed` not empty: those are the vertex outputs, as with
+//     D3D9's pre-transformed vertices but in clip space (pos is divided by w);
+//   * neither: the full-screen quad with pixel-stage inputs `constant_inputs`, exactly
+//     as given at every pixel (no interpolation, so constants stay bit-exact).
+// `triangles` index the vertices; empty means consecutive triples (0,1,2), (3,4,5), ….
+// Which pixel stage runs: pixel_program, or none (oD0 passes through).
+struct Pass {
+  std::shared_ptr<const ir::Program> vertex_program;
+  std::shared_ptr<const ir::Program> pixel_program;
+  ConstantBank vs_constants, ps_constants;
+  std::array<TextureBinding, kMaxSamplers> textures{}; // pixel-stage sampler stages
+
+  std::vector<VertexInput> vertices;
+  std::vector<VertexOutput> transformed;
+  std::vector<std::array<uint32_t, 3>> triangles;
+  PixelInput constant_inputs;
+
+  Viewport viewport;
+  BlendMode blend = BlendMode::Replace;
+  ir::Conventions conventions;
+  Executor executor = Executor::Auto;
+
+  // Output merger beyond one colour target (D3D9 MRT: oC0..oC3 into as many targets).
+  uint32_t color_targets = 1;
+  DepthStencilState depth_stencil;
+  // Fixed-function texture stages, for passes without a pixel program; empty: none.
+  std::vector<FixedStage> fixed_stages;
+};
+
+// What a device can draw beyond one colour target with programmable stages.
+struct Capabilities {
+  uint32_t max_color_targets = 1;
+  bool depth_stencil = false;
+  bool fixed_function = false;
+};
+
+// An error (rule "unsupported", subject `device`) for the first thing `pass` asks of a
+// device with `caps` that it cannot do; ok otherwise.
+ir::Status check_supported(const Pass& pass, const Capabilities& caps, std::string_view device);
+
+// The quad's vertex inputs, one rule for every caller (tierlift run, the effect graph, the
+// devices' tests). D3D9 feeds the position to the input declared dcl_position with usage
+// index 0 (v0 when the listing declares no position, D3D8 style); the quad's uv goes to
+// every input declared dcl_texcoord (any usage index), so a listing may read it under
+// several registers.
+uint32_t position_input(const ir::Program& vertex_program);
+std::vector<uint32_t> texcoord_inputs(const ir::Program& vertex_program);
+
+// Fills pass.vertices with the full-screen quad's four corners: `position_register` gets
+// kQuadCorners, every other input reads (0, 0, 0, 1); and sets pass.triangles.
+void set_full_screen_quad(Pass& pass, uint32_t position_register);
+// The same for pass.vertex_program, with kQuadUV at every texcoord_inputs register.
+void set_full_screen_quad_uv(Pass& pass);
+
+} // namespace tierlift::pass

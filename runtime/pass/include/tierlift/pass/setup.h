@@ -1,0 +1,116 @@
+// A pass from typed settings: what `tierlift run` asks for (programs, constants, inputs,
+// textures, sampler state, conventions) becomes one pass::Pass, prepared once and drawn by
+// any device. The CLI parses its flags into these settings (cli/run_flags.h); tests build
+// them directly.
+//
+// Typical use (e.g. Listings 3 + 4 over a built-in texture, RGBA32F):
+//   RunRequest r;
+//   r.vs = std::make_shared<ir::Program>(vs);  r.ps = std::make_shared<ir::Program>(ps);
+//   r.width = r.height = 64;  r.format = img::Format::RGBA32F;
+//   r.constants.push_back({StageMask::Vertex, ir::RegFile::Const, 0, {0.0078125f, 0, 0, 0}});
+//   r.attrs.push_back({ir::RegFile::Input, 3, {0, 0, 0, 1}, true});   // v3 = the quad uv
+//   for (uint32_t s = 0; s < 4; ++s) r.textures.push_back({s, "builtin:noise:64x64"});
+//   r.filter = Filter::Linear;  r.address = AddressMode::Clamp;
+//   RunDiagnostics d;  std::optional<Pass> pass = prepare_pass(r, d);
+//
+// Rules:
+//   * Geometry is always the full-screen quad. With a vertex program, its position input
+//     (pass.h, position_input) gets the quad's corners, attrs feed the other inputs (quad_uv:
+//     (0,0) top-left … (1,1) bottom-right), and inputs not given read (0,0,0,1). Without one,
+//     the pixel stage's v#/t# are the constants of `inputs` at every pixel (default 0).
+//   * Constants: a c#/i#/b# a listing reads that is neither given nor def'd is an ERROR
+//     naming the register (a forgotten --const otherwise silently gives a black image);
+//     reads through a0/aL cannot be checked and only warn. Constants for StageMask::Both go
+//     to both stages. def in the listing overrides a given value, as in D3D9.
+//   * Textures: every sampler stage the pixel listing samples (ps_2_0: s#; ps_1_x: the
+//     stage of each texture instruction) should be bound; an unbound one warns and reads
+//     (0,0,0,1). Each source is read once. `filter` and `address` apply to every stage.
+//     Defaults are D3D9's sampler defaults: point, wrap.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "tierlift/ir/diagnostic.h"
+#include "tierlift/pass/pass.h"
+
+namespace tierlift::pass {
+
+enum class StageMask : uint8_t { Both, Vertex, Pixel };
+
+// One API-set constant: [vs:|ps:]cN=x,y,z,w | iN=a,b,c,d | bN=true|false. prepare_pass
+// writes it into the ConstantBank of each stage it names.
+struct ConstSetting {
+  StageMask stage = StageMask::Both;
+  ir::RegFile file = ir::RegFile::Const; // Const, ConstInt or ConstBool
+  uint32_t index = 0;
+  Vec4 f{0, 0, 0, 0};
+  std::array<int32_t, 4> i{};
+  bool b = false;
+};
+
+// A pixel-stage input v#|t# (without a vertex program) or a vertex input vN (with one).
+struct RegisterSetting {
+  ir::RegFile file = ir::RegFile::Input; // Input (v#) or Texture (t#)
+  uint32_t index = 0;
+  Vec4 value{0, 0, 0, 1};
+  bool quad_uv = false; // vertex inputs only: the quad's uv instead of `value`
+};
+
+// A texture for sampler stage `sampler`: a file or builtin spec (img::load_texture).
+struct TextureSetting {
+  TextureSetting() = default;
+  TextureSetting(uint32_t s, std::string src, std::shared_ptr<const img::Image> im = nullptr)
+      : sampler(s), source(std::move(src)), image(std::move(im)) {}
+  uint32_t sampler = 0;
+  std::string source;                      // file or builtin spec (img::load_texture)
+  std::shared_ptr<const img::Image> image; // when set: this image, `source` only names it
+};
+
+struct ProbePoint {
+  uint32_t x = 0, y = 0;
+};
+
+struct ProbeValue {
+  uint32_t x = 0, y = 0;
+  Vec4 value{}; // as stored
+};
+
+struct RunRequest {
+  std::shared_ptr<const ir::Program> vs, ps; // validated listings; either may be null
+  uint32_t width = 256, height = 256;
+  img::Format format = img::Format::RGBA8;
+  std::vector<ConstSetting> constants;
+  std::vector<RegisterSetting> inputs; // used only without a vertex program
+  std::vector<RegisterSetting> attrs;  // used only with a vertex program
+  std::vector<TextureSetting> textures;
+  Filter filter = Filter::Point;
+  AddressMode address = AddressMode::Wrap;
+  ir::Conventions conventions;
+  std::vector<ProbePoint> probes;
+  unsigned threads = 0; // CPU device: 0 = every core
+};
+
+// Problems, kept apart by where their positions point: into the vertex listing's
+// SourceManager, the pixel listing's, or nowhere (flags, textures, the draw).
+struct RunDiagnostics {
+  ir::DiagnosticSink vs, ps, other;
+  bool has_errors() const { return vs.has_errors() || ps.has_errors() || other.has_errors(); }
+};
+// Rule of the `other` error for a texture file that does not exist (an I/O problem, as
+// opposed to a file that exists but does not decode).
+inline constexpr std::string_view kRuleTextureMissing = "texture-missing";
+
+// The pass `request` describes, textures loaded (each source once). nullopt after reporting
+// errors to `diags`; warnings never stop it. Checks the size too (1..img::kMaxDimension).
+std::optional<Pass> prepare_pass(const RunRequest& request, RunDiagnostics& diags);
+
+// The stored values at `probes` (each inside `image`).
+std::vector<ProbeValue> read_probes(const img::Image& image, const std::vector<ProbePoint>& probes);
+
+} // namespace tierlift::pass

@@ -1,0 +1,58 @@
+// The quad's inputs and the capability check shared by every device.
+#include "tierlift/pass/pass.h"
+
+#include <fmt/format.h>
+
+namespace tierlift::pass {
+
+ir::Status check_supported(const Pass& pass, const Capabilities& caps, std::string_view device) {
+  auto refuse = [&](std::string what) {
+    return ir::fail(std::string(device), "unsupported",
+                    fmt::format("the {} device cannot draw {} yet", device, what));
+  };
+  if (pass.color_targets == 0) return refuse("a pass without a colour target");
+  if (pass.color_targets > caps.max_color_targets)
+    return refuse(fmt::format("into {} render targets (at most {})", pass.color_targets,
+                              caps.max_color_targets));
+  if (pass.depth_stencil.enabled() && !caps.depth_stencil)
+    return refuse("with a depth/stencil buffer");
+  if (!pass.fixed_stages.empty() && !caps.fixed_function)
+    return refuse("fixed-function texture stages");
+  if (!pass.fixed_stages.empty() && pass.pixel_program)
+    return ir::fail(std::string(device), "pass",
+                    "fixed-function texture stages and a pixel program exclude each other");
+  return ir::ok_status();
+}
+
+uint32_t position_input(const ir::Program& vertex_program) {
+  for (const ir::Declaration& d : vertex_program.decls)
+    if (d.reg.file == ir::RegFile::Input && d.usage == ir::DeclUsage::Position &&
+        d.usage_index == 0)
+      return d.reg.index;
+  return 0;
+}
+
+std::vector<uint32_t> texcoord_inputs(const ir::Program& vertex_program) {
+  std::vector<uint32_t> out;
+  for (const ir::Declaration& d : vertex_program.decls)
+    if (d.reg.file == ir::RegFile::Input && d.usage == ir::DeclUsage::TexCoord && d.reg.index < 16)
+      out.push_back(d.reg.index);
+  return out;
+}
+
+void set_full_screen_quad(Pass& pass, uint32_t position_register) {
+  pass.vertices.assign(4, VertexInput{});
+  for (size_t i = 0; i < 4; ++i)
+    if (position_register < 16) pass.vertices[i].v[position_register] = kQuadCorners[i];
+  pass.triangles.assign(kQuadTriangles.begin(), kQuadTriangles.end());
+}
+
+void set_full_screen_quad_uv(Pass& pass) {
+  const uint32_t position = position_input(*pass.vertex_program);
+  set_full_screen_quad(pass, position);
+  for (uint32_t reg : texcoord_inputs(*pass.vertex_program))
+    if (reg != position)
+      for (size_t c = 0; c < 4; ++c) pass.vertices[c].v[reg] = kQuadUV[c];
+}
+
+} // namespace tierlift::pass

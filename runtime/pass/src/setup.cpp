@@ -1,0 +1,220 @@
+// RunRequest → Pass: constants into the stages' banks, inputs, textures read once.
+#include "tierlift/pass/setup.h"
+
+#include <fmt/format.h>
+#include <map>
+
+#include "program_reads.h"
+#include "tierlift/image/builtin.h"
+#include "tierlift/image/io.h"
+
+namespace tierlift::pass {
+namespace {
+
+bool applies(StageMask m, ir::ShaderStage stage) {
+  return m == StageMask::Both || (m == StageMask::Vertex) == (stage == ir::ShaderStage::Vertex);
+}
+
+void apply_constant(ConstantBank& bank, const ConstSetting& c) {
+  switch (c.file) {
+  case ir::RegFile::Const:
+    if (bank.f.size() <= c.index) bank.f.resize(c.index + 1, Vec4{0, 0, 0, 0});
+    bank.f[c.index] = c.f;
+    break;
+  case ir::RegFile::ConstInt: bank.i[c.index] = c.i; break;
+  default: bank.b[c.index] = c.b; break;
+  }
+}
+
+bool given(const std::vector<ConstSetting>& list, ir::ShaderStage stage, ir::RegFile f,
+           uint32_t index) {
+  for (const auto& c : list)
+    if (applies(c.stage, stage) && c.file == f && c.index == index) return true;
+  return false;
+}
+
+std::string_view stage_prefix(ir::ShaderStage s) {
+  return s == ir::ShaderStage::Vertex ? "vs" : "ps";
+}
+
+// Constants of one stage; an error for every register read but neither given nor def'd.
+bool build_constants(const ir::Program& program, const std::vector<ConstSetting>& list,
+                     ConstantBank& bank, ir::DiagnosticSink& diags) {
+  const ir::ShaderStage stage = program.stage();
+  for (const auto& c : list)
+    if (applies(c.stage, stage)) apply_constant(bank, c);
+  bool ok = true;
+  std::vector<detail::RegRead> relative;
+  for (const auto& r : detail::constant_reads(program, &relative)) {
+    if (given(list, stage, r.file, r.index) || detail::is_defined(program, r.file, r.index))
+      continue;
+    std::string reg = ir::register_name(r.file, r.index);
+    std::string example = r.file == ir::RegFile::ConstBool ? "true" : "x,y,z,w";
+    if (r.file == ir::RegFile::ConstInt) example = "a,b,c,d";
+    diags.error(r.loc, "constant-not-set",
+                fmt::format("{} is read but neither given nor defined; pass --const {}:{}={}", reg,
+                            stage_prefix(stage), reg, example));
+    ok = false;
+  }
+  for (const auto& r : relative)
+    diags.warning(r.loc, "constant-relative",
+                  fmt::format("relative read based at {}: registers it reaches that are "
+                              "neither given nor defined read 0",
+                              ir::register_name(r.file, r.index)));
+  return ok;
+}
+
+void set_sampler(const RunRequest& req, TextureBinding& b) {
+  b.sampler.filter = req.filter;
+  b.sampler.address_u = b.sampler.address_v = req.address;
+}
+
+bool bind_textures(const RunRequest& req, Pass& pass, RunDiagnostics& diags) {
+  std::map<std::string, std::shared_ptr<const img::Image>> loaded; // one load per source
+  bool ok = true;
+  for (const TextureSetting& t : req.textures) {
+    if (t.sampler >= kMaxSamplers) {
+      diags.other.error({}, "texture",
+                        fmt::format("sampler s{} does not exist (s0..s15)", t.sampler));
+      ok = false;
+      continue;
+    }
+    if (t.image) {
+      pass.textures[t.sampler].image = t.image;
+      set_sampler(req, pass.textures[t.sampler]);
+      continue;
+    }
+    auto it = loaded.find(t.source);
+    if (it == loaded.end()) {
+      img::LoadResult r = img::load_texture(t.source);
+      if (!r) {
+        // Could not be read at all (missing, a folder, over the cap): an I/O error.
+        bool missing = !img::is_builtin_spec(t.source) && r.io_error;
+        diags.other.error({}, std::string(missing ? kRuleTextureMissing : "texture"),
+                          fmt::format("--texture s{}: {}", t.sampler, r.error));
+        ok = false;
+        continue;
+      }
+      it = loaded.emplace(t.source, std::make_shared<const img::Image>(std::move(*r.image))).first;
+    }
+    pass.textures[t.sampler].image = it->second;
+    set_sampler(req, pass.textures[t.sampler]);
+  }
+  std::vector<detail::RegRead> used;
+  if (req.ps) used = detail::sampler_reads(*req.ps);
+  if (!ok) return false; // the load error says it all; no unbound-stage warnings on top
+  for (const auto& r : used)
+    if (r.index >= kMaxSamplers || !pass.textures[r.index].image)
+      diags.ps.warning(r.loc, "unbound-sampler",
+                       fmt::format("sampler stage {} has no texture (--texture s{}=...); it reads "
+                                   "(0,0,0,1)",
+                                   r.index, r.index));
+  for (const TextureSetting& t : req.textures) {
+    bool read = false;
+    for (const auto& r : used) read = read || r.index == t.sampler;
+    if (!read)
+      diags.other.warning({}, "unused-texture",
+                          fmt::format("--texture s{}: the pixel listing never samples stage {}",
+                                      t.sampler, t.sampler));
+  }
+  return ok;
+}
+
+void set_vertex_inputs(const RunRequest& req, Pass& pass, RunDiagnostics& diags) {
+  const uint32_t pos = position_input(*req.vs);
+  set_full_screen_quad(pass, pos);
+  for (const RegisterSetting& a : req.attrs) {
+    if (a.index == pos) {
+      diags.other.warning({}, "attr-position",
+                          fmt::format("--attr v{}: v{} is the position input and gets the quad's "
+                                      "corners; the value is ignored",
+                                      a.index, a.index));
+      continue;
+    }
+    for (size_t corner = 0; corner < 4; ++corner)
+      pass.vertices[corner].v[a.index] = a.quad_uv ? kQuadUV[corner] : a.value;
+  }
+  if (!req.inputs.empty())
+    diags.other.warning({}, "input-ignored",
+                        "--input is for runs without --vs; the vertex listing's outputs feed the "
+                        "pixel stage instead");
+}
+
+void set_pixel_inputs(const RunRequest& req, Pass& pass, RunDiagnostics& diags) {
+  for (const RegisterSetting& in : req.inputs) {
+    if (in.file == ir::RegFile::Input)
+      pass.constant_inputs.color[in.index] = in.value;
+    else
+      pass.constant_inputs.tex[in.index] = in.value;
+  }
+  if (!req.attrs.empty())
+    diags.other.warning({}, "attr-ignored",
+                        "--attr needs --vs; without a vertex listing it is ignored");
+}
+
+// Settings built in code rather than by the parsers may carry any index: refuse those
+// the pass has no register for, instead of writing out of bounds.
+bool check_indices(const RunRequest& req, RunDiagnostics& diags) {
+  bool ok = true;
+  auto refuse = [&](std::string what) {
+    diags.other.error({}, "register", what + " does not exist");
+    ok = false;
+  };
+  for (const auto& c : req.constants) {
+    uint32_t limit = c.file == ir::RegFile::Const ? 4096 : 16;
+    if (c.index >= limit) refuse(ir::register_name(c.file, c.index));
+  }
+  for (const auto& a : req.attrs)
+    if (a.index >= 16) refuse(fmt::format("vertex input v{}", a.index));
+  for (const auto& in : req.inputs)
+    if (in.index >= (in.file == ir::RegFile::Input ? 2u : 8u))
+      refuse("pixel input " + ir::register_name(in.file, in.index));
+  return ok;
+}
+
+} // namespace
+
+std::optional<Pass> prepare_pass(const RunRequest& req, RunDiagnostics& diags) {
+  if (req.width == 0 || req.height == 0 || req.width > img::kMaxDimension ||
+      req.height > img::kMaxDimension) {
+    diags.other.error(
+        {}, "size",
+        fmt::format("size {}x{} outside 1..{}", req.width, req.height, img::kMaxDimension));
+    return std::nullopt;
+  }
+  Pass pass;
+  bool ok = true;
+  if (req.vs && req.vs->stage() != ir::ShaderStage::Vertex) {
+    diags.vs.error(req.vs->version_loc, "stage", "--vs expects a vertex listing (vs_1_1, vs_2_0)");
+    ok = false;
+  }
+  if (req.ps && req.ps->stage() != ir::ShaderStage::Pixel) {
+    diags.ps.error(req.ps->version_loc, "stage", "--ps expects a pixel listing (ps_1_1 .. ps_2_0)");
+    ok = false;
+  }
+  if (!ok || !check_indices(req, diags)) return std::nullopt;
+  pass.vertex_program = req.vs;
+  pass.pixel_program = req.ps;
+  pass.conventions = req.conventions;
+  if (req.vs) ok = build_constants(*req.vs, req.constants, pass.vs_constants, diags.vs) && ok;
+  if (req.ps) ok = build_constants(*req.ps, req.constants, pass.ps_constants, diags.ps) && ok;
+  ok = bind_textures(req, pass, diags) && ok;
+  if (req.vs)
+    set_vertex_inputs(req, pass, diags);
+  else
+    set_pixel_inputs(req, pass, diags);
+  if (!ok) return std::nullopt;
+  return pass;
+}
+
+std::vector<ProbeValue> read_probes(const img::Image& image,
+                                    const std::vector<ProbePoint>& probes) {
+  std::vector<ProbeValue> out;
+  for (const ProbePoint& p : probes) {
+    const float* px = image.at(p.x, p.y);
+    out.push_back({p.x, p.y, {px[0], px[1], px[2], px[3]}});
+  }
+  return out;
+}
+
+} // namespace tierlift::pass
