@@ -216,10 +216,11 @@ int run(const GlowFlags& f) {
   }
   uint64_t planned_bytes = 0;
   if (!memory_fits(plan, f, where, report, &planned_bytes)) return report.finish(kExitInvalid);
-  img::LoadResult image = effects::load_scene_image(*scene);
+  img::ImageResult image = effects::load_scene_image(*scene);
   if (!image) {
-    report.error(image.io_error ? "io" : "scene", image.error, scene->image);
-    return report.finish(image.io_error ? kExitUsage : kExitInvalid);
+    const bool io = img::is_io_error(image);
+    report.error(io ? "io" : "scene", image.message(), scene->image);
+    return report.finish(io ? kExitUsage : kExitInvalid);
   }
   // The parameters' warnings after the flags' overrides, then the scene's own (the image's).
   std::vector<std::string> warnings = effects::glow_warnings(params);
@@ -258,7 +259,7 @@ int run(const GlowFlags& f) {
   const bool keep = devices.size() > 1;
   std::vector<GlowWay> ways;
   for (auto& [name, device] : devices) {
-    ways.push_back({name, effects::run_glow(plan, *image.image, *device, keep,
+    ways.push_back({name, effects::run_glow(plan, *image, *device, keep,
                                             progress_printer(name, f.quiet || f.json))});
     if (!ways.back().glow.run.ok) {
       report.error("run", ways.back().glow.run.error);
@@ -273,7 +274,7 @@ int run(const GlowFlags& f) {
   }
   std::vector<FrameReport> frames;
   if (f.frames > 0)
-    if (err = run_frames(plan, *image.image, ways, f, vk, vk_create_ms, frames); !err.empty()) {
+    if (err = run_frames(plan, *image, ways, f, vk, vk_create_ms, frames); !err.empty()) {
       report.error("frames", err);
       return report.finish(kExitInvalid);
     }

@@ -35,13 +35,8 @@ void add_front_end_options(CLI::App* sub, FrontEndOptions& o, bool skip_validati
                   "enough");
 }
 
-std::optional<std::string> read_file(const std::string& path, const io::ReadCap& cap,
-                                     std::string& error) {
-  return io::read_bounded(path, cap, error);
-}
-
 std::string output_conflict(const std::string& output, const std::vector<std::string>& inputs) {
-  return io::refuse_if_input(output, inputs);
+  return io::refuse_if_input(output, inputs).message();
 }
 
 std::string check_output(const std::string& output, const std::vector<std::string>& inputs,
@@ -51,7 +46,7 @@ std::string check_output(const std::string& output, const std::vector<std::strin
 }
 
 std::string write_output(const std::string& path, std::string_view bytes) {
-  return io::write_output(path, bytes);
+  return io::write_output(path, bytes).message();
 }
 
 std::vector<std::pair<std::string, std::string>>
@@ -70,11 +65,10 @@ split_defines(const std::vector<std::string>& defines) {
 LoadedListing load_listing(const std::string& path, const FrontEndOptions& options,
                            const io::ReadCap& cap) {
   LoadedListing out;
-  std::string error;
-  auto text = read_file(path, cap, error);
+  ir::Result<std::string> text = io::read_bounded(path, cap);
   if (!text) {
     out.io_error = true;
-    out.io_message = error;
+    out.io_message = text.message();
     return out;
   }
   // Visual Studio saves listings with a UTF-8 byte-order mark; it is not part of the text.

@@ -54,9 +54,6 @@ struct LoadedListing {
 LoadedListing load_listing(const std::string& path, const FrontEndOptions& options,
                            const io::ReadCap& cap = io::kListingCap);
 
-// Reads a whole file within `cap` ("-" = standard input); nullopt + "PATH: why" on failure.
-std::optional<std::string> read_file(const std::string& path, const io::ReadCap& cap,
-                                     std::string& error);
 // "" when `output` ("-" = standard output) may be written: it is none of `inputs` (same
 // device and inode). Commands check this before doing any work, so nothing is touched.
 std::string output_conflict(const std::string& output, const std::vector<std::string>& inputs);

@@ -108,20 +108,19 @@ std::string write_glow_images(const std::string& dir, const std::vector<GlowWay>
     }
   // Every name is checked before the first is written: an input is never replaced.
   for (const File& f : files)
-    if (std::string why = io::refuse_if_input(f.path, inputs); !why.empty()) return why;
+    if (ir::Status refused = io::refuse_if_input(f.path, inputs); !refused)
+      return refused.message();
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) return fmt::format("{}: cannot create the folder: {}", dir, ec.message());
   for (const File& f : files) {
-    img::Status s;
-    if (f.pfm) {
-      s = img::write_pfm(f.path, *f.image);
-    } else {
+    auto write = [&]() -> ir::Status {
+      if (f.pfm) return img::write_pfm(f.path, *f.image);
       img::Image opaque = *f.image;
       for (size_t i = 3; i < opaque.rgba.size(); i += 4) opaque.rgba[i] = 1.0f;
-      s = img::write_png(f.path, opaque);
-    }
-    if (!s) return s.error;
+      return img::write_png(f.path, opaque);
+    };
+    if (ir::Status s = write(); !s) return s.message();
     if (written) written->push_back(f.path);
   }
   return {};

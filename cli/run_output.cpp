@@ -18,11 +18,11 @@ std::string write_run_output(const std::string& path, const img::Image& image,
                              ".pfm to keep them",
                              path, clamped);
   }
-  img::Status s = pfm ? img::write_pfm(path, image)
-                      : img::write_png(path, image,
-                                       image.format == img::Format::RGBA8 ? img::PngDepth::Bits8
-                                                                          : img::PngDepth::Bits16);
-  return s.error;
+  ir::Status s = pfm ? img::write_pfm(path, image)
+                     : img::write_png(path, image,
+                                      image.format == img::Format::RGBA8 ? img::PngDepth::Bits8
+                                                                         : img::PngDepth::Bits16);
+  return s.message();
 }
 
 } // namespace tierlift::cli

@@ -144,11 +144,11 @@ void check_with_half_texel(const Blur& b, uint32_t width = 64, uint32_t height =
     EXPECT_EQ(b.vertical ? texel[k].dx : texel[k].dy, 0);
   }
   auto conv = analytic::discrete_convolution(texel, noise, clamp_linear_model());
-  ASSERT_TRUE(conv) << conv.error;
-  EXPECT_LE(max_abs_difference(device, *conv.image), tolerance);
+  ASSERT_TRUE(conv) << conv.message();
+  EXPECT_LE(max_abs_difference(device, *conv), tolerance);
   auto model = analytic::blur_pass(taps, noise, clamp_linear_model());
-  ASSERT_TRUE(model) << model.error;
-  EXPECT_LE(max_abs_difference(*model.image, *conv.image), tolerance);
+  ASSERT_TRUE(model) << model.message();
+  EXPECT_LE(max_abs_difference(*model, *conv), tolerance);
 }
 
 void check_without_half_texel(const Blur& b, uint32_t width = 64, uint32_t height = 32,
@@ -160,11 +160,11 @@ void check_without_half_texel(const Blur& b, uint32_t width = 64, uint32_t heigh
   ASSERT_TRUE(error.empty()) << error;
   auto taps = taps_of(b, s);
   auto corner = analytic::corner_model(taps, noise, clamp_linear_model());
-  ASSERT_TRUE(corner) << corner.error;
-  EXPECT_LE(max_abs_difference(device, *corner.image), tolerance);
+  ASSERT_TRUE(corner) << corner.message();
+  EXPECT_LE(max_abs_difference(device, *corner), tolerance);
   auto model = analytic::blur_pass(taps, noise, clamp_linear_model());
-  ASSERT_TRUE(model) << model.error;
-  EXPECT_LE(max_abs_difference(device, *model.image), tolerance);
+  ASSERT_TRUE(model) << model.message();
+  EXPECT_LE(max_abs_difference(device, *model), tolerance);
 
   // The device differs from the plain convolution by exactly the predicted amount …
   auto plain = analytic::discrete_convolution(analytic::intended_texel_taps(taps, width, height),
@@ -173,13 +173,13 @@ void check_without_half_texel(const Blur& b, uint32_t width = 64, uint32_t heigh
   ASSERT_TRUE(plain && predicted);
   double worst = 0;
   for (size_t i = 0; i < device.rgba.size(); ++i) {
-    double measured = static_cast<double>(device.rgba[i]) - plain.image->rgba[i];
+    double measured = static_cast<double>(device.rgba[i]) - plain->rgba[i];
     worst = std::fmax(worst, std::fabs(measured - predicted->difference.rgba[i]));
   }
   EXPECT_LE(worst, tolerance);
   // … and that amount is far from negligible on noise (half a texel of blur and shift).
   EXPECT_GT(predicted->max_abs, 0.05);
-  EXPECT_GT(max_abs_difference(device, *plain.image), 0.05);
+  EXPECT_GT(max_abs_difference(device, *plain), 0.05);
 }
 
 } // namespace
@@ -216,8 +216,8 @@ TEST(HalfTexel, Rgba8TargetMeetsTheDesignTarget) {
     analytic::PassModel m = clamp_linear_model();
     m.target_format = img::Format::RGBA8;
     auto model = analytic::blur_pass(taps_of(b, s), noise, m);
-    ASSERT_TRUE(model) << model.error;
-    auto c = img::compare(device, *model.image);
+    ASSERT_TRUE(model) << model.message();
+    auto c = img::compare(device, *model);
     ASSERT_TRUE(c);
     auto verdict = img::judge(*c, img::Format::RGBA8);
     RecordProperty(half ? "rgba8_half_texel" : "rgba8_no_half_texel", verdict.summary);

@@ -62,10 +62,10 @@ analytic::LinearPassInput input(uint32_t w, uint32_t h, const img::Image& tex0,
 TEST(LinearPass, DownsampleReadsMidpoints) {
   const img::Image src = row({0.0f, 0.25f, 0.5f, 1.0f});
   auto r = analytic::linear_pass({tap(0, 0.25, 0.5, 1.0)}, input(2, 1, src));
-  ASSERT_TRUE(r) << r.error;
-  EXPECT_EQ(red(*r.image), (std::vector<float>{0.125f, 0.75f}));
-  EXPECT_EQ(r.image->at(1, 0)[1], 0.375f); // G = R / 2 filtered alike
-  EXPECT_EQ(r.image->at(0, 0)[3], 1.0f);
+  ASSERT_TRUE(r) << r.message();
+  EXPECT_EQ(red(*r), (std::vector<float>{0.125f, 0.75f}));
+  EXPECT_EQ(r->at(1, 0)[1], 0.375f); // G = R / 2 filtered alike
+  EXPECT_EQ(r->at(0, 0)[3], 1.0f);
 }
 
 // Upsampling a 2×1 row [0, 1] to 4×1. Scale 1, offset 0: x = (i/4)·2 − 0.5 = i/2 − 0.5:
@@ -74,11 +74,11 @@ TEST(LinearPass, DownsampleReadsMidpoints) {
 TEST(LinearPass, UpsampleFollowsBilinearWeights) {
   const img::Image src = row({0.0f, 1.0f});
   auto a = analytic::linear_pass({tap(0, 0, 0.5, 1.0)}, input(4, 1, src));
-  ASSERT_TRUE(a) << a.error;
-  EXPECT_EQ(red(*a.image), (std::vector<float>{0.0f, 0.0f, 0.5f, 1.0f}));
+  ASSERT_TRUE(a) << a.message();
+  EXPECT_EQ(red(*a), (std::vector<float>{0.0f, 0.0f, 0.5f, 1.0f}));
   auto b = analytic::linear_pass({tap(0, 0.125, 0.5, 1.0)}, input(4, 1, src));
-  ASSERT_TRUE(b) << b.error;
-  EXPECT_EQ(red(*b.image), (std::vector<float>{0.0f, 0.25f, 0.75f, 1.0f}));
+  ASSERT_TRUE(b) << b.message();
+  EXPECT_EQ(red(*b), (std::vector<float>{0.0f, 0.25f, 0.75f, 1.0f}));
 }
 
 // The scale: target 2×1 over a 4×1 texture with scale 2 and offset 1/8 reads
@@ -88,12 +88,12 @@ TEST(LinearPass, ScaleMultipliesTheQuadUv) {
   const img::Image src = row({0.25f, 0.5f, 0.75f, 1.0f});
   auto in = input(2, 1, src);
   auto d3d9 = analytic::linear_pass({tap(0, 0.125, 0.5, 1.0, 2.0, 1.0)}, in);
-  ASSERT_TRUE(d3d9) << d3d9.error;
-  EXPECT_EQ(red(*d3d9.image), (std::vector<float>{0.25f, 1.0f}));
+  ASSERT_TRUE(d3d9) << d3d9.message();
+  EXPECT_EQ(red(*d3d9), (std::vector<float>{0.25f, 1.0f}));
   in.model.conventions.pixel_center = tierlift::ir::PixelCenter::Modern;
   auto modern = analytic::linear_pass({tap(0, 0.125, 0.5, 1.0, 2.0, 1.0)}, in);
-  ASSERT_TRUE(modern) << modern.error;
-  EXPECT_EQ(red(*modern.image), (std::vector<float>{0.75f, 1.0f}));
+  ASSERT_TRUE(modern) << modern.message();
+  EXPECT_EQ(red(*modern), (std::vector<float>{0.75f, 1.0f}));
 }
 
 // Two stages, as the composite: out.rgb = A + 0.5·B, out.a = A.a. A is 2×2 point-sampled at
@@ -114,9 +114,9 @@ TEST(LinearPass, TwoStagesAreSummed) {
   analytic::Tap t1 = tap(1, 0.3, 0.7, 0.5);
   t1.weight[3] = 0;
   auto r = analytic::linear_pass({tap(0, 0.25, 0.25, 1.0), t1}, in);
-  ASSERT_TRUE(r) << r.error;
+  ASSERT_TRUE(r) << r.message();
   for (uint32_t k = 0; k < 4; ++k) {
-    const float* p = r.image->at(k % 2, k / 2);
+    const float* p = r->at(k % 2, k / 2);
     EXPECT_EQ(p[0], av[k] + 0.25f) << k;
     EXPECT_EQ(p[1], 0.125f) << k;
     EXPECT_EQ(p[2], av[k]) << k;
@@ -125,9 +125,9 @@ TEST(LinearPass, TwoStagesAreSummed) {
   // A tap on an unbound stage reads (0, 0, 0, 1), and a note says so.
   std::vector<std::string> notes;
   auto u = analytic::linear_pass({tap(0, 0.25, 0.25, 1.0), tap(5, 0, 0, 0.25)}, in, &notes);
-  ASSERT_TRUE(u) << u.error;
-  EXPECT_EQ(u.image->at(1, 1)[0], 0.5f);
-  EXPECT_EQ(u.image->at(1, 1)[3], 0.75f); // 0.5 + 0.25·1
+  ASSERT_TRUE(u) << u.message();
+  EXPECT_EQ(u->at(1, 1)[0], 0.5f);
+  EXPECT_EQ(u->at(1, 1)[3], 0.75f); // 0.5 + 0.25·1
   ASSERT_EQ(notes.size(), 1u);
   EXPECT_NE(notes[0].find("unbound"), std::string::npos);
 }
@@ -142,9 +142,9 @@ TEST(LinearPass, OneOneAddsToTheDestination) {
   in.destination = &dst;
   // Point read at texel centres: offset 1/8.
   auto f32 = analytic::linear_pass({tap(0, 0.125, 0.5, 1.0)}, in);
-  ASSERT_TRUE(f32) << f32.error;
-  EXPECT_EQ(red(*f32.image), (std::vector<float>{0.75f, 1.25f, 0.0f, 2.0f}));
-  EXPECT_EQ(f32.image->at(0, 0)[3], 2.0f); // alpha 1 + 1
+  ASSERT_TRUE(f32) << f32.message();
+  EXPECT_EQ(red(*f32), (std::vector<float>{0.75f, 1.25f, 0.0f, 2.0f}));
+  EXPECT_EQ(f32->at(0, 0)[3], 2.0f); // alpha 1 + 1
 
   // RGBA8: dst = 51/255 (0.2), src 0.31 → 0.51·255 = 130.05 → 130; src −0.5 → 0 (not −0.3);
   // src 2 → 1; src 0.5 onto 0.75 → 1 (clamped store).
@@ -155,14 +155,14 @@ TEST(LinearPass, OneOneAddsToTheDestination) {
   in8.blend = analytic::Blend::OneOne;
   in8.destination = &dst8;
   auto u8 = analytic::linear_pass({tap(0, 0.125, 0.5, 1.0)}, in8);
-  ASSERT_TRUE(u8) << u8.error;
-  EXPECT_EQ(u8.image->format, img::Format::RGBA8);
-  EXPECT_EQ(red(*u8.image), (std::vector<float>{130 / 255.0f, 0.2f, 1.0f, 1.0f}));
+  ASSERT_TRUE(u8) << u8.message();
+  EXPECT_EQ(u8->format, img::Format::RGBA8);
+  EXPECT_EQ(red(*u8), (std::vector<float>{130 / 255.0f, 0.2f, 1.0f, 1.0f}));
   // Replace on RGBA8 stores round(0.31·255 = 79.05) = 79.
   in8.blend = analytic::Blend::Replace;
   auto r8 = analytic::linear_pass({tap(0, 0.125, 0.5, 1.0)}, in8);
-  ASSERT_TRUE(r8) << r8.error;
-  EXPECT_EQ(r8.image->at(0, 0)[0], 79 / 255.0f);
+  ASSERT_TRUE(r8) << r8.message();
+  EXPECT_EQ(r8->at(0, 0)[0], 79 / 255.0f);
 }
 
 // ps_1_x: each sample clamps to [−1, 1] (a t# write), and so does the sum (r0).
@@ -175,26 +175,26 @@ TEST(LinearPass, Ps1xClampsSamplesAndTheSum) {
   in.textures.push_back({1, &src, sampler(analytic::Filter::Point)});
   const std::vector<analytic::Tap> taps = {tap(0, 0.25, 0.5, 0.5), tap(1, 0.75, 0.5, 0.75)};
   auto plain = analytic::linear_pass(taps, in);
-  ASSERT_TRUE(plain) << plain.error;
-  EXPECT_EQ(plain.image->at(0, 0)[0], 1.3125f);
+  ASSERT_TRUE(plain) << plain.message();
+  EXPECT_EQ(plain->at(0, 0)[0], 1.3125f);
   in.ps1x_clamp = true;
   std::vector<std::string> notes;
   auto clamped = analytic::linear_pass(taps, in, &notes);
-  ASSERT_TRUE(clamped) << clamped.error;
-  EXPECT_EQ(clamped.image->at(0, 0)[0], 1.0f);
-  EXPECT_EQ(clamped.image->at(0, 0)[1], 0.65625f); // G: 0.5·0.75 + 0.75·0.375
-  EXPECT_EQ(clamped.image->at(0, 0)[3], 1.0f);     // 0.5 + 0.75 = 1.25 → 1
+  ASSERT_TRUE(clamped) << clamped.message();
+  EXPECT_EQ(clamped->at(0, 0)[0], 1.0f);
+  EXPECT_EQ(clamped->at(0, 0)[1], 0.65625f); // G: 0.5·0.75 + 0.75·0.375
+  EXPECT_EQ(clamped->at(0, 0)[3], 1.0f);     // 0.5 + 0.75 = 1.25 → 1
   const std::vector<analytic::Tap> quarter = {tap(0, 0.25, 0.5, 0.25), tap(1, 0.75, 0.5, 0.25)};
   auto q = analytic::linear_pass(quarter, in);
-  ASSERT_TRUE(q) << q.error;
-  EXPECT_EQ(q.image->at(0, 0)[0], 0.4375f);
+  ASSERT_TRUE(q) << q.message();
+  EXPECT_EQ(q->at(0, 0)[0], 0.4375f);
   // No note about negative weights here; one when a weight is negative.
   for (const auto& n : notes) EXPECT_EQ(n.find("negative"), std::string::npos) << n;
   std::vector<std::string> neg_notes;
   auto neg =
       analytic::linear_pass({tap(0, 0.25, 0.5, 1.0), tap(1, 0.75, 0.5, -0.5)}, in, &neg_notes);
-  ASSERT_TRUE(neg) << neg.error;
-  EXPECT_EQ(neg.image->at(0, 0)[0], 0.625f); // 1 − 0.5·0.75
+  ASSERT_TRUE(neg) << neg.message();
+  EXPECT_EQ(neg->at(0, 0)[0], 0.625f); // 1 − 0.5·0.75
   bool said = false;
   for (const auto& n : neg_notes) said |= n.find("weight is negative") != std::string::npos;
   EXPECT_TRUE(said);
@@ -206,15 +206,14 @@ TEST(LinearPass, MaskByAlpha) {
   src.rgba = {0.75f, 0.5f, 0.25f, 0.5f, 1.0f, 1.0f, 1.0f, 0.0f};
   auto in = input(2, 1, src, analytic::Filter::Point);
   auto r = analytic::mask_by_alpha_pass(tap(0, 0.25, 0.5, 0.0), in);
-  ASSERT_TRUE(r) << r.error;
-  EXPECT_EQ(r.image->rgba,
-            (std::vector<float>{0.375f, 0.25f, 0.125f, 0.5f, 0.0f, 0.0f, 0.0f, 0.0f}));
+  ASSERT_TRUE(r) << r.message();
+  EXPECT_EQ(r->rgba, (std::vector<float>{0.375f, 0.25f, 0.125f, 0.5f, 0.0f, 0.0f, 0.0f, 0.0f}));
   // ps_1_x: a sample of 2 clamps to 1 first: (2, 2, 2, 0.5) → (0.5, 0.5, 0.5, 0.5).
   src.rgba = {2.0f, 2.0f, 2.0f, 0.5f, 0, 0, 0, 0};
   in.ps1x_clamp = true;
   auto c = analytic::mask_by_alpha_pass(tap(0, 0.25, 0.5, 0.0), in);
-  ASSERT_TRUE(c) << c.error;
-  EXPECT_EQ(c.image->at(0, 0)[0], 0.5f);
+  ASSERT_TRUE(c) << c.message();
+  EXPECT_EQ(c->at(0, 0)[0], 0.5f);
 }
 
 TEST(LinearPass, BadInputIsAnError) {
@@ -222,25 +221,25 @@ TEST(LinearPass, BadInputIsAnError) {
   auto in = input(0, 1, src);
   auto r = analytic::linear_pass({tap(0, 0, 0, 1)}, in);
   EXPECT_FALSE(r);
-  EXPECT_NE(r.error.find("target 0x1"), std::string::npos) << r.error;
+  EXPECT_NE(r.message().find("target 0x1"), std::string::npos) << r.message();
   in = input(1, 1, src);
   in.blend = analytic::Blend::OneOne;
   r = analytic::linear_pass({tap(0, 0, 0, 1)}, in);
   EXPECT_FALSE(r);
-  EXPECT_NE(r.error.find("destination"), std::string::npos) << r.error;
+  EXPECT_NE(r.message().find("destination"), std::string::npos) << r.message();
   in = input(1, 1, src);
   in.textures.push_back({0, &src, {}});
   r = analytic::linear_pass({tap(0, 0, 0, 1)}, in);
   EXPECT_FALSE(r);
-  EXPECT_NE(r.error.find("bound twice"), std::string::npos) << r.error;
+  EXPECT_NE(r.message().find("bound twice"), std::string::npos) << r.message();
   in = input(1, 1, src);
   in.textures[0].image = nullptr;
   EXPECT_FALSE(analytic::mask_by_alpha_pass(tap(0, 0, 0, 1), in));
   // A huge offset stays finite (no UB): it reads the clamped edge.
   in = input(1, 1, src);
   auto far = analytic::linear_pass({tap(0, 1e300, -1e300, 1)}, in);
-  ASSERT_TRUE(far) << far.error;
-  EXPECT_EQ(far.image->at(0, 0)[0], 0.5f);
+  ASSERT_TRUE(far) << far.message();
+  EXPECT_EQ(far->at(0, 0)[0], 0.5f);
 }
 
 // RGBA8 stores from exact values: midpoints go by the tie rule (within 1e-9 of a step, so a

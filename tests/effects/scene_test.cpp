@@ -33,9 +33,9 @@ TEST(Scene, EveryShippedSceneLoadsAndBuilds) {
     ASSERT_TRUE(s) << e.path() << "\n" << s.error;
     GlowPlan plan = build_glow(s.scene->params);
     EXPECT_TRUE(plan) << e.path() << ": " << plan.error;
-    img::LoadResult image = load_scene_image(*s.scene);
-    ASSERT_TRUE(image) << image.error;
-    EXPECT_EQ(image.image->width, s.scene->params.width);
+    img::ImageResult image = load_scene_image(*s.scene);
+    ASSERT_TRUE(image) << image.message();
+    EXPECT_EQ(image->width, s.scene->params.width);
   }
   EXPECT_EQ(n, 4u);
 }

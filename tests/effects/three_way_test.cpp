@@ -264,16 +264,15 @@ void check_half_texel_rule(Tier tier, bool half_texel) {
     analytic::PassModel m;
     m.conventions = plan.graph.conventions;
     m.target_format = img::Format::RGBA32F;
-    img::LoadResult conv = analytic::discrete_convolution(texel_taps, source, m);
-    ASSERT_TRUE(conv) << conv.error;
+    img::ImageResult conv = analytic::discrete_convolution(texel_taps, source, m);
+    ASSERT_TRUE(conv) << conv.message();
     const img::Image& result = run.run.passes[index].result;
-    ASSERT_EQ(result.rgba.size(), conv.image->rgba.size());
-    std::string err;
-    auto pred = analytic::predict_corner_difference(ex.taps, source, m, &err);
-    ASSERT_TRUE(pred) << err;
+    ASSERT_EQ(result.rgba.size(), conv->rgba.size());
+    auto pred = analytic::predict_corner_difference(ex.taps, source, m);
+    ASSERT_TRUE(pred) << pred.message();
     double worst = 0;
     for (size_t v = 0; v < result.rgba.size(); ++v) {
-      const double diff = double(result.rgba[v]) - double(conv.image->rgba[v]);
+      const double diff = double(result.rgba[v]) - double(conv->rgba[v]);
       const double want = half_texel ? 0.0 : double(pred->difference.rgba[v]);
       worst = std::max(worst, std::abs(diff - want));
     }

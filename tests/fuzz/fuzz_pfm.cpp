@@ -12,20 +12,20 @@
 using namespace tierlift;
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  img::LoadResult r = img::decode_pfm(std::span<const uint8_t>(data, size));
+  img::ImageResult r = img::decode_pfm(std::span<const uint8_t>(data, size));
   if (!r) {
-    if (r.error.empty()) std::abort();
+    if (r.message().empty()) std::abort();
     return 0;
   }
-  const img::Image& im = *r.image;
+  const img::Image& im = *r;
   if (im.width == 0 || im.height == 0 || im.width > img::kMaxDimension ||
       im.height > img::kMaxDimension || im.rgba.size() != size_t{im.width} * im.height * 4)
     std::abort();
   for (size_t i = 3; i < im.rgba.size(); i += 4)
     if (im.rgba[i] != 1.0f) std::abort();
-  img::LoadResult again = img::decode_pfm(img::encode_pfm(im));
-  if (!again || again.image->rgba.size() != im.rgba.size() ||
-      std::memcmp(again.image->rgba.data(), im.rgba.data(), im.rgba.size() * sizeof(float)) != 0)
+  img::ImageResult again = img::decode_pfm(img::encode_pfm(im));
+  if (!again || again->rgba.size() != im.rgba.size() ||
+      std::memcmp(again->rgba.data(), im.rgba.data(), im.rgba.size() * sizeof(float)) != 0)
     std::abort();
   return 0;
 }

@@ -12,12 +12,12 @@
 using namespace tierlift;
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  img::LoadResult r = img::decode_png(std::span<const uint8_t>(data, size));
+  img::ImageResult r = img::decode_png(std::span<const uint8_t>(data, size));
   if (!r) {
-    if (r.error.empty()) std::abort();
+    if (r.message().empty()) std::abort();
     return 0;
   }
-  const img::Image& im = *r.image;
+  const img::Image& im = *r;
   if (im.width == 0 || im.height == 0 || im.width > img::kMaxDimension ||
       im.height > img::kMaxDimension || im.rgba.size() != size_t{im.width} * im.height * 4)
     std::abort();
@@ -27,7 +27,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size_t{im.width} * im.height > 65536) return 0;
   const img::PngDepth depth =
       im.format == img::Format::RGBA8 ? img::PngDepth::Bits8 : img::PngDepth::Bits16;
-  img::LoadResult again = img::decode_png(img::encode_png(im, depth));
-  if (!again || again.image->rgba != im.rgba) std::abort();
+  img::ImageResult again = img::decode_png(img::encode_png(im, depth));
+  if (!again || again->rgba != im.rgba) std::abort();
   return 0;
 }

@@ -7,8 +7,8 @@ namespace img = tierlift::img;
 
 TEST(Builtin, ImpulseIsOneWhiteTexelAtTheCentre) {
   auto r = img::make_builtin("builtin:impulse:5x4");
-  ASSERT_TRUE(r) << r.error;
-  const img::Image& im = *r.image;
+  ASSERT_TRUE(r) << r.message();
+  const img::Image& im = *r;
   ASSERT_EQ(im.width, 5u);
   ASSERT_EQ(im.height, 4u);
   for (uint32_t y = 0; y < 4; ++y)
@@ -22,26 +22,26 @@ TEST(Builtin, ImpulseIsOneWhiteTexelAtTheCentre) {
 
 TEST(Builtin, RampHoldsTheTexelCentreCoordinate) {
   auto r = img::make_builtin("builtin:ramp:4x2");
-  ASSERT_TRUE(r) << r.error;
+  ASSERT_TRUE(r) << r.message();
   const float expect[4] = {0.125f, 0.375f, 0.625f, 0.875f};
   for (uint32_t y = 0; y < 2; ++y)
     for (uint32_t x = 0; x < 4; ++x) {
-      EXPECT_EQ(r.image->at(x, y)[0], expect[x]);
-      EXPECT_EQ(r.image->at(x, y)[1], expect[x]);
-      EXPECT_EQ(r.image->at(x, y)[3], 1.0f);
+      EXPECT_EQ(r->at(x, y)[0], expect[x]);
+      EXPECT_EQ(r->at(x, y)[1], expect[x]);
+      EXPECT_EQ(r->at(x, y)[3], 1.0f);
     }
 }
 
 TEST(Builtin, CheckerHasEightTexelSquares) {
   auto r = img::make_builtin("builtin:checker:20x17");
-  ASSERT_TRUE(r) << r.error;
-  EXPECT_EQ(r.image->at(0, 0)[0], 1.0f);
-  EXPECT_EQ(r.image->at(7, 7)[0], 1.0f);
-  EXPECT_EQ(r.image->at(8, 0)[0], 0.0f);
-  EXPECT_EQ(r.image->at(0, 8)[1], 0.0f);
-  EXPECT_EQ(r.image->at(8, 8)[2], 1.0f);
-  EXPECT_EQ(r.image->at(19, 16)[0], 1.0f); // square (2, 2)
-  EXPECT_EQ(r.image->at(19, 16)[3], 1.0f);
+  ASSERT_TRUE(r) << r.message();
+  EXPECT_EQ(r->at(0, 0)[0], 1.0f);
+  EXPECT_EQ(r->at(7, 7)[0], 1.0f);
+  EXPECT_EQ(r->at(8, 0)[0], 0.0f);
+  EXPECT_EQ(r->at(0, 8)[1], 0.0f);
+  EXPECT_EQ(r->at(8, 8)[2], 1.0f);
+  EXPECT_EQ(r->at(19, 16)[0], 1.0f); // square (2, 2)
+  EXPECT_EQ(r->at(19, 16)[3], 1.0f);
 }
 
 TEST(Builtin, NoiseIsSplitmix64AndSeeded) {
@@ -54,20 +54,20 @@ TEST(Builtin, NoiseIsSplitmix64AndSeeded) {
   auto b = img::make_builtin("builtin:noise:8x8:7");
   auto c = img::make_builtin("builtin:noise:8x8:8");
   ASSERT_TRUE(a && b && c);
-  EXPECT_EQ(a.image->rgba, b.image->rgba);
-  EXPECT_NE(a.image->rgba, c.image->rgba);
+  EXPECT_EQ(a->rgba, b->rgba);
+  EXPECT_NE(a->rgba, c->rgba);
   // Texel (0,0).r is the first draw of seed 7, top 24 bits scaled by 2^-24.
   uint64_t s = 7;
-  EXPECT_EQ(a.image->at(0, 0)[0], static_cast<float>(img::splitmix64(s) >> 40) * 0x1p-24f);
+  EXPECT_EQ(a->at(0, 0)[0], static_cast<float>(img::splitmix64(s) >> 40) * 0x1p-24f);
   double mean = 0;
-  for (size_t i = 0; i < a.image->rgba.size(); ++i) {
+  for (size_t i = 0; i < a->rgba.size(); ++i) {
     if (i % 4 == 3) {
-      EXPECT_EQ(a.image->rgba[i], 1.0f);
+      EXPECT_EQ(a->rgba[i], 1.0f);
       continue;
     }
-    EXPECT_GE(a.image->rgba[i], 0.0f);
-    EXPECT_LT(a.image->rgba[i], 1.0f);
-    mean += a.image->rgba[i];
+    EXPECT_GE(a->rgba[i], 0.0f);
+    EXPECT_LT(a->rgba[i], 1.0f);
+    mean += a->rgba[i];
   }
   mean /= 8 * 8 * 3;
   EXPECT_NEAR(mean, 0.5, 0.1);
@@ -76,7 +76,7 @@ TEST(Builtin, NoiseIsSplitmix64AndSeeded) {
 TEST(Builtin, DefaultSizeAndErrors) {
   auto d = img::make_builtin("builtin:checker");
   ASSERT_TRUE(d);
-  EXPECT_EQ(d.image->width, img::kBuiltinDefaultSize);
+  EXPECT_EQ(d->width, img::kBuiltinDefaultSize);
   const char* bad[] = {"builtin:",
                        "builtin:sparkle",
                        "builtin:ramp:0x4",
@@ -93,9 +93,9 @@ TEST(Builtin, DefaultSizeAndErrors) {
   for (const char* spec : bad) {
     auto r = img::make_builtin(spec);
     EXPECT_FALSE(r) << spec;
-    EXPECT_FALSE(r.error.empty()) << spec;
+    EXPECT_FALSE(r.message().empty()) << spec;
   }
   auto unknown = img::make_builtin("builtin:sparkle");
-  EXPECT_NE(unknown.error.find("unknown builtin"), std::string::npos) << unknown.error;
+  EXPECT_NE(unknown.message().find("unknown builtin"), std::string::npos) << unknown.message();
   EXPECT_TRUE(img::load_texture("builtin:impulse:3x3"));
 }

@@ -41,14 +41,14 @@ TEST(DecodeSmoke, RandomBytesAreRejected) {
     }
     auto png = img::decode_png(b);
     EXPECT_FALSE(png) << "random bytes " << i << " decoded as a PNG";
-    EXPECT_FALSE(png.error.empty());
+    EXPECT_FALSE(png.message().empty());
     if (b.size() >= 2) {
       b[0] = 'P';
       b[1] = 'F';
     }
     auto pfm = img::decode_pfm(b);
     EXPECT_FALSE(pfm) << "random bytes " << i << " decoded as a PFM";
-    EXPECT_FALSE(pfm.error.empty());
+    EXPECT_FALSE(pfm.message().empty());
   }
 }
 
@@ -73,28 +73,28 @@ TEST(DecodeSmoke, DamagedFilesAreRejectedOrReadExactly) {
   for (const File& f : files) {
     ASSERT_FALSE(f.bytes.empty());
     const auto original = f.png ? img::decode_png(f.bytes) : img::decode_pfm(f.bytes);
-    ASSERT_TRUE(original) << original.error;
+    ASSERT_TRUE(original) << original.message();
     const size_t raster = size_t{7} * 5 * f.channels * 4;
     const size_t header = f.bytes.size() - raster; // PFM only
     for (int i = 0; i < 1500; ++i) {
       auto b = mutate(f.bytes, state);
       auto r = f.png ? img::decode_png(b) : img::decode_pfm(b);
       if (b == f.bytes) {
-        ASSERT_TRUE(r) << r.error;
-        EXPECT_EQ(r.image->rgba, original.image->rgba);
+        ASSERT_TRUE(r) << r.message();
+        EXPECT_EQ(r->rgba, original->rgba);
         continue;
       }
       if (f.png || b.size() != f.bytes.size()) {
         EXPECT_FALSE(r) << (f.png ? "damaged PNG" : "PFM of the wrong size") << " decoded";
-        EXPECT_FALSE(r.error.empty());
+        EXPECT_FALSE(r.message().empty());
         continue;
       }
       if (!std::equal(b.begin(), b.begin() + static_cast<long>(header), f.bytes.begin()))
         continue; // a damaged header may still read as some header: either answer is right
-      ASSERT_TRUE(r) << r.error;
+      ASSERT_TRUE(r) << r.message();
       ++decoded_damaged;
-      ASSERT_EQ(r.image->width, 7u);
-      ASSERT_EQ(r.image->height, 5u);
+      ASSERT_EQ(r->width, 7u);
+      ASSERT_EQ(r->height, 5u);
       for (uint32_t y = 0; y < 5; ++y)
         for (uint32_t x = 0; x < 7; ++x)
           for (uint32_t c = 0; c < 4; ++c) {
@@ -106,7 +106,7 @@ TEST(DecodeSmoke, DamagedFilesAreRejectedOrReadExactly) {
                               uint32_t{p[3]} << 24;
               std::memcpy(&want, &bits, 4);
             }
-            const float got = r.image->at(x, y)[c];
+            const float got = r->at(x, y)[c];
             EXPECT_EQ(std::memcmp(&got, &want, 4), 0) << x << "," << y << " channel " << c;
           }
     }

@@ -33,15 +33,15 @@ TEST(Pfm, RgbRoundTripKeepsFloatsExactlyAndDropsAlpha) {
   im.at(1, 0)[2] = std::numeric_limits<float>::infinity();
   ASSERT_TRUE(img::write_pfm(dir.file("a.pfm"), im));
   auto back = img::read_image(dir.file("a.pfm"));
-  ASSERT_TRUE(back) << back.error;
-  ASSERT_EQ(back.image->width, 2u);
-  ASSERT_EQ(back.image->height, 3u);
+  ASSERT_TRUE(back) << back.message();
+  ASSERT_EQ(back->width, 2u);
+  ASSERT_EQ(back->height, 3u);
   for (uint32_t y = 0; y < 3; ++y)
     for (uint32_t x = 0; x < 2; ++x) {
       for (int c = 0; c < 3; ++c)
-        EXPECT_EQ(std::bit_cast<uint32_t>(back.image->at(x, y)[c]),
+        EXPECT_EQ(std::bit_cast<uint32_t>(back->at(x, y)[c]),
                   std::bit_cast<uint32_t>(im.at(x, y)[c]));
-      EXPECT_EQ(back.image->at(x, y)[3], 1.0f);
+      EXPECT_EQ(back->at(x, y)[3], 1.0f);
     }
 }
 
@@ -65,17 +65,17 @@ TEST(Pfm, BigEndianAndGreyAreRead) {
   put_float(b, 0.25f, false);
   put_float(b, -3.0f, false);
   auto r = img::decode_pfm(b);
-  ASSERT_TRUE(r) << r.error;
-  EXPECT_EQ(r.image->at(0, 0)[0], 0.25f);
-  EXPECT_EQ(r.image->at(0, 0)[2], 0.25f);
-  EXPECT_EQ(r.image->at(1, 0)[1], -3.0f);
-  EXPECT_EQ(r.image->at(1, 0)[3], 1.0f);
+  ASSERT_TRUE(r) << r.message();
+  EXPECT_EQ(r->at(0, 0)[0], 0.25f);
+  EXPECT_EQ(r->at(0, 0)[2], 0.25f);
+  EXPECT_EQ(r->at(1, 0)[1], -3.0f);
+  EXPECT_EQ(r->at(1, 0)[3], 1.0f);
   // Grey written out reads back the R channel.
   tierlift::test::TempDir dir("pfmgrey");
-  ASSERT_TRUE(img::write_pfm(dir.file("g.pfm"), *r.image, img::PfmChannels::Grey));
+  ASSERT_TRUE(img::write_pfm(dir.file("g.pfm"), *r, img::PfmChannels::Grey));
   auto g = img::read_pfm(dir.file("g.pfm"));
-  ASSERT_TRUE(g) << g.error;
-  EXPECT_EQ(g.image->at(1, 0)[0], -3.0f);
+  ASSERT_TRUE(g) << g.message();
+  EXPECT_EQ(g->at(1, 0)[0], -3.0f);
 }
 
 TEST(Pfm, BrokenFilesAreErrors) {
@@ -96,13 +96,13 @@ TEST(Pfm, BrokenFilesAreErrors) {
     for (int i = 0; i < 3; ++i) put_float(b, 0.5f, true);
     auto r = img::decode_pfm(b);
     EXPECT_FALSE(r) << h;
-    EXPECT_FALSE(r.error.empty());
+    EXPECT_FALSE(r.message().empty());
   }
   // A huge but in-range size with no data: truncated, not an allocation.
   auto big = bytes_of("PF\n16384 16384\n-1\n");
   auto r = img::decode_pfm(big);
   EXPECT_FALSE(r);
-  EXPECT_NE(r.error.find("truncated"), std::string::npos) << r.error;
+  EXPECT_NE(r.message().find("truncated"), std::string::npos) << r.message();
 }
 
 TEST(Pfm, ReadImageRejectsUnknownSignature) {
@@ -111,5 +111,5 @@ TEST(Pfm, ReadImageRejectsUnknownSignature) {
   ASSERT_TRUE(img::write_file_atomic(dir.file("x.gif"), bytes));
   auto r = img::read_image(dir.file("x.gif"));
   EXPECT_FALSE(r);
-  EXPECT_NE(r.error.find("x.gif"), std::string::npos);
+  EXPECT_NE(r.message().find("x.gif"), std::string::npos);
 }

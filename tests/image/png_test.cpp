@@ -72,16 +72,16 @@ TEST(Png, EightBitRoundTripStoresTheRgba8Rule) {
   img::Image im = sample_image();
   ASSERT_TRUE(img::write_png(dir.file("a.png"), im, img::PngDepth::Bits8));
   auto back = img::read_png(dir.file("a.png"));
-  ASSERT_TRUE(back) << back.error;
-  EXPECT_EQ(back.image->format, img::Format::RGBA8);
-  ASSERT_EQ(back.image->width, 3u);
-  ASSERT_EQ(back.image->height, 2u);
+  ASSERT_TRUE(back) << back.message();
+  EXPECT_EQ(back->format, img::Format::RGBA8);
+  ASSERT_EQ(back->width, 3u);
+  ASSERT_EQ(back->height, 2u);
   for (size_t i = 0; i < im.rgba.size(); ++i)
-    EXPECT_EQ(back.image->rgba[i], img::quantize(img::Format::RGBA8, im.rgba[i])) << i;
+    EXPECT_EQ(back->rgba[i], img::quantize(img::Format::RGBA8, im.rgba[i])) << i;
   // By hand: 0.3 → 76.5 → 77; 1.5 clamps to 1; -0.2 clamps to 0.
-  EXPECT_EQ(back.image->at(1, 0)[0], static_cast<float>(77 / 255.0));
-  EXPECT_EQ(back.image->at(1, 0)[2], 1.0f);
-  EXPECT_EQ(back.image->at(1, 0)[3], 0.0f);
+  EXPECT_EQ(back->at(1, 0)[0], static_cast<float>(77 / 255.0));
+  EXPECT_EQ(back->at(1, 0)[2], 1.0f);
+  EXPECT_EQ(back->at(1, 0)[3], 0.0f);
 }
 
 TEST(Png, SixteenBitRoundTrip) {
@@ -89,34 +89,34 @@ TEST(Png, SixteenBitRoundTrip) {
   img::Image im = sample_image();
   ASSERT_TRUE(img::write_png(dir.file("a.png"), im, img::PngDepth::Bits16));
   auto back = img::read_image(dir.file("a.png"));
-  ASSERT_TRUE(back) << back.error;
-  EXPECT_EQ(back.image->format, img::Format::RGBA32F);
+  ASSERT_TRUE(back) << back.message();
+  EXPECT_EQ(back->format, img::Format::RGBA32F);
   for (size_t i = 0; i < im.rgba.size(); ++i) {
     double clamped = std::fmin(std::fmax(im.rgba[i], 0.0f), 1.0f);
     double expect = std::floor(clamped * 65535.0 + 0.5) / 65535.0;
-    EXPECT_NEAR(back.image->rgba[i], expect, 1e-7) << i;
-    EXPECT_LE(std::fabs(back.image->rgba[i] - clamped), 0.5 / 65535.0 + 1e-7) << i;
+    EXPECT_NEAR(back->rgba[i], expect, 1e-7) << i;
+    EXPECT_LE(std::fabs(back->rgba[i] - clamped), 0.5 / 65535.0 + 1e-7) << i;
   }
 }
 
 TEST(Png, GreyAndGreyAlphaAndRgbExpandToRgba) {
   // 2×1 grey 8-bit: values 0 and 255.
   auto grey = img::decode_png(handmade_png(2, 1, 8, 0, {0, 0, 255}));
-  ASSERT_TRUE(grey) << grey.error;
-  EXPECT_EQ(grey.image->at(1, 0)[0], 1.0f);
-  EXPECT_EQ(grey.image->at(1, 0)[1], 1.0f);
-  EXPECT_EQ(grey.image->at(0, 0)[3], 1.0f);
+  ASSERT_TRUE(grey) << grey.message();
+  EXPECT_EQ(grey->at(1, 0)[0], 1.0f);
+  EXPECT_EQ(grey->at(1, 0)[1], 1.0f);
+  EXPECT_EQ(grey->at(0, 0)[3], 1.0f);
   // 1×1 grey+alpha 16-bit: grey 0x8000, alpha 0x4000.
   auto ga = img::decode_png(handmade_png(1, 1, 16, 4, {0, 0x80, 0x00, 0x40, 0x00}));
-  ASSERT_TRUE(ga) << ga.error;
-  EXPECT_FLOAT_EQ(ga.image->at(0, 0)[2], 32768.0f / 65535.0f);
-  EXPECT_FLOAT_EQ(ga.image->at(0, 0)[3], 16384.0f / 65535.0f);
+  ASSERT_TRUE(ga) << ga.message();
+  EXPECT_FLOAT_EQ(ga->at(0, 0)[2], 32768.0f / 65535.0f);
+  EXPECT_FLOAT_EQ(ga->at(0, 0)[3], 16384.0f / 65535.0f);
   // 1×1 RGB 8-bit (51, 102, 204): alpha reads 1.
   auto rgb = img::decode_png(handmade_png(1, 1, 8, 2, {0, 51, 102, 204}));
-  ASSERT_TRUE(rgb) << rgb.error;
-  EXPECT_EQ(rgb.image->at(0, 0)[0], static_cast<float>(51 / 255.0));
-  EXPECT_EQ(rgb.image->at(0, 0)[2], static_cast<float>(204 / 255.0));
-  EXPECT_EQ(rgb.image->at(0, 0)[3], 1.0f);
+  ASSERT_TRUE(rgb) << rgb.message();
+  EXPECT_EQ(rgb->at(0, 0)[0], static_cast<float>(51 / 255.0));
+  EXPECT_EQ(rgb->at(0, 0)[2], static_cast<float>(204 / 255.0));
+  EXPECT_EQ(rgb->at(0, 0)[3], 1.0f);
 }
 
 TEST(Png, TruncatedFilesAreErrors) {
@@ -126,7 +126,7 @@ TEST(Png, TruncatedFilesAreErrors) {
   for (size_t n = 0; n < bytes.size(); ++n) {
     auto r = img::decode_png(std::span(bytes.data(), n));
     EXPECT_FALSE(r) << "prefix of " << n << " bytes decoded";
-    EXPECT_FALSE(r.error.empty());
+    EXPECT_FALSE(r.message().empty());
   }
 }
 
@@ -144,7 +144,7 @@ TEST(Png, EveryFlippedBitIsAnError) {
 TEST(Png, OversizedAndEmptyHeadersAreErrors) {
   auto huge = img::decode_png(handmade_png(img::kMaxDimension + 1, 1, 8, 0, {0, 0}));
   EXPECT_FALSE(huge);
-  EXPECT_NE(huge.error.find("exceeds"), std::string::npos) << huge.error;
+  EXPECT_NE(huge.message().find("exceeds"), std::string::npos) << huge.message();
   EXPECT_FALSE(img::decode_png(handmade_png(0xFFFFFFFFu, 0xFFFFFFFFu, 8, 6, {0})));
   EXPECT_FALSE(img::decode_png(handmade_png(0, 1, 8, 0, {0})));
   // Valid header, too little pixel data for 4×4.
@@ -162,10 +162,10 @@ TEST(Png, MissingFileAndUnwritableFolderAreErrors) {
   tierlift::test::TempDir dir("pngio");
   auto r = img::read_png(dir.file("nope.png"));
   EXPECT_FALSE(r);
-  EXPECT_NE(r.error.find("nope.png"), std::string::npos);
+  EXPECT_NE(r.message().find("nope.png"), std::string::npos);
   auto st = img::write_png(dir.file("no/such/folder/a.png"), sample_image());
   EXPECT_FALSE(st);
-  EXPECT_FALSE(st.error.empty());
+  EXPECT_FALSE(st.message().empty());
   EXPECT_FALSE(img::write_png(dir.file("empty.png"), img::Image()));
   EXPECT_FALSE(std::filesystem::exists(dir.file("empty.png")));
 }
@@ -182,7 +182,7 @@ TEST(Png, AtomicWriteLeavesNoTemporaryFiles) {
   EXPECT_EQ(files, 1);
   auto back = img::read_png(dir.file("a.png"));
   ASSERT_TRUE(back);
-  EXPECT_EQ(back.image->format, img::Format::RGBA32F); // the 16-bit file replaced the 8-bit
+  EXPECT_EQ(back->format, img::Format::RGBA32F); // the 16-bit file replaced the 8-bit
 }
 
 TEST(Png, DecodeBudgetIsCheckedBeforeInflating) {
@@ -190,23 +190,27 @@ TEST(Png, DecodeBudgetIsCheckedBeforeInflating) {
   // the check (and refused later for its missing pixels); one column more is over it.
   auto at_budget = img::decode_png(handmade_png(8192, 8192, 8, 6, {0}));
   EXPECT_FALSE(at_budget);
-  EXPECT_EQ(at_budget.error.find("budget"), std::string::npos) << at_budget.error;
+  EXPECT_EQ(at_budget.message().find("budget"), std::string::npos) << at_budget.message();
   auto over = img::decode_png(handmade_png(8193, 8192, 8, 6, {0}));
   EXPECT_FALSE(over);
-  EXPECT_NE(over.error.find("image 8193x8192 needs 1024 MiB as RGBA floats, over the decode "
-                            "budget of 1024 MiB"),
+  EXPECT_NE(over.message().find("image 8193x8192 needs 1024 MiB as RGBA floats, over the decode "
+                                "budget of 1024 MiB"),
             std::string::npos)
-      << over.error;
+      << over.message();
   auto bomb = img::decode_png(handmade_png(16384, 16384, 8, 6, {0}));
-  EXPECT_NE(bomb.error.find("needs 4096 MiB"), std::string::npos) << bomb.error;
+  EXPECT_NE(bomb.message().find("needs 4096 MiB"), std::string::npos) << bomb.message();
 }
 
 TEST(Png, ReadErrorsTellIoFromInvalidContent) {
   tierlift::test::TempDir dir("pngkind");
   auto missing = img::read_png(dir.file("nope.png"));
-  EXPECT_TRUE(missing.io_error);
+  EXPECT_TRUE(img::is_io_error(missing));
+  ASSERT_FALSE(missing.diagnostics().empty());
+  EXPECT_EQ(missing.diagnostics()[0].rule, img::kIoRule);
+  EXPECT_EQ(missing.diagnostics()[0].subject, dir.file("nope.png"));
   auto zero = img::read_image("/dev/zero"); // refused from its first bytes, not read whole
   EXPECT_FALSE(zero);
-  EXPECT_FALSE(zero.io_error);
-  EXPECT_NE(zero.error.find("unknown signature"), std::string::npos) << zero.error;
+  EXPECT_FALSE(img::is_io_error(zero));
+  EXPECT_EQ(zero.diagnostics()[0].rule, img::kImageRule);
+  EXPECT_NE(zero.message().find("unknown signature"), std::string::npos) << zero.message();
 }

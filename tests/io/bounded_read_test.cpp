@@ -7,6 +7,7 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -14,7 +15,6 @@
 #include "tierlift/io/bounded_read.h"
 
 namespace fs = std::filesystem;
-using tierlift::io::read_bounded;
 using tierlift::io::ReadCap;
 
 namespace {
@@ -36,15 +36,27 @@ struct TempDir {
 
 constexpr ReadCap kTiny{16, "test input"};
 
+// io::read_bounded with its failure's message in `error`, so each test can look at the text.
+std::optional<std::string> read_capped(const std::string& path, const ReadCap& cap,
+                                       std::string& error,
+                                       const tierlift::io::PrefixCheck& check = nullptr) {
+  tierlift::ir::Result<std::string> r = tierlift::io::read_bounded(path, cap, check);
+  if (!r) {
+    error = r.message();
+    return std::nullopt;
+  }
+  return std::move(r).value();
+}
+
 } // namespace
 
 TEST(BoundedRead, ReadsAFileUpToTheCapExactly) {
   TempDir dir;
   std::string error;
-  auto at_cap = read_bounded(dir.file("a", std::string(16, 'x')), kTiny, error);
+  auto at_cap = read_capped(dir.file("a", std::string(16, 'x')), kTiny, error);
   ASSERT_TRUE(at_cap) << error;
   EXPECT_EQ(*at_cap, std::string(16, 'x'));
-  auto empty = read_bounded(dir.file("e", ""), kTiny, error);
+  auto empty = read_capped(dir.file("e", ""), kTiny, error);
   ASSERT_TRUE(empty) << error;
   EXPECT_TRUE(empty->empty());
 }
@@ -52,7 +64,7 @@ TEST(BoundedRead, ReadsAFileUpToTheCapExactly) {
 TEST(BoundedRead, RefusesAFileOneByteOverTheCapNamingIt) {
   TempDir dir;
   std::string error;
-  EXPECT_FALSE(read_bounded(dir.file("a", std::string(17, 'x')), kTiny, error));
+  EXPECT_FALSE(read_capped(dir.file("a", std::string(17, 'x')), kTiny, error));
   EXPECT_NE(error.find("too large for a test input"), std::string::npos) << error;
   EXPECT_NE(error.find("16 bytes"), std::string::npos) << error;
 }
@@ -60,7 +72,7 @@ TEST(BoundedRead, RefusesAFileOneByteOverTheCapNamingIt) {
 TEST(BoundedRead, RefusesDevZeroAtTheCap) {
   std::string error;
   const ReadCap cap{uint64_t{1} << 20, "listing"};
-  EXPECT_FALSE(read_bounded("/dev/zero", cap, error));
+  EXPECT_FALSE(read_capped("/dev/zero", cap, error));
   EXPECT_NE(error.find("/dev/zero: too large for a listing: the cap is 1 MiB"), std::string::npos)
       << error;
 }
@@ -78,7 +90,7 @@ TEST(BoundedRead, StopsReadingAnEndlessPipeAfterCapPlusOneBytes) {
   }
   ::close(fds[1]);
   std::string error;
-  auto r = read_bounded("/dev/fd/" + std::to_string(fds[0]), ReadCap{100000, "scene"}, error);
+  auto r = read_capped("/dev/fd/" + std::to_string(fds[0]), ReadCap{100000, "scene"}, error);
   ::close(fds[0]);
   int status = 0;
   ::waitpid(writer, &status, 0);
@@ -92,7 +104,7 @@ TEST(BoundedRead, ReadsAShortPipeWhole) {
   ASSERT_EQ(::write(fds[1], "ps_2_0\n", 7), 7);
   ::close(fds[1]);
   std::string error;
-  auto r = read_bounded("/dev/fd/" + std::to_string(fds[0]), kTiny, error);
+  auto r = read_capped("/dev/fd/" + std::to_string(fds[0]), kTiny, error);
   ::close(fds[0]);
   ASSERT_TRUE(r) << error;
   EXPECT_EQ(*r, "ps_2_0\n");
@@ -101,9 +113,9 @@ TEST(BoundedRead, ReadsAShortPipeWhole) {
 TEST(BoundedRead, DirectoriesAndMissingFilesAreErrors) {
   TempDir dir;
   std::string error;
-  EXPECT_FALSE(read_bounded(dir.path.string(), kTiny, error));
+  EXPECT_FALSE(read_capped(dir.path.string(), kTiny, error));
   EXPECT_NE(error.find("is a directory"), std::string::npos) << error;
-  EXPECT_FALSE(read_bounded((dir.path / "missing").string(), kTiny, error));
+  EXPECT_FALSE(read_capped((dir.path / "missing").string(), kTiny, error));
   EXPECT_NE(error.find("cannot read"), std::string::npos) << error;
 }
 
@@ -115,7 +127,7 @@ TEST(BoundedRead, PrefixCheckStopsBeforeTheRest) {
     return std::string("no signature");
   };
   // /dev/zero with a 1 GiB cap: refused from its first block, long before the cap.
-  EXPECT_FALSE(read_bounded("/dev/zero", ReadCap{uint64_t{1} << 30, "image file"}, error, check));
+  EXPECT_FALSE(read_capped("/dev/zero", ReadCap{uint64_t{1} << 30, "image file"}, error, check));
   EXPECT_EQ(error, "/dev/zero: no signature");
   EXPECT_EQ(seen, std::string(4, '\0'));
 }
@@ -125,4 +137,15 @@ TEST(BoundedRead, FormatsCapsInBinaryUnits) {
   EXPECT_EQ(tierlift::io::format_size(uint64_t{1} << 30), "1 GiB");
   EXPECT_EQ(tierlift::io::format_size(3000), "3000 bytes");
   EXPECT_EQ(tierlift::io::format_size(2048), "2 KiB");
+}
+
+TEST(BoundedRead, AFailureIsAnIoDiagnosticAboutThePath) {
+  auto r = tierlift::io::read_bounded("/nonexistent/tierlift-input", kTiny);
+  ASSERT_FALSE(r);
+  ASSERT_EQ(r.diagnostics().size(), 1u);
+  const tierlift::ir::Diagnostic& d = r.diagnostics()[0];
+  EXPECT_EQ(d.severity, tierlift::ir::Severity::Error);
+  EXPECT_EQ(d.rule, "io");
+  EXPECT_EQ(d.subject, "/nonexistent/tierlift-input");
+  EXPECT_EQ(d.message.rfind("/nonexistent/tierlift-input: cannot read: ", 0), 0u) << d.message;
 }

@@ -20,6 +20,7 @@
 
 namespace fs = std::filesystem;
 namespace io = tierlift::io;
+namespace ir = tierlift::ir;
 
 namespace {
 
@@ -56,10 +57,10 @@ void put(const std::string& p, const std::string& bytes) {
 
 TEST(WriteOutput, CreatesAndReplacesLeavingNoTemporary) {
   TempDir dir;
-  ASSERT_EQ(io::write_output(dir / "out.bin", "first"), "");
+  ASSERT_EQ(io::write_output(dir / "out.bin", "first").message(), "");
   EXPECT_EQ(slurp(dir / "out.bin"), "first");
   ::chmod((dir / "out.bin").c_str(), 0640);
-  ASSERT_EQ(io::write_output(dir / "out.bin", "second"), "");
+  ASSERT_EQ(io::write_output(dir / "out.bin", "second").message(), "");
   EXPECT_EQ(slurp(dir / "out.bin"), "second");
   struct stat st {};
   ASSERT_EQ(::stat((dir / "out.bin").c_str(), &st), 0);
@@ -71,7 +72,7 @@ TEST(WriteOutput, FollowsASymbolicLinkAndKeepsIt) {
   TempDir dir;
   put(dir / "real.txt", "old");
   fs::create_symlink("real.txt", dir / "link.txt");
-  ASSERT_EQ(io::write_output(dir / "link.txt", "new"), "");
+  ASSERT_EQ(io::write_output(dir / "link.txt", "new").message(), "");
   EXPECT_TRUE(fs::is_symlink(dir / "link.txt"));
   EXPECT_EQ(slurp(dir / "real.txt"), "new");
   EXPECT_EQ(dir.names(), (std::vector<std::string>{"link.txt", "real.txt"}));
@@ -80,7 +81,7 @@ TEST(WriteOutput, FollowsASymbolicLinkAndKeepsIt) {
 TEST(WriteOutput, ADanglingLinkCreatesItsTarget) {
   TempDir dir;
   fs::create_symlink("made.txt", dir / "link.txt");
-  ASSERT_EQ(io::write_output(dir / "link.txt", "x"), "");
+  ASSERT_EQ(io::write_output(dir / "link.txt", "x").message(), "");
   EXPECT_TRUE(fs::is_symlink(dir / "link.txt"));
   EXPECT_EQ(slurp(dir / "made.txt"), "x");
 }
@@ -90,21 +91,22 @@ TEST(WriteOutput, WritesThroughAFifo) {
   ASSERT_EQ(::mkfifo((dir / "pipe").c_str(), 0600), 0);
   std::string got;
   std::thread reader([&] { got = slurp(dir / "pipe"); });
-  EXPECT_EQ(io::write_output(dir / "pipe", "through"), "");
+  EXPECT_EQ(io::write_output(dir / "pipe", "through").message(), "");
   reader.join();
   EXPECT_EQ(got, "through");
   EXPECT_TRUE(fs::is_fifo(dir / "pipe")) << "the FIFO must not be replaced by a regular file";
 }
 
 TEST(WriteOutput, WritesThroughACharacterDevice) {
-  EXPECT_EQ(io::write_output("/dev/null", "gone"), "");
+  EXPECT_EQ(io::write_output("/dev/null", "gone").message(), "");
   EXPECT_TRUE(fs::is_character_file("/dev/null"));
 }
 
 TEST(WriteOutput, DirectoriesAndMissingFoldersFailWithoutLeftovers) {
   TempDir dir;
-  EXPECT_NE(io::write_output(dir.path.string(), "x").find("is a directory"), std::string::npos);
-  std::string err = io::write_output(dir / "no/such/folder/out.bin", "x");
+  EXPECT_NE(io::write_output(dir.path.string(), "x").message().find("is a directory"),
+            std::string::npos);
+  std::string err = io::write_output(dir / "no/such/folder/out.bin", "x").message();
   EXPECT_NE(err.find("no/such/folder/out.bin"), std::string::npos) << err;
   EXPECT_TRUE(dir.names().empty());
 }
@@ -118,7 +120,7 @@ TEST(WriteOutput, ReadOnlyFolderFailsWithoutLeftovers) {
     ::chmod((dir / "ro").c_str(), 0555);
     target = dir / "ro/out.bin";
   }
-  EXPECT_NE(io::write_output(target, "x"), "");
+  EXPECT_NE(io::write_output(target, "x").message(), "");
   EXPECT_FALSE(fs::exists(target));
   if (::geteuid() != 0) {
     EXPECT_TRUE(fs::is_empty(dir / "ro"));
@@ -139,8 +141,14 @@ TEST(SameFile, ComparesDeviceAndInodeNotNames) {
   EXPECT_FALSE(io::same_file(dir / "a.psh", dir / "missing.psh"));
   EXPECT_FALSE(io::same_file("-", "-"));
   std::vector<std::string> inputs{dir / "b.psh", dir / "a.psh"};
-  EXPECT_NE(io::refuse_if_input(dir / "hard.psh", inputs).find("refusing"), std::string::npos);
-  EXPECT_EQ(io::refuse_if_input(dir / "new.bin", inputs), "");
+  EXPECT_NE(io::refuse_if_input(dir / "hard.psh", inputs).message().find("refusing"),
+            std::string::npos);
+  EXPECT_EQ(io::refuse_if_input(dir / "new.bin", inputs).message(), "");
+  EXPECT_TRUE(io::refuse_if_input(dir / "new.bin", inputs).ok());
+  ir::Status refused = io::refuse_if_input(dir / "a.psh", inputs);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_EQ(refused.diagnostics()[0].rule, "write");
+  EXPECT_EQ(refused.diagnostics()[0].subject, std::string(dir / "a.psh"));
 }
 
 TEST(AtomicFile, SigtermRemovesTheTemporaryFile) {

@@ -3,6 +3,8 @@
 // the graph's conventions and the target's size, format and blend handed to analytic::.
 #include "analytic_pass.h"
 
+#include <optional>
+
 #include <fmt/format.h>
 
 #include "tierlift/analytic/linear_pass.h"
@@ -95,7 +97,7 @@ std::string run_analytic_pass(const PassDesc& pass, const EffectGraph& graph, Im
     in.slack = &mask;
   }
   std::vector<std::string> pass_notes;
-  img::LoadResult result;
+  std::optional<img::ImageResult> result;
   if (pass.analytic == AnalyticForm::Linear) {
     analytic::TapExtraction ex =
         analytic::extract_taps(*pass.vs, pass.vs_constants, *pass.ps, pass.ps_constants);
@@ -103,7 +105,7 @@ std::string run_analytic_pass(const PassDesc& pass, const EffectGraph& graph, Im
       return fmt::format("cannot model pass '{}' as a weighted sum of reads: {}", pass.name,
                          ex.error);
     pass_notes = ex.notes;
-    result = analytic::linear_pass(ex.taps, in, &pass_notes);
+    result.emplace(analytic::linear_pass(ex.taps, in, &pass_notes));
   } else {
     analytic::ReadExtraction ex = analytic::extract_reads(*pass.vs, pass.vs_constants, *pass.ps);
     if (!ex)
@@ -113,10 +115,10 @@ std::string run_analytic_pass(const PassDesc& pass, const EffectGraph& graph, Im
       return fmt::format("cannot model pass '{}' as rgb × alpha of one read: the pixel listing "
                          "takes {} different reads",
                          pass.name, ex.reads.size());
-    result = analytic::mask_by_alpha_pass(ex.reads[0], in, &pass_notes);
+    result.emplace(analytic::mask_by_alpha_pass(ex.reads[0], in, &pass_notes));
   }
-  if (!result) return fmt::format("pass '{}': {}", pass.name, result.error);
-  images[pass.target] = std::move(*result.image);
+  if (!*result) return fmt::format("pass '{}': {}", pass.name, result->message());
+  images[pass.target] = std::move(*result).value();
   if (in.slack) midpoints[pass.target] = std::move(mask);
   if (notes)
     for (const std::string& n : pass_notes)

@@ -62,10 +62,10 @@ glow_listing(std::string_view path, const std::map<std::string, std::string, std
              std::string* error, const ListingOptions& options) {
   auto it = files.find(path);
   if (it == files.end()) return builtin_listing(path, error, options);
-  std::string why;
-  std::optional<std::string> text = io::read_bounded(it->second, io::kListingCap, why);
+  ir::Result<std::string> text = io::read_bounded(it->second, io::kListingCap);
   if (!text) {
     // "PATH: why" → "PATH: error: why", the form of the other diagnostics.
+    std::string why = text.message();
     const std::string head = it->second + ": ";
     if (why.starts_with(head)) why.erase(0, head.size());
     if (error)

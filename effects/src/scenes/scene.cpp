@@ -50,10 +50,10 @@ std::vector<std::string> image_warnings(const img::Image& image) {
 }
 
 SceneLoad load_scene_file(const std::string& path) {
-  std::string error;
   // Within the scene cap: a device or a pipe given as the scene is refused after 1 MiB.
-  std::optional<std::string> text = io::read_bounded(path, io::kSceneCap, error);
-  if (!text) return {std::nullopt, file_error(path == "-" ? "<stdin>" : path, error), true};
+  ir::Result<std::string> text = io::read_bounded(path, io::kSceneCap);
+  if (!text)
+    return {std::nullopt, file_error(path == "-" ? "<stdin>" : path, text.message()), true};
   const std::string base_dir =
       path == "-" ? std::string() : std::filesystem::path(path).parent_path().string();
   return parse_scene(*text, path == "-" ? "<stdin>" : path, base_dir);
@@ -69,35 +69,37 @@ Scene default_scene() {
 }
 
 SceneLoad scene_from_png(const std::string& png_path) {
-  img::LoadResult png = img::read_png(png_path);
-  if (!png) return {std::nullopt, file_error(png_path, png.error), png.io_error};
+  img::ImageResult png = img::read_png(png_path);
+  if (!png) return {std::nullopt, file_error(png_path, png.message()), img::is_io_error(png)};
   Scene s;
   s.image = png_path;
-  s.params.width = png.image->width;
-  s.params.height = png.image->height;
+  s.params.width = png->width;
+  s.params.height = png->height;
   s.warnings = glow_warnings(s.params);
-  for (std::string& w : image_warnings(*png.image)) s.warnings.push_back(std::move(w));
+  for (std::string& w : image_warnings(*png)) s.warnings.push_back(std::move(w));
   return {std::move(s), {}};
 }
 
-img::LoadResult load_scene_image(const Scene& scene) {
+img::ImageResult load_scene_image(const Scene& scene) {
+  auto fail = [&](std::string message) -> img::ImageResult {
+    return ir::fail(scene.image, "scene", std::move(message));
+  };
   const GlowParams& p = scene.params;
   if (p.width == 0 || p.height == 0 || p.width > img::kMaxDimension ||
       p.height > img::kMaxDimension)
-    return {std::nullopt, fmt::format("{}: the scene size {}x{} is outside 1..{}", scene.image,
-                                      p.width, p.height, img::kMaxDimension)};
+    return fail(fmt::format("{}: the scene size {}x{} is outside 1..{}", scene.image, p.width,
+                            p.height, img::kMaxDimension));
   if (scene.image == kBuiltinNeon)
-    return {make_default_scene(p.width, p.height, img::Format::RGBA32F), {}};
+    return img::ImageResult(make_default_scene(p.width, p.height, img::Format::RGBA32F));
   if (scene.image.starts_with("builtin:"))
-    return {std::nullopt, fmt::format("{}: not a built-in image (the built-in is {})", scene.image,
-                                      kBuiltinNeon)};
-  img::LoadResult png = img::read_png(scene.image);
+    return fail(
+        fmt::format("{}: not a built-in image (the built-in is {})", scene.image, kBuiltinNeon));
+  img::ImageResult png = img::read_png(scene.image);
   if (!png) return png;
-  if (png.image->width != p.width || png.image->height != p.height)
-    return {std::nullopt,
-            fmt::format("{}: the image is {}x{} but the scene is {}x{} (did the file change?)",
-                        scene.image, png.image->width, png.image->height, p.width, p.height)};
-  png.image->format = img::Format::RGBA32F; // 8-bit values k/255 are exact floats already
+  if (png->width != p.width || png->height != p.height)
+    return fail(fmt::format("{}: the image is {}x{} but the scene is {}x{} (did the file change?)",
+                            scene.image, png->width, png->height, p.width, p.height));
+  png->format = img::Format::RGBA32F; // 8-bit values k/255 are exact floats already
   return png;
 }
 

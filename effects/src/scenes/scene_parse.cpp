@@ -75,18 +75,18 @@ void read_image(const Json& j, const std::string& base_dir, FieldChecker& c, Sce
     return;
   }
   s.image = resolve_path(base_dir, image);
-  img::LoadResult png = img::read_png(s.image);
+  img::ImageResult png = img::read_png(s.image);
   if (!png) {
-    c.error("/image", fmt::format("cannot read the image: {}", png.error));
+    c.error("/image", fmt::format("cannot read the image: {}", png.message()));
     return;
   }
-  s.params.width = png.image->width;
-  s.params.height = png.image->height;
+  s.params.width = png->width;
+  s.params.height = png->height;
   if (size_json && size && (size->width != s.params.width || size->height != s.params.height))
     c.error("/size", fmt::format("{} does not match the image, which is {}x{} (\"size\" may be "
                                  "left out)",
                                  FieldChecker::shown(*size_json), s.params.width, s.params.height));
-  warnings = image_warnings(*png.image);
+  warnings = image_warnings(*png);
 }
 
 void read_scene(const Json& j, const std::string& base_dir, FieldChecker& c, Scene& s) {

@@ -40,8 +40,11 @@ std::string format_size(uint64_t bytes) {
   return fmt::format("{} bytes", bytes);
 }
 
-std::optional<std::string> read_bounded(const std::string& path, const ReadCap& cap,
-                                        std::string& error, const PrefixCheck& prefix_check) {
+namespace {
+
+// The read, or nullopt with `error` set; read_bounded turns the error into a diagnostic.
+std::optional<std::string> read_or_explain(const std::string& path, const ReadCap& cap,
+                                           std::string& error, const PrefixCheck& prefix_check) {
   const std::string name = path == "-" ? std::string("<stdin>") : path;
   Fd in;
   if (path == "-") {
@@ -100,6 +103,16 @@ std::optional<std::string> read_bounded(const std::string& path, const ReadCap& 
     }
   }
   return data;
+}
+
+} // namespace
+
+ir::Result<std::string> read_bounded(const std::string& path, const ReadCap& cap,
+                                     const PrefixCheck& prefix_check) {
+  std::string error;
+  std::optional<std::string> data = read_or_explain(path, cap, error, prefix_check);
+  if (!data) return ir::fail(path == "-" ? std::string("<stdin>") : path, "io", std::move(error));
+  return std::move(*data);
 }
 
 } // namespace tierlift::io

@@ -108,7 +108,10 @@ bool AtomicFile::commit() {
   return true;
 }
 
-std::string write_output(const std::string& path, std::string_view bytes) {
+namespace {
+
+// "" on success, otherwise why the write failed; write_output makes it a diagnostic.
+std::string write_or_explain(const std::string& path, std::string_view bytes) {
   if (path == "-") {
     std::fflush(stdout); // text printed before stays before
     if (!write_all(STDOUT_FILENO, bytes))
@@ -137,6 +140,14 @@ std::string write_output(const std::string& path, std::string_view bytes) {
   return out.error();
 }
 
+} // namespace
+
+ir::Status write_output(const std::string& path, std::string_view bytes) {
+  std::string error = write_or_explain(path, bytes);
+  if (error.empty()) return ir::ok_status();
+  return ir::fail(path == "-" ? std::string("<stdout>") : path, "write", std::move(error));
+}
+
 bool same_file(const std::string& a, const std::string& b) {
   if (a == "-" || b == "-" || a.empty() || b.empty()) return false;
   struct stat sa {
@@ -145,14 +156,16 @@ bool same_file(const std::string& a, const std::string& b) {
   return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
 }
 
-std::string refuse_if_input(const std::string& output, std::span<const std::string> inputs) {
+ir::Status refuse_if_input(const std::string& output, std::span<const std::string> inputs) {
   for (const std::string& in : inputs)
     if (same_file(output, in))
-      return in == output ? fmt::format("{}: refusing to write over an input file", output)
+      return ir::fail(output, "write",
+                      in == output
+                          ? fmt::format("{}: refusing to write over an input file", output)
                           : fmt::format("{}: refusing to write over the input file {} (the "
                                         "same file)",
-                                        output, in);
-  return "";
+                                        output, in));
+  return ir::ok_status();
 }
 
 } // namespace tierlift::io

@@ -87,9 +87,9 @@ std::optional<uint64_t> parse_uint(std::string_view t, uint64_t max) {
 
 } // namespace
 
-LoadResult make_builtin(std::string_view spec) {
-  auto fail = [&](std::string why) {
-    return LoadResult{std::nullopt, fmt::format("{}: {}", spec, why)};
+ImageResult make_builtin(std::string_view spec) {
+  auto fail = [&](std::string why) -> ImageResult {
+    return ir::fail(std::string(spec), std::string(kImageRule), fmt::format("{}: {}", spec, why));
   };
   if (!is_builtin_spec(spec)) return fail("not a builtin texture (expected builtin:NAME)");
   std::string_view rest = spec.substr(kBuiltinPrefix.size());
@@ -124,13 +124,13 @@ LoadResult make_builtin(std::string_view spec) {
     if (!s) return fail(fmt::format("bad seed '{}' (expected a decimal number)", parts[2]));
     seed = *s;
   }
-  if (name == "impulse") return {builtin_impulse(w, h), ""};
-  if (name == "checker") return {builtin_checker(w, h), ""};
-  if (name == "ramp") return {builtin_ramp(w, h), ""};
-  return {builtin_noise(w, h, seed), ""};
+  if (name == "impulse") return ImageResult(builtin_impulse(w, h));
+  if (name == "checker") return ImageResult(builtin_checker(w, h));
+  if (name == "ramp") return ImageResult(builtin_ramp(w, h));
+  return ImageResult(builtin_noise(w, h, seed));
 }
 
-LoadResult load_texture(const std::string& spec_or_path) {
+ImageResult load_texture(const std::string& spec_or_path) {
   if (is_builtin_spec(spec_or_path)) return make_builtin(spec_or_path);
   return read_image(spec_or_path);
 }

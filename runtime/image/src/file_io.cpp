@@ -24,19 +24,22 @@ std::string image_signature(std::string_view first) {
   return png || pfm ? "" : "not a PNG or PFM file (unknown signature)";
 }
 
-// The file, read within the image cap; io_error set when it cannot be read at all.
-LoadResult read_image_file(const std::string& path, std::string& bytes) {
-  std::string error;
-  std::optional<std::string> read =
-      io::read_bounded(path, io::kImageFileCap, error, image_signature);
+// The file, read within the image cap; rule kIoRule when it cannot be read at all.
+ir::Result<std::string> read_image_file(const std::string& path) {
+  ir::Result<std::string> read = io::read_bounded(path, io::kImageFileCap, image_signature);
   if (!read) {
-    LoadResult r{std::nullopt, error};
     // A file that is there but not an image is invalid input, not an I/O error.
-    r.io_error = error.find("unknown signature") == std::string::npos;
-    return r;
+    const std::string error = read.message();
+    const bool io = error.find("unknown signature") == std::string::npos;
+    return ir::fail(path, std::string(io ? kIoRule : kImageRule), error);
   }
-  bytes = std::move(*read);
-  return {};
+  return read;
+}
+
+// A decoder's failure with the path in front of its message.
+ImageResult with_path(const std::string& path, ImageResult r) {
+  if (r) return r;
+  return ir::fail(path, std::string(kImageRule), path + ": " + r.message());
 }
 
 std::span<const uint8_t> as_bytes(const std::string& s) {
@@ -45,54 +48,58 @@ std::span<const uint8_t> as_bytes(const std::string& s) {
 
 } // namespace
 
-std::optional<std::vector<uint8_t>> read_file_bytes(const std::string& path, std::string& error) {
-  std::optional<std::string> read = io::read_bounded(path, io::kImageFileCap, error);
-  if (!read) return std::nullopt;
+bool is_io_error(const ImageResult& r) {
+  for (const ir::Diagnostic& d : r.diagnostics())
+    if (d.severity == ir::Severity::Error) return d.rule == kIoRule;
+  return false;
+}
+
+ir::Result<std::vector<uint8_t>> read_file_bytes(const std::string& path) {
+  ir::Result<std::string> read = io::read_bounded(path, io::kImageFileCap);
+  if (!read) return std::move(read).failure();
   return std::vector<uint8_t>(read->begin(), read->end());
 }
 
-Status write_file_atomic(const std::string& path, std::span<const uint8_t> bytes) {
-  return {io::write_output(
-      path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()))};
+ir::Status write_file_atomic(const std::string& path, std::span<const uint8_t> bytes) {
+  return io::write_output(
+      path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
 
-LoadResult read_png(const std::string& path) {
-  std::string bytes;
-  if (LoadResult r = read_image_file(path, bytes); !r.error.empty()) return r;
-  LoadResult r = decode_png(as_bytes(bytes));
-  if (!r) r.error = path + ": " + r.error;
-  return r;
+ImageResult read_png(const std::string& path) {
+  ir::Result<std::string> bytes = read_image_file(path);
+  if (!bytes) return std::move(bytes).failure();
+  return with_path(path, decode_png(as_bytes(*bytes)));
 }
 
-LoadResult read_pfm(const std::string& path) {
-  std::string bytes;
-  if (LoadResult r = read_image_file(path, bytes); !r.error.empty()) return r;
-  LoadResult r = decode_pfm(as_bytes(bytes));
-  if (!r) r.error = path + ": " + r.error;
-  return r;
+ImageResult read_pfm(const std::string& path) {
+  ir::Result<std::string> bytes = read_image_file(path);
+  if (!bytes) return std::move(bytes).failure();
+  return with_path(path, decode_pfm(as_bytes(*bytes)));
 }
 
-LoadResult read_image(const std::string& path) {
-  std::string bytes;
-  if (LoadResult r = read_image_file(path, bytes); !r.error.empty()) return r;
-  LoadResult r = bytes[0] == 'P' ? decode_pfm(as_bytes(bytes)) : decode_png(as_bytes(bytes));
-  if (!r) r.error = path + ": " + r.error;
-  return r;
+ImageResult read_image(const std::string& path) {
+  ir::Result<std::string> bytes = read_image_file(path);
+  if (!bytes) return std::move(bytes).failure();
+  return with_path(path, (*bytes)[0] == 'P' ? decode_pfm(as_bytes(*bytes))
+                                            : decode_png(as_bytes(*bytes)));
 }
 
-Status write_png(const std::string& path, const Image& image, PngDepth depth) {
+ir::Status write_png(const std::string& path, const Image& image, PngDepth depth) {
   std::vector<uint8_t> bytes = encode_png(image, depth);
-  if (bytes.empty()) return {path + ": cannot encode PNG (empty image or encoder error)"};
+  if (bytes.empty())
+    return ir::fail(path, std::string(kWriteRule),
+                    path + ": cannot encode PNG (empty image or encoder error)");
   return write_file_atomic(path, bytes);
 }
 
-Status write_pfm(const std::string& path, const Image& image, PfmChannels channels) {
+ir::Status write_pfm(const std::string& path, const Image& image, PfmChannels channels) {
   std::vector<uint8_t> bytes = encode_pfm(image, channels);
-  if (bytes.empty()) return {path + ": cannot encode PFM (empty image)"};
+  if (bytes.empty())
+    return ir::fail(path, std::string(kWriteRule), path + ": cannot encode PFM (empty image)");
   return write_file_atomic(path, bytes);
 }
 
-Status write_image(const std::string& path, const Image& image) {
+ir::Status write_image(const std::string& path, const Image& image) {
   std::string ext = std::filesystem::path(path).extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (ext == ".pfm") return write_pfm(path, image);

@@ -50,8 +50,10 @@ std::optional<uint32_t> parse_size(const std::string& t) {
 
 } // namespace
 
-LoadResult decode_pfm(std::span<const uint8_t> bytes) {
-  auto fail = [](std::string msg) { return LoadResult{std::nullopt, std::move(msg)}; };
+ImageResult decode_pfm(std::span<const uint8_t> bytes) {
+  auto fail = [](std::string msg) -> ImageResult {
+    return ir::fail("", std::string(kImageRule), std::move(msg));
+  };
   if (bytes.size() < 2 || bytes[0] != 'P' || (bytes[1] != 'F' && bytes[1] != 'f'))
     return fail("not a PFM file (magic must be PF or Pf)");
   const uint32_t channels = bytes[1] == 'F' ? 3 : 1;
@@ -107,7 +109,7 @@ LoadResult decode_pfm(std::span<const uint8_t> bytes) {
       px[3] = 1.0f;
     }
   }
-  return {std::move(holder), ""};
+  return ImageResult(std::move(*holder));
 }
 
 std::vector<uint8_t> encode_pfm(const Image& image, PfmChannels channels) {

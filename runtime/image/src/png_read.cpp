@@ -119,18 +119,20 @@ std::string check_structure(std::span<const uint8_t> b, Header& h) {
 
 } // namespace
 
-LoadResult decode_png(std::span<const uint8_t> bytes) {
+ImageResult decode_png(std::span<const uint8_t> bytes) {
+  auto fail = [](std::string msg) -> ImageResult {
+    return ir::fail("", std::string(kImageRule), std::move(msg));
+  };
   Header h;
-  if (std::string err = check_structure(bytes, h); !err.empty()) return {std::nullopt, err};
-  if (bytes.size() > static_cast<size_t>(INT_MAX)) return {std::nullopt, "file too large"};
+  if (std::string err = check_structure(bytes, h); !err.empty()) return fail(err);
+  if (bytes.size() > static_cast<size_t>(INT_MAX)) return fail("file too large");
   // Before inflating: the float image we would build (16 bytes a pixel; stb's own buffer
   // is a quarter or half of that on top) must fit the budget.
   const uint64_t need = uint64_t{h.width} * h.height * 4 * sizeof(float);
   if (need > kDecodeBudgetBytes)
-    return {std::nullopt,
-            fmt::format("image {}x{} needs {} MiB as RGBA floats, over the decode budget of {} "
-                        "MiB",
-                        h.width, h.height, need >> 20, kDecodeBudgetBytes >> 20)};
+    return fail(fmt::format("image {}x{} needs {} MiB as RGBA floats, over the decode budget of {} "
+                            "MiB",
+                            h.width, h.height, need >> 20, kDecodeBudgetBytes >> 20));
   const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
   int len = static_cast<int>(bytes.size());
   int w = 0, hgt = 0, comp = 0;
@@ -139,17 +141,17 @@ LoadResult decode_png(std::span<const uint8_t> bytes) {
   const bool wide = h.bit_depth == 16;
   void* px = wide ? static_cast<void*>(stbi_load_16_from_memory(data, len, &w, &hgt, &comp, 4))
                   : static_cast<void*>(stbi_load_from_memory(data, len, &w, &hgt, &comp, 4));
-  if (!px) return {std::nullopt, fmt::format("corrupt image data ({})", stbi_failure_reason())};
+  if (!px) return fail(fmt::format("corrupt image data ({})", stbi_failure_reason()));
   if (static_cast<uint32_t>(w) != h.width || static_cast<uint32_t>(hgt) != h.height) {
     stbi_image_free(px);
-    return {std::nullopt, "decoder size disagrees with IHDR"};
+    return fail("decoder size disagrees with IHDR");
   }
   std::optional<Image> image;
   try {
     image.emplace(h.width, h.height, wide ? Format::RGBA32F : Format::RGBA8);
   } catch (const std::bad_alloc&) {
     stbi_image_free(px);
-    return {std::nullopt, fmt::format("out of memory for a {}x{} image", h.width, h.height)};
+    return fail(fmt::format("out of memory for a {}x{} image", h.width, h.height));
   }
   std::vector<float>& out = image->rgba;
   if (wide) {
@@ -161,7 +163,7 @@ LoadResult decode_png(std::span<const uint8_t> bytes) {
     for (size_t i = 0; i < out.size(); ++i) out[i] = static_cast<float>(p8[i] / 255.0);
   }
   stbi_image_free(px);
-  return {std::move(image), ""};
+  return ImageResult(std::move(*image));
 }
 
 } // namespace tierlift::img

@@ -86,16 +86,16 @@ bool bind_textures(const RunRequest& req, Pass& pass, RunDiagnostics& diags) {
     }
     auto it = loaded.find(t.source);
     if (it == loaded.end()) {
-      img::LoadResult r = img::load_texture(t.source);
+      img::ImageResult r = img::load_texture(t.source);
       if (!r) {
         // Could not be read at all (missing, a folder, over the cap): an I/O error.
-        bool missing = !img::is_builtin_spec(t.source) && r.io_error;
+        bool missing = !img::is_builtin_spec(t.source) && img::is_io_error(r);
         diags.other.error({}, std::string(missing ? kRuleTextureMissing : "texture"),
-                          fmt::format("--texture s{}: {}", t.sampler, r.error));
+                          fmt::format("--texture s{}: {}", t.sampler, r.message()));
         ok = false;
         continue;
       }
-      it = loaded.emplace(t.source, std::make_shared<const img::Image>(std::move(*r.image))).first;
+      it = loaded.emplace(t.source, std::make_shared<const img::Image>(std::move(r).value())).first;
     }
     pass.textures[t.sampler].image = it->second;
     set_sampler(req, pass.textures[t.sampler]);

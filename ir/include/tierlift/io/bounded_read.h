@@ -11,6 +11,8 @@
 #include <string>
 #include <string_view>
 
+#include "tierlift/ir/result.h"
+
 namespace tierlift::io {
 
 // The largest input of one kind that is read, and the kind's name for messages.
@@ -32,12 +34,11 @@ inline constexpr ReadCap kImageFileCap{uint64_t{1} << 30, "image file"}; // 1 Gi
 // a file with no image signature before reading more of it.
 using PrefixCheck = std::function<std::string(std::string_view first_bytes)>;
 
-// Reads `path` ("-" = standard input) whole. nullopt with `error` set ("PATH: ...") when it
-// cannot be opened, is a directory, is larger than `cap` (the message names the cap), fails
+// Reads `path` ("-" = standard input) whole. A failure (rule "io", message "PATH: ...") when
+// it cannot be opened, is a directory, is larger than `cap` (the message names the cap), fails
 // `prefix_check`, or a read fails.
-std::optional<std::string> read_bounded(const std::string& path, const ReadCap& cap,
-                                        std::string& error,
-                                        const PrefixCheck& prefix_check = nullptr);
+ir::Result<std::string> read_bounded(const std::string& path, const ReadCap& cap,
+                                     const PrefixCheck& prefix_check = nullptr);
 
 // "4 MiB", "1 GiB", "512 bytes": a cap as the messages print it.
 std::string format_size(uint64_t bytes);

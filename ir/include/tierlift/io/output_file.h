@@ -14,17 +14,19 @@
 #include <string>
 #include <string_view>
 
+#include "tierlift/ir/result.h"
+
 namespace tierlift::io {
 
-// Writes `bytes` to `path` as above. "" on success, otherwise "PATH: what failed: why".
-std::string write_output(const std::string& path, std::string_view bytes);
+// Writes `bytes` to `path` as above. A failure (rule "write") says "PATH: what failed: why".
+ir::Status write_output(const std::string& path, std::string_view bytes);
 
 // True when `a` and `b` both exist and are the same file (device and inode, symbolic links
 // followed). "-" is never the same as a file.
 bool same_file(const std::string& a, const std::string& b);
 
-// "" when `output` is none of `inputs`; otherwise a message naming both.
-std::string refuse_if_input(const std::string& output, std::span<const std::string> inputs);
+// Success when `output` is none of `inputs`; otherwise a failure (rule "write") naming both.
+ir::Status refuse_if_input(const std::string& output, std::span<const std::string> inputs);
 
 // A temporary file beside a target, renamed over the target by commit(); removed by the
 // destructor when not committed, and by SIGINT/SIGTERM/SIGHUP while it exists. Exposed for

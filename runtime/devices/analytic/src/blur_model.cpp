@@ -12,16 +12,19 @@ struct Size {
   uint32_t w, h;
 };
 
-std::optional<Size> target_size(const img::Image& src, const PassModel& m, std::string& error) {
+// The model's failures: the pass it was asked for cannot be computed.
+ir::Failure fail(std::string message) {
+  return ir::fail("analytic", "analytic", std::move(message));
+}
+
+ir::Result<Size> target_size(const img::Image& src, const PassModel& m) {
   Size s{m.target_width ? m.target_width : src.width,
          m.target_height ? m.target_height : src.height};
   if (src.width == 0 || src.height == 0 || src.rgba.size() != size_t{src.width} * src.height * 4) {
-    error = "source image is empty or malformed";
-    return std::nullopt;
+    return fail("source image is empty or malformed");
   }
   if (s.w > img::kMaxDimension || s.h > img::kMaxDimension) {
-    error = fmt::format("target {}x{} exceeds the limit of {}", s.w, s.h, img::kMaxDimension);
-    return std::nullopt;
+    return fail(fmt::format("target {}x{} exceeds the limit of {}", s.w, s.h, img::kMaxDimension));
   }
   return s;
 }
@@ -34,11 +37,10 @@ void store(img::Image& out, uint32_t x, uint32_t y, const std::array<double, 4>&
 
 } // namespace
 
-img::LoadResult blur_pass(const std::vector<Tap>& taps, const img::Image& source,
-                          const PassModel& model) {
-  std::string error;
-  auto size = target_size(source, model, error);
-  if (!size) return {std::nullopt, error};
+img::ImageResult blur_pass(const std::vector<Tap>& taps, const img::Image& source,
+                           const PassModel& model) {
+  ir::Result<Size> size = target_size(source, model);
+  if (!size) return std::move(size).failure();
   img::Image out(size->w, size->h, model.target_format);
   for (uint32_t j = 0; j < size->h; ++j)
     for (uint32_t i = 0; i < size->w; ++i) {
@@ -51,7 +53,7 @@ img::LoadResult blur_pass(const std::vector<Tap>& taps, const img::Image& source
       }
       store(out, i, j, sum, model.unorm8_ties);
     }
-  return {std::move(out), ""};
+  return img::ImageResult(std::move(out));
 }
 
 std::vector<TexelTap> intended_texel_taps(const std::vector<Tap>& taps, uint32_t width,
@@ -67,13 +69,12 @@ std::vector<TexelTap> intended_texel_taps(const std::vector<Tap>& taps, uint32_t
   return out;
 }
 
-img::LoadResult discrete_convolution(const std::vector<TexelTap>& taps, const img::Image& source,
-                                     const PassModel& model) {
-  std::string error;
-  auto size = target_size(source, model, error);
-  if (!size) return {std::nullopt, error};
+img::ImageResult discrete_convolution(const std::vector<TexelTap>& taps, const img::Image& source,
+                                      const PassModel& model) {
+  ir::Result<Size> size = target_size(source, model);
+  if (!size) return std::move(size).failure();
   if (size->w != source.width || size->h != source.height)
-    return {std::nullopt, "discrete convolution needs target size = source size"};
+    return fail("discrete convolution needs target size = source size");
   img::Image out(size->w, size->h, model.target_format);
   for (uint32_t j = 0; j < size->h; ++j)
     for (uint32_t i = 0; i < size->w; ++i) {
@@ -90,7 +91,7 @@ img::LoadResult discrete_convolution(const std::vector<TexelTap>& taps, const im
       }
       store(out, i, j, sum, model.unorm8_ties);
     }
-  return {std::move(out), ""};
+  return img::ImageResult(std::move(out));
 }
 
 namespace {
@@ -115,13 +116,12 @@ std::optional<Straddle> straddle(double p) {
 
 } // namespace
 
-img::LoadResult corner_model(const std::vector<Tap>& taps, const img::Image& source,
-                             const PassModel& model) {
-  std::string error;
-  auto size = target_size(source, model, error);
-  if (!size) return {std::nullopt, error};
+img::ImageResult corner_model(const std::vector<Tap>& taps, const img::Image& source,
+                              const PassModel& model) {
+  ir::Result<Size> size = target_size(source, model);
+  if (!size) return std::move(size).failure();
   if (size->w != source.width || size->h != source.height)
-    return {std::nullopt, "corner model needs target size = source size"};
+    return fail("corner model needs target size = source size");
   img::Image out(size->w, size->h, model.target_format);
   const double w = source.width, h = source.height;
   for (uint32_t j = 0; j < size->h; ++j)
@@ -132,9 +132,9 @@ img::LoadResult corner_model(const std::vector<Tap>& taps, const img::Image& sou
         auto sx = straddle((t.scale[0] * uv[0] + t.offset[0]) * w - 0.5);
         auto sy = straddle((t.scale[1] * uv[1] + t.offset[1]) * h - 0.5);
         if (!sx || !sy)
-          return {std::nullopt, fmt::format("tap at offset ({}, {}) lands neither on a texel "
-                                            "centre nor half-way between texels",
-                                            t.offset[0], t.offset[1])};
+          return fail(fmt::format("tap at offset ({}, {}) lands neither on a texel "
+                                  "centre nor half-way between texels",
+                                  t.offset[0], t.offset[1]));
         const double share = 1.0 / (sx->count * sy->count);
         for (int b = 0; b < sy->count; ++b)
           for (int a = 0; a < sx->count; ++a) {
@@ -150,33 +150,29 @@ img::LoadResult corner_model(const std::vector<Tap>& taps, const img::Image& sou
       }
       store(out, i, j, sum, model.unorm8_ties);
     }
-  return {std::move(out), ""};
+  return img::ImageResult(std::move(out));
 }
 
-std::optional<CornerPrediction> predict_corner_difference(const std::vector<Tap>& taps,
-                                                          const img::Image& source,
-                                                          const PassModel& model,
-                                                          std::string* error) {
+ir::Result<CornerPrediction> predict_corner_difference(const std::vector<Tap>& taps,
+                                                       const img::Image& source,
+                                                       const PassModel& model) {
   for (const Tap& t : taps)
     if (t.scale != std::array<double, 2>{1, 1}) {
       // A scaled coordinate moves by a different amount at every pixel: no fixed texel.
-      if (error) *error = "the corner prediction needs taps of the form texcoord + offset";
-      return std::nullopt;
+      return fail("the corner prediction needs taps of the form texcoord + offset");
     }
   PassModel exact = model;
   exact.target_format = img::Format::RGBA32F; // the prediction itself is not stored
   auto corner = corner_model(taps, source, exact);
   auto plain =
       discrete_convolution(intended_texel_taps(taps, source.width, source.height), source, exact);
-  if (!corner || !plain) {
-    if (error) *error = !corner ? corner.error : plain.error;
-    return std::nullopt;
-  }
+  if (!corner) return std::move(corner).failure();
+  if (!plain) return std::move(plain).failure();
   CornerPrediction p;
   p.difference = img::Image(source.width, source.height, img::Format::RGBA32F);
   double sq = 0;
   for (size_t k = 0; k < p.difference.rgba.size(); ++k) {
-    double d = static_cast<double>(corner.image->rgba[k]) - plain.image->rgba[k];
+    double d = static_cast<double>(corner->rgba[k]) - plain->rgba[k];
     p.difference.rgba[k] = static_cast<float>(d);
     p.max_abs = std::fmax(p.max_abs, std::fabs(d));
     sq += d * d;

@@ -29,29 +29,30 @@ struct Setup {
   double ps1x_max = 1;
 };
 
-std::optional<Setup> check(const LinearPassInput& in, std::string& error) {
+// The model's failures: the pass it was asked for cannot be computed.
+ir::Failure fail(std::string message) {
+  return ir::fail("analytic", "analytic", std::move(message));
+}
+
+ir::Result<Setup> check(const LinearPassInput& in) {
   Setup s;
   s.width = in.model.target_width;
   s.height = in.model.target_height;
   if (s.width == 0 || s.height == 0 || s.width > img::kMaxDimension ||
       s.height > img::kMaxDimension) {
-    error = fmt::format("target {}x{}: expected 1..{}", s.width, s.height, img::kMaxDimension);
-    return std::nullopt;
+    return fail(fmt::format("target {}x{}: expected 1..{}", s.width, s.height, img::kMaxDimension));
   }
   for (const StageTexture& t : in.textures) {
     if (t.stage >= kMaxStages) {
-      error = fmt::format("sampler stage {} is out of range (0..{})", t.stage, kMaxStages - 1);
-      return std::nullopt;
+      return fail(fmt::format("sampler stage {} is out of range (0..{})", t.stage, kMaxStages - 1));
     }
     if (s.stage[t.stage]) {
-      error = fmt::format("sampler stage {} is bound twice", t.stage);
-      return std::nullopt;
+      return fail(fmt::format("sampler stage {} is bound twice", t.stage));
     }
     const img::Image* im = t.image;
     if (!im || im->width == 0 || im->height == 0 ||
         im->rgba.size() != size_t{im->width} * im->height * 4) {
-      error = fmt::format("the texture on stage {} is missing or malformed", t.stage);
-      return std::nullopt;
+      return fail(fmt::format("the texture on stage {} is missing or malformed", t.stage));
     }
     s.stage[t.stage] = &t;
   }
@@ -59,14 +60,12 @@ std::optional<Setup> check(const LinearPassInput& in, std::string& error) {
     const img::Image* d = in.destination;
     if (!d || d->width != s.width || d->height != s.height ||
         d->rgba.size() != size_t{s.width} * s.height * 4) {
-      error = "ONE/ONE blending needs the destination image at the target's size";
-      return std::nullopt;
+      return fail("ONE/ONE blending needs the destination image at the target's size");
     }
   }
   s.ps1x_max = in.model.conventions.ps1x_max_value;
   if (!(s.ps1x_max > 0) || !std::isfinite(s.ps1x_max)) {
-    error = fmt::format("ps1x_max_value {} is not a positive number", s.ps1x_max);
-    return std::nullopt;
+    return fail(fmt::format("ps1x_max_value {} is not a positive number", s.ps1x_max));
   }
   return s;
 }
@@ -279,11 +278,10 @@ bool exact_store(const LinearPassInput& in, const Reader& reader) {
 
 } // namespace
 
-img::LoadResult linear_pass(const std::vector<Tap>& taps, const LinearPassInput& in,
-                            std::vector<std::string>* notes) {
-  std::string error;
-  auto s = check(in, error);
-  if (!s) return {std::nullopt, error};
+img::ImageResult linear_pass(const std::vector<Tap>& taps, const LinearPassInput& in,
+                             std::vector<std::string>* notes) {
+  ir::Result<Setup> s = check(in);
+  if (!s) return std::move(s).failure();
   bool negative_weight = false;
   for (const Tap& t : taps)
     for (double w : t.weight) negative_weight = negative_weight || w < 0;
@@ -336,7 +334,7 @@ img::LoadResult linear_pass(const std::vector<Tap>& taps, const LinearPassInput&
         mark_slack(in, out, i, j, store_settled(out, in, i, j, sum, e, fp32));
       }
     add_notes(notes, in, reader, negative_weight);
-    return {std::move(out), ""};
+    return img::ImageResult(std::move(out));
   }
   for (uint32_t j = 0; j < s->height; ++j)
     for (uint32_t i = 0; i < s->width; ++i) {
@@ -350,14 +348,13 @@ img::LoadResult linear_pass(const std::vector<Tap>& taps, const LinearPassInput&
       store(out, in, *s, i, j, sum);
     }
   add_notes(notes, in, reader, negative_weight);
-  return {std::move(out), ""};
+  return img::ImageResult(std::move(out));
 }
 
-img::LoadResult mask_by_alpha_pass(const Tap& read, const LinearPassInput& in,
-                                   std::vector<std::string>* notes) {
-  std::string error;
-  auto s = check(in, error);
-  if (!s) return {std::nullopt, error};
+img::ImageResult mask_by_alpha_pass(const Tap& read, const LinearPassInput& in,
+                                    std::vector<std::string>* notes) {
+  ir::Result<Setup> s = check(in);
+  if (!s) return std::move(s).failure();
   img::Image out(s->width, s->height, in.model.target_format);
   const std::vector<Tap> one{read};
   Reader reader(*s, in, one);
@@ -385,7 +382,7 @@ img::LoadResult mask_by_alpha_pass(const Tap& read, const LinearPassInput& in,
         mark_slack(in, out, i, j, store_settled(out, in, i, j, v, e, fp32));
       }
     add_notes(notes, in, reader, false);
-    return {std::move(out), ""};
+    return img::ImageResult(std::move(out));
   }
   for (uint32_t j = 0; j < s->height; ++j)
     for (uint32_t i = 0; i < s->width; ++i) {
@@ -394,7 +391,7 @@ img::LoadResult mask_by_alpha_pass(const Tap& read, const LinearPassInput& in,
     }
   reader.negative_sample = false; // one product, no partial sums: the clamps are exact
   add_notes(notes, in, reader, false);
-  return {std::move(out), ""};
+  return img::ImageResult(std::move(out));
 }
 
 } // namespace tierlift::analytic

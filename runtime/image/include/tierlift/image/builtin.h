@@ -24,7 +24,7 @@ inline constexpr uint32_t kBuiltinDefaultSize = 64;
 bool is_builtin_spec(std::string_view spec); // starts with "builtin:"
 // Parses the spec and makes the texture; an unknown name, a malformed or out-of-range size
 // (0, > kMaxDimension) or a bad seed gives an error.
-LoadResult make_builtin(std::string_view spec);
+ImageResult make_builtin(std::string_view spec);
 
 Image builtin_impulse(uint32_t width, uint32_t height);
 Image builtin_checker(uint32_t width, uint32_t height);
@@ -36,6 +36,6 @@ uint64_t splitmix64(uint64_t& state);
 float unit_float24(uint64_t bits);
 
 // read_image(), or make_builtin() for "builtin:" specs.
-LoadResult load_texture(const std::string& spec_or_path);
+ImageResult load_texture(const std::string& spec_or_path);
 
 } // namespace tierlift::img

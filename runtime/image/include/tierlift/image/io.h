@@ -1,6 +1,6 @@
 // Reading and writing images: PNG (8/16 bit) and PFM (float). Every reader validates its
 // input completely (magic, chunk structure and CRCs, sizes, truncation) and turns every
-// problem into an error message; nothing throws on bad input. Writers write to a temporary
+// problem into a diagnostic (ir::Result); nothing throws on bad input. Writers write to a temporary
 // file in the target folder and rename it into place, so no half-written file is left.
 #pragma once
 
@@ -11,23 +11,21 @@
 #include <vector>
 
 #include "tierlift/image/image.h"
+#include "tierlift/ir/result.h"
 
 namespace tierlift::img {
 
-// An image or the reason there is none.
-struct LoadResult {
-  std::optional<Image> image;
-  std::string error;     // empty when image is set
-  bool io_error = false; // the file could not be read (missing, unreadable, over the cap)
-  explicit operator bool() const { return image.has_value(); }
-};
-
-// Success, or a message naming the file and the failure.
-struct Status {
-  std::string error; // empty on success
-  bool ok() const { return error.empty(); }
-  explicit operator bool() const { return ok(); }
-};
+// An image, or the diagnostic that says why there is none. Its subject is the path (or
+// builtin spec) and its message starts with it too ("PATH: why"), as callers print the
+// message alone. The rule says what kind of failure it is: kIoRule when the file could not
+// be read at all (missing, unreadable, over the cap), kImageRule when it is there but is not
+// a valid image (or a builtin spec is malformed), kWriteRule when an output cannot be written.
+using ImageResult = ir::Result<Image>;
+inline constexpr std::string_view kIoRule = "io";
+inline constexpr std::string_view kImageRule = "image";
+inline constexpr std::string_view kWriteRule = "write";
+// True when `r` failed because its file could not be read (rule kIoRule).
+bool is_io_error(const ImageResult& r);
 
 // PNG of any colour type (grey, grey+alpha, RGB, RGBA, palette) at 8 or 16 bits (1/2/4-bit
 // grey and palette are accepted too) → RGBA floats in [0, 1]: value / 255 or / 65535.
@@ -37,39 +35,39 @@ struct Status {
 // kDecodeBudgetBytes before anything is inflated, so a small file claiming a huge image is
 // refused at once.
 inline constexpr uint64_t kDecodeBudgetBytes = uint64_t{1} << 30; // 1 GiB of RGBA floats
-LoadResult decode_png(std::span<const uint8_t> bytes);
-LoadResult read_png(const std::string& path);
+ImageResult decode_png(std::span<const uint8_t> bytes);
+ImageResult read_png(const std::string& path);
 
 // PFM: "PF" (RGB) or "Pf" (grey), width, height, scale; a negative scale means little-
 // endian floats, positive big-endian. Rows are stored bottom to top; the returned image is
 // top row first as always. Grey fills R, G, B; alpha reads 1. Format: RGBA32F.
-LoadResult decode_pfm(std::span<const uint8_t> bytes);
-LoadResult read_pfm(const std::string& path);
+ImageResult decode_pfm(std::span<const uint8_t> bytes);
+ImageResult read_pfm(const std::string& path);
 
 // By content: PNG signature or PFM magic.
-LoadResult read_image(const std::string& path);
+ImageResult read_image(const std::string& path);
 
 enum class PngDepth { Bits8 = 8, Bits16 = 16 };
 
 // RGBA PNG. Each channel is clamped to [0, 1] (NaN → 0) and rounded to nearest of 255 or
 // 65535 steps, so an RGBA8 image is written exactly as stored.
 std::vector<uint8_t> encode_png(const Image& image, PngDepth depth = PngDepth::Bits8);
-Status write_png(const std::string& path, const Image& image, PngDepth depth = PngDepth::Bits8);
+ir::Status write_png(const std::string& path, const Image& image, PngDepth depth = PngDepth::Bits8);
 
 // PFM little-endian (scale -1). RGB ("PF") by default; grey ("Pf") writes the R channel.
 // Alpha is dropped: PFM has no alpha channel (it reads back as 1).
 enum class PfmChannels { RGB, Grey };
 std::vector<uint8_t> encode_pfm(const Image& image, PfmChannels channels = PfmChannels::RGB);
-Status write_pfm(const std::string& path, const Image& image,
-                 PfmChannels channels = PfmChannels::RGB);
+ir::Status write_pfm(const std::string& path, const Image& image,
+                     PfmChannels channels = PfmChannels::RGB);
 
 // By extension: ".pfm" → PFM (RGB), anything else → 8-bit PNG.
-Status write_image(const std::string& path, const Image& image);
+ir::Status write_image(const std::string& path, const Image& image);
 
 // Writes bytes with tierlift::io::write_output: temp file in the same folder renamed over
 // `path` (symbolic links followed), FIFOs and character devices written straight through.
-Status write_file_atomic(const std::string& path, std::span<const uint8_t> bytes);
+ir::Status write_file_atomic(const std::string& path, std::span<const uint8_t> bytes);
 // Whole file within io::kImageFileCap, or an error.
-std::optional<std::vector<uint8_t>> read_file_bytes(const std::string& path, std::string& error);
+ir::Result<std::vector<uint8_t>> read_file_bytes(const std::string& path);
 
 } // namespace tierlift::img

@@ -100,8 +100,8 @@ int64_t address_texel(int64_t i, int64_t n, Address mode);
 // The blur pass: pixel = Σ_k weight_k · sample(scale_k·uv + offset_k), one texture (every
 // tap's sampler stage reads `source`), stored with img::quantize. linear_pass.h has the
 // general form (several textures, blending, ps_1_x ranges).
-img::LoadResult blur_pass(const std::vector<Tap>& taps, const img::Image& source,
-                          const PassModel& model);
+img::ImageResult blur_pass(const std::vector<Tap>& taps, const img::Image& source,
+                           const PassModel& model);
 
 // A tap as a whole-texel displacement: the plain discrete convolution's view.
 struct TexelTap {
@@ -115,8 +115,8 @@ std::vector<TexelTap> intended_texel_taps(const std::vector<Tap>& taps, uint32_t
                                           uint32_t height);
 // out(i, j) = Σ_k w_k · T[addr(i + dx_k), addr(j + dy_k)], stored with img::quantize.
 // Target and source sizes must be equal.
-img::LoadResult discrete_convolution(const std::vector<TexelTap>& taps, const img::Image& source,
-                                     const PassModel& model);
+img::ImageResult discrete_convolution(const std::vector<TexelTap>& taps, const img::Image& source,
+                                      const PassModel& model);
 
 // The corner model: a tap whose sample point lies on a texel centre reads that texel; one
 // that lies half a texel off (on an edge or a corner between texels, as a D3D9 quad without
@@ -124,8 +124,8 @@ img::LoadResult discrete_convolution(const std::vector<TexelTap>& taps, const im
 // from that rule alone (no bilinear weights). Positions are classified with a tolerance of
 // 1e-5 texel (offsets come from float constants); any other position is an error. Target and
 // source sizes must be equal. Stored with img::quantize.
-img::LoadResult corner_model(const std::vector<Tap>& taps, const img::Image& source,
-                             const PassModel& model);
+img::ImageResult corner_model(const std::vector<Tap>& taps, const img::Image& source,
+                              const PassModel& model);
 
 // What the corner model predicts the no-half-texel pass differs from the plain convolution
 // by: corner_model − discrete_convolution(intended_texel_taps), per value, unquantised
@@ -136,9 +136,8 @@ struct CornerPrediction {
   double max_abs = 0;
   double rmse = 0;
 };
-std::optional<CornerPrediction> predict_corner_difference(const std::vector<Tap>& taps,
-                                                          const img::Image& source,
-                                                          const PassModel& model,
-                                                          std::string* error = nullptr);
+ir::Result<CornerPrediction> predict_corner_difference(const std::vector<Tap>& taps,
+                                                       const img::Image& source,
+                                                       const PassModel& model);
 
 } // namespace tierlift::analytic

@@ -66,12 +66,12 @@ inline constexpr double kUnorm8MidpointBand = 1.0 / 1024;
 // (store_value: img::quantize, with model.unorm8_ties deciding exact RGBA8 midpoints).
 // Target and texture sizes are independent (downsampling, upsampling).
 // `notes`, when given, receives the assumptions the model made for this pass.
-img::LoadResult linear_pass(const std::vector<Tap>& taps, const LinearPassInput& in,
-                            std::vector<std::string>* notes = nullptr);
+img::ImageResult linear_pass(const std::vector<Tap>& taps, const LinearPassInput& in,
+                             std::vector<std::string>* notes = nullptr);
 
 // The glow's source extraction: out = (r·a, g·a, b·a, a) of the one read (its stage and
 // coordinate from `read`; its weight is not used), with the same ps_1_x rule, blend and store.
-img::LoadResult mask_by_alpha_pass(const Tap& read, const LinearPassInput& in,
-                                   std::vector<std::string>* notes = nullptr);
+img::ImageResult mask_by_alpha_pass(const Tap& read, const LinearPassInput& in,
+                                    std::vector<std::string>* notes = nullptr);
 
 } // namespace tierlift::analytic
