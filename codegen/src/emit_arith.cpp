@@ -6,6 +6,7 @@
 
 #include "tierlift/codegen/emitter.h"
 #include "tierlift/ir/numerics.h"
+#include "tierlift/ir/semantics.h"
 
 namespace tierlift::codegen {
 
@@ -21,16 +22,20 @@ bool Emitter::emit_arith(const ir::Instruction& ins, PendingStore& out) {
   }
   out.dst = *ins.dst;
   out.mods = ins.mods;
-  out.mask = ins.dst->mask;
+  // Only what the opcode produces in this profile is written (the table's writes column:
+  // frc in vs_1_1 .xy, m3x2 / sincos / bem .xy, m4x3 / m3x3 / crs .xyz).
+  out.mask = ins.dst->mask & ir::op_writes(ins.op, prog.profile);
   auto src = [&](size_t i) { return load_src(ins.src[i]); };
   auto sc = [&](size_t i) { return scalar_src(ins.src[i]); };
   const Id zero = f(0.0f);
-  auto matrix = [&](int rows, int cols) {
+  // A matrix macro: the table's rows, each a dot product over the lanes it reads (m4xN: 4).
+  auto matrix = [&]() {
+    const ir::OpSemantics& sem = ir::op_semantics(ins.op);
+    const int rows = sem.matrix_rows, cols = sem.src_lanes == 0xF ? 4 : 3;
     const Id v = src(0);
     Id r[4] = {zero, zero, zero, zero};
     for (int i = 0; i < rows; ++i)
       r[i] = legacy_dp(v, load_src(ins.src[1], static_cast<uint32_t>(i)), cols);
-    out.mask &= static_cast<uint8_t>((1u << rows) - 1);
     return compose(r[0], r[1], r[2], r[3]);
   };
   Id v = 0;
@@ -113,15 +118,12 @@ bool Emitter::emit_arith(const ir::Instruction& ins, PendingStore& out) {
     v = legacy_lrp(a, c, d);
     break;
   }
-  case Opcode::Frc:
-    v = legacy_frc(src(0));
-    if (prog.profile == ir::Profile::vs_1_1) out.mask &= 0x3; // the macro writes x, y only
-    break;
-  case Opcode::M4x4: v = matrix(4, 4); break;
-  case Opcode::M4x3: v = matrix(3, 4); break;
-  case Opcode::M3x4: v = matrix(4, 3); break;
-  case Opcode::M3x3: v = matrix(3, 3); break;
-  case Opcode::M3x2: v = matrix(2, 3); break;
+  case Opcode::Frc: v = legacy_frc(src(0)); break;
+  case Opcode::M4x4:
+  case Opcode::M4x3:
+  case Opcode::M3x4:
+  case Opcode::M3x3:
+  case Opcode::M3x2: v = matrix(); break;
   case Opcode::Crs: {
     const Id a = src(0), c = src(1);
     const Id x =
@@ -131,7 +133,6 @@ bool Emitter::emit_arith(const ir::Instruction& ins, PendingStore& out) {
     const Id z =
         fsub(legacy_mul(comp(a, 0), comp(c, 1), 1), legacy_mul(comp(a, 1), comp(c, 0), 1), 1);
     v = compose(x, y, z, zero);
-    out.mask &= 0x7;
     break;
   }
   case Opcode::Sgn: v = legacy_sgn(src(0)); break;
@@ -145,7 +146,6 @@ bool Emitter::emit_arith(const ir::Instruction& ins, PendingStore& out) {
   case Opcode::SinCos: {
     const Id x = sc(0);
     v = compose(glsl1(GLSLstd450Cos, x, 1), glsl1(GLSLstd450Sin, x, 1), zero, zero);
-    out.mask &= 0x3; // d.z undefined, d.w untouched
     break;
   }
   case Opcode::Cnd: {
@@ -167,7 +167,6 @@ bool Emitter::emit_arith(const ir::Instruction& ins, PendingStore& out) {
     const Id g = fadd(fadd(comp(a, 1), legacy_mul(comp(m, 1), comp(c, 0), 1), 1),
                       legacy_mul(comp(m, 3), comp(c, 1), 1), 1);
     v = compose(r, g, zero, zero);
-    out.mask &= 0x3;
     break;
   }
   default:
