@@ -6,6 +6,7 @@
 #include <spirv/unified1/GLSL.std.450.h>
 
 #include "tierlift/codegen/emitter.h"
+#include "tierlift/ir/semantics.h"
 
 namespace tierlift::codegen {
 
@@ -21,17 +22,21 @@ bool Emitter::emit_arith(const ir::Instruction& ins, PendingStore& out) {
   }
   out.dst = *ins.dst;
   out.mods = ins.mods;
-  out.mask = ins.dst->mask;
+  // Only what the opcode produces in this profile is written (the table's writes column:
+  // frc in vs_1_1 .xy, m3x2 / sincos / bem .xy, m4x3 / m3x3 / crs .xyz).
+  out.mask = ins.dst->mask & ir::op_writes(ins.op, prog.profile);
   auto src = [&](size_t i) { return load_src(ins.src[i]); };
   auto sc = [&](size_t i) { return scalar_src(ins.src[i]); };
   const Id zero = f(0.0f);
   const SpirvArith v4 = arith(4), s1 = arith(1);
-  auto matrix = [&](int rows, int cols) {
+  // A matrix macro: the table's rows, each a dot product over the lanes it reads (m4xN: 4).
+  auto matrix = [&]() {
+    const ir::OpSemantics& sem = ir::op_semantics(ins.op);
+    const int rows = sem.matrix_rows, cols = sem.src_lanes == 0xF ? 4 : 3;
     const Id v = src(0);
     Id r[4] = {zero, zero, zero, zero};
     for (int i = 0; i < rows; ++i)
       r[i] = dot(v, load_src(ins.src[1], static_cast<uint32_t>(i)), cols);
-    out.mask &= static_cast<uint8_t>((1u << rows) - 1);
     return compose(r[0], r[1], r[2], r[3]);
   };
   Id v = 0;
@@ -106,15 +111,12 @@ bool Emitter::emit_arith(const ir::Instruction& ins, PendingStore& out) {
     v = rule::lrp(v4, a, c, d);
     break;
   }
-  case Opcode::Frc:
-    v = rule::frc(v4, src(0));
-    if (prog.profile == ir::Profile::vs_1_1) out.mask &= 0x3; // the macro writes x, y only
-    break;
-  case Opcode::M4x4: v = matrix(4, 4); break;
-  case Opcode::M4x3: v = matrix(3, 4); break;
-  case Opcode::M3x4: v = matrix(4, 3); break;
-  case Opcode::M3x3: v = matrix(3, 3); break;
-  case Opcode::M3x2: v = matrix(2, 3); break;
+  case Opcode::Frc: v = rule::frc(v4, src(0)); break;
+  case Opcode::M4x4:
+  case Opcode::M4x3:
+  case Opcode::M3x4:
+  case Opcode::M3x3:
+  case Opcode::M3x2: v = matrix(); break;
   case Opcode::Crs: {
     const Id a = src(0), c = src(1);
     auto cross = [&](uint32_t i, uint32_t j) {
@@ -122,7 +124,6 @@ bool Emitter::emit_arith(const ir::Instruction& ins, PendingStore& out) {
     };
     const Id x = cross(1, 2), y = cross(2, 0), z = cross(0, 1);
     v = compose(x, y, z, zero);
-    out.mask &= 0x7;
     break;
   }
   case Opcode::Sgn: v = rule::sgn(v4, src(0)); break;
@@ -136,7 +137,6 @@ bool Emitter::emit_arith(const ir::Instruction& ins, PendingStore& out) {
   case Opcode::SinCos: {
     const Id x = sc(0);
     v = compose(glsl1(GLSLstd450Cos, x, 1), glsl1(GLSLstd450Sin, x, 1), zero, zero);
-    out.mask &= 0x3; // d.z undefined, d.w untouched
     break;
   }
   case Opcode::Cnd: {
@@ -156,7 +156,6 @@ bool Emitter::emit_arith(const ir::Instruction& ins, PendingStore& out) {
     const Id r = rule::bump_offset(s1, comp(a, 0), comp(m, 0), comp(c, 0), comp(m, 2), comp(c, 1));
     const Id g = rule::bump_offset(s1, comp(a, 1), comp(m, 1), comp(c, 0), comp(m, 3), comp(c, 1));
     v = compose(r, g, zero, zero);
-    out.mask &= 0x3;
     break;
   }
   default:

@@ -14,7 +14,7 @@ using SC = spv::StorageClass;
 
 Emitter::Emitter(const ir::Program& program, const CodegenOptions& options,
                  const EmitPlan& emit_plan, ir::DiagnosticSink& sink)
-    : prog(program), opt(options), plan(emit_plan), diags(sink) {}
+    : prog(program), opt(options), plan(emit_plan), diags(sink), defs_(ir::fold_defs(program)) {}
 
 void Emitter::error(const ir::SourceLoc& loc, const std::string& message) {
   diags.error(loc, "codegen", message);

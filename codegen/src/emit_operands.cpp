@@ -20,16 +20,6 @@ using ir::SrcMod;
 using spv::Op;
 using SC = spv::StorageClass;
 
-namespace {
-// The last def of a register wins (d3d9-isa.md §1.4).
-const ir::ConstDef* find_def(const ir::Program& p, RegFile file, uint32_t index) {
-  const ir::ConstDef* found = nullptr;
-  for (const ir::ConstDef& d : p.defs)
-    if (d.file == file && d.index == index) found = &d;
-  return found;
-}
-} // namespace
-
 Id Emitter::load_const(uint32_t index, const std::optional<ir::RelAddr>& rel) {
   // NUMERICS.md rule 13: under Rounding::Llvmpipe a def's denormals load as zeros of their
   // sign, as the interpreter loads them (runtime/devices/cpu/src/vm/vm_program.cpp): the driver
@@ -42,7 +32,7 @@ Id Emitter::load_const(uint32_t index, const std::optional<ir::RelAddr>& rel) {
   };
   const Id ptr_vec4 = b.type_pointer(SC::Uniform, t_vec4);
   if (!rel) {
-    if (const ir::ConstDef* d = find_def(prog, RegFile::Const, index)) return def_value(*d);
+    if (const ir::ConstDef* d = defs_.find(RegFile::Const, index)) return def_value(*d);
     // Far beyond any device's constant count (bad input the validator would reject): read
     // 0 rather than declare a gigantic block, as the interpreter's missing registers do.
     if (index >= 65536) return vec4_const(0, 0, 0, 0);
@@ -68,22 +58,18 @@ Id Emitter::load_const(uint32_t index, const std::optional<ir::RelAddr>& rel) {
   const Id chain =
       b.op(Op::OpAccessChain, ptr_vec4, {uniform_var_, b.const_uint(kMemberFloat), safe});
   Id value = b.op(Op::OpLoad, t_vec4, {chain});
-  std::map<uint32_t, const ir::ConstDef*> defs;
-  for (const ir::ConstDef& d : prog.defs)
-    if (d.file == RegFile::Const) defs[d.index] = &d;
-  for (const auto& [k, d] : defs) {
+  for (const auto& [k, d] : defs_.floats) {
     const Id hit = b.op(Op::OpIEqual, t_bool, {idx, b.const_int(static_cast<int32_t>(k))});
-    value = b.op(Op::OpSelect, t_vec4, {bsplat(hit), def_value(*d), value});
+    value = b.op(Op::OpSelect, t_vec4, {bsplat(hit), def_value(d), value});
   }
   // SPIR-V 1.3 selects need a condition as wide as the result.
   return b.op(Op::OpSelect, t_vec4, {bsplat(in_range), value, vec4_const(0, 0, 0, 0)});
 }
 
 uint32_t Emitter::relative_limit() const {
-  // Relative reads may reach any constant the device offers: 256 in a vertex shader (as
-  // the interpreter, runtime/devices/cpu/src/vm/vm_program.cpp); outside → (0, 0, 0, 0).
-  const uint32_t limit = ir::limits(prog.profile).float_consts;
-  return ir::is_vertex(prog.profile) ? std::max<uint32_t>(limit, 256) : limit;
+  // Relative reads may reach any constant the device offers (the relative-reach pass, which
+  // the interpreter reads too); outside → (0, 0, 0, 0).
+  return ir::relative_constant_limit(prog.profile);
 }
 
 Id Emitter::loop_var() {
@@ -95,7 +81,7 @@ Id Emitter::loop_var() {
 }
 
 Id Emitter::load_int_const(uint32_t index) {
-  if (const ir::ConstDef* d = find_def(prog, RegFile::ConstInt, index)) {
+  if (const ir::ConstDef* d = defs_.find(RegFile::ConstInt, index)) {
     const Id parts[] = {b.const_int(d->i(0)), b.const_int(d->i(1)), b.const_int(d->i(2)),
                         b.const_int(d->i(3))};
     return b.const_composite(t_ivec4, parts);
@@ -106,8 +92,7 @@ Id Emitter::load_int_const(uint32_t index) {
 }
 
 Id Emitter::load_bool_const(uint32_t index) {
-  if (const ir::ConstDef* d = find_def(prog, RegFile::ConstBool, index))
-    return b.const_bool(d->b());
+  if (const ir::ConstDef* d = defs_.find(RegFile::ConstBool, index)) return b.const_bool(d->b());
   const Id chain = b.op(Op::OpAccessChain, b.type_pointer(SC::Uniform, t_uint),
                         {uniform_var_, b.const_uint(kMemberBool), b.const_uint(index)});
   const Id raw = b.op(Op::OpLoad, t_uint, {chain});

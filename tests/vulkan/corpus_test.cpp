@@ -31,6 +31,7 @@
 
 #include "diff_harness.h"
 #include "skip_policy.h"
+#include "tierlift/ir/semantics.h"
 
 namespace tierlift::vulkan::test {
 namespace {
@@ -59,18 +60,6 @@ std::string read_text(const std::string& path) {
   return ss.str();
 }
 
-// How many consecutive constant rows a matrix macro reads from its second source.
-uint32_t rows_read(ir::Opcode op) {
-  switch (op) {
-  case ir::Opcode::M4x4:
-  case ir::Opcode::M3x4: return 4;
-  case ir::Opcode::M4x3:
-  case ir::Opcode::M3x3: return 3;
-  case ir::Opcode::M3x2: return 2;
-  default: return 1;
-  }
-}
-
 // Constant registers the position output depends on: a backward slice over the straight-
 // line code (every corpus vertex listing is branch-free), tracking whole registers.
 std::set<uint32_t> position_constants(const ir::Program& p) {
@@ -80,7 +69,7 @@ std::set<uint32_t> position_constants(const ir::Program& p) {
     if (!it->dst || !live.count({it->dst->file, it->dst->index})) continue;
     for (size_t s = 0; s < it->src.size(); ++s) {
       const auto& src = it->src[s];
-      const uint32_t n = s == 1 ? rows_read(it->op) : 1;
+      const uint32_t n = ir::source_rows(*it, s);
       for (uint32_t k = 0; k < n; ++k) {
         if (src.file == ir::RegFile::Const) consts.insert(src.index + k);
         live.insert({src.file, src.index + k});

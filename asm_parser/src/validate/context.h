@@ -13,6 +13,7 @@
 #include "tierlift/ir/opcodes.h"
 #include "tierlift/ir/profile.h"
 #include "tierlift/ir/program.h"
+#include "tierlift/ir/semantics.h"
 
 namespace tierlift::as::detail {
 
@@ -60,14 +61,9 @@ std::string reg_comps(ir::RegFile f, uint32_t index, uint8_t mask);
 std::string mask_name(uint8_t mask);   // ".xz", ".xyzw" for full
 std::string swizzle_name(uint8_t swz); // ".xyzw" for identity
 
-// Components (bit mask x=1 … w=8) of the *register* that source `k` of `ins` reads: the
-// lanes the operation consumes, mapped through the swizzle. `sampler_dim` is the number
-// of coordinates a ps_2_0 texld reads (2 or 3; from the sampler's dcl).
-uint8_t source_read_mask(const ir::Instruction& ins, size_t k, ir::Profile p, int sampler_dim);
-// Coordinates a ps_2_0 texld reads through sampler s#: 2 for dcl_2d, else 3.
+// Coordinates a ps_2_0 texld reads through sampler s#: 2 for dcl_2d, else 3. (What an
+// instruction reads and writes is ir::source_read_mask / ir::written_mask.)
 int sampler_dim(const ir::Program& p, uint32_t index);
-// Components the instruction's destination really receives (mask ∩ what the op produces).
-uint8_t dest_write_mask(const ir::Instruction& ins, ir::Profile p);
 
 // One rule family per file.
 void check_legality(Ctx& c);     // rules_legality.cpp: opcode in profile, operand count/kinds

@@ -65,7 +65,7 @@ struct Flow {
         need(RegFile::Addr, 0, static_cast<uint8_t>(1 << (s.rel->component & 3)),
              s.rel->loc.valid() ? s.rel->loc : s.loc);
       if (s.file == RegFile::Addr) continue; // reported as an access error
-      need(s.file, s.index, source_read_mask(ins, k, c.target, sampler_dim_of(ins)), s.loc);
+      need(s.file, s.index, ir::source_read_mask(ins, k, c.target, sampler_dim_of(ins)), s.loc);
     }
     if (!ins.dst) return;
     const ir::DstOperand& d = *ins.dst;
@@ -93,7 +93,7 @@ struct Flow {
       return;
     }
     killed.erase(key);
-    written[key] |= dest_write_mask(ins, c.target);
+    written[key] |= ir::written_mask(ins, c.target);
     if (ins.dst->file == RegFile::Temp) alpha_lost[ins.dst->index] = false;
   }
 
@@ -123,7 +123,7 @@ struct Flow {
         current = ins.src[0].index;
         in_sub = true;
       } else if (in_sub && ins.dst && tracked(ins.dst->file)) {
-        sub_writes[current][{ins.dst->file, ins.dst->index}] |= dest_write_mask(ins, c.target);
+        sub_writes[current][{ins.dst->file, ins.dst->index}] |= ir::written_mask(ins, c.target);
       }
     }
   }

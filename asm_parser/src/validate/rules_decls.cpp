@@ -91,7 +91,7 @@ void check_uses(Ctx& c) {
       int dim = 3;
       if (k == 0 && ins.src.size() > 1 && ins.src[1].file == RegFile::Sampler)
         dim = sampler_dim(c.prog, ins.src[1].index);
-      uint8_t extra = source_read_mask(ins, k, c.target, dim) & ~d->reg.mask;
+      uint8_t extra = ir::source_read_mask(ins, k, c.target, dim) & ~d->reg.mask;
       if (extra)
         c.error(s.loc, "declaration",
                 fmt::format("{} is read, but dcl {}{} declares only {}",

@@ -25,7 +25,7 @@ void check_vertex(Ctx& c) {
     if (d.file == RegFile::RastOut && d.index == ir::kRastPos) pos = true;
     if (d.file == RegFile::TexCrdOut) {
       auto& e = tex[d.index];
-      e.first |= dest_write_mask(ins, c.target);
+      e.first |= ir::written_mask(ins, c.target);
       if (!e.second) e.second = &ins;
     }
   }
@@ -105,7 +105,7 @@ void check_pixel20(Ctx& c) {
 void check_pixel1x(Ctx& c) {
   for (const ir::Instruction& ins : c.prog.code)
     if (ins.dst && ins.dst->file == RegFile::Temp && ins.dst->index == 0 &&
-        dest_write_mask(ins, c.target) != 0)
+        ir::written_mask(ins, c.target) != 0)
       return;
   c.warning(program_loc(c), "output-rule",
             fmt::format("r0 is the output colour of {} but is never written", c.pname()));

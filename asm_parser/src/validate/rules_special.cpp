@@ -16,19 +16,8 @@ bool same_reg(const ir::DstOperand& d, const ir::SrcOperand& s) {
   return d.file == s.file && d.index == s.index && !s.rel;
 }
 
-int matrix_rows(Opcode op) {
-  switch (op) {
-  case Opcode::M4x4:
-  case Opcode::M3x4: return 4;
-  case Opcode::M4x3:
-  case Opcode::M3x3: return 3;
-  case Opcode::M3x2: return 2;
-  default: return 0;
-  }
-}
-
 void check_matrix(Ctx& c, const ir::Instruction& ins) {
-  int rows = matrix_rows(ins.op);
+  const int rows = ir::op_semantics(info_of(ins).op).matrix_rows;
   if (rows == 0 || ins.src.size() < 2) return;
   const ir::SrcOperand& m = ins.src[1];
   if (m.file != RegFile::Const && m.file != RegFile::Temp)

@@ -12,6 +12,7 @@
 #include "tierlift/codegen/codegen.h"
 #include "tierlift/codegen/spirv_builder.h"
 #include "tierlift/ir/numeric_rules.h"
+#include "tierlift/ir/passes.h"
 
 namespace tierlift::codegen {
 
@@ -78,6 +79,7 @@ public:
   const CodegenOptions& opt;
   const EmitPlan& plan;
   ir::DiagnosticSink& diags;
+  const ir::FoldedDefs defs_; // the fold-defs pass: which def of a register wins
   SpirvBuilder b;
   Id glsl = 0;
   Id t_void = 0, t_bool = 0, t_bvec4 = 0, t_float = 0, t_vec2 = 0, t_vec3 = 0, t_vec4 = 0;

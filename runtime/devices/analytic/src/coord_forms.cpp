@@ -7,6 +7,7 @@
 
 #include "linear_forms.h"
 #include "tierlift/ir/opcodes.h"
+#include "tierlift/ir/semantics.h"
 #include "tierlift/pass/pass.h"
 
 namespace tierlift::analytic::detail {
@@ -171,8 +172,10 @@ private:
     const ir::DstOperand& d = *in.dst;
     Reg& r = regs_[{d.file, d.index}];
     Reg next = r;
+    // The components the opcode really writes (the table's column), not the bare mask.
+    const uint8_t written = ir::written_mask(in, p_.profile);
     for (int c = 0; c < 4; ++c) {
-      if (!(d.mask & (1u << c))) continue;
+      if (!(written & (1u << c))) continue;
       Affine v;
       switch (in.op) {
       case ir::Opcode::Mov: v = read(in.src[0], c); break;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "linear_forms.h"
+#include "tierlift/ir/passes.h"
 #include "tierlift/ir/source_modifiers.h"
 
 namespace tierlift::analytic {
@@ -19,9 +20,8 @@ std::array<double, 4> constant_value(const ir::Program& p, const std::vector<Vec
   std::array<double, 4> v{};
   if (index < api.size())
     for (int c = 0; c < 4; ++c) v[c] = api[index][c];
-  for (const ir::ConstDef& d : p.defs)
-    if (d.file == ir::RegFile::Const && d.index == index)
-      for (int c = 0; c < 4; ++c) v[c] = d.f(c);
+  if (const ir::ConstDef* d = ir::fold_defs(p).find(ir::RegFile::Const, index))
+    for (int c = 0; c < 4; ++c) v[c] = d->f(c);
   if (ps1x_clamp)
     for (double& x : v) {
       double y = std::clamp(x, -1.0, 1.0);

@@ -7,6 +7,7 @@
 
 #include "linear_forms.h"
 #include "tierlift/ir/opcodes.h"
+#include "tierlift/ir/semantics.h"
 
 namespace tierlift::analytic::detail {
 
@@ -165,8 +166,10 @@ private:
     Reg& r = regs_[{d.file, d.index}];
     Reg next = r;
     const double scale = std::ldexp(1.0, in.mods.shift); // _x2 … _d8
+    // The components the opcode really writes (the table's column), not the bare mask.
+    const uint8_t written = ir::written_mask(in, p_.profile);
     for (int c = 0; c < 4; ++c) {
-      if (!(d.mask & (1u << c))) continue;
+      if (!(written & (1u << c))) continue;
       Form v;
       if (sampled) {
         v = sample_form(sampled->first, sampled->second, c);

@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "tierlift/ir/numerics.h"
+#include "tierlift/ir/passes.h"
+#include "tierlift/ir/semantics.h"
 #include "vm_internal.h"
 
 namespace tierlift::cpu::vm {
@@ -27,62 +29,36 @@ void collect_defs(Prepared& p, std::vector<std::optional<std::array<int32_t, 4>>
                   std::vector<std::optional<bool>>& bools) {
   ints.assign(16, std::nullopt);
   bools.assign(16, std::nullopt);
-  // Later definitions of the same register win (d3d9-isa.md §1.4).
-  for (const ir::ConstDef& d : p.program.defs) {
-    if (d.file == RegFile::Const) {
-      if (d.index >= 8192) continue;
-      if (p.const_defs.size() <= d.index) p.const_defs.resize(d.index + 1);
-      Vec4 v{d.f(0), d.f(1), d.f(2), d.f(3)};
-      // NUMERICS.md rule 13: lavapipe folds arithmetic on def constants at compile time with
-      // denormals kept, and flushes the same arithmetic at run time; loading a def's
-      // denormals as zeros of their sign (as the SPIR-V does under the same convention) makes
-      // the folding invisible.
-      if (p.flush)
-        for (float& x : v) x = ir::numerics::flush_denormal(x);
-      p.const_defs[d.index] = v;
-    } else if (d.file == RegFile::ConstInt && d.index < 16) {
-      ints[d.index] = std::array<int32_t, 4>{d.i(0), d.i(1), d.i(2), d.i(3)};
-    } else if (d.file == RegFile::ConstBool && d.index < 16) {
-      bools[d.index] = d.b();
-    }
+  // The fold-defs pass decides which definition of a register wins.
+  const ir::FoldedDefs folded = ir::fold_defs(p.program);
+  for (const auto& [index, d] : folded.floats) {
+    if (index >= 8192) continue; // past any device's constant count
+    if (p.const_defs.size() <= index) p.const_defs.resize(index + 1);
+    Vec4 v{d.f(0), d.f(1), d.f(2), d.f(3)};
+    // NUMERICS.md rule 13: lavapipe folds arithmetic on def constants at compile time with
+    // denormals kept, and flushes the same arithmetic at run time; loading a def's
+    // denormals as zeros of their sign (as the SPIR-V does under the same convention) makes
+    // the folding invisible.
+    if (p.flush)
+      for (float& x : v) x = ir::numerics::flush_denormal(x);
+    p.const_defs[index] = v;
   }
-}
-
-uint8_t macro_rows(Opcode op) {
-  switch (op) {
-  case Opcode::M4x4: return 4;
-  case Opcode::M4x3: return 3;
-  case Opcode::M3x4: return 4;
-  case Opcode::M3x3: return 3;
-  case Opcode::M3x2: return 2;
-  default: return 0;
-  }
-}
-
-// Components an instruction produces at most; writes outside them are dropped, as DXVK
-// and wined3d do (d3d9-isa.md §4.4, §5.1).
-uint8_t produced_mask(Opcode op, bool vs11) {
-  switch (op) {
-  case Opcode::M4x3:
-  case Opcode::M3x3:
-  case Opcode::Crs: return 0x7;
-  case Opcode::M3x2:
-  case Opcode::SinCos:
-  case Opcode::Bem: return 0x3;
-  case Opcode::Frc: return vs11 ? 0x3 : 0xF; // the vs_1_1 macro writes x and y only
-  default: return 0xF;
-  }
+  for (const auto& [index, d] : folded.ints)
+    if (index < 16) ints[index] = std::array<int32_t, 4>{d.i(0), d.i(1), d.i(2), d.i(3)};
+  for (const auto& [index, d] : folded.bools)
+    if (index < 16) bools[index] = d.b();
 }
 
 void prepare_arith(Step& s, const ir::Instruction& ins, const Prepared& p) {
   s.compute = arith_compute(ins.op, p.flush);
   if (!s.compute) broken(ins, "no interpreter function");
   s.exec = exec_arith;
-  s.rows = macro_rows(ins.op);
+  s.rows = ir::op_semantics(ins.op).matrix_rows;
   if (ins.op == Opcode::Bem && ins.dst) s.aux = static_cast<int32_t>(ins.dst->index);
   if (ins.dst) {
     s.dst = decode_dst(*ins.dst, ins.mods, p);
-    s.dst.mask &= produced_mask(ins.op, p.vs11);
+    // Writes outside what the opcode produces are dropped, as DXVK and wined3d do.
+    s.dst.mask &= ir::op_writes(ins.op, p.program.profile);
   } else if (ins.op != Opcode::Nop) {
     broken(ins, "missing destination");
   }
@@ -211,8 +187,7 @@ Prepared prepare(const ir::Program& program, const ir::Conventions& conv) {
   p.flush = conv.rounding == ir::Rounding::Llvmpipe;
   // Relative reads may reach any constant the device offers: 256 for vertex shaders (the
   // value DXVK and most D3D9 drivers report for MaxVertexShaderConst).
-  int32_t limit = ir::limits(prof).float_consts;
-  p.const_limit = ir::is_vertex(prof) ? std::max(limit, 256) : limit;
+  p.const_limit = static_cast<int32_t>(ir::relative_constant_limit(prof));
 
   std::vector<std::optional<std::array<int32_t, 4>>> ints;
   std::vector<std::optional<bool>> bools;

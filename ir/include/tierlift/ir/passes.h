@@ -1,0 +1,62 @@
+// Normalisation passes over an ir::Program, each named and each followed by the structural
+// IR validator (run_pass). Analyses (fold_defs, relative_reach) compute once what the
+// interpreter, the code generator and the run planner used to work out on their own;
+// transforms (expand_matrix_macros) are opt-in for a backend that wants them.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string_view>
+
+#include "tierlift/ir/program.h"
+#include "tierlift/ir/result.h"
+
+namespace tierlift::ir {
+
+// --- structural IR validator ------------------------------------------------------------
+// Checks what every pass must preserve, independent of the assembler's profile rules:
+// opcodes known and legal in the profile, a destination exactly where the table has one,
+// write masks non-empty, enough sources for the row, register indices inside what the
+// profile can address (relative constant bases and matrix rows included), defs in a
+// constant file. Errors point at the instruction or operand, rule "ir".
+Status validate_ir(const Program& program);
+
+// Runs `pass` over a copy of `program`, then validate_ir; a failure names the pass.
+Result<Program> run_pass(const Program& program, std::string_view name,
+                         const std::function<void(Program&)>& pass);
+
+// --- fold defs --------------------------------------------------------------------------
+// The values `def`, `defi`, `defb` give their registers, the later definition of a register
+// winning (the ISA's rule, decided here once).
+struct FoldedDefs {
+  std::map<uint32_t, ConstDef> floats; // c#
+  std::map<uint32_t, ConstDef> ints;   // i#
+  std::map<uint32_t, ConstDef> bools;  // b#
+  // The winning def of a register, or nullptr when the listing does not define it.
+  const ConstDef* find(RegFile file, uint32_t index) const;
+};
+FoldedDefs fold_defs(const Program& program);
+
+// --- relative addressing ------------------------------------------------------------------
+// The c# a relative read c[a0.x + n] / c[aL + n] can reach. Nothing bounds a0 or aL
+// statically, so every register the device offers is reachable: [0, limit), with limit the
+// profile's float-constant count, at least 256 in a vertex shader (the devices' count; the
+// interpreter and the generated code read (0, 0, 0, 0) outside it).
+struct RelativeReach {
+  uint32_t begin = 0;
+  uint32_t end = 0; // one past the last reachable register
+};
+uint32_t relative_constant_limit(Profile p);
+// The range, or nullopt when the program reads no constant relatively.
+std::optional<RelativeReach> relative_reach(const Program& program);
+
+// --- matrix macros ----------------------------------------------------------------------
+// m4x4 / m4x3 / m3x4 / m3x3 / m3x2 d, s, m  →  one dp4 (m4xN) or dp3 (m3xN) per row:
+// d.x = dot(s, m), d.y = dot(s, m+1) … with the instruction modifiers on each. A backend
+// opts in; the interpreter and the SPIR-V emitter evaluate the macros directly today. Exact
+// for validated listings: the destination may alias neither the vector nor a matrix row.
+void expand_matrix_macros(Program& program);
+
+} // namespace tierlift::ir

@@ -1,0 +1,104 @@
+// The structural IR validator: the invariants every pass leaves behind. Unlike the
+// assembler's validator it knows no listing rules (read ports, slot counts, ordering); it
+// guards what the backends index and dispatch on.
+#include <fmt/format.h>
+
+#include "tierlift/ir/passes.h"
+#include "tierlift/ir/semantics.h"
+
+namespace tierlift::ir {
+namespace {
+
+// Registers of a file the profile can address (the devices' constant count in a vertex
+// shader, which goes past the 96 / 256 a listing is guaranteed).
+uint32_t addressable(RegFile f, Profile p) {
+  const ProfileLimits& l = limits(p);
+  const bool vs = is_vertex(p);
+  switch (f) {
+  case RegFile::Temp: return l.temps;
+  case RegFile::Input: return l.inputs;
+  case RegFile::Const: return vs ? 8192 : l.float_consts;
+  case RegFile::Addr: return vs ? 1 : 0;
+  case RegFile::Texture: return vs ? 0 : l.texcoords;
+  case RegFile::RastOut: return vs ? 3 : 0;
+  case RegFile::AttrOut: return vs ? l.color_outputs : 0;
+  case RegFile::TexCrdOut: return vs ? l.tex_outputs : 0;
+  case RegFile::ConstInt: return l.int_consts;
+  case RegFile::ColorOut: return vs ? 0 : 4;
+  case RegFile::DepthOut: return vs ? 0 : 1;
+  case RegFile::Sampler: return vs ? 0 : 16;
+  case RegFile::ConstBool: return l.bool_consts;
+  case RegFile::Loop: return vs ? 1 : 0;
+  case RegFile::Label: return l.labels;
+  }
+  return 0;
+}
+
+void check_register(DiagnosticSink& sink, Profile p, RegFile f, uint64_t last, SourceLoc loc) {
+  const uint32_t n = addressable(f, p);
+  if (last >= n)
+    sink.error(loc, "ir",
+               fmt::format("{} is outside the {} registers {} can address",
+                           register_name(f, static_cast<uint32_t>(last)), n, profile_name(p)));
+}
+
+void check_instruction(DiagnosticSink& sink, Profile p, const Instruction& ins) {
+  const auto v = static_cast<int>(ins.op);
+  if (v < 0 || v >= kOpcodeCount) {
+    sink.error(ins.loc, "ir", fmt::format("opcode value {} is not in the table", v));
+    return;
+  }
+  const OpInfo& info = op_info(ins.op);
+  if (!legal_in(info, p) || info.cls == OpClass::Decl)
+    sink.error(ins.loc, "ir",
+               fmt::format("{} is not an instruction of {}", info.mnemonic, profile_name(p)));
+  if (info.has_dst != ins.dst.has_value())
+    sink.error(ins.loc, "ir",
+               fmt::format("{} {} a destination", info.mnemonic,
+                           info.has_dst ? "lacks" : "must not have"));
+  if (ins.src.size() < info.num_src)
+    sink.error(ins.loc, "ir",
+               fmt::format("{} has {} sources, the table says {}", info.mnemonic, ins.src.size(),
+                           info.num_src));
+  if (ins.dst) {
+    if (ins.dst->mask == 0 || ins.dst->mask > kFullMask)
+      sink.error(ins.dst->loc, "ir", fmt::format("{} has an empty write mask", info.mnemonic));
+    check_register(sink, p, ins.dst->file, ins.dst->index, ins.dst->loc);
+  }
+  for (size_t k = 0; k < ins.src.size(); ++k) {
+    const SrcOperand& s = ins.src[k];
+    // Matrix rows must all exist; a relative base only needs to be addressable itself.
+    const uint32_t rows = s.rel ? 1 : source_rows(ins, k);
+    check_register(sink, p, s.file, uint64_t{s.index} + rows - 1, s.loc);
+  }
+}
+
+} // namespace
+
+Status validate_ir(const Program& program) {
+  DiagnosticSink sink;
+  for (const Instruction& ins : program.code) check_instruction(sink, program.profile, ins);
+  for (const ConstDef& d : program.defs) {
+    if (d.file != RegFile::Const && d.file != RegFile::ConstInt && d.file != RegFile::ConstBool)
+      sink.error(d.loc, "ir", "a definition must name c#, i# or b#");
+    else
+      check_register(sink, program.profile, d.file, d.index, d.loc);
+  }
+  if (sink.has_errors()) return fail(sink);
+  return ok_status();
+}
+
+Result<Program> run_pass(const Program& program, std::string_view name,
+                         const std::function<void(Program&)>& pass) {
+  Program out = program;
+  pass(out);
+  Status valid = validate_ir(out);
+  if (!valid.ok()) {
+    Failure f = std::move(valid).failure();
+    for (Diagnostic& d : f.diagnostics) d.message = fmt::format("after {}: {}", name, d.message);
+    return f;
+  }
+  return out;
+}
+
+} // namespace tierlift::ir
