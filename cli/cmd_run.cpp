@@ -232,7 +232,7 @@ int run(const RunFlags& f) {
     }
   }
 
-  // --backend both: the two devices must agree at design.md's targets for the format.
+  // --backend both: the two devices must agree at docs/design.md's targets for the format.
   std::optional<img::Comparison> agreement;
   std::optional<img::Verdict> verdict;
   if (want_cpu && want_vulkan) {

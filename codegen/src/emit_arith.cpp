@@ -1,5 +1,5 @@
 // Arithmetic instructions: one case per opcode-table row, each the SPIR-V twin of the
-// interpreter's compute function (d3d9-isa.md §5; numeric rules from ir/numerics.h).
+// interpreter's compute function (docs/d3d9-rules.md §5; numeric rules from ir/numerics.h).
 // The result is returned as a pending store so that co-issued pairs and matrix macros read
 // every source before anything is written.
 #include <spirv/unified1/GLSL.std.450.h>

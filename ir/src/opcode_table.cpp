@@ -1,5 +1,5 @@
 // The one opcode table. Columns of `slots`: vs_1_1 vs_2_0 ps_1_1 ps_1_2 ps_1_3 ps_1_4 ps_2_0;
-// "no" = not legal there. Slot costs are d3d9-isa.md §5 (macros at their expanded size).
+// "no" = not legal there. Slot costs are docs/d3d9-rules.md §5 (macros at their expanded size).
 #include <algorithm>
 #include <map>
 #include <string>

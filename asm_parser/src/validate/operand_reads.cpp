@@ -1,6 +1,6 @@
 // Which register components an instruction reads and writes. Read-before-write checks,
 // declaration-mask checks and the oT# mask rule all need the same answer, so it lives here
-// once: the lanes an operation consumes (d3d9-isa.md §5 semantics), mapped through the
+// once: the lanes an operation consumes (docs/d3d9-rules.md §5 semantics), mapped through the
 // source swizzle.
 #include "context.h"
 
@@ -85,7 +85,7 @@ uint8_t source_read_mask(const ir::Instruction& ins, size_t k, ir::Profile p, in
   if (ins.op == Opcode::Dp2Add && k == 2) return scalar_component(ins, s);
   if (ins.op == Opcode::SinCos && k == 0) return scalar_component(ins, s);
   uint8_t comps = through_swizzle(lanes(ins, k, p, sampler_dim), s.swizzle);
-  // _dw / _dz divide by the register's w / z before the swizzle (d3d9-isa.md §7 step 2).
+  // _dw / _dz divide by the register's w / z before the swizzle (docs/d3d9-rules.md §7 step 2).
   if (s.mod == ir::SrcMod::Dw) comps |= 0x8;
   if (s.mod == ir::SrcMod::Dz) comps |= 0x4;
   return comps;

@@ -1,6 +1,6 @@
 // The legacy numeric rules of Direct3D 9 shader arithmetic, each defined once, by name
-// (design.md "Conventions"; d3d9-isa.md §5, §8). The CPU interpreter calls these functions
-// and the SPIR-V code generator emits exactly the same sequence of operations, so the two
+// (docs/design.md "Conventions"; docs/d3d9-rules.md §5, §8). The CPU interpreter calls these
+// functions and the SPIR-V code generator emits exactly the same sequence of operations, so the two
 // cannot drift. NUMERICS.md (repo root) states every rule, why it was chosen and which test
 // checks it.
 //
@@ -13,7 +13,7 @@
 //    default) is IEEE: denormals in and out. Flush is what lavapipe measures: each fp32
 //    operation and comparison reads a denormal operand as a zero of its sign and writes a
 //    denormal result as a zero of its sign; a select passes its operand's bits on.
-//  * Comparisons are ordered: a NaN makes every compare false (the sheet's ternaries).
+//  * Comparisons are ordered: a NaN makes every compare false (the documentation's ternaries).
 //
 // Every function uses only fp32 operations with one rounding each, so that the emitted
 // SPIR-V can reproduce them bit for bit. Ternaries are written so that the false branch is
@@ -76,7 +76,7 @@ template <Denormals D = kKeep> inline float legacy_cos(float x) {
 
 // --- basic arithmetic -----------------------------------------------------------------
 
-// 0 × anything = +0, even ±inf and NaN (d3d9-isa.md §8.3: observed on NVIDIA, AMD and
+// 0 × anything = +0, even ±inf and NaN (docs/d3d9-rules.md §8.3: observed on NVIDIA, AMD and
 // Intel; DXVK "Strict", Nine MUL_ZERO_WINS). Used by mul, mad, dp*, matrix macros, lrp,
 // crs, nrm, dst, dp2add and every product inside texture-address instructions. Under
 // Flush a denormal factor compares equal to 0, so the product is +0.
@@ -218,7 +218,7 @@ template <Denormals D = kKeep> inline Vec3f legacy_reflect(Vec3f n, Vec3f e) {
 }
 
 // ps_1_x depth replacement (texm3x2depth z/w, ps_1_4 texdepth r/g): a zero divisor gives
-// 1.0 (d3d9-isa.md §5.5, §5.6). The device clamps depth to [0, 1] at the depth test.
+// 1.0 (docs/d3d9-rules.md §5.5, §5.6). The device clamps depth to [0, 1] at the depth test.
 template <Denormals D = kKeep> inline float legacy_depth_ratio(float num, float den) {
   return dz<D>(den) == 0.0f ? 1.0f : legacy_div<D>(num, den);
 }
@@ -251,7 +251,7 @@ inline int32_t clamp_index_float(float v) {
   if (v < -1048576.0f) v = -1048576.0f;
   return static_cast<int32_t>(v);
 }
-// vs_1_1 `mov a0.x, s`: floor (DXVK, Wine; the doc's "round" is wrong, d3d9-isa.md §8.5).
+// vs_1_1 `mov a0.x, s`: floor (DXVK, Wine; the doc's "round" is wrong, docs/d3d9-rules.md §8.5).
 template <Denormals D = kKeep> inline int32_t legacy_mov_a0_floor(float x) {
   return clamp_index_float(legacy_floor<D>(x));
 }
@@ -265,7 +265,7 @@ template <Denormals D = kKeep> inline int32_t legacy_mova_round(float x) {
 
 // --- ps_1_x ranges --------------------------------------------------------------------
 
-// Source modifiers (d3d9-isa.md §4.2), each one rounding.
+// Source modifiers (docs/d3d9-rules.md §4.2), each one rounding.
 template <Denormals D = kKeep> inline float legacy_bias(float x) {
   return legacy_sub<D>(x, 0.5f);
 }

@@ -27,7 +27,7 @@ void collect_defs(Prepared& p, std::vector<std::optional<std::array<int32_t, 4>>
                   std::vector<std::optional<bool>>& bools) {
   ints.assign(16, std::nullopt);
   bools.assign(16, std::nullopt);
-  // Later definitions of the same register win (d3d9-isa.md §1.4).
+  // Later definitions of the same register win (docs/d3d9-rules.md §1.4).
   for (const ir::ConstDef& d : p.program.defs) {
     if (d.file == RegFile::Const) {
       if (d.index >= 8192) continue;
@@ -60,7 +60,7 @@ uint8_t macro_rows(Opcode op) {
 }
 
 // Components an instruction produces at most; writes outside them are dropped, as DXVK
-// and wined3d do (d3d9-isa.md §4.4, §5.1).
+// and wined3d do (docs/d3d9-rules.md §4.4, §5.1).
 uint8_t produced_mask(Opcode op, bool vs11) {
   switch (op) {
   case Opcode::M4x3:
