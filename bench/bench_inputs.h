@@ -9,7 +9,7 @@ namespace tierlift::bench {
 struct ListingText {
   std::string name, text;
 };
-// listings/**/*.vsh|*.psh and ../shared/corpus/*.vsh|*.psh (when present).
+// listings/**/*.vsh|*.psh and the shared corpus (TIERLIFT_SHARED_DIR/corpus, when present).
 const std::vector<ListingText>& all_listings();
 size_t total_bytes(const std::vector<ListingText>& listings);
 

@@ -1,5 +1,5 @@
-// tierlift listings: the main job until the glow lands — check every built-in listing
-// (the article's Listings 1–4) and print it in canonical form.
+// tierlift listings: check every built-in listing (the article's Listings 1–4) and print it
+// in canonical form.
 #include <fmt/format.h>
 
 #include "commands.h"

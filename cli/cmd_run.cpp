@@ -284,7 +284,7 @@ int run(const RunFlags& f) {
   // What the run reports as its image and probes: the CPU device's, else the Vulkan one's.
   const DeviceRun& shown = want_cpu ? out : vk;
 
-  // --backend both: the two devices must agree at design.md's targets for the format.
+  // --backend both: the two devices must agree at docs/design.md's targets for the format.
   std::optional<img::Comparison> agreement;
   std::optional<img::Verdict> verdict;
   if (want_cpu && want_vulkan) {

@@ -29,7 +29,7 @@ struct PairAgreement {
 std::vector<PairAgreement> compare_ways(const std::vector<GlowWay>& ways, std::string* error);
 
 // The table: one row per pass and one for the frame; for each pair max abs, RMSE and the
-// share of identical pixels, a '!' after a pair beyond design.md's targets.
+// share of identical pixels, a '!' after a pair beyond docs/design.md's targets.
 void print_agreement_table(const std::vector<PairAgreement>& pairs);
 nlohmann::json agreement_json(const std::vector<PairAgreement>& pairs);
 

@@ -1,5 +1,5 @@
 // Arithmetic instructions: one case per opcode-table row, each the SPIR-V twin of the
-// interpreter's compute function (d3d9-isa.md §5), both instantiating the numeric rules of
+// interpreter's compute function (docs/d3d9-rules.md §5), both instantiating the numeric rules of
 // ir/numeric_rules.h (v4: vec4 width, s1: scalar).
 // The result is returned as a pending store so that co-issued pairs and matrix macros read
 // every source before anything is written.

@@ -91,7 +91,7 @@ void Emitter::emit_entry() {
                        t_float);
         b.op_void(Op::OpStore, {var, x});
       } else {
-        // oD# reach the pixel stage saturated (d3d9-isa.md §3.1).
+        // oD# reach the pixel stage saturated (docs/d3d9-rules.md §3.1).
         const bool color = file == RegFile::AttrOut;
         const Id value = color ? rule::saturate(arith(4), v) : v;
         const Id var =

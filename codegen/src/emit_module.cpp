@@ -84,7 +84,7 @@ Id Emitter::input_var(RegFile file, uint32_t index) {
   } else {
     iv.usage = file == RegFile::Texture ? ir::DeclUsage::TexCoord : ir::DeclUsage::Color;
     iv.usage_index = static_cast<uint8_t>(index);
-    // ps_2_0 dcl_centroid: interpolate inside the primitive (d3d9-isa.md §9.4).
+    // ps_2_0 dcl_centroid: interpolate inside the primitive (docs/d3d9-rules.md §9.4).
     for (const ir::Declaration& d : prog.decls)
       if (d.reg.file == file && d.reg.index == index && d.mods.centroid)
         b.decorate(var, spv::Decoration::Centroid);

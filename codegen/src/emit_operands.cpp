@@ -1,4 +1,4 @@
-// Operand fetch and store in the order of d3d9-isa.md §7, the same order the interpreter
+// Operand fetch and store in the order of docs/d3d9-rules.md §7, the same order the interpreter
 // uses (runtime/devices/cpu/src/vm/vm_operands.cpp): fetch (constant defs override the uniform
 // block, relative addressing with out-of-range → 0, ps_1_x constant clamp), pre-swizzle
 // _dz/_dw, swizzle, post-swizzle modifiers with negate last; store: shift, ps_1_x range
@@ -143,7 +143,7 @@ Id Emitter::load_src(const ir::SrcOperand& s, uint32_t index_offset) {
 
 Id Emitter::scalar_src(const ir::SrcOperand& s) {
   // Scalar operands carry a replicate swizzle; the w slot is the one the D3D8 reference
-  // reads (d3d9-isa.md §4.3), equal to every other slot when the swizzle replicates.
+  // reads (docs/d3d9-rules.md §4.3), equal to every other slot when the swizzle replicates.
   return comp(load_src(s), 3);
 }
 

@@ -1,4 +1,4 @@
-// Texture instructions (d3d9-isa.md §5.5–§5.7): sampling through combined image samplers
+// Texture instructions (docs/d3d9-rules.md §5.5–§5.7): sampling through combined image samplers
 // at set 0, binding 2 + stage; ps_1_1…1_3 texture-address instructions with their pad
 // rows; texkill as OpKill or OpDemoteToHelperInvocation.
 #include <spirv/unified1/GLSL.std.450.h>
@@ -149,7 +149,7 @@ bool Emitter::emit_texture(const ir::Instruction& ins, std::optional<PendingStor
       v = texcoord_input(m);
     } else {
       v = load_register(ins.dst->file, m, std::nullopt);
-      // SM2 tests all four components (Wine; the docs say three, d3d9-isa.md §5.7).
+      // SM2 tests all four components (Wine; the docs say three, docs/d3d9-rules.md §5.7).
       if (prog.profile == ir::Profile::ps_2_0) n = 4;
     }
     kill_if_any_negative(v, n);

@@ -10,6 +10,8 @@ namespace tierlift::codegen {
 
 using spv::Op;
 
+namespace {
+
 bool is_block_terminator(spv::Op opcode) {
   switch (opcode) {
   case Op::OpBranch:
@@ -23,6 +25,8 @@ bool is_block_terminator(spv::Op opcode) {
   default: return false;
   }
 }
+
+} // namespace
 
 SpirvBuilder::SpirvBuilder() = default;
 
@@ -148,6 +152,10 @@ Id SpirvBuilder::type_array(Id element, Id length_const) {
   // is all this project needs, so sharing them is safe.
   return dedup(Op::OpTypeArray, {element, length_const}, false);
 }
+Id SpirvBuilder::type_runtime_array(Id element) {
+  // As type_array: the caller decorates ArrayStride, one stride per element type.
+  return dedup(Op::OpTypeRuntimeArray, {element}, false);
+}
 Id SpirvBuilder::type_struct(std::span<const Id> members) {
   const Id id = fresh_id();
   Words ops{id};
@@ -198,13 +206,6 @@ Id SpirvBuilder::spec_const_float(float default_value) {
   emit(globals_, Op::OpSpecConstant, ops);
   return id;
 }
-Id SpirvBuilder::spec_const_bool(bool default_value) {
-  const Id id = fresh_id();
-  const uint32_t ops[] = {type_bool(), id};
-  emit(globals_, default_value ? Op::OpSpecConstantTrue : Op::OpSpecConstantFalse, ops);
-  return id;
-}
-
 Id SpirvBuilder::global_variable(Id pointer_type, spv::StorageClass sc, Id initializer, Id id) {
   if (!id) id = fresh_id();
   Words ops{pointer_type, id, static_cast<uint32_t>(sc)};
@@ -216,36 +217,23 @@ Id SpirvBuilder::global_variable(Id pointer_type, spv::StorageClass sc, Id initi
 Id SpirvBuilder::begin_function(Id ret_type, Id fn_type, Id fn_id) {
   const Id id = fn_id ? fn_id : fresh_id();
   fn_header_.clear();
-  fn_vars_.clear();
   fn_body_.clear();
   const uint32_t ops[] = {ret_type, id, static_cast<uint32_t>(spv::FunctionControlMask::MaskNone),
                           fn_type};
   emit(fn_header_, Op::OpFunction, ops);
   in_function_ = true;
-  first_block_ = true;
   block_open_ = false;
   return id;
 }
 
-Id SpirvBuilder::function_variable(Id pointer_type, Id initializer) {
-  const Id id = fresh_id();
-  Words ops{pointer_type, id, static_cast<uint32_t>(spv::StorageClass::Function)};
-  if (initializer) ops.push_back(initializer);
-  emit(fn_vars_, Op::OpVariable, ops);
-  return id;
-}
-
 void SpirvBuilder::begin_block(Id label) {
-  // The first label goes before the function's variables; later ones into the body.
-  emit(first_block_ ? fn_header_ : fn_body_, Op::OpLabel, {&label, 1});
-  first_block_ = false;
+  emit(fn_body_, Op::OpLabel, {&label, 1});
   block_open_ = true;
 }
 
 void SpirvBuilder::end_function() {
   emit(fn_body_, Op::OpFunctionEnd, {});
   functions_.insert(functions_.end(), fn_header_.begin(), fn_header_.end());
-  functions_.insert(functions_.end(), fn_vars_.begin(), fn_vars_.end());
   functions_.insert(functions_.end(), fn_body_.begin(), fn_body_.end());
   in_function_ = false;
   block_open_ = false;

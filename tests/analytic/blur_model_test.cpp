@@ -1,6 +1,7 @@
 // The analytic model on tiny images, every expected value computed by hand.
 #include <gtest/gtest.h>
 
+#include "corner_model.h"
 #include "tierlift/analytic/blur_model.h"
 
 namespace img = tierlift::img;
@@ -42,12 +43,12 @@ TEST(BlurModel, HalfTexelOffsetsHitTexelCentres) {
   EXPECT_EQ(red_row(*r), (std::vector<float>{1.0f, 2.0f, 4.0f, 6.0f}));
   EXPECT_EQ(r->at(3, 0)[3], 6.0f);
   // The same taps as whole texels 0 and 1 give the same plain convolution.
-  auto texel_taps = analytic::intended_texel_taps(taps, 4, 1);
+  auto texel_taps = tierlift::test::intended_texel_taps(taps, 4, 1);
   ASSERT_EQ(texel_taps.size(), 2u);
   EXPECT_EQ(texel_taps[0].dx, 0);
   EXPECT_EQ(texel_taps[1].dx, 1);
   EXPECT_EQ(texel_taps[0].dy, 0);
-  auto conv = analytic::discrete_convolution(texel_taps, row4(), m);
+  auto conv = tierlift::test::discrete_convolution(texel_taps, row4(), m);
   ASSERT_TRUE(conv) << conv.message();
   EXPECT_EQ(red_row(*conv), red_row(*r));
 }
@@ -61,11 +62,11 @@ TEST(BlurModel, WithoutHalfTexelBilinearWeightsAreHalfAndHalf) {
   ASSERT_TRUE(r) << r.message();
   EXPECT_EQ(red_row(*r), (std::vector<float>{1.0f, 1.5f, 3.0f, 6.0f}));
   // The corner model says the same from its own rule.
-  auto corner = analytic::corner_model(taps, row4(), m);
+  auto corner = tierlift::test::corner_model(taps, row4(), m);
   ASSERT_TRUE(corner) << corner.message();
   EXPECT_EQ(red_row(*corner), red_row(*r));
   // And predicts the difference from the plain convolution (texel i): 0, -0.5, -1, -2.
-  auto p = analytic::predict_corner_difference(taps, row4(), m);
+  auto p = tierlift::test::predict_corner_difference(taps, row4(), m);
   ASSERT_TRUE(p);
   EXPECT_EQ(red_row(p->difference), (std::vector<float>{0.0f, -0.5f, -1.0f, -2.0f}));
   EXPECT_DOUBLE_EQ(p->max_abs, 2.0);
@@ -119,7 +120,7 @@ TEST(BlurModel, StoreQuantisesToTheTargetFormat) {
 }
 
 TEST(BlurModel, BilinearMatchesTheFactSheetExamples) {
-  // d3d9-isa.md §10.1 on a 4×4 texture: (0.5, 0.5) = mean of the 4 central texels,
+  // docs/d3d9-rules.md §10.1 on a 4×4 texture: (0.5, 0.5) = mean of the 4 central texels,
   // (0.375, 0.375) = texel (1, 1).
   img::Image t(4, 4);
   for (uint32_t y = 0; y < 4; ++y)
@@ -152,7 +153,7 @@ TEST(BlurModel, IntendedTexelsOfBothOffsetStyles) {
   const uint32_t w = 64;
   std::vector<analytic::Tap> taps = {tap(-3.5 / w, 0, 1), tap(-4.0 / w, 0, 1), tap(2.5 / w, 0, 1),
                                      tap(2.0 / w, 0, 1)};
-  auto t = analytic::intended_texel_taps(taps, w, 1);
+  auto t = tierlift::test::intended_texel_taps(taps, w, 1);
   EXPECT_EQ(t[0].dx, -4);
   EXPECT_EQ(t[1].dx, -4);
   EXPECT_EQ(t[2].dx, 2);
@@ -160,13 +161,13 @@ TEST(BlurModel, IntendedTexelsOfBothOffsetStyles) {
 }
 
 TEST(BlurModel, CornerModelRejectsOtherPositionsAndSizes) {
-  auto r = analytic::corner_model({tap(0.3 / 4, 0.5, 1.0)}, row4(), analytic::PassModel{});
+  auto r = tierlift::test::corner_model({tap(0.3 / 4, 0.5, 1.0)}, row4(), analytic::PassModel{});
   EXPECT_FALSE(r);
   EXPECT_NE(r.message().find("neither"), std::string::npos) << r.message();
   analytic::PassModel half;
   half.target_width = 2;
-  EXPECT_FALSE(analytic::corner_model({tap(0, 0, 1)}, row4(), half));
-  EXPECT_FALSE(analytic::discrete_convolution({}, row4(), half));
+  EXPECT_FALSE(tierlift::test::corner_model({tap(0, 0, 1)}, row4(), half));
+  EXPECT_FALSE(tierlift::test::discrete_convolution({}, row4(), half));
   EXPECT_TRUE(analytic::blur_pass({tap(0, 0, 1)}, row4(), half));
   EXPECT_FALSE(analytic::blur_pass({}, img::Image(), analytic::PassModel{}));
 }

@@ -1,4 +1,4 @@
-// The half-texel rule, shown both ways (design.md "Three ways, one answer"): the CPU
+// The half-texel rule, shown both ways (docs/design.md "Three ways, one answer"): the CPU
 // device runs Listings 1+2 and 3+4 on an RGBA32F target over seeded noise.
 //   * Offsets (k + 0.5)/W: every tap hits a texel centre, and the device output equals the
 //     analytic discrete convolution.
@@ -11,6 +11,7 @@
 #include <memory>
 #include <sstream>
 
+#include "corner_model.h"
 #include "tierlift/analytic/blur_model.h"
 #include "tierlift/analytic/taps.h"
 #include "tierlift/asm/parser.h"
@@ -138,12 +139,12 @@ void check_with_half_texel(const Blur& b, uint32_t width = 64, uint32_t height =
   img::Image device = run_cpu(b, s, error);
   ASSERT_TRUE(error.empty()) << error;
   auto taps = taps_of(b, s);
-  auto texel = analytic::intended_texel_taps(taps, noise.width, noise.height);
+  auto texel = tierlift::test::intended_texel_taps(taps, noise.width, noise.height);
   for (size_t k = 0; k < texel.size(); ++k) { // the taps are the ones meant
     EXPECT_EQ(b.vertical ? texel[k].dy : texel[k].dx, b.taps[k]);
     EXPECT_EQ(b.vertical ? texel[k].dx : texel[k].dy, 0);
   }
-  auto conv = analytic::discrete_convolution(texel, noise, clamp_linear_model());
+  auto conv = tierlift::test::discrete_convolution(texel, noise, clamp_linear_model());
   ASSERT_TRUE(conv) << conv.message();
   EXPECT_LE(max_abs_difference(device, *conv), tolerance);
   auto model = analytic::blur_pass(taps, noise, clamp_linear_model());
@@ -159,7 +160,7 @@ void check_without_half_texel(const Blur& b, uint32_t width = 64, uint32_t heigh
   img::Image device = run_cpu(b, s, error);
   ASSERT_TRUE(error.empty()) << error;
   auto taps = taps_of(b, s);
-  auto corner = analytic::corner_model(taps, noise, clamp_linear_model());
+  auto corner = tierlift::test::corner_model(taps, noise, clamp_linear_model());
   ASSERT_TRUE(corner) << corner.message();
   EXPECT_LE(max_abs_difference(device, *corner), tolerance);
   auto model = analytic::blur_pass(taps, noise, clamp_linear_model());
@@ -167,9 +168,9 @@ void check_without_half_texel(const Blur& b, uint32_t width = 64, uint32_t heigh
   EXPECT_LE(max_abs_difference(device, *model), tolerance);
 
   // The device differs from the plain convolution by exactly the predicted amount …
-  auto plain = analytic::discrete_convolution(analytic::intended_texel_taps(taps, width, height),
-                                              noise, clamp_linear_model());
-  auto predicted = analytic::predict_corner_difference(taps, noise, clamp_linear_model());
+  auto plain = tierlift::test::discrete_convolution(
+      tierlift::test::intended_texel_taps(taps, width, height), noise, clamp_linear_model());
+  auto predicted = tierlift::test::predict_corner_difference(taps, noise, clamp_linear_model());
   ASSERT_TRUE(plain && predicted);
   double worst = 0;
   for (size_t i = 0; i < device.rgba.size(); ++i) {
@@ -205,7 +206,7 @@ TEST(HalfTexel, NonPowerOfTwoSizesMeetTheDesignTarget) {
 
 TEST(HalfTexel, Rgba8TargetMeetsTheDesignTarget) {
   // The same pass stored to RGBA8 by the device and by the model: at most 1 LSB apart and
-  // at least 99.9 % of pixels identical (design.md), with and without the half texel.
+  // at least 99.9 % of pixels identical (docs/design.md), with and without the half texel.
   for (bool half : {true, false}) {
     Blur b = listings12();
     img::Image noise = img::builtin_noise(64, 32, 11);

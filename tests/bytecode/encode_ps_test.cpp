@@ -1,4 +1,4 @@
-// Pixel-shader tokens derived by hand from the layout of d3d9-isa.md §11.1/§11.2.
+// Pixel-shader tokens derived by hand from the layout of docs/d3d9-rules.md §11.1/§11.2.
 // Register type split: type bits 0-2 go to token bits 28-30, bits 3-4 to bits 11-12.
 //   r = 0 → 0x0000_0000   v = 1 → 0x1000_0000   c = 2 → 0x2000_0000   t = 3 → 0x3000_0000
 //   oC = 8 (0b01000) → lo 0, hi 1 → 0x0000_0800   s = 10 (0b01010) → 0x2000_0800

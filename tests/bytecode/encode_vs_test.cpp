@@ -1,4 +1,4 @@
-// Vertex-shader tokens derived by hand from the layout of d3d9-isa.md §11.1/§11.2.
+// Vertex-shader tokens derived by hand from the layout of docs/d3d9-rules.md §11.1/§11.2.
 // Register types: v = 1 → 0x1000_0000, c = 2 → 0x2000_0000, a0 = 3 → 0x3000_0000,
 // oPos/oFog/oPts = 4 → 0x4000_0000, oD = 5 → 0x5000_0000, oT = 6 → 0x6000_0000,
 // i = 7 → 0x7000_0000, b = 14 (0b01110) → 0x6000_0800, aL = 15 (0b01111) → 0x7000_0800,

@@ -1,5 +1,5 @@
 // Three spellings where Microsoft's assembler writes tokens of its own, each worked out by
-// hand from the token layout (d3d9-isa.md §9) and matching the streams Wine's d3dcompiler
+// hand from the token layout (docs/d3d9-rules.md §9) and matching the streams Wine's d3dcompiler
 // assembler tests expect from it (dlls/d3dcompiler_43/tests/asm.c):
 //   source token   bit 31 | type[2:0] << 28 | type[4:3] << 11 | swizzle << 16 | mod << 24 | n
 //   c# = type 2 → 0xA0000000;  a0 = type 3 → 0xB0000000;  aL = type 15 → 0xF0000800

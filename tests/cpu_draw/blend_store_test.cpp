@@ -1,4 +1,4 @@
-// Blend modes and the store rule (design.md "Conventions": quantisation happens at store).
+// Blend modes and the store rule (docs/design.md "Conventions": quantisation happens at store).
 #include <gtest/gtest.h>
 
 #include "tierlift/cpu/draw.h"

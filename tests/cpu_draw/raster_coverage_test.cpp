@@ -1,5 +1,5 @@
 // Coverage: the full-screen quad, the top-left fill rule on shared edges and on edges that
-// pass exactly through pixel centres (d3d9-isa.md §9.1). Counting is done with ONE/ONE
+// pass exactly through pixel centres (docs/d3d9-rules.md §9.1). Counting is done with ONE/ONE
 // blending of 1.0 on RGBA32F, so a pixel's value is the number of times it was drawn.
 #include <gtest/gtest.h>
 

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "tierlift/cpu/draw.h"
+#include "tierlift/rounding/rounding.h"
 
 namespace tierlift::cpu {
 namespace {
@@ -23,37 +24,37 @@ float byte(int k) {
 // spacing at 0.5 is 2^-24 = 5.96e-8, so fl32 gives exactly 0.5: even → 0 (exact rule: 1).
 TEST(Rgba8StoreLlvmpipe, ProductRoundingOntoAMidpointGoesToEven) {
   const float half_lsb = 0x1.010102p-9f;
-  EXPECT_EQ(img::unorm8_llvmpipe(half_lsb), 0);
+  EXPECT_EQ(rounding::unorm8_llvmpipe(half_lsb), 0);
   EXPECT_EQ(img::quantize(U8, half_lsb), byte(1));
   // 2.5/255 ≈ 0x1.414142p-7: times 255 = 2.5 + 8.8e-8, spacing at 2.5 is 2^-22 = 2.4e-7 →
   // fl32 = 2.5 → 2 (exact: 3).
-  EXPECT_EQ(img::unorm8_llvmpipe(0x1.414142p-7f), 2);
+  EXPECT_EQ(rounding::unorm8_llvmpipe(0x1.414142p-7f), 2);
   EXPECT_EQ(img::quantize(U8, 0x1.414142p-7f), byte(3));
   // 0.3f = 0x1.333334p-2: times 255 = 76.5000030, spacing at 76.5 is 2^-17 = 7.6e-6 →
   // fl32 = 76.5 → 76 (exact: 77).
-  EXPECT_EQ(img::unorm8_llvmpipe(0.3f), 76);
+  EXPECT_EQ(rounding::unorm8_llvmpipe(0.3f), 76);
   EXPECT_EQ(img::quantize(U8, 0.3f), byte(77));
   // 0.9f = 0x1.cccccc p-1: times 255 = 229.4999939, spacing 2^-16 = 1.5e-5 → fl32 = 229.5 →
   // 230 (exact: 229). The float rule can also round up where the exact one rounds down.
-  EXPECT_EQ(img::unorm8_llvmpipe(0.9f), 230);
+  EXPECT_EQ(rounding::unorm8_llvmpipe(0.9f), 230);
   EXPECT_EQ(img::quantize(U8, 0.9f), byte(229));
 }
 
 TEST(Rgba8StoreLlvmpipe, AgreesWithExactAwayFromMidpointsAndAtTheEnds) {
-  EXPECT_EQ(img::unorm8_llvmpipe(0.5f), 128); // 127.5 exactly: even is 128, as half up
-  EXPECT_EQ(img::unorm8_llvmpipe(0.25f), 64); // 63.75
-  EXPECT_EQ(img::unorm8_llvmpipe(0.1f), 26);  // 25.50000038 → fl32 25.5 → even 26
-  EXPECT_EQ(img::unorm8_llvmpipe(0.05f), 13); // 12.75
-  EXPECT_EQ(img::unorm8_llvmpipe(1.0f), 255);
-  EXPECT_EQ(img::unorm8_llvmpipe(std::nextafter(1.0f, 0.0f)), 255); // 254.99998
-  EXPECT_EQ(img::unorm8_llvmpipe(0.0f), 0);
-  EXPECT_EQ(img::unorm8_llvmpipe(-0.0f), 0);
-  EXPECT_EQ(img::unorm8_llvmpipe(-3.0f), 0);
-  EXPECT_EQ(img::unorm8_llvmpipe(7.0f), 255);
-  EXPECT_EQ(img::unorm8_llvmpipe(std::numeric_limits<float>::infinity()), 255);
-  EXPECT_EQ(img::unorm8_llvmpipe(-std::numeric_limits<float>::infinity()), 0);
-  EXPECT_EQ(img::unorm8_llvmpipe(std::numeric_limits<float>::quiet_NaN()), 0);
-  EXPECT_EQ(img::unorm8_llvmpipe(1e-40f), 0); // denormal: 2.55e-38 rounds to 0
+  EXPECT_EQ(rounding::unorm8_llvmpipe(0.5f), 128); // 127.5 exactly: even is 128, as half up
+  EXPECT_EQ(rounding::unorm8_llvmpipe(0.25f), 64); // 63.75
+  EXPECT_EQ(rounding::unorm8_llvmpipe(0.1f), 26);  // 25.50000038 → fl32 25.5 → even 26
+  EXPECT_EQ(rounding::unorm8_llvmpipe(0.05f), 13); // 12.75
+  EXPECT_EQ(rounding::unorm8_llvmpipe(1.0f), 255);
+  EXPECT_EQ(rounding::unorm8_llvmpipe(std::nextafter(1.0f, 0.0f)), 255); // 254.99998
+  EXPECT_EQ(rounding::unorm8_llvmpipe(0.0f), 0);
+  EXPECT_EQ(rounding::unorm8_llvmpipe(-0.0f), 0);
+  EXPECT_EQ(rounding::unorm8_llvmpipe(-3.0f), 0);
+  EXPECT_EQ(rounding::unorm8_llvmpipe(7.0f), 255);
+  EXPECT_EQ(rounding::unorm8_llvmpipe(std::numeric_limits<float>::infinity()), 255);
+  EXPECT_EQ(rounding::unorm8_llvmpipe(-std::numeric_limits<float>::infinity()), 0);
+  EXPECT_EQ(rounding::unorm8_llvmpipe(std::numeric_limits<float>::quiet_NaN()), 0);
+  EXPECT_EQ(rounding::unorm8_llvmpipe(1e-40f), 0); // denormal: 2.55e-38 rounds to 0
 }
 
 TEST(Rgba8StoreLlvmpipe, ReplaceStoresTheLlvmpipeByte) {

@@ -1,5 +1,6 @@
-// Texture sampling (d3d9-isa.md §10.1, §10.2, §10.6): point vs bilinear on the sheet's
-// worked examples, every address mode on hand-computed indices, sub-texel quantisation.
+// Texture sampling (docs/d3d9-rules.md §10.1, §10.2, §10.6): point vs bilinear on the
+// documentation's worked examples, every address mode on hand-computed indices, sub-texel
+// quantisation.
 #include <gtest/gtest.h>
 
 #include <cmath>

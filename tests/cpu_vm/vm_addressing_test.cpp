@@ -1,4 +1,4 @@
-// Relative constant addressing (d3d9-isa.md §1.3, §3.1–3.2), vertex outputs and their
+// Relative constant addressing (docs/d3d9-rules.md §1.3, §3.1–3.2), vertex outputs and their
 // written masks, and listing defs overriding API constants.
 #include "vm_test_util.h"
 

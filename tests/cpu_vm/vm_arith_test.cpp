@@ -157,7 +157,7 @@ TEST(VmArith, SinCos) {
   std::string body = std::string("mov r4, r2\nsincos r4.xy, r0.x, c4, c5\nmov oT0, r4\n");
   auto prog_text = std::string("vs_2_0\n") + consts +
                    "dcl_position v0\nmov oPos, v0\nmov r0, c0\nmov r2, c2\n" + body;
-  // d3d9-isa.md §5.1 requires two different c# for sincos; the validator currently
+  // docs/d3d9-rules.md §5.1 requires two different c# for sincos; the validator currently
   // reports them as a read-port violation, so this listing skips it (see the report).
   ShaderVM vm(parse(prog_text, false), {});
   auto o = vm.run_vertex({}, bank({{1.5707963f, 0, 0, 0}, {}, {10, 20, 30, 40}}));

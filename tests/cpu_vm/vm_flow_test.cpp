@@ -1,4 +1,4 @@
-// vs_2_0 static flow control (d3d9-isa.md §5.3): loop with aL stepping, rep, nested if,
+// vs_2_0 static flow control (docs/d3d9-rules.md §5.3): loop with aL stepping, rep, nested if,
 // call/callnz/ret, and the bounds that keep a broken program from hanging.
 #include "vm_test_util.h"
 

@@ -1,5 +1,5 @@
 // Source modifiers, swizzles, write masks, instruction modifiers (shift, _sat) in the order
-// of d3d9-isa.md §7, and co-issued pairs (§4.6).
+// of docs/d3d9-rules.md §7, and co-issued pairs (§4.6).
 #include "vm_test_util.h"
 
 using namespace vmtest;

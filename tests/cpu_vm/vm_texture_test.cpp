@@ -1,5 +1,5 @@
 // Texture instructions with a fake TextureUnit that returns the coordinate it was given,
-// so that every coordinate computation can be checked by hand (d3d9-isa.md §5.5–§5.7).
+// so that every coordinate computation can be checked by hand (docs/d3d9-rules.md §5.5–§5.7).
 #include "vm_test_util.h"
 
 using namespace vmtest;

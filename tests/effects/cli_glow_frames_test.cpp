@@ -11,24 +11,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli_fixture.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-class CliGlowFrames : public ::testing::Test {
+class CliGlowFrames : public tierlift::cli_test::CliFixture {
 protected:
-  void SetUp() override {
-    // The CLI is built with the tests; its absence is a broken build, never a skip.
-    ASSERT_TRUE(fs::exists(TIERLIFT_CLI_PATH)) << "tierlift not built: " << TIERLIFT_CLI_PATH;
-    dir = fs::temp_directory_path() /
-          ("tierlift_frames_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-           "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-  }
-  void TearDown() override {
-    if (!dir.empty()) fs::remove_all(dir);
-  }
   // Exit status; stdout and stderr in out and err.
   int run(const std::string& args, std::string& out, std::string& err,
           const std::string& prefix = "") {
@@ -39,18 +29,11 @@ protected:
     err = read(dir / "err.txt");
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   }
-  std::string read(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-  }
   fs::path scene(uint32_t w, uint32_t h) {
     const fs::path p = dir / "scene.json";
     std::ofstream(p) << "{\"size\": [" << w << ", " << h << "]}\n";
     return p;
   }
-  fs::path dir;
 };
 
 TEST_F(CliGlowFrames, JsonReportsSetupAndSteadyFramesPerDevice) {

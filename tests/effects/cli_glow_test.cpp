@@ -8,6 +8,7 @@
 #include <string>
 #include <sys/wait.h>
 
+#include "cli_fixture.h"
 #include "skip_policy.h"
 
 namespace {
@@ -21,28 +22,7 @@ int run_cli(const std::string& args, const fs::path& out_file) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-class CliGlow : public ::testing::Test {
-protected:
-  void SetUp() override {
-    // The CLI is built with the tests; its absence is a broken build, never a skip.
-    ASSERT_TRUE(fs::exists(TIERLIFT_CLI_PATH)) << "tierlift not built: " << TIERLIFT_CLI_PATH;
-    dir = fs::temp_directory_path() /
-          ("tierlift_glow_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-           "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-  }
-  void TearDown() override {
-    if (!dir.empty()) fs::remove_all(dir);
-  }
-  std::string read(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-  }
-  fs::path dir;
-};
+class CliGlow : public tierlift::cli_test::CliFixture {};
 
 TEST_F(CliGlow, CpuRunWritesTheThreeImages) {
   const fs::path log = dir / "log.txt";

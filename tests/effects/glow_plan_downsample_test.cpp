@@ -7,26 +7,18 @@
 #include <string>
 #include <vector>
 
+#include "glow_plan_helpers.h"
 #include "tierlift/effects/glow.h"
 
 namespace tierlift::effects {
 namespace {
 
-GlowPlan plan_for(unsigned n, Tier tier = Tier::Dx9, uint32_t w = 128, uint32_t h = 64) {
-  GlowParams p;
-  p.tier = tier;
-  p.width = w;
-  p.height = h;
-  p.downsample = n;
-  GlowPlan plan = build_glow(p);
-  EXPECT_TRUE(plan) << plan.error;
-  return plan;
-}
+using plan_test::pass_names;
 
-std::vector<std::string> pass_names(const GlowPlan& plan) {
-  std::vector<std::string> v;
-  for (const PassDesc& d : plan.graph.passes) v.push_back(d.name);
-  return v;
+GlowPlan plan_for(unsigned n, Tier tier = Tier::Dx9, uint32_t w = 128, uint32_t h = 64) {
+  GlowParams p = plan_test::sized(n, w, h);
+  p.tier = tier;
+  return plan_test::expect_built(build_glow(p));
 }
 
 std::vector<const PassDesc*> downsample_passes(const GlowPlan& plan) {

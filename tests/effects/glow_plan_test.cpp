@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "glow_plan_helpers.h"
 #include "tierlift/effects/glow.h"
 
 namespace tierlift::effects {
@@ -17,21 +18,12 @@ BlurProfile one_gaussian(double sigma, double weight) {
   return p;
 }
 
-GlowPlan plan_for(unsigned n, bool half = true, uint32_t w = 128, uint32_t h = 64) {
-  GlowParams p;
-  p.width = w;
-  p.height = h;
-  p.downsample = n;
-  p.half_texel = half;
-  GlowPlan plan = build_glow_dx9(p);
-  EXPECT_TRUE(plan) << plan.error;
-  return plan;
-}
+using plan_test::pass_names;
 
-std::vector<std::string> pass_names(const GlowPlan& plan) {
-  std::vector<std::string> v;
-  for (const PassDesc& d : plan.graph.passes) v.push_back(d.name);
-  return v;
+GlowPlan plan_for(unsigned n, bool half = true, uint32_t w = 128, uint32_t h = 64) {
+  GlowParams p = plan_test::sized(n, w, h);
+  p.half_texel = half;
+  return plan_test::expect_built(build_glow_dx9(p));
 }
 
 TEST(GlowPlan, DownsampleOne) {

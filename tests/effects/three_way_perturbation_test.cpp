@@ -9,8 +9,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <random>
 
+#include "three_way_scenes.h"
 #include "tierlift/effects/agreement.h"
 #include "tierlift/effects/analytic_device.h"
 #include "tierlift/effects/default_scene.h"
@@ -19,25 +19,8 @@
 namespace tierlift::effects {
 namespace {
 
-enum class Scene { RandomBinaryAlpha, RandomAlpha, Default };
-
-img::Image make_scene(Scene s, uint32_t& w, uint32_t& h) {
-  if (s == Scene::Default) {
-    w = 96, h = 54;
-    return make_default_scene(w, h);
-  }
-  const bool binary = s == Scene::RandomBinaryAlpha;
-  w = binary ? 37 : 50;
-  h = binary ? 23 : 31;
-  img::Image im(w, h);
-  std::mt19937 rng(binary ? 2026u : 1122u);
-  std::uniform_int_distribution<int> byte(0, 255), coin(0, 1);
-  for (size_t i = 0; i < im.rgba.size(); i += 4) {
-    for (int c = 0; c < 3; ++c) im.rgba[i + c] = float(byte(rng)) / 255.0f;
-    im.rgba[i + 3] = binary ? float(coin(rng)) : float(byte(rng)) / 255.0f;
-  }
-  return im;
-}
+using test_scenes::make_scene;
+using test_scenes::Scene;
 
 // Every blur pass's pixel constants (its weights) scaled by `factor`.
 GlowPlan perturb_blur_weights(GlowPlan plan, float factor) {

@@ -2,7 +2,7 @@
 // blur profiles of one to three Gaussians (σ from 0.05 px up) with or without the sawtooth,
 // downsample 1–4, tier dx9 or dx8, every target format, the half texel on or off, odd sizes,
 // intensity within the tier's range — each run on the interpreter, on lavapipe and by the
-// analytic device, every pair held to design.md's targets on every pass. A fixed seed and a
+// analytic device, every pair held to docs/design.md's targets on every pass. A fixed seed and a
 // bounded count keep it reproducible and within CI time; a failure names the scene.
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
-// Three ways, one answer (design.md): the glow graph run by the interpreter (CpuPassDevice),
+// Three ways, one answer (docs/design.md): the glow graph run by the interpreter (CpuPassDevice),
 // by Vulkan on lavapipe (validation layer on; it must stay silent) and by the analytic
 // device (the passes as math, in double), every pair compared per pass and for the final
-// frame against design.md's targets (img::judge). Then the half-texel rule, shown both ways
+// frame against docs/design.md's targets (img::judge). Then the half-texel rule, shown both ways
 // on the analytic blur passes: with the half texel they equal the plain discrete convolution
 // of their intended texel taps; without it they differ from it by exactly what the corner
 // model predicts.
@@ -12,9 +12,10 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
-#include <random>
 
 #include "../vulkan/vk_test_util.h"
+#include "corner_model.h"
+#include "three_way_scenes.h"
 #include "tierlift/analytic/blur_model.h"
 #include "tierlift/analytic/taps.h"
 #include "tierlift/effects/agreement.h"
@@ -26,26 +27,8 @@
 namespace tierlift::effects {
 namespace {
 
-enum class Scene { RandomBinaryAlpha, RandomAlpha, Default };
-
-// Odd sizes; rgb random multiples of 1/255; alpha in {0, 1} or a random multiple of 1/255.
-img::Image make_scene(Scene s, uint32_t& w, uint32_t& h) {
-  if (s == Scene::Default) {
-    w = 96, h = 54;
-    return make_default_scene(w, h);
-  }
-  const bool binary = s == Scene::RandomBinaryAlpha;
-  w = binary ? 37 : 50;
-  h = binary ? 23 : 31;
-  img::Image im(w, h);
-  std::mt19937 rng(binary ? 2026u : 1122u);
-  std::uniform_int_distribution<int> byte(0, 255), coin(0, 1);
-  for (size_t i = 0; i < im.rgba.size(); i += 4) {
-    for (int c = 0; c < 3; ++c) im.rgba[i + c] = float(byte(rng)) / 255.0f;
-    im.rgba[i + 3] = binary ? float(coin(rng)) : float(byte(rng)) / 255.0f;
-  }
-  return im;
-}
+using test_scenes::make_scene;
+using test_scenes::Scene;
 
 struct Case {
   Tier tier;
@@ -253,7 +236,8 @@ void check_half_texel_rule(Tier tier, bool half_texel) {
     ASSERT_TRUE(ex) << ex.error;
     ASSERT_EQ(ex.taps.size(), per_pass);
     // The intended taps are the profile's first taps along the axis (padding: weight 0).
-    const auto texel_taps = analytic::intended_texel_taps(ex.taps, source.width, source.height);
+    const auto texel_taps =
+        tierlift::test::intended_texel_taps(ex.taps, source.width, source.height);
     for (size_t k = 0; k < per_pass && k < plan.taps.size(); ++k) {
       EXPECT_EQ(vertical ? texel_taps[k].dy : texel_taps[k].dx, plan.taps[k].offset) << k;
       EXPECT_EQ(vertical ? texel_taps[k].dx : texel_taps[k].dy, 0) << k;
@@ -264,11 +248,11 @@ void check_half_texel_rule(Tier tier, bool half_texel) {
     analytic::PassModel m;
     m.conventions = plan.graph.conventions;
     m.target_format = img::Format::RGBA32F;
-    img::ImageResult conv = analytic::discrete_convolution(texel_taps, source, m);
+    img::ImageResult conv = tierlift::test::discrete_convolution(texel_taps, source, m);
     ASSERT_TRUE(conv) << conv.message();
     const img::Image& result = run.run.passes[index].result;
     ASSERT_EQ(result.rgba.size(), conv->rgba.size());
-    auto pred = analytic::predict_corner_difference(ex.taps, source, m);
+    auto pred = tierlift::test::predict_corner_difference(ex.taps, source, m);
     ASSERT_TRUE(pred) << pred.message();
     double worst = 0;
     for (size_t v = 0; v < result.rgba.size(); ++v) {

@@ -1,4 +1,4 @@
-// CPU vs Vulkan on the glow graph: every pass and the final frame within design.md's
+// CPU vs Vulkan on the glow graph: every pass and the final frame within docs/design.md's
 // agreement targets, with the validation layer on (its messages fail the test).
 #include <gtest/gtest.h>
 
@@ -121,7 +121,7 @@ double bilinear(const img::Image& im, double gx, double gy, int c) {
 // RGBA8, downsample 2: the composite reads the 8-bit glow at bilinear fractions ¼ and ¾,
 // so scene + glow often lands exactly halfway between two 8-bit steps (3a + b ≡ 2 mod 4),
 // where D3D9 and Vulkan allow either rounding. The CPU device stores RGBA8 as lavapipe does
-// (fl32(value·255) rounded to even, img::unorm8_llvmpipe) and weights bilinear reads as it
+// (fl32(value·255) rounded to even, rounding::unorm8_llvmpipe) and weights bilinear reads as it
 // does, so every pass and the final frame agree bit for bit, ties included. The test counts
 // the ties (by exact math in double) to show they are there to be rounded.
 TEST_F(GlowVulkanDevice, CompositeAgreesExactlyOnRoundingTies) {

@@ -1,26 +1,22 @@
 // Feeds arbitrary bytes to the PFM reader. Any crash, hang or sanitizer report is a finding,
-// and so is a broken invariant: a rejection carries a message; an accepted image has a
-// size within the limits, alpha 1, and survives encode → decode bit for bit (NaN payloads
-// included: floats are copied, never computed on).
+// and so is a broken invariant: a rejection carries a message, an accepted image has a
+// size within the limits (image_invariants.h), alpha 1, and survives encode → decode bit for bit
+// (NaN payloads included: floats are copied, never computed on).
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <span>
 
+#include "image_invariants.h"
 #include "tierlift/image/io.h"
 
 using namespace tierlift;
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  img::ImageResult r = img::decode_pfm(std::span<const uint8_t>(data, size));
-  if (!r) {
-    if (r.message().empty()) std::abort();
-    return 0;
-  }
-  const img::Image& im = *r;
-  if (im.width == 0 || im.height == 0 || im.width > img::kMaxDimension ||
-      im.height > img::kMaxDimension || im.rgba.size() != size_t{im.width} * im.height * 4)
-    std::abort();
+  const img::ImageResult r = img::decode_pfm(std::span<const uint8_t>(data, size));
+  const img::Image* checked = fuzz::checked_image(r);
+  if (!checked) return 0;
+  const img::Image& im = *checked;
   for (size_t i = 3; i < im.rgba.size(); i += 4)
     if (im.rgba[i] != 1.0f) std::abort();
   img::ImageResult again = img::decode_pfm(img::encode_pfm(im));

@@ -1,4 +1,4 @@
-// img::half_toward_zero: lavapipe's RGBA16F store rule (NUMERICS.md rule 35). Expected
+// rounding::half_toward_zero: lavapipe's RGBA16F store rule (NUMERICS.md rule 35). Expected
 // values by hand from the binary16 layout: 10 fraction bits, steps of 2^(e-10) in [2^e, 2^(e+1)).
 #include <gtest/gtest.h>
 
@@ -6,12 +6,13 @@
 #include <limits>
 
 #include "tierlift/image/image.h"
+#include "tierlift/rounding/rounding.h"
 
 namespace {
 
 using tierlift::img::Format;
-using tierlift::img::half_toward_zero;
 using tierlift::img::quantize;
+using tierlift::rounding::half_toward_zero;
 
 TEST(HalfTowardZero, TruncatesWhereNearestEvenRoundsUp) {
   // In [1, 2) the step is 2^-10. 1 + 0.75·2^-10 lies 3/4 of a step above 1.

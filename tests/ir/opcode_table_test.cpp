@@ -36,7 +36,7 @@ TEST(OpcodeTable, BytecodeLookup) {
 }
 
 TEST(OpcodeTable, AvailabilityMatchesTheSheet) {
-  // d3d9-isa.md §5.8: ps_2_0 has no sge, slt, cnd, dst, lit, expp, logp.
+  // docs/d3d9-rules.md §5.8: ps_2_0 has no sge, slt, cnd, dst, lit, expp, logp.
   for (auto mn : {"sge", "slt", "cnd", "dst", "lit", "expp", "logp"})
     EXPECT_FALSE(legal_in(*find_opcode(mn, Profile::ps_2_0), Profile::ps_2_0)) << mn;
   EXPECT_EQ(find_opcode("exp", Profile::vs_1_1)->slots[profile_index(Profile::vs_1_1)], 10);

@@ -1,5 +1,5 @@
 // as::load_listing: one entry for every form of listing file, told apart by content.
-// Token streams here are written out by hand (d3d9-isa.md §9): ps_1_1 = 0xFFFF0101,
+// Token streams here are written out by hand (docs/d3d9-rules.md §9): ps_1_1 = 0xFFFF0101,
 // mov = 0x01, r0 = 0x800F0000, v0 = 0x90E40000, c0 = 0xA0E40000, end = 0x0000FFFF.
 #include <gtest/gtest.h>
 

@@ -90,7 +90,7 @@ TEST(ParserOperands, SwizzlesReplicateTheLastComponent) {
 }
 
 TEST(ParserOperands, BareRcpRsqSourceReadsX) {
-  // d3d9-isa.md §4.3: rcp/rsq with no subscript use .x; other scalar sources keep what is
+  // docs/d3d9-rules.md §4.3: rcp/rsq with no subscript use .x; other scalar sources keep what is
   // written (the validator then asks for a replicate swizzle).
   EXPECT_EQ(sources("vs_1_1", "rcp r0, r1")[0].swizzle, ir::replicate_swizzle(0));
   EXPECT_EQ(sources("vs_1_1", "rsq r0, r1")[0].swizzle, ir::replicate_swizzle(0));

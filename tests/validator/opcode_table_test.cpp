@@ -1,5 +1,5 @@
 // Profile legality of every opcode in every profile, against expectations written by hand
-// from the ISA documents (d3d9-isa.md §5.1–5.8: the per-instruction version columns and the
+// from the ISA documents (docs/d3d9-rules.md §5.1–5.8: the per-instruction version columns and the
 // availability matrix, which follow the Direct3D 9 instruction pages and vkd3d's tables) —
 // a table of its own, NOT the validator's opcode table. Each row is parsed once in a
 // profile where it exists, then validated against all seven profiles: where the
@@ -21,7 +21,7 @@ struct Sample {
   const char* text; // the statement, put on line 2 after the version line
 };
 
-// One statement per row, written by hand from d3d9-isa.md §5.
+// One statement per row, written by hand from docs/d3d9-rules.md §5.
 const std::map<Opcode, Sample>& samples() {
   static const std::map<Opcode, Sample> s = {
       {Opcode::Nop, {Profile::vs_1_1, "nop"}},

@@ -1,4 +1,4 @@
-// Slot limits, worked out by hand from d3d9-isa.md §2 and the §5 slot columns.
+// Slot limits, worked out by hand from docs/d3d9-rules.md §2 and the §5 slot columns.
 #include "validator_test_util.h"
 
 using tierlift::vtest::has_error;

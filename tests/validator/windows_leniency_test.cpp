@@ -1,6 +1,6 @@
 // What the Direct3D runtimes took beyond the documented rules (NUMERICS.md, "Windows
 // leniency"): taken with a warning that names the rule, rewritten to what Windows ran;
-// rejected under strict. Streams written out by hand (d3d9-isa.md §9): vs_1_1 =
+// rejected under strict. Streams written out by hand (docs/d3d9-rules.md §9): vs_1_1 =
 // 0xFFFE0101; mov = 0x01, rcp = 0x06, exp = 0x0E; oPos = 0xC00F0000, oD0 = 0xD00F0000,
 // r0 = 0x800F0000; c# = 0xA0E4000n with the identity swizzle .xyzw (0xE4).
 #include <gtest/gtest.h>
@@ -64,7 +64,7 @@ TEST(WindowsLeniency, StrictRejectsTheScalarSource) {
   EXPECT_NE(l.rendered.find("s.vso:+0x18: error: "), std::string::npos) << l.rendered;
 }
 
-// Text keeps the assembler's rule: a bare rcp source is .x (d3d9-isa.md §4.3), no warning.
+// Text keeps the assembler's rule: a bare rcp source is .x (docs/d3d9-rules.md §4.3), no warning.
 TEST(WindowsLeniency, BareRcpInTextStillReadsX) {
   Loaded l = load("vs.1.1\nmov oPos, c0\nrcp r0, c1\nmov oD0, r0\n", false);
   ASSERT_TRUE(l.r.program.has_value()) << l.rendered;

@@ -1,6 +1,6 @@
-// Every listing of the shared corpus (/work/shared/corpus: 16 real Irrlicht/tutorial
+// Every listing of the shared corpus (TIERLIFT_SHARED_DIR/corpus: 16 real Irrlicht/tutorial
 // listings) runs on the Vulkan device through tierlift's own SPIR-V and agrees with the CPU
-// device at design.md's RGBA32F target (max abs ≤ 1e-5 × full scale).
+// device at docs/design.md's RGBA32F target (max abs ≤ 1e-5 × full scale).
 //
 // Vertex listings draw the full-screen quad with the pixel stage passing oD0 (no pixel
 // program): the position input (dcl_position, or v0 without dcl) gets the quad corners,

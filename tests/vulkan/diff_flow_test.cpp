@@ -1,4 +1,4 @@
-// Differential tests, vs_2_0 static flow control (d3d9-isa.md §5.3): loop with aL-relative
+// Differential tests, vs_2_0 static flow control (docs/d3d9-rules.md §5.3): loop with aL-relative
 // constant reads (start, step and count from defi and from the constant bank), rep (count 0
 // too), if/else on defb and on bank booleans, call/ret/label, callnz with b# and !b#, and
 // their legal nestings (if inside a loop, a call from a loop whose subroutine reads c[aL]),

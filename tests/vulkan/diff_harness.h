@@ -10,7 +10,7 @@
 //     CPU device interpolates equal values to themselves, so the pixel sees the vertex result.
 //
 // Comparison: NaN matches NaN, ±inf must match exactly, finite values must satisfy
-// |cpu − vk| ≤ 1e-5 · max(1, |cpu|, |vk|) — design.md's RGBA32F target (1e-5 of full scale)
+// |cpu − vk| ≤ 1e-5 · max(1, |cpu|, |vk|) — docs/design.md's RGBA32F target (1e-5 of full scale)
 // applied per value, so one FLT_MAX in the image does not make every other value pass.
 //
 // Denormals: inputs carry real ones (±1e-40 and ±2^-140, in textures, constants and vertex

@@ -82,7 +82,7 @@ TEST_P(Ps20Diff, CpuAndVulkanAgree) {
     DiffSetup s;
     s.seed = seed;
     for (uint32_t k = 0; k < 3; ++k) s.textures.push_back(random_texture(seed * 10 + k, {}));
-    // s3 feeds sincos, whose input must lie in [−π, π] (d3d9-isa.md §5.1).
+    // s3 feeds sincos, whose input must lie in [−π, π] (docs/d3d9-rules.md §5.1).
     s.textures.push_back(random_texture(seed * 10 + 3, {-3.14159f, 3.14159f, 0.0f}));
     s.ps_c = random_constants(seed * 100, 8, {-2, 2, 0.2f});
     s.ps_c[6] = {1e-40f, -1e-40f, 0x1p-140f, -0x1p-140f};

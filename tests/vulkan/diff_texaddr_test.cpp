@@ -1,4 +1,4 @@
-// Differential tests, the ps_1_x texture-address instructions (d3d9-isa.md §5.5, §5.6):
+// Differential tests, the ps_1_x texture-address instructions (docs/d3d9-rules.md §5.5, §5.6):
 // texbem, texbeml, texm3x2pad/texm3x2tex, texm3x2depth, texm3x3pad with texm3x3,
 // texm3x3tex, texm3x3spec and texm3x3vspec, texreg2ar/gb/rgb, texdp3, texdp3tex, texkill,
 // texcoord (ps_1_1–1_3); texcrd, texld with _dz/_dw, bem, texdepth, texkill and `phase`

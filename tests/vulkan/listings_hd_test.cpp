@@ -1,6 +1,6 @@
 // NOT TIMED, but slow (~2–4 s): Listings 1+2 (8 bilinear taps of seeded noise) at 1280×720,
 // a size where u = i/1280 is not a float. The CPU device, with its default
-// ir::Rounding::Llvmpipe, must meet design.md's agreement targets against lavapipe there too:
+// ir::Rounding::Llvmpipe, must meet docs/design.md's agreement targets against lavapipe there too:
 // RGBA32F max abs ≤ 1e-5; RGBA8 at most 1 LSB apart and ≥ 99.9 % of pixels identical; with
 // and without the half-texel offset, with D3D9 and modern pixel centres. (With
 // Rounding::Exact the same pass missed them: 7.5e-5 and 99.50 % at 1920×1080.) The CPU device

@@ -1,5 +1,5 @@
 // The article's Listings 1+2 (vs_2_0/ps_2_0, 8 taps) and 3+4 (vs_1_1/ps_1_3, 4 taps) over
-// seeded noise: the CPU device and the Vulkan device agree at design.md's targets, with the
+// seeded noise: the CPU device and the Vulkan device agree at docs/design.md's targets, with the
 // half-texel offset (taps on texel centres) and without it (taps on texel corners), and
 // pruning (Listing 1 linked with Listing 4) does not change the image.
 #include <fmt/format.h>
@@ -177,7 +177,7 @@ TEST_F(VulkanTest, PruningKeepsTheImage) {
 // (lavapipe's float-texture path does not quantise weights, whatever subTexelPrecisionBits
 // it reports). Measured: RGBA32F bit-identical, RGBA8 ≥ 99.99 % identical (the rest 1 LSB:
 // float→unorm8 conversion). With Rounding::Exact and 8 sub-texel bits it was 7.5e-5 and
-// 99.50 %, missing design.md's targets.
+// 99.50 %, missing docs/design.md's targets.
 TEST_F(VulkanTest, Listing2FullHdTiming) {
   if (!std::getenv("TIERLIFT_VK_TIMING")) GTEST_SKIP() << "set TIERLIFT_VK_TIMING=1";
   cpu::Pass pass = make_pass(blur_request(8, 0.5, img::Format::RGBA8, 1920, 1080), 0);

@@ -1,4 +1,4 @@
-// Bit layout of Direct3D 9 shader tokens (d3d9-isa.md §11.1), shared by the writer and the
+// Bit layout of Direct3D 9 shader tokens (docs/d3d9-rules.md §11.1), shared by the writer and the
 // reader so the two directions cannot drift apart. Every field is a mask and a shift; the
 // helpers only ever shift unsigned values, so no input can reach undefined behaviour.
 #pragma once

@@ -132,7 +132,7 @@ bool Parser::instruction(const Token& mn, std::string_view base, std::string_vie
   for (; k < ops.size(); ++k) {
     ir::SrcOperand src;
     if (!to_src(ops[k], src)) return false;
-    // rcp and rsq written without a swizzle read their x component (d3d9-isa.md §4.3: "for
+    // rcp and rsq written without a swizzle read their x component (docs/d3d9-rules.md §4.3: "for
     // rcp and rsq with no subscript, the assembler uses .x"). The IR holds that replicate
     // swizzle, so validator, interpreter, codegen and bytecode all agree on it. Other scalar
     // sources must name their component; the validator says so.

@@ -1,5 +1,5 @@
 // Which register files a profile has, how many registers each holds, and which are
-// read-only or write-only (d3d9-isa.md §2–§3, counts from ir::limits()).
+// read-only or write-only (docs/d3d9-rules.md §2–§3, counts from ir::limits()).
 #pragma once
 
 #include "context.h"

@@ -1,6 +1,6 @@
-// Co-issue ("+") legality (d3d9-isa.md §4.6): ps_1_x only; two arithmetic halves, one writing
-// colour (.rgb exactly in 1_1–1_3, a subset of .rgb in 1_4), the other alpha; no dp4, bem or
-// texture instruction; dp3 only in the colour half.
+// Co-issue ("+") legality (docs/d3d9-rules.md §4.6): ps_1_x only; two arithmetic halves, one
+// writing colour (.rgb exactly in 1_1–1_3, a subset of .rgb in 1_4), the other alpha; no dp4, bem
+// or texture instruction; dp3 only in the colour half.
 #include "context.h"
 
 namespace tierlift::as::detail {

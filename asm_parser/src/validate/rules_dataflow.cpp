@@ -70,7 +70,7 @@ struct Flow {
     if (!ins.dst) return;
     const ir::DstOperand& d = *ins.dst;
     // texkill tests .xyz in ps_1_4 and all four components in ps_2_0 (doc conflict "first
-    // three" vs translators' four; the sheet follows the translators).
+    // three" vs translators' four; tierlift follows the translators).
     if (ins.op == Opcode::TexKill && !c.ps11_13())
       need(d.file, d.index, c.ps14() ? 0x7 : 0xF, d.loc);
     if (ins.op == Opcode::TexDepth) need(d.file, d.index, 0x3, d.loc);
@@ -85,8 +85,8 @@ struct Flow {
     if (!ins.dst || !tracked(ins.dst->file)) return;
     Key key{ins.dst->file, ins.dst->index};
     // texdepth (r5) and texm3x2depth (t(m+1)) leave their register unusable afterwards.
-    // (A texm3x2pad/texm3x3pad register reads as never written: the sheet calls reading it
-    // undefined, unconfirmed.)
+    // (A texm3x2pad/texm3x3pad register reads as never written: the documentation calls
+    // reading it undefined, unconfirmed.)
     if (ins.op == Opcode::TexDepth || ins.op == Opcode::TexM3x2Depth) {
       written[key] = 0;
       killed[key] = std::string(mnemonic(ins));
@@ -97,7 +97,7 @@ struct Flow {
     if (ins.dst->file == RegFile::Temp) alpha_lost[ins.dst->index] = false;
   }
 
-  // ps_2_0 without NODEPENDENTREADLIMIT: at most 4 levels of texture reads (d3d9-isa.md
+  // ps_2_0 without NODEPENDENTREADLIMIT: at most 4 levels of texture reads (docs/d3d9-rules.md
   // §5.7). The doc's second trigger (a texld whose destination was written before) is not
   // modelled: only the data dependence through src0 counts.
   void dependent_reads(const ir::Instruction& ins) {

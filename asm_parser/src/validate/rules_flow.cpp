@@ -1,4 +1,4 @@
-// vs_2_0 static flow control (d3d9-isa.md §5.3): if/else/endif, loop/endloop and rep/endrep
+// vs_2_0 static flow control (docs/d3d9-rules.md §5.3): if/else/endif, loop/endloop and rep/endrep
 // nest properly; loop/rep nest one deep; calls go forward to defined labels and do not nest;
 // a label directly follows a ret; at most 16 static flow-control instructions; aL only
 // inside a loop; loop/rep counters within their ranges.

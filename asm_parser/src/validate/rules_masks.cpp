@@ -1,5 +1,5 @@
 // Destination write masks: which masks a profile allows, and the masks particular
-// instructions require (d3d9-isa.md §4.4, §3.1, §3.5).
+// instructions require (docs/d3d9-rules.md §4.4, §3.1, §3.5).
 #include "context.h"
 #include "registers_util.h"
 
@@ -56,7 +56,7 @@ std::string instruction_rule(const Ctx& c, const ir::Instruction& ins, uint8_t m
       return fmt::format("dp3 in {} writes .rgb or .rgba, not {}", c.pname(), got);
     return {};
   case Opcode::Bem: return m == XY ? "" : fmt::format("bem writes .rg (.xy) only, not {}", got);
-  // texcrd forms (d3d9-isa.md §4.5): rM.rgb from tN[.xyz|.xyw], rM.rg from tN_dw.xyw.
+  // texcrd forms (docs/d3d9-rules.md §4.5): rM.rgb from tN[.xyz|.xyw], rM.rg from tN_dw.xyw.
   case Opcode::TexCrd: {
     bool dw = !ins.src.empty() && ins.src[0].mod == ir::SrcMod::Dw;
     if (dw) return m == XY ? "" : fmt::format("texcrd with _dw writes .rg (.xy), not {}", got);

@@ -1,5 +1,5 @@
 // Instruction modifiers (_sat, shifts, _pp, _centroid), source modifiers and source swizzles,
-// each gated by profile and instruction (d3d9-isa.md §4.1–§4.3, §4.5, §5.5).
+// each gated by profile and instruction (docs/d3d9-rules.md §4.1–§4.3, §4.5, §5.5).
 #include <map>
 
 #include "context.h"
@@ -194,7 +194,7 @@ std::string swizzle_problem(const Ctx& c, const ir::Instruction& ins, size_t k) 
 }
 
 // ps_1_4: every texld/texcrd read of one t# uses the same selector (.xyz or .xyw; _dw.xyw
-// counts as .xyw). d3d9-isa.md §3.4.
+// counts as .xyw). docs/d3d9-rules.md §3.4.
 void check_t_selectors(Ctx& c) {
   std::map<uint32_t, uint8_t> first;
   for (const ir::Instruction& ins : c.prog.code) {

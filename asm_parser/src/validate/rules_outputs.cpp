@@ -1,4 +1,4 @@
-// Output-register rules (d3d9-isa.md §3.1, §3.5, §6): vs writes oPos, oT# masks are .x/.xy/
+// Output-register rules (docs/d3d9-rules.md §3.1, §3.5, §6): vs writes oPos, oT# masks are .x/.xy/
 // .xyz/.xyzw and oT0..oT(n-1) are written with oTn; ps_2_0 writes oC# and oDepth with a plain
 // mov, each at most once, oC0 always and oC0..oC(n-1) with oCn; ps_1_x's output is r0.
 #include <map>

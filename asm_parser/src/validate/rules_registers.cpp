@@ -76,7 +76,7 @@ void check_access(Ctx& c, const ir::Instruction& ins) {
     else if (s.file == RegFile::Addr)
       c.error(s.loc, "register-access", "a0 can only be read as a relative index, c[a0.x + n]");
   }
-  // ps_1_4: t# holds coordinates that only the texture unit reads (d3d9-isa.md §3.4).
+  // ps_1_4: t# holds coordinates that only the texture unit reads (docs/d3d9-rules.md §3.4).
   if (c.ps14() && !is_texture_op(ins))
     for (const ir::SrcOperand& s : ins.src)
       if (s.file == RegFile::Texture)
@@ -97,8 +97,8 @@ void collect(const ir::Instruction& ins, Reads& reads) {
 void check_ports(Ctx& c, const ir::Instruction& ins) {
   Reads reads(16);
   collect(ins, reads);
-  // c# in vs_2_0/ps_2_0: the docs give "read ports 1, reads/inst 2" (d3d9-isa.md §3.2,
-  // unconfirmed). The sheet's literal reading (one distinct constant) would reject every
+  // c# in vs_2_0/ps_2_0: the docs give "read ports 1, reads/inst 2" (docs/d3d9-rules.md §3.2,
+  // unconfirmed). The literal reading (one distinct constant) would reject every
   // sincos, which must name two different constants in one instruction (§5.1), so the
   // "reads/inst 2" reading is taken: up to 2 distinct c# per instruction. vs_1_1 keeps its
   // well-known single constant; ps_1_x its 2.

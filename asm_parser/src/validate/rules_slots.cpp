@@ -1,4 +1,4 @@
-// Instruction-slot limits (d3d9-isa.md §2): totals for vertex shaders; texture and
+// Instruction-slot limits (docs/d3d9-rules.md §2): totals for vertex shaders; texture and
 // arithmetic slots counted apart in pixel shaders (ps_1_4 per phase); macro sizes and
 // texbeml's extra arithmetic slot from the opcode table; a co-issued pair costs one slot.
 #include "context.h"
@@ -63,7 +63,7 @@ void check_pixel(Ctx& c) {
   }
 }
 
-// ps_1_2/1_3: at most 3 cmp and 4 dp4 per shader (d3d9-isa.md §5.1, §5.4).
+// ps_1_2/1_3: at most 3 cmp and 4 dp4 per shader (docs/d3d9-rules.md §5.1, §5.4).
 void check_counts(Ctx& c) {
   if (c.target != ir::Profile::ps_1_2 && c.target != ir::Profile::ps_1_3) return;
   int cmp = 0, dp4 = 0;

@@ -1,4 +1,4 @@
-// Operand rules of particular instructions (d3d9-isa.md §5, §6): cnd's r0.a, cmp and matrix
+// Operand rules of particular instructions (docs/d3d9-rules.md §5, §6): cnd's r0.a, cmp and matrix
 // aliasing, sincos constants, crs/nrm/sgn temps, bem, a0 writers, texture-instruction
 // register files, texdepth's r5.
 #include <set>

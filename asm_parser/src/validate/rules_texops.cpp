@@ -1,4 +1,4 @@
-// ps_1_1–1_3 texture-address instruction rules (d3d9-isa.md §5.5): the source t(n) comes
+// ps_1_1–1_3 texture-address instruction rules (docs/d3d9-rules.md §5.5): the source t(n) comes
 // before the destination t(m) (m > n), texm3x2/texm3x3 pads are followed by their final row
 // on the next registers with the same source, and a t# read by texbem/texbeml may later be
 // read only by another texbem/texbeml.

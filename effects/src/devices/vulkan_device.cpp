@@ -1,4 +1,4 @@
-// The Vulkan device behind the PassDevice interface (built only with tierlift_vulkan): the
+// The Vulkan device behind the PassDevice interface: the
 // graph's textures live in a vulkan::TextureSet for the run, so passes read and write device
 // memory and nothing comes back to the host until read_texture asks for it.
 //
@@ -8,7 +8,6 @@
 // per frame instead of a submit and a wait per pass.
 #include "tierlift/effects/device.h"
 
-#if TIERLIFT_HAVE_VULKAN
 #include <fmt/format.h>
 
 #include "tierlift/effects/run_graph.h"
@@ -116,4 +115,3 @@ std::unique_ptr<PassDevice> make_vulkan_pass_device(vulkan::Device& device) {
 }
 
 } // namespace tierlift::effects
-#endif

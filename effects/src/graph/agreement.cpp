@@ -35,7 +35,7 @@ std::vector<size_t> explained_pixels(const img::Image& a, const img::Image& b,
   return out;
 }
 
-// design.md's targets per format (img::agreement_tolerance), and for RGBA16F also RGBA8's
+// docs/design.md's targets per format (img::agreement_tolerance), and for RGBA16F also RGBA8's
 // ≥ 99.9 % identical pixels: every way stores the same toward-zero half (the analytic model
 // settles the store in the devices' fp32 arithmetic where its double value cannot), so a
 // larger share of differing pixels is an error in the math, not rounding. A blur weight off

@@ -1,10 +1,8 @@
 // Whole-file reads (within the image cap), safe writes (tierlift::io), and format dispatch
-// by content or extension.
-#include <cctype>
+// by content.
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <fmt/format.h>
 
 #include "tierlift/image/io.h"
@@ -97,13 +95,6 @@ ir::Status write_pfm(const std::string& path, const Image& image, PfmChannels ch
   if (bytes.empty())
     return ir::fail(path, std::string(kWriteRule), path + ": cannot encode PFM (empty image)");
   return write_file_atomic(path, bytes);
-}
-
-ir::Status write_image(const std::string& path, const Image& image) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext == ".pfm") return write_pfm(path, image);
-  return write_png(path, image);
 }
 
 } // namespace tierlift::img

@@ -1,6 +1,6 @@
 // Text → ir::Program. Runs the D3DX-style preprocessor, then lexes and parses one listing.
 //
-// Accepted syntax (d3d9-isa.md §1, §4):
+// Accepted syntax (docs/d3d9-rules.md §1, §4):
 // - Case: mnemonics, modifiers, register names, swizzles, usages and the version are read
 //   case-insensitively ("MOV", "oPos" = "opos", "R0.XYZW"). Wine's D3DX lexer takes lower
 //   case only and whether Microsoft's did is unconfirmed; accepting both loses nothing, and

@@ -1,4 +1,4 @@
-// The profile rules of d3d9-isa.md §6, checked on an ir::Program. Each message names the
+// The profile rules of docs/d3d9-rules.md §6, checked on an ir::Program. Each message names the
 // rule and the limit ("ps_1_3 allows 8 arithmetic slots; this instruction is the 9th").
 //
 // Every problem is reported in one run through the sink, with the offending operand's

@@ -46,6 +46,7 @@ public:
   Id type_int(bool is_signed);
   Id type_vector(Id component, uint32_t count);
   Id type_array(Id element, Id length_const);
+  Id type_runtime_array(Id element);
   Id type_struct(std::span<const Id> members);
   Id type_pointer(spv::StorageClass sc, Id pointee);
   Id type_function(Id ret, std::span<const Id> params = {});
@@ -59,9 +60,8 @@ public:
   Id const_bool(bool v);
   Id const_composite(Id type, std::span<const Id> parts);
   Id const_null(Id type);
-  // Specialization constants are never deduplicated; the caller decorates SpecId.
+  // A specialization constant is never deduplicated; the caller decorates SpecId.
   Id spec_const_float(float default_value);
-  Id spec_const_bool(bool default_value);
 
   // --- global variables ------------------------------------------------------------------
   // id = 0: a fresh id; otherwise an id reserved earlier with fresh_id() (so a variable whose
@@ -70,8 +70,6 @@ public:
 
   // --- functions and blocks --------------------------------------------------------------
   Id begin_function(Id ret_type, Id fn_type, Id fn_id = 0);
-  // Function-storage variable: placed at the top of the function's first block.
-  Id function_variable(Id pointer_type, Id initializer = 0);
   void begin_block(Id label);
   void end_function();
   bool block_open() const { return block_open_; }
@@ -101,12 +99,10 @@ private:
   Words capabilities_, extensions_, imports_, memory_model_, entry_points_, exec_modes_;
   Words debug_, annotations_, globals_, functions_;
   std::map<Words, Id> dedup_;
-  // The function under construction: its header, first-block variables and body.
-  Words fn_header_, fn_vars_, fn_body_;
-  bool in_function_ = false, block_open_ = false, first_block_ = false;
+  // The function under construction: its OpFunction and its blocks.
+  Words fn_header_, fn_body_;
+  bool in_function_ = false, block_open_ = false;
   std::vector<uint32_t> caps_seen_;
 };
-
-bool is_block_terminator(spv::Op opcode);
 
 } // namespace tierlift::codegen

@@ -1,5 +1,5 @@
 // Two devices' runs of the same graph compared pass by pass (each pass's target right
-// after it) and for the final frame, judged against design.md's agreement targets for the
+// after it) and for the final frame, judged against docs/design.md's agreement targets for the
 // target's format (img::judge), with RGBA8 rounding midpoints counted as agreeing.
 #pragma once
 

@@ -1,4 +1,4 @@
-// The analytic device: the third way of design.md's "Three ways, one answer". It runs an
+// The analytic device: the third way of docs/design.md's "Three ways, one answer". It runs an
 // effect graph's passes as math, in double, sharing no code with the CPU device:
 //   * AnalyticForm::Linear — the taps (sampler stage, coordinate scale and offset, weight)
 //     are read off that pass's own listings and constants by analytic::extract_taps, never from

@@ -1,4 +1,4 @@
-// The conventions every device must state explicitly (design.md "Conventions"): one struct,
+// The conventions every device must state explicitly (docs/design.md "Conventions"): one struct,
 // one place. The interpreter, the analytic model and the Vulkan device all read it.
 #pragma once
 
@@ -9,13 +9,14 @@ enum class PixelCenter {
   Modern, // centred at (i + 0.5, j + 0.5) as in D3D10+, GL, Vulkan
 };
 
-// Where D3D9 leaves the rounding to the hardware — attribute interpolation and the bilinear
-// filter's arithmetic — the CPU device either reproduces Mesa's llvmpipe (lavapipe) bit for
-// bit or computes exactly. A device-matching choice: the Vulkan device ignores it (but for
+// Where D3D9 leaves the rounding to the hardware — attribute interpolation, the bilinear
+// filter's arithmetic, the stores — the CPU device either reproduces Mesa's llvmpipe
+// (lavapipe) bit for bit or computes exactly; tierlift/rounding/rounding.h holds both, rule
+// beside rule. A device-matching choice: the Vulkan device ignores it (but for
 // the def denormals the code generator loads flushed under Llvmpipe).
 enum class Rounding {
   // Float plane equations a0 + dadx·x + dady·y evaluated with FMA, times 1/w; bilinear
-  // weights frac(fl32(u·N) − 0.5) in float, lerps with FMA (runtime/devices/cpu/.../draw.h).
+  // weights frac(fl32(u·N) − 0.5) in float, lerps with FMA.
   // Denormals flushed in and out of every operation, def denormals loaded as zeros, on the
   // CPU device and in the emitted SPIR-V (NUMERICS.md rule 13).
   Llvmpipe,

@@ -1,5 +1,5 @@
 // Shader profiles (vs_1_1 … ps_2_0), their version tokens and their register/slot limits.
-// Limits are the facts of d3d9-isa.md §2–§3; everything that checks a limit reads them here.
+// Limits are the facts of docs/d3d9-rules.md §2–§3; everything that checks a limit reads them here.
 #pragma once
 
 #include <cstdint>

@@ -15,7 +15,7 @@
 
 namespace tierlift::ir {
 
-// Source modifiers, numbered as in bytecode bits 24–27 (d3d9-isa.md §4.2).
+// Source modifiers, numbered as in bytecode bits 24–27 (docs/d3d9-rules.md §4.2).
 enum class SrcMod : uint8_t {
   None = 0,
   Neg = 1,

@@ -32,7 +32,7 @@ enum class RegFile : uint8_t {
 
 inline constexpr uint32_t kRastPos = 0, kRastFog = 1, kRastPts = 2;
 
-// Bytecode register type (d3d9-isa.md §11.2).
+// Bytecode register type (docs/d3d9-rules.md §11.2).
 uint8_t bytecode_regtype(RegFile f);
 std::optional<RegFile> regfile_from_bytecode(uint8_t type, ShaderStage stage);
 

@@ -19,7 +19,7 @@ std::string where(const ir::SourceLoc& loc);
 std::array<double, 4> constant_value(const ir::Program& p, const std::vector<Vec4>& api,
                                      uint32_t index, bool ps1x_clamp, bool* clamped);
 
-// Source modifiers that are affine maps x → scale·x + bias (d3d9-isa.md §4.2).
+// Source modifiers that are affine maps x → scale·x + bias (docs/d3d9-rules.md §4.2).
 struct AffineMod {
   double scale = 1, bias = 0;
 };

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "tierlift/rounding/rounding.h"
 #include "vk_internal.h"
 
 namespace tierlift::vulkan {
@@ -197,37 +198,6 @@ uint32_t bytes_per_pixel(img::Format f) {
   return 16;
 }
 
-uint16_t float_to_half(float value) {
-  uint32_t x = std::bit_cast<uint32_t>(value);
-  uint32_t sign = (x >> 16) & 0x8000u;
-  uint32_t exp = (x >> 23) & 0xFFu;
-  uint32_t man = x & 0x7FFFFFu;
-  if (exp == 0xFF) return static_cast<uint16_t>(sign | 0x7C00u | (man ? 0x200u | (man >> 13) : 0));
-  int e = static_cast<int>(exp) - 127 + 15;
-  if (e >= 31) return static_cast<uint16_t>(sign | 0x7C00u);
-  uint32_t m = man | 0x800000u;     // implicit bit
-  int shift = e <= 0 ? 14 - e : 13; // subnormal halves shift further
-  if (shift > 24) return static_cast<uint16_t>(sign);
-  uint32_t half = m >> shift;
-  uint32_t rest = m & ((1u << shift) - 1u), mid = 1u << (shift - 1);
-  if (rest > mid || (rest == mid && (half & 1u))) ++half; // nearest even; may carry into exp
-  uint32_t bits = e <= 0 ? half : ((static_cast<uint32_t>(e) << 10) + (half - 0x400u));
-  return static_cast<uint16_t>(sign | bits);
-}
-
-float half_to_float(uint16_t h) {
-  uint32_t sign = (h & 0x8000u) ? 1u : 0u;
-  uint32_t exp = (h >> 10) & 0x1Fu, man = h & 0x3FFu;
-  float v;
-  if (exp == 0)
-    v = std::ldexp(static_cast<float>(man), -24);
-  else if (exp == 31)
-    v = man ? std::numeric_limits<float>::quiet_NaN() : INFINITY;
-  else
-    v = std::ldexp(static_cast<float>(man | 0x400u), static_cast<int>(exp) - 25);
-  return sign ? -v : v;
-}
-
 void pack_pixels(const img::Image& image, void* dst) {
   size_t n = image.rgba.size();
   switch (image.format) {
@@ -242,7 +212,7 @@ void pack_pixels(const img::Image& image, void* dst) {
   }
   case img::Format::RGBA16F: {
     auto* p = static_cast<uint16_t*>(dst);
-    for (size_t i = 0; i < n; ++i) p[i] = float_to_half(image.rgba[i]);
+    for (size_t i = 0; i < n; ++i) p[i] = rounding::half_bits(image.rgba[i]);
     break;
   }
   case img::Format::RGBA32F: std::memcpy(dst, image.rgba.data(), n * sizeof(float)); break;
@@ -253,19 +223,14 @@ void unpack_pixels(const void* src, img::Image& image) {
   size_t n = image.rgba.size();
   switch (image.format) {
   case img::Format::RGBA8: {
-    // k/255.0f from a table: the same correctly rounded values, without a division each.
-    static const std::array<float, 256> levels = [] {
-      std::array<float, 256> t{};
-      for (uint32_t k = 0; k < 256; ++k) t[k] = static_cast<float>(k) / 255.0f;
-      return t;
-    }();
+    const std::array<float, 256>& levels = rounding::unorm8_levels(); // k/255.0f
     auto* p = static_cast<const uint8_t*>(src);
     for (size_t i = 0; i < n; ++i) image.rgba[i] = levels[p[i]];
     break;
   }
   case img::Format::RGBA16F: {
     auto* p = static_cast<const uint16_t*>(src);
-    for (size_t i = 0; i < n; ++i) image.rgba[i] = half_to_float(p[i]);
+    for (size_t i = 0; i < n; ++i) image.rgba[i] = rounding::half_from_bits(p[i]);
     break;
   }
   case img::Format::RGBA32F: std::memcpy(image.rgba.data(), src, n * sizeof(float)); break;

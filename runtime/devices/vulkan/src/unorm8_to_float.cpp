@@ -1,24 +1,18 @@
 // RGBA8 UNORM → RGBA32F on the device through a table of k/255.0f (unorm8_to_float.h).
 #include "unorm8_to_float.h"
 
-#include <cstring>
-#include <initializer_list>
+#include <algorithm>
+#include <array>
 
 #include <spirv/unified1/spirv.hpp11>
+
+#include "tierlift/codegen/spirv_builder.h"
+#include "tierlift/rounding/rounding.h"
 
 namespace tierlift::vulkan {
 namespace {
 
 constexpr uint32_t kLocalSize = 8;
-
-// One instruction: word count and opcode, then the operands.
-void ins(std::vector<uint32_t>& w, spv::Op op, std::initializer_list<uint32_t> operands) {
-  w.push_back(static_cast<uint32_t>(operands.size() + 1) << 16 | static_cast<uint32_t>(op));
-  w.insert(w.end(), operands.begin(), operands.end());
-}
-template <typename E> constexpr uint32_t u(E e) {
-  return static_cast<uint32_t>(e);
-}
 
 } // namespace
 
@@ -37,124 +31,91 @@ std::vector<uint32_t> unorm8_to_float_spirv() {
   //                                         table[(t >> 16) & 255], table[t >> 24]);
   //     }
   //   }
-  // Result ids, in order of definition.
-  // clang-format off
-  enum : uint32_t {
-    kVoid = 1, kFn, kBool, kUint, kFloat, kV3Uint, kV4Float,                          // types
-    kRtUint, kIn, kRtFloat, kTable, kRtV4, kOut, kSize,                               // blocks
-    kPtrIn, kPtrTable, kPtrOut, kPtrSize, kPtrGid, kPtrSbUint, kPtrSbFloat, kPtrSbV4, kPtrPcUint,
-    kC0, kC1, kC8, kC16, kC24, kC255,                                                 // constants
-    kGid, kSrc, kTab, kDst, kSizeVar,                                                 // variables
-    kMain, kEntry, kBody, kEnd,                                                       // function
-    kId, kX, kY, kPw, kW, kPh, kH, kInX, kInY, kInside,                               // code
-    kRow, kI, kPt, kT, kR, kG0, kG, kB0, kB, kA,
-    kPr, kFr, kPg, kFg, kPb, kFb, kPa, kFa, kV, kPd,
-    kBound
-  };
-  // clang-format on
-  std::vector<uint32_t> w = {spv::MagicNumber, 0x00010300, 0, kBound, 0};
+  using spv::Decoration;
   using spv::Op;
-  ins(w, Op::OpCapability, {u(spv::Capability::Shader)});
-  ins(w, Op::OpMemoryModel, {u(spv::AddressingModel::Logical), u(spv::MemoryModel::GLSL450)});
-  // "main" as a nul-terminated little-endian string: two words.
-  ins(w, Op::OpEntryPoint, {u(spv::ExecutionModel::GLCompute), kMain, 0x6e69616du, 0u, kGid});
-  ins(w, Op::OpExecutionMode, {kMain, u(spv::ExecutionMode::LocalSize), kLocalSize, kLocalSize, 1});
+  using SC = spv::StorageClass;
+  codegen::SpirvBuilder b;
+  b.capability(spv::Capability::Shader);
+  b.memory_model(spv::AddressingModel::Logical, spv::MemoryModel::GLSL450);
 
-  const uint32_t set = u(spv::Decoration::DescriptorSet), binding = u(spv::Decoration::Binding);
-  const uint32_t offset = u(spv::Decoration::Offset), block = u(spv::Decoration::Block);
-  ins(w, Op::OpDecorate, {kGid, u(spv::Decoration::BuiltIn), u(spv::BuiltIn::GlobalInvocationId)});
-  ins(w, Op::OpDecorate, {kRtUint, u(spv::Decoration::ArrayStride), 4});
-  ins(w, Op::OpMemberDecorate, {kIn, 0, offset, 0});
-  ins(w, Op::OpDecorate, {kIn, block});
-  ins(w, Op::OpDecorate, {kRtFloat, u(spv::Decoration::ArrayStride), 4});
-  ins(w, Op::OpMemberDecorate, {kTable, 0, offset, 0});
-  ins(w, Op::OpDecorate, {kTable, block});
-  ins(w, Op::OpDecorate, {kRtV4, u(spv::Decoration::ArrayStride), 16});
-  ins(w, Op::OpMemberDecorate, {kOut, 0, offset, 0});
-  ins(w, Op::OpDecorate, {kOut, block});
-  ins(w, Op::OpMemberDecorate, {kSize, 0, offset, 0});
-  ins(w, Op::OpMemberDecorate, {kSize, 1, offset, 4});
-  ins(w, Op::OpDecorate, {kSize, block});
-  ins(w, Op::OpDecorate, {kSrc, u(spv::Decoration::NonWritable)});
-  ins(w, Op::OpDecorate, {kTab, u(spv::Decoration::NonWritable)});
-  for (auto [var, b] : {std::pair{kSrc, 0u}, {kTab, 1u}, {kDst, 2u}}) {
-    ins(w, Op::OpDecorate, {var, set, 0});
-    ins(w, Op::OpDecorate, {var, binding, b});
+  const codegen::Id t_void = b.type_void(), t_bool = b.type_bool(), t_uint = b.type_int(false),
+                    t_float = b.type_float();
+  const codegen::Id t_v3uint = b.type_vector(t_uint, 3), t_v4float = b.type_vector(t_float, 4);
+  // One storage block per binding: a struct holding a runtime array of `element`.
+  auto storage_block = [&](codegen::Id element, uint32_t stride, uint32_t binding, bool readonly) {
+    const codegen::Id array = b.type_runtime_array(element);
+    b.decorate(array, Decoration::ArrayStride, stride);
+    const codegen::Id members[] = {array};
+    const codegen::Id block = b.type_struct(members);
+    b.member_decorate(block, 0, Decoration::Offset, 0u);
+    b.decorate(block, Decoration::Block);
+    const codegen::Id var =
+        b.global_variable(b.type_pointer(SC::StorageBuffer, block), SC::StorageBuffer);
+    if (readonly) b.decorate(var, Decoration::NonWritable);
+    b.decorate(var, Decoration::DescriptorSet, 0u);
+    b.decorate(var, Decoration::Binding, binding);
+    return var;
+  };
+  const codegen::Id src = storage_block(t_uint, 4, 0, true);
+  const codegen::Id tab = storage_block(t_float, 4, 1, true);
+  const codegen::Id dst = storage_block(t_v4float, 16, 2, false);
+  const codegen::Id size_members[] = {t_uint, t_uint};
+  const codegen::Id size_block = b.type_struct(size_members);
+  b.member_decorate(size_block, 0, Decoration::Offset, 0u);
+  b.member_decorate(size_block, 1, Decoration::Offset, 4u);
+  b.decorate(size_block, Decoration::Block);
+  const codegen::Id size =
+      b.global_variable(b.type_pointer(SC::PushConstant, size_block), SC::PushConstant);
+  const codegen::Id gid = b.global_variable(b.type_pointer(SC::Input, t_v3uint), SC::Input);
+  b.decorate(gid, Decoration::BuiltIn, static_cast<uint32_t>(spv::BuiltIn::GlobalInvocationId));
+  const codegen::Id c0 = b.const_uint(0), c1 = b.const_uint(1), c255 = b.const_uint(255);
+
+  const codegen::Id main = b.begin_function(t_void, b.type_function(t_void));
+  const codegen::Id interface[] = {gid};
+  b.entry_point(spv::ExecutionModel::GLCompute, main, "main", interface);
+  const uint32_t local_size[] = {kLocalSize, kLocalSize, 1};
+  b.execution_mode(main, spv::ExecutionMode::LocalSize, local_size);
+  const codegen::Id body = b.fresh_id(), end = b.fresh_id();
+  b.begin_block(b.fresh_id());
+  const codegen::Id id = b.op(Op::OpLoad, t_v3uint, {gid});
+  const codegen::Id x = b.op(Op::OpCompositeExtract, t_uint, {id, 0});
+  const codegen::Id y = b.op(Op::OpCompositeExtract, t_uint, {id, 1});
+  const codegen::Id ptr_pc_uint = b.type_pointer(SC::PushConstant, t_uint);
+  const codegen::Id w =
+      b.op(Op::OpLoad, t_uint, {b.op(Op::OpAccessChain, ptr_pc_uint, {size, c0})});
+  const codegen::Id h =
+      b.op(Op::OpLoad, t_uint, {b.op(Op::OpAccessChain, ptr_pc_uint, {size, c1})});
+  const codegen::Id inside =
+      b.op(Op::OpLogicalAnd, t_bool,
+           {b.op(Op::OpULessThan, t_bool, {x, w}), b.op(Op::OpULessThan, t_bool, {y, h})});
+  b.op_void(Op::OpSelectionMerge,
+            {end, static_cast<uint32_t>(spv::SelectionControlMask::MaskNone)});
+  b.op_void(Op::OpBranchConditional, {inside, body, end});
+
+  b.begin_block(body);
+  const codegen::Id i = b.op(Op::OpIAdd, t_uint, {b.op(Op::OpIMul, t_uint, {y, w}), x});
+  const codegen::Id t =
+      b.op(Op::OpLoad, t_uint,
+           {b.op(Op::OpAccessChain, b.type_pointer(SC::StorageBuffer, t_uint), {src, c0, i})});
+  const codegen::Id ptr_sb_float = b.type_pointer(SC::StorageBuffer, t_float);
+  codegen::Id rgba[4];
+  for (uint32_t c = 0; c < 4; ++c) {
+    // Byte c of the texel: (t >> 8c) & 255 (the top byte needs no mask).
+    codegen::Id byte = c == 0 ? t : b.op(Op::OpShiftRightLogical, t_uint, {t, b.const_uint(8 * c)});
+    if (c < 3) byte = b.op(Op::OpBitwiseAnd, t_uint, {byte, c255});
+    rgba[c] = b.op(Op::OpLoad, t_float, {b.op(Op::OpAccessChain, ptr_sb_float, {tab, c0, byte})});
   }
+  const codegen::Id v =
+      b.op(Op::OpCompositeConstruct, t_v4float, {rgba[0], rgba[1], rgba[2], rgba[3]});
+  const codegen::Id pd =
+      b.op(Op::OpAccessChain, b.type_pointer(SC::StorageBuffer, t_v4float), {dst, c0, i});
+  b.op_void(Op::OpStore, {pd, v});
+  b.op_void(Op::OpBranch, {end});
 
-  ins(w, Op::OpTypeVoid, {kVoid});
-  ins(w, Op::OpTypeFunction, {kFn, kVoid});
-  ins(w, Op::OpTypeBool, {kBool});
-  ins(w, Op::OpTypeInt, {kUint, 32, 0});
-  ins(w, Op::OpTypeFloat, {kFloat, 32});
-  ins(w, Op::OpTypeVector, {kV3Uint, kUint, 3});
-  ins(w, Op::OpTypeVector, {kV4Float, kFloat, 4});
-  ins(w, Op::OpTypeRuntimeArray, {kRtUint, kUint});
-  ins(w, Op::OpTypeStruct, {kIn, kRtUint});
-  ins(w, Op::OpTypeRuntimeArray, {kRtFloat, kFloat});
-  ins(w, Op::OpTypeStruct, {kTable, kRtFloat});
-  ins(w, Op::OpTypeRuntimeArray, {kRtV4, kV4Float});
-  ins(w, Op::OpTypeStruct, {kOut, kRtV4});
-  ins(w, Op::OpTypeStruct, {kSize, kUint, kUint});
-  const uint32_t sb = u(spv::StorageClass::StorageBuffer);
-  const uint32_t pc = u(spv::StorageClass::PushConstant);
-  ins(w, Op::OpTypePointer, {kPtrIn, sb, kIn});
-  ins(w, Op::OpTypePointer, {kPtrTable, sb, kTable});
-  ins(w, Op::OpTypePointer, {kPtrOut, sb, kOut});
-  ins(w, Op::OpTypePointer, {kPtrSize, pc, kSize});
-  ins(w, Op::OpTypePointer, {kPtrGid, u(spv::StorageClass::Input), kV3Uint});
-  ins(w, Op::OpTypePointer, {kPtrSbUint, sb, kUint});
-  ins(w, Op::OpTypePointer, {kPtrSbFloat, sb, kFloat});
-  ins(w, Op::OpTypePointer, {kPtrSbV4, sb, kV4Float});
-  ins(w, Op::OpTypePointer, {kPtrPcUint, pc, kUint});
-  for (auto [id, v] :
-       {std::pair{kC0, 0u}, {kC1, 1u}, {kC8, 8u}, {kC16, 16u}, {kC24, 24u}, {kC255, 255u}})
-    ins(w, Op::OpConstant, {kUint, id, v});
-  ins(w, Op::OpVariable, {kPtrGid, kGid, u(spv::StorageClass::Input)});
-  ins(w, Op::OpVariable, {kPtrIn, kSrc, sb});
-  ins(w, Op::OpVariable, {kPtrTable, kTab, sb});
-  ins(w, Op::OpVariable, {kPtrOut, kDst, sb});
-  ins(w, Op::OpVariable, {kPtrSize, kSizeVar, pc});
-
-  ins(w, Op::OpFunction, {kVoid, kMain, u(spv::FunctionControlMask::MaskNone), kFn});
-  ins(w, Op::OpLabel, {kEntry});
-  ins(w, Op::OpLoad, {kV3Uint, kId, kGid});
-  ins(w, Op::OpCompositeExtract, {kUint, kX, kId, 0});
-  ins(w, Op::OpCompositeExtract, {kUint, kY, kId, 1});
-  ins(w, Op::OpAccessChain, {kPtrPcUint, kPw, kSizeVar, kC0});
-  ins(w, Op::OpLoad, {kUint, kW, kPw});
-  ins(w, Op::OpAccessChain, {kPtrPcUint, kPh, kSizeVar, kC1});
-  ins(w, Op::OpLoad, {kUint, kH, kPh});
-  ins(w, Op::OpULessThan, {kBool, kInX, kX, kW});
-  ins(w, Op::OpULessThan, {kBool, kInY, kY, kH});
-  ins(w, Op::OpLogicalAnd, {kBool, kInside, kInX, kInY});
-  ins(w, Op::OpSelectionMerge, {kEnd, u(spv::SelectionControlMask::MaskNone)});
-  ins(w, Op::OpBranchConditional, {kInside, kBody, kEnd});
-
-  ins(w, Op::OpLabel, {kBody});
-  ins(w, Op::OpIMul, {kUint, kRow, kY, kW});
-  ins(w, Op::OpIAdd, {kUint, kI, kRow, kX});
-  ins(w, Op::OpAccessChain, {kPtrSbUint, kPt, kSrc, kC0, kI});
-  ins(w, Op::OpLoad, {kUint, kT, kPt});
-  ins(w, Op::OpBitwiseAnd, {kUint, kR, kT, kC255});
-  ins(w, Op::OpShiftRightLogical, {kUint, kG0, kT, kC8});
-  ins(w, Op::OpBitwiseAnd, {kUint, kG, kG0, kC255});
-  ins(w, Op::OpShiftRightLogical, {kUint, kB0, kT, kC16});
-  ins(w, Op::OpBitwiseAnd, {kUint, kB, kB0, kC255});
-  ins(w, Op::OpShiftRightLogical, {kUint, kA, kT, kC24});
-  for (auto [ptr, val, byte] :
-       {std::tuple{kPr, kFr, kR}, {kPg, kFg, kG}, {kPb, kFb, kB}, {kPa, kFa, kA}}) {
-    ins(w, Op::OpAccessChain, {kPtrSbFloat, ptr, kTab, kC0, byte});
-    ins(w, Op::OpLoad, {kFloat, val, ptr});
-  }
-  ins(w, Op::OpCompositeConstruct, {kV4Float, kV, kFr, kFg, kFb, kFa});
-  ins(w, Op::OpAccessChain, {kPtrSbV4, kPd, kDst, kC0, kI});
-  ins(w, Op::OpStore, {kPd, kV});
-  ins(w, Op::OpBranch, {kEnd});
-  ins(w, Op::OpLabel, {kEnd});
-  ins(w, Op::OpReturn, {});
-  ins(w, Op::OpFunctionEnd, {});
-  return w;
+  b.begin_block(end);
+  b.op_void(Op::OpReturn, {});
+  b.end_function();
+  return b.finish();
 }
 
 std::string ensure_unorm8_converter(Device::Impl& d) {
@@ -166,7 +127,8 @@ std::string ensure_unorm8_converter(Device::Impl& d) {
                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, c->table);
   if (!err.empty()) return err;
   auto* table = static_cast<float*>(c->table.mapped);
-  for (uint32_t k = 0; k < 256; ++k) table[k] = static_cast<float>(k) / 255.0f; // correctly rounded
+  const std::array<float, 256>& levels = rounding::unorm8_levels(); // k/255.0f, correctly rounded
+  std::copy(levels.begin(), levels.end(), table);
 
   const VkDescriptorSetLayoutBinding bindings[3] = {
       {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},

@@ -99,8 +99,6 @@ VkFormat vk_format(img::Format f);
 uint32_t bytes_per_pixel(img::Format f);
 void pack_pixels(const img::Image& image, void* dst);
 void unpack_pixels(const void* src, img::Image& image);
-uint16_t float_to_half(float f); // round to nearest even, overflow to inf, NaN kept
-float half_to_float(uint16_t h);
 
 // SPIR-V rewrite for DrawOptions::flat_varyings: every Input variable gets Flat.
 std::vector<uint32_t> decorate_inputs_flat(const std::vector<uint32_t>& words);

@@ -7,6 +7,7 @@
 
 #include "raster.h"
 #include "tierlift/cpu/draw.h"
+#include "tierlift/rounding/rounding.h"
 
 namespace tierlift::cpu {
 namespace {
@@ -51,7 +52,7 @@ Vec4 blend_float(BlendMode mode, img::Format format, const Vec4& src_in, const V
   for (int c = 0; c < 4; ++c) {
     out[c] = blend_equation(mode, src[c], a, dst[c]);
     out[c] = format == img::Format::RGBA16F && rounding == ir::Rounding::Llvmpipe
-                 ? img::half_toward_zero(out[c])
+                 ? rounding::half_toward_zero(out[c])
                  : img::quantize(format, out[c]);
   }
   return out;
@@ -66,14 +67,14 @@ int mul_norm8(int a, int b) {
 }
 
 // lavapipe's blend on an R8G8B8A8_UNORM attachment (Mesa llvmpipe's AoS blend): the shader's
-// colour is converted with img::unorm8_llvmpipe, the destination is read as its byte, factors
+// colour is converted with rounding::unorm8_llvmpipe, the destination is read as its byte, factors
 // multiply with mul_norm8, the two terms add with saturation at 255. SRC_ALPHA/
 // ONE_MINUS_SRC_ALPHA is src·a + dst·(255 − a) with both products rounded separately (not
 // llvmpipe's lerp shortcut: measured, the lerp form does not match).
 Vec4 blend_unorm8_llvmpipe(BlendMode mode, const Vec4& src_in, const Vec4& dst_in) {
   int src[4], dst[4];
   for (int c = 0; c < 4; ++c) {
-    src[c] = img::unorm8_llvmpipe(src_in[c]);
+    src[c] = rounding::unorm8_llvmpipe(src_in[c]);
     // An RGBA8 target holds k/255: its byte is the exact rounding of value·255.
     dst[c] = static_cast<int>(std::lround(img::quantize(img::Format::RGBA8, dst_in[c]) * 255.0f));
   }

@@ -10,6 +10,7 @@
 #include "tierlift/cpu/draw.h"
 #include "tierlift/cpu/pixel_block.h"
 #include "tierlift/ir/numerics.h"
+#include "tierlift/rounding/rounding.h"
 
 namespace tierlift::cpu::detail {
 
@@ -72,22 +73,18 @@ int64_t sample_offset(const ir::Conventions& conventions);
 void setup_planes(Triangle& t);
 PixelInput interpolate(const Triangle& t, const int64_t e[3], int64_t x, int64_t y);
 
-// llvmpipe runs setup and interpolation with the x86 DAZ and FTZ bits set: every operand and
-// result below 2^-126 is a zero of its sign (NUMERICS.md rule 13, measured in
-// tests/vulkan/denormals_test.cpp). ftz() is the identity on every other value.
+// Rounding::Llvmpipe's arithmetic (tierlift/rounding/rounding.h, measured in
+// tests/vulkan/denormals_test.cpp): setup and interpolation flush denormals, planes are
+// evaluated with FMAs. The per-pixel and the block interpolation both call these, so they
+// agree bit for bit.
 inline float ftz(float x) {
-  return ir::numerics::flush_denormal(x);
+  return rounding::flush(x);
 }
-
-// Rounding::Llvmpipe's evaluation of a plane at pixel (x, y) (see interpolation.cpp). The
-// per-pixel and the block interpolation both call it and perspective(), so they agree bit for bit.
 inline float eval(const Plane& p, float x, float y) {
-  return ftz(std::fma(p.dady, y, ftz(std::fma(p.dadx, x, p.a0))));
+  return rounding::plane_at(p.a0, p.dadx, p.dady, x, y);
 }
-
-// One perspective-corrected channel: the plane's value times 1/w at the pixel, flushed.
 inline float perspective(const Plane& p, float x, float y, float oow) {
-  return ftz(eval(p, x, y) * oow);
+  return rounding::perspective_at(p.a0, p.dadx, p.dady, x, y, oow);
 }
 
 inline float clamp01(float v) {

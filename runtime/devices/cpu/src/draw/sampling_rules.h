@@ -5,9 +5,10 @@
 
 #include <cmath>
 #include <cstdint>
+#include <optional>
 
 #include "tierlift/cpu/texture.h"
-#include "tierlift/ir/numerics.h"
+#include "tierlift/rounding/rounding.h"
 
 namespace tierlift::cpu::detail {
 
@@ -28,42 +29,27 @@ inline int64_t point_texel(float u, uint32_t n) {
   return static_cast<int64_t>(std::floor(static_cast<float>(texel_space(u, n))));
 }
 
-struct LinearAxis {
-  int64_t i0 = 0; // left (top) texel before addressing
-  float alpha = 0;
-};
+// Texel (i, j) after addressing (indices from address_texel); border colour when either
+// axis fell outside under Border.
+inline Vec4 fetch(const img::Image& image, const SamplerState& s, const std::optional<int64_t>& i,
+                  const std::optional<int64_t>& j) {
+  if (!i || !j) return s.border_color;
+  const float* p = image.at(static_cast<uint32_t>(*i), static_cast<uint32_t>(*j));
+  return {p[0], p[1], p[2], p[3]};
+}
 
-// llvmpipe's bilinear axis (texture_sampling_llvmpipe.cpp explains each step).
+using rounding::LinearAxis;
+
+// llvmpipe's bilinear axis (rounding::linear_axis), with the sub-texel quantisation a
+// device with subtexel_bits > 0 applies on top.
 inline LinearAxis llvmpipe_linear_axis(float u, uint32_t n, AddressMode mode, int subtexel_bits) {
-  const float size = static_cast<float>(n);
-  float x = u * size;
-  if (mode == AddressMode::Clamp) {
-    // llvmpipe clamps the coordinate, not the index: min(u·N, N) with NaN → N, then − 0.5,
-    // then max(·, 0). The result lies in [0, N − 0.5], so the conversion below is defined.
-    x = x < size ? x : size;
-    x = x - 0.5f;
-    x = x > 0 ? x : 0;
-  } else {
-    x = x - 0.5f;
-    constexpr float kLimit = 1099511627776.0f; // 2^40: far outside any address period
-    if (std::isnan(x)) x = 0;
-    x = x < -kLimit ? -kLimit : (x > kLimit ? kLimit : x);
-  }
-  const float f = std::floor(x);
-  LinearAxis a;
-  a.i0 = static_cast<int64_t>(f);
-  a.alpha = x - f; // exact (Sterbenz)
+  LinearAxis a = rounding::linear_axis(u, n, mode == AddressMode::Clamp);
   if (subtexel_bits > 0) a.alpha = static_cast<float>(quantize_fraction(a.alpha, subtexel_bits));
   return a;
 }
 
-// llvmpipe's lerp: v0 + α·(v1 − v0) as one fused multiply-add, with the x86 DAZ and FTZ bits
-// set: denormal texels and results are zeros of their sign (NUMERICS.md rule 13).
 inline float llvmpipe_lerp(float alpha, float v0, float v1) {
-  using ir::numerics::flush_denormal;
-  v0 = flush_denormal(v0);
-  v1 = flush_denormal(v1);
-  return flush_denormal(std::fma(alpha, flush_denormal(v1 - v0), v0));
+  return rounding::lerp(alpha, v0, v1);
 }
 
 } // namespace tierlift::cpu::detail

@@ -1,4 +1,4 @@
-// Point and bilinear sampling on the integer texel grid (d3d9-isa.md §10.1, §10.2).
+// Point and bilinear sampling on the integer texel grid (docs/d3d9-rules.md §10.1, §10.2).
 #include <cmath>
 
 #include "sampling_rules.h"
@@ -14,15 +14,6 @@ int64_t mod_floor(int64_t a, int64_t n) {
 }
 int64_t mirror(int64_t n) {
   return n >= 0 ? n : -(1 + n);
-}
-
-// Texel (i, j) after addressing (indices from address_texel); border colour when either
-// axis fell outside under Border.
-Vec4 fetch(const img::Image& image, const SamplerState& s, const std::optional<int64_t>& i,
-           const std::optional<int64_t>& j) {
-  if (!i || !j) return s.border_color;
-  const float* p = image.at(static_cast<uint32_t>(*i), static_cast<uint32_t>(*j));
-  return {p[0], p[1], p[2], p[3]};
 }
 
 } // namespace
@@ -60,8 +51,8 @@ Vec4 sample_texture(const img::Image& image, const SamplerState& sampler, float 
   if (sampler.filter == Filter::Point) {
     const int64_t i = detail::point_texel(u, image.width);
     const int64_t j = detail::point_texel(v, image.height);
-    return fetch(image, sampler, address_texel(sampler.address_u, i, image.width),
-                 address_texel(sampler.address_v, j, image.height));
+    return detail::fetch(image, sampler, address_texel(sampler.address_u, i, image.width),
+                         address_texel(sampler.address_v, j, image.height));
   }
 
   double x = detail::texel_space(u, image.width) - 0.5;
@@ -74,8 +65,8 @@ Vec4 sample_texture(const img::Image& image, const SamplerState& sampler, float 
   const auto u1 = address_texel(sampler.address_u, i0 + 1, image.width);
   const auto v0 = address_texel(sampler.address_v, j0, image.height);
   const auto v1 = address_texel(sampler.address_v, j0 + 1, image.height);
-  Vec4 t00 = fetch(image, sampler, u0, v0), t10 = fetch(image, sampler, u1, v0);
-  Vec4 t01 = fetch(image, sampler, u0, v1), t11 = fetch(image, sampler, u1, v1);
+  Vec4 t00 = detail::fetch(image, sampler, u0, v0), t10 = detail::fetch(image, sampler, u1, v0);
+  Vec4 t01 = detail::fetch(image, sampler, u0, v1), t11 = detail::fetch(image, sampler, u1, v1);
   Vec4 out;
   for (int c = 0; c < 4; ++c) {
     double r =

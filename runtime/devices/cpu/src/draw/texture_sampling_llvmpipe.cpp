@@ -1,8 +1,6 @@
 // Bilinear sampling with the arithmetic of Mesa llvmpipe's float-texture path (lavapipe's
 // sampler for the RGBA32F textures the Vulkan device binds), for ir::Rounding::Llvmpipe.
-// Why: u·N is rounded to float before the weights are taken, and the weights are not
-// quantised; at sizes that are not powers of two, fl32(u·N) differs from u·N by up to
-// N·2^-24 texel, which moves a tap's weight by as much. Reproducing the float steps (measured
+// The float steps are rounding::linear_axis and rounding::lerp; reproducing them (measured
 // bit-exact against lavapipe, Mesa 22.3 on x86-64, at 1920×1080 with taps on texel centres,
 // corners and arbitrary offsets) is what makes the two devices agree.
 #include <cmath>
@@ -11,17 +9,6 @@
 #include "tierlift/cpu/texture.h"
 
 namespace tierlift::cpu {
-namespace {
-
-Vec4 fetch(const img::Image& image, const SamplerState& s, const std::optional<int64_t>& i,
-           const std::optional<int64_t>& j) {
-  if (!i || !j) return s.border_color;
-  const float* p = image.at(static_cast<uint32_t>(*i), static_cast<uint32_t>(*j));
-  return {p[0], p[1], p[2], p[3]};
-}
-
-} // namespace
-
 Vec4 sample_texture_llvmpipe(const img::Image& image, const SamplerState& sampler, float u, float v,
                              int subtexel_bits) {
   if (image.width == 0 || image.height == 0 || sampler.filter == Filter::Point)
@@ -34,8 +21,10 @@ Vec4 sample_texture_llvmpipe(const img::Image& image, const SamplerState& sample
   const auto u1 = address_texel(sampler.address_u, x.i0 + 1, image.width);
   const auto v0 = address_texel(sampler.address_v, y.i0, image.height);
   const auto v1 = address_texel(sampler.address_v, y.i0 + 1, image.height);
-  const Vec4 t00 = fetch(image, sampler, u0, v0), t10 = fetch(image, sampler, u1, v0);
-  const Vec4 t01 = fetch(image, sampler, u0, v1), t11 = fetch(image, sampler, u1, v1);
+  const Vec4 t00 = detail::fetch(image, sampler, u0, v0),
+             t10 = detail::fetch(image, sampler, u1, v0);
+  const Vec4 t01 = detail::fetch(image, sampler, u0, v1),
+             t11 = detail::fetch(image, sampler, u1, v1);
   Vec4 out;
   for (int c = 0; c < 4; ++c)
     out[c] = detail::llvmpipe_lerp(y.alpha, detail::llvmpipe_lerp(x.alpha, t00[c], t10[c]),

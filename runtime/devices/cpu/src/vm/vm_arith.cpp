@@ -1,7 +1,7 @@
 // The arithmetic instructions: one compute function per opcode, dispatched through an
 // OpcodeTable (the VM's one dispatch style, vm_internal.h). Each one only computes; the executor
 // fetches every source first and stores afterwards, which gives matrix macros and co-issued pairs
-// their read-before-write semantics (d3d9-isa.md §4.6, §5.1). Every numeric rule comes from
+// their read-before-write semantics (docs/d3d9-rules.md §4.6, §5.1). Every numeric rule comes from
 // ir/numeric_rules.h (through ir/numerics.h); each compute function exists twice, once per denormal
 // mode (NUMERICS.md rule 13), and the table of the program's mode is chosen at preparation.
 #include <array>
@@ -18,7 +18,7 @@ using num::Denormals;
 
 namespace {
 
-// Scalar operands read the 4th swizzle slot (d3d9-isa.md §4.3).
+// Scalar operands read the 4th swizzle slot (docs/d3d9-rules.md §4.3).
 inline float sc(const Vec4& v) {
   return v[3];
 }

@@ -1,4 +1,4 @@
-// vs_2_0 static flow control (d3d9-isa.md §5.3) and the ps_1_4 phase marker. Jump targets
+// vs_2_0 static flow control (docs/d3d9-rules.md §5.3) and the ps_1_4 phase marker. Jump targets
 // were matched at preparation; the frames live in the Invocation (fixed arrays, no heap).
 // Counts are clamped to the legal ranges and backward jumps are budgeted, so that no
 // program can hang the interpreter.

@@ -1,4 +1,4 @@
-// Operand fetch and store in the order of d3d9-isa.md §7: fetch (ps_1_x constant clamp,
+// Operand fetch and store in the order of docs/d3d9-rules.md §7: fetch (ps_1_x constant clamp,
 // relative addressing), pre-swizzle _dz/_dw, swizzle, post-swizzle modifiers with negate
 // last; store: shift, ps_1_x range clamp, _sat, fixed-point quantise, write mask.
 #include <stdexcept>

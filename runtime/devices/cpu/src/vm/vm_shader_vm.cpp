@@ -60,7 +60,7 @@ PixelOutput ShaderVM::run_pixel(const PixelInput& in, const ConstantBank& consta
   inv.tex = &textures;
   inv.pin = &in;
   inv.pout = &out;
-  // Colour inputs lie in [0, 1] in every pixel profile (d3d9-isa.md §3.3, §3.5).
+  // Colour inputs lie in [0, 1] in every pixel profile (docs/d3d9-rules.md §3.3, §3.5).
   namespace num = ir::numerics;
   for (int i = 0; i < 2; ++i)
     for (int c = 0; c < 4; ++c)

@@ -1,4 +1,4 @@
-// Texture instructions: ps_1_1–1_3 texture-address instructions (d3d9-isa.md §5.5),
+// Texture instructions: ps_1_1–1_3 texture-address instructions (docs/d3d9-rules.md §5.5),
 // ps_1_4 texld/texcrd/texkill/texdepth (§5.6) and ps_2_0 texld/texldp/texldb/texkill
 // (§5.7). Every sample goes through the TextureUnit; StageState supplies bump matrices
 // and the projected flag. Each executor exists once per denormal mode (NUMERICS.md rule 13),

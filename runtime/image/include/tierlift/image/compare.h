@@ -1,4 +1,4 @@
-// Comparing two images and judging the difference against design.md's agreement targets.
+// Comparing two images and judging the difference against docs/design.md's agreement targets.
 #pragma once
 
 #include <array>
@@ -30,10 +30,10 @@ struct Comparison {
 // difference.
 std::optional<Comparison> compare(const Image& a, const Image& b, std::string* error = nullptr);
 
-// Agreement targets per target format (design.md "Three ways, one answer"):
+// Agreement targets per target format (docs/design.md "Three ways, one answer"):
 //   RGBA32F: max abs ≤ 1e-5 × full scale.
 //   RGBA16F: max abs ≤ 2^-10 × full scale (one half-float step at the top of the scale;
-//            design.md sets no figure, this is ours).
+//            docs/design.md sets no figure, this is ours).
 //   RGBA8:   max abs ≤ 1 LSB (1/255) and ≥ 99.9 % of pixels identical.
 struct Tolerance {
   double max_abs_relative = 1e-5; // × full scale

@@ -61,9 +61,6 @@ std::vector<uint8_t> encode_pfm(const Image& image, PfmChannels channels = PfmCh
 ir::Status write_pfm(const std::string& path, const Image& image,
                      PfmChannels channels = PfmChannels::RGB);
 
-// By extension: ".pfm" → PFM (RGB), anything else → 8-bit PNG.
-ir::Status write_image(const std::string& path, const Image& image);
-
 // Writes bytes with tierlift::io::write_output: temp file in the same folder renamed over
 // `path` (symbolic links followed), FIFOs and character devices written straight through.
 ir::Status write_file_atomic(const std::string& path, std::span<const uint8_t> bytes);

@@ -18,7 +18,7 @@
 namespace tierlift::analytic {
 
 enum class Filter { Point, Linear };
-// D3DTADDRESS modes (d3d9-isa.md §10.2).
+// D3DTADDRESS modes (docs/d3d9-rules.md §10.2).
 enum class Address { Wrap, Mirror, Clamp, Border, MirrorOnce };
 
 struct SamplerModel {
@@ -29,7 +29,7 @@ struct SamplerModel {
 
 // How an RGBA8 store rounds a value exactly half-way between two steps. D3D9 and Vulkan
 // leave it open ("one of the two nearest"); D3D10's rule adds ½ and truncates (HalfUp, the
-// rule of img::quantize); lavapipe rounds to even (img::unorm8_llvmpipe). Ties are common
+// rule of img::quantize); lavapipe rounds to even (rounding::unorm8_llvmpipe). Ties are common
 // in the glow: bilinear midpoints and power-of-two weights average 8-bit texels exactly.
 enum class Unorm8Ties { HalfUp, ToEven };
 
@@ -102,42 +102,5 @@ int64_t address_texel(int64_t i, int64_t n, Address mode);
 // general form (several textures, blending, ps_1_x ranges).
 img::ImageResult blur_pass(const std::vector<Tap>& taps, const img::Image& source,
                            const PassModel& model);
-
-// A tap as a whole-texel displacement: the plain discrete convolution's view.
-struct TexelTap {
-  int64_t dx = 0, dy = 0;
-  std::array<double, 4> weight{};
-};
-// The texels the author meant: offset·size rounded down (+1e-6 slack), so (k + 0.5)/W
-// (the article's half-texel offsets) and k/W (without them) both mean tap k. For taps of
-// the form texcoord + offset (scale 1; the scale is not read).
-std::vector<TexelTap> intended_texel_taps(const std::vector<Tap>& taps, uint32_t width,
-                                          uint32_t height);
-// out(i, j) = Σ_k w_k · T[addr(i + dx_k), addr(j + dy_k)], stored with img::quantize.
-// Target and source sizes must be equal.
-img::ImageResult discrete_convolution(const std::vector<TexelTap>& taps, const img::Image& source,
-                                      const PassModel& model);
-
-// The corner model: a tap whose sample point lies on a texel centre reads that texel; one
-// that lies half a texel off (on an edge or a corner between texels, as a D3D9 quad without
-// the half-texel offset does) reads the plain mean of the 2 or 4 texels around it. Written
-// from that rule alone (no bilinear weights). Positions are classified with a tolerance of
-// 1e-5 texel (offsets come from float constants); any other position is an error. Target and
-// source sizes must be equal. Stored with img::quantize.
-img::ImageResult corner_model(const std::vector<Tap>& taps, const img::Image& source,
-                              const PassModel& model);
-
-// What the corner model predicts the no-half-texel pass differs from the plain convolution
-// by: corner_model − discrete_convolution(intended_texel_taps), per value, unquantised
-// (RGBA32F image of signed differences), and its largest magnitude. Taps must have scale 1
-// (an error otherwise).
-struct CornerPrediction {
-  img::Image difference;
-  double max_abs = 0;
-  double rmse = 0;
-};
-ir::Result<CornerPrediction> predict_corner_difference(const std::vector<Tap>& taps,
-                                                       const img::Image& source,
-                                                       const PassModel& model);
 
 } // namespace tierlift::analytic

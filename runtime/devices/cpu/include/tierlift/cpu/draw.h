@@ -1,7 +1,7 @@
 // The CPU device's draw: one pass of Direct3D 9 fixed-function plumbing around the shader
 // VM — vertex stage, clipping, viewport transform, rasterisation with the top-left fill
 // rule, perspective-correct interpolation, pixel stage, texkill, blending, store
-// (d3d9-isa.md §9, §10; design.md "Conventions").
+// (docs/d3d9-rules.md §9, §10; docs/design.md "Conventions").
 //
 // How the geometry is placed:
 //   * Screen space: x_s = X + (x/w + 1)·W/2, y_s = Y + (1 − y/w)·H/2 (y down).
@@ -48,7 +48,7 @@
 // Rounding::Exact: blended in float, quantised with img::quantize(target.format), the source
 // colour and blend factors clamped to [0, 1] first for RGBA8 as Vulkan and D3D9 do for UNORM
 // attachments. RGBA8 under Rounding::Llvmpipe: lavapipe's way — the source converted with
-// img::unorm8_llvmpipe (ties to even of fl32(x·255)), then blended in 8-bit integers
+// rounding::unorm8_llvmpipe (ties to even of fl32(x·255)), then blended in 8-bit integers
 // (NUMERICS.md rule 34). Blending applies to all four channels.
 //
 // Threads: rows are handed out in small bands to `threads` workers (0 = every core). Each
@@ -100,7 +100,7 @@ DrawStats draw(const Pass& pass, img::Image& target, unsigned threads = 0);
 
 // Blend `src` onto the stored `dst` and quantise for `format` (the per-pixel store rule,
 // exposed for tests). `rounding` is the pass's ir::Conventions::rounding: for RGBA8 targets
-// Llvmpipe converts the source with img::unorm8_llvmpipe and blends in 8-bit integers as
+// Llvmpipe converts the source with rounding::unorm8_llvmpipe and blends in 8-bit integers as
 // lavapipe does (NUMERICS.md rule 34); Exact, and every other format, blend in float and store
 // with img::quantize.
 Vec4 blend_and_store(BlendMode mode, img::Format format, const Vec4& src, const Vec4& dst,

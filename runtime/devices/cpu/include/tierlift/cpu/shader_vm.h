@@ -1,4 +1,4 @@
-// Executes one ir::Program per vertex or per pixel with Direct3D 9 semantics (d3d9-isa.md
+// Executes one ir::Program per vertex or per pixel with Direct3D 9 semantics (docs/d3d9-rules.md
 // §5, §7, §8). It knows nothing of rasterisation: the draw model feeds it interpolated
 // inputs and a TextureUnit that samples with the bound sampler state.
 #pragma once
@@ -31,7 +31,7 @@ using Lanes = float[kBlockLanes];
 
 // What the VM asks of the device for every texture read. coord holds (u, v, w, q);
 // how many components matter is the bound texture's business (2D: u,v). Unbound stages
-// return (0, 0, 0, 1) (d3d9-isa.md §10.6).
+// return (0, 0, 0, 1) (docs/d3d9-rules.md §10.6).
 class TextureUnit {
 public:
   virtual ~TextureUnit() = default;

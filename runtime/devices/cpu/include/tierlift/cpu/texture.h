@@ -1,4 +1,4 @@
-// Texture sampling with Direct3D 9 rules (d3d9-isa.md §10): texel centres at (k + 0.5)/N,
+// Texture sampling with Direct3D 9 rules (docs/d3d9-rules.md §10): texel centres at (k + 0.5)/N,
 // point = floor(u·N), bilinear i0 = floor(u·N − 0.5) with α = frac(u·N − 0.5), address
 // modes applied to the integer texel index, unbound stages read (0, 0, 0, 1).
 #pragma once

@@ -1,9 +1,26 @@
-// lavapipe's float→UNORM8 store rule (see image.h, NUMERICS.md rule 34).
+// The two RGBA8 store rules, exact (ties up) and lavapipe's, and the values of the 256 bytes
+// (rounding.h).
 #include <cmath>
 
-#include "tierlift/image/image.h"
+#include "tierlift/rounding/rounding.h"
 
-namespace tierlift::img {
+namespace tierlift::rounding {
+
+float unorm8_nearest(float value) {
+  if (std::isnan(value)) return 0.0f;
+  double v = std::fmin(std::fmax(static_cast<double>(value), 0.0), 1.0);
+  double k = std::floor(v * 255.0 + 0.5);
+  return static_cast<float>(k / 255.0);
+}
+
+const std::array<float, 256>& unorm8_levels() {
+  static const std::array<float, 256> levels = [] {
+    std::array<float, 256> t{};
+    for (uint32_t k = 0; k < 256; ++k) t[k] = static_cast<float>(k) / 255.0f;
+    return t;
+  }();
+  return levels;
+}
 
 uint8_t unorm8_llvmpipe(float value) {
   // llvmpipe clamps with min(1, x) and leaves the lower end to the saturating integer packs
@@ -20,4 +37,4 @@ uint8_t unorm8_llvmpipe(float value) {
   return static_cast<uint8_t>(k);
 }
 
-} // namespace tierlift::img
+} // namespace tierlift::rounding

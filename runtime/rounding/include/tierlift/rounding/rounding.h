@@ -1,0 +1,143 @@
+// Where Direct3D 9 and Vulkan leave the rounding to the implementation, what lavapipe (Mesa
+// llvmpipe) does and what exact IEEE arithmetic does, side by side: one place for the
+// arithmetic model the CPU device follows under ir::Rounding::Llvmpipe (the default, which
+// makes it agree with the Vulkan device bit for bit) and the exact rules it follows under
+// ir::Rounding::Exact and that img::quantize applies. Each lavapipe rule was measured
+// against lavapipe (Mesa 22.3, x86-64); NUMERICS.md gives the rule numbers and the evidence.
+//
+//   rule                      lavapipe                                 exact
+//   RGBA8 store               fl32(v·255), ties to even (unorm8_       v·255 in double, ties up
+//                             llvmpipe)                                (unorm8_nearest)
+//   RGBA16F store             toward zero, ±65504 cap (half_toward_    nearest even, overflow to
+//                             zero)                                    inf (half_nearest_even)
+//   denormals                 flushed in and out of every operation    kept
+//                             of setup, interpolation and filtering
+//                             (flush)
+//   attribute interpolation   float planes a0 + dadx·x + dady·y with   exact barycentrics in
+//                             FMA, times 1/w, flushed (plane_at,       double (cpu/src/draw)
+//                             perspective_at)
+//   bilinear weights          α = frac(fl32(u·N) − ½) in float, clamp   α = frac(u·N − ½) in
+//                             on the coordinate (linear_axis)          double (cpu texture.h)
+//   bilinear lerp             v0 + α·(v1 − v0) as one FMA, flushed     weights in double
+//                             (lerp)
+//
+// The analytic model (runtime/devices/analytic) keeps its own copies on purpose: an oracle
+// that shared this code with the devices would agree with them by construction.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+
+#include "tierlift/ir/numerics.h"
+
+namespace tierlift::rounding {
+
+// ---- RGBA8 stores ----------------------------------------------------------------------
+
+// Exact: NaN stores 0 (as Vulkan and D3D conversions do); otherwise clamp to [0, 1], then
+// the nearest of the 255 steps with ties up, as k/255 in float. value·255 is exact in double
+// (24 + 8 bits), so a tie is decided on the float's true value.
+float unorm8_nearest(float value);
+
+// lavapipe, when it writes a colour attachment: NaN and values ≤ 0 give 0, values ≥ 1 give
+// 255, otherwise the float product fl32(value·255) rounded to the nearest integer with ties
+// to even (llvmpipe multiplies by 255 in float and converts with cvtps2dq, whose default
+// rounding is nearest-even). It differs from unorm8_nearest for only 128 floats in [0, 1]:
+// those whose product, a hair off a midpoint k + ½, rounds onto it in float and then goes to
+// the even side (fl32(0.5/255) = 0.00196078443 stores 0 here, 1 there). NUMERICS.md rule 34.
+uint8_t unorm8_llvmpipe(float value);
+
+// The float an RGBA8 texel holds for byte k: k/255 correctly rounded (k / 255.0f), as a table
+// so that converting a texel costs no division. Every RGBA8 image holds these values.
+const std::array<float, 256>& unorm8_levels();
+
+// ---- RGBA16F stores --------------------------------------------------------------------
+
+// The spacing of binary16 values at magnitude `a` (finite, ≥ 0): 2^-24 below 2^-14
+// (subnormals), else 2^(e−10) in [2^e, 2^(e+1)). Dividing by it is exact (a power of two),
+// so every half rounding is a rounding of a / half_step(a) to an integer.
+double half_step(double a);
+
+// Exact: IEEE binary16, round to nearest even; from the midpoint above 65504 (65520) on, ±inf;
+// NaN and ±inf kept.
+float half_nearest_even(float value);
+
+// lavapipe, when it writes an RGBA16F attachment: rounding toward zero (every one of 65,536
+// probe values matched this rule, none matched nearest-even where they differ), so a finite
+// value beyond 65504 stores ±65504; NaN and ±inf stay. NUMERICS.md rule 35. Takes a double
+// so that a caller holding an exact value rounds it once.
+float half_toward_zero(double value);
+
+// The binary16 bit pattern of a float, rounded to nearest even (overflow to inf, NaN kept
+// as a quiet NaN), and back: the texel codec of RGBA16F images the Vulkan device uploads
+// and reads. For every non-NaN float, half_from_bits(half_bits(x)) == half_nearest_even(x).
+uint16_t half_bits(float value);
+float half_from_bits(uint16_t bits);
+
+// ---- Denormals (NUMERICS.md rule 13) ---------------------------------------------------
+
+// llvmpipe runs setup, interpolation and texture filtering with the x86 DAZ and FTZ bits
+// set: every operand and result below 2^-126 is a zero of its sign. The identity on every
+// other value.
+inline float flush(float x) {
+  return ir::numerics::flush_denormal(x);
+}
+
+// ---- Attribute interpolation -----------------------------------------------------------
+
+// lavapipe's evaluation of an attribute plane a0 + dadx·x + dady·y at pixel (x, y): two
+// FMAs, each result flushed. The CPU device's per-pixel and block interpolation both call
+// it, so they agree bit for bit.
+inline float plane_at(float a0, float dadx, float dady, float x, float y) {
+  return flush(std::fma(dady, y, flush(std::fma(dadx, x, a0))));
+}
+
+// One perspective-corrected channel: the plane's value times 1/w at the pixel, flushed.
+inline float perspective_at(float a0, float dadx, float dady, float x, float y, float oow) {
+  return flush(plane_at(a0, dadx, dady, x, y) * oow);
+}
+
+// ---- Bilinear filtering (lavapipe's float-texture path) --------------------------------
+
+// One axis of a bilinear read: the left (top) texel before addressing and its weight α.
+struct LinearAxis {
+  int64_t i0 = 0;
+  float alpha = 0;
+};
+
+// u·N is rounded to float before the weight is taken, and the weight is not quantised: at
+// sizes that are not powers of two fl32(u·N) differs from u·N by up to N·2^-24 texel, which
+// moves a tap's weight by as much. With clamp-to-edge addressing llvmpipe clamps the
+// coordinate, not the index: min(u·N, N) with NaN → N, then − ½, then max(·, 0), so the
+// result lies in [0, N − ½]. Other modes keep the coordinate within ±2^40 (far outside any
+// address period; NaN → 0) so that the conversion to an integer is defined.
+inline LinearAxis linear_axis(float u, uint32_t n, bool clamp_to_edge) {
+  const float size = static_cast<float>(n);
+  float x = u * size;
+  if (clamp_to_edge) {
+    x = x < size ? x : size;
+    x = x - 0.5f;
+    x = x > 0 ? x : 0;
+  } else {
+    x = x - 0.5f;
+    constexpr float kLimit = 1099511627776.0f; // 2^40
+    if (std::isnan(x)) x = 0;
+    x = x < -kLimit ? -kLimit : (x > kLimit ? kLimit : x);
+  }
+  const float f = std::floor(x);
+  LinearAxis a;
+  a.i0 = static_cast<int64_t>(f);
+  a.alpha = x - f; // exact (Sterbenz)
+  return a;
+}
+
+// llvmpipe's lerp: v0 + α·(v1 − v0) as one fused multiply-add, denormal texels and results
+// flushed to zeros of their sign.
+inline float lerp(float alpha, float v0, float v1) {
+  v0 = flush(v0);
+  v1 = flush(v1);
+  return flush(std::fma(alpha, flush(v1 - v0), v0));
+}
+
+} // namespace tierlift::rounding

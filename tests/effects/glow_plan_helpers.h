@@ -1,0 +1,33 @@
+// Small helpers the glow-plan tests share: parameters for a target size and downsample
+// factor, a plan that must build, and the names of a plan's passes in order.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "tierlift/effects/glow.h"
+
+namespace tierlift::effects::plan_test {
+
+inline GlowParams sized(unsigned downsample, uint32_t w, uint32_t h) {
+  GlowParams p;
+  p.width = w;
+  p.height = h;
+  p.downsample = downsample;
+  return p;
+}
+
+inline GlowPlan expect_built(GlowPlan plan) {
+  EXPECT_TRUE(plan) << plan.error;
+  return plan;
+}
+
+inline std::vector<std::string> pass_names(const GlowPlan& plan) {
+  std::vector<std::string> v;
+  for (const PassDesc& d : plan.graph.passes) v.push_back(d.name);
+  return v;
+}
+
+} // namespace tierlift::effects::plan_test
