@@ -4,6 +4,9 @@
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <charconv>
+#include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -116,6 +119,13 @@ uint64_t available_memory() {
   rlimit as{};
   if (getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY)
     available = available ? std::min<uint64_t>(available, as.rlim_cur) : as.rlim_cur;
+  if (const char* limit = std::getenv("TIERLIFT_MEMORY_LIMIT")) {
+    uint64_t bytes = 0;
+    const char* end = limit + std::strlen(limit);
+    auto [ptr, ec] = std::from_chars(limit, end, bytes);
+    if (ec == std::errc() && ptr == end && bytes > 0)
+      available = available ? std::min(available, bytes) : bytes;
+  }
   return available;
 }
 

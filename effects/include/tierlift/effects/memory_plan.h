@@ -45,7 +45,10 @@ MemoryPlan plan_memory(const EffectGraph& graph, const std::vector<std::string>&
                        bool keep_pass_images, uint64_t extra = 0);
 
 // The memory this machine can give now: MemAvailable of /proc/meminfo, lowered to the
-// process's address-space limit (RLIMIT_AS) when one is set. 0 when unknown.
+// process's address-space limit (RLIMIT_AS) when one is set, and to TIERLIFT_MEMORY_LIMIT
+// (a whole number of bytes) when that is set: a budget for shared machines, and the one
+// limit that works under AddressSanitizer, whose shadow memory needs an unlimited address
+// space. 0 when unknown.
 uint64_t available_memory();
 
 // "1.5 GiB (1610612736 bytes)"
