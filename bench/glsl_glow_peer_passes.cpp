@@ -86,14 +86,14 @@ void GlslGlowPeer::Impl::create_pass(const effects::EffectGraph& g, const effect
   Pass pass;
   const std::string kind = kind_of(p.name);
   pass.target = &textures.at(p.target);
-  pass.replace = p.blend == cpu::BlendMode::Replace;
+  pass.replace = p.blend == pass::BlendMode::Replace;
   VkSampler samplers[2] = {point, point};
   for (const effects::TextureBind& b : p.textures) {
     // Stage 0 (ps_1_x binds the same texture on stages 0..3) and, for the composite, 1.
     const int slot = kind == "composite" && b.stage == 1 ? 1 : b.stage == 0 ? 0 : -1;
     if (slot < 0) continue;
     (slot ? pass.s1 : pass.s0) = &textures.at(b.texture);
-    samplers[slot] = b.sampler.filter == cpu::Filter::Linear ? linear : point;
+    samplers[slot] = b.sampler.filter == pass::Filter::Linear ? linear : point;
   }
   if (!pass.s0) throw PeerError{"pass " + p.name + ": no texture on stage 0"};
   if (!pass.s1) pass.s1 = pass.s0;

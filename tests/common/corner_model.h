@@ -82,7 +82,7 @@ inline std::vector<TexelTap> intended_texel_taps(const std::vector<Tap>& taps, u
 // out(i, j) = Σ_k w_k · T[addr(i + dx_k), addr(j + dy_k)], stored with img::quantize.
 // Target and source sizes must be equal.
 inline img::ImageResult discrete_convolution(const std::vector<TexelTap>& taps,
-                                            const img::Image& source, const PassModel& model) {
+                                             const img::Image& source, const PassModel& model) {
   auto size = detail::same_size_target(source, model);
   if (!size) return ir::fail("analytic", "model", size.error);
   img::Image out(source.width, source.height, model.target_format);
@@ -133,7 +133,7 @@ inline std::optional<Straddle> straddle(double p) {
 // 1e-5 texel (offsets come from float constants); any other position is an error. Target and
 // source sizes must be equal. Stored with img::quantize.
 inline img::ImageResult corner_model(const std::vector<Tap>& taps, const img::Image& source,
-                                    const PassModel& model) {
+                                     const PassModel& model) {
   auto size = detail::same_size_target(source, model);
   if (!size) return ir::fail("analytic", "model", size.error);
   img::Image out(source.width, source.height, model.target_format);

@@ -9,6 +9,7 @@
 
 #include "glow_plan_helpers.h"
 #include "tierlift/effects/glow.h"
+#include "tierlift/pass/pass.h"
 
 namespace tierlift::effects {
 namespace {
@@ -44,14 +45,14 @@ void expect_box_average(const GlowPlan& plan, unsigned n, uint32_t w, uint32_t h
     SCOPED_TRACE(d.name);
     EXPECT_EQ(d.name, "downsample." + std::to_string(i));
     EXPECT_EQ(d.target, kSmallTexture);
-    EXPECT_EQ(d.blend, i == 0 ? cpu::BlendMode::Replace : cpu::BlendMode::OneOne);
+    EXPECT_EQ(d.blend, i == 0 ? pass::BlendMode::Replace : pass::BlendMode::OneOne);
     ASSERT_EQ(d.vs_constants.size(), 8u);
     ASSERT_EQ(d.ps_constants.size(), 4u);
     ASSERT_EQ(d.textures.size(), stages);
     for (size_t t = 0; t < stages; ++t) {
       EXPECT_EQ(d.textures[t].stage, uint32_t(t));
       EXPECT_EQ(d.textures[t].texture, kSourcesTexture);
-      EXPECT_EQ(d.textures[t].sampler.filter, cpu::Filter::Point);
+      EXPECT_EQ(d.textures[t].sampler.filter, pass::Filter::Point);
     }
     for (size_t k = 0; k < 4; ++k) {
       const float weight = d.ps_constants[k][0];
@@ -101,9 +102,9 @@ TEST(GlowPlan, DownsampleTwo) {
     EXPECT_EQ(ds.vs_constants[k + 4][1], 1.0f) << k;
     EXPECT_EQ(ds.ps_constants[k][0], 0.25f) << k;
   }
-  EXPECT_EQ(ds.blend, cpu::BlendMode::Replace);
+  EXPECT_EQ(ds.blend, pass::BlendMode::Replace);
   ASSERT_EQ(ds.textures.size(), 1u); // ps_2_0: every read through s0
-  EXPECT_EQ(ds.textures[0].sampler.filter, cpu::Filter::Point);
+  EXPECT_EQ(ds.textures[0].sampler.filter, pass::Filter::Point);
   expect_box_average(plan, 2, 128, 64, 1);
 }
 
@@ -118,7 +119,7 @@ TEST(GlowPlan, DownsampleFour) {
   for (int i = 0; i < 4; ++i) {
     const PassDesc& ds = plan.graph.passes[1 + i];
     EXPECT_EQ(ds.name, "downsample." + std::to_string(i));
-    EXPECT_EQ(ds.blend, i == 0 ? cpu::BlendMode::Replace : cpu::BlendMode::OneOne) << i;
+    EXPECT_EQ(ds.blend, i == 0 ? pass::BlendMode::Replace : pass::BlendMode::OneOne) << i;
     for (int k = 0; k < 4; ++k) {
       EXPECT_FLOAT_EQ(ds.vs_constants[k][0], (k + 0.5f) / 128) << i << " " << k;
       EXPECT_FLOAT_EQ(ds.vs_constants[k][1], (i + 0.5f) / 64) << i << " " << k;

@@ -8,6 +8,7 @@
 
 #include "glow_plan_helpers.h"
 #include "tierlift/effects/glow.h"
+#include "tierlift/pass/pass.h"
 
 namespace tierlift::effects {
 namespace {
@@ -43,12 +44,12 @@ TEST(GlowPlan, DownsampleOne) {
 TEST(GlowPlan, BlurOffsetsCarryTheHalfTexel) {
   GlowPlan plan = plan_for(2);
   const PassDesc& h0 = plan.graph.passes[2];
-  EXPECT_EQ(h0.blend, cpu::BlendMode::Replace);
+  EXPECT_EQ(h0.blend, pass::BlendMode::Replace);
   EXPECT_FLOAT_EQ(h0.vs_constants[0][0], -11.5f / 64); // tap −12 + ½ on a 64-wide texture
   EXPECT_FLOAT_EQ(h0.vs_constants[0][1], 0.5f / 32);
   EXPECT_FLOAT_EQ(h0.vs_constants[7][0], -4.5f / 64);
   const PassDesc& h3 = plan.graph.passes[5];
-  EXPECT_EQ(h3.blend, cpu::BlendMode::OneOne);
+  EXPECT_EQ(h3.blend, pass::BlendMode::OneOne);
   EXPECT_FLOAT_EQ(h3.vs_constants[0][0], 12.5f / 64); // the 25th tap, then padding
   for (int k = 1; k < 8; ++k) EXPECT_EQ(h3.ps_constants[k][0], 0.0f);
   const PassDesc& v0 = plan.graph.passes[6];
@@ -59,7 +60,7 @@ TEST(GlowPlan, BlurOffsetsCarryTheHalfTexel) {
   // Every tap on a texel centre: point filtering (bilinear there is the texel itself).
   for (const PassDesc* d : {&h0, &h3, &v0}) {
     ASSERT_EQ(d->textures.size(), 1u);
-    EXPECT_EQ(d->textures[0].sampler.filter, cpu::Filter::Point) << d->name;
+    EXPECT_EQ(d->textures[0].sampler.filter, pass::Filter::Point) << d->name;
   }
 }
 
@@ -70,10 +71,10 @@ TEST(GlowPlan, WithoutHalfTexelOffsetsAreWholeTexels) {
   EXPECT_FLOAT_EQ(plan.graph.passes[6].vs_constants[0][1], -12.0f / 32);
   // Taps on texel corners, read bilinearly: the article's failure case, as on D3D9.
   for (size_t i = 2; i < 10; ++i)
-    EXPECT_EQ(plan.graph.passes[i].textures.at(0).sampler.filter, cpu::Filter::Linear)
+    EXPECT_EQ(plan.graph.passes[i].textures.at(0).sampler.filter, pass::Filter::Linear)
         << plan.graph.passes[i].name;
   // The helper passes read where they mean to, half texel or not: point reads.
-  EXPECT_EQ(plan.graph.passes[1].textures.at(0).sampler.filter, cpu::Filter::Point);
+  EXPECT_EQ(plan.graph.passes[1].textures.at(0).sampler.filter, pass::Filter::Point);
 }
 
 TEST(GlowPlan, TapsAreSymmetricNormalisedAndUseThePrintedListings) {
@@ -182,18 +183,18 @@ TEST(GlowPlanDx8, BlurConstantsFollowTheArticlesRule) {
     }
   }
   // The first pass of an axis replaces, the others add (ONE/ONE).
-  EXPECT_EQ(h0.blend, cpu::BlendMode::Replace);
-  EXPECT_EQ(h1.blend, cpu::BlendMode::OneOne);
-  EXPECT_EQ(v0.blend, cpu::BlendMode::Replace);
-  EXPECT_EQ(v1.blend, cpu::BlendMode::OneOne);
+  EXPECT_EQ(h0.blend, pass::BlendMode::Replace);
+  EXPECT_EQ(h1.blend, pass::BlendMode::OneOne);
+  EXPECT_EQ(v0.blend, pass::BlendMode::Replace);
+  EXPECT_EQ(v1.blend, pass::BlendMode::OneOne);
   // tex t0..t3 read texture stages 0..3: the source is bound to all four; with the half
   // texel every tap is on a texel centre, so point filtering.
   ASSERT_EQ(h0.textures.size(), 4u);
   for (uint32_t k = 0; k < 4; ++k) {
     EXPECT_EQ(h0.textures[k].stage, k);
     EXPECT_EQ(h0.textures[k].texture, kSmallTexture);
-    EXPECT_EQ(h0.textures[k].sampler.filter, cpu::Filter::Point);
-    EXPECT_EQ(v1.textures[k].sampler.filter, cpu::Filter::Point);
+    EXPECT_EQ(h0.textures[k].sampler.filter, pass::Filter::Point);
+    EXPECT_EQ(v1.textures[k].sampler.filter, pass::Filter::Point);
     EXPECT_EQ(v0.textures[k].texture, kBlurHTexture);
   }
   EXPECT_EQ(v1.target, kGlowTexture);
@@ -212,7 +213,7 @@ TEST(GlowPlanDx8, WithoutHalfTexelOffsetsAreWholeTexels) {
   // Taps on texel corners: bilinear on all four stages, as on D3D8/9 hardware.
   for (size_t i = 2; i < 6; ++i)
     for (const TextureBind& t : plan.graph.passes[i].textures)
-      EXPECT_EQ(t.sampler.filter, cpu::Filter::Linear) << plan.graph.passes[i].name;
+      EXPECT_EQ(t.sampler.filter, pass::Filter::Linear) << plan.graph.passes[i].name;
 }
 
 TEST(GlowPlanDx8, HelperPassesAreD3D8Listings) {
@@ -232,7 +233,7 @@ TEST(GlowPlanDx8, HelperPassesAreD3D8Listings) {
   EXPECT_FLOAT_EQ(ex.vs_constants[0][0], 0.5f / 45);
   EXPECT_FLOAT_EQ(ex.vs_constants[4][1], 1.0f);
   ASSERT_EQ(ex.textures.size(), 1u);
-  EXPECT_EQ(ex.textures[0].sampler.filter, cpu::Filter::Point);
+  EXPECT_EQ(ex.textures[0].sampler.filter, pass::Filter::Point);
   // Downsample by 2 into 23 × 14, one pass: point reads at the four texel centres of each
   // 2 × 2 block, weight ¼ each, the quad uv scaled by 2·23/45 and 2·14/27. Four stages bound.
   EXPECT_EQ(ds.name, "downsample.0");
@@ -246,11 +247,11 @@ TEST(GlowPlanDx8, HelperPassesAreD3D8Listings) {
     EXPECT_FLOAT_EQ(ds.vs_constants[k + 4][1], 28.0f / 27) << k;
     EXPECT_EQ(ds.ps_constants[k][0], 0.25f) << k;
   }
-  EXPECT_EQ(ds.blend, cpu::BlendMode::Replace);
+  EXPECT_EQ(ds.blend, pass::BlendMode::Replace);
   ASSERT_EQ(ds.textures.size(), 4u);
   EXPECT_EQ(ds.textures[3].stage, 3u);
   EXPECT_EQ(ds.textures[3].texture, kSourcesTexture);
-  EXPECT_EQ(ds.textures[3].sampler.filter, cpu::Filter::Point);
+  EXPECT_EQ(ds.textures[3].sampler.filter, pass::Filter::Point);
   // Composite: scene at texel centres; glow at (i + ½)/2 texels of a 46 × 28 cover.
   EXPECT_FLOAT_EQ(co.vs_constants[1][0], 0.5f / 46);
   EXPECT_FLOAT_EQ(co.vs_constants[5][0], 45.0f / 46);
