@@ -4,7 +4,7 @@
 
 namespace tierlift::ir {
 
-const ConstDef* FoldedDefs::find(RegFile file, uint32_t index) const {
+const ConstDef* FoldedDefs::find(RegFile file, uint32_t index) const& {
   const std::map<uint32_t, ConstDef>* table = file == RegFile::Const       ? &floats
                                               : file == RegFile::ConstInt  ? &ints
                                               : file == RegFile::ConstBool ? &bools

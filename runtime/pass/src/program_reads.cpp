@@ -49,7 +49,8 @@ std::vector<RegRead> sampler_reads(const ir::Program& program) {
 }
 
 bool is_defined(const ir::Program& program, ir::RegFile file, uint32_t index) {
-  return ir::fold_defs(program).find(file, index) != nullptr;
+  const ir::FoldedDefs defs = ir::fold_defs(program);
+  return defs.find(file, index) != nullptr;
 }
 
 } // namespace tierlift::pass::detail

@@ -34,8 +34,10 @@ struct FoldedDefs {
   std::map<uint32_t, ConstDef> floats; // c#
   std::map<uint32_t, ConstDef> ints;   // i#
   std::map<uint32_t, ConstDef> bools;  // b#
-  // The winning def of a register, or nullptr when the listing does not define it.
-  const ConstDef* find(RegFile file, uint32_t index) const;
+  // The winning def of a register, or nullptr when the listing does not define it. The
+  // pointer lives as long as this object: asking a temporary is refused at compile time.
+  const ConstDef* find(RegFile file, uint32_t index) const&;
+  const ConstDef* find(RegFile file, uint32_t index) const&& = delete;
 };
 FoldedDefs fold_defs(const Program& program);
 

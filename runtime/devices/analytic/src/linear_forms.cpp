@@ -20,7 +20,8 @@ std::array<double, 4> constant_value(const ir::Program& p, const std::vector<Vec
   std::array<double, 4> v{};
   if (index < api.size())
     for (int c = 0; c < 4; ++c) v[c] = api[index][c];
-  if (const ir::ConstDef* d = ir::fold_defs(p).find(ir::RegFile::Const, index))
+  const ir::FoldedDefs defs = ir::fold_defs(p);
+  if (const ir::ConstDef* d = defs.find(ir::RegFile::Const, index))
     for (int c = 0; c < 4; ++c) v[c] = d->f(c);
   if (ps1x_clamp)
     for (double& x : v) {
