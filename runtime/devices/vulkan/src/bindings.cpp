@@ -86,7 +86,7 @@ std::string create_bindings(Device::Impl& d, Cleanup& cleanup, const codegen::Co
   VkResult r = vkCreateDescriptorSetLayout(d.device, &dli, nullptr, &dsl);
   if (r != VK_SUCCESS) return vk_error("vkCreateDescriptorSetLayout", r);
   VkDevice dev = d.device;
-  cleanup.add([dev, dsl] { vkDestroyDescriptorSetLayout(dev, dsl, nullptr); });
+  cleanup.destroy_later(dev, dsl, vkDestroyDescriptorSetLayout);
   VkPipelineLayoutCreateInfo pli{};
   pli.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
   pli.setLayoutCount = 1;
@@ -94,7 +94,7 @@ std::string create_bindings(Device::Impl& d, Cleanup& cleanup, const codegen::Co
   VkPipelineLayout& layout = out.layout;
   if ((r = vkCreatePipelineLayout(dev, &pli, nullptr, &layout)) != VK_SUCCESS)
     return vk_error("vkCreatePipelineLayout", r);
-  cleanup.add([dev, layout] { vkDestroyPipelineLayout(dev, layout, nullptr); });
+  cleanup.destroy_later(dev, layout, vkDestroyPipelineLayout);
   VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2},
                                    {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 16}};
   VkDescriptorPoolCreateInfo dpi{};
@@ -105,7 +105,7 @@ std::string create_bindings(Device::Impl& d, Cleanup& cleanup, const codegen::Co
   VkDescriptorPool dpool = VK_NULL_HANDLE;
   if ((r = vkCreateDescriptorPool(dev, &dpi, nullptr, &dpool)) != VK_SUCCESS)
     return vk_error("vkCreateDescriptorPool", r);
-  cleanup.add([dev, dpool] { vkDestroyDescriptorPool(dev, dpool, nullptr); });
+  cleanup.destroy_later(dev, dpool, vkDestroyDescriptorPool);
   VkDescriptorSetAllocateInfo dsa{};
   dsa.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
   dsa.descriptorPool = dpool;
@@ -117,28 +117,24 @@ std::string create_bindings(Device::Impl& d, Cleanup& cleanup, const codegen::Co
   std::vector<VkDescriptorBufferInfo> buffer_infos(ubos.size());
   std::vector<VkDescriptorImageInfo> image_infos(textures.size());
   std::vector<VkWriteDescriptorSet> writes;
-  for (size_t k = 0; k < ubos.size(); ++k) {
-    buffer_infos[k] = {ubos[k].buf.buffer, 0, VK_WHOLE_SIZE};
-    VkWriteDescriptorSet w{};
+  auto write = [&](uint32_t binding, VkDescriptorType type) -> VkWriteDescriptorSet& {
+    VkWriteDescriptorSet& w = writes.emplace_back();
     w.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
     w.dstSet = set;
-    w.dstBinding = ubos[k].binding;
+    w.dstBinding = binding;
     w.descriptorCount = 1;
-    w.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-    w.pBufferInfo = &buffer_infos[k];
-    writes.push_back(w);
+    w.descriptorType = type;
+    return w;
+  };
+  for (size_t k = 0; k < ubos.size(); ++k) {
+    buffer_infos[k] = {ubos[k].buf.buffer, 0, VK_WHOLE_SIZE};
+    write(ubos[k].binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER).pBufferInfo = &buffer_infos[k];
   }
   for (size_t k = 0; k < textures.size(); ++k) {
     image_infos[k] = {textures[k].sampler, textures[k].view,
                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    VkWriteDescriptorSet w{};
-    w.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
-    w.dstSet = set;
-    w.dstBinding = textures[k].binding;
-    w.descriptorCount = 1;
-    w.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    w.pImageInfo = &image_infos[k];
-    writes.push_back(w);
+    write(textures[k].binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER).pImageInfo =
+        &image_infos[k];
   }
   vkUpdateDescriptorSets(dev, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
   return {};

@@ -27,9 +27,7 @@ std::string shader_module(Device::Impl& d, Cleanup& cleanup, const std::vector<u
   ci.pCode = words.data();
   VkResult r = vkCreateShaderModule(d.device, &ci, nullptr, &out);
   if (r != VK_SUCCESS) return vk_error("vkCreateShaderModule", r);
-  VkDevice dev = d.device;
-  VkShaderModule m = out;
-  cleanup.add([dev, m] { vkDestroyShaderModule(dev, m, nullptr); });
+  cleanup.destroy_later(d.device, out, vkDestroyShaderModule);
   return {};
 }
 
@@ -59,9 +57,7 @@ std::string create_render_pass(Device::Impl& d, Cleanup& cleanup, VkFormat forma
   ci.pSubpasses = &sub;
   VkResult r = vkCreateRenderPass(d.device, &ci, nullptr, &out);
   if (r != VK_SUCCESS) return vk_error("vkCreateRenderPass", r);
-  VkDevice dev = d.device;
-  VkRenderPass rp = out;
-  cleanup.add([dev, rp] { vkDestroyRenderPass(dev, rp, nullptr); });
+  cleanup.destroy_later(d.device, out, vkDestroyRenderPass);
   return {};
 }
 
@@ -77,9 +73,7 @@ std::string create_framebuffer(Device::Impl& d, Cleanup& cleanup, VkRenderPass r
   ci.layers = 1;
   VkResult r = vkCreateFramebuffer(d.device, &ci, nullptr, &out);
   if (r != VK_SUCCESS) return vk_error("vkCreateFramebuffer", r);
-  VkDevice dev = d.device;
-  VkFramebuffer fb = out;
-  cleanup.add([dev, fb] { vkDestroyFramebuffer(dev, fb, nullptr); });
+  cleanup.destroy_later(d.device, out, vkDestroyFramebuffer);
   return {};
 }
 
@@ -110,9 +104,7 @@ std::string create_sampler(Device::Impl& d, Cleanup& cleanup, const pass::Sample
   ci.minLod = ci.maxLod = 0.0f;
   VkResult r = vkCreateSampler(d.device, &ci, nullptr, &out);
   if (r != VK_SUCCESS) return vk_error("vkCreateSampler", r);
-  VkDevice dev = d.device;
-  VkSampler smp = out;
-  cleanup.add([dev, smp] { vkDestroySampler(dev, smp, nullptr); });
+  cleanup.destroy_later(d.device, out, vkDestroySampler);
   return {};
 }
 
@@ -202,9 +194,7 @@ std::string create_pipeline(Device::Impl& d, Cleanup& cleanup, const PipelineDes
   VkResult r = vkCreateGraphicsPipelines(d.device, pipeline_cache(d), 1, &ci, nullptr, &out);
   if (r != VK_SUCCESS) return vk_error("vkCreateGraphicsPipelines", r);
   d.pipeline_cache_dirty = true;
-  VkDevice dev = d.device;
-  VkPipeline p = out;
-  cleanup.add([dev, p] { vkDestroyPipeline(dev, p, nullptr); });
+  cleanup.destroy_later(d.device, out, vkDestroyPipeline);
   return {};
 }
 

@@ -28,9 +28,7 @@ std::string allocate(Device::Impl& d, Cleanup& cleanup, const VkMemoryRequiremen
   ai.memoryTypeIndex = type;
   VkResult r = vkAllocateMemory(d.device, &ai, nullptr, &out);
   if (r != VK_SUCCESS) return vk_error("vkAllocateMemory", r);
-  VkDevice dev = d.device;
-  VkDeviceMemory mem = out;
-  cleanup.add([dev, mem] { vkFreeMemory(dev, mem, nullptr); });
+  cleanup.destroy_later(d.device, out, vkFreeMemory);
   return {};
 }
 
@@ -57,7 +55,7 @@ std::string create_buffer(Device::Impl& d, Cleanup& cleanup, VkDeviceSize size,
     vkDestroyBuffer(dev, buf, nullptr);
     return err;
   }
-  cleanup.add([dev, buf] { vkDestroyBuffer(dev, buf, nullptr); });
+  cleanup.destroy_later(dev, buf, vkDestroyBuffer);
   if ((r = vkBindBufferMemory(dev, buf, out.memory, 0)) != VK_SUCCESS)
     return vk_error("vkBindBufferMemory", r);
   if ((r = vkMapMemory(dev, out.memory, 0, VK_WHOLE_SIZE, 0, &out.mapped)) != VK_SUCCESS)
@@ -91,7 +89,7 @@ std::string create_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint
     vkDestroyImage(dev, img, nullptr);
     return err;
   }
-  cleanup.add([dev, img] { vkDestroyImage(dev, img, nullptr); });
+  cleanup.destroy_later(dev, img, vkDestroyImage);
   if ((r = vkBindImageMemory(dev, img, out.memory, 0)) != VK_SUCCESS)
     return vk_error("vkBindImageMemory", r);
   VkImageViewCreateInfo vi{};
@@ -102,8 +100,7 @@ std::string create_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint
   vi.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
   if ((r = vkCreateImageView(dev, &vi, nullptr, &out.view)) != VK_SUCCESS)
     return vk_error("vkCreateImageView", r);
-  VkImageView view = out.view;
-  cleanup.add([dev, view] { vkDestroyImageView(dev, view, nullptr); });
+  cleanup.destroy_later(dev, out.view, vkDestroyImageView);
   out.format = format;
   out.width = width;
   out.height = height;

@@ -200,7 +200,7 @@ std::string create_unorm8_scratch(Device::Impl& d, Cleanup& cleanup, uint32_t wi
   VkDescriptorPool pool = VK_NULL_HANDLE;
   VkResult r = vkCreateDescriptorPool(dev, &dpi, nullptr, &pool);
   if (r != VK_SUCCESS) return vk_error("vkCreateDescriptorPool", r);
-  cleanup.add([dev, pool] { vkDestroyDescriptorPool(dev, pool, nullptr); });
+  cleanup.destroy_later(dev, pool, vkDestroyDescriptorPool);
   VkDescriptorSetAllocateInfo dsa{};
   dsa.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
   dsa.descriptorPool = pool;

@@ -55,6 +55,12 @@ public:
     for (auto it = fns_.rbegin(); it != fns_.rend(); ++it) (*it)();
   }
   void add(std::function<void()> fn) { fns_.push_back(std::move(fn)); }
+  // Destroys `handle` with `destroy` (a vkDestroy*/vkFree* taking device, handle, allocator)
+  // when the cleanup runs.
+  template <class Handle, class Destroy>
+  void destroy_later(VkDevice dev, Handle handle, Destroy destroy) {
+    add([dev, handle, destroy] { destroy(dev, handle, nullptr); });
+  }
 
 private:
   std::vector<std::function<void()>> fns_;
