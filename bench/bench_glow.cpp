@@ -33,6 +33,7 @@
 
 #include "glow_frames.h"
 #include "glsl_glow_peer.h"
+#include "opencv_glow.h"
 #include "tierlift/effects/glow.h"
 #include "tierlift/image/compare.h"
 
@@ -55,50 +56,14 @@ effects::GlowPlan make_plan(effects::Tier tier, img::Format format) {
 
 // ---- the OpenCV glow ----------------------------------------------------------------------
 
-// The plan's taps (offsets −R..R, texels of the small texture) as a sepFilter2D kernel;
-// sepFilter2D correlates, so kernel[R + k] weights the texel at offset k.
-cv::Mat kernel_from_taps(const std::vector<effects::BlurTap>& taps) {
-  int r = 0;
-  for (const effects::BlurTap& t : taps) r = std::max(r, std::abs(t.offset));
-  cv::Mat k = cv::Mat::zeros(2 * r + 1, 1, CV_32F);
-  for (const effects::BlurTap& t : taps) k.at<float>(t.offset + r) += float(t.weight);
-  return k;
-}
-
-struct OpenCvGlow {
-  cv::Mat kernel;
-  cv::Mat mask, sources, small, blurred, glow, final;
-
-  explicit OpenCvGlow(const std::vector<effects::BlurTap>& taps) : kernel(kernel_from_taps(taps)) {}
-
-  // `in` is RGBA float. Sources = (r·a, g·a, b·a, 0): a zero alpha makes `add` keep the
-  // scene's alpha, as the composite pass does (it adds rgb only).
-  const cv::Mat& run(const cv::Mat& in) {
-    const int from_to[] = {3, 0, 3, 1, 3, 2, -1, 3}; // -1: channel filled with zero
-    mask.create(in.size(), in.type());
-    cv::mixChannels(&in, 1, &mask, 1, from_to, 4);
-    cv::multiply(in, mask, sources);
-    const cv::Size small_size((in.cols + int(kDownsample) - 1) / int(kDownsample),
-                              (in.rows + int(kDownsample) - 1) / int(kDownsample));
-    cv::resize(sources, small, small_size, 0, 0, cv::INTER_AREA);
-    // BORDER_REPLICATE: the blur passes sample with clamp addressing.
-    cv::sepFilter2D(small, blurred, -1, kernel, kernel, cv::Point(-1, -1), 0, cv::BORDER_REPLICATE);
-    cv::resize(blurred, glow, in.size(), 0, 0, cv::INTER_LINEAR);
-    cv::add(in, glow, final);
-    return final;
-  }
-};
-
-cv::Mat wrap(const img::Image& im) {
-  return cv::Mat(int(im.height), int(im.width), CV_32FC4, const_cast<float*>(im.rgba.data()));
-}
+// The peer itself is bench::OpenCvGlow (opencv_glow.h), shared with bench_cpu_glow.
 
 // OpenCV's final frame for `taps` as an img::Image (once, for the comparison).
 img::Image opencv_final(const std::vector<effects::BlurTap>& taps) {
-  OpenCvGlow g(taps);
-  const cv::Mat& f = g.run(wrap(scene()));
+  bench::OpenCvGlow g(taps, kDownsample);
+  const cv::Mat& f = g.run(bench::wrap(scene()));
   img::Image out(kW, kH, img::Format::RGBA32F);
-  cv::Mat(f).copyTo(wrap(out)); // wrap(out) shares out's storage
+  cv::Mat(f).copyTo(bench::wrap(out)); // wrap(out) shares out's storage
   return out;
 }
 
@@ -108,8 +73,8 @@ void BM_Glow_OpenCV(benchmark::State& state) {
     state.SkipWithError(plan.error.c_str());
     return;
   }
-  OpenCvGlow g(plan.taps);
-  const cv::Mat in = wrap(scene());
+  bench::OpenCvGlow g(plan.taps, kDownsample);
+  const cv::Mat in = bench::wrap(scene());
   for (auto _ : state) {
     const cv::Mat& f = g.run(in);
     benchmark::DoNotOptimize(f.data);

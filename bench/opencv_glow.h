@@ -1,7 +1,7 @@
 // The glow written with OpenCV, the peer of the glow benchmarks: sources rgb × alpha, resize
 // INTER_AREA by the downsample factor, sepFilter2D with the plan's own taps (BORDER_REPLICATE,
 // as the blur passes clamp), resize INTER_LINEAR back, add — in float, into buffers kept
-// across frames (the idiomatic use). The same five calls as the peer in bench_glow.cpp.
+// across frames (the idiomatic use). The peer of bench_glow and bench_cpu_glow.
 #pragma once
 
 #include <vector>
