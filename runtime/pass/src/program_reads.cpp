@@ -3,7 +3,6 @@
 
 #include <algorithm>
 
-#include "tierlift/ir/passes.h"
 #include "tierlift/ir/semantics.h"
 
 namespace tierlift::pass::detail {
@@ -46,11 +45,6 @@ std::vector<RegRead> sampler_reads(const ir::Program& program) {
       add_once(out, ir::RegFile::Sampler, ins.dst->index, ins.loc);
   }
   return out;
-}
-
-bool is_defined(const ir::Program& program, ir::RegFile file, uint32_t index) {
-  const ir::FoldedDefs defs = ir::fold_defs(program);
-  return defs.find(file, index) != nullptr;
 }
 
 } // namespace tierlift::pass::detail

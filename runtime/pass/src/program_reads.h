@@ -20,6 +20,5 @@ std::vector<RegRead> constant_reads(const ir::Program& program, std::vector<RegR
 // Sampler stages the program samples: s# of ps_2_0 texld*, the stage of ps_1_x texture
 // instructions that sample (tex, texld, texbem, texm3x3tex, ...). Stages as RegFile::Sampler.
 std::vector<RegRead> sampler_reads(const ir::Program& program);
-bool is_defined(const ir::Program& program, ir::RegFile file, uint32_t index);
 
 } // namespace tierlift::pass::detail

@@ -7,6 +7,7 @@
 #include "program_reads.h"
 #include "tierlift/image/builtin.h"
 #include "tierlift/image/io.h"
+#include "tierlift/ir/passes.h"
 
 namespace tierlift::pass {
 namespace {
@@ -44,10 +45,10 @@ bool build_constants(const ir::Program& program, const std::vector<ConstSetting>
   for (const auto& c : list)
     if (applies(c.stage, stage)) apply_constant(bank, c);
   bool ok = true;
+  const ir::FoldedDefs defs = ir::fold_defs(program);
   std::vector<detail::RegRead> relative;
   for (const auto& r : detail::constant_reads(program, &relative)) {
-    if (given(list, stage, r.file, r.index) || detail::is_defined(program, r.file, r.index))
-      continue;
+    if (given(list, stage, r.file, r.index) || defs.find(r.file, r.index)) continue;
     std::string reg = ir::register_name(r.file, r.index);
     std::string example = r.file == ir::RegFile::ConstBool ? "true" : "x,y,z,w";
     if (r.file == ir::RegFile::ConstInt) example = "a,b,c,d";

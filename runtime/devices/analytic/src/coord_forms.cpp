@@ -77,7 +77,8 @@ Affine product(const Affine& a, const Affine& b, const ir::SourceLoc& loc) {
 
 class Evaluator {
 public:
-  Evaluator(const ir::Program& p, const std::vector<Vec4>& consts) : p_(p), consts_(consts) {}
+  Evaluator(const ir::Program& p, const std::vector<Vec4>& consts)
+      : p_(p), defs_(ir::fold_defs(p)), consts_(consts) {}
 
   CoordForms run() {
     CoordForms out;
@@ -145,7 +146,7 @@ private:
       for (int q = 0; q < 4; ++q) a.at[q] = kQuadCornerUv[q][c];
       break;
     case ir::RegFile::Const:
-      a.k = constant_value(p_, consts_, s.index, false, nullptr)[c];
+      a.k = constant_value(defs_, consts_, s.index, false, nullptr)[c];
       a.at.fill(static_cast<float>(a.k)); // API constants are floats: exact
       break;
     case ir::RegFile::Temp: {
@@ -195,6 +196,7 @@ private:
   }
 
   const ir::Program& p_;
+  const ir::FoldedDefs defs_; // the listing's defs, folded once
   const std::vector<Vec4>& consts_;
   std::vector<uint32_t> tc_inputs_;
   std::map<std::pair<ir::RegFile, uint32_t>, Reg> regs_;

@@ -15,12 +15,11 @@ std::string where(const ir::SourceLoc& loc) {
   return fmt::format("line {}:{}", loc.line, loc.col);
 }
 
-std::array<double, 4> constant_value(const ir::Program& p, const std::vector<Vec4>& api,
+std::array<double, 4> constant_value(const ir::FoldedDefs& defs, const std::vector<Vec4>& api,
                                      uint32_t index, bool ps1x_clamp, bool* clamped) {
   std::array<double, 4> v{};
   if (index < api.size())
     for (int c = 0; c < 4; ++c) v[c] = api[index][c];
-  const ir::FoldedDefs defs = ir::fold_defs(p);
   if (const ir::ConstDef* d = defs.find(ir::RegFile::Const, index))
     for (int c = 0; c < 4; ++c) v[c] = d->f(c);
   if (ps1x_clamp)

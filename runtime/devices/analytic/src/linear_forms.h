@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "tierlift/analytic/taps.h"
+#include "tierlift/ir/passes.h"
 #include "tierlift/ir/program.h"
 
 namespace tierlift::analytic::detail {
@@ -14,9 +15,10 @@ namespace tierlift::analytic::detail {
 // "line 12:5" of an instruction or operand (listings from bytecode have no lines).
 std::string where(const ir::SourceLoc& loc);
 
-// c# as the shader sees it: a `def` in the listing wins over the API-set value; missing
-// registers read 0. `clamped` is set when ps_1_x clamping to [-1, 1] changed a component.
-std::array<double, 4> constant_value(const ir::Program& p, const std::vector<Vec4>& api,
+// c# as the shader sees it: a `def` in the listing (`defs`, folded once per program) wins
+// over the API-set value; missing registers read 0. `clamped` is set when ps_1_x clamping to
+// [-1, 1] changed a component.
+std::array<double, 4> constant_value(const ir::FoldedDefs& defs, const std::vector<Vec4>& api,
                                      uint32_t index, bool ps1x_clamp, bool* clamped);
 
 // Source modifiers that are affine maps x → scale·x + bias (docs/d3d9-rules.md §4.2).

@@ -62,7 +62,8 @@ Form product(const Form& a, const Form& b, const ir::SourceLoc& loc) {
 
 class Evaluator {
 public:
-  Evaluator(const ir::Program& p, const std::vector<Vec4>& consts) : p_(p), consts_(consts) {}
+  Evaluator(const ir::Program& p, const std::vector<Vec4>& consts)
+      : p_(p), defs_(ir::fold_defs(p)), consts_(consts) {}
 
   SumForm run() {
     SumForm out;
@@ -130,7 +131,7 @@ private:
     switch (s.file) {
     case ir::RegFile::Const: {
       bool clamp = ir::is_ps1x(p_.profile);
-      f.k = constant_value(p_, consts_, s.index, clamp, &clamped_)[c];
+      f.k = constant_value(defs_, consts_, s.index, clamp, &clamped_)[c];
       break;
     }
     case ir::RegFile::Temp:
@@ -194,6 +195,7 @@ private:
   }
 
   const ir::Program& p_;
+  const ir::FoldedDefs defs_; // the listing's defs, folded once
   const std::vector<Vec4>& consts_;
   bool clamped_ = false;
   std::vector<SampleKey> order_;
