@@ -96,6 +96,29 @@ ir::Conventions mode(int m) {
   return c;
 }
 
+// The case's quad pass with random constants: vs c0..c3 small texcoord offsets, c4..c7
+// near one, ps c0..c7 weights in [-0.5, 1.5) passed through `weight` (which may swap one for
+// a denormal).
+template <class Weight>
+Pass random_quad_pass(const std::shared_ptr<const ir::Program>& vs,
+                      const std::shared_ptr<const ir::Program>& ps, std::mt19937& rng,
+                      Weight weight) {
+  Pass pass;
+  pass.vertex_program = vs;
+  pass.pixel_program = ps;
+  set_full_screen_quad(pass, 0);
+  for (auto& v : pass.vertices) v.v[3] = {0, 0, 0, 1};
+  for (size_t c = 0; c < 4; ++c) pass.vertices[c].v[3] = kQuadUV[c];
+  std::uniform_real_distribution<float> off(-0.05f, 0.05f), wt(-0.5f, 1.5f);
+  for (int k = 0; k < 8; ++k) {
+    pass.vs_constants.f.push_back({off(rng), off(rng), 0, 0});
+    pass.ps_constants.f.push_back(
+        {weight(wt(rng)), weight(wt(rng)), weight(wt(rng)), weight(wt(rng))});
+  }
+  for (int k = 4; k < 8; ++k) pass.vs_constants.f[k] = {1 + off(rng), 1 + off(rng), 1, 1};
+  return pass;
+}
+
 TEST(ExecutorIdentity, GlowAndArticlePassesInEveryMode) {
   std::mt19937 rng(7);
   const img::Format formats[] = {img::Format::RGBA8, img::Format::RGBA16F, img::Format::RGBA32F};
@@ -112,18 +135,7 @@ TEST(ExecutorIdentity, GlowAndArticlePassesInEveryMode) {
       ++run;
       const uint32_t w = 37 + static_cast<uint32_t>(run % 5) * 7,
                      h = 23 + static_cast<uint32_t>(run % 3);
-      Pass pass;
-      pass.vertex_program = vs;
-      pass.pixel_program = ps;
-      set_full_screen_quad(pass, 0);
-      for (auto& v : pass.vertices) v.v[3] = {0, 0, 0, 1};
-      for (size_t c = 0; c < 4; ++c) pass.vertices[c].v[3] = kQuadUV[c];
-      std::uniform_real_distribution<float> off(-0.05f, 0.05f), wt(-0.5f, 1.5f);
-      for (int k = 0; k < 8; ++k) {
-        pass.vs_constants.f.push_back({off(rng), off(rng), 0, 0});
-        pass.ps_constants.f.push_back({wt(rng), wt(rng), wt(rng), wt(rng)});
-      }
-      for (int k = 4; k < 8; ++k) pass.vs_constants.f[k] = {1 + off(rng), 1 + off(rng), 1, 1};
+      Pass pass = random_quad_pass(vs, ps, rng, [](float x) { return x; });
       // Texture values beyond [0, 1] reach the ps_1_x clamps.
       for (int s = 0; s < pc.stages; ++s) {
         TextureBinding& b = pass.textures[s];
@@ -227,19 +239,7 @@ TEST(ExecutorIdentity, DenormalTexelsConstantsAndAttributes) {
     ASSERT_TRUE(vs && ps);
     for (int m : {0, 1, 4}) {
       ++run;
-      Pass pass;
-      pass.vertex_program = vs;
-      pass.pixel_program = ps;
-      set_full_screen_quad(pass, 0);
-      for (auto& v : pass.vertices) v.v[3] = {0, 0, 0, 1};
-      for (size_t c = 0; c < 4; ++c) pass.vertices[c].v[3] = kQuadUV[c];
-      std::uniform_real_distribution<float> off(-0.05f, 0.05f), wt(-0.5f, 1.5f);
-      for (int k = 0; k < 8; ++k) {
-        pass.vs_constants.f.push_back({off(rng), off(rng), 0, 0});
-        pass.ps_constants.f.push_back({denormal_or(wt(rng), rng), denormal_or(wt(rng), rng),
-                                       denormal_or(wt(rng), rng), denormal_or(wt(rng), rng)});
-      }
-      for (int k = 4; k < 8; ++k) pass.vs_constants.f[k] = {1 + off(rng), 1 + off(rng), 1, 1};
+      Pass pass = random_quad_pass(vs, ps, rng, [&rng](float x) { return denormal_or(x, rng); });
       for (int s = 0; s < pc.stages; ++s) {
         TextureBinding& b = pass.textures[s];
         b.image = denormal_image(19 + 4 * s, 13 + 3 * s, rng);

@@ -3,6 +3,7 @@
 // mov = 0x01, r0 = 0x800F0000, v0 = 0x90E40000, c0 = 0xA0E40000, end = 0x0000FFFF.
 #include <gtest/gtest.h>
 
+#include "loaded_listing.h"
 #include "tierlift/asm/bytecode.h"
 #include "tierlift/asm/load.h"
 
@@ -11,19 +12,10 @@ namespace {
 using namespace tierlift;
 using Tokens = std::vector<uint32_t>;
 
-struct Loaded {
-  ir::SourceManager sm;
-  ir::DiagnosticSink diags;
-  as::LoadResult r;
-  std::string rendered;
-};
+using Loaded = test::LoadedListing;
 
 Loaded load(std::string bytes, std::string name = "shader.pso", as::LoadOptions o = {}) {
-  Loaded l;
-  uint32_t f = l.sm.add(std::move(name), std::move(bytes));
-  l.r = as::load_listing(f, l.sm, l.diags, o);
-  l.rendered = ir::render_text(l.diags, l.sm);
-  return l;
+  return test::load_bytes(std::move(bytes), std::move(name), o);
 }
 
 const Tokens kPs11Mov = {0xFFFF0101, 0x00000001, 0x800F0000, 0x90E40000, 0x0000FFFF};

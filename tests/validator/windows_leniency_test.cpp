@@ -5,6 +5,7 @@
 // r0 = 0x800F0000; c# = 0xA0E4000n with the identity swizzle .xyzw (0xE4).
 #include <gtest/gtest.h>
 
+#include "loaded_listing.h"
 #include "tierlift/asm/bytecode.h"
 #include "tierlift/asm/load.h"
 
@@ -13,26 +14,12 @@ namespace {
 using namespace tierlift;
 using Tokens = std::vector<uint32_t>;
 
-struct Loaded {
-  ir::SourceManager sm;
-  ir::DiagnosticSink diags;
-  as::LoadResult r;
-  std::string rendered;
-  size_t count(ir::Severity s, const std::string& rule) const {
-    size_t n = 0;
-    for (const auto& d : diags.all()) n += d.severity == s && d.rule == rule;
-    return n;
-  }
-};
+using Loaded = test::LoadedListing;
 
 Loaded load(std::string bytes, bool strict) {
-  Loaded l;
-  uint32_t f = l.sm.add("s.vso", std::move(bytes));
   as::LoadOptions o;
   o.strict = strict;
-  l.r = as::load_listing(f, l.sm, l.diags, o);
-  l.rendered = ir::render_text(l.diags, l.sm);
-  return l;
+  return test::load_bytes(std::move(bytes), "s.vso", o);
 }
 
 // mov oPos, c0 / OP r0, c1 (identity swizzle) / mov oD0, r0

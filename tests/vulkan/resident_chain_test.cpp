@@ -80,20 +80,33 @@ cpu::Pass step_pass(const Step& s) {
   return p;
 }
 
+// The chain's textures and their sizes.
+const std::map<std::string, std::pair<uint32_t, uint32_t>>& chain_sizes() {
+  static const std::map<std::string, std::pair<uint32_t, uint32_t>> sizes = {
+      {"in", {kW, kH}},
+      {"a", {kW, kH}},
+      {"b", {kW, kH}},
+      {"c", {kSmallW, kSmallH}},
+      {"d", {kW, kH}}};
+  return sizes;
+}
+
+// Host images of those sizes, zero but for "in" (noise of `seed`).
+std::map<std::string, img::Image> host_images(img::Format f, unsigned seed) {
+  std::map<std::string, img::Image> host;
+  for (const auto& [name, wh] : chain_sizes()) host[name] = img::Image(wh.first, wh.second, f);
+  host["in"] = noise(kW, kH, f, seed);
+  return host;
+}
+
 class ResidentChain : public ResidentTest, public ::testing::WithParamInterface<img::Format> {};
 
 TEST_P(ResidentChain, EqualsDrawPerPassBitForBit) {
   const img::Format f = GetParam();
-  const std::map<std::string, std::pair<uint32_t, uint32_t>> sizes = {{"in", {kW, kH}},
-                                                                      {"a", {kW, kH}},
-                                                                      {"b", {kW, kH}},
-                                                                      {"c", {kSmallW, kSmallH}},
-                                                                      {"d", {kW, kH}}};
+  const auto& sizes = chain_sizes();
 
   // Old path: host images between passes, Device::draw per pass.
-  std::map<std::string, img::Image> host;
-  for (const auto& [name, wh] : sizes) host[name] = img::Image(wh.first, wh.second, f);
-  host["in"] = noise(kW, kH, f, 7);
+  std::map<std::string, img::Image> host = host_images(f, 7);
   for (const Step& s : chain()) {
     cpu::Pass p = step_pass(s);
     p.textures[0].image = std::make_shared<const img::Image>(host[s.source]);
@@ -133,14 +146,8 @@ TEST_P(ResidentChain, EqualsDrawPerPassBitForBit) {
 // message of the validation layer (synchronization validation on) fails the test.
 TEST_P(ResidentChain, BatchedFramesOfPreparedDrawsEqualDrawPerPass) {
   const img::Format f = GetParam();
-  const std::map<std::string, std::pair<uint32_t, uint32_t>> sizes = {{"in", {kW, kH}},
-                                                                      {"a", {kW, kH}},
-                                                                      {"b", {kW, kH}},
-                                                                      {"c", {kSmallW, kSmallH}},
-                                                                      {"d", {kW, kH}}};
-  std::map<std::string, img::Image> host;
-  for (const auto& [name, wh] : sizes) host[name] = img::Image(wh.first, wh.second, f);
-  host["in"] = noise(kW, kH, f, 11);
+  const auto& sizes = chain_sizes();
+  std::map<std::string, img::Image> host = host_images(f, 11);
   std::vector<img::Image> host_d; // "d" after each frame
   for (int frame = 0; frame < 2; ++frame) {
     for (const Step& s : chain()) {
