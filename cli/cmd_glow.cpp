@@ -209,7 +209,9 @@ int run(const GlowFlags& f) {
   const effects::GlowParams& params = scene->params;
   const std::string where = scene->file.empty() ? "tierlift glow" : scene->file;
 
-  effects::GlowPlan plan = effects::build_glow(params);
+  const bool radial = scene->effect == "radial-beams";
+  effects::GlowPlan plan =
+      radial ? effects::build_radial(params, scene->radial) : effects::build_glow(params);
   if (!plan) {
     report.error("scene", fmt::format("{}: {}", where, plan.error), scene->file);
     return report.finish(kExitInvalid);
@@ -300,12 +302,20 @@ int run(const GlowFlags& f) {
     j["all_within_targets"] = all_within;
     j["written"] = written;
   } else {
-    fmt::print("glow {}: {}x{} {}, downsample {} ({}x{}), {} taps, {} blur passes per axis, "
-               "half texel {}, ps1x-max {}\n",
-               effects::tier_name(params.tier), params.width, params.height,
-               img::format_name(params.format), params.downsample, plan.glow_width,
-               plan.glow_height, plan.taps.size(), plan.blur_passes_per_axis,
-               params.half_texel ? "on" : "off", ir::ps1x_max_label(params.ps1x_max));
+    if (radial)
+      fmt::print("radial-beams {}: {}x{} {}, {} copies toward ({}, {}), {} zoom passes, strength "
+                 "{}, frame {}\n",
+                 effects::tier_name(params.tier), params.width, params.height,
+                 img::format_name(params.format), scene->radial.steps, scene->radial.centre[0],
+                 scene->radial.centre[1], plan.blur_passes_per_axis, scene->radial.strength,
+                 scene->radial.frame);
+    else
+      fmt::print("glow {}: {}x{} {}, downsample {} ({}x{}), {} taps, {} blur passes per axis, "
+                 "half texel {}, ps1x-max {}\n",
+                 effects::tier_name(params.tier), params.width, params.height,
+                 img::format_name(params.format), params.downsample, plan.glow_width,
+                 plan.glow_height, plan.taps.size(), plan.blur_passes_per_axis,
+                 params.half_texel ? "on" : "off", ir::ps1x_max_label(params.ps1x_max));
     for (const GlowWay& w : ways)
       fmt::print("{}: {} passes in {:.1f} ms{}\n", w.name, w.glow.run.passes.size(),
                  w.glow.run.total_ms, w.name == "vulkan" ? fmt::format(" ({})", vk->name()) : "");

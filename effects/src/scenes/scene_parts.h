@@ -7,6 +7,7 @@
 
 #include "scene_check.h"
 #include "tierlift/effects/glow.h"
+#include "tierlift/effects/radial.h"
 #include "tierlift/image/image.h"
 
 namespace tierlift::effects {
@@ -14,6 +15,10 @@ namespace tierlift::effects {
 // "/glow": every field into `params` (what is absent keeps its default).
 void read_glow(const Json& glow, FieldChecker& check, const std::string& base_dir,
                GlowParams& params);
+
+// "/radial": every field into `radial` (what is absent keeps its default); its "tier" goes
+// to glow.tier, which also decides the strength's limit (ps.1.x constants).
+void read_radial(const Json& radial, FieldChecker& check, GlowParams& glow, RadialParams& out);
 
 // `path` as seen from `base_dir` ("" = the working directory); absolute paths stay.
 std::string resolve_path(const std::string& base_dir, const std::string& path);

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "tierlift/effects/glow.h"
+#include "tierlift/effects/radial.h"
 #include "tierlift/image/io.h"
 
 namespace tierlift::effects {
@@ -26,6 +27,10 @@ struct Scene {
   std::string image; // "builtin:neon" (make_default_scene) or a resolved PNG path
   GlowParams params; // width/height = the image's size; tier, downsample, format, half_texel,
                      // profile, intensity, listing_files
+  // Which effect runs: "glow" (default) or "radial-beams" (its parameters in `radial`; it
+  // takes tier, format and listings from `params`).
+  std::string effect = "glow";
+  RadialParams radial;
   // One line each, without a "warning:" prefix: glow_warnings(params) (the CLI prints those
   // itself) followed by what only the image shows (an alpha that is 1 or 0 everywhere).
   std::vector<std::string> warnings;
@@ -68,5 +73,6 @@ std::vector<std::string> glow_warnings(const GlowParams& params);
 std::span<const std::string_view> scene_keys();
 std::span<const std::string_view> scene_glow_keys();
 std::span<const std::string_view> scene_profile_keys();
+std::span<const std::string_view> scene_radial_keys(); // "radial"
 
 } // namespace tierlift::effects

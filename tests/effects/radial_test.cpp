@@ -1,0 +1,233 @@
+// Radial-blur beams (effects/radial.h): the beams of a single bright pixel against the
+// radial kernel's closed form, computed here from the article's rule alone (copy i reads
+// u' = c + (u − c)(1 − 2·i·step), weight (1/8)(N − i)/N, a bilinear read of one lit texel is
+// the product of the tent weights max(0, 1 − |u'·W − ½ − x₀|) per axis); the three ways
+// agreeing on every pass; the star moving with the frame; and bad "radial" fields in scenes.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "../vulkan/vk_test_util.h"
+#include "tierlift/effects/agreement.h"
+#include "tierlift/effects/analytic_device.h"
+#include "tierlift/effects/glow_run.h"
+#include "tierlift/effects/radial.h"
+#include "tierlift/effects/scene.h"
+
+namespace tierlift::effects {
+namespace {
+
+constexpr uint32_t kW = 41, kH = 33;
+constexpr uint32_t kX0 = 29, kY0 = 11; // the lit texel
+constexpr float kLit[4] = {1.0f, 0.5f, 0.25f, 1.0f};
+
+img::Image single_pixel() {
+  img::Image im(kW, kH);
+  for (int c = 0; c < 4; ++c) im.rgba[(size_t(kY0) * kW + kX0) * 4 + c] = kLit[c];
+  return im;
+}
+
+// The beams' red channel at pixel (x, y) by the closed form (lit value 1 in red).
+double closed_form(double cx, double cy, unsigned n, double step, uint32_t x, uint32_t y) {
+  double sum = 0;
+  for (unsigned i = 1; i <= n; ++i) {
+    const double s = 1 - 2.0 * i * step;
+    const double u = cx + ((x + 0.5) / kW - cx) * s, v = cy + ((y + 0.5) / kH - cy) * s;
+    const double wx = std::max(0.0, 1 - std::abs(u * kW - 0.5 - kX0));
+    const double wy = std::max(0.0, 1 - std::abs(v * kH - 0.5 - kY0));
+    sum += (1.0 / 8.0) * double(n - i) / n * wx * wy;
+  }
+  return sum;
+}
+
+RadialParams still_params() {
+  RadialParams r;
+  r.centre = {0.3, 0.6};
+  r.steps = 20; // three ps.2.0 passes (8 + 8 + 4), five ps.1.x passes
+  r.step = 0.0125;
+  r.strength = 0.75;
+  r.amplitude = 0; // the star is the scene image unmoved
+  return r;
+}
+
+GlowParams glow_params(Tier tier, img::Format format = img::Format::RGBA32F) {
+  GlowParams g;
+  g.tier = tier;
+  g.width = kW;
+  g.height = kH;
+  g.format = format;
+  g.subtexel_bits = 0; // lavapipe weights float textures exactly
+  return g;
+}
+
+class RadialWays : public vulkan::test::VulkanTest, public ::testing::WithParamInterface<Tier> {};
+
+TEST_P(RadialWays, SingleBrightPixelMatchesTheClosedForm) {
+  const RadialParams r = still_params();
+  GlowPlan plan = build_radial(glow_params(GetParam()), r);
+  ASSERT_TRUE(plan) << plan.error;
+  CpuPassDevice cpu(2);
+  AnalyticPassDevice analytic;
+  auto vk = make_vulkan_pass_device(*dev);
+  const img::Image scene = single_pixel();
+  double worst = 0, peak = 0;
+  for (PassDevice* d :
+       {static_cast<PassDevice*>(&cpu), vk.get(), static_cast<PassDevice*>(&analytic)}) {
+    GlowRun run = run_glow(plan, scene, *d, false);
+    ASSERT_TRUE(run.run.ok) << run.run.error;
+    const img::Image& beams = run.images.at(std::string(kGlowTexture));
+    const img::Image& fin = run.images.at(std::string(kFinalTexture));
+    for (uint32_t y = 0; y < kH; ++y)
+      for (uint32_t x = 0; x < kW; ++x) {
+        const double k = closed_form(r.centre[0], r.centre[1], r.steps, r.step, x, y);
+        peak = std::max(peak, k);
+        const size_t i = (size_t(y) * kW + x) * 4;
+        for (int c = 0; c < 4; ++c) {
+          worst = std::max(worst, std::abs(beams.rgba[i + c] - k * kLit[c]));
+          const double star = (x == kX0 && y == kY0) ? kLit[c] : 0.0;
+          const double want = c == 3 ? star : star + r.strength * k * kLit[c];
+          // docs/design.md: RGBA32F agrees to 1e-5 of full scale.
+          ASSERT_NEAR(fin.rgba[i + c], want, 1e-5) << x << "," << y << " c" << c;
+        }
+      }
+  }
+  EXPECT_LE(worst, 1e-5);
+  EXPECT_GT(peak, 0.05); // the beam is there: the nearest copies read the lit texel strongly
+  EXPECT_TRUE(dev->messages().empty()) << dev->messages().front();
+  std::printf("[radial] %s single pixel: max |device - closed form| %.3g (peak %.4f)\n",
+              std::string(tier_name(GetParam())).c_str(), worst, peak);
+}
+
+img::Image random_scene(uint32_t seed) {
+  img::Image im(kW, kH);
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> byte(0, 255);
+  for (float& v : im.rgba) v = float(byte(rng)) / 255.0f;
+  return im;
+}
+
+TEST_P(RadialWays, ThreeWaysAgreeOnEveryPassWithTheStarMoving) {
+  for (img::Format f : {img::Format::RGBA32F, img::Format::RGBA8}) {
+    RadialParams r = still_params();
+    r.amplitude = 3;
+    r.frame = 17;
+    GlowPlan plan = build_radial(glow_params(GetParam(), f), r);
+    ASSERT_TRUE(plan) << plan.error;
+    CpuPassDevice cpu(2);
+    AnalyticPassDevice analytic;
+    auto vk = make_vulkan_pass_device(*dev);
+    const img::Image scene = random_scene(7);
+    std::vector<std::pair<std::string, GlowRun>> ways;
+    ways.emplace_back("cpu", run_glow(plan, scene, cpu, true));
+    ways.emplace_back("vulkan", run_glow(plan, scene, *vk, true));
+    ways.emplace_back("analytic", run_glow(plan, scene, analytic, true));
+    for (auto& [name, w] : ways) ASSERT_TRUE(w.run.ok) << name << ": " << w.run.error;
+    for (size_t a = 0; a < ways.size(); ++a)
+      for (size_t b = a + 1; b < ways.size(); ++b) {
+        RunAgreement agree =
+            compare_runs(ways[a].second.run, ways[a].second.images, ways[b].second.run,
+                         ways[b].second.images, std::string(kFinalTexture));
+        ASSERT_EQ(agree.error, "");
+        for (const PassAgreement& row : agree.passes) {
+          EXPECT_TRUE(row.verdict.pass) << ways[a].first << " vs " << ways[b].first << ", "
+                                        << row.pass << ": " << row.verdict.summary;
+          std::printf("[radial] %s %s %s-%s %-10s max abs %.3g\n",
+                      std::string(tier_name(GetParam())).c_str(),
+                      std::string(img::format_name(f)).c_str(), ways[a].first.c_str(),
+                      ways[b].first.c_str(), row.pass.c_str(), row.comparison.max_abs_all);
+        }
+      }
+  }
+  EXPECT_TRUE(dev->messages().empty()) << dev->messages().front();
+}
+
+INSTANTIATE_TEST_SUITE_P(Radial, RadialWays, ::testing::Values(Tier::Dx9, Tier::Dx8),
+                         [](const ::testing::TestParamInfo<Tier>& i) {
+                           return std::string(tier_name(i.param));
+                         });
+
+TEST(Radial, CopiesFollowTheArticle) {
+  RadialParams r;
+  r.steps = 4;
+  const std::vector<RadialCopy> c = radial_copies(r, 100, 50);
+  ASSERT_EQ(c.size(), 4u);
+  // Copy 1 (centre ½): the quad's texture range is [0.0075, 0.9925]; texel 0's centre maps
+  // to 0.0075 + 0.985·0.5/100.
+  EXPECT_NEAR(c[0].scale, 0.985, 1e-15);
+  EXPECT_NEAR(c[0].offset[0], 0.0075 + 0.985 * 0.005, 1e-15);
+  EXPECT_NEAR(c[0].offset[1], 0.0075 + 0.985 * 0.01, 1e-15);
+  // Weights (1/8)(N − i)/N: 3/32, 2/32, 1/32, 0.
+  EXPECT_DOUBLE_EQ(c[0].weight, 3.0 / 32);
+  EXPECT_DOUBLE_EQ(c[2].weight, 1.0 / 32);
+  EXPECT_DOUBLE_EQ(c[3].weight, 0.0);
+}
+
+TEST(Radial, StarMovesWithTheFrameAndStillAtAmplitudeZero) {
+  RadialParams r;
+  const auto a = star_offsets(r, 0, 64, 64), b = star_offsets(r, 45, 64, 64);
+  for (int k = 0; k < 4; ++k) EXPECT_DOUBLE_EQ(a[k][0], 0.5 / 64); // time 0: no offset
+  for (int k = 0; k < 4; ++k)
+    for (int j = k + 1; j < 4; ++j) EXPECT_NE(b[k], b[j]); // four different motions
+  r.amplitude = 0;
+  for (const auto& o : star_offsets(r, 45, 64, 64)) EXPECT_DOUBLE_EQ(o[1], 0.5 / 64);
+}
+
+TEST(Radial, PlanRefusesBadParameters) {
+  RadialParams r;
+  r.steps = 80; // 2·80·0.0075 = 1.2: zooms past the centre
+  EXPECT_NE(build_radial(glow_params(Tier::Dx9), r).error.find("radial step"), std::string::npos);
+  r = RadialParams{};
+  r.strength = 2;
+  EXPECT_NE(build_radial(glow_params(Tier::Dx8), r).error.find("strength"), std::string::npos);
+  EXPECT_TRUE(build_radial(glow_params(Tier::Dx9), r));
+}
+
+// Scene errors sit at the value at fault (line:col) and name it by its JSON pointer.
+std::string scene_error(const std::string& radial, const std::string& effect = "radial-beams") {
+  const std::string text =
+      "{\n  \"effect\": \"" + effect + "\",\n  \"radial\": " + radial + "\n}\n";
+  SceneLoad load = parse_scene(text, "s.json", "");
+  return load ? std::string() : load.error;
+}
+
+TEST(RadialScene, ReadsEveryField) {
+  SceneLoad load = parse_scene(R"({"effect": "radial-beams", "size": [64, 32],
+    "radial": {"centre": [0.25, 0.75], "steps": 12, "step": 0.01, "strength": 0.5,
+               "tier": "dx8", "amplitude": 2, "rate": 24, "frame": 9}})",
+                               "s.json", "");
+  ASSERT_TRUE(load) << load.error;
+  const Scene& s = *load.scene;
+  EXPECT_EQ(s.effect, "radial-beams");
+  EXPECT_EQ(s.params.tier, Tier::Dx8);
+  EXPECT_EQ(s.radial.centre[1], 0.75);
+  EXPECT_EQ(s.radial.steps, 12u);
+  EXPECT_EQ(s.radial.step, 0.01);
+  EXPECT_EQ(s.radial.frame, 9u);
+  EXPECT_EQ(s.radial.rate, 24);
+  EXPECT_TRUE(build_radial(s.params, s.radial));
+}
+
+TEST(RadialScene, BadFieldsArePositioned) {
+  EXPECT_NE(scene_error(R"({"centre": [0.5, 1.5]})").find("s.json:3:30: error: /radial/centre/1"),
+            std::string::npos)
+      << scene_error(R"({"centre": [0.5, 1.5]})");
+  EXPECT_NE(scene_error(R"({"steps": 40, "step": 0.02})").find("3:36: error: /radial/step"),
+            std::string::npos)
+      << scene_error(R"({"steps": 40, "step": 0.02})");
+  EXPECT_NE(scene_error(R"({"steps": 0})").find("/radial/steps: 0 is outside"), std::string::npos);
+  EXPECT_NE(scene_error(R"({"tier": "dx8", "strength": 1.5})").find("/radial/strength"),
+            std::string::npos);
+  EXPECT_NE(scene_error(R"({"rate": 0})").find("/radial/rate"), std::string::npos);
+  EXPECT_NE(scene_error(R"({"zoom": 1})").find("/radial/zoom"), std::string::npos);
+  EXPECT_NE(scene_error(R"({"tier": "dx7"})").find("/radial/tier"), std::string::npos);
+  EXPECT_NE(scene_error("{}", "beams").find("/effect: \"beams\" is not an effect"),
+            std::string::npos);
+  EXPECT_NE(scene_error("{}", "glow").find("/radial"), std::string::npos);
+  // The caret line is there.
+  EXPECT_NE(scene_error(R"({"steps": 0})").find('^'), std::string::npos);
+}
+
+} // namespace
+} // namespace tierlift::effects
