@@ -213,7 +213,7 @@ TEST(RadialScene, BadFieldsArePositioned) {
   EXPECT_NE(scene_error(R"({"centre": [0.5, 1.5]})").find("s.json:3:30: error: /radial/centre/1"),
             std::string::npos)
       << scene_error(R"({"centre": [0.5, 1.5]})");
-  EXPECT_NE(scene_error(R"({"steps": 40, "step": 0.02})").find("3:36: error: /radial/step"),
+  EXPECT_NE(scene_error(R"({"steps": 40, "step": 0.02})").find("3:35: error: /radial/step"),
             std::string::npos)
       << scene_error(R"({"steps": 40, "step": 0.02})");
   EXPECT_NE(scene_error(R"({"steps": 0})").find("/radial/steps: 0 is outside"), std::string::npos);

@@ -1,0 +1,56 @@
+// `tierlift glow --scene` on a radial-beams scene, end to end: the three ways and the
+// agreement table, the beams image written; a bad "radial" field is a positioned error, exit
+// 1, nothing written.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <sys/wait.h>
+
+#include "cli_fixture.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+int run_cli(const std::string& args, const fs::path& out_file) {
+  const std::string cmd =
+      std::string(TIERLIFT_CLI_PATH) + " " + args + " > " + out_file.string() + " 2>&1";
+  const int status = std::system(cmd.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+class CliRadial : public tierlift::cli_test::CliFixture {};
+
+TEST_F(CliRadial, ShippedSceneThreeWaysWithinTargets) {
+  const fs::path scene =
+      fs::path(TIERLIFT_SOURCE_DIR) / "listings" / "scenes" / "radial-beams.json";
+  const fs::path log = dir / "log.txt";
+  ASSERT_EQ(
+      run_cli("glow -q --backend all --scene " + scene.string() + " -o " + (dir / "out").string(),
+              log),
+      0)
+      << read(log);
+  const std::string text = read(log);
+  EXPECT_NE(text.find("radial-beams dx9: 320x180"), std::string::npos) << text;
+  EXPECT_NE(text.find("zoom.3"), std::string::npos) << text; // 32 copies, 8 a pass
+  EXPECT_NE(text.find("every pair within design.md's targets"), std::string::npos) << text;
+  for (const char* way : {"cpu", "vulkan", "analytic"})
+    EXPECT_TRUE(fs::exists(dir / "out" / (std::string("glow-") + way + ".png"))) << way;
+}
+
+TEST_F(CliRadial, BadRadialFieldExitsOneAndWritesNothing) {
+  const fs::path scene = dir / "bad.json", log = dir / "log.txt";
+  std::ofstream(scene) << "{\n  \"effect\": \"radial-beams\",\n  \"radial\": { \"centre\": [2, "
+                          "0.5] }\n}\n";
+  EXPECT_EQ(run_cli("glow --scene " + scene.string() + " -o " + (dir / "out").string(), log), 1)
+      << read(log);
+  EXPECT_NE(read(log).find("bad.json:3:26: error: /radial/centre/0: 2 is outside"),
+            std::string::npos)
+      << read(log);
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+} // namespace
