@@ -181,7 +181,13 @@ nlohmann::json summary_json(const effects::Scene& scene, const effects::GlowPlan
       {"taps", plan.taps.size()},
       {"blur_passes_per_axis", plan.blur_passes_per_axis},
       {"passes", plan.graph.passes.size()},
-      {"warnings", scene.warnings}};
+      {"warnings", scene.warnings},
+      {"effect", scene.effect}};
+  if (scene.effect == "radial-beams")
+    j["radial"] = {{"centre", scene.radial.centre},       {"steps", scene.radial.steps},
+                   {"step", scene.radial.step},           {"strength", scene.radial.strength},
+                   {"amplitude", scene.radial.amplitude}, {"rate", scene.radial.rate},
+                   {"frame", scene.radial.frame}};
   for (const GlowWay& w : ways) {
     nlohmann::json passes = nlohmann::json::array();
     for (const effects::PassRecord& r : w.glow.run.passes)
