@@ -198,12 +198,17 @@ void register_report_command(CLI::App& app) {
                 "half texel on; cpu and vulkan timed over 2 frames)");
   sub->add_option("--frames", f->frames, "Steady-state frames timed per device and configuration")
       ->check(CLI::Range(1u, 1000u));
-  sub->add_option("--tiers", f->tiers, "Comma-separated tiers to sweep (default: every tier)");
-  sub->add_option("--downsamples", f->downsamples, "Comma-separated factors 1..4");
+  sub->add_option("--tiers", f->tiers, "Comma-separated tiers to sweep (default: every tier)")
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  sub->add_option("--downsamples", f->downsamples, "Comma-separated factors 1..4")
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
   sub->add_option("--taps", f->taps,
-                  "Comma-separated fractions in (0, 1] of the whole kernel's radius");
-  sub->add_option("--formats", f->formats, "Comma-separated rgba8, rgba16f, rgba32f");
-  sub->add_option("--half-texel", f->half_texel, "Comma-separated on, off");
+                  "Comma-separated fractions in (0, 1] of the whole kernel's radius")
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  sub->add_option("--formats", f->formats, "Comma-separated rgba8, rgba16f, rgba32f")
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  sub->add_option("--half-texel", f->half_texel, "Comma-separated on, off")
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
   sub->add_flag("--no-vulkan", f->no_vulkan, "Run without a Vulkan device (cpu and analytic)");
   sub->add_option("--gpu", f->gpu, "Vulkan device name filter (default: lavapipe)");
   sub->add_flag("--json", f->json, "Print one JSON document on standard output (no progress)");

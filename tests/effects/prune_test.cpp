@@ -57,7 +57,8 @@ TEST(Prune, BuiltInSceneUnchanged) {
       const Outcome o =
           expect_same(params(320, 180, t, f, 2), make_default_scene(320, 180), "built-in");
       // RGBA8: the kernel's outermost tap (0.7 · e^-4.5 / 10 ≈ 8e-4 of the source) stores 0.
-      if (f == img::Format::RGBA8) {
+      // (tier dx9's ps_2_0 passes; ps_1_x passes keep their own precision and all stay)
+      if (f == img::Format::RGBA8 && t == Tier::Dx9) {
         EXPECT_GT(o.left_out, 0u) << tier_name(t);
       } else {
         EXPECT_EQ(o.left_out, 0u) << tier_name(t);

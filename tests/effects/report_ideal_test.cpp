@@ -61,6 +61,11 @@ BlurProfile profile() {
 RgbImage direct_ideal(const img::Image& scene, const BlurProfile& p) {
   RgbImage out{scene.width, scene.height,
                std::vector<double>(size_t{scene.width} * scene.height * 3)};
+  // K(d) for every distance the image has, integrated once.
+  const int reach = int(std::max(scene.width, scene.height));
+  std::vector<double> k1(size_t(2 * reach + 1));
+  for (int d = -reach; d <= reach; ++d) k1[size_t(d + reach)] = kernel(d, p);
+  auto kernel = [&](int d, const BlurProfile&) { return k1[size_t(d + reach)]; };
   for (uint32_t j = 0; j < scene.height; ++j)
     for (uint32_t i = 0; i < scene.width; ++i)
       for (uint32_t y = 0; y < scene.height; ++y)

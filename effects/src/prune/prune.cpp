@@ -42,6 +42,13 @@ double prune_axis(std::vector<PassDesc>& passes, std::string_view axis, double i
     }
     const double s = weight_sum(p);
     total += s;
+    // ps_1_x pixel listings keep their own register precision (the tier dx8 passes): the
+    // bound of a rounded store holds for ps_2_0 arithmetic only, so those passes all stay.
+    if (!p.ps || p.ps->profile != ir::Profile::ps_2_0) {
+      ++kept;
+      result.push_back(std::move(p));
+      continue;
+    }
     const bool first_of_axis = p.blend == pass::BlendMode::Replace;
     if (s * input_bound < kBelowHalfStep) {
       out.push_back({p.name, fmt::format("its taps sum to {:.3g} and its input is at most {:.3g} "

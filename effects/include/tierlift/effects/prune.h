@@ -3,7 +3,8 @@
 // (bit for bit in every texture the frame and the glow are made of):
 //  - no glow sources (alpha 0 everywhere): extract, downsample and blur would write zeros into
 //    textures that start at zero, so none of them runs;
-//  - RGBA8 blur passes whose taps cannot change any stored value: a pass whose weights sum
+//  - RGBA8 blur passes (ps_2_0 listings: tier dx9) whose taps cannot change any stored value: a
+//  pass whose weights sum
 //    to S over inputs bounded by B (from this scene's value range, the rounding of every
 //    store before it added) writes values below S·B; when S·B is below half a step (1/510,
 //    with a margin of 1 % for fp32 arithmetic) each of them stores 0, and ONE/ONE adds 0,
