@@ -16,6 +16,7 @@
 #include "report.h"
 #include "tierlift/effects/analytic_device.h"
 #include "tierlift/effects/memory_plan.h"
+#include "tierlift/effects/prune.h"
 #include "tierlift/effects/scene.h"
 #include "tierlift/ir/ps1x_range.h"
 #include "tierlift/vulkan/device.h"
@@ -27,6 +28,7 @@ struct GlowFlags {
   std::string scene, image, tier, format, backend = "all", output, gpu, ps1x_max;
   unsigned downsample = 0; // 0: the scene's
   bool no_half_texel = false, json = false, quiet = false;
+  bool explain = false, no_prune = false; // --explain: what pruning left out; --no-prune
   FrontEndOptions listing; // -D, -I, --profile, --skip-validation (its json is unused)
   bool both_devices() const { return backend == "both"; } // cpu and vulkan, no analytic
   unsigned threads = 0;
@@ -236,6 +238,9 @@ int run(const GlowFlags& f) {
     if (std::find(warnings.begin(), warnings.end(), w) == warnings.end()) warnings.push_back(w);
   for (const std::string& w : warnings) report.warning("scene", fmt::format("{}: {}", where, w));
   scene->warnings = warnings;
+  // Leave out what this scene does not need (prune.h), unless --no-prune.
+  const effects::PrunedGraph pruned = effects::prune_glow(plan, *image);
+  if (!f.no_prune) plan.graph = pruned.graph;
 
   const bool all = f.backend == "all", both = f.both_devices();
   // The device lives until the process ends (never destroyed): lavapipe then stays loaded,
@@ -306,6 +311,10 @@ int run(const GlowFlags& f) {
     j["memory"] = {{"planned_peak_bytes", planned_bytes},
                    {"available_bytes", effects::available_memory()}};
     j["all_within_targets"] = all_within;
+    nlohmann::json left = nlohmann::json::array();
+    for (const effects::LeftOut& l : pruned.left_out)
+      left.push_back({{"what", l.what}, {"why", l.why}});
+    j["pruning"] = {{"enabled", !f.no_prune}, {"left_out", left}};
     j["written"] = written;
   } else {
     if (radial)
@@ -325,6 +334,15 @@ int run(const GlowFlags& f) {
     for (const GlowWay& w : ways)
       fmt::print("{}: {} passes in {:.1f} ms{}\n", w.name, w.glow.run.passes.size(),
                  w.glow.run.total_ms, w.name == "vulkan" ? fmt::format(" ({})", vk->name()) : "");
+    if (f.explain) {
+      fmt::print("pruning {}: {} of {} passes left out{}\n", f.no_prune ? "off (--no-prune)" : "on",
+                 pruned.left_out.size(), pruned.passes_before,
+                 pruned.left_out.empty() ? " (the scene needs every pass)" : "");
+      for (const effects::LeftOut& l : pruned.left_out)
+        fmt::print("  {} {}: {}\n", f.no_prune ? "would leave out" : "left out", l.what, l.why);
+      fmt::print("  kept: the SPIR-V pair pruning of every pass (unused constants, inputs and "
+                 "outputs; tierlift spirv --pair --explain)\n");
+    }
     print_frames_table(frames);
     print_agreement_table(pairs);
     if (!pairs.empty())
@@ -382,6 +400,8 @@ void register_glow_command(CLI::App& app) {
                 "Print one JSON document on standard output (docs/command-line.md; no "
                 "progress lines)");
   sub->add_flag("-q,--quiet", f->quiet, "No progress lines");
+  sub->add_flag("--explain", f->explain, "List what pruning leaves out for this scene, and why");
+  sub->add_flag("--no-prune", f->no_prune, "Run the whole plan (nothing left out)");
   sub->add_option("--threads", f->threads, "CPU worker threads (0 = every core)")
       ->capture_default_str();
   sub->add_option("--frames", f->frames,

@@ -16,6 +16,7 @@ constexpr const char* kExamples = R"(Examples:
   tierlift assemble shader.psh -o shader.bin       Direct3D 9 token stream
   tierlift disasm shader.bin                       token stream (raw or C array) back to text
   tierlift listings                                check and print the built-in article listings
+  tierlift report --quick -o report-out             glow error against run time, Pareto plot
   tierlift spirv blur.vsh --pair blur.psh --explain   SPIR-V, pruned against the other stage
   tierlift run --vs blur.vsh --ps blur.psh --texture s0=builtin:noise:64x64 -o out.pfm
 Conventions (every command; docs/command-line.md):
@@ -66,6 +67,7 @@ int main(int argc, char** argv) {
   tierlift::cli::register_spirv_command(app);
   tierlift::cli::register_run_command(app);
   tierlift::cli::register_glow_command(app);
+  tierlift::cli::register_report_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs every Debian 12 package tierlift needs to build, test and benchmark.
+# Installs every Debian 12 package tierlift needs to build, test and benchmark
+# (gnuplot-nox draws the plot of `tierlift report`).
 # Run as root (CI does); with sudo otherwise.
 set -euo pipefail
 SUDO=""
@@ -13,4 +14,5 @@ $SUDO apt-get install -y --no-install-recommends \
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers \
   libglm-dev libgtest-dev libgmock-dev libbenchmark-dev \
   libcli11-dev libfmt-dev nlohmann-json3-dev libstb-dev libpng-dev zlib1g-dev \
+  gnuplot-nox \
   libopencv-imgproc-dev  # OpenCV core + imgproc (~6.5 MB): the glow benchmark's peer only

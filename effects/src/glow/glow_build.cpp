@@ -15,6 +15,17 @@ std::optional<Tier> parse_tier(std::string_view name) {
   return std::nullopt;
 }
 
+std::vector<Tier> all_tiers() {
+  std::vector<Tier> tiers;
+  // A scoped enum's underlying type is int, so every int converts to a Tier value.
+  for (int i = 0; i < 64; ++i) {
+    const auto t = static_cast<Tier>(i);
+    if (parse_tier(tier_name(t)) != t) break;
+    tiers.push_back(t);
+  }
+  return tiers;
+}
+
 GlowPlan build_glow(const GlowParams& params) {
   return params.tier == Tier::Dx8 ? build_glow_dx8(params) : build_glow_dx9(params);
 }

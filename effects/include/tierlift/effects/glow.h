@@ -69,6 +69,10 @@ inline constexpr unsigned kTapsPerBlurPassDx8 = 4; // Listing 3's four oT#
 enum class Tier { Dx9, Dx8 };
 std::string_view tier_name(Tier tier);                 // "dx9", "dx8"
 std::optional<Tier> parse_tier(std::string_view name); // nullopt for anything else
+// Every tier, in declaration order: the enum's values from 0 on for as long as tier_name and
+// parse_tier round-trip them, so a tier added to the enum, tier_name and parse_tier joins
+// every list (the report's sweep, messages) by itself.
+std::vector<Tier> all_tiers();
 
 struct GlowParams {
   Tier tier = Tier::Dx9;

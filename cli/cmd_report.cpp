@@ -1,0 +1,219 @@
+// tierlift report: the glow swept over tier, downsample, taps, format and half texel; error
+// against the ideal glow, agreement of the three ways and run time per configuration, written
+// as report.json, report.csv, report.md and the error-vs-time plot. Only flags and printing
+// live here; the work is tierlift::effects (report_sweep.h, report_files.h).
+#include <fmt/format.h>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <unistd.h>
+
+#include "commands.h"
+#include "report.h"
+#include "tierlift/effects/report_files.h"
+#include "tierlift/effects/report_sweep.h"
+#include "tierlift/vulkan/device.h"
+
+namespace tierlift::cli {
+namespace {
+
+struct ReportFlags {
+  std::string scene, image, output, gpu;
+  std::optional<std::string> tiers, downsamples, taps, formats, half_texel;
+  unsigned frames = 0; // 0: the sweep's default
+  bool json = false, quick = false, quiet = false, no_vulkan = false;
+};
+
+std::vector<std::string> split(const std::string& list) {
+  std::vector<std::string> out;
+  std::stringstream in(list);
+  for (std::string item; std::getline(in, item, ',');)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+// One list flag into the sweep; a word that is not one of the choices is a usage error.
+template <typename T, typename Parse>
+bool parse_list(const std::optional<std::string>& flag, const char* name, Parse parse,
+                std::vector<T>& out, std::string* error) {
+  if (!flag) return true;
+  out.clear();
+  for (const std::string& word : split(*flag)) {
+    std::optional<T> v = parse(word);
+    if (!v) {
+      *error = fmt::format("{} '{}': not one of the choices (see --help)", name, word);
+      return false;
+    }
+    out.push_back(*v);
+  }
+  return true;
+}
+
+bool apply_lists(const ReportFlags& f, effects::SweepSettings& s, std::string* error) {
+  return parse_list<effects::Tier>(f.tiers, "--tiers", effects::parse_tier, s.tiers, error) &&
+         parse_list<unsigned>(
+             f.downsamples, "--downsamples",
+             [](const std::string& w) -> std::optional<unsigned> {
+               if (w.size() == 1 && w[0] >= '1' && w[0] <= '4') return unsigned(w[0] - '0');
+               return std::nullopt;
+             },
+             s.downsamples, error) &&
+         parse_list<double>(
+             f.taps, "--taps",
+             [](const std::string& w) -> std::optional<double> {
+               char* end = nullptr;
+               const double v = std::strtod(w.c_str(), &end);
+               if (end == w.c_str() || *end != '\0' || !(v > 0 && v <= 1)) return std::nullopt;
+               return v;
+             },
+             s.taps, error) &&
+         parse_list<img::Format>(f.formats, "--formats", img::parse_format, s.formats, error) &&
+         parse_list<bool>(
+             f.half_texel, "--half-texel",
+             [](const std::string& w) -> std::optional<bool> {
+               if (w == "on") return true;
+               if (w == "off") return false;
+               return std::nullopt;
+             },
+             s.half_texels, error);
+}
+
+void print_summary(const effects::SweepResult& r) {
+  fmt::print("{:<40} {:>10} {:>11} {:>11} {:>10} {:>6} {}\n", "configuration", "frame ms",
+             "final rmse", "final max", "glow rmse", "agree", "");
+  for (size_t i = 0; i < r.configs.size(); ++i) {
+    const effects::ConfigResult& c = r.configs[i];
+    std::string mark;
+    if (c.scene_choice) mark += " scene";
+    if (std::find(r.pareto.begin(), r.pareto.end(), i) != r.pareto.end()) mark += " pareto";
+    if (r.cheapest_within == i) mark += " cheapest-within-1/255";
+    if (!c.skipped.empty()) {
+      fmt::print("{:<40} skipped: {}\n", effects::config_label(c.config), c.skipped);
+      continue;
+    }
+    fmt::print("{:<40} {:>10.2f} {:>11.3g} {:>11.3g} {:>10.3g} {:>6}{}\n",
+               effects::config_label(c.config), c.frame_ms(), c.final.rmse, c.final.max_abs,
+               c.glow.rmse, c.all_agree ? "yes" : "NO", mark);
+  }
+}
+
+int run(const ReportFlags& f) {
+  Report report("report", f.json);
+  effects::SceneLoad load;
+  if (!f.scene.empty())
+    load = effects::load_scene_file(f.scene);
+  else if (!f.image.empty())
+    load = effects::scene_from_png(f.image);
+  else
+    load.scene = effects::default_scene();
+  if (!load.scene) {
+    if (report.json())
+      report.error(load.io_error ? "io" : "scene", load.error, f.scene.empty() ? f.image : f.scene);
+    else
+      fmt::print(stderr, "{}{}", load.error, load.error.ends_with('\n') ? "" : "\n");
+    return report.finish(load.io_error ? kExitUsage : kExitInvalid);
+  }
+  const effects::Scene& scene = *load.scene;
+  effects::SweepSettings s = f.quick ? effects::quick_sweep() : effects::full_sweep();
+  if (f.frames != 0) s.frames = f.frames;
+  std::string err;
+  if (!apply_lists(f, s, &err)) {
+    report.error("usage", err);
+    return report.finish(kExitUsage);
+  }
+  if (effects::sweep_configs(s, scene.params).empty()) {
+    report.error("usage", "the sweep is empty: --tiers, --downsamples, --taps, --formats and "
+                          "--half-texel each need at least one value");
+    return report.finish(kExitUsage);
+  }
+  img::ImageResult image = effects::load_scene_image(scene);
+  if (!image) {
+    const bool io = img::is_io_error(image);
+    report.error(io ? "io" : "scene", image.message(), scene.image);
+    return report.finish(io ? kExitUsage : kExitInvalid);
+  }
+  // The device lives until the process ends, as in `tierlift glow` (LeakSanitizer and
+  // lavapipe's process-lifetime allocations).
+  static vulkan::Device* vk = nullptr;
+  if (!f.no_vulkan && !vk) {
+    vulkan::DeviceOptions o;
+    o.gpu_filter = f.gpu;
+    vk = vulkan::Device::create(o, &err).release();
+    if (!vk) {
+      report.error("device", err);
+      return report.finish(kExitUsage);
+    }
+  }
+  if (f.no_vulkan) std::erase(s.timed, std::string("vulkan"));
+  const bool tty = isatty(STDERR_FILENO) != 0;
+  effects::SweepProgress progress;
+  if (!f.quiet && !f.json)
+    progress = [tty](size_t i, size_t n, const effects::SweepConfig& c) {
+      fmt::print(stderr, "{}[report] {}/{}: {}{}", tty ? "\r\033[K" : "", i + 1, n,
+                 effects::config_label(c), tty ? "" : "\n");
+    };
+  const effects::SweepResult r = effects::run_sweep(scene, *image, s, vk, progress);
+  if (tty && progress) fmt::print(stderr, "\n");
+  if (!r.error.empty()) {
+    report.error("run", r.error);
+    return report.finish(kExitInvalid);
+  }
+  effects::ReportInfo info;
+  info.scene_file = scene.file;
+  info.scene_image = scene.image;
+  info.width = scene.params.width;
+  info.height = scene.params.height;
+  info.intensity = scene.params.intensity;
+  if (vk) info.vulkan_device = vk->name();
+  std::vector<std::string> written;
+  if (!f.output.empty())
+    if (err = effects::write_report(f.output, r, s, info, &written); !err.empty()) {
+      report.error("io", err, f.output);
+      return report.finish(kExitUsage);
+    }
+  if (report.json()) {
+    report.result() = effects::report_json(r, s, info);
+    report.result()["written"] = written;
+  } else {
+    print_summary(r);
+    for (const std::string& file : written) fmt::print("wrote {}\n", file);
+  }
+  return report.finish(kExitOk);
+}
+
+} // namespace
+
+void register_report_command(CLI::App& app) {
+  auto f = std::make_shared<ReportFlags>();
+  CLI::App* sub = app.add_subcommand(
+      "report", "Sweep the glow over tier, downsample, taps, format and half texel: error "
+                "against the ideal glow, agreement and run time, with a Pareto plot");
+  auto* scene = sub->add_option("--scene", f->scene, "Scene file (JSON, listings/scenes/)");
+  sub->add_option("--image", f->image, "PNG with alpha as the scene (default glow parameters)")
+      ->excludes(scene);
+  sub->add_option("-o,--output", f->output,
+                  "Folder for report.json, report.csv, report.md, error-vs-time.png/.svg");
+  sub->add_flag("--quick", f->quick,
+                "A small sweep (downsample 2 and 4, full and half radius, rgba8 and rgba32f, "
+                "half texel on; cpu and vulkan timed over 2 frames)");
+  sub->add_option("--frames", f->frames, "Steady-state frames timed per device and configuration")
+      ->check(CLI::Range(1u, 1000u));
+  sub->add_option("--tiers", f->tiers, "Comma-separated tiers to sweep (default: every tier)")
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  sub->add_option("--downsamples", f->downsamples, "Comma-separated factors 1..4")
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  sub->add_option("--taps", f->taps,
+                  "Comma-separated fractions in (0, 1] of the whole kernel's radius")
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  sub->add_option("--formats", f->formats, "Comma-separated rgba8, rgba16f, rgba32f")
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  sub->add_option("--half-texel", f->half_texel, "Comma-separated on, off")
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  sub->add_flag("--no-vulkan", f->no_vulkan, "Run without a Vulkan device (cpu and analytic)");
+  sub->add_option("--gpu", f->gpu, "Vulkan device name filter (default: lavapipe)");
+  sub->add_flag("--json", f->json, "Print one JSON document on standard output (no progress)");
+  sub->add_flag("-q,--quiet", f->quiet, "No progress lines");
+  set_action(sub, [f] { return run(*f); });
+}
+
+} // namespace tierlift::cli

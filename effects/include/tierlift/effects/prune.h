@@ -1,0 +1,46 @@
+// Leaving out what a scene does not need: the glow's plan pruned for the scene at hand, each
+// thing left out named with the reason. Every rule is one whose result is provably the same
+// (bit for bit in every texture the frame and the glow are made of):
+//  - no glow sources (alpha 0 everywhere): extract, downsample and blur would write zeros into
+//    textures that start at zero, so none of them runs;
+//  - RGBA8 blur passes (ps_2_0 listings: tier dx9) whose taps cannot change any stored value: a
+//  pass whose weights sum
+//    to S over inputs bounded by B (from this scene's value range, the rounding of every
+//    store before it added) writes values below S·B; when S·B is below half a step (1/510,
+//    with a margin of 1 % for fp32 arithmetic) each of them stores 0, and ONE/ONE adds 0,
+//    so the pass is left out (the next pass of that axis then replaces, as the first did);
+//  - passes whose output nothing reads: walking back from the final frame, a pass is kept
+//    when its target is read later (or is the frame);
+//  - the SPIR-V pair pruning (unused constants, inputs and outputs of each vertex + pixel
+//    pair) happens where every pass is compiled, as before.
+// A scene with a non-finite value is not pruned (a NaN or an infinity times a weight of 0
+// is not 0).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "tierlift/effects/glow.h"
+#include "tierlift/image/image.h"
+
+namespace tierlift::effects {
+
+struct LeftOut {
+  std::string what; // a pass name, or a group ("blur_h.*")
+  std::string why;
+};
+
+struct PrunedGraph {
+  EffectGraph graph;             // what runs
+  std::vector<LeftOut> left_out; // empty: the whole plan runs
+  size_t passes_before = 0;
+};
+
+// `scene` is the scene image the plan runs over (before it is stored in the plan's format).
+PrunedGraph prune_glow(const GlowPlan& plan, const img::Image& scene);
+
+// The generic rule alone: passes whose target nothing after them reads and that is not
+// `frame`, left out (used by prune_glow; for any graph).
+PrunedGraph prune_unread(const EffectGraph& graph, std::string_view frame);
+
+} // namespace tierlift::effects

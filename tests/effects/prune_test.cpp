@@ -1,0 +1,126 @@
+// Pruning (prune.h) leaves the result unchanged: the glow and the final frame of the pruned
+// plan equal those of the whole plan — bit for bit in RGBA8 and RGBA16F, within 1e-6 in
+// RGBA32F — on the built-in scene, random scenes, sources in one corner and no sources, on
+// every tier; and it does leave out what it says (no blur without sources; RGBA8 tails).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "tierlift/effects/default_scene.h"
+#include "tierlift/effects/glow_run.h"
+#include "tierlift/effects/prune.h"
+
+namespace tierlift::effects {
+namespace {
+
+struct Outcome {
+  size_t left_out = 0;
+};
+
+// Runs the whole and the pruned plan on the CPU device and compares glow and final.
+Outcome expect_same(const GlowParams& p, const img::Image& scene, const std::string& what) {
+  const GlowPlan plan = build_glow(p);
+  EXPECT_TRUE(plan) << plan.error;
+  if (!plan) return {};
+  const PrunedGraph pruned = prune_glow(plan, scene);
+  GlowPlan lean = plan;
+  lean.graph = pruned.graph;
+  CpuPassDevice a, b;
+  const GlowRun whole = run_glow(plan, scene, a), part = run_glow(lean, scene, b);
+  EXPECT_TRUE(whole.run.ok && part.run.ok) << whole.run.error << part.run.error;
+  if (!whole.run.ok || !part.run.ok) return {};
+  for (const char* tex : {"glow", "final"}) {
+    const std::vector<float>& x = whole.images.at(tex).rgba;
+    const std::vector<float>& y = part.images.at(tex).rgba;
+    EXPECT_EQ(x.size(), y.size());
+    size_t differ = 0;
+    for (size_t i = 0; i < x.size() && i < y.size(); ++i)
+      differ += p.format == img::Format::RGBA32F ? !(std::abs(x[i] - y[i]) <= 1e-6f) : x[i] != y[i];
+    EXPECT_EQ(differ, 0u) << what << " " << tier_name(p.tier) << " " << img::format_name(p.format)
+                          << " ds" << p.downsample << ": " << tex;
+  }
+  return {pruned.left_out.size()};
+}
+
+GlowParams params(uint32_t w, uint32_t h, Tier t, img::Format f, unsigned ds) {
+  GlowParams p;
+  p.width = w, p.height = h, p.tier = t, p.format = f, p.downsample = ds;
+  return p;
+}
+
+const img::Format kFormats[] = {img::Format::RGBA8, img::Format::RGBA16F, img::Format::RGBA32F};
+
+TEST(Prune, BuiltInSceneUnchanged) {
+  for (Tier t : all_tiers())
+    for (img::Format f : kFormats) {
+      const Outcome o =
+          expect_same(params(320, 180, t, f, 2), make_default_scene(320, 180), "built-in");
+      // RGBA8: the kernel's outermost tap (0.7 · e^-4.5 / 10 ≈ 8e-4 of the source) stores 0.
+      // (tier dx9's ps_2_0 passes; ps_1_x passes keep their own precision and all stay)
+      if (f == img::Format::RGBA8 && t == Tier::Dx9) {
+        EXPECT_GT(o.left_out, 0u) << tier_name(t);
+      } else {
+        EXPECT_EQ(o.left_out, 0u) << tier_name(t);
+      }
+    }
+}
+
+TEST(Prune, RandomScenesUnchanged) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> u(0, 1);
+  for (int n = 0; n < 6; ++n) {
+    const uint32_t w = 17 + rng() % 40, h = 9 + rng() % 30;
+    img::Image s(w, h);
+    const float density = u(rng), scale = n % 2 ? 0.05f : 1.0f; // some scenes dim
+    for (uint32_t y = 0; y < h; ++y)
+      for (uint32_t x = 0; x < w; ++x) {
+        float* p = s.at(x, y);
+        p[0] = u(rng) * scale, p[1] = u(rng) * scale, p[2] = u(rng) * scale;
+        p[3] = u(rng) < density ? u(rng) : 0.0f;
+      }
+    for (Tier t : all_tiers())
+      for (img::Format f : kFormats) expect_same(params(w, h, t, f, 1 + n % 4), s, "random");
+  }
+}
+
+TEST(Prune, SourcesInOneCornerUnchanged) {
+  img::Image s = make_default_scene(96, 64);
+  for (size_t i = 3; i < s.rgba.size(); i += 4) s.rgba[i] = 0;
+  for (uint32_t y = 0; y < 4; ++y)
+    for (uint32_t x = 0; x < 5; ++x) s.at(x, y)[3] = 1, s.at(x, y)[0] = 0.02f;
+  for (Tier t : all_tiers())
+    for (img::Format f : kFormats) expect_same(params(96, 64, t, f, 2), s, "corner");
+}
+
+TEST(Prune, NoSourcesRunsNoBlur) {
+  img::Image s = make_default_scene(64, 48);
+  for (size_t i = 3; i < s.rgba.size(); i += 4) s.rgba[i] = 0;
+  for (Tier t : all_tiers())
+    for (img::Format f : kFormats) {
+      const GlowParams p = params(64, 48, t, f, 2);
+      const PrunedGraph g = prune_glow(build_glow(p), s);
+      ASSERT_EQ(g.graph.passes.size(), 1u);
+      EXPECT_EQ(g.graph.passes[0].name, "composite");
+      expect_same(p, s, "none");
+    }
+}
+
+TEST(Prune, NonFiniteScenesAndUnreadPasses) {
+  img::Image s = make_default_scene(32, 16);
+  s.at(3, 3)[0] = NAN;
+  const GlowPlan plan = build_glow(params(32, 16, Tier::Dx9, img::Format::RGBA8, 2));
+  EXPECT_TRUE(prune_glow(plan, s).left_out.empty());
+  // A pass whose target nothing reads: left out by the generic rule.
+  EffectGraph g = plan.graph;
+  PassDesc extra = g.passes.front();
+  extra.name = "unread";
+  extra.target = std::string(kBlurHTexture);
+  g.passes.push_back(extra); // after the last reader of blur_h
+  const PrunedGraph r = prune_unread(g, kFinalTexture);
+  ASSERT_EQ(r.left_out.size(), 1u);
+  EXPECT_EQ(r.left_out[0].what, "unread");
+}
+
+} // namespace
+} // namespace tierlift::effects
