@@ -209,7 +209,7 @@ int run(const GlowFlags& f) {
   const effects::GlowParams& params = scene->params;
   const std::string where = scene->file.empty() ? "tierlift glow" : scene->file;
 
-  effects::GlowPlan plan = effects::build_glow(params);
+  effects::GlowPlan plan = effects::build_scene_effect(*scene);
   if (!plan) {
     report.error("scene", fmt::format("{}: {}", where, plan.error), scene->file);
     return report.finish(kExitInvalid);

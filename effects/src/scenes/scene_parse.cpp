@@ -13,7 +13,8 @@
 namespace tierlift::effects {
 namespace {
 
-constexpr std::string_view kSceneKeys[] = {"$schema", "description", "image", "size", "glow"};
+constexpr std::string_view kSceneKeys[] = {"$schema", "description", "image",  "size",
+                                           "glow",    "effect",      "outline"};
 constexpr size_t kMaxSceneBytes = size_t{1} << 20; // a scene is a few hundred bytes
 constexpr int kMaxNesting = 32;                    // a scene nests 5 deep
 
@@ -101,6 +102,7 @@ void read_scene(const Json& j, const std::string& base_dir, FieldChecker& c, Sce
   std::vector<std::string> image_warns;
   read_image(j, base_dir, c, s, image_warns);
   if (const Json* v = member(j, "glow")) read_glow(*v, c, base_dir, s.params);
+  read_effect(j, c, s);
   s.warnings = glow_warnings(s.params);
   s.warnings.insert(s.warnings.end(), image_warns.begin(), image_warns.end());
 }

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "tierlift/effects/glow.h"
+#include "tierlift/effects/outline.h"
 #include "tierlift/image/io.h"
 
 namespace tierlift::effects {
@@ -29,7 +30,14 @@ struct Scene {
   // One line each, without a "warning:" prefix: glow_warnings(params) (the CLI prints those
   // itself) followed by what only the image shows (an alpha that is 1 or 0 everywhere).
   std::vector<std::string> warnings;
+  // "effect": which graph runs ("glow", the default, or "stencil-outline"); the glow
+  // parameters above serve every effect (size, blur profile, intensity, format).
+  std::string effect = "glow";
+  OutlineParams outline; // "outline": {…} for "stencil-outline"
 };
+
+// The graph the scene's effect builds: build_glow or build_outline.
+GlowPlan build_scene_effect(const Scene& scene);
 
 struct SceneLoad {
   std::optional<Scene> scene;
@@ -68,5 +76,6 @@ std::vector<std::string> glow_warnings(const GlowParams& params);
 std::span<const std::string_view> scene_keys();
 std::span<const std::string_view> scene_glow_keys();
 std::span<const std::string_view> scene_profile_keys();
+std::span<const std::string_view> scene_outline_keys();
 
 } // namespace tierlift::effects
