@@ -57,8 +57,11 @@ std::string check_outputs(const EffectGraph& g, const PassDesc& p, const Texture
     if (s->width != target.width || s->height != target.height)
       return fmt::format("pass '{}': stencil '{}' is {}x{}, the target {}x{}", p.name, p.stencil,
                          s->width, s->height, target.width, target.height);
-    if (ds.stencil_ref > 255 || ds.stencil_read_mask > 255 || ds.stencil_write_mask > 255)
-      return fmt::format("pass '{}': stencil reference and masks are 8-bit (0..255)", p.name);
+    // The masks default to D3D9's 0xffffffff and act through their low 8 bits; a reference
+    // beyond 8 bits would be wrapped silently, so it is refused.
+    if (ds.stencil_ref > 255)
+      return fmt::format("pass '{}': stencil reference {} is outside the 8-bit buffer's 0..255",
+                         p.name, ds.stencil_ref);
   }
   for (const auto& t : p.triangles)
     for (uint32_t i : t)

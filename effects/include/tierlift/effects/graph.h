@@ -83,7 +83,7 @@ struct EffectGraph {
 // sizes of 0 or above img::kMaxDimension, a sampler stage bound twice, an input used as a
 // target, a target or stencil named twice in a pass, more than 4 targets or targets of
 // different sizes, a stencil texture used as a colour texture (or the reverse), a stencil
-// state without a stencil texture or out of range (reference or masks above 255, a depth
+// state without a stencil texture or out of range (a reference above 255, a depth
 // test), a triangle index past the vertices.
 std::string check_graph(const EffectGraph& graph);
 
