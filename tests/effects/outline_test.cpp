@@ -94,8 +94,10 @@ TEST(Outline, GlowIsZeroInsideAndARingAsWideAsTheBlurRadius) {
       if (c < 0) continue;
       const float* px = r.final.at(x, y);
       if (c == 1) {
-        // Inside: the object's colour and nothing else (the glow is masked by the stencil).
-        for (int k = 0; k < 4; ++k) EXPECT_EQ(px[k], o.color[size_t(k)]) << x << "," << y;
+        // Inside: the object's colour and nothing else (the glow is masked by the stencil);
+        // the base pass keeps the scene's alpha (0 here), as the glow's composite does.
+        for (int k = 0; k < 3; ++k) EXPECT_EQ(px[k], o.color[size_t(k)]) << x << "," << y;
+        EXPECT_EQ(px[3], 0.0f);
         EXPECT_EQ(r.stencil.at(x, y)[0], 1.0f);
         ++inside;
         continue;
@@ -153,7 +155,7 @@ TEST(Outline, SceneErrorsArePositioned) {
                            "  \"outline\": { \"stencil_ref\": 300 }\n}\n";
   SceneLoad s = parse_scene(text, "o.json", "");
   ASSERT_FALSE(s);
-  EXPECT_NE(s.error.find("o.json:4:32: error: /outline/stencil_ref"), std::string::npos) << s.error;
+  EXPECT_NE(s.error.find("o.json:4:31: error: /outline/stencil_ref"), std::string::npos) << s.error;
   SceneLoad wrong = parse_scene("{\"outline\": {}}", "w.json", "");
   ASSERT_FALSE(wrong);
   EXPECT_NE(wrong.error.find("w.json:1:2: error: /outline"), std::string::npos) << wrong.error;
