@@ -218,8 +218,7 @@ int run(const GlowFlags& f) {
   const std::string where = scene->file.empty() ? "tierlift glow" : scene->file;
 
   const bool radial = scene->effect == "radial-beams";
-  effects::GlowPlan plan =
-      radial ? effects::build_radial(params, scene->radial) : effects::build_glow(params);
+  effects::GlowPlan plan = effects::build_scene_effect(*scene);
   if (!plan) {
     report.error("scene", fmt::format("{}: {}", where, plan.error), scene->file);
     return report.finish(kExitInvalid);

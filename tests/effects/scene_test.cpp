@@ -31,15 +31,13 @@ TEST(Scene, EveryShippedSceneLoadsAndBuilds) {
     ++n;
     SceneLoad s = load_scene_file(e.path().string());
     ASSERT_TRUE(s) << e.path() << "\n" << s.error;
-    GlowPlan plan = s.scene->effect == "radial-beams"
-                        ? build_radial(s.scene->params, s.scene->radial)
-                        : build_glow(s.scene->params);
+    GlowPlan plan = build_scene_effect(*s.scene);
     EXPECT_TRUE(plan) << e.path() << ": " << plan.error;
     img::ImageResult image = load_scene_image(*s.scene);
     ASSERT_TRUE(image) << image.message();
     EXPECT_EQ(image->width, s.scene->params.width);
   }
-  EXPECT_EQ(n, 5u);
+  EXPECT_EQ(n, 6u);
 }
 
 TEST(Scene, DefaultJsonSaysWhatTheBuiltInDefaultIs) {
@@ -171,6 +169,12 @@ std::set<std::string> keys_of(std::span<const std::string_view> keys) {
   return {keys.begin(), keys.end()};
 }
 
+std::set<std::string> values_of(const nlohmann::json& array) {
+  std::set<std::string> out;
+  for (const auto& v : array) out.insert(v.get<std::string>());
+  return out;
+}
+
 TEST(Scene, TheSchemaFileListsTheKeysTheLoaderAccepts) {
   const auto schema = nlohmann::json::parse(test::read_file(kScenes / "scene.schema.json"));
   EXPECT_EQ(keys_of(schema["properties"]), keys_of(scene_keys()));
@@ -178,6 +182,8 @@ TEST(Scene, TheSchemaFileListsTheKeysTheLoaderAccepts) {
   EXPECT_EQ(keys_of(schema["properties"]["glow"]["properties"]["profile"]["properties"]),
             keys_of(scene_profile_keys()));
   EXPECT_EQ(keys_of(schema["properties"]["radial"]["properties"]), keys_of(scene_radial_keys()));
+  EXPECT_EQ(keys_of(schema["properties"]["outline"]["properties"]), keys_of(scene_outline_keys()));
+  EXPECT_EQ(values_of(schema["properties"]["effect"]["enum"]), keys_of(scene_effects()));
 }
 
 } // namespace

@@ -15,7 +15,9 @@ std::string AnalyticPassDevice::begin_run(const EffectGraph& graph, const ImageM
   midpoints_.clear();
   for (const TextureDesc& t : graph.textures) {
     auto it = inputs.find(t.name);
-    images_[t.name] = it != inputs.end() ? it->second : img::Image(t.width, t.height, t.format);
+    images_[t.name] = it != inputs.end() ? it->second
+                                         : img::Image(t.width, t.height,
+                                                      t.stencil ? img::Format::RGBA32F : t.format);
   }
   return {};
 }

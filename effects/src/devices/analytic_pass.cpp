@@ -2,6 +2,7 @@
 // symbolically (analytic::extract_taps / extract_reads), the bound textures and sampler states,
 // the graph's conventions and the target's size, format and blend handed to analytic::.
 #include "analytic_pass.h"
+#include "analytic_stencil.h"
 
 #include <optional>
 
@@ -66,6 +67,74 @@ std::string prepare(const PassDesc& pass, const EffectGraph& graph, const ImageM
   return "";
 }
 
+// An object pass (AnalyticForm::Coverage): each target's covered pixels that pass the stencil
+// test take the constant its oC# receives, stored with the target's rule; the rest keep
+// their value. Replace blending only.
+std::string run_object_pass(const PassDesc& pass, const EffectGraph& graph, ImageMap& images,
+                            MidpointMasks& midpoints) {
+  if (pass.blend != pass::BlendMode::Replace)
+    return fmt::format("pass '{}': the analytic object pass knows Replace blending only",
+                       pass.name);
+  const TextureDesc* target = graph.find_texture(pass.target);
+  if (!target) return fmt::format("pass '{}': unknown target '{}'", pass.name, pass.target);
+  std::array<pass::Vec4, 4> colors{};
+  uint8_t written = 0;
+  if (std::string e = constant_outputs(pass, colors, written); !e.empty()) return e;
+  std::vector<uint8_t> covered;
+  if (std::string e = coverage(pass, graph.conventions, target->width, target->height, covered);
+      !e.empty())
+    return e;
+  std::vector<std::string> names{pass.target};
+  names.insert(names.end(), pass.more_targets.begin(), pass.more_targets.end());
+  std::vector<img::Image> out;
+  for (const std::string& name : names) {
+    auto it = images.find(name);
+    if (it == images.end())
+      return fmt::format("pass '{}': target '{}' has no image", pass.name, name);
+    out.push_back(it->second);
+  }
+  if (!pass.stencil.empty()) {
+    auto s = images.find(pass.stencil);
+    if (s == images.end())
+      return fmt::format("pass '{}': stencil '{}' has no image", pass.name, pass.stencil);
+    apply_stencil(pass, s->second, covered);
+  }
+  for (size_t t = 0; t < out.size(); ++t)
+    for (size_t i = 0; i < covered.size(); ++i)
+      if (covered[i])
+        for (size_t c = 0; c < 4; ++c)
+          out[t].rgba[4 * i + c] = img::quantize(out[t].format, colors[t][c]);
+  for (size_t t = 0; t < out.size(); ++t) {
+    images[names[t]] = std::move(out[t]);
+    // The constants are chosen by the listing; a tie would need c·255 at k + ½ exactly.
+    midpoints.erase(names[t]);
+  }
+  return "";
+}
+
+// Where the pass's stencil test fails (or its triangles do not reach), the target keeps
+// `before`; only those pixels that pass take the computed `result`.
+std::string mask_by_stencil(const PassDesc& pass, const EffectGraph& graph, ImageMap& images,
+                            const img::Image& before, img::Image& result,
+                            std::vector<uint8_t>* midpoint_mask) {
+  std::vector<uint8_t> covered;
+  if (std::string e = coverage(pass, graph.conventions, result.width, result.height, covered);
+      !e.empty())
+    return e;
+  if (!pass.stencil.empty()) {
+    auto s = images.find(pass.stencil);
+    if (s == images.end())
+      return fmt::format("pass '{}': stencil '{}' has no image", pass.name, pass.stencil);
+    apply_stencil(pass, s->second, covered);
+  }
+  for (size_t i = 0; i < covered.size(); ++i) {
+    if (covered[i]) continue;
+    for (size_t c = 0; c < 4; ++c) result.rgba[4 * i + c] = before.rgba[4 * i + c];
+    if (midpoint_mask && i < midpoint_mask->size()) (*midpoint_mask)[i] = 0;
+  }
+  return "";
+}
+
 } // namespace
 
 analytic::SamplerModel sampler_model(const pass::SamplerState& s) {
@@ -81,6 +150,16 @@ std::string run_analytic_pass(const PassDesc& pass, const EffectGraph& graph, Im
                               MidpointMasks& midpoints, std::vector<std::string>* notes) {
   if (!pass.vs || !pass.ps)
     return fmt::format("pass '{}': needs a vertex and a pixel listing", pass.name);
+  if (pass.analytic == AnalyticForm::Coverage)
+    return run_object_pass(pass, graph, images, midpoints);
+  if (!pass.more_targets.empty())
+    return fmt::format("pass '{}': the analytic model writes several render targets only in an "
+                       "object pass (constant outputs)",
+                       pass.name);
+  if (!pass.vertices.empty() && pass.stencil.empty())
+    return fmt::format("pass '{}': the analytic model reads taps off a full-screen quad; a "
+                       "pass with its own triangles must be an object pass",
+                       pass.name);
   analytic::LinearPassInput in;
   if (std::string e = prepare(pass, graph, images, in); !e.empty()) return e;
 
@@ -118,7 +197,19 @@ std::string run_analytic_pass(const PassDesc& pass, const EffectGraph& graph, Im
     result.emplace(analytic::mask_by_alpha_pass(ex.reads[0], in, &pass_notes));
   }
   if (!*result) return fmt::format("pass '{}': {}", pass.name, result->message());
-  images[pass.target] = std::move(*result).value();
+  img::Image image = std::move(*result).value();
+  if (!pass.stencil.empty()) {
+    if (!pass.vertices.empty())
+      return fmt::format("pass '{}': a stencil-tested pass with its own triangles is modelled "
+                         "only as an object pass",
+                         pass.name);
+    const img::Image before = images[pass.target];
+    if (std::string e =
+            mask_by_stencil(pass, graph, images, before, image, in.slack ? &mask : nullptr);
+        !e.empty())
+      return e;
+  }
+  images[pass.target] = std::move(image);
   if (in.slack) midpoints[pass.target] = std::move(mask);
   if (notes)
     for (const std::string& n : pass_notes)

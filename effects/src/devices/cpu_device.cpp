@@ -31,7 +31,13 @@ std::string CpuPassDevice::begin_run(const EffectGraph& graph, const ImageMap& i
   ImageMap kept;
   kept.swap(images_);
   placeholders_.clear();
+  stencils_.clear();
   for (const TextureDesc& t : graph.textures) {
+    if (t.stencil) {
+      stencils_[t.name].assign(size_t{t.width} * t.height, 0);
+      placeholders_.emplace(t.name, img::Image());
+      continue;
+    }
     auto in = inputs.find(t.name);
     auto old = kept.find(t.name);
     img::Image& im = images_[t.name];
@@ -54,6 +60,18 @@ std::string CpuPassDevice::run_pass(const PassDesc& desc) {
   pass->executor = executor_;
   auto it = images_.find(desc.target);
   if (it == images_.end()) return fmt::format("no texture '{}'", desc.target);
+  cpu::DrawTargets targets;
+  targets.color[0] = &it->second;
+  for (size_t i = 0; i < desc.more_targets.size() && i + 1 < targets.color.size(); ++i) {
+    auto more = images_.find(desc.more_targets[i]);
+    if (more == images_.end()) return fmt::format("no texture '{}'", desc.more_targets[i]);
+    targets.color[i + 1] = &more->second;
+  }
+  if (!desc.stencil.empty()) {
+    auto s = stencils_.find(desc.stencil);
+    if (s == stencils_.end()) return fmt::format("no stencil texture '{}'", desc.stencil);
+    targets.stencil = s->second.data();
+  }
   for (const TextureBind& b : desc.textures) {
     auto tex = images_.find(b.texture); // make_pass checked the name and the stage already
     if (tex == images_.end() || b.stage >= pass::kMaxSamplers)
@@ -65,12 +83,19 @@ std::string CpuPassDevice::run_pass(const PassDesc& desc) {
   }
   // In place: cpu::draw fails only before it writes a pixel, so a failed draw leaves the
   // texture as it was.
-  cpu::DrawStats s = cpu::draw(*pass, it->second, threads_);
+  cpu::DrawStats s = cpu::draw(*pass, targets, threads_);
   if (!s.ok) return s.error;
   return {};
 }
 
 std::string CpuPassDevice::read_texture(const std::string& name, img::Image& out) {
+  if (auto s = stencils_.find(name); s != stencils_.end()) {
+    const TextureDesc* t = graph_ ? graph_->find_texture(name) : nullptr;
+    if (!t) return fmt::format("no texture '{}'", name);
+    out = img::Image(t->width, t->height, img::Format::RGBA32F);
+    for (size_t i = 0; i < s->second.size(); ++i) out.rgba[4 * i] = s->second[i];
+    return {};
+  }
   auto it = images_.find(name);
   if (it == images_.end()) return fmt::format("no texture '{}'", name);
   out = it->second;

@@ -27,12 +27,61 @@ std::string check_textures(const EffectGraph& g) {
   return {};
 }
 
+// The targets beyond oC0, the stencil buffer and its state, the geometry.
+std::string check_outputs(const EffectGraph& g, const PassDesc& p, const TextureDesc& target) {
+  if (p.more_targets.size() > 3)
+    return fmt::format("pass '{}': {} render targets (D3D9 has at most 4)", p.name,
+                       p.more_targets.size() + 1);
+  std::set<std::string_view> used{p.target};
+  for (const std::string& name : p.more_targets) {
+    const TextureDesc* t = g.find_texture(name);
+    if (!t) return fmt::format("pass '{}': unknown target '{}'", p.name, name);
+    if (t->input || t->stencil)
+      return fmt::format("pass '{}': cannot render colour into '{}'", p.name, name);
+    if (!used.insert(name).second)
+      return fmt::format("pass '{}': renders into '{}' twice", p.name, name);
+    if (t->width != target.width || t->height != target.height)
+      return fmt::format("pass '{}': target '{}' is {}x{}, '{}' is {}x{} (one size per pass)",
+                         p.name, name, t->width, t->height, p.target, target.width, target.height);
+  }
+  const pass::DepthStencilState& ds = p.depth_stencil;
+  if (ds.depth_test || ds.depth_write)
+    return fmt::format("pass '{}': no device has a depth buffer (stencil only)", p.name);
+  if (p.stencil.empty()) {
+    if (ds.enabled())
+      return fmt::format("pass '{}': a stencil state without a stencil texture", p.name);
+  } else {
+    const TextureDesc* s = g.find_texture(p.stencil);
+    if (!s || !s->stencil)
+      return fmt::format("pass '{}': '{}' is not a stencil texture", p.name, p.stencil);
+    if (s->width != target.width || s->height != target.height)
+      return fmt::format("pass '{}': stencil '{}' is {}x{}, the target {}x{}", p.name, p.stencil,
+                         s->width, s->height, target.width, target.height);
+    // The masks default to D3D9's 0xffffffff and act through their low 8 bits; a reference
+    // beyond 8 bits would be wrapped silently, so it is refused.
+    if (ds.stencil_ref > 255)
+      return fmt::format("pass '{}': stencil reference {} is outside the 8-bit buffer's 0..255",
+                         p.name, ds.stencil_ref);
+  }
+  for (const auto& t : p.triangles)
+    for (uint32_t i : t)
+      if (i >= p.vertices.size())
+        return fmt::format("pass '{}': triangle index {} past the {} vertices", p.name, i,
+                           p.vertices.size());
+  if (!p.triangles.empty() && p.vertices.empty())
+    return fmt::format("pass '{}': triangles without vertices", p.name);
+  return {};
+}
+
 std::string check_pass(const EffectGraph& g, const PassDesc& p) {
   if (!p.vs || !p.ps) return fmt::format("pass '{}': needs a vertex and a pixel listing", p.name);
   const TextureDesc* target = g.find_texture(p.target);
   if (!target) return fmt::format("pass '{}': unknown target '{}'", p.name, p.target);
   if (target->input)
     return fmt::format("pass '{}': renders into the input texture '{}'", p.name, p.target);
+  if (target->stencil)
+    return fmt::format("pass '{}': renders colour into the stencil texture '{}'", p.name, p.target);
+  if (std::string e = check_outputs(g, p, *target); !e.empty()) return e;
   std::set<uint32_t> stages;
   for (const TextureBind& b : p.textures) {
     if (b.stage >= pass::kMaxSamplers)
@@ -44,6 +93,10 @@ std::string check_pass(const EffectGraph& g, const PassDesc& p) {
     // D3D9 leaves reading the bound render target undefined; we refuse it.
     if (b.texture == p.target)
       return fmt::format("pass '{}': reads its own target '{}'", p.name, p.target);
+    for (const std::string& t : p.more_targets)
+      if (b.texture == t) return fmt::format("pass '{}': reads its own target '{}'", p.name, t);
+    if (g.find_texture(b.texture)->stencil)
+      return fmt::format("pass '{}': samples the stencil texture '{}'", p.name, b.texture);
   }
   return {};
 }

@@ -40,7 +40,14 @@ std::optional<pass::Pass> make_pass(const PassDesc& desc, const ImageMap& images
   pass.pixel_program = desc.ps;
   pass.vs_constants.f = desc.vs_constants;
   pass.ps_constants.f = desc.ps_constants;
-  pass::set_full_screen_quad_uv(pass);
+  if (desc.vertices.empty()) {
+    pass::set_full_screen_quad_uv(pass);
+  } else {
+    pass.vertices = desc.vertices;
+    pass.triangles = desc.triangles;
+  }
+  pass.color_targets = static_cast<uint32_t>(1 + desc.more_targets.size());
+  pass.depth_stencil = desc.depth_stencil;
   for (const TextureBind& b : desc.textures) {
     auto it = images.find(b.texture);
     if (it == images.end() || b.stage >= pass::kMaxSamplers) {

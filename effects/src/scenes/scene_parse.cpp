@@ -14,9 +14,8 @@
 namespace tierlift::effects {
 namespace {
 
-constexpr std::string_view kSceneKeys[] = {"$schema", "description", "image", "size",
-                                           "effect",  "glow",        "radial"};
-constexpr std::string_view kEffects[] = {"glow", "radial-beams"};
+constexpr std::string_view kSceneKeys[] = {"$schema", "description", "image",  "size",
+                                           "glow",    "effect",      "radial", "outline"};
 constexpr size_t kMaxSceneBytes = size_t{1} << 20; // a scene is a few hundred bytes
 constexpr int kMaxNesting = 32;                    // a scene nests 5 deep
 
@@ -104,20 +103,7 @@ void read_scene(const Json& j, const std::string& base_dir, FieldChecker& c, Sce
   std::vector<std::string> image_warns;
   read_image(j, base_dir, c, s, image_warns);
   if (const Json* v = member(j, "glow")) read_glow(*v, c, base_dir, s.params);
-  if (const Json* v = member(j, "effect"))
-    if (auto name = c.string(*v, "/effect")) {
-      if (std::find(std::begin(kEffects), std::end(kEffects), *name) == std::end(kEffects))
-        c.error("/effect", fmt::format("\"{}\" is not an effect; expected {}", *name,
-                                       "\"glow\" or \"radial-beams\""));
-      else
-        s.effect = *name;
-    }
-  if (const Json* v = member(j, "radial")) {
-    if (s.effect != "radial-beams")
-      c.error("/radial", "is for \"effect\": \"radial-beams\"", true);
-    else
-      read_radial(*v, c, s.params, s.radial);
-  }
+  read_effect(j, c, s);
   s.warnings = glow_warnings(s.params);
   s.warnings.insert(s.warnings.end(), image_warns.begin(), image_warns.end());
 }

@@ -8,6 +8,7 @@
 #include "scene_check.h"
 #include "tierlift/effects/glow.h"
 #include "tierlift/effects/radial.h"
+#include "tierlift/effects/scene.h"
 #include "tierlift/image/image.h"
 
 namespace tierlift::effects {
@@ -19,6 +20,11 @@ void read_glow(const Json& glow, FieldChecker& check, const std::string& base_di
 // "/radial": every field into `radial` (what is absent keeps its default); its "tier" goes
 // to glow.tier, which also decides the strength's limit (ps.1.x constants).
 void read_radial(const Json& radial, FieldChecker& check, GlowParams& glow, RadialParams& out);
+// "/outline": the polygon, its two colours and the stencil reference.
+void read_outline(const Json& outline, FieldChecker& check, OutlineParams& out);
+// "/effect" and that effect's own object ("/radial", "/outline"); an effect's object without
+// the effect that reads it is an error at the object's key (scene_effect.cpp).
+void read_effect(const Json& scene, FieldChecker& check, Scene& out);
 
 // `path` as seen from `base_dir` ("" = the working directory); absolute paths stay.
 std::string resolve_path(const std::string& base_dir, const std::string& path);

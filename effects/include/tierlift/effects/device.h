@@ -69,6 +69,7 @@ private:
   const EffectGraph* graph_ = nullptr;
   ImageMap images_;
   ImageMap placeholders_; // an empty image per texture name, for make_pass
+  std::map<std::string, std::vector<uint8_t>, std::less<>> stencils_; // TextureDesc::stencil
 };
 
 // Wraps a device the caller owns (and keeps alive). Only when tierlift_vulkan is built.

@@ -5,6 +5,7 @@
 // between passes. The graph says nothing about which device runs it.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -25,6 +26,11 @@ struct TextureDesc {
   // Inputs are supplied by the caller before the run (e.g. the scene); every other texture
   // starts as zero when a pass first renders into it.
   bool input = false;
+  // A stencil buffer (8 bits per pixel, starting at zero) instead of a colour texture: a
+  // pass names it in PassDesc::stencil; it is never sampled. read_texture returns it as an
+  // image whose red channel holds the stencil value (0..255), the other channels 0; `format`
+  // is ignored.
+  bool stencil = false;
 };
 
 struct TextureBind {
@@ -38,7 +44,10 @@ struct TextureBind {
 // the pass's own listings and constants (analytic::extract_taps), never from the generator's
 // parameters. MaskByAlpha: the one non-linear helper, rgb × alpha of a single read at the
 // pass's sample point (glow source extraction); alpha passes through.
-enum class AnalyticForm { Linear, MaskByAlpha };
+// Coverage: an object pass — the pixel listing writes constants (mov oC#, c#) to its targets
+// and the model computes which pixels the pass's triangles cover (the object's exact
+// coverage at the sample points).
+enum class AnalyticForm { Linear, MaskByAlpha, Coverage };
 
 struct PassDesc {
   std::string name; // unique, e.g. "blur_h.1"
@@ -48,6 +57,17 @@ struct PassDesc {
   std::vector<TextureBind> textures;
   std::string target;
   pass::BlendMode blend = pass::BlendMode::Replace;
+  // Render targets 1..3 (oC1..oC3) beside `target` (oC0); empty: one target. D3D9 MRT: every
+  // target has the target's size; the blend mode applies to each.
+  std::vector<std::string> more_targets;
+  // A stencil texture (TextureDesc::stencil) and the D3D9 stencil state; no stencil test
+  // when `stencil` is empty (depth_stencil must then be disabled). No depth buffer.
+  std::string stencil;
+  pass::DepthStencilState depth_stencil;
+  // The geometry: vertex inputs (v#, as the vertex listing declares them) and triangles
+  // indexing them (empty: consecutive triples). No vertices: the full-screen quad.
+  std::vector<pass::VertexInput> vertices;
+  std::vector<std::array<uint32_t, 3>> triangles;
 };
 
 struct EffectGraph {
@@ -61,7 +81,10 @@ struct EffectGraph {
 // Empty when the graph is well formed; otherwise the first problem: duplicate or unknown
 // texture or pass names, a pass without both listings, a pass that reads its own target,
 // sizes of 0 or above img::kMaxDimension, a sampler stage bound twice, an input used as a
-// target.
+// target, a target or stencil named twice in a pass, more than 4 targets or targets of
+// different sizes, a stencil texture used as a colour texture (or the reverse), a stencil
+// state without a stencil texture or out of range (a reference above 255, a depth
+// test), a triangle index past the vertices.
 std::string check_graph(const EffectGraph& graph);
 
 } // namespace tierlift::effects

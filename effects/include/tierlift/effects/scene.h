@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "tierlift/effects/glow.h"
+#include "tierlift/effects/outline.h"
 #include "tierlift/effects/radial.h"
 #include "tierlift/image/io.h"
 
@@ -27,14 +28,19 @@ struct Scene {
   std::string image; // "builtin:neon" (make_default_scene) or a resolved PNG path
   GlowParams params; // width/height = the image's size; tier, downsample, format, half_texel,
                      // profile, intensity, listing_files
-  // Which effect runs: "glow" (default) or "radial-beams" (its parameters in `radial`; it
-  // takes tier, format and listings from `params`).
+  // Which effect runs (scene_effects()): "glow", the default; "radial-beams" (its parameters
+  // in `radial`; tier, format and listings from `params`); "stencil-outline" (`outline`; the
+  // glow parameters serve it: size, blur profile, intensity, format).
   std::string effect = "glow";
-  RadialParams radial;
+  RadialParams radial;   // "radial": {…} for "radial-beams"
+  OutlineParams outline; // "outline": {…} for "stencil-outline"
   // One line each, without a "warning:" prefix: glow_warnings(params) (the CLI prints those
   // itself) followed by what only the image shows (an alpha that is 1 or 0 everywhere).
   std::vector<std::string> warnings;
 };
+
+// The graph the scene's effect builds: build_glow, build_radial or build_outline.
+GlowPlan build_scene_effect(const Scene& scene);
 
 struct SceneLoad {
   std::optional<Scene> scene;
@@ -73,6 +79,9 @@ std::vector<std::string> glow_warnings(const GlowParams& params);
 std::span<const std::string_view> scene_keys();
 std::span<const std::string_view> scene_glow_keys();
 std::span<const std::string_view> scene_profile_keys();
-std::span<const std::string_view> scene_radial_keys(); // "radial"
+std::span<const std::string_view> scene_radial_keys();  // "radial"
+std::span<const std::string_view> scene_outline_keys(); // "outline"
+// The values "effect" may take (scene_effect.cpp: the one list).
+std::span<const std::string_view> scene_effects();
 
 } // namespace tierlift::effects

@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <atomic>
 #include <exception>
+#include <fmt/format.h>
 #include <mutex>
 #include <thread>
 
 #include "raster.h"
+#include "tierlift/pass/stencil.h"
 
 namespace tierlift::cpu {
 namespace {
@@ -24,22 +26,36 @@ struct PassPrograms {
   std::optional<ShaderVM> vs, ps;
 };
 
+void store_pixel(const RasterJob& job, img::Image& target, const Vec4& color, int64_t x,
+                 int64_t y) {
+  float* px = target.at(static_cast<uint32_t>(x), static_cast<uint32_t>(y));
+  Vec4 stored = blend_and_store(job.pass.blend, target.format, color, {px[0], px[1], px[2], px[3]},
+                                job.pass.conventions.rounding);
+  std::copy(stored.begin(), stored.end(), px);
+}
+
 void shade_pixel(const RasterJob& job, const PixelInput& in, int64_t x, int64_t y,
                  WorkerStats& stats) {
-  Vec4 color = in.color[0];
+  PixelOutput out;
+  out.color[0] = in.color[0];
   ++stats.shaded;
   if (job.ps) {
-    PixelOutput out = job.ps->run_pixel(in, job.pass.ps_constants, job.textures);
+    out = job.ps->run_pixel(in, job.pass.ps_constants, job.textures);
     if (out.discarded) {
       ++stats.killed;
       return;
     }
-    color = out.color[0];
   }
-  float* px = job.target.at(static_cast<uint32_t>(x), static_cast<uint32_t>(y));
-  Vec4 stored = blend_and_store(job.pass.blend, job.target.format, color,
-                                {px[0], px[1], px[2], px[3]}, job.pass.conventions.rounding);
-  std::copy(stored.begin(), stored.end(), px);
+  const pass::DepthStencilState& ds = job.pass.depth_stencil;
+  if (ds.stencil_test) {
+    uint8_t& s =
+        job.targets.stencil[static_cast<size_t>(y) * job.target.width + static_cast<size_t>(x)];
+    const bool passed = pass::stencil_test(ds, s);
+    s = pass::stencil_update(passed ? ds.stencil_pass : ds.stencil_fail, ds, s);
+    if (!passed) return;
+  }
+  for (uint32_t i = 0; i < job.pass.color_targets; ++i)
+    store_pixel(job, *job.targets.color[i], out.color[i], x, y);
 }
 
 void raster_rows(const RasterJob& job, int64_t y0, int64_t y1, WorkerStats& stats) {
@@ -68,6 +84,27 @@ void raster_rows(const RasterJob& job, int64_t y0, int64_t y1, WorkerStats& stat
   }
 }
 
+std::string check_targets(const Pass& pass, const DrawTargets& targets) {
+  if (pass.color_targets == 0 || pass.color_targets > targets.color.size())
+    return "a pass draws into 1 to 4 render targets";
+  const img::Image* first = targets.color[0];
+  for (uint32_t i = 0; i < pass.color_targets; ++i) {
+    const img::Image* t = targets.color[i];
+    if (!t) return fmt::format("render target {} (oC{}) is not bound", i, i);
+    if (t->width != first->width || t->height != first->height)
+      return fmt::format("render target {} is {}x{}, render target 0 is {}x{}: every target of "
+                         "a pass has one size",
+                         i, t->width, t->height, first->width, first->height);
+    for (uint32_t j = 0; j < i; ++j)
+      if (targets.color[j] == t) return fmt::format("render targets {} and {} are one image", j, i);
+  }
+  if (pass.depth_stencil.depth_test || pass.depth_stencil.depth_write)
+    return "the cpu device has a stencil buffer but no depth buffer";
+  if (pass.depth_stencil.stencil_test && !targets.stencil)
+    return "the pass has a stencil test but no stencil buffer is bound";
+  return {};
+}
+
 std::string check_inputs(const Pass& pass, const img::Image& target, const Viewport& vp) {
   if (target.width > img::kMaxDimension || target.height > img::kMaxDimension)
     return "render target larger than 16384x16384";
@@ -90,7 +127,22 @@ std::string check_inputs(const Pass& pass, const img::Image& target, const Viewp
 } // namespace
 
 DrawStats draw(const Pass& pass, img::Image& target, unsigned threads) {
+  DrawTargets targets;
+  targets.color[0] = &target;
+  return draw(pass, targets, threads);
+}
+
+DrawStats draw(const Pass& pass, const DrawTargets& targets, unsigned threads) {
   DrawStats stats;
+  if (std::string why = targets.color[0] ? check_targets(pass, targets) : "no render target";
+      !why.empty()) {
+    stats.ok = false;
+    stats.error = why;
+    return stats;
+  }
+  img::Image& target = *targets.color[0];
+  // The block executor stores oC0 into one target and knows no stencil.
+  const bool per_pixel_only = pass.color_targets > 1 || pass.depth_stencil.stencil_test;
   Viewport vp = pass.viewport;
   if (vp.width == 0) vp.width = target.width;
   if (vp.height == 0) vp.height = target.height;
@@ -105,7 +157,7 @@ DrawStats draw(const Pass& pass, img::Image& target, unsigned threads) {
   try {
     if (pass.vertex_program) vms.vs.emplace(*pass.vertex_program, pass.conventions);
     if (pass.pixel_program) vms.ps.emplace(*pass.pixel_program, pass.conventions);
-    if (pass.pixel_program && pass.executor == Executor::Auto)
+    if (pass.pixel_program && pass.executor == Executor::Auto && !per_pixel_only)
       block = PixelBlockVM::create(*pass.pixel_program, pass.conventions, pass.ps_constants,
                                    /*coords_2d=*/true); // BoundTextures reads u, v only
   } catch (const std::exception& e) {
@@ -160,7 +212,8 @@ DrawStats draw(const Pass& pass, img::Image& target, unsigned threads) {
                 scissor,
                 target,
                 BoundTextures(pass.textures, pass.conventions.subtexel_bits,
-                              pass.conventions.rounding == ir::Rounding::Llvmpipe)};
+                              pass.conventions.rounding == ir::Rounding::Llvmpipe),
+                targets};
   const int64_t bands = (scissor.y1 - scissor.y0 + kBandRows - 1) / kBandRows;
   unsigned workers = threads ? threads : std::max(1u, std::thread::hardware_concurrency());
   workers = static_cast<unsigned>(std::min<int64_t>({workers, bands, kMaxWorkers}));

@@ -102,6 +102,7 @@ struct RasterJob {
   PixelRect scissor;
   img::Image& target;
   BoundTextures textures;
+  DrawTargets targets; // target is targets.color[0]
 };
 
 struct WorkerStats {

@@ -15,7 +15,8 @@
 //   * Clipping: 0 ≤ z ≤ w (D3D9's clip volume) and a guard band |x|, |y| ≤ 8·w; pixels
 //     outside the viewport and the target are not drawn.
 //
-// No culling (D3DCULL_NONE): both windings are drawn. No depth or stencil test.
+// No culling (D3DCULL_NONE): both windings are drawn. No depth test; a stencil test on an
+// 8-bit stencil buffer when pass.depth_stencil.stencil_test (DrawTargets below).
 //
 // Interpolation: oT# and oD# are perspective-correct (oD# saturated per vertex first, and
 // clamped to [0, 1] again per pixel); z/w is interpolated linearly in screen space (exact
@@ -81,8 +82,22 @@ using pass::Pass;
 using pass::set_full_screen_quad;
 using pass::Viewport;
 
-// What the CPU device draws beyond one colour target with programmable stages: nothing yet.
-inline constexpr pass::Capabilities kCapabilities{};
+// What the CPU device draws beyond one colour target with programmable stages: up to four
+// render targets (oC0..oC3) and a stencil buffer (no depth buffer: a pass that asks for a
+// depth test or depth writes is refused).
+inline constexpr pass::Capabilities kCapabilities{4, true, false};
+
+// Where one draw writes. color[i] receives oC#i for i < pass.color_targets (every one of them
+// set and of color[0]'s size; each has its own format and store rule, the blend mode is
+// shared, as D3D9's one D3DRS_ALPHABLENDENABLE). `stencil`: color[0]'s width × height bytes,
+// row by row; required when pass.depth_stencil.stencil_test. Per pixel, after the pixel
+// stage and texkill (a killed pixel touches neither colour nor stencil), the stencil test
+// (tierlift/pass/stencil.h) decides: failed → stencil_fail op, no colour; passed →
+// stencil_pass op, the colours are blended and stored.
+struct DrawTargets {
+  std::array<img::Image*, 4> color{};
+  uint8_t* stencil = nullptr;
+};
 
 struct DrawStats {
   bool ok = true;
@@ -97,6 +112,9 @@ struct DrawStats {
 // input: a program the VM cannot run, an index out of range or a target larger than
 // img::kMaxDimension returns ok = false and leaves the target unchanged.
 DrawStats draw(const Pass& pass, img::Image& target, unsigned threads = 0);
+// The same into several render targets and a stencil buffer (DrawTargets). Passes with more
+// than one target or a stencil test take the per-pixel executor.
+DrawStats draw(const Pass& pass, const DrawTargets& targets, unsigned threads = 0);
 
 // Blend `src` onto the stored `dst` and quantise for `format` (the per-pixel store rule,
 // exposed for tests). `rounding` is the pass's ir::Conventions::rounding: for RGBA8 targets
