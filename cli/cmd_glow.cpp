@@ -171,6 +171,7 @@ nlohmann::json summary_json(const effects::Scene& scene, const effects::GlowPlan
   nlohmann::json j = {
       {"scene",
        {{"file", scene.file}, {"image", scene.image}, {"width", p.width}, {"height", p.height}}},
+      {"effect", scene.effect},
       {"tier", effects::tier_name(p.tier)},
       {"format", img::format_name(p.format)},
       {"downsample", p.downsample},
@@ -209,7 +210,7 @@ int run(const GlowFlags& f) {
   const effects::GlowParams& params = scene->params;
   const std::string where = scene->file.empty() ? "tierlift glow" : scene->file;
 
-  effects::GlowPlan plan = effects::build_glow(params);
+  effects::GlowPlan plan = effects::build_scene_effect(*scene); // the effect the scene names
   if (!plan) {
     report.error("scene", fmt::format("{}: {}", where, plan.error), scene->file);
     return report.finish(kExitInvalid);
@@ -223,7 +224,7 @@ int run(const GlowFlags& f) {
     return report.finish(io ? kExitUsage : kExitInvalid);
   }
   // The parameters' warnings after the flags' overrides, then the scene's own (the image's).
-  std::vector<std::string> warnings = effects::glow_warnings(params);
+  std::vector<std::string> warnings = effects::effect_warnings(*scene);
   for (const std::string& w : scene->warnings)
     if (std::find(warnings.begin(), warnings.end(), w) == warnings.end()) warnings.push_back(w);
   for (const std::string& w : warnings) report.warning("scene", fmt::format("{}: {}", where, w));
@@ -300,12 +301,18 @@ int run(const GlowFlags& f) {
     j["all_within_targets"] = all_within;
     j["written"] = written;
   } else {
-    fmt::print("glow {}: {}x{} {}, downsample {} ({}x{}), {} taps, {} blur passes per axis, "
-               "half texel {}, ps1x-max {}\n",
-               effects::tier_name(params.tier), params.width, params.height,
-               img::format_name(params.format), params.downsample, plan.glow_width,
-               plan.glow_height, plan.taps.size(), plan.blur_passes_per_axis,
-               params.half_texel ? "on" : "off", ir::ps1x_max_label(params.ps1x_max));
+    if (scene->effect == "glsl-blur")
+      fmt::print("glsl-blur: {}x{} {}, {} taps per axis, {} GLSL passes (glslang → SPIR-V on "
+                 "vulkan; their ps_2_0 twins on cpu)\n",
+                 params.width, params.height, img::format_name(params.format), plan.taps.size(),
+                 plan.graph.passes.size());
+    else
+      fmt::print("glow {}: {}x{} {}, downsample {} ({}x{}), {} taps, {} blur passes per axis, "
+                 "half texel {}, ps1x-max {}\n",
+                 effects::tier_name(params.tier), params.width, params.height,
+                 img::format_name(params.format), params.downsample, plan.glow_width,
+                 plan.glow_height, plan.taps.size(), plan.blur_passes_per_axis,
+                 params.half_texel ? "on" : "off", ir::ps1x_max_label(params.ps1x_max));
     for (const GlowWay& w : ways)
       fmt::print("{}: {} passes in {:.1f} ms{}\n", w.name, w.glow.run.passes.size(),
                  w.glow.run.total_ms, w.name == "vulkan" ? fmt::format(" ({})", vk->name()) : "");

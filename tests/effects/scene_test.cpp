@@ -31,13 +31,13 @@ TEST(Scene, EveryShippedSceneLoadsAndBuilds) {
     ++n;
     SceneLoad s = load_scene_file(e.path().string());
     ASSERT_TRUE(s) << e.path() << "\n" << s.error;
-    GlowPlan plan = build_glow(s.scene->params);
+    GlowPlan plan = build_scene_effect(*s.scene);
     EXPECT_TRUE(plan) << e.path() << ": " << plan.error;
     img::ImageResult image = load_scene_image(*s.scene);
     ASSERT_TRUE(image) << image.message();
     EXPECT_EQ(image->width, s.scene->params.width);
   }
-  EXPECT_EQ(n, 4u);
+  EXPECT_EQ(n, 5u);
 }
 
 TEST(Scene, DefaultJsonSaysWhatTheBuiltInDefaultIs) {
@@ -175,6 +175,7 @@ TEST(Scene, TheSchemaFileListsTheKeysTheLoaderAccepts) {
   EXPECT_EQ(keys_of(schema["properties"]["glow"]["properties"]), keys_of(scene_glow_keys()));
   EXPECT_EQ(keys_of(schema["properties"]["glow"]["properties"]["profile"]["properties"]),
             keys_of(scene_profile_keys()));
+  EXPECT_EQ(keys_of(schema["properties"]["glsl"]["properties"]), keys_of(scene_glsl_keys()));
 }
 
 } // namespace

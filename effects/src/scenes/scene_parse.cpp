@@ -1,9 +1,11 @@
 // Reads a scene's JSON text: syntax, the top-level keys ("image", "size"), the scene image
 // (to learn its size and to report a missing or broken PNG where the scene names it), and
 // hands "glow" to scene_glow.cpp. Every problem is a diagnostic at the field's position.
+#include <algorithm>
 #include <filesystem>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "scene_parts.h"
 #include "tierlift/effects/default_scene.h"
@@ -13,7 +15,9 @@
 namespace tierlift::effects {
 namespace {
 
-constexpr std::string_view kSceneKeys[] = {"$schema", "description", "image", "size", "glow"};
+constexpr std::string_view kSceneKeys[] = {"$schema", "description", "image", "size",
+                                           "effect",  "glow",        "glsl"};
+constexpr std::string_view kEffects[] = {"glow", "glsl-blur"};
 constexpr size_t kMaxSceneBytes = size_t{1} << 20; // a scene is a few hundred bytes
 constexpr int kMaxNesting = 32;                    // a scene nests 5 deep
 
@@ -100,8 +104,23 @@ void read_scene(const Json& j, const std::string& base_dir, FieldChecker& c, Sce
   if (const Json* v = member(j, "description")) c.string(*v, "/description");
   std::vector<std::string> image_warns;
   read_image(j, base_dir, c, s, image_warns);
+  if (const Json* v = member(j, "effect")) {
+    if (std::optional<std::string> e = c.string(*v, "/effect")) {
+      if (std::find(std::begin(kEffects), std::end(kEffects), *e) == std::end(kEffects))
+        c.error("/effect", fmt::format("\"{}\" is not an effect; expected one of {}", *e,
+                                       fmt::join(kEffects, ", ")));
+      else
+        s.effect = *e;
+    }
+  }
   if (const Json* v = member(j, "glow")) read_glow(*v, c, base_dir, s.params);
-  s.warnings = glow_warnings(s.params);
+  if (const Json* v = member(j, "glsl")) {
+    if (s.effect != "glsl-blur")
+      c.error("/glsl", "belongs to \"effect\": \"glsl-blur\"", true);
+    else
+      read_glsl(*v, c, base_dir, s.glsl);
+  }
+  s.warnings = effect_warnings(s);
   s.warnings.insert(s.warnings.end(), image_warns.begin(), image_warns.end());
 }
 

@@ -7,6 +7,7 @@
 
 #include "scene_check.h"
 #include "tierlift/effects/glow.h"
+#include "tierlift/effects/glsl_blur.h"
 #include "tierlift/image/image.h"
 
 namespace tierlift::effects {
@@ -14,6 +15,10 @@ namespace tierlift::effects {
 // "/glow": every field into `params` (what is absent keeps its default).
 void read_glow(const Json& glow, FieldChecker& check, const std::string& base_dir,
                GlowParams& params);
+
+// "/glsl": the glsl-blur effect's fields into `glsl` (scene_glsl.cpp).
+void read_glsl(const Json& glsl, FieldChecker& check, const std::string& base_dir,
+               GlslBlurParams& params);
 
 // `path` as seen from `base_dir` ("" = the working directory); absolute paths stay.
 std::string resolve_path(const std::string& base_dir, const std::string& path);

@@ -5,6 +5,7 @@
 // between passes. The graph says nothing about which device runs it.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -37,8 +38,17 @@ struct TextureBind {
 // texture reads, and the taps (texture, coordinate scale and offset, weight) are read off
 // the pass's own listings and constants (analytic::extract_taps), never from the generator's
 // parameters. MaskByAlpha: the one non-linear helper, rgb × alpha of a single read at the
-// pass's sample point (glow source extraction); alpha passes through.
-enum class AnalyticForm { Linear, MaskByAlpha };
+// pass's sample point (glow source extraction); alpha passes through. Kernel: a GLSL pass,
+// whose source the model cannot read: the weighted sum of PassDesc::kernel's reads.
+enum class AnalyticForm { Linear, MaskByAlpha, Kernel };
+
+// One read of AnalyticForm::Kernel: the texture bound to `stage`, sampled at the pass's sample
+// point (pixel_uv of the conventions) plus `offset` (in uv), times `weight` per channel.
+struct KernelTap {
+  uint32_t stage = 0;
+  std::array<double, 2> offset{};
+  std::array<double, 4> weight{};
+};
 
 struct PassDesc {
   std::string name; // unique, e.g. "blur_h.1"
@@ -48,6 +58,14 @@ struct PassDesc {
   std::vector<TextureBind> textures;
   std::string target;
   pass::BlendMode blend = pass::BlendMode::Replace;
+  // A GLSL pass (tierlift/glsl; docs/glsl.md): the fragment SPIR-V the Vulkan device draws,
+  // and the GLSL file it came from. `ps` is then the pass's ps_2_0 twin (the same blur in
+  // D3D9 assembly), whose interface the SPIR-V follows; the CPU device runs the twin in the
+  // GLSL's place (the interpreter has no GLSL), and the analytic device evaluates `kernel`
+  // (analytic = Kernel). Null: an ordinary pass.
+  std::shared_ptr<const std::vector<uint32_t>> glsl_spirv;
+  std::string glsl_file;
+  std::vector<KernelTap> kernel;
 };
 
 struct EffectGraph {

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "tierlift/effects/glow.h"
+#include "tierlift/effects/glsl_blur.h"
 #include "tierlift/image/io.h"
 
 namespace tierlift::effects {
@@ -24,8 +25,10 @@ inline constexpr std::string_view kBuiltinNeon = "builtin:neon";
 struct Scene {
   std::string file;  // the JSON file it came from ("" for the built-in default or --image)
   std::string image; // "builtin:neon" (make_default_scene) or a resolved PNG path
-  GlowParams params; // width/height = the image's size; tier, downsample, format, half_texel,
-                     // profile, intensity, listing_files
+  std::string effect = "glow"; // "glow", "glsl-blur" (build_scene_effect picks the builder)
+  GlowParams params;   // width/height = the image's size; tier, downsample, format, half_texel,
+                       // profile, intensity, listing_files
+  GlslBlurParams glsl; // "effect": "glsl-blur" (paths resolved against the scene's folder)
   // One line each, without a "warning:" prefix: glow_warnings(params) (the CLI prints those
   // itself) followed by what only the image shows (an alpha that is 1 or 0 everywhere).
   std::vector<std::string> warnings;
@@ -68,5 +71,12 @@ std::vector<std::string> glow_warnings(const GlowParams& params);
 std::span<const std::string_view> scene_keys();
 std::span<const std::string_view> scene_glow_keys();
 std::span<const std::string_view> scene_profile_keys();
+std::span<const std::string_view> scene_glsl_keys();
+
+// The graph of the effect the scene names: build_glow(params) for "glow",
+// build_glsl_blur(params, glsl) for "glsl-blur".
+GlowPlan build_scene_effect(const Scene& scene);
+// The warnings of that effect's parameters (glow_warnings or glsl_blur_warnings).
+std::vector<std::string> effect_warnings(const Scene& scene);
 
 } // namespace tierlift::effects
