@@ -2,6 +2,7 @@
 // the samplers, SPIR-V generation and spirv-val (glsl.h).
 #include <algorithm>
 #include <mutex>
+#include <regex>
 
 #include <fmt/format.h>
 #include <glslang/Public/ResourceLimits.h>
@@ -37,18 +38,52 @@ void set_vulkan_env(glslang::TShader& shader, EShLanguage stage) {
   shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
 }
 
+// The one textual rewrite (docs/glsl.md): a line `varying TYPE NAME;` (TYPE float or vec2..4)
+// is blanked — spaces of the same length, so lines and columns stay the user's — and the
+// preamble declares a vec4 at the next location with NAME a macro for its leading
+// components. The vertex stage writes vec4 texture coordinates (tierlift's varyings are
+// vec4), and a vec2 input at a vec4 output's location is an interface mismatch Vulkan's
+// validation reports; reading .xy of a vec4 input is the same value without it.
+std::string rewrite_varyings(std::string& text) {
+  static const std::regex decl(
+      R"(^([ \t]*)varying[ \t]+(float|vec2|vec3|vec4)[ \t]+([A-Za-z_][A-Za-z0-9_]*)[ \t]*;)");
+  static const char* const kSwizzle[] = {"x", "xy", "xyz", "xyzw"};
+  std::string preamble;
+  uint32_t location = 0;
+  size_t start = 0;
+  while (start < text.size()) {
+    size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    std::smatch m;
+    const std::string line = text.substr(start, end - start);
+    if (std::regex_search(line, m, decl)) {
+      const std::string type = m[2].str();
+      const size_t n = type == "float" ? 1 : static_cast<size_t>(type.back() - '0');
+      preamble += fmt::format("layout(location = {0}) in vec4 tierlift_varying{0};\n"
+                              "#define {1} tierlift_varying{0}.{2}\n",
+                              location, m[3].str(), kSwizzle[n - 1]);
+      ++location;
+      text.replace(start, static_cast<size_t>(m.length(0)), static_cast<size_t>(m.length(0)), ' ');
+    }
+    start = end + 1;
+  }
+  return preamble;
+}
+
 } // namespace
 
 CompileResult compile_fragment(std::string_view source, const std::string& file_name) {
   init_glslang();
   CompileResult out;
-  const std::string text(source);
-  const char* strings[] = {text.c_str()};
-  const int lengths[] = {static_cast<int>(text.size())};
+  const std::string text(source); // what diagnostics show
+  std::string rewritten = text;
+  const std::string preamble = std::string(kLegacyPreamble) + rewrite_varyings(rewritten);
+  const char* strings[] = {rewritten.c_str()};
+  const int lengths[] = {static_cast<int>(rewritten.size())};
   const char* names[] = {file_name.c_str()};
   glslang::TShader shader(EShLangFragment);
   shader.setStringsWithLengthsAndNames(strings, lengths, names, 1);
-  shader.setPreamble(kLegacyPreamble);
+  shader.setPreamble(preamble.c_str());
   set_vulkan_env(shader, EShLangFragment);
   shader.setAutoMapLocations(true);
   shader.setAutoMapBindings(true);

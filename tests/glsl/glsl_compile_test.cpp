@@ -75,12 +75,29 @@ TEST(GlslCompile, SyntaxErrorNamesLineAndToken) {
 }
 
 TEST(GlslCompile, NonSamplerUniformIsRefusedAtItsDeclaration) {
-  // "gain" on line 2 at column 15 ("uniform float " is 14 characters).
+  // glslang refuses a loose uniform for Vulkan at its declaration (line 2); it quotes no
+  // token of the line, so the column is 1.
   CompileResult r = compile_fragment("varying vec2 uv;\nuniform float gain;\n"
                                      "void main() { gl_FragColor = vec4(gain); }\n",
                                      "gain.frag");
   ASSERT_FALSE(r);
-  EXPECT_EQ(r.error.rfind("gain.frag:2:15: error: uniform 'gain'", 0), 0u) << r.error;
+  EXPECT_EQ(r.error.rfind("gain.frag:2:1: error: 'non-opaque uniforms outside a block': not "
+                          "allowed when using GLSL for Vulkan",
+                          0),
+            0u)
+      << r.error;
+}
+
+TEST(GlslCompile, UniformBlockIsRefusedByName) {
+  // A block passes glslang; a graph pass has no values for it, so tierlift refuses it at
+  // the line declaring its member: "gain" on line 2, column 25 ("uniform Params { float " is
+  // 24 characters).
+  CompileResult r = compile_fragment("varying vec2 uv;\nuniform Params { float gain; };\n"
+                                     "void main() { gl_FragColor = vec4(gain); }\n",
+                                     "block.frag");
+  ASSERT_FALSE(r);
+  EXPECT_EQ(r.error.rfind("block.frag:2:", 0), 0u) << r.error;
+  EXPECT_NE(r.error.find("a GLSL pass takes sampler uniforms only"), std::string::npos) << r.error;
 }
 
 TEST(GlslCompile, MissingFileIsAnIoError) {

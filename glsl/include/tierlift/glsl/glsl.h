@@ -1,11 +1,13 @@
 // GLSL fragment shaders as passes of an effect graph. The seed's blur (and a user's own pass)
 // is legacy desktop GLSL: gl_FragColor, texture2D, `varying`, loose `uniform sampler2D`. It
-// reaches Vulkan unchanged in its text: glslang (the library, in-process) reads it as GLSL
+// reaches Vulkan by a mechanical mapping: glslang (the library, in-process) reads it as GLSL
 // 4.50 for Vulkan with a preamble of #defines (texture2D → texture, varying → in,
-// gl_FragColor → an output at location 0) and maps what the source leaves unplaced —
-// varyings to locations 0, 1, … in order, samplers to the bindings tierlift's own SPIR-V uses
-// (set 0, binding 2 + stage). docs/glsl.md says why this and not glslang's OpenGL front end.
-// The SPIR-V then passes spirv-val with the Vulkan 1.1 rules, as codegen's does.
+// gl_FragColor → an output at location 0); each `varying TYPE NAME;` line is blanked and
+// NAME becomes the leading components of a vec4 input at locations 0, 1, … in order (the
+// vertex stage writes vec4s); samplers get the bindings tierlift's own SPIR-V uses (set 0,
+// binding 2 + stage). Lines and columns stay the user's. docs/glsl.md says why this and not
+// glslang's OpenGL front end. The SPIR-V then passes spirv-val with the Vulkan 1.1 rules, as
+// codegen's does.
 #pragma once
 
 #include <cstdint>
