@@ -1,7 +1,6 @@
 #include "glslang_peer.h"
 
-#include <glslang/Public/ResourceLimits.h>
-#include <glslang/SPIRV/GlslangToSpv.h>
+#include "tierlift/glsl/glsl.h"
 
 namespace tierlift::bench {
 
@@ -27,18 +26,10 @@ void main() {
 })";
 
 std::vector<uint32_t> glslang_to_spirv(EShLanguage stage, const char* source) {
-  glslang::TShader shader(stage);
-  shader.setStrings(&source, 1);
-  shader.setEnvInput(glslang::EShSourceGlsl, stage, glslang::EShClientVulkan, 100);
-  shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1);
-  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
-  if (!shader.parse(GetDefaultResources(), 100, false, EShMsgDefault)) return {};
-  glslang::TProgram program;
-  program.addShader(&shader);
-  if (!program.link(EShMsgDefault)) return {};
-  std::vector<uint32_t> words;
-  glslang::GlslangToSpv(*program.getIntermediate(stage), words);
-  return words;
+  // The library's plain Vulkan compile (tierlift/glsl), so the peer and the GLSL pass kind
+  // share one glslang driver.
+  return glsl::compile_vulkan_glsl(
+      stage == EShLangVertex ? glsl::Stage::Vertex : glsl::Stage::Fragment, source);
 }
 
 } // namespace tierlift::bench

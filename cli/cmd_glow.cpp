@@ -173,6 +173,7 @@ nlohmann::json summary_json(const effects::Scene& scene, const effects::GlowPlan
   nlohmann::json j = {
       {"scene",
        {{"file", scene.file}, {"image", scene.image}, {"width", p.width}, {"height", p.height}}},
+      {"effect", scene.effect},
       {"tier", effects::tier_name(p.tier)},
       {"format", img::format_name(p.format)},
       {"downsample", p.downsample},
@@ -232,7 +233,7 @@ int run(const GlowFlags& f) {
     return report.finish(io ? kExitUsage : kExitInvalid);
   }
   // The parameters' warnings after the flags' overrides, then the scene's own (the image's).
-  std::vector<std::string> warnings = effects::glow_warnings(params);
+  std::vector<std::string> warnings = effects::effect_warnings(*scene);
   for (const std::string& w : scene->warnings)
     if (std::find(warnings.begin(), warnings.end(), w) == warnings.end()) warnings.push_back(w);
   for (const std::string& w : warnings) report.warning("scene", fmt::format("{}: {}", where, w));
@@ -323,6 +324,11 @@ int run(const GlowFlags& f) {
                  img::format_name(params.format), scene->radial.steps, scene->radial.centre[0],
                  scene->radial.centre[1], plan.blur_passes_per_axis, scene->radial.strength,
                  scene->radial.frame);
+    else if (scene->effect == "glsl-blur")
+      fmt::print("glsl-blur: {}x{} {}, {} taps per axis, {} GLSL passes (glslang → SPIR-V on "
+                 "vulkan; their ps_2_0 twins on cpu)\n",
+                 params.width, params.height, img::format_name(params.format), plan.taps.size(),
+                 plan.graph.passes.size());
     else
       fmt::print("glow {}: {}x{} {}, downsample {} ({}x{}), {} taps, {} blur passes per axis, "
                  "half texel {}, ps1x-max {}\n",

@@ -27,6 +27,7 @@ void register_listings_command(CLI::App& app) {
     int result = kExitOk;
     nlohmann::json entries = nlohmann::json::array();
     for (const auto& l : listings::embedded_listings()) {
+      if (l.path.ends_with(".frag")) continue; // GLSL (glsl/), not assembly: tierlift/glsl reads it
       const std::string path = "listings/" + std::string(l.path);
       auto parsed = as::parse_text(std::string(l.text), path);
       bool ok = parsed.program && as::validate(*parsed.program, parsed.diags);

@@ -37,7 +37,7 @@ TEST(Scene, EveryShippedSceneLoadsAndBuilds) {
     ASSERT_TRUE(image) << image.message();
     EXPECT_EQ(image->width, s.scene->params.width);
   }
-  EXPECT_EQ(n, 6u);
+  EXPECT_EQ(n, 7u);
 }
 
 TEST(Scene, DefaultJsonSaysWhatTheBuiltInDefaultIs) {
@@ -184,6 +184,7 @@ TEST(Scene, TheSchemaFileListsTheKeysTheLoaderAccepts) {
   EXPECT_EQ(keys_of(schema["properties"]["radial"]["properties"]), keys_of(scene_radial_keys()));
   EXPECT_EQ(keys_of(schema["properties"]["outline"]["properties"]), keys_of(scene_outline_keys()));
   EXPECT_EQ(values_of(schema["properties"]["effect"]["enum"]), keys_of(scene_effects()));
+  EXPECT_EQ(keys_of(schema["properties"]["glsl"]["properties"]), keys_of(scene_glsl_keys()));
 }
 
 } // namespace

@@ -177,7 +177,19 @@ std::string run_analytic_pass(const PassDesc& pass, const EffectGraph& graph, Im
   }
   std::vector<std::string> pass_notes;
   std::optional<img::ImageResult> result;
-  if (pass.analytic == AnalyticForm::Linear) {
+  if (pass.analytic == AnalyticForm::Kernel) {
+    // A GLSL pass: the model cannot read GLSL, so it takes the kernel the pass states (taps
+    // at the sample point plus an offset), interpolating the coordinate in double.
+    std::vector<analytic::Tap> taps;
+    for (const KernelTap& k : pass.kernel) {
+      analytic::Tap t;
+      t.sampler = k.stage;
+      t.offset = k.offset;
+      t.weight = k.weight;
+      taps.push_back(t);
+    }
+    result.emplace(analytic::linear_pass(taps, in, &pass_notes));
+  } else if (pass.analytic == AnalyticForm::Linear) {
     analytic::TapExtraction ex =
         analytic::extract_taps(*pass.vs, pass.vs_constants, *pass.ps, pass.ps_constants);
     if (!ex)

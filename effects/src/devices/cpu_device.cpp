@@ -58,6 +58,10 @@ std::string CpuPassDevice::run_pass(const PassDesc& desc) {
   std::optional<pass::Pass> pass = make_pass(desc, placeholders_, graph_->conventions, &error);
   if (!pass) return error;
   pass->executor = executor_;
+  // A GLSL pass: the interpreter runs D3D9 listings only, so it runs the pass's ps_2_0 twin
+  // (PassDesc::glsl_spirv; docs/glsl.md). The GLSL and the twin are compared on the Vulkan
+  // device, where both run, so the twin standing in here is checked, not assumed.
+  pass->pixel_spirv.reset();
   auto it = images_.find(desc.target);
   if (it == images_.end()) return fmt::format("no texture '{}'", desc.target);
   cpu::DrawTargets targets;

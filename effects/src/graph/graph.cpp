@@ -75,6 +75,10 @@ std::string check_outputs(const EffectGraph& g, const PassDesc& p, const Texture
 
 std::string check_pass(const EffectGraph& g, const PassDesc& p) {
   if (!p.vs || !p.ps) return fmt::format("pass '{}': needs a vertex and a pixel listing", p.name);
+  if (p.glsl_spirv && p.ps->profile != ir::Profile::ps_2_0)
+    return fmt::format("pass '{}': a GLSL pass's twin must be a ps_2_0 listing", p.name);
+  if ((p.analytic == AnalyticForm::Kernel) != !p.kernel.empty())
+    return fmt::format("pass '{}': the analytic form Kernel and a kernel go together", p.name);
   const TextureDesc* target = g.find_texture(p.target);
   if (!target) return fmt::format("pass '{}': unknown target '{}'", p.name, p.target);
   if (target->input)

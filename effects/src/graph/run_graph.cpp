@@ -60,6 +60,7 @@ std::optional<pass::Pass> make_pass(const PassDesc& desc, const ImageMap& images
   }
   pass.blend = desc.blend;
   pass.conventions = conventions;
+  pass.pixel_spirv = desc.glsl_spirv;
   return pass;
 }
 

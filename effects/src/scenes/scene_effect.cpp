@@ -1,5 +1,5 @@
 // The one list of effects a scene may name, and the dispatch on it: "effect" read with its
-// own object ("radial", "outline"; an object for another effect is an error at its key), and
+// own object ("radial", "outline", "glsl"; an object for another effect is an error at its key), and
 // the graph each effect builds.
 #include <algorithm>
 
@@ -11,7 +11,7 @@
 namespace tierlift::effects {
 namespace {
 
-constexpr std::string_view kEffects[] = {"glow", "radial-beams", "stencil-outline"};
+constexpr std::string_view kEffects[] = {"glow", "radial-beams", "stencil-outline", "glsl-blur"};
 
 const Json* member(const Json& object, std::string_view key) {
   auto it = object.find(key);
@@ -45,7 +45,7 @@ std::span<const std::string_view> scene_effects() {
   return kEffects;
 }
 
-void read_effect(const Json& j, FieldChecker& c, Scene& s) {
+void read_effect(const Json& j, FieldChecker& c, const std::string& base_dir, Scene& s) {
   if (const Json* v = member(j, "effect")) {
     std::optional<std::string> name = c.string(*v, "/effect");
     if (!name) return;
@@ -60,12 +60,20 @@ void read_effect(const Json& j, FieldChecker& c, Scene& s) {
     if (owned_by("radial", "radial-beams", c, s)) read_radial(*v, c, s.params, s.radial);
   if (const Json* v = member(j, "outline"))
     if (owned_by("outline", "stencil-outline", c, s)) read_outline(*v, c, s.outline);
+  if (const Json* v = member(j, "glsl"))
+    if (owned_by("glsl", "glsl-blur", c, s)) read_glsl(*v, c, base_dir, s.glsl);
 }
 
 GlowPlan build_scene_effect(const Scene& scene) {
   if (scene.effect == "radial-beams") return build_radial(scene.params, scene.radial);
   if (scene.effect == "stencil-outline") return build_outline(scene.params, scene.outline);
+  if (scene.effect == "glsl-blur") return build_glsl_blur(scene.params, scene.glsl);
   return build_glow(scene.params);
+}
+
+std::vector<std::string> effect_warnings(const Scene& scene) {
+  if (scene.effect == "glsl-blur") return glsl_blur_warnings(scene.glsl);
+  return glow_warnings(scene.params);
 }
 
 } // namespace tierlift::effects

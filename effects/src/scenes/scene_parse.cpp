@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "scene_parts.h"
 #include "tierlift/effects/default_scene.h"
@@ -14,8 +15,8 @@
 namespace tierlift::effects {
 namespace {
 
-constexpr std::string_view kSceneKeys[] = {"$schema", "description", "image",  "size",
-                                           "glow",    "effect",      "radial", "outline"};
+constexpr std::string_view kSceneKeys[] = {"$schema", "description", "image",  "size",   "glow",
+                                           "effect",  "radial",      "outline", "glsl"};
 constexpr size_t kMaxSceneBytes = size_t{1} << 20; // a scene is a few hundred bytes
 constexpr int kMaxNesting = 32;                    // a scene nests 5 deep
 
@@ -103,8 +104,8 @@ void read_scene(const Json& j, const std::string& base_dir, FieldChecker& c, Sce
   std::vector<std::string> image_warns;
   read_image(j, base_dir, c, s, image_warns);
   if (const Json* v = member(j, "glow")) read_glow(*v, c, base_dir, s.params);
-  read_effect(j, c, s);
-  s.warnings = glow_warnings(s.params);
+  read_effect(j, c, base_dir, s);
+  s.warnings = effect_warnings(s);
   s.warnings.insert(s.warnings.end(), image_warns.begin(), image_warns.end());
 }
 

@@ -47,7 +47,17 @@ struct TextureBind {
 // Coverage: an object pass — the pixel listing writes constants (mov oC#, c#) to its targets
 // and the model computes which pixels the pass's triangles cover (the object's exact
 // coverage at the sample points).
-enum class AnalyticForm { Linear, MaskByAlpha, Coverage };
+// Kernel: a GLSL pass, whose source the model cannot read: the weighted sum of
+// PassDesc::kernel's reads.
+enum class AnalyticForm { Linear, MaskByAlpha, Coverage, Kernel };
+
+// One read of AnalyticForm::Kernel: the texture bound to `stage`, sampled at the pass's sample
+// point (pixel_uv of the conventions) plus `offset` (in uv), times `weight` per channel.
+struct KernelTap {
+  uint32_t stage = 0;
+  std::array<double, 2> offset{};
+  std::array<double, 4> weight{};
+};
 
 struct PassDesc {
   std::string name; // unique, e.g. "blur_h.1"
@@ -68,6 +78,14 @@ struct PassDesc {
   // indexing them (empty: consecutive triples). No vertices: the full-screen quad.
   std::vector<pass::VertexInput> vertices;
   std::vector<std::array<uint32_t, 3>> triangles;
+  // A GLSL pass (tierlift/glsl; docs/glsl.md): the fragment SPIR-V the Vulkan device draws,
+  // and the GLSL file it came from. `ps` is then the pass's ps_2_0 twin (the same blur in
+  // D3D9 assembly), whose interface the SPIR-V follows; the CPU device runs the twin in the
+  // GLSL's place (the interpreter has no GLSL), and the analytic device evaluates `kernel`
+  // (analytic = Kernel). Null: an ordinary pass.
+  std::shared_ptr<const std::vector<uint32_t>> glsl_spirv;
+  std::string glsl_file;
+  std::vector<KernelTap> kernel;
 };
 
 struct EffectGraph {

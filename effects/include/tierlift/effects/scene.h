@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "tierlift/effects/glow.h"
+#include "tierlift/effects/glsl_blur.h"
 #include "tierlift/effects/outline.h"
 #include "tierlift/effects/radial.h"
 #include "tierlift/image/io.h"
@@ -30,17 +31,21 @@ struct Scene {
                      // profile, intensity, listing_files
   // Which effect runs (scene_effects()): "glow", the default; "radial-beams" (its parameters
   // in `radial`; tier, format and listings from `params`); "stencil-outline" (`outline`; the
-  // glow parameters serve it: size, blur profile, intensity, format).
+  // glow parameters serve it: size, blur profile, intensity, format); "glsl-blur" (`glsl`).
   std::string effect = "glow";
   RadialParams radial;   // "radial": {…} for "radial-beams"
   OutlineParams outline; // "outline": {…} for "stencil-outline"
+  GlslBlurParams glsl;   // "glsl": {…} for "glsl-blur" (paths resolved against the scene's folder)
   // One line each, without a "warning:" prefix: glow_warnings(params) (the CLI prints those
   // itself) followed by what only the image shows (an alpha that is 1 or 0 everywhere).
   std::vector<std::string> warnings;
 };
 
-// The graph the scene's effect builds: build_glow, build_radial or build_outline.
+// The graph the scene's effect builds: build_glow, build_radial, build_outline or
+// build_glsl_blur.
 GlowPlan build_scene_effect(const Scene& scene);
+// The warnings of that effect's parameters (glow_warnings or glsl_blur_warnings).
+std::vector<std::string> effect_warnings(const Scene& scene);
 
 struct SceneLoad {
   std::optional<Scene> scene;
@@ -81,6 +86,7 @@ std::span<const std::string_view> scene_glow_keys();
 std::span<const std::string_view> scene_profile_keys();
 std::span<const std::string_view> scene_radial_keys();  // "radial"
 std::span<const std::string_view> scene_outline_keys(); // "outline"
+std::span<const std::string_view> scene_glsl_keys();    // "glsl"
 // The values "effect" may take (scene_effect.cpp: the one list).
 std::span<const std::string_view> scene_effects();
 

@@ -40,6 +40,7 @@ std::optional<std::string> draw_key(const pass::Pass& pass, const DrawTextures& 
   KeyWriter k;
   k.put(pass.vertex_program.get());
   k.put(pass.pixel_program.get());
+  k.put(pass.pixel_spirv.get());
   k.put(options.flat_varyings);
   const ir::Conventions& c = pass.conventions;
   k.put(c.pixel_center);
@@ -89,6 +90,7 @@ PreparedDraw& DrawCache::insert(const std::string& key, const pass::Pass& pass,
                                 std::unique_ptr<CachedDraw> entry) {
   entry->vs = pass.vertex_program;
   entry->ps = pass.pixel_program;
+  entry->ps_spirv = pass.pixel_spirv;
   auto& slot = entries_[key];
   slot = std::move(entry);
   return slot->draw;

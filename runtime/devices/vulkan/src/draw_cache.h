@@ -24,6 +24,7 @@ std::optional<std::string> draw_key(const pass::Pass& pass, const DrawTextures& 
 
 struct CachedDraw {
   std::shared_ptr<const ir::Program> vs, ps; // keep the keyed addresses alive
+  std::shared_ptr<const std::vector<uint32_t>> ps_spirv;
   PreparedDraw draw;
 };
 

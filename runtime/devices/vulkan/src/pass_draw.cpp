@@ -201,7 +201,11 @@ std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawText
   PipelineDesc pd;
   pd.vs = &pair->vs;
   pd.ps = &pair->ps;
-  pd.ps_words = options.flat_varyings ? decorate_inputs_flat(pair->ps.words) : pair->ps.words;
+  // A GLSL pass draws its own SPIR-V; the twin's module gave the interface (samplers,
+  // constant block) the descriptors above follow, and glslang names its entry point "main"
+  // as codegen does.
+  const std::vector<uint32_t>& ps_words = pass.pixel_spirv ? *pass.pixel_spirv : pair->ps.words;
+  pd.ps_words = options.flat_varyings ? decorate_inputs_flat(ps_words) : ps_words;
   pd.blend = pass.blend;
   pd.render_pass = out.render_pass;
   pd.layout = bound.layout;

@@ -144,6 +144,13 @@ struct Pass {
   DepthStencilState depth_stencil;
   // Fixed-function texture stages, for passes without a pixel program; empty: none.
   std::vector<FixedStage> fixed_stages;
+  // A pixel stage given as SPIR-V (a GLSL pass compiled by tierlift/glsl) that a device
+  // draws instead of pixel_program's translation. pixel_program is then the pass's ps_2_0
+  // twin: the same computation in D3D9 assembly, whose interface the SPIR-V follows (t# at
+  // Location #, s# at binding 2 + #, oC0 at Location 0; docs/glsl.md). A device that cannot
+  // run SPIR-V refuses the pass (check_supported); it never draws the twin in its place
+  // silently — the effect layer decides that (effects::CpuPassDevice, documented there).
+  std::shared_ptr<const std::vector<uint32_t>> pixel_spirv;
 };
 
 // What a device can draw beyond one colour target with programmable stages.
@@ -151,6 +158,7 @@ struct Capabilities {
   uint32_t max_color_targets = 1;
   bool depth_stencil = false;
   bool fixed_function = false;
+  bool spirv_pixel_stage = false; // Pass::pixel_spirv
 };
 
 // An error (rule "unsupported", subject `device`) for the first thing `pass` asks of a

@@ -35,9 +35,10 @@ namespace tierlift::vulkan {
 
 class TextureSet;
 
-// What the Vulkan device draws beyond one colour target with programmable stages: nothing yet
-// (a pass asking for more is refused, pass::check_supported).
-inline constexpr pass::Capabilities kCapabilities{};
+// What the Vulkan device draws beyond one colour target with programmable stages: a pixel
+// stage given as SPIR-V (a GLSL pass); a pass asking for more is refused
+// (pass::check_supported).
+inline constexpr pass::Capabilities kCapabilities{.spirv_pixel_stage = true};
 
 struct DeviceOptions {
   // Enable VK_LAYER_KHRONOS_validation with a messenger that collects every warning and

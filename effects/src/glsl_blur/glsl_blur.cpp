@@ -1,0 +1,147 @@
+// The seed's GLSL blur as a graph (glsl_blur.h): GLSL compiled by glslang for Vulkan, the
+// ps_2_0 twin for the interpreter, the kernel for the analytic model.
+#include "tierlift/effects/glsl_blur.h"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "tierlift/glsl/glsl.h"
+#include "tierlift/listings/embedded.h"
+
+namespace tierlift::effects {
+namespace {
+
+constexpr std::string_view kQuadVs = "glow/quad4_coords.vsh";
+constexpr std::string_view kBlurHTarget = "blur_h";
+
+// The GLSL of a pass: the file when one is named, else the built-in text.
+glsl::CompileResult load_glsl(const std::string& file, std::string_view builtin) {
+  if (!file.empty()) return glsl::compile_fragment_file(file);
+  std::optional<std::string_view> text = listings::find_embedded(builtin);
+  if (!text) {
+    glsl::CompileResult r;
+    r.error = fmt::format("no built-in GLSL '{}'\n", builtin);
+    return r;
+  }
+  return glsl::compile_fragment(*text, "listings/" + std::string(builtin));
+}
+
+struct Axis {
+  std::string name, source, target;
+  std::string glsl_file, twin_file;
+  std::string_view glsl_builtin, twin_builtin;
+  bool vertical = false;
+};
+
+} // namespace
+
+GlowPlan build_glsl_blur(const GlowParams& params, const GlslBlurParams& g) {
+  GlowPlan plan;
+  const uint32_t w = params.width, h = params.height;
+  if (w == 0 || h == 0 || w > img::kMaxDimension || h > img::kMaxDimension) {
+    plan.error = fmt::format("scene size {}x{}: expected 1..{} each", w, h, img::kMaxDimension);
+    return plan;
+  }
+  if (g.weights.empty() || g.weights.size() % 2 == 0) {
+    plan.error =
+        fmt::format("glsl weights: {} given; a centred kernel has an odd count", g.weights.size());
+    return plan;
+  }
+  if (!std::isfinite(g.step)) {
+    plan.error = "glsl step: not a finite number";
+    return plan;
+  }
+  std::string error;
+  auto vs = builtin_listing(kQuadVs, &error, params.listing_options);
+  if (!vs) {
+    plan.error = error;
+    return plan;
+  }
+  EffectGraph& graph = plan.graph;
+  graph.conventions.subtexel_bits = params.subtexel_bits;
+  for (std::string_view t : {kSceneTexture, kBlurHTarget, kFinalTexture})
+    graph.textures.push_back({std::string(t), w, h, params.format, t == kSceneTexture});
+
+  const Axis axes[2] = {
+      {"blur_h", std::string(kSceneTexture), std::string(kBlurHTarget), g.horizontal,
+       g.horizontal_twin, kGlslBlurH, kGlslTwinH, false},
+      {"blur_v", std::string(kBlurHTarget), std::string(kFinalTexture), g.vertical, g.vertical_twin,
+       kGlslBlurV, kGlslTwinV, true},
+  };
+  const int n = static_cast<int>(g.weights.size() / 2);
+  for (const Axis& a : axes) {
+    glsl::CompileResult shader = load_glsl(a.glsl_file, a.glsl_builtin);
+    if (!shader) {
+      plan.error = shader.error;
+      return plan;
+    }
+    std::map<std::string, std::string, std::less<>> files;
+    if (!a.twin_file.empty()) files.emplace(std::string(a.twin_builtin), a.twin_file);
+    auto twin = glow_listing(a.twin_builtin, files, &error, params.listing_options);
+    if (!twin) {
+      plan.error = error;
+      return plan;
+    }
+    for (const glsl::Sampler& s : shader.shader->samplers)
+      if (s.stage != 0) {
+        plan.error = fmt::format("{}: error: sampler '{}' is stage {}; the blur pass binds its "
+                                 "source to stage 0 only\n",
+                                 shader.shader->file, s.name, s.stage);
+        return plan;
+      }
+    PassDesc p;
+    p.name = a.name;
+    p.vs = vs;
+    p.ps = twin;
+    // oT0 = uv · c4 + c0: the quad uv plus half a texel, so vTexCoord (t0) is a texel centre.
+    p.vs_constants = {{float(0.5 / w), float(0.5 / h), 0, 0},
+                      {},
+                      {},
+                      {},
+                      {1, 1, 1, 1},
+                      {1, 1, 1, 1},
+                      {1, 1, 1, 1},
+                      {1, 1, 1, 1}};
+    pass::SamplerState sampler;
+    sampler.filter = pass::Filter::Point;
+    sampler.address_u = sampler.address_v = pass::AddressMode::Clamp;
+    p.textures = {{0, a.source, sampler}};
+    p.target = a.target;
+    p.glsl_spirv = std::make_shared<const std::vector<uint32_t>>(std::move(shader.shader->spirv));
+    p.glsl_file = shader.shader->file;
+    p.analytic = AnalyticForm::Kernel;
+    for (int k = -n; k <= n; ++k) {
+      KernelTap t;
+      t.stage = 0;
+      t.offset = {0.5 / w, 0.5 / h};
+      t.offset[a.vertical ? 1 : 0] += k * g.step;
+      const double wk = g.weights[static_cast<size_t>(k + n)];
+      t.weight = {wk, wk, wk, wk};
+      p.kernel.push_back(t);
+      if (!a.vertical) plan.taps.push_back({static_cast<int>(std::lround(k * g.step * w)), wk});
+    }
+    graph.passes.push_back(std::move(p));
+  }
+  plan.glow_width = w;
+  plan.glow_height = h;
+  plan.blur_passes_per_axis = 1;
+  if (std::string e = check_graph(graph); !e.empty()) plan.error = e;
+  return plan;
+}
+
+std::vector<std::string> glsl_blur_warnings(const GlslBlurParams& g) {
+  double sum = 0;
+  for (double w : g.weights) sum += w;
+  std::vector<std::string> out;
+  if (std::isfinite(sum) && sum > 0 && std::abs(sum - 1) > 1e-9) {
+    const double both = sum * sum; // x, then y: the sum scales the image twice
+    out.push_back(fmt::format("kernel weights sum to {:.6g}: the blur is {:.3g} % {} than its "
+                              "source ({:.4g} after both axes)",
+                              sum, std::abs(both - 1) * 100, both < 1 ? "darker" : "brighter",
+                              both));
+  }
+  return out;
+}
+
+} // namespace tierlift::effects
