@@ -26,7 +26,7 @@ namespace {
 struct GlowFlags {
   std::string scene, image, tier, format, backend = "all", output, gpu, ps1x_max;
   std::string weight_rounding; // dx7: "plain" | "error-carry"; empty: the scene's
-  unsigned downsample = 0; // 0: the scene's
+  unsigned downsample = 0;     // 0: the scene's
   bool no_half_texel = false, json = false, quiet = false;
   FrontEndOptions listing; // -D, -I, --profile, --skip-validation (its json is unused)
   bool both_devices() const { return backend == "both"; } // cpu and vulkan, no analytic
@@ -313,7 +313,8 @@ int run(const GlowFlags& f) {
                effects::tier_name(params.tier), params.width, params.height,
                img::format_name(params.format), params.downsample, plan.glow_width,
                plan.glow_height, plan.taps.size(), plan.blur_passes_per_axis,
-               params.half_texel ? "on" : "off", ir::ps1x_max_label(params.ps1x_max));
+               params.half_texel ? "on" : "off",
+               ir::ps1x_max_label(plan.graph.conventions.ps1x_max_value));
     if (!plan.quantization.empty()) fmt::print("{}\n", plan.quantization);
     for (const GlowWay& w : ways)
       fmt::print("{}: {} passes in {:.1f} ms{}\n", w.name, w.glow.run.passes.size(),

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 #include "three_way_scenes.h"
@@ -133,8 +134,8 @@ TEST(StageStates, TheBuiltInBlurQuadLowersToTwoTexturesAndOneVertexColour) {
   auto l = tss::load_stage_states(std::string(*text), "blur_pair.tss", &error);
   ASSERT_TRUE(l) << error;
   EXPECT_EQ(l->texture_stages, 2u);
-  EXPECT_EQ(l->ps->profile, ir::Profile::PS_1_1);
-  EXPECT_EQ(l->vs->profile, ir::Profile::VS_1_1);
+  EXPECT_EQ(l->ps->profile, ir::Profile::ps_1_1);
+  EXPECT_EQ(l->vs->profile, ir::Profile::vs_1_1);
   EXPECT_NE(l->ps_text.find("tex t0\ntex t1\n"), std::string::npos) << l->ps_text;
   EXPECT_NE(l->ps_text.find("mad r0.rgb, t1, r0.a, r0"), std::string::npos) << l->ps_text;
   EXPECT_NE(l->vs_text.find("mov oD0, c8"), std::string::npos) << l->vs_text;
@@ -181,8 +182,8 @@ TEST(Dx7Glow, InterpreterEqualsTheConvolutionWithTheQuantisedWeights) {
     p.downsample = 1;
     p.weight_rounding = r;
     p.profile.terms = {{3, 0.8}, {1, 0.2}};
-    const img::Image scene = test_scenes::make_scene(test_scenes::Scene::RandomAlpha, p.width,
-                                                     p.height);
+    const img::Image scene =
+        test_scenes::make_scene(test_scenes::Scene::RandomAlpha, p.width, p.height);
     GlowPlan plan = build_glow(p);
     ASSERT_TRUE(plan) << plan.error;
     ASSERT_EQ(plan.weight_bytes.size(), plan.taps.size());

@@ -75,8 +75,7 @@ std::string instruction(const Operation& o, uint32_t n, std::string_view mask) {
   case Op::Add: return fmt::format("add {}, {}, {}", d, a(0), a(1));
   case Op::AddSigned: return fmt::format("add_sat {}, {}, {}_bias", d, a(0), a(1));
   case Op::Subtract: return fmt::format("sub_sat {}, {}, {}", d, a(0), a(1));
-  case Op::ModulateAlphaAddColor:
-    return fmt::format("mad {}, {}, {}.a, {}", d, a(1), a(0), a(0));
+  case Op::ModulateAlphaAddColor: return fmt::format("mad {}, {}, {}.a, {}", d, a(1), a(0), a(0));
   }
   return "";
 }
@@ -130,8 +129,9 @@ std::optional<Lowered> lower_stage_states(const StageStates& st, std::string* er
       if (n == 0) code += "mov r0.a, v0  // stage 0 alphaop disable: the diffuse alpha\n";
       diffuse = diffuse || n == 0;
     } else {
-      code += instruction(a, n, ".a") + (s.alpha ? op_comment(a, n, "alphaop")
-                                                 : fmt::format("  // stage {} alphaop default", n)) +
+      code += instruction(a, n, ".a") +
+              (s.alpha ? op_comment(a, n, "alphaop")
+                       : fmt::format("  // stage {} alphaop default", n)) +
               "\n";
     }
   }

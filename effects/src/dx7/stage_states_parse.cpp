@@ -64,18 +64,25 @@ struct OpName {
   size_t args;
 };
 constexpr OpName kOps[] = {
-    {"disable", Op::Disable, 0},       {"selectarg1", Op::SelectArg1, 1},
-    {"selectarg2", Op::SelectArg2, 2}, {"modulate", Op::Modulate, 2},
-    {"modulate2x", Op::Modulate2x, 2}, {"modulate4x", Op::Modulate4x, 2},
-    {"add", Op::Add, 2},               {"addsigned", Op::AddSigned, 2},
-    {"subtract", Op::Subtract, 2},     {"modulatealpha_addcolor", Op::ModulateAlphaAddColor, 2},
+    {"disable", Op::Disable, 0},
+    {"selectarg1", Op::SelectArg1, 1},
+    {"selectarg2", Op::SelectArg2, 2},
+    {"modulate", Op::Modulate, 2},
+    {"modulate2x", Op::Modulate2x, 2},
+    {"modulate4x", Op::Modulate4x, 2},
+    {"add", Op::Add, 2},
+    {"addsigned", Op::AddSigned, 2},
+    {"subtract", Op::Subtract, 2},
+    {"modulatealpha_addcolor", Op::ModulateAlphaAddColor, 2},
 };
 struct ArgName {
   std::string_view name;
   Arg arg;
 };
-constexpr ArgName kArgs[] = {{"current", Arg::Current},   {"diffuse", Arg::Diffuse},
-                             {"specular", Arg::Specular}, {"texture", Arg::Texture},
+constexpr ArgName kArgs[] = {{"current", Arg::Current},
+                             {"diffuse", Arg::Diffuse},
+                             {"specular", Arg::Specular},
+                             {"texture", Arg::Texture},
                              {"tfactor", Arg::TFactor}};
 
 std::string op_list() {
@@ -136,9 +143,9 @@ private:
     const std::string& num = w[1].text;
     auto [p, ec] = std::from_chars(num.data(), num.data() + num.size(), n);
     if (ec != std::errc() || p != num.data() + num.size())
-      return error(w[1].loc, "tss-syntax",
-                   fmt::format("'{}' is not a stage number; expected 0..{}", num,
-                               kD3DMaxStages - 1));
+      return error(
+          w[1].loc, "tss-syntax",
+          fmt::format("'{}' is not a stage number; expected 0..{}", num, kD3DMaxStages - 1));
     if (ec == std::errc::result_out_of_range || n >= kD3DMaxStages)
       return error(w[1].loc, "tss-range",
                    fmt::format("stage {} is out of range: Direct3D numbers texture stages "
@@ -168,9 +175,9 @@ private:
                                "alphaop (their arguments follow the operation)",
                                w[i].text));
     if (*slot)
-      return error(w[i].loc, "tss-duplicate",
-                   fmt::format("stage {}: {} is set twice (first at line {})", n, state,
-                               (*slot)->loc.line));
+      return error(
+          w[i].loc, "tss-duplicate",
+          fmt::format("stage {}: {} is set twice (first at line {})", n, state, (*slot)->loc.line));
     if (++i >= w.size()) return error(end_of(w), "tss-syntax", "expected an operation");
     const std::string opname = strip_prefix(w[i].text, "d3dtop_");
     const auto op = std::find_if(std::begin(kOps), std::end(kOps),
@@ -195,9 +202,9 @@ private:
                                  "texture or tfactor",
                                  w[i].text));
       if (o.args.size() == op->args)
-        return error(w[i].loc, "tss-arg-count",
-                     fmt::format("{} takes {} argument{}", op->name, op->args,
-                                 op->args == 1 ? "" : "s"));
+        return error(
+            w[i].loc, "tss-arg-count",
+            fmt::format("{} takes {} argument{}", op->name, op->args, op->args == 1 ? "" : "s"));
       o.args.push_back(arg->arg);
     }
     if (o.args.size() < op->args)
@@ -223,9 +230,9 @@ private:
       return error(w[1].loc, "tss-range",
                    fmt::format("{} is out of range: a D3DCOLOR has 32 bits (0xAARRGGBB)", v));
     if (states_.tfactor_loc.valid())
-      return error(w[0].loc, "tss-duplicate",
-                   fmt::format("tfactor is set twice (first at line {})",
-                               states_.tfactor_loc.line));
+      return error(
+          w[0].loc, "tss-duplicate",
+          fmt::format("tfactor is set twice (first at line {})", states_.tfactor_loc.line));
     states_.tfactor = uint32_t(x);
     states_.tfactor_loc = w[0].loc;
   }
@@ -245,8 +252,7 @@ private:
                           n, end_stage));
         return;
       }
-      const bool disabled =
-          !named ? n > 0 : (s.color ? s.color->op == Op::Disable : n > 0);
+      const bool disabled = !named ? n > 0 : (s.color ? s.color->op == Op::Disable : n > 0);
       if (named && !s.color && n > 0) {
         error(s.first, "tss-missing-colorop",
               fmt::format("stage {} has no colorop (Direct3D disables stages after 0 by "

@@ -20,8 +20,8 @@ std::shared_ptr<const tss::Lowered> blur_states(const GlowParams& p, std::string
       std::string why = read.message();
       const std::string head = it->second + ": ";
       if (why.starts_with(head)) why.erase(0, head.size());
-      *error = fmt::format("{}: error: {} (it replaces built-in '{}')", it->second, why,
-                           kDx7BlurStates);
+      *error =
+          fmt::format("{}: error: {} (it replaces built-in '{}')", it->second, why, kDx7BlurStates);
       return nullptr;
     }
     text = std::move(*read);

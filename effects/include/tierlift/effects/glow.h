@@ -108,7 +108,7 @@ struct GlowParams {
 
 struct GlowPlan {
   EffectGraph graph;
-  std::vector<BlurTap> taps;                // one axis, the same for x and y
+  std::vector<BlurTap> taps; // one axis, the same for x and y
   // Tier dx7: the bytes the weights became (taps' order), and what that costs in brightness
   // (quantization_summary); empty for the shader tiers.
   std::vector<uint8_t> weight_bytes;

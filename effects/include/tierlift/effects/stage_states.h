@@ -55,9 +55,9 @@ struct Stage {
 };
 
 struct StageStates {
-  std::vector<Stage> stages;  // index = stage number; stages after the last named are absent
-  uint32_t tfactor = 0;       // D3DRS_TEXTUREFACTOR as 0xAARRGGBB
-  ir::SourceLoc tfactor_loc;  // invalid when not given
+  std::vector<Stage> stages; // index = stage number; stages after the last named are absent
+  uint32_t tfactor = 0;      // D3DRS_TEXTUREFACTOR as 0xAARRGGBB
+  ir::SourceLoc tfactor_loc; // invalid when not given
 };
 
 // The texture stages a tier has: dx7-class hardware blends two textures in one pass.

@@ -97,8 +97,7 @@ public:
         return out;
       }
     }
-    for (uint32_t n = 0; n < out.colour.size(); ++n)
-      out.colour[n] = colour_constant(n);
+    for (uint32_t n = 0; n < out.colour.size(); ++n) out.colour[n] = colour_constant(n);
     for (uint32_t n = 0; n < 8; ++n) {
       auto it = regs_.find({ir::RegFile::TexCrdOut, n});
       if (it == regs_.end()) {

@@ -38,7 +38,7 @@ using ColourConstants = std::array<std::optional<std::array<double, 4>>, 2>;
 
 struct CoordForms {
   uint32_t texcoord_input = 0;
-  ColourConstants colour; // per oD#: set when it is a constant
+  ColourConstants colour;                          // per oD#: set when it is a constant
   std::array<std::optional<CoordAffine>, 8> coord; // per oT#
   std::array<std::string, 8> why_not;              // when coord is empty: the reason
   std::string error;                               // fatal: the listing cannot be evaluated at all
