@@ -109,6 +109,8 @@ TEST(StageStates, BadInputIsAPositionedError) {
       {"tfactor 0x1ffffffff\n", "bad.tss:1:9: error: 0x1ffffffff is out of range"},
       {"stage 0: colorop disable\nstage 1: colorop add current texture\n",
        "bad.tss:2:1: error: stage 1 never runs: stage 0 ends the cascade"},
+      {"stage 99999999999999999999: colorop add texture diffuse\n",
+       "bad.tss:1:7: error: stage 99999999999999999999 is out of range"},
       {"blend one one\n", "bad.tss:1:1: error: 'blend' is not a statement"},
   };
   for (const Case& c : cases) {

@@ -142,7 +142,8 @@ private:
     uint32_t n = 0;
     const std::string& num = w[1].text;
     auto [p, ec] = std::from_chars(num.data(), num.data() + num.size(), n);
-    if (ec != std::errc() || p != num.data() + num.size())
+    const bool digits = ec != std::errc::invalid_argument && p == num.data() + num.size();
+    if (!digits)
       return error(
           w[1].loc, "tss-syntax",
           fmt::format("'{}' is not a stage number; expected 0..{}", num, kD3DMaxStages - 1));
