@@ -110,7 +110,7 @@ TEST_P(SceneErrors, NameTheFieldWithItsPosition) {
 INSTANTIATE_TEST_SUITE_P(
     Fields, SceneErrors,
     ::testing::Values(
-        Bad{"{\n  \"glow\": {\n    \"tier\": \"dx7\"\n  }\n}", "s.json:3:13: error: /glow/tier",
+        Bad{"{\n  \"glow\": {\n    \"tier\": \"dx6\"\n  }\n}", "s.json:3:13: error: /glow/tier",
             "not a tier"},
         Bad{"{\"glow\": {\"downsample\": 0}}", "s.json:1:25: error: /glow/downsample",
             "outside 1..4"},

@@ -41,6 +41,10 @@ std::string quantization_summary(const std::vector<double>& weights, WeightRound
   const double ratio = ideal > 0 ? sum / ideal : 1.0;
   const double both = ratio * ratio;
   const char* way = ratio < 1 ? "darker" : "brighter";
+  if (std::abs(1 - ratio) < 5e-5) // below the 0.01 % the message shows
+    return fmt::format("weight rounding {}: sum of 8-bit weights {}/255 per axis against "
+                       "{:.2f}/255 unquantised: the glow keeps its brightness",
+                       weight_rounding_name(rounding), sum, ideal);
   return fmt::format("weight rounding {}: sum of 8-bit weights {}/255 per axis against {:.2f}/255 "
                      "unquantised: the glow is {:.2f} % {} per axis ({:.2f} % after both axes)",
                      weight_rounding_name(rounding), sum, ideal, std::abs(1 - ratio) * 100, way,
