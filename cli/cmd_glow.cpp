@@ -26,7 +26,8 @@ namespace {
 
 struct GlowFlags {
   std::string scene, image, tier, format, backend = "all", output, gpu, ps1x_max;
-  unsigned downsample = 0; // 0: the scene's
+  std::string weight_rounding; // dx7: "plain" | "error-carry"; empty: the scene's
+  unsigned downsample = 0;     // 0: the scene's
   bool no_half_texel = false, json = false, quiet = false;
   bool explain = false, no_prune = false; // --explain: what pruning left out; --no-prune
   FrontEndOptions listing; // -D, -I, --profile, --skip-validation (its json is unused)
@@ -57,6 +58,8 @@ std::optional<effects::Scene> scene_from_flags(const GlowFlags& f, Report& repor
   }
   effects::GlowParams& p = load.scene->params;
   if (!f.tier.empty()) p.tier = *effects::parse_tier(f.tier); // CLI11 checked the name
+  if (!f.weight_rounding.empty())
+    p.weight_rounding = *effects::parse_weight_rounding(f.weight_rounding); // checked too
   if (f.downsample != 0) p.downsample = f.downsample;
   if (!f.format.empty()) p.format = *img::parse_format(f.format);
   if (f.no_half_texel) p.half_texel = false;
@@ -182,6 +185,11 @@ nlohmann::json summary_json(const effects::Scene& scene, const effects::GlowPlan
       {"ps1x_max", {{"preset", ir::ps1x_max_label(p.ps1x_max)}, {"value", p.ps1x_max}}},
       {"glow", {{"width", plan.glow_width}, {"height", plan.glow_height}}},
       {"taps", plan.taps.size()},
+      {"weight_rounding", p.tier == effects::Tier::Dx7
+                              ? nlohmann::json(effects::weight_rounding_name(p.weight_rounding))
+                              : nlohmann::json(nullptr)},
+      {"weight_bytes", plan.weight_bytes},
+      {"quantization", plan.quantization},
       {"blur_passes_per_axis", plan.blur_passes_per_axis},
       {"passes", plan.graph.passes.size()},
       {"warnings", scene.warnings},
@@ -335,7 +343,8 @@ int run(const GlowFlags& f) {
                  effects::tier_name(params.tier), params.width, params.height,
                  img::format_name(params.format), params.downsample, plan.glow_width,
                  plan.glow_height, plan.taps.size(), plan.blur_passes_per_axis,
-                 params.half_texel ? "on" : "off", ir::ps1x_max_label(params.ps1x_max));
+                 params.half_texel ? "on" : "off", ir::ps1x_max_label(plan.graph.conventions.ps1x_max_value));
+    if (!plan.quantization.empty()) fmt::print("{}\n", plan.quantization);
     for (const GlowWay& w : ways)
       fmt::print("{}: {} passes in {:.1f} ms{}\n", w.name, w.glow.run.passes.size(),
                  w.glow.run.total_ms, w.name == "vulkan" ? fmt::format(" ({})", vk->name()) : "");
@@ -377,8 +386,14 @@ void register_glow_command(CLI::App& app) {
   auto* scene = sub->add_option("--scene", f->scene, "Scene file (JSON, listings/scenes/)");
   sub->add_option("--image", f->image, "PNG with alpha as the scene (default glow parameters)")
       ->excludes(scene);
-  sub->add_option("--tier", f->tier, "dx9 (Listings 1 + 2) | dx8 (Listings 3 + 4)")
-      ->check(CLI::IsMember({"dx9", "dx8"}));
+  sub->add_option("--tier", f->tier,
+                  "dx9 (Listings 1 + 2) | dx8 (Listings 3 + 4) | dx7 (two fixed-function "
+                  "texture stages, 8-bit weights)")
+      ->check(CLI::IsMember({"dx9", "dx8", "dx7"}));
+  sub->add_option("--weight-rounding", f->weight_rounding,
+                  "Tier dx7: how blur weights become 8-bit vertex colours: plain | error-carry "
+                  "(default: the scene's, error-carry when it names none)")
+      ->check(CLI::IsMember({"plain", "error-carry"}));
   sub->add_option("--downsample", f->downsample, "Glow resolution 1/N, N = 1..4")
       ->check(CLI::Range(1u, 4u));
   sub->add_option("--format", f->format,

@@ -7,6 +7,7 @@
 #include "tierlift/asm/parser.h"
 #include "tierlift/asm/printer.h"
 #include "tierlift/asm/validator.h"
+#include "tierlift/effects/stage_states.h"
 #include "tierlift/ir/profile.h"
 #include "tierlift/listings/embedded.h"
 
@@ -29,6 +30,27 @@ void register_listings_command(CLI::App& app) {
     for (const auto& l : listings::embedded_listings()) {
       if (l.path.ends_with(".frag")) continue; // GLSL (glsl/), not assembly: tierlift/glsl reads it
       const std::string path = "listings/" + std::string(l.path);
+      if (path.ends_with(".tss")) { // texture-stage states: validated and lowered
+        std::string error;
+        auto lowered = effects::tss::load_stage_states(std::string(l.text), path, &error);
+        nlohmann::json entry = {{"file", path}, {"valid", lowered.has_value()}};
+        if (!lowered) {
+          if (!report.json()) fmt::print(stderr, "{}", error);
+          if (!report.json()) fmt::print("{}: INVALID\n", path);
+          entries.push_back(std::move(entry));
+          result = kExitInvalid;
+          continue;
+        }
+        entry["profile"] = "tss";
+        if (!opts->quiet) entry["text"] = lowered->vs_text + lowered->ps_text;
+        entries.push_back(std::move(entry));
+        if (report.json()) continue;
+        fmt::print("{}: ok (texture-stage states, {} texture stages; lowered to vs_1_1 + "
+                   "ps_1_1)\n",
+                   path, lowered->texture_stages);
+        if (!opts->quiet) fmt::print("{}{}\n", lowered->vs_text, lowered->ps_text);
+        continue;
+      }
       auto parsed = as::parse_text(std::string(l.text), path);
       bool ok = parsed.program && as::validate(*parsed.program, parsed.diags);
       report.diagnostics(parsed.diags, parsed.sources);

@@ -48,7 +48,7 @@ TEST_F(CliGlow, BadFlagsAreUsageErrors) {
   const fs::path log = dir / "log.txt";
   EXPECT_EQ(run_cli("glow --downsample 5", log), 2) << read(log);
   EXPECT_EQ(run_cli("glow --format rgba4", log), 2) << read(log);
-  EXPECT_EQ(run_cli("glow --tier dx7", log), 2) << read(log);
+  EXPECT_EQ(run_cli("glow --tier dx6", log), 2) << read(log);
   EXPECT_EQ(run_cli("glow --backend gpu", log), 2) << read(log);
   EXPECT_EQ(run_cli("glow --scene a.json --image b.png", log), 2) << read(log);
 }

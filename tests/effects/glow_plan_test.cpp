@@ -352,7 +352,9 @@ TEST(GlowTier, NamesRoundTrip) {
   EXPECT_EQ(tier_name(Tier::Dx8), "dx8");
   EXPECT_EQ(parse_tier("dx8"), Tier::Dx8);
   EXPECT_EQ(parse_tier("dx9"), Tier::Dx9);
-  EXPECT_EQ(parse_tier("dx7"), std::nullopt);
+  EXPECT_EQ(parse_tier("dx7"), Tier::Dx7);
+  EXPECT_EQ(tier_name(Tier::Dx7), "dx7");
+  EXPECT_EQ(parse_tier("dx6"), std::nullopt);
 }
 
 } // namespace

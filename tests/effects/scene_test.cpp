@@ -37,7 +37,8 @@ TEST(Scene, EveryShippedSceneLoadsAndBuilds) {
     ASSERT_TRUE(image) << image.message();
     EXPECT_EQ(image->width, s.scene->params.width);
   }
-  EXPECT_EQ(n, 7u);
+  EXPECT_EQ(n, 9u); // default, dx8, sawtooth, sign, dx7, dx7-plain-rounding, radial-beams,
+                    // stencil-outline, glsl-blur
 }
 
 TEST(Scene, DefaultJsonSaysWhatTheBuiltInDefaultIs) {
@@ -110,7 +111,7 @@ TEST_P(SceneErrors, NameTheFieldWithItsPosition) {
 INSTANTIATE_TEST_SUITE_P(
     Fields, SceneErrors,
     ::testing::Values(
-        Bad{"{\n  \"glow\": {\n    \"tier\": \"dx7\"\n  }\n}", "s.json:3:13: error: /glow/tier",
+        Bad{"{\n  \"glow\": {\n    \"tier\": \"dx6\"\n  }\n}", "s.json:3:13: error: /glow/tier",
             "not a tier"},
         Bad{"{\"glow\": {\"downsample\": 0}}", "s.json:1:25: error: /glow/downsample",
             "outside 1..4"},

@@ -136,12 +136,13 @@ TEST_P(ThreeWay, EveryPairAgreesOnEveryPass) {
 
 std::vector<Case> all_cases() {
   std::vector<Case> out;
-  for (Tier t : {Tier::Dx9, Tier::Dx8})
+  for (Tier t : {Tier::Dx9, Tier::Dx8, Tier::Dx7})
     for (unsigned n : {1u, 2u, 4u})
       for (img::Format f : {img::Format::RGBA8, img::Format::RGBA16F, img::Format::RGBA32F})
         for (bool half : {true, false})
           for (Scene s : {Scene::RandomBinaryAlpha, Scene::RandomAlpha, Scene::Default})
-            out.push_back({t, n, f, half, s});
+            // dx7 shares dx8's helper passes: its own part is the blur, seen at N = 2 and 4.
+            if (t != Tier::Dx7 || n != 1) out.push_back({t, n, f, half, s});
   return out;
 }
 

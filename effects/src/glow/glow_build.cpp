@@ -6,12 +6,18 @@
 namespace tierlift::effects {
 
 std::string_view tier_name(Tier tier) {
-  return tier == Tier::Dx8 ? "dx8" : "dx9";
+  switch (tier) {
+  case Tier::Dx8: return "dx8";
+  case Tier::Dx7: return "dx7";
+  case Tier::Dx9: break;
+  }
+  return "dx9";
 }
 
 std::optional<Tier> parse_tier(std::string_view name) {
   if (name == "dx9") return Tier::Dx9;
   if (name == "dx8") return Tier::Dx8;
+  if (name == "dx7") return Tier::Dx7;
   return std::nullopt;
 }
 
@@ -27,7 +33,12 @@ std::vector<Tier> all_tiers() {
 }
 
 GlowPlan build_glow(const GlowParams& params) {
-  return params.tier == Tier::Dx8 ? build_glow_dx8(params) : build_glow_dx9(params);
+  switch (params.tier) {
+  case Tier::Dx8: return build_glow_dx8(params);
+  case Tier::Dx7: return build_glow_dx7(params);
+  case Tier::Dx9: break;
+  }
+  return build_glow_dx9(params);
 }
 
 } // namespace tierlift::effects

@@ -27,6 +27,7 @@ std::optional<Listings> load_listings(const GlowParams& p, const TierListingPath
       {&l.downsample, paths.downsample_ps}, {&l.composite, paths.composite_ps},
       {&l.blur_vs, paths.blur_vs},          {&l.blur_ps, paths.blur_ps}};
   for (const auto& [slot, path] : wanted) {
+    if (path.empty()) continue; // tier dx7 draws its blur from stage states
     *slot = glow_listing(path, p.listing_files, error, p.listing_options);
     if (!*slot) return std::nullopt;
   }
@@ -113,6 +114,7 @@ public:
   // blur listing's c0.., weights in the pixel listing's c0.. (the article's rule).
   void blur(const std::vector<BlurTap>& taps, bool vertical, std::string_view source,
             std::string_view target, std::vector<PassDesc>& out) const {
+    if (r_.stage_blur) return blur_stages(taps, vertical, source, target, out);
     const double h = p_.half_texel ? 0.5 : 0.0;
     const unsigned per = r_.taps_per_blur_pass;
     const size_t count = (taps.size() + per - 1) / per;
@@ -129,6 +131,36 @@ public:
         d.ps_constants.push_back(splat(w));
       }
       bind(d, 0, source, p_.half_texel ? pass::Filter::Point : pass::Filter::Linear, per);
+      d.blend = i == 0 ? pass::BlendMode::Replace : pass::BlendMode::OneOne;
+      out.push_back(std::move(d));
+    }
+  }
+
+  // Tier dx7: quad i draws taps 2i and 2i + 1 through the lowered stage states; both weights
+  // ride in one D3DCOLOR (rgb = byte of tap 2i, alpha = byte of tap 2i + 1, each byte/255 as
+  // the device reads an 8-bit colour). An odd last quad pads with weight 0 at the centre.
+  void blur_stages(const std::vector<BlurTap>& taps, bool vertical, std::string_view source,
+                   std::string_view target, std::vector<PassDesc>& out) const {
+    const double h = p_.half_texel ? 0.5 : 0.0;
+    std::vector<double> weights;
+    for (const BlurTap& t : taps) weights.push_back(t.weight);
+    const std::vector<uint8_t> bytes = quantize_weights(weights, r_.rounding);
+    const size_t count = (taps.size() + 1) / 2;
+    for (size_t i = 0; i < count; ++i) {
+      PassDesc d = pass(fmt::format("{}.{}", vertical ? "blur_v" : "blur_h", i), r_.stage_blur->vs,
+                        r_.stage_blur->ps, target);
+      d.vs_constants.assign(tss::kSpecularConstant + 1, pass::Vec4{0, 0, 0, 0});
+      std::array<float, 2> w{};
+      for (size_t k = 0; k < 2; ++k) {
+        const size_t t = 2 * i + k;
+        const double off = t < taps.size() ? taps[t].offset : 0.0;
+        w[k] = t < taps.size() ? tss::d3dcolor_channel(bytes[t]) : 0.0f;
+        const double du = vertical ? h : off + h, dv = vertical ? off + h : h;
+        d.vs_constants[k] = {float(du / gw_), float(dv / gh_), 0, 0};
+      }
+      d.vs_constants[tss::kDiffuseConstant] = {w[0], w[0], w[0], w[1]};
+      bind(d, 0, source, p_.half_texel ? pass::Filter::Point : pass::Filter::Linear,
+           r_.stage_blur->texture_stages);
       d.blend = i == 0 ? pass::BlendMode::Replace : pass::BlendMode::OneOne;
       out.push_back(std::move(d));
     }
@@ -236,6 +268,12 @@ GlowPlan build_glow_graph(const GlowParams& p, const TierRecipe& r) {
   b.blur(plan.taps, true, kBlurHTexture, kGlowTexture, g.passes);
   plan.blur_passes_per_axis =
       unsigned((plan.taps.size() + r.taps_per_blur_pass - 1) / r.taps_per_blur_pass);
+  if (r.stage_blur) {
+    std::vector<double> weights;
+    for (const BlurTap& t : plan.taps) weights.push_back(t.weight);
+    plan.weight_bytes = quantize_weights(weights, r.rounding);
+    plan.quantization = quantization_summary(weights, r.rounding);
+  }
   g.passes.push_back(b.composite());
   plan.error = check_graph(g);
   return plan;

@@ -11,6 +11,7 @@
 #include <string_view>
 
 #include "tierlift/effects/glow.h"
+#include "tierlift/effects/stage_states.h"
 
 namespace tierlift::effects::detail {
 
@@ -36,6 +37,11 @@ struct TierRecipe {
   // Intensity above this is an error; why_limit explains it in the message.
   double max_intensity = 0;
   std::string_view why_limit;
+  // Tier dx7: the blur is drawn as quads of these lowered texture-stage states (two taps a
+  // quad: offsets in vs c0/c1, the weights as the D3DCOLOR in vs c8: rgb the first, alpha
+  // the second) instead of listings.blur_vs/blur_ps, which are then not loaded.
+  std::shared_ptr<const tss::Lowered> stage_blur;
+  WeightRounding rounding = WeightRounding::ErrorCarry;
 };
 
 // Checks the parameters every tier shares (downsample, size, intensity ≥ 0 and finite,

@@ -34,6 +34,14 @@ std::vector<std::string> glow_warnings(const GlowParams& params) {
                               sum, std::abs(both - 1) * 100, both < 1 ? "darker" : "brighter",
                               both));
   }
+  // Tier dx7 carries the weights as 8-bit colours: what that costs against the kernel.
+  if (params.tier == Tier::Dx7) {
+    std::string why;
+    const std::vector<BlurTap> taps = sample_blur_profile(params.profile, params.downsample, &why);
+    std::vector<double> weights;
+    for (const BlurTap& t : taps) weights.push_back(t.weight);
+    if (!taps.empty()) out.push_back(quantization_summary(weights, params.weight_rounding));
+  }
   return out;
 }
 

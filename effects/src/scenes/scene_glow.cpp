@@ -11,9 +11,9 @@
 namespace tierlift::effects {
 namespace {
 
-constexpr std::string_view kGlowKeys[] = {"tier",       "downsample", "profile",
-                                          "taps",       "intensity",  "format",
-                                          "half_texel", "listings",   "ps1x_max"};
+constexpr std::string_view kGlowKeys[] = {"tier",      "downsample",     "profile",    "taps",
+                                          "intensity", "format",         "half_texel", "listings",
+                                          "ps1x_max",  "weight_rounding"};
 constexpr std::string_view kProfileKeys[] = {"gaussians", "sawtooth"};
 constexpr std::string_view kGaussianKeys[] = {"sigma", "weight"};
 constexpr std::string_view kSawtoothKeys[] = {"period", "radius", "weight"};
@@ -139,7 +139,7 @@ void read_glow(const Json& g, FieldChecker& c, const std::string& base_dir, Glow
       if (auto tier = parse_tier(*name))
         p.tier = *tier;
       else
-        c.error(at + "/tier", fmt::format("{} is not a tier; expected \"dx9\" or \"dx8\"",
+        c.error(at + "/tier", fmt::format("{} is not a tier; expected \"dx9\", \"dx8\" or \"dx7\"",
                                           FieldChecker::shown(*v)));
     }
   if (const Json* v = member(g, "downsample"))
@@ -157,9 +157,9 @@ void read_glow(const Json& g, FieldChecker& c, const std::string& base_dir, Glow
     if (auto x = c.number(*v, at + "/intensity", kIntensity)) {
       p.intensity = *x;
       // A ps.1.x constant holds at most 1; the dx8 composite reaches 4 with _x4 (glow.h).
-      if (p.tier == Tier::Dx8 && *x > 4)
-        c.error(at + "/intensity",
-                fmt::format("{} is outside 0..4, the range of tier dx8", FieldChecker::shown(*v)));
+      if (p.tier != Tier::Dx9 && *x > 4)
+        c.error(at + "/intensity", fmt::format("{} is outside 0..4, the range of tier {}",
+                                               FieldChecker::shown(*v), tier_name(p.tier)));
     }
   if (const Json* v = member(g, "format"))
     if (auto name = c.string(*v, at + "/format")) {
@@ -174,6 +174,18 @@ void read_glow(const Json& g, FieldChecker& c, const std::string& base_dir, Glow
     if (auto b = c.boolean(*v, at + "/half_texel")) p.half_texel = *b;
   if (const Json* v = member(g, "listings")) read_listings(*v, at + "/listings", base_dir, c, p);
   if (const Json* v = member(g, "ps1x_max")) read_ps1x_max(*v, at + "/ps1x_max", c, p);
+  if (const Json* v = member(g, "weight_rounding"))
+    if (auto name = c.string(*v, at + "/weight_rounding")) {
+      if (auto r = parse_weight_rounding(*name))
+        p.weight_rounding = *r;
+      else
+        c.error(at + "/weight_rounding",
+                fmt::format("{} is not a weight rounding; expected \"plain\" or \"error-carry\"",
+                            FieldChecker::shown(*v)));
+      if (p.tier != Tier::Dx7)
+        c.error(at + "/weight_rounding",
+                "weight_rounding applies to tier dx7 only (the shader tiers keep float weights)");
+    }
 
   // What only the fields together say: the kernel's radius at this downsample factor.
   if (c.failed()) return;

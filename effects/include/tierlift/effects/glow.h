@@ -28,6 +28,15 @@
 //               t# reads texture stage #, so the source is bound to stages 0..3
 //   ps.1.x ranges apply: texture reads lie in [0, 1] (a float scene above 1 reads as 1),
 //   registers and constants clamp to [-1, 1], so the final frame is at most 1 as well.
+// Tier dx7 (no shaders: two fixed-function texture stages, glow_dx7.cpp):
+//   blur        quads of two taps each, drawn with the texture-stage states of
+//               dx7/blur_pair.tss lowered into a vs.1.1 + ps.1.1 pair (stage_states.h); the
+//               two weights travel as one 8-bit D3DCOLOR vertex colour (rgb: the first tap,
+//               alpha: the second), rounded plainly or with Tron 2.0's error carry
+//               (weight_quantize.h); the quads are summed by ONE/ONE blending
+//   extract / downsample / composite  the dx8 tier's ps.1.x helper listings
+//   ps.1.x registers clamp to [-1, 1] (MaxPixelShaderValue 1 whatever the scene says), which
+//   is Direct3D 7's per-stage saturation for the non-negative values of the blur.
 // Blur constants follow the article's rule: tap k of a texture W wide has the offset
 // (k + ½)/W, the half texel added on the CPU (`half_texel`; without it the taps land on texel
 // corners and bilinear filtering averages the neighbours, as on D3D9 hardware); padding taps
@@ -50,6 +59,7 @@
 #include "tierlift/effects/blur_profile.h"
 #include "tierlift/effects/builtin_listing.h"
 #include "tierlift/effects/graph.h"
+#include "tierlift/effects/weight_quantize.h"
 #include "tierlift/ir/ps1x_range.h"
 
 namespace tierlift::effects {
@@ -63,11 +73,15 @@ inline constexpr std::string_view kFinalTexture = "final";
 
 inline constexpr unsigned kTapsPerBlurPassDx9 = 8; // Listing 1's eight oT#
 inline constexpr unsigned kTapsPerBlurPassDx8 = 4; // Listing 3's four oT#
+inline constexpr unsigned kTapsPerBlurPassDx7 = 2; // two texture stages
+// The built-in stage states of a dx7 blur quad (a scene's "listings" may replace it).
+inline constexpr std::string_view kDx7BlurStates = "dx7/blur_pair.tss";
 
 // dx9: vs.2.0 + ps.2.0, Listings 1 + 2, 8 taps a pass. dx8: vs.1.1 + ps.1.3, Listings 3 + 4,
 // 4 taps a pass, every helper pass in vs.1.1 / ps.1.x as well (see the top of this file).
-enum class Tier { Dx9, Dx8 };
-std::string_view tier_name(Tier tier);                 // "dx9", "dx8"
+// dx7: two fixed-function texture stages, 2 taps a quad, 8-bit weights (see above).
+enum class Tier { Dx9, Dx8, Dx7 };
+std::string_view tier_name(Tier tier);                 // "dx9", "dx8", "dx7"
 std::optional<Tier> parse_tier(std::string_view name); // nullopt for anything else
 // Every tier, in declaration order: the enum's values from 0 on for as long as tier_name and
 // parse_tier round-trip them, so a tier added to the enum, tier_name and parse_tier joins
@@ -92,11 +106,17 @@ struct GlowParams {
   // ps_1_x register range of every pass (tier dx8): the preset d3d9 unless a scene or
   // --ps1x-max names another (ir/ps1x_range.h).
   float ps1x_max = ir::default_ps1x_max();
+  // Tier dx7: how the blur weights become 8-bit vertex colours (weight_quantize.h).
+  WeightRounding weight_rounding = WeightRounding::ErrorCarry;
 };
 
 struct GlowPlan {
   EffectGraph graph;
-  std::vector<BlurTap> taps;                // one axis, the same for x and y
+  std::vector<BlurTap> taps; // one axis, the same for x and y
+  // Tier dx7: the bytes the weights became (taps' order), and what that costs in brightness
+  // (quantization_summary); empty for the shader tiers.
+  std::vector<uint8_t> weight_bytes;
+  std::string quantization;
   uint32_t glow_width = 0, glow_height = 0; // ceil(size / downsample)
   unsigned blur_passes_per_axis = 0;
   std::string error;                 // non-empty: no graph
@@ -110,6 +130,7 @@ struct GlowPlan {
 GlowPlan build_glow(const GlowParams& params);
 GlowPlan build_glow_dx9(const GlowParams& params);
 GlowPlan build_glow_dx8(const GlowParams& params);
+GlowPlan build_glow_dx7(const GlowParams& params);
 
 // The per-axis read positions that average N texels (position in texels from the start of
 // the block, where texel k spans [k, k + 1]: the centres k + ½) and their weights (1/N).

@@ -97,6 +97,7 @@ public:
         return out;
       }
     }
+    for (uint32_t n = 0; n < out.colour.size(); ++n) out.colour[n] = colour_constant(n);
     for (uint32_t n = 0; n < 8; ++n) {
       auto it = regs_.find({ir::RegFile::TexCrdOut, n});
       if (it == regs_.end()) {
@@ -133,6 +134,22 @@ public:
   }
 
 private:
+  // oD# when every component is the same fp32 value at the quad's four corners (what the
+  // devices then interpolate), saturated as the pixel stage reads it; nullopt otherwise.
+  std::optional<std::array<double, 4>> colour_constant(uint32_t n) const {
+    auto it = regs_.find({ir::RegFile::AttrOut, n});
+    if (it == regs_.end()) return std::nullopt;
+    std::array<double, 4> v{};
+    for (int c = 0; c < 4; ++c) {
+      const Affine& a = it->second[c];
+      if (!a.is_constant()) return std::nullopt;
+      for (int q = 1; q < 4; ++q)
+        if (a.at[q] != a.at[0]) return std::nullopt;
+      v[c] = std::clamp(double(a.at[0]), 0.0, 1.0);
+    }
+    return v;
+  }
+
   Affine read(const ir::SrcOperand& s, int comp) {
     int c = ir::swizzle_component(s.swizzle, comp);
     Affine a;

@@ -65,7 +65,7 @@ TapExtraction extract_taps(const ir::Program& vs, const std::vector<Vec4>& vs_co
     out.error = "vertex listing: " + coords.error;
     return out;
   }
-  detail::SumForm sum = detail::evaluate_sum(ps, ps_consts);
+  detail::SumForm sum = detail::evaluate_sum(ps, ps_consts, coords.colour);
   if (!sum.error.empty()) {
     out.error = "pixel listing: " + sum.error;
     return out;

@@ -32,8 +32,13 @@ struct CoordAffine {
   std::array<double, 2> scale{1, 1}, offset{};  // .xy
   std::array<std::array<float, 2>, 4> corner{}; // .xy at the quad's corners, in fp32 (Tap)
 };
+// A vertex colour oD0/oD1 that is the same constant at every vertex (a full-screen quad's
+// D3DCOLOR), as the pixel stage reads it: saturated to [0, 1] (NUMERICS.md rule 26).
+using ColourConstants = std::array<std::optional<std::array<double, 4>>, 2>;
+
 struct CoordForms {
   uint32_t texcoord_input = 0;
+  ColourConstants colour;                          // per oD#: set when it is a constant
   std::array<std::optional<CoordAffine>, 8> coord; // per oT#
   std::array<std::string, 8> why_not;              // when coord is empty: the reason
   std::string error;                               // fatal: the listing cannot be evaluated at all
@@ -46,7 +51,10 @@ struct SumForm {
   std::vector<std::string> notes;
   std::string error;
 };
-SumForm evaluate_sum(const ir::Program& ps, const std::vector<Vec4>& consts);
+// v0/v1 read `colours`' constants where set (lowered fixed-function stages carry their
+// weights as vertex colour); any other v# read makes the form opaque.
+SumForm evaluate_sum(const ir::Program& ps, const std::vector<Vec4>& consts,
+                     const ColourConstants& colours = {});
 
 // Fills each tap's offset and scale from its oT#'s form; an error when that oT# has none.
 std::string place_taps(const CoordForms& coords, std::vector<Tap>& taps);

@@ -62,8 +62,8 @@ Form product(const Form& a, const Form& b, const ir::SourceLoc& loc) {
 
 class Evaluator {
 public:
-  Evaluator(const ir::Program& p, const std::vector<Vec4>& consts)
-      : p_(p), defs_(ir::fold_defs(p)), consts_(consts) {}
+  Evaluator(const ir::Program& p, const std::vector<Vec4>& consts, const ColourConstants& colours)
+      : p_(p), defs_(ir::fold_defs(p)), consts_(consts), colours_(colours) {}
 
   SumForm run() {
     SumForm out;
@@ -134,6 +134,14 @@ private:
       f.k = constant_value(defs_, consts_, s.index, clamp, &clamped_)[c];
       break;
     }
+    case ir::RegFile::Input:
+      if (s.index < colours_.size() && colours_[s.index]) {
+        f.k = (*colours_[s.index])[c];
+        break;
+      }
+      return make_opaque(fmt::format("{}: reads v{}, a vertex colour that is not one constant "
+                                     "over the quad",
+                                     where(s.loc), s.index));
     case ir::RegFile::Temp:
     case ir::RegFile::Texture: {
       auto it = regs_.find({s.file, s.index});
@@ -197,6 +205,7 @@ private:
   const ir::Program& p_;
   const ir::FoldedDefs defs_; // the listing's defs, folded once
   const std::vector<Vec4>& consts_;
+  const ColourConstants& colours_;
   bool clamped_ = false;
   std::vector<SampleKey> order_;
   std::map<std::pair<ir::RegFile, uint32_t>, Reg> regs_;
@@ -237,8 +246,9 @@ std::optional<SampleKey> sample_key(const ir::Instruction& in, std::string* erro
   }
 }
 
-SumForm evaluate_sum(const ir::Program& ps, const std::vector<Vec4>& consts) {
-  return Evaluator(ps, consts).run();
+SumForm evaluate_sum(const ir::Program& ps, const std::vector<Vec4>& consts,
+                     const ColourConstants& colours) {
+  return Evaluator(ps, consts, colours).run();
 }
 
 } // namespace tierlift::analytic::detail

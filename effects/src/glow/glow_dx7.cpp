@@ -1,0 +1,81 @@
+// The dx7 glow tier (glow.h): no shaders. The blur is a stack of full-screen quads drawn
+// with two fixed-function texture stages (dx7/blur_pair.tss, or the file a scene names in
+// its place), lowered into the IR the other tiers use, so every device runs it as it runs a
+// listing. The helper passes are the dx8 tier's ps.1.x listings. The graph itself is built
+// by glow_common.cpp.
+#include <fmt/format.h>
+
+#include "glow_common.h"
+#include "tierlift/io/bounded_read.h"
+#include "tierlift/listings/embedded.h"
+
+namespace tierlift::effects {
+namespace {
+
+std::shared_ptr<const tss::Lowered> blur_states(const GlowParams& p, std::string* error) {
+  std::string text, name;
+  if (auto it = p.listing_files.find(kDx7BlurStates); it != p.listing_files.end()) {
+    ir::Result<std::string> read = io::read_bounded(it->second, io::kListingCap);
+    if (!read) {
+      std::string why = read.message();
+      const std::string head = it->second + ": ";
+      if (why.starts_with(head)) why.erase(0, head.size());
+      *error =
+          fmt::format("{}: error: {} (it replaces built-in '{}')", it->second, why, kDx7BlurStates);
+      return nullptr;
+    }
+    text = std::move(*read);
+    if (text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);
+    name = it->second;
+  } else {
+    std::optional<std::string_view> builtin = listings::find_embedded(kDx7BlurStates);
+    if (!builtin) {
+      *error = fmt::format("no built-in stage states '{}'", kDx7BlurStates);
+      return nullptr;
+    }
+    text = std::string(*builtin);
+    name = std::string(kDx7BlurStates);
+  }
+  std::optional<tss::Lowered> lowered = tss::load_stage_states(std::move(text), name, error);
+  if (!lowered) return nullptr;
+  if (lowered->texture_stages == 0) {
+    *error = fmt::format("{}: error: no stage reads its texture: a blur quad would sample "
+                         "nothing\n",
+                         name);
+    return nullptr;
+  }
+  return std::make_shared<const tss::Lowered>(std::move(*lowered));
+}
+
+} // namespace
+
+GlowPlan build_glow_dx7(const GlowParams& params) {
+  GlowPlan failed;
+  std::shared_ptr<const tss::Lowered> states = blur_states(params, &failed.error);
+  if (!states) return failed;
+  detail::TierRecipe r;
+  r.tier = "dx7";
+  const bool above_one = params.intensity > 1;
+  // Only the helper listings: the blur comes from the stage states.
+  r.listings = {"glow/quad4_coords_vs11.vsh",
+                "glow/extract_sources_ps11.psh",
+                "glow/downsample4_ps13.psh",
+                above_one ? "glow/composite_add_x4_ps13.psh" : "glow/composite_add_ps13.psh",
+                "",
+                ""};
+  r.taps_per_blur_pass = kTapsPerBlurPassDx7;
+  r.one_stage_per_read = true;
+  r.constants_clamp_to_one = true; // an 8-bit colour holds at most 1 as well
+  r.composite_divisor = above_one ? 4 : 1;
+  r.max_intensity = 4;
+  r.why_limit = "the helper passes are the dx8 tier's ps.1.x listings";
+  r.stage_blur = std::move(states);
+  r.rounding = params.weight_rounding;
+  // Direct3D 7 saturates each stage's result to [0, 1]: the ps.1.x clamp at 1 is that for
+  // the blur's non-negative values (glow.h).
+  GlowParams p = params;
+  p.ps1x_max = 1;
+  return detail::build_glow_graph(p, r);
+}
+
+} // namespace tierlift::effects
