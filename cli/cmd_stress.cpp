@@ -117,10 +117,12 @@ int run(const StressFlags& f) {
   if (!f.output.empty()) {
     std::error_code ec;
     std::filesystem::create_directories(f.output, ec);
-    const std::string md = fmt::format("# tierlift report --stress\n\nVulkan device: {}; {:.1f} s\n\n{}",
-                                       vk->name(), seconds, effects::stress_table(rows, true));
+    const std::string md =
+        fmt::format("# tierlift report --stress\n\nVulkan device: {}; {:.1f} s\n\n{}", vk->name(),
+                    seconds, effects::stress_table(rows, true));
     for (const auto& [name, text] :
-         {std::pair<std::string, std::string>{"stress.json", j.dump(2) + "\n"}, {"stress.md", md}}) {
+         {std::pair<std::string, std::string>{"stress.json", j.dump(2) + "\n"},
+          {"stress.md", md}}) {
       const std::string path = (std::filesystem::path(f.output) / name).string();
       if (std::string err = write_output(path, text); !err.empty()) {
         report.error("io", err, path);

@@ -107,15 +107,17 @@ TEST(StressJudge, CatalogueCoversTheIssuesRegimes) {
 TEST_F(Stress, HdrCentreIsVTimesTheCentreTapSquared) {
   const double w0 = 1 / (1 + 2 * std::exp(-0.5) + 2 * std::exp(-2.0) + 2 * std::exp(-4.5));
   for (const char* id : {"hdr.6e4.rgba32f", "hdr.6e4.rgba16f"}) {
-    const StressRow& r = run(id).front();
+    const StressRow r = run(id).front();
     EXPECT_NEAR(r.expected, 6e4 * w0 * w0, 1e-9 * r.expected) << id;
-    for (const auto& m : r.measured) EXPECT_NEAR(m.value, 6e4 * w0 * w0, 6e4 * w0 * w0 * 1.2e-3);
+    // Two half stores toward zero lose at most 2^-10 each.
+    for (const auto& m : r.measured) EXPECT_NEAR(m.value, 6e4 * w0 * w0, 6e4 * w0 * w0 * 2.2e-3);
   }
 }
 
 TEST_F(Stress, OverflowStoresInfAndSpreadsOverTheFootprint) {
   const std::vector<StressRow> rows = run("hdr.overflow.rgba16f");
-  for (const auto& m : rows.at(0).measured) EXPECT_EQ(m.value, std::numeric_limits<double>::infinity());
+  for (const auto& m : rows.at(0).measured)
+    EXPECT_EQ(m.value, std::numeric_limits<double>::infinity());
   for (const auto& m : row(rows, "hdr.overflow.rgba16f.spread").measured)
     EXPECT_EQ(m.value, 7 * 7) << m.way; // σ 1: R = ceil(3) = 3
 }
@@ -128,24 +130,32 @@ TEST_F(Stress, NonFiniteTexelsSpreadOverTheFootprintOnly) {
 }
 
 TEST_F(Stress, Denormals) {
-  const StressRow& f32 = run("denormal.rgba32f").front();
-  EXPECT_EQ(value_of(f32, "cpu"), double(1e-39f));
+  // lavapipe flushes fp32 denormals, and the interpreter with it; the analytic model keeps them.
+  const StressRow f32 = run("denormal.rgba32f").front();
+  EXPECT_EQ(value_of(f32, "cpu"), 0);
+  EXPECT_EQ(value_of(f32, "vulkan"), 0);
   EXPECT_EQ(value_of(f32, "analytic"), double(1e-39f));
-  const double vk = value_of(f32, "vulkan");
-  EXPECT_TRUE(vk == 0 || vk == double(1e-39f)) << vk;
-  const StressRow& f16 = run("denormal.rgba16f").front();
+  const StressRow f16 = run("denormal.rgba16f").front();
   for (const auto& m : f16.measured) EXPECT_EQ(m.value, 168 * std::ldexp(1.0, -24)) << m.way;
 }
 
 TEST_F(Stress, SigmaAtBothEnds) {
   EXPECT_EQ(run("sigma.tiny").front().expected, 0);
-  // 2049 taps of about 1/2049 each, 8 a pass: 0.5 × 8/2049 × 255 = 0.498 of a step, so in
-  // RGBA8 every ONE/ONE pass rounds its addition away and the glow of 0.5 is 0.
-  const StressRow& r8 = run("sigma.limit.rgba8").front();
+  // 2049 taps of exp(−k²/2·4096²), |k| ≤ 1024, 8 a pass; the scene 0.25 stores as 64/255 in
+  // RGBA8, so a pass adds 64·Σ(its weights) ≈ 0.2525 of a step: every ONE/ONE store rounds
+  // it away, and the glow of 0.25 is 0.
+  double sum = 0;
+  for (int k = -1024; k <= 1024; ++k) sum += std::exp(-double(k) * k / (2.0 * 4096 * 4096));
+  EXPECT_LT(64 * 8 / sum, 0.5);
+  const StressRow r8 = run("sigma.limit.rgba8").front();
   EXPECT_EQ(r8.expected, 0);
   for (const auto& m : r8.measured) EXPECT_EQ(m.value, 0) << m.way;
-  const StressRow& r16 = run("sigma.limit.rgba16f").front();
-  for (const auto& m : r16.measured) EXPECT_NEAR(m.value, 0.5, 257 * std::ldexp(1.0, -11));
+  // RGBA16F: 514 stores toward zero, each losing less than a step of 2^-12 below 0.25.
+  const StressRow r16 = run("sigma.limit.rgba16f").front();
+  for (const auto& m : r16.measured) {
+    EXPECT_LE(m.value, 0.25);
+    EXPECT_GE(m.value, 0.25 - 514 * std::ldexp(1.0, -12));
+  }
 }
 
 TEST_F(Stress, DownsampleEdgesAndSaturation) {
@@ -155,12 +165,18 @@ TEST_F(Stress, DownsampleEdgesAndSaturation) {
   EXPECT_EQ(row(d, "downsample.1x7.d3.edge").expected, 1.0);
   EXPECT_EQ(row(d, "downsample.7x5.d2.corner").expected, 1.0);
   for (const auto& m : run("intensity.1000.rgba8").front().measured) EXPECT_EQ(m.value, 1.0);
-  for (const auto& m : run("intensity.1000.rgba16f").front().measured) EXPECT_EQ(m.value, 250.25);
+  // RGBA16F: 0.25 + 1000·0.25 = 250.25, a half float; the stores round toward zero, so a
+  // glow a hair below 0.25 gives the half below, 250.125 (steps of 2^-3 there).
+  for (const auto& m : run("intensity.1000.rgba16f").front().measured) {
+    EXPECT_LE(m.value, 250.25);
+    EXPECT_GE(m.value, 250.125);
+  }
 }
 
 TEST_F(Stress, WeightsThatMissTheirTotal) {
   const std::vector<StressRow> w = run("weights");
-  for (const auto& m : row(w, "weights.glsl-0.98").measured) EXPECT_NEAR(m.value, 0.98 * 0.98, 1e-5);
+  for (const auto& m : row(w, "weights.glsl-0.98").measured)
+    EXPECT_NEAR(m.value, 0.98 * 0.98, 1e-5);
   // σ 2, nine taps, each rounded to k/255: the sum of those, squared.
   double g[9], sum = 0, q = 0;
   for (int k = -4; k <= 4; ++k) sum += g[k + 4] = std::exp(-k * k / 8.0);

@@ -7,13 +7,15 @@
 #include <fmt/format.h>
 
 #include "tierlift/effects/glow_run.h"
+#include "tierlift/rounding/rounding.h"
 
 namespace tierlift::effects {
 namespace {
 
 // NaN matches NaN, an infinity only itself, finite values within the tolerance.
 bool within(double measured, double expected, double tolerance) {
-  if (std::isnan(expected) || std::isnan(measured)) return std::isnan(expected) && std::isnan(measured);
+  if (std::isnan(expected) || std::isnan(measured))
+    return std::isnan(expected) && std::isnan(measured);
   if (std::isinf(expected) || std::isinf(measured)) return measured == expected;
   return std::fabs(measured - expected) <= tolerance;
 }
@@ -52,6 +54,12 @@ std::vector<WayImages> run_on_ways(const GlowPlan& plan, const img::Image& scene
     out.push_back({way, std::move(run.images), run.run.ok ? "" : run.run.error});
   }
   return out;
+}
+
+double device_store(img::Format f, double v) {
+  const float x = float(v);
+  if (f == img::Format::RGBA16F) return rounding::half_toward_zero(double(x));
+  return img::quantize(f, x);
 }
 
 img::Image uniform_scene(uint32_t w, uint32_t h, float v, float a) {

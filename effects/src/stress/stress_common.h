@@ -24,6 +24,11 @@ struct WayImages {
 std::vector<WayImages> run_on_ways(const GlowPlan& plan, const img::Image& scene,
                                    const StressOptions& options);
 
+// What a device stores for an fp32 value `v` in format f: RGBA8 rounds to nearest of 255
+// steps (ties aside), RGBA16F rounds toward zero as lavapipe does (and the interpreter and
+// the analytic model with it: rounding.h), RGBA32F keeps the float.
+double device_store(img::Format f, double v);
+
 // A w×h RGBA32F scene of colour (v, v, v) with alpha a everywhere.
 img::Image uniform_scene(uint32_t w, uint32_t h, float v, float a);
 

@@ -45,7 +45,8 @@ FeedbackGraph feedback_graph(Format f, double g) {
     return out;
   }
   EffectGraph& gr = out.graph;
-  for (const char* name : {"src", "acc", "tmp"}) gr.textures.push_back({name, 1, 1, f, name == std::string("src")});
+  for (const char* name : {"src", "acc", "tmp"})
+    gr.textures.push_back({name, 1, 1, f, name == std::string("src")});
   auto pass = [&](std::string name, std::string from, std::string to, double weight,
                   pass::BlendMode blend) {
     PassDesc d;
@@ -74,8 +75,8 @@ FeedbackGraph feedback_graph(Format f, double g) {
 
 // One frame of the recurrence in fp32, each store by the format's rule.
 double step(Format f, double g, double x, bool source) {
-  const float decayed = img::quantize(f, float(g) * float(x));
-  return source ? img::quantize(f, decayed + img::quantize(f, float(kSource))) : decayed;
+  const double decayed = device_store(f, float(g) * float(x));
+  return source ? device_store(f, float(decayed) + float(device_store(f, kSource))) : decayed;
 }
 
 struct WayFeedback {
@@ -89,7 +90,7 @@ WayFeedback run_way(PassDevice& device, const EffectGraph& graph, Format f, doub
   WayFeedback out;
   out.way = device.name();
   img::Image src(1, 1, f);
-  for (float& c : src.rgba) c = img::quantize(f, float(kSource));
+  for (float& c : src.rgba) c = float(device_store(f, kSource));
   ImageMap inputs{{"src", src}};
   auto fail = [&](std::string e) {
     out.error = std::move(e);
@@ -151,9 +152,11 @@ std::vector<StressRow> feedback(const StressOptions& o, Format f, double g) {
   double x = 0, before = 0;
   for (unsigned i = 0; i < n; ++i) before = x, x = step(f, g, x, true);
   const double steady = x;
-  const double s = img::quantize(f, float(kSource));
+  const double s = device_store(f, kSource);
   const double ideal = g < 1 ? s / (1 - g) : g == 1 ? n * s : s * (std::pow(g, n) - 1) / (g - 1);
-  const double rel = f == Format::RGBA8 ? 0 : f == Format::RGBA16F ? 4 * std::ldexp(1.0, -11) : 1e-5;
+  const double rel = f == Format::RGBA8     ? 0
+                     : f == Format::RGBA16F ? 4 * std::ldexp(1.0, -10)
+                                            : 1e-5;
   const bool stable = g < 1 && std::isfinite(steady) && steady == before;
 
   std::vector<StressRow> rows;
@@ -167,9 +170,9 @@ std::vector<StressRow> feedback(const StressOptions& o, Format f, double g) {
   ss.tolerance = f == Format::RGBA8 ? 1.0 / 255 : rel * std::fabs(steady);
   ss.has_ideal = true;
   ss.ideal = ideal;
-  ss.bound = g < 1 ? "recurrence x' = Q(Q(g·x) + s); ideal s/(1−g)"
-                   : g == 1 ? "recurrence; ideal n·s (grows without bound)"
-                            : "recurrence; ideal s·(g^n − 1)/(g − 1) (geometric growth)";
+  ss.bound = g < 1    ? "recurrence x' = Q(Q(g·x) + s); ideal s/(1−g)"
+             : g == 1 ? "recurrence; ideal n·s (grows without bound)"
+                      : "recurrence; ideal s·(g^n − 1)/(g − 1) (geometric growth)";
   ss.note = stable ? "stable" : g < 1 ? "not settled" : "unstable";
   if (f == Format::RGBA8 && g < 1)
     ss.note += fmt::format(": rise stops at {}/255, ideal {:.4g}/255", std::lround(steady * 255),
@@ -217,8 +220,8 @@ std::vector<StressRow> feedback(const StressOptions& o, Format f, double g) {
     st.has_ideal = true;
     st.ideal = std::ceil(0.5 / (1 - g)) - 1; // the largest k with k − g·k < ½
     st.bound = "largest k with round(g·k) = k: ceil(0.5/(1−g)) − 1 (ties aside)";
-    st.note = st.expected > 0 ? fmt::format("never decays below {}/255", st.expected)
-                              : "decays to 0";
+    st.note =
+        st.expected > 0 ? fmt::format("never decays below {}/255", st.expected) : "decays to 0";
     st.error = error;
     for (const WayFeedback& w : ways)
       if (w.error.empty()) st.measured.push_back({w.way, std::round(w.stall * 255), {}});

@@ -35,9 +35,9 @@ struct StressRow {
   // Ways whose documented behaviour differs from `expected` (lavapipe's denormal flush):
   // either value passes for them.
   std::map<std::string, double, std::less<>> also_expected;
-  std::string bound;       // where expected and tolerance come from
-  double ideal = 0;        // the value with no rounding at all (for the drift column)
-  bool has_ideal = false;  // `ideal` is meaningful for this row
+  std::string bound;      // where expected and tolerance come from
+  double ideal = 0;       // the value with no rounding at all (for the drift column)
+  bool has_ideal = false; // `ideal` is meaningful for this row
   std::vector<StressMeasure> measured;
   std::string note;        // what the row shows (e.g. "RGBA8: the decay stalls at 49/255")
   std::string error;       // a way failed to run: verdict ERROR
