@@ -7,6 +7,7 @@
 
 #include "../vulkan/vk_test_util.h"
 #include "tierlift/effects/analytic_device.h"
+#include "tierlift/effects/scene.h"
 #include "tierlift/effects/stress.h"
 
 namespace {
@@ -199,6 +200,31 @@ TEST_F(Stress, FeedbackSteadyStateDecayAndStall) {
   const std::vector<StressRow> up = run("feedback.g1.01.rgba32f");
   for (const auto& m : up.front().measured)
     EXPECT_NEAR(m.value, s * (std::pow(1.01, 200) - 1) / 0.01, 1e-3);
+}
+
+} // namespace
+
+namespace {
+
+bool mentions(const std::vector<std::string>& lines, const std::string& what) {
+  for (const std::string& l : lines)
+    if (l.find(what) != std::string::npos) return true;
+  return false;
+}
+
+TEST(StressWarnings, GlowWarnsOfTheRgba8Regimes) {
+  effects::GlowParams p; // the default scene: 4 blur passes an axis, intensity 1, rgba32f
+  EXPECT_FALSE(mentions(effects::glow_warnings(p), "rgba8"));
+  p.format = img::Format::RGBA8;
+  EXPECT_FALSE(mentions(effects::glow_warnings(p), "rgba8")) << "4 passes, intensity 1";
+  p.profile.terms = {{4096, 1}};
+  p.profile.max_taps = 2049; // 2049 taps: 257 passes an axis
+  EXPECT_TRUE(mentions(effects::glow_warnings(p), "rgba8 with 257 blur passes per axis"));
+  p.profile = effects::default_blur_profile();
+  p.intensity = 1000;
+  EXPECT_TRUE(mentions(effects::glow_warnings(p), "intensity 1000 in rgba8"));
+  p.format = img::Format::RGBA16F;
+  EXPECT_FALSE(mentions(effects::glow_warnings(p), "saturates"));
 }
 
 } // namespace
