@@ -218,10 +218,12 @@ std::vector<StressRow> feedback(const StressOptions& o, Format f, double g) {
     st.expected = std::round(stall * 255);
     st.tolerance = 1;
     st.has_ideal = true;
-    st.ideal = std::ceil(0.5 / (1 - g)) - 1; // the largest k with k − g·k < ½
+    // The largest k with k − g·k < ½ (1e-9: 0.5/(1 − 0.9) is 5 plus a rounding error).
+    st.ideal = std::ceil(0.5 / (1 - g) - 1e-9) - 1;
     st.bound = "largest k with round(g·k) = k: ceil(0.5/(1−g)) − 1 (ties aside)";
-    st.note =
-        st.expected > 0 ? fmt::format("never decays below {}/255", st.expected) : "decays to 0";
+    // What the devices did (the recurrence's tie may go the other way: ± 1 step).
+    const double seen = ways.empty() ? st.expected : std::round(ways.front().stall * 255);
+    st.note = seen > 0 ? fmt::format("never decays below {}/255", seen) : "decays to 0";
     st.error = error;
     for (const WayFeedback& w : ways)
       if (w.error.empty()) st.measured.push_back({w.way, std::round(w.stall * 255), {}});
