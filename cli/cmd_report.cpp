@@ -8,6 +8,7 @@
 #include <sstream>
 #include <unistd.h>
 
+#include "cmd_stress.h"
 #include "commands.h"
 #include "report.h"
 #include "tierlift/effects/report_files.h"
@@ -213,7 +214,21 @@ void register_report_command(CLI::App& app) {
   sub->add_option("--gpu", f->gpu, "Vulkan device name filter (default: lavapipe)");
   sub->add_flag("--json", f->json, "Print one JSON document on standard output (no progress)");
   sub->add_flag("-q,--quiet", f->quiet, "No progress lines");
-  set_action(sub, [f] { return run(*f); });
+  auto stress = std::make_shared<StressFlags>();
+  add_stress_flags(sub, *stress);
+  set_action(sub, [f, stress] {
+    if (!stress->stress) return run(*f);
+    if (!f->scene.empty() || !f->image.empty() || f->quick) {
+      fmt::print(stderr, "tierlift report: error: --stress runs its own catalogue of scenes; "
+                         "drop --scene, --image and --quick\n");
+      return kExitUsage;
+    }
+    stress->output = f->output;
+    stress->json = f->json;
+    stress->quiet = f->quiet;
+    stress->gpu = f->gpu;
+    return run_stress(*stress);
+  });
 }
 
 } // namespace tierlift::cli

@@ -26,6 +26,6 @@ void register_listings_command(CLI::App& app);
 void register_run_command(CLI::App& app);
 void register_spirv_command(CLI::App& app);
 void register_glow_command(CLI::App& app);
-void register_report_command(CLI::App& app);
+void register_report_command(CLI::App& app); // report, report --stress
 
 } // namespace tierlift::cli

@@ -42,6 +42,28 @@ std::vector<std::string> glow_warnings(const GlowParams& params) {
     for (const BlurTap& t : taps) weights.push_back(t.weight);
     if (!taps.empty()) out.push_back(quantization_summary(weights, params.weight_rounding));
   }
+  // The stress regimes (docs/stress.md) a scene's parameters alone reveal.
+  if (params.format == img::Format::RGBA8) {
+    // Each ONE/ONE blur pass stores its running sum in 8 bits, moving it by up to half a step:
+    // P passes an axis drift by up to P/255 (sigma.limit.rgba8: a glow of 0.25 comes out 0).
+    std::string why;
+    const size_t taps = sample_blur_profile(params.profile, params.downsample, &why).size();
+    const unsigned per = params.tier == Tier::Dx8   ? kTapsPerBlurPassDx8
+                         : params.tier == Tier::Dx7 ? kTapsPerBlurPassDx7
+                                                    : kTapsPerBlurPassDx9;
+    const size_t passes = (taps + per - 1) / per;
+    if (passes > 4)
+      out.push_back(fmt::format("rgba8 with {} blur passes per axis: each ONE/ONE pass rounds "
+                                "its sum to 1/255, a drift of up to {:.3g} from the ideal glow; "
+                                "use rgba16f, fewer taps (taps) or a larger downsample",
+                                passes, double(passes) / 255));
+    // A glow of 1/intensity already saturates the frame to 1 (intensity.1000.rgba8).
+    if (params.intensity > 4)
+      out.push_back(fmt::format("intensity {:g} in rgba8: any glow above {:.3g} saturates the "
+                                "frame to 1 and the halo's shape is lost; use rgba16f or "
+                                "rgba32f, or a lower intensity",
+                                params.intensity, 1 / params.intensity));
+  }
   return out;
 }
 

@@ -231,7 +231,9 @@ bool store_settled(img::Image& out, const LinearPassInput& in, uint32_t i, uint3
       e[c] += detail::kFp32Unit * (std::fabs(v[c]) + e[c]);
     }
     const float lo = half_toward_zero_model(v[c] - e[c]), hi = half_toward_zero_model(v[c] + e[c]);
-    if (lo == hi || std::isnan(v[c])) { // toward zero is monotone: every value between agrees
+    // ±inf: an infinite double sum means an infinite input, which the fp32 sum holds too
+    // (its error bound is infinite as well, so lo and hi say nothing).
+    if (lo == hi || std::isnan(v[c]) || std::isinf(v[c])) { // toward zero is monotone
       p[c] = half_toward_zero_model(v[c]);
     } else {
       if (!have) x = fp32(), have = true;

@@ -1,0 +1,116 @@
+// Stress cases with non-finite and denormal sources. D3D9 hardware (and tierlift's three
+// ways, docs/d3d9-rules.md §8.3) multiply 0 × ∞ and 0 × NaN to +0, so a special texel
+// spreads over exactly the taps that reach it with a non-zero weight: the kernel's
+// (2R+1)² footprint, and the zero padding taps of a blur pass add nothing.
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "stress_common.h"
+
+namespace tierlift::effects::stress {
+namespace {
+
+using img::Format;
+
+// NaN, +inf and −inf, one texel each, 9 texels apart in a 27×9 RGBA32F scene, σ 1 (R = 3):
+// three 7×7 footprints that do not touch. One row per kind: how many glow texels hold it,
+// and where (the masks must be equal on every way).
+std::vector<StressRow> non_finite(const StressOptions& o) {
+  constexpr uint32_t w = 27, h = 9;
+  GlowParams p = small_params(w, h, 1, Format::RGBA32F, 1.0);
+  const GlowPlan plan = build_glow(p);
+  img::Image scene = uniform_scene(w, h, 0, 0);
+  const float kinds[3] = {std::numeric_limits<float>::quiet_NaN(),
+                          std::numeric_limits<float>::infinity(),
+                          -std::numeric_limits<float>::infinity()};
+  for (int k = 0; k < 3; ++k) {
+    float* t = scene.at(uint32_t(4 + 9 * k), 4);
+    t[0] = t[1] = t[2] = kinds[k];
+    t[3] = 1;
+  }
+  const std::vector<WayImages> ways = run_on_ways(plan, scene, o);
+  const char* names[3] = {"nan", "+inf", "-inf"};
+  std::vector<StressRow> rows;
+  for (int k = 0; k < 3; ++k) {
+    auto is_kind = [&](float v) {
+      return k == 0 ? std::isnan(v) : k == 1 ? v == kinds[1] : v == kinds[2];
+    };
+    StressRow row;
+    row.id = fmt::format("non-finite.{}", names[k]);
+    row.regime = "non-finite";
+    row.format = "rgba32f";
+    row.quantity = fmt::format("glow texels holding {} (one {} source texel)", names[k], names[k]);
+    row.expected = 49;
+    row.bound = "(2R+1)² = 7² with R = 3: the kernel's footprint (0 × special = 0)";
+    row.error = first_error(ways);
+    for (const WayImages& wi : ways) {
+      if (!wi.error.empty()) continue;
+      const img::Image& g = wi.images.at(std::string(kGlowTexture));
+      StressMeasure m{wi.way, 0, {}};
+      for (size_t i = 0; i < g.rgba.size(); i += 4) {
+        const bool hit = is_kind(g.rgba[i]);
+        m.mask.push_back(hit ? 1 : 0);
+        m.value += hit;
+      }
+      row.measured.push_back(std::move(m));
+    }
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+// A denormal source through one tap of weight 1 (max_taps 1): the glow is the source.
+// RGBA32F: 1e-39 is an fp32 denormal (the smallest normal is 2^-126 ≈ 1.18e-38); lavapipe
+// flushes denormals to zero (its LLVM code runs with flush-to-zero), so the Vulkan way may
+// store 0 instead: the documented difference (docs/stress.md). RGBA16F: 1e-5 is a half
+// denormal (the smallest normal half is 2^-14 ≈ 6.1e-5), stored as the nearest multiple of
+// 2^-24; as fp32 it is a normal number, so no device flushes it.
+StressRow denormal(const StressOptions& o, Format f) {
+  const float v = f == Format::RGBA32F ? 1e-39f : 1e-5f;
+  GlowParams p = small_params(3, 3, 1, f, 1.0, 1);
+  const GlowPlan plan = build_glow(p);
+  img::Image scene = uniform_scene(3, 3, 0, 0);
+  float* t = scene.at(1, 1);
+  t[0] = t[1] = t[2] = v;
+  t[3] = 1;
+  StressRow row;
+  row.id = fmt::format("denormal.{}", img::format_name(f));
+  row.regime = "denormal";
+  row.format = std::string(img::format_name(f));
+  row.quantity = fmt::format("glow of a {:g} source (one tap of weight 1)", v);
+  row.has_ideal = true;
+  row.ideal = v;
+  // The half store of 1e-5: round(1e-5 · 2^24) · 2^-24 = 168 · 2^-24.
+  // RGBA32F: the interpreter does what lavapipe does (NUMERICS.md rule 13: a denormal operand
+  // reads as 0), so both store 0; the analytic model's double math keeps the value.
+  row.expected = f == Format::RGBA32F ? 0.0 : std::ldexp(std::round(1e-5 * 16777216.0), -24);
+  row.tolerance = 0;
+  row.bound = f == Format::RGBA32F ? "flush to zero (lavapipe, the interpreter); analytic: v"
+                                   : "the half denormal 168·2^-24, exactly";
+  if (f == Format::RGBA32F) row.also_expected["analytic"] = double(v);
+  const std::vector<WayImages> ways = run_on_ways(plan, scene, o);
+  row.error = first_error(ways);
+  for (const WayImages& w : ways)
+    if (w.error.empty()) row.measured.push_back({w.way, texel_red(w, kGlowTexture, 1, 1), {}});
+  for (const StressMeasure& m : row.measured)
+    if (m.value == 0 && v != 0)
+      row.note += fmt::format("{}{} flushed it to 0", row.note.empty() ? "" : "; ", m.way);
+  if (!plan) row.error = plan.error;
+  return row;
+}
+
+} // namespace
+
+std::vector<StressCase> extreme_cases() {
+  return {
+      {"non-finite", non_finite},
+      {"denormal.rgba32f",
+       [](const StressOptions& o) { return std::vector{denormal(o, Format::RGBA32F)}; }},
+      {"denormal.rgba16f",
+       [](const StressOptions& o) { return std::vector{denormal(o, Format::RGBA16F)}; }},
+  };
+}
+
+} // namespace tierlift::effects::stress
