@@ -343,7 +343,8 @@ int run(const GlowFlags& f) {
                  effects::tier_name(params.tier), params.width, params.height,
                  img::format_name(params.format), params.downsample, plan.glow_width,
                  plan.glow_height, plan.taps.size(), plan.blur_passes_per_axis,
-                 params.half_texel ? "on" : "off", ir::ps1x_max_label(plan.graph.conventions.ps1x_max_value));
+                 params.half_texel ? "on" : "off",
+                 ir::ps1x_max_label(plan.graph.conventions.ps1x_max_value));
     if (!plan.quantization.empty()) fmt::print("{}\n", plan.quantization);
     for (const GlowWay& w : ways)
       fmt::print("{}: {} passes in {:.1f} ms{}\n", w.name, w.glow.run.passes.size(),

@@ -66,8 +66,9 @@ TEST_F(CliGlslBlur, GlslObjectUnderTheGlowIsAPositionedSceneError) {
   std::ofstream(dir / "mixed.json") << "{\n  \"glsl\": {}\n}\n";
   const fs::path log = dir / "log.txt";
   EXPECT_EQ(run_cli("glow --backend cpu --scene " + (dir / "mixed.json").string(), log), 1);
-  EXPECT_NE(read(log).find("mixed.json:2:3: error: /glsl: belongs to \"effect\": \"glsl-blur\""),
-            std::string::npos)
+  EXPECT_NE(
+      read(log).find("mixed.json:2:3: error: /glsl: \"glsl\" configures \"effect\": \"glsl-blur\""),
+      std::string::npos)
       << read(log);
 }
 

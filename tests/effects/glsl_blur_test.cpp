@@ -179,7 +179,9 @@ TEST(GlslBlur, SceneNamesTheEffect) {
 TEST(GlslBlur, GlslKeyBelongsToTheGlslEffect) {
   SceneLoad s = parse_scene("{\"glsl\": {}}", "x.json", "");
   ASSERT_FALSE(s);
-  EXPECT_EQ(s.error.rfind("x.json:1:2: error: /glsl: belongs to \"effect\": \"glsl-blur\"", 0), 0u)
+  EXPECT_EQ(
+      s.error.rfind("x.json:1:2: error: /glsl: \"glsl\" configures \"effect\": \"glsl-blur\"", 0),
+      0u)
       << s.error;
   s = parse_scene("{\"effect\": \"glsl-blur\", \"glsl\": {\"weights\": [1, 2]}}", "y.json", "");
   ASSERT_FALSE(s);

@@ -1,6 +1,6 @@
 // The one list of effects a scene may name, and the dispatch on it: "effect" read with its
-// own object ("radial", "outline", "glsl"; an object for another effect is an error at its key), and
-// the graph each effect builds.
+// own object ("radial", "outline", "glsl"; an object for another effect is an error at its
+// key), and the graph each effect builds.
 #include <algorithm>
 
 #include <fmt/format.h>

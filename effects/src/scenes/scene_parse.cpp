@@ -15,7 +15,7 @@
 namespace tierlift::effects {
 namespace {
 
-constexpr std::string_view kSceneKeys[] = {"$schema", "description", "image",  "size",   "glow",
+constexpr std::string_view kSceneKeys[] = {"$schema", "description", "image",   "size", "glow",
                                            "effect",  "radial",      "outline", "glsl"};
 constexpr size_t kMaxSceneBytes = size_t{1} << 20; // a scene is a few hundred bytes
 constexpr int kMaxNesting = 32;                    // a scene nests 5 deep

@@ -23,10 +23,9 @@ void read_glow(const Json& glow, FieldChecker& check, const std::string& base_di
 void read_radial(const Json& radial, FieldChecker& check, GlowParams& glow, RadialParams& out);
 // "/outline": the polygon, its two colours and the stencil reference.
 void read_outline(const Json& outline, FieldChecker& check, OutlineParams& out);
-// "/effect" and that effect's own object ("/radial", "/outline", "/glsl"); an effect's object without
-// the effect that reads it is an error at the object's key (scene_effect.cpp).
-void read_effect(const Json& scene, FieldChecker& check, const std::string& base_dir,
-                 Scene& out);
+// "/effect" and that effect's own object ("/radial", "/outline", "/glsl"); an effect's object
+// without the effect that reads it is an error at the object's key (scene_effect.cpp).
+void read_effect(const Json& scene, FieldChecker& check, const std::string& base_dir, Scene& out);
 // "/glsl": the glsl-blur effect's fields into `glsl` (scene_glsl.cpp).
 void read_glsl(const Json& glsl, FieldChecker& check, const std::string& base_dir,
                GlslBlurParams& params);

@@ -35,7 +35,7 @@ struct Scene {
   std::string effect = "glow";
   RadialParams radial;   // "radial": {…} for "radial-beams"
   OutlineParams outline; // "outline": {…} for "stencil-outline"
-  GlslBlurParams glsl;   // "glsl": {…} for "glsl-blur" (paths resolved against the scene's folder)
+  GlslBlurParams glsl;   // "glsl": {…} for "glsl-blur" (paths relative to the scene's folder)
   // One line each, without a "warning:" prefix: glow_warnings(params) (the CLI prints those
   // itself) followed by what only the image shows (an alpha that is 1 or 0 everywhere).
   std::vector<std::string> warnings;
