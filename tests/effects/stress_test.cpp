@@ -165,10 +165,13 @@ TEST_F(Stress, DownsampleEdgesAndSaturation) {
   EXPECT_NEAR(row(d, "downsample.1x7.d3.mid").expected, (3 + 4 + 5) / 18.0, 1e-12);
   EXPECT_EQ(row(d, "downsample.1x7.d3.edge").expected, 1.0);
   EXPECT_EQ(row(d, "downsample.7x5.d2.corner").expected, 1.0);
-  for (const auto& m : run("intensity.1000.rgba8").front().measured) EXPECT_EQ(m.value, 1.0);
+  // Named: a range-for over a temporary's member would read the vector after it is freed.
+  const std::vector<StressRow> sat8 = run("intensity.1000.rgba8");
+  for (const auto& m : sat8.front().measured) EXPECT_EQ(m.value, 1.0);
   // RGBA16F: 0.25 + 1000·0.25 = 250.25, a half float; the stores round toward zero, so a
   // glow a hair below 0.25 gives the half below, 250.125 (steps of 2^-3 there).
-  for (const auto& m : run("intensity.1000.rgba16f").front().measured) {
+  const std::vector<StressRow> sat16 = run("intensity.1000.rgba16f");
+  for (const auto& m : sat16.front().measured) {
     EXPECT_LE(m.value, 250.25);
     EXPECT_GE(m.value, 250.125);
   }
