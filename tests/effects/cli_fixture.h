@@ -1,9 +1,13 @@
 // A test fixture for running the built `tierlift` binary: a fresh temporary folder per test
-// (removed afterwards) and a whole-file reader for what the CLI wrote there.
+// (removed afterwards), the two ways the tests run the CLI, and a whole-file reader for what
+// it wrote there.
 #pragma once
 
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -26,6 +30,26 @@ protected:
   }
   void TearDown() override {
     if (!dir.empty()) std::filesystem::remove_all(dir);
+  }
+  // `tierlift ARGS` with stdout and stderr together in out_file; the exit status (-1: killed).
+  static int run_cli(const std::string& args, const std::filesystem::path& out_file) {
+    return exit_status(std::string(TIERLIFT_CLI_PATH) + " " + args + " > " + out_file.string() +
+                       " 2>&1");
+  }
+  // The same with stdout and stderr apart, read back into out and err; `prefix` goes before
+  // the command (environment settings, ulimit).
+  int run(const std::string& args, std::string& out, std::string& err,
+          const std::string& prefix = "") const {
+    const int status =
+        exit_status(prefix + std::string(TIERLIFT_CLI_PATH) + " " + args + " > " +
+                    (dir / "out.txt").string() + " 2> " + (dir / "err.txt").string());
+    out = read(dir / "out.txt");
+    err = read(dir / "err.txt");
+    return status;
+  }
+  static int exit_status(const std::string& command) {
+    const int status = std::system(command.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   }
   static std::string read(const std::filesystem::path& p) {
     std::ifstream in(p);

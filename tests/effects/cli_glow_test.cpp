@@ -6,7 +6,6 @@
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
 
 #include "cli_fixture.h"
 #include "skip_policy.h"
@@ -14,13 +13,6 @@
 namespace {
 
 namespace fs = std::filesystem;
-
-int run_cli(const std::string& args, const fs::path& out_file) {
-  const std::string cmd =
-      std::string(TIERLIFT_CLI_PATH) + " " + args + " > " + out_file.string() + " 2>&1";
-  const int status = std::system(cmd.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
 
 class CliGlow : public tierlift::cli_test::CliFixture {};
 

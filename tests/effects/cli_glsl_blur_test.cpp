@@ -6,20 +6,12 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <sys/wait.h>
 
 #include "cli_fixture.h"
 #include "skip_policy.h"
 
 namespace {
 namespace fs = std::filesystem;
-
-int run_cli(const std::string& args, const fs::path& out_file) {
-  const std::string cmd =
-      std::string(TIERLIFT_CLI_PATH) + " " + args + " > " + out_file.string() + " 2>&1";
-  const int status = std::system(cmd.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
 
 const std::string kScene = std::string(TIERLIFT_SOURCE_DIR) + "/listings/scenes/glsl-blur.json";
 

@@ -7,7 +7,6 @@
 #include <fstream>
 #include <set>
 #include <string>
-#include <sys/wait.h>
 
 #include <nlohmann/json.hpp>
 
@@ -20,15 +19,6 @@ namespace fs = std::filesystem;
 
 class CliReport : public tierlift::cli_test::CliFixture {
 protected:
-  int run(const std::string& args, std::string& out, std::string& err,
-          const std::string& prefix = "") {
-    const std::string cmd = prefix + std::string(TIERLIFT_CLI_PATH) + " " + args + " > " +
-                            (dir / "out.txt").string() + " 2> " + (dir / "err.txt").string();
-    const int status = std::system(cmd.c_str());
-    out = read(dir / "out.txt");
-    err = read(dir / "err.txt");
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  }
   fs::path scene(const std::string& json) {
     const fs::path p = dir / "scene.json";
     std::ofstream(p) << json;

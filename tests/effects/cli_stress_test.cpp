@@ -4,7 +4,6 @@
 
 #include <cstdlib>
 #include <nlohmann/json.hpp>
-#include <sys/wait.h>
 
 #include "cli_fixture.h"
 #include "skip_policy.h"
@@ -12,13 +11,6 @@
 namespace {
 
 namespace fs = std::filesystem;
-
-int run_cli(const std::string& args, const fs::path& out_file) {
-  const std::string cmd =
-      std::string(TIERLIFT_CLI_PATH) + " " + args + " > " + out_file.string() + " 2>/dev/null";
-  const int status = std::system(cmd.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
 
 class CliStress : public tierlift::cli_test::CliFixture {};
 
