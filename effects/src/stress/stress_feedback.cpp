@@ -201,6 +201,9 @@ std::vector<StressRow> feedback(const StressOptions& o, Format f, double g) {
   dr.format = fname;
   dr.quantity = "frames to fall to 1/e, source off (-1: never)";
   dr.expected = e_frames;
+  // The expected count is the store rule's own recurrence in double; a device computes
+  // g·y + s in fp32 first, which can move one frame's store across a rounding boundary (the
+  // 0.99·50 = 49.5 tie is one) and so shift the 1/e crossing by at most that one frame.
   dr.tolerance = 1;
   dr.has_ideal = true;
   dr.ideal = std::ceil(-1 / std::log(g));
@@ -216,6 +219,8 @@ std::vector<StressRow> feedback(const StressOptions& o, Format f, double g) {
     st.format = fname;
     st.quantity = "where the decay stalls (×255)";
     st.expected = std::round(stall * 255);
+    // Same recurrence, same reason: one store on the other side of a tie moves the level
+    // where g·y rounds back to y by one step.
     st.tolerance = 1;
     st.has_ideal = true;
     // The largest k with k − g·k < ½ (1e-9: 0.5/(1 − 0.9) is 5 plus a rounding error).
