@@ -19,7 +19,7 @@
 #include "tierlift/effects/prune.h"
 #include "tierlift/effects/scene.h"
 #include "tierlift/ir/ps1x_range.h"
-#include "tierlift/vulkan/device.h"
+#include "tierlift/vulkan/run_job.h" // process_device
 
 namespace tierlift::cli {
 namespace {
@@ -251,21 +251,21 @@ int run(const GlowFlags& f) {
   if (!f.no_prune) plan.graph = pruned.graph;
 
   const bool all = f.backend == "all", both = f.both_devices();
-  // The device lives until the process ends (never destroyed): lavapipe then stays loaded,
-  // so LeakSanitizer can attribute the driver's process-lifetime allocations to its module
-  // (tests/lsan.supp), as `tierlift run` does.
-  static vulkan::Device* vk = nullptr; // a global root: reachable, so not a leak either
+  // The process's device (vulkan::process_device): never destroyed, so lavapipe stays loaded
+  // and LeakSanitizer can attribute the driver's process-lifetime allocations to its module
+  // (tests/lsan.supp), as in `tierlift run`.
+  vulkan::Device* vk = nullptr;
   double vk_create_ms = 0;
-  if ((all || both || f.backend == "vulkan") && !vk) {
+  if (all || both || f.backend == "vulkan") {
     const auto t0 = std::chrono::steady_clock::now();
     vulkan::DeviceOptions o;
     o.gpu_filter = f.gpu;
-    std::string err;
-    vk = vulkan::Device::create(o, &err).release();
-    if (!vk) {
-      report.error("device", err);
+    ir::Result<vulkan::Device*> device = vulkan::process_device(o);
+    if (!device) {
+      report.error("device", device.message());
       return report.finish(kExitUsage);
     }
+    vk = *device;
     vk_create_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   }

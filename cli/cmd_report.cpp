@@ -13,7 +13,7 @@
 #include "report.h"
 #include "tierlift/effects/report_files.h"
 #include "tierlift/effects/report_sweep.h"
-#include "tierlift/vulkan/device.h"
+#include "tierlift/vulkan/run_job.h" // process_device
 
 namespace tierlift::cli {
 namespace {
@@ -133,17 +133,17 @@ int run(const ReportFlags& f) {
     report.error(io ? "io" : "scene", image.message(), scene.image);
     return report.finish(io ? kExitUsage : kExitInvalid);
   }
-  // The device lives until the process ends, as in `tierlift glow` (LeakSanitizer and
-  // lavapipe's process-lifetime allocations).
-  static vulkan::Device* vk = nullptr;
-  if (!f.no_vulkan && !vk) {
+  // The process's device, kept until exit as in `tierlift glow` and `tierlift run`.
+  vulkan::Device* vk = nullptr;
+  if (!f.no_vulkan) {
     vulkan::DeviceOptions o;
     o.gpu_filter = f.gpu;
-    vk = vulkan::Device::create(o, &err).release();
-    if (!vk) {
-      report.error("device", err);
+    ir::Result<vulkan::Device*> device = vulkan::process_device(o);
+    if (!device) {
+      report.error("device", device.message());
       return report.finish(kExitUsage);
     }
+    vk = *device;
   }
   if (f.no_vulkan) std::erase(s.timed, std::string("vulkan"));
   const bool tty = isatty(STDERR_FILENO) != 0;

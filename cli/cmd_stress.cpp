@@ -17,7 +17,7 @@
 #include "report.h"
 #include "tierlift/effects/analytic_device.h"
 #include "tierlift/effects/stress.h"
-#include "tierlift/vulkan/device.h"
+#include "tierlift/vulkan/run_job.h" // process_device
 
 namespace tierlift::cli {
 namespace {
@@ -57,29 +57,21 @@ nlohmann::json rows_json(const std::vector<effects::StressRow>& rows) {
 
 int run_stress(const StressFlags& f) {
   Report report("report", f.json);
-  if (!f.stress) {
-    report.error("usage", "report: only --stress is available in this build (the stress "
-                          "catalogue); give --stress");
-    return report.finish(kExitUsage);
-  }
   if (f.output == "-") {
     report.error("usage", "-o names a folder for report --stress (stress.json, stress.md)");
     return report.finish(kExitUsage);
   }
-  // The device lives until the process ends, as in `tierlift glow` (tests/lsan.supp).
-  static vulkan::Device* vk = nullptr;
-  if (!vk) {
-    vulkan::DeviceOptions o;
-    o.gpu_filter = f.gpu;
-    std::string err;
-    vk = vulkan::Device::create(o, &err).release();
-    if (!vk) {
-      report.error("device", err);
-      return report.finish(kExitUsage);
-    }
+  // The process's device, kept until exit as in `tierlift glow` (tests/lsan.supp).
+  vulkan::DeviceOptions device_options;
+  device_options.gpu_filter = f.gpu;
+  ir::Result<vulkan::Device*> device = vulkan::process_device(device_options);
+  if (!device) {
+    report.error("device", device.message());
+    return report.finish(kExitUsage);
   }
+  vulkan::Device* vk = *device;
   effects::StressOptions o;
-  o.make_device = [](const std::string& way) -> std::unique_ptr<effects::PassDevice> {
+  o.make_device = [vk](const std::string& way) -> std::unique_ptr<effects::PassDevice> {
     if (way == "cpu") return std::make_unique<effects::CpuPassDevice>();
     if (way == "vulkan") return effects::make_vulkan_pass_device(*vk);
     if (way == "analytic") return effects::make_analytic_pass_device();
