@@ -37,7 +37,7 @@ TEST(Scene, EveryShippedSceneLoadsAndBuilds) {
     ASSERT_TRUE(image) << image.message();
     EXPECT_EQ(image->width, s.scene->params.width);
   }
-  EXPECT_EQ(n, 4u);
+  EXPECT_EQ(n, 7u);
 }
 
 TEST(Scene, DefaultJsonSaysWhatTheBuiltInDefaultIs) {

@@ -101,6 +101,8 @@ void read_scene(const Json& j, const std::string& base_dir, FieldChecker& c, Sce
   std::vector<std::string> image_warns;
   read_image(j, base_dir, c, s, image_warns);
   if (const Json* v = member(j, "glow")) read_glow(*v, c, base_dir, s.params);
+  if (s.params.motion.on() && s.image != kBuiltinNeon)
+    c.error("/glow/motion", "moves the lights of the built-in scene; this scene's image is a PNG");
   s.warnings = glow_warnings(s.params);
   s.warnings.insert(s.warnings.end(), image_warns.begin(), image_warns.end());
 }

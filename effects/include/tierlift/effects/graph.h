@@ -48,6 +48,14 @@ struct PassDesc {
   std::vector<TextureBind> textures;
   std::string target;
   pass::BlendMode blend = pass::BlendMode::Replace;
+  // Per-frame constants (ramped parameters: run_frames). Frame f (from 0) uses entry
+  // min(f, size − 1) in place of vs_constants / ps_constants; empty: the same every frame.
+  // The devices never see these tables: the runner hands them at_frame(f), an ordinary pass,
+  // so every device honours them the same way.
+  std::vector<std::vector<pass::Vec4>> vs_constants_per_frame, ps_constants_per_frame;
+
+  // This pass as frame `frame` (from 0) runs it: the per-frame constants put in place.
+  PassDesc at_frame(unsigned frame) const;
 };
 
 struct EffectGraph {
@@ -61,7 +69,7 @@ struct EffectGraph {
 // Empty when the graph is well formed; otherwise the first problem: duplicate or unknown
 // texture or pass names, a pass without both listings, a pass that reads its own target,
 // sizes of 0 or above img::kMaxDimension, a sampler stage bound twice, an input used as a
-// target.
+// target, an empty entry in a per-frame constant table.
 std::string check_graph(const EffectGraph& graph);
 
 } // namespace tierlift::effects
