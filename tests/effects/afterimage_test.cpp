@@ -153,7 +153,9 @@ void rgba8_stall(PassDevice& device, Tier tier) {
         const double stall = std::min(255.0, std::ceil((xs - 0.5) / (1 - g)));
         const double level = std::round(double(fed.at(x, y)[c]) * 255);
         EXPECT_EQ(level, xs == 0 ? 0 : stall) << device.name() << " at " << x << "," << y;
-        if (xs == 20) EXPECT_EQ(level, 98) << "20/(1 − 0.8) = 100 in exact arithmetic";
+        if (xs == 20) {
+          EXPECT_EQ(level, 98) << "20/(1 − 0.8) = 100 in exact arithmetic";
+        }
         checked += xs > 0;
       }
   EXPECT_EQ(checked, 12);
