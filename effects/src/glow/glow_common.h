@@ -19,9 +19,9 @@ namespace tierlift::effects::detail {
 struct TierListingPaths {
   std::string_view helper_vs; // every helper pass: oTk = uv · c(k+4) + ck, k = 0..3
   std::string_view extract_ps, downsample_ps, composite_ps;
+  std::string_view blur_vs, blur_ps; // the article's listings
   // The after-image's mix: out = t0 + c0·t1 (a composite listing; used only with one).
   std::string_view mix_ps;
-  std::string_view blur_vs, blur_ps; // the article's listings
 };
 
 struct TierRecipe {

@@ -19,13 +19,12 @@ GlowPlan build_glow_dx8(const GlowParams& params) {
                 "glow/downsample4_ps13.psh",
                 above_one ? "glow/composite_add_x4_ps13.psh" : "glow/composite_add_ps13.psh",
                 "gpugems21/listing3_blur4_coords.vsh",
-                "gpugems21/listing4_blur4_weighted_sum.psh"};
+                "gpugems21/listing4_blur4_weighted_sum.psh",
+                gain_above_one ? "glow/composite_add_x4_ps13.psh" : "glow/composite_add_ps13.psh"};
   r.taps_per_blur_pass = kTapsPerBlurPassDx8;
   r.one_stage_per_read = true; // tex t# reads texture stage #
   r.constants_clamp_to_one = true;
   r.composite_divisor = above_one ? 4 : 1;
-  r.listings.mix_ps =
-      gain_above_one ? "glow/composite_add_x4_ps13.psh" : "glow/composite_add_ps13.psh";
   r.mix_divisor = gain_above_one ? 4 : 1;
   r.max_intensity = 4;
   r.why_limit = "a ps.1.x constant clamps to [-1, 1]; the composite's _x4 scales it by 4";
