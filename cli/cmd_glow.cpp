@@ -225,7 +225,8 @@ int run(const GlowFlags& f) {
   }
   // The parameters' warnings after the flags' overrides, then the scene's own (the image's).
   std::vector<std::string> warnings = effects::glow_warnings(params);
-  for (const std::string& w : effects::afterimage_warnings(params, plan.taps)) warnings.push_back(w);
+  for (const std::string& w : effects::afterimage_warnings(params, plan.taps))
+    warnings.push_back(w);
   if (params.animated() && f.frames == 0)
     warnings.push_back("the scene changes from frame to frame (after-image or keyframes); "
                        "this run shows frame 1 only: --frames N runs N frames");

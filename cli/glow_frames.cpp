@@ -12,7 +12,7 @@
 namespace tierlift::cli {
 namespace {
 
-constexpr unsigned kStripFrames = 8;   // frames in the contact strip, evenly spaced
+constexpr unsigned kStripFrames = 8;  // frames in the contact strip, evenly spaced
 constexpr uint32_t kStripWidth = 240; // each frame's width in the strip (or less)
 
 img::Image opaque(const img::Image& im) {
@@ -84,8 +84,8 @@ bool Animation::all_within() const {
 std::string run_animation(const effects::GlowPlan& plan, const img::Image& scene,
                           const std::vector<std::string>& devices, const DeviceFactory& make,
                           unsigned frames, const std::string& dir,
-                          const std::vector<std::string>& inputs,
-                          const effects::SceneAt& scene_at, Animation& out) {
+                          const std::vector<std::string>& inputs, const effects::SceneAt& scene_at,
+                          Animation& out) {
   const std::string final_name(effects::kFinalTexture);
   const img::Format format = plan.graph.find_texture(final_name)->format;
   // Every device's frames are kept until the last device has been compared with them
@@ -124,8 +124,7 @@ std::string run_animation(const effects::GlowPlan& plan, const img::Image& scene
     out.times.push_back({devices[d], run.run.times});
     kept.push_back(std::move(mine));
   }
-  if (!dir.empty() && !kept.empty())
-    return write_frames(dir, kept.front(), inputs, out.written);
+  if (!dir.empty() && !kept.empty()) return write_frames(dir, kept.front(), inputs, out.written);
   return {};
 }
 

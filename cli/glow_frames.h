@@ -20,10 +20,10 @@ namespace tierlift::cli {
 struct FramePairAgreement {
   std::string a, b;
   unsigned frames = 0, frames_within = 0;
-  double worst_max_abs = 0;       // over every frame
-  double worst_identical = 1;     // the smallest identical share of any frame
-  unsigned worst_frame = 0;       // from 1: where worst_max_abs occurs
-  std::string first_failure;      // the first frame beyond the targets, described
+  double worst_max_abs = 0;   // over every frame
+  double worst_identical = 1; // the smallest identical share of any frame
+  unsigned worst_frame = 0;   // from 1: where worst_max_abs occurs
+  std::string first_failure;  // the first frame beyond the targets, described
 };
 
 struct Animation {
@@ -42,8 +42,8 @@ using DeviceFactory = std::function<std::unique_ptr<effects::PassDevice>(const s
 std::string run_animation(const effects::GlowPlan& plan, const img::Image& scene,
                           const std::vector<std::string>& devices, const DeviceFactory& make,
                           unsigned frames, const std::string& dir,
-                          const std::vector<std::string>& inputs,
-                          const effects::SceneAt& scene_at, Animation& out);
+                          const std::vector<std::string>& inputs, const effects::SceneAt& scene_at,
+                          Animation& out);
 
 void print_animation(const Animation& a);
 nlohmann::json animation_json(const Animation& a);

@@ -100,8 +100,8 @@ void expect_near_all(const img::Image& got, const std::vector<double>& want, dou
   for (uint32_t y = 0; y < kH; ++y)
     for (uint32_t x = 0; x < kW; ++x)
       for (int c = 0; c < 3; ++c)
-        worst = std::max(worst, std::abs(double(got.at(x, y)[c]) -
-                                         want[(size_t(y) * kW + x) * 3 + c]));
+        worst =
+            std::max(worst, std::abs(double(got.at(x, y)[c]) - want[(size_t(y) * kW + x) * 3 + c]));
   EXPECT_LE(worst, tol) << what;
 }
 

@@ -66,8 +66,7 @@ INSTANTIATE_TEST_SUITE_P(
         Bad{R"({"glow": {"afterimage": {"mode": "glow", "gain": 5}}})",
             "s.json:1:50: error: /glow/afterimage/gain", "outside 0..4"},
         Bad{R"({"glow": {"afterimage": {"gain": 0.5}}})", "error: /glow/afterimage", "mode"},
-        Bad{R"({"glow": {"weight_scale": {"keys": []}}})", "error: /glow/weight_scale",
-            "keys"}));
+        Bad{R"({"glow": {"weight_scale": {"keys": []}}})", "error: /glow/weight_scale", "keys"}));
 
 } // namespace
 } // namespace tierlift::effects

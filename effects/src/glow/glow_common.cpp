@@ -68,8 +68,7 @@ std::vector<pass::Vec4> helper_vs_constants(const std::vector<Coord>& coords) {
 // The constant tables of a ramped parameter: splat(value(f) · factor) for each frame, the
 // rest of `base` (c1, …) as it is. Empty when the parameter does not ramp.
 std::vector<std::vector<pass::Vec4>> ramp_table(const Keyframes& ramp, double factor,
-                                                const std::vector<pass::Vec4>& base,
-                                                float alpha) {
+                                                const std::vector<pass::Vec4>& base, float alpha) {
   std::vector<std::vector<pass::Vec4>> table;
   for (double v : ramp_values(ramp)) {
     std::vector<pass::Vec4> c = base;

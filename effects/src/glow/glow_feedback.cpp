@@ -36,12 +36,12 @@ std::vector<std::string> afterimage_warnings(const GlowParams& p,
   const double g = p.afterimage_gain_ramp.max(p.afterimage_gain);
   if (k >= 1) {
     const double per_gain = g > 0 ? k / g : 1; // the loop gain per unit of g
-    out.push_back(fmt::format(
-        "after-image ({}): loop gain {:.4g} >= 1, the feedback runs away ({}); keep "
-        "afterimage.gain below {:.4g}",
-        afterimage_name(p.afterimage), k,
-        p.format == img::Format::RGBA8 ? "to a white screen" : "without bound",
-        per_gain > 0 ? 1 / per_gain : 1.0));
+    out.push_back(
+        fmt::format("after-image ({}): loop gain {:.4g} >= 1, the feedback runs away ({}); keep "
+                    "afterimage.gain below {:.4g}",
+                    afterimage_name(p.afterimage), k,
+                    p.format == img::Format::RGBA8 ? "to a white screen" : "without bound",
+                    per_gain > 0 ? 1 / per_gain : 1.0));
   } else if (p.format == img::Format::RGBA8) {
     if (int l = rgba8_stall_level(k); l > 0)
       out.push_back(fmt::format(

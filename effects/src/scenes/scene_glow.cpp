@@ -11,9 +11,9 @@
 namespace tierlift::effects {
 namespace {
 
-constexpr std::string_view kGlowKeys[] = {
-    "tier",     "downsample", "profile",      "taps",      "intensity", "format", "half_texel",
-    "listings", "ps1x_max",   "weight_scale", "afterimage", "motion"};
+constexpr std::string_view kGlowKeys[] = {"tier",      "downsample",   "profile",    "taps",
+                                          "intensity", "format",       "half_texel", "listings",
+                                          "ps1x_max",  "weight_scale", "afterimage", "motion"};
 constexpr std::string_view kProfileKeys[] = {"gaussians", "sawtooth"};
 constexpr std::string_view kGaussianKeys[] = {"sigma", "weight"};
 constexpr std::string_view kSawtoothKeys[] = {"period", "radius", "weight"};

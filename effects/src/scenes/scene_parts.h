@@ -18,8 +18,8 @@ void read_glow(const Json& glow, FieldChecker& check, const std::string& base_di
 // A number or {"keyframes": [[frame, value], …]} (scene_frames.cpp): the number into
 // `constant`, or the keyframes into `ramp` and the first value into `constant`. Frames
 // 1..100000, strictly increasing; every value in `range`.
-void read_ramped(const Json& v, const std::string& pointer, FieldChecker& check,
-                 NumberRange range, double& constant, Keyframes& ramp);
+void read_ramped(const Json& v, const std::string& pointer, FieldChecker& check, NumberRange range,
+                 double& constant, Keyframes& ramp);
 // "/glow/afterimage": {"mode": "sources" | "glow" | "off", "gain": ramped 0..4}.
 void read_afterimage(const Json& v, const std::string& pointer, FieldChecker& check,
                      GlowParams& params);

@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "tierlift/effects/glow.h"
-#include "tierlift/image/io.h"
 #include "tierlift/effects/run_graph.h"
+#include "tierlift/image/io.h"
 
 namespace tierlift::effects {
 
