@@ -1,5 +1,6 @@
 // The after-image's regimes (glow.h): the loop gain, runaway and the RGBA8 stall, told to
 // the user before a run.
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -23,8 +24,10 @@ int rgba8_stall_level(double k) {
   if (!(k > 0) || k >= 1) return 0;
   // L·(1 − k) < ½ ⇔ k·L lies within half a step of L: it rounds back to L. The largest such
   // L is the first integer below ½ / (1 − k) (at equality k·L is a tie; not counted).
-  const double bound = 0.5 / (1 - k);
-  auto l = static_cast<int>(std::ceil(bound) - 1);
+  // ½ / (1 − k) is itself rounded (k = 0.9: 5.000000000000001), so the estimate is moved
+  // to where the test L − k·L < ½ itself says.
+  auto l = static_cast<int>(std::min(256.0, std::ceil(0.5 / (1 - k))));
+  while (l > 0 && !(l - k * l < 0.5)) --l;
   return l > 255 ? 255 : l;
 }
 
