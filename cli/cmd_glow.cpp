@@ -12,6 +12,7 @@
 
 #include "commands.h"
 #include "front_end.h"
+#include "glow_frames.h"
 #include "glow_report.h"
 #include "report.h"
 #include "tierlift/effects/analytic_device.h"
@@ -242,13 +243,20 @@ int run(const GlowFlags& f) {
   }
   // The parameters' warnings after the flags' overrides, then the scene's own (the image's).
   std::vector<std::string> warnings = effects::effect_warnings(*scene);
+  for (const std::string& w : effects::afterimage_warnings(params, plan.taps))
+    warnings.push_back(w);
+  if (params.animated() && f.frames == 0)
+    warnings.push_back("the scene changes from frame to frame (after-image or keyframes); "
+                       "this run shows frame 1 only: --frames N runs N frames");
   for (const std::string& w : scene->warnings)
     if (std::find(warnings.begin(), warnings.end(), w) == warnings.end()) warnings.push_back(w);
   for (const std::string& w : warnings) report.warning("scene", fmt::format("{}: {}", where, w));
   scene->warnings = warnings;
   // Leave out what this scene does not need (prune.h), unless --no-prune.
   const effects::PrunedGraph pruned = effects::prune_glow(plan, *image);
-  if (!f.no_prune) plan.graph = pruned.graph;
+  // A moving scene changes the image every frame: the bounds pruning takes from frame 1's
+  // image would not hold for the others.
+  if (!f.no_prune && !params.motion.on()) plan.graph = pruned.graph;
 
   const bool all = f.backend == "all", both = f.both_devices();
   // The process's device (vulkan::process_device): never destroyed, so lavapipe stays loaded
@@ -294,7 +302,24 @@ int run(const GlowFlags& f) {
     return report.finish(kExitInvalid);
   }
   std::vector<FrameReport> frames;
-  if (f.frames > 0)
+  Animation animation;
+  const bool animated = f.frames > 0 && params.animated();
+  if (animated) {
+    std::vector<std::string> names;
+    for (const GlowWay& w : ways) names.push_back(w.name);
+    auto make = [&](const std::string& name) { return make_device(name, f, vk); };
+    effects::SceneAt scene_at;
+    if (params.motion.on())
+      scene_at = [&](unsigned frame) { return effects::load_scene_image(*scene, frame + 1); };
+    if (err = run_animation(plan, *image, names, make, f.frames, f.output,
+                            {f.scene, f.image, scene->image}, scene_at, animation);
+        !err.empty()) {
+      report.error("frames", err);
+      return report.finish(kExitInvalid);
+    }
+    for (FrameReport& r : animation.times)
+      if (r.device == "vulkan") r.times.setup_ms += vk_create_ms;
+  } else if (f.frames > 0)
     if (err = run_frames(plan, *image, ways, f, vk, vk_create_ms, frames); !err.empty()) {
       report.error("frames", err);
       return report.finish(kExitInvalid);
@@ -308,14 +333,19 @@ int run(const GlowFlags& f) {
       return report.finish(kExitUsage);
     }
 
-  bool all_within = true;
+  bool all_within = !animated || animation.all_within();
   for (const PairAgreement& p : pairs) all_within = all_within && p.agreement.all_pass;
+  written.insert(written.end(), animation.written.begin(), animation.written.end());
   if (report.json()) {
     nlohmann::json& j = report.result();
     j = summary_json(*scene, plan, ways);
     if (vk && (all || both || f.backend == "vulkan")) j["vulkan_device"] = vk->name();
     j["agreement"] = agreement_json(pairs);
     if (!frames.empty()) j["frames"] = frames_json(frames);
+    if (animated) {
+      j["frames"] = frames_json(animation.times);
+      j["animation"] = animation_json(animation);
+    }
     j["memory"] = {{"planned_peak_bytes", planned_bytes},
                    {"available_bytes", effects::available_memory()}};
     j["all_within_targets"] = all_within;
@@ -350,15 +380,20 @@ int run(const GlowFlags& f) {
       fmt::print("{}: {} passes in {:.1f} ms{}\n", w.name, w.glow.run.passes.size(),
                  w.glow.run.total_ms, w.name == "vulkan" ? fmt::format(" ({})", vk->name()) : "");
     if (f.explain) {
+      const bool varies = params.animated();
       fmt::print("pruning {}: {} of {} passes left out{}\n", f.no_prune ? "off (--no-prune)" : "on",
-                 pruned.left_out.size(), pruned.passes_before,
-                 pruned.left_out.empty() ? " (the scene needs every pass)" : "");
-      for (const effects::LeftOut& l : pruned.left_out)
+                 varies ? 0 : pruned.left_out.size(), pruned.passes_before,
+                 varies ? " (the scene changes from frame to frame: pruning bounds values from "
+                          "one image, so the whole plan runs)"
+                 : pruned.left_out.empty() ? " (the scene needs every pass)"
+                                           : "");
+      for (const effects::LeftOut& l : varies ? std::vector<effects::LeftOut>{} : pruned.left_out)
         fmt::print("  {} {}: {}\n", f.no_prune ? "would leave out" : "left out", l.what, l.why);
       fmt::print("  kept: the SPIR-V pair pruning of every pass (unused constants, inputs and "
                  "outputs; tierlift spirv --pair --explain)\n");
     }
     print_frames_table(frames);
+    if (animated) print_animation(animation);
     print_agreement_table(pairs);
     if (!pairs.empty())
       fmt::print("{}\n", all_within ? "every pair within design.md's targets"
@@ -371,6 +406,9 @@ int run(const GlowFlags& f) {
         if (!row.verdict.pass)
           report.error("agreement",
                        fmt::format("{} vs {}, {}: {}", p.a, p.b, row.pass, row.verdict.summary));
+    for (const FramePairAgreement& p : animation.pairs)
+      if (!p.first_failure.empty())
+        report.error("agreement", fmt::format("{} vs {}, {}", p.a, p.b, p.first_failure));
     report.error("agreement", "the ways differ beyond the targets");
     return report.finish(kExitInvalid);
   }
@@ -427,7 +465,8 @@ void register_glow_command(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--frames", f->frames,
                   "Run each device again N times: setup apart from steady-state frames "
-                  "(median, min, max)")
+                  "(median, min, max); a scene that changes per frame (after-image, "
+                  "keyframes) is compared frame by frame, and -o writes frame-0001.png …")
       ->check(CLI::Range(1u, 100000u));
   sub->add_option("--gpu", f->gpu, "Vulkan device name filter (default: lavapipe)");
   set_action(sub, [f] { return run(*f); });

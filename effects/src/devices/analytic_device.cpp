@@ -35,6 +35,13 @@ bool AnalyticPassDevice::rounding_midpoints(const std::string& texture,
   return true;
 }
 
+std::string AnalyticPassDevice::update_input(const std::string& name, const img::Image& image) {
+  auto it = images_.find(name);
+  if (!graph_ || it == images_.end()) return fmt::format("no input '{}'", name);
+  it->second = image;
+  return {};
+}
+
 std::string AnalyticPassDevice::read_texture(const std::string& name, img::Image& out) {
   auto it = images_.find(name);
   if (it == images_.end()) return fmt::format("no texture '{}'", name);

@@ -92,6 +92,13 @@ std::string CpuPassDevice::run_pass(const PassDesc& desc) {
   return {};
 }
 
+std::string CpuPassDevice::update_input(const std::string& name, const img::Image& image) {
+  auto it = images_.find(name);
+  if (!graph_ || it == images_.end()) return fmt::format("no input '{}'", name);
+  reset_image(it->second, image.width, image.height, image.format, &image);
+  return {};
+}
+
 std::string CpuPassDevice::read_texture(const std::string& name, img::Image& out) {
   if (auto s = stencils_.find(name); s != stencils_.end()) {
     const TextureDesc* t = graph_ ? graph_->find_texture(name) : nullptr;

@@ -64,6 +64,14 @@ public:
 
   std::string finish() override { return textures_.flush(); }
 
+  // TextureSet::upload flushes the passes recorded so far first, so the passes before it
+  // read the old image and those after it the new one.
+  std::string update_input(const std::string& name, const img::Image& image) override {
+    auto it = ids_.find(name);
+    if (!graph_ || it == ids_.end()) return fmt::format("no input '{}'", name);
+    return textures_.upload(it->second, image);
+  }
+
   std::string read_texture(const std::string& name, img::Image& out) override {
     auto it = ids_.find(name);
     if (it == ids_.end()) return fmt::format("no texture '{}'", name);

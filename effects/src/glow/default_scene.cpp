@@ -2,6 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+
+#include <glm/gtc/constants.hpp>
+#include <glm/vec2.hpp>
 
 namespace tierlift::effects {
 namespace {
@@ -39,7 +43,7 @@ void strip_v(img::Image& im, double fx, double fy0, double fy1, int64_t t, const
 }
 
 void light(img::Image& im, double fx, double fy, int64_t r, const Rgb& c) {
-  const auto cx = int64_t(fx * im.width), cy = int64_t(fy * im.height);
+  const auto cx = int64_t(std::floor(fx * im.width)), cy = int64_t(std::floor(fy * im.height));
   for (int64_t y = cy - r; y <= cy + r; ++y)
     for (int64_t x = cx - r; x <= cx + r; ++x)
       if ((x - cx) * (x - cx) + (y - cy) * (y - cy) <= r * r) put(im, x, y, c, 1.0f);
@@ -47,7 +51,8 @@ void light(img::Image& im, double fx, double fy, int64_t r, const Rgb& c) {
 
 } // namespace
 
-img::Image make_default_scene(uint32_t width, uint32_t height, img::Format format) {
+img::Image make_default_scene(uint32_t width, uint32_t height, img::Format format,
+                              double light_orbit, double angle) {
   img::Image im(width, height, format);
   for (uint32_t y = 0; y < height; ++y)
     for (uint32_t x = 0; x < width; ++x) put(im, x, y, {10, 10, 16}, 0.0f);
@@ -57,9 +62,16 @@ img::Image make_default_scene(uint32_t width, uint32_t height, img::Format forma
   strip_h(im, 0.10, 0.60, 0.30, t, {255, 40, 200}); // magenta
   strip_v(im, 0.75, 0.15, 0.85, t, {40, 230, 255}); // cyan
   strip_h(im, 0.35, 0.90, 0.70, t, {255, 190, 20}); // amber
-  light(im, 0.20, 0.15, r, {255, 255, 255});
-  light(im, 0.50, 0.55, r, {255, 255, 200});
-  light(im, 0.88, 0.20, r, {200, 255, 255});
+  // Each light's centre moved along its circle (in fractions of the image, as light() takes).
+  auto at = [&](double fx, double fy, int k) {
+    const double a = angle + k * glm::two_pi<double>() / 3;
+    const glm::dvec2 shift = light_orbit * glm::dvec2(std::cos(a), std::sin(a));
+    return glm::dvec2(fx, fy) + shift / glm::dvec2(width, height);
+  };
+  const glm::dvec2 l0 = at(0.20, 0.15, 0), l1 = at(0.50, 0.55, 1), l2 = at(0.88, 0.20, 2);
+  light(im, l0.x, l0.y, r, {255, 255, 255});
+  light(im, l1.x, l1.y, r, {255, 255, 200});
+  light(im, l2.x, l2.y, r, {200, 255, 255});
   return im;
 }
 

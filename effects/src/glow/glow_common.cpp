@@ -17,6 +17,7 @@ using ProgramPtr = std::shared_ptr<const ir::Program>;
 
 struct Listings {
   ProgramPtr helper_vs, extract, downsample, composite, blur_vs, blur_ps;
+  ProgramPtr mix; // the after-image's (only with one)
 };
 
 std::optional<Listings> load_listings(const GlowParams& p, const TierListingPaths& paths,
@@ -30,6 +31,10 @@ std::optional<Listings> load_listings(const GlowParams& p, const TierListingPath
     if (path.empty()) continue; // tier dx7 draws its blur from stage states
     *slot = glow_listing(path, p.listing_files, error, p.listing_options);
     if (!*slot) return std::nullopt;
+  }
+  if (p.afterimage != Afterimage::Off) {
+    l.mix = glow_listing(paths.mix_ps, p.listing_files, error, p.listing_options);
+    if (!l.mix) return std::nullopt;
   }
   return l;
 }
@@ -59,6 +64,20 @@ std::vector<pass::Vec4> helper_vs_constants(const std::vector<Coord>& coords) {
     c[k + 4] = {float(coords[k].su), float(coords[k].sv), 0, 0};
   }
   return c;
+}
+
+// The constant tables of a ramped parameter: splat(value(f) · factor) for each frame, the
+// rest of `base` (c1, …) as it is. Empty when the parameter does not ramp.
+std::vector<std::vector<pass::Vec4>> ramp_table(const Keyframes& ramp, double factor,
+                                                const std::vector<pass::Vec4>& base, float alpha) {
+  std::vector<std::vector<pass::Vec4>> table;
+  for (double v : ramp_values(ramp)) {
+    std::vector<pass::Vec4> c = base;
+    const auto f = static_cast<float>(v * factor);
+    c.at(0) = {f, f, f, alpha};
+    table.push_back(std::move(c));
+  }
+  return table;
 }
 
 class Builder {
@@ -128,7 +147,16 @@ public:
         const double w = t < taps.size() ? taps[t].weight : 0.0;
         const double du = vertical ? h : off + h, dv = vertical ? off + h : h;
         d.vs_constants.push_back({float(du / gw_), float(dv / gh_), 0, 0});
-        d.ps_constants.push_back(splat(w));
+        d.ps_constants.push_back(splat(w * p_.weight_scale));
+      }
+      // A ramped weight scale: every weight of the pass times the frame's scale.
+      for (double scale : ramp_values(p_.weight_scale_ramp)) {
+        std::vector<pass::Vec4> c;
+        for (size_t k = 0; k < per; ++k) {
+          const size_t t = i * per + k;
+          c.push_back(splat(t < taps.size() ? taps[t].weight * scale : 0.0));
+        }
+        d.ps_constants_per_frame.push_back(std::move(c));
       }
       bind(d, 0, source, p_.half_texel ? pass::Filter::Point : pass::Filter::Linear, per);
       d.blend = i == 0 ? pass::BlendMode::Replace : pass::BlendMode::OneOne;
@@ -142,23 +170,41 @@ public:
   void blur_stages(const std::vector<BlurTap>& taps, bool vertical, std::string_view source,
                    std::string_view target, std::vector<PassDesc>& out) const {
     const double h = p_.half_texel ? 0.5 : 0.0;
-    std::vector<double> weights;
-    for (const BlurTap& t : taps) weights.push_back(t.weight);
-    const std::vector<uint8_t> bytes = quantize_weights(weights, r_.rounding);
+    // The weight scale multiplies the weights before they are rounded to bytes, as an
+    // application would scale them before writing the vertex colours; a ramped scale rounds
+    // each frame's weights anew (per-frame diffuse constants).
+    auto bytes_for = [&](double scale) {
+      std::vector<double> weights;
+      for (const BlurTap& t : taps) weights.push_back(t.weight * scale);
+      return quantize_weights(weights, r_.rounding);
+    };
+    const std::vector<uint8_t> bytes = bytes_for(p_.weight_scale);
+    std::vector<std::vector<uint8_t>> frame_bytes;
+    for (double scale : ramp_values(p_.weight_scale_ramp)) frame_bytes.push_back(bytes_for(scale));
+    auto diffuse = [&](const std::vector<uint8_t>& b, size_t i) {
+      std::array<float, 2> w{};
+      for (size_t k = 0; k < 2; ++k) {
+        const size_t t = 2 * i + k;
+        w[k] = t < taps.size() ? tss::d3dcolor_channel(b[t]) : 0.0f;
+      }
+      return pass::Vec4{w[0], w[0], w[0], w[1]};
+    };
     const size_t count = (taps.size() + 1) / 2;
     for (size_t i = 0; i < count; ++i) {
       PassDesc d = pass(fmt::format("{}.{}", vertical ? "blur_v" : "blur_h", i), r_.stage_blur->vs,
                         r_.stage_blur->ps, target);
       d.vs_constants.assign(tss::kSpecularConstant + 1, pass::Vec4{0, 0, 0, 0});
-      std::array<float, 2> w{};
       for (size_t k = 0; k < 2; ++k) {
         const size_t t = 2 * i + k;
         const double off = t < taps.size() ? taps[t].offset : 0.0;
-        w[k] = t < taps.size() ? tss::d3dcolor_channel(bytes[t]) : 0.0f;
         const double du = vertical ? h : off + h, dv = vertical ? off + h : h;
         d.vs_constants[k] = {float(du / gw_), float(dv / gh_), 0, 0};
       }
-      d.vs_constants[tss::kDiffuseConstant] = {w[0], w[0], w[0], w[1]};
+      d.vs_constants[tss::kDiffuseConstant] = diffuse(bytes, i);
+      for (const std::vector<uint8_t>& b : frame_bytes) {
+        d.vs_constants_per_frame.push_back(d.vs_constants);
+        d.vs_constants_per_frame.back()[tss::kDiffuseConstant] = diffuse(b, i);
+      }
       bind(d, 0, source, p_.half_texel ? pass::Filter::Point : pass::Filter::Linear,
            r_.stage_blur->texture_stages);
       d.blend = i == 0 ? pass::BlendMode::Replace : pass::BlendMode::OneOne;
@@ -175,9 +221,36 @@ public:
     // check_params keeps intensity finite and within the tier's limit (≤ FLT_MAX).
     const auto s = static_cast<float>(p_.intensity / r_.composite_divisor);
     d.ps_constants = {pass::Vec4{s, s, s, 0}};
+    d.ps_constants_per_frame =
+        ramp_table(p_.intensity_ramp, 1 / r_.composite_divisor, d.ps_constants, 0);
     // Scene on stage / sampler 0, glow on 1, in both tiers (t0/s0 and t1/s1).
     bind(d, 0, kSceneTexture, pass::Filter::Point, 1);
     bind(d, 1, kGlowTexture, pass::Filter::Linear, 1);
+    return d;
+  }
+
+  // The after-image's mix: fed = x + g·previous (x: what the blur would read, previous: the
+  // saved fed texture or last frame's glow), point reads at the glow's texel centres.
+  PassDesc afterimage_mix(std::string_view x, std::string_view previous) const {
+    PassDesc d = pass("afterimage", l_.helper_vs, l_.mix, kFedTexture);
+    d.vs_constants = helper_vs_constants({{0.5 / gw_, 0.5 / gh_}, {0.5 / gw_, 0.5 / gh_}});
+    const auto g = static_cast<float>(p_.afterimage_gain / r_.mix_divisor);
+    d.ps_constants = {pass::Vec4{g, g, g, 0}};
+    d.ps_constants_per_frame =
+        ramp_table(p_.afterimage_gain_ramp, 1 / r_.mix_divisor, d.ps_constants, 0);
+    bind(d, 0, x, pass::Filter::Point, 1);
+    bind(d, 1, previous, pass::Filter::Point, 1);
+    return d;
+  }
+
+  // Afterimage::Sources keeps this frame's fed texture for the next: the mix listing with
+  // c0 = 0 (t0 + 0·t1 = t0 exactly), since a pass may not read its own target.
+  PassDesc afterimage_save() const {
+    PassDesc d = pass("afterimage_save", l_.helper_vs, l_.mix, kSavedTexture);
+    d.vs_constants = helper_vs_constants({{0.5 / gw_, 0.5 / gh_}, {0.5 / gw_, 0.5 / gh_}});
+    d.ps_constants = {pass::Vec4{0, 0, 0, 0}};
+    bind(d, 0, kFedTexture, pass::Filter::Point, 1);
+    bind(d, 1, kFedTexture, pass::Filter::Point, 1);
     return d;
   }
 
@@ -214,9 +287,16 @@ std::string check_params(const GlowParams& p, const TierRecipe& r) {
     return fmt::format("scene size {}x{}: expected 1..{}", p.width, p.height, img::kMaxDimension);
   if (!std::isfinite(p.intensity) || p.intensity < 0)
     return fmt::format("intensity {}: expected a finite value >= 0", p.intensity);
-  if (p.intensity > r.max_intensity)
-    return fmt::format("intensity {}: tier {} reaches at most {} ({})", p.intensity, r.tier,
+  const double top = p.intensity_ramp.max(p.intensity);
+  if (top > r.max_intensity)
+    return fmt::format("intensity {}: tier {} reaches at most {} ({})", top, r.tier,
                        r.max_intensity, r.why_limit);
+  const double gain = p.afterimage_gain_ramp.max(p.afterimage_gain);
+  if (!std::isfinite(p.afterimage_gain) || p.afterimage_gain < 0 || gain > r.max_intensity)
+    return fmt::format("after-image gain {}: expected 0..{} on tier {}", gain, r.max_intensity,
+                       r.tier);
+  if (!std::isfinite(p.weight_scale) || p.weight_scale < 0)
+    return fmt::format("weight scale {}: expected a finite value >= 0", p.weight_scale);
   if (r.taps_per_blur_pass == 0) return fmt::format("tier {}: no taps per blur pass", r.tier);
   return {};
 }
@@ -232,8 +312,9 @@ GlowPlan build_glow_graph(const GlowParams& p, const TierRecipe& r) {
   if (r.constants_clamp_to_one) {
     size_t above = 0;
     double top = 0;
+    const double scale = p.weight_scale_ramp.max(p.weight_scale);
     for (const BlurTap& t : plan.taps)
-      if (t.weight > 1) ++above, top = std::max(top, t.weight);
+      if (t.weight * scale > 1) ++above, top = std::max(top, t.weight * scale);
     if (above > 0)
       plan.warnings.push_back(
           fmt::format("profile: {} tap weight(s) above 1 (up to {}); tier {} uses 1 for them (a "
@@ -259,18 +340,28 @@ GlowPlan build_glow_graph(const GlowParams& p, const TierRecipe& r) {
   tex(kBlurHTexture, gw, gh);
   tex(kGlowTexture, gw, gh);
   tex(kFinalTexture, p.width, p.height);
+  if (p.afterimage != Afterimage::Off) tex(kFedTexture, gw, gh);
+  if (p.afterimage == Afterimage::Sources) tex(kSavedTexture, gw, gh);
 
   const Builder b(p, r, *l, gw, gh);
   g.passes.push_back(b.extract());
   if (p.downsample > 1) b.downsample(g.passes);
-  const std::string_view blur_src = p.downsample > 1 ? kSmallTexture : kSourcesTexture;
+  std::string_view blur_src = p.downsample > 1 ? kSmallTexture : kSourcesTexture;
+  if (p.afterimage != Afterimage::Off) {
+    // Sources: last frame's fed texture (saved); Glow: last frame's glow, read before this
+    // frame's blur writes it. Both start at zero in the first frame.
+    g.passes.push_back(b.afterimage_mix(
+        blur_src, p.afterimage == Afterimage::Sources ? kSavedTexture : kGlowTexture));
+    if (p.afterimage == Afterimage::Sources) g.passes.push_back(b.afterimage_save());
+    blur_src = kFedTexture;
+  }
   b.blur(plan.taps, false, blur_src, kBlurHTexture, g.passes);
   b.blur(plan.taps, true, kBlurHTexture, kGlowTexture, g.passes);
   plan.blur_passes_per_axis =
       unsigned((plan.taps.size() + r.taps_per_blur_pass - 1) / r.taps_per_blur_pass);
   if (r.stage_blur) {
     std::vector<double> weights;
-    for (const BlurTap& t : plan.taps) weights.push_back(t.weight);
+    for (const BlurTap& t : plan.taps) weights.push_back(t.weight * p.weight_scale);
     plan.weight_bytes = quantize_weights(weights, r.rounding);
     plan.quantization = quantization_summary(weights, r.rounding);
   }

@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "tierlift/effects/glow.h"
 #include "tierlift/effects/stage_states.h"
@@ -20,6 +21,8 @@ struct TierListingPaths {
   std::string_view helper_vs; // every helper pass: oTk = uv · c(k+4) + ck, k = 0..3
   std::string_view extract_ps, downsample_ps, composite_ps;
   std::string_view blur_vs, blur_ps; // the article's listings
+  // The after-image's mix: out = t0 + c0·t1 (a composite listing; used only with one).
+  std::string_view mix_ps;
 };
 
 struct TierRecipe {
@@ -32,6 +35,8 @@ struct TierRecipe {
   // The composite's c0.rgb = intensity / composite_divisor multiplies the glow (the dx8
   // listing for intensities above 1 scales it back with _x4); c0.a is unused.
   double composite_divisor = 1;
+  // The same for the after-image's mix: c0.rgb = g / mix_divisor.
+  double mix_divisor = 1;
   // ps.1.x: constants clamp to [-1, 1], so a tap weight above 1 is used as 1 (a warning).
   bool constants_clamp_to_one = false;
   // Intensity above this is an error; why_limit explains it in the message.
@@ -48,5 +53,9 @@ struct TierRecipe {
 // intensity ≤ recipe.max_intensity), loads the listings, samples the profile and builds
 // the graph. Errors name the parameter (or the listing) at fault.
 GlowPlan build_glow_graph(const GlowParams& params, const TierRecipe& recipe);
+
+// A ramped parameter's value for frames 1..ramp.span() (glow_frames.cpp); empty when the
+// parameter does not ramp.
+std::vector<double> ramp_values(const Keyframes& ramp);
 
 } // namespace tierlift::effects::detail

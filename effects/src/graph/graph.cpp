@@ -1,5 +1,6 @@
 #include "tierlift/effects/graph.h"
 
+#include <algorithm>
 #include <set>
 
 #include <fmt/format.h>
@@ -10,6 +11,19 @@ const TextureDesc* EffectGraph::find_texture(std::string_view name) const {
   for (const TextureDesc& t : textures)
     if (t.name == name) return &t;
   return nullptr;
+}
+
+PassDesc PassDesc::at_frame(unsigned frame) const {
+  PassDesc d = *this;
+  d.vs_constants_per_frame.clear();
+  d.ps_constants_per_frame.clear();
+  if (!vs_constants_per_frame.empty())
+    d.vs_constants =
+        vs_constants_per_frame[std::min<size_t>(frame, vs_constants_per_frame.size() - 1)];
+  if (!ps_constants_per_frame.empty())
+    d.ps_constants =
+        ps_constants_per_frame[std::min<size_t>(frame, ps_constants_per_frame.size() - 1)];
+  return d;
 }
 
 namespace {
@@ -86,6 +100,10 @@ std::string check_pass(const EffectGraph& g, const PassDesc& p) {
   if (target->stencil)
     return fmt::format("pass '{}': renders colour into the stencil texture '{}'", p.name, p.target);
   if (std::string e = check_outputs(g, p, *target); !e.empty()) return e;
+  for (const auto* table : {&p.vs_constants_per_frame, &p.ps_constants_per_frame})
+    for (const std::vector<pass::Vec4>& frame : *table)
+      if (frame.empty())
+        return fmt::format("pass '{}': a frame of its per-frame constants is empty", p.name);
   std::set<uint32_t> stages;
   for (const TextureBind& b : p.textures) {
     if (b.stage >= pass::kMaxSamplers)

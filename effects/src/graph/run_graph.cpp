@@ -90,6 +90,20 @@ std::string read_all(const EffectGraph& graph, PassDevice& device, ImageMap& ima
   return {};
 }
 
+// The inputs that change before frame f, at their declared size and format.
+std::string replace_inputs(const EffectGraph& graph, PassDevice& device, unsigned f,
+                           const FrameInputs& inputs_at) {
+  ImageMap changed;
+  if (std::string e = inputs_at(f, changed); !e.empty()) return e;
+  for (auto& [name, image] : changed) {
+    const TextureDesc* t = graph.find_texture(name);
+    if (!t || !t->input) return fmt::format("'{}' is not an input texture", name);
+    if (std::string e = prepare_input(*t, changed); !e.empty()) return e;
+    if (std::string e = device.update_input(name, image); !e.empty()) return e;
+  }
+  return {};
+}
+
 } // namespace
 
 GraphRun run_graph(const EffectGraph& graph, PassDevice& device, ImageMap& images,
@@ -102,7 +116,7 @@ GraphRun run_graph(const EffectGraph& graph, PassDevice& device, ImageMap& image
   for (const PassDesc& desc : graph.passes) {
     if (progress) progress(run.passes.size(), graph.passes.size(), desc);
     auto t0 = std::chrono::steady_clock::now();
-    std::string e = device.run_pass(desc);
+    std::string e = device.run_pass(desc.at_frame(0));
     if (e.empty()) e = device.finish(); // the pass's own time, not the time it was queued
     if (!e.empty()) {
       run.error = fmt::format("pass '{}' on {}: {}", desc.name, device.name(), e);
@@ -144,7 +158,7 @@ double FrameTimes::max_ms() const {
 }
 
 FramesRun run_frames(const EffectGraph& graph, PassDevice& device, ImageMap& images,
-                     unsigned frames) {
+                     unsigned frames, const FrameSink& sink, const FrameInputs& inputs_at) {
   FramesRun run;
   auto t0 = std::chrono::steady_clock::now();
   run.error = begin_graph(graph, device, images);
@@ -152,8 +166,13 @@ FramesRun run_frames(const EffectGraph& graph, PassDevice& device, ImageMap& ima
   run.times.setup_ms = ms_since(t0);
   for (unsigned f = 0; f < frames; ++f) {
     auto t = std::chrono::steady_clock::now();
+    if (inputs_at && f > 0)
+      if (std::string e = replace_inputs(graph, device, f, inputs_at); !e.empty()) {
+        run.error = fmt::format("frame {} on {}: {}", f + 1, device.name(), e);
+        return run;
+      }
     for (const PassDesc& desc : graph.passes)
-      if (std::string e = device.run_pass(desc); !e.empty()) {
+      if (std::string e = device.run_pass(desc.at_frame(f)); !e.empty()) {
         run.error =
             fmt::format("frame {}, pass '{}' on {}: {}", f + 1, desc.name, device.name(), e);
         return run;
@@ -163,6 +182,11 @@ FramesRun run_frames(const EffectGraph& graph, PassDevice& device, ImageMap& ima
       return run;
     }
     run.times.frame_ms.push_back(ms_since(t));
+    if (sink)
+      if (std::string e = sink(f, device); !e.empty()) {
+        run.error = fmt::format("frame {} on {}: {}", f + 1, device.name(), e);
+        return run;
+      }
   }
   run.error = read_all(graph, device, images);
   run.ok = run.error.empty();

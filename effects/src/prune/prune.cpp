@@ -91,11 +91,33 @@ PrunedGraph prune_unread(const EffectGraph& graph, std::string_view frame) {
   return r;
 }
 
+namespace {
+
+// True when a frame's result depends on more than this scene image: per-frame constants
+// (keyframed parameters), or a pass that reads a texture no earlier pass of the frame wrote
+// and that is not an input (a feedback loop: last frame's value). Every rule below bounds
+// values from the scene alone, so such a graph is not pruned.
+bool varies_between_frames(const EffectGraph& g) {
+  std::set<std::string, std::less<>> written;
+  for (const TextureDesc& t : g.textures)
+    if (t.input) written.insert(t.name);
+  for (const PassDesc& p : g.passes) {
+    if (!p.vs_constants_per_frame.empty() || !p.ps_constants_per_frame.empty()) return true;
+    for (const TextureBind& t : p.textures)
+      if (!written.contains(t.texture)) return true;
+    written.insert(p.target);
+    written.insert(p.more_targets.begin(), p.more_targets.end());
+  }
+  return false;
+}
+
+} // namespace
+
 PrunedGraph prune_glow(const GlowPlan& plan, const img::Image& scene) {
   PrunedGraph r;
   r.graph = plan.graph;
   r.passes_before = plan.graph.passes.size();
-  if (!plan) return r;
+  if (!plan || varies_between_frames(plan.graph)) return r;
   double most = 0; // the largest rgb × alpha of the scene
   bool any_alpha = false;
   for (size_t i = 0; i + 3 < scene.rgba.size(); i += 4) {

@@ -1,5 +1,7 @@
 // Scenes that do not come from JSON text (the default, --image), the scene image, and the
 // warnings a set of glow parameters deserves.
+#include <glm/gtc/constants.hpp>
+
 #include "tierlift/effects/scene.h"
 
 #include <cmath>
@@ -111,6 +113,10 @@ SceneLoad scene_from_png(const std::string& png_path) {
 }
 
 img::ImageResult load_scene_image(const Scene& scene) {
+  return load_scene_image(scene, 1);
+}
+
+img::ImageResult load_scene_image(const Scene& scene, unsigned frame) {
   auto fail = [&](std::string message) -> img::ImageResult {
     return ir::fail(scene.image, "scene", std::move(message));
   };
@@ -119,8 +125,13 @@ img::ImageResult load_scene_image(const Scene& scene) {
       p.height > img::kMaxDimension)
     return fail(fmt::format("{}: the scene size {}x{} is outside 1..{}", scene.image, p.width,
                             p.height, img::kMaxDimension));
-  if (scene.image == kBuiltinNeon)
-    return img::ImageResult(make_default_scene(p.width, p.height, img::Format::RGBA32F));
+  if (scene.image == kBuiltinNeon) {
+    const Motion& m = p.motion;
+    const double angle =
+        m.on() ? glm::two_pi<double>() * double((frame - 1) % m.period) / m.period : 0;
+    return img::ImageResult(make_default_scene(p.width, p.height, img::Format::RGBA32F,
+                                               m.on() ? m.radius * p.height : 0, angle));
+  }
   if (scene.image.starts_with("builtin:"))
     return fail(
         fmt::format("{}: not a built-in image (the built-in is {})", scene.image, kBuiltinNeon));

@@ -11,9 +11,10 @@
 namespace tierlift::effects {
 namespace {
 
-constexpr std::string_view kGlowKeys[] = {"tier",      "downsample",     "profile",    "taps",
-                                          "intensity", "format",         "half_texel", "listings",
-                                          "ps1x_max",  "weight_rounding"};
+constexpr std::string_view kGlowKeys[] = {
+    "tier",       "downsample", "profile",        "taps",     "intensity",
+    "format",     "half_texel", "listings",       "ps1x_max", "weight_scale",
+    "afterimage", "motion",     "weight_rounding"};
 constexpr std::string_view kProfileKeys[] = {"gaussians", "sawtooth"};
 constexpr std::string_view kGaussianKeys[] = {"sigma", "weight"};
 constexpr std::string_view kSawtoothKeys[] = {"period", "radius", "weight"};
@@ -153,14 +154,21 @@ void read_glow(const Json& g, FieldChecker& c, const std::string& base_dir, Glow
       else
         p.profile.max_taps = unsigned(*n);
     }
-  if (const Json* v = member(g, "intensity"))
-    if (auto x = c.number(*v, at + "/intensity", kIntensity)) {
-      p.intensity = *x;
-      // A ps.1.x constant holds at most 1; the dx8 composite reaches 4 with _x4 (glow.h).
-      if (p.tier != Tier::Dx9 && *x > 4)
-        c.error(at + "/intensity", fmt::format("{} is outside 0..4, the range of tier {}",
-                                               FieldChecker::shown(*v), tier_name(p.tier)));
-    }
+  if (const Json* v = member(g, "intensity")) {
+    // A ps.1.x constant holds at most 1; the dx8 composite reaches 4 with _x4 (glow.h).
+    const bool dx8 = p.tier != Tier::Dx9; // dx8 and dx7
+    if (dx8 && v->is_number() && v->get<double>() > 4 && v->get<double>() <= kIntensity.hi)
+      c.error(at + "/intensity", fmt::format("{} is outside 0..4, the range of tier {}",
+                                             FieldChecker::shown(*v), tier_name(p.tier)));
+    else
+      read_ramped(*v, at + "/intensity", c, dx8 ? NumberRange{0, 4} : kIntensity, p.intensity,
+                  p.intensity_ramp);
+  }
+  if (const Json* v = member(g, "weight_scale"))
+    read_ramped(*v, at + "/weight_scale", c, NumberRange{0, 1000}, p.weight_scale,
+                p.weight_scale_ramp);
+  if (const Json* v = member(g, "afterimage")) read_afterimage(*v, at + "/afterimage", c, p);
+  if (const Json* v = member(g, "motion")) read_motion(*v, at + "/motion", c, p);
   if (const Json* v = member(g, "format"))
     if (auto name = c.string(*v, at + "/format")) {
       if (auto f = img::parse_format(*name))

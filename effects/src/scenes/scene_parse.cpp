@@ -105,6 +105,8 @@ void read_scene(const Json& j, const std::string& base_dir, FieldChecker& c, Sce
   read_image(j, base_dir, c, s, image_warns);
   if (const Json* v = member(j, "glow")) read_glow(*v, c, base_dir, s.params);
   read_effect(j, c, base_dir, s);
+  if (s.params.motion.on() && s.image != kBuiltinNeon)
+    c.error("/glow/motion", "moves the lights of the built-in scene; this scene's image is a PNG");
   s.warnings = effect_warnings(s);
   s.warnings.insert(s.warnings.end(), image_warns.begin(), image_warns.end());
 }

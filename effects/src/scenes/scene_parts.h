@@ -29,6 +29,18 @@ void read_effect(const Json& scene, FieldChecker& check, const std::string& base
 // "/glsl": the glsl-blur effect's fields into `glsl` (scene_glsl.cpp).
 void read_glsl(const Json& glsl, FieldChecker& check, const std::string& base_dir,
                GlslBlurParams& params);
+// A number or {"keyframes": [[frame, value], …]} (scene_frames.cpp): the number into
+// `constant`, or the keyframes into `ramp` and the first value into `constant`. Frames
+// 1..100000, strictly increasing; every value in `range`.
+void read_ramped(const Json& v, const std::string& pointer, FieldChecker& check, NumberRange range,
+                 double& constant, Keyframes& ramp);
+// "/glow/afterimage": {"mode": "sources" | "glow" | "off", "gain": ramped 0..4}.
+void read_afterimage(const Json& v, const std::string& pointer, FieldChecker& check,
+                     GlowParams& params);
+
+// "/glow/motion": {"radius": 0..0.5 scene heights, "period": 1..100000 frames}, both needed.
+void read_motion(const Json& v, const std::string& pointer, FieldChecker& check,
+                 GlowParams& params);
 
 // `path` as seen from `base_dir` ("" = the working directory); absolute paths stay.
 std::string resolve_path(const std::string& base_dir, const std::string& path);

@@ -27,6 +27,7 @@ public:
   std::string name() const override { return "analytic"; }
   std::string begin_run(const EffectGraph& graph, const ImageMap& inputs) override;
   std::string run_pass(const PassDesc& pass) override;
+  std::string update_input(const std::string& name, const img::Image& image) override;
   std::string read_texture(const std::string& name, img::Image& out) override;
   // The assumptions the model made in this run, one line each, "pass 'name': …" (e.g. the
   // ps_1_x clamp of the final sum only, a read of an unbound stage).

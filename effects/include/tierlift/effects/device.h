@@ -40,6 +40,12 @@ public:
   // Waits until every pass run so far is done (a device may queue passes: Vulkan records a
   // frame's passes into one command buffer). Empty string on success, else why.
   virtual std::string finish() { return {}; }
+  // Replaces an input texture's contents between frames (a moving scene): `image` is at the
+  // declared size and already stored in the declared format. Empty string on success; a
+  // device that cannot refuses (never ignores it).
+  virtual std::string update_input(const std::string& name, const img::Image& /*image*/) {
+    return "device " + this->name() + " cannot replace input '" + name + "' between frames";
+  }
   // A texture's current contents (in its declared format). Empty string on success.
   virtual std::string read_texture(const std::string& name, img::Image& out) = 0;
   // RGBA8 textures only, and only a device that knows its exact values (the analytic one):
@@ -61,6 +67,7 @@ public:
   std::string name() const override { return "cpu"; }
   std::string begin_run(const EffectGraph& graph, const ImageMap& inputs) override;
   std::string run_pass(const PassDesc& pass) override;
+  std::string update_input(const std::string& name, const img::Image& image) override;
   std::string read_texture(const std::string& name, img::Image& out) override;
 
 private:

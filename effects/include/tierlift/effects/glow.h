@@ -54,6 +54,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "tierlift/effects/blur_profile.h"
@@ -70,6 +71,10 @@ inline constexpr std::string_view kSmallTexture = "glow_small"; // downsampled s
 inline constexpr std::string_view kBlurHTexture = "blur_h";
 inline constexpr std::string_view kGlowTexture = "glow";
 inline constexpr std::string_view kFinalTexture = "final";
+// After-image: what the blur reads (x + g·previous) and, for Afterimage::Sources, last
+// frame's copy of it.
+inline constexpr std::string_view kFedTexture = "afterimage_fed";
+inline constexpr std::string_view kSavedTexture = "afterimage_saved";
 
 inline constexpr unsigned kTapsPerBlurPassDx9 = 8; // Listing 1's eight oT#
 inline constexpr unsigned kTapsPerBlurPassDx8 = 4; // Listing 3's four oT#
@@ -87,6 +92,39 @@ std::optional<Tier> parse_tier(std::string_view name); // nullopt for anything e
 // parse_tier round-trip them, so a tier added to the enum, tier_name and parse_tier joins
 // every list (the report's sweep, messages) by itself.
 std::vector<Tier> all_tiers();
+
+// A numeric parameter as a function of the frame number (frames counted from 1, as the
+// files frame-0001.png … are): keyframes (frame, value) with strictly increasing frames,
+// linear between them, the first value before the first keyframe and the last after the
+// last. Empty: the parameter's constant value every frame.
+struct Keyframes {
+  std::vector<std::pair<unsigned, double>> points;
+  bool empty() const { return points.empty(); }
+  // The value at `frame` (from 1); `constant` when there are no keyframes.
+  double at(unsigned frame, double constant) const;
+  // The largest value over every frame (`constant` when empty).
+  double max(double constant) const;
+  // Frames up to the last keyframe (0 when empty): after it the value holds.
+  unsigned span() const { return points.empty() ? 0 : points.back().first; }
+};
+
+// After-image feedback (Tron 2.0, seed 002), at the glow's resolution, on the texture the
+// blur reads (x: the downsampled glow sources):
+//   Sources  the previous frame's fed sources s, dimmed by g, added to this frame's:
+//            s_n = x + g·s_(n−1): a geometric series, steady state x / (1 − g) for g < 1
+//   Glow     the previous frame's blurred glow y, dimmed by g, added to the sources:
+//            y_n = B(x + g·y_(n−1)): steady state (I − gB)⁻¹Bx while g·‖B‖ < 1, where ‖B‖
+//            is the square of the profile's tap sum (x then y); past that it runs away
+enum class Afterimage { Off, Sources, Glow };
+std::string_view afterimage_name(Afterimage mode); // "off", "sources", "glow"
+
+// The built-in scene's round lights moving on circles over the frames (a moving scene for
+// the after-image): radius in scene heights, one turn every `period` frames. Off: still.
+struct Motion {
+  double radius = 0;
+  unsigned period = 0;
+  bool on() const { return period > 0 && radius > 0; }
+};
 
 struct GlowParams {
   Tier tier = Tier::Dx9;
@@ -108,6 +146,20 @@ struct GlowParams {
   float ps1x_max = ir::default_ps1x_max();
   // Tier dx7: how the blur weights become 8-bit vertex colours (weight_quantize.h).
   WeightRounding weight_rounding = WeightRounding::ErrorCarry;
+  // Every blur tap weight times this (both axes: the glow scales by its square); ≥ 0.
+  double weight_scale = 1;
+  Afterimage afterimage = Afterimage::Off;
+  double afterimage_gain = 0.5; // g, ≥ 0 (tier dx8: at most 4, as intensity)
+  // Ramped parameters (Keyframes; empty: the constant above). A ramp's values follow the
+  // constant's own range.
+  Keyframes intensity_ramp, weight_scale_ramp, afterimage_gain_ramp;
+  Motion motion; // the built-in scene only
+  // True when any frame differs from the first (a ramp or an after-image): --frames then
+  // reads every frame back.
+  bool animated() const {
+    return afterimage != Afterimage::Off || motion.on() || !intensity_ramp.empty() ||
+           !weight_scale_ramp.empty() || !afterimage_gain_ramp.empty();
+  }
 };
 
 struct GlowPlan {
@@ -131,6 +183,17 @@ GlowPlan build_glow(const GlowParams& params);
 GlowPlan build_glow_dx9(const GlowParams& params);
 GlowPlan build_glow_dx8(const GlowParams& params);
 GlowPlan build_glow_dx7(const GlowParams& params);
+
+// The after-image's loop gain: g (Sources), or g·S² (Glow: S = the tap sum of one axis
+// times the weight scale), with g and the scale at their largest over the frames. 0: off.
+double afterimage_loop_gain(const GlowParams& params, const std::vector<BlurTap>& taps);
+// The RGBA8 stall of a loop that multiplies a level L (in steps of 1/255) by k each frame:
+// the largest L with round(k·L) = L, i.e. L·(1 − k) < ½, so a fading trail stops there;
+// 0 when none (k ≤ ½) or k outside (0, 1).
+int rgba8_stall_level(double k);
+// Runaway (loop gain ≥ 1) and, in rgba8, the stall, each naming the fix; empty otherwise.
+std::vector<std::string> afterimage_warnings(const GlowParams& params,
+                                             const std::vector<BlurTap>& taps);
 
 // The per-axis read positions that average N texels (position in texels from the start of
 // the block, where texel k spans [k, k + 1]: the centres k + ½) and their weights (1/N).

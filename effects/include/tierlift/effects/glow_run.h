@@ -1,8 +1,13 @@
 // Running a glow plan over a scene on one device.
 #pragma once
 
+#include <functional>
+#include <string>
+#include <vector>
+
 #include "tierlift/effects/glow.h"
 #include "tierlift/effects/run_graph.h"
+#include "tierlift/image/io.h"
 
 namespace tierlift::effects {
 
@@ -22,7 +27,13 @@ struct GlowFrames {
 
 // `frames` frames of the plan over the scene on one device (run_frames): setup apart from
 // the steady state.
+// `read_back` names textures read back after every frame and handed to `sink` (frame from
+// 0): the frames of an animated glow (GlowParams::animated), without keeping them all.
+// `scene_at`, when set, gives the scene of frame f (from 0; asked for f ≥ 1): a moving scene.
+using SceneAt = std::function<img::ImageResult(unsigned frame)>;
+using GlowFrameSink = std::function<std::string(unsigned frame, const ImageMap& images)>;
 GlowFrames run_glow_frames(const GlowPlan& plan, const img::Image& scene, PassDevice& device,
-                           unsigned frames);
+                           unsigned frames, const std::vector<std::string>& read_back = {},
+                           const GlowFrameSink& sink = {}, const SceneAt& scene_at = {});
 
 } // namespace tierlift::effects

@@ -86,6 +86,15 @@ struct PassDesc {
   std::shared_ptr<const std::vector<uint32_t>> glsl_spirv;
   std::string glsl_file;
   std::vector<KernelTap> kernel;
+
+  // Per-frame constants (ramped parameters: run_frames). Frame f (from 0) uses entry
+  // min(f, size − 1) in place of vs_constants / ps_constants; empty: the same every frame.
+  // The devices never see these tables: the runner hands them at_frame(f), an ordinary pass,
+  // so every device honours them the same way.
+  std::vector<std::vector<pass::Vec4>> vs_constants_per_frame, ps_constants_per_frame;
+
+  // This pass as frame `frame` (from 0) runs it: the per-frame constants put in place.
+  PassDesc at_frame(unsigned frame) const;
 };
 
 struct EffectGraph {
@@ -102,7 +111,7 @@ struct EffectGraph {
 // target, a target or stencil named twice in a pass, more than 4 targets or targets of
 // different sizes, a stencil texture used as a colour texture (or the reverse), a stencil
 // state without a stencil texture or out of range (a reference above 255, a depth
-// test), a triangle index past the vertices.
+// test), a triangle index past the vertices, an empty entry in a per-frame constant table.
 std::string check_graph(const EffectGraph& graph);
 
 } // namespace tierlift::effects

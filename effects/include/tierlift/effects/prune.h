@@ -15,6 +15,8 @@
 //    pair) happens where every pass is compiled, as before.
 // A scene with a non-finite value is not pruned (a NaN or an infinity times a weight of 0
 // is not 0).
+// Nor is a graph whose frames differ (per-frame constants, or a feedback texture read before
+// the frame writes it: the after-image); the caller leaves a moving scene unpruned as well.
 #pragma once
 
 #include <string>

@@ -64,8 +64,18 @@ struct FramesRun {
 // textures carried from one frame into the next (a pass that blends onto its target sees
 // what the frame before left there: what feedback effects such as an after-image need; a
 // graph whose every texture is first written by a Replace pass gives the same image every
-// frame). Nothing is read back between frames; `images` holds every texture afterwards.
+// frame). Frame f (from 0) runs every pass as PassDesc::at_frame(f) (per-frame constants).
+// Nothing is read back between frames unless `sink` is given: it is called after each
+// frame's finish() (outside the frame's time) and may read textures from the device (the
+// frames of an after-image); an error from it ends the run. `images` holds every texture
+// afterwards. run_graph is frame 0 of this.
+// `inputs_at`, when set, is asked before every frame f ≥ 1 for the input textures that
+// change (a moving scene): it fills the map (input name → image, at the declared size; it
+// is stored in the declared format), and the device replaces them (update_input).
+using FrameSink = std::function<std::string(unsigned frame, PassDevice& device)>;
+using FrameInputs = std::function<std::string(unsigned frame, ImageMap& changed)>;
 FramesRun run_frames(const EffectGraph& graph, PassDevice& device, ImageMap& images,
-                     unsigned frames);
+                     unsigned frames, const FrameSink& sink = {},
+                     const FrameInputs& inputs_at = {});
 
 } // namespace tierlift::effects

@@ -72,6 +72,9 @@ SceneLoad scene_from_png(const std::string& png_path);
 // The scene image as RGBA32F: the built-in made in code at params' size, or the PNG read
 // again (its size must still equal params.width × params.height).
 img::ImageResult load_scene_image(const Scene& scene);
+// Frame `frame` (from 1) of a moving scene (params.motion: the built-in scene's lights on
+// their circles, the angle 2π·(frame − 1)/period); frame 1 is load_scene_image's.
+img::ImageResult load_scene_image(const Scene& scene, unsigned frame);
 
 // What a run with these parameters should be told, one line each; empty when all is well.
 // Weights that do not sum to one: "profile weights sum to 0.98: the glow is 3.96 % darker

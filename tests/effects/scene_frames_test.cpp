@@ -1,0 +1,72 @@
+// The frame-to-frame fields of a scene's "glow" (ramped numbers, the after-image): read into
+// GlowParams, and every bad value named by JSON pointer at its line:col (counted by hand).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "tierlift/effects/scene.h"
+
+namespace tierlift::effects {
+namespace {
+
+SceneLoad parse(const std::string& text) {
+  return parse_scene(text, "s.json", "");
+}
+
+TEST(SceneFrames, RampsAndAfterimageAreRead) {
+  SceneLoad s = parse(R"({"glow": {"intensity": {"keyframes": [[1, 0.5], [9, 2]]},
+    "weight_scale": 0.9, "afterimage": {"mode": "glow", "gain": {"keyframes": [[4, 0.25]]}}}})");
+  ASSERT_TRUE(s) << s.error;
+  const GlowParams& p = s.scene->params;
+  ASSERT_EQ(p.intensity_ramp.points.size(), 2u);
+  EXPECT_EQ(p.intensity_ramp.points[1], (std::pair<unsigned, double>{9, 2.0}));
+  EXPECT_EQ(p.intensity, 0.5); // the first keyframe's value
+  EXPECT_EQ(p.weight_scale, 0.9);
+  EXPECT_TRUE(p.weight_scale_ramp.empty());
+  EXPECT_EQ(p.afterimage, Afterimage::Glow);
+  EXPECT_EQ(p.afterimage_gain, 0.25);
+  EXPECT_EQ(p.afterimage_gain_ramp.span(), 4u);
+  EXPECT_TRUE(p.animated());
+  EXPECT_FALSE(parse("{}").scene->params.animated());
+}
+
+struct Bad {
+  const char* text;
+  const char* where;
+  const char* says;
+};
+
+class SceneFramesErrors : public ::testing::TestWithParam<Bad> {};
+
+TEST_P(SceneFramesErrors, NameTheValueWithItsPosition) {
+  const Bad& b = GetParam();
+  SceneLoad s = parse(b.text);
+  ASSERT_FALSE(s) << b.text;
+  EXPECT_NE(s.error.find(b.where), std::string::npos) << s.error;
+  EXPECT_NE(s.error.find(b.says), std::string::npos) << s.error;
+  EXPECT_NE(s.error.find('^'), std::string::npos) << s.error;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Fields, SceneFramesErrors,
+    ::testing::Values(
+        Bad{R"({"glow": {"intensity": {"keyframes": [[1, 0.5], [1, 2]]}}})",
+            "s.json:1:50: error: /glow/intensity/keyframes/1/0", "does not come after frame 1"},
+        Bad{R"({"glow": {"intensity": {"keyframes": [[1, 2000]]}}})",
+            "s.json:1:43: error: /glow/intensity/keyframes/0/1", "outside 0..1000"},
+        Bad{R"({"glow": {"intensity": {"keyframes": [[0, 1]]}}})",
+            "s.json:1:40: error: /glow/intensity/keyframes/0/0", "outside 1..100000"},
+        Bad{R"({"glow": {"intensity": {"keyframes": []}}})",
+            "s.json:1:38: error: /glow/intensity/keyframes", "not a non-empty array"},
+        Bad{R"({"glow": {"intensity": "bright"}})", "s.json:1:24: error: /glow/intensity",
+            "neither a number"},
+        Bad{R"({"glow": {"afterimage": {"mode": "echo"}}})",
+            "s.json:1:34: error: /glow/afterimage/mode", "not an after-image"},
+        Bad{R"({"glow": {"afterimage": {"mode": "glow", "gain": 5}}})",
+            "s.json:1:50: error: /glow/afterimage/gain", "outside 0..4"},
+        Bad{R"({"glow": {"afterimage": {"gain": 0.5}}})", "error: /glow/afterimage", "mode"},
+        Bad{R"({"glow": {"weight_scale": {"keys": []}}})", "error: /glow/weight_scale", "keys"}));
+
+} // namespace
+} // namespace tierlift::effects
