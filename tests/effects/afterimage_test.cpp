@@ -205,6 +205,7 @@ TEST(Afterimage, Rgba8StallOnTheCpu) {
   CpuPassDevice cpu(2);
   rgba8_stall(cpu, Tier::Dx9);
   rgba8_stall(cpu, Tier::Dx8);
+  rgba8_stall(cpu, Tier::Dx7); // the dx8 mix listing; the blur is the stage states'
 }
 TEST(Ramping, IntensityKeyframesOnTheCpu) {
   CpuPassDevice cpu(2);
@@ -225,6 +226,7 @@ TEST_F(AfterimageVulkan, Rgba8Stall) {
   auto vk = make_vulkan_pass_device(*dev);
   rgba8_stall(*vk, Tier::Dx9);
   rgba8_stall(*vk, Tier::Dx8);
+  rgba8_stall(*vk, Tier::Dx7);
 }
 TEST_F(AfterimageVulkan, IntensityKeyframes) {
   auto vk = make_vulkan_pass_device(*dev);
