@@ -102,7 +102,7 @@ CompileResult compile_fragment(std::string_view source, const std::string& file_
     out.error = render_glslang_log(program.getInfoLog(), text, file_name);
     return out;
   }
-  program.buildReflection();
+  program.buildReflection(EShReflectionIntermediateIO); // a fragment stage alone has inputs
   FragmentShader fs;
   fs.file = file_name;
   for (int i = 0; i < program.getNumUniformVariables(); ++i) {
@@ -130,6 +130,20 @@ CompileResult compile_fragment(std::string_view source, const std::string& file_
   }
   std::sort(fs.samplers.begin(), fs.samplers.end(),
             [](const Sampler& a, const Sampler& b) { return a.stage < b.stage; });
+  for (int i = 0; i < program.getNumPipeInputs(); ++i) {
+    const glslang::TObjectReflection& in = program.getPipeInput(i);
+    const glslang::TType* type = in.getType();
+    if (!type || !type->getQualifier().hasLocation() || in.name.starts_with("gl_")) continue;
+    // A rewritten varying is known by its name in the user's source (the preamble's
+    // "#define NAME tierlift_varyingK").
+    std::string name = in.name;
+    std::smatch m;
+    const std::regex define("#define ([A-Za-z_][A-Za-z0-9_]*) " + in.name + "\\.");
+    if (std::regex_search(preamble, m, define)) name = m[1];
+    fs.inputs.push_back({name, type->getQualifier().layoutLocation});
+  }
+  std::sort(fs.inputs.begin(), fs.inputs.end(),
+            [](const Input& a, const Input& b) { return a.location < b.location; });
   glslang::SpvOptions spv;
   spv.validate = false; // spirv-val below, with the rules tierlift's own modules meet
   glslang::GlslangToSpv(*program.getIntermediate(EShLangFragment), fs.spirv, &spv);

@@ -31,10 +31,18 @@ struct Sampler {
   uint32_t stage = 0; // s#: descriptor binding − kFirstSamplerBinding
 };
 
+// An input the shader reads (a legacy `varying`, or a 4.50 `in`): the interpolated vec4 the
+// vertex stage writes at that location (oT#, # = location).
+struct Input {
+  std::string name;
+  uint32_t location = 0;
+};
+
 struct FragmentShader {
   std::string file;              // as diagnostics name it
   std::vector<uint32_t> spirv;   // validated by spirv-val (Vulkan 1.1)
   std::vector<Sampler> samplers; // the samplers the shader reads, by stage
+  std::vector<Input> inputs;     // by location
 };
 
 struct CompileResult {

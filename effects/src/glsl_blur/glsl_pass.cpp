@@ -1,0 +1,93 @@
+// A user's GLSL fragment shader as a one-pass graph (glsl_pass.h).
+#include "tierlift/effects/glsl_pass.h"
+
+#include <fmt/format.h>
+
+#include "tierlift/effects/builtin_listing.h"
+
+#include "tierlift/asm/load.h"
+
+namespace tierlift::effects {
+namespace {
+
+constexpr std::string_view kQuadVs = "glow/quad4_coords.vsh";
+
+// The twin the Vulkan device takes the pass's interface from: t0..t3 and each sampled stage
+// read, so the pair's linking keeps every coordinate the vertex stage writes and every
+// sampler binding. Its own result is never drawn (the GLSL's SPIR-V is).
+std::string twin_text(const glsl::FragmentShader& shader) {
+  std::string t = "ps_2_0\n";
+  for (uint32_t k = 0; k < kGlslPassInputs; ++k) t += fmt::format("dcl t{}\n", k);
+  for (const glsl::Sampler& s : shader.samplers) t += fmt::format("dcl_2d s{}\n", s.stage);
+  t += "mov r0, t0\nadd r0, r0, t1\nadd r0, r0, t2\nadd r0, r0, t3\n"; // one t# per instruction
+  for (const glsl::Sampler& s : shader.samplers)
+    t += fmt::format("texld r1, t0, s{0}\nadd r0, r0, r1\n", s.stage);
+  t += "mov oC0, r0\n";
+  return t;
+}
+
+std::shared_ptr<const ir::Program> assemble(std::string text, const std::string& name,
+                                            std::string* error) {
+  ir::SourceManager sources;
+  ir::DiagnosticSink diags;
+  const uint32_t file = sources.add(name, std::move(text));
+  as::LoadOptions options;
+  options.warnings = false;
+  as::LoadResult r = as::load_listing(file, sources, diags, options);
+  if (!r.program) {
+    *error = ir::render_text(diags, sources);
+    return nullptr;
+  }
+  return std::make_shared<const ir::Program>(std::move(*r.program));
+}
+
+} // namespace
+
+GlowPlan build_glsl_pass(const glsl::FragmentShader& shader, uint32_t width, uint32_t height,
+                         img::Format format, pass::Filter filter) {
+  GlowPlan plan;
+  if (width == 0 || height == 0 || width > img::kMaxDimension || height > img::kMaxDimension) {
+    plan.error = fmt::format("size {}x{}: expected 1..{} each", width, height, img::kMaxDimension);
+    return plan;
+  }
+  for (const glsl::Input& in : shader.inputs)
+    if (in.location >= kGlslPassInputs) {
+      plan.error = fmt::format("{}: error: input '{}' is at location {}; the pass's vertex "
+                               "stage writes texture coordinates at locations 0..{} only\n",
+                               shader.file, in.name, in.location, kGlslPassInputs - 1);
+      return plan;
+    }
+  std::string error;
+  auto vs = builtin_listing(kQuadVs, &error);
+  auto twin =
+      vs ? assemble(twin_text(shader), "(the GLSL pass's generated ps_2_0 twin)", &error) : nullptr;
+  if (!vs || !twin) {
+    plan.error = error;
+    return plan;
+  }
+  EffectGraph& g = plan.graph;
+  g.textures.push_back({std::string(kSceneTexture), width, height, format, true});
+  g.textures.push_back({std::string(kFinalTexture), width, height, format, false});
+  PassDesc p;
+  p.name = "glsl";
+  p.vs = vs;
+  p.ps = twin;
+  // oTk = uv · c(k+4) + ck: the quad uv plus half a texel, for k = 0..3.
+  const pass::Vec4 half{float(0.5 / width), float(0.5 / height), 0, 0}, one{1, 1, 1, 1};
+  p.vs_constants = {half, half, half, half, one, one, one, one};
+  pass::SamplerState sampler;
+  sampler.filter = filter;
+  sampler.address_u = sampler.address_v = pass::AddressMode::Clamp;
+  for (const glsl::Sampler& s : shader.samplers)
+    p.textures.push_back({s.stage, std::string(kSceneTexture), sampler});
+  p.target = std::string(kFinalTexture);
+  p.glsl_spirv = std::make_shared<const std::vector<uint32_t>>(shader.spirv);
+  p.glsl_file = shader.file;
+  g.passes.push_back(std::move(p));
+  plan.glow_width = width;
+  plan.glow_height = height;
+  if (std::string e = check_graph(g); !e.empty()) plan.error = e;
+  return plan;
+}
+
+} // namespace tierlift::effects
