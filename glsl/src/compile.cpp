@@ -77,7 +77,12 @@ CompileResult compile_fragment(std::string_view source, const std::string& file_
   CompileResult out;
   const std::string text(source); // what diagnostics show
   std::string rewritten = text;
-  const std::string preamble = std::string(kLegacyPreamble) + rewrite_varyings(rewritten);
+  // The output at location 0 is declared only for a source that writes gl_FragColor: a
+  // Vulkan source declares its own, and a second one at location 0 would overlap it.
+  std::string legacy = kLegacyPreamble;
+  if (text.find("gl_FragColor") == std::string::npos)
+    legacy.erase(legacy.find("layout(location = 0) out"));
+  const std::string preamble = legacy + rewrite_varyings(rewritten);
   const char* strings[] = {rewritten.c_str()};
   const int lengths[] = {static_cast<int>(rewritten.size())};
   const char* names[] = {file_name.c_str()};

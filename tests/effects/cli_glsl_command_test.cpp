@@ -140,6 +140,27 @@ TEST_F(CliGlslCommand, RefusesWhatThePassCannotFeed) {
   EXPECT_FALSE(fs::exists(dir / "o.png"));
 }
 
+// A Vulkan GLSL source with its own output at location 0 passes through as it is.
+TEST_F(CliGlslCommand, VulkanGlslWithItsOwnOutput) {
+  std::ofstream(dir / "own.frag") << "#version 450\nlayout(location = 0) in vec4 uv;\n"
+                                     "layout(location = 0) out vec4 o;\n"
+                                     "void main() { o = vec4(uv.y, uv.x, 0.25, 1.0); }\n";
+  const fs::path out = dir / "own.pfm";
+  std::string text;
+  const int rc = glsl((dir / "own.frag").string() + " --size 4x2 -o " + out.string(), text);
+  if (no_device(rc, text))
+    TIERLIFT_SKIP_UNLESS_REQUIRED(tierlift::test::kRequireVulkan, "no Vulkan device: " + text);
+  ASSERT_EQ(rc, 0) << text;
+  auto got = tierlift::img::read_image(out.string());
+  ASSERT_TRUE(got) << got.message();
+  for (uint32_t y = 0; y < 2; ++y)
+    for (uint32_t x = 0; x < 4; ++x) {
+      EXPECT_NEAR(got->at(x, y)[0], (y + 0.5) / 2, 1e-6);
+      EXPECT_NEAR(got->at(x, y)[1], (x + 0.5) / 4, 1e-6);
+      EXPECT_NEAR(got->at(x, y)[2], 0.25, 1e-7);
+    }
+}
+
 TEST_F(CliGlslCommand, UsageAndIoErrors) {
   std::string text;
   // Never over its own input.
