@@ -66,7 +66,13 @@ INSTANTIATE_TEST_SUITE_P(
         Bad{R"({"glow": {"afterimage": {"mode": "glow", "gain": 5}}})",
             "s.json:1:50: error: /glow/afterimage/gain", "outside 0..4"},
         Bad{R"({"glow": {"afterimage": {"gain": 0.5}}})", "error: /glow/afterimage", "mode"},
-        Bad{R"({"glow": {"weight_scale": {"keys": []}}})", "error: /glow/weight_scale", "keys"}));
+        Bad{R"({"glow": {"weight_scale": {"keys": []}}})", "error: /glow/weight_scale", "keys"},
+        // Missing members are reported, never read (the fuzzer found a read of a missing
+        // "period" through const operator[], undefined behaviour in nlohmann).
+        Bad{R"({"glow": {"motion": {"radius": 0.1, "perimod": 16}}})", "error: /glow/motion",
+            "missing \"period\""},
+        Bad{R"({"glow": {"motion": {"period": 8}}})", "error: /glow/motion", "missing \"radius\""},
+        Bad{R"({"glow": {"intensity": {}}})", "error: /glow/intensity", "missing \"keyframes\""}));
 
 } // namespace
 } // namespace tierlift::effects

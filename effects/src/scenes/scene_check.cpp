@@ -91,6 +91,12 @@ void FieldChecker::type_error(const Json& v, const std::string& pointer,
   error(pointer, fmt::format("{} is {}; expected {}", shown(v), type_phrase(v), expected));
 }
 
+const Json* member(const Json& object, std::string_view key) {
+  if (!object.is_object()) return nullptr;
+  auto it = object.find(key);
+  return it == object.end() ? nullptr : &*it;
+}
+
 bool FieldChecker::object(const Json& v, const std::string& pointer,
                           std::span<const std::string_view> keys,
                           std::span<const std::string_view> required) {

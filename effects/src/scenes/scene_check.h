@@ -24,6 +24,11 @@ struct NumberRange {
   bool open_low = false;
 };
 
+// The member `key` of an object, or null (a missing key, or `object` not an object). Reading
+// a missing key with const operator[] is undefined behaviour in nlohmann, so every optional
+// or required member is read through this.
+const Json* member(const Json& object, std::string_view key);
+
 class FieldChecker {
 public:
   FieldChecker(std::string_view text, uint32_t file, const JsonLocations& where)

@@ -13,11 +13,6 @@ namespace {
 
 constexpr std::string_view kEffects[] = {"glow", "radial-beams", "stencil-outline", "glsl-blur"};
 
-const Json* member(const Json& object, std::string_view key) {
-  auto it = object.find(key);
-  return it == object.end() ? nullptr : &*it;
-}
-
 std::string expected_effects() {
   std::string out;
   for (size_t i = 0; i < std::size(kEffects); ++i)

@@ -45,7 +45,8 @@ void read_ramped(const Json& v, const std::string& at, FieldChecker& c, NumberRa
                  double& constant, Keyframes& ramp) {
   if (v.is_object()) {
     if (!c.object(v, at, kRampKeys, kRampKeys)) return;
-    read_keyframes(v["keyframes"], at + "/keyframes", c, range, ramp);
+    if (const Json* k = member(v, "keyframes"))
+      read_keyframes(*k, at + "/keyframes", c, range, ramp);
     if (!ramp.empty()) constant = ramp.points.front().second;
     return;
   }
@@ -60,7 +61,8 @@ void read_ramped(const Json& v, const std::string& at, FieldChecker& c, NumberRa
 void read_afterimage(const Json& v, const std::string& at, FieldChecker& c, GlowParams& p) {
   if (!c.object(v, at, kAfterimageKeys, std::span<const std::string_view>(kAfterimageKeys, 1)))
     return;
-  if (auto mode = c.string(v["mode"], at + "/mode")) {
+  const Json* mode_json = member(v, "mode");
+  if (auto mode = mode_json ? c.string(*mode_json, at + "/mode") : std::nullopt) {
     if (*mode == "sources")
       p.afterimage = Afterimage::Sources;
     else if (*mode == "glow")
@@ -68,18 +70,20 @@ void read_afterimage(const Json& v, const std::string& at, FieldChecker& c, Glow
     else if (*mode != "off")
       c.error(at + "/mode", fmt::format("{} is not an after-image; expected \"sources\", "
                                         "\"glow\" or \"off\"",
-                                        FieldChecker::shown(v["mode"])));
+                                        FieldChecker::shown(*mode_json)));
   }
-  if (v.contains("gain"))
-    read_ramped(v["gain"], at + "/gain", c, NumberRange{0, 4}, p.afterimage_gain,
+  if (const Json* gain = member(v, "gain"))
+    read_ramped(*gain, at + "/gain", c, NumberRange{0, 4}, p.afterimage_gain,
                 p.afterimage_gain_ramp);
 }
 
 void read_motion(const Json& v, const std::string& at, FieldChecker& c, GlowParams& p) {
   if (!c.object(v, at, kMotionKeys, kMotionKeys)) return;
-  if (auto r = c.number(v["radius"], at + "/radius", NumberRange{0, 0.5})) p.motion.radius = *r;
-  if (auto n = c.integer(v["period"], at + "/period", 1, kMaxKeyframe))
-    p.motion.period = unsigned(*n);
+  if (const Json* radius = member(v, "radius"))
+    if (auto r = c.number(*radius, at + "/radius", NumberRange{0, 0.5})) p.motion.radius = *r;
+  if (const Json* period = member(v, "period"))
+    if (auto n = c.integer(*period, at + "/period", 1, kMaxKeyframe))
+      p.motion.period = unsigned(*n);
 }
 
 } // namespace tierlift::effects

@@ -25,11 +25,6 @@ constexpr NumberRange kWeight{0, 1000};
 constexpr NumberRange kIntensity{0, 1000};
 constexpr int64_t kMaxTaps = 2049; // radius 1024, the limit of sample_blur_profile
 
-const Json* member(const Json& object, std::string_view key) {
-  auto it = object.find(key);
-  return it == object.end() ? nullptr : &*it;
-}
-
 void read_gaussians(const Json& v, const std::string& at, FieldChecker& c, BlurProfile& out) {
   if (!v.is_array()) {
     c.error(at, fmt::format("{} is not an array; expected [{{\"sigma\": …, \"weight\": …}}, …]",

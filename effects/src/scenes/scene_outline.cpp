@@ -17,11 +17,6 @@ constexpr NumberRange kPolygonRadius{0, 32768, true};
 constexpr NumberRange kDegrees{-360, 360};
 constexpr NumberRange kChannel{0, 1000};
 
-const Json* member(const Json& object, std::string_view key) {
-  auto it = object.find(key);
-  return it == object.end() ? nullptr : &*it;
-}
-
 // [a, b, …] of `n` numbers in `range` into out[0..n).
 template <size_t N>
 void read_numbers(const Json& v, const std::string& at, FieldChecker& c, NumberRange range,

@@ -24,11 +24,6 @@ struct Size {
   uint32_t width = 0, height = 0;
 };
 
-const Json* member(const Json& object, std::string_view key) {
-  auto it = object.find(key);
-  return it == object.end() ? nullptr : &*it;
-}
-
 // nlohmann's message without its "[json.exception…] parse error at line…, column…:" head:
 // the position is ours.
 std::string syntax_message(const Json::parse_error& e) {

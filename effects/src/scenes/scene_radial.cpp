@@ -17,11 +17,6 @@ constexpr NumberRange kStep{0, 0.5, true};
 constexpr NumberRange kAmplitude{0, 4096};
 constexpr NumberRange kRate{0, 1e6, true};
 
-const Json* member(const Json& object, std::string_view key) {
-  auto it = object.find(key);
-  return it == object.end() ? nullptr : &*it;
-}
-
 } // namespace
 
 std::span<const std::string_view> scene_radial_keys() {
