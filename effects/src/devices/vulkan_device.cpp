@@ -1,6 +1,8 @@
 // The Vulkan device behind the PassDevice interface: the
 // graph's textures live in a vulkan::TextureSet for the run, so passes read and write device
-// memory and nothing comes back to the host until read_texture asks for it.
+// memory and nothing comes back to the host until read_texture asks for it. A stencil
+// texture (TextureDesc::stencil) is a stencil buffer there; read_texture returns it as the
+// CPU device does (RGBA32F, the value in red), so the agreement table compares it too.
 //
 // begin_run makes every pass's draw ahead (SPIR-V, pipeline, descriptor set, framebuffer:
 // the set keeps them), so a pass costs its commands only; passes are recorded into one
@@ -29,7 +31,8 @@ public:
     textures_.clear();
     for (const TextureDesc& t : graph.textures) {
       vulkan::TextureId id{};
-      std::string e = textures_.create(t.width, t.height, t.format, id);
+      std::string e = t.stencil ? textures_.create_stencil(t.width, t.height, id)
+                                : textures_.create(t.width, t.height, t.format, id);
       if (auto it = inputs.find(t.name); e.empty() && it != inputs.end())
         e = textures_.upload(id, it->second);
       if (!e.empty()) {
@@ -44,7 +47,7 @@ public:
     for (const PassDesc& desc : graph.passes) {
       Draw draw;
       std::string e = make_draw(desc, draw);
-      if (e.empty()) e = textures_.prepare(draw.pass, draw.stages, draw.target);
+      if (e.empty()) e = textures_.prepare(draw.pass, draw.stages, draw.targets);
       if (!e.empty()) {
         drop();
         return fmt::format("pass '{}': {}", desc.name, e);
@@ -58,7 +61,7 @@ public:
     if (!graph_) return "no run was begun";
     Draw draw;
     if (std::string e = make_draw(desc, draw); !e.empty()) return e;
-    vulkan::DrawResult r = textures_.draw(draw.pass, draw.stages, draw.target);
+    vulkan::DrawResult r = textures_.draw(draw.pass, draw.stages, draw.targets);
     return r.ok ? std::string() : r.error;
   }
 
@@ -82,7 +85,7 @@ private:
   struct Draw {
     pass::Pass pass;
     vulkan::StageTextures stages{};
-    vulkan::TextureId target{};
+    vulkan::RenderTargets targets; // oC0..oC3 and the stencil buffer
   };
 
   std::string make_draw(const PassDesc& desc, Draw& out) const {
@@ -91,6 +94,19 @@ private:
     if (!pass) return error;
     auto target = ids_.find(desc.target);
     if (target == ids_.end()) return fmt::format("no texture '{}'", desc.target);
+    if (desc.more_targets.size() + 1 > out.targets.color.size())
+      return fmt::format("pass '{}': more than {} render targets", desc.name,
+                         out.targets.color.size());
+    for (size_t i = 0; i < desc.more_targets.size(); ++i) {
+      auto more = ids_.find(desc.more_targets[i]);
+      if (more == ids_.end()) return fmt::format("no texture '{}'", desc.more_targets[i]);
+      out.targets.color[i + 1] = more->second;
+    }
+    if (!desc.stencil.empty()) {
+      auto s = ids_.find(desc.stencil);
+      if (s == ids_.end()) return fmt::format("no stencil texture '{}'", desc.stencil);
+      out.targets.stencil = s->second;
+    }
     for (const TextureBind& b : desc.textures) {
       auto it = ids_.find(b.texture); // make_pass checked the name and the stage already
       if (it == ids_.end() || b.stage >= out.stages.size())
@@ -98,7 +114,7 @@ private:
       out.stages[b.stage] = it->second;
     }
     out.pass = std::move(*pass);
-    out.target = target->second;
+    out.targets.color[0] = target->second;
     return {};
   }
 

@@ -103,6 +103,15 @@ RunAgreement compare_runs(const GraphRun& a, const ImageMap& a_images, const Gra
     }
     if (!add_row(out, pa.pass, pa.target, pa.result, pb.result, pa.midpoints, pb.midpoints))
       return out;
+    if (pa.more.size() != pb.more.size()) {
+      out.error = fmt::format("pass '{}' wrote {} and {} further targets", pa.pass, pa.more.size(),
+                              pb.more.size());
+      return out;
+    }
+    for (size_t k = 0; k < pa.more.size(); ++k)
+      if (!add_row(out, pa.pass, pa.more[k].target, pa.more[k].result, pb.more[k].result,
+                   pa.more[k].midpoints, pb.more[k].midpoints))
+        return out;
   }
   auto fa = a_images.find(frame), fb = b_images.find(frame);
   if (fa == a_images.end() || fb == b_images.end()) {

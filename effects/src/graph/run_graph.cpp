@@ -122,7 +122,7 @@ GraphRun run_graph(const EffectGraph& graph, PassDevice& device, ImageMap& image
       run.error = fmt::format("pass '{}' on {}: {}", desc.name, device.name(), e);
       return run;
     }
-    PassRecord rec{desc.name, desc.target, {}, ms_since(t0), {}};
+    PassRecord rec{desc.name, desc.target, {}, ms_since(t0), {}, {}};
     if (keep_pass_images)
       if (std::string e = device.read_texture(desc.target, rec.result); !e.empty()) {
         run.error = fmt::format("pass '{}' on {}: reading '{}' back: {}", desc.name, device.name(),
@@ -130,6 +130,18 @@ GraphRun run_graph(const EffectGraph& graph, PassDevice& device, ImageMap& image
         return run;
       }
     if (keep_pass_images) device.rounding_midpoints(desc.target, rec.midpoints);
+    std::vector<std::string> extra = desc.more_targets;
+    if (!desc.stencil.empty() && desc.depth_stencil.stencil_test) extra.push_back(desc.stencil);
+    for (const std::string& name : keep_pass_images ? extra : std::vector<std::string>{}) {
+      PassRecord::Extra x{name, {}, {}};
+      if (std::string e = device.read_texture(name, x.result); !e.empty()) {
+        run.error = fmt::format("pass '{}' on {}: reading '{}' back: {}", desc.name, device.name(),
+                                name, e);
+        return run;
+      }
+      device.rounding_midpoints(name, x.midpoints);
+      rec.more.push_back(std::move(x));
+    }
     run.passes.push_back(std::move(rec));
   }
   // Every texture back into the map (a failed run leaves the map as it was given).

@@ -17,6 +17,14 @@ struct PassRecord {
   img::Image result;              // the target after this pass (only when keep_pass_images)
   double ms = 0;                  // run_pass only (a readback for keep_pass_images is not counted)
   std::vector<uint8_t> midpoints; // the device's rounding-midpoint mask of `result`, if any
+  // With keep_pass_images, what else the pass wrote: its targets beyond oC0 and its stencil
+  // buffer (read as the device's read_texture gives it), compared like `result`.
+  struct Extra {
+    std::string target;
+    img::Image result;
+    std::vector<uint8_t> midpoints;
+  };
+  std::vector<Extra> more;
 };
 
 struct GraphRun {

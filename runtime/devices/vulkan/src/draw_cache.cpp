@@ -49,6 +49,21 @@ std::optional<std::string> draw_key(const pass::Pass& pass, const DrawTextures& 
   k.put(c.ps1x_fixed_bits);
   k.put(c.rounding);
   k.put(textures.target);
+  for (const Resident* m : textures.more_targets) k.put(m);
+  k.put(textures.stencil);
+  k.put(pass.color_targets);
+  const pass::DepthStencilState& ds = pass.depth_stencil;
+  k.put(ds.depth_test);
+  k.put(ds.depth_write);
+  k.put(ds.depth_func);
+  k.put(ds.stencil_test);
+  k.put(ds.stencil_func);
+  k.put(ds.stencil_fail);
+  k.put(ds.stencil_depth_fail);
+  k.put(ds.stencil_pass);
+  k.put(ds.stencil_ref);
+  k.put(ds.stencil_read_mask);
+  k.put(ds.stencil_write_mask);
   for (uint32_t s = 0; s < pass::kMaxSamplers; ++s) {
     const pass::TextureBinding& b = pass.textures[s];
     if (!textures.stages[s] && b.image) return std::nullopt; // host pixels: not cached
@@ -99,7 +114,8 @@ PreparedDraw& DrawCache::insert(const std::string& key, const pass::Pass& pass,
 void DrawCache::forget(const Resident* r) {
   for (auto it = entries_.begin(); it != entries_.end();) {
     const PreparedDraw& d = it->second->draw;
-    bool uses = d.target == r;
+    bool uses = d.target == r || d.stencil == r;
+    for (const Resident* m : d.more_targets) uses = uses || m == r;
     for (const Resident* s : d.sampled) uses = uses || s == r;
     it = uses ? entries_.erase(it) : std::next(it);
   }

@@ -116,6 +116,60 @@ struct LayoutSnapshot {
   }
 };
 
+// Every oC# below pass.color_targets must be an output of the pixel stage: Vulkan leaves an
+// attachment without a fragment output undefined (D3D9's validator already requires oC0..
+// oC(n-1) to be written when oCn is; here the pass may name more targets than it writes).
+std::string check_color_outputs(const pass::Pass& pass, const codegen::ShaderModule& ps) {
+  for (uint32_t i = 1; i < pass.color_targets; ++i) {
+    bool written = false;
+    for (const auto& iv : ps.interface)
+      written = written || (iv.kind == codegen::InterfaceKind::Output && iv.location == i);
+    if (!written)
+      return fmt::format("the pass draws into {} render targets, but its pixel program does not "
+                         "write oC{}",
+                         pass.color_targets, i);
+  }
+  return {};
+}
+
+// The targets beyond oC0 and the stencil buffer: bound as the pass asks, each the size of
+// oC0, none of them twice.
+std::string check_targets(const pass::Pass& pass, const DrawTextures& t) {
+  const Resident& first = *t.target;
+  std::vector<const Resident*> seen{&first};
+  for (uint32_t i = 1; i < 4; ++i) {
+    const Resident* r = t.more_targets[i - 1];
+    if (i >= pass.color_targets) {
+      if (r)
+        return fmt::format("render target {} is bound, but the pass draws into {}", i,
+                           pass.color_targets);
+      continue;
+    }
+    if (!r) return fmt::format("render target {} (oC{}) is not bound", i, i);
+    if (r->stencil) return fmt::format("render target {} is a stencil buffer", i);
+    if (r->width != first.width || r->height != first.height)
+      return fmt::format("render target {} is {}x{}, render target 0 is {}x{}: every target of "
+                         "a pass has one size",
+                         i, r->width, r->height, first.width, first.height);
+    for (const Resident* s : seen)
+      if (s == r) return fmt::format("render target {} is bound twice", i);
+    seen.push_back(r);
+  }
+  const pass::DepthStencilState& ds = pass.depth_stencil;
+  if (ds.depth_test || ds.depth_write)
+    return "the vulkan device has a stencil buffer but no depth buffer";
+  if (ds.stencil_test && !t.stencil)
+    return "the pass has a stencil test but no stencil buffer is bound";
+  if (t.stencil) {
+    if (!t.stencil->stencil) return "the stencil buffer is a colour texture";
+    if (t.stencil->width != first.width || t.stencil->height != first.height)
+      return fmt::format("the stencil buffer is {}x{}, the render target {}x{}", t.stencil->width,
+                         t.stencil->height, first.width, first.height);
+  }
+  if (first.stencil) return "render target 0 is a stencil buffer";
+  return {};
+}
+
 } // namespace
 
 std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawTextures& textures,
@@ -123,11 +177,14 @@ std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawText
   if (!textures.target) return "no render target";
   Resident& target = *textures.target;
   out.target = &target;
+  out.more_targets = textures.more_targets;
+  out.stencil = textures.stencil;
   if (pass.vertex_program && pass.vertex_program->stage() != ir::ShaderStage::Vertex)
     return "the vertex program is not a vertex shader";
   if (pass.pixel_program && pass.pixel_program->stage() != ir::ShaderStage::Pixel)
     return "the pixel program is not a pixel shader";
   if (ir::Status s = pass::check_supported(pass, kCapabilities, "vulkan"); !s) return s.message();
+  if (std::string e = check_targets(pass, textures); !e.empty()) return e;
 
   // Programs → SPIR-V.
   auto vs_prog = pass.vertex_program ? pass.vertex_program : passthrough_vertex_program();
@@ -140,6 +197,7 @@ std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawText
   auto pair = codegen::compile_pair(*vs_prog, *ps_prog, co, diags);
   if (!pair) return join_diagnostics(diags);
   if (!pair->vs.samplers.empty()) return "vertex-stage texture sampling is not supported";
+  if (std::string e = check_color_outputs(pass, pair->ps); !e.empty()) return e;
 
   Geometry geo;
   if (std::string e = build_geometry(pass, geo); !e.empty()) return e;
@@ -155,8 +213,9 @@ std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawText
     Resident*& r = out.sampled[s];
     if (r) continue;
     r = textures.stages[s];
-    if (r == &target)
-      return fmt::format("s{}: a pass cannot sample its own render target", si.stage);
+    bool own = r && r == &target;
+    for (const Resident* m : textures.more_targets) own = own || (r && r == m);
+    if (own) return fmt::format("s{}: a pass cannot sample its own render target", si.stage);
     if (!r) {
       const img::Image& im = pass.textures[s].image ? *pass.textures[s].image : unbound;
       err = host_texture(d, si.stage, im, out, r);
@@ -187,17 +246,28 @@ std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawText
   out.set = bound.set;
 
   // Render pass, framebuffer, pipeline.
-  const VkFormat rt_format = target.stored.image.format;
-  VkFormatProperties rt_props;
-  vkGetPhysicalDeviceFormatProperties(d.physical, rt_format, &rt_props);
-  if (!(rt_props.optimalTilingFeatures & VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT) ||
-      (pass.blend != pass::BlendMode::Replace &&
-       !(rt_props.optimalTilingFeatures & VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT)))
-    return fmt::format("the Vulkan device cannot render (and blend) to {}",
-                       img::format_name(target.format));
-  err = create_render_pass(d, cleanup, rt_format, out.render_pass);
+  std::vector<VkFormat> formats;
+  std::vector<const Image2D*> attachments;
+  for (uint32_t i = 0; i < pass.color_targets; ++i) {
+    const Resident& t = i == 0 ? target : *textures.more_targets[i - 1];
+    const VkFormat rt_format = t.stored.image.format;
+    VkFormatProperties rt_props;
+    vkGetPhysicalDeviceFormatProperties(d.physical, rt_format, &rt_props);
+    if (!(rt_props.optimalTilingFeatures & VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT) ||
+        (pass.blend != pass::BlendMode::Replace &&
+         !(rt_props.optimalTilingFeatures & VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT)))
+      return fmt::format("the Vulkan device cannot render (and blend) to {}",
+                         img::format_name(t.format));
+    formats.push_back(rt_format);
+    attachments.push_back(&t.stored.image);
+  }
+  if (textures.stencil) attachments.push_back(&textures.stencil->stored.image);
+  err = create_render_pass(d, cleanup, formats,
+                           textures.stencil ? textures.stencil->stored.image.format
+                                            : VK_FORMAT_UNDEFINED,
+                           out.render_pass);
   if (err.empty())
-    err = create_framebuffer(d, cleanup, out.render_pass, target.stored.image, out.framebuffer);
+    err = create_framebuffer(d, cleanup, out.render_pass, attachments, out.framebuffer);
   PipelineDesc pd;
   pd.vs = &pair->vs;
   pd.ps = &pair->ps;
@@ -207,6 +277,9 @@ std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawText
   const std::vector<uint32_t>& ps_words = pass.pixel_spirv ? *pass.pixel_spirv : pair->ps.words;
   pd.ps_words = options.flat_varyings ? decorate_inputs_flat(ps_words) : ps_words;
   pd.blend = pass.blend;
+  pd.color_targets = pass.color_targets;
+  pd.stencil_attachment = textures.stencil != nullptr;
+  pd.depth_stencil = pass.depth_stencil;
   pd.render_pass = out.render_pass;
   pd.layout = bound.layout;
   pd.vertex_stride = kVertexStride;
@@ -239,6 +312,9 @@ void record_draw(VkCommandBuffer cb, const Device::Impl& d, PreparedDraw& p) {
     if (r) record_as_sampled(cb, d, *r);
   Resident& target = *p.target;
   record_as_target(cb, target);
+  for (Resident* m : p.more_targets)
+    if (m) record_as_target(cb, *m);
+  if (p.stencil) record_as_stencil(cb, *p.stencil);
   VkRenderPassBeginInfo rbi{};
   rbi.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
   rbi.renderPass = p.render_pass;
@@ -262,6 +338,9 @@ void record_draw(VkCommandBuffer cb, const Device::Impl& d, PreparedDraw& p) {
 std::string submit_draw(Device::Impl& d, PreparedDraw& draw) {
   LayoutSnapshot snapshot;
   snapshot.save(*draw.target);
+  for (Resident* r : draw.more_targets)
+    if (r) snapshot.save(*r);
+  if (draw.stencil) snapshot.save(*draw.stencil);
   for (Resident* r : draw.sampled)
     if (r) snapshot.save(*r);
   std::string err = submit_and_wait(d, [&](VkCommandBuffer cb) { record_draw(cb, d, draw); });
@@ -299,6 +378,9 @@ DrawResult draw_pass(Device::Impl& d, const pass::Pass& pass, const DrawTextures
 
   LayoutSnapshot snapshot;
   snapshot.save(target);
+  for (Resident* r : prepared.more_targets)
+    if (r) snapshot.save(*r);
+  if (prepared.stencil) snapshot.save(*prepared.stencil);
   for (Resident* r : prepared.sampled)
     if (r) snapshot.save(*r);
   const auto t1 = Clock::now();

@@ -23,6 +23,10 @@ struct DrawTextures {
   // unbound texture (0, 0, 0, 1) when it has none.
   std::array<Resident*, pass::kMaxSamplers> stages{};
   Resident* target = nullptr;
+  // Render targets 1..3 (oC1..oC3), for a pass with pass.color_targets > 1, and the stencil
+  // buffer (Resident::stencil) for a pass with a stencil test. Resident textures only.
+  std::array<Resident*, 3> more_targets{};
+  Resident* stencil = nullptr;
   // Device::draw: the target's starting contents, uploaded before the draw (setup), and
   // where the result is read back to after it (in the same submit as the draw). Must have
   // the target's size and format. nullptr: the target stays on the device.
@@ -36,6 +40,8 @@ struct PreparedDraw {
   std::vector<std::unique_ptr<Resident>> host_textures;
   std::array<Resident*, pass::kMaxSamplers> sampled{}; // the stages the pixel program reads
   Resident* target = nullptr;
+  std::array<Resident*, 3> more_targets{}; // as in DrawTextures, those the pass draws into
+  Resident* stencil = nullptr;
   VkRenderPass render_pass = VK_NULL_HANDLE;
   VkFramebuffer framebuffer = VK_NULL_HANDLE;
   VkPipeline pipeline = VK_NULL_HANDLE;
@@ -53,8 +59,9 @@ struct PreparedDraw {
 std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawTextures& textures,
                          const DrawOptions& options, PreparedDraw& out);
 
-// Records the draw: sampled textures made current and readable, the target made the colour
-// attachment, the render pass with the draw. Advances the textures' tracked layouts.
+// Records the draw: sampled textures made current and readable, the targets made the colour
+// attachments (and the stencil buffer the depth/stencil one), the render pass with the draw.
+// Advances the textures' tracked layouts.
 void record_draw(VkCommandBuffer cb, const Device::Impl& d, PreparedDraw& draw);
 
 // Records `draw` alone, submits it and waits. On failure the textures' tracked layouts are

@@ -19,6 +19,58 @@ VkSamplerAddressMode address_mode(pass::AddressMode m) {
   return VK_SAMPLER_ADDRESS_MODE_MAX_ENUM;
 }
 
+// D3DCMPFUNC → VkCompareOp. Both compare the reference (left) with the stored value (right).
+VkCompareOp compare_op(pass::CompareFunc f) {
+  switch (f) {
+  case pass::CompareFunc::Never: return VK_COMPARE_OP_NEVER;
+  case pass::CompareFunc::Less: return VK_COMPARE_OP_LESS;
+  case pass::CompareFunc::Equal: return VK_COMPARE_OP_EQUAL;
+  case pass::CompareFunc::LessEqual: return VK_COMPARE_OP_LESS_OR_EQUAL;
+  case pass::CompareFunc::Greater: return VK_COMPARE_OP_GREATER;
+  case pass::CompareFunc::NotEqual: return VK_COMPARE_OP_NOT_EQUAL;
+  case pass::CompareFunc::GreaterEqual: return VK_COMPARE_OP_GREATER_OR_EQUAL;
+  case pass::CompareFunc::Always: return VK_COMPARE_OP_ALWAYS;
+  }
+  return VK_COMPARE_OP_NEVER;
+}
+
+// D3DSTENCILOP → VkStencilOp: the _SAT operations clamp, INCR/DECR wrap (pass/stencil.h).
+VkStencilOp stencil_op(pass::StencilOp op) {
+  switch (op) {
+  case pass::StencilOp::Keep: return VK_STENCIL_OP_KEEP;
+  case pass::StencilOp::Zero: return VK_STENCIL_OP_ZERO;
+  case pass::StencilOp::Replace: return VK_STENCIL_OP_REPLACE;
+  case pass::StencilOp::IncrSat: return VK_STENCIL_OP_INCREMENT_AND_CLAMP;
+  case pass::StencilOp::DecrSat: return VK_STENCIL_OP_DECREMENT_AND_CLAMP;
+  case pass::StencilOp::Invert: return VK_STENCIL_OP_INVERT;
+  case pass::StencilOp::Incr: return VK_STENCIL_OP_INCREMENT_AND_WRAP;
+  case pass::StencilOp::Decr: return VK_STENCIL_OP_DECREMENT_AND_WRAP;
+  }
+  return VK_STENCIL_OP_KEEP;
+}
+
+// The pipeline's depth/stencil state: no depth test or write; D3D9's one-sided stencil for
+// both faces (culling is off, and D3D9 without D3DRS_TWOSIDEDSTENCILMODE treats both faces
+// alike). Reference and masks modulo 256: only the buffer's 8 bits take part.
+VkPipelineDepthStencilStateCreateInfo depth_stencil_state(const pass::DepthStencilState& ds) {
+  VkPipelineDepthStencilStateCreateInfo out{};
+  out.sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO;
+  out.depthCompareOp = VK_COMPARE_OP_ALWAYS;
+  out.stencilTestEnable = ds.stencil_test ? VK_TRUE : VK_FALSE;
+  VkStencilOpState face{};
+  face.failOp = stencil_op(ds.stencil_fail);
+  face.passOp = stencil_op(ds.stencil_pass);
+  face.depthFailOp = stencil_op(ds.stencil_depth_fail);
+  face.compareOp = compare_op(ds.stencil_func);
+  face.compareMask = ds.stencil_read_mask & 0xffu;
+  face.writeMask = ds.stencil_write_mask & 0xffu;
+  face.reference = ds.stencil_ref & 0xffu;
+  out.front = out.back = face;
+  out.minDepthBounds = 0.0f;
+  out.maxDepthBounds = 1.0f;
+  return out;
+}
+
 std::string shader_module(Device::Impl& d, Cleanup& cleanup, const std::vector<uint32_t>& words,
                           VkShaderModule& out) {
   VkShaderModuleCreateInfo ci{};
@@ -33,26 +85,49 @@ std::string shader_module(Device::Impl& d, Cleanup& cleanup, const std::vector<u
 
 } // namespace
 
-std::string create_render_pass(Device::Impl& d, Cleanup& cleanup, VkFormat format,
+std::string create_render_pass(Device::Impl& d, Cleanup& cleanup,
+                               const std::vector<VkFormat>& colors, VkFormat stencil,
                                VkRenderPass& out) {
-  VkAttachmentDescription att{};
-  att.format = format;
-  att.samples = VK_SAMPLE_COUNT_1_BIT;
-  att.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
-  att.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-  att.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-  att.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  att.initialLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-  att.finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-  VkAttachmentReference ref{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+  std::vector<VkAttachmentDescription> atts;
+  std::vector<VkAttachmentReference> refs;
+  for (VkFormat format : colors) {
+    VkAttachmentDescription att{};
+    att.format = format;
+    att.samples = VK_SAMPLE_COUNT_1_BIT;
+    att.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+    att.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    att.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+    att.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    att.initialLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    att.finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    refs.push_back({static_cast<uint32_t>(atts.size()), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL});
+    atts.push_back(att);
+  }
+  VkAttachmentReference stencil_ref{static_cast<uint32_t>(atts.size()),
+                                    VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+  if (stencil != VK_FORMAT_UNDEFINED) {
+    VkAttachmentDescription att{};
+    att.format = stencil;
+    att.samples = VK_SAMPLE_COUNT_1_BIT;
+    // The depth aspect of a combined format is never tested; loading and storing it keeps
+    // the image whole.
+    att.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+    att.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    att.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+    att.stencilStoreOp = VK_ATTACHMENT_STORE_OP_STORE;
+    att.initialLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+    att.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+    atts.push_back(att);
+  }
   VkSubpassDescription sub{};
   sub.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-  sub.colorAttachmentCount = 1;
-  sub.pColorAttachments = &ref;
+  sub.colorAttachmentCount = static_cast<uint32_t>(refs.size());
+  sub.pColorAttachments = refs.data();
+  if (stencil != VK_FORMAT_UNDEFINED) sub.pDepthStencilAttachment = &stencil_ref;
   VkRenderPassCreateInfo ci{};
   ci.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO;
-  ci.attachmentCount = 1;
-  ci.pAttachments = &att;
+  ci.attachmentCount = static_cast<uint32_t>(atts.size());
+  ci.pAttachments = atts.data();
   ci.subpassCount = 1;
   ci.pSubpasses = &sub;
   VkResult r = vkCreateRenderPass(d.device, &ci, nullptr, &out);
@@ -62,14 +137,16 @@ std::string create_render_pass(Device::Impl& d, Cleanup& cleanup, VkFormat forma
 }
 
 std::string create_framebuffer(Device::Impl& d, Cleanup& cleanup, VkRenderPass rp,
-                               const Image2D& target, VkFramebuffer& out) {
+                               const std::vector<const Image2D*>& attachments, VkFramebuffer& out) {
+  std::vector<VkImageView> views;
+  for (const Image2D* a : attachments) views.push_back(a->view);
   VkFramebufferCreateInfo ci{};
   ci.sType = VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO;
   ci.renderPass = rp;
-  ci.attachmentCount = 1;
-  ci.pAttachments = &target.view;
-  ci.width = target.width;
-  ci.height = target.height;
+  ci.attachmentCount = static_cast<uint32_t>(views.size());
+  ci.pAttachments = views.data();
+  ci.width = attachments.front()->width;
+  ci.height = attachments.front()->height;
   ci.layers = 1;
   VkResult r = vkCreateFramebuffer(d.device, &ci, nullptr, &out);
   if (r != VK_SUCCESS) return vk_error("vkCreateFramebuffer", r);
@@ -168,10 +245,12 @@ std::string create_pipeline(Device::Impl& d, Cleanup& cleanup, const PipelineDes
     factors(VK_BLEND_FACTOR_SRC_ALPHA, VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA);
     break;
   }
+  const std::vector<VkPipelineColorBlendAttachmentState> blends(desc.color_targets, cba);
   VkPipelineColorBlendStateCreateInfo cb{};
   cb.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
-  cb.attachmentCount = 1;
-  cb.pAttachments = &cba;
+  cb.attachmentCount = desc.color_targets;
+  cb.pAttachments = blends.data();
+  const VkPipelineDepthStencilStateCreateInfo dss = depth_stencil_state(desc.depth_stencil);
   VkDynamicState dyn[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
   VkPipelineDynamicStateCreateInfo ds{};
   ds.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO;
@@ -188,6 +267,7 @@ std::string create_pipeline(Device::Impl& d, Cleanup& cleanup, const PipelineDes
   ci.pRasterizationState = &rs;
   ci.pMultisampleState = &ms;
   ci.pColorBlendState = &cb;
+  if (desc.stencil_attachment) ci.pDepthStencilState = &dss;
   ci.pDynamicState = &ds;
   ci.layout = desc.layout;
   ci.renderPass = desc.render_pass;

@@ -11,12 +11,16 @@
 
 namespace tierlift::vulkan {
 
-// Render pass with one colour attachment kept in COLOR_ATTACHMENT_OPTIMAL, loaded (blending
-// reads the stored destination) and stored.
-std::string create_render_pass(Device::Impl& d, Cleanup& cleanup, VkFormat format,
+// Render pass with one colour attachment per render target (oC# at attachment #) kept in
+// COLOR_ATTACHMENT_OPTIMAL, loaded (blending reads the stored destination) and stored; and,
+// with a stencil format (not VK_FORMAT_UNDEFINED), a depth/stencil attachment after them in
+// DEPTH_STENCIL_ATTACHMENT_OPTIMAL, its stencil loaded and stored.
+std::string create_render_pass(Device::Impl& d, Cleanup& cleanup,
+                               const std::vector<VkFormat>& colors, VkFormat stencil,
                                VkRenderPass& out);
+// `attachments`: the colour targets in order, then the stencil buffer if the pass has one.
 std::string create_framebuffer(Device::Impl& d, Cleanup& cleanup, VkRenderPass rp,
-                               const Image2D& target, VkFramebuffer& out);
+                               const std::vector<const Image2D*>& attachments, VkFramebuffer& out);
 // D3D9 sampler state → VkSampler (one level). Errors for MirrorOnce and border colours other
 // than transparent black, opaque black and opaque white.
 std::string create_sampler(Device::Impl& d, Cleanup& cleanup, const pass::SamplerState& s,
@@ -25,8 +29,14 @@ std::string create_sampler(Device::Impl& d, Cleanup& cleanup, const pass::Sample
 struct PipelineDesc {
   const codegen::ShaderModule* vs = nullptr;
   const codegen::ShaderModule* ps = nullptr;
-  std::vector<uint32_t> ps_words; // possibly rewritten (flat varyings)
-  pass::BlendMode blend = pass::BlendMode::Replace;
+  std::vector<uint32_t> ps_words;                   // possibly rewritten (flat varyings)
+  pass::BlendMode blend = pass::BlendMode::Replace; // every target blends alike, as in D3D9
+  // Colour attachments; the pixel stage writes each (prepare_draw checks), so all blend
+  // attachment states are identical and the independentBlend feature is not needed.
+  uint32_t color_targets = 1;
+  // With a stencil attachment: D3D9's stencil state (one-sided; no depth test).
+  bool stencil_attachment = false;
+  pass::DepthStencilState depth_stencil;
   VkRenderPass render_pass = VK_NULL_HANDLE;
   VkPipelineLayout layout = VK_NULL_HANDLE;
   uint32_t vertex_stride = 0; // bytes per vertex; input vN at offset 16·N

@@ -8,6 +8,9 @@ namespace {
 
 constexpr VkFormat kSampledFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 
+constexpr VkPipelineStageFlags kFragmentTests =
+    VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+
 struct Use {
   VkPipelineStageFlags stage;
   VkAccessFlags access;
@@ -23,6 +26,8 @@ Use last_use(VkImageLayout layout) {
   case VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL:
     return {VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT};
   case VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL: return {VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0};
+  case VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL:
+    return {kFragmentTests, VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT};
   default: return {VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0};
   }
 }
@@ -40,6 +45,10 @@ Use next_use(VkImageLayout layout) {
             VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT};
   case VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL:
     return {VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT};
+  case VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL:
+    // loadOp LOAD and the stencil test read the buffer, the stencil operations write it.
+    return {kFragmentTests, VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
+                                VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT};
   default: return {VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0};
   }
 }
@@ -53,16 +62,24 @@ bool read_only(VkImageLayout layout) {
 void clear_if_new(VkCommandBuffer cb, Resident& r) {
   if (r.stored.layout != VK_IMAGE_LAYOUT_UNDEFINED) return;
   transition(cb, r.stored, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
-  const VkClearColorValue zero{};
-  const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-  vkCmdClearColorImage(cb, r.stored.image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1,
-                       &range);
+  const VkImageSubresourceRange range{r.stored.image.aspect, 0, 1, 0, 1};
+  if (r.stencil) {
+    const VkClearDepthStencilValue zero{1.0f, 0};
+    vkCmdClearDepthStencilImage(cb, r.stored.image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                &zero, 1, &range);
+  } else {
+    const VkClearColorValue zero{};
+    vkCmdClearColorImage(cb, r.stored.image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1,
+                         &range);
+  }
   r.shadow_current = false;
 }
 
 VkBufferImageCopy whole_image(const Resident& r) {
   VkBufferImageCopy copy{};
-  copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  const VkImageAspectFlags aspect = r.stencil ? VkImageAspectFlags{VK_IMAGE_ASPECT_STENCIL_BIT}
+                                              : VkImageAspectFlags{VK_IMAGE_ASPECT_COLOR_BIT};
+  copy.imageSubresource = {aspect, 0, 0, 1};
   copy.imageExtent = {r.width, r.height, 1};
   return copy;
 }
@@ -86,7 +103,39 @@ std::string create_resident(Device::Impl& d, uint32_t width, uint32_t height, im
   return {};
 }
 
+std::string create_stencil_resident(Device::Impl& d, uint32_t width, uint32_t height,
+                                    std::unique_ptr<Resident>& out) {
+  constexpr VkFormat kCandidates[] = {VK_FORMAT_S8_UINT, VK_FORMAT_D24_UNORM_S8_UINT,
+                                      VK_FORMAT_D32_SFLOAT_S8_UINT};
+  constexpr VkFormatFeatureFlags kNeeds = VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT |
+                                          VK_FORMAT_FEATURE_TRANSFER_SRC_BIT |
+                                          VK_FORMAT_FEATURE_TRANSFER_DST_BIT;
+  VkFormat chosen = VK_FORMAT_UNDEFINED;
+  for (VkFormat f : kCandidates) {
+    VkFormatProperties props;
+    vkGetPhysicalDeviceFormatProperties(d.physical, f, &props);
+    if ((props.optimalTilingFeatures & kNeeds) == kNeeds) {
+      chosen = f;
+      break;
+    }
+  }
+  if (chosen == VK_FORMAT_UNDEFINED)
+    return "the Vulkan device has no stencil format it can render to and copy";
+  auto r = std::make_unique<Resident>();
+  r->width = width;
+  r->height = height;
+  r->stencil = true;
+  const VkImageUsageFlags usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
+                                  VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  if (std::string err = create_image(d, r->objects, width, height, chosen, usage, r->stored.image);
+      !err.empty())
+    return err;
+  out = std::move(r);
+  return {};
+}
+
 std::string ensure_shadow(Device::Impl& d, Resident& r) {
+  if (r.stencil) return "a stencil buffer cannot be sampled";
   if (r.samples_stored() || r.shadow.image.image != VK_NULL_HANDLE) return {};
   const bool unorm8 = r.format == img::Format::RGBA8;
   VkFormatProperties src, dst;
@@ -110,7 +159,8 @@ std::string ensure_shadow(Device::Impl& d, Resident& r) {
 void transition(VkCommandBuffer cb, TrackedImage& t, VkImageLayout to) {
   if (t.layout == to && read_only(to)) return;
   const Use src = last_use(t.layout), dst = next_use(to);
-  image_barrier(cb, t.image.image, t.layout, to, src.access, dst.access, src.stage, dst.stage);
+  image_barrier(cb, t.image.image, t.layout, to, src.access, dst.access, src.stage, dst.stage,
+                t.image.aspect);
   t.layout = to;
 }
 
@@ -126,6 +176,11 @@ void record_as_target(VkCommandBuffer cb, Resident& r) {
   clear_if_new(cb, r);
   transition(cb, r.stored, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
   r.shadow_current = false; // the pass about to run writes it
+}
+
+void record_as_stencil(VkCommandBuffer cb, Resident& r) {
+  clear_if_new(cb, r);
+  transition(cb, r.stored, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL);
 }
 
 void record_as_sampled(VkCommandBuffer cb, const Device::Impl& d, Resident& r) {

@@ -31,13 +31,17 @@ struct TrackedImage {
 struct Resident {
   uint32_t width = 0, height = 0;
   img::Format format = img::Format::RGBA32F;
+  // A D3D9 8-bit stencil buffer (create_stencil_resident): `stored` is a depth/stencil image
+  // whose stencil aspect is the buffer; it is never sampled, and a readback returns one byte
+  // per pixel. `format` is then meaningless.
+  bool stencil = false;
   TrackedImage stored;         // in `format`
   TrackedImage shadow;         // RGBA8 / RGBA16F only, created on first sampling
   bool shadow_current = false; // shadow holds the stored values
   Unorm8Scratch unorm8;        // RGBA8: what the conversion into the shadow needs
   Cleanup objects;             // owns the Vulkan objects above (destroyed with the texture)
 
-  bool samples_stored() const { return format == img::Format::RGBA32F; }
+  bool samples_stored() const { return !stencil && format == img::Format::RGBA32F; }
   // The image passes sample (valid after prepare_sampled).
   const Image2D& sampled() const { return samples_stored() ? stored.image : shadow.image; }
 };
@@ -47,6 +51,11 @@ struct Resident {
 // cleared by the first command that uses it.
 std::string create_resident(Device::Impl& d, uint32_t width, uint32_t height, img::Format format,
                             std::unique_ptr<Resident>& out);
+// An 8-bit stencil buffer of `width` × `height`, all zero: VK_FORMAT_S8_UINT where the
+// device can render to it and copy it, else the first of D24_UNORM_S8_UINT and
+// D32_SFLOAT_S8_UINT that it can (the depth aspect is never tested or written).
+std::string create_stencil_resident(Device::Impl& d, uint32_t width, uint32_t height,
+                                    std::unique_ptr<Resident>& out);
 // Creates the float shadow if the texture needs one and has none (before recording).
 std::string ensure_shadow(Device::Impl& d, Resident& r);
 
@@ -60,9 +69,12 @@ void transition(VkCommandBuffer cb, TrackedImage& t, VkImageLayout to);
 void record_upload(VkCommandBuffer cb, Resident& r, VkBuffer staging);
 // Makes the stored image the colour attachment of a render pass (loadOp LOAD reads it).
 void record_as_target(VkCommandBuffer cb, Resident& r);
+// Makes a stencil buffer the depth/stencil attachment of a render pass (loaded and stored).
+void record_as_stencil(VkCommandBuffer cb, Resident& r);
 // Makes the image passes sample current and SHADER_READ_ONLY_OPTIMAL (ensure_shadow first).
 void record_as_sampled(VkCommandBuffer cb, const Device::Impl& d, Resident& r);
-// Copies the stored image into `staging` and makes it visible to the host.
+// Copies the stored image into `staging` and makes it visible to the host (a stencil
+// buffer: its stencil aspect, one byte per pixel, rows packed).
 void record_readback(VkCommandBuffer cb, Resident& r, VkBuffer staging);
 
 } // namespace tierlift::vulkan

@@ -97,14 +97,29 @@ std::string create_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint
   vi.image = img;
   vi.viewType = VK_IMAGE_VIEW_TYPE_2D;
   vi.format = format;
-  vi.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  const VkImageAspectFlags aspect = format_aspects(format);
+  vi.subresourceRange = {aspect, 0, 1, 0, 1};
   if ((r = vkCreateImageView(dev, &vi, nullptr, &out.view)) != VK_SUCCESS)
     return vk_error("vkCreateImageView", r);
   cleanup.destroy_later(dev, out.view, vkDestroyImageView);
   out.format = format;
   out.width = width;
   out.height = height;
+  out.aspect = aspect;
   return {};
+}
+
+VkImageAspectFlags format_aspects(VkFormat format) {
+  switch (format) {
+  case VK_FORMAT_S8_UINT: return VK_IMAGE_ASPECT_STENCIL_BIT;
+  case VK_FORMAT_D16_UNORM:
+  case VK_FORMAT_X8_D24_UNORM_PACK32:
+  case VK_FORMAT_D32_SFLOAT: return VK_IMAGE_ASPECT_DEPTH_BIT;
+  case VK_FORMAT_D16_UNORM_S8_UINT:
+  case VK_FORMAT_D24_UNORM_S8_UINT:
+  case VK_FORMAT_D32_SFLOAT_S8_UINT: return VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
+  default: return VK_IMAGE_ASPECT_COLOR_BIT;
+  }
 }
 
 std::string begin_commands(Device::Impl& d, VkCommandBuffer& cb) {
@@ -163,7 +178,8 @@ std::string submit_and_wait(Device::Impl& d, const std::function<void(VkCommandB
 
 void image_barrier(VkCommandBuffer cb, VkImage image, VkImageLayout from, VkImageLayout to,
                    VkAccessFlags src_access, VkAccessFlags dst_access,
-                   VkPipelineStageFlags src_stage, VkPipelineStageFlags dst_stage) {
+                   VkPipelineStageFlags src_stage, VkPipelineStageFlags dst_stage,
+                   VkImageAspectFlags aspect) {
   VkImageMemoryBarrier b{};
   b.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
   b.srcAccessMask = src_access;
@@ -173,7 +189,7 @@ void image_barrier(VkCommandBuffer cb, VkImage image, VkImageLayout from, VkImag
   b.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   b.image = image;
-  b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  b.subresourceRange = {aspect, 0, 1, 0, 1};
   vkCmdPipelineBarrier(cb, src_stage, dst_stage, 0, 0, nullptr, 0, nullptr, 1, &b);
 }
 

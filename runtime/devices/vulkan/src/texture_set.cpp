@@ -63,9 +63,26 @@ std::string TextureSet::create(uint32_t width, uint32_t height, img::Format form
   return {};
 }
 
+std::string TextureSet::create_stencil(uint32_t width, uint32_t height, TextureId& out) {
+  if (width == 0 || height == 0 || width > img::kMaxDimension || height > img::kMaxDimension)
+    return fmt::format("stencil buffer size {}x{}: each side must be 1..{}", width, height,
+                       img::kMaxDimension);
+  std::unique_ptr<Resident> r;
+  if (std::string err = create_stencil_resident(*device_.impl_, width, height, r); !err.empty())
+    return err;
+  const uint32_t id = state_->next_id++;
+  state_->textures.emplace(id, std::move(r));
+  out = static_cast<TextureId>(id);
+  return {};
+}
+
 std::string TextureSet::upload(TextureId id, const img::Image& image) {
   Resident* r = state_->find(id);
   if (!r) return unknown(id);
+  if (r->stencil)
+    return fmt::format("texture {} is a stencil buffer: it starts at zero and only draws "
+                       "change it",
+                       static_cast<uint32_t>(id));
   if (image.width != r->width || image.height != r->height ||
       image.rgba.size() != size_t{image.width} * image.height * 4)
     return fmt::format("upload of a {}x{} image into the {}x{} texture {}", image.width,
@@ -103,7 +120,8 @@ std::string TextureSet::read(TextureId id, img::Image& out) {
   Device::Impl& d = *device_.impl_;
   Cleanup cleanup;
   Buffer staging;
-  const VkDeviceSize bytes = VkDeviceSize{r->width} * r->height * bytes_per_pixel(r->format);
+  const VkDeviceSize bytes =
+      VkDeviceSize{r->width} * r->height * (r->stencil ? 1 : bytes_per_pixel(r->format));
   if (std::string err = create_buffer(d, cleanup, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, staging);
       !err.empty())
     return err;
@@ -114,6 +132,13 @@ std::string TextureSet::read(TextureId id, img::Image& out) {
     r->stored = before;
     return err;
   }
+  if (r->stencil) { // as the CPU device reads its stencil buffer: the value in red
+    img::Image image(r->width, r->height, img::Format::RGBA32F);
+    const auto* bytes_in = static_cast<const uint8_t*>(staging.mapped);
+    for (size_t i = 0; i < size_t{r->width} * r->height; ++i) image.rgba[4 * i] = bytes_in[i];
+    out = std::move(image);
+    return {};
+  }
   img::Image image(r->width, r->height, r->format);
   unpack_pixels(staging.mapped, image);
   out = std::move(image);
@@ -123,10 +148,20 @@ std::string TextureSet::read(TextureId id, img::Image& out) {
 namespace {
 
 // The textures of a draw by id; an error names the unknown one.
-std::string resolve(TextureSet::State& s, const StageTextures& stages, TextureId target,
+std::string resolve(TextureSet::State& s, const StageTextures& stages, const RenderTargets& targets,
                     DrawTextures& out) {
-  out.target = s.find(target);
-  if (!out.target) return "render target: " + unknown(target);
+  out.target = s.find(targets.color[0]);
+  if (!out.target) return "render target: " + unknown(targets.color[0]);
+  for (uint32_t i = 1; i < targets.color.size(); ++i) {
+    if (targets.color[i] == TextureId::None) continue;
+    out.more_targets[i - 1] = s.find(targets.color[i]);
+    if (!out.more_targets[i - 1])
+      return fmt::format("render target {}: {}", i, unknown(targets.color[i]));
+  }
+  if (targets.stencil != TextureId::None) {
+    out.stencil = s.find(targets.stencil);
+    if (!out.stencil) return "stencil buffer: " + unknown(targets.stencil);
+  }
   for (uint32_t k = 0; k < pass::kMaxSamplers; ++k) {
     if (stages[k] == TextureId::None) continue;
     out.stages[k] = s.find(stages[k]);
@@ -154,8 +189,15 @@ PreparedDraw* cached_draw(TextureSet::State& s, const pass::Pass& pass, const Dr
 
 std::string TextureSet::prepare(const pass::Pass& pass, const StageTextures& stages,
                                 TextureId target, const DrawOptions& options) {
+  RenderTargets targets;
+  targets.color[0] = target;
+  return prepare(pass, stages, targets, options);
+}
+
+std::string TextureSet::prepare(const pass::Pass& pass, const StageTextures& stages,
+                                const RenderTargets& targets, const DrawOptions& options) {
   DrawTextures textures;
-  if (std::string e = resolve(*state_, stages, target, textures); !e.empty()) return e;
+  if (std::string e = resolve(*state_, stages, targets, textures); !e.empty()) return e;
   std::string error;
   cached_draw(*state_, pass, textures, options, &error);
   return error;
@@ -163,9 +205,16 @@ std::string TextureSet::prepare(const pass::Pass& pass, const StageTextures& sta
 
 DrawResult TextureSet::draw(const pass::Pass& pass, const StageTextures& stages, TextureId target,
                             const DrawOptions& options) {
+  RenderTargets targets;
+  targets.color[0] = target;
+  return draw(pass, stages, targets, options);
+}
+
+DrawResult TextureSet::draw(const pass::Pass& pass, const StageTextures& stages,
+                            const RenderTargets& targets, const DrawOptions& options) {
   DrawTextures textures;
   DrawResult res;
-  if (std::string e = resolve(*state_, stages, target, textures); !e.empty()) {
+  if (std::string e = resolve(*state_, stages, targets, textures); !e.empty()) {
     res.error = e;
     return res;
   }

@@ -83,7 +83,12 @@ struct Image2D {
   VkImageView view = VK_NULL_HANDLE;
   VkFormat format = VK_FORMAT_UNDEFINED;
   uint32_t width = 0, height = 0;
+  // COLOR, or for a stencil buffer STENCIL (with DEPTH when the format has both: barriers and
+  // attachment views then name both aspects).
+  VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;
 };
+// The aspects of `format`: COLOR, DEPTH, STENCIL or DEPTH|STENCIL.
+VkImageAspectFlags format_aspects(VkFormat format);
 std::string create_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint32_t height,
                          VkFormat format, VkImageUsageFlags usage, Image2D& out);
 
@@ -98,7 +103,8 @@ std::string submit_commands(Device::Impl& d, VkCommandBuffer& cb);
 // Layout transition of a whole colour image (one level, one layer).
 void image_barrier(VkCommandBuffer cb, VkImage image, VkImageLayout from, VkImageLayout to,
                    VkAccessFlags src_access, VkAccessFlags dst_access,
-                   VkPipelineStageFlags src_stage, VkPipelineStageFlags dst_stage);
+                   VkPipelineStageFlags src_stage, VkPipelineStageFlags dst_stage,
+                   VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT);
 
 // Pixels of an img::Image in a Vulkan format's bytes and back.
 VkFormat vk_format(img::Format f);

@@ -11,10 +11,13 @@
 //     shader's fix-up specialization constants stay 0). An exact binary offset, so vertex
 //     positions snap to the same 1/256-pixel grid as the CPU device's rasteriser. Modern
 //     centres: no offset. The scissor is the D3D9 viewport clipped to the target.
-//   * Render targets RGBA8 UNORM, RGBA16F, RGBA32F; the target image's current contents are
-//     uploaded first (loadOp LOAD), so blending sees the stored destination, and read back
-//     as floats (RGBA8: k/255; RGBA16F: the half's value). TextureSet (texture_set.h) keeps
-//     targets and textures on the device between draws instead; both paths share one draw.
+//   * Render targets RGBA8 UNORM, RGBA16F, RGBA32F, up to four (MRT: oC# at colour
+//     attachment #, all blended alike); a stencil buffer is a depth/stencil attachment
+//     (S8_UINT where the device renders to it, else D24S8 / D32S8) with the pass's D3D9
+//     stencil state on both faces, loaded and stored like the colour targets. The target image's
+//     current contents are uploaded first (loadOp LOAD), so blending sees the stored destination,
+//     and read back as floats (RGBA8: k/255; RGBA16F: the half's value). TextureSet (texture_set.h)
+//     keeps targets and textures on the device between draws instead; both paths share one draw.
 //   * Textures: each bound stage's img::Image uploaded as R32G32B32A32_SFLOAT; unbound
 //     stages get a 1×1 (0, 0, 0, 1) texture. Samplers: point/linear, wrap/mirror/clamp/
 //     border with D3D9's transparent black border (opaque black/white also map; any other
@@ -35,10 +38,14 @@ namespace tierlift::vulkan {
 
 class TextureSet;
 
-// What the Vulkan device draws beyond one colour target with programmable stages: a pixel
-// stage given as SPIR-V (a GLSL pass); a pass asking for more is refused
-// (pass::check_supported).
-inline constexpr pass::Capabilities kCapabilities{.spirv_pixel_stage = true};
+// What the Vulkan device draws beyond one colour target with programmable stages: up to four
+// render targets (oC0..oC3; TextureSet::draw binds them), an 8-bit stencil buffer with
+// D3D9's one-sided stencil state (no depth buffer), and a pixel stage given as SPIR-V (a
+// GLSL pass); a pass asking for more is refused (pass::check_supported). Device::draw has
+// one host target and no stencil buffer, so there a pass with more targets or a stencil
+// test is refused as "not bound".
+inline constexpr pass::Capabilities kCapabilities{
+    .max_color_targets = 4, .depth_stencil = true, .spirv_pixel_stage = true};
 
 struct DeviceOptions {
   // Enable VK_LAYER_KHRONOS_validation with a messenger that collects every warning and

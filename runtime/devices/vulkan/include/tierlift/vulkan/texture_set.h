@@ -58,6 +58,14 @@ enum class TextureId : uint32_t { None = 0 };
 // always comes from pass.textures[s].sampler.
 using StageTextures = std::array<TextureId, pass::kMaxSamplers>;
 
+// What a draw renders into: oC0..oC(n−1) in color[0..n−1] (n = pass.color_targets, every
+// one the same size, the rest None) and, for a pass with a stencil test, an 8-bit stencil
+// buffer made by create_stencil (None: no stencil buffer).
+struct RenderTargets {
+  std::array<TextureId, 4> color{};
+  TextureId stencil = TextureId::None;
+};
+
 class TextureSet {
 public:
   // `device` must outlive the set. Destroying the set frees every texture.
@@ -68,6 +76,9 @@ public:
 
   // A `width` × `height` texture (1..img::kMaxDimension each) stored in `format`, all zero.
   std::string create(uint32_t width, uint32_t height, img::Format format, TextureId& out);
+  // A `width` × `height` 8-bit stencil buffer, all zero. It cannot be sampled or uploaded;
+  // read() returns it as RGBA32F with the stencil value (0..255) in red and zeros elsewhere.
+  std::string create_stencil(uint32_t width, uint32_t height, TextureId& out);
   // Replaces the texture's contents with `image` (same size; stored with the texture's
   // format's store rule whatever image.format says).
   std::string upload(TextureId id, const img::Image& image);
@@ -77,9 +88,14 @@ public:
   // contents are the destination blending reads. Nothing is read back.
   DrawResult draw(const pass::Pass& pass, const StageTextures& stages, TextureId target,
                   const DrawOptions& options = {});
-  // Makes what draw(pass, stages, target, options) needs, without drawing.
+  // The same into several render targets and a stencil buffer (MRT, stencil test).
+  DrawResult draw(const pass::Pass& pass, const StageTextures& stages, const RenderTargets& targets,
+                  const DrawOptions& options = {});
+  // Makes what draw(pass, stages, targets, options) needs, without drawing.
   std::string prepare(const pass::Pass& pass, const StageTextures& stages, TextureId target,
                       const DrawOptions& options = {});
+  std::string prepare(const pass::Pass& pass, const StageTextures& stages,
+                      const RenderTargets& targets, const DrawOptions& options = {});
   // Batching on: draw() records; off: draw() submits and waits (flushing first). A draw's
   // DrawResult::draw_ms is then the recording time; the work is timed by flush().
   std::string set_batching(bool on);
