@@ -13,6 +13,8 @@
 #include "tierlift/effects/outline.h"
 #include "tierlift/effects/scene.h"
 
+#include "../vulkan/vk_test_util.h"
+
 namespace tierlift::effects {
 namespace {
 
@@ -81,9 +83,7 @@ OutlineResult run_on(PassDevice& device) {
   return {r.images[std::string(kFinalTexture)], r.images[std::string(kStencilTexture)]};
 }
 
-TEST(Outline, GlowIsZeroInsideAndARingAsWideAsTheBlurRadius) {
-  CpuPassDevice cpu(1);
-  const OutlineResult r = run_on(cpu);
+void expect_ring(const OutlineResult& r) {
   ASSERT_EQ(r.final.width, kW);
   const std::vector<int> cover = expected_coverage(object());
   const OutlineParams o = object();
@@ -121,6 +121,30 @@ TEST(Outline, GlowIsZeroInsideAndARingAsWideAsTheBlurRadius) {
   EXPECT_GT(ring, 200u);
   EXPECT_GT(at_radius, 20u); // the ring reaches the radius all round
   EXPECT_GT(beyond, 1000u);
+}
+
+TEST(Outline, GlowIsZeroInsideAndARingAsWideAsTheBlurRadius) {
+  CpuPassDevice cpu(1);
+  expect_ring(run_on(cpu));
+}
+
+// The Vulkan device draws the object into two render targets and its stencil buffer, and
+// masks the glow with the stencil test: the same ring, and the CPU device's images within
+// design's RGBA32F target (the stencil buffers equal).
+class OutlineVulkan : public vulkan::test::VulkanTest {};
+
+TEST_F(OutlineVulkan, SameRingAndAgreesWithTheCpuDevice) {
+  auto vk = make_vulkan_pass_device(*dev);
+  const OutlineResult v = run_on(*vk);
+  expect_ring(v);
+  CpuPassDevice cpu(1);
+  const OutlineResult c = run_on(cpu);
+  EXPECT_EQ(v.stencil.rgba, c.stencil.rgba);
+  ASSERT_EQ(v.final.rgba.size(), c.final.rgba.size());
+  double worst = 0;
+  for (size_t i = 0; i < v.final.rgba.size(); ++i)
+    worst = std::max(worst, std::abs(double(v.final.rgba[i]) - c.final.rgba[i]));
+  EXPECT_LE(worst, 1e-5);
 }
 
 TEST(Outline, AnalyticModelAgreesWithTheCpuDevice) {

@@ -1,0 +1,58 @@
+// `tierlift glow --scene` on the stencil-outline scene, end to end on all three devices: the
+// agreement table has a row for each render target of the object pass and for the stencil
+// buffer, and every pair is within design's targets; a stencil reference outside 1..255 is a
+// positioned error, exit 1, nothing written.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <string>
+
+#include "cli_fixture.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+class CliOutline : public tierlift::cli_test::CliFixture {};
+
+TEST_F(CliOutline, ShippedSceneRunsOnEveryDeviceWithEveryTargetCompared) {
+  const fs::path scene =
+      fs::path(TIERLIFT_SOURCE_DIR) / "listings" / "scenes" / "stencil-outline.json";
+  const fs::path log = dir / "log.txt";
+  ASSERT_EQ(
+      run_cli("glow -q --backend all --scene " + scene.string() + " -o " + (dir / "out").string(),
+              log),
+      0)
+      << read(log);
+  const std::string text = read(log);
+  // The rows of the object pass's three outputs and of the stencil test's buffer; cpu ·
+  // vulkan agree exactly on each (the coverage, the constants and the stencil values are
+  // exact in both; no blur has run yet).
+  for (const char* row : {"object +color", "object +mask", "object +stencil", "outline +stencil"})
+    EXPECT_TRUE(std::regex_search(text, std::regex(std::string(row) + " +0 +0 +100\\.000%")))
+        << row << "\n"
+        << text;
+  EXPECT_NE(text.find("every pair within design.md's targets"), std::string::npos) << text;
+  for (const char* way : {"cpu", "vulkan", "analytic"})
+    EXPECT_TRUE(fs::exists(dir / "out" / (std::string("final-") + way + ".png"))) << way;
+}
+
+TEST_F(CliOutline, StencilReferenceOutOfRangeExitsOneAndWritesNothing) {
+  const fs::path scene = dir / "bad.json", log = dir / "log.txt";
+  std::ofstream(scene) << "{\n  \"effect\": \"stencil-outline\",\n  \"size\": [64, 48],\n"
+                          "  \"outline\": { \"stencil_ref\": 256 }\n}\n";
+  EXPECT_EQ(
+      run_cli("glow --backend all --scene " + scene.string() + " -o " + (dir / "out").string(),
+              log),
+      1)
+      << read(log);
+  EXPECT_NE(read(log).find("bad.json:4:31: error: /outline/stencil_ref: 256 is outside 1..255"),
+            std::string::npos)
+      << read(log);
+  EXPECT_NE(read(log).find("^"), std::string::npos) << read(log);
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+} // namespace
