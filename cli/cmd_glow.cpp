@@ -352,7 +352,10 @@ int run(const GlowFlags& f) {
     nlohmann::json left = nlohmann::json::array();
     for (const effects::LeftOut& l : pruned.left_out)
       left.push_back({{"what", l.what}, {"why", l.why}});
-    j["pruning"] = {{"enabled", !f.no_prune}, {"left_out", left}};
+    nlohmann::json limited = nlohmann::json::array();
+    for (const effects::LeftOut& l : pruned.limited)
+      limited.push_back({{"what", l.what}, {"why", l.why}});
+    j["pruning"] = {{"enabled", !f.no_prune}, {"left_out", left}, {"limited", limited}};
     j["written"] = written;
   } else {
     if (radial)
@@ -381,14 +384,17 @@ int run(const GlowFlags& f) {
                  w.glow.run.total_ms, w.name == "vulkan" ? fmt::format(" ({})", vk->name()) : "");
     if (f.explain) {
       const bool varies = params.animated();
-      fmt::print("pruning {}: {} of {} passes left out{}\n", f.no_prune ? "off (--no-prune)" : "on",
-                 varies ? 0 : pruned.left_out.size(), pruned.passes_before,
+      fmt::print("pruning {}: {} of {} passes left out, {} limited to the sources' box{}\n",
+                 f.no_prune ? "off (--no-prune)" : "on", varies ? 0 : pruned.left_out.size(),
+                 pruned.passes_before, varies ? 0 : pruned.limited.size(),
                  varies ? " (the scene changes from frame to frame: pruning bounds values from "
                           "one image, so the whole plan runs)"
-                 : pruned.left_out.empty() ? " (the scene needs every pass)"
-                                           : "");
+                 : !pruned.changed() ? " (the scene needs every pass, everywhere)"
+                                     : "");
       for (const effects::LeftOut& l : varies ? std::vector<effects::LeftOut>{} : pruned.left_out)
         fmt::print("  {} {}: {}\n", f.no_prune ? "would leave out" : "left out", l.what, l.why);
+      for (const effects::LeftOut& l : varies ? std::vector<effects::LeftOut>{} : pruned.limited)
+        fmt::print("  {} {}: {}\n", f.no_prune ? "would limit" : "limited", l.what, l.why);
       fmt::print("  kept: the SPIR-V pair pruning of every pass (unused constants, inputs and "
                  "outputs; tierlift spirv --pair --explain)\n");
     }

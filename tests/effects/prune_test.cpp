@@ -7,9 +7,14 @@
 #include <cmath>
 #include <random>
 
+#include <fmt/format.h>
+
+#include "tierlift/effects/analytic_device.h"
 #include "tierlift/effects/default_scene.h"
 #include "tierlift/effects/glow_run.h"
 #include "tierlift/effects/prune.h"
+
+#include "../vulkan/vk_test_util.h"
 
 namespace tierlift::effects {
 namespace {
@@ -91,6 +96,89 @@ TEST(Prune, SourcesInOneCornerUnchanged) {
     for (uint32_t x = 0; x < 5; ++x) s.at(x, y)[3] = 1, s.at(x, y)[0] = 0.02f;
   for (Tier t : all_tiers())
     for (img::Format f : kFormats) expect_same(params(96, 64, t, f, 2), s, "corner");
+}
+
+// The scissor rule: a corner of sources limits extract, downsample and both blur axes to a
+// small part of each texture (the CPU runs above prove the frame unchanged).
+TEST(Prune, CornerSourcesLimitTheBlurToACorner) {
+  img::Image s = make_default_scene(96, 64);
+  for (size_t i = 3; i < s.rgba.size(); i += 4) s.rgba[i] = 0;
+  s.at(1, 1)[3] = 1;
+  const GlowPlan plan = build_glow(params(96, 64, Tier::Dx9, img::Format::RGBA32F, 2));
+  const PrunedGraph g = prune_glow(plan, s);
+  EXPECT_TRUE(g.left_out.empty());
+  ASSERT_EQ(g.limited.size(), 4u);
+  for (const PassDesc& p : g.graph.passes) {
+    if (p.name == "composite") {
+      EXPECT_FALSE(p.scissor) << p.name; // the frame is drawn whole
+      continue;
+    }
+    ASSERT_TRUE(p.scissor) << p.name;
+    const TextureDesc* t = g.graph.find_texture(p.target);
+    const int64_t area = int64_t(p.scissor->x1 - p.scissor->x0) * (p.scissor->y1 - p.scissor->y0);
+    EXPECT_EQ(p.scissor->x0, 0);
+    EXPECT_EQ(p.scissor->y0, 0);
+    EXPECT_LT(area * 2, int64_t(t->width) * t->height) << p.name; // under half of it
+  }
+}
+
+// One source pixel anywhere (edges and corners included), every tier, format, downsample
+// and both half-texel settings: the margins of the scissor rule are wide enough.
+TEST(Prune, SingleSourcePixelsUnchanged) {
+  std::mt19937 rng(5);
+  const uint32_t w = 41, h = 23;
+  const std::pair<uint32_t, uint32_t> spots[] = {
+      {0, 0}, {w - 1, h - 1}, {w - 1, 0}, {0, h - 1}, {20, 11}, {rng() % w, rng() % h}};
+  for (const auto& [x, y] : spots) {
+    img::Image s(w, h);
+    s.at(x, y)[0] = 1, s.at(x, y)[1] = 0.5f, s.at(x, y)[3] = 1;
+    for (Tier t : all_tiers())
+      for (img::Format f : kFormats)
+        for (unsigned ds : {1u, 2u, 3u, 4u}) {
+          GlowParams p = params(w, h, t, f, ds);
+          p.half_texel = (x + ds) % 2 == 0;
+          expect_same(p, s, fmt::format("pixel ({}, {})", x, y));
+        }
+  }
+}
+
+// The scissor honoured by the Vulkan device and the analytic device: the pruned plan's glow
+// and frame equal the whole plan's on each (bit for bit in RGBA8 and RGBA16F).
+class PruneDevices : public vulkan::test::VulkanTest {};
+
+TEST_F(PruneDevices, LimitedPassesGiveTheSameFrameOnVulkanAndAnalytic) {
+  img::Image s = make_default_scene(96, 64);
+  for (size_t i = 3; i < s.rgba.size(); i += 4) s.rgba[i] = 0;
+  for (uint32_t y = 50; y < 56; ++y)
+    for (uint32_t x = 80; x < 90; ++x) s.at(x, y)[3] = 1, s.at(x, y)[1] = 0.7f;
+  for (Tier t : all_tiers())
+    for (img::Format f : kFormats) {
+      const GlowParams p = params(96, 64, t, f, 2);
+      const GlowPlan plan = build_glow(p);
+      ASSERT_TRUE(plan) << plan.error;
+      const PrunedGraph pruned = prune_glow(plan, s);
+      ASSERT_EQ(pruned.limited.size(), 4u) << tier_name(t);
+      GlowPlan lean = plan;
+      lean.graph = pruned.graph;
+      auto vk_whole = make_vulkan_pass_device(*dev), vk_lean = make_vulkan_pass_device(*dev);
+      auto an_whole = make_analytic_pass_device(), an_lean = make_analytic_pass_device();
+      const std::pair<PassDevice*, PassDevice*> pairs[] = {{vk_whole.get(), vk_lean.get()},
+                                                           {an_whole.get(), an_lean.get()}};
+      for (const auto& [a, b] : pairs) {
+        const GlowRun whole = run_glow(plan, s, *a), part = run_glow(lean, s, *b);
+        ASSERT_TRUE(whole.run.ok && part.run.ok) << whole.run.error << part.run.error;
+        for (const char* tex : {"glow", "final"}) {
+          const std::vector<float>& x = whole.images.at(tex).rgba;
+          const std::vector<float>& y = part.images.at(tex).rgba;
+          ASSERT_EQ(x.size(), y.size());
+          size_t differ = 0;
+          for (size_t i = 0; i < x.size(); ++i)
+            differ += f == img::Format::RGBA32F ? !(std::abs(x[i] - y[i]) <= 1e-6f) : x[i] != y[i];
+          EXPECT_EQ(differ, 0u) << a->name() << " " << tier_name(t) << " " << img::format_name(f)
+                                << " " << tex;
+        }
+      }
+    }
 }
 
 TEST(Prune, NoSourcesRunsNoBlur) {

@@ -135,6 +135,25 @@ std::string mask_by_stencil(const PassDesc& pass, const EffectGraph& graph, Imag
   return "";
 }
 
+// Outside the pass's scissor rectangle the target keeps `before` (and the rounding ties it
+// had: its value there is the stored one, unchanged).
+void keep_outside_scissor(const pass::ScissorRect& r, const img::Image& before, img::Image& result,
+                          const MidpointMasks& midpoints, const std::string& target,
+                          std::vector<uint8_t>* midpoint_mask) {
+  const std::vector<uint8_t>* old = nullptr;
+  if (auto it = midpoints.find(target); it != midpoints.end()) old = &it->second;
+  for (uint32_t y = 0; y < result.height; ++y)
+    for (uint32_t x = 0; x < result.width; ++x) {
+      if (int64_t{x} >= r.x0 && int64_t{x} < r.x1 && int64_t{y} >= r.y0 && int64_t{y} < r.y1)
+        continue;
+      const size_t i = size_t{y} * result.width + x;
+      for (size_t c = 0; c < 4; ++c)
+        result.rgba[4 * i + c] = 4 * i + c < before.rgba.size() ? before.rgba[4 * i + c] : 0.0f;
+      if (midpoint_mask && i < midpoint_mask->size())
+        (*midpoint_mask)[i] = old && i < old->size() ? (*old)[i] : 0;
+    }
+}
+
 } // namespace
 
 analytic::SamplerModel sampler_model(const pass::SamplerState& s) {
@@ -150,8 +169,11 @@ std::string run_analytic_pass(const PassDesc& pass, const EffectGraph& graph, Im
                               MidpointMasks& midpoints, std::vector<std::string>* notes) {
   if (!pass.vs || !pass.ps)
     return fmt::format("pass '{}': needs a vertex and a pixel listing", pass.name);
-  if (pass.analytic == AnalyticForm::Coverage)
+  if (pass.analytic == AnalyticForm::Coverage) {
+    if (pass.scissor)
+      return fmt::format("pass '{}': the analytic object pass has no scissor rectangle", pass.name);
     return run_object_pass(pass, graph, images, midpoints);
+  }
   if (!pass.more_targets.empty())
     return fmt::format("pass '{}': the analytic model writes several render targets only in an "
                        "object pass (constant outputs)",
@@ -221,6 +243,9 @@ std::string run_analytic_pass(const PassDesc& pass, const EffectGraph& graph, Im
         !e.empty())
       return e;
   }
+  if (pass.scissor)
+    keep_outside_scissor(*pass.scissor, images[pass.target], image, midpoints, pass.target,
+                         in.slack ? &mask : nullptr);
   images[pass.target] = std::move(image);
   if (in.slack) midpoints[pass.target] = std::move(mask);
   if (notes)

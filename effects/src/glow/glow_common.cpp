@@ -328,6 +328,7 @@ GlowPlan build_glow_graph(const GlowParams& p, const TierRecipe& r) {
   const uint32_t gh = (p.height + p.downsample - 1) / p.downsample;
   plan.glow_width = gw;
   plan.glow_height = gh;
+  plan.downsample = p.downsample;
   EffectGraph& g = plan.graph;
   g.conventions.subtexel_bits = p.subtexel_bits;
   g.conventions.ps1x_max_value = p.ps1x_max;

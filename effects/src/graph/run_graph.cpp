@@ -48,6 +48,7 @@ std::optional<pass::Pass> make_pass(const PassDesc& desc, const ImageMap& images
   }
   pass.color_targets = static_cast<uint32_t>(1 + desc.more_targets.size());
   pass.depth_stencil = desc.depth_stencil;
+  pass.scissor = desc.scissor;
   for (const TextureBind& b : desc.textures) {
     auto it = images.find(b.texture);
     if (it == images.end() || b.stage >= pass::kMaxSamplers) {

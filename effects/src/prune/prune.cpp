@@ -111,6 +111,90 @@ bool varies_between_frames(const EffectGraph& g) {
   return false;
 }
 
+// The glow's own graph (the tiers' build_glow): its extract pass reads the scene image and
+// nothing else. Other effects (the outline's extract reads the object's mask; radial and
+// GLSL graphs) take their sources elsewhere, so the scene-image rules below do not apply.
+bool is_glow_graph(const EffectGraph& g) {
+  for (const PassDesc& p : g.passes)
+    if (p.target == kSourcesTexture)
+      return !p.textures.empty() &&
+             std::all_of(p.textures.begin(), p.textures.end(),
+                         [](const TextureBind& t) { return t.texture == kSceneTexture; });
+  return false;
+}
+
+// A box of pixels, right and bottom exclusive.
+struct Box {
+  int64_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  Box grown(int64_t gx, int64_t gy, int64_t w, int64_t h) const {
+    return {std::max<int64_t>(0, x0 - gx), std::max<int64_t>(0, y0 - gy),
+            std::min<int64_t>(w, x1 + gx), std::min<int64_t>(h, y1 + gy)};
+  }
+  int64_t area() const { return (x1 - x0) * (y1 - y0); }
+};
+
+// Blur passes (and extract, downsample) drawn only inside the box where their values can be
+// non-zero: the box of the scene's pixels with alpha ≠ 0 (outside it extract writes rgb × 0
+// = 0 and alpha 0), carried through each pass grown by how far that pass reads. Outside the
+// box every texel a pass reads is 0 and every weight is finite, so it would write 0 (RGBA8
+// and RGBA16F store 0 exactly; ONE/ONE adds 0) into a texture that starts at 0: the scissor
+// changes no stored bit. The margins are generous on purpose (2 pixels at full resolution,
+// a block and one texel more per downsample, the taps' reach plus 2 texels per blur axis:
+// bilinear neighbours and the half-texel shift); every sampler must clamp (a wrapping one
+// would read the far side).
+void limit_to_sources(const GlowPlan& plan, const Box& sources, PrunedGraph& r) {
+  // (the reasons below read "drawn only in …": r.limited)
+  for (const PassDesc& p : r.graph.passes)
+    for (const TextureBind& t : p.textures)
+      if (p.target != kFinalTexture && (t.sampler.address_u != pass::AddressMode::Clamp ||
+                                        t.sampler.address_v != pass::AddressMode::Clamp))
+        return;
+  const TextureDesc* scene = r.graph.find_texture(kSceneTexture);
+  if (!scene || plan.glow_width == 0 || plan.downsample == 0) return;
+  const int64_t w = scene->width, h = scene->height;
+  const int64_t gw = plan.glow_width, gh = plan.glow_height, d = plan.downsample;
+  int64_t reach = 0;
+  for (const BlurTap& t : plan.taps) reach = std::max<int64_t>(reach, std::abs(t.offset));
+  reach += 2;
+  const Box full = sources.grown(2, 2, w, h);
+  Box small = full;
+  if (d > 1) {
+    small = {full.x0 / d, full.y0 / d, (full.x1 - 1) / d + 1, (full.y1 - 1) / d + 1};
+    small = small.grown(1, 1, gw, gh);
+  }
+  const Box horizontal = small.grown(reach, 2, gw, gh);
+  const Box vertical = horizontal.grown(2, reach, gw, gh);
+  struct Rule {
+    std::string_view target, group;
+    Box box;
+    int64_t width, height;
+  };
+  const Rule rules[] = {{kSourcesTexture, "extract", full, w, h},
+                        {kSmallTexture, "downsample.*", small, gw, gh},
+                        {kBlurHTexture, "blur_h.*", horizontal, gw, gh},
+                        {kGlowTexture, "blur_v.*", vertical, gw, gh}};
+  for (const Rule& rule : rules) {
+    if (rule.box.area() >= rule.width * rule.height) continue; // nothing to save
+    bool any = false;
+    for (PassDesc& p : r.graph.passes)
+      if (p.target == rule.target) {
+        p.scissor = pass::ScissorRect{int32_t(rule.box.x0), int32_t(rule.box.y0),
+                                      int32_t(rule.box.x1), int32_t(rule.box.y1)};
+        any = true;
+      }
+    if (!any) continue;
+    r.limited.push_back(
+        {fmt::format("{} to x {}..{}, y {}..{}", rule.group, rule.box.x0, rule.box.x1 - 1,
+                     rule.box.y0, rule.box.y1 - 1),
+         fmt::format("{:.1f} % of {}x{}: the glow sources' box (alpha ≠ 0) grown by how far the "
+                     "passes before read ({} texels for the blur taps); outside it every value "
+                     "read is 0, so every value written is 0, as the texture starts",
+                     100.0 * double(rule.width * rule.height - rule.box.area()) /
+                         double(rule.width * rule.height),
+                     rule.width, rule.height, reach)});
+  }
+}
+
 } // namespace
 
 PrunedGraph prune_glow(const GlowPlan& plan, const img::Image& scene) {
@@ -118,12 +202,19 @@ PrunedGraph prune_glow(const GlowPlan& plan, const img::Image& scene) {
   r.graph = plan.graph;
   r.passes_before = plan.graph.passes.size();
   if (!plan || varies_between_frames(plan.graph)) return r;
+  if (!is_glow_graph(plan.graph)) return prune_unread(plan.graph, kFinalTexture);
   double most = 0; // the largest rgb × alpha of the scene
   bool any_alpha = false;
+  Box box{int64_t{scene.width}, int64_t{scene.height}, 0, 0}; // of the pixels with alpha ≠ 0
   for (size_t i = 0; i + 3 < scene.rgba.size(); i += 4) {
     for (size_t c = 0; c < 4; ++c)
       if (!std::isfinite(scene.rgba[i + c])) return r; // not pruned (prune.h)
     const double a = scene.rgba[i + 3];
+    if (a != 0 && scene.width > 0) {
+      const int64_t x = int64_t(i / 4 % scene.width), y = int64_t(i / 4 / scene.width);
+      box = {std::min(box.x0, x), std::min(box.y0, y), std::max(box.x1, x + 1),
+             std::max(box.y1, y + 1)};
+    }
     any_alpha = any_alpha || a != 0;
     most = std::max(most, a * std::max({double(scene.rgba[i]), double(scene.rgba[i + 1]),
                                         double(scene.rgba[i + 2]), 0.0}));
@@ -150,6 +241,7 @@ PrunedGraph prune_glow(const GlowPlan& plan, const img::Image& scene) {
     const double horizontal = prune_axis(passes, "blur_h", blur_input, r.left_out);
     prune_axis(passes, "blur_v", std::min(horizontal, 1.0), r.left_out);
   }
+  limit_to_sources(plan, box, r);
   PrunedGraph unread = prune_unread(r.graph, kFinalTexture);
   r.graph = std::move(unread.graph);
   r.left_out.insert(r.left_out.end(), unread.left_out.begin(), unread.left_out.end());

@@ -212,7 +212,9 @@ nlohmann::json report_json(const SweepResult& r, const SweepSettings& s, const R
                          {"n", t.frames}};
     o["times"] = times;
     o["frame_ms"] = c.frame_ms();
-    o["pruning"] = {{"left_out_passes", c.pruned_left_out}, {"frame_ms", c.pruned_frame_ms}};
+    o["pruning"] = {{"left_out_passes", c.pruned_left_out},
+                    {"limited_pass_groups", c.pruned_limited},
+                    {"frame_ms", c.pruned_frame_ms}};
     o["pareto"] = on_front(r, i);
     configs.push_back(o);
   }
@@ -228,7 +230,7 @@ std::string report_csv(const SweepResult& r) {
                     "glow_max_abs,glow_rmse,glow_share_off,final_max_abs,final_rmse,"
                     "final_share_off,all_agree";
   for (const char* d : kDevices) out += fmt::format(",{0}_setup_ms,{0}_median_ms", d);
-  out += ",frame_ms,pareto,pruned_left_out,pruned_frame_ms\n";
+  out += ",frame_ms,pareto,pruned_left_out,pruned_limited,pruned_frame_ms\n";
   for (size_t i = 0; i < r.configs.size(); ++i) {
     const ConfigResult& c = r.configs[i];
     std::string skipped = c.skipped;
@@ -238,7 +240,7 @@ std::string report_csv(const SweepResult& r) {
                     c.config.downsample, c.config.taps, img::format_name(c.config.format),
                     c.config.half_texel ? 1 : 0, c.passes, skipped);
     if (!c.skipped.empty()) {
-      out += std::string(7 + 2 * std::size(kDevices) + 4, ',') + "\n";
+      out += std::string(7 + 2 * std::size(kDevices) + 5, ',') + "\n";
       continue;
     }
     out += fmt::format(",{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{}", c.glow.max_abs, c.glow.rmse,
@@ -248,8 +250,8 @@ std::string report_csv(const SweepResult& r) {
       const DeviceTime* t = time_of(c, d);
       out += t ? fmt::format(",{:.3f},{:.3f}", t->setup_ms, t->median_ms) : std::string(",,");
     }
-    out += fmt::format(",{:.3f},{},{},{:.3f}\n", c.frame_ms(), on_front(r, i) ? 1 : 0,
-                       c.pruned_left_out, c.pruned_frame_ms);
+    out += fmt::format(",{:.3f},{},{},{},{:.3f}\n", c.frame_ms(), on_front(r, i) ? 1 : 0,
+                       c.pruned_left_out, c.pruned_limited, c.pruned_frame_ms);
   }
   return out;
 }
@@ -308,17 +310,18 @@ std::string report_markdown(const SweepResult& r, const SweepSettings& s, const 
   md += "\n## Leaving out what the scene does not need\n\n"
         "Frame time of the whole plan and of the plan pruned for this scene (`tierlift glow "
         "--explain` lists what is left out and why), for every configuration where pruning "
-        "leaves something out:\n\n| configuration | passes left out | whole plan ms | pruned "
-        "ms |\n| --- | ---: | ---: | ---: |\n";
+        "leaves something out or limits passes to the sources' box:\n\n| configuration | "
+        "passes left out | pass groups limited | whole plan ms | pruned ms |\n| --- | ---: | "
+        "---: | ---: | ---: |\n";
   size_t pruned_rows = 0;
   for (const ConfigResult& c : r.configs)
-    if (c.skipped.empty() && c.pruned_left_out > 0) {
-      md += fmt::format("| {} | {} | {:.2f} | {:.2f} |\n", config_label(c.config),
-                        c.pruned_left_out, c.frame_ms(), c.pruned_frame_ms);
+    if (c.skipped.empty() && (c.pruned_left_out > 0 || c.pruned_limited > 0)) {
+      md += fmt::format("| {} | {} | {} | {:.2f} | {:.2f} |\n", config_label(c.config),
+                        c.pruned_left_out, c.pruned_limited, c.frame_ms(), c.pruned_frame_ms);
       ++pruned_rows;
     }
   if (pruned_rows == 0)
-    md += "| (none: this scene needs every pass of every configuration) | | | |\n";
+    md += "| (none: this scene needs every pass of every configuration) | | | | |\n";
   md += "\n## Cheapest within 1/255 of the ideal\n\n";
   if (r.cheapest_within)
     md += head + row(*r.cheapest_within) +

@@ -119,8 +119,9 @@ std::string run_config(ConfigResult& out, const Scene& scene, const img::Image& 
   // pruned frame must equal the whole plan's (RGBA32F within 1e-6, else bit for bit).
   const PrunedGraph pruned = prune_glow(plan, image);
   out.pruned_left_out = pruned.left_out.size();
+  out.pruned_limited = pruned.limited.size();
   out.pruned_frame_ms = out.frame_ms();
-  if (!pruned.left_out.empty() && !clock.empty()) {
+  if (pruned.changed() && !clock.empty()) {
     GlowPlan lean = plan;
     lean.graph = pruned.graph;
     std::unique_ptr<PassDevice> device = make_device(clock, vk);

@@ -170,6 +170,7 @@ struct GlowPlan {
   std::vector<uint8_t> weight_bytes;
   std::string quantization;
   uint32_t glow_width = 0, glow_height = 0; // ceil(size / downsample)
+  unsigned downsample = 1;
   unsigned blur_passes_per_axis = 0;
   std::string error;                 // non-empty: no graph
   std::vector<std::string> warnings; // the graph runs, but not as asked (e.g. clamped weights)

@@ -74,6 +74,9 @@ struct PassDesc {
   // when `stencil` is empty (depth_stencil must then be disabled). No depth buffer.
   std::string stencil;
   pass::DepthStencilState depth_stencil;
+  // D3D9's scissor rectangle (pass::ScissorRect); none: the whole target. Pruning sets it
+  // where a pass provably writes zeros outside it (prune.h).
+  std::optional<pass::ScissorRect> scissor;
   // The geometry: vertex inputs (v#, as the vertex listing declares them) and triangles
   // indexing them (empty: consecutive triples). No vertices: the full-screen quad.
   std::vector<pass::VertexInput> vertices;

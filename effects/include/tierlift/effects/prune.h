@@ -9,6 +9,10 @@
 //    store before it added) writes values below S·B; when S·B is below half a step (1/510,
 //    with a margin of 1 % for fp32 arithmetic) each of them stores 0, and ONE/ONE adds 0,
 //    so the pass is left out (the next pass of that axis then replaces, as the first did);
+//  - blur passes limited (D3D9's scissor rectangle) to where glow sources exist: the box of
+//    the scene's pixels with alpha ≠ 0, grown by how far each pass reads (the downsample's
+//    block, the taps' reach); outside it every value read is 0 and every value written is 0
+//    (prune.cpp, limit_to_sources, gives the margins);
 //  - passes whose output nothing reads: walking back from the final frame, a pass is kept
 //    when its target is read later (or is the frame);
 //  - the SPIR-V pair pruning (unused constants, inputs and outputs of each vertex + pixel
@@ -34,8 +38,11 @@ struct LeftOut {
 
 struct PrunedGraph {
   EffectGraph graph;             // what runs
-  std::vector<LeftOut> left_out; // empty: the whole plan runs
+  std::vector<LeftOut> left_out; // whole passes; empty (and `limited` empty): the whole plan
+  // Passes that run, but only inside a scissor rectangle (what: "blur_h.* to x a..b, y c..d").
+  std::vector<LeftOut> limited;
   size_t passes_before = 0;
+  bool changed() const { return !left_out.empty() || !limited.empty(); }
 };
 
 // `scene` is the scene image the plan runs over (before it is stored in the plan's format).

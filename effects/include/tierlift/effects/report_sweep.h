@@ -81,6 +81,7 @@ struct ConfigResult {
   // The plan pruned for this scene (prune.h): how many passes it leaves out and the frame
   // time then (the same device as frame_ms(); equal to it when nothing is left out).
   size_t pruned_left_out = 0;
+  size_t pruned_limited = 0; // pass groups drawn only inside the sources' box
   double pruned_frame_ms = 0;
   // The frame time the plot and the Pareto front use: Vulkan's median, else the cpu's.
   double frame_ms() const;

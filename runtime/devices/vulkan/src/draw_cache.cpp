@@ -93,6 +93,13 @@ std::optional<std::string> draw_key(const pass::Pass& pass, const DrawTextures& 
   k.put(pass.viewport.min_z);
   k.put(pass.viewport.max_z);
   k.put(pass.blend);
+  k.put(pass.scissor.has_value());
+  if (pass.scissor) {
+    k.put(pass.scissor->x0);
+    k.put(pass.scissor->y0);
+    k.put(pass.scissor->x1);
+    k.put(pass.scissor->y1);
+  }
   return k.take();
 }
 

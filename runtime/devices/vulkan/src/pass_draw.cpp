@@ -286,7 +286,8 @@ std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawText
   if (err.empty()) err = create_pipeline(d, cleanup, pd, out.pipeline);
   if (!err.empty()) return err;
 
-  // Viewport (D3D9 centres: +0.5 pixel) and scissor (the D3D9 viewport within the target).
+  // Viewport (D3D9 centres: +0.5 pixel) and scissor (the D3D9 viewport within the target,
+  // and within the pass's scissor rectangle when it has one).
   const pass::Viewport& v = pass.viewport;
   const uint32_t vw = v.width ? v.width : target.width, vh = v.height ? v.height : target.height;
   const float shift = pass.conventions.pixel_center == ir::PixelCenter::D3D9 ? 0.5f : 0.0f;
@@ -299,6 +300,12 @@ std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawText
   int64_t sx0 = std::max<int64_t>(v.x, 0), sy0 = std::max<int64_t>(v.y, 0);
   int64_t sx1 = std::min<int64_t>(int64_t{v.x} + vw, target.width);
   int64_t sy1 = std::min<int64_t>(int64_t{v.y} + vh, target.height);
+  if (pass.scissor) {
+    sx0 = std::max<int64_t>(sx0, pass.scissor->x0);
+    sy0 = std::max<int64_t>(sy0, pass.scissor->y0);
+    sx1 = std::min<int64_t>(sx1, pass.scissor->x1);
+    sy1 = std::min<int64_t>(sy1, pass.scissor->y1);
+  }
   out.visible = sx1 > sx0 && sy1 > sy0 && !geo.indices.empty();
   out.scissor = {
       {static_cast<int32_t>(out.visible ? sx0 : 0), static_cast<int32_t>(out.visible ? sy0 : 0)},

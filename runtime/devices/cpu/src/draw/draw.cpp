@@ -188,6 +188,12 @@ DrawStats draw(const Pass& pass, const DrawTargets& targets, unsigned threads) {
   PixelRect scissor{std::max<int64_t>(0, vp.x), std::max<int64_t>(0, vp.y),
                     std::min<int64_t>(target.width, int64_t{vp.x} + vp.width),
                     std::min<int64_t>(target.height, int64_t{vp.y} + vp.height)};
+  if (pass.scissor) {
+    scissor.x0 = std::max<int64_t>(scissor.x0, pass.scissor->x0);
+    scissor.y0 = std::max<int64_t>(scissor.y0, pass.scissor->y0);
+    scissor.x1 = std::min<int64_t>(scissor.x1, pass.scissor->x1);
+    scissor.y1 = std::min<int64_t>(scissor.y1, pass.scissor->y1);
+  }
   std::vector<Triangle> setup;
   for (const auto& t : tris) {
     if (t[0] >= outs.size() || t[1] >= outs.size() || t[2] >= outs.size()) {

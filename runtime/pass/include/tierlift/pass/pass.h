@@ -15,6 +15,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -60,6 +61,13 @@ struct Viewport {
   int32_t x = 0, y = 0;
   uint32_t width = 0, height = 0;
   float min_z = 0.0f, max_z = 1.0f;
+};
+
+// D3DRS_SCISSORTESTENABLE with IDirect3DDevice9::SetScissorRect: only pixels with
+// x0 ≤ x < x1 and y0 ≤ y < y1 are drawn (a RECT: right and bottom exclusive), within the
+// viewport and the target.
+struct ScissorRect {
+  int32_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;
 };
 
 // D3DCMPFUNC and D3DSTENCILOP, for the depth/stencil state below.
@@ -135,6 +143,7 @@ struct Pass {
   PixelInput constant_inputs;
 
   Viewport viewport;
+  std::optional<ScissorRect> scissor; // none: the scissor test is off
   BlendMode blend = BlendMode::Replace;
   ir::Conventions conventions;
   Executor executor = Executor::Auto;
