@@ -186,7 +186,8 @@ void limit_to_sources(const GlowPlan& plan, const Box& sources, PrunedGraph& r) 
     r.limited.push_back(
         {fmt::format("{} to x {}..{}, y {}..{}", rule.group, rule.box.x0, rule.box.x1 - 1,
                      rule.box.y0, rule.box.y1 - 1),
-         fmt::format("{:.1f} % of {}x{}: the glow sources' box (alpha ≠ 0) grown by how far the "
+         fmt::format("{:.1f} % of the {}x{} texture not drawn: the glow sources' box (alpha ≠ 0) "
+                     "grown by how far the "
                      "passes before read ({} texels for the blur taps); outside it every value "
                      "read is 0, so every value written is 0, as the texture starts",
                      100.0 * double(rule.width * rule.height - rule.box.area()) /
