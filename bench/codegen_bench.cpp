@@ -40,8 +40,7 @@ void glslang_compile(benchmark::State& state, EShLanguage stage, const char* sou
   glslang::InitializeProcess();
   for (auto _ : state) {
     std::vector<uint32_t> words = bench::glslang_to_spirv(stage, source);
-    std::string error;
-    if (words.empty() || !codegen::validate(words, &error)) {
+    if (words.empty() || !codegen::validate(words)) {
       state.SkipWithError("glslang failed or spirv-val rejected its module");
       break;
     }

@@ -84,13 +84,12 @@ void register_spirv_command(CLI::App& app) {
       report.output("explain", text.empty() ? std::string("nothing was left out\n") : text);
     }
     if (opts->dis) {
-      std::string error;
-      std::string text = codegen::disassemble(module->words, &error);
-      if (text.empty()) {
-        report.error("codegen", error);
+      ir::Result<std::string> text = codegen::disassemble(module->words);
+      if (!text) {
+        report.error("codegen", text.message());
         return report.finish(kExitInvalid);
       }
-      report.output("disassembly", text);
+      report.output("disassembly", *text);
     }
     if (!opts->output.empty()) {
       std::string bytes(reinterpret_cast<const char*>(module->words.data()),

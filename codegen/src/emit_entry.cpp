@@ -145,16 +145,17 @@ std::optional<ShaderModule> Emitter::run() {
   m.stage = prog.stage();
   m.words = b.finish();
   const ir::SourceLoc where = prog.version_loc;
-  std::string message;
-  if (!validate(m.words, &message)) {
+  if (ir::Status valid = validate(m.words); !valid) {
     diags.error(where, "spirv-val",
-                "internal error: the generated SPIR-V fails validation: " + message);
+                "internal error: the generated SPIR-V fails validation: " + valid.message());
     return std::nullopt;
   }
   if (opt.optimize) {
     std::vector<uint32_t> optimised = m.words;
-    if (!optimize(optimised, &message) || !validate(optimised, &message)) {
-      diags.error(where, "spirv-opt", "internal error: optimisation failed: " + message);
+    ir::Status done = optimize(optimised);
+    if (done) done = validate(optimised);
+    if (!done) {
+      diags.error(where, "spirv-opt", "internal error: optimisation failed: " + done.message());
       return std::nullopt;
     }
     m.words = std::move(optimised);

@@ -22,42 +22,39 @@ struct MessageCollector {
 
 } // namespace
 
-bool validate(const std::vector<uint32_t>& words, std::string* error) {
+ir::Status validate(const std::vector<uint32_t>& words) {
   spvtools::SpirvTools tools(kEnv);
   MessageCollector messages;
   tools.SetMessageConsumer(messages.consumer());
   spvtools::ValidatorOptions options;
-  const bool ok = tools.Validate(words.data(), words.size(), options);
-  if (!ok && error) *error = messages.text.empty() ? "spirv-val failed" : messages.text;
-  return ok;
+  if (tools.Validate(words.data(), words.size(), options)) return ir::ok_status();
+  return ir::fail("spirv-val", "spirv", messages.text.empty() ? "spirv-val failed" : messages.text);
 }
 
-std::string disassemble(const std::vector<uint32_t>& words, std::string* error) {
+ir::Result<std::string> disassemble(const std::vector<uint32_t>& words) {
   spvtools::SpirvTools tools(kEnv);
   MessageCollector messages;
   tools.SetMessageConsumer(messages.consumer());
   std::string text;
   if (!tools.Disassemble(words, &text,
                          SPV_BINARY_TO_TEXT_OPTION_FRIENDLY_NAMES |
-                             SPV_BINARY_TO_TEXT_OPTION_INDENT)) {
-    if (error) *error = messages.text.empty() ? "spirv-dis failed" : messages.text;
-    return {};
-  }
+                             SPV_BINARY_TO_TEXT_OPTION_INDENT))
+    return ir::fail("spirv-dis", "spirv",
+                    messages.text.empty() ? "spirv-dis failed" : messages.text);
   return text;
 }
 
-bool optimize(std::vector<uint32_t>& words, std::string* error) {
+ir::Status optimize(std::vector<uint32_t>& words) {
   spvtools::Optimizer opt(kEnv);
   MessageCollector messages;
   opt.SetMessageConsumer(messages.consumer());
   opt.RegisterPerformancePasses();
   std::vector<uint32_t> out;
-  if (!opt.Run(words.data(), words.size(), &out)) {
-    if (error) *error = messages.text.empty() ? "spirv-opt failed" : messages.text;
-    return false;
-  }
+  if (!opt.Run(words.data(), words.size(), &out))
+    return ir::fail("spirv-opt", "spirv",
+                    messages.text.empty() ? "spirv-opt failed" : messages.text);
   words = std::move(out);
-  return true;
+  return ir::ok_status();
 }
 
 } // namespace tierlift::codegen

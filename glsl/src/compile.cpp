@@ -152,9 +152,9 @@ CompileResult compile_fragment(std::string_view source, const std::string& file_
   glslang::SpvOptions spv;
   spv.validate = false; // spirv-val below, with the rules tierlift's own modules meet
   glslang::GlslangToSpv(*program.getIntermediate(EShLangFragment), fs.spirv, &spv);
-  std::string why;
-  if (!codegen::validate(fs.spirv, &why)) {
-    out.error = fmt::format("{}: error: spirv-val rejects glslang's SPIR-V: {}\n", file_name, why);
+  if (ir::Status valid = codegen::validate(fs.spirv); !valid) {
+    out.error = fmt::format("{}: error: spirv-val rejects glslang's SPIR-V: {}\n", file_name,
+                            valid.message());
     return out;
   }
   out.shader = std::move(fs);

@@ -27,8 +27,8 @@ void compile_listing(const fs::path& path) {
   ir::DiagnosticSink diags;
   auto module = codegen::compile(*parsed.program, {}, diags);
   ASSERT_TRUE(module) << ir::render_text(diags, parsed.sources);
-  std::string error;
-  EXPECT_TRUE(codegen::validate(module->words, &error)) << error;
+  const ir::Status valid = codegen::validate(module->words);
+  EXPECT_TRUE(valid) << valid.message();
   EXPECT_EQ(module->stage, parsed.program->stage());
   EXPECT_EQ(module->words[0], 0x07230203u);
   // The optimised module must validate as well.

@@ -198,8 +198,8 @@ void expect_compiles(const std::string& text) {
   ir::DiagnosticSink diags;
   auto module = codegen::compile(*parsed.program, {}, diags);
   ASSERT_TRUE(module) << ir::render_text(diags, parsed.sources);
-  std::string error;
-  EXPECT_TRUE(codegen::validate(module->words, &error)) << error;
+  const ir::Status valid = codegen::validate(module->words);
+  EXPECT_TRUE(valid) << valid.message();
 }
 
 } // namespace

@@ -88,9 +88,10 @@ TEST(CodegenPruning, Listing1AgainstListing4DropsOT4ToOT7) {
   }
   // Only c0..c3 remain in the vertex constant block.
   EXPECT_EQ(pair->vs.uniforms.float_count, 4u);
-  std::string error;
-  EXPECT_TRUE(codegen::validate(pair->vs.words, &error)) << error;
-  EXPECT_TRUE(codegen::validate(pair->ps.words, &error)) << error;
+  const ir::Status valid = codegen::validate(pair->vs.words);
+  EXPECT_TRUE(valid) << valid.message();
+  const ir::Status valid_ps = codegen::validate(pair->ps.words);
+  EXPECT_TRUE(valid_ps) << valid_ps.message();
 }
 
 TEST(CodegenPruning, Listing1AgainstListing2RemovesNothing) {

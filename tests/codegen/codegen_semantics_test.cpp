@@ -26,10 +26,9 @@ std::optional<codegen::ShaderModule> build(const std::string& text,
 }
 
 std::string dis(const codegen::ShaderModule& m) {
-  std::string error;
-  std::string text = codegen::disassemble(m.words, &error);
-  EXPECT_FALSE(text.empty()) << error;
-  return text;
+  ir::Result<std::string> text = codegen::disassemble(m.words);
+  EXPECT_TRUE(text) << text.message();
+  return text ? *text : std::string();
 }
 
 // Result ids of every instruction with the given opcode name, e.g. "OpFMul".
@@ -218,12 +217,12 @@ TEST(CodegenSemantics, SubroutinesBecomeFunctions) {
 
 TEST(CodegenSemantics, ValidatorRejectsBrokenWords) {
   const std::vector<uint32_t> garbage{0x07230203, 0x00010300, 0, 10, 0, 0x00050000 | 1234};
-  std::string error;
-  EXPECT_FALSE(codegen::validate(garbage, &error));
-  EXPECT_FALSE(error.empty());
-  std::string dis_error;
-  EXPECT_TRUE(codegen::disassemble({1, 2, 3}, &dis_error).empty());
-  EXPECT_FALSE(dis_error.empty());
+  const ir::Status valid = codegen::validate(garbage);
+  EXPECT_FALSE(valid);
+  EXPECT_FALSE(valid.message().empty());
+  const ir::Result<std::string> dis = codegen::disassemble({1, 2, 3});
+  EXPECT_FALSE(dis);
+  EXPECT_FALSE(dis.message().empty());
 }
 
 TEST(CodegenSemantics, BrokenFlowIsADiagnosticNotACrash) {
@@ -304,8 +303,8 @@ TEST(CodegenSemantics, MalformedInstructionsNeverCrash) {
         auto m = codegen::compile(prog, {}, diags);
         SCOPED_TRACE(std::string(info.mnemonic) + " " + std::string(ir::profile_name(p)));
         if (m) {
-          std::string error;
-          EXPECT_TRUE(codegen::validate(m->words, &error)) << error;
+          const ir::Status valid = codegen::validate(m->words);
+          EXPECT_TRUE(valid) << valid.message();
         } else {
           EXPECT_TRUE(diags.has_errors());
         }

@@ -32,8 +32,8 @@ std::vector<int64_t> decorations(const std::vector<uint32_t>& words, uint32_t de
 TEST(GlslCompile, SeedShaderBecomesValidSpirvWithTierliftsBindings) {
   CompileResult r = compile_fragment_file(kSeedH.string());
   ASSERT_TRUE(r) << r.error;
-  std::string why;
-  EXPECT_TRUE(codegen::validate(r.shader->spirv, &why)) << why; // spirv-val, Vulkan 1.1
+  const ir::Status valid = codegen::validate(r.shader->spirv); // spirv-val, Vulkan 1.1
+  EXPECT_TRUE(valid) << valid.message();
   ASSERT_EQ(r.shader->samplers.size(), 1u);
   EXPECT_EQ(r.shader->samplers[0].name, "RTScene");
   EXPECT_EQ(r.shader->samplers[0].stage, 0u);
@@ -112,8 +112,8 @@ TEST(GlslCompile, PlainVulkanGlslForTheBenchmarkPeer) {
       Stage::Fragment, "#version 450\nlayout(location = 0) out vec4 c;\nvoid main() { c = "
                        "vec4(1.0); }\n");
   ASSERT_FALSE(words.empty());
-  std::string why;
-  EXPECT_TRUE(codegen::validate(words, &why)) << why;
+  const ir::Status valid = codegen::validate(words);
+  EXPECT_TRUE(valid) << valid.message();
   std::string log;
   EXPECT_TRUE(
       compile_vulkan_glsl(Stage::Fragment, "#version 450\nvoid main() { x; }\n", &log).empty());

@@ -12,6 +12,7 @@
 #include "tierlift/ir/conventions.h"
 #include "tierlift/ir/diagnostic.h"
 #include "tierlift/ir/program.h"
+#include "tierlift/ir/result.h"
 
 namespace tierlift::codegen {
 
@@ -146,11 +147,12 @@ std::vector<uint32_t> pack_uniforms(const ShaderModule& module, const UniformVal
 // for --explain.
 std::string explain(const std::vector<PrunedItem>& pruned);
 
-// spirv-val with the Vulkan 1.1 target environment. On failure *error gets the message.
-bool validate(const std::vector<uint32_t>& words, std::string* error);
-// Human-readable disassembly (spirv-dis); "" plus *error on failure.
-std::string disassemble(const std::vector<uint32_t>& words, std::string* error = nullptr);
-// spirv-opt performance passes; false (words unchanged) on failure.
-bool optimize(std::vector<uint32_t>& words, std::string* error);
+// spirv-val with the Vulkan 1.1 target environment; a failure carries the validator's
+// messages (subject "spirv-val").
+ir::Status validate(const std::vector<uint32_t>& words);
+// Human-readable disassembly (spirv-dis).
+ir::Result<std::string> disassemble(const std::vector<uint32_t>& words);
+// spirv-opt performance passes; on failure the words are unchanged.
+ir::Status optimize(std::vector<uint32_t>& words);
 
 } // namespace tierlift::codegen
