@@ -288,12 +288,12 @@ int run(const RunFlags& f) {
   std::optional<img::Comparison> agreement;
   std::optional<img::Verdict> verdict;
   if (want_cpu && want_vulkan) {
-    std::string err;
-    agreement = img::compare(out.image, vk.image, &err);
-    if (!agreement) {
-      report.error("agreement", err);
+    ir::Result<img::Comparison> compared = img::compare(out.image, vk.image);
+    if (!compared) {
+      report.error("agreement", compared.message());
       return report.finish(kExitInvalid);
     }
+    agreement = *compared;
     verdict = img::judge(*agreement, req.format);
   }
 

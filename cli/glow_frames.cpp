@@ -101,9 +101,8 @@ std::string run_animation(const effects::GlowPlan& plan, const img::Image& scene
     auto sink = [&](unsigned f, const effects::ImageMap& images) -> std::string {
       const img::Image& now = images.find(final_name)->second;
       for (size_t e = 0; e < d; ++e) {
-        std::string why;
-        std::optional<img::Comparison> c = img::compare(kept[e][f], now, &why);
-        if (!c) return why;
+        ir::Result<img::Comparison> c = img::compare(kept[e][f], now);
+        if (!c) return c.message();
         const img::Verdict v = img::judge(*c, format);
         FramePairAgreement& p = out.pairs[first_pair + e];
         p.frames_within += v.pass ? 1 : 0;

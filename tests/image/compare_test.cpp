@@ -37,9 +37,9 @@ TEST(Compare, MetricsByHand) {
 }
 
 TEST(Compare, SizeMismatchIsAnError) {
-  std::string error;
-  EXPECT_FALSE(img::compare(flat(2, 2, 0), flat(2, 3, 0), &error));
-  EXPECT_NE(error.find("2x2"), std::string::npos) << error;
+  auto c = img::compare(flat(2, 2, 0), flat(2, 3, 0));
+  EXPECT_FALSE(c);
+  EXPECT_NE(c.message().find("2x2"), std::string::npos) << c.message();
 }
 
 TEST(Compare, NanAgreesWithNanButNotWithNumbers) {

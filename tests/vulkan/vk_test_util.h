@@ -188,11 +188,10 @@ inline TwoWays draw_both(vulkan::Device& dev, const cpu::Pass& pass, uint32_t w,
   DrawResult r = dev.draw(pass, t.vk, options);
   EXPECT_TRUE(r.ok) << r.error;
   t.vk_ms = r.setup_ms + r.draw_ms;
-  std::string err;
-  auto c = img::compare(t.cpu, t.vk, &err);
-  EXPECT_TRUE(c.has_value()) << err;
+  auto c = img::compare(t.cpu, t.vk);
+  EXPECT_TRUE(c) << c.message();
   if (c) t.cmp = *c;
-  t.ok = s.ok && r.ok && c.has_value();
+  t.ok = s.ok && r.ok && c.ok();
   return t;
 }
 

@@ -49,10 +49,9 @@ img::Tolerance pair_tolerance(img::Format format) {
 bool add_row(RunAgreement& out, const std::string& pass, const std::string& target,
              const img::Image& a, const img::Image& b, const std::vector<uint8_t>& mask_a,
              const std::vector<uint8_t>& mask_b) {
-  std::string err;
-  auto c = img::compare(a, b, &err);
+  auto c = img::compare(a, b);
   if (!c) {
-    out.error = fmt::format("{}: {}", pass, err);
+    out.error = fmt::format("{}: {}", pass, c.message());
     return false;
   }
   const std::vector<size_t> explained = explained_pixels(a, b, mask_a, mask_b);

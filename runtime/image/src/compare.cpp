@@ -20,10 +20,9 @@ double difference(float a, float b) {
 }
 } // namespace
 
-std::optional<Comparison> compare(const Image& a, const Image& b, std::string* error) {
-  auto fail = [&](std::string msg) -> std::optional<Comparison> {
-    if (error) *error = std::move(msg);
-    return std::nullopt;
+ir::Result<Comparison> compare(const Image& a, const Image& b) {
+  auto fail = [](std::string msg) -> ir::Result<Comparison> {
+    return ir::fail("compare", "size", std::move(msg));
   };
   if (a.width != b.width || a.height != b.height)
     return fail(

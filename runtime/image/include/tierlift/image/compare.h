@@ -7,6 +7,7 @@
 #include <string>
 
 #include "tierlift/image/image.h"
+#include "tierlift/ir/result.h"
 
 namespace tierlift::img {
 
@@ -25,10 +26,9 @@ struct Comparison {
   bool non_finite_mismatch = false; // NaN or ±inf in one image and not the other
 };
 
-// Differences a − b. Sizes must match; otherwise nullopt and `error` says why. A value that
-// is NaN or infinite in one image but not equal in the other counts as an infinite
-// difference.
-std::optional<Comparison> compare(const Image& a, const Image& b, std::string* error = nullptr);
+// Differences a − b. Sizes must match; otherwise a failure that says why. A value that is
+// NaN or infinite in one image but not equal in the other counts as an infinite difference.
+ir::Result<Comparison> compare(const Image& a, const Image& b);
 
 // Agreement targets per target format (docs/design.md "Three ways, one answer"):
 //   RGBA32F: max abs ≤ 1e-5 × full scale.
