@@ -55,4 +55,18 @@ TEST_F(CliOutline, StencilReferenceOutOfRangeExitsOneAndWritesNothing) {
   EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
+// The validator's MRT rule at the command line: oC1 written without oC0 names the file, the
+// line and the column of the write, with the source line and a caret.
+TEST_F(CliOutline, OC1WithoutOC0IsAPositionedError) {
+  const fs::path listing = dir / "mrt.psh", log = dir / "log.txt";
+  std::ofstream(listing) << "ps_2_0\nmov oC1, c1\n";
+  EXPECT_EQ(run_cli("check " + listing.string(), log), 1) << read(log);
+  const std::string text = read(log);
+  EXPECT_NE(text.find("mrt.psh:2:5: error: oC1 is written, so every oC below it must be written "
+                      "too; oC0 is not"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("    mov oC1, c1\n        ^~~"), std::string::npos) << text;
+}
+
 } // namespace
