@@ -228,6 +228,9 @@ int run(const GlowFlags& f) {
   const std::string where = scene->file.empty() ? "tierlift glow" : scene->file;
 
   const bool radial = scene->effect == "radial-beams";
+  // The radial star moves through the frames --frames runs (per-frame vertex constants).
+  if (radial && f.frames > 0) scene->radial.frames = f.frames;
+  const bool scene_moves = effects::scene_animated(*scene);
   effects::GlowPlan plan = effects::build_scene_effect(*scene);
   if (!plan) {
     report.error("scene", fmt::format("{}: {}", where, plan.error), scene->file);
@@ -245,9 +248,12 @@ int run(const GlowFlags& f) {
   std::vector<std::string> warnings = effects::effect_warnings(*scene);
   for (const std::string& w : effects::afterimage_warnings(params, plan.taps))
     warnings.push_back(w);
-  if (params.animated() && f.frames == 0)
-    warnings.push_back("the scene changes from frame to frame (after-image or keyframes); "
-                       "this run shows frame 1 only: --frames N runs N frames");
+  if (scene_moves && f.frames == 0)
+    warnings.push_back(radial ? "the star moves from frame to frame (radial amplitude > 0); this "
+                                "run shows its first frame only: --frames N runs N frames"
+                              : "the scene changes from frame to frame (after-image or "
+                                "keyframes); this run shows frame 1 only: --frames N runs N "
+                                "frames");
   for (const std::string& w : scene->warnings)
     if (std::find(warnings.begin(), warnings.end(), w) == warnings.end()) warnings.push_back(w);
   for (const std::string& w : warnings) report.warning("scene", fmt::format("{}: {}", where, w));
@@ -303,7 +309,7 @@ int run(const GlowFlags& f) {
   }
   std::vector<FrameReport> frames;
   Animation animation;
-  const bool animated = f.frames > 0 && params.animated();
+  const bool animated = f.frames > 0 && scene_moves;
   if (animated) {
     std::vector<std::string> names;
     for (const GlowWay& w : ways) names.push_back(w.name);
@@ -360,11 +366,13 @@ int run(const GlowFlags& f) {
   } else {
     if (radial)
       fmt::print("radial-beams {}: {}x{} {}, {} copies toward ({}, {}), {} zoom passes, strength "
-                 "{}, frame {}\n",
+                 "{}, {}\n",
                  effects::tier_name(params.tier), params.width, params.height,
                  img::format_name(params.format), scene->radial.steps, scene->radial.centre[0],
                  scene->radial.centre[1], plan.blur_passes_per_axis, scene->radial.strength,
-                 scene->radial.frame);
+                 animated ? fmt::format("frames {}..{}", scene->radial.frame,
+                                        scene->radial.frame + f.frames - 1)
+                          : fmt::format("frame {}", scene->radial.frame));
     else if (scene->effect == "glsl-blur")
       fmt::print("glsl-blur: {}x{} {}, {} taps per axis, {} GLSL passes (glslang → SPIR-V on "
                  "vulkan; their ps_2_0 twins on cpu)\n",
@@ -383,7 +391,7 @@ int run(const GlowFlags& f) {
       fmt::print("{}: {} passes in {:.1f} ms{}\n", w.name, w.glow.run.passes.size(),
                  w.glow.run.total_ms, w.name == "vulkan" ? fmt::format(" ({})", vk->name()) : "");
     if (f.explain) {
-      const bool varies = params.animated();
+      const bool varies = scene_moves;
       fmt::print("pruning {}: {} of {} passes left out, {} limited to the sources' box{}\n",
                  f.no_prune ? "off (--no-prune)" : "on", varies ? 0 : pruned.left_out.size(),
                  pruned.passes_before, varies ? 0 : pruned.limited.size(),

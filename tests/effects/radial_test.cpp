@@ -143,6 +143,63 @@ TEST_P(RadialWays, ThreeWaysAgreeOnEveryPassWithTheStarMoving) {
   EXPECT_TRUE(dev->messages().empty()) << dev->messages().front();
 }
 
+// --frames animates the star: frame f of a run from radial.frame = F, on each device, is the
+// still plan built for frame F + f (whose star the tests above check against the closed
+// form), the frames differ from each other, and the devices agree frame by frame.
+TEST_P(RadialWays, FramesAnimateTheStarAsTheStillFramesDo) {
+  constexpr unsigned kFrames = 3, kFirst = 5;
+  RadialParams r = still_params();
+  r.amplitude = 3;
+  r.rate = 2; // half a time unit a frame: the star moves by texels between frames
+  r.frame = kFirst;
+  r.frames = kFrames;
+  const GlowParams g = glow_params(GetParam());
+  GlowPlan moving = build_radial(g, r);
+  ASSERT_TRUE(moving) << moving.error;
+  ASSERT_EQ(moving.graph.passes.front().vs_constants_per_frame.size(), kFrames);
+  const img::Image scene = random_scene(3);
+  CpuPassDevice cpu(2);
+  AnalyticPassDevice analytic;
+  auto vk = make_vulkan_pass_device(*dev);
+  std::vector<std::vector<img::Image>> stars; // [device][frame]
+  for (PassDevice* d :
+       {static_cast<PassDevice*>(&cpu), vk.get(), static_cast<PassDevice*>(&analytic)}) {
+    ImageMap images{{std::string(kSceneTexture), scene}};
+    std::vector<img::Image> frames;
+    FramesRun run = run_frames(moving.graph, *d, images, kFrames,
+                               [&](unsigned, PassDevice& dev_) -> std::string {
+                                 img::Image star;
+                                 std::string e = dev_.read_texture(std::string(kStarTexture), star);
+                                 frames.push_back(std::move(star));
+                                 return e;
+                               });
+    ASSERT_TRUE(run.ok) << d->name() << ": " << run.error;
+    ASSERT_EQ(frames.size(), kFrames);
+    // Each frame equals the still plan of that frame, on the same device.
+    for (unsigned f = 0; f < kFrames; ++f) {
+      RadialParams still = r;
+      still.frame = kFirst + f;
+      still.frames = 1;
+      GlowPlan plan = build_radial(g, still);
+      ASSERT_TRUE(plan) << plan.error;
+      GlowRun one = run_glow(plan, scene, *d, false);
+      ASSERT_TRUE(one.run.ok) << one.run.error;
+      EXPECT_EQ(frames[f].rgba, one.images.at(std::string(kStarTexture)).rgba)
+          << d->name() << " frame " << f;
+    }
+    EXPECT_NE(frames[0].rgba, frames[1].rgba) << d->name();
+    EXPECT_NE(frames[1].rgba, frames[2].rgba) << d->name();
+    stars.push_back(std::move(frames));
+  }
+  for (unsigned f = 0; f < kFrames; ++f)
+    for (size_t b = 1; b < stars.size(); ++b) {
+      auto c = img::compare(stars[0][f], stars[b][f]);
+      ASSERT_TRUE(c) << c.message();
+      EXPECT_TRUE(img::judge(*c, img::Format::RGBA32F).pass) << "frame " << f << " way " << b;
+    }
+  EXPECT_TRUE(dev->messages().empty()) << dev->messages().front();
+}
+
 INSTANTIATE_TEST_SUITE_P(Radial, RadialWays, ::testing::Values(Tier::Dx9, Tier::Dx8),
                          [](const ::testing::TestParamInfo<Tier>& i) {
                            return std::string(tier_name(i.param));

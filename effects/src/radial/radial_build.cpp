@@ -1,4 +1,5 @@
 // The radial-beams graph (radial.h): star, zoom passes, composite, in the tier's listings.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -69,6 +70,7 @@ std::string check(const GlowParams& g, const RadialParams& r, const TierListings
     return fmt::format("radial amplitude {}: expected 0..4096 texels", r.amplitude);
   if (!std::isfinite(r.rate) || r.rate <= 0)
     return fmt::format("radial rate {}: expected a finite value > 0", r.rate);
+  if (r.frames > 100000) return fmt::format("radial frames {}: expected 1..100000", r.frames);
   return {};
 }
 
@@ -147,8 +149,14 @@ GlowPlan build_radial(const GlowParams& g, const RadialParams& r) {
 
   // The star: the scene image tiled (wrap), four moving reads averaged.
   PassDesc star = make_pass("star", star_vs, star_ps, kStarTexture);
-  for (const auto& o : star_offsets(r, r.frame, g.width, g.height))
-    star.vs_constants.push_back({float(o[0]), float(o[1]), 0, 0});
+  const unsigned frames = r.moves() ? std::max(1u, r.frames) : 1u;
+  for (unsigned f = 0; f < frames; ++f) {
+    std::vector<pass::Vec4> offsets;
+    for (const auto& o : star_offsets(r, r.frame + f, g.width, g.height))
+      offsets.push_back({float(o[0]), float(o[1]), 0, 0});
+    if (f == 0) star.vs_constants = offsets;
+    if (frames > 1) star.vs_constants_per_frame.push_back(std::move(offsets));
+  }
   star.ps_constants = {splat(0.25)};
   bind(star, 0, kSceneTexture, sampler(pass::Filter::Linear, pass::AddressMode::Wrap), 4,
        t.one_stage_per_read);

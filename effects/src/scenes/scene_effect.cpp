@@ -59,6 +59,11 @@ void read_effect(const Json& j, FieldChecker& c, const std::string& base_dir, Sc
     if (owned_by("glsl", "glsl-blur", c, s)) read_glsl(*v, c, base_dir, s.glsl);
 }
 
+bool scene_animated(const Scene& scene) {
+  if (scene.effect == "radial-beams") return scene.radial.moves();
+  return scene.params.animated();
+}
+
 GlowPlan build_scene_effect(const Scene& scene) {
   if (scene.effect == "radial-beams") return build_radial(scene.params, scene.radial);
   if (scene.effect == "stencil-outline") return build_outline(scene.params, scene.outline);

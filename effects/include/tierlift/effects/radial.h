@@ -32,6 +32,12 @@ struct RadialParams {
   double amplitude = 4;
   double rate = 30;
   unsigned frame = 0;
+  // Frames the star moves through (`tierlift glow --frames N` sets N): frame f of a run
+  // (from 0) is time (frame + f) / rate, given to the star pass as per-frame vertex
+  // constants (PassDesc::vs_constants_per_frame), so every device animates alike.
+  unsigned frames = 1;
+  // The star moves from frame to frame (a still star: amplitude 0).
+  bool moves() const { return amplitude > 0; }
 };
 
 // One zoomed copy: u' = scale·uv + offset per axis (uv as the quad listing sees it: texel

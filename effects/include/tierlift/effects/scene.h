@@ -41,6 +41,11 @@ struct Scene {
   std::vector<std::string> warnings;
 };
 
+// The scene changes from frame to frame: the glow's after-image, keyframes or motion
+// (GlowParams::animated), or a radial-beams star that moves. `--frames N` then runs and
+// compares N different frames.
+bool scene_animated(const Scene& scene);
+
 // The graph the scene's effect builds: build_glow, build_radial, build_outline or
 // build_glsl_blur.
 GlowPlan build_scene_effect(const Scene& scene);
