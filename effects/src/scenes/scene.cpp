@@ -4,6 +4,7 @@
 
 #include "tierlift/effects/scene.h"
 
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 
@@ -19,6 +20,14 @@ namespace {
 // "PATH: what" (img's messages) → "PATH: error: what".
 std::string file_error(const std::string& path, const std::string& message) {
   const std::string head = path + ": ";
+  // A positioned image error ("PATH:LINE:COL: why", the quoted line, the caret): "error:"
+  // goes after the position.
+  if (message.size() > path.size() + 1 && message.starts_with(path + ":") &&
+      std::isdigit(static_cast<unsigned char>(message[path.size() + 1]))) {
+    const size_t colon = message.find(": ", path.size() + 1);
+    if (colon != std::string::npos)
+      return message.substr(0, colon) + ": error: " + message.substr(colon + 2) + "\n";
+  }
   const std::string what = message.starts_with(head) ? message.substr(head.size()) : message;
   return fmt::format("{}: error: {}\n", path, what);
 }
@@ -101,7 +110,7 @@ Scene default_scene() {
 }
 
 SceneLoad scene_from_png(const std::string& png_path) {
-  img::ImageResult png = img::read_png(png_path);
+  img::ImageResult png = img::read_image(png_path); // PNG, or PFM for HDR values
   if (!png) return {std::nullopt, file_error(png_path, png.message()), img::is_io_error(png)};
   Scene s;
   s.image = png_path;
@@ -135,12 +144,12 @@ img::ImageResult load_scene_image(const Scene& scene, unsigned frame) {
   if (scene.image.starts_with("builtin:"))
     return fail(
         fmt::format("{}: not a built-in image (the built-in is {})", scene.image, kBuiltinNeon));
-  img::ImageResult png = img::read_png(scene.image);
+  img::ImageResult png = img::read_image(scene.image);
   if (!png) return png;
   if (png->width != p.width || png->height != p.height)
     return fail(fmt::format("{}: the image is {}x{} but the scene is {}x{} (did the file change?)",
                             scene.image, png->width, png->height, p.width, p.height));
-  png->format = img::Format::RGBA32F; // 8-bit values k/255 are exact floats already
+  png->format = img::Format::RGBA32F; // 8-bit values k/255 are exact floats already; PFM is
   return png;
 }
 

@@ -57,7 +57,7 @@ void read_image(const Json& j, const std::string& base_dir, FieldChecker& c, Sce
   }
   if (image.starts_with("builtin:")) {
     if (image != kBuiltinNeon) {
-      c.error("/image", fmt::format("\"{}\" is not a built-in image; expected \"{}\" or a PNG file",
+      c.error("/image", fmt::format("\"{}\" is not a built-in image; expected \"{}\" or a PNG or PFM file",
                                     image, kBuiltinNeon));
       return;
     }
@@ -69,13 +69,16 @@ void read_image(const Json& j, const std::string& base_dir, FieldChecker& c, Sce
     return;
   }
   if (image.empty()) {
-    c.error("/image", fmt::format("is empty; expected \"{}\" or a PNG file", kBuiltinNeon));
+    c.error("/image", fmt::format("is empty; expected \"{}\" or a PNG or PFM file", kBuiltinNeon));
     return;
   }
   s.image = resolve_path(base_dir, image);
-  img::ImageResult png = img::read_png(s.image);
+  img::ImageResult png = img::read_image(s.image); // PNG, or PFM for HDR values
   if (!png) {
-    c.error("/image", fmt::format("cannot read the image: {}", png.message()));
+    // The image's own first line (a PFM header error is "PATH:LINE:COL: why" and then the
+    // quoted header line: the scene's diagnostic quotes the scene's line instead).
+    const std::string why = png.message().substr(0, png.message().find('\n'));
+    c.error("/image", fmt::format("cannot read the image: {}", why));
     return;
   }
   s.params.width = png->width;

@@ -34,9 +34,23 @@ ir::Result<std::string> read_image_file(const std::string& path) {
   return read;
 }
 
-// A decoder's failure with the path in front of its message.
-ImageResult with_path(const std::string& path, ImageResult r) {
+// A decoder's failure with the path in front of its message. A positioned one (a PFM header
+// token) becomes "PATH:LINE:COL: why" followed by the header line and a caret under the
+// token, quoted from `bytes` (the header is text; the quoted line is cut at 400 bytes).
+ImageResult with_path(const std::string& path, ImageResult r, const std::string& bytes) {
   if (r) return r;
+  for (const ir::Diagnostic& d : r.diagnostics()) {
+    if (d.severity != ir::Severity::Error || !d.loc.valid()) continue;
+    ir::SourceManager sm;
+    sm.add(path, bytes.substr(0, 4096));
+    std::string text = ir::render_text(d, sm); // "PATH:L:C: error: why [image]\n    …\n    ^\n"
+    const std::string tag = ": error: ";
+    if (const size_t at = text.find(tag); at != std::string::npos) text.replace(at, tag.size(), ": ");
+    if (const size_t rule = text.find(" [image]"); rule != std::string::npos)
+      text.erase(rule, 8);
+    while (!text.empty() && text.back() == '\n') text.pop_back();
+    return ir::fail(path, std::string(kImageRule), text);
+  }
   return ir::fail(path, std::string(kImageRule), path + ": " + r.message());
 }
 
@@ -66,20 +80,21 @@ ir::Status write_file_atomic(const std::string& path, std::span<const uint8_t> b
 ImageResult read_png(const std::string& path) {
   ir::Result<std::string> bytes = read_image_file(path);
   if (!bytes) return std::move(bytes).failure();
-  return with_path(path, decode_png(as_bytes(*bytes)));
+  return with_path(path, decode_png(as_bytes(*bytes)), *bytes);
 }
 
 ImageResult read_pfm(const std::string& path) {
   ir::Result<std::string> bytes = read_image_file(path);
   if (!bytes) return std::move(bytes).failure();
-  return with_path(path, decode_pfm(as_bytes(*bytes)));
+  return with_path(path, decode_pfm(as_bytes(*bytes)), *bytes);
 }
 
 ImageResult read_image(const std::string& path) {
   ir::Result<std::string> bytes = read_image_file(path);
   if (!bytes) return std::move(bytes).failure();
-  return with_path(path, (*bytes)[0] == 'P' ? decode_pfm(as_bytes(*bytes))
-                                            : decode_png(as_bytes(*bytes)));
+  return with_path(path,
+                   (*bytes)[0] == 'P' ? decode_pfm(as_bytes(*bytes)) : decode_png(as_bytes(*bytes)),
+                   *bytes);
 }
 
 ir::Status write_png(const std::string& path, const Image& image, PngDepth depth) {

@@ -1,6 +1,7 @@
 // PFM (Portable Float Map): "PF" RGB or "Pf" grey, decimal width and height, a scale
 // whose sign gives the byte order (negative = little-endian), one white-space byte, then
 // 32-bit floats, rows bottom to top.
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdlib>
@@ -54,31 +55,53 @@ ImageResult decode_pfm(std::span<const uint8_t> bytes) {
   auto fail = [](std::string msg) -> ImageResult {
     return ir::fail("", std::string(kImageRule), std::move(msg));
   };
+  // A header error at the token it is about: line and column in the header's text (file 0:
+  // the caller's; read_pfm and read_image quote the line with a caret).
+  auto fail_at = [&](size_t offset, size_t length, std::string msg) -> ImageResult {
+    ir::SourceLoc loc;
+    loc.line = 1;
+    size_t line_start = 0;
+    for (size_t i = 0; i < offset && i < bytes.size(); ++i)
+      if (bytes[i] == '\n') ++loc.line, line_start = i + 1;
+    loc.col = static_cast<uint32_t>(offset - line_start + 1);
+    loc.length = static_cast<uint32_t>(std::max<size_t>(1, length));
+    return ir::fail_at(loc, std::string(kImageRule), std::move(msg));
+  };
   if (bytes.size() < 2 || bytes[0] != 'P' || (bytes[1] != 'F' && bytes[1] != 'f'))
-    return fail("not a PFM file (magic must be PF or Pf)");
+    return fail_at(0, 2, "not a PFM file (magic must be PF or Pf)");
   const uint32_t channels = bytes[1] == 'F' ? 3 : 1;
   Cursor c{bytes, 2};
-  if (!c.skip_space()) return fail("PFM header: expected white space after the magic");
+  if (!c.skip_space()) return fail_at(2, 1, "PFM header: expected white space after the magic");
+  const size_t w_at = c.pos;
   std::string wt = c.token();
-  if (!c.skip_space()) return fail("PFM header: truncated after the width");
+  if (!c.skip_space()) return fail_at(c.pos, 1, "PFM header: truncated after the width");
+  const size_t h_at = c.pos;
   std::string ht = c.token();
-  if (!c.skip_space()) return fail("PFM header: truncated after the height");
+  if (!c.skip_space()) return fail_at(c.pos, 1, "PFM header: truncated after the height");
+  const size_t s_at = c.pos;
   std::string st = c.token();
   auto w = parse_size(wt), h = parse_size(ht);
-  if (!w || !h) return fail(fmt::format("PFM header: bad size '{}' x '{}'", wt, ht));
-  if (*w == 0 || *h == 0) return fail("PFM header: zero width or height");
+  if (!w) return fail_at(w_at, wt.size(), fmt::format("PFM header: bad width '{}'", wt));
+  if (!h) return fail_at(h_at, ht.size(), fmt::format("PFM header: bad height '{}'", ht));
+  if (*w == 0 || *h == 0)
+    return fail_at(*w == 0 ? w_at : h_at, 1, "PFM header: zero width or height");
   if (*w > kMaxDimension || *h > kMaxDimension)
-    return fail(
-        fmt::format("PFM image {}x{} exceeds the limit of {} per side", *w, *h, kMaxDimension));
+    return fail_at(*w > kMaxDimension ? w_at : h_at, (*w > kMaxDimension ? wt : ht).size(),
+                   fmt::format("PFM image {}x{} exceeds the limit of {} per side", *w, *h,
+                               kMaxDimension));
   // The scale: a decimal number, not zero, finite; only its sign matters to us.
-  if (st.empty() || st.size() > kMaxFieldChars) return fail("PFM header: bad scale");
+  if (st.empty() || st.size() > kMaxFieldChars)
+    return fail_at(s_at, st.size(), "PFM header: bad scale");
   char* end = nullptr;
   double scale = std::strtod(st.c_str(), &end);
   if (end != st.c_str() + st.size() || !std::isfinite(scale) || scale == 0.0)
-    return fail(fmt::format("PFM header: bad scale '{}'", st));
+    return fail_at(s_at, st.size(),
+                   fmt::format("PFM header: bad scale '{}' (a finite number, not 0; negative: "
+                               "little-endian)",
+                               st));
   // Exactly one white-space byte separates the header from the raster.
   if (c.pos >= bytes.size() || !is_space(bytes[c.pos]))
-    return fail("PFM header: truncated after the scale");
+    return fail_at(c.pos, 1, "PFM header: truncated after the scale");
   ++c.pos;
   const bool little = scale < 0;
   const uint64_t need = uint64_t{*w} * *h * channels * 4;
