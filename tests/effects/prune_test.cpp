@@ -104,7 +104,9 @@ TEST(Prune, CornerSourcesLimitTheBlurToACorner) {
   img::Image s = make_default_scene(96, 64);
   for (size_t i = 3; i < s.rgba.size(); i += 4) s.rgba[i] = 0;
   s.at(1, 1)[3] = 1;
-  const GlowPlan plan = build_glow(params(96, 64, Tier::Dx9, img::Format::RGBA32F, 2));
+  GlowParams p = params(96, 64, Tier::Dx9, img::Format::RGBA32F, 2);
+  p.profile.terms = {{1.5, 1.0}}; // a kernel reach of 2 texels: the corner stays small
+  const GlowPlan plan = build_glow(p);
   const PrunedGraph g = prune_glow(plan, s);
   EXPECT_TRUE(g.left_out.empty());
   ASSERT_EQ(g.limited.size(), 4u);

@@ -204,7 +204,7 @@ PrunedGraph prune_glow(const GlowPlan& plan, const img::Image& scene) {
   r.passes_before = plan.graph.passes.size();
   if (!plan || varies_between_frames(plan.graph)) return r;
   if (!is_glow_graph(plan.graph)) return prune_unread(plan.graph, kFinalTexture);
-  double most = 0; // the largest rgb × alpha of the scene
+  double most = 0; // the largest value of the glow sources (rgb × alpha, and alpha)
   bool any_alpha = false;
   Box box{int64_t{scene.width}, int64_t{scene.height}, 0, 0}; // of the pixels with alpha ≠ 0
   for (size_t i = 0; i + 3 < scene.rgba.size(); i += 4) {
@@ -217,8 +217,10 @@ PrunedGraph prune_glow(const GlowPlan& plan, const img::Image& scene) {
              std::max(box.y1, y + 1)};
     }
     any_alpha = any_alpha || a != 0;
-    most = std::max(most, a * std::max({double(scene.rgba[i]), double(scene.rgba[i + 1]),
-                                        double(scene.rgba[i + 2]), 0.0}));
+    // The glow sources are rgb × alpha, and alpha itself passes through extract into the
+    // blurred textures: the bound covers all four channels.
+    most = std::max({most, a, a * std::max({double(scene.rgba[i]), double(scene.rgba[i + 1]),
+                                            double(scene.rgba[i + 2]), 0.0})});
   }
   std::vector<PassDesc>& passes = r.graph.passes;
   if (!any_alpha) {
