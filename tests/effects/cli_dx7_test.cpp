@@ -18,18 +18,21 @@ class CliDx7 : public tierlift::cli_test::CliFixture {};
 
 TEST_F(CliDx7, StatesTheQuantisationErrorOfEachRounding) {
   const fs::path log = dir / "log.txt";
-  // Default profile at N = 4: 13 taps; their bytes sum to 258 rounded plainly, 255 carried
-  // (independent figures: tests/effects/dx7_test.cpp's arithmetic, printed by the tool).
-  ASSERT_EQ(run_cli("glow --tier dx7 --downsample 4 --backend cpu -q --weight-rounding plain", log),
-            0)
-      << read(log);
+  // The profile σ 8 (0.7) + σ 1.5 (0.3) at N = 4: 13 taps; their bytes sum to 258 rounded
+  // plainly, 255 carried (independent figures: tests/effects/dx7_test.cpp's arithmetic,
+  // printed by the tool).
+  const fs::path scene = dir / "dx7.json";
+  std::ofstream(scene) << R"({"glow": {"tier": "dx7", "downsample": 4, "profile": {"gaussians":
+    [{"sigma": 8, "weight": 0.7}, {"sigma": 1.5, "weight": 0.3}]}}})";
+  const std::string args = "glow --scene " + scene.string() + " --backend cpu -q";
+  ASSERT_EQ(run_cli(args + " --weight-rounding plain", log), 0) << read(log);
   std::string text = read(log);
   EXPECT_NE(text.find("glow dx7:"), std::string::npos) << text;
   EXPECT_NE(text.find("weight rounding plain: sum of 8-bit weights 258/255 per axis"),
             std::string::npos)
       << text;
   EXPECT_NE(text.find("brighter"), std::string::npos) << text;
-  ASSERT_EQ(run_cli("glow --tier dx7 --downsample 4 --backend cpu -q", log), 0) << read(log);
+  ASSERT_EQ(run_cli(args, log), 0) << read(log);
   text = read(log);
   EXPECT_NE(text.find("weight rounding error-carry: sum of 8-bit weights 255/255"),
             std::string::npos)

@@ -28,10 +28,11 @@ TEST_F(CliGlow, CpuRunWritesTheThreeImages) {
   EXPECT_FALSE(fs::exists(dir / "out" / "final-vulkan.png"));
   EXPECT_FALSE(fs::exists(dir / "out" / "final-analytic.png"));
   const std::string text = read(log);
-  // 1280×720 / 4 = 320×180; σ 8 px / 4 → R = 6, 13 taps → 2 dx9 passes an axis; a 4×4
-  // block takes 4 downsample passes of 4 point reads: 1 + 4 + 2 + 2 + 1 passes.
-  EXPECT_NE(text.find("\"taps\": 13"), std::string::npos) << text;
-  EXPECT_NE(text.find("\"passes\": 10"), std::string::npos) << text;
+  // 1280×720 / 4 = 320×180; the default σ 16 px / 4 → R = ceil(3 · 4) = 12, 25 taps → 4
+  // dx9 passes of 8 an axis; a 4×4 block takes 4 downsample passes of 4 point reads:
+  // 1 + 4 + 4 + 4 + 1 passes.
+  EXPECT_NE(text.find("\"taps\": 25"), std::string::npos) << text;
+  EXPECT_NE(text.find("\"passes\": 14"), std::string::npos) << text;
   EXPECT_NE(text.find("\"width\": 320"), std::string::npos) << text;
   EXPECT_NE(text.find("\"tier\": \"dx9\""), std::string::npos) << text;
 }

@@ -11,11 +11,20 @@
 
 namespace tierlift::effects::plan_test {
 
+// The profile the plan tests' hand-counted taps and passes assume: σ 8 px (weight 0.7) +
+// σ 1.5 px (0.3), the glow's default before the default became the visible σ 16 px.
+inline BlurProfile two_gaussians() {
+  BlurProfile p;
+  p.terms = {{8.0, 0.7}, {1.5, 0.3}};
+  return p;
+}
+
 inline GlowParams sized(unsigned downsample, uint32_t w, uint32_t h) {
   GlowParams p;
   p.width = w;
   p.height = h;
   p.downsample = downsample;
+  p.profile = two_gaussians();
   return p;
 }
 

@@ -116,11 +116,8 @@ TEST(BlurProfile, BadProfilesAreErrors) {
 // ---- tier dx8 --------------------------------------------------------------------------
 
 GlowParams dx8_params(unsigned n, uint32_t w = 128, uint32_t h = 64) {
-  GlowParams p;
+  GlowParams p = plan_test::sized(n, w, h);
   p.tier = Tier::Dx8;
-  p.width = w;
-  p.height = h;
-  p.downsample = n;
   return p;
 }
 

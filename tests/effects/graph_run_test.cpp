@@ -87,6 +87,7 @@ TEST(GlowCpu, OneTexelGlowsAsTheOuterProductOfTheTaps) {
   p.width = 32;
   p.height = 16;
   p.downsample = 1;
+  p.intensity = 1; // final = scene + glow
   p.profile = BlurProfile{{{1.0, 1.0}}, std::nullopt, 0};
   GlowPlan plan = build_glow_dx9(p);
   ASSERT_TRUE(plan) << plan.error;

@@ -44,7 +44,7 @@ void add_term(std::vector<BlurTap>& taps, int r, double weight, ValueAt value_at
 
 BlurProfile default_blur_profile() {
   BlurProfile p;
-  p.terms = {{8.0, 0.7}, {1.5, 0.3}};
+  p.terms = {{16.0, 1.0}};
   return p;
 }
 

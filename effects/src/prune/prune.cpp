@@ -219,8 +219,9 @@ PrunedGraph prune_glow(const GlowPlan& plan, const img::Image& scene) {
     any_alpha = any_alpha || a != 0;
     // The glow sources are rgb × alpha, and alpha itself passes through extract into the
     // blurred textures: the bound covers all four channels.
-    most = std::max({most, a, a * std::max({double(scene.rgba[i]), double(scene.rgba[i + 1]),
-                                            double(scene.rgba[i + 2]), 0.0})});
+    most = std::max({most, a,
+                     a * std::max({double(scene.rgba[i]), double(scene.rgba[i + 1]),
+                                   double(scene.rgba[i + 2]), 0.0})});
   }
   std::vector<PassDesc>& passes = r.graph.passes;
   if (!any_alpha) {

@@ -57,8 +57,9 @@ void read_image(const Json& j, const std::string& base_dir, FieldChecker& c, Sce
   }
   if (image.starts_with("builtin:")) {
     if (image != kBuiltinNeon) {
-      c.error("/image", fmt::format("\"{}\" is not a built-in image; expected \"{}\" or a PNG or PFM file",
-                                    image, kBuiltinNeon));
+      c.error("/image",
+              fmt::format("\"{}\" is not a built-in image; expected \"{}\" or a PNG or PFM file",
+                          image, kBuiltinNeon));
       return;
     }
     s.image = image;

@@ -45,9 +45,9 @@ ImageResult with_path(const std::string& path, ImageResult r, const std::string&
     sm.add(path, bytes.substr(0, 4096));
     std::string text = ir::render_text(d, sm); // "PATH:L:C: error: why [image]\n    …\n    ^\n"
     const std::string tag = ": error: ";
-    if (const size_t at = text.find(tag); at != std::string::npos) text.replace(at, tag.size(), ": ");
-    if (const size_t rule = text.find(" [image]"); rule != std::string::npos)
-      text.erase(rule, 8);
+    if (const size_t at = text.find(tag); at != std::string::npos)
+      text.replace(at, tag.size(), ": ");
+    if (const size_t rule = text.find(" [image]"); rule != std::string::npos) text.erase(rule, 8);
     while (!text.empty() && text.back() == '\n') text.pop_back();
     return ir::fail(path, std::string(kImageRule), text);
   }

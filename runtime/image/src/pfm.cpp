@@ -86,9 +86,9 @@ ImageResult decode_pfm(std::span<const uint8_t> bytes) {
   if (*w == 0 || *h == 0)
     return fail_at(*w == 0 ? w_at : h_at, 1, "PFM header: zero width or height");
   if (*w > kMaxDimension || *h > kMaxDimension)
-    return fail_at(*w > kMaxDimension ? w_at : h_at, (*w > kMaxDimension ? wt : ht).size(),
-                   fmt::format("PFM image {}x{} exceeds the limit of {} per side", *w, *h,
-                               kMaxDimension));
+    return fail_at(
+        *w > kMaxDimension ? w_at : h_at, (*w > kMaxDimension ? wt : ht).size(),
+        fmt::format("PFM image {}x{} exceeds the limit of {} per side", *w, *h, kMaxDimension));
   // The scale: a decimal number, not zero, finite; only its sign matters to us.
   if (st.empty() || st.size() > kMaxFieldChars)
     return fail_at(s_at, st.size(), "PFM header: bad scale");

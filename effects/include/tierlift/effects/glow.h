@@ -129,12 +129,12 @@ struct Motion {
 struct GlowParams {
   Tier tier = Tier::Dx9;
   uint32_t width = 1280, height = 720; // the scene
-  unsigned downsample = 2;             // 1..4
+  unsigned downsample = 4;             // 1..4
   img::Format format = img::Format::RGBA32F;
   bool half_texel = true;
   BlurProfile profile = default_blur_profile();
   // The composite adds intensity × glow. Finite and ≥ 0; dx8 at most 4 (see above).
-  double intensity = 1;
+  double intensity = 3;
   // Built-in listing path ("gpugems21/listing2_blur8_weighted_sum.psh", "glow/…") → a file
   // to read instead (a scene that names its own listing). Empty: every listing built in.
   std::map<std::string, std::string, std::less<>> listing_files;
