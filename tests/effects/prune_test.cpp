@@ -130,7 +130,7 @@ TEST(Prune, SingleSourcePixelsUnchanged) {
   std::mt19937 rng(5);
   const uint32_t w = 41, h = 23;
   const std::pair<uint32_t, uint32_t> spots[] = {
-      {0, 0}, {w - 1, h - 1}, {w - 1, 0}, {0, h - 1}, {20, 11}, {rng() % w, rng() % h}};
+      {0, 0}, {w - 1, h - 1}, {20, 11}, {rng() % w, rng() % h}};
   for (const auto& [x, y] : spots) {
     img::Image s(w, h);
     s.at(x, y)[0] = 1, s.at(x, y)[1] = 0.5f, s.at(x, y)[3] = 1;
