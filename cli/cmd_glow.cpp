@@ -65,10 +65,9 @@ std::optional<effects::Scene> scene_from_flags(const GlowFlags& f, Report& repor
   if (!f.format.empty()) p.format = *img::parse_format(f.format);
   if (f.no_half_texel) p.half_texel = false;
   if (!f.ps1x_max.empty()) {
-    std::string why;
-    auto m = ir::parse_ps1x_max(f.ps1x_max, &why);
+    const ir::Result<float> m = ir::parse_ps1x_max(f.ps1x_max);
     if (!m) {
-      report.error("usage", "--ps1x-max " + why);
+      report.error("usage", "--ps1x-max " + m.message());
       *exit_code = kExitUsage;
       return std::nullopt;
     }

@@ -82,8 +82,9 @@ pass::RunRequest build_request(const RunFlags& f) {
   if (f.subtexel_bits < 0 || f.subtexel_bits > 24)
     throw UsageError{fmt::format("--subtexel-bits {}: expected 0 (exact) .. 24", f.subtexel_bits)};
   r.conventions.subtexel_bits = f.subtexel_bits;
-  auto ps1x_max = ir::parse_ps1x_max(f.ps1x_max, &err); // before `need` reads err
-  r.conventions.ps1x_max_value = need(ps1x_max, "--ps1x-max " + err);
+  const ir::Result<float> ps1x_max = ir::parse_ps1x_max(f.ps1x_max);
+  if (!ps1x_max) throw UsageError{"--ps1x-max " + ps1x_max.message()};
+  r.conventions.ps1x_max_value = *ps1x_max;
   r.threads = f.threads;
   return r;
 }

@@ -41,15 +41,14 @@ float default_ps1x_max() {
   return FLT_MAX;
 }
 
-std::optional<float> parse_ps1x_max(std::string_view text, std::string* error) {
+Result<float> parse_ps1x_max(std::string_view text) {
   for (const Ps1xPreset& p : kPresets)
     if (iequal(text, p.name)) return p.max_value;
-  auto fail = [&](std::string why) -> std::optional<float> {
-    if (error)
-      *error = fmt::format("'{}': {}; expected geforce3 (1), radeon8500 (8), d3d9, max or a "
-                           "number >= 1",
-                           text, why);
-    return std::nullopt;
+  auto fail = [&](std::string why) -> Result<float> {
+    return ir::fail("ps1x-max", "value",
+                    fmt::format("'{}': {}; expected geforce3 (1), radeon8500 (8), d3d9, max or a "
+                                "number >= 1",
+                                text, why));
   };
   if (text.empty()) return fail("empty");
   // strtof on a NUL-terminated copy: std::from_chars for float is missing on older libstdc++.

@@ -8,28 +8,35 @@
 
 using namespace tierlift::ir;
 
+// The parsed value; a failure is a test failure (and reads -1).
+static float value_of(std::string_view text) {
+  const Result<float> r = parse_ps1x_max(text);
+  EXPECT_TRUE(r) << text << ": " << r.message();
+  return r ? *r : -1.0f;
+}
+
 TEST(Ps1xRange, PresetsHaveTheDocumentedValues) {
-  EXPECT_EQ(parse_ps1x_max("geforce3"), 1.0f);
-  EXPECT_EQ(parse_ps1x_max("radeon8500"), 8.0f);
-  EXPECT_EQ(parse_ps1x_max("d3d9"), FLT_MAX);
-  EXPECT_EQ(parse_ps1x_max("max"), FLT_MAX);
-  EXPECT_EQ(parse_ps1x_max("GeForce3"), 1.0f); // names are case-insensitive
+  EXPECT_EQ(value_of("geforce3"), 1.0f);
+  EXPECT_EQ(value_of("radeon8500"), 8.0f);
+  EXPECT_EQ(value_of("d3d9"), FLT_MAX);
+  EXPECT_EQ(value_of("max"), FLT_MAX);
+  EXPECT_EQ(value_of("GeForce3"), 1.0f); // names are case-insensitive
   EXPECT_EQ(kDefaultPs1xPreset, "d3d9");
   EXPECT_EQ(default_ps1x_max(), FLT_MAX);
 }
 
 TEST(Ps1xRange, NumbersFromOneUp) {
-  EXPECT_EQ(parse_ps1x_max("1"), 1.0f);
-  EXPECT_EQ(parse_ps1x_max("8"), 8.0f);
-  EXPECT_EQ(parse_ps1x_max("2.5"), 2.5f);
-  EXPECT_EQ(parse_ps1x_max("1e30"), 1e30f);
+  EXPECT_EQ(value_of("1"), 1.0f);
+  EXPECT_EQ(value_of("8"), 8.0f);
+  EXPECT_EQ(value_of("2.5"), 2.5f);
+  EXPECT_EQ(value_of("1e30"), 1e30f);
 }
 
 TEST(Ps1xRange, RejectsWhatNoPartReports) {
   for (const char* bad : {"", "0.5", "0", "-8", "nan", "inf", "1e40", "eight", "8x", "geforce"}) {
-    std::string why;
-    EXPECT_FALSE(parse_ps1x_max(bad, &why).has_value()) << bad;
-    EXPECT_NE(why.find("radeon8500"), std::string::npos) << bad << ": " << why;
+    const Result<float> m = parse_ps1x_max(bad);
+    EXPECT_FALSE(m) << bad;
+    EXPECT_NE(m.message().find("radeon8500"), std::string::npos) << bad << ": " << m.message();
   }
 }
 

@@ -111,11 +111,10 @@ void read_ps1x_max(const Json& v, const std::string& at, FieldChecker& c, GlowPa
     c.error(at, fmt::format("{} is not a preset name or a number", FieldChecker::shown(v)));
     return;
   }
-  std::string why;
-  if (auto m = ir::parse_ps1x_max(text, &why))
+  if (ir::Result<float> m = ir::parse_ps1x_max(text))
     p.ps1x_max = *m;
   else
-    c.error(at, why);
+    c.error(at, m.message());
 }
 
 } // namespace

@@ -4,6 +4,7 @@
 // and where the value comes from.
 #pragma once
 
+#include "tierlift/ir/result.h"
 #include <optional>
 #include <span>
 #include <string>
@@ -23,9 +24,9 @@ inline constexpr std::string_view kDefaultPs1xPreset = "d3d9";
 // The default's value (FLT_MAX): what a D3D9-class driver reports.
 float default_ps1x_max();
 
-// A preset name (case-insensitive) or a number >= 1 ("8", "1e30"); nullopt and a message
-// naming the presets otherwise (negative, below 1, NaN or infinite values included).
-std::optional<float> parse_ps1x_max(std::string_view text, std::string* error = nullptr);
+// A preset name (case-insensitive) or a number >= 1 ("8", "1e30"); otherwise a failure whose
+// message names the presets (negative, below 1, NaN or infinite values included).
+Result<float> parse_ps1x_max(std::string_view text);
 
 // How a value is shown in --json and in the glow table's header: the preset's name when a
 // preset has this value ("d3d9" wins over "max" for FLT_MAX), else the number ("4").
