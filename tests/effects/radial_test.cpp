@@ -200,6 +200,78 @@ TEST_P(RadialWays, FramesAnimateTheStarAsTheStillFramesDo) {
   EXPECT_TRUE(dev->messages().empty()) << dev->messages().front();
 }
 
+// The animated star against its closed form, re-derived here in double: set k reads the
+// scene at u + (A·(sin(fx_k·t + φ_k) − sin φ_k) + ½)/W (and cos with fy_k for v), with t =
+// (radial.frame + f)/rate for frame f of the run (the functions the star's vertex constants
+// c0..c3 carry). On a scene whose red is x/W and green y/H (texel centres), a bilinear read
+// at any point between texel centres returns the linear function exactly, so the star at
+// pixel (x, y) is ((x + mean_k dx_k)/W, (y + mean_k dy_k)/H) away from the wrapped edges.
+TEST_P(RadialWays, AnimatedStarMatchesTheClosedFormEachFrame) {
+  constexpr unsigned kFrames = 3, kFirst = 5;
+  constexpr double kA = 3, kRate = 2;
+  constexpr double kFx[4] = {0.70, -0.55, 0.35, -0.90}, kFy[4] = {0.45, 0.80, -0.65, -0.30};
+  constexpr double kPh[4] = {0.0, 1.3, 2.6, 4.1};
+  RadialParams r = still_params();
+  r.amplitude = kA;
+  r.rate = kRate;
+  r.frame = kFirst;
+  r.frames = kFrames;
+  const GlowParams g = glow_params(GetParam());
+  GlowPlan plan = build_radial(g, r);
+  ASSERT_TRUE(plan) << plan.error;
+  img::Image ramp(kW, kH);
+  for (uint32_t y = 0; y < kH; ++y)
+    for (uint32_t x = 0; x < kW; ++x) {
+      ramp.rgba[(size_t(y) * kW + x) * 4 + 0] = float(x) / kW;
+      ramp.rgba[(size_t(y) * kW + x) * 4 + 1] = float(y) / kH;
+      ramp.rgba[(size_t(y) * kW + x) * 4 + 3] = 1;
+    }
+  double mean[kFrames][2] = {};
+  for (unsigned f = 0; f < kFrames; ++f) {
+    const double t = (kFirst + f) / kRate;
+    for (int k = 0; k < 4; ++k) {
+      mean[f][0] += kA * (std::sin(kFx[k] * t + kPh[k]) - std::sin(kPh[k])) / 4;
+      mean[f][1] += kA * (std::cos(kFy[k] * t + kPh[k]) - std::cos(kPh[k])) / 4;
+    }
+  }
+  // The frames' closed forms differ by far more than the tolerance below.
+  for (unsigned f = 1; f < kFrames; ++f)
+    EXPECT_GT(std::abs(mean[f][0] - mean[f - 1][0]) + std::abs(mean[f][1] - mean[f - 1][1]), 0.05);
+  // Float coordinates and weights: a few ulps of values below 1 (no subtexel rounding).
+  constexpr double kTol = 1e-5;
+  const uint32_t margin = uint32_t(2 * kA) + 2; // the reads stay clear of the wrap seam
+  CpuPassDevice cpu(2);
+  AnalyticPassDevice analytic;
+  auto vk = make_vulkan_pass_device(*dev);
+  for (PassDevice* d :
+       {static_cast<PassDevice*>(&cpu), vk.get(), static_cast<PassDevice*>(&analytic)}) {
+    ImageMap images{{std::string(kSceneTexture), ramp}};
+    std::vector<img::Image> frames;
+    FramesRun run =
+        run_frames(plan.graph, *d, images, kFrames, [&](unsigned, PassDevice& dev_) -> std::string {
+          img::Image star;
+          std::string e = dev_.read_texture(std::string(kStarTexture), star);
+          frames.push_back(std::move(star));
+          return e;
+        });
+    ASSERT_TRUE(run.ok) << d->name() << ": " << run.error;
+    ASSERT_EQ(frames.size(), kFrames);
+    for (unsigned f = 0; f < kFrames; ++f) {
+      double worst = 0;
+      for (uint32_t y = margin; y + margin < kH; ++y)
+        for (uint32_t x = margin; x + margin < kW; ++x) {
+          const float* p = &frames[f].rgba[(size_t(y) * kW + x) * 4];
+          worst = std::max(worst, std::abs(p[0] - (x + mean[f][0]) / kW));
+          worst = std::max(worst, std::abs(p[1] - (y + mean[f][1]) / kH));
+        }
+      EXPECT_LT(worst, kTol) << d->name() << " frame " << f;
+      std::printf("[radial] %s star frame %u: max |device - closed form| %.3g\n",
+                  std::string(d->name()).c_str(), f + 1, worst);
+    }
+  }
+  EXPECT_TRUE(dev->messages().empty()) << dev->messages().front();
+}
+
 INSTANTIATE_TEST_SUITE_P(Radial, RadialWays, ::testing::Values(Tier::Dx9, Tier::Dx8),
                          [](const ::testing::TestParamInfo<Tier>& i) {
                            return std::string(tier_name(i.param));
