@@ -386,6 +386,7 @@ int run(const GlowFlags& f) {
                  params.half_texel ? "on" : "off",
                  ir::ps1x_max_label(plan.graph.conventions.ps1x_max_value));
     if (!plan.quantization.empty()) fmt::print("{}\n", plan.quantization);
+    if (auto c = effects::context_summary(params.context); !c.empty()) fmt::print("{}\n", c);
     for (const GlowWay& w : ways)
       fmt::print("{}: {} passes in {:.1f} ms{}\n", w.name, w.glow.run.passes.size(),
                  w.glow.run.total_ms, w.name == "vulkan" ? fmt::format(" ({})", vk->name()) : "");

@@ -182,6 +182,8 @@ TEST(Scene, TheSchemaFileListsTheKeysTheLoaderAccepts) {
   EXPECT_EQ(keys_of(schema["properties"]["glow"]["properties"]), keys_of(scene_glow_keys()));
   EXPECT_EQ(keys_of(schema["properties"]["glow"]["properties"]["profile"]["properties"]),
             keys_of(scene_profile_keys()));
+  EXPECT_EQ(keys_of(schema["properties"]["glow"]["properties"]["fog"]["properties"]),
+            keys_of(scene_fog_keys()));
   EXPECT_EQ(keys_of(schema["properties"]["radial"]["properties"]), keys_of(scene_radial_keys()));
   EXPECT_EQ(keys_of(schema["properties"]["outline"]["properties"]), keys_of(scene_outline_keys()));
   EXPECT_EQ(values_of(schema["properties"]["effect"]["enum"]), keys_of(scene_effects()));

@@ -219,6 +219,17 @@ std::string run_analytic_pass(const PassDesc& pass, const EffectGraph& graph, Im
                          ex.error);
     pass_notes = ex.notes;
     result.emplace(analytic::linear_pass(ex.taps, in, &pass_notes));
+  } else if (pass.analytic == AnalyticForm::MaskByAlphaFogged) {
+    analytic::ReadExtraction ex = analytic::extract_reads(*pass.vs, pass.vs_constants, *pass.ps);
+    if (!ex)
+      return fmt::format("cannot model pass '{}' as fogged glow sources: {}", pass.name, ex.error);
+    if (ex.reads.size() != 2)
+      return fmt::format("cannot model pass '{}' as fogged glow sources: the pixel listing takes "
+                         "{} different reads (expected the sources, then the depth)",
+                         pass.name, ex.reads.size());
+    result.emplace(analytic::fogged_mask_pass(ex.reads[0], ex.reads[1],
+                                              analytic::fog_form(*pass.ps, pass.ps_constants), in,
+                                              &pass_notes));
   } else {
     analytic::ReadExtraction ex = analytic::extract_reads(*pass.vs, pass.vs_constants, *pass.ps);
     if (!ex)

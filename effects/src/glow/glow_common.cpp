@@ -17,7 +17,8 @@ using ProgramPtr = std::shared_ptr<const ir::Program>;
 
 struct Listings {
   ProgramPtr helper_vs, extract, downsample, composite, blur_vs, blur_ps;
-  ProgramPtr mix; // the after-image's (only with one)
+  ProgramPtr mix;    // the after-image's (only with one)
+  ProgramPtr fogged; // the fogged extract (only with fog)
 };
 
 std::optional<Listings> load_listings(const GlowParams& p, const TierListingPaths& paths,
@@ -35,6 +36,10 @@ std::optional<Listings> load_listings(const GlowParams& p, const TierListingPath
   if (p.afterimage != Afterimage::Off) {
     l.mix = glow_listing(paths.mix_ps, p.listing_files, error, p.listing_options);
     if (!l.mix) return std::nullopt;
+  }
+  if (p.context.fog.on) {
+    l.fogged = glow_listing(paths.fogged_ps, p.listing_files, error, p.listing_options);
+    if (!l.fogged) return std::nullopt;
   }
   return l;
 }
@@ -85,12 +90,24 @@ public:
   Builder(const GlowParams& p, const TierRecipe& r, const Listings& l, uint32_t gw, uint32_t gh)
       : p_(p), r_(r), l_(l), gw_(gw), gh_(gh) {}
 
+  // The glow sources: rgb × alpha of the scene, or of the glow render when the scene has one
+  // (a rendering context, glow_context.h); with fog, fogged by the depth texture read at the
+  // same texel.
   PassDesc extract() const {
-    PassDesc d = pass("extract", l_.helper_vs, l_.extract, kSourcesTexture);
-    d.analytic = AnalyticForm::MaskByAlpha;
-    // Point reads at texel centres: offset ½ texel, scale 1.
-    d.vs_constants = helper_vs_constants({{0.5 / p_.width, 0.5 / p_.height}});
-    bind(d, 0, kSceneTexture, pass::Filter::Point, 1);
+    const GlowContext& c = p_.context;
+    const bool fog = c.fog.on;
+    PassDesc d = pass("extract", l_.helper_vs, fog ? l_.fogged : l_.extract, kSourcesTexture);
+    d.analytic = fog ? AnalyticForm::MaskByAlphaFogged : AnalyticForm::MaskByAlpha;
+    // Point reads at texel centres: offset ½ texel, scale 1 (both reads: same size).
+    const Coord centre{0.5 / p_.width, 0.5 / p_.height};
+    d.vs_constants = helper_vs_constants({centre, centre});
+    bind(d, 0, c.glow_image ? kGlowImageTexture : kSceneTexture, pass::Filter::Point, 1);
+    if (fog) {
+      bind(d, 1, kDepthTexture, pass::Filter::Point, 1);
+      // A ps.1.x listing scales its fog factor by 4 (_x4): its constants clamp to [-1, 1].
+      for (const auto& k : fog_constants(c.fog, ir::is_ps1x(l_.fogged->profile) ? 4 : 1))
+        d.ps_constants.push_back(k);
+    }
     return d;
   }
 
@@ -298,6 +315,14 @@ std::string check_params(const GlowParams& p, const TierRecipe& r) {
   if (!std::isfinite(p.weight_scale) || p.weight_scale < 0)
     return fmt::format("weight scale {}: expected a finite value >= 0", p.weight_scale);
   if (r.taps_per_blur_pass == 0) return fmt::format("tier {}: no taps per blur pass", r.tier);
+  const GlowFog& fog = p.context.fog;
+  if (fog.on && !(std::isfinite(fog.start) && std::isfinite(fog.end) && fog.start < fog.end))
+    return fmt::format("fog start {} and end {}: expected finite values, start < end", fog.start,
+                       fog.end);
+  const img::Image* glow = p.context.glow_image.get();
+  if (glow && (glow->width != p.width || glow->height != p.height))
+    return fmt::format("glow image {}x{}: expected the scene's size {}x{}", glow->width,
+                       glow->height, p.width, p.height);
   return {};
 }
 
@@ -323,6 +348,11 @@ GlowPlan build_glow_graph(const GlowParams& p, const TierRecipe& r) {
   }
   std::optional<Listings> l = load_listings(p, r.listings, &plan.error);
   if (!l) return plan;
+  if (p.context.fog.on && ir::is_ps1x(l->fogged->profile))
+    if (std::string why = fog_ps1x_limit(p.context.fog); !why.empty()) {
+      plan.error = fmt::format("tier {}: {}", r.tier, why);
+      return plan;
+    }
 
   const uint32_t gw = (p.width + p.downsample - 1) / p.downsample;
   const uint32_t gh = (p.height + p.downsample - 1) / p.downsample;
@@ -336,6 +366,16 @@ GlowPlan build_glow_graph(const GlowParams& p, const TierRecipe& r) {
     g.textures.push_back({std::string(name), w, h, p.format, input});
   };
   tex(kSceneTexture, p.width, p.height, true);
+  // The rendering context's inputs travel with the graph (TextureDesc::contents).
+  if (p.context.glow_image) {
+    tex(kGlowImageTexture, p.width, p.height, true);
+    g.textures.back().contents = p.context.glow_image;
+  }
+  if (p.context.fog.on) {
+    tex(kDepthTexture, p.width, p.height, true);
+    g.textures.back().contents =
+        std::make_shared<const img::Image>(fog_depth_texture(p.context.fog, p.width, p.height));
+  }
   tex(kSourcesTexture, p.width, p.height);
   if (p.downsample > 1) tex(kSmallTexture, gw, gh);
   tex(kBlurHTexture, gw, gh);

@@ -23,6 +23,8 @@ struct TierListingPaths {
   std::string_view blur_vs, blur_ps; // the article's listings
   // The after-image's mix: out = t0 + c0·t1 (a composite listing; used only with one).
   std::string_view mix_ps;
+  // The fogged extract (glow_context.h; used only with fog).
+  std::string_view fogged_ps;
 };
 
 struct TierRecipe {

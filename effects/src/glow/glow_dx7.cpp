@@ -65,7 +65,8 @@ GlowPlan build_glow_dx7(const GlowParams& params) {
                 above_one ? "glow/composite_add_x4_ps13.psh" : "glow/composite_add_ps13.psh",
                 "",
                 "",
-                gain_above_one ? "glow/composite_add_x4_ps13.psh" : "glow/composite_add_ps13.psh"};
+                gain_above_one ? "glow/composite_add_x4_ps13.psh" : "glow/composite_add_ps13.psh",
+                "glow/extract_fogged_ps11.psh"};
   r.taps_per_blur_pass = kTapsPerBlurPassDx7;
   r.one_stage_per_read = true;
   r.constants_clamp_to_one = true; // an 8-bit colour holds at most 1 as well

@@ -20,7 +20,8 @@ GlowPlan build_glow_dx8(const GlowParams& params) {
                 above_one ? "glow/composite_add_x4_ps13.psh" : "glow/composite_add_ps13.psh",
                 "gpugems21/listing3_blur4_coords.vsh",
                 "gpugems21/listing4_blur4_weighted_sum.psh",
-                gain_above_one ? "glow/composite_add_x4_ps13.psh" : "glow/composite_add_ps13.psh"};
+                gain_above_one ? "glow/composite_add_x4_ps13.psh" : "glow/composite_add_ps13.psh",
+                "glow/extract_fogged_ps11.psh"};
   r.taps_per_blur_pass = kTapsPerBlurPassDx8;
   r.one_stage_per_read = true; // tex t# reads texture stage #
   r.constants_clamp_to_one = true;

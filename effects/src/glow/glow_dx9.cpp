@@ -15,7 +15,8 @@ GlowPlan build_glow_dx9(const GlowParams& params) {
                 "glow/composite_add.psh",
                 "gpugems21/listing1_blur8_coords.vsh",
                 "gpugems21/listing2_blur8_weighted_sum.psh",
-                "glow/composite_add.psh"};
+                "glow/composite_add.psh",
+                "glow/extract_fogged.psh"};
   r.taps_per_blur_pass = kTapsPerBlurPassDx9;
   r.one_stage_per_read = false; // texld tk, s0: one sampler serves every read
   // ps.2.0 constants are floats: c0 = intensity as it is.

@@ -15,6 +15,7 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
 // An input as the graph declares it: right size, stored in the declared format.
 std::string prepare_input(const TextureDesc& t, ImageMap& images) {
   auto it = images.find(t.name);
+  if (it == images.end() && t.contents) it = images.emplace(t.name, *t.contents).first;
   if (it == images.end()) return fmt::format("input texture '{}' was not given", t.name);
   img::Image& im = it->second;
   if (im.width != t.width || im.height != t.height)

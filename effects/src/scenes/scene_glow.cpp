@@ -12,9 +12,9 @@ namespace tierlift::effects {
 namespace {
 
 constexpr std::string_view kGlowKeys[] = {
-    "tier",       "downsample", "profile",        "taps",     "intensity",
-    "format",     "half_texel", "listings",       "ps1x_max", "weight_scale",
-    "afterimage", "motion",     "weight_rounding"};
+    "tier",       "downsample", "profile",         "taps",     "intensity",
+    "format",     "half_texel", "listings",        "ps1x_max", "weight_scale",
+    "afterimage", "motion",     "weight_rounding", "fog"};
 constexpr std::string_view kProfileKeys[] = {"gaussians", "sawtooth"};
 constexpr std::string_view kGaussianKeys[] = {"sigma", "weight"};
 constexpr std::string_view kSawtoothKeys[] = {"period", "radius", "weight"};
@@ -176,6 +176,7 @@ void read_glow(const Json& g, FieldChecker& c, const std::string& base_dir, Glow
     if (auto b = c.boolean(*v, at + "/half_texel")) p.half_texel = *b;
   if (const Json* v = member(g, "listings")) read_listings(*v, at + "/listings", base_dir, c, p);
   if (const Json* v = member(g, "ps1x_max")) read_ps1x_max(*v, at + "/ps1x_max", c, p);
+  if (const Json* v = member(g, "fog")) read_fog(*v, at + "/fog", c, base_dir, p);
   if (const Json* v = member(g, "weight_rounding"))
     if (auto name = c.string(*v, at + "/weight_rounding")) {
       if (auto r = parse_weight_rounding(*name))

@@ -15,8 +15,9 @@
 namespace tierlift::effects {
 namespace {
 
-constexpr std::string_view kSceneKeys[] = {"$schema", "description", "image",   "size", "glow",
-                                           "effect",  "radial",      "outline", "glsl"};
+constexpr std::string_view kSceneKeys[] = {"$schema", "description", "image",  "size",
+                                           "glow",    "effect",      "radial", "outline",
+                                           "glsl",    "glow_image"};
 constexpr size_t kMaxSceneBytes = size_t{1} << 20; // a scene is a few hundred bytes
 constexpr int kMaxNesting = 32;                    // a scene nests 5 deep
 
@@ -102,12 +103,28 @@ void read_scene(const Json& j, const std::string& base_dir, FieldChecker& c, Sce
   if (const Json* v = member(j, "description")) c.string(*v, "/description");
   std::vector<std::string> image_warns;
   read_image(j, base_dir, c, s, image_warns);
-  if (const Json* v = member(j, "glow")) read_glow(*v, c, base_dir, s.params);
+  // The glow render's size is the scene's: read once the image has set it.
+  const Json* glow_image = member(j, "glow_image");
+  if (glow_image && !c.failed()) read_glow_image(*glow_image, c, base_dir, s);
+  const Json* glow = member(j, "glow");
+  if (glow) read_glow(*glow, c, base_dir, s.params);
   read_effect(j, c, base_dir, s);
   if (s.params.motion.on() && s.image != kBuiltinNeon)
     c.error("/glow/motion", "moves the lights of the built-in scene; this scene's image is a PNG");
+  if (s.params.motion.on() && glow_image)
+    c.error("/glow/motion", "moves the lights of the scene image; the glow image would not follow");
+  // Only the glow's own extract draws the rendering context.
+  if (s.effect != "glow" && glow_image)
+    c.error("/glow_image", fmt::format("applies to effect \"glow\" only, not \"{}\"", s.effect),
+            true);
+  if (s.effect != "glow" && glow && member(*glow, "fog"))
+    c.error("/glow/fog", fmt::format("applies to effect \"glow\" only, not \"{}\"", s.effect),
+            true);
+  std::vector<std::string> context_warns = std::move(s.warnings);
   s.warnings = effect_warnings(s);
-  s.warnings.insert(s.warnings.end(), image_warns.begin(), image_warns.end());
+  // With a glow render the scene image's alpha says nothing about what glows.
+  if (!glow_image) s.warnings.insert(s.warnings.end(), image_warns.begin(), image_warns.end());
+  s.warnings.insert(s.warnings.end(), context_warns.begin(), context_warns.end());
 }
 
 // Everything up to the validated scene; diagnostics left in `c`.

@@ -42,6 +42,12 @@ void read_afterimage(const Json& v, const std::string& pointer, FieldChecker& ch
 void read_motion(const Json& v, const std::string& pointer, FieldChecker& check,
                  GlowParams& params);
 
+// "/glow_image" and "/glow/fog" (scene_context.cpp): the glow render and the glow fog, their
+// images read and checked against the scene's size (params.width/height, known by then).
+void read_glow_image(const Json& v, FieldChecker& check, const std::string& base_dir, Scene& out);
+void read_fog(const Json& v, const std::string& pointer, FieldChecker& check,
+              const std::string& base_dir, GlowParams& params);
+
 // `path` as seen from `base_dir` ("" = the working directory); absolute paths stay.
 std::string resolve_path(const std::string& base_dir, const std::string& path);
 

@@ -6,7 +6,10 @@
 //     at the sample positions of the graph's conventions (pixel centre, sub-texel bits), the
 //     ps_1_x range rule when the pixel listing is ps_1_x, Replace or ONE/ONE blending with
 //     what the target holds, img::quantize for the target's format;
-//   * AnalyticForm::MaskByAlpha — rgb × alpha of the one read the pixel listing takes.
+//   * AnalyticForm::MaskByAlpha — rgb × alpha of the one read the pixel listing takes;
+//   * AnalyticForm::MaskByAlphaFogged — the same of its first read, fogged by its second (the
+//     depth) with D3D's linear fog, the fog's numbers read off the listing's own constants
+//     (analytic::fog_form, analytic::fogged_mask_pass).
 // A pass it cannot model (a listing outside the form, another blend mode, the vertex
 // listing moving the quad, ps_1_x fixed-point emulation) is an error naming the pass and,
 // where the listing is at fault, the instruction (line:col).

@@ -1,5 +1,6 @@
 // The Real-Time Glow (GPU Gems ch. 21) as an effect graph. Both tiers build the same passes:
-//   extract     glow sources = scene rgb × alpha, alpha kept (point reads at texel centres)
+//   extract     glow sources = scene rgb × alpha, alpha kept (point reads at texel centres);
+//               with a glow image or fog (glow_context.h) the glow image's, fogged by depth
 //   downsample.i  the box average of each N×N block, N = 2..4 (skipped for N = 1): point
 //               reads at texel centres, four a pass, weights 1/N², the passes summed by
 //               ONE/ONE (N = 2: one pass, 3: three, 4: four); the quad uv is scaled by
@@ -59,6 +60,7 @@
 
 #include "tierlift/effects/blur_profile.h"
 #include "tierlift/effects/builtin_listing.h"
+#include "tierlift/effects/glow_context.h"
 #include "tierlift/effects/graph.h"
 #include "tierlift/effects/weight_quantize.h"
 #include "tierlift/ir/ps1x_range.h"
@@ -154,6 +156,8 @@ struct GlowParams {
   // constant's own range.
   Keyframes intensity_ramp, weight_scale_ramp, afterimage_gain_ramp;
   Motion motion; // the built-in scene only
+  // A separate glow render and the glow fog (glow_context.h); off: the scene's rgb × alpha.
+  GlowContext context;
   // True when any frame differs from the first (a ramp or an after-image): --frames then
   // reads every frame back.
   bool animated() const {

@@ -31,6 +31,9 @@ struct TextureDesc {
   // image whose red channel holds the stencil value (0..255), the other channels 0; `format`
   // is ignored.
   bool stencil = false;
+  // An input the graph carries itself (a glow image or a depth image a scene named, made
+  // when the graph was built): used when the caller gives no image of that name.
+  std::shared_ptr<const img::Image> contents{};
 };
 
 struct TextureBind {
@@ -49,7 +52,11 @@ struct TextureBind {
 // coverage at the sample points).
 // Kernel: a GLSL pass, whose source the model cannot read: the weighted sum of
 // PassDesc::kernel's reads.
-enum class AnalyticForm { Linear, MaskByAlpha, Coverage, Kernel };
+// MaskByAlphaFogged: MaskByAlpha of the first read, fogged by the second (the depth) with
+// D3D's linear fog (glow_context.h): f = saturate(m·(c0·d + c1)) per channel, rgb =
+// f·(rgb × alpha) + (1 − f)·c2, alpha passes through; c0..c2 are the pass's own constants
+// and m the result scale its profile needs (4 for ps_1_x, whose constants clamp to ±1).
+enum class AnalyticForm { Linear, MaskByAlpha, Coverage, Kernel, MaskByAlphaFogged };
 
 // One read of AnalyticForm::Kernel: the texture bound to `stage`, sampled at the pass's sample
 // point (pixel_uv of the conventions) plus `offset` (in uv), times `weight` per channel.

@@ -43,7 +43,8 @@ struct GraphRun {
 std::optional<pass::Pass> make_pass(const PassDesc& desc, const ImageMap& images,
                                     const ir::Conventions& conventions, std::string* error);
 
-// Checks the graph, requires every input texture in `images` at its declared size (it is
+// Checks the graph, requires every input texture in `images` (or carried by the graph:
+// TextureDesc::contents) at its declared size (it is
 // converted to the declared format with img::quantize), hands the inputs to the device,
 // runs each pass there (reading its target back after it only when keep_pass_images), then
 // reads every texture back: `images` holds every texture afterwards.

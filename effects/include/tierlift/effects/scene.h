@@ -92,6 +92,7 @@ std::vector<std::string> glow_warnings(const GlowParams& params);
 std::span<const std::string_view> scene_keys();
 std::span<const std::string_view> scene_glow_keys();
 std::span<const std::string_view> scene_profile_keys();
+std::span<const std::string_view> scene_fog_keys();     // "glow/fog"
 std::span<const std::string_view> scene_radial_keys();  // "radial"
 std::span<const std::string_view> scene_outline_keys(); // "outline"
 std::span<const std::string_view> scene_glsl_keys();    // "glsl"

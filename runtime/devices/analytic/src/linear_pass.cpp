@@ -396,4 +396,30 @@ img::ImageResult mask_by_alpha_pass(const Tap& read, const LinearPassInput& in,
   return img::ImageResult(std::move(out));
 }
 
+img::ImageResult fogged_mask_pass(const Tap& source, const Tap& depth, const FogForm& fog,
+                                  const LinearPassInput& in, std::vector<std::string>* notes) {
+  ir::Result<Setup> s = check(in);
+  if (!s) return std::move(s).failure();
+  img::Image out(s->width, s->height, in.model.target_format);
+  const std::vector<Tap> reads{source, depth};
+  Reader reader(*s, in, reads);
+  // Each step the listing stores in a register is clamped as the ps_1_x rule says (the
+  // product, the fog factor before its saturate, the blend); the store clamps the result.
+  auto range = [&](double v) { return in.ps1x_clamp ? clamp_range(v, s->ps1x_max) : v; };
+  for (uint32_t j = 0; j < s->height; ++j)
+    for (uint32_t i = 0; i < s->width; ++i) {
+      const Rgba v = reader.read(0, i, j), d = reader.read(1, i, j);
+      Rgba o{0, 0, 0, v[3]};
+      for (int c = 0; c < 3; ++c) {
+        const double f =
+            std::clamp(range(fog.scale * (fog.slope[c] * d[c] + fog.bias[c])), 0.0, 1.0);
+        o[c] = f * range(v[c] * v[3]) + (1 - f) * fog.color[c];
+      }
+      store(out, in, *s, i, j, o);
+    }
+  reader.negative_sample = false; // no partial sums of several reads: the clamps are exact
+  add_notes(notes, in, reader, false);
+  return img::ImageResult(std::move(out));
+}
+
 } // namespace tierlift::analytic

@@ -74,4 +74,22 @@ img::ImageResult linear_pass(const std::vector<Tap>& taps, const LinearPassInput
 img::ImageResult mask_by_alpha_pass(const Tap& read, const LinearPassInput& in,
                                     std::vector<std::string>* notes = nullptr);
 
+// The glow sources fogged by depth (Direct3D's linear fog applied while the glow sources are
+// drawn; Tron 2.0's "black glow fog"), per channel c:
+//   f_c = saturate(scale·(slope_c·d_c + bias_c)), d the depth read
+//   out_c = f_c·(s_c·s_a) + (1 − f_c)·color_c (c = r, g, b), out_a = s_a, s the source read
+// `slope`, `bias` and `color` are the pixel listing's c0, c1 and c2 as it sees them (a `def`
+// wins; ps_1_x constants clamp to [-1, 1]); `scale` the result scale of its fog factor:
+// 4 for ps_1_x (the _x4 its clamped constants need), 1 otherwise.
+struct FogForm {
+  std::array<double, 4> slope{}, bias{}, color{};
+  double scale = 1;
+};
+FogForm fog_form(const ir::Program& ps, const std::vector<Vec4>& ps_consts);
+// Stored by the double rule (store_value; RGBA8 values within kUnorm8MidpointBand of a
+// midpoint get one step of slack), with the same ps_1_x rule and blend as linear_pass.
+img::ImageResult fogged_mask_pass(const Tap& source, const Tap& depth, const FogForm& fog,
+                                  const LinearPassInput& in,
+                                  std::vector<std::string>* notes = nullptr);
+
 } // namespace tierlift::analytic
