@@ -113,7 +113,10 @@ bool varies_between_frames(const EffectGraph& g) {
 
 // The glow's own graph (the tiers' build_glow): its extract pass reads the scene image and
 // nothing else. Other effects (the outline's extract reads the object's mask; radial and
-// GLSL graphs) take their sources elsewhere, so the scene-image rules below do not apply.
+// GLSL graphs) take their sources elsewhere, so the scene-image rules below do not apply;
+// nor do they to a glow with a rendering context (glow_context.h): its extract reads a glow
+// image (the scene's alpha says nothing about what glows) or a depth texture (fog of a
+// colour other than black makes sources where the scene has none).
 bool is_glow_graph(const EffectGraph& g) {
   for (const PassDesc& p : g.passes)
     if (p.target == kSourcesTexture)

@@ -19,6 +19,8 @@
 //    pair) happens where every pass is compiled, as before.
 // A scene with a non-finite value is not pruned (a NaN or an infinity times a weight of 0
 // is not 0).
+// A glow whose sources come from a glow image or are fogged (glow_context.h) gets the
+// generic rule only: the rules above read the scene image's alpha as the sources.
 // Nor is a graph whose frames differ (per-frame constants, or a feedback texture read before
 // the frame writes it: the after-image); the caller leaves a moving scene unpruned as well.
 #pragma once

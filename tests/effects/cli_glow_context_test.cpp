@@ -1,0 +1,68 @@
+// `tierlift glow --scene` with a rendering context, end to end: the shipped fog and
+// glow-image scenes run three ways within targets and write their frames; a bad fog or glow
+// image is a positioned error with its caret, exit 1, nothing written.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "cli_fixture.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+class CliGlowContext : public tierlift::cli_test::CliFixture {};
+
+const fs::path kScenes = fs::path(TIERLIFT_SOURCE_DIR) / "listings" / "scenes";
+
+TEST_F(CliGlowContext, ShippedScenesThreeWaysWithinTargets) {
+  for (const char* name : {"glow-fog.json", "glow-context.json"})
+    for (const char* tier : {"dx9", "dx8"}) {
+      const fs::path out = dir / (std::string(name) + tier), log = dir / "log.txt";
+      ASSERT_EQ(run_cli(std::string("glow -q --backend all --tier ") + tier + " --scene " +
+                            (kScenes / name).string() + " -o " + out.string(),
+                        log),
+                0)
+          << name << " " << tier << "\n"
+          << read(log);
+      const std::string text = read(log);
+      EXPECT_NE(text.find("glow sources: the "), std::string::npos) << text;
+      EXPECT_NE(text.find("every pair within design.md's targets"), std::string::npos) << text;
+      for (const char* way : {"cpu", "vulkan", "analytic"})
+        EXPECT_TRUE(fs::exists(out / (std::string("final-") + way + ".png"))) << way;
+    }
+}
+
+struct Bad {
+  std::string json, where, says;
+};
+
+TEST_F(CliGlowContext, BadContextExitsOneWithACaretAndWritesNothing) {
+  const Bad cases[] = {
+      {"{\n  \"glow\": {\"fog\": {\"start\": 0.6, \"end\": 0.6}}\n}\n",
+       "bad.json:2:41: error: "
+       "/glow/fog/end",
+       "is not beyond start"},
+      {"{\n  \"size\": [64, 32],\n  \"glow_image\": \"" + (kScenes / "sign-glow.png").string() +
+           "\"\n}\n",
+       "bad.json:3:17: error: /glow_image", "160x96 but the scene is 64x32"},
+      {"{\n  \"glow_image\": \"missing.png\"\n}\n", "bad.json:2:17: error: /glow_image",
+       "cannot read the image"},
+      {"{\n  \"glow\": {\"fog\": {\"start\": 0, \"end\": 1, \"color\": [2, 0, 0]}}\n}\n",
+       "bad.json:2:52: error: /glow/fog/color/0", "outside 0..1"}};
+  for (const Bad& b : cases) {
+    const fs::path scene = dir / "bad.json", log = dir / "log.txt", out = dir / "out";
+    std::ofstream(scene) << b.json;
+    EXPECT_EQ(run_cli("glow --scene " + scene.string() + " -o " + out.string(), log), 1)
+        << read(log);
+    const std::string text = read(log);
+    EXPECT_NE(text.find(b.where), std::string::npos) << text;
+    EXPECT_NE(text.find(b.says), std::string::npos) << text;
+    EXPECT_NE(text.find('^'), std::string::npos) << text;
+    EXPECT_FALSE(fs::exists(out)) << text;
+  }
+}
+
+} // namespace

@@ -1,0 +1,144 @@
+// The rendering context in scenes: "glow_image" and "glow"/"fog" are read into GlowParams,
+// every bad value is a positioned diagnostic at its field (caret under the column), and the
+// two shipped scenes (glow-fog.json, glow-context.json) agree three ways on tiers dx9 and
+// dx8 at docs/design.md's targets.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "../vulkan/vk_test_util.h"
+#include "tierlift/effects/agreement.h"
+#include "tierlift/effects/analytic_device.h"
+#include "tierlift/effects/glow_run.h"
+#include "tierlift/effects/scene.h"
+
+namespace tierlift::effects {
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path kScenes = fs::path(TIERLIFT_SOURCE_DIR) / "listings" / "scenes";
+
+SceneLoad parse(const std::string& text) {
+  return parse_scene(text, "s.json", kScenes.string());
+}
+
+TEST(GlowContextScene, FieldsAreRead) {
+  SceneLoad s = parse(R"({"glow": {"fog": {"start": 0.1, "end": 0.9, "color": [0.5, 0, 1]}}})");
+  ASSERT_TRUE(s) << s.error;
+  const GlowFog& fog = s.scene->params.context.fog;
+  EXPECT_TRUE(fog.on);
+  EXPECT_EQ(fog.start, 0.1);
+  EXPECT_EQ(fog.end, 0.9);
+  EXPECT_EQ(fog.color, (std::array<double, 3>{0.5, 0, 1}));
+  EXPECT_EQ(fog.depth, nullptr); // the built-in floor
+  EXPECT_EQ(s.scene->params.context.glow_image, nullptr);
+
+  s = parse(R"({"image": "sign.png", "glow_image": "sign-glow.png",
+                "glow": {"fog": {"start": 0, "end": 1, "depth": "sign-glow.png"}}})");
+  ASSERT_TRUE(s) << s.error;
+  ASSERT_NE(s.scene->params.context.glow_image, nullptr);
+  EXPECT_EQ(s.scene->params.context.glow_image->width, 160u);
+  ASSERT_NE(s.scene->params.context.fog.depth, nullptr);
+  // The scene's own alpha is no longer what glows: its warnings are the glow image's.
+  for (const std::string& w : s.scene->warnings)
+    EXPECT_EQ(w.find("the image's alpha"), std::string::npos) << w;
+}
+
+struct Bad {
+  const char* text;
+  const char* where; // "s.json:L:C: error: /pointer"
+  const char* says;
+};
+
+class GlowContextSceneErrors : public ::testing::TestWithParam<Bad> {};
+
+TEST_P(GlowContextSceneErrors, NameTheFieldWithItsPosition) {
+  const Bad& b = GetParam();
+  SceneLoad s = parse(b.text);
+  ASSERT_FALSE(s) << b.text;
+  EXPECT_FALSE(s.io_error); // a file the scene names is the scene's error: exit 1
+  EXPECT_NE(s.error.find(b.where), std::string::npos) << s.error;
+  EXPECT_NE(s.error.find(b.says), std::string::npos) << s.error;
+  // The caret sits under the column the message gives (one-line scenes: 4 spaces indent).
+  const std::string head = b.where;
+  const size_t c1 = head.find(':'), c2 = head.find(':', c1 + 1), c3 = head.find(':', c2 + 1);
+  const size_t col = std::stoul(head.substr(c2 + 1, c3 - c2 - 1));
+  const size_t caret = s.error.find('^');
+  ASSERT_NE(caret, std::string::npos) << s.error;
+  EXPECT_EQ(caret - (s.error.rfind('\n', caret) + 1), col - 1 + 4) << s.error;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Fields, GlowContextSceneErrors,
+    ::testing::Values(
+        Bad{R"({"glow": {"fog": {"start": 0.5, "end": 0.2}}})", "s.json:1:40: error: /glow/fog/end",
+            "0.2 is not beyond start 0.5"},
+        Bad{R"({"size": [64, 32], "glow_image": "sign-glow.png"})",
+            "s.json:1:34: error: /glow_image", "the image is 160x96 but the scene is 64x32"},
+        Bad{R"({"glow_image": "no-such.png"})", "s.json:1:16: error: /glow_image",
+            "cannot read the image"},
+        Bad{R"({"glow": {"fog": {"start": 0, "end": 1, "color": [0, 1.5, 0]}}})",
+            "s.json:1:54: error: /glow/fog/color/1", "1.5 is outside 0..1"},
+        Bad{R"({"glow": {"fog": {"start": 0, "end": 1, "color": [0, 0]}}})",
+            "s.json:1:50: error: /glow/fog/color", "is not [r, g, b]"},
+        Bad{R"({"glow": {"tier": "dx8", "fog": {"start": 0.7, "end": 0.8}}})",
+            "s.json:1:55: error: /glow/fog/end", "tier dx8: fog from 0.7 to 0.8"},
+        Bad{R"({"glow": {"fog": {"start": 0, "end": 1, "depth": "no.png"}}})",
+            "s.json:1:50: error: /glow/fog/depth", "cannot read the image"},
+        Bad{R"({"effect": "radial-beams", "size": [160, 96], "glow_image": "sign-glow.png"})",
+            "s.json:1:47: error: /glow_image", "applies to effect \"glow\" only"},
+        Bad{R"({"effect": "glsl-blur", "glow": {"fog": {"start": 0, "end": 1}}})",
+            "s.json:1:34: error: /glow/fog", "applies to effect \"glow\" only"}));
+
+struct Shipped {
+  const char* file;
+  Tier tier;
+};
+
+class GlowContextShipped : public vulkan::test::VulkanTest,
+                           public ::testing::WithParamInterface<Shipped> {};
+
+TEST_P(GlowContextShipped, EveryPairAgreesOnEveryPass) {
+  SceneLoad s = load_scene_file((kScenes / GetParam().file).string());
+  ASSERT_TRUE(s) << s.error;
+  s.scene->params.tier = GetParam().tier;
+  const GlowPlan plan = build_scene_effect(*s.scene);
+  ASSERT_TRUE(plan) << plan.error;
+  img::ImageResult scene = load_scene_image(*s.scene);
+  ASSERT_TRUE(scene) << scene.message();
+  CpuPassDevice cpu_dev(2);
+  AnalyticPassDevice analytic;
+  auto vk = make_vulkan_pass_device(*dev);
+  std::vector<std::pair<std::string, GlowRun>> ways;
+  ways.emplace_back("cpu", run_glow(plan, *scene, cpu_dev, true));
+  ways.emplace_back("vulkan", run_glow(plan, *scene, *vk, true));
+  ways.emplace_back("analytic", run_glow(plan, *scene, analytic, true));
+  for (const auto& [name, w] : ways) ASSERT_TRUE(w.run.ok) << name << ": " << w.run.error;
+  EXPECT_TRUE(dev->messages().empty()) << dev->messages().front();
+  for (size_t a = 0; a < ways.size(); ++a)
+    for (size_t b = a + 1; b < ways.size(); ++b) {
+      const RunAgreement agree =
+          compare_runs(ways[a].second.run, ways[a].second.images, ways[b].second.run,
+                       ways[b].second.images, std::string(kFinalTexture));
+      ASSERT_EQ(agree.error, "");
+      for (const PassAgreement& row : agree.passes)
+        EXPECT_TRUE(row.verdict.pass) << ways[a].first << " vs " << ways[b].first << ", "
+                                      << row.pass << ": " << row.verdict.summary;
+      EXPECT_TRUE(agree.all_pass);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, GlowContextShipped,
+                         ::testing::Values(Shipped{"glow-fog.json", Tier::Dx9},
+                                           Shipped{"glow-fog.json", Tier::Dx8},
+                                           Shipped{"glow-context.json", Tier::Dx9},
+                                           Shipped{"glow-context.json", Tier::Dx8}),
+                         [](const ::testing::TestParamInfo<Shipped>& info) {
+                           std::string n = info.param.file;
+                           n = n.substr(0, n.find('.'));
+                           std::erase(n, '-');
+                           return n + "_" + std::string(tier_name(info.param.tier));
+                         });
+
+} // namespace
+} // namespace tierlift::effects
