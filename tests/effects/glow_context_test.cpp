@@ -83,9 +83,10 @@ void expect_glow(const Ways& w, const img::Image& scene, Tier tier, const Expect
         for (int c = 0; c < 3; ++c) {
           EXPECT_NEAR(glow.at(x, y)[c], g[c], 2e-6)
               << name << " x " << x << " y " << y << " channel " << c;
-          if (tier == Tier::Dx9)
+          if (tier == Tier::Dx9) {
             EXPECT_NEAR(fin.at(x, y)[c], scene.at(x, y)[c] + kIntensity * g[c], 4e-6)
                 << name << " final x " << x << " y " << y << " channel " << c;
+          }
         }
       }
   }

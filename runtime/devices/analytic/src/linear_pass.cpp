@@ -406,6 +406,44 @@ img::ImageResult fogged_mask_pass(const Tap& source, const Tap& depth, const Fog
   // Each step the listing stores in a register is clamped as the ps_1_x rule says (the
   // product, the fog factor before its saturate, the blend); the store clamps the result.
   auto range = [&](double v) { return in.ps1x_clamp ? clamp_range(v, s->ps1x_max) : v; };
+  auto range32 = [&](float v) { return in.ps1x_clamp ? reader.clamp_fp32(v) : v; };
+  if (exact_store(in, reader)) {
+    for (uint32_t j = 0; j < s->height; ++j)
+      for (uint32_t i = 0; i < s->width; ++i) {
+        Rgba ms{}, md{};
+        const Rgba v = reader.read(0, i, j, &ms), d = reader.read(1, i, j, &md);
+        Rgba o{0, 0, 0, range(v[3])}, e{0, 0, 0, 10.0 * detail::kFp32Unit * ms[3]};
+        for (int c = 0; c < 3; ++c) {
+          const double f =
+              std::clamp(range(fog.scale * (fog.slope[c] * d[c] + fog.bias[c])), 0.0, 1.0);
+          o[c] = range(f * range(v[c] * v[3]) + (1 - f) * fog.color[c]);
+          // Generous on purpose (a larger bound only sends more values to the fp32 path):
+          // the factor's mad rounds at the size of its terms, the lrp at the size of its
+          // operands, and each read is off by a few units of its largest texel.
+          const double reach =
+              1 + fog.scale * (std::fabs(fog.slope[c]) * md[c] + std::fabs(fog.bias[c]));
+          e[c] = 64.0 * detail::kFp32Unit * reach * (ms[c] * ms[3] + std::fabs(fog.color[c]) + 1);
+        }
+        // The listing in fp32: mul, then mad (product rounded, then the sum; _x4 a plain
+        // product), saturate, then lrp as s2 + s0·(s1 − s2) (NUMERICS.md rules 8, 14).
+        auto fp32 = [&] {
+          const auto src = reader.read_fp32(0, i, j), dep = reader.read_fp32(1, i, j);
+          std::array<float, 4> r{0, 0, 0, range32(src[3])};
+          for (int c = 0; c < 3; ++c) {
+            const float prod = range32(detail::product_fp32(src[c], src[3]));
+            float pre = detail::product_fp32(float(fog.slope[c]), dep[c]) + float(fog.bias[c]);
+            if (fog.scale != 1) pre *= float(fog.scale);
+            const float f = std::clamp(range32(pre), 0.0f, 1.0f);
+            const auto col = float(fog.color[c]);
+            r[c] = range32(detail::product_fp32(f, prod - col) + col);
+          }
+          return r;
+        };
+        mark_slack(in, out, i, j, store_settled(out, in, i, j, o, e, fp32));
+      }
+    add_notes(notes, in, reader, false);
+    return img::ImageResult(std::move(out));
+  }
   for (uint32_t j = 0; j < s->height; ++j)
     for (uint32_t i = 0; i < s->width; ++i) {
       const Rgba v = reader.read(0, i, j), d = reader.read(1, i, j);

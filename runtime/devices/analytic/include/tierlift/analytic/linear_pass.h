@@ -86,8 +86,8 @@ struct FogForm {
   double scale = 1;
 };
 FogForm fog_form(const ir::Program& ps, const std::vector<Vec4>& ps_consts);
-// Stored by the double rule (store_value; RGBA8 values within kUnorm8MidpointBand of a
-// midpoint get one step of slack), with the same ps_1_x rule and blend as linear_pass.
+// Stored as linear_pass stores (with the devices' own coordinates, their fp32 arithmetic
+// settles what the double value cannot), with the same ps_1_x rule and blend.
 img::ImageResult fogged_mask_pass(const Tap& source, const Tap& depth, const FogForm& fog,
                                   const LinearPassInput& in,
                                   std::vector<std::string>* notes = nullptr);
