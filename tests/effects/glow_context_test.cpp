@@ -14,6 +14,7 @@
 #include "tierlift/effects/agreement.h"
 #include "tierlift/effects/analytic_device.h"
 #include "tierlift/effects/glow_run.h"
+#include "tierlift/effects/memory_plan.h"
 #include "tierlift/effects/prune.h"
 
 namespace tierlift::effects {
@@ -166,6 +167,19 @@ INSTANTIATE_TEST_SUITE_P(Tiers, GlowContext3, ::testing::Values(Tier::Dx9, Tier:
                          [](const ::testing::TestParamInfo<Tier>& info) {
                            return std::string(tier_name(info.param));
                          });
+
+TEST(GlowContext, MemoryPlanCountsTheCarriedInputs) {
+  GlowParams plain = one_tap(Tier::Dx9), fogged = plain;
+  fogged.context.fog.on = true;
+  const GlowPlan a = build_glow(plain), b = build_glow(fogged);
+  ASSERT_TRUE(a && b) << a.error << b.error;
+  const uint64_t texture = uint64_t{kW} * kH * 16; // one RGBA32F texture of the scene's size
+  // The depth texture three times: the image the graph carries, the device's own and the
+  // one the run hands back (the largest pass, extract or composite, reads three textures
+  // either way, so the transient peak is the same).
+  EXPECT_EQ(plan_memory(b.graph, {"cpu"}, false, 0).peak,
+            plan_memory(a.graph, {"cpu"}, false, 0).peak + 3 * texture);
+}
 
 TEST(GlowContext, FogConstantsAndTheirPs1xLimit) {
   GlowFog fog;

@@ -98,6 +98,11 @@ MemoryPlan plan_memory(const EffectGraph& graph, const std::vector<std::string>&
   MemoryPlan plan;
   uint64_t top = 0;
   plan.peak = extra;
+  // The inputs the graph carries itself (a glow image, a fog's depth: TextureDesc::contents)
+  // stay beside every run, as the scene image the caller holds does.
+  for (const TextureDesc& t : graph.textures)
+    if (t.contents)
+      plan.peak += uint64_t{t.contents->width} * t.contents->height * 4 * sizeof(float);
   for (const std::string& d : devices) {
     plan.devices.push_back(plan_device(graph, d, keep_pass_images));
     plan.peak += plan.devices.back().kept;

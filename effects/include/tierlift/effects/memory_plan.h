@@ -39,7 +39,8 @@ struct MemoryPlan {
 };
 
 // `devices` in the order they run; `keep_pass_images`: one image per pass kept (run_graph);
-// `extra`: bytes the caller holds throughout (e.g. the scene as loaded). Unknown device
+// `extra`: bytes the caller holds throughout (e.g. the scene as loaded); the inputs the graph
+// carries (TextureDesc::contents) are counted here beside it. Unknown device
 // names count as the cpu device.
 MemoryPlan plan_memory(const EffectGraph& graph, const std::vector<std::string>& devices,
                        bool keep_pass_images, uint64_t extra = 0);
