@@ -4,6 +4,7 @@
 // report's figures for a run compared with figures computed here from that run's images.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -142,8 +143,10 @@ TEST(ReportIdeal, SweepErrorsEqualAnIndependentComputation) {
         double gw = 0, fw = 0;
         for (int k = 0; k < 3; ++k) {
           const double gi = ideal.at(x, y)[k];
-          const double fi = image.at(x, y)[k] + scene.params.intensity * gi;
-          const double gd = std::abs(glow.at(x, y)[k] - gi), fd = std::abs(final.at(x, y)[k] - fi);
+          // The final frame is compared as displayed: both sides clamped to [0, 1].
+          const double fi = std::clamp(image.at(x, y)[k] + scene.params.intensity * gi, 0.0, 1.0);
+          const double fa = std::clamp(double(final.at(x, y)[k]), 0.0, 1.0);
+          const double gd = std::abs(glow.at(x, y)[k] - gi), fd = std::abs(fa - fi);
           gw = std::max(gw, gd), fw = std::max(fw, fd);
           gsq += gd * gd, fsq += fd * fd;
         }

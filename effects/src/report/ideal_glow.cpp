@@ -120,6 +120,12 @@ RgbImage ideal_final(const img::Image& scene, const RgbImage& glow, double inten
   return out;
 }
 
+RgbImage displayed(RgbImage image) {
+  for (double& v : image.rgb)
+    if (!std::isnan(v)) v = std::clamp(v, 0.0, 1.0);
+  return image;
+}
+
 RgbImage rgb_of(const img::Image& image) {
   RgbImage out{image.width, image.height,
                std::vector<double>(size_t{image.width} * image.height * 3)};

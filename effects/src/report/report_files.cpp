@@ -176,7 +176,8 @@ nlohmann::json report_json(const SweepResult& r, const SweepSettings& s, const R
         {"half_texel", s.half_texels},
         {"frames", s.frames},
         {"timed_devices", s.timed}}},
-      {"error_metric", "final frame RMSE against the ideal glow (scene + intensity x ideal glow)"},
+      {"error_metric", "final frame RMSE against the ideal glow (scene + intensity x ideal glow), "
+                       "both as displayed: clamped to [0, 1]"},
       {"frame_time", "median steady-state frame, vulkan (cpu when vulkan did not run)"}};
   nlohmann::json configs = nlohmann::json::array();
   for (size_t i = 0; i < r.configs.size(); ++i) {
@@ -263,7 +264,8 @@ std::string report_markdown(const SweepResult& r, const SweepSettings& s, const 
       "Scene: {} ({}x{}, intensity {}). Sweep: {} ({} configurations), {} steady-state "
       "frame(s) timed on {}. Error: the final frame's RMSE against the ideal glow (the "
       "glow sources convolved with the profile's continuous kernel at full resolution, in "
-      "double). Frame time: the {} median{}.\n\n",
+      "double), both as a display shows them (clamped to [0, 1]); the glow columns measure "
+      "the glow itself, unclamped. Frame time: the {} median{}.\n\n",
       info.scene_file.empty() ? info.scene_image : info.scene_file, info.width, info.height,
       info.intensity, s.quick ? "quick" : "full", r.configs.size(), s.frames,
       fmt::join(s.timed, ", "), clock,

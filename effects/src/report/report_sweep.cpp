@@ -97,7 +97,7 @@ std::string run_config(ConfigResult& out, const Scene& scene, const img::Image& 
   const img::Image& final = measured->glow.images.at(std::string(kFinalTexture));
   out.glow = error_against(ideal_glow_img,
                            upsample_glow(glow, params.width, params.height, params.downsample));
-  out.final = error_against(ideal_final_img, rgb_of(final));
+  out.final = error_against(ideal_final_img, displayed(rgb_of(final)));
   ways.clear(); // the pass images are large; the timing runs need the memory
 
   // The device whose frame time the plot uses: Vulkan when timed, else the first timed.
@@ -237,7 +237,8 @@ SweepResult run_sweep(const Scene& scene, const img::Image& image, const SweepSe
   }
   // The ideal depends on the scene and its profile only: computed once.
   const RgbImage ideal = ideal_glow(glow_sources(image), scene.params.profile);
-  const RgbImage ideal_fin = ideal_final(image, ideal, scene.params.intensity);
+  // The final frame as displayed (clamped to [0, 1]) on both sides: ideal_glow.h, displayed().
+  const RgbImage ideal_fin = displayed(ideal_final(image, ideal, scene.params.intensity));
   for (size_t i = 0; i < configs.size(); ++i) {
     if (progress) progress(i, configs.size(), configs[i]);
     ConfigResult c;
