@@ -66,58 +66,69 @@ TL_INLINE View fetch(const Impl& im, const BlockStep& b, int k, int half, Scratc
   return v;
 }
 
-// d[c][l] = f(a[c][l], …) for every component and lane: one rule function per lane. The
-// result never shares memory with a source (it goes to Scratch::dst). "unroll 1" keeps GCC
-// from unrolling the lane loop completely before the loop vectoriser sees it: the vectoriser
-// if-converts the rule functions' selects, the straight-line vectoriser after unrolling
-// cannot.
-template <typename F> TL_INLINE void lanes1(LaneVec4& d, const View& a, F f) {
+// d[c][l] = f(a[c][l], …) for the components in `mask` (the only ones the store keeps) and
+// every lane: one rule function per lane. d may be the destination register itself (a
+// BlockStep::direct step), so a source may share memory with it, but only lane for lane (the
+// plan rules out the rest): ivdep tells the vectoriser so, where __restrict would be false.
+// "unroll 1" keeps GCC from unrolling the lane loop completely before the loop vectoriser
+// sees it: the vectoriser if-converts the rule functions' selects, the straight-line
+// vectoriser after unrolling cannot.
+template <typename F> TL_INLINE void lanes1(LaneVec4& d, int mask, const View& a, F f) {
   for (int c = 0; c < 4; ++c) {
-    float* __restrict o = d.c[c];
-    const float* __restrict x = a.c[c];
+    if (!(mask & (1 << c))) continue;
+    float* o = d.c[c];
+    const float* x = a.c[c];
+#pragma GCC ivdep
 #pragma GCC unroll 1
     for (int l = 0; l < L; ++l) o[l] = f(x[l]);
   }
 }
-template <typename F> TL_INLINE void lanes2(LaneVec4& d, const View& a, const View& b, F f) {
+template <typename F>
+TL_INLINE void lanes2(LaneVec4& d, int mask, const View& a, const View& b, F f) {
   for (int c = 0; c < 4; ++c) {
-    float* __restrict o = d.c[c];
-    const float* __restrict x = a.c[c];
-    const float* __restrict y = b.c[c];
+    if (!(mask & (1 << c))) continue;
+    float* o = d.c[c];
+    const float *x = a.c[c], *y = b.c[c];
+#pragma GCC ivdep
 #pragma GCC unroll 1
     for (int l = 0; l < L; ++l) o[l] = f(x[l], y[l]);
   }
 }
 template <typename F>
-TL_INLINE void lanes3(LaneVec4& d, const View& a, const View& b, const View& e, F f) {
+TL_INLINE void lanes3(LaneVec4& d, int mask, const View& a, const View& b, const View& e, F f) {
   for (int c = 0; c < 4; ++c) {
-    float* __restrict o = d.c[c];
-    const float* __restrict x = a.c[c];
-    const float* __restrict y = b.c[c];
-    const float* __restrict z = e.c[c];
+    if (!(mask & (1 << c))) continue;
+    float* o = d.c[c];
+    const float *x = a.c[c], *y = b.c[c], *z = e.c[c];
+#pragma GCC ivdep
 #pragma GCC unroll 1
     for (int l = 0; l < L; ++l) o[l] = f(x[l], y[l], z[l]);
   }
 }
-// A dot product per lane, splatted to all four components (as the VM's splat).
-template <typename F> TL_INLINE void lanes_dot(LaneVec4& d, const View& a, const View& b, F dot) {
+// A dot product per lane, splatted to the components in `mask` (as the VM's splat). A lane's
+// sources are read before its results are written.
+template <typename F>
+TL_INLINE void lanes_dot(LaneVec4& d, int mask, const View& a, const View& b, F dot) {
   for (int l = 0; l < L; ++l) {
     const float x[4] = {a.c[0][l], a.c[1][l], a.c[2][l], a.c[3][l]};
     const float y[4] = {b.c[0][l], b.c[1][l], b.c[2][l], b.c[3][l]};
     const float r = dot(x, y, l);
-    for (int c = 0; c < 4; ++c) d.c[c][l] = r;
+    for (int c = 0; c < 4; ++c)
+      if (mask & (1 << c)) d.c[c][l] = r;
   }
 }
 
 // Every other arithmetic instruction: the VM's own compute function, lane by lane.
-void compute_per_lane(const vm::Step& st, const View* s, int n, LaneVec4& d, vm::Invocation& inv) {
+void compute_per_lane(const vm::Step& st, const View* s, int n, int mask, LaneVec4& d,
+                      vm::Invocation& inv) {
   for (int l = 0; l < n; ++l) {
     Vec4 in[5];
     for (int k = 0; k < st.nsrc; ++k)
       in[k] = {s[k].c[0][l], s[k].c[1][l], s[k].c[2][l], s[k].c[3][l]};
     Vec4 r{0, 0, 0, 0};
     st.compute(st, in, r, inv);
-    for (int c = 0; c < 4; ++c) d.c[c][l] = r[c];
+    for (int c = 0; c < 4; ++c)
+      if (mask & (1 << c)) d.c[c][l] = r[c];
   }
 }
 
@@ -127,64 +138,65 @@ template <Denormals D>
 TL_INLINE void compute(const Impl& im, const BlockStep& b, int half, int n, Scratch& sc,
                        LaneVec4& d, vm::Invocation& inv) {
   const vm::Step& st = *b.step;
+  const int m = st.dst.mask;
   View s[4];
   for (int k = 0; k < st.nsrc; ++k) s[k] = fetch<D>(im, b, k, half, sc);
   switch (st.ins->op) {
-  case Opcode::Mov: lanes1(d, s[0], [](float a) { return a; }); return;
+  case Opcode::Mov: lanes1(d, m, s[0], [](float a) { return a; }); return;
   case Opcode::Add:
-    lanes2(d, s[0], s[1], [](float a, float e) { return num::legacy_add<D>(a, e); });
+    lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_add<D>(a, e); });
     return;
   case Opcode::Sub:
-    lanes2(d, s[0], s[1], [](float a, float e) { return num::legacy_sub<D>(a, e); });
+    lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_sub<D>(a, e); });
     return;
   case Opcode::Mul:
-    lanes2(d, s[0], s[1], [](float a, float e) { return num::legacy_mul<D>(a, e); });
+    lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_mul<D>(a, e); });
     return;
   case Opcode::Mad:
-    lanes3(d, s[0], s[1], s[2],
+    lanes3(d, m, s[0], s[1], s[2],
            [](float a, float e, float f) { return num::legacy_mad<D>(a, e, f); });
     return;
   case Opcode::Min:
-    lanes2(d, s[0], s[1], [](float a, float e) { return num::legacy_min<D>(a, e); });
+    lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_min<D>(a, e); });
     return;
   case Opcode::Max:
-    lanes2(d, s[0], s[1], [](float a, float e) { return num::legacy_max<D>(a, e); });
+    lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_max<D>(a, e); });
     return;
   case Opcode::Slt:
-    lanes2(d, s[0], s[1], [](float a, float e) { return num::legacy_slt<D>(a, e); });
+    lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_slt<D>(a, e); });
     return;
   case Opcode::Sge:
-    lanes2(d, s[0], s[1], [](float a, float e) { return num::legacy_sge<D>(a, e); });
+    lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_sge<D>(a, e); });
     return;
   case Opcode::Lrp:
-    lanes3(d, s[0], s[1], s[2],
+    lanes3(d, m, s[0], s[1], s[2],
            [](float a, float e, float f) { return num::legacy_lrp<D>(a, e, f); });
     return;
   case Opcode::Cmp:
-    lanes3(d, s[0], s[1], s[2],
+    lanes3(d, m, s[0], s[1], s[2],
            [](float a, float e, float f) { return num::legacy_cmp<D>(a, e, f); });
     return;
   case Opcode::Cnd:
-    lanes3(d, s[0], s[1], s[2],
+    lanes3(d, m, s[0], s[1], s[2],
            [](float a, float e, float f) { return num::legacy_cnd<D>(a, e, f); });
     return;
-  case Opcode::Abs: lanes1(d, s[0], [](float a) { return std::fabs(a); }); return;
+  case Opcode::Abs: lanes1(d, m, s[0], [](float a) { return std::fabs(a); }); return;
   case Opcode::Dp3:
-    lanes_dot(d, s[0], s[1],
+    lanes_dot(d, m, s[0], s[1],
               [](const float* x, const float* y, int) { return num::legacy_dp3<D>(x, y); });
     return;
   case Opcode::Dp4:
-    lanes_dot(d, s[0], s[1],
+    lanes_dot(d, m, s[0], s[1],
               [](const float* x, const float* y, int) { return num::legacy_dp4<D>(x, y); });
     return;
   case Opcode::Dp2Add: {
     const float* w = s[2].c[3]; // the scalar operand reads its 4th swizzle slot
-    lanes_dot(d, s[0], s[1], [w](const float* x, const float* y, int l) {
+    lanes_dot(d, m, s[0], s[1], [w](const float* x, const float* y, int l) {
       return num::legacy_add<D>(num::legacy_dp2<D>(x, y), w[l]);
     });
     return;
   }
-  default: compute_per_lane(st, s, n, d, inv); return;
+  default: compute_per_lane(st, s, n, m, d, inv); return;
   }
 }
 
@@ -285,6 +297,10 @@ TL_INLINE void run_steps_body(const Impl& im, const PixelBlockInput& in,
     switch (b.op) {
     case BlockOp::Skip: break;
     case BlockOp::Arith:
+      if (b.direct) {
+        compute<D>(im, b, 0, n, sc, sc.reg[st.dst.slot], inv);
+        break;
+      }
       compute<D>(im, b, 0, n, sc, d0, inv);
       store<D>(st.dst, d0, sc);
       break;
@@ -300,6 +316,10 @@ TL_INLINE void run_steps_body(const Impl& im, const PixelBlockInput& in,
     case BlockOp::Tex: {
       View c = tex_coord(in, st.aux, sc);
       if (textures.stage_state(static_cast<uint32_t>(st.aux)).projected) c = projected<D>(c, sc);
+      if (b.direct) {
+        sample(textures, st.aux, c, nullptr, n, sc.reg[st.dst.slot]);
+        break;
+      }
       sample(textures, st.aux, c, nullptr, n, d0);
       store<D>(st.dst, d0, sc);
       break;
@@ -330,8 +350,9 @@ TL_INLINE void run_steps_body(const Impl& im, const PixelBlockInput& in,
       break;
     }
     case BlockOp::TexLd:
-      sample(textures, st.aux, fetch<D>(im, b, 0, 0, sc), nullptr, n, d0);
-      store<D>(st.dst, d0, sc);
+      sample(textures, st.aux, fetch<D>(im, b, 0, 0, sc), nullptr, n,
+             b.direct ? sc.reg[st.dst.slot] : d0);
+      if (!b.direct) store<D>(st.dst, d0, sc);
       break;
     case BlockOp::TexLdP:
       sample(textures, st.aux, projected<D>(fetch<D>(im, b, 0, 0, sc), sc), nullptr, n, d0);
