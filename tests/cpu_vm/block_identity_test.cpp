@@ -214,6 +214,15 @@ const char* const kEveryForm[] = {
     "dp2add r4.y, r0, r1, c5.x\nmov r4.zw, r11\n"
     "add r0, r0, r1\nadd r0, r0, r2\nadd r0, r0, r3\nadd r0, r0, r4\nadd r0, r0, r5\n"
     "add r0, r0, r7\nadd r0, r0, r9\nmov oC0, r0\n",
+    // Results written straight into their register (BlockStep::direct) beside the ones that
+    // must go through the copy: a swizzle reading a component an earlier one of the same
+    // write replaced (r1.xy = r1.yz, r0.xz = r0.zx, r2 = r2.wzyx), components the mask
+    // leaves alone (r1.x into r1.yzw, r0.a into r0.rgb), a dot product onto its own source,
+    // a texture read whose coordinate is its destination.
+    "ps_2_0\ndcl t0\ndcl_2d s0\ntexld r0, t0, s0\nmov r1, r0\nmov r1.xy, r1.yzxw\n"
+    "add r1.yzw, r1.x, r1\nmul r0.rgb, r0, r0.a\nmad r0.xz, r0.zxyw, c0, r0\n"
+    "dp3 r1.xw, r1, r1\nmov r2, r0.wzyx\nmov r2, r2.wzyx\nmul r2, r2, -r2.yzxw\n"
+    "texld r2, r2, s0\nadd r0, r0, r1\nadd r0, r0, r2\nmov oC0, r0\n",
     // ps_2_0 texkill and a coordinate read straight from t#.
     "ps_2_0\ndcl t0\ndcl t2\ndcl_2d s3\ntexkill t2\ntexld r0, t0, s3\nmul r0, r0, t2\nmov oC0, "
     "r0\n",

@@ -73,16 +73,17 @@ void raster_rows_block(const RasterJob& job, int64_t y0, int64_t y1, BlockWorker
           hi = std::min(hi, floor_div(e0[k] - need, -step[k]) + 1);
         }
       }
-      int n = 0;
-      for (int64_t i = lo; i < hi; ++i) {
-        for (int k = 0; k < 3; ++k) w.e[n][k] = e0[k] + step[k] * i;
-        w.x[n] = t.bounds.x0 + i;
-        if (++n == kBlockLanes) {
-          shade_block(job, t, y, n, w, stats);
-          n = 0;
-        }
+      // Blocks of kBlockLanes consecutive pixels from lo. The edge values are only read by
+      // exact interpolation (llvmpipe's planes take x alone, constant inputs neither).
+      const bool edges = !t.llvmpipe && !job.constant_inputs;
+      for (int64_t i = lo; i < hi; i += kBlockLanes) {
+        const int n = static_cast<int>(std::min<int64_t>(kBlockLanes, hi - i));
+        for (int l = 0; l < n; ++l) w.x[l] = t.bounds.x0 + i + l;
+        if (edges)
+          for (int l = 0; l < n; ++l)
+            for (int k = 0; k < 3; ++k) w.e[l][k] = e0[k] + step[k] * (i + l);
+        shade_block(job, t, y, n, w, stats);
       }
-      if (n) shade_block(job, t, y, n, w, stats);
     }
   }
 }

@@ -4,8 +4,14 @@
 // the optionals and the Vec4 returns, and the point and llvmpipe bilinear loops are built a
 // second time for AVX2 + FMA (std::floor and std::fma become single instructions there; both
 // round exactly as the baseline's libm calls do, so the result is the same bit for bit).
+#include <climits>
+
 #include "sampling_rules.h"
 #include "tierlift/cpu/texture.h"
+
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#endif
 
 namespace tierlift::cpu {
 namespace {
@@ -32,9 +38,9 @@ struct BlockRead {
   Lanes* out;
 };
 
-// sample_texture's point read.
-[[gnu::always_inline]] inline void point_body(const BlockRead& r) {
-  for (int l = 0; l < r.n; ++l) {
+// sample_texture's point read, lanes first..last−1.
+[[gnu::always_inline]] inline void point_body(const BlockRead& r, int first, int last) {
+  for (int l = first; l < last; ++l) {
     const int64_t i =
         texel_index(r.s.address_u, detail::point_texel(r.u[l], r.im.width), r.im.width);
     const int64_t j =
@@ -44,9 +50,10 @@ struct BlockRead {
   }
 }
 
-// sample_texture_llvmpipe's bilinear read.
-[[gnu::always_inline]] inline void llvmpipe_linear_body(const BlockRead& r, int subtexel_bits) {
-  for (int l = 0; l < r.n; ++l) {
+// sample_texture_llvmpipe's bilinear read, lanes first..last−1.
+[[gnu::always_inline]] inline void llvmpipe_linear_body(const BlockRead& r, int subtexel_bits,
+                                                        int first, int last) {
+  for (int l = first; l < last; ++l) {
     const detail::LinearAxis x =
         detail::llvmpipe_linear_axis(r.u[l], r.im.width, r.s.address_u, subtexel_bits);
     const detail::LinearAxis y =
@@ -64,18 +71,167 @@ struct BlockRead {
 }
 
 void point_plain(const BlockRead& r) {
-  point_body(r);
+  point_body(r, 0, r.n);
 }
 void llvmpipe_linear_plain(const BlockRead& r, int bits) {
-  llvmpipe_linear_body(r, bits);
+  llvmpipe_linear_body(r, bits, 0, r.n);
 }
 
 #if defined(__x86_64__) && defined(__GNUC__)
-[[gnu::target("avx2,fma")]] void point_fma(const BlockRead& r) {
-  point_body(r);
+// The AVX2 build runs eight lanes at a time where every lane's texels lie inside the texture
+// on both axes (the common case), and sends any group of eight with one lane outside, and
+// the lanes past the last full group, through the per-lane bodies above. Inside the texture
+// each step below is the per-lane step on the same values, so the results are the same bits:
+// u·N in float is fl32 of the exact double product texel_space takes (a float times an
+// integer < 2^24 is exact in double, and both round it once); floor and truncation agree on
+// values ≥ 0; address_texel leaves indices inside the texture alone (Clamp's right-hand
+// neighbour is min(i0 + 1, N − 1), what address_texel gives); the lerp is rounding::lerp on
+// four channels at once (flush, subtract, flush, one fused multiply-add, flush). Texels are
+// loaded as one RGBA vector each and transposed four lanes at a time into the lane arrays.
+constexpr int kGroup = 8;
+
+// A texture whose float offsets 4·(y·W + x) fit an int32: every image the readers accept.
+bool int32_texels(const img::Image& im) {
+  return uint64_t{im.width} * im.height * 4 <= uint64_t{INT32_MAX};
 }
+
+[[gnu::target("avx2,fma")]] inline __m128 flush4(__m128 v) {
+  const __m128i bits = _mm_castps_si128(v);
+  const __m128i exponent = _mm_and_si128(bits, _mm_set1_epi32(0x7F800000));
+  const __m128 zero_exponent = _mm_castsi128_ps(_mm_cmpeq_epi32(exponent, _mm_setzero_si128()));
+  const __m128 sign = _mm_castsi128_ps(_mm_and_si128(bits, _mm_set1_epi32(INT32_MIN)));
+  return _mm_blendv_ps(v, sign, zero_exponent);
+}
+
+// rounding::lerp on the four channels of one texel pair.
+[[gnu::target("avx2,fma")]] inline __m128 lerp4(__m128 alpha, __m128 v0, __m128 v1) {
+  v0 = flush4(v0);
+  v1 = flush4(v1);
+  return flush4(_mm_fmadd_ps(alpha, flush4(_mm_sub_ps(v1, v0)), v0));
+}
+
+// Four RGBA texels (lanes l..l+3) into the lane arrays.
+[[gnu::target("avx2,fma")]] inline void put4(__m128 t0, __m128 t1, __m128 t2, __m128 t3, Lanes* out,
+                                             int l) {
+  _MM_TRANSPOSE4_PS(t0, t1, t2, t3);
+  _mm_storeu_ps(out[0] + l, t0);
+  _mm_storeu_ps(out[1] + l, t1);
+  _mm_storeu_ps(out[2] + l, t2);
+  _mm_storeu_ps(out[3] + l, t3);
+}
+
+// One axis of eight lanes: whether all lie inside (point) and their indices.
+[[gnu::target("avx2,fma")]] inline int point_axis(const float* u, uint32_t n, __m256i& index) {
+  const __m256 size = _mm256_set1_ps(static_cast<float>(n));
+  const __m256 x = _mm256_mul_ps(_mm256_loadu_ps(u), size);
+  const __m256 inside = _mm256_and_ps(_mm256_cmp_ps(x, _mm256_setzero_ps(), _CMP_GE_OQ),
+                                      _mm256_cmp_ps(x, size, _CMP_LT_OQ));
+  // Outside lanes convert 0 instead (their group is not used): no undefined conversion.
+  index = _mm256_cvttps_epi32(_mm256_and_ps(x, inside));
+  return _mm256_movemask_ps(inside);
+}
+
+[[gnu::target("avx2,fma")]] void point_fma(const BlockRead& r) {
+  if (!int32_texels(r.im)) return point_body(r, 0, r.n);
+  const float* base = r.im.rgba.data();
+  const __m256i width = _mm256_set1_epi32(static_cast<int32_t>(r.im.width));
+  int l = 0;
+  for (; l + kGroup <= r.n; l += kGroup) {
+    __m256i i, j;
+    const int in_u = point_axis(r.u + l, r.im.width, i);
+    const int in_v = point_axis(r.v + l, r.im.height, j);
+    if ((in_u & in_v) != 0xFF) {
+      point_body(r, l, l + kGroup);
+      continue;
+    }
+    alignas(32) int32_t at[kGroup];
+    _mm256_store_si256(reinterpret_cast<__m256i*>(at),
+                       _mm256_slli_epi32(_mm256_add_epi32(_mm256_mullo_epi32(j, width), i), 2));
+    for (int k = 0; k < kGroup; k += 4)
+      put4(_mm_loadu_ps(base + at[k]), _mm_loadu_ps(base + at[k + 1]),
+           _mm_loadu_ps(base + at[k + 2]), _mm_loadu_ps(base + at[k + 3]), r.out, l + k);
+  }
+  point_body(r, l, r.n);
+}
+
+// One bilinear axis of eight lanes (rounding::linear_axis and address_texel): left (top)
+// index, its right (bottom) neighbour, the weight, and the lanes that need no other address
+// rule than Clamp's right edge. Under Clamp x lies in [0, N − ½], so i0 lies inside; under
+// the other modes a lane is inside when 0 ≤ x < N − 1 (NaN and the ±2^40 clamp lie outside).
+[[gnu::target("avx2,fma")]] inline int linear_axis8(const float* u, uint32_t n, AddressMode mode,
+                                                    __m256i& i0, __m256i& i1, __m256& alpha) {
+  const __m256 size = _mm256_set1_ps(static_cast<float>(n));
+  const __m256 zero = _mm256_setzero_ps();
+  __m256 x = _mm256_mul_ps(_mm256_loadu_ps(u), size);
+  int inside = 0xFF;
+  if (mode == AddressMode::Clamp) {
+    x = _mm256_blendv_ps(size, x, _mm256_cmp_ps(x, size, _CMP_LT_OQ));
+    x = _mm256_sub_ps(x, _mm256_set1_ps(0.5f));
+    x = _mm256_blendv_ps(zero, x, _mm256_cmp_ps(x, zero, _CMP_GT_OQ));
+  } else {
+    x = _mm256_sub_ps(x, _mm256_set1_ps(0.5f));
+    const __m256 in =
+        _mm256_and_ps(_mm256_cmp_ps(x, zero, _CMP_GE_OQ),
+                      _mm256_cmp_ps(x, _mm256_sub_ps(size, _mm256_set1_ps(1.0f)), _CMP_LT_OQ));
+    x = _mm256_and_ps(x, in);
+    inside = _mm256_movemask_ps(in);
+  }
+  const __m256 f = _mm256_floor_ps(x);
+  alpha = _mm256_sub_ps(x, f);
+  i0 = _mm256_cvttps_epi32(f);
+  i1 = _mm256_min_epi32(_mm256_add_epi32(i0, _mm256_set1_epi32(1)),
+                        _mm256_set1_epi32(static_cast<int32_t>(n) - 1));
+  return inside;
+}
+
+// detail::llvmpipe_linear_axis's sub-texel quantisation, lane by lane.
+[[gnu::target("avx2,fma")]] inline __m256 quantize8(__m256 alpha, int bits) {
+  if (bits <= 0) return alpha;
+  alignas(32) float a[kGroup];
+  _mm256_store_ps(a, alpha);
+  for (float& v : a) v = static_cast<float>(quantize_fraction(v, bits));
+  return _mm256_load_ps(a);
+}
+
+// The float offsets 4·(row + i) of eight texels.
+[[gnu::target("avx2,fma")]] inline void offset(int32_t* o, __m256i row, __m256i i) {
+  _mm256_store_si256(reinterpret_cast<__m256i*>(o), _mm256_slli_epi32(_mm256_add_epi32(row, i), 2));
+}
+
 [[gnu::target("avx2,fma")]] void llvmpipe_linear_fma(const BlockRead& r, int bits) {
-  llvmpipe_linear_body(r, bits);
+  if (!int32_texels(r.im)) return llvmpipe_linear_body(r, bits, 0, r.n);
+  const float* base = r.im.rgba.data();
+  const __m256i width = _mm256_set1_epi32(static_cast<int32_t>(r.im.width));
+  int l = 0;
+  for (; l + kGroup <= r.n; l += kGroup) {
+    __m256i i0, i1, j0, j1;
+    __m256 ax, ay;
+    const int in_u = linear_axis8(r.u + l, r.im.width, r.s.address_u, i0, i1, ax);
+    const int in_v = linear_axis8(r.v + l, r.im.height, r.s.address_v, j0, j1, ay);
+    if ((in_u & in_v) != 0xFF) {
+      llvmpipe_linear_body(r, bits, l, l + kGroup);
+      continue;
+    }
+    alignas(32) int32_t o00[kGroup], o10[kGroup], o01[kGroup], o11[kGroup];
+    alignas(32) float wx[kGroup], wy[kGroup];
+    const __m256i row0 = _mm256_mullo_epi32(j0, width), row1 = _mm256_mullo_epi32(j1, width);
+    offset(o00, row0, i0);
+    offset(o10, row0, i1);
+    offset(o01, row1, i0);
+    offset(o11, row1, i1);
+    _mm256_store_ps(wx, quantize8(ax, bits));
+    _mm256_store_ps(wy, quantize8(ay, bits));
+    __m128 t[kGroup];
+    for (int k = 0; k < kGroup; ++k) {
+      const __m128 a = _mm_set1_ps(wx[k]);
+      const __m128 top = lerp4(a, _mm_loadu_ps(base + o00[k]), _mm_loadu_ps(base + o10[k]));
+      const __m128 bottom = lerp4(a, _mm_loadu_ps(base + o01[k]), _mm_loadu_ps(base + o11[k]));
+      t[k] = lerp4(_mm_set1_ps(wy[k]), top, bottom);
+    }
+    put4(t[0], t[1], t[2], t[3], r.out, l);
+    put4(t[4], t[5], t[6], t[7], r.out, l + 4);
+  }
+  llvmpipe_linear_body(r, bits, l, r.n);
 }
 bool fma_hardware() {
   static const bool yes = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
@@ -83,10 +239,10 @@ bool fma_hardware() {
 }
 #else
 void point_fma(const BlockRead& r) {
-  point_body(r);
+  point_body(r, 0, r.n);
 }
 void llvmpipe_linear_fma(const BlockRead& r, int bits) {
-  llvmpipe_linear_body(r, bits);
+  llvmpipe_linear_body(r, bits, 0, r.n);
 }
 bool fma_hardware() {
   return false;

@@ -24,11 +24,15 @@ using namespace block;
 
 namespace {
 
+// Inlined into both builds of the steps (run_steps, run_steps_avx2), so that each vectorises
+// its lane loops for its own target.
+#define TL_INLINE [[gnu::always_inline]] inline
+
 using Impl = PixelBlockVM::Impl;
 using Scratch = PixelBlockVM::Scratch;
 
 template <Denormals D>
-View fetch(const Impl& im, const BlockStep& b, int k, int half, Scratch& sc) {
+TL_INLINE View fetch(const Impl& im, const BlockStep& b, int k, int half, Scratch& sc) {
   const BlockSrc& s = b.src[static_cast<size_t>(k)];
   View v;
   switch (s.way) {
@@ -62,128 +66,141 @@ View fetch(const Impl& im, const BlockStep& b, int k, int half, Scratch& sc) {
   return v;
 }
 
-// d[c][l] = f(a[c][l], …) for every component and lane: one rule function per lane. The
-// result never shares memory with a source (it goes to Scratch::dst). "unroll 1" keeps GCC
-// from unrolling the lane loop completely before the loop vectoriser sees it: the vectoriser
-// if-converts the rule functions' selects, the straight-line vectoriser after unrolling
-// cannot.
-template <typename F> void lanes1(LaneVec4& d, const View& a, F f) {
+// d[c][l] = f(a[c][l], …) for the components in `mask` (the only ones the store keeps) and
+// every lane: one rule function per lane. d may be the destination register itself (a
+// BlockStep::direct step), so a source may share memory with it, but only lane for lane (the
+// plan rules out the rest): ivdep tells the vectoriser so, where __restrict would be false.
+// "unroll 1" keeps GCC from unrolling the lane loop completely before the loop vectoriser
+// sees it: the vectoriser if-converts the rule functions' selects, the straight-line
+// vectoriser after unrolling cannot.
+template <typename F> TL_INLINE void lanes1(LaneVec4& d, int mask, const View& a, F f) {
   for (int c = 0; c < 4; ++c) {
-    float* __restrict o = d.c[c];
-    const float* __restrict x = a.c[c];
+    if (!(mask & (1 << c))) continue;
+    float* o = d.c[c];
+    const float* x = a.c[c];
+#pragma GCC ivdep
 #pragma GCC unroll 1
     for (int l = 0; l < L; ++l) o[l] = f(x[l]);
   }
 }
-template <typename F> void lanes2(LaneVec4& d, const View& a, const View& b, F f) {
+template <typename F>
+TL_INLINE void lanes2(LaneVec4& d, int mask, const View& a, const View& b, F f) {
   for (int c = 0; c < 4; ++c) {
-    float* __restrict o = d.c[c];
-    const float* __restrict x = a.c[c];
-    const float* __restrict y = b.c[c];
+    if (!(mask & (1 << c))) continue;
+    float* o = d.c[c];
+    const float *x = a.c[c], *y = b.c[c];
+#pragma GCC ivdep
 #pragma GCC unroll 1
     for (int l = 0; l < L; ++l) o[l] = f(x[l], y[l]);
   }
 }
-template <typename F> void lanes3(LaneVec4& d, const View& a, const View& b, const View& e, F f) {
+template <typename F>
+TL_INLINE void lanes3(LaneVec4& d, int mask, const View& a, const View& b, const View& e, F f) {
   for (int c = 0; c < 4; ++c) {
-    float* __restrict o = d.c[c];
-    const float* __restrict x = a.c[c];
-    const float* __restrict y = b.c[c];
-    const float* __restrict z = e.c[c];
+    if (!(mask & (1 << c))) continue;
+    float* o = d.c[c];
+    const float *x = a.c[c], *y = b.c[c], *z = e.c[c];
+#pragma GCC ivdep
 #pragma GCC unroll 1
     for (int l = 0; l < L; ++l) o[l] = f(x[l], y[l], z[l]);
   }
 }
-// A dot product per lane, splatted to all four components (as the VM's splat).
-template <typename F> void lanes_dot(LaneVec4& d, const View& a, const View& b, F dot) {
+// A dot product per lane, splatted to the components in `mask` (as the VM's splat). A lane's
+// sources are read before its results are written.
+template <typename F>
+TL_INLINE void lanes_dot(LaneVec4& d, int mask, const View& a, const View& b, F dot) {
   for (int l = 0; l < L; ++l) {
     const float x[4] = {a.c[0][l], a.c[1][l], a.c[2][l], a.c[3][l]};
     const float y[4] = {b.c[0][l], b.c[1][l], b.c[2][l], b.c[3][l]};
     const float r = dot(x, y, l);
-    for (int c = 0; c < 4; ++c) d.c[c][l] = r;
+    for (int c = 0; c < 4; ++c)
+      if (mask & (1 << c)) d.c[c][l] = r;
   }
 }
 
 // Every other arithmetic instruction: the VM's own compute function, lane by lane.
-void compute_per_lane(const vm::Step& st, const View* s, int n, LaneVec4& d, vm::Invocation& inv) {
+void compute_per_lane(const vm::Step& st, const View* s, int n, int mask, LaneVec4& d,
+                      vm::Invocation& inv) {
   for (int l = 0; l < n; ++l) {
     Vec4 in[5];
     for (int k = 0; k < st.nsrc; ++k)
       in[k] = {s[k].c[0][l], s[k].c[1][l], s[k].c[2][l], s[k].c[3][l]};
     Vec4 r{0, 0, 0, 0};
     st.compute(st, in, r, inv);
-    for (int c = 0; c < 4; ++c) d.c[c][l] = r[c];
+    for (int c = 0; c < 4; ++c)
+      if (mask & (1 << c)) d.c[c][l] = r[c];
   }
 }
 
 // The VM's compute functions of the same opcodes (vm_arith.cpp) call the same rules with the
 // same D; compute_per_lane calls the VM's own, taken from the table of the program's mode.
 template <Denormals D>
-void compute(const Impl& im, const BlockStep& b, int half, int n, Scratch& sc, LaneVec4& d,
-             vm::Invocation& inv) {
+TL_INLINE void compute(const Impl& im, const BlockStep& b, int half, int n, Scratch& sc,
+                       LaneVec4& d, vm::Invocation& inv) {
   const vm::Step& st = *b.step;
+  const int m = st.dst.mask;
   View s[4];
   for (int k = 0; k < st.nsrc; ++k) s[k] = fetch<D>(im, b, k, half, sc);
   switch (st.ins->op) {
-  case Opcode::Mov: lanes1(d, s[0], [](float a) { return a; }); return;
+  case Opcode::Mov: lanes1(d, m, s[0], [](float a) { return a; }); return;
   case Opcode::Add:
-    lanes2(d, s[0], s[1], [](float a, float e) { return num::legacy_add<D>(a, e); });
+    lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_add<D>(a, e); });
     return;
   case Opcode::Sub:
-    lanes2(d, s[0], s[1], [](float a, float e) { return num::legacy_sub<D>(a, e); });
+    lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_sub<D>(a, e); });
     return;
   case Opcode::Mul:
-    lanes2(d, s[0], s[1], [](float a, float e) { return num::legacy_mul<D>(a, e); });
+    lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_mul<D>(a, e); });
     return;
   case Opcode::Mad:
-    lanes3(d, s[0], s[1], s[2],
+    lanes3(d, m, s[0], s[1], s[2],
            [](float a, float e, float f) { return num::legacy_mad<D>(a, e, f); });
     return;
   case Opcode::Min:
-    lanes2(d, s[0], s[1], [](float a, float e) { return num::legacy_min<D>(a, e); });
+    lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_min<D>(a, e); });
     return;
   case Opcode::Max:
-    lanes2(d, s[0], s[1], [](float a, float e) { return num::legacy_max<D>(a, e); });
+    lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_max<D>(a, e); });
     return;
   case Opcode::Slt:
-    lanes2(d, s[0], s[1], [](float a, float e) { return num::legacy_slt<D>(a, e); });
+    lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_slt<D>(a, e); });
     return;
   case Opcode::Sge:
-    lanes2(d, s[0], s[1], [](float a, float e) { return num::legacy_sge<D>(a, e); });
+    lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_sge<D>(a, e); });
     return;
   case Opcode::Lrp:
-    lanes3(d, s[0], s[1], s[2],
+    lanes3(d, m, s[0], s[1], s[2],
            [](float a, float e, float f) { return num::legacy_lrp<D>(a, e, f); });
     return;
   case Opcode::Cmp:
-    lanes3(d, s[0], s[1], s[2],
+    lanes3(d, m, s[0], s[1], s[2],
            [](float a, float e, float f) { return num::legacy_cmp<D>(a, e, f); });
     return;
   case Opcode::Cnd:
-    lanes3(d, s[0], s[1], s[2],
+    lanes3(d, m, s[0], s[1], s[2],
            [](float a, float e, float f) { return num::legacy_cnd<D>(a, e, f); });
     return;
-  case Opcode::Abs: lanes1(d, s[0], [](float a) { return std::fabs(a); }); return;
+  case Opcode::Abs: lanes1(d, m, s[0], [](float a) { return std::fabs(a); }); return;
   case Opcode::Dp3:
-    lanes_dot(d, s[0], s[1],
+    lanes_dot(d, m, s[0], s[1],
               [](const float* x, const float* y, int) { return num::legacy_dp3<D>(x, y); });
     return;
   case Opcode::Dp4:
-    lanes_dot(d, s[0], s[1],
+    lanes_dot(d, m, s[0], s[1],
               [](const float* x, const float* y, int) { return num::legacy_dp4<D>(x, y); });
     return;
   case Opcode::Dp2Add: {
     const float* w = s[2].c[3]; // the scalar operand reads its 4th swizzle slot
-    lanes_dot(d, s[0], s[1], [w](const float* x, const float* y, int l) {
+    lanes_dot(d, m, s[0], s[1], [w](const float* x, const float* y, int l) {
       return num::legacy_add<D>(num::legacy_dp2<D>(x, y), w[l]);
     });
     return;
   }
-  default: compute_per_lane(st, s, n, d, inv); return;
+  default: compute_per_lane(st, s, n, m, d, inv); return;
   }
 }
 
-template <Denormals D> void store(const vm::DstDesc& d, const LaneVec4& v, Scratch& sc) {
+template <Denormals D> TL_INLINE void store(const vm::DstDesc& d, const LaneVec4& v, Scratch& sc) {
   if (d.kind != vm::DstKind::Slot) return; // address registers never reach the block path
   LaneVec4& r = sc.reg[d.slot];
   for (int c = 0; c < 4; ++c) {
@@ -253,8 +270,8 @@ PixelBlockVM::make_scratch() const {
 namespace {
 
 template <Denormals D>
-void run_steps(const Impl& im, const PixelBlockInput& in, const TextureUnit& textures,
-               PixelBlockOutput& out, Scratch& sc) {
+TL_INLINE void run_steps_body(const Impl& im, const PixelBlockInput& in,
+                              const TextureUnit& textures, PixelBlockOutput& out, Scratch& sc) {
   const vm::Prepared& p = im.p;
   const int n = std::clamp(in.count, 0, L);
   for (const auto& [slot, c] : im.zero_components)
@@ -280,6 +297,10 @@ void run_steps(const Impl& im, const PixelBlockInput& in, const TextureUnit& tex
     switch (b.op) {
     case BlockOp::Skip: break;
     case BlockOp::Arith:
+      if (b.direct) {
+        compute<D>(im, b, 0, n, sc, sc.reg[st.dst.slot], inv);
+        break;
+      }
       compute<D>(im, b, 0, n, sc, d0, inv);
       store<D>(st.dst, d0, sc);
       break;
@@ -295,6 +316,10 @@ void run_steps(const Impl& im, const PixelBlockInput& in, const TextureUnit& tex
     case BlockOp::Tex: {
       View c = tex_coord(in, st.aux, sc);
       if (textures.stage_state(static_cast<uint32_t>(st.aux)).projected) c = projected<D>(c, sc);
+      if (b.direct) {
+        sample(textures, st.aux, c, nullptr, n, sc.reg[st.dst.slot]);
+        break;
+      }
       sample(textures, st.aux, c, nullptr, n, d0);
       store<D>(st.dst, d0, sc);
       break;
@@ -325,8 +350,9 @@ void run_steps(const Impl& im, const PixelBlockInput& in, const TextureUnit& tex
       break;
     }
     case BlockOp::TexLd:
-      sample(textures, st.aux, fetch<D>(im, b, 0, 0, sc), nullptr, n, d0);
-      store<D>(st.dst, d0, sc);
+      sample(textures, st.aux, fetch<D>(im, b, 0, 0, sc), nullptr, n,
+             b.direct ? sc.reg[st.dst.slot] : d0);
+      if (!b.direct) store<D>(st.dst, d0, sc);
       break;
     case BlockOp::TexLdP:
       sample(textures, st.aux, projected<D>(fetch<D>(im, b, 0, 0, sc), sc), nullptr, n, d0);
@@ -348,14 +374,49 @@ void run_steps(const Impl& im, const PixelBlockInput& in, const TextureUnit& tex
   out.color = sc.reg[im.out_slot];
 }
 
+// The steps built twice: for the baseline and for AVX2, chosen per run by what the CPU has.
+// The lane loops then run eight floats a step instead of four; every operation is the same
+// IEEE operation on the same values (no FMA: the build forbids contraction), so both builds
+// compute the same bits.
+template <Denormals D>
+void run_steps(const Impl& im, const PixelBlockInput& in, const TextureUnit& textures,
+               PixelBlockOutput& out, Scratch& sc) {
+  run_steps_body<D>(im, in, textures, out, sc);
+}
+
+#if defined(__x86_64__) && defined(__GNUC__)
+template <Denormals D>
+[[gnu::target("avx2")]] void run_steps_avx2(const Impl& im, const PixelBlockInput& in,
+                                            const TextureUnit& textures, PixelBlockOutput& out,
+                                            Scratch& sc) {
+  run_steps_body<D>(im, in, textures, out, sc);
+}
+bool avx2_hardware() {
+  static const bool yes = __builtin_cpu_supports("avx2");
+  return yes;
+}
+#else
+template <Denormals D>
+void run_steps_avx2(const Impl& im, const PixelBlockInput& in, const TextureUnit& textures,
+                    PixelBlockOutput& out, Scratch& sc) {
+  run_steps_body<D>(im, in, textures, out, sc);
+}
+bool avx2_hardware() {
+  return false;
+}
+#endif
+
 } // namespace
 
 void PixelBlockVM::run(const PixelBlockInput& in, const TextureUnit& textures,
                        PixelBlockOutput& out, Scratch& sc) const {
+  const bool wide = avx2_hardware();
   if (impl_->p.flush)
-    run_steps<Denormals::Flush>(*impl_, in, textures, out, sc);
+    (wide ? run_steps_avx2<Denormals::Flush> : run_steps<Denormals::Flush>)(*impl_, in, textures,
+                                                                            out, sc);
   else
-    run_steps<Denormals::Keep>(*impl_, in, textures, out, sc);
+    (wide ? run_steps_avx2<Denormals::Keep> : run_steps<Denormals::Keep>)(*impl_, in, textures, out,
+                                                                          sc);
 }
 
 void TextureUnit::sample_block(uint32_t stage, const float* const coord[4], const float* bias,

@@ -51,6 +51,9 @@ struct BlockStep {
   const vm::Step* step = nullptr;
   BlockOp op = BlockOp::Skip;
   std::array<BlockSrc, 4> src{};
+  // The lane loops write the destination register's masked components themselves, with no
+  // copy through Scratch::dst (vm_block_plan.cpp's direct_write says when that is safe).
+  bool direct = false;
 };
 
 struct View {

@@ -121,6 +121,33 @@ void find_zero_components(Impl& im) {
         im.zero_components.emplace_back(static_cast<uint16_t>(s), static_cast<uint8_t>(c));
 }
 
+// Whether a step may compute straight into its destination register: a plain register write
+// (no shift, clamp or quantising between result and register), of all four components for a
+// texture read (which writes all four), and, for arithmetic, no source that reads a component
+// of that register another written component may already have replaced. Lane loops write
+// component c at lane l after reading lane l of its sources, so a source that reads the
+// written component itself, or one the mask leaves alone, sees the value before the
+// instruction, as through the copy. A co-issued pair keeps the copy (both halves read first).
+bool direct_write(const BlockStep& b) {
+  const vm::DstDesc& d = b.step->dst;
+  if (d.kind != vm::DstKind::Slot || !d.plain) return false;
+  const auto reads_dst = [&](const BlockSrc& s) {
+    return (s.way == SrcWay::Reg || s.way == SrcWay::Neg) && s.slot == d.slot;
+  };
+  if (b.op == BlockOp::Tex) return d.mask == 0xF;
+  if (b.op == BlockOp::TexLd) return d.mask == 0xF && !reads_dst(b.src[0]);
+  if (b.op != BlockOp::Arith) return false;
+  for (int k = 0; k < b.step->nsrc; ++k) {
+    const BlockSrc& s = b.src[static_cast<size_t>(k)];
+    if (!reads_dst(s)) continue;
+    for (int c = 0; c < 4; ++c) {
+      const int r = s.comp[c];
+      if ((d.mask & (1 << c)) && r != c && (d.mask & (1 << r))) return false;
+    }
+  }
+  return true;
+}
+
 } // namespace
 
 std::unique_ptr<PixelBlockVM> PixelBlockVM::create(const ir::Program& program,
@@ -178,6 +205,7 @@ std::unique_ptr<PixelBlockVM> PixelBlockVM::create(const ir::Program& program,
   // The second half of a pair runs inside the first.
   for (size_t i = 0; i + 1 < n; ++i)
     if (im->steps[i].op == BlockOp::ArithPair) im->steps[i + 1].op = BlockOp::Skip;
+  for (BlockStep& b : im->steps) b.direct = direct_write(b);
 
   for (int i = 0; i < 2; ++i)
     if (read[vm::kInputBase + i]) im->color_reads |= static_cast<uint8_t>(1u << i);
