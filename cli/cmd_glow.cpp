@@ -360,7 +360,11 @@ int run(const GlowFlags& f) {
     nlohmann::json limited = nlohmann::json::array();
     for (const effects::LeftOut& l : pruned.limited)
       limited.push_back({{"what", l.what}, {"why", l.why}});
-    j["pruning"] = {{"enabled", !f.no_prune}, {"left_out", left}, {"limited", limited}};
+    nlohmann::json kept = nlohmann::json::array();
+    for (const effects::LeftOut& k : pruned.kept)
+      kept.push_back({{"what", k.what}, {"why", k.why}});
+    j["pruning"] = {
+        {"enabled", !f.no_prune}, {"left_out", left}, {"limited", limited}, {"kept", kept}};
     j["written"] = written;
   } else {
     if (radial)
@@ -403,6 +407,8 @@ int run(const GlowFlags& f) {
         fmt::print("  {} {}: {}\n", f.no_prune ? "would leave out" : "left out", l.what, l.why);
       for (const effects::LeftOut& l : varies ? std::vector<effects::LeftOut>{} : pruned.limited)
         fmt::print("  {} {}: {}\n", f.no_prune ? "would limit" : "limited", l.what, l.why);
+      for (const effects::LeftOut& k : varies ? std::vector<effects::LeftOut>{} : pruned.kept)
+        fmt::print("  kept {}: {}\n", k.what, k.why);
       fmt::print("  kept: the SPIR-V pair pruning of every pass (unused constants, inputs and "
                  "outputs; tierlift spirv --pair --explain)\n");
     }

@@ -212,5 +212,29 @@ TEST(Prune, NonFiniteScenesAndUnreadPasses) {
   EXPECT_EQ(r.left_out[0].what, "unread");
 }
 
+// What the tap rule keeps is said, with the reason: every tap of a float target (the
+// smallest one's weight × bound against half the format's smallest step) and every ps.1.x
+// blur pass of an rgba8 target.
+TEST(Prune, KeptTapsAreExplained) {
+  const img::Image scene = make_default_scene(320, 180);
+  for (img::Format f : {img::Format::RGBA16F, img::Format::RGBA32F}) {
+    const PrunedGraph g = prune_glow(build_glow(params(320, 180, Tier::Dx9, f, 4)), scene);
+    ASSERT_EQ(g.kept.size(), 1u) << img::format_name(f);
+    EXPECT_EQ(g.kept[0].what, "every blur tap");
+    EXPECT_NE(g.kept[0].why.find("every tap can change a stored value"), std::string::npos)
+        << g.kept[0].why;
+    EXPECT_NE(g.kept[0].why.find(f == img::Format::RGBA16F ? "2.98e-08" : "1.18e-38"),
+              std::string::npos)
+        << g.kept[0].why; // 2^-25 and 2^-126
+  }
+  const PrunedGraph dx8 =
+      prune_glow(build_glow(params(320, 180, Tier::Dx8, img::Format::RGBA8, 4)), scene);
+  ASSERT_EQ(dx8.kept.size(), 1u);
+  EXPECT_NE(dx8.kept[0].why.find("ps.1.x"), std::string::npos) << dx8.kept[0].why;
+  const PrunedGraph dx9 =
+      prune_glow(build_glow(params(320, 180, Tier::Dx9, img::Format::RGBA8, 4)), scene);
+  EXPECT_TRUE(dx9.kept.empty()); // ps_2_0 passes are judged one by one (left out or kept)
+}
+
 } // namespace
 } // namespace tierlift::effects

@@ -67,6 +67,36 @@ double prune_axis(std::vector<PassDesc>& passes, std::string_view axis, double i
   return total * input_bound + double(kept) * 0.5 / 255;
 }
 
+// The float targets: a ONE/ONE sum that may start at 0 changes with any addend of at least
+// half the format's smallest step above 0 (binary16: half of 2^-24; fp32: 2^-126, below
+// which lavapipe and the interpreter flush), so a tap is left out only when its weight
+// times the input bound stays below that. Says why every tap stays (no Gaussian within the
+// schema's limits comes near it), or that the rule would drop one and is not applied.
+void explain_float_taps(const EffectGraph& graph, img::Format format, double bound,
+                        PrunedGraph& r) {
+  const bool half = format == img::Format::RGBA16F;
+  const double threshold = half ? std::ldexp(1.0, -25) : std::ldexp(1.0, -126);
+  double smallest = INFINITY;
+  for (const PassDesc& p : graph.passes)
+    if (is_blur(p, "blur_h") || is_blur(p, "blur_v"))
+      for (const pass::Vec4& c : p.ps_constants)
+        for (float w : c)
+          if (w != 0) smallest = std::min(smallest, std::abs(double(w)));
+  if (!std::isfinite(smallest)) return; // no weights in constants (tier dx7's vertex colours)
+  const double adds = smallest * bound;
+  r.kept.push_back(
+      {"every blur tap",
+       adds >= threshold
+           ? fmt::format("in {} a ONE/ONE sum that starts at 0 changes with any addend of at "
+                         "least {:.3g}, and this scene's smallest tap adds up to {:.3g} (weight "
+                         "{:.3g} × input bound {:.3g}): every tap can change a stored value",
+                         img::format_name(format), threshold, adds, smallest, bound)
+           : fmt::format("in {} a tap adding at most {:.3g} (below {:.3g}) stores nothing into a "
+                         "sum of 0, but float targets keep every tap (the rule is applied to "
+                         "rgba8 only)",
+                         img::format_name(format), adds, threshold)});
+}
+
 } // namespace
 
 PrunedGraph prune_unread(const EffectGraph& graph, std::string_view frame) {
@@ -247,6 +277,15 @@ PrunedGraph prune_glow(const GlowPlan& plan, const img::Image& scene) {
     const double blur_input = sources + double(downsample_passes) * 0.5 / 255;
     const double horizontal = prune_axis(passes, "blur_h", blur_input, r.left_out);
     prune_axis(passes, "blur_v", std::min(horizontal, 1.0), r.left_out);
+    if (std::any_of(passes.begin(), passes.end(), [](const PassDesc& p) {
+          return (is_blur(p, "blur_h") || is_blur(p, "blur_v")) &&
+                 (!p.ps || p.ps->profile != ir::Profile::ps_2_0);
+        }))
+      r.kept.push_back({"every blur pass", "its pixel listing is ps.1.x (tiers dx8, dx7), whose "
+                                           "registers round on their own: the half-step bound "
+                                           "is proven for ps_2_0 arithmetic only"});
+  } else {
+    explain_float_taps(r.graph, plan.graph.textures.front().format, most, r);
   }
   limit_to_sources(plan, box, r);
   PrunedGraph unread = prune_unread(r.graph, kFinalTexture);

@@ -43,6 +43,9 @@ struct PrunedGraph {
   std::vector<LeftOut> left_out; // whole passes; empty (and `limited` empty): the whole plan
   // Passes that run, but only inside a scissor rectangle (what: "blur_h.* to x a..b, y c..d").
   std::vector<LeftOut> limited;
+  // What the tap rule looked at and kept, with the reason (e.g. every tap of an rgba16f
+  // blur: the smallest one can still change a stored value in this scene).
+  std::vector<LeftOut> kept;
   size_t passes_before = 0;
   bool changed() const { return !left_out.empty() || !limited.empty(); }
 };
