@@ -37,9 +37,9 @@ TEST(Scene, EveryShippedSceneLoadsAndBuilds) {
     ASSERT_TRUE(image) << image.message();
     EXPECT_EQ(image->width, s.scene->params.width);
   }
-  EXPECT_EQ(n, 14u); // default, dx8, sawtooth, sign, dx7, dx7-plain-rounding, radial-beams,
+  EXPECT_EQ(n, 15u); // default, dx8, sawtooth, sign, dx7, dx7-plain-rounding, radial-beams,
                      // stencil-outline, glsl-blur, afterimage, afterimage-runaway, ramping,
-                     // glow-context, glow-fog
+                     // glow-context, glow-fog, lamp
 }
 
 TEST(Scene, DefaultJsonSaysWhatTheBuiltInDefaultIs) {
