@@ -16,10 +16,9 @@ ir::Result<Device*> process_device(const DeviceOptions& options) {
   std::lock_guard<std::mutex> lock(mutex);
   auto key = std::make_pair(options.validation, options.gpu_filter);
   if (auto it = devices->find(key); it != devices->end()) return it->second;
-  std::string error;
-  std::unique_ptr<Device> device = Device::create(options, &error);
-  if (!device) return ir::fail("", "device", error);
-  return (*devices)[key] = device.release(); // intentionally never destroyed
+  ir::Result<std::unique_ptr<Device>> device = Device::create(options);
+  if (!device) return std::move(device).failure();
+  return (*devices)[key] = device->release(); // intentionally never destroyed
 }
 
 ir::Result<pass::DrawReport> PassDevice::draw(const pass::Pass& pass, img::Image& target) {
