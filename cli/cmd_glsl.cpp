@@ -54,12 +54,11 @@ int run(const Flags& f) {
       return report.finish(kExitUsage);
     }
   }
-  std::string err;
-  const auto size = parse_size(f.size, err);
+  const ir::Result<std::array<uint32_t, 2>> size = parse_size(f.size);
   const auto format = img::parse_format(f.format);
   const auto filter = parse_filter(f.filter);
   if (!size || !format || !filter) {
-    report.error("usage", !size ? err
+    report.error("usage", !size ? size.message()
                           : !format
                               ? fmt::format("--format '{}': expected rgba8, rgba16f or "
                                             "rgba32f",

@@ -44,29 +44,31 @@ template <class T> T need(std::optional<T> value, const std::string& error) {
   if (!value) throw UsageError{error};
   return *value;
 }
+template <class T> T need(ir::Result<T> value) {
+  if (!value) throw UsageError{value.message()};
+  return std::move(value).value();
+}
 
 // --const settings, names already resolved to registers (named_constants.h).
 std::vector<pass::ConstSetting> parse_constants(const std::vector<std::string>& settings) {
   std::vector<pass::ConstSetting> out;
-  std::string err;
-  for (const auto& s : settings) out.push_back(need(parse_const_setting(s, err), err));
+  for (const auto& s : settings) out.push_back(need(parse_const_setting(s)));
   return out;
 }
 
 // Every flag but --const (read once the listings' constant tables are known).
 pass::RunRequest build_request(const RunFlags& f) {
   pass::RunRequest r;
-  std::string err;
-  auto size = need(parse_size(f.size, err), err);
+  auto size = need(parse_size(f.size));
   r.width = size[0];
   r.height = size[1];
   r.format = need(img::parse_format(f.format),
                   fmt::format("--format '{}': expected rgba8, rgba16f or rgba32f", f.format));
-  for (const auto& s : f.inputs) r.inputs.push_back(need(parse_input_setting(s, err), err));
-  for (const auto& s : f.attrs) r.attrs.push_back(need(parse_attr_setting(s, err), err));
-  for (const auto& s : f.textures) r.textures.push_back(need(parse_texture_setting(s, err), err));
+  for (const auto& s : f.inputs) r.inputs.push_back(need(parse_input_setting(s)));
+  for (const auto& s : f.attrs) r.attrs.push_back(need(parse_attr_setting(s)));
+  for (const auto& s : f.textures) r.textures.push_back(need(parse_texture_setting(s)));
   for (const auto& s : f.probes) {
-    pass::ProbePoint p = need(parse_probe(s, err), err);
+    pass::ProbePoint p = need(parse_probe(s));
     if (p.x >= r.width || p.y >= r.height)
       throw UsageError{fmt::format("--probe {}: outside the {}x{} image", s, r.width, r.height)};
     r.probes.push_back(p);
