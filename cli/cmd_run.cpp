@@ -234,7 +234,6 @@ int run(const RunFlags& f) {
   if (vs) req.vs = std::make_shared<const ir::Program>(*vs->program);
   if (ps) req.ps = std::make_shared<const ir::Program>(*ps->program);
 
-  pass::RunDiagnostics diags;
   auto print_run_diagnostics = [&](const pass::RunDiagnostics& d) {
     if (vs) report.diagnostics(d.vs, vs->sources);
     if (ps) report.diagnostics(d.ps, ps->sources);
@@ -249,9 +248,12 @@ int run(const RunFlags& f) {
 
   // The one pass both devices draw: listings, constants and textures are read once here.
   const auto t_prepare = std::chrono::steady_clock::now();
+  pass::RunDiagnostics diags;
   std::optional<pass::Pass> prepared;
   try { // a huge texture may not fit: running out of memory is an error, not a crash
-    prepared = pass::prepare_pass(req, diags);
+    ir::Result<pass::Pass> made = pass::prepare_pass(req);
+    pass::add_by_listing(diags, made.diagnostics());
+    if (made) prepared = std::move(made).value();
   } catch (const std::bad_alloc&) {
     diags.other.error({}, "memory",
                       fmt::format("not enough memory for a {}x{} target and its textures",

@@ -45,9 +45,8 @@ cpu::RunRequest blur_request(int taps, double half, img::Format format, uint32_t
 }
 
 cpu::Pass make_pass(const cpu::RunRequest& r, int subtexel_bits) {
-  cpu::RunDiagnostics d;
-  auto p = pass::prepare_pass(r, d);
-  EXPECT_TRUE(p.has_value()) << ir::render_text(d.other, {});
+  ir::Result<pass::Pass> p = pass::prepare_pass(r);
+  EXPECT_TRUE(p.ok()) << p.message();
   if (!p) return {};
   p->conventions.subtexel_bits = subtexel_bits;
   return *p;

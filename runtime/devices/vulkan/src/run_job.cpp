@@ -30,7 +30,8 @@ ir::Result<pass::DrawReport> PassDevice::draw(const pass::Pass& pass, img::Image
 VulkanRunResult run_job_vulkan(const pass::RunRequest& request, pass::RunDiagnostics& diags,
                                const DeviceOptions& options) {
   VulkanRunResult out;
-  auto prepared = pass::prepare_pass(request, diags);
+  ir::Result<pass::Pass> prepared = pass::prepare_pass(request);
+  pass::add_by_listing(diags, prepared.diagnostics());
   if (!prepared) return out;
   ir::Result<Device*> device = process_device(options);
   if (!device) {

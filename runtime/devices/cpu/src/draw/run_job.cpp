@@ -56,7 +56,9 @@ RunResult run_job(const RunRequest& req, RunDiagnostics& diags) {
   auto t0 = Clock::now();
   std::optional<Pass> pass;
   try { // a huge texture may not fit either
-    pass = pass::prepare_pass(req, diags);
+    ir::Result<Pass> prepared = pass::prepare_pass(req);
+    pass::add_by_listing(diags, prepared.diagnostics());
+    if (prepared) pass = std::move(prepared).value();
   } catch (const std::bad_alloc&) {
     diags.other.error({}, "memory",
                       fmt::format("not enough memory for a {}x{} target and its textures",
