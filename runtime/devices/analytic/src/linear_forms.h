@@ -36,6 +36,10 @@ struct CoordAffine {
 // D3DCOLOR), as the pixel stage reads it: saturated to [0, 1] (NUMERICS.md rule 26).
 using ColourConstants = std::array<std::optional<std::array<double, 4>>, 2>;
 
+// "" when both listings pass ir::validate_ir (the structural checks every backend runs
+// first), else the first error, naming the listing.
+std::string structural_error(const ir::Program& vs, const ir::Program& ps);
+
 struct CoordForms {
   uint32_t texcoord_input = 0;
   ColourConstants colour;                          // per oD#: set when it is a constant

@@ -13,6 +13,10 @@ ReadExtraction extract_reads(const ir::Program& vs, const std::vector<Vec4>& vs_
     out.error = "extract_reads needs a vertex listing and a pixel listing";
     return out;
   }
+  if (std::string e = detail::structural_error(vs, ps); !e.empty()) {
+    out.error = e;
+    return out;
+  }
   detail::CoordForms coords = detail::evaluate_coords(vs, vs_consts);
   if (!coords.error.empty()) {
     out.error = "vertex listing: " + coords.error;
