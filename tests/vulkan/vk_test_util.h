@@ -160,8 +160,7 @@ struct TwoWays {
 // Draws `pass` on the CPU device and on `dev` into targets of the given size and format
 // (both start as `initial` when given, else zero) and compares them.
 inline TwoWays draw_both(vulkan::Device& dev, const cpu::Pass& pass, uint32_t w, uint32_t h,
-                         img::Format format, const img::Image* initial = nullptr,
-                         const DrawOptions& options = {}) {
+                         img::Format format, const img::Image* initial = nullptr) {
   TwoWays t;
   t.cpu = initial ? *initial : img::Image(w, h, format);
   t.cpu.format = format;
@@ -171,7 +170,7 @@ inline TwoWays draw_both(vulkan::Device& dev, const cpu::Pass& pass, uint32_t w,
   t.cpu_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   EXPECT_TRUE(s.ok) << s.error;
-  DrawResult r = dev.draw(pass, t.vk, options);
+  DrawResult r = dev.draw(pass, t.vk);
   EXPECT_TRUE(r.ok) << r.error;
   t.vk_ms = r.setup_ms + r.draw_ms;
   auto c = img::compare(t.cpu, t.vk);

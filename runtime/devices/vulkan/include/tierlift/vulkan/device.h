@@ -66,14 +66,6 @@ struct DeviceOptions {
   std::function<void(const std::vector<std::string>&)> on_destroyed;
 };
 
-struct DrawOptions {
-  // Test aid: decorate every pixel-stage input Flat, so a varying is the provoking vertex's
-  // value bit for bit. Only meaningful when all vertices of a primitive carry the same
-  // outputs (then the CPU device's interpolation also returns that value); it keeps ±inf
-  // varyings from turning into NaN in the rasteriser's attribute gradients.
-  bool flat_varyings = false;
-};
-
 struct DrawResult {
   bool ok = false;
   std::string error;
@@ -104,7 +96,7 @@ public:
   // Draws `pass` into `target`: its format selects the attachment format, its current
   // pixels are the destination blending reads; on success it holds the stored result.
   // On failure the target is unchanged.
-  DrawResult draw(const pass::Pass& pass, img::Image& target, const DrawOptions& options = {});
+  DrawResult draw(const pass::Pass& pass, img::Image& target);
 
   // Stores the pipelines made so far in the user's cache directory for the next run
   // (pipeline_cache.h; also done when the device is destroyed). Failures are ignored.
