@@ -250,15 +250,9 @@ int run(const RunFlags& f) {
   const auto t_prepare = std::chrono::steady_clock::now();
   pass::RunDiagnostics diags;
   std::optional<pass::Pass> prepared;
-  try { // a huge texture may not fit: running out of memory is an error, not a crash
-    ir::Result<pass::Pass> made = pass::prepare_pass(req);
-    pass::add_by_listing(diags, made.diagnostics());
-    if (made) prepared = std::move(made).value();
-  } catch (const std::bad_alloc&) {
-    diags.other.error({}, "memory",
-                      fmt::format("not enough memory for a {}x{} target and its textures",
-                                  req.width, req.height));
-  }
+  ir::Result<pass::Pass> made = pass::prepare_pass(req);
+  pass::add_by_listing(diags, made.diagnostics());
+  if (made) prepared = std::move(made).value();
   const double prepare_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_prepare)
           .count();

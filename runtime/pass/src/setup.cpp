@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 #include <map>
+#include <new>
 
 #include "program_reads.h"
 #include "tierlift/image/builtin.h"
@@ -211,7 +212,14 @@ std::optional<Pass> prepare(const RunRequest& req, RunDiagnostics& diags) {
 
 ir::Result<Pass> prepare_pass(const RunRequest& req) {
   RunDiagnostics diags;
-  std::optional<Pass> pass = prepare(req, diags);
+  std::optional<Pass> pass;
+  try { // a huge texture may not fit: running out of memory is an error, not a crash
+    pass = prepare(req, diags);
+  } catch (const std::bad_alloc&) {
+    diags.other.error({}, "memory",
+                      fmt::format("not enough memory for a {}x{} target and its textures",
+                                  req.width, req.height));
+  }
   if (!pass && !diags.has_errors()) // every refusal above reports; keep a Failure non-empty
     diags.other.error({}, "internal", "the pass could not be prepared");
   std::vector<ir::Diagnostic> all;

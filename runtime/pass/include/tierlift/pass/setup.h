@@ -110,10 +110,11 @@ inline constexpr std::string_view kRuleTextureMissing = "texture-missing";
 
 // The pass `request` describes, textures loaded (each source once), or the errors why not;
 // warnings never stop it and ride along with the pass. Checks the size too
-// (1..img::kMaxDimension). The vertex and the pixel listing come from two SourceManagers,
-// and one flat list cannot say which a position points into, so a diagnostic positioned in
-// a listing names it as its subject (kVsListing, kPsListing; a positioned diagnostic's
-// subject is otherwise unused): add_by_listing sorts them back for rendering.
+// (1..img::kMaxDimension); running out of memory for the textures is an error ("memory"). The
+// vertex and the pixel listing come from two SourceManagers, and one flat list cannot say which a
+// position points into, so a diagnostic positioned in a listing names it as its subject
+// (kVsListing, kPsListing; a positioned diagnostic's subject is otherwise unused): add_by_listing
+// sorts them back for rendering.
 inline constexpr std::string_view kVsListing = "vs";
 inline constexpr std::string_view kPsListing = "ps";
 ir::Result<Pass> prepare_pass(const RunRequest& request);
