@@ -9,11 +9,7 @@ namespace tierlift::analytic {
 ReadExtraction extract_reads(const ir::Program& vs, const std::vector<Vec4>& vs_consts,
                              const ir::Program& ps) {
   ReadExtraction out;
-  if (!ir::is_vertex(vs.profile) || !ir::is_pixel(ps.profile)) {
-    out.error = "extract_reads needs a vertex listing and a pixel listing";
-    return out;
-  }
-  if (std::string e = detail::structural_error(vs, ps); !e.empty()) {
+  if (std::string e = detail::structural_error("extract_reads", vs, ps); !e.empty()) {
     out.error = e;
     return out;
   }
