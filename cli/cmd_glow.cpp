@@ -20,7 +20,7 @@
 #include "tierlift/effects/prune.h"
 #include "tierlift/effects/scene.h"
 #include "tierlift/ir/ps1x_range.h"
-#include "tierlift/vulkan/run_job.h" // process_device
+#include "vulkan_device.h"
 
 namespace tierlift::cli {
 namespace {
@@ -261,14 +261,8 @@ int run(const GlowFlags& f) {
   double vk_create_ms = 0;
   if (all || both || f.backend == "vulkan") {
     const auto t0 = std::chrono::steady_clock::now();
-    vulkan::DeviceOptions o;
-    o.gpu_filter = f.gpu;
-    ir::Result<vulkan::Device*> device = vulkan::process_device(o);
-    if (!device) {
-      report.error("device", device.message());
-      return report.finish(kExitUsage);
-    }
-    vk = *device;
+    vk = vulkan_device(f.gpu, report);
+    if (!vk) return report.finish(kExitUsage);
     vk_create_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   }

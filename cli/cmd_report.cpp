@@ -13,7 +13,7 @@
 #include "report.h"
 #include "tierlift/effects/report_files.h"
 #include "tierlift/effects/report_sweep.h"
-#include "tierlift/vulkan/run_job.h" // process_device
+#include "vulkan_device.h"
 
 namespace tierlift::cli {
 namespace {
@@ -128,14 +128,8 @@ int run(const ReportFlags& f) {
   // The process's device, kept until exit as in `tierlift glow` and `tierlift run`.
   vulkan::Device* vk = nullptr;
   if (!f.no_vulkan) {
-    vulkan::DeviceOptions o;
-    o.gpu_filter = f.gpu;
-    ir::Result<vulkan::Device*> device = vulkan::process_device(o);
-    if (!device) {
-      report.error("device", device.message());
-      return report.finish(kExitUsage);
-    }
-    vk = *device;
+    vk = vulkan_device(f.gpu, report);
+    if (!vk) return report.finish(kExitUsage);
   }
   if (f.no_vulkan) std::erase(s.timed, std::string("vulkan"));
   const bool tty = isatty(STDERR_FILENO) != 0;

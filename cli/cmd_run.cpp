@@ -20,6 +20,7 @@
 #include "tierlift/image/compare.h"
 #include "tierlift/ir/ps1x_range.h"
 #include "tierlift/vulkan/run_job.h"
+#include "vulkan_device.h"
 
 namespace tierlift::cli {
 namespace {
@@ -268,15 +269,10 @@ int run(const RunFlags& f) {
     if (!out.ok) return report.finish(kExitInvalid);
   }
   if (want_vulkan) {
-    vulkan::DeviceOptions options;
-    options.gpu_filter = f.gpu;
-    ir::Result<vulkan::Device*> device = vulkan::process_device(options);
-    if (!device) {
-      report.error("device", device.message());
-      return report.finish(kExitUsage);
-    }
-    vk_name = (*device)->name();
-    vulkan::PassDevice pass_device(**device);
+    vulkan::Device* device = vulkan_device(f.gpu, report);
+    if (!device) return report.finish(kExitUsage);
+    vk_name = device->name();
+    vulkan::PassDevice pass_device(*device);
     vk = draw_on(pass_device, *prepared, req, report);
     if (!vk.ok) return report.finish(kExitInvalid);
   }
