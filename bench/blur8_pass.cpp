@@ -50,8 +50,9 @@ std::optional<cpu::Pass> blur8_pass() {
   r.textures.push_back({0, "builtin:noise:1920x1080"});
   r.filter = cpu::Filter::Linear;
   r.address = cpu::AddressMode::Clamp;
-  cpu::RunDiagnostics d;
-  return pass::prepare_pass(r, d);
+  ir::Result<pass::Pass> prepared = pass::prepare_pass(r);
+  if (!prepared) return std::nullopt;
+  return std::move(prepared).value();
 }
 
 } // namespace tierlift::bench

@@ -58,10 +58,13 @@ bool run_device_frames(benchmark::State& state, effects::PassDevice& device,
 }
 
 vulkan::Device* bench_vulkan_device(std::string* error) {
-  static std::string create_error;
-  static const std::unique_ptr<vulkan::Device> dev = vulkan::Device::create({}, &create_error);
-  *error = create_error;
-  return dev.get();
+  static const ir::Result<std::unique_ptr<vulkan::Device>> dev = vulkan::Device::create({});
+  if (!dev) {
+    *error = dev.message();
+    return nullptr;
+  }
+  error->clear();
+  return dev->get();
 }
 
 void register_glow_scaling(const std::string& name, DeviceFactory make, int iterations) {

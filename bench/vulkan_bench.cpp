@@ -43,12 +43,12 @@ void BM_Vulkan_Listing2(benchmark::State& state) {
     state.SkipWithError("could not build the pass");
     return;
   }
-  std::string err;
-  auto dev = vulkan::Device::create({}, &err);
-  if (!dev) {
-    state.SkipWithError(err.c_str());
+  auto created = vulkan::Device::create({});
+  if (!created) {
+    state.SkipWithError(created.message().c_str());
     return;
   }
+  std::unique_ptr<vulkan::Device> dev = std::move(created).value();
   pass->conventions.subtexel_bits = int(dev->subtexel_bits());
   img::Image target(kW, kH, img::Format::RGBA8);
   double setup_ms = 0, draw_ms = 0;

@@ -20,7 +20,7 @@
 #include "tierlift/effects/prune.h"
 #include "tierlift/effects/scene.h"
 #include "tierlift/ir/ps1x_range.h"
-#include "tierlift/vulkan/run_job.h" // process_device
+#include "vulkan_device.h"
 
 namespace tierlift::cli {
 namespace {
@@ -40,24 +40,14 @@ struct GlowFlags {
 // The scene the flags name (default: the built-in one), with flag overrides applied.
 // nullopt after printing the error.
 std::optional<effects::Scene> scene_from_flags(const GlowFlags& f, Report& report, int* exit_code) {
-  effects::SceneLoad load;
-  if (!f.scene.empty())
-    load = effects::load_scene_file(f.scene);
-  else if (!f.image.empty())
-    load = effects::scene_from_png(f.image);
-  else
-    load.scene = effects::default_scene();
-  if (!load.scene) {
-    // The loaders' messages are rendered diagnostics ("FILE:LINE:COL: error: ..." and a
-    // caret line) already.
-    if (report.json())
-      report.error(load.io_error ? "io" : "scene", load.error, f.scene.empty() ? f.image : f.scene);
-    else
-      fmt::print(stderr, "{}{}", load.error, load.error.ends_with('\n') ? "" : "\n");
-    *exit_code = load.io_error ? kExitUsage : kExitInvalid;
+  ir::Result<effects::Scene> load = effects::load_scene(f.scene, f.image);
+  if (!load) {
+    const bool io = ir::failed_with(load, effects::kSceneIoRule);
+    report.rendered_error(io ? "io" : "scene", load.message(), f.scene.empty() ? f.image : f.scene);
+    *exit_code = io ? kExitUsage : kExitInvalid;
     return std::nullopt;
   }
-  effects::GlowParams& p = load.scene->params;
+  effects::GlowParams& p = load->params;
   if (!f.tier.empty()) p.tier = *effects::parse_tier(f.tier); // CLI11 checked the name
   if (!f.weight_rounding.empty())
     p.weight_rounding = *effects::parse_weight_rounding(f.weight_rounding); // checked too
@@ -78,7 +68,7 @@ std::optional<effects::Scene> scene_from_flags(const GlowFlags& f, Report& repor
   p.listing_options.skip_validation = f.listing.skip_validation;
   p.listing_options.strict = f.listing.strict;
   if (!f.listing.profile.empty()) p.listing_options.profile = ir::parse_profile(f.listing.profile);
-  return load.scene;
+  return std::move(load).value();
 }
 
 // Prints which pass runs on which device: one line updated in place on a terminal, a line
@@ -271,14 +261,8 @@ int run(const GlowFlags& f) {
   double vk_create_ms = 0;
   if (all || both || f.backend == "vulkan") {
     const auto t0 = std::chrono::steady_clock::now();
-    vulkan::DeviceOptions o;
-    o.gpu_filter = f.gpu;
-    ir::Result<vulkan::Device*> device = vulkan::process_device(o);
-    if (!device) {
-      report.error("device", device.message());
-      return report.finish(kExitUsage);
-    }
-    vk = *device;
+    vk = vulkan_device(f.gpu, report);
+    if (!vk) return report.finish(kExitUsage);
     vk_create_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   }

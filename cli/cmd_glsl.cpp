@@ -12,7 +12,7 @@
 #include "tierlift/effects/glsl_pass.h"
 #include "tierlift/effects/run_graph.h"
 #include "tierlift/image/io.h"
-#include "tierlift/vulkan/run_job.h" // process_device
+#include "vulkan_device.h"
 
 namespace tierlift::cli {
 namespace {
@@ -54,12 +54,11 @@ int run(const Flags& f) {
       return report.finish(kExitUsage);
     }
   }
-  std::string err;
-  const auto size = parse_size(f.size, err);
+  const ir::Result<std::array<uint32_t, 2>> size = parse_size(f.size);
   const auto format = img::parse_format(f.format);
   const auto filter = parse_filter(f.filter);
   if (!size || !format || !filter) {
-    report.error("usage", !size ? err
+    report.error("usage", !size ? size.message()
                           : !format
                               ? fmt::format("--format '{}': expected rgba8, rgba16f or "
                                             "rgba32f",
@@ -116,14 +115,9 @@ int run(const Flags& f) {
   }
   if (f.output.empty()) return report.finish(kExitOk);
 
-  vulkan::DeviceOptions o;
-  o.gpu_filter = f.gpu;
-  ir::Result<vulkan::Device*> device = vulkan::process_device(o);
-  if (!device) {
-    report.error("device", device.message());
-    return report.finish(kExitUsage);
-  }
-  std::unique_ptr<effects::PassDevice> vk = effects::make_vulkan_pass_device(**device);
+  vulkan::Device* device = vulkan_device(f.gpu, report);
+  if (!device) return report.finish(kExitUsage);
+  std::unique_ptr<effects::PassDevice> vk = effects::make_vulkan_pass_device(*device);
   effects::ImageMap images;
   images.emplace(std::string(effects::kSceneTexture), std::move(*image));
   const effects::GraphRun run = effects::run_graph(plan.graph, *vk, images);
@@ -139,11 +133,11 @@ int run(const Flags& f) {
   }
   if (!warning.empty()) report.warning("output", warning, f.output);
   result["output"] = f.output;
-  result["device"] = (*device)->name();
+  result["device"] = device->name();
   result["ms"] = run.total_ms;
   if (!f.json)
     fmt::print("wrote {} ({}x{}, {}, drawn on {} in {:.1f} ms)\n", f.output, out.width, out.height,
-               img::format_name(out.format), (*device)->name(), run.total_ms);
+               img::format_name(out.format), device->name(), run.total_ms);
   return report.finish(kExitOk);
 }
 

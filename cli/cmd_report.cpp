@@ -13,7 +13,7 @@
 #include "report.h"
 #include "tierlift/effects/report_files.h"
 #include "tierlift/effects/report_sweep.h"
-#include "tierlift/vulkan/run_job.h" // process_device
+#include "vulkan_device.h"
 
 namespace tierlift::cli {
 namespace {
@@ -100,21 +100,13 @@ void print_summary(const effects::SweepResult& r) {
 
 int run(const ReportFlags& f) {
   Report report("report", f.json);
-  effects::SceneLoad load;
-  if (!f.scene.empty())
-    load = effects::load_scene_file(f.scene);
-  else if (!f.image.empty())
-    load = effects::scene_from_png(f.image);
-  else
-    load.scene = effects::default_scene();
-  if (!load.scene) {
-    if (report.json())
-      report.error(load.io_error ? "io" : "scene", load.error, f.scene.empty() ? f.image : f.scene);
-    else
-      fmt::print(stderr, "{}{}", load.error, load.error.ends_with('\n') ? "" : "\n");
-    return report.finish(load.io_error ? kExitUsage : kExitInvalid);
+  const ir::Result<effects::Scene> load = effects::load_scene(f.scene, f.image);
+  if (!load) {
+    const bool io = ir::failed_with(load, effects::kSceneIoRule);
+    report.rendered_error(io ? "io" : "scene", load.message(), f.scene.empty() ? f.image : f.scene);
+    return report.finish(io ? kExitUsage : kExitInvalid);
   }
-  const effects::Scene& scene = *load.scene;
+  const effects::Scene& scene = *load;
   effects::SweepSettings s = f.quick ? effects::quick_sweep() : effects::full_sweep();
   if (f.frames != 0) s.frames = f.frames;
   std::string err;
@@ -136,14 +128,8 @@ int run(const ReportFlags& f) {
   // The process's device, kept until exit as in `tierlift glow` and `tierlift run`.
   vulkan::Device* vk = nullptr;
   if (!f.no_vulkan) {
-    vulkan::DeviceOptions o;
-    o.gpu_filter = f.gpu;
-    ir::Result<vulkan::Device*> device = vulkan::process_device(o);
-    if (!device) {
-      report.error("device", device.message());
-      return report.finish(kExitUsage);
-    }
-    vk = *device;
+    vk = vulkan_device(f.gpu, report);
+    if (!vk) return report.finish(kExitUsage);
   }
   if (f.no_vulkan) std::erase(s.timed, std::string("vulkan"));
   const bool tty = isatty(STDERR_FILENO) != 0;

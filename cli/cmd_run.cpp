@@ -20,6 +20,7 @@
 #include "tierlift/image/compare.h"
 #include "tierlift/ir/ps1x_range.h"
 #include "tierlift/vulkan/run_job.h"
+#include "vulkan_device.h"
 
 namespace tierlift::cli {
 namespace {
@@ -44,29 +45,31 @@ template <class T> T need(std::optional<T> value, const std::string& error) {
   if (!value) throw UsageError{error};
   return *value;
 }
+template <class T> T need(ir::Result<T> value) {
+  if (!value) throw UsageError{value.message()};
+  return std::move(value).value();
+}
 
 // --const settings, names already resolved to registers (named_constants.h).
 std::vector<pass::ConstSetting> parse_constants(const std::vector<std::string>& settings) {
   std::vector<pass::ConstSetting> out;
-  std::string err;
-  for (const auto& s : settings) out.push_back(need(parse_const_setting(s, err), err));
+  for (const auto& s : settings) out.push_back(need(parse_const_setting(s)));
   return out;
 }
 
 // Every flag but --const (read once the listings' constant tables are known).
 pass::RunRequest build_request(const RunFlags& f) {
   pass::RunRequest r;
-  std::string err;
-  auto size = need(parse_size(f.size, err), err);
+  auto size = need(parse_size(f.size));
   r.width = size[0];
   r.height = size[1];
   r.format = need(img::parse_format(f.format),
                   fmt::format("--format '{}': expected rgba8, rgba16f or rgba32f", f.format));
-  for (const auto& s : f.inputs) r.inputs.push_back(need(parse_input_setting(s, err), err));
-  for (const auto& s : f.attrs) r.attrs.push_back(need(parse_attr_setting(s, err), err));
-  for (const auto& s : f.textures) r.textures.push_back(need(parse_texture_setting(s, err), err));
+  for (const auto& s : f.inputs) r.inputs.push_back(need(parse_input_setting(s)));
+  for (const auto& s : f.attrs) r.attrs.push_back(need(parse_attr_setting(s)));
+  for (const auto& s : f.textures) r.textures.push_back(need(parse_texture_setting(s)));
   for (const auto& s : f.probes) {
-    pass::ProbePoint p = need(parse_probe(s, err), err);
+    pass::ProbePoint p = need(parse_probe(s));
     if (p.x >= r.width || p.y >= r.height)
       throw UsageError{fmt::format("--probe {}: outside the {}x{} image", s, r.width, r.height)};
     r.probes.push_back(p);
@@ -232,7 +235,6 @@ int run(const RunFlags& f) {
   if (vs) req.vs = std::make_shared<const ir::Program>(*vs->program);
   if (ps) req.ps = std::make_shared<const ir::Program>(*ps->program);
 
-  pass::RunDiagnostics diags;
   auto print_run_diagnostics = [&](const pass::RunDiagnostics& d) {
     if (vs) report.diagnostics(d.vs, vs->sources);
     if (ps) report.diagnostics(d.ps, ps->sources);
@@ -247,14 +249,11 @@ int run(const RunFlags& f) {
 
   // The one pass both devices draw: listings, constants and textures are read once here.
   const auto t_prepare = std::chrono::steady_clock::now();
+  pass::RunDiagnostics diags;
   std::optional<pass::Pass> prepared;
-  try { // a huge texture may not fit: running out of memory is an error, not a crash
-    prepared = pass::prepare_pass(req, diags);
-  } catch (const std::bad_alloc&) {
-    diags.other.error({}, "memory",
-                      fmt::format("not enough memory for a {}x{} target and its textures",
-                                  req.width, req.height));
-  }
+  ir::Result<pass::Pass> made = pass::prepare_pass(req);
+  pass::add_by_listing(diags, made.diagnostics());
+  if (made) prepared = std::move(made).value();
   const double prepare_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_prepare)
           .count();
@@ -270,15 +269,10 @@ int run(const RunFlags& f) {
     if (!out.ok) return report.finish(kExitInvalid);
   }
   if (want_vulkan) {
-    vulkan::DeviceOptions options;
-    options.gpu_filter = f.gpu;
-    ir::Result<vulkan::Device*> device = vulkan::process_device(options);
-    if (!device) {
-      report.error("device", device.message());
-      return report.finish(kExitUsage);
-    }
-    vk_name = (*device)->name();
-    vulkan::PassDevice pass_device(**device);
+    vulkan::Device* device = vulkan_device(f.gpu, report);
+    if (!device) return report.finish(kExitUsage);
+    vk_name = device->name();
+    vulkan::PassDevice pass_device(*device);
     vk = draw_on(pass_device, *prepared, req, report);
     if (!vk.ok) return report.finish(kExitInvalid);
   }

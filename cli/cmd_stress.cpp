@@ -17,7 +17,7 @@
 #include "report.h"
 #include "tierlift/effects/analytic_device.h"
 #include "tierlift/effects/stress.h"
-#include "tierlift/vulkan/run_job.h" // process_device
+#include "vulkan_device.h"
 
 namespace tierlift::cli {
 namespace {
@@ -62,14 +62,8 @@ int run_stress(const StressFlags& f) {
     return report.finish(kExitUsage);
   }
   // The process's device, kept until exit as in `tierlift glow` (tests/lsan.supp).
-  vulkan::DeviceOptions device_options;
-  device_options.gpu_filter = f.gpu;
-  ir::Result<vulkan::Device*> device = vulkan::process_device(device_options);
-  if (!device) {
-    report.error("device", device.message());
-    return report.finish(kExitUsage);
-  }
-  vulkan::Device* vk = *device;
+  vulkan::Device* vk = vulkan_device(f.gpu, report);
+  if (!vk) return report.finish(kExitUsage);
   effects::StressOptions o;
   o.make_device = [vk](const std::string& way) -> std::unique_ptr<effects::PassDevice> {
     if (way == "cpu") return std::make_unique<effects::CpuPassDevice>();

@@ -6,6 +6,7 @@
 
 #include "tierlift/io/output_file.h"
 #include "tierlift/ir/profile.h"
+#include "tierlift/ir/result_diagnostics.h"
 
 namespace tierlift::cli {
 
@@ -91,10 +92,11 @@ LoadedListing load_listing(const std::string& path, const FrontEndOptions& optio
   lopts.skip_validation = options.skip_validation;
   lopts.strict = options.strict;
   uint32_t file = out.sources.add(path == "-" ? "<stdin>" : path, std::move(*text));
-  as::LoadResult r = as::load_listing(file, out.sources, out.diags, lopts);
+  as::Loaded r = as::load_listing(file, out.sources, lopts);
   out.form = r.form;
   out.constants = std::move(r.constants);
-  out.program = std::move(r.program);
+  ir::add_all(out.diags, r.program.diagnostics());
+  if (r.program) out.program = std::move(r.program).value();
   return out;
 }
 

@@ -61,4 +61,12 @@ int Report::finish(int exit_code) {
   return exit_code;
 }
 
+void Report::rendered_error(std::string_view rule, const std::string& rendered,
+                            const std::string& file) {
+  if (json_)
+    error(rule, rendered, file);
+  else
+    fmt::print(stderr, "{}{}", rendered, rendered.ends_with('\n') ? "" : "\n");
+}
+
 } // namespace tierlift::cli

@@ -27,6 +27,9 @@ public:
   // "agreement", ...; `file` names the file when there is one.
   void error(std::string_view rule, const std::string& message, const std::string& file = "");
   void warning(std::string_view rule, const std::string& message, const std::string& file = "");
+  // One error whose message is rendered diagnostics already (a scene's, effects/scene.h):
+  // the text as it is, or under --json one `rule` error naming `file`.
+  void rendered_error(std::string_view rule, const std::string& rendered, const std::string& file);
   // Diagnostics of a listing (positions, carets).
   void diagnostics(const ir::DiagnosticSink& sink, const ir::SourceManager& sources);
   // Text that is the command's output: standard output as is, or result[key] in JSON.

@@ -105,9 +105,15 @@ bool parse_reg(std::string_view name, std::string_view prefix, uint32_t limit, u
 
 constexpr uint32_t kMaxConstRegisters = 4096;
 
+// A flag's value the parser refuses: one error naming the flag and the value, which the CLI
+// reports with rule "usage" and exit 2.
+ir::Failure usage(std::string message) {
+  return ir::fail("", "usage", std::move(message));
+}
+
 } // namespace
 
-std::optional<ConstSetting> parse_const_setting(std::string_view text, std::string& error) {
+ir::Result<ConstSetting> parse_const_setting(std::string_view text) {
   ConstSetting c;
   std::string_view body = trim(text);
   if (body.substr(0, 3) == "vs:")
@@ -116,21 +122,20 @@ std::optional<ConstSetting> parse_const_setting(std::string_view text, std::stri
     c.stage = StageMask::Pixel, body.remove_prefix(3);
   std::string_view name, value;
   if (!split_assignment(body, name, value)) {
-    error = fmt::format("--const '{}': expected [vs:|ps:]cN=x,y,z,w, iN=a,b,c,d or bN=true|false",
-                        text);
-    return std::nullopt;
+    return usage(fmt::format(
+        "--const '{}': expected [vs:|ps:]cN=x,y,z,w, iN=a,b,c,d or bN=true|false", text));
   }
   if (parse_reg(name, "c", kMaxConstRegisters, c.index)) {
     c.file = ir::RegFile::Const;
     if (parse_vec4(value, c.f)) return c;
-    error = fmt::format("--const '{}': c# needs four numbers x,y,z,w", text);
+    return usage(fmt::format("--const '{}': c# needs four numbers x,y,z,w", text));
   } else if (parse_reg(name, "i", 16, c.index)) {
     c.file = ir::RegFile::ConstInt;
     std::vector<std::string_view> f;
     bool ok = split_fields(value, 4, f);
     for (int k = 0; ok && k < 4; ++k) ok = parse_i32(f[k], c.i[k]);
     if (ok) return c;
-    error = fmt::format("--const '{}': i# needs four integers a,b,c,d", text);
+    return usage(fmt::format("--const '{}': i# needs four integers a,b,c,d", text));
   } else if (parse_reg(name, "b", 16, c.index)) {
     c.file = ir::RegFile::ConstBool;
     if (value == "true" || value == "1")
@@ -138,18 +143,15 @@ std::optional<ConstSetting> parse_const_setting(std::string_view text, std::stri
     else if (value == "false" || value == "0")
       c.b = false;
     else {
-      error = fmt::format("--const '{}': b# is true or false", text);
-      return std::nullopt;
+      return usage(fmt::format("--const '{}': b# is true or false", text));
     }
     return c;
-  } else {
-    error = fmt::format("--const '{}': register must be c0..c{}, i0..i15 or b0..b15", text,
-                        kMaxConstRegisters - 1);
   }
-  return std::nullopt;
+  return usage(fmt::format("--const '{}': register must be c0..c{}, i0..i15 or b0..b15", text,
+                           kMaxConstRegisters - 1));
 }
 
-std::optional<RegisterSetting> parse_input_setting(std::string_view text, std::string& error) {
+ir::Result<RegisterSetting> parse_input_setting(std::string_view text) {
   RegisterSetting r;
   std::string_view name, value;
   bool named = split_assignment(text, name, value);
@@ -158,61 +160,55 @@ std::optional<RegisterSetting> parse_input_setting(std::string_view text, std::s
   else if (named && parse_reg(name, "t", 8, r.index))
     r.file = ir::RegFile::Texture;
   else {
-    error = fmt::format("--input '{}': expected v0|v1|t0..t7=x,y,z,w", text);
-    return std::nullopt;
+    return usage(fmt::format("--input '{}': expected v0|v1|t0..t7=x,y,z,w", text));
   }
   if (parse_vec4(value, r.value)) return r;
-  error = fmt::format("--input '{}': the value needs four numbers x,y,z,w", text);
-  return std::nullopt;
+  return usage(fmt::format("--input '{}': the value needs four numbers x,y,z,w", text));
 }
 
-std::optional<RegisterSetting> parse_attr_setting(std::string_view text, std::string& error) {
+ir::Result<RegisterSetting> parse_attr_setting(std::string_view text) {
   RegisterSetting r;
   std::string_view name, value;
   if (!split_assignment(text, name, value) || !parse_reg(name, "v", 16, r.index)) {
-    error = fmt::format("--attr '{}': expected v0..v15=x,y,z,w or v0..v15=quad-uv", text);
-    return std::nullopt;
+    return usage(fmt::format("--attr '{}': expected v0..v15=x,y,z,w or v0..v15=quad-uv", text));
   }
   if (value == "quad-uv") {
     r.quad_uv = true;
     return r;
   }
   if (parse_vec4(value, r.value)) return r;
-  error = fmt::format("--attr '{}': the value needs four numbers x,y,z,w or quad-uv", text);
-  return std::nullopt;
+  return usage(fmt::format("--attr '{}': the value needs four numbers x,y,z,w or quad-uv", text));
 }
 
-std::optional<TextureSetting> parse_texture_setting(std::string_view text, std::string& error) {
+ir::Result<TextureSetting> parse_texture_setting(std::string_view text) {
   TextureSetting t;
   std::string_view name, value;
   if (!split_assignment(text, name, value) || !parse_reg(name, "s", kMaxSamplers, t.sampler) ||
       value.empty()) {
-    error = fmt::format("--texture '{}': expected sN=FILE.png|FILE.pfm|builtin:NAME[:WxH]", text);
-    return std::nullopt;
+    return usage(
+        fmt::format("--texture '{}': expected sN=FILE.png|FILE.pfm|builtin:NAME[:WxH]", text));
   }
   t.source = std::string(value);
   return t;
 }
 
-std::optional<ProbePoint> parse_probe(std::string_view text, std::string& error) {
+ir::Result<ProbePoint> parse_probe(std::string_view text) {
   std::vector<std::string_view> f;
   ProbePoint p;
   if (split_fields(text, 2, f) && parse_u32(f[0], p.x) && parse_u32(f[1], p.y)) return p;
-  error = fmt::format("--probe '{}': expected X,Y (non-negative integers)", text);
-  return std::nullopt;
+  return usage(fmt::format("--probe '{}': expected X,Y (non-negative integers)", text));
 }
 
-std::optional<std::array<uint32_t, 2>> parse_size(std::string_view text, std::string& error) {
+ir::Result<std::array<uint32_t, 2>> parse_size(std::string_view text) {
   size_t x = text.find_first_of("xX");
   uint32_t w = 0, h = 0;
   if (x == std::string_view::npos || !parse_u32(text.substr(0, x), w) ||
       !parse_u32(text.substr(x + 1), h)) {
-    error = fmt::format("--size '{}': expected WxH, e.g. 256x256", text);
-    return std::nullopt;
+    return usage(fmt::format("--size '{}': expected WxH, e.g. 256x256", text));
   }
   if (w == 0 || h == 0 || w > img::kMaxDimension || h > img::kMaxDimension) {
-    error = fmt::format("--size '{}': width and height must be 1..{}", text, img::kMaxDimension);
-    return std::nullopt;
+    return usage(
+        fmt::format("--size '{}': width and height must be 1..{}", text, img::kMaxDimension));
   }
   return std::array<uint32_t, 2>{w, h};
 }

@@ -1,6 +1,8 @@
 // The values of `tierlift run`'s flags, parsed into the settings pass::prepare_pass takes
-// (tierlift/pass/setup.h). Each parser gives the value, or nullopt and a one-line reason in
-// `error`. A library of its own so tests can reach it.
+// (tierlift/pass/setup.h). Each parser gives the value, or a failure with one "usage" error
+// naming the flag and the value. The word lookups (filter, address, pixel centre) give
+// nullopt for a word they do not know: their callers name the choices in their own message.
+// A library of its own so tests can reach it.
 #pragma once
 
 #include <array>
@@ -8,6 +10,7 @@
 #include <string>
 #include <string_view>
 
+#include "tierlift/ir/result.h"
 #include "tierlift/pass/setup.h"
 
 namespace tierlift::cli {
@@ -23,17 +26,17 @@ using pass::TextureSetting;
 using pass::Vec4;
 
 // --const [vs:|ps:]cN=x,y,z,w | iN=a,b,c,d | bN=true|false
-std::optional<ConstSetting> parse_const_setting(std::string_view text, std::string& error);
+ir::Result<ConstSetting> parse_const_setting(std::string_view text);
 // --input v#|t#=x,y,z,w (pixel stage)
-std::optional<RegisterSetting> parse_input_setting(std::string_view text, std::string& error);
+ir::Result<RegisterSetting> parse_input_setting(std::string_view text);
 // --attr vN=x,y,z,w|quad-uv (vertex stage)
-std::optional<RegisterSetting> parse_attr_setting(std::string_view text, std::string& error);
+ir::Result<RegisterSetting> parse_attr_setting(std::string_view text);
 // --texture sN=FILE.png|FILE.pfm|builtin:NAME[:WxH]
-std::optional<TextureSetting> parse_texture_setting(std::string_view text, std::string& error);
+ir::Result<TextureSetting> parse_texture_setting(std::string_view text);
 // --probe X,Y
-std::optional<ProbePoint> parse_probe(std::string_view text, std::string& error);
+ir::Result<ProbePoint> parse_probe(std::string_view text);
 // "WxH", 1..img::kMaxDimension each.
-std::optional<std::array<uint32_t, 2>> parse_size(std::string_view text, std::string& error);
+ir::Result<std::array<uint32_t, 2>> parse_size(std::string_view text);
 std::optional<Filter> parse_filter(std::string_view text);       // point|linear
 std::optional<AddressMode> parse_address(std::string_view text); // clamp|wrap|mirror|border
 std::optional<ir::PixelCenter> parse_pixel_center(std::string_view text); // d3d9|modern

@@ -3,11 +3,19 @@
 #include "tierlift/codegen/codegen.h"
 
 #include "tierlift/codegen/emitter.h"
+#include "tierlift/ir/passes.h"
+#include "tierlift/ir/result_diagnostics.h"
 
 namespace tierlift::codegen {
 
 std::optional<ShaderModule> compile(const ir::Program& program, const CodegenOptions& options,
                                     ir::DiagnosticSink& diags) {
+  // The structural checks every backend runs first (ir/passes.h): a program the emitter
+  // could only misread is refused with positioned "ir" errors instead.
+  if (ir::Status s = ir::validate_ir(program); !s) {
+    ir::add_all(diags, s.diagnostics());
+    return std::nullopt;
+  }
   EmitPlan plan;
   Emitter emitter(program, options, plan, diags);
   return emitter.run();

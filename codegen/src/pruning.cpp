@@ -9,6 +9,8 @@
 #include "tierlift/codegen/codegen.h"
 #include "tierlift/codegen/emitter.h"
 #include "tierlift/ir/liveness.h"
+#include "tierlift/ir/passes.h"
+#include "tierlift/ir/result_diagnostics.h"
 
 namespace tierlift::codegen {
 
@@ -74,6 +76,11 @@ std::optional<CompiledPair> compile_pair(const ir::Program& vs, const ir::Progra
     diags.error(vs.version_loc, "codegen", "compile_pair needs a vertex and a pixel shader");
     return std::nullopt;
   }
+  for (const ir::Program* p : {&vs, &ps})
+    if (ir::Status s = ir::validate_ir(*p); !s) { // as compile() does, before any analysis
+      ir::add_all(diags, s.diagnostics());
+      return std::nullopt;
+    }
   CompiledPair pair;
   EmitPlan ps_plan;
   ps_plan.skip = ir::dead_instructions(ps, pixel_outputs_live(ps));

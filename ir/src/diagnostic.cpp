@@ -1,5 +1,6 @@
 #include "tierlift/ir/diagnostic.h"
 #include "tierlift/ir/result.h"
+#include "tierlift/ir/result_diagnostics.h"
 
 #include <cassert>
 
@@ -124,8 +125,12 @@ std::string render_text(const Diagnostic& d, const SourceManager& sm) {
 }
 
 std::string render_text(const DiagnosticSink& sink, const SourceManager& sm) {
+  return render_text(sink.all(), sm);
+}
+
+std::string render_text(const std::vector<Diagnostic>& ds, const SourceManager& sm) {
   std::string out;
-  for (const Diagnostic& d : sink.all()) out += render_text(d, sm);
+  for (const Diagnostic& d : ds) out += render_text(d, sm);
   return out;
 }
 

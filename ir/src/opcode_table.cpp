@@ -69,9 +69,18 @@ constexpr Row implicit(Row r, uint16_t flags) {
 constexpr Row address(Row r) {
   return implicit(fixed(r, 0x7), kReadsTexCoord);
 }
+// A pad row of a texm3x2 / texm3x3 product (`rows` 2 or 3): it writes nothing readable.
+constexpr Row pad_row(Row r, uint8_t rows) {
+  r = writes(address(r), 0);
+  r.sem.texm_rows = rows;
+  r.sem.texm_pad = true;
+  return r;
+}
 // The second or third row of a texm3x2 / texm3x3 product.
-constexpr Row final_row(Row r) {
-  return implicit(address(r), kReadsPadRows);
+constexpr Row final_row(Row r, uint8_t rows) {
+  r = implicit(address(r), kReadsPadRows);
+  r.sem.texm_rows = rows;
+  return r;
 }
 
 constexpr auto A = OpClass::Arith;
@@ -149,14 +158,14 @@ constexpr Row kRows[] = {
   samples(fixed(row(Opcode::TexReg2Ar, "texreg2ar",  0x45, T, true,  {V},                {no, no, 1,  1,  1, no, no},  "sample at (src.a, src.r)"), 0x9)),
   samples(fixed(row(Opcode::TexReg2Gb, "texreg2gb",  0x46, T, true,  {V},                {no, no, 1,  1,  1, no, no},  "sample at (src.g, src.b)"), 0x6)),
   samples(fixed(row(Opcode::TexReg2Rgb, "texreg2rgb", 0x52, T, true, {V},                {no, no, no, 1,  1, no, no},  "sample at src.rgb"), 0x7)),
-  writes(address(row(Opcode::TexM3x2Pad, "texm3x2pad", 0x47, T, true, {V},                {no, no, 1,  1,  1, no, no},  "first row of a 3x2 product")), 0),
-  samples(final_row(row(Opcode::TexM3x2Tex, "texm3x2tex", 0x48, T, true, {V},                {no, no, 1,  1,  1, no, no},  "second row, then sample"))),
-  writes(implicit(final_row(row(Opcode::TexM3x2Depth, "texm3x2depth", 0x54, T, true, {V},            {no, no, no, no, 1, no, no},  "second row, then depth")), kWritesDepth), 0),
-  writes(address(row(Opcode::TexM3x3Pad, "texm3x3pad", 0x49, T, true, {V},                {no, no, 1,  1,  1, no, no},  "row of a 3x3 product")), 0),
-  samples(final_row(row(Opcode::TexM3x3Tex, "texm3x3tex", 0x4A, T, true, {V},                {no, no, 1,  1,  1, no, no},  "third row, then sample"))),
-  final_row(row(Opcode::TexM3x3,  "texm3x3",     0x56, T, true,  {V},                {no, no, no, 1,  1, no, no},  "third row, result as colour")),
-  samples(final_row(row(Opcode::TexM3x3Spec, "texm3x3spec", 0x4C, T, true, {V, K::Const},    {no, no, 1,  1,  1, no, no},  "reflect constant eye, sample"))),
-  samples(implicit(final_row(row(Opcode::TexM3x3VSpec, "texm3x3vspec", 0x4D, T, true, {V},            {no, no, 1,  1,  1, no, no},  "reflect interpolated eye, sample")), kReadsEyeFromRows)),
+  pad_row(row(Opcode::TexM3x2Pad, "texm3x2pad", 0x47, T, true, {V},                {no, no, 1,  1,  1, no, no},  "first row of a 3x2 product"), 2),
+  samples(final_row(row(Opcode::TexM3x2Tex, "texm3x2tex", 0x48, T, true, {V},                {no, no, 1,  1,  1, no, no},  "second row, then sample"), 2)),
+  writes(implicit(final_row(row(Opcode::TexM3x2Depth, "texm3x2depth", 0x54, T, true, {V},            {no, no, no, no, 1, no, no},  "second row, then depth"), 2), kWritesDepth), 0),
+  pad_row(row(Opcode::TexM3x3Pad, "texm3x3pad", 0x49, T, true, {V},                {no, no, 1,  1,  1, no, no},  "row of a 3x3 product"), 3),
+  samples(final_row(row(Opcode::TexM3x3Tex, "texm3x3tex", 0x4A, T, true, {V},                {no, no, 1,  1,  1, no, no},  "third row, then sample"), 3)),
+  final_row(row(Opcode::TexM3x3,  "texm3x3",     0x56, T, true,  {V},                {no, no, no, 1,  1, no, no},  "third row, result as colour"), 3),
+  samples(final_row(row(Opcode::TexM3x3Spec, "texm3x3spec", 0x4C, T, true, {V, K::Const},    {no, no, 1,  1,  1, no, no},  "reflect constant eye, sample"), 3)),
+  samples(implicit(final_row(row(Opcode::TexM3x3VSpec, "texm3x3vspec", 0x4D, T, true, {V},            {no, no, 1,  1,  1, no, no},  "reflect interpolated eye, sample"), 3), kReadsEyeFromRows)),
   address(row(Opcode::TexDp3,   "texdp3",      0x55, T, true,  {V},                {no, no, no, 1,  1, no, no},  "t(m) = dot(TC(m), src)")),
   samples(address(row(Opcode::TexDp3Tex, "texdp3tex",  0x53, T, true,  {V},                {no, no, no, 1,  1, no, no},  "1D sample at dot(TC(m), src)"))),
   writes(implicit(row(Opcode::TexDepth, "texdepth",    0x57, T, true,  {},                 {no, no, no, no, no, 1, no},  "depth = r5.r / r5.g"), kReadsOperand | kWritesDepth), 0),

@@ -11,6 +11,7 @@
 
 #include "listing_files.h"
 #include "skip_policy.h"
+#include "tierlift/ir/result_diagnostics.h"
 
 namespace fs = std::filesystem;
 using namespace tierlift;
@@ -20,12 +21,12 @@ namespace {
 std::optional<ir::Program> load(std::string bytes, const std::string& name,
                                 as::ListingForm expect_form, std::string& rendered) {
   ir::SourceManager sm;
-  ir::DiagnosticSink diags;
   uint32_t f = sm.add(name, std::move(bytes));
-  as::LoadResult r = as::load_listing(f, sm, diags);
-  rendered = ir::render_text(diags, sm);
+  as::Loaded r = as::load_listing(f, sm);
+  rendered = ir::render_text(r.program.diagnostics(), sm);
   EXPECT_EQ(r.form, expect_form) << name;
-  return std::move(r.program);
+  if (!r.program) return std::nullopt;
+  return std::move(r.program).value();
 }
 
 // Returns the number of listings compared.

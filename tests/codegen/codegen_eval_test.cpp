@@ -10,6 +10,7 @@
 #include "tierlift/asm/parser.h"
 #include "tierlift/codegen/codegen.h"
 #include "tierlift/ir/numerics.h"
+#include "tierlift/vulkan/uniforms.h"
 
 using namespace tierlift;
 namespace num = ir::numerics;
@@ -26,7 +27,14 @@ struct EvalResult {
   bool killed = false;
 };
 
-EvalResult run(const std::string& text, const codegen::UniformValues& u,
+// The values of the stage's uniform block: its constant bank and the texture stages' bump
+// states, as the Vulkan device packs them.
+struct Uniforms {
+  pass::ConstantBank bank;
+  pass::Pass stages;
+};
+
+EvalResult run(const std::string& text, const Uniforms& u,
                const std::map<uint32_t, Vec4>& inputs = {},
                const codegen::CodegenOptions& opt = {}) {
   auto parsed = as::parse_text(text, "<eval>");
@@ -38,7 +46,7 @@ EvalResult run(const std::string& text, const codegen::UniformValues& u,
   if (!m) return {};
   spirv_test::SpirvEval e(m->words);
   e.inputs = inputs;
-  e.uniform_words = codegen::pack_uniforms(*m, u);
+  e.uniform_words = vulkan::pack_uniforms(*m, u.bank, u.stages);
   e.run();
   return {e.outputs, e.position, e.killed};
 }
@@ -59,9 +67,9 @@ void expect_same(const Vec4& got, const Vec4& want, const std::string& what) {
   }
 }
 
-codegen::UniformValues consts(std::vector<Vec4> f) {
-  codegen::UniformValues u;
-  u.f = std::move(f);
+Uniforms consts(std::vector<Vec4> f) {
+  Uniforms u;
+  u.bank.f = std::move(f);
   return u;
 }
 
@@ -107,10 +115,10 @@ TEST(CodegenEval, ComparisonsWithNanTakeTheFalseBranch) {
                      u);
   Vec4 mn, mx, ge, lt;
   for (int k = 0; k < 4; ++k) {
-    mn[k] = num::legacy_min(u.f[0][k], u.f[1][k]);
-    mx[k] = num::legacy_max(u.f[0][k], u.f[1][k]);
-    ge[k] = num::legacy_sge(u.f[0][k], u.f[1][k]);
-    lt[k] = num::legacy_slt(u.f[0][k], u.f[1][k]);
+    mn[k] = num::legacy_min(u.bank.f[0][k], u.bank.f[1][k]);
+    mx[k] = num::legacy_max(u.bank.f[0][k], u.bank.f[1][k]);
+    ge[k] = num::legacy_sge(u.bank.f[0][k], u.bank.f[1][k]);
+    lt[k] = num::legacy_slt(u.bank.f[0][k], u.bank.f[1][k]);
   }
   expect_same(r.out[0], mn, "min");
   expect_same(r.out[1], mx, "max");
@@ -142,7 +150,7 @@ TEST(CodegenEval, MacrosAndVectorOpsMatchTheNumericsFunctions) {
   expect_same(r.out[2], lrp, "lrp");
   expect_same(r.out[3], frc, "frc");
   Vec4 m;
-  for (int i = 0; i < 4; ++i) m[i] = num::legacy_dp4(a.data(), u.f[3 + i].data());
+  for (int i = 0; i < 4; ++i) m[i] = num::legacy_dp4(a.data(), u.bank.f[3 + i].data());
   expect_same(r.out[4], m, "m4x4");
   expect_same(r.out[5], sgn, "sgn");
   auto mul = num::legacy_mul;
@@ -184,10 +192,10 @@ TEST(CodegenEval, AddressRegisterAndRelativeReads) {
 }
 
 TEST(CodegenEval, LoopsRepsAndBranches) {
-  codegen::UniformValues u = consts(
+  Uniforms u = consts(
       {{1, 1, 1, 1}, {1, 0, 0, 0}, {0, 0, 0, 0}, {100, 0, 0, 0}, {0, 0, 0, 0}, {10000, 0, 0, 0}});
-  u.i[1] = {1000, 0, 0, 0}; // rep count clamps to 255
-  u.b[2] = true;
+  u.bank.i[1] = {1000, 0, 0, 0}; // rep count clamps to 255
+  u.bank.b[2] = true;
   EvalResult r = run("vs_2_0\ndcl_position v0\ndefi i0, 3, 1, 2, 0\nmov r0, c2\n"
                      "loop aL, i0\nadd r0, r0, c[aL]\nendloop\nmov oT0, r0\n"
                      "mov r1, c2\nrep i1\nadd r1, r1, c0\nendrep\nmov oT1, r1\n"
@@ -271,8 +279,8 @@ TEST(CodegenEval, PixelSelectsAndTextureAddressing) {
   r = run("ps_1_1\ntexcoord t0\nmov r0, t0\n", u, {{0, {1.5f, -0.25f, 0.5f, 7.0f}}});
   expect_same(r.out[0], {1.0f, 0.0f, 0.5f, 1.0f}, "texcoord");
   // texbem: (u, v) = TC(1).xy + M·t0.rg with stage 1's matrix; the texture echoes (u, v).
-  codegen::UniformValues b = u;
-  b.bumpenv_mat[1] = {0.5f, 0.0f, 0.0f, 0.25f}; // M00, M01, M10, M11
+  Uniforms b = u;
+  b.stages.textures[1].stage.bumpenv_mat = {0.5f, 0.0f, 0.0f, 0.25f}; // M00, M01, M10, M11
   r = run("ps_1_1\ntexcoord t0\ntexbem t1, t0\nmov r0, t1\n", b,
           {{0, {0.5f, 0.5f, 0.0f, 1.0f}}, {1, {0.125f, 0.25f, 0.0f, 1.0f}}});
   expect_same(r.out[0], {0.375f, 0.375f, 0.0f, 1.0f}, "texbem");

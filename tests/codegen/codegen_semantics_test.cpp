@@ -9,6 +9,7 @@
 
 #include "tierlift/asm/parser.h"
 #include "tierlift/codegen/codegen.h"
+#include "tierlift/vulkan/uniforms.h"
 
 using namespace tierlift;
 
@@ -317,11 +318,11 @@ TEST(CodegenSemantics, PackUniformsFollowsTheStd140Layout) {
   auto vs = build("vs_2_0\ndcl_position v0\nmov r0, c1\nif b3\nadd r0, r0, v0\nendif\n"
                   "rep i2\nadd r0, r0, c0\nendrep\nmov oPos, r0\n");
   ASSERT_TRUE(vs);
-  codegen::UniformValues v;
+  pass::ConstantBank v;
   v.f = {{1, 2, 3, 4}, {5, 6, 7, 8}, {9, 9, 9, 9}};
   v.i[2] = {3, 0, 1, 0};
   v.b[3] = true;
-  const auto words = codegen::pack_uniforms(*vs, v);
+  const auto words = vulkan::pack_uniforms(*vs, v, pass::Pass{});
   // float_count 2 (c0, c1): 32 bytes of floats, then i[16] (256 bytes), then b[16].
   ASSERT_EQ(words.size(), (32u + 256u + 256u) / 4u);
   EXPECT_EQ(std::bit_cast<float>(words[5]), 6.0f); // c1.y at byte 20
@@ -330,10 +331,11 @@ TEST(CodegenSemantics, PackUniformsFollowsTheStd140Layout) {
   EXPECT_EQ(words[(32 + 256 + 2 * 16) / 4], 0u);   // b2
   auto ps = build("ps_1_3\ntex t0\ntexbem t1, t0\nmov r0, t1\n");
   ASSERT_TRUE(ps);
-  codegen::UniformValues pv;
-  pv.bumpenv_mat[1] = {0.5f, 0.25f, -0.25f, 0.5f};
-  pv.bumpenv_lum[1] = {2.0f, 0.125f};
-  const auto pw = codegen::pack_uniforms(*ps, pv);
+  pass::Pass stages;
+  stages.textures[1].stage.bumpenv_mat = {0.5f, 0.25f, -0.25f, 0.5f};
+  stages.textures[1].stage.bumpenv_lscale = 2.0f;
+  stages.textures[1].stage.bumpenv_loffset = 0.125f;
+  const auto pw = vulkan::pack_uniforms(*ps, pass::ConstantBank{}, stages);
   const uint32_t base = ps->uniforms.bump_offset / 4;
   ASSERT_GT(base, 0u);
   EXPECT_EQ(std::bit_cast<float>(pw[base + 8 + 2]), -0.25f);  // stage 1 M10

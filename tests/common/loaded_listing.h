@@ -3,17 +3,21 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 
 #include "tierlift/asm/load.h"
 #include "tierlift/ir/diagnostic.h"
+#include "tierlift/ir/result_diagnostics.h"
 
 namespace tierlift::test {
 
 struct LoadedListing {
   ir::SourceManager sm;
   ir::DiagnosticSink diags;
-  as::LoadResult r;
+  // Empty until load_bytes fills it (as::Loaded has no "not loaded yet" state of its own).
+  std::optional<as::Loaded> loaded;
+  const as::Loaded& r() const { return *loaded; }
   std::string rendered;
   // Diagnostics of `severity` under `rule`.
   size_t count(ir::Severity severity, const std::string& rule) const {
@@ -27,7 +31,8 @@ inline LoadedListing load_bytes(std::string bytes, std::string name = "shader.ps
                                 as::LoadOptions options = {}) {
   LoadedListing l;
   uint32_t f = l.sm.add(std::move(name), std::move(bytes));
-  l.r = as::load_listing(f, l.sm, l.diags, options);
+  l.loaded = as::load_listing(f, l.sm, options);
+  ir::add_all(l.diags, l.loaded->program.diagnostics());
   l.rendered = ir::render_text(l.diags, l.sm);
   return l;
 }

@@ -40,10 +40,9 @@ std::shared_ptr<const ir::Program> listing(const std::string& name) {
 }
 
 ConstSetting cst(std::string_view text) {
-  std::string err;
-  auto c = parse_const_setting(text, err);
-  EXPECT_TRUE(c) << err;
-  return c.value_or(ConstSetting{});
+  auto c = parse_const_setting(text);
+  EXPECT_TRUE(c) << c.message();
+  return c ? *c : ConstSetting{};
 }
 
 // Listings 3+4 (or 1+2 with taps = 8): tap k offset by (k + dx)/16 horizontally and dy/16
@@ -59,8 +58,7 @@ RunRequest blur_request(int taps, double dx, double dy, img::Format format) {
     double w = 1.0 / taps;
     r.constants.push_back(cst(fmt::format("ps:c{}={},{},{},{}", k, w, w, w, w)));
   }
-  std::string err;
-  r.attrs.push_back(*parse_attr_setting("v3=quad-uv", err));
+  r.attrs.push_back(*parse_attr_setting("v3=quad-uv"));
   for (uint32_t s = 0; s < (taps == 4 ? 4u : 1u); ++s)
     r.textures.push_back({s, "builtin:ramp:16x16"});
   r.filter = Filter::Linear;
@@ -211,8 +209,7 @@ TEST(RunJob, NoListingsPassInputsThrough) {
   r.width = 5;
   r.height = 3;
   r.format = img::Format::RGBA8;
-  std::string err;
-  r.inputs.push_back(*parse_input_setting("v0=0.5,0.25,1,1", err));
+  r.inputs.push_back(*parse_input_setting("v0=0.5,0.25,1,1"));
   r.probes.push_back({4, 2});
   RunDiagnostics d;
   RunResult out = run_job(r, d);
@@ -246,9 +243,8 @@ TEST(RunJob, PixelListingAloneOverAnInMemoryTexture) {
   r.height = 2;
   r.format = img::Format::RGBA32F;
   r.filter = Filter::Linear;
-  std::string err;
   for (int k = 0; k < 8; ++k) {
-    r.inputs.push_back(*parse_input_setting(fmt::format("t{}=0.375,0.375,0,1", k), err));
+    r.inputs.push_back(*parse_input_setting(fmt::format("t{}=0.375,0.375,0,1", k)));
     r.constants.push_back(cst(fmt::format("c{}=0.125,0.125,0.125,0.125", k)));
   }
   r.textures.emplace_back(0, "numbered", tex);
@@ -294,8 +290,7 @@ TEST(RunJob, PointSamplingOnTheD3D9QuadPicksTexelI) {
       r.height = h;
       r.format = img::Format::RGBA32F;
       r.conventions.pixel_center = centre;
-      std::string err;
-      r.attrs.push_back(*parse_attr_setting("v3=quad-uv", err));
+      r.attrs.push_back(*parse_attr_setting("v3=quad-uv"));
       r.textures.emplace_back(0, "numbered", tex);
       RunDiagnostics d;
       RunResult out = run_job(r, d);
@@ -310,53 +305,52 @@ TEST(RunJob, PointSamplingOnTheD3D9QuadPicksTexelI) {
 }
 
 TEST(RunOptions, ParsersAcceptAndRefuse) {
-  std::string err;
-  auto c = parse_const_setting("ps:c7=1,-2.5,0,1e-3", err);
+  auto c = parse_const_setting("ps:c7=1,-2.5,0,1e-3");
   ASSERT_TRUE(c);
   EXPECT_EQ(c->stage, StageMask::Pixel);
   EXPECT_EQ(c->index, 7u);
   EXPECT_EQ(c->f, (Vec4{1, -2.5f, 0, 1e-3f}));
-  auto i = parse_const_setting("vs:i3=1,2,3,-4", err);
+  auto i = parse_const_setting("vs:i3=1,2,3,-4");
   ASSERT_TRUE(i);
   EXPECT_EQ(i->file, ir::RegFile::ConstInt);
   EXPECT_EQ(i->i[3], -4);
-  auto b = parse_const_setting("b2=true", err);
+  auto b = parse_const_setting("b2=true");
   ASSERT_TRUE(b);
   EXPECT_EQ(b->stage, StageMask::Both);
   EXPECT_TRUE(b->b);
   for (const char* bad : {"c0=1,2,3", "c0", "x0=1,2,3,4", "c0=a,b,c,d", "b1=maybe", "i0=1.5,0,0,0",
                           "c99999=0,0,0,0", "gs:c0=0,0,0,0"})
-    EXPECT_FALSE(parse_const_setting(bad, err)) << bad;
+    EXPECT_FALSE(parse_const_setting(bad)) << bad;
   // Numbers as def reads them: raw bit patterns, names, an 'f' suffix, denormals kept.
-  auto d = parse_const_setting("c0=0x7fc00000,-inf,1e-40f,+0.5", err);
-  ASSERT_TRUE(d) << err;
+  auto d = parse_const_setting("c0=0x7fc00000,-inf,1e-40f,+0.5");
+  ASSERT_TRUE(d) << d.message();
   EXPECT_EQ(std::bit_cast<uint32_t>(d->f[0]), 0x7fc00000u);
   EXPECT_EQ(d->f[1], -std::numeric_limits<float>::infinity());
   EXPECT_EQ(std::bit_cast<uint32_t>(d->f[2]), 71362u); // 1e-40 / 2^-149 = 71362.4 → 71362
   EXPECT_EQ(d->f[3], 0.5f);
-  auto neg_zero = parse_const_setting("c0=-0,nan,NaN,0x0", err);
-  ASSERT_TRUE(neg_zero) << err;
+  auto neg_zero = parse_const_setting("c0=-0,nan,NaN,0x0");
+  ASSERT_TRUE(neg_zero) << neg_zero.message();
   EXPECT_EQ(std::bit_cast<uint32_t>(neg_zero->f[0]), 0x80000000u);
   for (const char* bad : {"c0=1e39,0,0,0", "c0=-0x1,0,0,0", "c0=0x,0,0,0", "c0=0x100000000,0,0,0"})
-    EXPECT_FALSE(parse_const_setting(bad, err)) << bad;
-  EXPECT_TRUE(parse_attr_setting("v15=quad-uv", err));
-  EXPECT_FALSE(parse_attr_setting("v16=quad-uv", err));
-  EXPECT_TRUE(parse_input_setting("t7=0,0,0,0", err));
-  EXPECT_FALSE(parse_input_setting("t8=0,0,0,0", err));
-  EXPECT_FALSE(parse_input_setting("v2=0,0,0,0", err));
-  EXPECT_TRUE(parse_texture_setting("s15=builtin:checker", err));
-  EXPECT_FALSE(parse_texture_setting("s16=a.png", err));
-  EXPECT_FALSE(parse_texture_setting("s0=", err));
-  auto sz = parse_size("7x5", err);
+    EXPECT_FALSE(parse_const_setting(bad)) << bad;
+  EXPECT_TRUE(parse_attr_setting("v15=quad-uv"));
+  EXPECT_FALSE(parse_attr_setting("v16=quad-uv"));
+  EXPECT_TRUE(parse_input_setting("t7=0,0,0,0"));
+  EXPECT_FALSE(parse_input_setting("t8=0,0,0,0"));
+  EXPECT_FALSE(parse_input_setting("v2=0,0,0,0"));
+  EXPECT_TRUE(parse_texture_setting("s15=builtin:checker"));
+  EXPECT_FALSE(parse_texture_setting("s16=a.png"));
+  EXPECT_FALSE(parse_texture_setting("s0="));
+  auto sz = parse_size("7x5");
   ASSERT_TRUE(sz);
   EXPECT_EQ((*sz)[0], 7u);
-  EXPECT_TRUE(parse_size("16384x16384", err));
-  EXPECT_FALSE(parse_size("16385x1", err));
-  EXPECT_FALSE(parse_size("0x5", err));
-  EXPECT_FALSE(parse_size("99999999999999x1", err));
-  EXPECT_FALSE(parse_size("7", err));
-  EXPECT_TRUE(parse_probe("3,4", err));
-  EXPECT_FALSE(parse_probe("-1,4", err));
+  EXPECT_TRUE(parse_size("16384x16384"));
+  EXPECT_FALSE(parse_size("16385x1"));
+  EXPECT_FALSE(parse_size("0x5"));
+  EXPECT_FALSE(parse_size("99999999999999x1"));
+  EXPECT_FALSE(parse_size("7"));
+  EXPECT_TRUE(parse_probe("3,4"));
+  EXPECT_FALSE(parse_probe("-1,4"));
   EXPECT_EQ(parse_filter("linear"), Filter::Linear);
   EXPECT_FALSE(parse_filter("anisotropic"));
   EXPECT_EQ(parse_address("mirror"), AddressMode::Mirror);

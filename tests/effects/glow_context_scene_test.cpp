@@ -18,29 +18,30 @@ namespace {
 namespace fs = std::filesystem;
 const fs::path kScenes = fs::path(TIERLIFT_SOURCE_DIR) / "listings" / "scenes";
 
-SceneLoad parse(const std::string& text) {
+ir::Result<Scene> parse(const std::string& text) {
   return parse_scene(text, "s.json", kScenes.string());
 }
 
 TEST(GlowContextScene, FieldsAreRead) {
-  SceneLoad s = parse(R"({"glow": {"fog": {"start": 0.1, "end": 0.9, "color": [0.5, 0, 1]}}})");
-  ASSERT_TRUE(s) << s.error;
-  const GlowFog& fog = s.scene->params.context.fog;
+  ir::Result<Scene> s =
+      parse(R"({"glow": {"fog": {"start": 0.1, "end": 0.9, "color": [0.5, 0, 1]}}})");
+  ASSERT_TRUE(s) << s.message();
+  const GlowFog& fog = s->params.context.fog;
   EXPECT_TRUE(fog.on);
   EXPECT_EQ(fog.start, 0.1);
   EXPECT_EQ(fog.end, 0.9);
   EXPECT_EQ(fog.color, (std::array<double, 3>{0.5, 0, 1}));
   EXPECT_EQ(fog.depth, nullptr); // the built-in floor
-  EXPECT_EQ(s.scene->params.context.glow_image, nullptr);
+  EXPECT_EQ(s->params.context.glow_image, nullptr);
 
   s = parse(R"({"image": "sign.png", "glow_image": "sign-glow.png",
                 "glow": {"fog": {"start": 0, "end": 1, "depth": "sign-glow.png"}}})");
-  ASSERT_TRUE(s) << s.error;
-  ASSERT_NE(s.scene->params.context.glow_image, nullptr);
-  EXPECT_EQ(s.scene->params.context.glow_image->width, 160u);
-  ASSERT_NE(s.scene->params.context.fog.depth, nullptr);
+  ASSERT_TRUE(s) << s.message();
+  ASSERT_NE(s->params.context.glow_image, nullptr);
+  EXPECT_EQ(s->params.context.glow_image->width, 160u);
+  ASSERT_NE(s->params.context.fog.depth, nullptr);
   // The scene's own alpha is no longer what glows: its warnings are the glow image's.
-  for (const std::string& w : s.scene->warnings)
+  for (const std::string& w : s->warnings)
     EXPECT_EQ(w.find("the image's alpha"), std::string::npos) << w;
 }
 
@@ -54,18 +55,19 @@ class GlowContextSceneErrors : public ::testing::TestWithParam<Bad> {};
 
 TEST_P(GlowContextSceneErrors, NameTheFieldWithItsPosition) {
   const Bad& b = GetParam();
-  SceneLoad s = parse(b.text);
+  ir::Result<Scene> s = parse(b.text);
   ASSERT_FALSE(s) << b.text;
-  EXPECT_FALSE(s.io_error); // a file the scene names is the scene's error: exit 1
-  EXPECT_NE(s.error.find(b.where), std::string::npos) << s.error;
-  EXPECT_NE(s.error.find(b.says), std::string::npos) << s.error;
+  EXPECT_FALSE(
+      ir::failed_with(s, kSceneIoRule)); // a file the scene names is the scene's error: exit 1
+  EXPECT_NE(s.message().find(b.where), std::string::npos) << s.message();
+  EXPECT_NE(s.message().find(b.says), std::string::npos) << s.message();
   // The caret sits under the column the message gives (one-line scenes: 4 spaces indent).
   const std::string head = b.where;
   const size_t c1 = head.find(':'), c2 = head.find(':', c1 + 1), c3 = head.find(':', c2 + 1);
   const size_t col = std::stoul(head.substr(c2 + 1, c3 - c2 - 1));
-  const size_t caret = s.error.find('^');
-  ASSERT_NE(caret, std::string::npos) << s.error;
-  EXPECT_EQ(caret - (s.error.rfind('\n', caret) + 1), col - 1 + 4) << s.error;
+  const size_t caret = s.message().find('^');
+  ASSERT_NE(caret, std::string::npos) << s.message();
+  EXPECT_EQ(caret - (s.message().rfind('\n', caret) + 1), col - 1 + 4) << s.message();
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -107,12 +109,13 @@ class GlowContextShipped : public vulkan::test::VulkanTest,
 
 TEST_P(GlowContextShipped, EveryPairAgreesOnEveryPass) {
   const std::string file = GetParam().file;
-  SceneLoad s = file.starts_with("{") ? parse(file) : load_scene_file((kScenes / file).string());
-  ASSERT_TRUE(s) << s.error;
-  s.scene->params.tier = GetParam().tier;
-  const GlowPlan plan = build_scene_effect(*s.scene);
+  ir::Result<Scene> s =
+      file.starts_with("{") ? parse(file) : load_scene_file((kScenes / file).string());
+  ASSERT_TRUE(s) << s.message();
+  s->params.tier = GetParam().tier;
+  const GlowPlan plan = build_scene_effect(*s);
   ASSERT_TRUE(plan) << plan.error;
-  img::ImageResult scene = load_scene_image(*s.scene);
+  img::ImageResult scene = load_scene_image(*s);
   ASSERT_TRUE(scene) << scene.message();
   CpuPassDevice cpu_dev(2);
   AnalyticPassDevice analytic;

@@ -164,28 +164,28 @@ TEST(GlslBlur, BadGlslFileIsPositionedAndNamed) {
 }
 
 TEST(GlslBlur, SceneNamesTheEffect) {
-  SceneLoad s =
+  ir::Result<Scene> s =
       load_scene_file(std::string(TIERLIFT_SOURCE_DIR) + "/listings/scenes/glsl-blur.json");
-  ASSERT_TRUE(s) << s.error;
-  EXPECT_EQ(s.scene->effect, "glsl-blur");
-  EXPECT_EQ(s.scene->params.width, kSize);
-  ASSERT_EQ(s.scene->warnings.size(), 1u);
-  EXPECT_NE(s.scene->warnings[0].find("sum to 0.98"), std::string::npos);
-  GlowPlan plan = build_scene_effect(*s.scene);
+  ASSERT_TRUE(s) << s.message();
+  EXPECT_EQ(s->effect, "glsl-blur");
+  EXPECT_EQ(s->params.width, kSize);
+  ASSERT_EQ(s->warnings.size(), 1u);
+  EXPECT_NE(s->warnings[0].find("sum to 0.98"), std::string::npos);
+  GlowPlan plan = build_scene_effect(*s);
   ASSERT_TRUE(plan) << plan.error;
   EXPECT_EQ(plan.graph.passes.size(), 2u);
 }
 
 TEST(GlslBlur, GlslKeyBelongsToTheGlslEffect) {
-  SceneLoad s = parse_scene("{\"glsl\": {}}", "x.json", "");
+  ir::Result<Scene> s = parse_scene("{\"glsl\": {}}", "x.json", "");
   ASSERT_FALSE(s);
-  EXPECT_EQ(
-      s.error.rfind("x.json:1:2: error: /glsl: \"glsl\" configures \"effect\": \"glsl-blur\"", 0),
-      0u)
-      << s.error;
+  EXPECT_EQ(s.message().rfind(
+                "x.json:1:2: error: /glsl: \"glsl\" configures \"effect\": \"glsl-blur\"", 0),
+            0u)
+      << s.message();
   s = parse_scene("{\"effect\": \"glsl-blur\", \"glsl\": {\"weights\": [1, 2]}}", "y.json", "");
   ASSERT_FALSE(s);
-  EXPECT_NE(s.error.find("/glsl/weights"), std::string::npos) << s.error;
+  EXPECT_NE(s.message().find("/glsl/weights"), std::string::npos) << s.message();
 }
 
 } // namespace

@@ -177,15 +177,18 @@ TEST(Outline, StencilStateOutOfRangeIsRefusedByTheGraph) {
 TEST(Outline, SceneErrorsArePositioned) {
   const std::string text = "{\n  \"effect\": \"stencil-outline\",\n  \"size\": [64, 48],\n"
                            "  \"outline\": { \"stencil_ref\": 300 }\n}\n";
-  SceneLoad s = parse_scene(text, "o.json", "");
+  ir::Result<Scene> s = parse_scene(text, "o.json", "");
   ASSERT_FALSE(s);
-  EXPECT_NE(s.error.find("o.json:4:31: error: /outline/stencil_ref"), std::string::npos) << s.error;
-  SceneLoad wrong = parse_scene("{\"outline\": {}}", "w.json", "");
+  EXPECT_NE(s.message().find("o.json:4:31: error: /outline/stencil_ref"), std::string::npos)
+      << s.message();
+  ir::Result<Scene> wrong = parse_scene("{\"outline\": {}}", "w.json", "");
   ASSERT_FALSE(wrong);
-  EXPECT_NE(wrong.error.find("w.json:1:2: error: /outline"), std::string::npos) << wrong.error;
-  SceneLoad effect = parse_scene("{\"effect\": \"beams\"}", "e.json", "");
+  EXPECT_NE(wrong.message().find("w.json:1:2: error: /outline"), std::string::npos)
+      << wrong.message();
+  ir::Result<Scene> effect = parse_scene("{\"effect\": \"beams\"}", "e.json", "");
   ASSERT_FALSE(effect);
-  EXPECT_NE(effect.error.find("e.json:1:12: error: /effect"), std::string::npos) << effect.error;
+  EXPECT_NE(effect.message().find("e.json:1:12: error: /effect"), std::string::npos)
+      << effect.message();
 }
 
 } // namespace

@@ -317,17 +317,17 @@ TEST(Radial, PlanRefusesBadParameters) {
 std::string scene_error(const std::string& radial, const std::string& effect = "radial-beams") {
   const std::string text =
       "{\n  \"effect\": \"" + effect + "\",\n  \"radial\": " + radial + "\n}\n";
-  SceneLoad load = parse_scene(text, "s.json", "");
-  return load ? std::string() : load.error;
+  ir::Result<Scene> load = parse_scene(text, "s.json", "");
+  return load ? std::string() : load.message();
 }
 
 TEST(RadialScene, ReadsEveryField) {
-  SceneLoad load = parse_scene(R"({"effect": "radial-beams", "size": [64, 32],
+  ir::Result<Scene> load = parse_scene(R"({"effect": "radial-beams", "size": [64, 32],
     "radial": {"centre": [0.25, 0.75], "steps": 12, "step": 0.01, "strength": 0.5,
                "tier": "dx8", "amplitude": 2, "rate": 24, "frame": 9}})",
-                               "s.json", "");
-  ASSERT_TRUE(load) << load.error;
-  const Scene& s = *load.scene;
+                                       "s.json", "");
+  ASSERT_TRUE(load) << load.message();
+  const Scene& s = *load;
   EXPECT_EQ(s.effect, "radial-beams");
   EXPECT_EQ(s.params.tier, Tier::Dx8);
   EXPECT_EQ(s.radial.centre[1], 0.75);

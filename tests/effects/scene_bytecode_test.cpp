@@ -40,9 +40,9 @@ TEST(SceneBytecode, ListingFileMayBeATokenStream) {
   auto scene = scratch_dir() / "s.json";
   std::ofstream(scene) << R"({"glow": {"tier": "dx8", "listings": {")" << name
                        << R"(": "l4.pso"}}})";
-  SceneLoad s = load_scene_file(scene.string());
-  ASSERT_TRUE(s) << s.error;
-  GlowPlan plan = build_glow(s.scene->params);
+  ir::Result<Scene> s = load_scene_file(scene.string());
+  ASSERT_TRUE(s) << s.message();
+  GlowPlan plan = build_glow(s->params);
   EXPECT_TRUE(plan) << plan.error;
 }
 
@@ -50,24 +50,24 @@ TEST(SceneBytecode, Ps1xMaxPresets) {
   auto load = [](const std::string& value) {
     return parse_scene(R"({"glow": {"tier": "dx8", "ps1x_max": )" + value + "}}", "s.json", "");
   };
-  SceneLoad d = parse_scene(R"({"glow": {"tier": "dx8"}})", "s.json", "");
-  ASSERT_TRUE(d) << d.error;
-  EXPECT_EQ(d.scene->params.ps1x_max, FLT_MAX); // the d3d9 preset
-  SceneLoad g = load(R"("geforce3")");
-  ASSERT_TRUE(g) << g.error;
-  EXPECT_EQ(g.scene->params.ps1x_max, 1.0f);
-  SceneLoad r = load(R"("radeon8500")");
-  ASSERT_TRUE(r) << r.error;
-  EXPECT_EQ(r.scene->params.ps1x_max, 8.0f);
-  SceneLoad n = load("4");
-  ASSERT_TRUE(n) << n.error;
-  EXPECT_EQ(n.scene->params.ps1x_max, 4.0f);
-  GlowPlan plan = build_glow(r.scene->params);
+  ir::Result<Scene> d = parse_scene(R"({"glow": {"tier": "dx8"}})", "s.json", "");
+  ASSERT_TRUE(d) << d.message();
+  EXPECT_EQ(d->params.ps1x_max, FLT_MAX); // the d3d9 preset
+  ir::Result<Scene> g = load(R"("geforce3")");
+  ASSERT_TRUE(g) << g.message();
+  EXPECT_EQ(g->params.ps1x_max, 1.0f);
+  ir::Result<Scene> r = load(R"("radeon8500")");
+  ASSERT_TRUE(r) << r.message();
+  EXPECT_EQ(r->params.ps1x_max, 8.0f);
+  ir::Result<Scene> n = load("4");
+  ASSERT_TRUE(n) << n.message();
+  EXPECT_EQ(n->params.ps1x_max, 4.0f);
+  GlowPlan plan = build_glow(r->params);
   ASSERT_TRUE(plan) << plan.error;
   EXPECT_EQ(plan.graph.conventions.ps1x_max_value, 8.0f);
-  SceneLoad bad = load("0.5");
+  ir::Result<Scene> bad = load("0.5");
   EXPECT_FALSE(bad);
-  EXPECT_NE(bad.error.find("/glow/ps1x_max"), std::string::npos) << bad.error;
+  EXPECT_NE(bad.message().find("/glow/ps1x_max"), std::string::npos) << bad.message();
 }
 
 } // namespace

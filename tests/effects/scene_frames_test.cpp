@@ -10,15 +10,15 @@
 namespace tierlift::effects {
 namespace {
 
-SceneLoad parse(const std::string& text) {
+ir::Result<Scene> parse(const std::string& text) {
   return parse_scene(text, "s.json", "");
 }
 
 TEST(SceneFrames, RampsAndAfterimageAreRead) {
-  SceneLoad s = parse(R"({"glow": {"intensity": {"keyframes": [[1, 0.5], [9, 2]]},
+  ir::Result<Scene> s = parse(R"({"glow": {"intensity": {"keyframes": [[1, 0.5], [9, 2]]},
     "weight_scale": 0.9, "afterimage": {"mode": "glow", "gain": {"keyframes": [[4, 0.25]]}}}})");
-  ASSERT_TRUE(s) << s.error;
-  const GlowParams& p = s.scene->params;
+  ASSERT_TRUE(s) << s.message();
+  const GlowParams& p = s->params;
   ASSERT_EQ(p.intensity_ramp.points.size(), 2u);
   EXPECT_EQ(p.intensity_ramp.points[1], (std::pair<unsigned, double>{9, 2.0}));
   EXPECT_EQ(p.intensity, 0.5); // the first keyframe's value
@@ -28,7 +28,7 @@ TEST(SceneFrames, RampsAndAfterimageAreRead) {
   EXPECT_EQ(p.afterimage_gain, 0.25);
   EXPECT_EQ(p.afterimage_gain_ramp.span(), 4u);
   EXPECT_TRUE(p.animated());
-  EXPECT_FALSE(parse("{}").scene->params.animated());
+  EXPECT_FALSE(parse("{}")->params.animated());
 }
 
 struct Bad {
@@ -41,11 +41,11 @@ class SceneFramesErrors : public ::testing::TestWithParam<Bad> {};
 
 TEST_P(SceneFramesErrors, NameTheValueWithItsPosition) {
   const Bad& b = GetParam();
-  SceneLoad s = parse(b.text);
+  ir::Result<Scene> s = parse(b.text);
   ASSERT_FALSE(s) << b.text;
-  EXPECT_NE(s.error.find(b.where), std::string::npos) << s.error;
-  EXPECT_NE(s.error.find(b.says), std::string::npos) << s.error;
-  EXPECT_NE(s.error.find('^'), std::string::npos) << s.error;
+  EXPECT_NE(s.message().find(b.where), std::string::npos) << s.message();
+  EXPECT_NE(s.message().find(b.says), std::string::npos) << s.message();
+  EXPECT_NE(s.message().find('^'), std::string::npos) << s.message();
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 
 const fs::path kScenes = fs::path(TIERLIFT_SOURCE_DIR) / "listings" / "scenes";
 
-SceneLoad parse(const std::string& text) {
+ir::Result<Scene> parse(const std::string& text) {
   return parse_scene(text, "s.json", kScenes.string());
 }
 
@@ -29,13 +29,13 @@ TEST(Scene, EveryShippedSceneLoadsAndBuilds) {
   for (const auto& e : fs::directory_iterator(kScenes)) {
     if (e.path().extension() != ".json" || e.path().filename() == "scene.schema.json") continue;
     ++n;
-    SceneLoad s = load_scene_file(e.path().string());
-    ASSERT_TRUE(s) << e.path() << "\n" << s.error;
-    GlowPlan plan = build_scene_effect(*s.scene);
+    ir::Result<Scene> s = load_scene_file(e.path().string());
+    ASSERT_TRUE(s) << e.path() << "\n" << s.message();
+    GlowPlan plan = build_scene_effect(*s);
     EXPECT_TRUE(plan) << e.path() << ": " << plan.error;
-    img::ImageResult image = load_scene_image(*s.scene);
+    img::ImageResult image = load_scene_image(*s);
     ASSERT_TRUE(image) << image.message();
-    EXPECT_EQ(image->width, s.scene->params.width);
+    EXPECT_EQ(image->width, s->params.width);
   }
   EXPECT_EQ(n, 15u); // default, dx8, sawtooth, sign, dx7, dx7-plain-rounding, radial-beams,
                      // stencil-outline, glsl-blur, afterimage, afterimage-runaway, ramping,
@@ -43,10 +43,10 @@ TEST(Scene, EveryShippedSceneLoadsAndBuilds) {
 }
 
 TEST(Scene, DefaultJsonSaysWhatTheBuiltInDefaultIs) {
-  SceneLoad s = load_scene_file((kScenes / "default.json").string());
-  ASSERT_TRUE(s) << s.error;
-  const GlowParams &a = s.scene->params, &b = default_scene().params;
-  EXPECT_EQ(s.scene->image, "builtin:neon");
+  ir::Result<Scene> s = load_scene_file((kScenes / "default.json").string());
+  ASSERT_TRUE(s) << s.message();
+  const GlowParams &a = s->params, &b = default_scene().params;
+  EXPECT_EQ(s->image, "builtin:neon");
   EXPECT_EQ(a.width, 1280u);
   EXPECT_EQ(a.height, 720u);
   EXPECT_EQ(a.width, b.width);
@@ -64,11 +64,11 @@ TEST(Scene, DefaultJsonSaysWhatTheBuiltInDefaultIs) {
 }
 
 TEST(Scene, FieldsAreRead) {
-  SceneLoad s = parse(R"({"size": [64, 48], "glow": {"tier": "dx8", "downsample": 3,
+  ir::Result<Scene> s = parse(R"({"size": [64, 48], "glow": {"tier": "dx8", "downsample": 3,
     "format": "rgba8", "half_texel": false, "intensity": 0.5, "taps": 5,
     "profile": {"gaussians": [{"sigma": 2, "weight": 1}]}}})");
-  ASSERT_TRUE(s) << s.error;
-  const GlowParams& p = s.scene->params;
+  ASSERT_TRUE(s) << s.message();
+  const GlowParams& p = s->params;
   EXPECT_EQ(p.width, 64u);
   EXPECT_EQ(p.height, 48u);
   EXPECT_EQ(p.tier, Tier::Dx8);
@@ -91,22 +91,23 @@ class SceneErrors : public ::testing::TestWithParam<Bad> {};
 
 TEST_P(SceneErrors, NameTheFieldWithItsPosition) {
   const Bad& b = GetParam();
-  SceneLoad s = parse(b.text);
+  ir::Result<Scene> s = parse(b.text);
   ASSERT_FALSE(s) << b.text;
-  EXPECT_NE(s.error.find(b.where), std::string::npos) << s.error;
-  EXPECT_NE(s.error.find(b.says), std::string::npos) << s.error;
+  EXPECT_NE(s.message().find(b.where), std::string::npos) << s.message();
+  EXPECT_NE(s.message().find(b.says), std::string::npos) << s.message();
   // The caret sits under the column the message gives.
   const std::string head = b.where;
   const size_t c1 = head.find(':'), c2 = head.find(':', c1 + 1), c3 = head.find(':', c2 + 1);
   const int col = std::stoi(head.substr(c2 + 1, c3 - c2 - 1));
-  const size_t caret_line = s.error.find('^');
-  ASSERT_NE(caret_line, std::string::npos) << s.error;
-  const size_t line_start = s.error.rfind('\n', caret_line) + 1;
-  const size_t src_start = s.error.rfind('\n', line_start - 2) + 1;
+  const size_t caret_line = s.message().find('^');
+  ASSERT_NE(caret_line, std::string::npos) << s.message();
+  const size_t line_start = s.message().rfind('\n', caret_line) + 1;
+  const size_t src_start = s.message().rfind('\n', line_start - 2) + 1;
   // Both the source line and the caret line carry the same indent.
-  const std::string src = s.error.substr(src_start, line_start - 1 - src_start);
+  const std::string src = s.message().substr(src_start, line_start - 1 - src_start);
   const size_t indent = src.find_first_not_of(' ');
-  EXPECT_EQ(caret_line - line_start, col - 1 + (indent == std::string::npos ? 0 : 4)) << s.error;
+  EXPECT_EQ(caret_line - line_start, col - 1 + (indent == std::string::npos ? 0 : 4))
+      << s.message();
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -128,17 +129,17 @@ INSTANTIATE_TEST_SUITE_P(
         Bad{"{\"glow\": {\"taps\": 4}}", "s.json:1:19: error: /glow/taps", "even"}));
 
 TEST(Scene, SyntaxErrorsHaveAPosition) {
-  SceneLoad s = parse("{\n  \"glow\": {\"tier\": \"dx9\", }\n}");
+  ir::Result<Scene> s = parse("{\n  \"glow\": {\"tier\": \"dx9\", }\n}");
   ASSERT_FALSE(s);
-  EXPECT_NE(s.error.find("s.json:2:27: error: syntax error"), std::string::npos) << s.error;
+  EXPECT_NE(s.message().find("s.json:2:27: error: syntax error"), std::string::npos) << s.message();
 }
 
 TEST(Scene, WeightsThatDoNotSumToOneWarnByHowMuch) {
-  SceneLoad s = parse(R"({"glow": {"profile": {"gaussians": [
+  ir::Result<Scene> s = parse(R"({"glow": {"profile": {"gaussians": [
       {"sigma": 3, "weight": 0.49}, {"sigma": 1, "weight": 0.49}]}}})");
-  ASSERT_TRUE(s) << s.error;
+  ASSERT_TRUE(s) << s.message();
   // 0.98 per axis, 0.98² = 0.9604 after both: 3.96 % darker.
-  const std::vector<std::string> w = glow_warnings(s.scene->params);
+  const std::vector<std::string> w = glow_warnings(s->params);
   ASSERT_EQ(w.size(), 1u);
   EXPECT_EQ(w[0], "profile weights sum to 0.98: the glow is 3.96 % darker than its sources "
                   "(0.9604 after both axes)");
@@ -148,11 +149,11 @@ TEST(Scene, WeightsThatDoNotSumToOneWarnByHowMuch) {
 TEST(Scene, SawtoothTapsByHand) {
   // period 2 px, radius 3 px, N = 1: saw(x) = 1 − frac(|x|/2) → x = 0: 1, ±1: ½, ±2: 1, ±3: ½;
   // the sum is 5, so the taps are 0.2, 0.1, 0.2, 0.1 from the centre out.
-  SceneLoad s = parse(R"({"glow": {"downsample": 1,
+  ir::Result<Scene> s = parse(R"({"glow": {"downsample": 1,
       "profile": {"sawtooth": {"period": 2, "radius": 3, "weight": 1}}}})");
-  ASSERT_TRUE(s) << s.error;
+  ASSERT_TRUE(s) << s.message();
   std::string err;
-  std::vector<BlurTap> taps = sample_blur_profile(s.scene->params.profile, 1, &err);
+  std::vector<BlurTap> taps = sample_blur_profile(s->params.profile, 1, &err);
   ASSERT_EQ(taps.size(), 7u) << err;
   const double want[7] = {0.1, 0.2, 0.1, 0.2, 0.1, 0.2, 0.1};
   for (int k = 0; k < 7; ++k) {

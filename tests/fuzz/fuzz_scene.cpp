@@ -13,14 +13,14 @@ using namespace tierlift;
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
-  effects::SceneLoad r = effects::parse_scene(
+  ir::Result<effects::Scene> r = effects::parse_scene(
       text, "fuzz.json", std::string(TIERLIFT_SOURCE_DIR) + "/listings/scenes");
   if (!r) {
     // Compiler form: "fuzz.json:LINE:COL: error: …" (or the named PNG's own error).
-    if (r.error.empty() || r.error.find("error: ") == std::string::npos) std::abort();
+    if (r.message().empty() || r.message().find("error: ") == std::string::npos) std::abort();
     return 0;
   }
-  const effects::GlowParams& p = r.scene->params;
+  const effects::GlowParams& p = r->params;
   if (p.width == 0 || p.height == 0 || p.downsample < 1 || p.downsample > 4) std::abort();
   return 0;
 }

@@ -144,3 +144,33 @@ TEST(Semantics, TextureWritesAndImplicitEffects) {
 }
 
 } // namespace
+
+// The texm3x2* / texm3x3* family: every row names its product's size, the pads are marked,
+// and no instruction outside the family claims a row (the validator's ordering rules, the
+// interpreter's pad registers and the ps_1_1 _bx2 allowance all read these columns).
+TEST(Semantics, TextureMatrixRows) {
+  const struct {
+    Opcode op;
+    uint8_t rows;
+    bool pad;
+  } family[] = {
+      {Opcode::TexM3x2Pad, 2, true},    {Opcode::TexM3x2Tex, 2, false},
+      {Opcode::TexM3x2Depth, 2, false}, {Opcode::TexM3x3Pad, 3, true},
+      {Opcode::TexM3x3Tex, 3, false},   {Opcode::TexM3x3, 3, false},
+      {Opcode::TexM3x3Spec, 3, false},  {Opcode::TexM3x3VSpec, 3, false},
+  };
+  size_t members = 0;
+  for (const auto& f : family) {
+    SCOPED_TRACE(ir::op_info(f.op).mnemonic);
+    EXPECT_EQ(ir::texm_rows(f.op), f.rows);
+    EXPECT_EQ(ir::is_texm_pad(f.op), f.pad);
+    EXPECT_EQ(ir::is_texm_final(f.op), !f.pad);
+    // A pad defines nothing readable; every row reads TC(m), the final rows the pads too.
+    EXPECT_EQ(ir::op_writes(f.op, Profile::ps_1_1) == 0, f.pad || f.op == Opcode::TexM3x2Depth);
+    EXPECT_EQ(ir::op_semantics(f.op).implicit & ir::kReadsPadRows, f.pad ? 0 : ir::kReadsPadRows);
+  }
+  for (const ir::OpInfo& info : ir::opcode_table()) members += ir::texm_rows(info.op) != 0;
+  EXPECT_EQ(members, std::size(family));
+  EXPECT_EQ(ir::texm_rows(Opcode::TexDp3Tex), 0);
+  EXPECT_FALSE(ir::is_texm_pad(Opcode::Tex));
+}

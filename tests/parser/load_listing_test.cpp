@@ -25,10 +25,10 @@ const Tokens kPs11Mov = {0xFFFF0101, 0x00000001, 0x800F0000, 0x90E40000, 0x0000F
 TEST(LoadListing, RawTokenStreamWhateverTheName) {
   for (const char* name : {"a.pso", "a.bin", "a.fxo", "a.psh", "noext"}) {
     Loaded l = load(as::tokens_to_bytes(kPs11Mov), name);
-    ASSERT_TRUE(l.r.program.has_value()) << name << "\n" << l.rendered;
-    EXPECT_EQ(l.r.form, as::ListingForm::TokenStream);
-    EXPECT_EQ(l.r.program->profile, ir::Profile::ps_1_1);
-    EXPECT_EQ(l.r.program->code.size(), 1u);
+    ASSERT_TRUE(l.r().program.ok()) << name << "\n" << l.rendered;
+    EXPECT_EQ(l.r().form, as::ListingForm::TokenStream);
+    EXPECT_EQ(l.r().program->profile, ir::Profile::ps_1_1);
+    EXPECT_EQ(l.r().program->code.size(), 1u);
   }
 }
 
@@ -38,20 +38,20 @@ TEST(LoadListing, FxcHeaderByteArray) {
                   "      1,   1, 255, 255,   1,   0,   0,   0,   0,   0,  15, 128,\n"
                   "      0,   0, 228, 144, 255, 255,   0,   0\n};\n";
   Loaded l = load(h, "shader.h");
-  ASSERT_TRUE(l.r.program.has_value()) << l.rendered;
-  EXPECT_EQ(l.r.form, as::ListingForm::TokenArray);
-  EXPECT_EQ(l.r.tokens, kPs11Mov);
+  ASSERT_TRUE(l.r().program.ok()) << l.rendered;
+  EXPECT_EQ(l.r().form, as::ListingForm::TokenArray);
+  EXPECT_EQ(l.r().tokens, kPs11Mov);
 }
 
 TEST(LoadListing, DwordArrayAndText) {
   Loaded a = load("const DWORD s[] = { 0xffff0101, 0x00000001, 0x800f0000, 0x90e40000, "
                   "0x0000ffff };\n",
                   "s.h");
-  ASSERT_TRUE(a.r.program.has_value()) << a.rendered;
-  EXPECT_EQ(a.r.form, as::ListingForm::TokenArray);
+  ASSERT_TRUE(a.r().program.ok()) << a.rendered;
+  EXPECT_EQ(a.r().form, as::ListingForm::TokenArray);
   Loaded t = load("ps.1.1\nmov r0, v0\n", "s.psh");
-  ASSERT_TRUE(t.r.program.has_value()) << t.rendered;
-  EXPECT_EQ(t.r.form, as::ListingForm::Text);
+  ASSERT_TRUE(t.r().program.ok()) << t.rendered;
+  EXPECT_EQ(t.r().form, as::ListingForm::Text);
 }
 
 // Diagnostics on a token stream name the byte offset of the token: an unknown opcode
@@ -60,7 +60,7 @@ TEST(LoadListing, DiagnosticsNameTheTokenOffset) {
   Tokens t = kPs11Mov;
   t.insert(t.end() - 1, 0x000000AB);
   Loaded l = load(as::tokens_to_bytes(t));
-  EXPECT_FALSE(l.r.program.has_value());
+  EXPECT_FALSE(l.r().program.ok());
   EXPECT_EQ(l.rendered.rfind("shader.pso:+0x10: error: ", 0), 0u) << l.rendered;
   // One line: no source line and no caret under it.
   EXPECT_EQ(l.rendered.find('\n'), l.rendered.size() - 1) << l.rendered;
@@ -72,7 +72,7 @@ TEST(LoadListing, ValidatorErrorsNameTheTokenOffset) {
   Tokens t = {0xFFFF0101, 0x00000001, 0x800F0002, 0x90E40000,
               0x00000001, 0x800F0000, 0x90E40000, 0x0000FFFF};
   Loaded l = load(as::tokens_to_bytes(t));
-  EXPECT_FALSE(l.r.program.has_value());
+  EXPECT_FALSE(l.r().program.ok());
   EXPECT_NE(l.rendered.find("shader.pso:+0x8: error: "), std::string::npos) << l.rendered;
   EXPECT_NE(l.rendered.find("[register-range]"), std::string::npos) << l.rendered;
 }
@@ -90,8 +90,8 @@ TEST(LoadListing, BinaryFilesGetOneLine) {
   };
   for (const Case& c : cases) {
     Loaded l = load(c.bytes, "thing.bin");
-    EXPECT_FALSE(l.r.program.has_value());
-    EXPECT_EQ(l.r.form, as::ListingForm::Binary);
+    EXPECT_FALSE(l.r().program.ok());
+    EXPECT_EQ(l.r().form, as::ListingForm::Binary);
     EXPECT_EQ(l.rendered.rfind("thing.bin: error: this is ", 0), 0u) << l.rendered;
     EXPECT_NE(l.rendered.find(c.expect), std::string::npos) << l.rendered;
     EXPECT_EQ(l.rendered.find('\n'), l.rendered.size() - 1) << l.rendered;
@@ -106,9 +106,9 @@ TEST(LoadListing, TextAndTokensGiveTheSameProgram) {
   as::LoadOptions skip;
   skip.skip_validation = true;
   Loaded t = load(text, "x.vsh", skip);
-  ASSERT_TRUE(t.r.program.has_value()) << t.rendered;
-  Loaded b = load(as::tokens_to_bytes(as::assemble(*t.r.program)), "x.vso", skip);
-  ASSERT_TRUE(b.r.program.has_value()) << b.rendered;
-  EXPECT_TRUE(ir::same_ir(*t.r.program, *b.r.program))
-      << ir::ir_difference(*t.r.program, *b.r.program);
+  ASSERT_TRUE(t.r().program.ok()) << t.rendered;
+  Loaded b = load(as::tokens_to_bytes(as::assemble(*t.r().program)), "x.vso", skip);
+  ASSERT_TRUE(b.r().program.ok()) << b.rendered;
+  EXPECT_TRUE(ir::same_ir(*t.r().program, *b.r().program))
+      << ir::ir_difference(*t.r().program, *b.r().program);
 }

@@ -34,19 +34,19 @@ TEST(WindowsLeniency, ScalarSourceWithoutReplicateReadsW) {
   for (uint32_t opcode : {0x0Eu /* exp */, 0x0Fu /* log */, 0x06u /* rcp */, 0x07u /* rsq */}) {
     SCOPED_TRACE(opcode);
     Loaded l = load(as::tokens_to_bytes(d3d8_scalar_stream(opcode)), false);
-    ASSERT_TRUE(l.r.program.has_value()) << l.rendered;
+    ASSERT_TRUE(l.r().program.ok()) << l.rendered;
     EXPECT_EQ(l.count(ir::Severity::Warning, "swizzle"), 1u) << l.rendered;
     // The warning sits on the source token (index 6, byte 0x18) and names c1.w.
     EXPECT_NE(l.rendered.find("s.vso:+0x18: warning: "), std::string::npos) << l.rendered;
     EXPECT_NE(l.rendered.find("c1.w"), std::string::npos) << l.rendered;
     // The IR reads .w: replicate w = 0b11'11'11'11.
-    EXPECT_EQ(l.r.program->code[1].src[0].swizzle, 0xFF);
+    EXPECT_EQ(l.r().program->code[1].src[0].swizzle, 0xFF);
   }
 }
 
 TEST(WindowsLeniency, StrictRejectsTheScalarSource) {
   Loaded l = load(as::tokens_to_bytes(d3d8_scalar_stream(0x0E)), true);
-  EXPECT_FALSE(l.r.program.has_value());
+  EXPECT_FALSE(l.r().program.ok());
   EXPECT_EQ(l.count(ir::Severity::Error, "swizzle"), 1u) << l.rendered;
   EXPECT_NE(l.rendered.find("s.vso:+0x18: error: "), std::string::npos) << l.rendered;
 }
@@ -54,8 +54,8 @@ TEST(WindowsLeniency, StrictRejectsTheScalarSource) {
 // Text keeps the assembler's rule: a bare rcp source is .x (docs/d3d9-rules.md §4.3), no warning.
 TEST(WindowsLeniency, BareRcpInTextStillReadsX) {
   Loaded l = load("vs.1.1\nmov oPos, c0\nrcp r0, c1\nmov oD0, r0\n", false);
-  ASSERT_TRUE(l.r.program.has_value()) << l.rendered;
-  EXPECT_EQ(l.r.program->code[1].src[0].swizzle, 0x00);
+  ASSERT_TRUE(l.r().program.ok()) << l.rendered;
+  EXPECT_EQ(l.r().program->code[1].src[0].swizzle, 0x00);
   EXPECT_EQ(l.diags.warning_count(), 0u) << l.rendered;
 }
 
@@ -66,23 +66,23 @@ TEST(WindowsLeniency, Ps14TexcrdWithoutMaskWritesXyz) {
   const char* text = "ps_1_4\ndef c0, 0, 0, 0, 1\ntexcrd r0, t0\nmov r0.a, c0.a\n"
                      "cnd r0, r0, c1, c2\n";
   Loaded l = load(text, false);
-  ASSERT_TRUE(l.r.program.has_value()) << l.rendered;
+  ASSERT_TRUE(l.r().program.ok()) << l.rendered;
   EXPECT_EQ(l.count(ir::Severity::Warning, "write-mask"), 1u) << l.rendered;
-  EXPECT_EQ(l.r.program->code[0].dst->mask, 0x7);
+  EXPECT_EQ(l.r().program->code[0].dst->mask, 0x7);
   Tokens expected = {0xFFFF0104, 0x00000051, 0xA00F0000, 0x00000000, 0x00000000,
                      0x00000000, 0x3F800000, 0x00000040, 0x80070000, 0xB0E40000,
                      0x00000001, 0x80080000, 0xA0FF0000, 0x00000050, 0x800F0000,
                      0x80E40000, 0xA0E40001, 0xA0E40002, 0x0000FFFF};
-  EXPECT_EQ(as::assemble(*l.r.program), expected);
+  EXPECT_EQ(as::assemble(*l.r().program), expected);
   // _dw writes .rg.
   Loaded dw = load("ps_1_4\ntexcrd r0, t0_dw.xyw\nmov r0.a, c0.a\n", false);
-  ASSERT_TRUE(dw.r.program.has_value()) << dw.rendered;
-  EXPECT_EQ(dw.r.program->code[0].dst->mask, 0x3);
+  ASSERT_TRUE(dw.r().program.ok()) << dw.rendered;
+  EXPECT_EQ(dw.r().program->code[0].dst->mask, 0x3);
 }
 
 TEST(WindowsLeniency, StrictRejectsTexcrdWithoutMask) {
   Loaded l = load("ps_1_4\ntexcrd r0, t0\nmov r0.a, c0.a\n", true);
-  EXPECT_FALSE(l.r.program.has_value());
+  EXPECT_FALSE(l.r().program.ok());
   EXPECT_EQ(l.count(ir::Severity::Error, "write-mask"), 1u) << l.rendered;
 }
 
@@ -90,6 +90,6 @@ TEST(WindowsLeniency, StrictRejectsTexcrdWithoutMask) {
 TEST(WindowsLeniency, Ps14TexldWithoutMaskIsLegal) {
   for (bool strict : {false, true}) {
     Loaded l = load("ps_1_4\ntexld r0, t0\n", strict);
-    EXPECT_TRUE(l.r.program.has_value()) << l.rendered;
+    EXPECT_TRUE(l.r().program.ok()) << l.rendered;
   }
 }

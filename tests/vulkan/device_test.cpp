@@ -15,19 +15,18 @@ TEST_F(VulkanTest, PicksACpuDeviceByDefault) {
 TEST_F(VulkanTest, UnknownFilterIsAClearError) {
   DeviceOptions o;
   o.gpu_filter = "no-such-gpu-xyz";
-  std::string err;
-  auto d = Device::create(o, &err);
-  EXPECT_EQ(d, nullptr);
-  EXPECT_NE(err.find("no-such-gpu-xyz"), std::string::npos) << err;
+  auto d = Device::create(o);
+  ASSERT_FALSE(d.ok());
+  EXPECT_FALSE(ir::failed_with(d, kNoDeviceRule)); // a device is there, just not that one
+  EXPECT_NE(d.message().find("no-such-gpu-xyz"), std::string::npos) << d.message();
 }
 
 TEST_F(VulkanTest, FilterSelectsByNameCaseInsensitively) {
   DeviceOptions o;
   o.gpu_filter = "LLVMPIPE";
-  std::string err;
-  auto d = Device::create(o, &err);
-  ASSERT_NE(d, nullptr) << err;
-  EXPECT_NE(d->name().find("llvmpipe"), std::string::npos);
+  auto d = Device::create(o);
+  ASSERT_TRUE(d.ok()) << d.message();
+  EXPECT_NE((*d)->name().find("llvmpipe"), std::string::npos);
 }
 
 // constant_inputs and no pixel program: oD0 passes through to every pixel, quantised by the

@@ -6,7 +6,7 @@
 //   * pixel tests: textures s0..s3 (RGBA32F, point-sampled at texel centres with modern pixel
 //     centres, so every pixel reads its own texel exactly) and constants;
 //   * vertex tests: one small triangle per pixel whose three vertices carry the same random
-//     v1..v4; the varyings are decorated Flat on Vulkan (DrawOptions::flat_varyings) and the
+//     v1..v4; the varyings are decorated Flat on Vulkan (flat_varyings.h) and the
 //     CPU device interpolates equal values to themselves, so the pixel sees the vertex result.
 //
 // Comparison: NaN matches NaN, ±inf must match exactly, finite values must satisfy
@@ -26,6 +26,7 @@
 
 #include <fmt/format.h>
 
+#include "flat_varyings.h"
 #include "vk_test_util.h"
 
 namespace tierlift::vulkan::test {
@@ -210,13 +211,17 @@ DiffResult run_diff_with(vulkan::Device& dev, const std::string& vs_text,
   pass.conventions.pixel_center = ir::PixelCenter::Modern;
   pass.conventions.subtexel_bits = int(dev.subtexel_bits());
   adjust(pass);
-  DrawOptions o;
-  o.flat_varyings = s.per_pixel_vertices;
+  // Vulkan draws the same pass, its varyings flat for the vertex tests.
+  cpu::Pass vk_pass = pass;
+  if (s.per_pixel_vertices) {
+    vk_pass.pixel_spirv = flat_pixel_spirv(pass);
+    EXPECT_NE(vk_pass.pixel_spirv, nullptr);
+  }
   out.cpu = img::Image(kDiffW, kDiffH, s.format);
   out.vk = out.cpu;
   cpu::DrawStats st = cpu::draw(pass, out.cpu, 2);
   EXPECT_TRUE(st.ok) << st.error;
-  DrawResult r = dev.draw(pass, out.vk, o);
+  DrawResult r = dev.draw(vk_pass, out.vk);
   EXPECT_TRUE(r.ok) << r.error;
   if (!st.ok || !r.ok) return out;
   out.diff = compare_values(out.cpu, out.vk);

@@ -13,10 +13,9 @@ namespace {
 constexpr uint32_t W = 64, H = 48;
 
 cpu::ConstSetting cst(std::string_view text) {
-  std::string err;
-  auto c = cli::parse_const_setting(text, err);
-  EXPECT_TRUE(c) << err;
-  return c.value_or(cpu::ConstSetting{});
+  auto c = cli::parse_const_setting(text);
+  EXPECT_TRUE(c) << c.message();
+  return c ? *c : cpu::ConstSetting{};
 }
 
 // Tap k at ((k − taps/2 + half)/W, dy/H) with weights that are not all equal (a falling
@@ -37,8 +36,7 @@ cpu::RunRequest blur_request(int taps, double half, img::Format format, uint32_t
     double wk = (taps - k) / total;
     r.constants.push_back(cst(fmt::format("ps:c{}={},{},{},{}", k, wk, wk, wk, wk)));
   }
-  std::string err;
-  r.attrs.push_back(*cli::parse_attr_setting("v3=quad-uv", err));
+  r.attrs.push_back(*cli::parse_attr_setting("v3=quad-uv"));
   auto noise = std::make_shared<const img::Image>(img::builtin_noise(w, h, 7));
   for (uint32_t s = 0; s < (taps == 4 ? 4u : 1u); ++s) r.textures.push_back({s, "noise", noise});
   r.filter = cpu::Filter::Linear;
@@ -47,9 +45,8 @@ cpu::RunRequest blur_request(int taps, double half, img::Format format, uint32_t
 }
 
 cpu::Pass make_pass(const cpu::RunRequest& r, int subtexel_bits) {
-  cpu::RunDiagnostics d;
-  auto p = pass::prepare_pass(r, d);
-  EXPECT_TRUE(p.has_value()) << ir::render_text(d.other, {});
+  ir::Result<pass::Pass> p = pass::prepare_pass(r);
+  EXPECT_TRUE(p.ok()) << p.message();
   if (!p) return {};
   p->conventions.subtexel_bits = subtexel_bits;
   return *p;

@@ -64,14 +64,13 @@ protected:
   // devices, only a machine without any Vulkan device may skip, and not under
   // TIERLIFT_REQUIRE_VULKAN; any other failure fails the test. `d` stays empty then.
   void create_device(std::unique_ptr<Device>& d) {
-    std::string err;
-    CreateFailure failure = CreateFailure::None;
-    d = Device::create({}, &err, &failure);
-    if (!d) {
-      if (failure == CreateFailure::NoDevice)
-        TIERLIFT_SKIP_UNLESS_REQUIRED(::tierlift::test::kRequireVulkan, err);
-      FAIL() << err;
+    ir::Result<std::unique_ptr<Device>> created = Device::create({});
+    if (!created) {
+      if (ir::failed_with(created, kNoDeviceRule))
+        TIERLIFT_SKIP_UNLESS_REQUIRED(::tierlift::test::kRequireVulkan, created.message());
+      FAIL() << created.message();
     }
+    d = std::move(created).value();
     pin_loaded_modules();
   }
   fs::path dir;

@@ -15,25 +15,19 @@
 namespace tierlift::vulkan::test {
 
 // Owned by the program and destroyed at its end, like shared_device (vk_test_util.h).
-inline Device* sync_validated_device(std::string* error, CreateFailure* failure) {
-  static SharedDevice shared = [] {
-    SharedDevice s;
+inline const ir::Result<Device*>& sync_validated_device() {
+  static const ir::Result<Device*> shared = [] {
     DeviceOptions o;
     o.synchronization_validation = true;
-    s.device = program_device(o, &s.error, &s.failure);
-    return s;
+    return program_device(o);
   }();
-  if (error) *error = shared.error;
-  if (failure) *failure = shared.failure;
-  return shared.device;
+  return shared;
 }
 
 // VulkanTest's checks (skip without a device, fail on any message) on that device.
 class ResidentTest : public VulkanTest {
 protected:
-  Device* acquire_device(std::string* error, CreateFailure* failure) override {
-    return sync_validated_device(error, failure);
-  }
+  const ir::Result<Device*>& acquire_device() override { return sync_validated_device(); }
 };
 
 // vs_2_0: oPos = v0, oT0 = v1 + c0, oT1 = v1 + c1 (v1: the quad's uv).

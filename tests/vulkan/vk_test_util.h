@@ -58,9 +58,9 @@ inline void pin_loaded_modules() {
       nullptr);
 }
 
-// A validated device owned by the program (destroyed at its end). nullptr when creation
-// failed: *error says why, *failure whether there is simply no device.
-inline Device* program_device(DeviceOptions o, std::string* error, CreateFailure* failure) {
+// A validated device owned by the program (destroyed at its end), or why there is none
+// (ir::failed_with(r, kNoDeviceRule): simply no device).
+inline ir::Result<Device*> program_device(DeviceOptions o) {
   o.validation = true;
   o.on_destroyed = [](const std::vector<std::string>& messages) {
     ProgramDevices& p = program_devices();
@@ -68,12 +68,12 @@ inline Device* program_device(DeviceOptions o, std::string* error, CreateFailure
     p.messages_at_destruction.insert(p.messages_at_destruction.end(), messages.begin(),
                                      messages.end());
   };
-  std::unique_ptr<Device> d = Device::create(o, error, failure);
-  if (!d) return nullptr;
+  ir::Result<std::unique_ptr<Device>> d = Device::create(o);
+  if (!d) return std::move(d).failure();
   pin_loaded_modules();
   ProgramDevices& p = program_devices();
   std::lock_guard<std::mutex> lock(p.mutex);
-  p.devices.push_back(std::move(d));
+  p.devices.push_back(std::move(d).value());
   return p.devices.back().get();
 }
 
@@ -98,41 +98,27 @@ inline const bool kDeviceTeardownRegistered =
     (::testing::AddGlobalTestEnvironment(new DeviceTeardown), true);
 
 // The device every test shares (instance creation with validation costs ~100 ms).
-struct SharedDevice {
-  Device* device = nullptr;
-  std::string error;
-  CreateFailure failure = CreateFailure::None;
-};
-inline Device* shared_device(std::string* error, CreateFailure* failure = nullptr) {
-  static SharedDevice shared = [] {
-    SharedDevice s;
-    s.device = program_device({}, &s.error, &s.failure);
-    return s;
-  }();
-  if (error) *error = shared.error;
-  if (failure) *failure = shared.failure;
-  return shared.device;
+inline const ir::Result<Device*>& shared_device() {
+  static const ir::Result<Device*> shared = program_device({});
+  return shared;
 }
 
 class VulkanTest : public ::testing::Test {
 protected:
   // The device the fixture runs on; a fixture needing other validation options overrides it.
-  virtual vulkan::Device* acquire_device(std::string* error, CreateFailure* failure) {
-    return shared_device(error, failure);
-  }
+  virtual const ir::Result<vulkan::Device*>& acquire_device() { return shared_device(); }
 
   void SetUp() override {
-    std::string err;
-    CreateFailure failure = CreateFailure::None;
-    dev = acquire_device(&err, &failure);
-    if (!dev) {
+    const ir::Result<vulkan::Device*>& got = acquire_device();
+    if (!got) {
       // Only a machine without any Vulkan device may skip (and not under
       // TIERLIFT_REQUIRE_VULKAN); a missing validation layer or any other failure is a test
       // failure.
-      if (failure == CreateFailure::NoDevice)
-        TIERLIFT_SKIP_UNLESS_REQUIRED(::tierlift::test::kRequireVulkan, err);
-      FAIL() << err;
+      if (ir::failed_with(got, kNoDeviceRule))
+        TIERLIFT_SKIP_UNLESS_REQUIRED(::tierlift::test::kRequireVulkan, got.message());
+      FAIL() << got.message();
     }
+    dev = *got;
     dev->clear_messages();
   }
   void TearDown() override {
@@ -174,8 +160,7 @@ struct TwoWays {
 // Draws `pass` on the CPU device and on `dev` into targets of the given size and format
 // (both start as `initial` when given, else zero) and compares them.
 inline TwoWays draw_both(vulkan::Device& dev, const cpu::Pass& pass, uint32_t w, uint32_t h,
-                         img::Format format, const img::Image* initial = nullptr,
-                         const DrawOptions& options = {}) {
+                         img::Format format, const img::Image* initial = nullptr) {
   TwoWays t;
   t.cpu = initial ? *initial : img::Image(w, h, format);
   t.cpu.format = format;
@@ -185,7 +170,7 @@ inline TwoWays draw_both(vulkan::Device& dev, const cpu::Pass& pass, uint32_t w,
   t.cpu_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   EXPECT_TRUE(s.ok) << s.error;
-  DrawResult r = dev.draw(pass, t.vk, options);
+  DrawResult r = dev.draw(pass, t.vk);
   EXPECT_TRUE(r.ok) << r.error;
   t.vk_ms = r.setup_ms + r.draw_ms;
   auto c = img::compare(t.cpu, t.vk);

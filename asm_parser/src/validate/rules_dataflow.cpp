@@ -87,7 +87,7 @@ struct Flow {
     // texdepth (r5) and texm3x2depth (t(m+1)) leave their register unusable afterwards.
     // (A texm3x2pad/texm3x3pad register reads as never written: the documentation calls
     // reading it undefined, unconfirmed.)
-    if (ins.op == Opcode::TexDepth || ins.op == Opcode::TexM3x2Depth) {
+    if (ir::has_implicit(ins, ir::kWritesDepth)) {
       written[key] = 0;
       killed[key] = std::string(mnemonic(ins));
       return;

@@ -65,9 +65,7 @@ void check_instr_mods(Ctx& c, const ir::Instruction& ins) {
 }
 
 bool bx2_allowed_on_texture_op(const Ctx& c, Opcode op) {
-  bool m3x = op == Opcode::TexM3x2Pad || op == Opcode::TexM3x2Tex || op == Opcode::TexM3x2Depth ||
-             op == Opcode::TexM3x3Pad || op == Opcode::TexM3x3Tex || op == Opcode::TexM3x3 ||
-             op == Opcode::TexM3x3Spec || op == Opcode::TexM3x3VSpec;
+  const bool m3x = ir::texm_rows(op) != 0; // the texm3x2* / texm3x3* rows
   if (c.target == ir::Profile::ps_1_1) return m3x;
   // ps_1_2/1_3: every tex* source but these four (the texbem allowance is a doc conflict;
   // the instruction pages' exclusion is used).

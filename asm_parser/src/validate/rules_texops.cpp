@@ -12,14 +12,6 @@ namespace {
 using ir::Opcode;
 using ir::RegFile;
 
-bool is_3x2_final(Opcode op) {
-  return op == Opcode::TexM3x2Tex || op == Opcode::TexM3x2Depth;
-}
-bool is_3x3_final(Opcode op) {
-  return op == Opcode::TexM3x3Tex || op == Opcode::TexM3x3 || op == Opcode::TexM3x3Spec ||
-         op == Opcode::TexM3x3VSpec;
-}
-
 uint32_t dst_index(const ir::Instruction& ins) {
   return ins.dst ? ins.dst->index : 0;
 }
@@ -42,55 +34,48 @@ void check_m_greater_n(Ctx& c, const ir::Instruction& ins) {
                         mnemonic(ins), ins.dst->index, ins.src[0].index));
 }
 
+// The rows of a texm3x2 / texm3x3 product (the table's texm columns): rows - 1 pads on
+// consecutive t# with the same source, then the final row on the next t#.
+bool product_at(const std::vector<ir::Instruction>& code, size_t first, uint8_t rows) {
+  if (first + rows > code.size()) return false;
+  for (size_t k = 0; k < rows; ++k) {
+    const ir::Instruction& r = code[first + k];
+    const bool last = k + 1 == rows;
+    if (ir::texm_rows(r.op) != rows || ir::is_texm_pad(r.op) == last) return false;
+    if (k > 0 && !continues(code[first + k - 1], r, 1)) return false;
+  }
+  return true;
+}
+
 void check_matrix_rows(Ctx& c, const std::vector<ir::Instruction>& code, size_t i) {
   const ir::Instruction& ins = code[i];
-  auto at = [&](size_t k) -> const ir::Instruction* {
-    return k < code.size() ? &code[k] : nullptr;
-  };
-  const ir::Instruction* prev = i > 0 ? &code[i - 1] : nullptr;
-  const ir::Instruction* prev2 = i > 1 ? &code[i - 2] : nullptr;
-  const ir::Instruction* next = at(i + 1);
-  const ir::Instruction* next2 = at(i + 2);
-  uint32_t m = dst_index(ins);
-  switch (ins.op) {
-  case Opcode::TexM3x2Pad:
-    if (!(next && is_3x2_final(next->op) && continues(ins, *next, 1)))
-      c.error(ins.loc, "texture-op",
-              fmt::format("texm3x2pad t{} must be followed by texm3x2tex or texm3x2depth t{} "
-                          "with the same source",
-                          m, m + 1));
-    break;
-  case Opcode::TexM3x2Tex:
-  case Opcode::TexM3x2Depth:
-    if (!(prev && prev->op == Opcode::TexM3x2Pad && continues(*prev, ins, 1)))
-      c.error(ins.loc, "texture-op",
-              fmt::format("{} t{} must directly follow texm3x2pad t{} with the same source",
-                          mnemonic(ins), m, m == 0 ? 0 : m - 1));
-    break;
-  case Opcode::TexM3x3Pad: {
-    bool first = next && next->op == Opcode::TexM3x3Pad && continues(ins, *next, 1) && next2 &&
-                 is_3x3_final(next2->op) && continues(ins, *next2, 2);
-    bool second = prev && prev->op == Opcode::TexM3x3Pad && continues(*prev, ins, 1) && next &&
-                  is_3x3_final(next->op) && continues(ins, *next, 1);
-    if (!first && !second)
-      c.error(ins.loc, "texture-op",
-              "texm3x3pad comes in pairs on consecutive t#, followed by texm3x3tex, texm3x3, "
-              "texm3x3spec or texm3x3vspec on the next t#, all with the same source");
-    break;
-  }
-  case Opcode::TexM3x3Tex:
-  case Opcode::TexM3x3:
-  case Opcode::TexM3x3Spec:
-  case Opcode::TexM3x3VSpec:
-    if (!(prev && prev2 && prev->op == Opcode::TexM3x3Pad && prev2->op == Opcode::TexM3x3Pad &&
-          continues(*prev2, *prev, 1) && continues(*prev, ins, 1)))
-      c.error(ins.loc, "texture-op",
-              fmt::format("{} t{} must directly follow texm3x3pad t{} and texm3x3pad t{} with "
-                          "the same source",
-                          mnemonic(ins), m, m < 2 ? 0 : m - 2, m < 1 ? 0 : m - 1));
-    break;
-  default: break;
-  }
+  const uint8_t rows = ir::texm_rows(ins.op);
+  if (rows == 0) return;
+  // A pad is row 0..rows-2 of some product, the final row only row rows-1.
+  bool placed = false;
+  const size_t last_row = rows - 1u;
+  for (size_t row = ir::is_texm_pad(ins.op) ? 0 : last_row; row <= last_row && !placed; ++row)
+    placed = row <= i && product_at(code, i - row, rows);
+  if (placed) return;
+  const uint32_t m = dst_index(ins);
+  if (rows == 2 && ir::is_texm_pad(ins.op))
+    c.error(ins.loc, "texture-op",
+            fmt::format("texm3x2pad t{} must be followed by texm3x2tex or texm3x2depth t{} "
+                        "with the same source",
+                        m, m + 1));
+  else if (rows == 2)
+    c.error(ins.loc, "texture-op",
+            fmt::format("{} t{} must directly follow texm3x2pad t{} with the same source",
+                        mnemonic(ins), m, m == 0 ? 0 : m - 1));
+  else if (ir::is_texm_pad(ins.op))
+    c.error(ins.loc, "texture-op",
+            "texm3x3pad comes in pairs on consecutive t#, followed by texm3x3tex, texm3x3, "
+            "texm3x3spec or texm3x3vspec on the next t#, all with the same source");
+  else
+    c.error(ins.loc, "texture-op",
+            fmt::format("{} t{} must directly follow texm3x3pad t{} and texm3x3pad t{} with "
+                        "the same source",
+                        mnemonic(ins), m, m < 2 ? 0 : m - 2, m < 1 ? 0 : m - 1));
 }
 
 void check_bem_reuse(Ctx& c) {

@@ -11,6 +11,7 @@
 
 #include "tierlift/asm/load.h"
 #include "tierlift/effects/stage_states.h"
+#include "tierlift/ir/result_diagnostics.h"
 
 namespace tierlift::effects::tss {
 namespace {
@@ -86,17 +87,16 @@ std::string op_comment(const Operation& o, uint32_t n, std::string_view state) {
 
 std::shared_ptr<const ir::Program> read(std::string text, std::string name, std::string* error) {
   ir::SourceManager sources;
-  ir::DiagnosticSink diags;
   const uint32_t file = sources.add(std::move(name), std::move(text));
   as::LoadOptions options;
   options.parse.allow_include = false;
   options.warnings = false;
-  as::LoadResult r = as::load_listing(file, sources, diags, options);
+  as::Loaded r = as::load_listing(file, sources, options);
   if (!r.program) {
-    if (error) *error = ir::render_text(diags, sources);
+    if (error) *error = ir::render_text(r.program.diagnostics(), sources);
     return nullptr;
   }
-  return std::make_shared<const ir::Program>(std::move(*r.program));
+  return std::make_shared<const ir::Program>(std::move(r.program).value());
 }
 
 } // namespace

@@ -4,6 +4,7 @@
 
 #include "tierlift/asm/load.h"
 #include "tierlift/io/bounded_read.h"
+#include "tierlift/ir/result_diagnostics.h"
 #include "tierlift/listings/embedded.h"
 
 namespace tierlift::effects {
@@ -17,7 +18,6 @@ std::shared_ptr<const ir::Program> parse_and_validate(std::string text, std::str
                                                       const ListingOptions& listing,
                                                       std::string* error) {
   ir::SourceManager sources;
-  ir::DiagnosticSink diags;
   uint32_t file = sources.add(std::move(name), std::move(text));
   as::LoadOptions options;
   options.parse.defines = listing.defines;
@@ -30,19 +30,18 @@ std::shared_ptr<const ir::Program> parse_and_validate(std::string text, std::str
     // --profile checks the listings of its own stage only: every pass has one of each. The
     // stage is known once the listing is read, so read it first without validating.
     ir::SourceManager probe_sources = sources;
-    ir::DiagnosticSink probe_diags;
     as::LoadOptions probe = options;
     probe.skip_validation = true;
-    as::LoadResult p = as::load_listing(file, probe_sources, probe_diags, probe);
+    as::Loaded p = as::load_listing(file, probe_sources, probe);
     if (p.program && ir::stage_of(*listing.profile) == p.program->stage())
       options.profile = listing.profile;
   }
-  as::LoadResult r = as::load_listing(file, sources, diags, options);
+  as::Loaded r = as::load_listing(file, sources, options);
   if (!r.program) {
-    if (error) *error = ir::render_text(diags, sources);
+    if (error) *error = ir::render_text(r.program.diagnostics(), sources);
     return nullptr;
   }
-  return std::make_shared<const ir::Program>(std::move(*r.program));
+  return std::make_shared<const ir::Program>(std::move(r.program).value());
 }
 
 } // namespace

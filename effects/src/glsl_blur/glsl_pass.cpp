@@ -6,6 +6,7 @@
 #include "tierlift/effects/builtin_listing.h"
 
 #include "tierlift/asm/load.h"
+#include "tierlift/ir/result_diagnostics.h"
 
 namespace tierlift::effects {
 namespace {
@@ -29,16 +30,15 @@ std::string twin_text(const glsl::FragmentShader& shader) {
 std::shared_ptr<const ir::Program> assemble(std::string text, const std::string& name,
                                             std::string* error) {
   ir::SourceManager sources;
-  ir::DiagnosticSink diags;
   const uint32_t file = sources.add(name, std::move(text));
   as::LoadOptions options;
   options.warnings = false;
-  as::LoadResult r = as::load_listing(file, sources, diags, options);
+  as::Loaded r = as::load_listing(file, sources, options);
   if (!r.program) {
-    *error = ir::render_text(diags, sources);
+    *error = ir::render_text(r.program.diagnostics(), sources);
     return nullptr;
   }
-  return std::make_shared<const ir::Program>(std::move(*r.program));
+  return std::make_shared<const ir::Program>(std::move(r.program).value());
 }
 
 } // namespace

@@ -34,6 +34,11 @@ std::string file_error(const std::string& path, const std::string& message) {
 
 } // namespace
 
+ir::Failure scene_failure(std::string_view rule, std::string subject, std::string rendered) {
+  return ir::Failure{{ir::Diagnostic{ir::Severity::Error, ir::SourceLoc{}, std::move(rendered),
+                                     std::string(rule), std::move(subject)}}};
+}
+
 std::vector<std::string> glow_warnings(const GlowParams& params) {
   std::vector<std::string> out;
   const double sum = profile_weight_sum(params.profile);
@@ -90,14 +95,14 @@ std::vector<std::string> image_warnings(const img::Image& image) {
   return {};
 }
 
-SceneLoad load_scene_file(const std::string& path) {
+ir::Result<Scene> load_scene_file(const std::string& path) {
+  const std::string name = path == "-" ? "<stdin>" : path;
   // Within the scene cap: a device or a pipe given as the scene is refused after 1 MiB.
   ir::Result<std::string> text = io::read_bounded(path, io::kSceneCap);
-  if (!text)
-    return {std::nullopt, file_error(path == "-" ? "<stdin>" : path, text.message()), true};
+  if (!text) return scene_failure(kSceneIoRule, name, file_error(name, text.message()));
   const std::string base_dir =
       path == "-" ? std::string() : std::filesystem::path(path).parent_path().string();
-  return parse_scene(*text, path == "-" ? "<stdin>" : path, base_dir);
+  return parse_scene(*text, name, base_dir);
 }
 
 Scene default_scene() {
@@ -109,16 +114,24 @@ Scene default_scene() {
   return s;
 }
 
-SceneLoad scene_from_png(const std::string& png_path) {
+ir::Result<Scene> scene_from_png(const std::string& png_path) {
   img::ImageResult png = img::read_image(png_path); // PNG, or PFM for HDR values
-  if (!png) return {std::nullopt, file_error(png_path, png.message()), img::is_io_error(png)};
+  if (!png)
+    return scene_failure(img::is_io_error(png) ? kSceneIoRule : kSceneRule, png_path,
+                         file_error(png_path, png.message()));
   Scene s;
   s.image = png_path;
   s.params.width = png->width;
   s.params.height = png->height;
   s.warnings = glow_warnings(s.params);
   for (std::string& w : image_warnings(*png)) s.warnings.push_back(std::move(w));
-  return {std::move(s), {}};
+  return s;
+}
+
+ir::Result<Scene> load_scene(const std::string& scene_path, const std::string& png_path) {
+  if (!scene_path.empty()) return load_scene_file(scene_path);
+  if (!png_path.empty()) return scene_from_png(png_path);
+  return default_scene();
 }
 
 img::ImageResult load_scene_image(const Scene& scene) {

@@ -175,26 +175,24 @@ std::string resolve_path(const std::string& base_dir, const std::string& path) {
   return (fs::path(base_dir) / path).lexically_normal().string();
 }
 
-SceneLoad parse_scene(std::string_view json_text, const std::string& file_name,
-                      const std::string& base_dir) {
+ir::Result<Scene> parse_scene(std::string_view json_text, const std::string& file_name,
+                              const std::string& base_dir) {
   ir::SourceManager sm;
   const uint32_t file = sm.add(file_name, std::string(json_text));
   JsonLocations where;
   FieldChecker check(sm.files[file].text, file, where);
-  SceneLoad load;
+  std::optional<Scene> scene;
   try {
-    load.scene = parse(sm.files[file].text, file_name, base_dir, check, where);
+    scene = parse(sm.files[file].text, file_name, base_dir, check, where);
   } catch (const std::exception& e) { // not expected; never let it escape
-    load.scene.reset();
     check.error_at(0, 0, fmt::format("internal error while reading the scene: {}", e.what()));
   }
-  if (check.failed()) {
-    load.scene.reset();
+  if (check.failed() || !scene) {
     ir::DiagnosticSink sink;
     check.move_to(sink);
-    load.error = ir::render_text(sink, sm);
+    return scene_failure(kSceneRule, file_name, ir::render_text(sink, sm));
   }
-  return load;
+  return std::move(*scene);
 }
 
 } // namespace tierlift::effects

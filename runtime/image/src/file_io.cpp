@@ -8,6 +8,7 @@
 #include "tierlift/image/io.h"
 #include "tierlift/io/bounded_read.h"
 #include "tierlift/io/output_file.h"
+#include "tierlift/ir/result_diagnostics.h"
 
 namespace tierlift::img {
 
@@ -61,9 +62,7 @@ std::span<const uint8_t> as_bytes(const std::string& s) {
 } // namespace
 
 bool is_io_error(const ImageResult& r) {
-  for (const ir::Diagnostic& d : r.diagnostics())
-    if (d.severity == ir::Severity::Error) return d.rule == kIoRule;
-  return false;
+  return ir::failed_with(r, kIoRule);
 }
 
 ir::Result<std::vector<uint8_t>> read_file_bytes(const std::string& path) {

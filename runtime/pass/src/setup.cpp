@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 #include <map>
+#include <new>
 
 #include "program_reads.h"
 #include "tierlift/image/builtin.h"
@@ -173,9 +174,8 @@ bool check_indices(const RunRequest& req, RunDiagnostics& diags) {
   return ok;
 }
 
-} // namespace
-
-std::optional<Pass> prepare_pass(const RunRequest& req, RunDiagnostics& diags) {
+// prepare_pass's work: its checks report into the sink of the listing they point into.
+std::optional<Pass> prepare(const RunRequest& req, RunDiagnostics& diags) {
   if (req.width == 0 || req.height == 0 || req.width > img::kMaxDimension ||
       req.height > img::kMaxDimension) {
     diags.other.error(
@@ -206,6 +206,46 @@ std::optional<Pass> prepare_pass(const RunRequest& req, RunDiagnostics& diags) {
     set_pixel_inputs(req, pass, diags);
   if (!ok) return std::nullopt;
   return pass;
+}
+
+} // namespace
+
+ir::Result<Pass> prepare_pass(const RunRequest& req) {
+  RunDiagnostics diags;
+  std::optional<Pass> pass;
+  try { // a huge texture may not fit: running out of memory is an error, not a crash
+    pass = prepare(req, diags);
+  } catch (const std::bad_alloc&) {
+    diags.other.error({}, "memory",
+                      fmt::format("not enough memory for a {}x{} target and its textures",
+                                  req.width, req.height));
+  }
+  if (!pass && !diags.has_errors()) // every refusal above reports; keep a Failure non-empty
+    diags.other.error({}, "internal", "the pass could not be prepared");
+  std::vector<ir::Diagnostic> all;
+  auto take = [&](const ir::DiagnosticSink& sink, std::string_view listing) {
+    for (ir::Diagnostic d : sink.all()) {
+      d.subject = std::string(listing);
+      all.push_back(std::move(d));
+    }
+  };
+  take(diags.vs, kVsListing);
+  take(diags.ps, kPsListing);
+  for (const ir::Diagnostic& d : diags.other.all()) all.push_back(d);
+  if (!pass) return ir::Failure{std::move(all)};
+  ir::Result<Pass> out(std::move(*pass));
+  for (ir::Diagnostic& d : all) out.add(std::move(d));
+  return out;
+}
+
+void add_by_listing(RunDiagnostics& diags, const std::vector<ir::Diagnostic>& ds) {
+  for (ir::Diagnostic d : ds) {
+    ir::DiagnosticSink& sink = d.subject == kVsListing   ? diags.vs
+                               : d.subject == kPsListing ? diags.ps
+                                                         : diags.other;
+    if (&sink != &diags.other) d.subject.clear();
+    sink.add(std::move(d));
+  }
 }
 
 std::vector<ProbeValue> read_probes(const img::Image& image,

@@ -17,6 +17,7 @@
 #include "tierlift/asm/parser.h"
 #include "tierlift/ir/diagnostic.h"
 #include "tierlift/ir/program.h"
+#include "tierlift/ir/result.h"
 #include "tierlift/ir/source.h"
 
 namespace tierlift::as {
@@ -47,16 +48,20 @@ struct LoadOptions {
   bool warnings = true; // ValidateOptions::warnings (legal-but-suspicious code)
 };
 
-struct LoadResult {
-  std::optional<ir::Program> program; // set when it was read (and validated, unless skipped)
+// What loading one listing gives. Not a Result<Listing>: `check` and `disasm` report the
+// form, and a token stream's CTAB, of a listing that then fails to disassemble or validate,
+// so those are known whatever happens to the program. Only the program can be missing, and
+// its Result carries every diagnostic of the load: the errors when it is missing, warnings
+// (Windows leniency, the CTAB) beside it when it is there.
+struct Loaded {
   ListingForm form = ListingForm::Text;
   std::optional<ConstantTable> constants; // a token stream's CTAB comment
   std::vector<uint32_t> tokens;           // a token stream's tokens
+  ir::Result<ir::Program> program;        // read (and validated, unless skipped)
 };
 
 // Reads sm.files[file] (its text holds the file's bytes). For a raw token stream the stored
 // text is emptied afterwards: its diagnostics carry byte offsets, never lines to quote.
-LoadResult load_listing(uint32_t file, ir::SourceManager& sm, ir::DiagnosticSink& diags,
-                        const LoadOptions& options = {});
+Loaded load_listing(uint32_t file, ir::SourceManager& sm, const LoadOptions& options = {});
 
 } // namespace tierlift::as

@@ -130,19 +130,6 @@ std::optional<ShaderModule> compile(const ir::Program& program, const CodegenOpt
 std::optional<CompiledPair> compile_pair(const ir::Program& vs, const ir::Program& ps,
                                          const CodegenOptions& options, ir::DiagnosticSink& diags);
 
-// Values for a stage's uniform block (what D3D9 sets through SetVertexShaderConstantF/I/B,
-// SetPixelShaderConstantF and the D3DTSS_BUMPENV* texture-stage states).
-struct UniformValues {
-  std::vector<std::array<float, 4>> f; // c#; missing registers are 0
-  std::array<std::array<int32_t, 4>, 16> i{};
-  std::array<bool, 16> b{};
-  std::array<std::array<float, 4>, 8> bumpenv_mat{}; // per stage: M00, M01, M10, M11
-  std::array<std::array<float, 2>, 8> bumpenv_lum{}; // per stage: LSCALE, LOFFSET
-};
-// The bytes of the module's uniform block (std140, as docs/spirv-mapping.md), as 32-bit
-// words; empty when the module has no block.
-std::vector<uint32_t> pack_uniforms(const ShaderModule& module, const UniformValues& values);
-
 // One line per pruned item ("vertex: removed output oT5: the pixel shader never reads t5"),
 // for --explain.
 std::string explain(const std::vector<PrunedItem>& pruned);

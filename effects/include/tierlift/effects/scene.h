@@ -19,6 +19,7 @@
 #include "tierlift/effects/outline.h"
 #include "tierlift/effects/radial.h"
 #include "tierlift/image/io.h"
+#include "tierlift/ir/result_diagnostics.h"
 
 namespace tierlift::effects {
 
@@ -52,27 +53,31 @@ GlowPlan build_scene_effect(const Scene& scene);
 // The warnings of that effect's parameters (glow_warnings or glsl_blur_warnings).
 std::vector<std::string> effect_warnings(const Scene& scene);
 
-struct SceneLoad {
-  std::optional<Scene> scene;
-  std::string error;     // rendered diagnostics (file:line:col, source line, caret), '\n'-ended
-  bool io_error = false; // the file itself could not be read (missing, over the cap): exit 2
-  explicit operator bool() const { return scene.has_value(); }
-};
+// A scene that cannot be had fails with one error of rule kSceneIoRule when the file itself
+// could not be read (missing, over the cap: the CLI's exit 2), or kSceneRule when it was
+// read and is wrong (exit 1). Its message is the rendered diagnostics ("FILE:LINE:COL:
+// error: …", the source line and a caret; '\n'-ended), not positions: the scene's text lives
+// only inside the loader, so there is no SourceManager left to render them against later.
+inline constexpr std::string_view kSceneIoRule = "io";
+inline constexpr std::string_view kSceneRule = "scene";
 
 // Reads (within io::kSceneCap; "-" = standard input) and validates a scene file; relative
 // paths in it are relative to its folder.
-SceneLoad load_scene_file(const std::string& path);
+ir::Result<Scene> load_scene_file(const std::string& path);
 // The same for text already read: `file_name` is what diagnostics show, `base_dir` the
 // folder that relative paths start from ("" = the working directory).
-SceneLoad parse_scene(std::string_view json_text, const std::string& file_name,
-                      const std::string& base_dir);
+ir::Result<Scene> parse_scene(std::string_view json_text, const std::string& file_name,
+                              const std::string& base_dir);
 
 // builtin:neon at 1280×720 with the default glow parameters (GlowParams{}).
 Scene default_scene();
 
 // `--image`: a PNG with alpha (alpha marks what glows) and the default glow parameters at
 // the PNG's size. Errors: "FILE: error: …".
-SceneLoad scene_from_png(const std::string& png_path);
+ir::Result<Scene> scene_from_png(const std::string& png_path);
+// What `glow` and `report` draw: the scene file when one is named, else the PNG, else
+// default_scene().
+ir::Result<Scene> load_scene(const std::string& scene_path, const std::string& png_path);
 
 // The scene image as RGBA32F: the built-in made in code at params' size, or the PNG read
 // again (its size must still equal params.width × params.height).

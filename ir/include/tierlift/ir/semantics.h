@@ -52,6 +52,13 @@ struct OpSemantics {
   uint8_t src_lanes = 0; // LaneRule::Fixed: the lanes each vector source reads
   bool samples = false;  // reads a texture (through s#, or stage m in ps_1_x)
   uint16_t implicit = kNoImplicit;
+  // ps_1_x texture-matrix products (texm3x2*, texm3x3*): the rows of the product the
+  // instruction belongs to (2 or 3; 0 for every other instruction), and whether it is a pad
+  // (one of the rows - 1 rows before the last, on consecutive t#) or the final row that
+  // completes the product. The validator's ordering rules, the interpreter's pad registers
+  // and the code generator read these instead of listing the opcodes.
+  uint8_t texm_rows = 0;
+  bool texm_pad = false;
 };
 
 const OpSemantics& op_semantics(Opcode op);
@@ -83,6 +90,18 @@ uint8_t source_read_mask(const Instruction& ins, size_t k, Profile p, int sample
 // names s# as a source. True when `ins` samples a texture.
 inline bool samples(const Instruction& ins) {
   return op_semantics(ins.op).samples;
+}
+
+// Rows of the texm3x2* / texm3x3* product `op` belongs to; 0 outside the family.
+inline uint8_t texm_rows(Opcode op) {
+  return op_semantics(op).texm_rows;
+}
+inline bool is_texm_pad(Opcode op) {
+  return op_semantics(op).texm_pad;
+}
+// The last row of a texm3x2* / texm3x3* product (texm3x2tex, texm3x3spec, ...).
+inline bool is_texm_final(Opcode op) {
+  return texm_rows(op) != 0 && !is_texm_pad(op);
 }
 
 inline bool has_implicit(const Instruction& ins, Implicit what) {

@@ -53,11 +53,23 @@ std::string place_taps(const CoordForms& coords, std::vector<Tap>& taps) {
 
 } // namespace detail
 
+namespace detail {
+
+std::string structural_error(std::string_view who, const ir::Program& vs, const ir::Program& ps) {
+  if (!ir::is_vertex(vs.profile) || !ir::is_pixel(ps.profile))
+    return fmt::format("{} needs a vertex listing and a pixel listing", who);
+  if (ir::Status s = ir::validate_ir(vs); !s) return "vertex listing: " + s.message();
+  if (ir::Status s = ir::validate_ir(ps); !s) return "pixel listing: " + s.message();
+  return {};
+}
+
+} // namespace detail
+
 TapExtraction extract_taps(const ir::Program& vs, const std::vector<Vec4>& vs_consts,
                            const ir::Program& ps, const std::vector<Vec4>& ps_consts) {
   TapExtraction out;
-  if (!ir::is_vertex(vs.profile) || !ir::is_pixel(ps.profile)) {
-    out.error = "extract_taps needs a vertex listing and a pixel listing";
+  if (std::string e = detail::structural_error("extract_taps", vs, ps); !e.empty()) {
+    out.error = e;
     return out;
   }
   detail::CoordForms coords = detail::evaluate_coords(vs, vs_consts);

@@ -4,6 +4,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "tierlift/analytic/taps.h"
@@ -35,6 +36,11 @@ struct CoordAffine {
 // A vertex colour oD0/oD1 that is the same constant at every vertex (a full-screen quad's
 // D3DCOLOR), as the pixel stage reads it: saturated to [0, 1] (NUMERICS.md rule 26).
 using ColourConstants = std::array<std::optional<std::array<double, 4>>, 2>;
+
+// "" when `vs` is a vertex and `ps` a pixel listing and both pass ir::validate_ir (the
+// structural checks every backend runs first), else why not: `who` needs a pair, or the
+// first validate_ir error, naming the listing.
+std::string structural_error(std::string_view who, const ir::Program& vs, const ir::Program& ps);
 
 struct CoordForms {
   uint32_t texcoord_input = 0;

@@ -9,8 +9,8 @@ namespace tierlift::analytic {
 ReadExtraction extract_reads(const ir::Program& vs, const std::vector<Vec4>& vs_consts,
                              const ir::Program& ps) {
   ReadExtraction out;
-  if (!ir::is_vertex(vs.profile) || !ir::is_pixel(ps.profile)) {
-    out.error = "extract_reads needs a vertex listing and a pixel listing";
+  if (std::string e = detail::structural_error("extract_reads", vs, ps); !e.empty()) {
+    out.error = e;
     return out;
   }
   detail::CoordForms coords = detail::evaluate_coords(vs, vs_consts);

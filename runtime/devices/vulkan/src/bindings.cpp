@@ -1,4 +1,4 @@
-// Descriptor set 0 of a pass: the uniform blocks filled with codegen::pack_uniforms, the
+// Descriptor set 0 of a pass: the uniform blocks filled with pack_uniforms (uniforms.h), the
 // sampled images with their samplers, and the pipeline layout over them.
 #include "bindings.h"
 
@@ -7,24 +7,9 @@
 #include <fmt/format.h>
 
 #include "pipeline.h"
+#include "tierlift/vulkan/uniforms.h"
 
 namespace tierlift::vulkan {
-namespace {
-
-codegen::UniformValues uniform_values(const pass::ConstantBank& bank, const pass::Pass& pass) {
-  codegen::UniformValues u;
-  u.f = bank.f;
-  u.i = bank.i;
-  u.b = bank.b;
-  for (uint32_t s = 0; s < 8; ++s) {
-    const pass::StageState& st = pass.textures[s].stage;
-    u.bumpenv_mat[s] = st.bumpenv_mat;
-    u.bumpenv_lum[s] = {st.bumpenv_lscale, st.bumpenv_loffset};
-  }
-  return u;
-}
-
-} // namespace
 
 std::string create_bindings(Device::Impl& d, Cleanup& cleanup, const codegen::CompiledPair& pair,
                             const pass::Pass& pass, const SampledImages& images, Bindings& out) {
@@ -39,7 +24,7 @@ std::string create_bindings(Device::Impl& d, Cleanup& cleanup, const codegen::Co
   auto add_ubo = [&](const codegen::ShaderModule& m, const pass::ConstantBank& bank,
                      VkShaderStageFlags stage) {
     if (m.uniforms.size_bytes == 0 || !err.empty()) return;
-    std::vector<uint32_t> words = codegen::pack_uniforms(m, uniform_values(bank, pass));
+    std::vector<uint32_t> words = pack_uniforms(m, bank, pass);
     Ubo u{{}, m.uniforms.binding};
     err = create_buffer(d, cleanup, words.size() * 4, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, u.buf);
     if (!err.empty()) return;

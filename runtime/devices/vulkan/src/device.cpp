@@ -91,16 +91,13 @@ Device::Impl::~Impl() {
 Device::Device(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 Device::~Device() = default;
 
-std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string* error,
-                                       CreateFailure* failure) {
-  if (failure) *failure = CreateFailure::None;
-  // Every failure is Other unless it is one of the two "no device" cases below.
-  auto fail_as = [&](CreateFailure kind, std::string msg) -> std::unique_ptr<Device> {
-    if (error) *error = std::move(msg);
-    if (failure) *failure = kind;
-    return nullptr;
+ir::Result<std::unique_ptr<Device>> Device::create(const DeviceOptions& options) {
+  using Created = ir::Result<std::unique_ptr<Device>>;
+  // Every failure is kDeviceRule unless it is one of the two "no device" cases below.
+  auto fail_as = [](std::string_view rule, std::string msg) -> Created {
+    return ir::fail("vulkan", std::string(rule), std::move(msg));
   };
-  auto fail = [&](std::string msg) { return fail_as(CreateFailure::Other, std::move(msg)); };
+  auto fail = [&](std::string msg) { return fail_as(kDeviceRule, std::move(msg)); };
   auto impl = std::make_unique<Impl>();
 
   std::vector<const char*> layers, extensions;
@@ -142,7 +139,7 @@ std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string
     // The loader answers INCOMPATIBLE_DRIVER when it finds no driver (ICD) at all. Anything
     // else (out of memory, a layer or extension missing, initialization failed) is a fault
     // of an installed Vulkan, not its absence.
-    if (r == VK_ERROR_INCOMPATIBLE_DRIVER) return fail_as(CreateFailure::NoDevice, kNoDriverHint);
+    if (r == VK_ERROR_INCOMPATIBLE_DRIVER) return fail_as(kNoDeviceRule, kNoDriverHint);
     return fail(vk_error("vkCreateInstance", r));
   }
   if (options.validation) {
@@ -159,7 +156,7 @@ std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string
   if (count) r = vkEnumeratePhysicalDevices(impl->instance, &count, devices.data());
   if (r != VK_SUCCESS && r != VK_INCOMPLETE) return fail(vk_error("vkEnumeratePhysicalDevices", r));
   devices.resize(count);
-  if (devices.empty()) return fail_as(CreateFailure::NoDevice, kNoDriverHint);
+  if (devices.empty()) return fail_as(kNoDeviceRule, kNoDriverHint);
   VkPhysicalDevice chosen = VK_NULL_HANDLE;
   std::string names;
   for (VkPhysicalDevice pd : devices) {
@@ -222,7 +219,7 @@ std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string
     return fail(vk_error("vkCreateCommandPool", r));
   }
   impl->on_destroyed = options.on_destroyed; // a device that was never made has nothing to report
-  return std::unique_ptr<Device>(new Device(std::move(impl)));
+  return Created(std::unique_ptr<Device>(new Device(std::move(impl))));
 }
 
 std::string Device::name() const {

@@ -6,7 +6,7 @@
 
 namespace tierlift::vulkan {
 
-DrawResult Device::draw(const pass::Pass& pass, img::Image& target, const DrawOptions& options) {
+DrawResult Device::draw(const pass::Pass& pass, img::Image& target) {
   DrawResult res;
   if (target.width == 0 || target.height == 0 || target.width > img::kMaxDimension ||
       target.height > img::kMaxDimension) {
@@ -29,7 +29,7 @@ DrawResult Device::draw(const pass::Pass& pass, img::Image& target, const DrawOp
   DrawTextures textures;
   textures.target = rt.get();
   textures.host_target = &target;
-  res = draw_pass(*impl_, pass, textures, options);
+  res = draw_pass(*impl_, pass, textures);
   res.setup_ms += create_ms;
   return res;
 }

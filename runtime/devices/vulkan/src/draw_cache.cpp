@@ -34,14 +34,12 @@ private:
 
 } // namespace
 
-std::optional<std::string> draw_key(const pass::Pass& pass, const DrawTextures& textures,
-                                    const DrawOptions& options) {
+std::optional<std::string> draw_key(const pass::Pass& pass, const DrawTextures& textures) {
   if (!pass.vertex_program || !textures.target) return std::nullopt;
   KeyWriter k;
   k.put(pass.vertex_program.get());
   k.put(pass.pixel_program.get());
   k.put(pass.pixel_spirv.get());
-  k.put(options.flat_varyings);
   const ir::Conventions& c = pass.conventions;
   k.put(c.pixel_center);
   k.put(c.subtexel_bits);

@@ -17,11 +17,10 @@ namespace tierlift::vulkan {
 // The key of drawing `pass` with `textures` (host_target ignored): programs (by identity:
 // the entry keeps them alive, so an address cannot be reused while it exists), conventions,
 // constants, vertices, viewport, blend, sampler and stage states, the resident textures of
-// every stage, the targets and the stencil buffer with its state, the options. nullopt: not cached
+// every stage, the targets and the stencil buffer with its state. nullopt: not cached
 // (a pass without a vertex program, or a stage sampling a host image, whose pixels may change
 // between draws).
-std::optional<std::string> draw_key(const pass::Pass& pass, const DrawTextures& textures,
-                                    const DrawOptions& options);
+std::optional<std::string> draw_key(const pass::Pass& pass, const DrawTextures& textures);
 
 struct CachedDraw {
   std::shared_ptr<const ir::Program> vs, ps; // keep the keyed addresses alive

@@ -173,7 +173,7 @@ std::string check_targets(const pass::Pass& pass, const DrawTextures& t) {
 } // namespace
 
 std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawTextures& textures,
-                         const DrawOptions& options, PreparedDraw& out) {
+                         PreparedDraw& out) {
   if (!textures.target) return "no render target";
   Resident& target = *textures.target;
   out.target = &target;
@@ -275,7 +275,7 @@ std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawText
   // constant block) the descriptors above follow, and glslang names its entry point "main"
   // as codegen does.
   const std::vector<uint32_t>& ps_words = pass.pixel_spirv ? *pass.pixel_spirv : pair->ps.words;
-  pd.ps_words = options.flat_varyings ? decorate_inputs_flat(ps_words) : ps_words;
+  pd.ps_words = ps_words;
   pd.blend = pass.blend;
   pd.color_targets = pass.color_targets;
   pd.stencil_attachment = textures.stencil != nullptr;
@@ -355,8 +355,7 @@ std::string submit_draw(Device::Impl& d, PreparedDraw& draw) {
   return err;
 }
 
-DrawResult draw_pass(Device::Impl& d, const pass::Pass& pass, const DrawTextures& textures,
-                     const DrawOptions& options) {
+DrawResult draw_pass(Device::Impl& d, const pass::Pass& pass, const DrawTextures& textures) {
   DrawResult res;
   auto fail = [&](std::string msg) {
     res.ok = false;
@@ -365,8 +364,7 @@ DrawResult draw_pass(Device::Impl& d, const pass::Pass& pass, const DrawTextures
   };
   const auto t0 = Clock::now();
   PreparedDraw prepared;
-  if (std::string e = prepare_draw(d, pass, textures, options, prepared); !e.empty())
-    return fail(e);
+  if (std::string e = prepare_draw(d, pass, textures, prepared); !e.empty()) return fail(e);
   Resident& target = *textures.target;
 
   // The staging buffer of a host target: its contents go up, the result comes back.

@@ -57,7 +57,7 @@ struct PreparedDraw {
 // Creates what drawing `pass` into textures.target needs (host_target is ignored here).
 // Empty string on success; on failure `out` holds nothing that outlives it.
 std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawTextures& textures,
-                         const DrawOptions& options, PreparedDraw& out);
+                         PreparedDraw& out);
 
 // Records the draw: sampled textures made current and readable, the targets made the colour
 // attachments (and the stencil buffer the depth/stencil one), the render pass with the draw.
@@ -70,7 +70,6 @@ std::string submit_draw(Device::Impl& d, PreparedDraw& draw);
 
 // Draws `pass` into textures.target now (prepare, submit, wait). On failure nothing was
 // submitted that changes any texture, and host_target is unchanged.
-DrawResult draw_pass(Device::Impl& d, const pass::Pass& pass, const DrawTextures& textures,
-                     const DrawOptions& options);
+DrawResult draw_pass(Device::Impl& d, const pass::Pass& pass, const DrawTextures& textures);
 
 } // namespace tierlift::vulkan

@@ -250,29 +250,4 @@ void unpack_pixels(const void* src, img::Image& image) {
   }
 }
 
-std::vector<uint32_t> decorate_inputs_flat(const std::vector<uint32_t>& words) {
-  // Header: 5 words. Collect Input variables and find where annotations may go: before the
-  // first type/constant/variable declaration (OpDecorate belongs to the annotation section).
-  if (words.size() < 5) return words;
-  std::vector<uint32_t> inputs;
-  size_t insert_at = 0;
-  for (size_t i = 5; i < words.size();) {
-    uint32_t count = words[i] >> 16, op = words[i] & 0xFFFFu;
-    if (count == 0 || i + count > words.size()) return words;
-    if (op == 59 /* OpVariable */ && count >= 4 && words[i + 3] == 1 /* Input */)
-      inputs.push_back(words[i + 2]);
-    if (insert_at == 0 && op >= 19 /* OpTypeVoid */ && op <= 59 /* OpVariable */) insert_at = i;
-    i += count;
-  }
-  if (insert_at == 0) return words;
-  std::vector<uint32_t> out(words.begin(), words.begin() + static_cast<long>(insert_at));
-  for (uint32_t id : inputs) {
-    out.push_back((3u << 16) | 71u /* OpDecorate */);
-    out.push_back(id);
-    out.push_back(14u /* Flat */);
-  }
-  out.insert(out.end(), words.begin() + static_cast<long>(insert_at), words.end());
-  return out;
-}
-
 } // namespace tierlift::vulkan

@@ -16,10 +16,9 @@ ir::Result<Device*> process_device(const DeviceOptions& options) {
   std::lock_guard<std::mutex> lock(mutex);
   auto key = std::make_pair(options.validation, options.gpu_filter);
   if (auto it = devices->find(key); it != devices->end()) return it->second;
-  std::string error;
-  std::unique_ptr<Device> device = Device::create(options, &error);
-  if (!device) return ir::fail("", "device", error);
-  return (*devices)[key] = device.release(); // intentionally never destroyed
+  ir::Result<std::unique_ptr<Device>> device = Device::create(options);
+  if (!device) return std::move(device).failure();
+  return (*devices)[key] = device->release(); // intentionally never destroyed
 }
 
 ir::Result<pass::DrawReport> PassDevice::draw(const pass::Pass& pass, img::Image& target) {
@@ -31,7 +30,8 @@ ir::Result<pass::DrawReport> PassDevice::draw(const pass::Pass& pass, img::Image
 VulkanRunResult run_job_vulkan(const pass::RunRequest& request, pass::RunDiagnostics& diags,
                                const DeviceOptions& options) {
   VulkanRunResult out;
-  auto prepared = pass::prepare_pass(request, diags);
+  ir::Result<pass::Pass> prepared = pass::prepare_pass(request);
+  pass::add_by_listing(diags, prepared.diagnostics());
   if (!prepared) return out;
   ir::Result<Device*> device = process_device(options);
   if (!device) {

@@ -173,12 +173,12 @@ std::string resolve(TextureSet::State& s, const StageTextures& stages, const Ren
 // The cached draw of `pass`, made now if there is none; nullptr (and *error) on failure,
 // nullptr and no error when the pass is not cached.
 PreparedDraw* cached_draw(TextureSet::State& s, const pass::Pass& pass, const DrawTextures& t,
-                          const DrawOptions& options, std::string* error) {
-  std::optional<std::string> key = draw_key(pass, t, options);
+                          std::string* error) {
+  std::optional<std::string> key = draw_key(pass, t);
   if (!key) return nullptr;
   if (PreparedDraw* p = s.draws.find(*key)) return p;
   auto entry = std::make_unique<CachedDraw>();
-  if (std::string e = prepare_draw(s.d, pass, t, options, entry->draw); !e.empty()) {
+  if (std::string e = prepare_draw(s.d, pass, t, entry->draw); !e.empty()) {
     *error = e;
     return nullptr;
   }
@@ -188,30 +188,29 @@ PreparedDraw* cached_draw(TextureSet::State& s, const pass::Pass& pass, const Dr
 } // namespace
 
 std::string TextureSet::prepare(const pass::Pass& pass, const StageTextures& stages,
-                                TextureId target, const DrawOptions& options) {
+                                TextureId target) {
   RenderTargets targets;
   targets.color[0] = target;
-  return prepare(pass, stages, targets, options);
+  return prepare(pass, stages, targets);
 }
 
 std::string TextureSet::prepare(const pass::Pass& pass, const StageTextures& stages,
-                                const RenderTargets& targets, const DrawOptions& options) {
+                                const RenderTargets& targets) {
   DrawTextures textures;
   if (std::string e = resolve(*state_, stages, targets, textures); !e.empty()) return e;
   std::string error;
-  cached_draw(*state_, pass, textures, options, &error);
+  cached_draw(*state_, pass, textures, &error);
   return error;
 }
 
-DrawResult TextureSet::draw(const pass::Pass& pass, const StageTextures& stages, TextureId target,
-                            const DrawOptions& options) {
+DrawResult TextureSet::draw(const pass::Pass& pass, const StageTextures& stages, TextureId target) {
   RenderTargets targets;
   targets.color[0] = target;
-  return draw(pass, stages, targets, options);
+  return draw(pass, stages, targets);
 }
 
 DrawResult TextureSet::draw(const pass::Pass& pass, const StageTextures& stages,
-                            const RenderTargets& targets, const DrawOptions& options) {
+                            const RenderTargets& targets) {
   DrawTextures textures;
   DrawResult res;
   if (std::string e = resolve(*state_, stages, targets, textures); !e.empty()) {
@@ -219,14 +218,14 @@ DrawResult TextureSet::draw(const pass::Pass& pass, const StageTextures& stages,
     return res;
   }
   const auto t0 = std::chrono::steady_clock::now();
-  PreparedDraw* p = cached_draw(*state_, pass, textures, options, &res.error);
+  PreparedDraw* p = cached_draw(*state_, pass, textures, &res.error);
   if (!res.error.empty()) return res;
   if (!p) { // not cached: made, drawn and destroyed now
     if (std::string e = state_->flush(); !e.empty()) {
       res.error = e;
       return res;
     }
-    return draw_pass(*device_.impl_, pass, textures, options);
+    return draw_pass(*device_.impl_, pass, textures);
   }
   res.setup_ms = ms_since(t0);
   const auto t1 = std::chrono::steady_clock::now();

@@ -112,7 +112,4 @@ uint32_t bytes_per_pixel(img::Format f);
 void pack_pixels(const img::Image& image, void* dst);
 void unpack_pixels(const void* src, img::Image& image);
 
-// SPIR-V rewrite for DrawOptions::flat_varyings: every Input variable gets Flat.
-std::vector<uint32_t> decorate_inputs_flat(const std::vector<uint32_t>& words);
-
 } // namespace tierlift::vulkan

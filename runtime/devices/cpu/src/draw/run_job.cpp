@@ -54,15 +54,8 @@ RunResult run_pass(const Pass& pass, uint32_t width, uint32_t height, img::Forma
 
 RunResult run_job(const RunRequest& req, RunDiagnostics& diags) {
   auto t0 = Clock::now();
-  std::optional<Pass> pass;
-  try { // a huge texture may not fit either
-    pass = pass::prepare_pass(req, diags);
-  } catch (const std::bad_alloc&) {
-    diags.other.error({}, "memory",
-                      fmt::format("not enough memory for a {}x{} target and its textures",
-                                  req.width, req.height));
-    return {};
-  }
+  ir::Result<Pass> pass = pass::prepare_pass(req);
+  pass::add_by_listing(diags, pass.diagnostics());
   if (!pass) return {};
   const double prepare_ms = ms_since(t0);
   RunResult result =

@@ -176,6 +176,9 @@ void match_flow(Prepared& p) {
 } // namespace
 
 Prepared prepare(const ir::Program& program, const ir::Conventions& conv) {
+  // The structural checks every backend runs first (ir/passes.h); the interpreter refuses
+  // a program it cannot run as it refuses any other: std::invalid_argument.
+  if (ir::Status s = ir::validate_ir(program); !s) throw std::invalid_argument(s.message());
   Prepared p;
   p.program = program;
   p.conv = conv;
@@ -210,7 +213,7 @@ Prepared prepare(const ir::Program& program, const ir::Conventions& conv) {
     case OpClass::Decl: broken(ins, "declaration among the instructions");
     }
     // Pad rows count up within a run of texm3x2pad/texm3x3pad.
-    bool pad = ins.op == Opcode::TexM3x2Pad || ins.op == Opcode::TexM3x3Pad;
+    const bool pad = ir::is_texm_pad(ins.op);
     s.pad_row = pad ? std::min<int8_t>(pad_run, 1) : 0;
     pad_run = pad ? static_cast<int8_t>(pad_run + 1) : 0;
     if (ins.dst && ins.dst->file == RegFile::RastOut) {

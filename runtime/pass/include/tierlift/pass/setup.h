@@ -11,7 +11,7 @@
 //   r.attrs.push_back({ir::RegFile::Input, 3, {0, 0, 0, 1}, true});   // v3 = the quad uv
 //   for (uint32_t s = 0; s < 4; ++s) r.textures.push_back({s, "builtin:noise:64x64"});
 //   r.filter = Filter::Linear;  r.address = AddressMode::Clamp;
-//   RunDiagnostics d;  std::optional<Pass> pass = prepare_pass(r, d);
+//   ir::Result<Pass> pass = prepare_pass(r);
 //
 // Rules:
 //   * Geometry is always the full-screen quad. With a vertex program, its position input
@@ -37,6 +37,7 @@
 #include <vector>
 
 #include "tierlift/ir/diagnostic.h"
+#include "tierlift/ir/result.h"
 #include "tierlift/pass/pass.h"
 
 namespace tierlift::pass {
@@ -97,7 +98,8 @@ struct RunRequest {
 };
 
 // Problems, kept apart by where their positions point: into the vertex listing's
-// SourceManager, the pixel listing's, or nowhere (flags, textures, the draw).
+// SourceManager, the pixel listing's, or nowhere (flags, textures, the draw). What a caller
+// that renders them collects (add_by_listing); prepare_pass itself returns one ir::Result.
 struct RunDiagnostics {
   ir::DiagnosticSink vs, ps, other;
   bool has_errors() const { return vs.has_errors() || ps.has_errors() || other.has_errors(); }
@@ -106,9 +108,19 @@ struct RunDiagnostics {
 // opposed to a file that exists but does not decode).
 inline constexpr std::string_view kRuleTextureMissing = "texture-missing";
 
-// The pass `request` describes, textures loaded (each source once). nullopt after reporting
-// errors to `diags`; warnings never stop it. Checks the size too (1..img::kMaxDimension).
-std::optional<Pass> prepare_pass(const RunRequest& request, RunDiagnostics& diags);
+// The pass `request` describes, textures loaded (each source once), or the errors why not;
+// warnings never stop it and ride along with the pass. Checks the size too
+// (1..img::kMaxDimension); running out of memory for the textures is an error ("memory"). The
+// vertex and the pixel listing come from two SourceManagers, and one flat list cannot say which a
+// position points into, so a diagnostic positioned in a listing names it as its subject
+// (kVsListing, kPsListing; a positioned diagnostic's subject is otherwise unused): add_by_listing
+// sorts them back for rendering.
+inline constexpr std::string_view kVsListing = "vs";
+inline constexpr std::string_view kPsListing = "ps";
+ir::Result<Pass> prepare_pass(const RunRequest& request);
+// Adds `ds` (prepare_pass's) to `diags`: each to the sink of the listing its subject names,
+// subject cleared, as it was reported; the others to diags.other.
+void add_by_listing(RunDiagnostics& diags, const std::vector<ir::Diagnostic>& ds);
 
 // The stored values at `probes` (each inside `image`).
 std::vector<ProbeValue> read_probes(const img::Image& image, const std::vector<ProbePoint>& probes);

@@ -29,9 +29,11 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "tierlift/image/image.h"
+#include "tierlift/ir/result_diagnostics.h"
 #include "tierlift/pass/pass.h"
 
 namespace tierlift::vulkan {
@@ -64,14 +66,6 @@ struct DeviceOptions {
   std::function<void(const std::vector<std::string>&)> on_destroyed;
 };
 
-struct DrawOptions {
-  // Test aid: decorate every pixel-stage input Flat, so a varying is the provoking vertex's
-  // value bit for bit. Only meaningful when all vertices of a primitive carry the same
-  // outputs (then the CPU device's interpolation also returns that value); it keeps ±inf
-  // varyings from turning into NaN in the rasteriser's attribute gradients.
-  bool flat_varyings = false;
-};
-
 struct DrawResult {
   bool ok = false;
   std::string error;
@@ -79,18 +73,19 @@ struct DrawResult {
   double draw_ms = 0;  // submit to fence (float copies of sampled textures, the draw, readback)
 };
 
-// Why Device::create failed. Only NoDevice (the loader found no driver, or the driver
-// enumerates no physical device) describes a machine without Vulkan, which a caller may
-// treat as "cannot run here"; every other failure is a fault to report.
-enum class CreateFailure { None, NoDevice, Other };
+// The rules of Device::create's failures. Only kNoDeviceRule (the loader found no driver,
+// or the driver enumerates no physical device) describes a machine without Vulkan, which a
+// caller may treat as "cannot run here" (ir::failed_with(r, kNoDeviceRule)); every other
+// failure (kDeviceRule) is a fault to report.
+inline constexpr std::string_view kNoDeviceRule = "no-vulkan-device";
+inline constexpr std::string_view kDeviceRule = "vulkan-device";
 
 class Device {
 public:
-  // nullptr and *error on failure (no Vulkan driver, no device matching the filter,
-  // validation layer missing, any Vulkan call failing); the message names the Debian package
-  // to install where one is missing. *failure (when given) says which kind of failure.
-  static std::unique_ptr<Device> create(const DeviceOptions& options, std::string* error,
-                                        CreateFailure* failure = nullptr);
+  // The device, or why not (no Vulkan driver, no device matching the filter, validation
+  // layer missing, any Vulkan call failing): one error about "vulkan" whose message names the
+  // Debian package to install where one is missing.
+  static ir::Result<std::unique_ptr<Device>> create(const DeviceOptions& options);
   ~Device();
   Device(const Device&) = delete;
   Device& operator=(const Device&) = delete;
@@ -101,7 +96,7 @@ public:
   // Draws `pass` into `target`: its format selects the attachment format, its current
   // pixels are the destination blending reads; on success it holds the stored result.
   // On failure the target is unchanged.
-  DrawResult draw(const pass::Pass& pass, img::Image& target, const DrawOptions& options = {});
+  DrawResult draw(const pass::Pass& pass, img::Image& target);
 
   // Stores the pipelines made so far in the user's cache directory for the next run
   // (pipeline_cache.h; also done when the device is destroyed). Failures are ignored.

@@ -86,16 +86,14 @@ public:
   std::string read(TextureId id, img::Image& out);
   // Draws `pass` into `target`, sampling `stages` (see StageTextures). The target's current
   // contents are the destination blending reads. Nothing is read back.
-  DrawResult draw(const pass::Pass& pass, const StageTextures& stages, TextureId target,
-                  const DrawOptions& options = {});
+  DrawResult draw(const pass::Pass& pass, const StageTextures& stages, TextureId target);
   // The same into several render targets and a stencil buffer (MRT, stencil test).
-  DrawResult draw(const pass::Pass& pass, const StageTextures& stages, const RenderTargets& targets,
-                  const DrawOptions& options = {});
-  // Makes what draw(pass, stages, targets, options) needs, without drawing.
-  std::string prepare(const pass::Pass& pass, const StageTextures& stages, TextureId target,
-                      const DrawOptions& options = {});
+  DrawResult draw(const pass::Pass& pass, const StageTextures& stages,
+                  const RenderTargets& targets);
+  // Makes what draw(pass, stages, targets) needs, without drawing.
+  std::string prepare(const pass::Pass& pass, const StageTextures& stages, TextureId target);
   std::string prepare(const pass::Pass& pass, const StageTextures& stages,
-                      const RenderTargets& targets, const DrawOptions& options = {});
+                      const RenderTargets& targets);
   // Batching on: draw() records; off: draw() submits and waits (flushing first). A draw's
   // DrawResult::draw_ms is then the recording time; the work is timed by flush().
   std::string set_batching(bool on);
