@@ -376,7 +376,7 @@ TL_INLINE void run_steps_body(const Impl& im, const PixelBlockInput& in,
       break;
     }
   }
-  out.color = sc.reg[im.out_slot];
+  out.color = &sc.reg[im.out_slot];
 }
 
 // The steps built twice: for the baseline and for AVX2, chosen per run by what the CPU has.
