@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <vector>
 
 #include "tierlift/cpu/draw.h"
 #include "tierlift/rounding/rounding.h"
@@ -137,6 +139,41 @@ TEST(Rgba8StoreLlvmpipe, DrawFollowsThePassConvention) {
   ASSERT_TRUE(draw(p, b, 1).ok);
   EXPECT_EQ(b.at(1, 1)[0], byte(77));
   EXPECT_EQ(b.at(1, 1)[1], byte(229));
+}
+
+// The lane form of the store (rounding::unorm8_llvmpipe_stored, the block executor's RGBA8
+// Replace store) against the scalar rule: around every byte's value and every midpoint
+// (k ± ½)/255, 64 floats either side; zeros, denormals, negatives, 1 and above, ±inf, NaN.
+TEST(Rgba8StoreLlvmpipe, LaneFormMatchesTheRuleBitForBit) {
+  std::vector<float> probe;
+  auto around = [&](float c) {
+    float v = c;
+    for (int i = 0; i < 64; ++i) v = std::nextafter(v, -1.0f);
+    for (int i = 0; i < 129; ++i, v = std::nextafter(v, 2.0f)) probe.push_back(v);
+  };
+  for (int k = 0; k <= 255; ++k) {
+    around(static_cast<float>(k) / 255.0f);
+    around((static_cast<float>(k) + 0.5f) / 255.0f);
+    around(static_cast<float>((k + 0.5) / 255.0));
+  }
+  const float inf = std::numeric_limits<float>::infinity();
+  for (float v : {0.0f, -0.0f, 0x1p-149f, -0x1p-149f, 0x1p-127f, 0x1.fffffcp-127f, 0x1p-126f, -1.0f,
+                  1.0f, 1.5f, 256.0f, 3e38f, inf, -inf, std::numeric_limits<float>::quiet_NaN(),
+                  -std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::max()})
+    probe.push_back(v);
+  std::vector<float> out(probe.size());
+  rounding::unorm8_llvmpipe_stored(probe.data(), out.data(), static_cast<int>(probe.size()));
+  size_t differ = 0;
+  for (size_t i = 0; i < probe.size(); ++i) {
+    const float want = rounding::unorm8_levels()[rounding::unorm8_llvmpipe(probe[i])];
+    // The store of Replace through the scalar path gives the same float.
+    const Vec4 store =
+        blend_and_store(BlendMode::Replace, U8, {probe[i], 0, 0, 0}, {0, 0, 0, 0}, kLlvmpipe);
+    EXPECT_EQ(std::memcmp(&store[0], &want, sizeof(float)), 0) << probe[i];
+    if (std::memcmp(&out[i], &want, sizeof(float)) != 0 && ++differ < 10)
+      ADD_FAILURE() << std::hexfloat << probe[i] << ": lane " << out[i] << ", rule " << want;
+  }
+  EXPECT_EQ(differ, 0u);
 }
 
 } // namespace

@@ -137,8 +137,8 @@ bool compare(const ir::Program& program, const ir::Conventions& conv, int rounds
       }
       if (ref.discarded) continue;
       for (int c = 0; c < 4; ++c)
-        if (!same_bits(out.color.c[c][l], ref.color[0][c])) {
-          ADD_FAILURE() << "component " << c << ": block " << out.color.c[c][l] << ", per-pixel "
+        if (!same_bits(out.color->c[c][l], ref.color[0][c])) {
+          ADD_FAILURE() << "component " << c << ": block " << out.color->c[c][l] << ", per-pixel "
                         << ref.color[0][c];
           return true;
         }

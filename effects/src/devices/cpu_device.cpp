@@ -31,6 +31,7 @@ std::string CpuPassDevice::begin_run(const EffectGraph& graph, const ImageMap& i
   ImageMap kept;
   kept.swap(images_);
   placeholders_.clear();
+  stale_.clear();
   stencils_.clear();
   for (const TextureDesc& t : graph.textures) {
     if (t.stencil) {
@@ -42,14 +43,29 @@ std::string CpuPassDevice::begin_run(const EffectGraph& graph, const ImageMap& i
     auto old = kept.find(t.name);
     img::Image& im = images_[t.name];
     if (old != kept.end()) im = std::move(old->second);
-    if (in != inputs.end())
+    if (in != inputs.end()) {
       reset_image(im, in->second.width, in->second.height, in->second.format, &in->second);
-    else
+    } else if (im.rgba.size() == size_t{t.width} * t.height * 4) {
+      // The run before's buffer, left as it is until something reads it (stale_).
+      im.width = t.width;
+      im.height = t.height;
+      im.format = t.format;
+      stale_.insert(t.name);
+    } else {
       reset_image(im, t.width, t.height, t.format, nullptr);
+    }
     // make_pass wants an image per bound texture; run_pass binds the real one by reference.
     placeholders_.emplace(t.name, img::Image());
   }
   return {};
+}
+
+void CpuPassDevice::settle(const std::string& name) {
+  auto it = stale_.find(name);
+  if (it == stale_.end()) return;
+  stale_.erase(it);
+  auto im = images_.find(name);
+  if (im != images_.end()) std::fill(im->second.rgba.begin(), im->second.rgba.end(), 0.0f);
 }
 
 std::string CpuPassDevice::run_pass(const PassDesc& desc) {
@@ -77,6 +93,7 @@ std::string CpuPassDevice::run_pass(const PassDesc& desc) {
     targets.stencil = s->second.data();
   }
   for (const TextureBind& b : desc.textures) {
+    settle(b.texture);
     auto tex = images_.find(b.texture); // make_pass checked the name and the stage already
     if (tex == images_.end() || b.stage >= pass::kMaxSamplers)
       return fmt::format("pass '{}': texture '{}' has no image", desc.name, b.texture);
@@ -87,8 +104,20 @@ std::string CpuPassDevice::run_pass(const PassDesc& desc) {
   }
   // In place: cpu::draw fails only before it writes a pixel, so a failed draw leaves the
   // texture as it was.
+  // One stale target: the draw zeroes it unless it overwrites it all. Several: each zeroed
+  // here, since DrawTargets::stale speaks for all of them at once.
+  if (desc.more_targets.empty()) {
+    targets.stale = stale_.count(desc.target) != 0;
+  } else {
+    settle(desc.target);
+    for (const std::string& m : desc.more_targets) settle(m);
+  }
   cpu::DrawStats s = cpu::draw(*pass, targets, threads_);
-  if (!s.ok) return s.error;
+  if (!s.ok) {
+    settle(desc.target); // zeros, as the run began with
+    return s.error;
+  }
+  stale_.erase(desc.target); // drawn: zeroed first or overwritten
   return {};
 }
 
@@ -96,6 +125,7 @@ std::string CpuPassDevice::update_input(const std::string& name, const img::Imag
   auto it = images_.find(name);
   if (!graph_ || it == images_.end()) return fmt::format("no input '{}'", name);
   reset_image(it->second, image.width, image.height, image.format, &image);
+  stale_.erase(name);
   return {};
 }
 
@@ -107,6 +137,7 @@ std::string CpuPassDevice::read_texture(const std::string& name, img::Image& out
     for (size_t i = 0; i < s->second.size(); ++i) out.rgba[4 * i] = s->second[i];
     return {};
   }
+  settle(name);
   auto it = images_.find(name);
   if (it == images_.end()) return fmt::format("no texture '{}'", name);
   out = it->second;

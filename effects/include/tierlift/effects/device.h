@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -77,6 +78,11 @@ private:
   ImageMap images_;
   ImageMap placeholders_; // an empty image per texture name, for make_pass
   std::map<std::string, std::vector<uint8_t>, std::less<>> stencils_; // TextureDesc::stencil
+  // Textures whose reused buffers still hold the run before's pixels where this run means
+  // zeros: zeroed on first read, or by the draw of a pass that does not overwrite them all
+  // (cpu::DrawTargets::stale) — a full-screen pass spares a clear of its target.
+  std::set<std::string, std::less<>> stale_;
+  void settle(const std::string& name); // zeroes `name` if it is stale
 };
 
 // Wraps a device the caller owns (and keeps alive). Only when tierlift_vulkan is built.

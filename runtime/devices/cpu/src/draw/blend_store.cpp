@@ -121,6 +121,19 @@ void store_block(BlendMode mode, img::Format format, ir::Rounding rounding, cons
       return store_block_float32<BlendMode::SrcAlphaInvSrcAlpha>(src, discarded, x, n, row);
     }
   }
+  if (format == img::Format::RGBA8 && rounding == ir::Rounding::Llvmpipe &&
+      mode == BlendMode::Replace) {
+    // Replace reads no destination: blend_unorm8_llvmpipe is then the byte of the source
+    // over 255, computed four lane arrays at a time instead of one pixel at a time.
+    LaneVec4 stored;
+    for (int c = 0; c < 4; ++c) rounding::unorm8_llvmpipe_stored(src.c[c], stored.c[c], n);
+    for (int l = 0; l < n; ++l) {
+      if (discarded[static_cast<size_t>(l)]) continue;
+      float* p = row + 4 * x[l];
+      for (int c = 0; c < 4; ++c) p[c] = stored.c[c][l];
+    }
+    return;
+  }
   for (int l = 0; l < n; ++l) {
     if (discarded[static_cast<size_t>(l)]) continue;
     float* p = row + 4 * x[l];

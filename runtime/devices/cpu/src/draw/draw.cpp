@@ -124,6 +124,28 @@ std::string check_inputs(const Pass& pass, const img::Image& target, const Viewp
   return {};
 }
 
+// DrawTargets::stale: whether the draw stores every pixel of the target whatever the stored
+// values are, so that the leftovers need not be zeroed first.
+bool overwrites_all(const Pass& pass, const std::vector<Triangle>& setup, const PixelRect& scissor,
+                    const img::Image& target, int64_t sample_offset) {
+  if (pass.color_targets != 1 || pass.blend != BlendMode::Replace ||
+      pass.depth_stencil.stencil_test)
+    return false;
+  if (pass.pixel_program)
+    for (const ir::Instruction& ins : pass.pixel_program->code)
+      if (ins.op == ir::Opcode::TexKill) return false;
+  const PixelRect whole{0, 0, target.width, target.height};
+  if (scissor.x0 != whole.x0 || scissor.y0 != whole.y0 || scissor.x1 != whole.x1 ||
+      scissor.y1 != whole.y1)
+    return false;
+  return detail::covers(setup, whole, sample_offset);
+}
+
+void zero_targets(const Pass& pass, const DrawTargets& targets) {
+  for (uint32_t i = 0; i < pass.color_targets; ++i)
+    std::fill(targets.color[i]->rgba.begin(), targets.color[i]->rgba.end(), 0.0f);
+}
+
 } // namespace
 
 DrawStats draw(const Pass& pass, img::Image& target, unsigned threads) {
@@ -205,7 +227,10 @@ DrawStats draw(const Pass& pass, const DrawTargets& targets, unsigned threads) {
                            setup);
   }
   stats.triangles = setup.size();
-  if (setup.empty() || scissor.x0 >= scissor.x1 || scissor.y0 >= scissor.y1) return stats;
+  if (setup.empty() || scissor.x0 >= scissor.x1 || scissor.y0 >= scissor.y1) {
+    if (targets.stale) zero_targets(pass, targets);
+    return stats;
+  }
 
   // Pixels: bands of rows handed out by an atomic counter. Which worker takes a band does
   // not change any pixel, since a pixel's whole history lives in one band.
@@ -234,6 +259,8 @@ DrawStats draw(const Pass& pass, const DrawTargets& targets, unsigned threads) {
     stats.error = std::string("draw failed: ") + e.what();
     return stats;
   }
+  if (targets.stale && !overwrites_all(pass, setup, scissor, target, offset))
+    zero_targets(pass, targets);
   std::atomic<int64_t> next{0};
   std::mutex mutex;
   std::string failure;

@@ -167,9 +167,18 @@ namespace {
   float fx[kBlockLanes], oow[kBlockLanes];
   const Plane w = p.oow;
 #pragma GCC unroll 1
-  for (int l = 0; l < kBlockLanes; ++l) {
-    fx[l] = static_cast<float>(x[l]);
-    oow[l] = 1.0f / eval(w, fx[l], fy);
+  for (int l = 0; l < kBlockLanes; ++l) fx[l] = static_cast<float>(x[l]);
+  // With dadx = ±0 (1/w constant along the row: every 2D pass), dadx·x is the same signed zero
+  // at every x ≥ 0, so every lane's 1/w is the one at x = 0: one division per block. When it
+  // is exactly 1 the products by it are skipped too: v·1 = v, and v is already flushed.
+  bool unit = false;
+  if (w.dadx == 0.0f) {
+    const float o = 1.0f / eval(w, 0.0f, fy);
+    std::fill(oow, oow + kBlockLanes, o);
+    unit = o == 1.0f;
+  } else {
+#pragma GCC unroll 1
+    for (int l = 0; l < kBlockLanes; ++l) oow[l] = 1.0f / eval(w, fx[l], fy);
   }
   for (size_t r = 0; r < 2; ++r) {
     if (!(color_reads & (1u << r))) continue;
@@ -180,6 +189,11 @@ namespace {
         continue;
       }
       const Plane pl = p.color[r][c]; // a copy: no store to `out` can change it
+      if (unit) {
+#pragma GCC unroll 1
+        for (int l = 0; l < kBlockLanes; ++l) out[l] = clamp01(eval(pl, fx[l], fy));
+        continue;
+      }
 #pragma GCC unroll 1
       for (int l = 0; l < kBlockLanes; ++l) out[l] = clamp01(perspective(pl, fx[l], fy, oow[l]));
     }
@@ -193,6 +207,11 @@ namespace {
         continue;
       }
       const Plane pl = p.tex[r][c];
+      if (unit) {
+#pragma GCC unroll 1
+        for (int l = 0; l < kBlockLanes; ++l) out[l] = eval(pl, fx[l], fy);
+        continue;
+      }
 #pragma GCC unroll 1
       for (int l = 0; l < kBlockLanes; ++l) out[l] = perspective(pl, fx[l], fy, oow[l]);
     }

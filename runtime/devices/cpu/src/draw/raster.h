@@ -119,6 +119,18 @@ struct BlockWorker {
   int64_t e[kBlockLanes][3]{};
 };
 
+// The pixels of row y a triangle covers: x = bounds.x0 + i for i in [lo, hi) (empty when
+// lo ≥ hi), and its edge functions at pixel bounds.x0 + i: e0[k] + step[k]·i.
+struct RowSpan {
+  int64_t lo = 0, hi = 0;
+  int64_t e0[3]{}, step[3]{};
+};
+RowSpan row_span(const Triangle& t, int64_t y, int64_t sample_offset);
+
+// Whether every pixel of `rect` lies inside at least one of `triangles` (the same coverage
+// test as the raster loops). False for more than a few triangles, without looking.
+bool covers(const std::vector<Triangle>& triangles, const PixelRect& rect, int64_t sample_offset);
+
 // Rows [y0, y1) of every triangle, in primitive order, kBlockLanes covered pixels of a row at a
 // time through job.block; the same pixels and values as the per-pixel path.
 void raster_rows_block(const RasterJob& job, int64_t y0, int64_t y1, BlockWorker& w,

@@ -31,6 +31,11 @@ namespace {
 using Impl = PixelBlockVM::Impl;
 using Scratch = PixelBlockVM::Scratch;
 
+// The lanes a register source reads: the register, or the block's coordinates in place.
+TL_INLINE const LaneVec4& reg(const BlockSrc& s, const Scratch& sc) {
+  return s.input ? sc.in->tex[s.slot - vm::kTexBase] : sc.reg[s.slot];
+}
+
 template <Denormals D>
 TL_INLINE View fetch(const Impl& im, const BlockStep& b, int k, int half, Scratch& sc) {
   const BlockSrc& s = b.src[static_cast<size_t>(k)];
@@ -40,12 +45,12 @@ TL_INLINE View fetch(const Impl& im, const BlockStep& b, int k, int half, Scratc
     for (int c = 0; c < 4; ++c) v.c[c] = im.folded[static_cast<size_t>(s.folded)].c[c];
     return v;
   case SrcWay::Reg:
-    for (int c = 0; c < 4; ++c) v.c[c] = sc.reg[s.slot].c[s.comp[c]];
+    for (int c = 0; c < 4; ++c) v.c[c] = reg(s, sc).c[s.comp[c]];
     return v;
   case SrcWay::Neg: {
     LaneVec4& out = sc.src[half][k];
     for (int c = 0; c < 4; ++c) {
-      const float* r = sc.reg[s.slot].c[s.comp[c]];
+      const float* r = reg(s, sc).c[s.comp[c]];
       for (int l = 0; l < L; ++l) out.c[c][l] = -r[l];
       v.c[c] = out.c[c];
     }
@@ -53,7 +58,7 @@ TL_INLINE View fetch(const Impl& im, const BlockStep& b, int k, int half, Scratc
   }
   case SrcWay::General: {
     LaneVec4& out = sc.src[half][k];
-    const LaneVec4& r = sc.reg[s.slot];
+    const LaneVec4& r = reg(s, sc);
     const vm::SrcDesc& d = b.step->src[static_cast<size_t>(k)];
     for (int l = 0; l < L; ++l) {
       Vec4 x = vm::modify_src<D>(d, {r.c[0][l], r.c[1][l], r.c[2][l], r.c[3][l]});
@@ -283,9 +288,9 @@ TL_INLINE void run_steps_body(const Impl& im, const PixelBlockInput& in,
       for (int c = 0; c < 4; ++c)
         for (int l = 0; l < L; ++l)
           sc.reg[vm::kInputBase + i].c[c][l] = num::legacy_saturate<D>(in.color[i].c[c][l]);
-  if (!p.ps11_13)
-    for (int i = 0; i < vm::kTexCount; ++i)
-      if (im.tex_reads & (1u << i)) sc.reg[vm::kTexBase + i] = in.tex[i];
+  sc.in = &in;
+  for (int i = 0; i < vm::kTexCount; ++i)
+    if (im.tex_copies & (1u << i)) sc.reg[vm::kTexBase + i] = in.tex[i];
   out.discarded.fill(false);
 
   vm::Invocation inv; // what the VM's compute functions may consult (expp, bem)
@@ -371,7 +376,7 @@ TL_INLINE void run_steps_body(const Impl& im, const PixelBlockInput& in,
       break;
     }
   }
-  out.color = sc.reg[im.out_slot];
+  out.color = &sc.reg[im.out_slot];
 }
 
 // The steps built twice: for the baseline and for AVX2, chosen per run by what the CPU has.

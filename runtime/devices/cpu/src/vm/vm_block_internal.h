@@ -45,6 +45,10 @@ struct BlockSrc {
   uint16_t slot = 0;
   uint8_t comp[4] = {0, 1, 2, 3};
   int32_t folded = -1;
+  // Reads PixelBlockInput::tex[slot − kTexBase] in place of the register: t# that no step
+  // writes hold the coordinates unchanged, so the 1 KB copy into the register per block and
+  // per coordinate is saved (find_input_reads).
+  bool input = false;
 };
 
 struct BlockStep {
@@ -72,6 +76,7 @@ struct PixelBlockVM::Impl {
   uint8_t color_reads = 0, tex_reads = 0;
   uint32_t tex_components = 0; // bits 4r..4r+3: the components of TC(r) that matter
   uint16_t out_slot = 0;
+  uint8_t tex_copies = 0; // bit i: TC(i) is copied into t# (some read of it is not `input`)
 };
 
 struct PixelBlockVM::Scratch {
@@ -80,6 +85,7 @@ struct PixelBlockVM::Scratch {
   LaneVec4 dst[2]{};    // results before the store: [pair half]
   LaneVec4 coord{};     // texture coordinates built per lane
   Lanes zero{}, one{};
+  const PixelBlockInput* in = nullptr; // the block being run (BlockSrc::input reads)
 };
 
 } // namespace tierlift::cpu

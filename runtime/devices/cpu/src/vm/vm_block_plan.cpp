@@ -148,6 +148,30 @@ bool direct_write(const BlockStep& b) {
   return true;
 }
 
+// Where t# can be read in place from the block's input (BlockSrc::input): outside ps_1_1–1_3
+// (whose texture instructions fill t#) and when no step writes the register, so every read
+// sees the coordinates run() would have copied. The others are still copied.
+void find_input_reads(Impl& im) {
+  im.tex_copies = 0;
+  if (im.p.ps11_13) return;
+  std::array<bool, vm::kSlotCount> written{};
+  for (const BlockStep& b : im.steps)
+    if (b.op != BlockOp::Skip && b.step->dst.kind == vm::DstKind::Slot)
+      written[b.step->dst.slot] = true;
+  for (BlockStep& b : im.steps)
+    for (int k = 0; k < b.step->nsrc; ++k) {
+      BlockSrc& s = b.src[static_cast<size_t>(k)];
+      if (s.way == SrcWay::Folded || s.slot < vm::kTexBase ||
+          s.slot >= vm::kTexBase + vm::kTexCount)
+        continue;
+      if (!written[s.slot])
+        s.input = true;
+      else
+        im.tex_copies |= static_cast<uint8_t>(1u << (s.slot - vm::kTexBase));
+    }
+  im.tex_copies &= im.tex_reads;
+}
+
 } // namespace
 
 std::unique_ptr<PixelBlockVM> PixelBlockVM::create(const ir::Program& program,
@@ -213,6 +237,7 @@ std::unique_ptr<PixelBlockVM> PixelBlockVM::create(const ir::Program& program,
     if (im->tex_components & (0xFu << (4 * i))) im->tex_reads |= static_cast<uint8_t>(1u << i);
   im->out_slot = static_cast<uint16_t>(p.ps1x ? vm::kTempBase : vm::kOutBase + vm::kOutC0);
   find_zero_components(*im);
+  find_input_reads(*im);
   return std::unique_ptr<PixelBlockVM>(new PixelBlockVM(std::move(im)));
 }
 

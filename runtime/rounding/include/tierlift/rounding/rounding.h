@@ -48,6 +48,12 @@ float unorm8_nearest(float value);
 // the even side (fl32(0.5/255) = 0.00196078443 stores 0 here, 1 there). NUMERICS.md rule 34.
 uint8_t unorm8_llvmpipe(float value);
 
+// unorm8_llvmpipe(in[i]) / 255.0f — the float an RGBA8 target holds after the store — for
+// i < n, as one branch-free loop the compiler vectorises (the CPU device's block store). The
+// same steps on the same floats as the rule above, so the same bits for every input
+// (tests/cpu_draw/rgba8_store_llvmpipe_test.cpp walks the byte boundaries and ties).
+void unorm8_llvmpipe_stored(const float* in, float* out, int n);
+
 // The float an RGBA8 texel holds for byte k: k/255 correctly rounded (k / 255.0f), as a table
 // so that converting a texel costs no division. Every RGBA8 image holds these values.
 const std::array<float, 256>& unorm8_levels();

@@ -97,6 +97,12 @@ inline constexpr pass::Capabilities kCapabilities{4, true, false};
 struct DrawTargets {
   std::array<img::Image*, 4> color{};
   uint8_t* stencil = nullptr;
+  // The colour targets hold leftovers that stand for zeros (a device reusing a buffer it has
+  // not cleared). The draw zeroes them before it writes, unless it overwrites every pixel
+  // without reading one: one target, blend Replace, no stencil test, no texkill in the pixel
+  // program, and the triangles covering the whole target — a full-screen pass then costs no
+  // clear. A draw that fails leaves them as they were (still stale).
+  bool stale = false;
 };
 
 struct DrawStats {

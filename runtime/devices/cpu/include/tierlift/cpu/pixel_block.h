@@ -37,7 +37,9 @@ struct PixelBlockInput {
 };
 
 struct PixelBlockOutput {
-  LaneVec4 color;                            // oC0; ps_1_x: r0
+  // oC0; ps_1_x: r0. The register itself in the Scratch the run used, not a copy (1 KB a
+  // block): valid until that Scratch runs again.
+  const LaneVec4* color = nullptr;
   std::array<bool, kBlockLanes> discarded{}; // texkill
 };
 
