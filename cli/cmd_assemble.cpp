@@ -41,11 +41,12 @@ void register_assemble_command(CLI::App& app) {
       report.error("io", why, opts->output);
       return report.finish(kExitUsage);
     }
-    LoadedListing l = load_listing(opts->file, opts->fe);
-    if (l.io_error) {
-      report.error("io", l.io_message, opts->file);
+    ir::Result<LoadedListing> loaded = load_listing(opts->file, opts->fe);
+    if (!loaded) {
+      report.error("io", loaded.message(), opts->file);
       return report.finish(kExitUsage);
     }
+    LoadedListing& l = *loaded;
     // The checked form: a field the token stream cannot carry is an error, not truncated.
     std::optional<std::vector<uint32_t>> tokens;
     if (l.program) tokens = as::assemble(*l.program, l.diags);

@@ -26,11 +26,12 @@ void register_fmt_command(CLI::App& app) {
       report.error("io", why, opts->output);
       return report.finish(kExitUsage);
     }
-    LoadedListing l = load_listing(opts->file, opts->fe);
-    if (l.io_error) {
-      report.error("io", l.io_message, opts->file);
+    ir::Result<LoadedListing> loaded = load_listing(opts->file, opts->fe);
+    if (!loaded) {
+      report.error("io", loaded.message(), opts->file);
       return report.finish(kExitUsage);
     }
+    LoadedListing& l = *loaded;
     report.diagnostics(l.diags, l.sources);
     if (!l.program) return report.finish(kExitInvalid);
     // The listing's comments and paragraphs stay; a formatter must not delete them.

@@ -203,11 +203,12 @@ int run(const RunFlags& f) {
   std::optional<LoadedListing> vs, ps;
   for (auto [path, slot] : {std::pair{&f.vs, &vs}, std::pair{&f.ps, &ps}}) {
     if (path->empty()) continue;
-    *slot = load_listing(*path, f.fe);
-    if ((*slot)->io_error) {
-      report.error("io", (*slot)->io_message, *path);
+    ir::Result<LoadedListing> loaded = load_listing(*path, f.fe);
+    if (!loaded) {
+      report.error("io", loaded.message(), *path);
       return report.finish(kExitUsage);
     }
+    *slot = std::move(loaded).value();
   }
   bool listings_ok = true;
   for (auto* l : {&vs, &ps}) {
