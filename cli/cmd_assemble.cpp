@@ -37,8 +37,8 @@ void register_assemble_command(CLI::App& app) {
   add_front_end_options(sub, opts->fe, true);
   set_action(sub, [opts] {
     Report report("assemble", opts->fe.json);
-    if (std::string why = check_output(opts->output, {opts->file}, opts->fe.json); !why.empty()) {
-      report.error("io", why, opts->output);
+    if (ir::Status out = check_output(opts->output, {opts->file}, opts->fe.json); !out) {
+      report.error("io", out.message(), opts->output);
       return report.finish(kExitUsage);
     }
     ir::Result<LoadedListing> loaded = load_listing(opts->file, opts->fe);

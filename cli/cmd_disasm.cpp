@@ -30,8 +30,8 @@ void register_disasm_command(CLI::App& app) {
   add_strict_flag(sub, opts->fe);
   set_action(sub, [opts] {
     Report report("disasm", opts->fe.json);
-    if (std::string why = output_conflict(opts->output, {opts->file}); !why.empty()) {
-      report.error("io", why, opts->output);
+    if (ir::Status out = output_conflict(opts->output, {opts->file}); !out) {
+      report.error("io", out.message(), opts->output);
       return report.finish(kExitUsage);
     }
     // The loader reads within the token-file cap, tells a token stream from text by content,

@@ -22,8 +22,8 @@ void register_fmt_command(CLI::App& app) {
   add_front_end_options(sub, opts->fe, true);
   set_action(sub, [opts] {
     Report report("fmt", opts->fe.json);
-    if (std::string why = output_conflict(opts->output, {opts->file}); !why.empty()) {
-      report.error("io", why, opts->output);
+    if (ir::Status out = output_conflict(opts->output, {opts->file}); !out) {
+      report.error("io", out.message(), opts->output);
       return report.finish(kExitUsage);
     }
     ir::Result<LoadedListing> loaded = load_listing(opts->file, opts->fe);

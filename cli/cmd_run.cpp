@@ -189,11 +189,11 @@ int run(const RunFlags& f) {
   }
   const bool want_cpu = f.backend != "vulkan", want_vulkan = f.backend != "cpu";
   if (!f.output.empty()) {
-    std::string why = check_output(f.output, input_files(f, req), f.fe.json);
+    std::string why = check_output(f.output, input_files(f, req), f.fe.json).message();
     if (why.empty() && f.output == "-" && want_cpu && want_vulkan)
       why = "-o - takes one image; --backend both writes two (give -o a file)";
     if (why.empty() && want_cpu && want_vulkan)
-      why = output_conflict(vulkan_output(f.output), input_files(f, req));
+      why = output_conflict(vulkan_output(f.output), input_files(f, req)).message();
     if (!why.empty()) {
       report.error(f.output == "-" ? "usage" : "io", why, f.output);
       return report.finish(kExitUsage);

@@ -31,7 +31,8 @@ void register_spirv_command(CLI::App& app) {
   set_action(sub, [opts] {
     Report report("spirv", opts->fe.json);
     if (!opts->output.empty()) {
-      std::string why = check_output(opts->output, {opts->file, opts->pair}, opts->fe.json);
+      std::string why =
+          check_output(opts->output, {opts->file, opts->pair}, opts->fe.json).message();
       if (why.empty() && opts->output == "-" && (opts->dis || opts->explain))
         why = "-o - writes the binary module to standard output; --dis and --explain print "
               "there too";

@@ -36,13 +36,14 @@ void add_front_end_options(CLI::App* sub, FrontEndOptions& o, bool skip_validati
                   "enough");
 }
 
-std::string output_conflict(const std::string& output, const std::vector<std::string>& inputs) {
-  return io::refuse_if_input(output, inputs).message();
+ir::Status output_conflict(const std::string& output, const std::vector<std::string>& inputs) {
+  return io::refuse_if_input(output, inputs);
 }
 
-std::string check_output(const std::string& output, const std::vector<std::string>& inputs,
-                         bool json) {
-  if (json && output == "-") return "-o - and --json both write standard output; give -o a file";
+ir::Status check_output(const std::string& output, const std::vector<std::string>& inputs,
+                        bool json) {
+  if (json && output == "-")
+    return ir::fail(output, "usage", "-o - and --json both write standard output; give -o a file");
   return output_conflict(output, inputs);
 }
 

@@ -55,13 +55,13 @@ struct LoadedListing {
 ir::Result<LoadedListing> load_listing(const std::string& path, const FrontEndOptions& options,
                                        const io::ReadCap& cap = io::kListingCap);
 
-// "" when `output` ("-" = standard output) may be written: it is none of `inputs` (same
+// OK when `output` ("-" = standard output) may be written: it is none of `inputs` (same
 // device and inode). Commands check this before doing any work, so nothing is touched.
-std::string output_conflict(const std::string& output, const std::vector<std::string>& inputs);
+ir::Status output_conflict(const std::string& output, const std::vector<std::string>& inputs);
 // output_conflict, and also refuses "-o -" together with --json (both want standard
 // output).
-std::string check_output(const std::string& output, const std::vector<std::string>& inputs,
-                         bool json);
+ir::Status check_output(const std::string& output, const std::vector<std::string>& inputs,
+                        bool json);
 // io::write_output: "-" is standard output, FIFOs and devices are written through, anything
 // else goes through a temporary file renamed into place. "" on success.
 std::string write_output(const std::string& path, std::string_view bytes);
