@@ -221,10 +221,10 @@ int run(const RunFlags& f) {
   auto table = [](const std::optional<LoadedListing>& l) {
     return l && l->constants ? &*l->constants : nullptr;
   };
-  std::string const_error;
-  auto consts = resolve_named_constants(f.consts, table(vs), table(ps), const_error);
+  ir::Result<std::vector<std::string>> consts =
+      resolve_named_constants(f.consts, table(vs), table(ps));
   if (!consts) {
-    report.error("usage", const_error);
+    report.error("usage", consts.message());
     return report.finish(kExitUsage);
   }
   try {
