@@ -37,15 +37,16 @@ void register_assemble_command(CLI::App& app) {
   add_front_end_options(sub, opts->fe, true);
   set_action(sub, [opts] {
     Report report("assemble", opts->fe.json);
-    if (std::string why = check_output(opts->output, {opts->file}, opts->fe.json); !why.empty()) {
-      report.error("io", why, opts->output);
+    if (ir::Status out = check_output(opts->output, {opts->file}, opts->fe.json); !out) {
+      report.error("io", out.message(), opts->output);
       return report.finish(kExitUsage);
     }
-    LoadedListing l = load_listing(opts->file, opts->fe);
-    if (l.io_error) {
-      report.error("io", l.io_message, opts->file);
+    ir::Result<LoadedListing> loaded = load_listing(opts->file, opts->fe);
+    if (!loaded) {
+      report.error("io", loaded.message(), opts->file);
       return report.finish(kExitUsage);
     }
+    LoadedListing& l = *loaded;
     // The checked form: a field the token stream cannot carry is an error, not truncated.
     std::optional<std::vector<uint32_t>> tokens;
     if (l.program) tokens = as::assemble(*l.program, l.diags);

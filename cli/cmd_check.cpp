@@ -23,13 +23,14 @@ void register_check_command(CLI::App& app) {
     int worst = kExitOk;
     nlohmann::json files = nlohmann::json::array();
     for (const std::string& path : opts->files) {
-      LoadedListing l = load_listing(path, opts->fe);
-      if (l.io_error) {
-        report.error("io", l.io_message, path);
+      ir::Result<LoadedListing> loaded = load_listing(path, opts->fe);
+      if (!loaded) {
+        report.error("io", loaded.message(), path);
         worst = kExitUsage;
         files.push_back({{"file", path}, {"valid", false}});
         continue;
       }
+      LoadedListing& l = *loaded;
       bool valid = l.program.has_value() && !l.diags.has_errors();
       if (!valid && worst == kExitOk) worst = kExitInvalid;
       report.diagnostics(l.diags, l.sources);

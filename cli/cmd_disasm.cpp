@@ -30,17 +30,18 @@ void register_disasm_command(CLI::App& app) {
   add_strict_flag(sub, opts->fe);
   set_action(sub, [opts] {
     Report report("disasm", opts->fe.json);
-    if (std::string why = output_conflict(opts->output, {opts->file}); !why.empty()) {
-      report.error("io", why, opts->output);
+    if (ir::Status out = output_conflict(opts->output, {opts->file}); !out) {
+      report.error("io", out.message(), opts->output);
       return report.finish(kExitUsage);
     }
     // The loader reads within the token-file cap, tells a token stream from text by content,
     // validates (unless skipped) and reads the CTAB.
-    LoadedListing l = load_listing(opts->file, opts->fe, io::kTokenFileCap);
-    if (l.io_error) {
-      report.error("io", l.io_message, opts->file);
+    ir::Result<LoadedListing> loaded = load_listing(opts->file, opts->fe, io::kTokenFileCap);
+    if (!loaded) {
+      report.error("io", loaded.message(), opts->file);
       return report.finish(kExitUsage);
     }
+    LoadedListing& l = *loaded;
     if (l.form == as::ListingForm::Text) {
       report.error("listing-form",
                    "this is assembly text, not a token stream; `tierlift fmt` prints it in "

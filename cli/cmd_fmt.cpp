@@ -22,15 +22,16 @@ void register_fmt_command(CLI::App& app) {
   add_front_end_options(sub, opts->fe, true);
   set_action(sub, [opts] {
     Report report("fmt", opts->fe.json);
-    if (std::string why = output_conflict(opts->output, {opts->file}); !why.empty()) {
-      report.error("io", why, opts->output);
+    if (ir::Status out = output_conflict(opts->output, {opts->file}); !out) {
+      report.error("io", out.message(), opts->output);
       return report.finish(kExitUsage);
     }
-    LoadedListing l = load_listing(opts->file, opts->fe);
-    if (l.io_error) {
-      report.error("io", l.io_message, opts->file);
+    ir::Result<LoadedListing> loaded = load_listing(opts->file, opts->fe);
+    if (!loaded) {
+      report.error("io", loaded.message(), opts->file);
       return report.finish(kExitUsage);
     }
+    LoadedListing& l = *loaded;
     report.diagnostics(l.diags, l.sources);
     if (!l.program) return report.finish(kExitInvalid);
     // The listing's comments and paragraphs stay; a formatter must not delete them.

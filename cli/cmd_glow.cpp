@@ -284,12 +284,13 @@ int run(const GlowFlags& f) {
       return report.finish(kExitInvalid);
     }
   }
-  std::string err;
-  const std::vector<PairAgreement> pairs = compare_ways(ways, &err);
-  if (!err.empty()) {
-    report.error("agreement", err);
+  ir::Result<std::vector<PairAgreement>> compared = compare_ways(ways);
+  if (!compared) {
+    report.error("agreement", compared.message());
     return report.finish(kExitInvalid);
   }
+  const std::vector<PairAgreement> pairs = std::move(compared).value();
+  std::string err;
   std::vector<FrameReport> frames;
   Animation animation;
   const bool animated = f.frames > 0 && scene_moves;

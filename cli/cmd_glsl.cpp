@@ -47,7 +47,7 @@ int run(const Flags& f) {
   Report report("glsl", f.json);
   for (const std::string* out : {&f.output, &f.spirv}) {
     if (out->empty()) continue;
-    std::string why = check_output(*out, {f.file, f.image}, f.json);
+    std::string why = check_output(*out, {f.file, f.image}, f.json).message();
     if (why.empty() && *out == "-") why = "give -o and --spirv a file";
     if (!why.empty()) {
       report.error(*out == "-" ? "usage" : "io", why, *out);

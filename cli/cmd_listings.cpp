@@ -31,11 +31,11 @@ void register_listings_command(CLI::App& app) {
       if (l.path.ends_with(".frag")) continue; // GLSL (glsl/), not assembly: tierlift/glsl reads it
       const std::string path = "listings/" + std::string(l.path);
       if (path.ends_with(".tss")) { // texture-stage states: validated and lowered
-        std::string error;
-        auto lowered = effects::tss::load_stage_states(std::string(l.text), path, &error);
-        nlohmann::json entry = {{"file", path}, {"valid", lowered.has_value()}};
+        ir::Result<effects::tss::Lowered> lowered =
+            effects::tss::load_stage_states(std::string(l.text), path);
+        nlohmann::json entry = {{"file", path}, {"valid", lowered.ok()}};
         if (!lowered) {
-          if (!report.json()) fmt::print(stderr, "{}", error);
+          if (!report.json()) fmt::print(stderr, "{}", lowered.message());
           if (!report.json()) fmt::print("{}: INVALID\n", path);
           entries.push_back(std::move(entry));
           result = kExitInvalid;

@@ -35,48 +35,55 @@ std::vector<std::string> split(const std::string& list) {
 
 // One list flag into the sweep; a word that is not one of the choices is a usage error.
 template <typename T, typename Parse>
-bool parse_list(const std::optional<std::string>& flag, const char* name, Parse parse,
-                std::vector<T>& out, std::string* error) {
-  if (!flag) return true;
+ir::Status parse_list(const std::optional<std::string>& flag, const char* name, Parse parse,
+                      std::vector<T>& out) {
+  if (!flag) return ir::ok_status();
   out.clear();
   for (const std::string& word : split(*flag)) {
     std::optional<T> v = parse(word);
-    if (!v) {
-      *error = fmt::format("{} '{}': not one of the choices (see --help)", name, word);
-      return false;
-    }
+    if (!v)
+      return ir::fail(name, "usage",
+                      fmt::format("{} '{}': not one of the choices (see --help)", name, word));
     out.push_back(*v);
   }
-  return true;
+  return ir::ok_status();
 }
 
-bool apply_lists(const ReportFlags& f, effects::SweepSettings& s, std::string* error) {
-  return parse_list<effects::Tier>(f.tiers, "--tiers", effects::parse_tier, s.tiers, error) &&
-         parse_list<unsigned>(
-             f.downsamples, "--downsamples",
-             [](const std::string& w) -> std::optional<unsigned> {
-               if (w.size() == 1 && w[0] >= '1' && w[0] <= '4') return unsigned(w[0] - '0');
-               return std::nullopt;
-             },
-             s.downsamples, error) &&
-         parse_list<double>(
-             f.taps, "--taps",
-             [](const std::string& w) -> std::optional<double> {
-               char* end = nullptr;
-               const double v = std::strtod(w.c_str(), &end);
-               if (end == w.c_str() || *end != '\0' || !(v > 0 && v <= 1)) return std::nullopt;
-               return v;
-             },
-             s.taps, error) &&
-         parse_list<img::Format>(f.formats, "--formats", img::parse_format, s.formats, error) &&
-         parse_list<bool>(
-             f.half_texel, "--half-texel",
-             [](const std::string& w) -> std::optional<bool> {
-               if (w == "on") return true;
-               if (w == "off") return false;
-               return std::nullopt;
-             },
-             s.half_texels, error);
+ir::Status apply_lists(const ReportFlags& f, effects::SweepSettings& s) {
+  if (ir::Status st = parse_list<effects::Tier>(f.tiers, "--tiers", effects::parse_tier, s.tiers);
+      !st)
+    return st;
+  if (ir::Status st = parse_list<unsigned>(
+          f.downsamples, "--downsamples",
+          [](const std::string& w) -> std::optional<unsigned> {
+            if (w.size() == 1 && w[0] >= '1' && w[0] <= '4') return unsigned(w[0] - '0');
+            return std::nullopt;
+          },
+          s.downsamples);
+      !st)
+    return st;
+  if (ir::Status st = parse_list<double>(
+          f.taps, "--taps",
+          [](const std::string& w) -> std::optional<double> {
+            char* end = nullptr;
+            const double v = std::strtod(w.c_str(), &end);
+            if (end == w.c_str() || *end != '\0' || !(v > 0 && v <= 1)) return std::nullopt;
+            return v;
+          },
+          s.taps);
+      !st)
+    return st;
+  if (ir::Status st = parse_list<img::Format>(f.formats, "--formats", img::parse_format, s.formats);
+      !st)
+    return st;
+  return parse_list<bool>(
+      f.half_texel, "--half-texel",
+      [](const std::string& w) -> std::optional<bool> {
+        if (w == "on") return true;
+        if (w == "off") return false;
+        return std::nullopt;
+      },
+      s.half_texels);
 }
 
 void print_summary(const effects::SweepResult& r) {
@@ -109,9 +116,8 @@ int run(const ReportFlags& f) {
   const effects::Scene& scene = *load;
   effects::SweepSettings s = f.quick ? effects::quick_sweep() : effects::full_sweep();
   if (f.frames != 0) s.frames = f.frames;
-  std::string err;
-  if (!apply_lists(f, s, &err)) {
-    report.error("usage", err);
+  if (ir::Status lists = apply_lists(f, s); !lists) {
+    report.error("usage", lists.message());
     return report.finish(kExitUsage);
   }
   if (effects::sweep_configs(s, scene.params).empty()) {
@@ -154,7 +160,7 @@ int run(const ReportFlags& f) {
   if (vk) info.vulkan_device = vk->name();
   std::vector<std::string> written;
   if (!f.output.empty())
-    if (err = effects::write_report(f.output, r, s, info, &written); !err.empty()) {
+    if (std::string err = effects::write_report(f.output, r, s, info, &written); !err.empty()) {
       report.error("io", err, f.output);
       return report.finish(kExitUsage);
     }

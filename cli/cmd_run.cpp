@@ -189,11 +189,11 @@ int run(const RunFlags& f) {
   }
   const bool want_cpu = f.backend != "vulkan", want_vulkan = f.backend != "cpu";
   if (!f.output.empty()) {
-    std::string why = check_output(f.output, input_files(f, req), f.fe.json);
+    std::string why = check_output(f.output, input_files(f, req), f.fe.json).message();
     if (why.empty() && f.output == "-" && want_cpu && want_vulkan)
       why = "-o - takes one image; --backend both writes two (give -o a file)";
     if (why.empty() && want_cpu && want_vulkan)
-      why = output_conflict(vulkan_output(f.output), input_files(f, req));
+      why = output_conflict(vulkan_output(f.output), input_files(f, req)).message();
     if (!why.empty()) {
       report.error(f.output == "-" ? "usage" : "io", why, f.output);
       return report.finish(kExitUsage);
@@ -203,11 +203,12 @@ int run(const RunFlags& f) {
   std::optional<LoadedListing> vs, ps;
   for (auto [path, slot] : {std::pair{&f.vs, &vs}, std::pair{&f.ps, &ps}}) {
     if (path->empty()) continue;
-    *slot = load_listing(*path, f.fe);
-    if ((*slot)->io_error) {
-      report.error("io", (*slot)->io_message, *path);
+    ir::Result<LoadedListing> loaded = load_listing(*path, f.fe);
+    if (!loaded) {
+      report.error("io", loaded.message(), *path);
       return report.finish(kExitUsage);
     }
+    *slot = std::move(loaded).value();
   }
   bool listings_ok = true;
   for (auto* l : {&vs, &ps}) {
@@ -220,10 +221,10 @@ int run(const RunFlags& f) {
   auto table = [](const std::optional<LoadedListing>& l) {
     return l && l->constants ? &*l->constants : nullptr;
   };
-  std::string const_error;
-  auto consts = resolve_named_constants(f.consts, table(vs), table(ps), const_error);
+  ir::Result<std::vector<std::string>> consts =
+      resolve_named_constants(f.consts, table(vs), table(ps));
   if (!consts) {
-    report.error("usage", const_error);
+    report.error("usage", consts.message());
     return report.finish(kExitUsage);
   }
   try {

@@ -31,7 +31,8 @@ void register_spirv_command(CLI::App& app) {
   set_action(sub, [opts] {
     Report report("spirv", opts->fe.json);
     if (!opts->output.empty()) {
-      std::string why = check_output(opts->output, {opts->file, opts->pair}, opts->fe.json);
+      std::string why =
+          check_output(opts->output, {opts->file, opts->pair}, opts->fe.json).message();
       if (why.empty() && opts->output == "-" && (opts->dis || opts->explain))
         why = "-o - writes the binary module to standard output; --dis and --explain print "
               "there too";
@@ -40,17 +41,17 @@ void register_spirv_command(CLI::App& app) {
         return report.finish(kExitUsage);
       }
     }
-    LoadedListing main = load_listing(opts->file, opts->fe);
-    std::optional<LoadedListing> other;
+    ir::Result<LoadedListing> main = load_listing(opts->file, opts->fe);
+    std::optional<ir::Result<LoadedListing>> other;
     if (!opts->pair.empty()) other.emplace(load_listing(opts->pair, opts->fe));
-    for (const LoadedListing* l : {&main, other ? &*other : nullptr}) {
+    for (const ir::Result<LoadedListing>* l : {&main, other ? &*other : nullptr}) {
       if (!l) continue;
-      if (l->io_error) {
-        report.error("io", l->io_message);
+      if (!*l) {
+        report.error("io", l->message());
         return report.finish(kExitUsage);
       }
-      report.diagnostics(l->diags, l->sources);
-      if (!l->program) return report.finish(kExitInvalid); // never compile an invalid listing
+      report.diagnostics((*l)->diags, (*l)->sources);
+      if (!(*l)->program) return report.finish(kExitInvalid); // never compile an invalid listing
     }
     codegen::CodegenOptions copts;
     copts.optimize = opts->opt;
@@ -58,8 +59,8 @@ void register_spirv_command(CLI::App& app) {
     std::optional<codegen::ShaderModule> module;
     std::vector<codegen::PrunedItem> pruned;
     if (other) {
-      const ir::Program& a = *main.program;
-      const ir::Program& b = *other->program;
+      const ir::Program& a = *main->program;
+      const ir::Program& b = *(*other)->program;
       if (a.stage() == b.stage()) {
         report.error("usage", "--pair needs one vertex and one pixel listing");
         return report.finish(kExitUsage);
@@ -71,9 +72,9 @@ void register_spirv_command(CLI::App& app) {
         pruned = std::move(pair->pruned);
       }
     } else {
-      module = codegen::compile(*main.program, copts, diags);
+      module = codegen::compile(*main->program, copts, diags);
     }
-    report.diagnostics(diags, main.sources);
+    report.diagnostics(diags, main->sources);
     if (!module) {
       report.error("codegen", "SPIR-V generation failed");
       return report.finish(kExitInvalid);

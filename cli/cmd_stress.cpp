@@ -80,10 +80,10 @@ int run_stress(const StressFlags& f) {
   if (f.only.empty()) {
     rows = effects::run_stress_catalogue(o);
   } else {
-    std::string err;
-    rows = effects::run_stress_case(f.only, o, &err);
+    ir::Result<std::vector<effects::StressRow>> only = effects::run_stress_case(f.only, o);
+    if (only) rows = std::move(only).value();
     if (rows.empty()) {
-      report.error("usage", fmt::format("--case {}: {} (see --list)", f.only, err));
+      report.error("usage", fmt::format("--case {}: {} (see --list)", f.only, only.message()));
       return report.finish(kExitUsage);
     }
   }

@@ -36,13 +36,14 @@ void add_front_end_options(CLI::App* sub, FrontEndOptions& o, bool skip_validati
                   "enough");
 }
 
-std::string output_conflict(const std::string& output, const std::vector<std::string>& inputs) {
-  return io::refuse_if_input(output, inputs).message();
+ir::Status output_conflict(const std::string& output, const std::vector<std::string>& inputs) {
+  return io::refuse_if_input(output, inputs);
 }
 
-std::string check_output(const std::string& output, const std::vector<std::string>& inputs,
-                         bool json) {
-  if (json && output == "-") return "-o - and --json both write standard output; give -o a file";
+ir::Status check_output(const std::string& output, const std::vector<std::string>& inputs,
+                        bool json) {
+  if (json && output == "-")
+    return ir::fail(output, "usage", "-o - and --json both write standard output; give -o a file");
   return output_conflict(output, inputs);
 }
 
@@ -63,27 +64,21 @@ split_defines(const std::vector<std::string>& defines) {
   return out;
 }
 
-LoadedListing load_listing(const std::string& path, const FrontEndOptions& options,
-                           const io::ReadCap& cap) {
+ir::Result<LoadedListing> load_listing(const std::string& path, const FrontEndOptions& options,
+                                       const io::ReadCap& cap) {
   LoadedListing out;
   ir::Result<std::string> text = io::read_bounded(path, cap);
-  if (!text) {
-    out.io_error = true;
-    out.io_message = text.message();
-    return out;
-  }
+  if (!text) return ir::fail(path, "io", text.message());
   // Visual Studio saves listings with a UTF-8 byte-order mark; it is not part of the text.
   if (text->starts_with("\xEF\xBB\xBF")) text->erase(0, 3);
   std::optional<ir::Profile> target;
   if (!options.profile.empty()) {
     target = ir::parse_profile(options.profile);
-    if (!target) {
-      out.io_error = true;
-      out.io_message = fmt::format("unknown profile '{}' (expected one of vs_1_1 vs_2_0 ps_1_1 "
-                                   "ps_1_2 ps_1_3 ps_1_4 ps_2_0)",
-                                   options.profile);
-      return out;
-    }
+    if (!target)
+      return ir::fail(path, "io",
+                      fmt::format("unknown profile '{}' (expected one of vs_1_1 vs_2_0 ps_1_1 "
+                                  "ps_1_2 ps_1_3 ps_1_4 ps_2_0)",
+                                  options.profile));
   }
   as::LoadOptions lopts;
   lopts.parse.defines = split_defines(options.defines);

@@ -14,6 +14,7 @@
 #include "tierlift/io/bounded_read.h"
 #include "tierlift/ir/diagnostic.h"
 #include "tierlift/ir/program.h"
+#include "tierlift/ir/result.h"
 
 namespace tierlift::cli {
 
@@ -43,24 +44,24 @@ struct LoadedListing {
   std::optional<ir::Program> program; // set when it parsed (and validated, unless skipped)
   as::ListingForm form = as::ListingForm::Text; // text or token stream (detected by content)
   std::optional<as::ConstantTable> constants;   // a token stream's CTAB
-  bool io_error = false;                        // could not be read, or a bad flag: exit 2
-  std::string io_message;
 };
 
 // Reads `path` ("-" = standard input) within io::kListingCap — assembly text (a UTF-8
 // byte-order mark is skipped) or a D3D9 token stream, told apart by content
 // (as::load_listing) — parses it, and validates it unless skipped.
 // `cap` is the reader's limit (disasm reads within io::kTokenFileCap).
-LoadedListing load_listing(const std::string& path, const FrontEndOptions& options,
-                           const io::ReadCap& cap = io::kListingCap);
+// A listing that could not be read, or a bad flag, is a failure (rule "io": exit 2); one that
+// was read carries its own diagnostics (LoadedListing::diags), whether it parsed or not.
+ir::Result<LoadedListing> load_listing(const std::string& path, const FrontEndOptions& options,
+                                       const io::ReadCap& cap = io::kListingCap);
 
-// "" when `output` ("-" = standard output) may be written: it is none of `inputs` (same
+// OK when `output` ("-" = standard output) may be written: it is none of `inputs` (same
 // device and inode). Commands check this before doing any work, so nothing is touched.
-std::string output_conflict(const std::string& output, const std::vector<std::string>& inputs);
+ir::Status output_conflict(const std::string& output, const std::vector<std::string>& inputs);
 // output_conflict, and also refuses "-o -" together with --json (both want standard
 // output).
-std::string check_output(const std::string& output, const std::vector<std::string>& inputs,
-                         bool json);
+ir::Status check_output(const std::string& output, const std::vector<std::string>& inputs,
+                        bool json);
 // io::write_output: "-" is standard output, FIFOs and devices are written through, anything
 // else goes through a temporary file renamed into place. "" on success.
 std::string write_output(const std::string& path, std::string_view bytes);

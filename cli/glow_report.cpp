@@ -11,7 +11,7 @@
 
 namespace tierlift::cli {
 
-std::vector<PairAgreement> compare_ways(const std::vector<GlowWay>& ways, std::string* error) {
+ir::Result<std::vector<PairAgreement>> compare_ways(const std::vector<GlowWay>& ways) {
   std::vector<PairAgreement> pairs;
   for (size_t i = 0; i < ways.size(); ++i)
     for (size_t j = i + 1; j < ways.size(); ++j) {
@@ -19,10 +19,9 @@ std::vector<PairAgreement> compare_ways(const std::vector<GlowWay>& ways, std::s
                       effects::compare_runs(ways[i].glow.run, ways[i].glow.images, ways[j].glow.run,
                                             ways[j].glow.images,
                                             std::string(effects::kFinalTexture))};
-      if (!p.agreement.error.empty()) {
-        if (error) *error = fmt::format("{} vs {}: {}", p.a, p.b, p.agreement.error);
-        return {};
-      }
+      if (!p.agreement.error.empty())
+        return ir::fail(p.a + " vs " + p.b, "agreement",
+                        fmt::format("{} vs {}: {}", p.a, p.b, p.agreement.error));
       pairs.push_back(std::move(p));
     }
   return pairs;

@@ -9,6 +9,7 @@
 
 #include "tierlift/effects/agreement.h"
 #include "tierlift/effects/glow_run.h"
+#include "tierlift/ir/result.h"
 
 namespace tierlift::cli {
 
@@ -24,9 +25,9 @@ struct PairAgreement {
   effects::RunAgreement agreement;
 };
 
-// Every pair of `ways` in order (cpu·vulkan, cpu·analytic, vulkan·analytic); an error
-// message (both runs have passes but cannot be compared) in *error.
-std::vector<PairAgreement> compare_ways(const std::vector<GlowWay>& ways, std::string* error);
+// Every pair of `ways` in order (cpu·vulkan, cpu·analytic, vulkan·analytic); fails (rule
+// "agreement") when both runs have passes but cannot be compared.
+ir::Result<std::vector<PairAgreement>> compare_ways(const std::vector<GlowWay>& ways);
 
 // The table: one row per pass and one for the frame; for each pair max abs, RMSE and the
 // share of identical pixels, a '!' after a pair beyond docs/design.md's targets.

@@ -26,27 +26,25 @@ std::vector<std::string> split_values(std::string_view value) {
   }
 }
 
-std::optional<std::vector<std::string>> expand(std::string_view prefix, const as::NamedConstant& c,
-                                               std::string_view value, std::string& error) {
+// The register settings `value` makes of `c`, or why it does not fit.
+ir::Result<std::vector<std::string>> expand(std::string_view prefix, const as::NamedConstant& c,
+                                            std::string_view value) {
+  auto fail = [&](std::string why) { return ir::fail(c.name, "usage", std::move(why)); };
   std::vector<std::string> values = split_values(value);
   std::vector<std::string> out;
   if (c.set == as::ConstantSet::Bool) {
-    if (values.size() != 1) {
-      error = fmt::format("'{}' ({}) takes one value, true or false", c.name, c.registers());
-      return std::nullopt;
-    }
+    if (values.size() != 1)
+      return fail(fmt::format("'{}' ({}) takes one value, true or false", c.name, c.registers()));
     out.push_back(fmt::format("{}b{}={}", prefix, c.index, value));
     return out;
   }
-  if (c.set == as::ConstantSet::Sampler) {
-    error = fmt::format("'{}' is a sampler ({}); bind it with --texture", c.name, c.registers());
-    return std::nullopt;
-  }
-  if (values.size() % 4 != 0 || values.size() > 4 * size_t{c.count}) {
-    error = fmt::format("'{}' ({}, {}) takes 4 numbers per register, at most {}; got {}", c.name,
-                        c.registers(), c.type.empty() ? "?" : c.type, 4 * c.count, values.size());
-    return std::nullopt;
-  }
+  if (c.set == as::ConstantSet::Sampler)
+    return fail(
+        fmt::format("'{}' is a sampler ({}); bind it with --texture", c.name, c.registers()));
+  if (values.size() % 4 != 0 || values.size() > 4 * size_t{c.count})
+    return fail(fmt::format("'{}' ({}, {}) takes 4 numbers per register, at most {}; got {}",
+                            c.name, c.registers(), c.type.empty() ? "?" : c.type, 4 * c.count,
+                            values.size()));
   const char* file = c.set == as::ConstantSet::Int4 ? "i" : "c";
   for (size_t r = 0; r < values.size() / 4; ++r)
     out.push_back(fmt::format("{}{}{}={},{},{},{}", prefix, file, c.index + r, values[4 * r],
@@ -56,9 +54,9 @@ std::optional<std::vector<std::string>> expand(std::string_view prefix, const as
 
 } // namespace
 
-std::optional<std::vector<std::string>>
+ir::Result<std::vector<std::string>>
 resolve_named_constants(const std::vector<std::string>& settings, const as::ConstantTable* vs,
-                        const as::ConstantTable* ps, std::string& error) {
+                        const as::ConstantTable* ps) {
   std::vector<std::string> out;
   for (const std::string& s : settings) {
     std::string_view body = s;
@@ -77,21 +75,16 @@ resolve_named_constants(const std::vector<std::string>& settings, const as::Cons
     for (auto [stage, table, wanted] : {std::tuple{"vs:", vs, want_vs}, {"ps:", ps, want_ps}}) {
       const as::NamedConstant* c = wanted && table ? table->find(name) : nullptr;
       if (!c) continue;
-      std::string why;
-      auto regs = expand(stage, *c, body.substr(eq + 1), why);
-      if (!regs) {
-        error = fmt::format("--const '{}': {}", s, why);
-        return std::nullopt;
-      }
+      ir::Result<std::vector<std::string>> regs = expand(stage, *c, body.substr(eq + 1));
+      if (!regs) return ir::fail(s, "usage", fmt::format("--const '{}': {}", s, regs.message()));
       out.insert(out.end(), regs->begin(), regs->end());
       found = true;
     }
-    if (!found) {
-      error = fmt::format("--const '{}': '{}' is neither a register (cN, iN, bN) nor a constant "
-                          "named in the listings' constant tables (CTAB){}",
-                          s, name, vs || ps ? "" : "; these listings carry none");
-      return std::nullopt;
-    }
+    if (!found)
+      return ir::fail(s, "usage",
+                      fmt::format("--const '{}': '{}' is neither a register (cN, iN, bN) nor a "
+                                  "constant named in the listings' constant tables (CTAB){}",
+                                  s, name, vs || ps ? "" : "; these listings carry none"));
   }
   return out;
 }

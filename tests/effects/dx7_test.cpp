@@ -77,9 +77,9 @@ TEST(Dx7Weights, NamesRoundTrip) {
 // ---- the .tss format ----
 
 std::string errors_of(const std::string& text) {
-  std::string error;
-  EXPECT_FALSE(tss::load_stage_states(text, "bad.tss", &error)) << text;
-  return error;
+  ir::Result<tss::Lowered> l = tss::load_stage_states(text, "bad.tss");
+  EXPECT_FALSE(l) << text;
+  return l.message();
 }
 
 TEST(StageStates, BadInputIsAPositionedError) {
@@ -121,20 +121,18 @@ TEST(StageStates, BadInputIsAPositionedError) {
 }
 
 TEST(StageStates, AcceptsDirect3DSpellingsAndComments) {
-  std::string error;
   auto l = tss::load_stage_states("// D3D names\nSTAGE 0: D3DTSS_COLOROP D3DTOP_MODULATE "
                                   "D3DTA_TEXTURE, D3DTA_DIFFUSE  # t0 * diffuse\n",
-                                  "ok.tss", &error);
-  ASSERT_TRUE(l) << error;
+                                  "ok.tss");
+  ASSERT_TRUE(l) << l.message();
   EXPECT_EQ(l->texture_stages, 1u);
 }
 
 TEST(StageStates, TheBuiltInBlurQuadLowersToTwoTexturesAndOneVertexColour) {
   auto text = listings::find_embedded(kDx7BlurStates);
   ASSERT_TRUE(text);
-  std::string error;
-  auto l = tss::load_stage_states(std::string(*text), "blur_pair.tss", &error);
-  ASSERT_TRUE(l) << error;
+  auto l = tss::load_stage_states(std::string(*text), "blur_pair.tss");
+  ASSERT_TRUE(l) << l.message();
   EXPECT_EQ(l->texture_stages, 2u);
   EXPECT_EQ(l->ps->profile, ir::Profile::ps_1_1);
   EXPECT_EQ(l->vs->profile, ir::Profile::vs_1_1);

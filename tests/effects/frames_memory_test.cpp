@@ -29,10 +29,12 @@ EffectGraph accumulate_graph(uint32_t w, uint32_t h) {
   g.textures = {{"scene", w, h, img::Format::RGBA32F, true}, {"acc", w, h, img::Format::RGBA32F}};
   PassDesc p;
   p.name = "add";
-  std::string err;
-  p.vs = builtin_listing("glow/quad4_coords.vsh", &err);
-  p.ps = builtin_listing("glow/extract_sources.psh", &err);
-  EXPECT_TRUE(p.vs && p.ps) << err;
+  ListingResult vs = builtin_listing("glow/quad4_coords.vsh");
+  ListingResult ps = builtin_listing("glow/extract_sources.psh");
+  EXPECT_TRUE(vs) << vs.message();
+  EXPECT_TRUE(ps) << ps.message();
+  p.vs = vs ? *vs : nullptr;
+  p.ps = ps ? *ps : nullptr;
   // Point reads at texel centres: offset ½ texel (c0), scale 1 (c4).
   p.vs_constants.assign(8, cpu::Vec4{0, 0, 0, 0});
   p.vs_constants[0] = {0.5f / float(w), 0.5f / float(h), 0, 0};

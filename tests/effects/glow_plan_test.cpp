@@ -93,21 +93,22 @@ TEST(GlowPlan, TapsAreSymmetricNormalisedAndUseThePrintedListings) {
 
 TEST(BlurProfile, SingleGaussianByHand) {
   // σ = 1: R = 3, weights e^(−k²/2) / (1 + 2(e^−½ + e^−2 + e^−4.5)).
-  std::string err;
-  auto taps = sample_blur_profile(one_gaussian(1.0, 1.0), 1, &err);
-  ASSERT_EQ(taps.size(), 7u) << err;
+  ir::Result<std::vector<BlurTap>> sampled = sample_blur_profile(one_gaussian(1.0, 1.0), 1);
+  ASSERT_TRUE(sampled) << sampled.message();
+  const std::vector<BlurTap>& taps = *sampled;
+  ASSERT_EQ(taps.size(), 7u);
   const double norm = 1 + 2 * (0.6065306597126334 + 0.1353352832366127 + 0.0111089965382423);
   EXPECT_NEAR(taps[3].weight, 1 / norm, 1e-12);
   EXPECT_NEAR(taps[0].weight, 0.0111089965382423 / norm, 1e-12);
 }
 
 TEST(BlurProfile, BadProfilesAreErrors) {
-  std::string err;
-  EXPECT_TRUE(sample_blur_profile(one_gaussian(0.0, 1.0), 1, &err).empty());
-  EXPECT_FALSE(err.empty());
-  EXPECT_TRUE(sample_blur_profile(one_gaussian(1.0, 0.0), 1, &err).empty());
-  EXPECT_TRUE(sample_blur_profile(one_gaussian(NAN, 1.0), 1, &err).empty());
-  EXPECT_TRUE(sample_blur_profile(one_gaussian(5000.0, 1.0), 1, &err).empty());
+  ir::Result<std::vector<BlurTap>> zero_sigma = sample_blur_profile(one_gaussian(0.0, 1.0), 1);
+  EXPECT_FALSE(zero_sigma);
+  EXPECT_FALSE(zero_sigma.message().empty());
+  EXPECT_FALSE(sample_blur_profile(one_gaussian(1.0, 0.0), 1));
+  EXPECT_FALSE(sample_blur_profile(one_gaussian(NAN, 1.0), 1));
+  EXPECT_FALSE(sample_blur_profile(one_gaussian(5000.0, 1.0), 1));
   GlowParams p;
   p.downsample = 5;
   EXPECT_FALSE(build_glow_dx9(p));

@@ -53,13 +53,15 @@ TEST(Graph, MissingOrWrongSizedInputIsAnError) {
 }
 
 TEST(BuiltinListing, UnknownAndKnown) {
-  std::string err;
-  EXPECT_EQ(builtin_listing("glow/nothing.psh", &err), nullptr);
-  EXPECT_NE(err.find("no built-in listing"), std::string::npos);
+  ListingResult none = builtin_listing("glow/nothing.psh");
+  EXPECT_FALSE(none);
+  EXPECT_NE(none.message().find("no built-in listing"), std::string::npos);
   for (const char* p :
        {"glow/quad4_coords.vsh", "glow/extract_sources.psh", "glow/extract_sources_ps11.psh",
-        "glow/downsample4.psh", "glow/composite_add.psh"})
-    EXPECT_NE(builtin_listing(p, &err), nullptr) << p << ": " << err;
+        "glow/downsample4.psh", "glow/composite_add.psh"}) {
+    ListingResult r = builtin_listing(p);
+    EXPECT_TRUE(r && *r != nullptr) << p << ": " << r.message();
+  }
 }
 
 // With alpha 0 everywhere nothing glows: the composite must return the scene exactly.

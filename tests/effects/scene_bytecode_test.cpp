@@ -30,12 +30,12 @@ TEST(SceneBytecode, ListingFileMayBeATokenStream) {
   ASSERT_TRUE(parsed.program.has_value());
   auto pso = scratch_dir() / "l4.pso";
   std::ofstream(pso, std::ios::binary) << as::tokens_to_bytes(as::assemble(*parsed.program));
-  std::string error;
-  auto from_tokens = glow_listing(name, {{name, pso.string()}}, &error);
-  ASSERT_TRUE(from_tokens) << error;
-  auto built_in = builtin_listing(name, &error);
-  ASSERT_TRUE(built_in) << error;
-  EXPECT_TRUE(ir::same_ir(*from_tokens, *built_in)) << ir::ir_difference(*from_tokens, *built_in);
+  ListingResult from_tokens = glow_listing(name, {{name, pso.string()}});
+  ASSERT_TRUE(from_tokens) << from_tokens.message();
+  ListingResult built_in = builtin_listing(name);
+  ASSERT_TRUE(built_in) << built_in.message();
+  EXPECT_TRUE(ir::same_ir(**from_tokens, **built_in))
+      << ir::ir_difference(**from_tokens, **built_in);
   // And through a scene file that names it.
   auto scene = scratch_dir() / "s.json";
   std::ofstream(scene) << R"({"glow": {"tier": "dx8", "listings": {")" << name

@@ -152,9 +152,10 @@ TEST(Scene, SawtoothTapsByHand) {
   ir::Result<Scene> s = parse(R"({"glow": {"downsample": 1,
       "profile": {"sawtooth": {"period": 2, "radius": 3, "weight": 1}}}})");
   ASSERT_TRUE(s) << s.message();
-  std::string err;
-  std::vector<BlurTap> taps = sample_blur_profile(s->params.profile, 1, &err);
-  ASSERT_EQ(taps.size(), 7u) << err;
+  ir::Result<std::vector<BlurTap>> sampled = sample_blur_profile(s->params.profile, 1);
+  ASSERT_TRUE(sampled) << sampled.message();
+  const std::vector<BlurTap>& taps = *sampled;
+  ASSERT_EQ(taps.size(), 7u);
   const double want[7] = {0.1, 0.2, 0.1, 0.2, 0.1, 0.2, 0.1};
   for (int k = 0; k < 7; ++k) {
     EXPECT_EQ(taps[k].offset, k - 3);

@@ -28,9 +28,10 @@ protected:
     return o;
   }
   std::vector<StressRow> run(const std::string& id) {
-    std::string err;
-    std::vector<StressRow> rows = effects::run_stress_case(id, options(), &err);
-    EXPECT_FALSE(rows.empty()) << err;
+    ir::Result<std::vector<StressRow>> ran = effects::run_stress_case(id, options());
+    EXPECT_TRUE(ran) << ran.message();
+    std::vector<StressRow> rows = ran ? std::move(ran).value() : std::vector<StressRow>{};
+    EXPECT_FALSE(rows.empty());
     for (const StressRow& r : rows) {
       EXPECT_EQ(r.measured.size(), 3u) << r.id;
       EXPECT_EQ(r.verdict, "PASS") << r.id << ": " << r.error << " " << r.note;

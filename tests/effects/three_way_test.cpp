@@ -297,11 +297,10 @@ TEST(ThreeWayAnalytic, UnmodelledPassesAreErrors) {
   const img::Image scene = make_scene(Scene::RandomAlpha, p.width, p.height);
   GlowPlan plan = build_glow(p);
   ASSERT_TRUE(plan) << plan.error;
-  std::string err;
-  auto product = builtin_listing("glow/extract_sources.psh", &err); // rgb × alpha
-  ASSERT_NE(product, nullptr) << err;
+  ListingResult product = builtin_listing("glow/extract_sources.psh"); // rgb × alpha
+  ASSERT_TRUE(product) << product.message();
   GlowPlan bad = plan;
-  bad.graph.passes.back().ps = product; // the composite, still declared Linear
+  bad.graph.passes.back().ps = *product; // the composite, still declared Linear
   AnalyticPassDevice analytic;
   GlowRun r = run_glow(bad, scene, analytic);
   EXPECT_FALSE(r.run.ok);

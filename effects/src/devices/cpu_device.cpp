@@ -70,9 +70,8 @@ void CpuPassDevice::settle(const std::string& name) {
 
 std::string CpuPassDevice::run_pass(const PassDesc& desc) {
   if (!graph_) return "no run was begun";
-  std::string error;
-  std::optional<pass::Pass> pass = make_pass(desc, placeholders_, graph_->conventions, &error);
-  if (!pass) return error;
+  ir::Result<pass::Pass> pass = make_pass(desc, placeholders_, graph_->conventions);
+  if (!pass) return pass.message();
   pass->executor = executor_;
   // A GLSL pass: the interpreter runs D3D9 listings only, so it runs the pass's ps_2_0 twin
   // (PassDesc::glsl_spirv; docs/glsl.md). The GLSL and the twin are compared on the Vulkan

@@ -89,9 +89,8 @@ private:
   };
 
   std::string make_draw(const PassDesc& desc, Draw& out) const {
-    std::string error;
-    std::optional<pass::Pass> pass = make_pass(desc, placeholders_, graph_->conventions, &error);
-    if (!pass) return error;
+    ir::Result<pass::Pass> pass = make_pass(desc, placeholders_, graph_->conventions);
+    if (!pass) return pass.message();
     auto target = ids_.find(desc.target);
     if (target == ids_.end()) return fmt::format("no texture '{}'", desc.target);
     if (desc.more_targets.size() + 1 > out.targets.color.size())

@@ -85,23 +85,21 @@ std::string op_comment(const Operation& o, uint32_t n, std::string_view state) {
   return fmt::format("  // stage {} {} (line {})", n, state, o.loc.line);
 }
 
-std::shared_ptr<const ir::Program> read(std::string text, std::string name, std::string* error) {
+ir::Result<std::shared_ptr<const ir::Program>> read(std::string text, std::string name) {
   ir::SourceManager sources;
-  const uint32_t file = sources.add(std::move(name), std::move(text));
+  const uint32_t file = sources.add(name, std::move(text));
   as::LoadOptions options;
   options.parse.allow_include = false;
   options.warnings = false;
   as::Loaded r = as::load_listing(file, sources, options);
-  if (!r.program) {
-    if (error) *error = ir::render_text(r.program.diagnostics(), sources);
-    return nullptr;
-  }
+  if (!r.program)
+    return ir::fail(std::move(name), "listing", ir::render_text(r.program.diagnostics(), sources));
   return std::make_shared<const ir::Program>(std::move(r.program).value());
 }
 
 } // namespace
 
-std::optional<Lowered> lower_stage_states(const StageStates& st, std::string* error) {
+ir::Result<Lowered> lower_stage_states(const StageStates& st) {
   Lowered out;
   uint32_t enabled = 0;
   while (enabled < kD3DMaxStages && stage_enabled(st, enabled)) ++enabled;
@@ -154,26 +152,24 @@ std::optional<Lowered> lower_stage_states(const StageStates& st, std::string* er
   if (diffuse) vs += fmt::format("mov oD0, c{}  // the diffuse D3DCOLOR\n", kDiffuseConstant);
   if (specular) vs += fmt::format("mov oD1, c{}  // the specular D3DCOLOR\n", kSpecularConstant);
 
-  out.vs = read(vs, "<lowered tss vertex>", error);
-  if (!out.vs) return std::nullopt;
-  out.ps = read(ps, "<lowered tss pixel>", error);
-  if (!out.ps) return std::nullopt;
+  ir::Result<std::shared_ptr<const ir::Program>> vs_program = read(vs, "<lowered tss vertex>");
+  if (!vs_program) return std::move(vs_program).failure();
+  out.vs = std::move(vs_program).value();
+  ir::Result<std::shared_ptr<const ir::Program>> ps_program = read(ps, "<lowered tss pixel>");
+  if (!ps_program) return std::move(ps_program).failure();
+  out.ps = std::move(ps_program).value();
   out.vs_text = std::move(vs);
   out.ps_text = std::move(ps);
   return out;
 }
 
-std::optional<Lowered> load_stage_states(std::string text, std::string name, std::string* error,
-                                         uint32_t max_stages) {
+ir::Result<Lowered> load_stage_states(std::string text, std::string name, uint32_t max_stages) {
   ir::SourceManager sources;
   ir::DiagnosticSink diags;
-  const uint32_t file = sources.add(std::move(name), std::move(text));
+  const uint32_t file = sources.add(name, std::move(text));
   std::optional<StageStates> st = parse_stage_states(file, sources, diags, max_stages);
-  if (!st) {
-    if (error) *error = ir::render_text(diags, sources);
-    return std::nullopt;
-  }
-  return lower_stage_states(*st, error);
+  if (!st) return ir::fail(std::move(name), "tss", ir::render_text(diags, sources));
+  return lower_stage_states(*st);
 }
 
 } // namespace tierlift::effects::tss

@@ -55,12 +55,9 @@ double profile_weight_sum(const BlurProfile& profile) {
   return sum;
 }
 
-std::vector<BlurTap> sample_blur_profile(const BlurProfile& profile, unsigned downsample,
-                                         std::string* error) {
-  auto fail = [&](std::string why) {
-    if (error) *error = std::move(why);
-    return std::vector<BlurTap>{};
-  };
+ir::Result<std::vector<BlurTap>> sample_blur_profile(const BlurProfile& profile,
+                                                     unsigned downsample) {
+  auto fail = [](std::string why) { return ir::fail("profile", "profile", std::move(why)); };
   if (downsample == 0) return fail("downsample factor 0");
   if (profile.terms.empty() && !profile.sawtooth) return fail("the blur profile has no terms");
   if (profile.max_taps % 2 == 0 && profile.max_taps != 0)

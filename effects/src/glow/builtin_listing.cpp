@@ -13,10 +13,8 @@ namespace {
 
 // Text or a D3D9 token stream (raw or a C array), told apart by content: a scene's
 // "listings" may name a .pso/.vso as well as a .psh/.vsh (as::load_listing).
-std::shared_ptr<const ir::Program> parse_and_validate(std::string text, std::string name,
-                                                      bool allow_include,
-                                                      const ListingOptions& listing,
-                                                      std::string* error) {
+ListingResult parse_and_validate(std::string text, std::string name, bool allow_include,
+                                 const ListingOptions& listing) {
   ir::SourceManager sources;
   uint32_t file = sources.add(std::move(name), std::move(text));
   as::LoadOptions options;
@@ -37,43 +35,39 @@ std::shared_ptr<const ir::Program> parse_and_validate(std::string text, std::str
       options.profile = listing.profile;
   }
   as::Loaded r = as::load_listing(file, sources, options);
-  if (!r.program) {
-    if (error) *error = ir::render_text(r.program.diagnostics(), sources);
-    return nullptr;
-  }
+  if (!r.program)
+    return ir::fail(sources.files[file].name, "listing",
+                    ir::render_text(r.program.diagnostics(), sources));
   return std::make_shared<const ir::Program>(std::move(r.program).value());
 }
 
 } // namespace
 
-std::shared_ptr<const ir::Program> builtin_listing(std::string_view path, std::string* error,
-                                                   const ListingOptions& options) {
+ListingResult builtin_listing(std::string_view path, const ListingOptions& options) {
   std::optional<std::string_view> text = listings::find_embedded(path);
-  if (!text) {
-    if (error) *error = fmt::format("no built-in listing '{}'", path);
-    return nullptr;
-  }
-  return parse_and_validate(std::string(*text), std::string(path), false, options, error);
+  if (!text)
+    return ir::fail(std::string(path), "listing", fmt::format("no built-in listing '{}'", path));
+  return parse_and_validate(std::string(*text), std::string(path), false, options);
 }
 
-std::shared_ptr<const ir::Program>
-glow_listing(std::string_view path, const std::map<std::string, std::string, std::less<>>& files,
-             std::string* error, const ListingOptions& options) {
+ListingResult glow_listing(std::string_view path,
+                           const std::map<std::string, std::string, std::less<>>& files,
+                           const ListingOptions& options) {
   auto it = files.find(path);
-  if (it == files.end()) return builtin_listing(path, error, options);
+  if (it == files.end()) return builtin_listing(path, options);
   ir::Result<std::string> text = io::read_bounded(it->second, io::kListingCap);
   if (!text) {
     // "PATH: why" → "PATH: error: why", the form of the other diagnostics.
     std::string why = text.message();
     const std::string head = it->second + ": ";
     if (why.starts_with(head)) why.erase(0, head.size());
-    if (error)
-      *error = fmt::format("{}: error: {} (it replaces built-in '{}')", it->second, why, path);
-    return nullptr;
+    return ir::fail(
+        it->second, "io",
+        fmt::format("{}: error: {} (it replaces built-in '{}')", it->second, why, path));
   }
   // A UTF-8 byte-order mark is not part of the text; a token stream is read as it stands.
   if (text->starts_with("\xEF\xBB\xBF")) text->erase(0, 3);
-  return parse_and_validate(std::move(*text), it->second, true, options, error);
+  return parse_and_validate(std::move(*text), it->second, true, options);
 }
 
 } // namespace tierlift::effects

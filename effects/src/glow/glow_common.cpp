@@ -21,8 +21,7 @@ struct Listings {
   ProgramPtr fogged; // the fogged extract (only with fog)
 };
 
-std::optional<Listings> load_listings(const GlowParams& p, const TierListingPaths& paths,
-                                      std::string* error) {
+ir::Result<Listings> load_listings(const GlowParams& p, const TierListingPaths& paths) {
   Listings l;
   const std::pair<ProgramPtr*, std::string_view> wanted[] = {
       {&l.helper_vs, paths.helper_vs},      {&l.extract, paths.extract_ps},
@@ -30,16 +29,19 @@ std::optional<Listings> load_listings(const GlowParams& p, const TierListingPath
       {&l.blur_vs, paths.blur_vs},          {&l.blur_ps, paths.blur_ps}};
   for (const auto& [slot, path] : wanted) {
     if (path.empty()) continue; // tier dx7 draws its blur from stage states
-    *slot = glow_listing(path, p.listing_files, error, p.listing_options);
-    if (!*slot) return std::nullopt;
+    ListingResult r = glow_listing(path, p.listing_files, p.listing_options);
+    if (!r) return std::move(r).failure();
+    *slot = std::move(r).value();
   }
   if (p.afterimage != Afterimage::Off) {
-    l.mix = glow_listing(paths.mix_ps, p.listing_files, error, p.listing_options);
-    if (!l.mix) return std::nullopt;
+    ListingResult r = glow_listing(paths.mix_ps, p.listing_files, p.listing_options);
+    if (!r) return std::move(r).failure();
+    l.mix = std::move(r).value();
   }
   if (p.context.fog.on) {
-    l.fogged = glow_listing(paths.fogged_ps, p.listing_files, error, p.listing_options);
-    if (!l.fogged) return std::nullopt;
+    ListingResult r = glow_listing(paths.fogged_ps, p.listing_files, p.listing_options);
+    if (!r) return std::move(r).failure();
+    l.fogged = std::move(r).value();
   }
   return l;
 }
@@ -332,8 +334,12 @@ GlowPlan build_glow_graph(const GlowParams& p, const TierRecipe& r) {
   GlowPlan plan;
   plan.error = check_params(p, r);
   if (!plan.error.empty()) return plan;
-  plan.taps = sample_blur_profile(p.profile, p.downsample, &plan.error);
-  if (plan.taps.empty()) return plan;
+  ir::Result<std::vector<BlurTap>> taps = sample_blur_profile(p.profile, p.downsample);
+  if (!taps) {
+    plan.error = taps.message();
+    return plan;
+  }
+  plan.taps = std::move(taps).value();
   if (r.constants_clamp_to_one) {
     size_t above = 0;
     double top = 0;
@@ -346,8 +352,11 @@ GlowPlan build_glow_graph(const GlowParams& p, const TierRecipe& r) {
                       "ps.1.x constant clamps to [-1, 1])",
                       above, top, r.tier));
   }
-  std::optional<Listings> l = load_listings(p, r.listings, &plan.error);
-  if (!l) return plan;
+  ir::Result<Listings> l = load_listings(p, r.listings);
+  if (!l) {
+    plan.error = l.message();
+    return plan;
+  }
   if (p.context.fog.on && ir::is_ps1x(l->fogged->profile))
     if (std::string why = fog_ps1x_limit(p.context.fog); !why.empty()) {
       plan.error = fmt::format("tier {}: {}", r.tier, why);

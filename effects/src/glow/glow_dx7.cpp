@@ -12,7 +12,7 @@
 namespace tierlift::effects {
 namespace {
 
-std::shared_ptr<const tss::Lowered> blur_states(const GlowParams& p, std::string* error) {
+ir::Result<std::shared_ptr<const tss::Lowered>> blur_states(const GlowParams& p) {
   std::string text, name;
   if (auto it = p.listing_files.find(kDx7BlurStates); it != p.listing_files.end()) {
     ir::Result<std::string> read = io::read_bounded(it->second, io::kListingCap);
@@ -20,30 +20,28 @@ std::shared_ptr<const tss::Lowered> blur_states(const GlowParams& p, std::string
       std::string why = read.message();
       const std::string head = it->second + ": ";
       if (why.starts_with(head)) why.erase(0, head.size());
-      *error =
-          fmt::format("{}: error: {} (it replaces built-in '{}')", it->second, why, kDx7BlurStates);
-      return nullptr;
+      return ir::fail(it->second, "io",
+                      fmt::format("{}: error: {} (it replaces built-in '{}')", it->second, why,
+                                  kDx7BlurStates));
     }
     text = std::move(*read);
     if (text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);
     name = it->second;
   } else {
     std::optional<std::string_view> builtin = listings::find_embedded(kDx7BlurStates);
-    if (!builtin) {
-      *error = fmt::format("no built-in stage states '{}'", kDx7BlurStates);
-      return nullptr;
-    }
+    if (!builtin)
+      return ir::fail(std::string(kDx7BlurStates), "tss",
+                      fmt::format("no built-in stage states '{}'", kDx7BlurStates));
     text = std::string(*builtin);
     name = std::string(kDx7BlurStates);
   }
-  std::optional<tss::Lowered> lowered = tss::load_stage_states(std::move(text), name, error);
-  if (!lowered) return nullptr;
-  if (lowered->texture_stages == 0) {
-    *error = fmt::format("{}: error: no stage reads its texture: a blur quad would sample "
-                         "nothing\n",
-                         name);
-    return nullptr;
-  }
+  ir::Result<tss::Lowered> lowered = tss::load_stage_states(std::move(text), name);
+  if (!lowered) return std::move(lowered).failure();
+  if (lowered->texture_stages == 0)
+    return ir::fail(name, "tss",
+                    fmt::format("{}: error: no stage reads its texture: a blur quad would sample "
+                                "nothing\n",
+                                name));
   return std::make_shared<const tss::Lowered>(std::move(*lowered));
 }
 
@@ -51,8 +49,12 @@ std::shared_ptr<const tss::Lowered> blur_states(const GlowParams& p, std::string
 
 GlowPlan build_glow_dx7(const GlowParams& params) {
   GlowPlan failed;
-  std::shared_ptr<const tss::Lowered> states = blur_states(params, &failed.error);
-  if (!states) return failed;
+  ir::Result<std::shared_ptr<const tss::Lowered>> blur = blur_states(params);
+  if (!blur) {
+    failed.error = blur.message();
+    return failed;
+  }
+  std::shared_ptr<const tss::Lowered> states = std::move(blur).value();
   detail::TierRecipe r;
   r.tier = "dx7";
   // As tier dx8 (glow_dx8.cpp): above 1, c0 = value / 4 and the listing's _x4.

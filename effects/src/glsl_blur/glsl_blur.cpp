@@ -52,10 +52,9 @@ GlowPlan build_glsl_blur(const GlowParams& params, const GlslBlurParams& g) {
     plan.error = "glsl step: not a finite number";
     return plan;
   }
-  std::string error;
-  auto vs = builtin_listing(kQuadVs, &error, params.listing_options);
+  ListingResult vs = builtin_listing(kQuadVs, params.listing_options);
   if (!vs) {
-    plan.error = error;
+    plan.error = vs.message();
     return plan;
   }
   EffectGraph& graph = plan.graph;
@@ -78,9 +77,9 @@ GlowPlan build_glsl_blur(const GlowParams& params, const GlslBlurParams& g) {
     }
     std::map<std::string, std::string, std::less<>> files;
     if (!a.twin_file.empty()) files.emplace(std::string(a.twin_builtin), a.twin_file);
-    auto twin = glow_listing(a.twin_builtin, files, &error, params.listing_options);
+    ListingResult twin = glow_listing(a.twin_builtin, files, params.listing_options);
     if (!twin) {
-      plan.error = error;
+      plan.error = twin.message();
       return plan;
     }
     for (const glsl::Sampler& s : shader.shader->samplers)
@@ -92,8 +91,8 @@ GlowPlan build_glsl_blur(const GlowParams& params, const GlslBlurParams& g) {
       }
     PassDesc p;
     p.name = a.name;
-    p.vs = vs;
-    p.ps = twin;
+    p.vs = *vs;
+    p.ps = *twin;
     // oT0 = uv · c4 + c0: the quad uv plus half a texel, so vTexCoord (t0) is a texel centre.
     p.vs_constants = {{float(0.5 / w), float(0.5 / h), 0, 0},
                       {},

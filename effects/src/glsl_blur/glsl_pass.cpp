@@ -27,17 +27,14 @@ std::string twin_text(const glsl::FragmentShader& shader) {
   return t;
 }
 
-std::shared_ptr<const ir::Program> assemble(std::string text, const std::string& name,
-                                            std::string* error) {
+ListingResult assemble(std::string text, const std::string& name) {
   ir::SourceManager sources;
   const uint32_t file = sources.add(name, std::move(text));
   as::LoadOptions options;
   options.warnings = false;
   as::Loaded r = as::load_listing(file, sources, options);
-  if (!r.program) {
-    *error = ir::render_text(r.program.diagnostics(), sources);
-    return nullptr;
-  }
+  if (!r.program)
+    return ir::fail(name, "listing", ir::render_text(r.program.diagnostics(), sources));
   return std::make_shared<const ir::Program>(std::move(r.program).value());
 }
 
@@ -57,12 +54,14 @@ GlowPlan build_glsl_pass(const glsl::FragmentShader& shader, uint32_t width, uin
                                shader.file, in.name, in.location, kGlslPassInputs - 1);
       return plan;
     }
-  std::string error;
-  auto vs = builtin_listing(kQuadVs, &error);
-  auto twin =
-      vs ? assemble(twin_text(shader), "(the GLSL pass's generated ps_2_0 twin)", &error) : nullptr;
-  if (!vs || !twin) {
-    plan.error = error;
+  ListingResult vs = builtin_listing(kQuadVs);
+  if (!vs) {
+    plan.error = vs.message();
+    return plan;
+  }
+  ListingResult twin = assemble(twin_text(shader), "(the GLSL pass's generated ps_2_0 twin)");
+  if (!twin) {
+    plan.error = twin.message();
     return plan;
   }
   EffectGraph& g = plan.graph;
@@ -70,8 +69,8 @@ GlowPlan build_glsl_pass(const glsl::FragmentShader& shader, uint32_t width, uin
   g.textures.push_back({std::string(kFinalTexture), width, height, format, false});
   PassDesc p;
   p.name = "glsl";
-  p.vs = vs;
-  p.ps = twin;
+  p.vs = *vs;
+  p.ps = *twin;
   // oTk = uv · c(k+4) + ck: the quad uv plus half a texel, for k = 0..3.
   const pass::Vec4 half{float(0.5 / width), float(0.5 / height), 0, 0}, one{1, 1, 1, 1};
   p.vs_constants = {half, half, half, half, one, one, one, one};

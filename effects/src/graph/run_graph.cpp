@@ -30,12 +30,10 @@ std::string prepare_input(const TextureDesc& t, ImageMap& images) {
 
 } // namespace
 
-std::optional<pass::Pass> make_pass(const PassDesc& desc, const ImageMap& images,
-                                    const ir::Conventions& conventions, std::string* error) {
-  if (!desc.vs) {
-    if (error) *error = fmt::format("pass '{}': no vertex listing", desc.name);
-    return std::nullopt;
-  }
+ir::Result<pass::Pass> make_pass(const PassDesc& desc, const ImageMap& images,
+                                 const ir::Conventions& conventions) {
+  if (!desc.vs)
+    return ir::fail(desc.name, "graph", fmt::format("pass '{}': no vertex listing", desc.name));
   pass::Pass pass;
   pass.vertex_program = desc.vs;
   pass.pixel_program = desc.ps;
@@ -52,10 +50,9 @@ std::optional<pass::Pass> make_pass(const PassDesc& desc, const ImageMap& images
   pass.scissor = desc.scissor;
   for (const TextureBind& b : desc.textures) {
     auto it = images.find(b.texture);
-    if (it == images.end() || b.stage >= pass::kMaxSamplers) {
-      if (error) *error = fmt::format("pass '{}': texture '{}' has no image", desc.name, b.texture);
-      return std::nullopt;
-    }
+    if (it == images.end() || b.stage >= pass::kMaxSamplers)
+      return ir::fail(desc.name, "graph",
+                      fmt::format("pass '{}': texture '{}' has no image", desc.name, b.texture));
     pass::TextureBinding& binding = pass.textures[b.stage];
     binding.image = std::make_shared<const img::Image>(it->second);
     binding.sampler = b.sampler;

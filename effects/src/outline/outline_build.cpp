@@ -59,18 +59,18 @@ GlowPlan build_outline(const GlowParams& glow, const OutlineParams& o) {
   plan = build_glow(glow);
   if (!plan) return plan;
   EffectGraph& g = plan.graph;
-  std::string error;
-  auto object_vs =
-      glow_listing("outline/object.vsh", glow.listing_files, &error, glow.listing_options);
-  auto object_ps = object_vs ? glow_listing("outline/object_mrt.psh", glow.listing_files, &error,
-                                            glow.listing_options)
-                             : nullptr;
-  auto add_ps = object_ps ? glow_listing("outline/add_glow.psh", glow.listing_files, &error,
-                                         glow.listing_options)
-                          : nullptr;
-  if (!add_ps) {
-    plan.error = error;
-    return plan;
+  std::shared_ptr<const ir::Program> object_vs, object_ps, add_ps;
+  const std::pair<std::shared_ptr<const ir::Program>*, std::string_view> wanted[] = {
+      {&object_vs, "outline/object.vsh"},
+      {&object_ps, "outline/object_mrt.psh"},
+      {&add_ps, "outline/add_glow.psh"}};
+  for (const auto& [slot, path] : wanted) {
+    ListingResult l = glow_listing(path, glow.listing_files, glow.listing_options);
+    if (!l) {
+      plan.error = l.message();
+      return plan;
+    }
+    *slot = std::move(l).value();
   }
 
   // Textures: the glow's, plus the object's two targets and the stencil buffer.

@@ -135,8 +135,12 @@ GlowPlan build_radial(const GlowParams& g, const RadialParams& r) {
                                                              {&zoom_ps, t.zoom_ps},
                                                              {&composite_ps, t.composite_ps}};
   for (const auto& [slot, path] : wanted) {
-    *slot = glow_listing(path, g.listing_files, &plan.error, g.listing_options);
-    if (!*slot) return plan;
+    ListingResult l = glow_listing(path, g.listing_files, g.listing_options);
+    if (!l) {
+      plan.error = l.message();
+      return plan;
+    }
+    *slot = std::move(l).value();
   }
   EffectGraph& graph = plan.graph;
   graph.conventions.subtexel_bits = g.subtexel_bits;

@@ -19,8 +19,8 @@ namespace {
 unsigned whole_taps(const BlurProfile& profile, unsigned downsample) {
   BlurProfile p = profile;
   p.max_taps = 0;
-  std::string err;
-  return unsigned(sample_blur_profile(p, downsample, &err).size());
+  ir::Result<std::vector<BlurTap>> taps = sample_blur_profile(p, downsample);
+  return taps ? unsigned(taps->size()) : 0;
 }
 
 // Taps per axis of radius × fraction (odd, at least 1).

@@ -52,18 +52,21 @@ std::vector<std::string> glow_warnings(const GlowParams& params) {
   }
   // Tier dx7 carries the weights as 8-bit colours: what that costs against the kernel.
   if (params.tier == Tier::Dx7) {
-    std::string why;
-    const std::vector<BlurTap> taps = sample_blur_profile(params.profile, params.downsample, &why);
+    const ir::Result<std::vector<BlurTap>> taps =
+        sample_blur_profile(params.profile, params.downsample);
     std::vector<double> weights;
-    for (const BlurTap& t : taps) weights.push_back(t.weight);
-    if (!taps.empty()) out.push_back(quantization_summary(weights, params.weight_rounding));
+    if (taps)
+      for (const BlurTap& t : *taps) weights.push_back(t.weight);
+    if (taps && !taps->empty())
+      out.push_back(quantization_summary(weights, params.weight_rounding));
   }
   // The stress regimes (docs/stress.md) a scene's parameters alone reveal.
   if (params.format == img::Format::RGBA8) {
     // Each ONE/ONE blur pass stores its running sum in 8 bits, moving it by up to half a step:
     // P passes an axis drift by up to P/255 (sigma.limit.rgba8: a glow of 0.25 comes out 0).
-    std::string why;
-    const size_t taps = sample_blur_profile(params.profile, params.downsample, &why).size();
+    const ir::Result<std::vector<BlurTap>> sampled =
+        sample_blur_profile(params.profile, params.downsample);
+    const size_t taps = sampled ? sampled->size() : 0;
     const unsigned per = params.tier == Tier::Dx8   ? kTapsPerBlurPassDx8
                          : params.tier == Tier::Dx7 ? kTapsPerBlurPassDx7
                                                     : kTapsPerBlurPassDx9;

@@ -192,9 +192,8 @@ void read_glow(const Json& g, FieldChecker& c, const std::string& base_dir, Glow
 
   // What only the fields together say: the kernel's radius at this downsample factor.
   if (c.failed()) return;
-  std::string why;
-  if (sample_blur_profile(p.profile, p.downsample, &why).empty())
-    c.error(member(g, "profile") ? at + "/profile" : at, why);
+  if (ir::Result<std::vector<BlurTap>> taps = sample_blur_profile(p.profile, p.downsample); !taps)
+    c.error(member(g, "profile") ? at + "/profile" : at, taps.message());
 }
 
 } // namespace tierlift::effects

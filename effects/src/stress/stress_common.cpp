@@ -125,16 +125,15 @@ std::vector<std::string> stress_case_ids() {
   return ids;
 }
 
-std::vector<StressRow> run_stress_case(const std::string& id, const StressOptions& options,
-                                       std::string* error) {
+ir::Result<std::vector<StressRow>> run_stress_case(const std::string& id,
+                                                   const StressOptions& options) {
   for (const stress::StressCase& c : stress::all_cases())
     if (c.id == id) {
       std::vector<StressRow> rows = c.run(options);
       for (StressRow& r : rows) judge_stress_row(r);
       return rows;
     }
-  if (error) *error = fmt::format("no stress case '{}'", id);
-  return {};
+  return ir::fail(id, "usage", fmt::format("no stress case '{}'", id));
 }
 
 std::vector<StressRow> run_stress_catalogue(const StressOptions& options) {

@@ -37,11 +37,14 @@ struct FeedbackGraph {
 
 FeedbackGraph feedback_graph(Format f, double g) {
   FeedbackGraph out;
-  std::string err;
-  auto vs = builtin_listing("gpugems21/listing1_blur8_coords.vsh", &err);
-  auto ps = vs ? builtin_listing("gpugems21/listing2_blur8_weighted_sum.psh", &err) : nullptr;
+  ListingResult vs = builtin_listing("gpugems21/listing1_blur8_coords.vsh");
+  if (!vs) {
+    out.error = vs.message();
+    return out;
+  }
+  ListingResult ps = builtin_listing("gpugems21/listing2_blur8_weighted_sum.psh");
   if (!ps) {
-    out.error = err;
+    out.error = ps.message();
     return out;
   }
   EffectGraph& gr = out.graph;
@@ -51,8 +54,8 @@ FeedbackGraph feedback_graph(Format f, double g) {
                   pass::BlendMode blend) {
     PassDesc d;
     d.name = std::move(name);
-    d.vs = vs;
-    d.ps = ps;
+    d.vs = *vs;
+    d.ps = *ps;
     const float w = float(weight);
     for (unsigned k = 0; k < kTapsPerBlurPassDx9; ++k) {
       d.vs_constants.push_back({0.5f, 0.5f, 0, 0}); // the one texel's centre

@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "tierlift/ir/result.h"
+
 namespace tierlift::effects {
 
 struct Gaussian {
@@ -56,9 +58,10 @@ struct BlurTap {
 //   gauss(k) = exp(−k² / 2s²) with s = σ / d;  saw(k) = saw(k·d) above (a position within
 //   1e-9 of a multiple of the period counts as that multiple)
 //   tap(k) = Σ_terms weight · value(k) / Σ_{j=−R..R} value(j)
-// Empty and *error set when a value is not finite, σ ≤ 0, period ≤ 0, radius < 0, a weight
-// < 0, there is no term, the weights sum to 0, max_taps is even, or R would exceed 1024.
-std::vector<BlurTap> sample_blur_profile(const BlurProfile& profile, unsigned downsample,
-                                         std::string* error);
+// Fails (one error of rule "profile") when a value is not finite, σ ≤ 0, period ≤ 0,
+// radius < 0, a weight < 0, there is no term, the weights sum to 0, max_taps is even, or R
+// would exceed 1024.
+ir::Result<std::vector<BlurTap>> sample_blur_profile(const BlurProfile& profile,
+                                                     unsigned downsample);
 
 } // namespace tierlift::effects

@@ -11,6 +11,7 @@
 
 #include "tierlift/ir/profile.h"
 #include "tierlift/ir/program.h"
+#include "tierlift/ir/result.h"
 
 namespace tierlift::effects {
 
@@ -29,14 +30,15 @@ struct ListingOptions {
 };
 
 // "gpugems21/listing2_blur8_weighted_sum.psh", "glow/downsample4.psh", …: the parsed and
-// validated program, or nullptr and the rendered diagnostics (or "no such listing").
-std::shared_ptr<const ir::Program> builtin_listing(std::string_view path, std::string* error,
-                                                   const ListingOptions& options = {});
+// validated program, or one error (rule "listing") whose message is the rendered diagnostics
+// (or "no such listing").
+using ListingResult = ir::Result<std::shared_ptr<const ir::Program>>;
+ListingResult builtin_listing(std::string_view path, const ListingOptions& options = {});
 
 // The listing a glow pass uses: `files`' entry for `path` when there is one (read from
 // disk, parsed and validated; errors carry file:line:col and the caret), else the built-in.
-std::shared_ptr<const ir::Program>
-glow_listing(std::string_view path, const std::map<std::string, std::string, std::less<>>& files,
-             std::string* error, const ListingOptions& options = {});
+ListingResult glow_listing(std::string_view path,
+                           const std::map<std::string, std::string, std::less<>>& files,
+                           const ListingOptions& options = {});
 
 } // namespace tierlift::effects

@@ -9,6 +9,7 @@
 
 #include "tierlift/effects/device.h"
 #include "tierlift/effects/graph.h"
+#include "tierlift/ir/result.h"
 
 namespace tierlift::effects {
 
@@ -39,9 +40,9 @@ struct GraphRun {
 // The pass::Pass a pass description becomes: full-screen quad (pass::set_full_screen_quad_uv:
 // the vertex listing's position input gets the corners, every dcl_texcoord input the quad uv
 // (0,0) top-left … (1,1) bottom-right), constants, bound textures from `images`, blend,
-// conventions. Textures not in `images` are an error (returned in *error, nullopt).
-std::optional<pass::Pass> make_pass(const PassDesc& desc, const ImageMap& images,
-                                    const ir::Conventions& conventions, std::string* error);
+// conventions. Textures not in `images` are an error (rule "graph").
+ir::Result<pass::Pass> make_pass(const PassDesc& desc, const ImageMap& images,
+                                 const ir::Conventions& conventions);
 
 // Checks the graph, requires every input texture in `images` (or carried by the graph:
 // TextureDesc::contents) at its declared size (it is

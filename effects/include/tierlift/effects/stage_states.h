@@ -23,6 +23,7 @@
 
 #include "tierlift/ir/diagnostic.h"
 #include "tierlift/ir/program.h"
+#include "tierlift/ir/result.h"
 #include "tierlift/ir/source.h"
 
 namespace tierlift::effects::tss {
@@ -83,13 +84,15 @@ struct Lowered {
 };
 inline constexpr uint32_t kDiffuseConstant = 8, kSpecularConstant = 9;
 
-// Lowers validated states; an error string (rendered diagnostics) only when the generated
-// listings fail to parse or validate, which would be a bug here.
-std::optional<Lowered> lower_stage_states(const StageStates& states, std::string* error);
+// Lowers validated states; fails (one error, rule "listing", its message the rendered
+// diagnostics) only when the generated listings fail to parse or validate, which would be a
+// bug here.
+ir::Result<Lowered> lower_stage_states(const StageStates& states);
 
-// Reads, validates and lowers a .tss text: `name` is what messages show.
-std::optional<Lowered> load_stage_states(std::string text, std::string name, std::string* error,
-                                         uint32_t max_stages = kDx7Stages);
+// Reads, validates and lowers a .tss text: `name` is what messages show. A failure's one
+// error (rule "tss") carries the rendered diagnostics as its message.
+ir::Result<Lowered> load_stage_states(std::string text, std::string name,
+                                      uint32_t max_stages = kDx7Stages);
 
 // A D3DCOLOR byte as the float a device reads from an 8-bit vertex colour: byte / 255.
 float d3dcolor_channel(uint8_t byte);

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "tierlift/effects/device.h"
+#include "tierlift/ir/result.h"
 
 namespace tierlift::effects {
 
@@ -69,9 +70,9 @@ std::vector<StressRow> run_stress_catalogue(const StressOptions& options);
 // The case ids of the catalogue (a case gives one or more rows), without running anything.
 std::vector<std::string> stress_case_ids();
 
-// One case by id (rows judged); empty rows and *error set for an unknown id.
-std::vector<StressRow> run_stress_case(const std::string& id, const StressOptions& options,
-                                       std::string* error);
+// One case by id (rows judged); fails (rule "usage") for an unknown id.
+ir::Result<std::vector<StressRow>> run_stress_case(const std::string& id,
+                                                   const StressOptions& options);
 
 } // namespace tierlift::effects
 

@@ -10,6 +10,7 @@
 #include "tierlift/analytic/taps.h"
 #include "tierlift/ir/passes.h"
 #include "tierlift/ir/program.h"
+#include "tierlift/ir/result.h"
 
 namespace tierlift::analytic::detail {
 
@@ -66,9 +67,9 @@ SumForm evaluate_sum(const ir::Program& ps, const std::vector<Vec4>& consts,
 std::string place_taps(const CoordForms& coords, std::vector<Tap>& taps);
 
 // The (texcoord, sampler) a sampling instruction reads, nullopt for an instruction that
-// samples nothing, or *error (naming the instruction) for a read the model cannot place
-// (dependent or modified coordinates, texture ops other than plain samples).
-std::optional<std::pair<uint32_t, uint32_t>> sample_key(const ir::Instruction& in,
-                                                        std::string* error);
+// samples nothing, or a failure (rule "analytic", naming the instruction) for a read the
+// model cannot place (dependent or modified coordinates, texture ops other than plain
+// samples).
+ir::Result<std::optional<std::pair<uint32_t, uint32_t>>> sample_key(const ir::Instruction& in);
 
 } // namespace tierlift::analytic::detail

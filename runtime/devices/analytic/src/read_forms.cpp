@@ -20,12 +20,12 @@ ReadExtraction extract_reads(const ir::Program& vs, const std::vector<Vec4>& vs_
   }
   std::vector<Tap> reads;
   for (const ir::Instruction& in : ps.code) {
-    std::string error;
-    auto key = detail::sample_key(in, &error);
-    if (!error.empty()) {
-      out.error = "pixel listing: " + error;
+    ir::Result<std::optional<std::pair<uint32_t, uint32_t>>> sampled = detail::sample_key(in);
+    if (!sampled) {
+      out.error = "pixel listing: " + sampled.message();
       return out;
     }
+    const std::optional<std::pair<uint32_t, uint32_t>> key = *sampled;
     if (!key) continue;
     auto same = [&](const Tap& t) { return t.texcoord == key->first && t.sampler == key->second; };
     if (std::none_of(reads.begin(), reads.end(), same)) {

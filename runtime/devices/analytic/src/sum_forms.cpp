@@ -169,9 +169,9 @@ private:
     if (in.src.size() < info.num_src)
       return fmt::format("{}: {} has too few operands", where(in.loc), info.mnemonic);
     const ir::DstOperand& d = *in.dst;
-    std::string error;
-    std::optional<SampleKey> sampled = sample_key(in, &error);
-    if (!error.empty()) return error;
+    ir::Result<std::optional<SampleKey>> key = sample_key(in);
+    if (!key) return key.message();
+    const std::optional<SampleKey> sampled = *key;
     Reg& r = regs_[{d.file, d.index}];
     Reg next = r;
     const double scale = std::ldexp(1.0, in.mods.shift); // _x2 … _d8
@@ -214,35 +214,30 @@ private:
 } // namespace
 
 // texld / tex: the coordinate register must be an unmodified t# read as .xy.
-std::optional<SampleKey> sample_key(const ir::Instruction& in, std::string* error) {
+ir::Result<std::optional<SampleKey>> sample_key(const ir::Instruction& in) {
   const ir::OpInfo& info = ir::op_info(in.op);
-  if (!in.dst) return std::nullopt;
+  auto fail = [](std::string why) { return ir::fail("ps", "analytic", std::move(why)); };
+  if (!in.dst) return std::optional<SampleKey>();
   const ir::DstOperand& d = *in.dst;
   switch (in.op) {
-  case ir::Opcode::Tex: return SampleKey{d.index, d.index};
+  case ir::Opcode::Tex: return std::optional<SampleKey>(SampleKey{d.index, d.index});
   case ir::Opcode::TexLd:
   case ir::Opcode::TexLd14: {
-    if (in.src.empty()) {
-      *error = where(in.loc) + ": texld without a coordinate";
-      return std::nullopt;
-    }
+    if (in.src.empty()) return fail(where(in.loc) + ": texld without a coordinate");
     const ir::SrcOperand& s = in.src[0];
-    if (s.file != ir::RegFile::Texture) {
-      *error = where(s.loc) + ": dependent read (coordinate is not a t# register)";
-      return std::nullopt;
-    }
+    if (s.file != ir::RegFile::Texture)
+      return fail(where(s.loc) + ": dependent read (coordinate is not a t# register)");
     if (s.mod != ir::SrcMod::None || ir::swizzle_component(s.swizzle, 0) != 0 ||
-        ir::swizzle_component(s.swizzle, 1) != 1) {
-      *error = where(s.loc) + ": coordinate is modified or swizzled";
-      return std::nullopt;
-    }
-    return SampleKey{s.index,
-                     in.op == ir::Opcode::TexLd && in.src.size() > 1 ? in.src[1].index : d.index};
+        ir::swizzle_component(s.swizzle, 1) != 1)
+      return fail(where(s.loc) + ": coordinate is modified or swizzled");
+    return std::optional<SampleKey>(SampleKey{
+        s.index, in.op == ir::Opcode::TexLd && in.src.size() > 1 ? in.src[1].index : d.index});
   }
   default:
     if (info.cls == ir::OpClass::Texture)
-      *error = fmt::format("{}: {} is not a plain texture sample", where(in.loc), info.mnemonic);
-    return std::nullopt;
+      return fail(
+          fmt::format("{}: {} is not a plain texture sample", where(in.loc), info.mnemonic));
+    return std::optional<SampleKey>();
   }
 }
 

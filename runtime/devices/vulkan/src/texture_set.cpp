@@ -8,6 +8,7 @@
 
 #include "draw_cache.h"
 #include "pass_draw.h"
+#include "tierlift/ir/result.h"
 
 namespace tierlift::vulkan {
 
@@ -170,18 +171,16 @@ std::string resolve(TextureSet::State& s, const StageTextures& stages, const Ren
   return {};
 }
 
-// The cached draw of `pass`, made now if there is none; nullptr (and *error) on failure,
-// nullptr and no error when the pass is not cached.
-PreparedDraw* cached_draw(TextureSet::State& s, const pass::Pass& pass, const DrawTextures& t,
-                          std::string* error) {
+// The cached draw of `pass`, made now if there is none (a failure, rule "vulkan", when it
+// cannot be made); nullptr when the pass is not cached.
+ir::Result<PreparedDraw*> cached_draw(TextureSet::State& s, const pass::Pass& pass,
+                                      const DrawTextures& t) {
   std::optional<std::string> key = draw_key(pass, t);
-  if (!key) return nullptr;
+  if (!key) return static_cast<PreparedDraw*>(nullptr);
   if (PreparedDraw* p = s.draws.find(*key)) return p;
   auto entry = std::make_unique<CachedDraw>();
-  if (std::string e = prepare_draw(s.d, pass, t, entry->draw); !e.empty()) {
-    *error = e;
-    return nullptr;
-  }
+  if (std::string e = prepare_draw(s.d, pass, t, entry->draw); !e.empty())
+    return ir::fail("vulkan", "vulkan", std::move(e));
   return &s.draws.insert(*key, pass, std::move(entry));
 }
 
@@ -198,9 +197,8 @@ std::string TextureSet::prepare(const pass::Pass& pass, const StageTextures& sta
                                 const RenderTargets& targets) {
   DrawTextures textures;
   if (std::string e = resolve(*state_, stages, targets, textures); !e.empty()) return e;
-  std::string error;
-  cached_draw(*state_, pass, textures, &error);
-  return error;
+  ir::Result<PreparedDraw*> cached = cached_draw(*state_, pass, textures);
+  return cached ? std::string() : cached.message();
 }
 
 DrawResult TextureSet::draw(const pass::Pass& pass, const StageTextures& stages, TextureId target) {
@@ -218,8 +216,12 @@ DrawResult TextureSet::draw(const pass::Pass& pass, const StageTextures& stages,
     return res;
   }
   const auto t0 = std::chrono::steady_clock::now();
-  PreparedDraw* p = cached_draw(*state_, pass, textures, &res.error);
-  if (!res.error.empty()) return res;
+  ir::Result<PreparedDraw*> cached = cached_draw(*state_, pass, textures);
+  if (!cached) {
+    res.error = cached.message();
+    return res;
+  }
+  PreparedDraw* p = *cached;
   if (!p) { // not cached: made, drawn and destroyed now
     if (std::string e = state_->flush(); !e.empty()) {
       res.error = e;
