@@ -11,13 +11,10 @@ import os
 import struct
 import zlib
 
+from make_scene_png import chunk
+
 WIDTH, HEIGHT = 1280, 720
 LAMP = (1080, 80, 1140, 120)  # x0, y0, x1, y1 (exclusive)
-
-
-def chunk(kind: bytes, data: bytes) -> bytes:
-    body = kind + data
-    return struct.pack(">I", len(data)) + body + struct.pack(">I", zlib.crc32(body) & 0xFFFFFFFF)
 
 
 def row(y: int) -> bytes:
