@@ -201,11 +201,19 @@ void limit_to_sources(const GlowPlan& plan, const Box& sources, PrunedGraph& r) 
     std::string_view target, group;
     Box box;
     int64_t width, height;
+    std::string margin; // how the sources' box grew to reach this pass group's box
   };
-  const Rule rules[] = {{kSourcesTexture, "extract", full, w, h},
-                        {kSmallTexture, "downsample.*", small, gw, gh},
-                        {kBlurHTexture, "blur_h.*", horizontal, gw, gh},
-                        {kGlowTexture, "blur_v.*", vertical, gw, gh}};
+  const std::string taps =
+      fmt::format("{} texels (the taps' reach of {}, and 2)", reach, reach - 2);
+  const Rule rules[] = {
+      {kSourcesTexture, "extract", full, w, h, "grown by 2 pixels"},
+      {kSmallTexture, "downsample.*", small, gw, gh,
+       d > 1 ? fmt::format("grown by 2 pixels, taken to 1/{} resolution and grown by 1 texel", d)
+             : std::string("grown by 2 pixels")},
+      {kBlurHTexture, "blur_h.*", horizontal, gw, gh,
+       fmt::format("carried as for the downsample, then grown by {} along x and 2 along y", taps)},
+      {kGlowTexture, "blur_v.*", vertical, gw, gh,
+       fmt::format("carried as for blur_h, then grown by {} along y and 2 along x", taps)}};
   for (const Rule& rule : rules) {
     if (rule.box.area() >= rule.width * rule.height) continue; // nothing to save
     bool any = false;
@@ -220,12 +228,11 @@ void limit_to_sources(const GlowPlan& plan, const Box& sources, PrunedGraph& r) 
         {fmt::format("{} to x {}..{}, y {}..{}", rule.group, rule.box.x0, rule.box.x1 - 1,
                      rule.box.y0, rule.box.y1 - 1),
          fmt::format("{:.1f} % of the {}x{} texture not drawn: the glow sources' box (alpha ≠ 0) "
-                     "grown by how far the "
-                     "passes before read ({} texels for the blur taps); outside it every value "
-                     "read is 0, so every value written is 0, as the texture starts",
+                     "{}; outside it every value read is 0, so every value written is 0, as "
+                     "the texture starts",
                      100.0 * double(rule.width * rule.height - rule.box.area()) /
                          double(rule.width * rule.height),
-                     rule.width, rule.height, reach)});
+                     rule.width, rule.height, rule.margin)});
   }
 }
 
