@@ -76,7 +76,7 @@ protected:
 // the constants c0 = −1/(end − start), c1 = end/(end − start) (÷4 on ps.1.x, ×4 back exactly)
 // are each rounded once (relative 2^-24); f = saturate(c0·d + c1) then errs by at most
 // (2·|c0·d| + |c1| + |c0·d + c1|)·2^-24 ≤ (3.34 + 1.34 + 1.34)·6e-8 < 3.7e-7 (kStart, kEnd
-// below; d ≤ 1), which the lrp scales by |sources − fog| ≤ 1; rgb × alpha, the lrp's own
+// above; d ≤ 1), which the lrp scales by |sources − fog| ≤ 1; rgb × alpha, the lrp's own
 // operations and the one-tap blur (weight 1, exact) add at most 4 roundings of values ≤ 1,
 // 2.4e-7: under 6.1e-7 in all, so 2e-6 holds with room. The frame adds intensity 2 × that
 // plus one rounding of a value ≤ 3: under 1.4e-6 against 4e-6.
