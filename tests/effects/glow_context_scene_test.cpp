@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "../vulkan/vk_test_util.h"
+#include "scene_error_case.h"
 #include "tierlift/effects/agreement.h"
 #include "tierlift/effects/analytic_device.h"
 #include "tierlift/effects/glow_run.h"
@@ -45,29 +46,16 @@ TEST(GlowContextScene, FieldsAreRead) {
     EXPECT_EQ(w.find("the image's alpha"), std::string::npos) << w;
 }
 
-struct Bad {
-  const char* text;
-  const char* where; // "s.json:L:C: error: /pointer"
-  const char* says;
-};
+using Bad = SceneErrorCase;
 
 class GlowContextSceneErrors : public ::testing::TestWithParam<Bad> {};
 
 TEST_P(GlowContextSceneErrors, NameTheFieldWithItsPosition) {
   const Bad& b = GetParam();
   ir::Result<Scene> s = parse(b.text);
-  ASSERT_FALSE(s) << b.text;
+  expect_positioned_scene_error(s, b);
   EXPECT_FALSE(
       ir::failed_with(s, kSceneIoRule)); // a file the scene names is the scene's error: exit 1
-  EXPECT_NE(s.message().find(b.where), std::string::npos) << s.message();
-  EXPECT_NE(s.message().find(b.says), std::string::npos) << s.message();
-  // The caret sits under the column the message gives (one-line scenes: 4 spaces indent).
-  const std::string head = b.where;
-  const size_t c1 = head.find(':'), c2 = head.find(':', c1 + 1), c3 = head.find(':', c2 + 1);
-  const size_t col = std::stoul(head.substr(c2 + 1, c3 - c2 - 1));
-  const size_t caret = s.message().find('^');
-  ASSERT_NE(caret, std::string::npos) << s.message();
-  EXPECT_EQ(caret - (s.message().rfind('\n', caret) + 1), col - 1 + 4) << s.message();
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <string>
 
+#include "scene_error_case.h"
 #include "tierlift/effects/scene.h"
 
 namespace tierlift::effects {
@@ -31,21 +32,13 @@ TEST(SceneFrames, RampsAndAfterimageAreRead) {
   EXPECT_FALSE(parse("{}")->params.animated());
 }
 
-struct Bad {
-  const char* text;
-  const char* where;
-  const char* says;
-};
+using Bad = SceneErrorCase;
 
 class SceneFramesErrors : public ::testing::TestWithParam<Bad> {};
 
 TEST_P(SceneFramesErrors, NameTheValueWithItsPosition) {
   const Bad& b = GetParam();
-  ir::Result<Scene> s = parse(b.text);
-  ASSERT_FALSE(s) << b.text;
-  EXPECT_NE(s.message().find(b.where), std::string::npos) << s.message();
-  EXPECT_NE(s.message().find(b.says), std::string::npos) << s.message();
-  EXPECT_NE(s.message().find('^'), std::string::npos) << s.message();
+  expect_positioned_scene_error(parse(b.text), b);
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "listing_files.h"
+#include "scene_error_case.h"
 #include "tierlift/effects/scene.h"
 
 namespace tierlift::effects {
@@ -80,34 +81,14 @@ TEST(Scene, FieldsAreRead) {
 }
 
 // Each bad field: the message names the JSON pointer at line:col of its value, then the
-// source line and a caret under that column.
-struct Bad {
-  const char* text;
-  const char* where; // "s.json:L:C: error: /pointer"
-  const char* says;
-};
+// source line and a caret under that column (scene_error_case.h).
+using Bad = SceneErrorCase;
 
 class SceneErrors : public ::testing::TestWithParam<Bad> {};
 
 TEST_P(SceneErrors, NameTheFieldWithItsPosition) {
   const Bad& b = GetParam();
-  ir::Result<Scene> s = parse(b.text);
-  ASSERT_FALSE(s) << b.text;
-  EXPECT_NE(s.message().find(b.where), std::string::npos) << s.message();
-  EXPECT_NE(s.message().find(b.says), std::string::npos) << s.message();
-  // The caret sits under the column the message gives.
-  const std::string head = b.where;
-  const size_t c1 = head.find(':'), c2 = head.find(':', c1 + 1), c3 = head.find(':', c2 + 1);
-  const int col = std::stoi(head.substr(c2 + 1, c3 - c2 - 1));
-  const size_t caret_line = s.message().find('^');
-  ASSERT_NE(caret_line, std::string::npos) << s.message();
-  const size_t line_start = s.message().rfind('\n', caret_line) + 1;
-  const size_t src_start = s.message().rfind('\n', line_start - 2) + 1;
-  // Both the source line and the caret line carry the same indent.
-  const std::string src = s.message().substr(src_start, line_start - 1 - src_start);
-  const size_t indent = src.find_first_not_of(' ');
-  EXPECT_EQ(caret_line - line_start, col - 1 + (indent == std::string::npos ? 0 : 4))
-      << s.message();
+  expect_positioned_scene_error(parse(b.text), b);
 }
 
 INSTANTIATE_TEST_SUITE_P(
