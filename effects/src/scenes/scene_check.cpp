@@ -145,6 +145,17 @@ std::optional<int64_t> FieldChecker::integer(const Json& v, const std::string& p
   return static_cast<int64_t>(d);
 }
 
+bool FieldChecker::numbers(const Json& v, const std::string& pointer, NumberRange range,
+                           std::span<double> out, std::string_view shape) {
+  if (!v.is_array() || v.size() != out.size()) {
+    error(pointer, fmt::format("{} is not {}", shown(v), shape));
+    return false;
+  }
+  for (size_t i = 0; i < out.size(); ++i)
+    if (auto x = number(v[i], fmt::format("{}/{}", pointer, i), range)) out[i] = *x;
+  return true;
+}
+
 std::optional<double> FieldChecker::number(const Json& v, const std::string& pointer,
                                            NumberRange r) {
   if (!v.is_number()) {

@@ -51,6 +51,11 @@ public:
   // Whole numbers (2.0 counts, as in JSON Schema) in lo..hi.
   std::optional<int64_t> integer(const Json& v, const std::string& pointer, int64_t lo, int64_t hi);
   std::optional<double> number(const Json& v, const std::string& pointer, NumberRange range);
+  // An array of exactly out.size() numbers in `range`, each read into out[i] (one that is
+  // not in range is an error at "POINTER/i" and leaves out[i] as it was); any other value is
+  // the error "… is not SHAPE" (e.g. "[x, y] (texture coordinates, 0..1)"). False then.
+  bool numbers(const Json& v, const std::string& pointer, NumberRange range, std::span<double> out,
+               std::string_view shape);
 
   // The JSON text of a value for a message, cut at 40 characters.
   static std::string shown(const Json& v);

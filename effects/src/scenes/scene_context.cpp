@@ -66,15 +66,8 @@ void read_fog(const Json& v, const std::string& at, FieldChecker& c, const std::
             fmt::format("{} is not beyond start {}: the fog needs start < end", *end, *start));
   fog.start = start.value_or(fog.start);
   fog.end = end.value_or(fog.end);
-  if (const Json* col = member(v, "color")) {
-    if (!col->is_array() || col->size() != 3)
-      c.error(at + "/color", fmt::format("{} is not [r, g, b] (three numbers in 0..1)",
-                                         FieldChecker::shown(*col)));
-    else
-      for (size_t i = 0; i < 3; ++i)
-        if (auto x = c.number((*col)[i], fmt::format("{}/color/{}", at, i), kFogChannel))
-          fog.color[i] = *x;
-  }
+  if (const Json* col = member(v, "color"))
+    c.numbers(*col, at + "/color", kFogChannel, fog.color, "[r, g, b] (three numbers in 0..1)");
   if (const Json* d = member(v, "depth"))
     fog.depth = read_scene_sized(*d, at + "/depth", c, base_dir, p);
   if (c.failed()) return;

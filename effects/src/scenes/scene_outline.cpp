@@ -21,12 +21,7 @@ constexpr NumberRange kChannel{0, 1000};
 template <size_t N>
 void read_numbers(const Json& v, const std::string& at, FieldChecker& c, NumberRange range,
                   std::array<double, N>& out) {
-  if (!v.is_array() || v.size() != N) {
-    c.error(at, fmt::format("{} is not an array of {} numbers", FieldChecker::shown(v), N));
-    return;
-  }
-  for (size_t i = 0; i < N; ++i)
-    if (auto x = c.number(v[i], fmt::format("{}/{}", at, i), range)) out[i] = *x;
+  c.numbers(v, at, range, out, fmt::format("an array of {} numbers", N));
 }
 
 void read_color(const Json& v, const std::string& at, FieldChecker& c, std::array<float, 4>& out) {

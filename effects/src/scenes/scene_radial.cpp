@@ -34,15 +34,8 @@ void read_radial(const Json& v, FieldChecker& c, GlowParams& glow, RadialParams&
         c.error(at + "/tier",
                 fmt::format("\"{}\" is not a tier; expected \"dx9\" or \"dx8\"", *name));
     }
-  if (const Json* ce = member(v, "centre")) {
-    if (!ce->is_array() || ce->size() != 2)
-      c.error(at + "/centre", fmt::format("{} is not [x, y] (texture coordinates, 0..1)",
-                                          FieldChecker::shown(*ce)));
-    else
-      for (size_t a = 0; a < 2; ++a)
-        r.centre[a] =
-            c.number((*ce)[a], fmt::format("{}/centre/{}", at, a), kUnit).value_or(r.centre[a]);
-  }
+  if (const Json* ce = member(v, "centre"))
+    c.numbers(*ce, at + "/centre", kUnit, r.centre, "[x, y] (texture coordinates, 0..1)");
   if (const Json* n = member(v, "steps"))
     r.steps = unsigned(c.integer(*n, at + "/steps", 1, 256).value_or(r.steps));
   if (const Json* s = member(v, "step")) {
