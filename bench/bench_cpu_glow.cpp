@@ -55,10 +55,13 @@ effects::GlowPlan make_plan(uint32_t w, uint32_t h, int taps, effects::Tier tier
 
 std::string frame(effects::PassDevice& dev, const effects::GlowPlan& plan,
                   const effects::ImageMap& inputs, img::Image& out) {
-  if (std::string e = dev.begin_run(plan.graph, inputs); !e.empty()) return e;
+  if (ir::Status s = dev.begin_run(plan.graph, inputs); !s) return s.message();
   for (const effects::PassDesc& p : plan.graph.passes)
-    if (std::string e = dev.run_pass(p); !e.empty()) return p.name + ": " + e;
-  return dev.read_texture(std::string(effects::kFinalTexture), out);
+    if (ir::Status s = dev.run_pass(p); !s) return p.name + ": " + s.message();
+  ir::Result<img::Image> read = dev.read_texture(std::string(effects::kFinalTexture));
+  if (!read) return read.message();
+  out = std::move(*read); // a frame's copy, as the devices' readback costs
+  return {};
 }
 
 void run_cpu(benchmark::State& state, uint32_t w, uint32_t h, int taps, effects::Tier tier,

@@ -136,11 +136,11 @@ void BM_Glow_VulkanVsGlsl(benchmark::State& state, effects::Tier tier, img::Form
       bench::GlslGlowPeer::create(plan.graph, input, &error);
   std::unique_ptr<effects::PassDevice> ours = effects::make_vulkan_pass_device(*vk);
   const effects::ImageMap inputs{{std::string(effects::kSceneTexture), input}};
-  if (peer && (error = ours->begin_run(plan.graph, inputs)).empty())
+  if (peer && (error = ours->begin_run(plan.graph, inputs).message()).empty())
     error = peer->frame(); // both warm: first-touch of every texture's pages
   for (const effects::PassDesc& p : plan.graph.passes)
-    if (error.empty()) error = ours->run_pass(p);
-  if (error.empty()) error = ours->finish();
+    if (error.empty()) error = ours->run_pass(p).message();
+  if (error.empty()) error = ours->finish().message();
   if (!error.empty()) {
     state.SkipWithError(error.c_str());
     return;
@@ -153,8 +153,8 @@ void BM_Glow_VulkanVsGlsl(benchmark::State& state, effects::Tier tier, img::Form
   for (auto _ : state) {
     const auto t0 = Clock::now();
     for (const effects::PassDesc& p : plan.graph.passes)
-      if (error.empty()) error = ours->run_pass(p);
-    if (error.empty()) error = ours->finish();
+      if (error.empty()) error = ours->run_pass(p).message();
+    if (error.empty()) error = ours->finish().message();
     const auto t1 = Clock::now();
     if (error.empty()) error = peer->frame();
     const auto t2 = Clock::now();

@@ -41,19 +41,20 @@ bool run_device_frames(benchmark::State& state, effects::PassDevice& device,
   input.format = plan.graph.textures.front().format;
   img::quantize_in_place(input); // stored in the graph's format, as run_graph does
   const effects::ImageMap inputs{{std::string(effects::kSceneTexture), input}};
-  if (std::string e = device.begin_run(plan.graph, inputs); !e.empty()) return fail(e);
+  if (ir::Status s = device.begin_run(plan.graph, inputs); !s) return fail(s.message());
   for (auto _ : state) {
     for (const effects::PassDesc& p : plan.graph.passes)
-      if (std::string e = device.run_pass(p); !e.empty()) return fail(p.name + ": " + e);
-    if (std::string e = device.finish(); !e.empty()) return fail(e);
+      if (ir::Status s = device.run_pass(p); !s) return fail(p.name + ": " + s.message());
+    if (ir::Status s = device.finish(); !s) return fail(s.message());
   }
   state.counters["passes"] = double(plan.graph.passes.size());
   state.counters["taps"] = double(plan.taps.size());
   state.counters["pixels"] = double(scene.width) * scene.height;
-  if (final_frame)
-    if (std::string e = device.read_texture(std::string(effects::kFinalTexture), *final_frame);
-        !e.empty())
-      return fail(e);
+  if (final_frame) {
+    ir::Result<img::Image> read = device.read_texture(std::string(effects::kFinalTexture));
+    if (!read) return fail(read.message());
+    *final_frame = std::move(*read);
+  }
   return true;
 }
 

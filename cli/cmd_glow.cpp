@@ -149,13 +149,13 @@ std::string run_frames(const effects::GlowPlan& plan, const img::Image& scene,
     std::unique_ptr<effects::PassDevice> device = make_device(way.name, f, vk);
     if (!device) return fmt::format("{}: no device", way.name);
     effects::GlowFrames run = effects::run_glow_frames(plan, scene, *device, f.frames);
-    if (!run.run.ok) return run.run.error;
-    if (way.name == "vulkan") run.run.times.setup_ms += vk_create_ms; // the device is setup too
+    if (!run.run.ok()) return run.run.message();
+    if (way.name == "vulkan") run.run->setup_ms += vk_create_ms; // the device is setup too
     auto a = run.images.find(final_name);
     auto b = way.glow.images.find(final_name);
     if (a == run.images.end() || b == way.glow.images.end() || a->second.rgba != b->second.rgba)
       return fmt::format("{}: frame {} differs from the compared run", way.name, f.frames);
-    out.push_back({way.name, run.run.times});
+    out.push_back({way.name, run.run.value()});
   }
   return {};
 }
@@ -191,9 +191,9 @@ nlohmann::json summary_json(const effects::Scene& scene, const effects::GlowPlan
                    {"frame", scene.radial.frame}};
   for (const GlowWay& w : ways) {
     nlohmann::json passes = nlohmann::json::array();
-    for (const effects::PassRecord& r : w.glow.run.passes)
+    for (const effects::PassRecord& r : w.glow.run->passes)
       passes.push_back({{"pass", r.pass}, {"ms", r.ms}});
-    j["timing_ms"][w.name] = {{"total", w.glow.run.total_ms}, {"passes", passes}};
+    j["timing_ms"][w.name] = {{"total", w.glow.run->total_ms}, {"passes", passes}};
   }
   return j;
 }
@@ -279,8 +279,8 @@ int run(const GlowFlags& f) {
   for (auto& [name, device] : devices) {
     ways.push_back({name, effects::run_glow(plan, *image, *device, keep,
                                             progress_printer(name, f.quiet || f.json))});
-    if (!ways.back().glow.run.ok) {
-      report.error("run", ways.back().glow.run.error);
+    if (!ways.back().glow.run.ok()) {
+      report.error("run", ways.back().glow.run.message());
       return report.finish(kExitInvalid);
     }
   }
@@ -377,8 +377,8 @@ int run(const GlowFlags& f) {
     if (!plan.quantization.empty()) fmt::print("{}\n", plan.quantization);
     if (auto c = effects::context_summary(params.context); !c.empty()) fmt::print("{}\n", c);
     for (const GlowWay& w : ways)
-      fmt::print("{}: {} passes in {:.1f} ms{}\n", w.name, w.glow.run.passes.size(),
-                 w.glow.run.total_ms, w.name == "vulkan" ? fmt::format(" ({})", vk->name()) : "");
+      fmt::print("{}: {} passes in {:.1f} ms{}\n", w.name, w.glow.run->passes.size(),
+                 w.glow.run->total_ms, w.name == "vulkan" ? fmt::format(" ({})", vk->name()) : "");
     if (f.explain) {
       const bool varies = scene_moves;
       fmt::print("pruning {}: {} of {} passes left out, {} limited to the sources' box{}\n",

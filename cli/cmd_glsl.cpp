@@ -120,9 +120,9 @@ int run(const Flags& f) {
   std::unique_ptr<effects::PassDevice> vk = effects::make_vulkan_pass_device(*device);
   effects::ImageMap images;
   images.emplace(std::string(effects::kSceneTexture), std::move(*image));
-  const effects::GraphRun run = effects::run_graph(plan.graph, *vk, images);
-  if (!run.ok) {
-    report.error("device", run.error, f.file);
+  const ir::Result<effects::GraphRun> run = effects::run_graph(plan.graph, *vk, images);
+  if (!run) {
+    report.error("device", run.message(), f.file);
     return report.finish(kExitInvalid);
   }
   std::string warning;
@@ -134,10 +134,10 @@ int run(const Flags& f) {
   if (!warning.empty()) report.warning("output", warning, f.output);
   result["output"] = f.output;
   result["device"] = device->name();
-  result["ms"] = run.total_ms;
+  result["ms"] = run->total_ms;
   if (!f.json)
     fmt::print("wrote {} ({}x{}, {}, drawn on {} in {:.1f} ms)\n", f.output, out.width, out.height,
-               img::format_name(out.format), device->name(), run.total_ms);
+               img::format_name(out.format), device->name(), run->total_ms);
   return report.finish(kExitOk);
 }
 

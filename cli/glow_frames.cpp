@@ -98,11 +98,11 @@ std::string run_animation(const effects::GlowPlan& plan, const img::Image& scene
     for (size_t e = 0; e < d; ++e)
       out.pairs.push_back({devices[e], devices[d], frames, 0, 0, 1, 0, {}});
     const size_t first_pair = out.pairs.size() - d;
-    auto sink = [&](unsigned f, const effects::ImageMap& images) -> std::string {
+    auto sink = [&](unsigned f, const effects::ImageMap& images) -> ir::Status {
       const img::Image& now = images.find(final_name)->second;
       for (size_t e = 0; e < d; ++e) {
         ir::Result<img::Comparison> c = img::compare(kept[e][f], now);
-        if (!c) return c.message();
+        if (!c) return std::move(c).failure();
         const img::Verdict v = img::judge(*c, format);
         FramePairAgreement& p = out.pairs[first_pair + e];
         p.frames_within += v.pass ? 1 : 0;
@@ -115,12 +115,12 @@ std::string run_animation(const effects::GlowPlan& plan, const img::Image& scene
         p.worst_identical = std::min(p.worst_identical, c->identical_share);
       }
       mine.push_back(now);
-      return {};
+      return ir::ok_status();
     };
     effects::GlowFrames run =
         effects::run_glow_frames(plan, scene, *device, frames, {final_name}, sink, scene_at);
-    if (!run.run.ok) return run.run.error;
-    out.times.push_back({devices[d], run.run.times});
+    if (!run.run.ok()) return run.run.message();
+    out.times.push_back({devices[d], run.run.value()});
     kept.push_back(std::move(mine));
   }
   if (!dir.empty() && !kept.empty()) return write_frames(dir, kept.front(), inputs, out.written);

@@ -16,8 +16,8 @@ ir::Result<std::vector<PairAgreement>> compare_ways(const std::vector<GlowWay>& 
   for (size_t i = 0; i < ways.size(); ++i)
     for (size_t j = i + 1; j < ways.size(); ++j) {
       PairAgreement p{ways[i].name, ways[j].name,
-                      effects::compare_runs(ways[i].glow.run, ways[i].glow.images, ways[j].glow.run,
-                                            ways[j].glow.images,
+                      effects::compare_runs(*ways[i].glow.run, ways[i].glow.images,
+                                            *ways[j].glow.run, ways[j].glow.images,
                                             std::string(effects::kFinalTexture))};
       if (!p.agreement.error.empty())
         return ir::fail(p.a + " vs " + p.b, "agreement",

@@ -87,9 +87,9 @@ img::Image last_frame(PassDevice& device, const GlowPlan& plan, const img::Image
   const GlowFrames run = run_glow_frames(plan, scene, device, frames, {texture},
                                          [&](unsigned f, const ImageMap& images) {
                                            if (f + 1 == frames) last = images.at(texture);
-                                           return std::string();
+                                           return ir::ok_status();
                                          });
-  EXPECT_TRUE(run.run.ok) << run.run.error;
+  EXPECT_TRUE(run.run.ok()) << run.run.message();
   return last;
 }
 
@@ -187,9 +187,9 @@ void ramped_intensity(PassDevice& device) {
                                                k * glow.at(x, y)[c]));
         EXPECT_LE(worst, 1e-6) << device.name() << " frame " << f + 1;
         ++seen;
-        return std::string();
+        return ir::ok_status();
       });
-  ASSERT_TRUE(run.run.ok) << run.run.error;
+  ASSERT_TRUE(run.run.ok()) << run.run.message();
   EXPECT_EQ(seen, 7u);
 }
 

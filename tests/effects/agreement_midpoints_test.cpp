@@ -26,7 +26,6 @@ img::Image flat(uint32_t w, uint32_t h, int steps, img::Format f = img::Format::
 // One pass "p" into texture "t", which is also the frame.
 GraphRun one_pass_run(const img::Image& result, std::vector<uint8_t> mask = {}) {
   GraphRun run;
-  run.ok = true;
   PassRecord rec;
   rec.pass = "p";
   rec.target = "t";

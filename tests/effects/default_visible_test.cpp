@@ -28,7 +28,7 @@ double visible_share(const GlowParams& p) {
   EXPECT_TRUE(plan) << plan.error;
   CpuPassDevice cpu;
   GlowRun run = run_glow(plan, scene, cpu);
-  EXPECT_TRUE(run.run.ok) << run.run.error;
+  EXPECT_TRUE(run.run.ok()) << run.run.message();
   const img::Image& fin = run.images.at(std::string(kFinalTexture));
   const int w = int(p.width), h = int(p.height);
   // Chebyshev distance to the nearest glowing pixel (alpha > 0), two passes.

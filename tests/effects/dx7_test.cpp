@@ -191,7 +191,7 @@ TEST(Dx7Glow, InterpreterEqualsTheConvolutionWithTheQuantisedWeights) {
     EXPECT_FALSE(plan.quantization.empty());
     CpuPassDevice cpu(2);
     GlowRun run = run_glow(plan, scene, cpu, false);
-    ASSERT_TRUE(run.run.ok) << run.run.error;
+    ASSERT_TRUE(run.run.ok()) << run.run.message();
     const img::Image& glow = run.images.at(std::string(kGlowTexture));
     const std::vector<double> want = expected_glow(scene, plan.taps, plan.weight_bytes);
     double worst = 0;

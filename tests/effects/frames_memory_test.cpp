@@ -58,10 +58,10 @@ void expect_accumulates(PassDevice& dev) {
   const uint32_t w = 9, h = 5;
   const EffectGraph g = accumulate_graph(w, h);
   ImageMap images{{"scene", eighths(w, h)}};
-  FramesRun run = run_frames(g, dev, images, 3);
-  ASSERT_TRUE(run.ok) << run.error;
-  EXPECT_EQ(run.times.frame_ms.size(), 3u);
-  EXPECT_GE(run.times.setup_ms, 0);
+  ir::Result<FrameTimes> run = run_frames(g, dev, images, 3);
+  ASSERT_TRUE(run.ok()) << run.message();
+  EXPECT_EQ(run->frame_ms.size(), 3u);
+  EXPECT_GE(run->setup_ms, 0);
   const img::Image& acc = images.at("acc");
   const img::Image scene = eighths(w, h);
   ASSERT_EQ(acc.rgba.size(), scene.rgba.size());
@@ -92,10 +92,10 @@ TEST_F(FramesVulkan, GlowFramesRepeatTheSingleRun) {
   const img::Image scene = make_default_scene(p.width, p.height, p.format);
   CpuPassDevice cpu(2);
   const GlowRun once = run_glow(plan, scene, cpu);
-  ASSERT_TRUE(once.run.ok) << once.run.error;
+  ASSERT_TRUE(once.run.ok()) << once.run.message();
   auto vk = make_vulkan_pass_device(*dev);
   const GlowFrames frames = run_glow_frames(plan, scene, *vk, 4);
-  ASSERT_TRUE(frames.run.ok) << frames.run.error;
+  ASSERT_TRUE(frames.run.ok()) << frames.run.message();
   const std::string final_name(kFinalTexture);
   EXPECT_EQ(frames.images.at(final_name).rgba, once.images.at(final_name).rgba);
   EXPECT_NE(frames.images.at(final_name).rgba, scene.rgba); // the glow added something

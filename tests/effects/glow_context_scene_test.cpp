@@ -112,12 +112,12 @@ TEST_P(GlowContextShipped, EveryPairAgreesOnEveryPass) {
   ways.emplace_back("cpu", run_glow(plan, *scene, cpu_dev, true));
   ways.emplace_back("vulkan", run_glow(plan, *scene, *vk, true));
   ways.emplace_back("analytic", run_glow(plan, *scene, analytic, true));
-  for (const auto& [name, w] : ways) ASSERT_TRUE(w.run.ok) << name << ": " << w.run.error;
+  for (const auto& [name, w] : ways) ASSERT_TRUE(w.run.ok()) << name << ": " << w.run.message();
   EXPECT_TRUE(dev->messages().empty()) << dev->messages().front();
   for (size_t a = 0; a < ways.size(); ++a)
     for (size_t b = a + 1; b < ways.size(); ++b) {
       const RunAgreement agree =
-          compare_runs(ways[a].second.run, ways[a].second.images, ways[b].second.run,
+          compare_runs(*ways[a].second.run, ways[a].second.images, *ways[b].second.run,
                        ways[b].second.images, std::string(kFinalTexture));
       ASSERT_EQ(agree.error, "");
       for (const PassAgreement& row : agree.passes)

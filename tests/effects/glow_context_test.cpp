@@ -63,7 +63,7 @@ protected:
     w.runs.emplace_back("cpu", run_glow(plan, scene, cpu_dev));
     w.runs.emplace_back("vulkan", run_glow(plan, scene, *vk));
     w.runs.emplace_back("analytic", run_glow(plan, scene, analytic));
-    for (const auto& [name, r] : w.runs) EXPECT_TRUE(r.run.ok) << name << ": " << r.run.error;
+    for (const auto& [name, r] : w.runs) EXPECT_TRUE(r.run.ok()) << name << ": " << r.run.message();
     EXPECT_TRUE(dev->messages().empty()) << dev->messages().front();
     return w;
   }
@@ -83,7 +83,7 @@ protected:
 template <class Expected>
 void expect_glow(const Ways& w, const img::Image& scene, Tier tier, const Expected& expected) {
   for (const auto& [name, r] : w.runs) {
-    if (!r.run.ok) continue;
+    if (!r.run.ok()) continue;
     const img::Image& glow = r.images.at(std::string(kGlowTexture));
     const img::Image& fin = r.images.at(std::string(kFinalTexture));
     for (uint32_t y = 0; y < kH; ++y)

@@ -25,31 +25,31 @@ GlowPlan small_plan(unsigned n, img::Format f, BlurProfile profile = default_blu
 
 TEST(Graph, ChecksNamesAndTargets) {
   GlowPlan plan = small_plan(2, img::Format::RGBA32F);
-  EXPECT_EQ(check_graph(plan.graph), "");
+  EXPECT_TRUE(check_graph(plan.graph).ok()) << check_graph(plan.graph).message();
   EffectGraph g = plan.graph;
   g.passes[0].textures[0].texture = "nowhere";
-  EXPECT_NE(check_graph(g).find("unknown texture 'nowhere'"), std::string::npos);
+  EXPECT_NE(check_graph(g).message().find("unknown texture 'nowhere'"), std::string::npos);
   g = plan.graph;
   g.passes[0].textures[0].texture = g.passes[0].target;
-  EXPECT_NE(check_graph(g).find("reads its own target"), std::string::npos);
+  EXPECT_NE(check_graph(g).message().find("reads its own target"), std::string::npos);
   g = plan.graph;
   g.passes[0].target = std::string(kSceneTexture);
-  EXPECT_NE(check_graph(g).find("input texture"), std::string::npos);
+  EXPECT_NE(check_graph(g).message().find("input texture"), std::string::npos);
   g = plan.graph;
   g.passes[1].name = g.passes[0].name;
-  EXPECT_NE(check_graph(g).find("appears twice"), std::string::npos);
+  EXPECT_NE(check_graph(g).message().find("appears twice"), std::string::npos);
 }
 
 TEST(Graph, MissingOrWrongSizedInputIsAnError) {
   GlowPlan plan = small_plan(2, img::Format::RGBA32F);
   CpuPassDevice dev(2);
   ImageMap images;
-  GraphRun r = run_graph(plan.graph, dev, images);
-  EXPECT_FALSE(r.ok);
-  EXPECT_NE(r.error.find("'scene' was not given"), std::string::npos) << r.error;
+  ir::Result<GraphRun> r = run_graph(plan.graph, dev, images);
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(r.message().find("'scene' was not given"), std::string::npos) << r.message();
   GlowRun g = run_glow(plan, img::Image(10, 10), dev);
-  EXPECT_FALSE(g.run.ok);
-  EXPECT_NE(g.run.error.find("expects 128x64"), std::string::npos) << g.run.error;
+  EXPECT_FALSE(g.run.ok());
+  EXPECT_NE(g.run.message().find("expects 128x64"), std::string::npos) << g.run.message();
 }
 
 TEST(BuiltinListing, UnknownAndKnown) {
@@ -71,7 +71,7 @@ TEST(GlowCpu, NothingGlowsGivesTheSceneBack) {
     for (size_t i = 3; i < scene.rgba.size(); i += 4) scene.rgba[i] = 0.0f;
     CpuPassDevice dev(2);
     GlowRun g = run_glow(small_plan(2, f), scene, dev);
-    ASSERT_TRUE(g.run.ok) << g.run.error;
+    ASSERT_TRUE(g.run.ok()) << g.run.message();
     EXPECT_EQ(g.images.at(std::string(kFinalTexture)).rgba, scene.rgba);
     for (float v : g.images.at(std::string(kGlowTexture)).rgba) ASSERT_EQ(v, 0.0f);
   }
@@ -96,7 +96,7 @@ TEST(GlowCpu, OneTexelGlowsAsTheOuterProductOfTheTaps) {
   ASSERT_EQ(plan.taps.size(), 7u);
   CpuPassDevice dev(2);
   GlowRun g = run_glow(plan, scene, dev);
-  ASSERT_TRUE(g.run.ok) << g.run.error;
+  ASSERT_TRUE(g.run.ok()) << g.run.message();
   const img::Image& glow = g.images.at(std::string(kGlowTexture));
   const img::Image& final_frame = g.images.at(std::string(kFinalTexture));
   const double norm = 1 + 2 * (std::exp(-0.5) + std::exp(-2.0) + std::exp(-4.5));

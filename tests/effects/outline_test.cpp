@@ -79,7 +79,7 @@ OutlineResult run_on(PassDevice& device) {
   GlowPlan plan = build_outline(params(), object());
   EXPECT_TRUE(plan) << plan.error;
   GlowRun r = run_glow(plan, img::Image(kW, kH), device);
-  EXPECT_TRUE(r.run.ok) << r.run.error;
+  EXPECT_TRUE(r.run.ok()) << r.run.message();
   return {r.images[std::string(kFinalTexture)], r.images[std::string(kStencilTexture)]};
 }
 
@@ -165,7 +165,8 @@ TEST(Outline, StencilStateOutOfRangeIsRefusedByTheGraph) {
   GlowPlan plan = build_outline(params(), object());
   ASSERT_TRUE(plan) << plan.error;
   plan.graph.passes[0].depth_stencil.stencil_ref = 256;
-  EXPECT_NE(check_graph(plan.graph).find("0..255"), std::string::npos) << check_graph(plan.graph);
+  EXPECT_NE(check_graph(plan.graph).message().find("0..255"), std::string::npos)
+      << check_graph(plan.graph).message();
   OutlineParams o = object();
   o.stencil_ref = 0;
   EXPECT_NE(build_outline(params(), o).error.find("stencil_ref 0"), std::string::npos);

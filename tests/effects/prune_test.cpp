@@ -33,8 +33,8 @@ Outcome expect_same(const GlowParams& p, const img::Image& scene, const std::str
   lean.graph = pruned.graph;
   CpuPassDevice a, b;
   const GlowRun whole = run_glow(plan, scene, a), part = run_glow(lean, scene, b);
-  EXPECT_TRUE(whole.run.ok && part.run.ok) << whole.run.error << part.run.error;
-  if (!whole.run.ok || !part.run.ok) return {};
+  EXPECT_TRUE(whole.run.ok() && part.run.ok()) << whole.run.message() << part.run.message();
+  if (!whole.run.ok() || !part.run.ok()) return {};
   for (const char* tex : {"glow", "final"}) {
     const std::vector<float>& x = whole.images.at(tex).rgba;
     const std::vector<float>& y = part.images.at(tex).rgba;
@@ -168,7 +168,7 @@ TEST_F(PruneDevices, LimitedPassesGiveTheSameFrameOnVulkanAndAnalytic) {
                                                            {an_whole.get(), an_lean.get()}};
       for (const auto& [a, b] : pairs) {
         const GlowRun whole = run_glow(plan, s, *a), part = run_glow(lean, s, *b);
-        ASSERT_TRUE(whole.run.ok && part.run.ok) << whole.run.error << part.run.error;
+        ASSERT_TRUE(whole.run.ok() && part.run.ok()) << whole.run.message() << part.run.message();
         for (const char* tex : {"glow", "final"}) {
           const std::vector<float>& x = whole.images.at(tex).rgba;
           const std::vector<float>& y = part.images.at(tex).rgba;

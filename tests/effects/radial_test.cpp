@@ -62,6 +62,14 @@ GlowParams glow_params(Tier tier, img::Format format = img::Format::RGBA32F) {
   return g;
 }
 
+// A frame sink's body: the star texture read back after the frame, kept in `frames`.
+ir::Status read_star(PassDevice& device, std::vector<img::Image>& frames) {
+  ir::Result<img::Image> star = device.read_texture(std::string(kStarTexture));
+  if (!star) return std::move(star).failure();
+  frames.push_back(std::move(*star));
+  return ir::ok_status();
+}
+
 class RadialWays : public vulkan::test::VulkanTest, public ::testing::WithParamInterface<Tier> {};
 
 TEST_P(RadialWays, SingleBrightPixelMatchesTheClosedForm) {
@@ -76,7 +84,7 @@ TEST_P(RadialWays, SingleBrightPixelMatchesTheClosedForm) {
   for (PassDevice* d :
        {static_cast<PassDevice*>(&cpu), vk.get(), static_cast<PassDevice*>(&analytic)}) {
     GlowRun run = run_glow(plan, scene, *d, false);
-    ASSERT_TRUE(run.run.ok) << run.run.error;
+    ASSERT_TRUE(run.run.ok()) << run.run.message();
     const img::Image& beams = run.images.at(std::string(kGlowTexture));
     const img::Image& fin = run.images.at(std::string(kFinalTexture));
     for (uint32_t y = 0; y < kH; ++y)
@@ -123,11 +131,11 @@ TEST_P(RadialWays, ThreeWaysAgreeOnEveryPassWithTheStarMoving) {
     ways.emplace_back("cpu", run_glow(plan, scene, cpu, true));
     ways.emplace_back("vulkan", run_glow(plan, scene, *vk, true));
     ways.emplace_back("analytic", run_glow(plan, scene, analytic, true));
-    for (auto& [name, w] : ways) ASSERT_TRUE(w.run.ok) << name << ": " << w.run.error;
+    for (auto& [name, w] : ways) ASSERT_TRUE(w.run.ok()) << name << ": " << w.run.message();
     for (size_t a = 0; a < ways.size(); ++a)
       for (size_t b = a + 1; b < ways.size(); ++b) {
         RunAgreement agree =
-            compare_runs(ways[a].second.run, ways[a].second.images, ways[b].second.run,
+            compare_runs(*ways[a].second.run, ways[a].second.images, *ways[b].second.run,
                          ways[b].second.images, std::string(kFinalTexture));
         ASSERT_EQ(agree.error, "");
         for (const PassAgreement& row : agree.passes) {
@@ -166,14 +174,10 @@ TEST_P(RadialWays, FramesAnimateTheStarAsTheStillFramesDo) {
        {static_cast<PassDevice*>(&cpu), vk.get(), static_cast<PassDevice*>(&analytic)}) {
     ImageMap images{{std::string(kSceneTexture), scene}};
     std::vector<img::Image> frames;
-    FramesRun run = run_frames(moving.graph, *d, images, kFrames,
-                               [&](unsigned, PassDevice& dev_) -> std::string {
-                                 img::Image star;
-                                 std::string e = dev_.read_texture(std::string(kStarTexture), star);
-                                 frames.push_back(std::move(star));
-                                 return e;
-                               });
-    ASSERT_TRUE(run.ok) << d->name() << ": " << run.error;
+    ir::Result<FrameTimes> run = run_frames(
+        moving.graph, *d, images, kFrames,
+        [&](unsigned, PassDevice& dev_) -> ir::Status { return read_star(dev_, frames); });
+    ASSERT_TRUE(run.ok()) << d->name() << ": " << run.message();
     ASSERT_EQ(frames.size(), kFrames);
     // Each frame equals the still plan of that frame, on the same device.
     for (unsigned f = 0; f < kFrames; ++f) {
@@ -183,7 +187,7 @@ TEST_P(RadialWays, FramesAnimateTheStarAsTheStillFramesDo) {
       GlowPlan plan = build_radial(g, still);
       ASSERT_TRUE(plan) << plan.error;
       GlowRun one = run_glow(plan, scene, *d, false);
-      ASSERT_TRUE(one.run.ok) << one.run.error;
+      ASSERT_TRUE(one.run.ok()) << one.run.message();
       EXPECT_EQ(frames[f].rgba, one.images.at(std::string(kStarTexture)).rgba)
           << d->name() << " frame " << f;
     }
@@ -247,14 +251,11 @@ TEST_P(RadialWays, AnimatedStarMatchesTheClosedFormEachFrame) {
        {static_cast<PassDevice*>(&cpu), vk.get(), static_cast<PassDevice*>(&analytic)}) {
     ImageMap images{{std::string(kSceneTexture), ramp}};
     std::vector<img::Image> frames;
-    FramesRun run =
-        run_frames(plan.graph, *d, images, kFrames, [&](unsigned, PassDevice& dev_) -> std::string {
-          img::Image star;
-          std::string e = dev_.read_texture(std::string(kStarTexture), star);
-          frames.push_back(std::move(star));
-          return e;
+    ir::Result<FrameTimes> run =
+        run_frames(plan.graph, *d, images, kFrames, [&](unsigned, PassDevice& dev_) -> ir::Status {
+          return read_star(dev_, frames);
         });
-    ASSERT_TRUE(run.ok) << d->name() << ": " << run.error;
+    ASSERT_TRUE(run.ok()) << d->name() << ": " << run.message();
     ASSERT_EQ(frames.size(), kFrames);
     for (unsigned f = 0; f < kFrames; ++f) {
       double worst = 0;

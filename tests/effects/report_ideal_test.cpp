@@ -132,7 +132,7 @@ TEST(ReportIdeal, SweepErrorsEqualAnIndependentComputation) {
 
     CpuPassDevice cpu;
     const GlowRun run = run_glow(build_glow(scene.params), image, cpu);
-    ASSERT_TRUE(run.run.ok) << run.run.error;
+    ASSERT_TRUE(run.run.ok()) << run.run.message();
     const RgbImage ideal = direct_ideal(image, scene.params.profile);
     const img::Image& glow = run.images.at("glow");
     const img::Image& final = run.images.at("final");

@@ -51,12 +51,12 @@ void check_format(img::Format format) {
                                    std::to_string(int(s));
           AnalyticPassDevice analytic;
           GlowRun model = run_glow(plan, scene, analytic, true);
-          ASSERT_TRUE(model.run.ok) << model.run.error;
+          ASSERT_TRUE(model.run.ok()) << model.run.message();
           for (float factor : {1.0f, 1.001f}) {
             CpuPassDevice cpu_dev(2);
             GlowRun run = run_glow(perturb_blur_weights(plan, factor), scene, cpu_dev, true);
-            ASSERT_TRUE(run.run.ok) << run.run.error;
-            RunAgreement agree = compare_runs(run.run, run.images, model.run, model.images,
+            ASSERT_TRUE(run.run.ok()) << run.run.message();
+            RunAgreement agree = compare_runs(*run.run, run.images, *model.run, model.images,
                                               std::string(kFinalTexture));
             ASSERT_EQ(agree.error, "");
             if (factor == 1.0f) {

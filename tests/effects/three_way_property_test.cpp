@@ -93,10 +93,10 @@ TEST_F(ThreeWayProperty, EveryLegalRandomSceneAgreesThreeWays) {
     ways.push_back({"cpu", run_glow(plan, s.image, cpu_dev, true)});
     ways.push_back({"vulkan", run_glow(plan, s.image, *vk_dev, true)});
     ways.push_back({"analytic", run_glow(plan, s.image, analytic, true)});
-    for (const Way& w : ways) ASSERT_TRUE(w.run.run.ok) << w.name << ": " << w.run.run.error;
+    for (const Way& w : ways) ASSERT_TRUE(w.run.run.ok()) << w.name << ": " << w.run.run.message();
     for (size_t a = 0; a < ways.size(); ++a)
       for (size_t b = a + 1; b < ways.size(); ++b) {
-        RunAgreement agree = compare_runs(ways[a].run.run, ways[a].run.images, ways[b].run.run,
+        RunAgreement agree = compare_runs(*ways[a].run.run, ways[a].run.images, *ways[b].run.run,
                                           ways[b].run.images, std::string(kFinalTexture));
         ASSERT_EQ(agree.error, "");
         for (const PassAgreement& row : agree.passes)

@@ -48,9 +48,9 @@ TEST(ThreeWayRgba8, DownsampleStoresTheInterpretersBytesAtExactMidpoints) {
     CpuPassDevice cpu_dev(2);
     AnalyticPassDevice analytic;
     GlowRun a = run_glow(plan, scene, cpu_dev, true), b = run_glow(plan, scene, analytic, true);
-    ASSERT_TRUE(a.run.ok && b.run.ok) << a.run.error << b.run.error;
-    ASSERT_EQ(a.run.passes[0].result.rgba, b.run.passes[0].result.rgba) << "extract";
-    const img::Image& src = b.run.passes[0].result; // the glow sources, 8-bit
+    ASSERT_TRUE(a.run.ok() && b.run.ok()) << a.run.message() << b.run.message();
+    ASSERT_EQ(a.run->passes[0].result.rgba, b.run->passes[0].result.rgba) << "extract";
+    const img::Image& src = b.run->passes[0].result; // the glow sources, 8-bit
     const uint32_t gw = plan.glow_width, gh = plan.glow_height;
     auto steps_at = [&](uint32_t x, uint32_t y, int c) { // clamp addressing
       return std::lround(
@@ -74,7 +74,7 @@ TEST(ThreeWayRgba8, DownsampleStoresTheInterpretersBytesAtExactMidpoints) {
             if ((2 * sum) % (2 * long(reads)) == long(reads))
               midpoint[(size_t(y) * gw + x) * 4 + size_t(c)] = 1;
           }
-      const PassRecord &ra = a.run.passes[index], &rb = b.run.passes[index];
+      const PassRecord &ra = a.run->passes[index], &rb = b.run->passes[index];
       ASSERT_EQ(rb.midpoints.size(), size_t(gw) * gh) << "the analytic device keeps a mask";
       for (size_t px = 0; px < rb.midpoints.size(); ++px) {
         if (midpoint[4 * px] || midpoint[4 * px + 1] || midpoint[4 * px + 2] ||
@@ -142,7 +142,7 @@ TEST(ThreeWaySameInputs, Rgba8ReplacingPassesAgreeAlone) {
         CpuPassDevice cpu_dev(2);
         // The interpreter's images after every pass: the inputs each pass gets.
         GlowRun whole = run_glow(plan, random_scene(p.width, p.height, seed), cpu_dev, true);
-        ASSERT_TRUE(whole.run.ok) << whole.run.error;
+        ASSERT_TRUE(whole.run.ok()) << whole.run.message();
         ImageMap state{{std::string(kSceneTexture), whole.images.at(std::string(kSceneTexture))}};
         uint64_t midpoint_pixels = 0, differing = 0;
         for (size_t i = 0; i < plan.graph.passes.size(); ++i) {
@@ -152,9 +152,10 @@ TEST(ThreeWaySameInputs, Rgba8ReplacingPassesAgreeAlone) {
             ImageMap ia = state, ib = state;
             CpuPassDevice c1(2);
             AnalyticPassDevice an;
-            GraphRun ra = run_graph(one, c1, ia, true), rb = run_graph(one, an, ib, true);
-            ASSERT_TRUE(ra.ok && rb.ok) << ra.error << rb.error;
-            RunAgreement agree = compare_runs(ra, ia, rb, ib, d.target);
+            ir::Result<GraphRun> ra = run_graph(one, c1, ia, true),
+                                 rb = run_graph(one, an, ib, true);
+            ASSERT_TRUE(ra.ok() && rb.ok()) << ra.message() << rb.message();
+            RunAgreement agree = compare_runs(*ra, ia, *rb, ib, d.target);
             ASSERT_EQ(agree.error, "");
             for (const PassAgreement& row : agree.passes)
               EXPECT_TRUE(row.verdict.pass) << d.name << ": " << row.verdict.summary;
@@ -162,7 +163,7 @@ TEST(ThreeWaySameInputs, Rgba8ReplacingPassesAgreeAlone) {
             differing +=
                 agree.passes[0].comparison.pixels - agree.passes[0].comparison.identical_pixels;
           }
-          state[d.target] = whole.run.passes[i].result;
+          state[d.target] = whole.run->passes[i].result;
         }
         // Fed the same inputs, every pass stores the interpreter's bytes: no pixel differs,
         // so none needs the slack either.

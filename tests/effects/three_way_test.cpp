@@ -88,7 +88,7 @@ void expect_agreement(const std::vector<Way>& ways, size_t passes, img::Format f
   for (size_t a = 0; a < ways.size(); ++a)
     for (size_t b = a + 1; b < ways.size(); ++b) {
       const Way &x = ways[a], &y = ways[b];
-      RunAgreement agree = compare_runs(x.run.run, x.run.images, y.run.run, y.run.images,
+      RunAgreement agree = compare_runs(*x.run.run, x.run.images, *y.run.run, y.run.images,
                                         std::string(kFinalTexture));
       ASSERT_EQ(agree.error, "") << x.name << " vs " << y.name;
       ASSERT_EQ(agree.passes.size(), passes + 1);
@@ -126,7 +126,7 @@ TEST_P(ThreeWay, EveryPairAgreesOnEveryPass) {
   ways.push_back({"cpu", run_glow(plan, scene, cpu_dev, true)});
   ways.push_back({"vulkan", run_glow(plan, scene, *vk_dev, true)});
   ways.push_back({"analytic", run_glow(plan, scene, analytic, true)});
-  for (const Way& w : ways) ASSERT_TRUE(w.run.run.ok) << w.name << ": " << w.run.run.error;
+  for (const Way& w : ways) ASSERT_TRUE(w.run.run.ok()) << w.name << ": " << w.run.run.message();
   EXPECT_TRUE(dev->messages().empty()) << dev->messages().front();
   expect_agreement(ways, plan.graph.passes.size(), c.format);
   // The glow is there: the final frame is not the scene (some texel has alpha > 0).
@@ -184,7 +184,7 @@ TEST_P(ThreeWayFullSize, DefaultSceneEveryPairAgrees) {
         "[three-way] 1280x720 %s ds%u %s on %s: %.0f ms\n", std::string(tier_name(c.tier)).c_str(),
         c.downsample, std::string(img::format_name(c.format)).c_str(), name,
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
-    ASSERT_TRUE(ways.back().run.run.ok) << name << ": " << ways.back().run.run.error;
+    ASSERT_TRUE(ways.back().run.run.ok()) << name << ": " << ways.back().run.run.message();
   }
   EXPECT_TRUE(dev->messages().empty()) << dev->messages().front();
   expect_agreement(ways, plan.graph.passes.size(), p.format);
@@ -218,7 +218,7 @@ void check_half_texel_rule(Tier tier, bool half_texel) {
   ASSERT_TRUE(plan) << plan.error;
   AnalyticPassDevice analytic;
   GlowRun run = run_glow(plan, scene, analytic, true);
-  ASSERT_TRUE(run.run.ok) << run.run.error;
+  ASSERT_TRUE(run.run.ok()) << run.run.message();
   const unsigned per_pass = tier == Tier::Dx9 ? kTapsPerBlurPassDx9 : kTapsPerBlurPassDx8;
   for (const char* name : {"blur_h.0", "blur_v.0"}) {
     SCOPED_TRACE(name);
@@ -254,7 +254,7 @@ void check_half_texel_rule(Tier tier, bool half_texel) {
     m.target_format = img::Format::RGBA32F;
     img::ImageResult conv = tierlift::test::discrete_convolution(texel_taps, source, m);
     ASSERT_TRUE(conv) << conv.message();
-    const img::Image& result = run.run.passes[index].result;
+    const img::Image& result = run.run->passes[index].result;
     ASSERT_EQ(result.rgba.size(), conv->rgba.size());
     auto pred = tierlift::test::predict_corner_difference(ex.taps, source, m);
     ASSERT_TRUE(pred) << pred.message();
@@ -303,22 +303,22 @@ TEST(ThreeWayAnalytic, UnmodelledPassesAreErrors) {
   bad.graph.passes.back().ps = *product; // the composite, still declared Linear
   AnalyticPassDevice analytic;
   GlowRun r = run_glow(bad, scene, analytic);
-  EXPECT_FALSE(r.run.ok);
-  EXPECT_NE(r.run.error.find("pass 'composite'"), std::string::npos) << r.run.error;
-  EXPECT_NE(r.run.error.find("line 7:1"), std::string::npos) << r.run.error;
-  EXPECT_NE(r.run.error.find("product of two samples"), std::string::npos) << r.run.error;
+  EXPECT_FALSE(r.run.ok());
+  EXPECT_NE(r.run.message().find("pass 'composite'"), std::string::npos) << r.run.message();
+  EXPECT_NE(r.run.message().find("line 7:1"), std::string::npos) << r.run.message();
+  EXPECT_NE(r.run.message().find("product of two samples"), std::string::npos) << r.run.message();
   bad = plan;
   bad.graph.passes.back().blend = cpu::BlendMode::SrcAlphaOne;
   r = run_glow(bad, scene, analytic);
-  EXPECT_NE(r.run.error.find("Replace and ONE/ONE"), std::string::npos) << r.run.error;
+  EXPECT_NE(r.run.message().find("Replace and ONE/ONE"), std::string::npos) << r.run.message();
   bad = plan;
   bad.graph.passes[0].analytic = AnalyticForm::MaskByAlpha;
   bad.graph.passes.back().analytic = AnalyticForm::MaskByAlpha; // reads two textures
   r = run_glow(bad, scene, analytic);
-  EXPECT_NE(r.run.error.find("2 different reads"), std::string::npos) << r.run.error;
+  EXPECT_NE(r.run.message().find("2 different reads"), std::string::npos) << r.run.message();
   // And the plan itself runs, with no notes for ps_2_0 passes.
   r = run_glow(plan, scene, analytic);
-  EXPECT_TRUE(r.run.ok) << r.run.error;
+  EXPECT_TRUE(r.run.ok()) << r.run.message();
   EXPECT_TRUE(analytic.notes().empty()) << analytic.notes().front();
 }
 

@@ -64,9 +64,9 @@ TEST_P(GlowVulkan, EveryPassAgrees) {
   auto vk_dev = make_vulkan_pass_device(*dev);
   GlowRun a = run_glow(plan, scene, cpu_dev, true);
   GlowRun b = run_glow(plan, scene, *vk_dev, true);
-  ASSERT_TRUE(a.run.ok) << a.run.error;
-  ASSERT_TRUE(b.run.ok) << b.run.error;
-  RunAgreement agree = compare_runs(a.run, a.images, b.run, b.images, std::string(kFinalTexture));
+  ASSERT_TRUE(a.run.ok()) << a.run.message();
+  ASSERT_TRUE(b.run.ok()) << b.run.message();
+  RunAgreement agree = compare_runs(*a.run, a.images, *b.run, b.images, std::string(kFinalTexture));
   ASSERT_EQ(agree.error, "");
   ASSERT_EQ(agree.passes.size(), plan.graph.passes.size() + 1);
   const std::string label = std::string("glow ") + std::string(tier_name(c.tier)) + " " +
@@ -137,10 +137,10 @@ TEST_F(GlowVulkanDevice, CompositeAgreesExactlyOnRoundingTies) {
   auto vk_dev = make_vulkan_pass_device(*dev);
   GlowRun a = run_glow(plan, scene, cpu_dev, true);
   GlowRun b = run_glow(plan, scene, *vk_dev, true);
-  ASSERT_TRUE(a.run.ok && b.run.ok) << a.run.error << b.run.error;
-  ASSERT_EQ(a.run.passes.size(), b.run.passes.size());
-  for (size_t i = 0; i < a.run.passes.size(); ++i)
-    EXPECT_EQ(a.run.passes[i].result.rgba, b.run.passes[i].result.rgba) << a.run.passes[i].pass;
+  ASSERT_TRUE(a.run.ok() && b.run.ok()) << a.run.message() << b.run.message();
+  ASSERT_EQ(a.run->passes.size(), b.run->passes.size());
+  for (size_t i = 0; i < a.run->passes.size(); ++i)
+    EXPECT_EQ(a.run->passes[i].result.rgba, b.run->passes[i].result.rgba) << a.run->passes[i].pass;
   const std::string glow(kGlowTexture), fin(kFinalTexture);
   ASSERT_EQ(a.images.at(glow).rgba, b.images.at(glow).rgba);
   const img::Image &fa = a.images.at(fin), &fb = b.images.at(fin);
@@ -174,7 +174,7 @@ TEST_F(GlowVulkanDevice, NothingGlowsGivesTheSceneBack) {
     for (size_t i = 3; i < scene.rgba.size(); i += 4) scene.rgba[i] = 0.0f;
     auto vk_dev = make_vulkan_pass_device(*dev);
     GlowRun g = run_glow(plan, scene, *vk_dev);
-    ASSERT_TRUE(g.run.ok) << g.run.error;
+    ASSERT_TRUE(g.run.ok()) << g.run.message();
     EXPECT_EQ(g.images.at(std::string(kFinalTexture)).rgba, scene.rgba);
   }
 }

@@ -8,7 +8,7 @@
 
 namespace tierlift::effects {
 
-std::string AnalyticPassDevice::begin_run(const EffectGraph& graph, const ImageMap& inputs) {
+ir::Status AnalyticPassDevice::begin_run(const EffectGraph& graph, const ImageMap& inputs) {
   graph_ = &graph;
   images_.clear();
   notes_.clear();
@@ -19,12 +19,15 @@ std::string AnalyticPassDevice::begin_run(const EffectGraph& graph, const ImageM
                                          : img::Image(t.width, t.height,
                                                       t.stencil ? img::Format::RGBA32F : t.format);
   }
-  return {};
+  return ir::ok_status();
 }
 
-std::string AnalyticPassDevice::run_pass(const PassDesc& pass) {
-  if (!graph_) return "no run was begun";
-  return detail::run_analytic_pass(pass, *graph_, images_, midpoints_, &notes_);
+ir::Status AnalyticPassDevice::run_pass(const PassDesc& pass) {
+  if (!graph_) return device_error("no run was begun");
+  if (std::string e = detail::run_analytic_pass(pass, *graph_, images_, midpoints_, &notes_);
+      !e.empty())
+    return device_error(std::move(e));
+  return ir::ok_status();
 }
 
 bool AnalyticPassDevice::rounding_midpoints(const std::string& texture,
@@ -35,18 +38,17 @@ bool AnalyticPassDevice::rounding_midpoints(const std::string& texture,
   return true;
 }
 
-std::string AnalyticPassDevice::update_input(const std::string& name, const img::Image& image) {
+ir::Status AnalyticPassDevice::update_input(const std::string& name, const img::Image& image) {
   auto it = images_.find(name);
-  if (!graph_ || it == images_.end()) return fmt::format("no input '{}'", name);
+  if (!graph_ || it == images_.end()) return device_error(fmt::format("no input '{}'", name));
   it->second = image;
-  return {};
+  return ir::ok_status();
 }
 
-std::string AnalyticPassDevice::read_texture(const std::string& name, img::Image& out) {
+ir::Result<img::Image> AnalyticPassDevice::read_texture(const std::string& name) {
   auto it = images_.find(name);
-  if (it == images_.end()) return fmt::format("no texture '{}'", name);
-  out = it->second;
-  return {};
+  if (it == images_.end()) return device_error(fmt::format("no texture '{}'", name));
+  return it->second;
 }
 
 std::unique_ptr<PassDevice> make_analytic_pass_device() {

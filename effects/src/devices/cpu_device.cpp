@@ -26,7 +26,7 @@ void reset_image(img::Image& im, uint32_t w, uint32_t h, img::Format format,
 
 } // namespace
 
-std::string CpuPassDevice::begin_run(const EffectGraph& graph, const ImageMap& inputs) {
+ir::Status CpuPassDevice::begin_run(const EffectGraph& graph, const ImageMap& inputs) {
   graph_ = &graph;
   ImageMap kept;
   kept.swap(images_);
@@ -57,7 +57,7 @@ std::string CpuPassDevice::begin_run(const EffectGraph& graph, const ImageMap& i
     // make_pass wants an image per bound texture; run_pass binds the real one by reference.
     placeholders_.emplace(t.name, img::Image());
   }
-  return {};
+  return ir::ok_status();
 }
 
 void CpuPassDevice::settle(const std::string& name) {
@@ -68,34 +68,37 @@ void CpuPassDevice::settle(const std::string& name) {
   if (im != images_.end()) std::fill(im->second.rgba.begin(), im->second.rgba.end(), 0.0f);
 }
 
-std::string CpuPassDevice::run_pass(const PassDesc& desc) {
-  if (!graph_) return "no run was begun";
+ir::Status CpuPassDevice::run_pass(const PassDesc& desc) {
+  if (!graph_) return device_error("no run was begun");
   ir::Result<pass::Pass> pass = make_pass(desc, placeholders_, graph_->conventions);
-  if (!pass) return pass.message();
+  if (!pass) return std::move(pass).failure();
   pass->executor = executor_;
   // A GLSL pass: the interpreter runs D3D9 listings only, so it runs the pass's ps_2_0 twin
   // (PassDesc::glsl_spirv; docs/glsl.md). The GLSL and the twin are compared on the Vulkan
   // device, where both run, so the twin standing in here is checked, not assumed.
   pass->pixel_spirv.reset();
   auto it = images_.find(desc.target);
-  if (it == images_.end()) return fmt::format("no texture '{}'", desc.target);
+  if (it == images_.end()) return device_error(fmt::format("no texture '{}'", desc.target));
   cpu::DrawTargets targets;
   targets.color[0] = &it->second;
   for (size_t i = 0; i < desc.more_targets.size() && i + 1 < targets.color.size(); ++i) {
     auto more = images_.find(desc.more_targets[i]);
-    if (more == images_.end()) return fmt::format("no texture '{}'", desc.more_targets[i]);
+    if (more == images_.end())
+      return device_error(fmt::format("no texture '{}'", desc.more_targets[i]));
     targets.color[i + 1] = &more->second;
   }
   if (!desc.stencil.empty()) {
     auto s = stencils_.find(desc.stencil);
-    if (s == stencils_.end()) return fmt::format("no stencil texture '{}'", desc.stencil);
+    if (s == stencils_.end())
+      return device_error(fmt::format("no stencil texture '{}'", desc.stencil));
     targets.stencil = s->second.data();
   }
   for (const TextureBind& b : desc.textures) {
     settle(b.texture);
     auto tex = images_.find(b.texture); // make_pass checked the name and the stage already
     if (tex == images_.end() || b.stage >= pass::kMaxSamplers)
-      return fmt::format("pass '{}': texture '{}' has no image", desc.name, b.texture);
+      return device_error(
+          fmt::format("pass '{}': texture '{}' has no image", desc.name, b.texture));
     // Not owned: the image outlives the draw, and check_graph refuses a pass that reads its
     // own target, so no texture is written while it is sampled.
     pass->textures[b.stage].image =
@@ -114,33 +117,32 @@ std::string CpuPassDevice::run_pass(const PassDesc& desc) {
   cpu::DrawStats s = cpu::draw(*pass, targets, threads_);
   if (!s.ok) {
     settle(desc.target); // zeros, as the run began with
-    return s.error;
+    return device_error(s.error);
   }
   stale_.erase(desc.target); // drawn: zeroed first or overwritten
-  return {};
+  return ir::ok_status();
 }
 
-std::string CpuPassDevice::update_input(const std::string& name, const img::Image& image) {
+ir::Status CpuPassDevice::update_input(const std::string& name, const img::Image& image) {
   auto it = images_.find(name);
-  if (!graph_ || it == images_.end()) return fmt::format("no input '{}'", name);
+  if (!graph_ || it == images_.end()) return device_error(fmt::format("no input '{}'", name));
   reset_image(it->second, image.width, image.height, image.format, &image);
   stale_.erase(name);
-  return {};
+  return ir::ok_status();
 }
 
-std::string CpuPassDevice::read_texture(const std::string& name, img::Image& out) {
+ir::Result<img::Image> CpuPassDevice::read_texture(const std::string& name) {
   if (auto s = stencils_.find(name); s != stencils_.end()) {
     const TextureDesc* t = graph_ ? graph_->find_texture(name) : nullptr;
-    if (!t) return fmt::format("no texture '{}'", name);
-    out = img::Image(t->width, t->height, img::Format::RGBA32F);
+    if (!t) return device_error(fmt::format("no texture '{}'", name));
+    img::Image out(t->width, t->height, img::Format::RGBA32F);
     for (size_t i = 0; i < s->second.size(); ++i) out.rgba[4 * i] = s->second[i];
-    return {};
+    return out;
   }
   settle(name);
   auto it = images_.find(name);
-  if (it == images_.end()) return fmt::format("no texture '{}'", name);
-  out = it->second;
-  return {};
+  if (it == images_.end()) return device_error(fmt::format("no texture '{}'", name));
+  return it->second;
 }
 
 } // namespace tierlift::effects

@@ -24,7 +24,7 @@ public:
   explicit VulkanPassDevice(vulkan::Device& device) : device_(device), textures_(device) {}
   std::string name() const override { return "vulkan"; }
 
-  std::string begin_run(const EffectGraph& graph, const ImageMap& inputs) override {
+  ir::Status begin_run(const EffectGraph& graph, const ImageMap& inputs) override {
     graph_ = nullptr;
     ids_.clear();
     placeholders_.clear();
@@ -37,7 +37,7 @@ public:
         e = textures_.upload(id, it->second);
       if (!e.empty()) {
         drop();
-        return fmt::format("texture '{}': {}", t.name, e);
+        return device_error(fmt::format("texture '{}': {}", t.name, e));
       }
       ids_[t.name] = id;
       // make_pass wants an image per bound texture; the draw samples the resident one.
@@ -50,38 +50,46 @@ public:
       if (e.empty()) e = textures_.prepare(draw.pass, draw.stages, draw.targets);
       if (!e.empty()) {
         drop();
-        return fmt::format("pass '{}': {}", desc.name, e);
+        return device_error(fmt::format("pass '{}': {}", desc.name, e));
       }
     }
     device_.save_pipeline_cache(); // for the next run (a no-op when nothing was added)
-    return textures_.set_batching(true);
+    return status(textures_.set_batching(true));
   }
 
-  std::string run_pass(const PassDesc& desc) override {
-    if (!graph_) return "no run was begun";
+  ir::Status run_pass(const PassDesc& desc) override {
+    if (!graph_) return device_error("no run was begun");
     Draw draw;
-    if (std::string e = make_draw(desc, draw); !e.empty()) return e;
+    if (std::string e = make_draw(desc, draw); !e.empty()) return device_error(std::move(e));
     vulkan::DrawResult r = textures_.draw(draw.pass, draw.stages, draw.targets);
-    return r.ok ? std::string() : r.error;
+    return status(r.ok ? std::string() : r.error);
   }
 
-  std::string finish() override { return textures_.flush(); }
+  ir::Status finish() override { return status(textures_.flush()); }
 
   // TextureSet::upload flushes the passes recorded so far first, so the passes before it
   // read the old image and those after it the new one.
-  std::string update_input(const std::string& name, const img::Image& image) override {
+  ir::Status update_input(const std::string& name, const img::Image& image) override {
     auto it = ids_.find(name);
-    if (!graph_ || it == ids_.end()) return fmt::format("no input '{}'", name);
-    return textures_.upload(it->second, image);
+    if (!graph_ || it == ids_.end()) return device_error(fmt::format("no input '{}'", name));
+    return status(textures_.upload(it->second, image));
   }
 
-  std::string read_texture(const std::string& name, img::Image& out) override {
+  ir::Result<img::Image> read_texture(const std::string& name) override {
     auto it = ids_.find(name);
-    if (it == ids_.end()) return fmt::format("no texture '{}'", name);
-    return textures_.read(it->second, out);
+    if (it == ids_.end()) return device_error(fmt::format("no texture '{}'", name));
+    img::Image out;
+    if (std::string e = textures_.read(it->second, out); !e.empty())
+      return device_error(std::move(e));
+    return out;
   }
 
 private:
+  ir::Status status(std::string error) const {
+    if (error.empty()) return ir::ok_status();
+    return device_error(std::move(error));
+  }
+
   struct Draw {
     pass::Pass pass;
     vulkan::StageTextures stages{};

@@ -416,7 +416,7 @@ GlowPlan build_glow_graph(const GlowParams& p, const TierRecipe& r) {
     plan.quantization = quantization_summary(weights, r.rounding);
   }
   g.passes.push_back(b.composite());
-  plan.error = check_graph(g);
+  plan.error = check_graph(g).message();
   return plan;
 }
 

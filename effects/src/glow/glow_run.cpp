@@ -3,47 +3,53 @@
 #include <fmt/format.h>
 
 namespace tierlift::effects {
+namespace {
+
+ir::Failure plan_failure(const GlowPlan& plan) {
+  return ir::fail("glow", "glow", plan.error);
+}
+
+} // namespace
 
 GlowRun run_glow(const GlowPlan& plan, const img::Image& scene, PassDevice& device,
                  bool keep_pass_images, const PassProgress& progress) {
-  GlowRun out;
-  if (!plan) {
-    out.run.error = plan.error;
-    return out;
-  }
-  out.images.emplace(std::string(kSceneTexture), scene);
-  out.run = run_graph(plan.graph, device, out.images, keep_pass_images, progress);
-  return out;
+  if (!plan) return GlowRun{plan_failure(plan), {}};
+  ImageMap images;
+  images.emplace(std::string(kSceneTexture), scene);
+  ir::Result<GraphRun> run = run_graph(plan.graph, device, images, keep_pass_images, progress);
+  return GlowRun{std::move(run), std::move(images)};
 }
 
 GlowFrames run_glow_frames(const GlowPlan& plan, const img::Image& scene, PassDevice& device,
                            unsigned frames, const std::vector<std::string>& read_back,
                            const GlowFrameSink& sink, const SceneAt& scene_at) {
-  GlowFrames out;
-  if (!plan) {
-    out.run.error = plan.error;
-    return out;
-  }
-  out.images.emplace(std::string(kSceneTexture), scene);
+  if (!plan) return GlowFrames{plan_failure(plan), {}};
+  ImageMap images;
+  images.emplace(std::string(kSceneTexture), scene);
   FrameSink frame_sink;
   if (sink)
-    frame_sink = [&](unsigned f, PassDevice& d) -> std::string {
+    frame_sink = [&](unsigned f, PassDevice& d) -> ir::Status {
       ImageMap read;
-      for (const std::string& name : read_back)
-        if (std::string e = d.read_texture(name, read[name]); !e.empty())
-          return fmt::format("reading '{}' back: {}", name, e);
+      for (const std::string& name : read_back) {
+        ir::Result<img::Image> image = d.read_texture(name);
+        if (!image)
+          return ir::fail(d.name(), "device",
+                          fmt::format("reading '{}' back: {}", name, image.message()));
+        read[name] = std::move(*image);
+      }
       return sink(f, read);
     };
   FrameInputs inputs_at;
   if (scene_at)
-    inputs_at = [&](unsigned f, ImageMap& changed) -> std::string {
+    inputs_at = [&](unsigned f, ImageMap& changed) -> ir::Status {
       img::ImageResult im = scene_at(f);
-      if (!im) return im.message();
+      if (!im) return std::move(im).failure();
       changed.emplace(std::string(kSceneTexture), std::move(*im));
-      return {};
+      return ir::ok_status();
     };
-  out.run = run_frames(plan.graph, device, out.images, frames, frame_sink, inputs_at);
-  return out;
+  ir::Result<FrameTimes> run =
+      run_frames(plan.graph, device, images, frames, frame_sink, inputs_at);
+  return GlowFrames{std::move(run), std::move(images)};
 }
 
 } // namespace tierlift::effects

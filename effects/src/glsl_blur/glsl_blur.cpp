@@ -125,7 +125,7 @@ GlowPlan build_glsl_blur(const GlowParams& params, const GlslBlurParams& g) {
   plan.glow_width = w;
   plan.glow_height = h;
   plan.blur_passes_per_axis = 1;
-  if (std::string e = check_graph(graph); !e.empty()) plan.error = e;
+  if (ir::Status checked = check_graph(graph); !checked) plan.error = checked.message();
   return plan;
 }
 

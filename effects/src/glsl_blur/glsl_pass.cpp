@@ -85,7 +85,7 @@ GlowPlan build_glsl_pass(const glsl::FragmentShader& shader, uint32_t width, uin
   g.passes.push_back(std::move(p));
   plan.glow_width = width;
   plan.glow_height = height;
-  if (std::string e = check_graph(g); !e.empty()) plan.error = e;
+  if (ir::Status checked = check_graph(g); !checked) plan.error = checked.message();
   return plan;
 }
 

@@ -125,14 +125,15 @@ std::string check_pass(const EffectGraph& g, const PassDesc& p) {
 
 } // namespace
 
-std::string check_graph(const EffectGraph& graph) {
-  if (std::string e = check_textures(graph); !e.empty()) return e;
+ir::Status check_graph(const EffectGraph& graph) {
+  auto fail = [](std::string message) { return ir::fail("graph", "graph", std::move(message)); };
+  if (std::string e = check_textures(graph); !e.empty()) return fail(std::move(e));
   std::set<std::string_view> names;
   for (const PassDesc& p : graph.passes) {
-    if (!names.insert(p.name).second) return fmt::format("pass '{}' appears twice", p.name);
-    if (std::string e = check_pass(graph, p); !e.empty()) return e;
+    if (!names.insert(p.name).second) return fail(fmt::format("pass '{}' appears twice", p.name));
+    if (std::string e = check_pass(graph, p); !e.empty()) return fail(std::move(e));
   }
-  return {};
+  return ir::ok_status();
 }
 
 } // namespace tierlift::effects

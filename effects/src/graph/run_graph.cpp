@@ -65,26 +65,33 @@ ir::Result<pass::Pass> make_pass(const PassDesc& desc, const ImageMap& images,
 
 namespace {
 
+ir::Failure run_error(std::string message) {
+  return ir::fail("graph", std::string(kRunRule), std::move(message));
+}
+
 // check_graph, the inputs at their declared size and format, begin_run. Empty on success.
 std::string begin_graph(const EffectGraph& graph, PassDevice& device, ImageMap& images) {
-  std::string error = check_graph(graph);
+  if (ir::Status checked = check_graph(graph); !checked) return checked.message();
   for (const TextureDesc& t : graph.textures)
-    if (error.empty() && t.input) error = prepare_input(t, images);
-  if (!error.empty()) return error;
+    if (t.input)
+      if (std::string e = prepare_input(t, images); !e.empty()) return e;
   ImageMap inputs;
   for (const TextureDesc& t : graph.textures)
     if (t.input) inputs.emplace(t.name, images.find(t.name)->second);
-  if (std::string e = device.begin_run(graph, inputs); !e.empty())
-    return fmt::format("{}: {}", device.name(), e);
+  if (ir::Status begun = device.begin_run(graph, inputs); !begun)
+    return fmt::format("{}: {}", device.name(), begun.message());
   return {};
 }
 
 // Every texture back into `images` (a failure leaves the map as it was given).
 std::string read_all(const EffectGraph& graph, PassDevice& device, ImageMap& images) {
   ImageMap out;
-  for (const TextureDesc& t : graph.textures)
-    if (std::string e = device.read_texture(t.name, out[t.name]); !e.empty())
-      return fmt::format("{}: reading '{}' back: {}", device.name(), t.name, e);
+  for (const TextureDesc& t : graph.textures) {
+    ir::Result<img::Image> image = device.read_texture(t.name);
+    if (!image)
+      return fmt::format("{}: reading '{}' back: {}", device.name(), t.name, image.message());
+    out[t.name] = std::move(*image);
+  }
   for (auto& [name, image] : out) images[name] = std::move(image);
   return {};
 }
@@ -93,63 +100,68 @@ std::string read_all(const EffectGraph& graph, PassDevice& device, ImageMap& ima
 std::string replace_inputs(const EffectGraph& graph, PassDevice& device, unsigned f,
                            const FrameInputs& inputs_at) {
   ImageMap changed;
-  if (std::string e = inputs_at(f, changed); !e.empty()) return e;
+  if (ir::Status given = inputs_at(f, changed); !given) return given.message();
   for (auto& [name, image] : changed) {
     const TextureDesc* t = graph.find_texture(name);
     if (!t || !t->input) return fmt::format("'{}' is not an input texture", name);
     if (std::string e = prepare_input(*t, changed); !e.empty()) return e;
-    if (std::string e = device.update_input(name, image); !e.empty()) return e;
+    if (ir::Status replaced = device.update_input(name, image); !replaced)
+      return replaced.message();
+  }
+  return {};
+}
+
+// A pass's target (and, when asked, its further targets and stencil) read back after it.
+std::string record_pass(const PassDesc& desc, PassDevice& device, bool keep_pass_images,
+                        PassRecord& rec) {
+  if (!keep_pass_images) return {};
+  auto read = [&](const std::string& name, img::Image& out) -> std::string {
+    ir::Result<img::Image> image = device.read_texture(name);
+    if (!image)
+      return fmt::format("pass '{}' on {}: reading '{}' back: {}", desc.name, device.name(), name,
+                         image.message());
+    out = std::move(*image);
+    return {};
+  };
+  if (std::string e = read(desc.target, rec.result); !e.empty()) return e;
+  device.rounding_midpoints(desc.target, rec.midpoints);
+  std::vector<std::string> extra = desc.more_targets;
+  if (!desc.stencil.empty() && desc.depth_stencil.stencil_test) extra.push_back(desc.stencil);
+  for (const std::string& name : extra) {
+    PassRecord::Extra x{name, {}, {}};
+    if (std::string e = read(name, x.result); !e.empty()) return e;
+    device.rounding_midpoints(name, x.midpoints);
+    rec.more.push_back(std::move(x));
   }
   return {};
 }
 
 } // namespace
 
-GraphRun run_graph(const EffectGraph& graph, PassDevice& device, ImageMap& images,
-                   bool keep_pass_images, const PassProgress& progress) {
+ir::Result<GraphRun> run_graph(const EffectGraph& graph, PassDevice& device, ImageMap& images,
+                               bool keep_pass_images, const PassProgress& progress) {
   GraphRun run;
   auto t_all = std::chrono::steady_clock::now();
-  run.error = begin_graph(graph, device, images);
-  if (!run.error.empty()) return run;
+  if (std::string e = begin_graph(graph, device, images); !e.empty()) return run_error(e);
 
   for (const PassDesc& desc : graph.passes) {
     if (progress) progress(run.passes.size(), graph.passes.size(), desc);
     auto t0 = std::chrono::steady_clock::now();
-    std::string e = device.run_pass(desc.at_frame(0));
-    if (e.empty()) e = device.finish(); // the pass's own time, not the time it was queued
-    if (!e.empty()) {
-      run.error = fmt::format("pass '{}' on {}: {}", desc.name, device.name(), e);
-      return run;
-    }
+    ir::Status drawn = device.run_pass(desc.at_frame(0));
+    if (drawn) drawn = device.finish(); // the pass's own time, not the time it was queued
+    if (!drawn)
+      return run_error(
+          fmt::format("pass '{}' on {}: {}", desc.name, device.name(), drawn.message()));
     PassRecord rec{desc.name, desc.target, {}, ms_since(t0), {}, {}};
-    if (keep_pass_images)
-      if (std::string e = device.read_texture(desc.target, rec.result); !e.empty()) {
-        run.error = fmt::format("pass '{}' on {}: reading '{}' back: {}", desc.name, device.name(),
-                                desc.target, e);
-        return run;
-      }
-    if (keep_pass_images) device.rounding_midpoints(desc.target, rec.midpoints);
-    std::vector<std::string> extra = desc.more_targets;
-    if (!desc.stencil.empty() && desc.depth_stencil.stencil_test) extra.push_back(desc.stencil);
-    for (const std::string& name : keep_pass_images ? extra : std::vector<std::string>{}) {
-      PassRecord::Extra x{name, {}, {}};
-      if (std::string e = device.read_texture(name, x.result); !e.empty()) {
-        run.error = fmt::format("pass '{}' on {}: reading '{}' back: {}", desc.name, device.name(),
-                                name, e);
-        return run;
-      }
-      device.rounding_midpoints(name, x.midpoints);
-      rec.more.push_back(std::move(x));
-    }
+    if (std::string e = record_pass(desc, device, keep_pass_images, rec); !e.empty())
+      return run_error(e);
     run.passes.push_back(std::move(rec));
   }
   // Every texture back into the map (a failed run leaves the map as it was given).
-  run.error = read_all(graph, device, images);
-  if (!run.error.empty()) return run;
+  if (std::string e = read_all(graph, device, images); !e.empty()) return run_error(e);
   for (const TextureDesc& t : graph.textures)
     if (std::vector<uint8_t> mask; device.rounding_midpoints(t.name, mask))
       run.midpoints[t.name] = std::move(mask);
-  run.ok = true;
   run.total_ms = ms_since(t_all);
   return run;
 }
@@ -168,40 +180,32 @@ double FrameTimes::max_ms() const {
   return frame_ms.empty() ? 0 : *std::max_element(frame_ms.begin(), frame_ms.end());
 }
 
-FramesRun run_frames(const EffectGraph& graph, PassDevice& device, ImageMap& images,
-                     unsigned frames, const FrameSink& sink, const FrameInputs& inputs_at) {
-  FramesRun run;
+ir::Result<FrameTimes> run_frames(const EffectGraph& graph, PassDevice& device, ImageMap& images,
+                                  unsigned frames, const FrameSink& sink,
+                                  const FrameInputs& inputs_at) {
+  FrameTimes times;
   auto t0 = std::chrono::steady_clock::now();
-  run.error = begin_graph(graph, device, images);
-  if (!run.error.empty()) return run;
-  run.times.setup_ms = ms_since(t0);
+  if (std::string e = begin_graph(graph, device, images); !e.empty()) return run_error(e);
+  times.setup_ms = ms_since(t0);
+  auto frame_error = [&](unsigned f, const std::string& why) {
+    return run_error(fmt::format("frame {} on {}: {}", f + 1, device.name(), why));
+  };
   for (unsigned f = 0; f < frames; ++f) {
     auto t = std::chrono::steady_clock::now();
     if (inputs_at && f > 0)
-      if (std::string e = replace_inputs(graph, device, f, inputs_at); !e.empty()) {
-        run.error = fmt::format("frame {} on {}: {}", f + 1, device.name(), e);
-        return run;
-      }
+      if (std::string e = replace_inputs(graph, device, f, inputs_at); !e.empty())
+        return frame_error(f, e);
     for (const PassDesc& desc : graph.passes)
-      if (std::string e = device.run_pass(desc.at_frame(f)); !e.empty()) {
-        run.error =
-            fmt::format("frame {}, pass '{}' on {}: {}", f + 1, desc.name, device.name(), e);
-        return run;
-      }
-    if (std::string e = device.finish(); !e.empty()) {
-      run.error = fmt::format("frame {} on {}: {}", f + 1, device.name(), e);
-      return run;
-    }
-    run.times.frame_ms.push_back(ms_since(t));
+      if (ir::Status drawn = device.run_pass(desc.at_frame(f)); !drawn)
+        return run_error(fmt::format("frame {}, pass '{}' on {}: {}", f + 1, desc.name,
+                                     device.name(), drawn.message()));
+    if (ir::Status done = device.finish(); !done) return frame_error(f, done.message());
+    times.frame_ms.push_back(ms_since(t));
     if (sink)
-      if (std::string e = sink(f, device); !e.empty()) {
-        run.error = fmt::format("frame {} on {}: {}", f + 1, device.name(), e);
-        return run;
-      }
+      if (ir::Status taken = sink(f, device); !taken) return frame_error(f, taken.message());
   }
-  run.error = read_all(graph, device, images);
-  run.ok = run.error.empty();
-  return run;
+  if (std::string e = read_all(graph, device, images); !e.empty()) return run_error(e);
+  return times;
 }
 
 } // namespace tierlift::effects

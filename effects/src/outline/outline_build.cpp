@@ -146,7 +146,7 @@ GlowPlan build_outline(const GlowParams& glow, const OutlineParams& o) {
   passes.push_back(std::move(base));
   passes.push_back(std::move(outline));
   g.passes = std::move(passes);
-  plan.error = check_graph(g);
+  plan.error = check_graph(g).message();
   return plan;
 }
 

@@ -202,7 +202,7 @@ GlowPlan build_radial(const GlowParams& g, const RadialParams& r) {
   bind(comp, 0, kStarTexture, sampler(pass::Filter::Point, pass::AddressMode::Clamp), 1, false);
   bind(comp, 1, kGlowTexture, sampler(pass::Filter::Point, pass::AddressMode::Clamp), 1, false);
   graph.passes.push_back(std::move(comp));
-  plan.error = check_graph(graph);
+  plan.error = check_graph(graph).message();
   return plan;
 }
 

@@ -73,13 +73,14 @@ std::string run_config(ConfigResult& out, const Scene& scene, const img::Image& 
     std::unique_ptr<PassDevice> device = make_device(name, vk);
     if (!device) continue;
     ways.push_back({name, run_glow(plan, image, *device, /*keep_pass_images=*/true)});
-    if (!ways.back().glow.run.ok)
-      return fmt::format("{}, {}: {}", config_label(out.config), name, ways.back().glow.run.error);
+    if (!ways.back().glow.run.ok())
+      return fmt::format("{}, {}: {}", config_label(out.config), name,
+                         ways.back().glow.run.message());
   }
   out.all_agree = true;
   for (size_t i = 0; i < ways.size(); ++i)
     for (size_t j = i + 1; j < ways.size(); ++j) {
-      const RunAgreement a = compare_runs(ways[i].glow.run, ways[i].glow.images, ways[j].glow.run,
+      const RunAgreement a = compare_runs(*ways[i].glow.run, ways[i].glow.images, *ways[j].glow.run,
                                           ways[j].glow.images, std::string(kFinalTexture));
       if (!a.error.empty())
         return fmt::format("{}, {} vs {}: {}", config_label(out.config), ways[i].name, ways[j].name,
@@ -109,10 +110,10 @@ std::string run_config(ConfigResult& out, const Scene& scene, const img::Image& 
     std::unique_ptr<PassDevice> device = make_device(name, vk);
     if (!device) continue;
     GlowFrames f = run_glow_frames(plan, image, *device, std::max(1u, s.frames));
-    if (!f.run.ok)
-      return fmt::format("{}, {} (frames): {}", config_label(out.config), name, f.run.error);
-    out.times.push_back({name, f.run.times.setup_ms, f.run.times.median_ms(), f.run.times.min_ms(),
-                         f.run.times.max_ms(), unsigned(f.run.times.frame_ms.size())});
+    if (!f.run.ok())
+      return fmt::format("{}, {} (frames): {}", config_label(out.config), name, f.run.message());
+    out.times.push_back({name, f.run->setup_ms, f.run->median_ms(), f.run->min_ms(),
+                         f.run->max_ms(), unsigned(f.run->frame_ms.size())});
     if (name == clock) clock_images = std::move(f.images);
   }
   // The same frames with the plan pruned for this scene (prune.h), on the clock device; the
@@ -126,9 +127,9 @@ std::string run_config(ConfigResult& out, const Scene& scene, const img::Image& 
     lean.graph = pruned.graph;
     std::unique_ptr<PassDevice> device = make_device(clock, vk);
     GlowFrames f = run_glow_frames(lean, image, *device, std::max(1u, s.frames));
-    if (!f.run.ok)
-      return fmt::format("{}, {} (pruned): {}", config_label(out.config), clock, f.run.error);
-    out.pruned_frame_ms = f.run.times.median_ms();
+    if (!f.run.ok())
+      return fmt::format("{}, {} (pruned): {}", config_label(out.config), clock, f.run.message());
+    out.pruned_frame_ms = f.run->median_ms();
     for (std::string_view tex : {kGlowTexture, kFinalTexture}) {
       const std::vector<float>& a = f.images.at(std::string(tex)).rgba;
       const std::vector<float>& b = clock_images.at(std::string(tex)).rgba;

@@ -51,7 +51,7 @@ std::vector<WayImages> run_on_ways(const GlowPlan& plan, const img::Image& scene
     std::unique_ptr<PassDevice> device = options.make_device ? options.make_device(way) : nullptr;
     if (!device) continue;
     GlowRun run = run_glow(plan, scene, *device);
-    out.push_back({way, std::move(run.images), run.run.ok ? "" : run.run.error});
+    out.push_back({way, std::move(run.images), run.run.ok() ? "" : run.run.message()});
   }
   return out;
 }

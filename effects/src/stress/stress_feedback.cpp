@@ -72,7 +72,7 @@ FeedbackGraph feedback_graph(Format f, double g) {
   pass("decay", "acc", "tmp", g, pass::BlendMode::Replace);
   pass("carry", "tmp", "acc", 1, pass::BlendMode::Replace);
   pass("source", "src", "acc", 1, pass::BlendMode::OneOne);
-  out.error = check_graph(gr);
+  out.error = check_graph(gr).message();
   return out;
 }
 
@@ -99,17 +99,17 @@ WayFeedback run_way(PassDevice& device, const EffectGraph& graph, Format f, doub
     out.error = std::move(e);
     return out;
   };
-  if (std::string e = device.begin_run(graph, inputs); !e.empty()) return fail(e);
+  if (ir::Status begun = device.begin_run(graph, inputs); !begun) return fail(begun.message());
   auto frame = [&](bool source) -> std::string {
     for (size_t i = 0; i < (source ? 3u : 2u); ++i)
-      if (std::string e = device.run_pass(graph.passes[i]); !e.empty()) return e;
-    return device.finish();
+      if (ir::Status drawn = device.run_pass(graph.passes[i]); !drawn) return drawn.message();
+    return device.finish().message();
   };
   auto read = [&](double& v) -> std::string {
-    img::Image im;
-    std::string e = device.read_texture("acc", im);
-    if (e.empty()) v = im.rgba.at(0);
-    return e;
+    ir::Result<img::Image> im = device.read_texture("acc");
+    if (!im) return im.message();
+    v = im->rgba.at(0);
+    return {};
   };
   const unsigned n = rise_frames(g);
   for (unsigned i = 0; i < n; ++i) {

@@ -28,10 +28,10 @@ namespace tierlift::effects {
 class AnalyticPassDevice final : public PassDevice {
 public:
   std::string name() const override { return "analytic"; }
-  std::string begin_run(const EffectGraph& graph, const ImageMap& inputs) override;
-  std::string run_pass(const PassDesc& pass) override;
-  std::string update_input(const std::string& name, const img::Image& image) override;
-  std::string read_texture(const std::string& name, img::Image& out) override;
+  ir::Status begin_run(const EffectGraph& graph, const ImageMap& inputs) override;
+  ir::Status run_pass(const PassDesc& pass) override;
+  ir::Status update_input(const std::string& name, const img::Image& image) override;
+  ir::Result<img::Image> read_texture(const std::string& name) override;
   // The assumptions the model made in this run, one line each, "pass 'name': …" (e.g. the
   // ps_1_x clamp of the final sum only, a read of an unbound stage).
   const std::vector<std::string>& notes() const { return notes_; }

@@ -16,6 +16,7 @@
 #include "tierlift/cpu/draw.h"
 #include "tierlift/effects/graph.h"
 #include "tierlift/image/image.h"
+#include "tierlift/ir/result.h"
 
 namespace tierlift::vulkan {
 class Device;
@@ -32,23 +33,25 @@ public:
   // Starts a run of `graph` (already checked by check_graph): every texture is created at
   // its declared size and format; inputs take their image from `inputs` (already at the
   // declared size and stored in the declared format); every other texture starts at zero.
-  // Empty string on success, else why. A device runs one graph at a time; begin_run drops
-  // what an earlier run left.
-  virtual std::string begin_run(const EffectGraph& graph, const ImageMap& inputs) = 0;
+  // A device runs one graph at a time; begin_run drops what an earlier run left.
+  // Every failure below is one error (rule "device", the device's name as its subject)
+  // whose message says why; run_graph adds the pass and the device to it.
+  virtual ir::Status begin_run(const EffectGraph& graph, const ImageMap& inputs) = 0;
   // Runs one pass of that graph: it samples the textures it binds and renders into its
   // target with its blend mode; the target's format is the store rule.
-  virtual std::string run_pass(const PassDesc& pass) = 0;
+  virtual ir::Status run_pass(const PassDesc& pass) = 0;
   // Waits until every pass run so far is done (a device may queue passes: Vulkan records a
-  // frame's passes into one command buffer). Empty string on success, else why.
-  virtual std::string finish() { return {}; }
+  // frame's passes into one command buffer).
+  virtual ir::Status finish() { return ir::ok_status(); }
   // Replaces an input texture's contents between frames (a moving scene): `image` is at the
-  // declared size and already stored in the declared format. Empty string on success; a
-  // device that cannot refuses (never ignores it).
-  virtual std::string update_input(const std::string& name, const img::Image& /*image*/) {
-    return "device " + this->name() + " cannot replace input '" + name + "' between frames";
+  // declared size and already stored in the declared format. A device that cannot refuses
+  // (never ignores it).
+  virtual ir::Status update_input(const std::string& name, const img::Image& /*image*/) {
+    return device_error("device " + this->name() + " cannot replace input '" + name +
+                        "' between frames");
   }
-  // A texture's current contents (in its declared format). Empty string on success.
-  virtual std::string read_texture(const std::string& name, img::Image& out) = 0;
+  // A texture's current contents (in its declared format).
+  virtual ir::Result<img::Image> read_texture(const std::string& name) = 0;
   // RGBA8 textures only, and only a device that knows its exact values (the analytic one):
   // one entry per pixel, 1 where a store of it was a proven rounding tie (analytic::
   // LinearPassInput::slack: the fp32 value x·255 exactly half-way between two steps, where
@@ -58,6 +61,12 @@ public:
                                   std::vector<uint8_t>& /*mask*/) const {
     return false;
   }
+
+protected:
+  // The failure every method above reports: one error about this device.
+  ir::Failure device_error(std::string message) const {
+    return ir::fail(name(), "device", std::move(message));
+  }
 };
 
 class CpuPassDevice final : public PassDevice {
@@ -66,10 +75,10 @@ public:
   explicit CpuPassDevice(unsigned threads = 0, cpu::Executor executor = cpu::Executor::Auto)
       : threads_(threads), executor_(executor) {}
   std::string name() const override { return "cpu"; }
-  std::string begin_run(const EffectGraph& graph, const ImageMap& inputs) override;
-  std::string run_pass(const PassDesc& pass) override;
-  std::string update_input(const std::string& name, const img::Image& image) override;
-  std::string read_texture(const std::string& name, img::Image& out) override;
+  ir::Status begin_run(const EffectGraph& graph, const ImageMap& inputs) override;
+  ir::Status run_pass(const PassDesc& pass) override;
+  ir::Status update_input(const std::string& name, const img::Image& image) override;
+  ir::Result<img::Image> read_texture(const std::string& name) override;
 
 private:
   unsigned threads_;

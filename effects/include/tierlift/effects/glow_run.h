@@ -12,8 +12,8 @@
 namespace tierlift::effects {
 
 struct GlowRun {
-  GraphRun run;
-  ImageMap images; // every texture of the graph afterwards ("scene", …, "glow", "final")
+  ir::Result<GraphRun> run; // a plan with an error fails with it (rule "glow")
+  ImageMap images;          // every texture of the graph afterwards ("scene", …, "glow", "final")
 };
 
 // The scene must have the plan's scene size; it is stored in the plan's format first.
@@ -21,7 +21,7 @@ GlowRun run_glow(const GlowPlan& plan, const img::Image& scene, PassDevice& devi
                  bool keep_pass_images = false, const PassProgress& progress = {});
 
 struct GlowFrames {
-  FramesRun run;
+  ir::Result<FrameTimes> run;
   ImageMap images; // every texture after the last frame
 };
 
@@ -31,7 +31,7 @@ struct GlowFrames {
 // 0): the frames of an animated glow (GlowParams::animated), without keeping them all.
 // `scene_at`, when set, gives the scene of frame f (from 0; asked for f ≥ 1): a moving scene.
 using SceneAt = std::function<img::ImageResult(unsigned frame)>;
-using GlowFrameSink = std::function<std::string(unsigned frame, const ImageMap& images)>;
+using GlowFrameSink = std::function<ir::Status(unsigned frame, const ImageMap& images)>;
 GlowFrames run_glow_frames(const GlowPlan& plan, const img::Image& scene, PassDevice& device,
                            unsigned frames, const std::vector<std::string>& read_back = {},
                            const GlowFrameSink& sink = {}, const SceneAt& scene_at = {});

@@ -15,6 +15,7 @@
 #include "tierlift/image/image.h"
 #include "tierlift/ir/conventions.h"
 #include "tierlift/ir/program.h"
+#include "tierlift/ir/result.h"
 #include "tierlift/pass/pass.h"
 
 namespace tierlift::effects {
@@ -115,13 +116,13 @@ struct EffectGraph {
   const TextureDesc* find_texture(std::string_view name) const;
 };
 
-// Empty when the graph is well formed; otherwise the first problem: duplicate or unknown
-// texture or pass names, a pass without both listings, a pass that reads its own target,
+// Fails (rule "graph", subject "graph") with the first problem of a malformed graph: duplicate or
+// unknown texture or pass names, a pass without both listings, a pass that reads its own target,
 // sizes of 0 or above img::kMaxDimension, a sampler stage bound twice, an input used as a
 // target, a target or stencil named twice in a pass, more than 4 targets or targets of
 // different sizes, a stencil texture used as a colour texture (or the reverse), a stencil
 // state without a stencil texture or out of range (a reference above 255, a depth
 // test), a triangle index past the vertices, an empty entry in a per-frame constant table.
-std::string check_graph(const EffectGraph& graph);
+ir::Status check_graph(const EffectGraph& graph);
 
 } // namespace tierlift::effects

@@ -29,8 +29,6 @@ struct PassRecord {
 };
 
 struct GraphRun {
-  bool ok = false;
-  std::string error; // names the pass that failed
   std::vector<PassRecord> passes;
   double total_ms = 0;
   // Every texture's rounding-midpoint mask after the run, where the device keeps one.
@@ -44,6 +42,10 @@ struct GraphRun {
 ir::Result<pass::Pass> make_pass(const PassDesc& desc, const ImageMap& images,
                                  const ir::Conventions& conventions);
 
+// The rule of run_graph's and run_frames' failures (a graph the device could not run): one
+// error whose message names the pass (and frame) that failed and the device.
+inline constexpr std::string_view kRunRule = "run";
+
 // Checks the graph, requires every input texture in `images` (or carried by the graph:
 // TextureDesc::contents) at its declared size (it is
 // converted to the declared format with img::quantize), hands the inputs to the device,
@@ -51,8 +53,8 @@ ir::Result<pass::Pass> make_pass(const PassDesc& desc, const ImageMap& images,
 // reads every texture back: `images` holds every texture afterwards.
 // `progress`, when set, is called before each pass runs (index from 0, pass count).
 using PassProgress = std::function<void(size_t index, size_t count, const PassDesc& pass)>;
-GraphRun run_graph(const EffectGraph& graph, PassDevice& device, ImageMap& images,
-                   bool keep_pass_images = false, const PassProgress& progress = {});
+ir::Result<GraphRun> run_graph(const EffectGraph& graph, PassDevice& device, ImageMap& images,
+                               bool keep_pass_images = false, const PassProgress& progress = {});
 
 // Setup apart from the steady state: what a graph costs to start on a device, and then
 // what each frame costs.
@@ -64,12 +66,6 @@ struct FrameTimes {
   double max_ms() const;
 };
 
-struct FramesRun {
-  bool ok = false;
-  std::string error;
-  FrameTimes times;
-};
-
 // Starts the graph once (as run_graph does), then runs all its passes `frames` times, the
 // textures carried from one frame into the next (a pass that blends onto its target sees
 // what the frame before left there: what feedback effects such as an after-image need; a
@@ -77,15 +73,15 @@ struct FramesRun {
 // frame). Frame f (from 0) runs every pass as PassDesc::at_frame(f) (per-frame constants).
 // Nothing is read back between frames unless `sink` is given: it is called after each
 // frame's finish() (outside the frame's time) and may read textures from the device (the
-// frames of an after-image); an error from it ends the run. `images` holds every texture
+// frames of an after-image); a failure from it ends the run. `images` holds every texture
 // afterwards. run_graph is frame 0 of this.
 // `inputs_at`, when set, is asked before every frame f ≥ 1 for the input textures that
 // change (a moving scene): it fills the map (input name → image, at the declared size; it
 // is stored in the declared format), and the device replaces them (update_input).
-using FrameSink = std::function<std::string(unsigned frame, PassDevice& device)>;
-using FrameInputs = std::function<std::string(unsigned frame, ImageMap& changed)>;
-FramesRun run_frames(const EffectGraph& graph, PassDevice& device, ImageMap& images,
-                     unsigned frames, const FrameSink& sink = {},
-                     const FrameInputs& inputs_at = {});
+using FrameSink = std::function<ir::Status(unsigned frame, PassDevice& device)>;
+using FrameInputs = std::function<ir::Status(unsigned frame, ImageMap& changed)>;
+ir::Result<FrameTimes> run_frames(const EffectGraph& graph, PassDevice& device, ImageMap& images,
+                                  unsigned frames, const FrameSink& sink = {},
+                                  const FrameInputs& inputs_at = {});
 
 } // namespace tierlift::effects
