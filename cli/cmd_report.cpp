@@ -145,12 +145,13 @@ int run(const ReportFlags& f) {
       fmt::print(stderr, "{}[report] {}/{}: {}{}", tty ? "\r\033[K" : "", i + 1, n,
                  effects::config_label(c), tty ? "" : "\n");
     };
-  const effects::SweepResult r = effects::run_sweep(scene, *image, s, vk, progress);
+  const ir::Result<effects::SweepResult> swept = effects::run_sweep(scene, *image, s, vk, progress);
   if (tty && progress) fmt::print(stderr, "\n");
-  if (!r.error.empty()) {
-    report.error("run", r.error);
+  if (!swept) {
+    report.error("run", swept.message());
     return report.finish(kExitInvalid);
   }
+  const effects::SweepResult& r = *swept;
   effects::ReportInfo info;
   info.scene_file = scene.file;
   info.scene_image = scene.image;
@@ -159,11 +160,14 @@ int run(const ReportFlags& f) {
   info.intensity = scene.params.intensity;
   if (vk) info.vulkan_device = vk->name();
   std::vector<std::string> written;
-  if (!f.output.empty())
-    if (std::string err = effects::write_report(f.output, r, s, info, &written); !err.empty()) {
-      report.error("io", err, f.output);
+  if (!f.output.empty()) {
+    ir::Result<std::vector<std::string>> files = effects::write_report(f.output, r, s, info);
+    if (!files) {
+      report.error("io", files.message(), f.output);
       return report.finish(kExitUsage);
     }
+    written = std::move(*files);
+  }
   if (report.json()) {
     report.result() = effects::report_json(r, s, info);
     report.result()["written"] = written;

@@ -15,14 +15,14 @@ ir::Result<std::vector<PairAgreement>> compare_ways(const std::vector<GlowWay>& 
   std::vector<PairAgreement> pairs;
   for (size_t i = 0; i < ways.size(); ++i)
     for (size_t j = i + 1; j < ways.size(); ++j) {
-      PairAgreement p{ways[i].name, ways[j].name,
-                      effects::compare_runs(*ways[i].glow.run, ways[i].glow.images,
-                                            *ways[j].glow.run, ways[j].glow.images,
-                                            std::string(effects::kFinalTexture))};
-      if (!p.agreement.error.empty())
-        return ir::fail(p.a + " vs " + p.b, "agreement",
-                        fmt::format("{} vs {}: {}", p.a, p.b, p.agreement.error));
-      pairs.push_back(std::move(p));
+      ir::Result<effects::RunAgreement> compared =
+          effects::compare_runs(*ways[i].glow.run, ways[i].glow.images, *ways[j].glow.run,
+                                ways[j].glow.images, std::string(effects::kFinalTexture));
+      if (!compared)
+        return ir::fail(
+            ways[i].name + " vs " + ways[j].name, "agreement",
+            fmt::format("{} vs {}: {}", ways[i].name, ways[j].name, compared.message()));
+      pairs.push_back({ways[i].name, ways[j].name, std::move(*compared)});
     }
   return pairs;
 }

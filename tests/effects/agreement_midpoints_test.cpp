@@ -46,8 +46,9 @@ Compared compare(const img::Image& a, std::vector<uint8_t> mask_a, const img::Im
                  std::vector<uint8_t> mask_b) {
   const GraphRun ra = one_pass_run(a, std::move(mask_a)), rb = one_pass_run(b, std::move(mask_b));
   const ImageMap ia{{"t", a}}, ib{{"t", b}};
-  Compared c{compare_runs(ra, ia, rb, ib, "t")};
-  EXPECT_EQ(c.agree.error, "");
+  ir::Result<RunAgreement> compared = compare_runs(ra, ia, rb, ib, "t");
+  EXPECT_TRUE(compared.ok()) << compared.message();
+  Compared c{compared ? *compared : RunAgreement{}};
   EXPECT_EQ(c.agree.passes.size(), 2u);
   return c;
 }
@@ -158,12 +159,12 @@ TEST(AgreementMidpoints, TheFrameRowReadsTheRunsTextureMasks) {
   GraphRun ra = one_pass_run(s.a), rb = one_pass_run(s.b);
   ra.midpoints["other"] = {0, 0, 0, 1};
   const ImageMap ia{{"t", s.a}}, ib{{"t", s.b}};
-  RunAgreement before = compare_runs(ra, ia, rb, ib, "t");
+  const RunAgreement before = *compare_runs(ra, ia, rb, ib, "t");
   ASSERT_EQ(before.passes.size(), 2u);
   EXPECT_EQ(before.passes[1].midpoint_pixels, 0u);
   EXPECT_FALSE(before.passes[1].verdict.pass);
   rb.midpoints["t"] = {0, 0, 0, 1};
-  RunAgreement after = compare_runs(ra, ia, rb, ib, "t");
+  const RunAgreement after = *compare_runs(ra, ia, rb, ib, "t");
   ASSERT_EQ(after.passes.size(), 2u);
   EXPECT_EQ(after.passes[0].midpoint_pixels, 0u) << "the pass row keeps its own (empty) mask";
   EXPECT_FALSE(after.passes[0].verdict.pass);

@@ -135,9 +135,10 @@ TEST_F(GlslBlurVulkan, GlslTwinAndKernelAgreeWithin1e5) {
   const std::pair<const GlowRun*, const char*> others[] = {
       {&twin_vk, "ps_2_0 twin on vulkan"}, {&twin_cpu, "ps_2_0 twin on cpu"}, {&math, "analytic"}};
   for (const auto& [other, label] : others) {
-    RunAgreement a =
+    ir::Result<RunAgreement> a_compared =
         compare_runs(*glsl_vk.run, glsl_vk.images, *other->run, other->images, "final");
-    ASSERT_EQ(a.error, "");
+    ASSERT_TRUE(a_compared.ok()) << a_compared.message();
+    const RunAgreement& a = *a_compared;
     for (const PassAgreement& row : a.passes) {
       EXPECT_TRUE(row.verdict.pass) << label << ", " << row.pass << ": " << row.verdict.summary;
       EXPECT_LE(row.comparison.max_abs_all, 1e-5) << label << ", " << row.pass;

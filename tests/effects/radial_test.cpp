@@ -134,10 +134,11 @@ TEST_P(RadialWays, ThreeWaysAgreeOnEveryPassWithTheStarMoving) {
     for (auto& [name, w] : ways) ASSERT_TRUE(w.run.ok()) << name << ": " << w.run.message();
     for (size_t a = 0; a < ways.size(); ++a)
       for (size_t b = a + 1; b < ways.size(); ++b) {
-        RunAgreement agree =
+        ir::Result<RunAgreement> agree_compared =
             compare_runs(*ways[a].second.run, ways[a].second.images, *ways[b].second.run,
                          ways[b].second.images, std::string(kFinalTexture));
-        ASSERT_EQ(agree.error, "");
+        ASSERT_TRUE(agree_compared.ok()) << agree_compared.message();
+        const RunAgreement& agree = *agree_compared;
         for (const PassAgreement& row : agree.passes) {
           EXPECT_TRUE(row.verdict.pass) << ways[a].first << " vs " << ways[b].first << ", "
                                         << row.pass << ": " << row.verdict.summary;

@@ -123,8 +123,9 @@ TEST(ReportIdeal, SweepErrorsEqualAnIndependentComputation) {
     s.half_texels = {true};
     s.frames = 1;
     s.timed = {"cpu"};
-    const SweepResult r = run_sweep(scene, image, s, nullptr);
-    ASSERT_TRUE(r.error.empty()) << r.error;
+    const ir::Result<SweepResult> swept = run_sweep(scene, image, s, nullptr);
+    ASSERT_TRUE(swept.ok()) << swept.message();
+    const SweepResult& r = *swept;
     ASSERT_EQ(r.configs.size(), 1u); // the scene's own choice is the sweep's only point
     const ConfigResult& c = r.configs[0];
     ASSERT_TRUE(c.skipped.empty()) << c.skipped;
@@ -182,8 +183,8 @@ TEST(ReportIdeal, SweepListsTheScenesChoiceFirstAndRefusesAnEmptySweep) {
     for (size_t j = i + 1; j < c.size(); ++j) EXPECT_FALSE(c[i] == c[j]) << i << " " << j;
   s.formats.clear();
   EXPECT_TRUE(sweep_configs(s, scene.params).empty());
-  EXPECT_FALSE(run_sweep(scene, img::Image(scene.params.width, scene.params.height), s, nullptr)
-                   .error.empty());
+  EXPECT_FALSE(
+      run_sweep(scene, img::Image(scene.params.width, scene.params.height), s, nullptr).ok());
   // Every tier the glow has is in both sweeps.
   EXPECT_EQ(quick_sweep().tiers, all_tiers());
   EXPECT_EQ(full_sweep().tiers, all_tiers());

@@ -56,9 +56,10 @@ void check_format(img::Format format) {
             CpuPassDevice cpu_dev(2);
             GlowRun run = run_glow(perturb_blur_weights(plan, factor), scene, cpu_dev, true);
             ASSERT_TRUE(run.run.ok()) << run.run.message();
-            RunAgreement agree = compare_runs(*run.run, run.images, *model.run, model.images,
-                                              std::string(kFinalTexture));
-            ASSERT_EQ(agree.error, "");
+            ir::Result<RunAgreement> agree_compared = compare_runs(
+                *run.run, run.images, *model.run, model.images, std::string(kFinalTexture));
+            ASSERT_TRUE(agree_compared.ok()) << agree_compared.message();
+            const RunAgreement& agree = *agree_compared;
             if (factor == 1.0f) {
               EXPECT_TRUE(agree.all_pass) << name << ": the unperturbed interpreter must agree";
             } else {

@@ -96,9 +96,11 @@ TEST_F(ThreeWayProperty, EveryLegalRandomSceneAgreesThreeWays) {
     for (const Way& w : ways) ASSERT_TRUE(w.run.run.ok()) << w.name << ": " << w.run.run.message();
     for (size_t a = 0; a < ways.size(); ++a)
       for (size_t b = a + 1; b < ways.size(); ++b) {
-        RunAgreement agree = compare_runs(*ways[a].run.run, ways[a].run.images, *ways[b].run.run,
-                                          ways[b].run.images, std::string(kFinalTexture));
-        ASSERT_EQ(agree.error, "");
+        ir::Result<RunAgreement> agree_compared =
+            compare_runs(*ways[a].run.run, ways[a].run.images, *ways[b].run.run, ways[b].run.images,
+                         std::string(kFinalTexture));
+        ASSERT_TRUE(agree_compared.ok()) << agree_compared.message();
+        const RunAgreement& agree = *agree_compared;
         for (const PassAgreement& row : agree.passes)
           EXPECT_TRUE(row.verdict.pass) << ways[a].name << " vs " << ways[b].name << ", "
                                         << row.pass << ": " << row.verdict.summary;

@@ -155,8 +155,9 @@ TEST(ThreeWaySameInputs, Rgba8ReplacingPassesAgreeAlone) {
             ir::Result<GraphRun> ra = run_graph(one, c1, ia, true),
                                  rb = run_graph(one, an, ib, true);
             ASSERT_TRUE(ra.ok() && rb.ok()) << ra.message() << rb.message();
-            RunAgreement agree = compare_runs(*ra, ia, *rb, ib, d.target);
-            ASSERT_EQ(agree.error, "");
+            ir::Result<RunAgreement> agree_compared = compare_runs(*ra, ia, *rb, ib, d.target);
+            ASSERT_TRUE(agree_compared.ok()) << agree_compared.message();
+            const RunAgreement& agree = *agree_compared;
             for (const PassAgreement& row : agree.passes)
               EXPECT_TRUE(row.verdict.pass) << d.name << ": " << row.verdict.summary;
             midpoint_pixels += agree.passes[0].midpoint_pixels;

@@ -88,9 +88,10 @@ void expect_agreement(const std::vector<Way>& ways, size_t passes, img::Format f
   for (size_t a = 0; a < ways.size(); ++a)
     for (size_t b = a + 1; b < ways.size(); ++b) {
       const Way &x = ways[a], &y = ways[b];
-      RunAgreement agree = compare_runs(*x.run.run, x.run.images, *y.run.run, y.run.images,
-                                        std::string(kFinalTexture));
-      ASSERT_EQ(agree.error, "") << x.name << " vs " << y.name;
+      ir::Result<RunAgreement> agree_compared = compare_runs(
+          *x.run.run, x.run.images, *y.run.run, y.run.images, std::string(kFinalTexture));
+      ASSERT_TRUE(agree_compared.ok()) << agree_compared.message() << x.name << " vs " << y.name;
+      const RunAgreement& agree = *agree_compared;
       ASSERT_EQ(agree.passes.size(), passes + 1);
       const std::string key = x.name + "-" + y.name + " " + std::string(img::format_name(format));
       PairFigures& f = figures()[key];

@@ -66,8 +66,10 @@ TEST_P(GlowVulkan, EveryPassAgrees) {
   GlowRun b = run_glow(plan, scene, *vk_dev, true);
   ASSERT_TRUE(a.run.ok()) << a.run.message();
   ASSERT_TRUE(b.run.ok()) << b.run.message();
-  RunAgreement agree = compare_runs(*a.run, a.images, *b.run, b.images, std::string(kFinalTexture));
-  ASSERT_EQ(agree.error, "");
+  ir::Result<RunAgreement> agree_compared =
+      compare_runs(*a.run, a.images, *b.run, b.images, std::string(kFinalTexture));
+  ASSERT_TRUE(agree_compared.ok()) << agree_compared.message();
+  const RunAgreement& agree = *agree_compared;
   ASSERT_EQ(agree.passes.size(), plan.graph.passes.size() + 1);
   const std::string label = std::string("glow ") + std::string(tier_name(c.tier)) + " " +
                             std::string(img::format_name(c.format)) + " " +

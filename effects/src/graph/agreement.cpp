@@ -46,14 +46,17 @@ img::Tolerance pair_tolerance(img::Format format) {
   return t;
 }
 
-bool add_row(RunAgreement& out, const std::string& pass, const std::string& target,
-             const img::Image& a, const img::Image& b, const std::vector<uint8_t>& mask_a,
-             const std::vector<uint8_t>& mask_b) {
+// Runs that cannot be compared: one error (rule "agreement").
+ir::Failure not_comparable(std::string message) {
+  return ir::fail("agreement", "agreement", std::move(message));
+}
+
+// Empty on success, else why the images cannot be compared.
+std::string add_row(RunAgreement& out, const std::string& pass, const std::string& target,
+                    const img::Image& a, const img::Image& b, const std::vector<uint8_t>& mask_a,
+                    const std::vector<uint8_t>& mask_b) {
   auto c = img::compare(a, b);
-  if (!c) {
-    out.error = fmt::format("{}: {}", pass, c.message());
-    return false;
-  }
+  if (!c) return fmt::format("{}: {}", pass, c.message());
   const std::vector<size_t> explained = explained_pixels(a, b, mask_a, mask_b);
   PassAgreement row{pass,
                     target,
@@ -75,7 +78,7 @@ bool add_row(RunAgreement& out, const std::string& pass, const std::string& targ
   // Judge by the format the target stores (both images carry it).
   row.verdict = img::judge(judged, pair_tolerance(a.format));
   out.passes.push_back(std::move(row));
-  return true;
+  return {};
 }
 
 const std::vector<uint8_t>& mask_of(const GraphRun& run, const std::string& texture) {
@@ -86,39 +89,38 @@ const std::vector<uint8_t>& mask_of(const GraphRun& run, const std::string& text
 
 } // namespace
 
-RunAgreement compare_runs(const GraphRun& a, const ImageMap& a_images, const GraphRun& b,
-                          const ImageMap& b_images, const std::string& frame) {
+ir::Result<RunAgreement> compare_runs(const GraphRun& a, const ImageMap& a_images,
+                                      const GraphRun& b, const ImageMap& b_images,
+                                      const std::string& frame) {
   RunAgreement out;
-  if (a.passes.size() != b.passes.size()) {
-    out.error = fmt::format("the runs have {} and {} passes", a.passes.size(), b.passes.size());
-    return out;
-  }
+  if (a.passes.size() != b.passes.size())
+    return not_comparable(
+        fmt::format("the runs have {} and {} passes", a.passes.size(), b.passes.size()));
   for (size_t i = 0; i < a.passes.size(); ++i) {
     const PassRecord &pa = a.passes[i], &pb = b.passes[i];
-    if (pa.pass != pb.pass) {
-      out.error =
-          fmt::format("pass {} is '{}' in one run and '{}' in the other", i, pa.pass, pb.pass);
-      return out;
-    }
-    if (!add_row(out, pa.pass, pa.target, pa.result, pb.result, pa.midpoints, pb.midpoints))
-      return out;
-    if (pa.more.size() != pb.more.size()) {
-      out.error = fmt::format("pass '{}' wrote {} and {} further targets", pa.pass, pa.more.size(),
-                              pb.more.size());
-      return out;
-    }
+    if (pa.pass != pb.pass)
+      return not_comparable(
+          fmt::format("pass {} is '{}' in one run and '{}' in the other", i, pa.pass, pb.pass));
+    if (std::string e =
+            add_row(out, pa.pass, pa.target, pa.result, pb.result, pa.midpoints, pb.midpoints);
+        !e.empty())
+      return not_comparable(e);
+    if (pa.more.size() != pb.more.size())
+      return not_comparable(fmt::format("pass '{}' wrote {} and {} further targets", pa.pass,
+                                        pa.more.size(), pb.more.size()));
     for (size_t k = 0; k < pa.more.size(); ++k)
-      if (!add_row(out, pa.pass, pa.more[k].target, pa.more[k].result, pb.more[k].result,
-                   pa.more[k].midpoints, pb.more[k].midpoints))
-        return out;
+      if (std::string e = add_row(out, pa.pass, pa.more[k].target, pa.more[k].result,
+                                  pb.more[k].result, pa.more[k].midpoints, pb.more[k].midpoints);
+          !e.empty())
+        return not_comparable(e);
   }
   auto fa = a_images.find(frame), fb = b_images.find(frame);
-  if (fa == a_images.end() || fb == b_images.end()) {
-    out.error = fmt::format("no texture '{}' to compare as the frame", frame);
-    return out;
-  }
-  if (!add_row(out, "frame", frame, fa->second, fb->second, mask_of(a, frame), mask_of(b, frame)))
-    return out;
+  if (fa == a_images.end() || fb == b_images.end())
+    return not_comparable(fmt::format("no texture '{}' to compare as the frame", frame));
+  if (std::string e = add_row(out, "frame", frame, fa->second, fb->second, mask_of(a, frame),
+                              mask_of(b, frame));
+      !e.empty())
+    return not_comparable(e);
   out.all_pass = true;
   for (const PassAgreement& p : out.passes) out.all_pass = out.all_pass && p.verdict.pass;
   return out;

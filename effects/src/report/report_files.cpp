@@ -352,8 +352,11 @@ std::string report_markdown(const SweepResult& r, const SweepSettings& s, const 
   return md;
 }
 
-std::string write_report(const std::string& dir, const SweepResult& r, const SweepSettings& s,
-                         const ReportInfo& info, std::vector<std::string>* written) {
+namespace {
+
+// write_report's work; empty on success, else why (the temporary folder removed).
+std::string write_report_files(const std::string& dir, const SweepResult& r, const SweepSettings& s,
+                               const ReportInfo& info, std::vector<std::string>* written) {
   if (dir.empty() || dir == "-") return "-o names a folder for the report; '-' is not one";
   const fs::path target = fs::path(dir);
   std::error_code ec;
@@ -407,6 +410,16 @@ std::string write_report(const std::string& dir, const SweepResult& r, const Swe
   if (written)
     for (const char* name : files) written->push_back((target / name).string());
   return {};
+}
+
+} // namespace
+
+ir::Result<std::vector<std::string>> write_report(const std::string& dir, const SweepResult& r,
+                                                  const SweepSettings& s, const ReportInfo& info) {
+  std::vector<std::string> written;
+  if (std::string e = write_report_files(dir, r, s, info, &written); !e.empty())
+    return ir::fail(dir, "io", std::move(e));
+  return written;
 }
 
 } // namespace tierlift::effects

@@ -80,11 +80,13 @@ std::string run_config(ConfigResult& out, const Scene& scene, const img::Image& 
   out.all_agree = true;
   for (size_t i = 0; i < ways.size(); ++i)
     for (size_t j = i + 1; j < ways.size(); ++j) {
-      const RunAgreement a = compare_runs(*ways[i].glow.run, ways[i].glow.images, *ways[j].glow.run,
-                                          ways[j].glow.images, std::string(kFinalTexture));
-      if (!a.error.empty())
+      const ir::Result<RunAgreement> compared =
+          compare_runs(*ways[i].glow.run, ways[i].glow.images, *ways[j].glow.run,
+                       ways[j].glow.images, std::string(kFinalTexture));
+      if (!compared)
         return fmt::format("{}, {} vs {}: {}", config_label(out.config), ways[i].name, ways[j].name,
-                           a.error);
+                           compared.message());
+      const RunAgreement& a = *compared;
       PairResult p{ways[i].name, ways[j].name, a.all_pass, 0};
       if (!a.passes.empty()) p.frame_max_abs = a.passes.back().comparison.max_abs_all;
       out.all_agree = out.all_agree && a.all_pass;
@@ -222,20 +224,18 @@ std::vector<size_t> pareto_front(const std::vector<ConfigResult>& configs) {
   return front;
 }
 
-SweepResult run_sweep(const Scene& scene, const img::Image& image, const SweepSettings& s,
-                      vulkan::Device* vk, const SweepProgress& progress) {
+ir::Result<SweepResult> run_sweep(const Scene& scene, const img::Image& image,
+                                  const SweepSettings& s, vulkan::Device* vk,
+                                  const SweepProgress& progress) {
+  auto fail = [](std::string why) { return ir::fail("report", "run", std::move(why)); };
   SweepResult r;
   const std::vector<SweepConfig> configs = sweep_configs(s, scene.params);
-  if (configs.empty()) {
-    r.error = "the sweep is empty: every list (tiers, downsample, taps, formats, half texel) "
-              "needs at least one value";
-    return r;
-  }
-  if (image.width != scene.params.width || image.height != scene.params.height) {
-    r.error = fmt::format("the scene image is {}x{}, the scene says {}x{}", image.width,
-                          image.height, scene.params.width, scene.params.height);
-    return r;
-  }
+  if (configs.empty())
+    return fail("the sweep is empty: every list (tiers, downsample, taps, formats, half texel) "
+                "needs at least one value");
+  if (image.width != scene.params.width || image.height != scene.params.height)
+    return fail(fmt::format("the scene image is {}x{}, the scene says {}x{}", image.width,
+                            image.height, scene.params.width, scene.params.height));
   // The ideal depends on the scene and its profile only: computed once.
   const RgbImage ideal = ideal_glow(glow_sources(image), scene.params.profile);
   // The final frame as displayed (clamped to [0, 1]) on both sides: ideal_glow.h, displayed().
@@ -245,10 +245,8 @@ SweepResult run_sweep(const Scene& scene, const img::Image& image, const SweepSe
     ConfigResult c;
     c.config = configs[i];
     c.scene_choice = i == 0;
-    if (std::string err = run_config(c, scene, image, s, vk, ideal, ideal_fin); !err.empty()) {
-      r.error = err;
-      return r;
-    }
+    if (std::string err = run_config(c, scene, image, s, vk, ideal, ideal_fin); !err.empty())
+      return fail(err);
     r.configs.push_back(std::move(c));
   }
   r.pareto = pareto_front(r.configs);

@@ -27,12 +27,14 @@ struct PassAgreement {
 struct RunAgreement {
   std::vector<PassAgreement> passes; // one row per pass, then one row "frame" (`frame`)
   bool all_pass = false;
-  std::string error; // runs that cannot be compared (different pass lists, sizes)
 };
 
 // `a` and `b` must come from run_graph(..., keep_pass_images = true) on the same graph.
-// `frame` names the texture compared as the final frame (from the two image maps).
-RunAgreement compare_runs(const GraphRun& a, const ImageMap& a_images, const GraphRun& b,
-                          const ImageMap& b_images, const std::string& frame);
+// `frame` names the texture compared as the final frame (from the two image maps). Runs
+// that cannot be compared (different pass lists, image sizes, no frame) fail (rule
+// "agreement"); a comparison that finds differences is a success whose rows say so.
+ir::Result<RunAgreement> compare_runs(const GraphRun& a, const ImageMap& a_images,
+                                      const GraphRun& b, const ImageMap& b_images,
+                                      const std::string& frame);
 
 } // namespace tierlift::effects

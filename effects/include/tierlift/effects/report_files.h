@@ -6,6 +6,8 @@
 // error leaves DIR as it was (absent when it was absent).
 #pragma once
 
+#include "tierlift/ir/result.h"
+
 #include <string>
 #include <vector>
 
@@ -31,10 +33,10 @@ std::string report_markdown(const SweepResult& r, const SweepSettings& s, const 
 // The gnuplot program: TIERLIFT_GNUPLOT when set, else "gnuplot" on PATH.
 std::string gnuplot_program();
 
-// Writes every file into `dir` (created when missing), listing them in *written. Empty
-// string on success, else why (nothing changed in `dir`). gnuplot missing is an error that
-// says which package brings it.
-std::string write_report(const std::string& dir, const SweepResult& r, const SweepSettings& s,
-                         const ReportInfo& info, std::vector<std::string>* written);
+// Writes every file into `dir` (created when missing) and returns their paths; on failure
+// (rule "io", subject `dir`) nothing changed in `dir`. gnuplot missing is an error that says
+// which package brings it.
+ir::Result<std::vector<std::string>> write_report(const std::string& dir, const SweepResult& r,
+                                                  const SweepSettings& s, const ReportInfo& info);
 
 } // namespace tierlift::effects

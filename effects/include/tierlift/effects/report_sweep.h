@@ -91,7 +91,6 @@ struct SweepResult {
   std::vector<ConfigResult> configs;     // the scene's own first
   std::vector<size_t> pareto;            // indices into configs, by frame time
   std::optional<size_t> cheapest_within; // the fastest whose final RMSE is ≤ 1/255
-  std::string error;                     // the sweep could not run
 };
 
 // Progress before each configuration: index from 0, count, the configuration.
@@ -100,9 +99,10 @@ using SweepProgress = std::function<void(size_t, size_t, const SweepConfig&)>;
 // Runs every configuration over the scene image (at the scene's size). `vk` may be null:
 // then no Vulkan device runs (and the agreement is that of the others). Errors of a single
 // configuration (one the tier cannot build) skip it with the reason; a device failing fails
-// the sweep.
-SweepResult run_sweep(const Scene& scene, const img::Image& image, const SweepSettings& s,
-                      vulkan::Device* vk, const SweepProgress& progress = {});
+// the sweep (rule "run"), as does an empty sweep or an image not of the scene's size.
+ir::Result<SweepResult> run_sweep(const Scene& scene, const img::Image& image,
+                                  const SweepSettings& s, vulkan::Device* vk,
+                                  const SweepProgress& progress = {});
 
 // Indices of the configurations no other one beats on both frame time and final RMSE
 // (ties kept), ordered by frame time. Skipped configurations are left out.
