@@ -40,8 +40,8 @@ const img::Image& scene(uint32_t w, uint32_t h) {
   return it->second;
 }
 
-effects::GlowPlan make_plan(uint32_t w, uint32_t h, int taps, effects::Tier tier,
-                            img::Format format) {
+effects::PlanResult make_plan(uint32_t w, uint32_t h, int taps, effects::Tier tier,
+                              img::Format format) {
   effects::GlowParams p;
   p.tier = tier;
   p.width = w;
@@ -66,9 +66,9 @@ std::string frame(effects::PassDevice& dev, const effects::GlowPlan& plan,
 
 void run_cpu(benchmark::State& state, uint32_t w, uint32_t h, int taps, effects::Tier tier,
              img::Format format, cpu::Executor executor, unsigned threads = 0) {
-  const effects::GlowPlan plan = make_plan(w, h, taps, tier, format);
+  const effects::PlanResult plan = make_plan(w, h, taps, tier, format);
   if (!plan) {
-    state.SkipWithError(plan.error.c_str());
+    state.SkipWithError(plan.message().c_str());
     return;
   }
   img::Image input = scene(w, h);
@@ -78,18 +78,18 @@ void run_cpu(benchmark::State& state, uint32_t w, uint32_t h, int taps, effects:
   effects::CpuPassDevice dev(threads, executor);
   img::Image out;
   // One frame before timing: the device's buffers and the first touch of every page.
-  if (std::string e = frame(dev, plan, inputs, out); !e.empty()) {
+  if (std::string e = frame(dev, *plan, inputs, out); !e.empty()) {
     state.SkipWithError(e.c_str());
     return;
   }
   for (auto _ : state) {
-    if (std::string e = frame(dev, plan, inputs, out); !e.empty()) {
+    if (std::string e = frame(dev, *plan, inputs, out); !e.empty()) {
       state.SkipWithError(e.c_str());
       return;
     }
     benchmark::DoNotOptimize(out.rgba.data());
   }
-  state.counters["taps"] = double(plan.taps.size());
+  state.counters["taps"] = double(plan->taps.size());
   state.counters["pixels"] = double(w) * h;
 }
 
@@ -97,13 +97,13 @@ void run_cpu(benchmark::State& state, uint32_t w, uint32_t h, int taps, effects:
 
 void BM_CpuGlow_OpenCV(benchmark::State& state) {
   const auto [w, h] = kSizes[size_t(state.range(0))];
-  const effects::GlowPlan plan =
+  const effects::PlanResult plan =
       make_plan(w, h, int(state.range(1)), effects::Tier::Dx9, img::Format::RGBA32F);
   if (!plan) {
-    state.SkipWithError(plan.error.c_str());
+    state.SkipWithError(plan.message().c_str());
     return;
   }
-  bench::OpenCvGlow g(plan.taps, kDownsample);
+  bench::OpenCvGlow g(plan->taps, kDownsample);
   const cv::Mat in = bench::wrap(scene(w, h));
   g.run(in); // warm-up, as the devices get
   for (auto _ : state) {
@@ -111,7 +111,7 @@ void BM_CpuGlow_OpenCV(benchmark::State& state) {
     benchmark::DoNotOptimize(f.data);
     benchmark::ClobberMemory();
   }
-  state.counters["taps"] = double(plan.taps.size());
+  state.counters["taps"] = double(plan->taps.size());
   state.counters["pixels"] = double(w) * h;
   state.SetLabel("OpenCV " CV_VERSION ", " + std::to_string(cv::getNumThreads()) + " threads");
 }
@@ -150,9 +150,9 @@ BENCHMARK(BM_CpuGlow_Scalar)
 void BM_CpuGlow_OneThread_OpenCV(benchmark::State& state) {
   const int before = cv::getNumThreads();
   cv::setNumThreads(1);
-  const effects::GlowPlan plan =
+  const effects::PlanResult plan =
       make_plan(1920, 1080, 13, effects::Tier::Dx9, img::Format::RGBA32F);
-  bench::OpenCvGlow g(plan.taps, kDownsample);
+  bench::OpenCvGlow g(plan->taps, kDownsample);
   const cv::Mat in = bench::wrap(scene(1920, 1080));
   g.run(in); // warm-up, as the devices get
   for (auto _ : state) {

@@ -50,7 +50,7 @@ const img::Image& scene() {
   return bench::glow_scene(kW, kH);
 }
 
-effects::GlowPlan make_plan(effects::Tier tier, img::Format format) {
+effects::PlanResult make_plan(effects::Tier tier, img::Format format) {
   return bench::glow_plan(tier, format, kW, kH);
 }
 
@@ -68,19 +68,19 @@ img::Image opencv_final(const std::vector<effects::BlurTap>& taps) {
 }
 
 void BM_Glow_OpenCV(benchmark::State& state) {
-  const effects::GlowPlan plan = make_plan(effects::Tier::Dx9, img::Format::RGBA32F);
+  const effects::PlanResult plan = make_plan(effects::Tier::Dx9, img::Format::RGBA32F);
   if (!plan) {
-    state.SkipWithError(plan.error.c_str());
+    state.SkipWithError(plan.message().c_str());
     return;
   }
-  bench::OpenCvGlow g(plan.taps, kDownsample);
+  bench::OpenCvGlow g(plan->taps, kDownsample);
   const cv::Mat in = bench::wrap(scene());
   for (auto _ : state) {
     const cv::Mat& f = g.run(in);
     benchmark::DoNotOptimize(f.data);
     benchmark::ClobberMemory();
   }
-  state.counters["taps"] = double(plan.taps.size());
+  state.counters["taps"] = double(plan->taps.size());
   state.SetLabel("OpenCV " CV_VERSION ", " + std::to_string(cv::getNumThreads()) + " threads");
 }
 
@@ -88,13 +88,13 @@ void BM_Glow_OpenCV(benchmark::State& state) {
 
 void run_device(benchmark::State& state, effects::PassDevice& dev, effects::Tier tier,
                 img::Format format) {
-  const effects::GlowPlan plan = make_plan(tier, format);
+  const effects::PlanResult plan = make_plan(tier, format);
   img::Image final_frame;
   if (!bench::run_device_frames(state, dev, plan, scene(), &final_frame)) return;
   // OpenCV works in float throughout; its final frame gets the target's store rule (RGBA8:
   // clamp to [0, 1] and 255 steps) so that the check compares like with like. The RGBA8
   // graph also rounds every intermediate texture, so a few LSB differ there.
-  img::Image peer = opencv_final(plan.taps);
+  img::Image peer = opencv_final(plan->taps);
   peer.format = format;
   img::quantize_in_place(peer);
   if (auto c = img::compare(final_frame, peer)) {
@@ -122,23 +122,23 @@ void BM_Glow_Vulkan(benchmark::State& state, effects::Tier tier, img::Format for
 // ratio (bench/run.sh prints it; the aim is <= 1.0).
 void BM_Glow_VulkanVsGlsl(benchmark::State& state, effects::Tier tier, img::Format format) {
   static const bool glslang_ready = glslang::InitializeProcess();
-  const effects::GlowPlan plan = make_plan(tier, format);
+  const effects::PlanResult plan = make_plan(tier, format);
   std::string error;
   vulkan::Device* vk = bench::bench_vulkan_device(&error);
   if (!plan || !glslang_ready || !vk) {
-    state.SkipWithError(!plan ? plan.error.c_str() : vk ? "glslang failed" : error.c_str());
+    state.SkipWithError(!plan ? plan.message().c_str() : vk ? "glslang failed" : error.c_str());
     return;
   }
   img::Image input = scene();
   input.format = format;
   img::quantize_in_place(input);
   std::unique_ptr<bench::GlslGlowPeer> peer =
-      bench::GlslGlowPeer::create(plan.graph, input, &error);
+      bench::GlslGlowPeer::create(plan->graph, input, &error);
   std::unique_ptr<effects::PassDevice> ours = effects::make_vulkan_pass_device(*vk);
   const effects::ImageMap inputs{{std::string(effects::kSceneTexture), input}};
-  if (peer && (error = ours->begin_run(plan.graph, inputs).message()).empty())
+  if (peer && (error = ours->begin_run(plan->graph, inputs).message()).empty())
     error = peer->frame(); // both warm: first-touch of every texture's pages
-  for (const effects::PassDesc& p : plan.graph.passes)
+  for (const effects::PassDesc& p : plan->graph.passes)
     if (error.empty()) error = ours->run_pass(p).message();
   if (error.empty()) error = ours->finish().message();
   if (!error.empty()) {
@@ -152,7 +152,7 @@ void BM_Glow_VulkanVsGlsl(benchmark::State& state, effects::Tier tier, img::Form
   std::vector<double> ours_ms, peer_ms;
   for (auto _ : state) {
     const auto t0 = Clock::now();
-    for (const effects::PassDesc& p : plan.graph.passes)
+    for (const effects::PassDesc& p : plan->graph.passes)
       if (error.empty()) error = ours->run_pass(p).message();
     if (error.empty()) error = ours->finish().message();
     const auto t1 = Clock::now();
@@ -173,7 +173,7 @@ void BM_Glow_VulkanVsGlsl(benchmark::State& state, effects::Tier tier, img::Form
   state.counters["vulkan_ms"] = median(ours_ms);
   state.counters["glsl_ms"] = median(peer_ms);
   state.counters["vulkan_over_glsl"] = median(ours_ms) / median(peer_ms);
-  state.counters["passes"] = double(plan.graph.passes.size());
+  state.counters["passes"] = double(plan->graph.passes.size());
   state.SetLabel(vk->name());
 }
 

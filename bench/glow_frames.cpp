@@ -9,8 +9,8 @@
 
 namespace tierlift::bench {
 
-effects::GlowPlan glow_plan(effects::Tier tier, img::Format format, uint32_t width, uint32_t height,
-                            unsigned taps) {
+effects::PlanResult glow_plan(effects::Tier tier, img::Format format, uint32_t width,
+                              uint32_t height, unsigned taps) {
   effects::GlowParams p;
   p.tier = tier;
   p.width = width;
@@ -30,25 +30,25 @@ const img::Image& glow_scene(uint32_t width, uint32_t height) {
 }
 
 bool run_device_frames(benchmark::State& state, effects::PassDevice& device,
-                       const effects::GlowPlan& plan, const img::Image& scene,
+                       const effects::PlanResult& plan, const img::Image& scene,
                        img::Image* final_frame) {
   auto fail = [&](const std::string& e) {
     state.SkipWithError(e.c_str());
     return false;
   };
-  if (!plan) return fail(plan.error);
+  if (!plan) return fail(plan.message());
   img::Image input = scene;
-  input.format = plan.graph.textures.front().format;
+  input.format = plan->graph.textures.front().format;
   img::quantize_in_place(input); // stored in the graph's format, as run_graph does
   const effects::ImageMap inputs{{std::string(effects::kSceneTexture), input}};
-  if (ir::Status s = device.begin_run(plan.graph, inputs); !s) return fail(s.message());
+  if (ir::Status s = device.begin_run(plan->graph, inputs); !s) return fail(s.message());
   for (auto _ : state) {
-    for (const effects::PassDesc& p : plan.graph.passes)
+    for (const effects::PassDesc& p : plan->graph.passes)
       if (ir::Status s = device.run_pass(p); !s) return fail(p.name + ": " + s.message());
     if (ir::Status s = device.finish(); !s) return fail(s.message());
   }
-  state.counters["passes"] = double(plan.graph.passes.size());
-  state.counters["taps"] = double(plan.taps.size());
+  state.counters["passes"] = double(plan->graph.passes.size());
+  state.counters["taps"] = double(plan->taps.size());
   state.counters["pixels"] = double(scene.width) * scene.height;
   if (final_frame) {
     ir::Result<img::Image> read = device.read_texture(std::string(effects::kFinalTexture));

@@ -22,8 +22,8 @@ namespace tierlift::bench {
 
 // The glow plan for a scene of width × height (downsample 4; taps: 0 = the default
 // profile's 13, else the profile cut to that many).
-effects::GlowPlan glow_plan(effects::Tier tier, img::Format format, uint32_t width, uint32_t height,
-                            unsigned taps = 0);
+effects::PlanResult glow_plan(effects::Tier tier, img::Format format, uint32_t width,
+                              uint32_t height, unsigned taps = 0);
 // The built-in scene at that size, RGBA32F (made once per size).
 const img::Image& glow_scene(uint32_t width, uint32_t height);
 
@@ -31,7 +31,7 @@ const img::Image& glow_scene(uint32_t width, uint32_t height);
 // `final_frame` (optional) receives the final texture after the loop. Skips the benchmark
 // with the device's error on failure (returns false).
 bool run_device_frames(benchmark::State& state, effects::PassDevice& device,
-                       const effects::GlowPlan& plan, const img::Image& scene,
+                       const effects::PlanResult& plan, const img::Image& scene,
                        img::Image* final_frame = nullptr);
 
 // The process's Vulkan device (lavapipe, no validation), made once; nullptr and *error

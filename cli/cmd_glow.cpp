@@ -220,11 +220,12 @@ int run(const GlowFlags& f) {
   // The radial star moves through the frames --frames runs (per-frame vertex constants).
   if (radial && f.frames > 0) scene->radial.frames = f.frames;
   const bool scene_moves = effects::scene_animated(*scene);
-  effects::GlowPlan plan = effects::build_scene_effect(*scene);
-  if (!plan) {
-    report.error("scene", fmt::format("{}: {}", where, plan.error), scene->file);
+  effects::PlanResult built = effects::build_scene_effect(*scene);
+  if (!built) {
+    report.error("scene", fmt::format("{}: {}", where, built.message()), scene->file);
     return report.finish(kExitInvalid);
   }
+  effects::GlowPlan& plan = *built;
   uint64_t planned_bytes = 0;
   if (!memory_fits(plan, f, where, report, &planned_bytes)) return report.finish(kExitInvalid);
   img::ImageResult image = effects::load_scene_image(*scene);

@@ -87,7 +87,7 @@ int run(const Flags& f) {
   if (!f.json) fmt::print("{}", interface_text(shader));
 
   std::optional<img::Image> image;
-  effects::GlowPlan plan;
+  std::optional<effects::GlowPlan> plan;
   if (!f.output.empty()) {
     img::ImageResult loaded = load_image(f, (*size)[0], (*size)[1]);
     if (!loaded) {
@@ -96,14 +96,16 @@ int run(const Flags& f) {
       return report.finish(io ? kExitUsage : kExitInvalid);
     }
     image = std::move(*loaded);
-    plan = effects::build_glsl_pass(shader, image->width, image->height, *format, *filter);
-    if (!plan) {
+    effects::PlanResult built =
+        effects::build_glsl_pass(shader, image->width, image->height, *format, *filter);
+    if (!built) {
       if (f.json)
-        report.error("glsl", plan.error, f.file);
+        report.error("glsl", built.message(), f.file);
       else
-        fmt::print(stderr, "{}", plan.error);
+        fmt::print(stderr, "{}", built.message());
       return report.finish(kExitInvalid);
     }
+    plan = std::move(*built);
   }
   if (!f.spirv.empty()) {
     const std::string_view bytes(reinterpret_cast<const char*>(shader.spirv.data()),
@@ -120,7 +122,7 @@ int run(const Flags& f) {
   std::unique_ptr<effects::PassDevice> vk = effects::make_vulkan_pass_device(*device);
   effects::ImageMap images;
   images.emplace(std::string(effects::kSceneTexture), std::move(*image));
-  const ir::Result<effects::GraphRun> run = effects::run_graph(plan.graph, *vk, images);
+  const ir::Result<effects::GraphRun> run = effects::run_graph(plan->graph, *vk, images);
   if (!run) {
     report.error("device", run.message(), f.file);
     return report.finish(kExitInvalid);

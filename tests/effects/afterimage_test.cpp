@@ -109,8 +109,9 @@ void sources_series(PassDevice& device) {
   const double g = 0.5;
   const unsigned n = 8;
   const img::Image scene = test_scene(img::Format::RGBA32F);
-  const GlowPlan plan = build_glow(params(Afterimage::Sources, g, img::Format::RGBA32F));
-  ASSERT_TRUE(plan) << plan.error;
+  const PlanResult plan_built = build_glow(params(Afterimage::Sources, g, img::Format::RGBA32F));
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  const GlowPlan& plan = *plan_built;
   const img::Image fed = last_frame(device, plan, scene, n, std::string(kFedTexture));
   std::vector<double> want = sources(scene);
   for (double& v : want) v *= (1 - std::pow(g, n)) / (1 - g);
@@ -122,8 +123,9 @@ void glow_steady_state(PassDevice& device) {
   const double g = 0.5;
   const unsigned n = 40; // g^40 ≈ 1e-12: the series has converged far below fp32's step
   const img::Image scene = test_scene(img::Format::RGBA32F);
-  const GlowPlan plan = build_glow(params(Afterimage::Glow, g, img::Format::RGBA32F));
-  ASSERT_TRUE(plan) << plan.error;
+  const PlanResult plan_built = build_glow(params(Afterimage::Glow, g, img::Format::RGBA32F));
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  const GlowPlan& plan = *plan_built;
   // y = B(I − gB)⁻¹x: z = (I − gB)⁻¹x by z ← x + g·B z until it stops changing.
   const std::vector<double> x = sources(scene);
   std::vector<double> z = x;
@@ -142,8 +144,9 @@ void rgba8_stall(PassDevice& device, Tier tier) {
   const img::Image scene = test_scene(img::Format::RGBA8);
   GlowParams p = params(Afterimage::Sources, g, img::Format::RGBA8);
   p.tier = tier;
-  const GlowPlan plan = build_glow(p);
-  ASSERT_TRUE(plan) << plan.error;
+  const PlanResult plan_built = build_glow(p);
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  const GlowPlan& plan = *plan_built;
   const img::Image fed = last_frame(device, plan, scene, 40, std::string(kFedTexture));
   int checked = 0;
   for (uint32_t y = 0; y < kH; ++y)
@@ -168,8 +171,9 @@ void ramped_intensity(PassDevice& device) {
   GlowParams p = params(Afterimage::Off, 0, img::Format::RGBA32F);
   p.intensity_ramp.points = {{1, 0.0}, {5, 2.0}};
   p.intensity = 0;
-  const GlowPlan plan = build_glow(p);
-  ASSERT_TRUE(plan) << plan.error;
+  const PlanResult plan_built = build_glow(p);
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  const GlowPlan& plan = *plan_built;
   const double want[] = {0, 0.5, 1, 1.5, 2};
   unsigned seen = 0;
   const std::string final_name(kFinalTexture), glow_name(kGlowTexture);
@@ -247,8 +251,9 @@ TEST(Afterimage, Rgba8StallLevelMatchesASearch) {
 
 TEST(Afterimage, WarningsNameRunawayAndStall) {
   GlowParams p = params(Afterimage::Glow, 1.5, img::Format::RGBA8);
-  GlowPlan plan = build_glow(p);
-  ASSERT_TRUE(plan) << plan.error;
+  PlanResult plan_built = build_glow(p);
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  GlowPlan& plan = *plan_built;
   std::vector<std::string> w = afterimage_warnings(p, plan.taps);
   ASSERT_EQ(w.size(), 1u);
   EXPECT_NE(w[0].find("runs away (to a white screen)"), std::string::npos) << w[0];

@@ -24,8 +24,12 @@ constexpr int kRingFrom = 8, kRingTo = 24;
 // than 8/255 in some channel.
 double visible_share(const GlowParams& p) {
   const img::Image scene = make_default_scene(p.width, p.height);
-  GlowPlan plan = build_glow(p);
-  EXPECT_TRUE(plan) << plan.error;
+  PlanResult plan_built = build_glow(p);
+  if (!plan_built) {
+    ADD_FAILURE() << plan_built.message();
+    return 0;
+  }
+  GlowPlan& plan = *plan_built;
   CpuPassDevice cpu;
   GlowRun run = run_glow(plan, scene, cpu);
   EXPECT_TRUE(run.run.ok()) << run.run.message();

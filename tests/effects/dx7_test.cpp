@@ -184,8 +184,9 @@ TEST(Dx7Glow, InterpreterEqualsTheConvolutionWithTheQuantisedWeights) {
     p.profile.terms = {{3, 0.8}, {1, 0.2}};
     const img::Image scene =
         test_scenes::make_scene(test_scenes::Scene::RandomAlpha, p.width, p.height);
-    GlowPlan plan = build_glow(p);
-    ASSERT_TRUE(plan) << plan.error;
+    PlanResult plan_built = build_glow(p);
+    ASSERT_TRUE(plan_built) << plan_built.message();
+    GlowPlan& plan = *plan_built;
     ASSERT_EQ(plan.weight_bytes.size(), plan.taps.size());
     EXPECT_EQ(plan.blur_passes_per_axis, (plan.taps.size() + 1) / 2);
     EXPECT_FALSE(plan.quantization.empty());
@@ -208,10 +209,11 @@ TEST(Dx7Glow, PlainRoundingOfTheDx7SceneKernelIsDarker) {
   p.downsample = 2;
   p.profile.terms = {{24, 0.8}, {3, 0.2}}; // listings/scenes/dx7*.json
   p.weight_rounding = WeightRounding::Plain;
-  GlowPlan plain = build_glow(p);
+  const PlanResult plain_built = build_glow(p);
   p.weight_rounding = WeightRounding::ErrorCarry;
-  GlowPlan carry = build_glow(p);
-  ASSERT_TRUE(plain && carry);
+  const PlanResult carry_built = build_glow(p);
+  ASSERT_TRUE(plain_built && carry_built);
+  const GlowPlan &plain = *plain_built, &carry = *carry_built;
   unsigned sp = 0, sc = 0;
   for (uint8_t b : plain.weight_bytes) sp += b;
   for (uint8_t b : carry.weight_bytes) sc += b;
@@ -232,9 +234,10 @@ TEST(Dx7Glow, ABadStageStateFileNamedByTheSceneIsAPositionedError) {
   GlowParams p;
   p.tier = Tier::Dx7;
   p.listing_files[std::string(kDx7BlurStates)] = path;
-  GlowPlan plan = build_glow(p);
+  const PlanResult plan = build_glow(p);
   EXPECT_FALSE(plan);
-  EXPECT_NE(plan.error.find(path + ":2:7: error: stage 2"), std::string::npos) << plan.error;
+  EXPECT_NE(plan.message().find(path + ":2:7: error: stage 2"), std::string::npos)
+      << plan.message();
   std::remove(path.c_str());
 }
 

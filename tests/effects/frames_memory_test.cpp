@@ -87,8 +87,9 @@ TEST_F(FramesVulkan, GlowFramesRepeatTheSingleRun) {
   p.height = 48;
   p.downsample = 2;
   p.format = img::Format::RGBA8;
-  const GlowPlan plan = build_glow(p);
-  ASSERT_TRUE(plan) << plan.error;
+  const PlanResult plan_built = build_glow(p);
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  const GlowPlan& plan = *plan_built;
   const img::Image scene = make_default_scene(p.width, p.height, p.format);
   CpuPassDevice cpu(2);
   const GlowRun once = run_glow(plan, scene, cpu);

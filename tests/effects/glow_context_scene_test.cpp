@@ -101,8 +101,9 @@ TEST_P(GlowContextShipped, EveryPairAgreesOnEveryPass) {
       file.starts_with("{") ? parse(file) : load_scene_file((kScenes / file).string());
   ASSERT_TRUE(s) << s.message();
   s->params.tier = GetParam().tier;
-  const GlowPlan plan = build_scene_effect(*s);
-  ASSERT_TRUE(plan) << plan.error;
+  const PlanResult plan_built = build_scene_effect(*s);
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  const GlowPlan& plan = *plan_built;
   img::ImageResult scene = load_scene_image(*s);
   ASSERT_TRUE(scene) << scene.message();
   CpuPassDevice cpu_dev(2);

@@ -110,8 +110,9 @@ TEST_P(GlowContext3, FogFadesEachSourceByTheLinearFogFraction) {
   for (uint32_t y = 0; y < kH; ++y)
     for (uint32_t x = 0; x < kW; ++x) depth->at(x, y)[0] = float(kDepth[x]); // red is the depth
   p.context.fog.depth = depth;
-  const GlowPlan plan = build_glow(p);
-  ASSERT_TRUE(plan) << plan.error;
+  const PlanResult plan_built = build_glow(p);
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  const GlowPlan& plan = *plan_built;
   const img::Image scene = source_image();
   const Ways w = run_all(plan, scene);
   expect_glow(w, scene, p.tier, [&](uint32_t x, uint32_t y) {
@@ -136,8 +137,9 @@ TEST_P(GlowContext3, BuiltInFloorFogsTheTopRows) {
   GlowParams p = one_tap(GetParam());
   p.context.fog.on = true;
   p.context.fog.start = 0.25, p.context.fog.end = 0.75; // black fog
-  const GlowPlan plan = build_glow(p);
-  ASSERT_TRUE(plan) << plan.error;
+  const PlanResult plan_built = build_glow(p);
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  const GlowPlan& plan = *plan_built;
   const img::Image scene = source_image();
   const Ways w = run_all(plan, scene);
   expect_glow(w, scene, p.tier, [&](uint32_t x, uint32_t y) {
@@ -156,8 +158,9 @@ TEST_P(GlowContext3, GlowImageGlowsWhereTheSceneAlphaIsZero) {
   glow->at(2, 1)[0] = 1, glow->at(2, 1)[1] = 0.5f, glow->at(2, 1)[3] = 1;
   glow->at(6, 0)[2] = 0.8f, glow->at(6, 0)[3] = 0.25f;
   p.context.glow_image = glow;
-  const GlowPlan plan = build_glow(p);
-  ASSERT_TRUE(plan) << plan.error;
+  const PlanResult plan_built = build_glow(p);
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  const GlowPlan& plan = *plan_built;
   const Ways w = run_all(plan, scene);
   expect_glow(w, scene, p.tier, [&](uint32_t x, uint32_t y) {
     const float* g = glow->at(x, y);
@@ -179,8 +182,9 @@ INSTANTIATE_TEST_SUITE_P(Tiers, GlowContext3, ::testing::Values(Tier::Dx9, Tier:
 TEST(GlowContext, MemoryPlanCountsTheCarriedInputs) {
   GlowParams plain = one_tap(Tier::Dx9), fogged = plain;
   fogged.context.fog.on = true;
-  const GlowPlan a = build_glow(plain), b = build_glow(fogged);
-  ASSERT_TRUE(a && b) << a.error << b.error;
+  const PlanResult a_built = build_glow(plain), b_built = build_glow(fogged);
+  ASSERT_TRUE(a_built && b_built) << a_built.message() << b_built.message();
+  const GlowPlan &a = *a_built, &b = *b_built;
   const uint64_t texture = uint64_t{kW} * kH * 16; // one RGBA32F texture of the scene's size
   // The depth texture three times: the image the graph carries, the device's own and the
   // one the run hands back (the largest pass, extract or composite, reads three textures
@@ -202,9 +206,9 @@ TEST(GlowContext, FogConstantsAndTheirPs1xLimit) {
   p.tier = Tier::Dx8;
   p.context.fog = fog;
   p.context.fog.on = true;
-  EXPECT_NE(build_glow(p).error.find("tier dx8"), std::string::npos);
+  EXPECT_NE(build_glow(p).message().find("tier dx8"), std::string::npos);
   p.context.fog.start = 0.8; // start == end
-  EXPECT_NE(build_glow(p).error.find("start < end"), std::string::npos);
+  EXPECT_NE(build_glow(p).message().find("start < end"), std::string::npos);
 }
 
 } // namespace

@@ -28,9 +28,13 @@ inline GlowParams sized(unsigned downsample, uint32_t w, uint32_t h) {
   return p;
 }
 
-inline GlowPlan expect_built(GlowPlan plan) {
-  EXPECT_TRUE(plan) << plan.error;
-  return plan;
+// The plan, or (a failure recorded) an empty one.
+inline GlowPlan expect_built(PlanResult plan) {
+  if (!plan) {
+    ADD_FAILURE() << plan.message();
+    return {};
+  }
+  return std::move(*plan);
 }
 
 inline std::vector<std::string> pass_names(const GlowPlan& plan) {

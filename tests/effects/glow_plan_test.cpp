@@ -134,12 +134,13 @@ TEST(GlowPlanDx8, PassCountsAreCeilOfTapsOverFour) {
     unsigned n, per_axis, downsample_passes;
   };
   for (const Want& c : {Want{1, 13, 0}, Want{2, 7, 1}, Want{4, 4, 4}}) {
-    GlowPlan plan = build_glow(dx8_params(c.n));
-    ASSERT_TRUE(plan) << plan.error;
+    PlanResult plan_built = build_glow(dx8_params(c.n));
+    ASSERT_TRUE(plan_built) << plan_built.message();
+    GlowPlan& plan = *plan_built;
     EXPECT_EQ(plan.blur_passes_per_axis, c.per_axis) << c.n;
     EXPECT_EQ(plan.graph.passes.size(), 2 * c.per_axis + 2 + c.downsample_passes) << c.n;
   }
-  GlowPlan plan = build_glow(dx8_params(2));
+  const GlowPlan plan = plan_test::expect_built(build_glow(dx8_params(2)));
   std::vector<std::string> want{"extract", "downsample.0"};
   for (const char* axis : {"blur_h", "blur_v"})
     for (int i = 0; i < 7; ++i) want.push_back(std::string(axis) + "." + std::to_string(i));
@@ -150,8 +151,9 @@ TEST(GlowPlanDx8, PassCountsAreCeilOfTapsOverFour) {
 TEST(GlowPlanDx8, BlurConstantsFollowTheArticlesRule) {
   GlowParams p = dx8_params(2, 45, 27); // glow 23 × 14
   p.profile = one_gaussian(2.0, 1.0);
-  GlowPlan plan = build_glow_dx8(p);
-  ASSERT_TRUE(plan) << plan.error;
+  PlanResult plan_built = build_glow_dx8(p);
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  GlowPlan& plan = *plan_built;
   ASSERT_EQ(plan.taps.size(), 7u);
   EXPECT_EQ(plan.glow_width, 23u);
   EXPECT_EQ(plan.glow_height, 14u);
@@ -202,8 +204,9 @@ TEST(GlowPlanDx8, WithoutHalfTexelOffsetsAreWholeTexels) {
   GlowParams p = dx8_params(2, 45, 27);
   p.profile = one_gaussian(2.0, 1.0);
   p.half_texel = false;
-  GlowPlan plan = build_glow_dx8(p);
-  ASSERT_TRUE(plan) << plan.error;
+  PlanResult plan_built = build_glow_dx8(p);
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  GlowPlan& plan = *plan_built;
   EXPECT_FLOAT_EQ(plan.graph.passes[2].vs_constants[0][0], -3.0f / 23);
   EXPECT_EQ(plan.graph.passes[2].vs_constants[0][1], 0.0f);
   EXPECT_EQ(plan.graph.passes[2].vs_constants[3][0], 0.0f);
@@ -215,8 +218,9 @@ TEST(GlowPlanDx8, WithoutHalfTexelOffsetsAreWholeTexels) {
 }
 
 TEST(GlowPlanDx8, HelperPassesAreD3D8Listings) {
-  GlowPlan plan = build_glow_dx8(dx8_params(2, 45, 27));
-  ASSERT_TRUE(plan) << plan.error;
+  PlanResult plan_built = build_glow_dx8(dx8_params(2, 45, 27));
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  GlowPlan& plan = *plan_built;
   for (const PassDesc& d : plan.graph.passes) {
     EXPECT_EQ(d.vs->profile, ir::Profile::vs_1_1) << d.name;
     EXPECT_TRUE(ir::is_ps11_13(d.ps->profile)) << d.name;
@@ -271,8 +275,9 @@ TEST(GlowIntensity, Dx9PutsIntensityInC0) {
   p.height = 27;
   for (double intensity : {0.0, 1.0, 2.5, 17.0}) {
     p.intensity = intensity;
-    GlowPlan plan = build_glow_dx9(p);
-    ASSERT_TRUE(plan) << plan.error;
+    PlanResult plan_built = build_glow_dx9(p);
+    ASSERT_TRUE(plan_built) << plan_built.message();
+    GlowPlan& plan = *plan_built;
     EXPECT_EQ(composite_c0(plan), float(intensity));
     EXPECT_EQ(plan.graph.passes.back().ps->profile, ir::Profile::ps_2_0);
   }
@@ -282,15 +287,17 @@ TEST(GlowIntensity, Dx8UpToOneInC0AboveOneAQuarterWithX4) {
   GlowParams p = dx8_params(2, 45, 27);
   for (double intensity : {0.0, 0.5, 1.0}) {
     p.intensity = intensity;
-    GlowPlan plan = build_glow_dx8(p);
-    ASSERT_TRUE(plan) << plan.error;
+    PlanResult plan_built = build_glow_dx8(p);
+    ASSERT_TRUE(plan_built) << plan_built.message();
+    GlowPlan& plan = *plan_built;
     EXPECT_EQ(composite_c0(plan), float(intensity));
     EXPECT_EQ(plan.graph.passes.back().ps->code.size(), 4u); // tex, tex, mad, +mov
   }
   for (double intensity : {1.5, 4.0}) {
     p.intensity = intensity;
-    GlowPlan plan = build_glow_dx8(p);
-    ASSERT_TRUE(plan) << plan.error;
+    PlanResult plan_built = build_glow_dx8(p);
+    ASSERT_TRUE(plan_built) << plan_built.message();
+    GlowPlan& plan = *plan_built;
     EXPECT_EQ(composite_c0(plan), float(intensity / 4));
     const ir::Instruction& mul = plan.graph.passes.back().ps->code.at(2);
     EXPECT_EQ(mul.op, ir::Opcode::Mul);
@@ -304,46 +311,47 @@ TEST(GlowIntensity, BadValuesAreErrorsNamingIntensity) {
       GlowParams p = dx8_params(2, 45, 27);
       p.tier = tier;
       p.intensity = bad;
-      GlowPlan plan = build_glow(p);
+      const PlanResult plan = build_glow(p);
       EXPECT_FALSE(plan) << tier_name(tier) << " " << bad;
-      EXPECT_EQ(plan.error.rfind("intensity ", 0), 0u) << plan.error;
+      EXPECT_EQ(plan.message().rfind("intensity ", 0), 0u) << plan.message();
     }
   GlowParams p = dx8_params(2, 45, 27);
   p.intensity = 4.5;
-  GlowPlan plan = build_glow(p);
+  const PlanResult plan = build_glow(p);
   EXPECT_FALSE(plan);
-  EXPECT_EQ(plan.error.rfind("intensity 4.5: tier dx8", 0), 0u) << plan.error;
+  EXPECT_EQ(plan.message().rfind("intensity 4.5: tier dx8", 0), 0u) << plan.message();
   p.tier = Tier::Dx9;
   EXPECT_TRUE(build_glow(p)) << "dx9 has no such limit";
 }
 
 TEST(GlowPlanDx8, BadParametersNameTheField) {
   for (unsigned n : {0u, 5u, 9u}) {
-    GlowPlan plan = build_glow_dx8(dx8_params(n));
+    const PlanResult plan = build_glow_dx8(dx8_params(n));
     EXPECT_FALSE(plan);
-    EXPECT_EQ(plan.error, "downsample " + std::to_string(n) + ": expected 1..4");
+    EXPECT_EQ(plan.message(), "downsample " + std::to_string(n) + ": expected 1..4");
   }
-  GlowPlan zero = build_glow_dx8(dx8_params(2, 0, 27));
-  EXPECT_EQ(zero.error.rfind("scene size 0x27", 0), 0u) << zero.error;
+  const PlanResult zero = build_glow_dx8(dx8_params(2, 0, 27));
+  EXPECT_EQ(zero.message().rfind("scene size 0x27", 0), 0u) << zero.message();
   GlowParams p = dx8_params(2);
   p.profile = one_gaussian(-1.0, 1.0);
-  EXPECT_NE(build_glow_dx8(p).error.find("sigma -1"), std::string::npos);
+  EXPECT_NE(build_glow_dx8(p).message().find("sigma -1"), std::string::npos);
   p = dx8_params(2);
   p.listing_files["gpugems21/listing4_blur4_weighted_sum.psh"] = "/nonexistent/l4.psh";
-  EXPECT_NE(build_glow_dx8(p).error.find("/nonexistent/l4.psh"), std::string::npos);
+  EXPECT_NE(build_glow_dx8(p).message().find("/nonexistent/l4.psh"), std::string::npos);
 }
 
 TEST(GlowPlanDx8, TapWeightsAboveOneAreClampedWithAWarning) {
   // σ = 0.1 px, weight 2: R = ceil(0.3) = 1, the centre tap ≈ 2 (the others ≈ 2·e^−50).
   GlowParams p = dx8_params(1, 45, 27);
   p.profile = one_gaussian(0.1, 2.0);
-  GlowPlan plan = build_glow_dx8(p);
-  ASSERT_TRUE(plan) << plan.error;
+  PlanResult plan_built = build_glow_dx8(p);
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  GlowPlan& plan = *plan_built;
   ASSERT_EQ(plan.warnings.size(), 1u);
   EXPECT_NE(plan.warnings[0].find("1 tap weight(s) above 1 (up to 2)"), std::string::npos)
       << plan.warnings[0];
   p.tier = Tier::Dx9;
-  EXPECT_TRUE(build_glow(p).warnings.empty()) << "ps.2.0 constants are floats";
+  EXPECT_TRUE(build_glow(p)->warnings.empty()) << "ps.2.0 constants are floats";
 }
 
 TEST(GlowTier, NamesRoundTrip) {

@@ -63,8 +63,9 @@ void expect_impulse_response(const img::Image& out, uint32_t x0, uint32_t y0, do
 }
 
 TEST(GlslBlur, GraphHasTwoGlslPassesWithTwinsAndKernels) {
-  GlowPlan plan = build_glsl_blur(params_512(), GlslBlurParams{});
-  ASSERT_TRUE(plan) << plan.error;
+  PlanResult plan_built = build_glsl_blur(params_512(), GlslBlurParams{});
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  GlowPlan& plan = *plan_built;
   ASSERT_EQ(plan.graph.passes.size(), 2u);
   for (const PassDesc& p : plan.graph.passes) {
     EXPECT_TRUE(p.glsl_spirv && !p.glsl_spirv->empty()) << p.name;
@@ -84,8 +85,9 @@ TEST(GlslBlur, WeightsSummingTo098AreReported) {
 }
 
 TEST(GlslBlur, AnalyticImpulseResponseIsTheOuterProductOfTheWeights) {
-  GlowPlan plan = build_glsl_blur(params_512(), GlslBlurParams{});
-  ASSERT_TRUE(plan) << plan.error;
+  PlanResult plan_built = build_glsl_blur(params_512(), GlslBlurParams{});
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  GlowPlan& plan = *plan_built;
   auto dev = make_analytic_pass_device();
   GlowRun r = run_glow(plan, impulse(200, 300), *dev);
   ASSERT_TRUE(r.run.ok()) << r.run.message();
@@ -94,8 +96,9 @@ TEST(GlslBlur, AnalyticImpulseResponseIsTheOuterProductOfTheWeights) {
 }
 
 TEST(GlslBlur, CpuRunsTheTwinWithTheSameImpulseResponse) {
-  GlowPlan plan = build_glsl_blur(params_512(), GlslBlurParams{});
-  ASSERT_TRUE(plan) << plan.error;
+  PlanResult plan_built = build_glsl_blur(params_512(), GlslBlurParams{});
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  GlowPlan& plan = *plan_built;
   CpuPassDevice cpu(2);
   GlowRun r = run_glow(plan, impulse(4, 507), cpu); // the footprint touches the edges
   ASSERT_TRUE(r.run.ok()) << r.run.message();
@@ -107,8 +110,9 @@ TEST(GlslBlur, CpuRunsTheTwinWithTheSameImpulseResponse) {
 using GlslBlurVulkan = vulkan::test::VulkanTest;
 
 TEST_F(GlslBlurVulkan, GlslImpulseResponseOnLavapipe) {
-  GlowPlan plan = build_glsl_blur(params_512(), GlslBlurParams{});
-  ASSERT_TRUE(plan) << plan.error;
+  PlanResult plan_built = build_glsl_blur(params_512(), GlslBlurParams{});
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  GlowPlan& plan = *plan_built;
   auto vk = make_vulkan_pass_device(*dev);
   GlowRun r = run_glow(plan, impulse(256, 256), *vk);
   ASSERT_TRUE(r.run.ok()) << r.run.message();
@@ -118,8 +122,9 @@ TEST_F(GlslBlurVulkan, GlslImpulseResponseOnLavapipe) {
 // The three ways on a random scene: GLSL on Vulkan, the twin on the interpreter, the kernel
 // in double; and the twin on Vulkan against the GLSL on Vulkan.
 TEST_F(GlslBlurVulkan, GlslTwinAndKernelAgreeWithin1e5) {
-  GlowPlan plan = build_glsl_blur(params_512(), GlslBlurParams{});
-  ASSERT_TRUE(plan) << plan.error;
+  PlanResult plan_built = build_glsl_blur(params_512(), GlslBlurParams{});
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  GlowPlan& plan = *plan_built;
   GlowPlan twin_plan = plan;
   for (PassDesc& p : twin_plan.graph.passes) p.glsl_spirv.reset(); // ps_2_0 through codegen
   const img::Image scene = random_scene();
@@ -156,13 +161,13 @@ TEST(GlslBlur, BadGlslFileIsPositionedAndNamed) {
                          "texture2D(RTScene, vTexCoord);\n}\n";
   GlslBlurParams g;
   g.horizontal = file.string();
-  GlowPlan plan = build_glsl_blur(params_512(), g);
+  const PlanResult plan = build_glsl_blur(params_512(), g);
   std::filesystem::remove_all(dir);
   ASSERT_FALSE(plan);
   // "  gl_FragColor = texture2D(" is 27 characters: RTScene starts at column 28 of line 4.
-  EXPECT_EQ(plan.error.rfind(file.string() + ":4:28: error: 'RTScene': undeclared identifier", 0),
-            0u)
-      << plan.error;
+  EXPECT_EQ(
+      plan.message().rfind(file.string() + ":4:28: error: 'RTScene': undeclared identifier", 0), 0u)
+      << plan.message();
 }
 
 TEST(GlslBlur, SceneNamesTheEffect) {
@@ -173,8 +178,9 @@ TEST(GlslBlur, SceneNamesTheEffect) {
   EXPECT_EQ(s->params.width, kSize);
   ASSERT_EQ(s->warnings.size(), 1u);
   EXPECT_NE(s->warnings[0].find("sum to 0.98"), std::string::npos);
-  GlowPlan plan = build_scene_effect(*s);
-  ASSERT_TRUE(plan) << plan.error;
+  PlanResult plan_built = build_scene_effect(*s);
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  GlowPlan& plan = *plan_built;
   EXPECT_EQ(plan.graph.passes.size(), 2u);
 }
 

@@ -18,9 +18,12 @@ GlowPlan small_plan(unsigned n, img::Format f, BlurProfile profile = default_blu
   p.downsample = n;
   p.format = f;
   p.profile = std::move(profile);
-  GlowPlan plan = build_glow_dx9(p);
-  EXPECT_TRUE(plan) << plan.error;
-  return plan;
+  PlanResult plan_built = build_glow_dx9(p);
+  if (!plan_built) {
+    ADD_FAILURE() << plan_built.message();
+    return {};
+  }
+  return std::move(*plan_built);
 }
 
 TEST(Graph, ChecksNamesAndTargets) {
@@ -91,8 +94,9 @@ TEST(GlowCpu, OneTexelGlowsAsTheOuterProductOfTheTaps) {
   p.downsample = 1;
   p.intensity = 1; // final = scene + glow
   p.profile = BlurProfile{{{1.0, 1.0}}, std::nullopt, 0};
-  GlowPlan plan = build_glow_dx9(p);
-  ASSERT_TRUE(plan) << plan.error;
+  PlanResult plan_built = build_glow_dx9(p);
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  GlowPlan& plan = *plan_built;
   ASSERT_EQ(plan.taps.size(), 7u);
   CpuPassDevice dev(2);
   GlowRun g = run_glow(plan, scene, dev);

@@ -76,9 +76,12 @@ struct OutlineResult {
 };
 
 OutlineResult run_on(PassDevice& device) {
-  GlowPlan plan = build_outline(params(), object());
-  EXPECT_TRUE(plan) << plan.error;
-  GlowRun r = run_glow(plan, img::Image(kW, kH), device);
+  PlanResult plan_built = build_outline(params(), object());
+  if (!plan_built) {
+    ADD_FAILURE() << plan_built.message();
+    return {};
+  }
+  GlowRun r = run_glow(*plan_built, img::Image(kW, kH), device);
   EXPECT_TRUE(r.run.ok()) << r.run.message();
   return {r.images[std::string(kFinalTexture)], r.images[std::string(kStencilTexture)]};
 }
@@ -162,17 +165,18 @@ TEST(Outline, AnalyticModelAgreesWithTheCpuDevice) {
 }
 
 TEST(Outline, StencilStateOutOfRangeIsRefusedByTheGraph) {
-  GlowPlan plan = build_outline(params(), object());
-  ASSERT_TRUE(plan) << plan.error;
+  PlanResult plan_built = build_outline(params(), object());
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  GlowPlan& plan = *plan_built;
   plan.graph.passes[0].depth_stencil.stencil_ref = 256;
   EXPECT_NE(check_graph(plan.graph).message().find("0..255"), std::string::npos)
       << check_graph(plan.graph).message();
   OutlineParams o = object();
   o.stencil_ref = 0;
-  EXPECT_NE(build_outline(params(), o).error.find("stencil_ref 0"), std::string::npos);
+  EXPECT_NE(build_outline(params(), o).message().find("stencil_ref 0"), std::string::npos);
   GlowParams dx8 = params();
   dx8.tier = Tier::Dx8;
-  EXPECT_NE(build_outline(dx8, object()).error.find("tier dx8"), std::string::npos);
+  EXPECT_NE(build_outline(dx8, object()).message().find("tier dx8"), std::string::npos);
 }
 
 TEST(Outline, SceneErrorsArePositioned) {

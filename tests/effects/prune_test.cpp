@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "glow_plan_helpers.h"
 #include "tierlift/effects/analytic_device.h"
 #include "tierlift/effects/default_scene.h"
 #include "tierlift/effects/glow_run.h"
@@ -25,9 +26,12 @@ struct Outcome {
 
 // Runs the whole and the pruned plan on the CPU device and compares glow and final.
 Outcome expect_same(const GlowParams& p, const img::Image& scene, const std::string& what) {
-  const GlowPlan plan = build_glow(p);
-  EXPECT_TRUE(plan) << plan.error;
-  if (!plan) return {};
+  const PlanResult plan_built = build_glow(p);
+  if (!plan_built) {
+    ADD_FAILURE() << what << ": " << plan_built.message();
+    return {};
+  }
+  const GlowPlan& plan = *plan_built;
   const PrunedGraph pruned = prune_glow(plan, scene);
   GlowPlan lean = plan;
   lean.graph = pruned.graph;
@@ -106,7 +110,7 @@ TEST(Prune, CornerSourcesLimitTheBlurToACorner) {
   s.at(1, 1)[3] = 1;
   GlowParams p = params(96, 64, Tier::Dx9, img::Format::RGBA32F, 2);
   p.profile.terms = {{1.5, 1.0}}; // a kernel reach of 2 texels: the corner stays small
-  const GlowPlan plan = build_glow(p);
+  const GlowPlan plan = plan_test::expect_built(build_glow(p));
   const PrunedGraph g = prune_glow(plan, s);
   EXPECT_TRUE(g.left_out.empty());
   ASSERT_EQ(g.limited.size(), 4u);
@@ -156,8 +160,9 @@ TEST_F(PruneDevices, LimitedPassesGiveTheSameFrameOnVulkanAndAnalytic) {
   for (Tier t : all_tiers())
     for (img::Format f : kFormats) {
       const GlowParams p = params(96, 64, t, f, 2);
-      const GlowPlan plan = build_glow(p);
-      ASSERT_TRUE(plan) << plan.error;
+      const PlanResult plan_built = build_glow(p);
+      ASSERT_TRUE(plan_built) << plan_built.message();
+      const GlowPlan& plan = *plan_built;
       const PrunedGraph pruned = prune_glow(plan, s);
       ASSERT_EQ(pruned.limited.size(), 4u) << tier_name(t);
       GlowPlan lean = plan;
@@ -189,7 +194,7 @@ TEST(Prune, NoSourcesRunsNoBlur) {
   for (Tier t : all_tiers())
     for (img::Format f : kFormats) {
       const GlowParams p = params(64, 48, t, f, 2);
-      const PrunedGraph g = prune_glow(build_glow(p), s);
+      const PrunedGraph g = prune_glow(plan_test::expect_built(build_glow(p)), s);
       ASSERT_EQ(g.graph.passes.size(), 1u);
       EXPECT_EQ(g.graph.passes[0].name, "composite");
       expect_same(p, s, "none");
@@ -199,7 +204,8 @@ TEST(Prune, NoSourcesRunsNoBlur) {
 TEST(Prune, NonFiniteScenesAndUnreadPasses) {
   img::Image s = make_default_scene(32, 16);
   s.at(3, 3)[0] = NAN;
-  const GlowPlan plan = build_glow(params(32, 16, Tier::Dx9, img::Format::RGBA8, 2));
+  const GlowPlan plan =
+      plan_test::expect_built(build_glow(params(32, 16, Tier::Dx9, img::Format::RGBA8, 2)));
   EXPECT_TRUE(prune_glow(plan, s).left_out.empty());
   // A pass whose target nothing reads: left out by the generic rule.
   EffectGraph g = plan.graph;
@@ -218,7 +224,8 @@ TEST(Prune, NonFiniteScenesAndUnreadPasses) {
 TEST(Prune, KeptTapsAreExplained) {
   const img::Image scene = make_default_scene(320, 180);
   for (img::Format f : {img::Format::RGBA16F, img::Format::RGBA32F}) {
-    const PrunedGraph g = prune_glow(build_glow(params(320, 180, Tier::Dx9, f, 4)), scene);
+    const PrunedGraph g =
+        prune_glow(plan_test::expect_built(build_glow(params(320, 180, Tier::Dx9, f, 4))), scene);
     ASSERT_EQ(g.kept.size(), 1u) << img::format_name(f);
     EXPECT_EQ(g.kept[0].what, "every blur tap");
     EXPECT_NE(g.kept[0].why.find("every tap can change a stored value"), std::string::npos)
@@ -227,12 +234,14 @@ TEST(Prune, KeptTapsAreExplained) {
               std::string::npos)
         << g.kept[0].why; // 2^-25 and 2^-126
   }
-  const PrunedGraph dx8 =
-      prune_glow(build_glow(params(320, 180, Tier::Dx8, img::Format::RGBA8, 4)), scene);
+  const PrunedGraph dx8 = prune_glow(
+      plan_test::expect_built(build_glow(params(320, 180, Tier::Dx8, img::Format::RGBA8, 4))),
+      scene);
   ASSERT_EQ(dx8.kept.size(), 1u);
   EXPECT_NE(dx8.kept[0].why.find("ps.1.x"), std::string::npos) << dx8.kept[0].why;
-  const PrunedGraph dx9 =
-      prune_glow(build_glow(params(320, 180, Tier::Dx9, img::Format::RGBA8, 4)), scene);
+  const PrunedGraph dx9 = prune_glow(
+      plan_test::expect_built(build_glow(params(320, 180, Tier::Dx9, img::Format::RGBA8, 4))),
+      scene);
   EXPECT_TRUE(dx9.kept.empty()); // ps_2_0 passes are judged one by one (left out or kept)
 }
 

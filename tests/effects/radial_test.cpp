@@ -74,8 +74,9 @@ class RadialWays : public vulkan::test::VulkanTest, public ::testing::WithParamI
 
 TEST_P(RadialWays, SingleBrightPixelMatchesTheClosedForm) {
   const RadialParams r = still_params();
-  GlowPlan plan = build_radial(glow_params(GetParam()), r);
-  ASSERT_TRUE(plan) << plan.error;
+  PlanResult plan_built = build_radial(glow_params(GetParam()), r);
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  GlowPlan& plan = *plan_built;
   CpuPassDevice cpu(2);
   AnalyticPassDevice analytic;
   auto vk = make_vulkan_pass_device(*dev);
@@ -121,8 +122,9 @@ TEST_P(RadialWays, ThreeWaysAgreeOnEveryPassWithTheStarMoving) {
     RadialParams r = still_params();
     r.amplitude = 3;
     r.frame = 17;
-    GlowPlan plan = build_radial(glow_params(GetParam(), f), r);
-    ASSERT_TRUE(plan) << plan.error;
+    PlanResult plan_built = build_radial(glow_params(GetParam(), f), r);
+    ASSERT_TRUE(plan_built) << plan_built.message();
+    GlowPlan& plan = *plan_built;
     CpuPassDevice cpu(2);
     AnalyticPassDevice analytic;
     auto vk = make_vulkan_pass_device(*dev);
@@ -163,8 +165,9 @@ TEST_P(RadialWays, FramesAnimateTheStarAsTheStillFramesDo) {
   r.frame = kFirst;
   r.frames = kFrames;
   const GlowParams g = glow_params(GetParam());
-  GlowPlan moving = build_radial(g, r);
-  ASSERT_TRUE(moving) << moving.error;
+  PlanResult moving_built = build_radial(g, r);
+  ASSERT_TRUE(moving_built) << moving_built.message();
+  GlowPlan& moving = *moving_built;
   ASSERT_EQ(moving.graph.passes.front().vs_constants_per_frame.size(), kFrames);
   const img::Image scene = random_scene(3);
   CpuPassDevice cpu(2);
@@ -185,8 +188,9 @@ TEST_P(RadialWays, FramesAnimateTheStarAsTheStillFramesDo) {
       RadialParams still = r;
       still.frame = kFirst + f;
       still.frames = 1;
-      GlowPlan plan = build_radial(g, still);
-      ASSERT_TRUE(plan) << plan.error;
+      PlanResult plan_built = build_radial(g, still);
+      ASSERT_TRUE(plan_built) << plan_built.message();
+      GlowPlan& plan = *plan_built;
       GlowRun one = run_glow(plan, scene, *d, false);
       ASSERT_TRUE(one.run.ok()) << one.run.message();
       EXPECT_EQ(frames[f].rgba, one.images.at(std::string(kStarTexture)).rgba)
@@ -222,8 +226,9 @@ TEST_P(RadialWays, AnimatedStarMatchesTheClosedFormEachFrame) {
   r.frame = kFirst;
   r.frames = kFrames;
   const GlowParams g = glow_params(GetParam());
-  GlowPlan plan = build_radial(g, r);
-  ASSERT_TRUE(plan) << plan.error;
+  PlanResult plan_built = build_radial(g, r);
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  GlowPlan& plan = *plan_built;
   img::Image ramp(kW, kH);
   for (uint32_t y = 0; y < kH; ++y)
     for (uint32_t x = 0; x < kW; ++x) {
@@ -308,10 +313,11 @@ TEST(Radial, StarMovesWithTheFrameAndStillAtAmplitudeZero) {
 TEST(Radial, PlanRefusesBadParameters) {
   RadialParams r;
   r.steps = 80; // 2·80·0.0075 = 1.2: zooms past the centre
-  EXPECT_NE(build_radial(glow_params(Tier::Dx9), r).error.find("radial step"), std::string::npos);
+  EXPECT_NE(build_radial(glow_params(Tier::Dx9), r).message().find("radial step"),
+            std::string::npos);
   r = RadialParams{};
   r.strength = 2;
-  EXPECT_NE(build_radial(glow_params(Tier::Dx8), r).error.find("strength"), std::string::npos);
+  EXPECT_NE(build_radial(glow_params(Tier::Dx8), r).message().find("strength"), std::string::npos);
   EXPECT_TRUE(build_radial(glow_params(Tier::Dx9), r));
 }
 

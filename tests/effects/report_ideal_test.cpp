@@ -132,7 +132,9 @@ TEST(ReportIdeal, SweepErrorsEqualAnIndependentComputation) {
     EXPECT_TRUE(c.all_agree);
 
     CpuPassDevice cpu;
-    const GlowRun run = run_glow(build_glow(scene.params), image, cpu);
+    const PlanResult plan = build_glow(scene.params);
+    ASSERT_TRUE(plan) << plan.message();
+    const GlowRun run = run_glow(*plan, image, cpu);
     ASSERT_TRUE(run.run.ok()) << run.run.message();
     const RgbImage ideal = direct_ideal(image, scene.params.profile);
     const img::Image& glow = run.images.at("glow");

@@ -42,8 +42,8 @@ TEST(SceneBytecode, ListingFileMayBeATokenStream) {
                        << R"(": "l4.pso"}}})";
   ir::Result<Scene> s = load_scene_file(scene.string());
   ASSERT_TRUE(s) << s.message();
-  GlowPlan plan = build_glow(s->params);
-  EXPECT_TRUE(plan) << plan.error;
+  PlanResult plan_built = build_glow(s->params);
+  ASSERT_TRUE(plan_built) << plan_built.message();
 }
 
 TEST(SceneBytecode, Ps1xMaxPresets) {
@@ -62,8 +62,9 @@ TEST(SceneBytecode, Ps1xMaxPresets) {
   ir::Result<Scene> n = load("4");
   ASSERT_TRUE(n) << n.message();
   EXPECT_EQ(n->params.ps1x_max, 4.0f);
-  GlowPlan plan = build_glow(r->params);
-  ASSERT_TRUE(plan) << plan.error;
+  PlanResult plan_built = build_glow(r->params);
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  GlowPlan& plan = *plan_built;
   EXPECT_EQ(plan.graph.conventions.ps1x_max_value, 8.0f);
   ir::Result<Scene> bad = load("0.5");
   EXPECT_FALSE(bad);

@@ -32,8 +32,8 @@ TEST(Scene, EveryShippedSceneLoadsAndBuilds) {
     ++n;
     ir::Result<Scene> s = load_scene_file(e.path().string());
     ASSERT_TRUE(s) << e.path() << "\n" << s.message();
-    GlowPlan plan = build_scene_effect(*s);
-    EXPECT_TRUE(plan) << e.path() << ": " << plan.error;
+    PlanResult plan = build_scene_effect(*s);
+    EXPECT_TRUE(plan) << e.path() << ": " << plan.message();
     img::ImageResult image = load_scene_image(*s);
     ASSERT_TRUE(image) << image.message();
     EXPECT_EQ(image->width, s->params.width);

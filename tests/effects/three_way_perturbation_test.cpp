@@ -44,8 +44,9 @@ void check_format(img::Format format) {
           p.half_texel = half;
           p.subtexel_bits = 0;
           const img::Image scene = make_scene(s, p.width, p.height);
-          const GlowPlan plan = build_glow(p);
-          ASSERT_TRUE(plan) << plan.error;
+          const PlanResult plan_built = build_glow(p);
+          ASSERT_TRUE(plan_built) << plan_built.message();
+          const GlowPlan& plan = *plan_built;
           const std::string name = std::string(tier_name(tier)) + " ds" + std::to_string(n) +
                                    (half ? " half" : " nohalf") + " scene " +
                                    std::to_string(int(s));

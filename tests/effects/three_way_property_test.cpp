@@ -80,8 +80,9 @@ TEST_F(ThreeWayProperty, EveryLegalRandomSceneAgreesThreeWays) {
   for (int n = 0; n < kScenes; ++n) {
     RandomScene s = draw_scene(rng);
     SCOPED_TRACE(s.description);
-    GlowPlan plan = build_glow(s.params);
-    ASSERT_TRUE(plan) << plan.error; // every drawn scene is legal
+    PlanResult plan_built = build_glow(s.params);
+    ASSERT_TRUE(plan_built) << plan_built.message();
+    GlowPlan& plan = *plan_built; // every drawn scene is legal
     CpuPassDevice cpu_dev(2);
     AnalyticPassDevice analytic;
     auto vk_dev = make_vulkan_pass_device(*dev);

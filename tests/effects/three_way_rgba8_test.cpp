@@ -43,8 +43,9 @@ TEST(ThreeWayRgba8, DownsampleStoresTheInterpretersBytesAtExactMidpoints) {
     p.width = 50;
     p.height = 31;
     const img::Image scene = random_scene(p.width, p.height, 1122);
-    GlowPlan plan = build_glow(p);
-    ASSERT_TRUE(plan) << plan.error;
+    PlanResult plan_built = build_glow(p);
+    ASSERT_TRUE(plan_built) << plan_built.message();
+    GlowPlan& plan = *plan_built;
     CpuPassDevice cpu_dev(2);
     AnalyticPassDevice analytic;
     GlowRun a = run_glow(plan, scene, cpu_dev, true), b = run_glow(plan, scene, analytic, true);
@@ -137,8 +138,9 @@ TEST(ThreeWaySameInputs, Rgba8ReplacingPassesAgreeAlone) {
         p.format = img::Format::RGBA8;
         p.width = 50;
         p.height = 31;
-        GlowPlan plan = build_glow(p);
-        ASSERT_TRUE(plan) << plan.error;
+        PlanResult plan_built = build_glow(p);
+        ASSERT_TRUE(plan_built) << plan_built.message();
+        GlowPlan& plan = *plan_built;
         CpuPassDevice cpu_dev(2);
         // The interpreter's images after every pass: the inputs each pass gets.
         GlowRun whole = run_glow(plan, random_scene(p.width, p.height, seed), cpu_dev, true);

@@ -117,8 +117,9 @@ TEST_P(ThreeWay, EveryPairAgreesOnEveryPass) {
   p.half_texel = c.half_texel;
   p.subtexel_bits = 0; // lavapipe weights float textures exactly
   const img::Image scene = make_scene(c.scene, p.width, p.height);
-  GlowPlan plan = build_glow(p);
-  ASSERT_TRUE(plan) << plan.error;
+  PlanResult plan_built = build_glow(p);
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  GlowPlan& plan = *plan_built;
 
   CpuPassDevice cpu_dev(2);
   AnalyticPassDevice analytic;
@@ -169,8 +170,9 @@ TEST_P(ThreeWayFullSize, DefaultSceneEveryPairAgrees) {
   p.downsample = c.downsample;
   p.format = c.format;
   p.subtexel_bits = 0;
-  GlowPlan plan = build_glow(p);
-  ASSERT_TRUE(plan) << plan.error;
+  PlanResult plan_built = build_glow(p);
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  GlowPlan& plan = *plan_built;
   const img::Image scene = make_default_scene(p.width, p.height);
   CpuPassDevice cpu_dev(2);
   AnalyticPassDevice analytic;
@@ -215,8 +217,9 @@ void check_half_texel_rule(Tier tier, bool half_texel) {
   // than the model's 1e-4 between the two rules at this scene's texels.
   p.profile.terms = {{8.0, 0.7}, {1.5, 0.3}};
   const img::Image scene = make_scene(Scene::RandomAlpha, p.width, p.height);
-  GlowPlan plan = build_glow(p);
-  ASSERT_TRUE(plan) << plan.error;
+  PlanResult plan_built = build_glow(p);
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  GlowPlan& plan = *plan_built;
   AnalyticPassDevice analytic;
   GlowRun run = run_glow(plan, scene, analytic, true);
   ASSERT_TRUE(run.run.ok()) << run.run.message();
@@ -296,8 +299,9 @@ TEST(ThreeWayHalfTexel, Dx8WithoutHalfTexelBlurShiftsAsTheCornerModelSays) {
 TEST(ThreeWayAnalytic, UnmodelledPassesAreErrors) {
   GlowParams p;
   const img::Image scene = make_scene(Scene::RandomAlpha, p.width, p.height);
-  GlowPlan plan = build_glow(p);
-  ASSERT_TRUE(plan) << plan.error;
+  PlanResult plan_built = build_glow(p);
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  GlowPlan& plan = *plan_built;
   ListingResult product = builtin_listing("glow/extract_sources.psh"); // rgb × alpha
   ASSERT_TRUE(product) << product.message();
   GlowPlan bad = plan;

@@ -56,8 +56,9 @@ TEST_P(GlowVulkan, EveryPassAgrees) {
   p.half_texel = c.half_texel;
   p.intensity = c.intensity;
   p.subtexel_bits = 0; // lavapipe weights float textures exactly (see cmd_glow.cpp)
-  GlowPlan plan = build_glow(p);
-  ASSERT_TRUE(plan) << plan.error;
+  PlanResult plan_built = build_glow(p);
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  GlowPlan& plan = *plan_built;
   const img::Image scene = c.random_scene ? random_scene(c.width, c.height, c.format)
                                           : make_default_scene(c.width, c.height, c.format);
   CpuPassDevice cpu_dev(2);
@@ -132,8 +133,9 @@ TEST_F(GlowVulkanDevice, CompositeAgreesExactlyOnRoundingTies) {
   p.height = 64;
   p.downsample = 2;
   p.format = img::Format::RGBA8;
-  GlowPlan plan = build_glow_dx9(p);
-  ASSERT_TRUE(plan) << plan.error;
+  PlanResult plan_built = build_glow_dx9(p);
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  GlowPlan& plan = *plan_built;
   const img::Image scene = make_default_scene(128, 64, p.format);
   CpuPassDevice cpu_dev(2);
   auto vk_dev = make_vulkan_pass_device(*dev);
@@ -170,8 +172,9 @@ TEST_F(GlowVulkanDevice, NothingGlowsGivesTheSceneBack) {
     p.width = 128;
     p.height = 64;
     p.format = f;
-    GlowPlan plan = build_glow_dx9(p);
-    ASSERT_TRUE(plan) << plan.error;
+    PlanResult plan_built = build_glow_dx9(p);
+    ASSERT_TRUE(plan_built) << plan_built.message();
+    GlowPlan& plan = *plan_built;
     img::Image scene = make_default_scene(128, 64, f);
     for (size_t i = 3; i < scene.rgba.size(); i += 4) scene.rgba[i] = 0.0f;
     auto vk_dev = make_vulkan_pass_device(*dev);

@@ -330,15 +330,11 @@ std::string check_params(const GlowParams& p, const TierRecipe& r) {
 
 } // namespace
 
-GlowPlan build_glow_graph(const GlowParams& p, const TierRecipe& r) {
+PlanResult build_glow_graph(const GlowParams& p, const TierRecipe& r) {
   GlowPlan plan;
-  plan.error = check_params(p, r);
-  if (!plan.error.empty()) return plan;
+  if (std::string e = check_params(p, r); !e.empty()) return plan_failure(std::move(e));
   ir::Result<std::vector<BlurTap>> taps = sample_blur_profile(p.profile, p.downsample);
-  if (!taps) {
-    plan.error = taps.message();
-    return plan;
-  }
+  if (!taps) return plan_failure(taps.message());
   plan.taps = std::move(taps).value();
   if (r.constants_clamp_to_one) {
     size_t above = 0;
@@ -353,15 +349,10 @@ GlowPlan build_glow_graph(const GlowParams& p, const TierRecipe& r) {
                       above, top, r.tier));
   }
   ir::Result<Listings> l = load_listings(p, r.listings);
-  if (!l) {
-    plan.error = l.message();
-    return plan;
-  }
+  if (!l) return plan_failure(l.message());
   if (p.context.fog.on && ir::is_ps1x(l->fogged->profile))
-    if (std::string why = fog_ps1x_limit(p.context.fog); !why.empty()) {
-      plan.error = fmt::format("tier {}: {}", r.tier, why);
-      return plan;
-    }
+    if (std::string why = fog_ps1x_limit(p.context.fog); !why.empty())
+      return plan_failure(fmt::format("tier {}: {}", r.tier, why));
 
   const uint32_t gw = (p.width + p.downsample - 1) / p.downsample;
   const uint32_t gh = (p.height + p.downsample - 1) / p.downsample;
@@ -416,7 +407,7 @@ GlowPlan build_glow_graph(const GlowParams& p, const TierRecipe& r) {
     plan.quantization = quantization_summary(weights, r.rounding);
   }
   g.passes.push_back(b.composite());
-  plan.error = check_graph(g).message();
+  if (ir::Status checked = check_graph(g); !checked) return plan_failure(checked.message());
   return plan;
 }
 

@@ -54,7 +54,7 @@ struct TierRecipe {
 // Checks the parameters every tier shares (downsample, size, intensity ≥ 0 and finite,
 // intensity ≤ recipe.max_intensity), loads the listings, samples the profile and builds
 // the graph. Errors name the parameter (or the listing) at fault.
-GlowPlan build_glow_graph(const GlowParams& params, const TierRecipe& recipe);
+PlanResult build_glow_graph(const GlowParams& params, const TierRecipe& recipe);
 
 // A ramped parameter's value for frames 1..ramp.span() (glow_frames.cpp); empty when the
 // parameter does not ramp.

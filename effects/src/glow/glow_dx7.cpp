@@ -47,13 +47,9 @@ ir::Result<std::shared_ptr<const tss::Lowered>> blur_states(const GlowParams& p)
 
 } // namespace
 
-GlowPlan build_glow_dx7(const GlowParams& params) {
-  GlowPlan failed;
+PlanResult build_glow_dx7(const GlowParams& params) {
   ir::Result<std::shared_ptr<const tss::Lowered>> blur = blur_states(params);
-  if (!blur) {
-    failed.error = blur.message();
-    return failed;
-  }
+  if (!blur) return plan_failure(blur.message());
   std::shared_ptr<const tss::Lowered> states = std::move(blur).value();
   detail::TierRecipe r;
   r.tier = "dx7";

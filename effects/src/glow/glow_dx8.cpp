@@ -5,7 +5,7 @@
 
 namespace tierlift::effects {
 
-GlowPlan build_glow_dx8(const GlowParams& params) {
+PlanResult build_glow_dx8(const GlowParams& params) {
   detail::TierRecipe r;
   r.tier = "dx8";
   // A ps.1.x constant clamps to [-1, 1], so intensity ≤ 1 goes into c0 as it is; above 1

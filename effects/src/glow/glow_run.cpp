@@ -3,17 +3,8 @@
 #include <fmt/format.h>
 
 namespace tierlift::effects {
-namespace {
-
-ir::Failure plan_failure(const GlowPlan& plan) {
-  return ir::fail("glow", "glow", plan.error);
-}
-
-} // namespace
-
 GlowRun run_glow(const GlowPlan& plan, const img::Image& scene, PassDevice& device,
                  bool keep_pass_images, const PassProgress& progress) {
-  if (!plan) return GlowRun{plan_failure(plan), {}};
   ImageMap images;
   images.emplace(std::string(kSceneTexture), scene);
   ir::Result<GraphRun> run = run_graph(plan.graph, device, images, keep_pass_images, progress);
@@ -23,7 +14,6 @@ GlowRun run_glow(const GlowPlan& plan, const img::Image& scene, PassDevice& devi
 GlowFrames run_glow_frames(const GlowPlan& plan, const img::Image& scene, PassDevice& device,
                            unsigned frames, const std::vector<std::string>& read_back,
                            const GlowFrameSink& sink, const SceneAt& scene_at) {
-  if (!plan) return GlowFrames{plan_failure(plan), {}};
   ImageMap images;
   images.emplace(std::string(kSceneTexture), scene);
   FrameSink frame_sink;

@@ -36,27 +36,18 @@ struct Axis {
 
 } // namespace
 
-GlowPlan build_glsl_blur(const GlowParams& params, const GlslBlurParams& g) {
+PlanResult build_glsl_blur(const GlowParams& params, const GlslBlurParams& g) {
   GlowPlan plan;
   const uint32_t w = params.width, h = params.height;
-  if (w == 0 || h == 0 || w > img::kMaxDimension || h > img::kMaxDimension) {
-    plan.error = fmt::format("scene size {}x{}: expected 1..{} each", w, h, img::kMaxDimension);
-    return plan;
-  }
-  if (g.weights.empty() || g.weights.size() % 2 == 0) {
-    plan.error =
-        fmt::format("glsl weights: {} given; a centred kernel has an odd count", g.weights.size());
-    return plan;
-  }
-  if (!std::isfinite(g.step)) {
-    plan.error = "glsl step: not a finite number";
-    return plan;
-  }
+  if (w == 0 || h == 0 || w > img::kMaxDimension || h > img::kMaxDimension)
+    return plan_failure(
+        fmt::format("scene size {}x{}: expected 1..{} each", w, h, img::kMaxDimension));
+  if (g.weights.empty() || g.weights.size() % 2 == 0)
+    return plan_failure(
+        fmt::format("glsl weights: {} given; a centred kernel has an odd count", g.weights.size()));
+  if (!std::isfinite(g.step)) return plan_failure("glsl step: not a finite number");
   ListingResult vs = builtin_listing(kQuadVs, params.listing_options);
-  if (!vs) {
-    plan.error = vs.message();
-    return plan;
-  }
+  if (!vs) return plan_failure(vs.message());
   EffectGraph& graph = plan.graph;
   graph.conventions.subtexel_bits = params.subtexel_bits;
   for (std::string_view t : {kSceneTexture, kBlurHTarget, kFinalTexture})
@@ -71,24 +62,17 @@ GlowPlan build_glsl_blur(const GlowParams& params, const GlslBlurParams& g) {
   const int n = static_cast<int>(g.weights.size() / 2);
   for (const Axis& a : axes) {
     glsl::CompileResult shader = load_glsl(a.glsl_file, a.glsl_builtin);
-    if (!shader) {
-      plan.error = shader.error;
-      return plan;
-    }
+    if (!shader) return plan_failure(shader.error);
     std::map<std::string, std::string, std::less<>> files;
     if (!a.twin_file.empty()) files.emplace(std::string(a.twin_builtin), a.twin_file);
     ListingResult twin = glow_listing(a.twin_builtin, files, params.listing_options);
-    if (!twin) {
-      plan.error = twin.message();
-      return plan;
-    }
+    if (!twin) return plan_failure(twin.message());
     for (const glsl::Sampler& s : shader.shader->samplers)
-      if (s.stage != 0) {
-        plan.error = fmt::format("{}: error: sampler '{}' is stage {}; the blur pass binds its "
-                                 "source to stage 0 only\n",
-                                 shader.shader->file, s.name, s.stage);
-        return plan;
-      }
+      if (s.stage != 0)
+        return plan_failure(
+            fmt::format("{}: error: sampler '{}' is stage {}; the blur pass binds its "
+                        "source to stage 0 only\n",
+                        shader.shader->file, s.name, s.stage));
     PassDesc p;
     p.name = a.name;
     p.vs = *vs;
@@ -125,7 +109,7 @@ GlowPlan build_glsl_blur(const GlowParams& params, const GlslBlurParams& g) {
   plan.glow_width = w;
   plan.glow_height = h;
   plan.blur_passes_per_axis = 1;
-  if (ir::Status checked = check_graph(graph); !checked) plan.error = checked.message();
+  if (ir::Status checked = check_graph(graph); !checked) return plan_failure(checked.message());
   return plan;
 }
 

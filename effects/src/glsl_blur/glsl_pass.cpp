@@ -40,30 +40,21 @@ ListingResult assemble(std::string text, const std::string& name) {
 
 } // namespace
 
-GlowPlan build_glsl_pass(const glsl::FragmentShader& shader, uint32_t width, uint32_t height,
-                         img::Format format, pass::Filter filter) {
+PlanResult build_glsl_pass(const glsl::FragmentShader& shader, uint32_t width, uint32_t height,
+                           img::Format format, pass::Filter filter) {
   GlowPlan plan;
-  if (width == 0 || height == 0 || width > img::kMaxDimension || height > img::kMaxDimension) {
-    plan.error = fmt::format("size {}x{}: expected 1..{} each", width, height, img::kMaxDimension);
-    return plan;
-  }
+  if (width == 0 || height == 0 || width > img::kMaxDimension || height > img::kMaxDimension)
+    return plan_failure(
+        fmt::format("size {}x{}: expected 1..{} each", width, height, img::kMaxDimension));
   for (const glsl::Input& in : shader.inputs)
-    if (in.location >= kGlslPassInputs) {
-      plan.error = fmt::format("{}: error: input '{}' is at location {}; the pass's vertex "
-                               "stage writes texture coordinates at locations 0..{} only\n",
-                               shader.file, in.name, in.location, kGlslPassInputs - 1);
-      return plan;
-    }
+    if (in.location >= kGlslPassInputs)
+      return plan_failure(fmt::format("{}: error: input '{}' is at location {}; the pass's vertex "
+                                      "stage writes texture coordinates at locations 0..{} only\n",
+                                      shader.file, in.name, in.location, kGlslPassInputs - 1));
   ListingResult vs = builtin_listing(kQuadVs);
-  if (!vs) {
-    plan.error = vs.message();
-    return plan;
-  }
+  if (!vs) return plan_failure(vs.message());
   ListingResult twin = assemble(twin_text(shader), "(the GLSL pass's generated ps_2_0 twin)");
-  if (!twin) {
-    plan.error = twin.message();
-    return plan;
-  }
+  if (!twin) return plan_failure(twin.message());
   EffectGraph& g = plan.graph;
   g.textures.push_back({std::string(kSceneTexture), width, height, format, true});
   g.textures.push_back({std::string(kFinalTexture), width, height, format, false});
@@ -85,7 +76,7 @@ GlowPlan build_glsl_pass(const glsl::FragmentShader& shader, uint32_t width, uin
   g.passes.push_back(std::move(p));
   plan.glow_width = width;
   plan.glow_height = height;
-  if (ir::Status checked = check_graph(g); !checked) plan.error = checked.message();
+  if (ir::Status checked = check_graph(g); !checked) return plan_failure(checked.message());
   return plan;
 }
 

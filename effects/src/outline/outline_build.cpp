@@ -52,12 +52,11 @@ std::vector<std::array<double, 2>> outline_polygon(const OutlineParams& o) {
   return corners;
 }
 
-GlowPlan build_outline(const GlowParams& glow, const OutlineParams& o) {
-  GlowPlan plan;
-  plan.error = check_outline(glow, o);
-  if (!plan.error.empty()) return plan;
-  plan = build_glow(glow);
-  if (!plan) return plan;
+PlanResult build_outline(const GlowParams& glow, const OutlineParams& o) {
+  if (std::string e = check_outline(glow, o); !e.empty()) return plan_failure(std::move(e));
+  PlanResult built = build_glow(glow);
+  if (!built) return built;
+  GlowPlan plan = std::move(*built);
   EffectGraph& g = plan.graph;
   std::shared_ptr<const ir::Program> object_vs, object_ps, add_ps;
   const std::pair<std::shared_ptr<const ir::Program>*, std::string_view> wanted[] = {
@@ -66,10 +65,7 @@ GlowPlan build_outline(const GlowParams& glow, const OutlineParams& o) {
       {&add_ps, "outline/add_glow.psh"}};
   for (const auto& [slot, path] : wanted) {
     ListingResult l = glow_listing(path, glow.listing_files, glow.listing_options);
-    if (!l) {
-      plan.error = l.message();
-      return plan;
-    }
+    if (!l) return plan_failure(l.message());
     *slot = std::move(l).value();
   }
 
@@ -117,10 +113,7 @@ GlowPlan build_outline(const GlowParams& glow, const OutlineParams& o) {
   const PassDesc* composite = nullptr;
   for (const PassDesc& d : g.passes)
     if (d.name == "composite") composite = &d;
-  if (!composite) {
-    plan.error = "the glow graph has no composite pass";
-    return plan;
-  }
+  if (!composite) return plan_failure("the glow graph has no composite pass");
   PassDesc base = *composite;
   base.name = "base";
   base.ps_constants = {pass::Vec4{1, 1, 1, 0}};
@@ -146,7 +139,7 @@ GlowPlan build_outline(const GlowParams& glow, const OutlineParams& o) {
   passes.push_back(std::move(base));
   passes.push_back(std::move(outline));
   g.passes = std::move(passes);
-  plan.error = check_graph(g).message();
+  if (ir::Status checked = check_graph(g); !checked) return plan_failure(checked.message());
   return plan;
 }
 

@@ -242,7 +242,7 @@ PrunedGraph prune_glow(const GlowPlan& plan, const img::Image& scene) {
   PrunedGraph r;
   r.graph = plan.graph;
   r.passes_before = plan.graph.passes.size();
-  if (!plan || varies_between_frames(plan.graph)) return r;
+  if (varies_between_frames(plan.graph)) return r;
   if (!is_glow_graph(plan.graph)) return prune_unread(plan.graph, kFinalTexture);
   double most = 0; // the largest value of the glow sources (rgb × alpha, and alpha)
   bool any_alpha = false;

@@ -123,11 +123,10 @@ std::array<std::array<double, 2>, 4> star_offsets(const RadialParams& r, unsigne
   return out;
 }
 
-GlowPlan build_radial(const GlowParams& g, const RadialParams& r) {
+PlanResult build_radial(const GlowParams& g, const RadialParams& r) {
   GlowPlan plan;
   const TierListings t = tier_listings(g.tier);
-  plan.error = check(g, r, t);
-  if (!plan.error.empty()) return plan;
+  if (std::string e = check(g, r, t); !e.empty()) return plan_failure(std::move(e));
   ProgramPtr star_vs, star_ps, zoom_vs, zoom_ps, composite_ps;
   const std::pair<ProgramPtr*, std::string_view> wanted[] = {{&star_vs, t.star_vs},
                                                              {&star_ps, t.star_ps},
@@ -136,10 +135,7 @@ GlowPlan build_radial(const GlowParams& g, const RadialParams& r) {
                                                              {&composite_ps, t.composite_ps}};
   for (const auto& [slot, path] : wanted) {
     ListingResult l = glow_listing(path, g.listing_files, g.listing_options);
-    if (!l) {
-      plan.error = l.message();
-      return plan;
-    }
+    if (!l) return plan_failure(l.message());
     *slot = std::move(l).value();
   }
   EffectGraph& graph = plan.graph;
@@ -202,7 +198,7 @@ GlowPlan build_radial(const GlowParams& g, const RadialParams& r) {
   bind(comp, 0, kStarTexture, sampler(pass::Filter::Point, pass::AddressMode::Clamp), 1, false);
   bind(comp, 1, kGlowTexture, sampler(pass::Filter::Point, pass::AddressMode::Clamp), 1, false);
   graph.passes.push_back(std::move(comp));
-  plan.error = check_graph(graph).message();
+  if (ir::Status checked = check_graph(graph); !checked) return plan_failure(checked.message());
   return plan;
 }
 

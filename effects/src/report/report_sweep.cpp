@@ -58,11 +58,12 @@ std::string run_config(ConfigResult& out, const Scene& scene, const img::Image& 
                        const SweepSettings& s, vulkan::Device* vk, const RgbImage& ideal_glow_img,
                        const RgbImage& ideal_final_img) {
   const GlowParams params = params_for(scene.params, out.config);
-  const GlowPlan plan = build_glow(params);
-  if (!plan) {
-    out.skipped = plan.error;
+  const PlanResult built = build_glow(params);
+  if (!built) {
+    out.skipped = built.message();
     return {};
   }
+  const GlowPlan& plan = *built;
   out.taps = unsigned(plan.taps.size());
   out.passes = unsigned(plan.graph.passes.size());
   out.glow_width = plan.glow_width;

@@ -64,7 +64,7 @@ bool scene_animated(const Scene& scene) {
   return scene.params.animated();
 }
 
-GlowPlan build_scene_effect(const Scene& scene) {
+PlanResult build_scene_effect(const Scene& scene) {
   if (scene.effect == "radial-beams") return build_radial(scene.params, scene.radial);
   if (scene.effect == "stencil-outline") return build_outline(scene.params, scene.outline);
   if (scene.effect == "glsl-blur") return build_glsl_blur(scene.params, scene.glsl);

@@ -44,13 +44,17 @@ void judge_stress_row(StressRow& row) {
 
 namespace stress {
 
-std::vector<WayImages> run_on_ways(const GlowPlan& plan, const img::Image& scene,
+std::vector<WayImages> run_on_ways(const PlanResult& plan, const img::Image& scene,
                                    const StressOptions& options) {
   std::vector<WayImages> out;
   for (const std::string& way : options.ways) {
     std::unique_ptr<PassDevice> device = options.make_device ? options.make_device(way) : nullptr;
     if (!device) continue;
-    GlowRun run = run_glow(plan, scene, *device);
+    if (!plan) {
+      out.push_back({way, {}, plan.message()});
+      continue;
+    }
+    GlowRun run = run_glow(*plan, scene, *device);
     out.push_back({way, std::move(run.images), run.run.ok() ? "" : run.run.message()});
   }
   return out;
@@ -95,6 +99,11 @@ double texel_red(const WayImages& w, std::string_view texture, uint32_t x, uint3
   if (it == w.images.end() || x >= it->second.width || y >= it->second.height)
     return std::numeric_limits<double>::quiet_NaN();
   return it->second.at(x, y)[0];
+}
+
+const GlowPlan& shape(const PlanResult& plan) {
+  static const GlowPlan kNone;
+  return plan ? *plan : kNone;
 }
 
 void set_blur_weights(GlowPlan& plan, const std::vector<double>& weights) {

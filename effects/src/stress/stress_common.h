@@ -21,7 +21,7 @@ struct WayImages {
 
 // The plan over `scene` on each way of `options` that has a device (a way without one is
 // left out: the Vulkan device may be missing on a machine without Vulkan).
-std::vector<WayImages> run_on_ways(const GlowPlan& plan, const img::Image& scene,
+std::vector<WayImages> run_on_ways(const PlanResult& plan, const img::Image& scene,
                                    const StressOptions& options);
 
 // What a device stores for an fp32 value `v` in format f: RGBA8 rounds to nearest of 255
@@ -46,6 +46,9 @@ double texel_red(const WayImages& w, std::string_view texture, uint32_t x, uint3
 // tap order; padding taps keep weight 0): what a device that stores its weights otherwise
 // (8-bit constants, a printed kernel) runs.
 void set_blur_weights(GlowPlan& plan, const std::vector<double>& weights);
+// The plan, or an empty one (no taps, size 0) when it failed: a row still describes what
+// was asked, and says why it did not run (its error).
+const GlowPlan& shape(const PlanResult& plan);
 
 // The stress cases: an id and what runs it (rows not yet judged).
 struct StressCase {

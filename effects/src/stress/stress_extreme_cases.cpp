@@ -20,7 +20,7 @@ using img::Format;
 std::vector<StressRow> non_finite(const StressOptions& o) {
   constexpr uint32_t w = 27, h = 9;
   GlowParams p = small_params(w, h, 1, Format::RGBA32F, 1.0);
-  const GlowPlan plan = build_glow(p);
+  const PlanResult plan = build_glow(p);
   img::Image scene = uniform_scene(w, h, 0, 0);
   const float kinds[3] = {std::numeric_limits<float>::quiet_NaN(),
                           std::numeric_limits<float>::infinity(),
@@ -70,7 +70,7 @@ std::vector<StressRow> non_finite(const StressOptions& o) {
 StressRow denormal(const StressOptions& o, Format f) {
   const float v = f == Format::RGBA32F ? 1e-39f : 1e-5f;
   GlowParams p = small_params(3, 3, 1, f, 1.0, 1);
-  const GlowPlan plan = build_glow(p);
+  const PlanResult plan = build_glow(p);
   img::Image scene = uniform_scene(3, 3, 0, 0);
   float* t = scene.at(1, 1);
   t[0] = t[1] = t[2] = v;
@@ -97,7 +97,7 @@ StressRow denormal(const StressOptions& o, Format f) {
   for (const StressMeasure& m : row.measured)
     if (m.value == 0 && v != 0)
       row.note += fmt::format("{}{} flushed it to 0", row.note.empty() ? "" : "; ", m.way);
-  if (!plan) row.error = plan.error;
+  if (!plan) row.error = plan.message();
   return row;
 }
 

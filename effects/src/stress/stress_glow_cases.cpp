@@ -73,7 +73,7 @@ std::vector<StressRow> hdr(Format f, double v) {
 std::vector<StressRow> run_hdr(const StressOptions& o, Format f, double v) {
   std::vector<StressRow> rows = hdr(f, v);
   GlowParams p = small_params(9, 9, 1, f, 1.0);
-  const GlowPlan plan = build_glow(p);
+  const PlanResult plan = build_glow(p);
   img::Image scene = uniform_scene(9, 9, 0, 0);
   float* c = scene.at(4, 4);
   c[0] = c[1] = c[2] = float(v);
@@ -115,7 +115,7 @@ std::vector<StressRow> run_hdr(const StressOptions& o, Format f, double v) {
 // bit for bit, on a scene with a different value in every texel.
 std::vector<StressRow> sigma_tiny(const StressOptions& o) {
   GlowParams p = small_params(6, 5, 1, Format::RGBA32F, 0.01);
-  const GlowPlan plan = build_glow(p);
+  const PlanResult plan = build_glow(p);
   img::Image scene(6, 5, Format::RGBA32F);
   for (uint32_t y = 0; y < 5; ++y)
     for (uint32_t x = 0; x < 6; ++x) {
@@ -148,7 +148,7 @@ std::vector<StressRow> sigma_tiny(const StressOptions& o) {
 std::vector<StressRow> sigma_limit(const StressOptions& o, Format f) {
   constexpr double v = 0.25;
   GlowParams p = small_params(4, 4, 1, f, 4096, 2049);
-  const GlowPlan plan = build_glow(p);
+  const PlanResult plan = build_glow(p);
   StressRow row;
   row.id = fmt::format("sigma.limit.{}", fmt_name(f));
   row.regime = "sigma";
@@ -160,10 +160,10 @@ std::vector<StressRow> sigma_limit(const StressOptions& o, Format f) {
   const size_t per = kTapsPerBlurPassDx9;
   auto axis = [&](double in) {
     double y = 0;
-    for (size_t first = 0; first < plan.taps.size(); first += per) {
+    for (size_t first = 0; first < shape(plan).taps.size(); first += per) {
       double wsum = 0;
-      for (size_t t = first; t < std::min(plan.taps.size(), first + per); ++t)
-        wsum += double(float(plan.taps[t].weight));
+      for (size_t t = first; t < std::min(shape(plan).taps.size(), first + per); ++t)
+        wsum += double(float(shape(plan).taps[t].weight));
       y = device_store(f, y + in * wsum);
     }
     return y;
@@ -174,14 +174,14 @@ std::vector<StressRow> sigma_limit(const StressOptions& o, Format f) {
   // The devices sum a pass's eight products in fp32 before the store: a store that lands
   // within ~1e-7 of a rounding boundary may go the other way; allow 4 such flips.
   row.tolerance = 4 * step;
-  const double passes = double((plan.taps.size() + per - 1) / per);
+  const double passes = double((shape(plan).taps.size() + per - 1) / per);
   row.bound = fmt::format("recurrence y = Q(y + v·W_p) per pass, ±4 steps; drift bound "
                           "2·{}·step = {:.4g} (a toward-zero store moves up to a step)",
                           passes, 2 * passes * step);
   row = measured_row(row, run_on_ways(plan, uniform_scene(4, 4, float(v), 1), o),
                      [](const WayImages& w) { return texel_red(w, kGlowTexture, 1, 1); });
   row.note = fmt::format("drift from the ideal {:.4g}", std::fabs(row.expected - v));
-  if (!plan) row.error = plan.error;
+  if (!plan) row.error = plan.message();
   return {row};
 }
 
@@ -193,19 +193,19 @@ std::vector<StressRow> downsample_sizes(const StressOptions& o) {
   auto one = [&](std::string id, uint32_t w, uint32_t h, unsigned n, const img::Image& scene,
                  uint32_t gx, uint32_t gy, double expected, std::string bound) {
     GlowParams p = small_params(w, h, n, Format::RGBA32F, 1.0, 1);
-    const GlowPlan plan = build_glow(p);
+    const PlanResult plan = build_glow(p);
     StressRow row;
     row.id = std::move(id);
     row.regime = "downsample";
     row.format = "rgba32f";
     row.quantity = fmt::format("glow({},{}) of {}x{} at 1/{} (glow {}x{})", gx, gy, w, h, n,
-                               plan.glow_width, plan.glow_height);
+                               shape(plan).glow_width, shape(plan).glow_height);
     row.expected = expected;
     row.tolerance = 1e-6; // N² fp32 products of weight 1/N² and their ONE/ONE sums
     row.bound = std::move(bound);
     row = measured_row(row, run_on_ways(plan, scene, o),
                        [&](const WayImages& wi) { return texel_red(wi, kGlowTexture, gx, gy); });
-    if (!plan) row.error = plan.error;
+    if (!plan) row.error = plan.message();
     rows.push_back(row);
   };
   one("downsample.1x1.d4", 1, 1, 4, uniform_scene(1, 1, 0.75f, 1), 0, 0, 0.75,
@@ -232,7 +232,7 @@ std::vector<StressRow> downsample_sizes(const StressOptions& o) {
 std::vector<StressRow> intensity(const StressOptions& o, Format f) {
   GlowParams p = small_params(4, 4, 1, f, 1.0);
   p.intensity = 1000;
-  const GlowPlan plan = build_glow(p);
+  const PlanResult plan = build_glow(p);
   StressRow row;
   row.id = fmt::format("intensity.1000.{}", fmt_name(f));
   row.regime = "saturation";
@@ -261,8 +261,8 @@ std::vector<StressRow> intensity(const StressOptions& o, Format f) {
 StressRow weights_row(const StressOptions& o, std::string id, std::string quantity,
                       const std::vector<double>& weights, std::string bound) {
   GlowParams p = small_params(4, 4, 1, Format::RGBA32F, 2.0, unsigned(weights.size()));
-  GlowPlan plan = build_glow(p);
-  set_blur_weights(plan, weights);
+  PlanResult plan = build_glow(p);
+  if (plan) set_blur_weights(*plan, weights);
   double s = 0;
   for (double w : weights) s += double(float(w));
   StressRow row;
@@ -279,7 +279,7 @@ StressRow weights_row(const StressOptions& o, std::string id, std::string quanti
                          s < 1 ? "darker" : "brighter");
   row = measured_row(row, run_on_ways(plan, uniform_scene(4, 4, 1, 1), o),
                      [](const WayImages& w) { return texel_red(w, kGlowTexture, 1, 1); });
-  if (!plan) row.error = plan.error;
+  if (!plan) row.error = plan.message();
   return row;
 }
 

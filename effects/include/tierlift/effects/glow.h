@@ -176,18 +176,24 @@ struct GlowPlan {
   uint32_t glow_width = 0, glow_height = 0; // ceil(size / downsample)
   unsigned downsample = 1;
   unsigned blur_passes_per_axis = 0;
-  std::string error;                 // non-empty: no graph
   std::vector<std::string> warnings; // the graph runs, but not as asked (e.g. clamped weights)
-  explicit operator bool() const { return error.empty(); }
 };
+
+// A plan, or why there is none: one error (rule kPlanRule) naming the parameter at fault or
+// the listing.
+using PlanResult = ir::Result<GlowPlan>;
+inline constexpr std::string_view kPlanRule = "glow";
+inline ir::Failure plan_failure(std::string message) {
+  return ir::fail("glow", std::string(kPlanRule), std::move(message));
+}
 
 // The graph for one scene size and parameter set, for params.tier. Texture "scene" is its
 // input. Every error names the parameter at fault ("downsample 9: expected 1..4",
 // "intensity 4.5: tier dx8 reaches at most 4 (…)", "scene size 0x27: …"), or the listing.
-GlowPlan build_glow(const GlowParams& params);
-GlowPlan build_glow_dx9(const GlowParams& params);
-GlowPlan build_glow_dx8(const GlowParams& params);
-GlowPlan build_glow_dx7(const GlowParams& params);
+PlanResult build_glow(const GlowParams& params);
+PlanResult build_glow_dx9(const GlowParams& params);
+PlanResult build_glow_dx8(const GlowParams& params);
+PlanResult build_glow_dx7(const GlowParams& params);
 
 // The after-image's loop gain: g (Sources), or g·S² (Glow: S = the tap sum of one axis
 // times the weight scale), with g and the scale at their largest over the frames. 0: off.

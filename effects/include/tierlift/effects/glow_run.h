@@ -12,8 +12,8 @@
 namespace tierlift::effects {
 
 struct GlowRun {
-  ir::Result<GraphRun> run; // a plan with an error fails with it (rule "glow")
-  ImageMap images;          // every texture of the graph afterwards ("scene", …, "glow", "final")
+  ir::Result<GraphRun> run;
+  ImageMap images; // every texture of the graph afterwards ("scene", …, "glow", "final")
 };
 
 // The scene must have the plan's scene size; it is stored in the plan's format first.

@@ -20,7 +20,7 @@ inline constexpr uint32_t kGlslPassInputs = 4;
 
 // The graph at width × height in `format`, sampling with `filter` and clamp addressing.
 // Refused (in `error`, naming the shader's file): an input at location 4 or above.
-GlowPlan build_glsl_pass(const glsl::FragmentShader& shader, uint32_t width, uint32_t height,
-                         img::Format format, pass::Filter filter);
+PlanResult build_glsl_pass(const glsl::FragmentShader& shader, uint32_t width, uint32_t height,
+                           img::Format format, pass::Filter filter);
 
 } // namespace tierlift::effects

@@ -49,7 +49,7 @@ bool scene_animated(const Scene& scene);
 
 // The graph the scene's effect builds: build_glow, build_radial, build_outline or
 // build_glsl_blur.
-GlowPlan build_scene_effect(const Scene& scene);
+PlanResult build_scene_effect(const Scene& scene);
 // The warnings of that effect's parameters (glow_warnings or glsl_blur_warnings).
 std::vector<std::string> effect_warnings(const Scene& scene);
 
