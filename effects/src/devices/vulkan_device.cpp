@@ -30,16 +30,16 @@ public:
     placeholders_.clear();
     textures_.clear();
     for (const TextureDesc& t : graph.textures) {
-      vulkan::TextureId id{};
-      std::string e = t.stencil ? textures_.create_stencil(t.width, t.height, id)
-                                : textures_.create(t.width, t.height, t.format, id);
-      if (auto it = inputs.find(t.name); e.empty() && it != inputs.end())
-        e = textures_.upload(id, it->second);
-      if (!e.empty()) {
+      ir::Result<vulkan::TextureId> id = t.stencil ? textures_.create_stencil(t.width, t.height)
+                                                   : textures_.create(t.width, t.height, t.format);
+      ir::Status uploaded = ir::ok_status();
+      if (auto it = inputs.find(t.name); id && it != inputs.end())
+        uploaded = textures_.upload(*id, it->second);
+      if (!id || !uploaded) {
         drop();
-        return fmt::format("texture '{}': {}", t.name, e);
+        return fmt::format("texture '{}': {}", t.name, id ? uploaded.message() : id.message());
       }
-      ids_[t.name] = id;
+      ids_[t.name] = *id;
       // make_pass wants an image per bound texture; the draw samples the resident one.
       placeholders_.emplace(t.name, img::Image());
     }
@@ -47,38 +47,48 @@ public:
     for (const PassDesc& desc : graph.passes) {
       Draw draw;
       std::string e = make_draw(desc, draw);
-      if (e.empty()) e = textures_.prepare(draw.pass, draw.stages, draw.targets);
+      if (e.empty())
+        if (ir::Status made = textures_.prepare(draw.pass, draw.stages, draw.targets); !made)
+          e = made.message();
       if (!e.empty()) {
         drop();
         return fmt::format("pass '{}': {}", desc.name, e);
       }
     }
     device_.save_pipeline_cache(); // for the next run (a no-op when nothing was added)
-    return textures_.set_batching(true);
+    ir::Status batching = textures_.set_batching(true);
+    return batching ? std::string() : batching.message();
   }
 
   std::string run_pass(const PassDesc& desc) override {
     if (!graph_) return "no run was begun";
     Draw draw;
     if (std::string e = make_draw(desc, draw); !e.empty()) return e;
-    vulkan::DrawResult r = textures_.draw(draw.pass, draw.stages, draw.targets);
-    return r.ok ? std::string() : r.error;
+    ir::Result<pass::DrawReport> r = textures_.draw(draw.pass, draw.stages, draw.targets);
+    return r ? std::string() : r.message();
   }
 
-  std::string finish() override { return textures_.flush(); }
+  std::string finish() override {
+    ir::Status flushed = textures_.flush();
+    return flushed ? std::string() : flushed.message();
+  }
 
   // TextureSet::upload flushes the passes recorded so far first, so the passes before it
   // read the old image and those after it the new one.
   std::string update_input(const std::string& name, const img::Image& image) override {
     auto it = ids_.find(name);
     if (!graph_ || it == ids_.end()) return fmt::format("no input '{}'", name);
-    return textures_.upload(it->second, image);
+    ir::Status uploaded = textures_.upload(it->second, image);
+    return uploaded ? std::string() : uploaded.message();
   }
 
   std::string read_texture(const std::string& name, img::Image& out) override {
     auto it = ids_.find(name);
     if (it == ids_.end()) return fmt::format("no texture '{}'", name);
-    return textures_.read(it->second, out);
+    ir::Result<img::Image> read = textures_.read(it->second);
+    if (!read) return read.message();
+    out = std::move(read).value();
+    return {};
   }
 
 private:
