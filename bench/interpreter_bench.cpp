@@ -38,7 +38,7 @@ void interpreter(benchmark::State& state, unsigned threads) {
   img::Image target(kW, kH, img::Format::RGBA8);
   for (auto _ : state) {
     auto stats = cpu::draw(*pass, target, threads);
-    benchmark::DoNotOptimize(stats.pixels_shaded);
+    benchmark::DoNotOptimize(stats);
   }
   state.SetItemsProcessed(int64_t(state.iterations()) * kW * kH);
   state.counters["Mpix/s"] =

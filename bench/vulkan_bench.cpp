@@ -53,13 +53,13 @@ void BM_Vulkan_Listing2(benchmark::State& state) {
   img::Image target(kW, kH, img::Format::RGBA8);
   double setup_ms = 0, draw_ms = 0;
   for (auto _ : state) {
-    vulkan::DrawResult r = dev->draw(*pass, target);
-    if (!r.ok) {
-      state.SkipWithError(r.error.c_str());
+    ir::Result<pass::DrawReport> r = dev->draw(*pass, target);
+    if (!r) {
+      state.SkipWithError(r.message().c_str());
       return;
     }
-    setup_ms += r.setup_ms;
-    draw_ms += r.draw_ms;
+    setup_ms += r->setup_ms;
+    draw_ms += r->draw_ms;
     benchmark::DoNotOptimize(target.rgba.data());
   }
   set_rate(state);
@@ -79,7 +79,7 @@ void BM_Vulkan_PeerInterpreter_Listing2_AllCores(benchmark::State& state) {
   img::Image target(kW, kH, img::Format::RGBA8);
   for (auto _ : state) {
     auto stats = cpu::draw(*pass, target, 0);
-    benchmark::DoNotOptimize(stats.pixels_shaded);
+    benchmark::DoNotOptimize(stats);
   }
   set_rate(state);
 }

@@ -106,7 +106,7 @@ img::Image run_cpu(const Blur& b, const PassSetup& s, std::string& error,
   for (size_t i = 0; i < 4; ++i) pass.vertices[i].v[3] = cpu::kQuadUV[i]; // dcl_texcoord v3
   img::Image target(s.source->width, s.source->height, format);
   auto stats = cpu::draw(pass, target, 1);
-  if (!stats.ok) error = stats.error;
+  if (!stats.ok()) error = stats.message();
   return target;
 }
 

@@ -99,7 +99,7 @@ TEST(QuadCoords, EqualsTheInterpretersInterpolationAtEveryPixel) {
         for (size_t k = 0; k < 4; ++k) pass.vertices[k].v[3] = cpu::kQuadUV[k];
         img::Image target(s.w, s.h, img::Format::RGBA32F);
         auto stats = cpu::draw(pass, target, 1);
-        ASSERT_TRUE(stats.ok) << stats.error;
+        ASSERT_TRUE(stats.ok()) << stats.message();
         auto ex = analytic::extract_reads(*vs, {consts[0], consts[1]},
                                           *parse("ps_2_0\ndcl t0\ndcl_2d s0\ntexld r0, t0, s0\n"
                                                  "mov oC0, r0\n"));

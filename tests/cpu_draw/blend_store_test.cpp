@@ -60,9 +60,9 @@ TEST(Store, BlendReadsQuantisedDestination) {
   p.constant_inputs.color[0] = {x, x, x, x};
   p.blend = BlendMode::OneOne;
   img::Image im(3, 2, U8);
-  ASSERT_TRUE(draw(p, im, 1).ok);
+  ASSERT_TRUE(draw(p, im, 1).ok());
   EXPECT_EQ(im.at(1, 1)[0], 25.0f / 255.0f);
-  ASSERT_TRUE(draw(p, im, 1).ok);
+  ASSERT_TRUE(draw(p, im, 1).ok());
   EXPECT_EQ(im.at(1, 1)[0], 50.0f / 255.0f);
 }
 

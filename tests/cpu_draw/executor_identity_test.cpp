@@ -63,16 +63,16 @@ void expect_identical(Pass pass, const img::Image& start, unsigned threads,
   SCOPED_TRACE(what);
   img::Image block = start, scalar = start;
   pass.executor = Executor::Auto;
-  const DrawStats a = draw(pass, block, threads);
+  const ir::Result<DrawStats> a = draw(pass, block, threads);
   pass.executor = Executor::Scalar;
-  const DrawStats b = draw(pass, scalar, threads);
-  ASSERT_TRUE(a.ok) << a.error;
-  ASSERT_TRUE(b.ok) << b.error;
-  EXPECT_GT(a.pixels_shaded, 0u);
-  EXPECT_EQ(a.pixels_block, a.pixels_shaded); // the block path ran every pixel
-  EXPECT_EQ(b.pixels_block, 0u);
-  EXPECT_EQ(a.pixels_shaded, b.pixels_shaded);
-  EXPECT_EQ(a.pixels_killed, b.pixels_killed);
+  const ir::Result<DrawStats> b = draw(pass, scalar, threads);
+  ASSERT_TRUE(a.ok()) << a.message();
+  ASSERT_TRUE(b.ok()) << b.message();
+  EXPECT_GT(a->pixels_shaded, 0u);
+  EXPECT_EQ(a->pixels_block, a->pixels_shaded); // the block path ran every pixel
+  EXPECT_EQ(b->pixels_block, 0u);
+  EXPECT_EQ(a->pixels_shaded, b->pixels_shaded);
+  EXPECT_EQ(a->pixels_killed, b->pixels_killed);
   ASSERT_EQ(block.rgba.size(), scalar.rgba.size());
   size_t differ = 0;
   for (size_t i = 0; i < block.rgba.size(); ++i)

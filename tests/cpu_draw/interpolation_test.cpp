@@ -34,7 +34,7 @@ Pass uv_quad(ir::PixelCenter centre) {
 TEST(PixelCentres, D3D9QuadInterpolatesTexelCorners) {
   const uint32_t W = 7, H = 5;
   img::Image im(W, H, img::Format::RGBA32F);
-  ASSERT_TRUE(draw(uv_quad(ir::PixelCenter::D3D9), im, 1).ok);
+  ASSERT_TRUE(draw(uv_quad(ir::PixelCenter::D3D9), im, 1).ok());
   for (uint32_t y = 0; y < H; ++y)
     for (uint32_t x = 0; x < W; ++x) {
       EXPECT_NEAR(im.at(x, y)[0], static_cast<double>(x) / W, 1e-6) << x << "," << y;
@@ -45,7 +45,7 @@ TEST(PixelCentres, D3D9QuadInterpolatesTexelCorners) {
 TEST(PixelCentres, ModernQuadInterpolatesTexelCentres) {
   const uint32_t W = 7, H = 5;
   img::Image im(W, H, img::Format::RGBA32F);
-  ASSERT_TRUE(draw(uv_quad(ir::PixelCenter::Modern), im, 1).ok);
+  ASSERT_TRUE(draw(uv_quad(ir::PixelCenter::Modern), im, 1).ok());
   for (uint32_t y = 0; y < H; ++y)
     for (uint32_t x = 0; x < W; ++x) {
       EXPECT_NEAR(im.at(x, y)[0], (x + 0.5) / W, 1e-6) << x << "," << y;
@@ -69,7 +69,7 @@ TEST(Interpolation, PerspectiveCorrectWithW) {
   Pass p;
   p.transformed = {a, b, c};
   img::Image im(W, H, img::Format::RGBA32F);
-  ASSERT_TRUE(draw(p, im, 1).ok);
+  ASSERT_TRUE(draw(p, im, 1).ok());
   EXPECT_NEAR(im.at(4, 0)[0], 0.2, 1e-6);
   EXPECT_NEAR(im.at(4, 0)[1], 0.0, 1e-6);
   EXPECT_NEAR(im.at(2, 2)[0], 1.0 / 13, 1e-6);
@@ -91,7 +91,7 @@ TEST(Interpolation, ColoursSaturated) {
       p.transformed.push_back(o);
     }
   img::Image im(3, 3, img::Format::RGBA32F);
-  ASSERT_TRUE(draw(p, im, 1).ok);
+  ASSERT_TRUE(draw(p, im, 1).ok());
   EXPECT_FLOAT_EQ(im.at(1, 1)[0], 1.0f);
   EXPECT_FLOAT_EQ(im.at(1, 1)[1], 0.0f);
   EXPECT_NEAR(im.at(1, 1)[2], 0.5f, 1e-6);
@@ -115,9 +115,9 @@ TEST(Threads, SameImageForAnyThreadCount) {
   p.blend = BlendMode::SrcAlphaInvSrcAlpha;
   img::Image one(W, H, img::Format::RGBA32F), many(W, H, img::Format::RGBA32F),
       all(W, H, img::Format::RGBA32F);
-  ASSERT_TRUE(draw(p, one, 1).ok);
-  ASSERT_TRUE(draw(p, many, 3).ok);
-  ASSERT_TRUE(draw(p, all, 0).ok);
+  ASSERT_TRUE(draw(p, one, 1).ok());
+  ASSERT_TRUE(draw(p, many, 3).ok());
+  ASSERT_TRUE(draw(p, all, 0).ok());
   ASSERT_EQ(std::memcmp(one.rgba.data(), many.rgba.data(), one.rgba.size() * sizeof(float)), 0);
   ASSERT_EQ(std::memcmp(one.rgba.data(), all.rgba.data(), one.rgba.size() * sizeof(float)), 0);
   double sum = 0;
@@ -130,13 +130,13 @@ TEST(DrawErrors, BadRequestsAreRefusedNotCrashed) {
   p.transformed.resize(3);
   p.triangles = {{0, 1, 7}};
   img::Image im(4, 4, img::Format::RGBA32F);
-  DrawStats s = draw(p, im, 1);
-  EXPECT_FALSE(s.ok);
-  EXPECT_FALSE(s.error.empty());
+  ir::Result<DrawStats> s = draw(p, im, 1);
+  EXPECT_FALSE(s.ok());
+  EXPECT_FALSE(s.message().empty());
   img::Image broken;
   broken.width = 5; // buffer (empty) does not match 5×2
   broken.height = 2;
-  EXPECT_FALSE(draw(Pass{}, broken, 1).ok);
+  EXPECT_FALSE(draw(Pass{}, broken, 1).ok());
 }
 
 } // namespace
@@ -162,10 +162,10 @@ TEST(PixelStage, TexkillDiscards) {
       p.transformed.push_back(o);
     }
   img::Image im(8, 3, img::Format::RGBA32F);
-  DrawStats s = draw(p, im, 2);
-  ASSERT_TRUE(s.ok) << s.error;
-  EXPECT_EQ(s.pixels_shaded, 24u);
-  EXPECT_EQ(s.pixels_killed, 12u);
+  ir::Result<DrawStats> s = draw(p, im, 2);
+  ASSERT_TRUE(s.ok()) << s.message();
+  EXPECT_EQ(s->pixels_shaded, 24u);
+  EXPECT_EQ(s->pixels_killed, 12u);
   for (uint32_t y = 0; y < 3; ++y)
     for (uint32_t x = 0; x < 8; ++x) EXPECT_EQ(im.at(x, y)[0], x < 4 ? 0.0f : 1.0f) << x;
 }

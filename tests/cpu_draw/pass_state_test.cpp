@@ -77,9 +77,9 @@ TEST(PassState, CpuDeviceRefusesAStencilPassWithoutABufferAndLeavesTheTarget) {
   p.depth_stencil.stencil_test = true;
   p.constant_inputs.color[0] = {1, 1, 1, 1};
   img::Image target(2, 2, img::Format::RGBA32F);
-  cpu::DrawStats s = cpu::draw(p, target);
-  EXPECT_FALSE(s.ok);
-  EXPECT_NE(s.error.find("no stencil buffer"), std::string::npos) << s.error;
+  ir::Result<cpu::DrawStats> s = cpu::draw(p, target);
+  EXPECT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("no stencil buffer"), std::string::npos) << s.message();
   for (float v : target.rgba) EXPECT_EQ(v, 0.0f);
 }
 

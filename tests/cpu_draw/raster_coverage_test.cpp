@@ -34,9 +34,9 @@ TEST_P(QuadCoverage, EveryPixelExactlyOnce) {
   p.blend = BlendMode::OneOne;
   p.conventions.pixel_center = centre;
   img::Image im(w, h, img::Format::RGBA32F);
-  DrawStats s = draw(p, im, 1);
-  ASSERT_TRUE(s.ok) << s.error;
-  EXPECT_EQ(s.pixels_shaded, static_cast<uint64_t>(w) * h);
+  ir::Result<DrawStats> s = draw(p, im, 1);
+  ASSERT_TRUE(s.ok()) << s.message();
+  EXPECT_EQ(s->pixels_shaded, static_cast<uint64_t>(w) * h);
   expect_all(im, 1);
 }
 
@@ -61,7 +61,7 @@ TEST(TopLeftRule, SharedDiagonalOfTheQuadDrawsOnce) {
       Pass p = flat_pass(v, {1, 1, 1, 1}, BlendMode::OneOne);
       p.conventions.pixel_center = centre;
       img::Image im(w, h, img::Format::RGBA32F);
-      ASSERT_TRUE(draw(p, im, 1).ok);
+      ASSERT_TRUE(draw(p, im, 1).ok());
       expect_all(im, 1);
     }
   }
@@ -76,7 +76,7 @@ TEST(TopLeftRule, DiagonalThroughPixelCentres) {
   Pass p = flat_pass({sv(0, 0), sv(4, 0), sv(4, 4), sv(0, 0), sv(4, 4), sv(0, 4)}, {1, 1, 1, 1},
                      BlendMode::OneOne);
   img::Image im(W, H, img::Format::RGBA32F);
-  ASSERT_TRUE(draw(p, im, 1).ok);
+  ASSERT_TRUE(draw(p, im, 1).ok());
   for (uint32_t y = 0; y < H; ++y)
     for (uint32_t x = 0; x < W; ++x)
       EXPECT_EQ(im.at(x, y)[0], (x < 4 && y < 4) ? 1.0f : 0.0f) << x << "," << y;
@@ -92,7 +92,7 @@ TEST(TopLeftRule, FanAroundAPixelCentre) {
       {c, sv(0, 0), sv(4, 0), c, sv(4, 0), sv(4, 4), c, sv(4, 4), sv(0, 4), c, sv(0, 4), sv(0, 0)},
       {1, 1, 1, 1}, BlendMode::OneOne);
   img::Image im(W, H, img::Format::RGBA32F);
-  ASSERT_TRUE(draw(p, im, 1).ok);
+  ASSERT_TRUE(draw(p, im, 1).ok());
   for (uint32_t y = 0; y < H; ++y)
     for (uint32_t x = 0; x < W; ++x)
       EXPECT_EQ(im.at(x, y)[0], (x < 4 && y < 4) ? 1.0f : 0.0f) << x << "," << y;
@@ -107,7 +107,7 @@ TEST(TopLeftRule, HypotenuseThroughCentresIsExcluded) {
     Pass p = flip ? flat_pass({sv(0, 0), sv(0, 4), sv(4, 0)}, {1, 1, 1, 1}, BlendMode::OneOne)
                   : flat_pass({sv(0, 0), sv(4, 0), sv(0, 4)}, {1, 1, 1, 1}, BlendMode::OneOne);
     img::Image im(W, H, img::Format::RGBA32F);
-    ASSERT_TRUE(draw(p, im, 1).ok);
+    ASSERT_TRUE(draw(p, im, 1).ok());
     int total = 0;
     for (uint32_t y = 0; y < H; ++y)
       for (uint32_t x = 0; x < W; ++x) {
@@ -126,7 +126,7 @@ TEST(TopLeftRule, ComplementaryTrianglesTile) {
   Pass p = flat_pass({sv(0, 0), sv(4, 0), sv(0, 4), sv(4, 0), sv(4, 4), sv(0, 4)}, {1, 1, 1, 1},
                      BlendMode::OneOne);
   img::Image im(W, H, img::Format::RGBA32F);
-  ASSERT_TRUE(draw(p, im, 1).ok);
+  ASSERT_TRUE(draw(p, im, 1).ok());
   std::vector<int> got = counts(im), want;
   for (uint32_t y = 0; y < H; ++y)
     for (uint32_t x = 0; x < W; ++x) want.push_back(x < 4 && y < 4 ? 1 : 0);
@@ -141,9 +141,9 @@ TEST(Clipping, HugeTriangleCoversOnce) {
   Pass p =
       flat_pass({sv(-100, -100), sv(200, -100), sv(-100, 200)}, {1, 1, 1, 1}, BlendMode::OneOne);
   img::Image im(W, H, img::Format::RGBA32F);
-  DrawStats s = draw(p, im, 1);
-  ASSERT_TRUE(s.ok) << s.error;
-  EXPECT_GT(s.triangles, 1u); // really clipped
+  ir::Result<DrawStats> s = draw(p, im, 1);
+  ASSERT_TRUE(s.ok()) << s.message();
+  EXPECT_GT(s->triangles, 1u); // really clipped
   expect_all(im, 1);
 }
 
@@ -153,14 +153,14 @@ TEST(Clipping, BehindTheEye) {
   auto behind = [&](double x, double y) { return screen_vertex(x, y, W, H, -1.0f); };
   Pass p = flat_pass({behind(0, 0), behind(4, 0), behind(0, 4)}, {1, 1, 1, 1}, BlendMode::OneOne);
   img::Image im(W, H, img::Format::RGBA32F);
-  DrawStats s = draw(p, im, 1);
-  ASSERT_TRUE(s.ok);
-  EXPECT_EQ(s.triangles, 0u);
+  ir::Result<DrawStats> s = draw(p, im, 1);
+  ASSERT_TRUE(s.ok());
+  EXPECT_EQ(s->triangles, 0u);
   expect_all(im, 0);
 
   Pass q = flat_pass({screen_vertex(0, 0, W, H), screen_vertex(4, 0, W, H), behind(0, 4)},
                      {1, 1, 1, 1}, BlendMode::OneOne);
-  ASSERT_TRUE(draw(q, im, 1).ok);
+  ASSERT_TRUE(draw(q, im, 1).ok());
   for (float v : im.rgba) EXPECT_TRUE(v == 0.0f || v == 1.0f);
 }
 

@@ -132,11 +132,11 @@ TEST(Rgba8StoreLlvmpipe, DrawFollowsThePassConvention) {
   Pass p;
   p.constant_inputs.color[0] = {0.3f, 0.9f, 0.5f, 1.0f};
   img::Image a(2, 2, U8), b(2, 2, U8);
-  ASSERT_TRUE(draw(p, a, 1).ok);
+  ASSERT_TRUE(draw(p, a, 1).ok());
   EXPECT_EQ(a.at(1, 1)[0], byte(76));
   EXPECT_EQ(a.at(1, 1)[1], byte(230));
   p.conventions.rounding = kExact;
-  ASSERT_TRUE(draw(p, b, 1).ok);
+  ASSERT_TRUE(draw(p, b, 1).ok());
   EXPECT_EQ(b.at(1, 1)[0], byte(77));
   EXPECT_EQ(b.at(1, 1)[1], byte(229));
 }

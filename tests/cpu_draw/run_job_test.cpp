@@ -18,6 +18,7 @@
 #include "tierlift/asm/parser.h"
 #include "tierlift/asm/validator.h"
 #include "tierlift/cpu/run_job.h"
+#include "tierlift/ir/result_diagnostics.h"
 
 namespace tierlift::cpu {
 namespace {
@@ -83,11 +84,11 @@ void expect_rows(const img::Image& im, const std::function<double(int)>& want, d
 // With the half-texel offset, D3D9 pixel i's tap k lands on texel centre i + k.
 TEST(RunJob, Listings3And4HalfTexelHitCentres) {
   RunDiagnostics d;
-  RunResult out = run_job(blur_request(4, 0.5, 0.5, img::Format::RGBA32F), d);
-  ASSERT_TRUE(out.ok) << ir::render_text(d.other, {});
+  ir::Result<RunResult> out = run_job(blur_request(4, 0.5, 0.5, img::Format::RGBA32F), d);
+  ASSERT_TRUE(out.ok()) << ir::render_text(d.other, {});
   EXPECT_EQ(d.vs.error_count() + d.ps.error_count() + d.other.warning_count(), 0u);
   expect_rows(
-      out.image,
+      out->image,
       [](int i) {
         double s = 0;
         for (int k = 0; k < 4; ++k) s += texel(i + k);
@@ -95,25 +96,25 @@ TEST(RunJob, Listings3And4HalfTexelHitCentres) {
       },
       1e-6);
   // Spot values: pixel 0 = (0.5+1.5+2.5+3.5)/64 = 0.125; pixel 15 = 15.5/16.
-  EXPECT_NEAR(out.image.at(0, 0)[0], 0.125, 1e-7);
-  EXPECT_NEAR(out.image.at(15, 3)[0], 0.96875, 1e-7);
+  EXPECT_NEAR(out->image.at(0, 0)[0], 0.125, 1e-7);
+  EXPECT_NEAR(out->image.at(15, 3)[0], 0.96875, 1e-7);
 }
 
 // Without the offset, D3D9 pixel i's tap k lands on the corner between texels i+k−1 and
 // i+k: the mean of the two.
 TEST(RunJob, Listings3And4WithoutOffsetHitCorners) {
   RunDiagnostics d;
-  RunResult out = run_job(blur_request(4, 0.0, 0.0, img::Format::RGBA32F), d);
-  ASSERT_TRUE(out.ok);
+  ir::Result<RunResult> out = run_job(blur_request(4, 0.0, 0.0, img::Format::RGBA32F), d);
+  ASSERT_TRUE(out.ok());
   expect_rows(
-      out.image,
+      out->image,
       [](int i) {
         double s = 0;
         for (int k = 0; k < 4; ++k) s += (texel(i + k - 1) + texel(i + k)) / 2;
         return s / 4;
       },
       1e-6);
-  EXPECT_NEAR(out.image.at(0, 0)[0], (1.0 / 32 + 1.0 / 16 + 2.0 / 16 + 3.0 / 16) / 4, 1e-7);
+  EXPECT_NEAR(out->image.at(0, 0)[0], (1.0 / 32 + 1.0 / 16 + 2.0 / 16 + 3.0 / 16) / 4, 1e-7);
 }
 
 // Modern centres with the D3D9 offset: the taps move half a texel past the centres, onto
@@ -122,10 +123,10 @@ TEST(RunJob, ModernCentresShiftTheTaps) {
   RunRequest r = blur_request(4, 0.5, 0.5, img::Format::RGBA32F);
   r.conventions.pixel_center = ir::PixelCenter::Modern;
   RunDiagnostics d;
-  RunResult out = run_job(r, d);
-  ASSERT_TRUE(out.ok);
+  ir::Result<RunResult> out = run_job(r, d);
+  ASSERT_TRUE(out.ok());
   expect_rows(
-      out.image,
+      out->image,
       [](int i) {
         double s = 0;
         for (int k = 0; k < 4; ++k) s += (texel(i + k) + texel(i + k + 1)) / 2;
@@ -137,10 +138,10 @@ TEST(RunJob, ModernCentresShiftTheTaps) {
 // Listings 1+2 (vs_2_0 / ps_2_0, 8 taps from one sampler).
 TEST(RunJob, Listings1And2EightTaps) {
   RunDiagnostics d;
-  RunResult out = run_job(blur_request(8, 0.5, 0.5, img::Format::RGBA32F), d);
-  ASSERT_TRUE(out.ok);
+  ir::Result<RunResult> out = run_job(blur_request(8, 0.5, 0.5, img::Format::RGBA32F), d);
+  ASSERT_TRUE(out.ok());
   expect_rows(
-      out.image,
+      out->image,
       [](int i) {
         double s = 0;
         for (int k = 0; k < 8; ++k) s += texel(i + k);
@@ -152,12 +153,12 @@ TEST(RunJob, Listings1And2EightTaps) {
 // RGBA8: every stored value is k/255 within half an LSB of the exact result.
 TEST(RunJob, Rgba8StoresRoundedValues) {
   RunDiagnostics d;
-  RunResult out = run_job(blur_request(4, 0.5, 0.5, img::Format::RGBA8), d);
-  ASSERT_TRUE(out.ok);
+  ir::Result<RunResult> out = run_job(blur_request(4, 0.5, 0.5, img::Format::RGBA8), d);
+  ASSERT_TRUE(out.ok());
   for (uint32_t x = 0; x < N; ++x) {
     double exact = 0;
     for (int k = 0; k < 4; ++k) exact += texel(int(x) + k) / 4;
-    double stored = out.image.at(x, 7)[0] * 255.0;
+    double stored = out->image.at(x, 7)[0] * 255.0;
     EXPECT_NEAR(stored, std::round(stored), 1e-4) << x;
     EXPECT_LE(std::abs(stored - exact * 255.0), 0.5 + 1e-4) << x;
   }
@@ -170,19 +171,19 @@ TEST(RunJob, ThreadCountDoesNotChangeTheImage) {
   r.height = 29;
   RunDiagnostics d1, d2;
   r.threads = 1;
-  RunResult one = run_job(r, d1);
+  ir::Result<RunResult> one = run_job(r, d1);
   r.threads = 4;
-  RunResult four = run_job(r, d2);
-  ASSERT_TRUE(one.ok && four.ok);
-  EXPECT_TRUE(one.image.rgba == four.image.rgba);
+  ir::Result<RunResult> four = run_job(r, d2);
+  ASSERT_TRUE(one.ok() && four.ok());
+  EXPECT_TRUE(one->image.rgba == four->image.rgba);
 }
 
 TEST(RunJob, MissingConstantIsAnErrorNamingTheRegister) {
   RunRequest r = blur_request(4, 0.5, 0.5, img::Format::RGBA32F);
   r.constants.erase(r.constants.begin() + 2); // vs:c1
   RunDiagnostics d;
-  RunResult out = run_job(r, d);
-  EXPECT_FALSE(out.ok);
+  ir::Result<RunResult> out = run_job(r, d);
+  EXPECT_FALSE(out.ok());
   ASSERT_EQ(d.vs.error_count(), 1u);
   EXPECT_EQ(d.vs.all()[0].rule, "constant-not-set");
   EXPECT_NE(d.vs.all()[0].message.find("c1"), std::string::npos);
@@ -196,11 +197,11 @@ TEST(RunJob, UnboundSamplersWarnAndReadOpaqueBlack) {
   RunRequest r = blur_request(4, 0.5, 0.5, img::Format::RGBA32F);
   r.textures.clear();
   RunDiagnostics d;
-  RunResult out = run_job(r, d);
-  ASSERT_TRUE(out.ok);
+  ir::Result<RunResult> out = run_job(r, d);
+  ASSERT_TRUE(out.ok());
   EXPECT_EQ(d.ps.warning_count(), 4u);
-  EXPECT_EQ(out.image.at(3, 3)[0], 0.0f);
-  EXPECT_NEAR(out.image.at(3, 3)[3], 1.0f, 1e-7);
+  EXPECT_EQ(out->image.at(3, 3)[0], 0.0f);
+  EXPECT_NEAR(out->image.at(3, 3)[3], 1.0f, 1e-7);
 }
 
 // No listings: the pixel inputs pass through (oD0 = v0), probes read the stored value.
@@ -212,10 +213,10 @@ TEST(RunJob, NoListingsPassInputsThrough) {
   r.inputs.push_back(*parse_input_setting("v0=0.5,0.25,1,1"));
   r.probes.push_back({4, 2});
   RunDiagnostics d;
-  RunResult out = run_job(r, d);
-  ASSERT_TRUE(out.ok);
-  ASSERT_EQ(out.probes.size(), 1u);
-  EXPECT_EQ(out.probes[0].value, (Vec4{128.0f / 255, 64.0f / 255, 1, 1})); // 127.5→128, 63.75→64
+  ir::Result<RunResult> out = run_job(r, d);
+  ASSERT_TRUE(out.ok());
+  ASSERT_EQ(out->probes.size(), 1u);
+  EXPECT_EQ(out->probes[0].value, (Vec4{128.0f / 255, 64.0f / 255, 1, 1})); // 127.5→128, 63.75→64
 }
 
 TEST(RunJob, BadTextureIsAnError) {
@@ -223,10 +224,40 @@ TEST(RunJob, BadTextureIsAnError) {
   r.textures[0].source = "/nonexistent/dir/tex.png";
   r.textures[1].source = "builtin:nosuchthing";
   RunDiagnostics d;
-  EXPECT_FALSE(run_job(r, d).ok);
+  ir::Result<RunResult> out = run_job(r, d);
+  EXPECT_TRUE(ir::failed_with(out, kRunRule));
   ASSERT_EQ(d.other.error_count(), 2u);
   EXPECT_EQ(d.other.all()[0].rule, pass::kRuleTextureMissing);
   EXPECT_EQ(d.other.all()[1].rule, "texture");
+  EXPECT_EQ(out.message(), d.other.all()[0].message); // the first error, rendered from `d`
+}
+
+// Errors after the pass is prepared (a probe outside the image, a draw the device refuses)
+// go to diags.other, and the run's failure carries the same message.
+TEST(RunJob, ProbeOutsideTheImageAndRefusedDrawFailTheRun) {
+  RunRequest r;
+  r.width = 5;
+  r.height = 3;
+  r.inputs.push_back(*parse_input_setting("v0=0.5,0.25,1,1"));
+  r.probes.push_back({5, 0});
+  RunDiagnostics d;
+  ir::Result<RunResult> out = run_job(r, d);
+  EXPECT_TRUE(ir::failed_with(out, kRunRule));
+  ASSERT_EQ(d.other.error_count(), 1u);
+  EXPECT_EQ(d.other.all()[0].rule, "probe");
+  EXPECT_EQ(out.message(), "--probe 5,0 lies outside the 5x3 image");
+  EXPECT_EQ(d.other.all()[0].message, out.message());
+
+  Pass p;
+  p.transformed.resize(3);
+  p.triangles = {{0, 1, 7}};
+  RunDiagnostics d2;
+  ir::Result<RunResult> drawn = run_pass(p, 4, 4, img::Format::RGBA32F, {}, 1, d2);
+  EXPECT_TRUE(ir::failed_with(drawn, kRunRule));
+  ASSERT_EQ(d2.other.error_count(), 1u);
+  EXPECT_EQ(d2.other.all()[0].rule, std::string(kDrawRule));
+  EXPECT_EQ(drawn.message(), "triangle index out of range");
+  EXPECT_EQ(d2.other.all()[0].message, drawn.message());
 }
 
 // Listing 2 without a vertex listing: t0..t7 are given constants, the texture an in-memory
@@ -249,10 +280,10 @@ TEST(RunJob, PixelListingAloneOverAnInMemoryTexture) {
   }
   r.textures.emplace_back(0, "numbered", tex);
   RunDiagnostics d;
-  RunResult out = run_job(r, d);
-  ASSERT_TRUE(out.ok) << ir::render_text(d.other, {});
+  ir::Result<RunResult> out = run_job(r, d);
+  ASSERT_TRUE(out.ok()) << ir::render_text(d.other, {});
   for (uint32_t y = 0; y < 2; ++y)
-    for (uint32_t x = 0; x < 3; ++x) EXPECT_FLOAT_EQ(out.image.at(x, y)[0], 5.0f);
+    for (uint32_t x = 0; x < 3; ++x) EXPECT_FLOAT_EQ(out->image.at(x, y)[0], 5.0f);
 }
 
 std::shared_ptr<const ir::Program> program_text(const std::string& text) {
@@ -293,12 +324,12 @@ TEST(RunJob, PointSamplingOnTheD3D9QuadPicksTexelI) {
       r.attrs.push_back(*parse_attr_setting("v3=quad-uv"));
       r.textures.emplace_back(0, "numbered", tex);
       RunDiagnostics d;
-      RunResult out = run_job(r, d);
-      ASSERT_TRUE(out.ok);
+      ir::Result<RunResult> out = run_job(r, d);
+      ASSERT_TRUE(out.ok());
       for (uint32_t y = 0; y < h; ++y)
         for (uint32_t x = 0; x < w; ++x) {
-          ASSERT_EQ(out.image.at(x, y)[0], static_cast<float>(x)) << w << "x" << h << " " << x;
-          ASSERT_EQ(out.image.at(x, y)[1], static_cast<float>(y)) << w << "x" << h << " " << y;
+          ASSERT_EQ(out->image.at(x, y)[0], static_cast<float>(x)) << w << "x" << h << " " << x;
+          ASSERT_EQ(out->image.at(x, y)[1], static_cast<float>(y)) << w << "x" << h << " " << y;
         }
     }
   }

@@ -13,13 +13,13 @@ namespace {
 // `p` drawn into a zeroed target and into one full of leftovers marked stale: the same bits.
 void expect_as_zeros(const Pass& p, uint32_t w = 9, uint32_t h = 5) {
   img::Image fresh(w, h);
-  ASSERT_TRUE(draw(p, fresh, 1).ok);
+  ASSERT_TRUE(draw(p, fresh, 1).ok());
   img::Image left(w, h);
   std::fill(left.rgba.begin(), left.rgba.end(), 7.0f);
   DrawTargets targets;
   targets.color[0] = &left;
   targets.stale = true;
-  ASSERT_TRUE(draw(p, targets, 1).ok);
+  ASSERT_TRUE(draw(p, targets, 1).ok());
   EXPECT_EQ(0, std::memcmp(fresh.rgba.data(), left.rgba.data(), fresh.rgba.size() * sizeof(float)));
 }
 

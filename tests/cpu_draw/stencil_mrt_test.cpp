@@ -85,8 +85,8 @@ TEST(Mrt, EachTargetReceivesItsOwnOutput) {
   img::Image t0(4, 3), t1(4, 3);
   cpu::DrawTargets targets;
   targets.color = {&t0, &t1, nullptr, nullptr};
-  cpu::DrawStats s = cpu::draw(p, targets, 1);
-  ASSERT_TRUE(s.ok) << s.error;
+  ir::Result<cpu::DrawStats> s = cpu::draw(p, targets, 1);
+  ASSERT_TRUE(s.ok()) << s.message();
   for (uint32_t y = 0; y < 3; ++y)
     for (uint32_t x = 0; x < 4; ++x) {
       EXPECT_EQ((Vec4{t0.at(x, y)[0], t0.at(x, y)[1], t0.at(x, y)[2], t0.at(x, y)[3]}),
@@ -97,7 +97,7 @@ TEST(Mrt, EachTargetReceivesItsOwnOutput) {
   // One target: oC1 goes nowhere, as D3D9 drops outputs without a bound target.
   p.color_targets = 1;
   img::Image only(4, 3);
-  ASSERT_TRUE(cpu::draw(p, only, 1).ok);
+  ASSERT_TRUE(cpu::draw(p, only, 1).ok());
   EXPECT_EQ(only.at(3, 2)[0], 0.25f);
 }
 
@@ -107,9 +107,9 @@ TEST(Mrt, TargetsOfDifferentSizesAreRefused) {
   img::Image t0(4, 3), t1(4, 4);
   cpu::DrawTargets targets;
   targets.color = {&t0, &t1, nullptr, nullptr};
-  cpu::DrawStats s = cpu::draw(p, targets, 1);
-  EXPECT_FALSE(s.ok);
-  EXPECT_NE(s.error.find("one size"), std::string::npos) << s.error;
+  ir::Result<cpu::DrawStats> s = cpu::draw(p, targets, 1);
+  EXPECT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("one size"), std::string::npos) << s.message();
   for (float v : t0.rgba) EXPECT_EQ(v, 0.0f);
 }
 
@@ -147,7 +147,7 @@ TEST(Stencil, MarkThenMaskOnTheCpuDevice) {
   cpu::DrawTargets targets;
   targets.color[0] = &color;
   targets.stencil = stencil.data();
-  ASSERT_TRUE(cpu::draw(mark, targets, 1).ok);
+  ASSERT_TRUE(cpu::draw(mark, targets, 1).ok());
   EXPECT_EQ(stencil, (std::vector<uint8_t>{7, 7, 0, 0, 7, 7, 0, 0}));
 
   Pass masked;
@@ -159,7 +159,7 @@ TEST(Stencil, MarkThenMaskOnTheCpuDevice) {
   masked.depth_stencil.stencil_fail = StencilOp::Keep;
   img::Image out(4, 2);
   targets.color[0] = &out;
-  ASSERT_TRUE(cpu::draw(masked, targets, 1).ok);
+  ASSERT_TRUE(cpu::draw(masked, targets, 1).ok());
   for (uint32_t y = 0; y < 2; ++y)
     for (uint32_t x = 0; x < 4; ++x) EXPECT_EQ(out.at(x, y)[0], x < 2 ? 0.0f : 1.0f) << x;
   EXPECT_EQ(stencil, (std::vector<uint8_t>{7, 7, 1, 1, 7, 7, 1, 1}));

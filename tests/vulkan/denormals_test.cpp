@@ -176,12 +176,13 @@ TEST_F(VulkanTest, DenormalsOnLavapipeAndTheInterpreterBitForBit) {
   const bool lavapipe = dev->name().find("llvmpipe") != std::string::npos;
   for (const Case& c : cases()) {
     img::Image cpu_img = draw_case(
-        c, [](cpu::Pass& p, img::Image& o) { return cpu::draw(p, o, 1).ok; },
+        c, [](cpu::Pass& p, img::Image& o) { return cpu::draw(p, o, 1).ok(); },
         ir::Rounding::Llvmpipe);
     expect_bits(cpu_img, c.expect, "interpreter " + c.name);
     if (!lavapipe) continue; // another driver may keep denormals (see the test below)
     img::Image vk_img = draw_case(
-        c, [&](cpu::Pass& p, img::Image& o) { return dev->draw(p, o).ok; }, ir::Rounding::Llvmpipe);
+        c, [&](cpu::Pass& p, img::Image& o) { return dev->draw(p, o).ok(); },
+        ir::Rounding::Llvmpipe);
     expect_bits(vk_img, c.expect, "lavapipe " + c.name, c.zero_sign_free);
   }
 }
@@ -192,7 +193,7 @@ TEST(DenormalsExact, InterpreterKeepsDenormals) {
     for (const Case& c : cases())
       if (c.name == name)
         return draw_case(
-            c, [](cpu::Pass& p, img::Image& o) { return cpu::draw(p, o, 1).ok; },
+            c, [](cpu::Pass& p, img::Image& o) { return cpu::draw(p, o, 1).ok(); },
             ir::Rounding::Exact);
     ADD_FAILURE() << name;
     return img::Image(1, 1);

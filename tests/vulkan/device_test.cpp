@@ -2,6 +2,8 @@
 // result is known by hand (no shaders: the pass-through programs).
 #include <cmath>
 
+#include "run_flags.h"
+#include "tierlift/vulkan/run_job.h"
 #include "vk_test_util.h"
 
 namespace tierlift::vulkan::test {
@@ -38,8 +40,8 @@ TEST_F(VulkanTest, ConstantColourFillsTheTarget) {
   p.constant_inputs.color[0] = {0.2f, 0.6f, 0.3f, 1.0f};
   for (img::Format f : {img::Format::RGBA8, img::Format::RGBA16F, img::Format::RGBA32F}) {
     img::Image t(5, 3, f);
-    DrawResult r = dev->draw(p, t);
-    ASSERT_TRUE(r.ok) << r.error;
+    ir::Result<pass::DrawReport> r = dev->draw(p, t);
+    ASSERT_TRUE(r.ok()) << r.message();
     for (uint32_t y = 0; y < 3; ++y)
       for (uint32_t x = 0; x < 5; ++x) {
         const float* px = t.at(x, y);
@@ -78,7 +80,7 @@ TEST_F(VulkanTest, BlendModesUseTheStoredDestination) {
     p.constant_inputs.color[0] = {0.25f, 0.25f, 0.25f, 0.5f};
     img::Image t(4, 4, img::Format::RGBA32F);
     for (float& v : t.rgba) v = 0.5f;
-    ASSERT_TRUE(dev->draw(p, t).ok);
+    ASSERT_TRUE(dev->draw(p, t).ok());
     EXPECT_EQ(t.at(2, 1)[0], c.rgb) << int(c.mode);
     EXPECT_EQ(t.at(2, 1)[3], c.a) << int(c.mode);
   }
@@ -118,7 +120,7 @@ TEST_F(VulkanTest, ViewportDepthRangeIsClamped) {
   p.viewport.min_z = 2.0f;
   p.viewport.max_z = -1.0f;
   img::Image t(4, 4);
-  ASSERT_TRUE(dev->draw(p, t).ok);
+  ASSERT_TRUE(dev->draw(p, t).ok());
   EXPECT_EQ(t.at(3, 3)[0], 1.0f);
 }
 
@@ -142,18 +144,45 @@ TEST_F(VulkanTest, BadInputIsAnErrorNotACrash) {
   p.transformed.resize(3);
   p.triangles = {{0, 1, 7}};
   img::Image t(4, 4);
-  DrawResult r = dev->draw(p, t);
-  EXPECT_FALSE(r.ok);
-  EXPECT_NE(r.error.find("out of range"), std::string::npos) << r.error;
+  ir::Result<pass::DrawReport> r = dev->draw(p, t);
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(r.message().find("out of range"), std::string::npos) << r.message();
   img::Image empty;
-  EXPECT_FALSE(dev->draw(p, empty).ok);
+  EXPECT_FALSE(dev->draw(p, empty).ok());
   cpu::Pass q;
   q.textures[0].sampler.border_color = {0.5f, 0, 0, 1};
   q.pixel_program =
       parse_listing("ps.2.0\ndcl t0\ndcl_2d s0\ntexld r0, t0, s0\nmov oC0, r0\n", "b");
   r = dev->draw(q, t);
-  EXPECT_FALSE(r.ok);
-  EXPECT_NE(r.error.find("border"), std::string::npos) << r.error;
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(r.message().find("border"), std::string::npos) << r.message();
+}
+
+// run_job_vulkan: the request's pass drawn on the process's device and the probes read back;
+// a request the pass cannot be made from is a failure of rule "run" whose diagnostics went to
+// `diags`, the failure's message the first of them.
+TEST_F(VulkanTest, RunJobDrawsTheRequestAndRefusesABadOne) {
+  pass::RunRequest r;
+  r.width = 5;
+  r.height = 3;
+  r.format = img::Format::RGBA32F;
+  r.inputs.push_back(*cli::parse_input_setting("v0=0.5,0.25,1,1"));
+  r.probes.push_back({4, 2});
+  pass::RunDiagnostics d;
+  ir::Result<VulkanRun> run = run_job_vulkan(r, d, {});
+  ASSERT_TRUE(run) << run.message();
+  EXPECT_FALSE(d.has_errors());
+  EXPECT_NE(run->device_name.find("llvmpipe"), std::string::npos) << run->device_name;
+  EXPECT_EQ(run->image.width, 5u);
+  ASSERT_EQ(run->probes.size(), 1u);
+  EXPECT_EQ(run->probes[0].value, (cpu::Vec4{0.5f, 0.25f, 1, 1}));
+
+  r.width = 0;
+  pass::RunDiagnostics bad;
+  ir::Result<VulkanRun> refused = run_job_vulkan(r, bad, {});
+  EXPECT_TRUE(ir::failed_with(refused, "run"));
+  ASSERT_TRUE(bad.other.has_errors());
+  EXPECT_EQ(refused.message(), bad.other.all()[0].message);
 }
 
 } // namespace

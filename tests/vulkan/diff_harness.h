@@ -132,8 +132,8 @@ inline bool device_flushes_denormals(vulkan::Device& dev) {
   p.pixel_program = parse_listing("ps_2_0\nmul r0, c0, c1\nmov oC0, r0\n", "probe.psh");
   p.ps_constants.f = {{1e-40f, 1e-40f, 1e-40f, 1e-40f}, {0x1p100f, 0x1p100f, 0x1p100f, 0x1p100f}};
   img::Image t(1, 1);
-  DrawResult r = dev.draw(p, t);
-  EXPECT_TRUE(r.ok) << r.error;
+  ir::Result<pass::DrawReport> r = dev.draw(p, t);
+  EXPECT_TRUE(r.ok()) << r.message();
   return t.rgba[0] == 0.0f;
 }
 
@@ -219,11 +219,11 @@ DiffResult run_diff_with(vulkan::Device& dev, const std::string& vs_text,
   }
   out.cpu = img::Image(kDiffW, kDiffH, s.format);
   out.vk = out.cpu;
-  cpu::DrawStats st = cpu::draw(pass, out.cpu, 2);
-  EXPECT_TRUE(st.ok) << st.error;
-  DrawResult r = dev.draw(vk_pass, out.vk);
-  EXPECT_TRUE(r.ok) << r.error;
-  if (!st.ok || !r.ok) return out;
+  ir::Result<cpu::DrawStats> st = cpu::draw(pass, out.cpu, 2);
+  EXPECT_TRUE(st.ok()) << st.message();
+  ir::Result<pass::DrawReport> r = dev.draw(vk_pass, out.vk);
+  EXPECT_TRUE(r.ok()) << r.message();
+  if (!st.ok() || !r.ok()) return out;
   out.diff = compare_values(out.cpu, out.vk);
   out.ok = true;
   return out;

@@ -96,8 +96,8 @@ TEST_F(VulkanTest, Listings3And4TwoPassesSummed) {
   img::Image cpu_im(W, H), vk_im(W, H);
   for (int k = 0; k < 2; ++k) {
     pass.blend = k == 0 ? cpu::BlendMode::Replace : cpu::BlendMode::OneOne;
-    ASSERT_TRUE(cpu::draw(pass, cpu_im, 2).ok);
-    ASSERT_TRUE(dev->draw(pass, vk_im).ok);
+    ASSERT_TRUE(cpu::draw(pass, cpu_im, 2).ok());
+    ASSERT_TRUE(dev->draw(pass, vk_im).ok());
   }
   auto c = img::compare(cpu_im, vk_im);
   ASSERT_TRUE(c);
@@ -154,12 +154,12 @@ TEST_F(VulkanTest, PruningKeepsTheImage) {
   ASSERT_TRUE(pair);
   EXPECT_GE(pair->pruned.size(), 4u) << codegen::explain(pair->pruned);
   img::Image a(W, H), b(W, H);
-  DrawResult ra = dev->draw(unpruned_pass, a), rb = dev->draw(pruned_pass, b);
-  ASSERT_TRUE(ra.ok && rb.ok) << ra.error << rb.error;
+  ir::Result<pass::DrawReport> ra = dev->draw(unpruned_pass, a), rb = dev->draw(pruned_pass, b);
+  ASSERT_TRUE(ra.ok() && rb.ok()) << ra.message() << rb.message();
   EXPECT_TRUE(a.rgba == b.rgba) << "pruning changed the image";
   // And the CPU device (which runs every instruction) agrees bit for bit with both.
   img::Image c(W, H);
-  ASSERT_TRUE(cpu::draw(pruned_pass, c, 2).ok);
+  ASSERT_TRUE(cpu::draw(pruned_pass, c, 2).ok());
   auto cmp = img::compare(c, b);
   ASSERT_TRUE(cmp);
   EXPECT_TRUE(img::judge(*cmp, img::Format::RGBA32F).pass) << img::describe(*cmp);
@@ -183,10 +183,11 @@ TEST_F(VulkanTest, Listing2FullHdTiming) {
   EXPECT_LE(t.cmp.max_abs_all, 1.0 / 255 + 1e-7) << img::describe(t.cmp);
   EXPECT_GE(t.cmp.identical_share, 0.999) << img::describe(t.cmp);
   img::Image again(1920, 1080, img::Format::RGBA8);
-  DrawResult r = dev->draw(pass, again);
+  ir::Result<pass::DrawReport> r = dev->draw(pass, again);
+  ASSERT_TRUE(r) << r.message();
   std::printf("[vk-timing] listing 2 1920x1080 rgba8: cpu device %.1f ms, vulkan %.1f ms "
               "(second run: setup %.1f ms, draw+readback %.1f ms)\n",
-              t.cpu_ms, t.vk_ms, r.setup_ms, r.draw_ms);
+              t.cpu_ms, t.vk_ms, r->setup_ms, r->draw_ms);
   report("listing 2 1920x1080 rgba8", t.cmp);
   cpu::Pass f = make_pass(blur_request(8, 0.5, img::Format::RGBA32F, 1920, 1080), 0);
   TwoWays t32 = draw_both(*dev, f, 1920, 1080, img::Format::RGBA32F);

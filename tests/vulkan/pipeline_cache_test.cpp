@@ -23,14 +23,14 @@ namespace fs = std::filesystem;
 void draw_once(Device& d) {
   TextureSet set(d);
   TextureId src{}, dst{};
-  ASSERT_EQ(set.create(4, 4, img::Format::RGBA32F, src), "");
-  ASSERT_EQ(set.create(4, 4, img::Format::RGBA32F, dst), "");
+  ASSERT_TRUE(succeeded(set.create(4, 4, img::Format::RGBA32F), src));
+  ASSERT_TRUE(succeeded(set.create(4, 4, img::Format::RGBA32F), dst));
   StageTextures stages{};
   stages[0] = src;
   cpu::Pass p = quad_pass(two_coords_vs(), copy_ps(), {{0, 0, 0, 0}, {0, 0, 0, 0}}, {},
                           cpu::BlendMode::Replace);
-  DrawResult r = set.draw(p, stages, dst);
-  ASSERT_TRUE(r.ok) << r.error;
+  ir::Result<pass::DrawReport> r = set.draw(p, stages, dst);
+  ASSERT_TRUE(r.ok()) << r.message();
 }
 
 class PipelineCacheFile : public ::testing::Test {

@@ -22,11 +22,11 @@ TEST_F(ResidentTest, NewTexturesReadBackAsZeros) {
   TextureSet set(*dev);
   for (img::Format f : kFormats) {
     TextureId id{};
-    ASSERT_EQ(set.create(5, 3, f, id), "");
+    ASSERT_TRUE(succeeded(set.create(5, 3, f), id));
     EXPECT_NE(id, TextureId::None);
     img::Image out(1, 1); // overwritten
     out.rgba = {9, 9, 9, 9};
-    ASSERT_EQ(set.read(id, out), "");
+    ASSERT_TRUE(succeeded(set.read(id), out));
     EXPECT_EQ(out.width, 5u);
     EXPECT_EQ(out.height, 3u);
     EXPECT_EQ(out.format, f);
@@ -54,10 +54,10 @@ TEST_F(ResidentTest, UploadReadsBackWithTheStoreRule) {
   };
   for (const Want& w : wants) {
     TextureId id{};
-    ASSERT_EQ(set.create(2, 1, w.f, id), "");
-    ASSERT_EQ(set.upload(id, im), ""); // im says RGBA32F: the texture's format decides
+    ASSERT_TRUE(succeeded(set.create(2, 1, w.f), id));
+    ASSERT_TRUE(succeeded(set.upload(id, im))); // im says RGBA32F: the texture's format decides
     img::Image out;
-    ASSERT_EQ(set.read(id, out), "");
+    ASSERT_TRUE(succeeded(set.read(id), out));
     img::Image want(2, 1, w.f);
     want.rgba = w.rgba;
     std::string where;
@@ -72,12 +72,12 @@ TEST_F(ResidentTest, BlendingReadsTheStoredTexture) {
   const cpu::Vec4 c{51.0f / 255, 102.0f / 255, 0, 1};
   for (img::Format f : {img::Format::RGBA8, img::Format::RGBA32F}) {
     TextureId id{};
-    ASSERT_EQ(set.create(4, 4, f, id), "");
+    ASSERT_TRUE(succeeded(set.create(4, 4, f), id));
     for (int k = 1; k <= 2; ++k) {
-      DrawResult r = set.draw(constant_pass(c, cpu::BlendMode::OneOne), {}, id);
-      ASSERT_TRUE(r.ok) << r.error;
+      ir::Result<pass::DrawReport> r = set.draw(constant_pass(c, cpu::BlendMode::OneOne), {}, id);
+      ASSERT_TRUE(r.ok()) << r.message();
       img::Image out;
-      ASSERT_EQ(set.read(id, out), "");
+      ASSERT_TRUE(succeeded(set.read(id), out));
       const float want[4] = {k * 51.0f / 255, k * 102.0f / 255, 0, float(k)};
       for (uint32_t i = 0; i < 4; ++i) {
         // RGBA8 stores k·51 / 255 and alpha clamps to 1.
@@ -94,24 +94,24 @@ TEST_F(ResidentTest, SampledCopyFollowsLaterWrites) {
   TextureSet set(*dev);
   for (img::Format f : kFormats) {
     TextureId src{}, dst{};
-    ASSERT_EQ(set.create(3, 3, f, src), "");
-    ASSERT_EQ(set.create(3, 3, img::Format::RGBA32F, dst), "");
+    ASSERT_TRUE(succeeded(set.create(3, 3, f), src));
+    ASSERT_TRUE(succeeded(set.create(3, 3, img::Format::RGBA32F), dst));
     const cpu::Vec4 half{0.5f / 3, 0.5f / 3, 0, 0};
     cpu::Pass copy =
         quad_pass(two_coords_vs(), copy_ps(), {half, half}, {}, cpu::BlendMode::Replace);
     StageTextures stages{};
     stages[0] = src;
-    ASSERT_TRUE(set.draw(constant_pass({9, 9, 9, 9}, cpu::BlendMode::Replace), {}, dst).ok);
-    ASSERT_TRUE(set.draw(copy, stages, dst).ok); // src never written: it samples as zeros
+    ASSERT_TRUE(set.draw(constant_pass({9, 9, 9, 9}, cpu::BlendMode::Replace), {}, dst).ok());
+    ASSERT_TRUE(set.draw(copy, stages, dst).ok()); // src never written: it samples as zeros
     img::Image zeros;
-    ASSERT_EQ(set.read(dst, zeros), "");
+    ASSERT_TRUE(succeeded(set.read(dst), zeros));
     EXPECT_EQ(zeros.rgba, std::vector<float>(3 * 3 * 4, 0.0f)) << img::format_name(f);
     for (float v : {0.25f, 0.75f}) { // RGBA8 stores round(v·255): 64 and 191
-      ASSERT_TRUE(set.draw(constant_pass({v, v, v, v}, cpu::BlendMode::Replace), {}, src).ok);
-      DrawResult r = set.draw(copy, stages, dst);
-      ASSERT_TRUE(r.ok) << r.error;
+      ASSERT_TRUE(set.draw(constant_pass({v, v, v, v}, cpu::BlendMode::Replace), {}, src).ok());
+      ir::Result<pass::DrawReport> r = set.draw(copy, stages, dst);
+      ASSERT_TRUE(r.ok()) << r.message();
       img::Image out;
-      ASSERT_EQ(set.read(dst, out), "");
+      ASSERT_TRUE(succeeded(set.read(dst), out));
       const float want = f == img::Format::RGBA8 ? std::round(v * 255) / 255 : v;
       EXPECT_EQ(out.at(1, 1)[0], want) << img::format_name(f) << " after writing " << v;
     }
@@ -120,46 +120,45 @@ TEST_F(ResidentTest, SampledCopyFollowsLaterWrites) {
 
 TEST_F(ResidentTest, BadCallsAreMessages) {
   TextureSet set(*dev);
-  TextureId id = TextureId::None;
-  EXPECT_NE(set.create(0, 4, img::Format::RGBA32F, id), "");
-  EXPECT_NE(set.create(4, 0, img::Format::RGBA8, id), "");
-  EXPECT_NE(set.create(img::kMaxDimension + 1, 1, img::Format::RGBA8, id), "");
-  EXPECT_EQ(id, TextureId::None);
+  EXPECT_FALSE(set.create(0, 4, img::Format::RGBA32F).ok());
+  EXPECT_FALSE(set.create(4, 0, img::Format::RGBA8).ok());
+  EXPECT_FALSE(set.create(img::kMaxDimension + 1, 1, img::Format::RGBA8).ok());
   EXPECT_EQ(set.size(), 0u);
 
   const TextureId unknown = static_cast<TextureId>(42);
   img::Image out;
-  EXPECT_NE(set.read(unknown, out).find("no texture 42"), std::string::npos);
-  EXPECT_NE(set.upload(unknown, img::Image(1, 1)), "");
-  DrawResult r = set.draw(constant_pass({1, 1, 1, 1}, cpu::BlendMode::Replace), {}, unknown);
-  EXPECT_FALSE(r.ok);
-  EXPECT_NE(r.error.find("no texture 42"), std::string::npos) << r.error;
+  EXPECT_NE(set.read(unknown).message().find("no texture 42"), std::string::npos);
+  EXPECT_FALSE(set.upload(unknown, img::Image(1, 1)).ok());
+  ir::Result<pass::DrawReport> r =
+      set.draw(constant_pass({1, 1, 1, 1}, cpu::BlendMode::Replace), {}, unknown);
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(r.message().find("no texture 42"), std::string::npos) << r.message();
 
   TextureId t{};
-  ASSERT_EQ(set.create(4, 4, img::Format::RGBA32F, t), "");
-  EXPECT_NE(set.upload(t, img::Image(4, 5)), ""); // wrong size
+  ASSERT_TRUE(succeeded(set.create(4, 4, img::Format::RGBA32F), t));
+  EXPECT_FALSE(set.upload(t, img::Image(4, 5)).ok()); // wrong size
   img::Image broken(4, 4);
   broken.rgba.resize(3); // pixel buffer shorter than its size
-  EXPECT_NE(set.upload(t, broken), "");
+  EXPECT_FALSE(set.upload(t, broken).ok());
   StageTextures stages{};
   stages[0] = unknown;
   cpu::Pass copy = quad_pass(two_coords_vs(), copy_ps(), {{0, 0, 0, 0}, {0, 0, 0, 0}}, {},
                              cpu::BlendMode::Replace);
   r = set.draw(copy, stages, t);
-  EXPECT_FALSE(r.ok);
-  EXPECT_NE(r.error.find("s0"), std::string::npos) << r.error;
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(r.message().find("s0"), std::string::npos) << r.message();
   stages[0] = t; // sampling its own target
   r = set.draw(copy, stages, t);
-  EXPECT_FALSE(r.ok);
-  EXPECT_NE(r.error.find("own render target"), std::string::npos) << r.error;
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(r.message().find("own render target"), std::string::npos) << r.message();
   // None of it touched the texture.
-  ASSERT_EQ(set.read(t, out), "");
+  ASSERT_TRUE(succeeded(set.read(t), out));
   EXPECT_EQ(out.rgba, std::vector<float>(4 * 4 * 4, 0.0f));
 
   set.destroy(t);
-  EXPECT_NE(set.read(t, out), "");
+  EXPECT_FALSE(set.read(t).ok());
   TextureId next{};
-  ASSERT_EQ(set.create(4, 4, img::Format::RGBA32F, next), "");
+  ASSERT_TRUE(succeeded(set.create(4, 4, img::Format::RGBA32F), next));
   EXPECT_NE(next, t); // ids are not reused
   set.clear();
   EXPECT_EQ(set.size(), 0u);
@@ -177,14 +176,14 @@ TEST_F(ResidentTest, HostImageStagesMatchDeviceDraw) {
   p.textures[0].image = std::make_shared<const img::Image>(tex);
   p.textures[0].sampler.filter = cpu::Filter::Linear;
   img::Image host(6, 5);
-  ASSERT_TRUE(dev->draw(p, host).ok);
+  ASSERT_TRUE(dev->draw(p, host).ok());
   TextureSet set(*dev);
   TextureId t{};
-  ASSERT_EQ(set.create(6, 5, img::Format::RGBA32F, t), "");
-  DrawResult r = set.draw(p, {}, t);
-  ASSERT_TRUE(r.ok) << r.error;
+  ASSERT_TRUE(succeeded(set.create(6, 5, img::Format::RGBA32F), t));
+  ir::Result<pass::DrawReport> r = set.draw(p, {}, t);
+  ASSERT_TRUE(r.ok()) << r.message();
   img::Image out;
-  ASSERT_EQ(set.read(t, out), "");
+  ASSERT_TRUE(succeeded(set.read(t), out));
   std::string where;
   EXPECT_TRUE(same_bits(host, out, &where)) << where;
   EXPECT_NE(out.rgba, img::Image(6, 5).rgba);

@@ -110,25 +110,26 @@ TEST_P(ResidentChain, EqualsDrawPerPassBitForBit) {
   for (const Step& s : chain()) {
     cpu::Pass p = step_pass(s);
     p.textures[0].image = std::make_shared<const img::Image>(host[s.source]);
-    DrawResult r = dev->draw(p, host[s.target]);
-    ASSERT_TRUE(r.ok) << r.error;
+    ir::Result<pass::DrawReport> r = dev->draw(p, host[s.target]);
+    ASSERT_TRUE(r.ok()) << r.message();
   }
 
   // New path: every texture resident, the input uploaded once, nothing read until the end.
   TextureSet set(*dev);
   std::map<std::string, TextureId> ids;
-  for (const auto& [name, wh] : sizes) ASSERT_EQ(set.create(wh.first, wh.second, f, ids[name]), "");
-  ASSERT_EQ(set.upload(ids["in"], noise(kW, kH, f, 7)), "");
+  for (const auto& [name, wh] : sizes)
+    ASSERT_TRUE(succeeded(set.create(wh.first, wh.second, f), ids[name]));
+  ASSERT_TRUE(succeeded(set.upload(ids["in"], noise(kW, kH, f, 7))));
   for (const Step& s : chain()) {
     StageTextures stages{};
     stages[0] = ids[s.source];
-    DrawResult r = set.draw(step_pass(s), stages, ids[s.target]);
-    ASSERT_TRUE(r.ok) << r.error;
+    ir::Result<pass::DrawReport> r = set.draw(step_pass(s), stages, ids[s.target]);
+    ASSERT_TRUE(r.ok()) << r.message();
   }
 
   for (const auto& [name, id] : ids) {
     img::Image out;
-    ASSERT_EQ(set.read(id, out), "") << name;
+    ASSERT_TRUE(succeeded(set.read(id), out)) << name;
     std::string where;
     EXPECT_TRUE(same_bits(host[name], out, &where)) << name << ": " << where;
   }
@@ -153,8 +154,8 @@ TEST_P(ResidentChain, BatchedFramesOfPreparedDrawsEqualDrawPerPass) {
     for (const Step& s : chain()) {
       cpu::Pass p = step_pass(s);
       p.textures[0].image = std::make_shared<const img::Image>(host[s.source]);
-      DrawResult r = dev->draw(p, host[s.target]);
-      ASSERT_TRUE(r.ok) << r.error;
+      ir::Result<pass::DrawReport> r = dev->draw(p, host[s.target]);
+      ASSERT_TRUE(r.ok()) << r.message();
     }
     host_d.push_back(host["d"]);
   }
@@ -162,31 +163,32 @@ TEST_P(ResidentChain, BatchedFramesOfPreparedDrawsEqualDrawPerPass) {
 
   TextureSet set(*dev);
   std::map<std::string, TextureId> ids;
-  for (const auto& [name, wh] : sizes) ASSERT_EQ(set.create(wh.first, wh.second, f, ids[name]), "");
-  ASSERT_EQ(set.upload(ids["in"], noise(kW, kH, f, 11)), "");
+  for (const auto& [name, wh] : sizes)
+    ASSERT_TRUE(succeeded(set.create(wh.first, wh.second, f), ids[name]));
+  ASSERT_TRUE(succeeded(set.upload(ids["in"], noise(kW, kH, f, 11))));
   auto stages_of = [&](const Step& s) {
     StageTextures stages{};
     stages[0] = ids[s.source];
     return stages;
   };
   for (const Step& s : chain())
-    ASSERT_EQ(set.prepare(step_pass(s), stages_of(s), ids[s.target]), "");
-  ASSERT_EQ(set.set_batching(true), "");
+    ASSERT_TRUE(succeeded(set.prepare(step_pass(s), stages_of(s), ids[s.target])));
+  ASSERT_TRUE(succeeded(set.set_batching(true)));
   for (int frame = 0; frame < 2; ++frame) {
     for (const Step& s : chain()) {
-      DrawResult r = set.draw(step_pass(s), stages_of(s), ids[s.target]);
-      ASSERT_TRUE(r.ok) << r.error;
+      ir::Result<pass::DrawReport> r = set.draw(step_pass(s), stages_of(s), ids[s.target]);
+      ASSERT_TRUE(r.ok()) << r.message();
     }
-    ASSERT_EQ(set.flush(), "");
+    ASSERT_TRUE(succeeded(set.flush()));
     img::Image out;
-    ASSERT_EQ(set.read(ids["d"], out), ""); // a read between frames flushes too
+    ASSERT_TRUE(succeeded(set.read(ids["d"]), out)); // a read between frames flushes too
     std::string where;
     EXPECT_TRUE(same_bits(host_d[size_t(frame)], out, &where))
         << "frame " << frame << ": " << where;
   }
   for (const auto& [name, id] : ids) {
     img::Image out;
-    ASSERT_EQ(set.read(id, out), "") << name;
+    ASSERT_TRUE(succeeded(set.read(id), out)) << name;
     std::string where;
     EXPECT_TRUE(same_bits(host[name], out, &where)) << name << ": " << where;
   }
@@ -203,18 +205,18 @@ INSTANTIATE_TEST_SUITE_P(Formats, ResidentChain,
 img::Image sampled_copy(Device& dev, const img::Image& im, img::Format f) {
   TextureSet set(dev);
   TextureId src{}, dst{};
-  EXPECT_EQ(set.create(im.width, im.height, f, src), "");
-  EXPECT_EQ(set.create(im.width, im.height, img::Format::RGBA32F, dst), "");
-  EXPECT_EQ(set.upload(src, im), "");
+  EXPECT_TRUE(succeeded(set.create(im.width, im.height, f), src));
+  EXPECT_TRUE(succeeded(set.create(im.width, im.height, img::Format::RGBA32F), dst));
+  EXPECT_TRUE(succeeded(set.upload(src, im)));
   // Texel centres: the quad's uv (u = i/W at pixel i, D3D9 centres) plus half a texel.
   const cpu::Vec4 half{0.5f / im.width, 0.5f / im.height, 0, 0};
   cpu::Pass p = quad_pass(two_coords_vs(), copy_ps(), {half, half}, {}, cpu::BlendMode::Replace);
   StageTextures stages{};
   stages[0] = src;
-  DrawResult r = set.draw(p, stages, dst);
-  EXPECT_TRUE(r.ok) << r.error;
+  ir::Result<pass::DrawReport> r = set.draw(p, stages, dst);
+  EXPECT_TRUE(r.ok()) << r.message();
   img::Image out;
-  EXPECT_EQ(set.read(dst, out), "");
+  EXPECT_TRUE(succeeded(set.read(dst), out));
   return out;
 }
 

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <fmt/format.h>
 #include <string>
+#include <utility>
 
 #include "tierlift/vulkan/texture_set.h"
 #include "vk_test_util.h"
@@ -29,6 +30,19 @@ class ResidentTest : public VulkanTest {
 protected:
   const ir::Result<Device*>& acquire_device() override { return sync_validated_device(); }
 };
+
+// ASSERT_TRUE(succeeded(set.upload(id, image))): a failure prints the set's message.
+template <class T>::testing::AssertionResult succeeded(const ir::Result<T>& r) {
+  if (r) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << r.message();
+}
+// The same for a call that yields a value (a new texture, an image read back): on success
+// the value is moved into `out`, so a test keeps its variables across calls.
+template <class T>::testing::AssertionResult succeeded(ir::Result<T> r, T& out) {
+  if (!r) return ::testing::AssertionFailure() << r.message();
+  out = std::move(r).value();
+  return ::testing::AssertionSuccess();
+}
 
 // vs_2_0: oPos = v0, oT0 = v1 + c0, oT1 = v1 + c1 (v1: the quad's uv).
 inline std::shared_ptr<const ir::Program> two_coords_vs() {

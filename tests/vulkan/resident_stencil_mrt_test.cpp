@@ -30,8 +30,8 @@ uint32_t stencil_at(const img::Image& s, uint32_t x, uint32_t y = 0) {
 TEST_F(ResidentTest, TwoRenderTargetsReceiveOC0AndOC1) {
   TextureSet set(*dev);
   TextureId a{}, b{};
-  ASSERT_EQ(set.create(kW, kH, img::Format::RGBA32F, a), "");
-  ASSERT_EQ(set.create(kW, kH, img::Format::RGBA8, b), "");
+  ASSERT_TRUE(succeeded(set.create(kW, kH, img::Format::RGBA32F), a));
+  ASSERT_TRUE(succeeded(set.create(kW, kH, img::Format::RGBA8), b));
   cpu::Pass p;
   p.vertex_program = parse_listing("vs_2_0\ndcl_position v0\nmov oPos, v0\n", "pos.vsh");
   p.pixel_program = parse_listing("ps_2_0\nmov oC0, c0\nmov oC1, c1\n", "mrt.psh");
@@ -40,11 +40,11 @@ TEST_F(ResidentTest, TwoRenderTargetsReceiveOC0AndOC1) {
   p.color_targets = 2;
   RenderTargets t;
   t.color = {a, b, TextureId::None, TextureId::None};
-  DrawResult r = set.draw(p, StageTextures{}, t);
-  ASSERT_TRUE(r.ok) << r.error;
+  ir::Result<pass::DrawReport> r = set.draw(p, StageTextures{}, t);
+  ASSERT_TRUE(r.ok()) << r.message();
   img::Image out_a, out_b;
-  ASSERT_EQ(set.read(a, out_a), "");
-  ASSERT_EQ(set.read(b, out_b), "");
+  ASSERT_TRUE(succeeded(set.read(a), out_a));
+  ASSERT_TRUE(succeeded(set.read(b), out_b));
   for (uint32_t y = 0; y < kH; ++y)
     for (uint32_t x = 0; x < kW; ++x) {
       const float* pa = out_a.at(x, y);
@@ -59,9 +59,9 @@ TEST_F(ResidentTest, TwoRenderTargetsReceiveOC0AndOC1) {
 TEST_F(ResidentTest, MrtPassesThatCannotBeDrawnAreRefused) {
   TextureSet set(*dev);
   TextureId a{}, b{}, small{};
-  ASSERT_EQ(set.create(kW, kH, img::Format::RGBA32F, a), "");
-  ASSERT_EQ(set.create(kW, kH, img::Format::RGBA32F, b), "");
-  ASSERT_EQ(set.create(kW, kH + 1, img::Format::RGBA32F, small), "");
+  ASSERT_TRUE(succeeded(set.create(kW, kH, img::Format::RGBA32F), a));
+  ASSERT_TRUE(succeeded(set.create(kW, kH, img::Format::RGBA32F), b));
+  ASSERT_TRUE(succeeded(set.create(kW, kH + 1, img::Format::RGBA32F), small));
   cpu::Pass p;
   p.vertex_program = parse_listing("vs_2_0\ndcl_position v0\nmov oPos, v0\n", "pos.vsh");
   p.pixel_program = parse_listing("ps_2_0\nmov oC0, c0\n", "one.psh");
@@ -70,37 +70,38 @@ TEST_F(ResidentTest, MrtPassesThatCannotBeDrawnAreRefused) {
   RenderTargets t;
   t.color = {a, b, TextureId::None, TextureId::None};
   // Two targets, but the program writes oC0 only: Vulkan would leave target 1 undefined.
-  DrawResult r = set.draw(p, StageTextures{}, t);
-  EXPECT_FALSE(r.ok);
-  EXPECT_NE(r.error.find("does not write oC1"), std::string::npos) << r.error;
+  ir::Result<pass::DrawReport> r = set.draw(p, StageTextures{}, t);
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(r.message().find("does not write oC1"), std::string::npos) << r.message();
   // Target 1 missing; targets of two sizes.
   p.pixel_program = parse_listing("ps_2_0\nmov oC0, c0\nmov oC1, c0\n", "two.psh");
   t.color[1] = TextureId::None;
   r = set.draw(p, StageTextures{}, t);
-  EXPECT_NE(r.error.find("render target 1 (oC1) is not bound"), std::string::npos) << r.error;
+  EXPECT_NE(r.message().find("render target 1 (oC1) is not bound"), std::string::npos)
+      << r.message();
   t.color[1] = small;
   r = set.draw(p, StageTextures{}, t);
-  EXPECT_NE(r.error.find("one size"), std::string::npos) << r.error;
+  EXPECT_NE(r.message().find("one size"), std::string::npos) << r.message();
   // A stencil test without a stencil buffer.
   p.color_targets = 1;
   t.color[1] = TextureId::None;
   p.depth_stencil.stencil_test = true;
   r = set.draw(p, StageTextures{}, t);
-  EXPECT_NE(r.error.find("no stencil buffer"), std::string::npos) << r.error;
+  EXPECT_NE(r.message().find("no stencil buffer"), std::string::npos) << r.message();
   img::Image out;
-  ASSERT_EQ(set.read(a, out), "");
+  ASSERT_TRUE(succeeded(set.read(a), out));
   EXPECT_EQ(out.rgba, std::vector<float>(kW * kH * 4, 0.0f)); // nothing was drawn
 }
 
 TEST_F(ResidentTest, StencilBufferStartsAtZeroAndIsNeverUploaded) {
   TextureSet set(*dev);
   TextureId s{};
-  ASSERT_EQ(set.create_stencil(kW, kH, s), "");
+  ASSERT_TRUE(succeeded(set.create_stencil(kW, kH), s));
   img::Image out;
-  ASSERT_EQ(set.read(s, out), "");
+  ASSERT_TRUE(succeeded(set.read(s), out));
   EXPECT_EQ(out.format, img::Format::RGBA32F);
   EXPECT_EQ(out.rgba, std::vector<float>(kW * kH * 4, 0.0f));
-  EXPECT_NE(set.upload(s, img::Image(kW, kH)).find("stencil buffer"), std::string::npos);
+  EXPECT_NE(set.upload(s, img::Image(kW, kH)).message().find("stencil buffer"), std::string::npos);
 }
 
 // Marks columns 0..3 with REPLACE ref 7, then draws everywhere with EQUAL 0: colour reaches
@@ -108,8 +109,8 @@ TEST_F(ResidentTest, StencilBufferStartsAtZeroAndIsNeverUploaded) {
 TEST_F(ResidentTest, StencilMarksThenMasks) {
   TextureSet set(*dev);
   TextureId color{}, s{};
-  ASSERT_EQ(set.create(kW, kH, img::Format::RGBA32F, color), "");
-  ASSERT_EQ(set.create_stencil(kW, kH, s), "");
+  ASSERT_TRUE(succeeded(set.create(kW, kH, img::Format::RGBA32F), color));
+  ASSERT_TRUE(succeeded(set.create_stencil(kW, kH), s));
   RenderTargets t;
   t.color[0] = color;
   t.stencil = s;
@@ -118,16 +119,16 @@ TEST_F(ResidentTest, StencilMarksThenMasks) {
   mark.depth_stencil.stencil_func = pass::CompareFunc::Always;
   mark.depth_stencil.stencil_pass = pass::StencilOp::Replace;
   mark.depth_stencil.stencil_ref = 7;
-  ASSERT_TRUE(set.draw(mark, StageTextures{}, t).ok);
+  ASSERT_TRUE(set.draw(mark, StageTextures{}, t).ok());
   cpu::Pass masked = columns({1, 1, 1, 1}, 0, kW);
   masked.depth_stencil.stencil_test = true;
   masked.depth_stencil.stencil_func = pass::CompareFunc::Equal;
   masked.depth_stencil.stencil_ref = 0;
   masked.depth_stencil.stencil_pass = pass::StencilOp::IncrSat;
-  ASSERT_TRUE(set.draw(masked, StageTextures{}, t).ok);
+  ASSERT_TRUE(set.draw(masked, StageTextures{}, t).ok());
   img::Image c, st;
-  ASSERT_EQ(set.read(color, c), "");
-  ASSERT_EQ(set.read(s, st), "");
+  ASSERT_TRUE(succeeded(set.read(color), c));
+  ASSERT_TRUE(succeeded(set.read(s), st));
   for (uint32_t y = 0; y < kH; ++y)
     for (uint32_t x = 0; x < kW; ++x) {
       EXPECT_EQ(c.at(x, y)[0], x < 4 ? 0.5f : 1.0f) << x;
@@ -142,8 +143,8 @@ TEST_F(ResidentTest, StencilOperationsAndComparisonsFollowD3D9) {
   const uint32_t stored[kW] = {0, 1, 5, 0x5a, 0xfe, 0xff, 0x12, 0x13};
   auto fresh = [&](TextureSet& set, RenderTargets& t) {
     TextureId color{}, s{};
-    EXPECT_EQ(set.create(kW, kH, img::Format::RGBA32F, color), "");
-    EXPECT_EQ(set.create_stencil(kW, kH, s), "");
+    EXPECT_TRUE(succeeded(set.create(kW, kH, img::Format::RGBA32F), color));
+    EXPECT_TRUE(succeeded(set.create_stencil(kW, kH), s));
     t.color[0] = color;
     t.stencil = s;
     for (uint32_t x = 0; x < kW; ++x) {
@@ -151,7 +152,7 @@ TEST_F(ResidentTest, StencilOperationsAndComparisonsFollowD3D9) {
       p.depth_stencil.stencil_test = true;
       p.depth_stencil.stencil_pass = pass::StencilOp::Replace;
       p.depth_stencil.stencil_ref = stored[x];
-      EXPECT_TRUE(set.draw(p, StageTextures{}, t).ok);
+      EXPECT_TRUE(set.draw(p, StageTextures{}, t).ok());
     }
   };
   struct OpCase {
@@ -181,9 +182,9 @@ TEST_F(ResidentTest, StencilOperationsAndComparisonsFollowD3D9) {
     p.depth_stencil.stencil_pass = oc.op;
     p.depth_stencil.stencil_ref = 0x3c;
     p.depth_stencil.stencil_write_mask = oc.write_mask;
-    ASSERT_TRUE(set.draw(p, StageTextures{}, t).ok);
+    ASSERT_TRUE(set.draw(p, StageTextures{}, t).ok());
     img::Image st;
-    ASSERT_EQ(set.read(t.stencil, st), "");
+    ASSERT_TRUE(succeeded(set.read(t.stencil), st));
     for (uint32_t x = 0; x < kW; ++x)
       EXPECT_EQ(stencil_at(st, x), oc.want[x])
           << "op " << int(oc.op) << " mask " << oc.write_mask << " column " << x;
@@ -215,9 +216,9 @@ TEST_F(ResidentTest, StencilOperationsAndComparisonsFollowD3D9) {
     p.depth_stencil.stencil_func = fc.f;
     p.depth_stencil.stencil_ref = 5;
     p.depth_stencil.stencil_read_mask = fc.read_mask;
-    ASSERT_TRUE(set.draw(p, StageTextures{}, t).ok);
+    ASSERT_TRUE(set.draw(p, StageTextures{}, t).ok());
     img::Image c;
-    ASSERT_EQ(set.read(t.color[0], c), "");
+    ASSERT_TRUE(succeeded(set.read(t.color[0]), c));
     for (uint32_t x = 0; x < kW; ++x)
       EXPECT_EQ(c.at(x, 1)[0], fc.want[x] ? 1.0f : 0.0f)
           << "func " << int(fc.f) << " read mask " << fc.read_mask << " column " << x;

@@ -97,12 +97,12 @@ TEST_F(VulkanTest, Rgba8StoreAndBlendMatchLavapipeByteForByte) {
     SCOPED_TRACE(static_cast<int>(mode));
     const cpu::Pass pass = pass_reading(tex, mode);
     img::Image vk = dst, cpu_llvmpipe = dst, cpu_exact = dst;
-    DrawResult r = dev->draw(pass, vk);
-    ASSERT_TRUE(r.ok) << r.error;
-    ASSERT_TRUE(cpu::draw(pass, cpu_llvmpipe, 2).ok);
+    ir::Result<pass::DrawReport> r = dev->draw(pass, vk);
+    ASSERT_TRUE(r.ok()) << r.message();
+    ASSERT_TRUE(cpu::draw(pass, cpu_llvmpipe, 2).ok());
     cpu::Pass exact = pass;
     exact.conventions.rounding = ir::Rounding::Exact;
-    ASSERT_TRUE(cpu::draw(exact, cpu_exact, 2).ok);
+    ASSERT_TRUE(cpu::draw(exact, cpu_exact, 2).ok());
 
     std::string first;
     EXPECT_EQ(differing_values(cpu_llvmpipe, vk, &first), 0u) << first;

@@ -166,17 +166,17 @@ inline TwoWays draw_both(vulkan::Device& dev, const cpu::Pass& pass, uint32_t w,
   t.cpu.format = format;
   t.vk = t.cpu;
   auto start = std::chrono::steady_clock::now();
-  cpu::DrawStats s = cpu::draw(pass, t.cpu, 2);
+  ir::Result<cpu::DrawStats> s = cpu::draw(pass, t.cpu, 2);
   t.cpu_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  EXPECT_TRUE(s.ok) << s.error;
-  DrawResult r = dev.draw(pass, t.vk);
-  EXPECT_TRUE(r.ok) << r.error;
-  t.vk_ms = r.setup_ms + r.draw_ms;
+  EXPECT_TRUE(s.ok()) << s.message();
+  ir::Result<pass::DrawReport> r = dev.draw(pass, t.vk);
+  EXPECT_TRUE(r.ok()) << r.message();
+  if (r) t.vk_ms = r->setup_ms + r->draw_ms;
   auto c = img::compare(t.cpu, t.vk);
   EXPECT_TRUE(c) << c.message();
   if (c) t.cmp = *c;
-  t.ok = s.ok && r.ok && c.ok();
+  t.ok = s.ok() && r.ok() && c.ok();
   return t;
 }
 

@@ -114,10 +114,10 @@ ir::Status CpuPassDevice::run_pass(const PassDesc& desc) {
     settle(desc.target);
     for (const std::string& m : desc.more_targets) settle(m);
   }
-  cpu::DrawStats s = cpu::draw(*pass, targets, threads_);
-  if (!s.ok) {
+  ir::Result<cpu::DrawStats> s = cpu::draw(*pass, targets, threads_);
+  if (!s) {
     settle(desc.target); // zeros, as the run began with
-    return device_error(s.error);
+    return std::move(s).failure();
   }
   stale_.erase(desc.target); // drawn: zeroed first or overwritten
   return ir::ok_status();

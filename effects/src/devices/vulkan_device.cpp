@@ -30,16 +30,17 @@ public:
     placeholders_.clear();
     textures_.clear();
     for (const TextureDesc& t : graph.textures) {
-      vulkan::TextureId id{};
-      std::string e = t.stencil ? textures_.create_stencil(t.width, t.height, id)
-                                : textures_.create(t.width, t.height, t.format, id);
-      if (auto it = inputs.find(t.name); e.empty() && it != inputs.end())
-        e = textures_.upload(id, it->second);
-      if (!e.empty()) {
+      ir::Result<vulkan::TextureId> id = t.stencil ? textures_.create_stencil(t.width, t.height)
+                                                   : textures_.create(t.width, t.height, t.format);
+      ir::Status uploaded = ir::ok_status();
+      if (auto it = inputs.find(t.name); id && it != inputs.end())
+        uploaded = textures_.upload(*id, it->second);
+      if (!id || !uploaded) {
         drop();
-        return device_error(fmt::format("texture '{}': {}", t.name, e));
+        return device_error(
+            fmt::format("texture '{}': {}", t.name, id ? uploaded.message() : id.message()));
       }
-      ids_[t.name] = id;
+      ids_[t.name] = *id;
       // make_pass wants an image per bound texture; the draw samples the resident one.
       placeholders_.emplace(t.name, img::Image());
     }
@@ -47,49 +48,44 @@ public:
     for (const PassDesc& desc : graph.passes) {
       Draw draw;
       std::string e = make_draw(desc, draw);
-      if (e.empty()) e = textures_.prepare(draw.pass, draw.stages, draw.targets);
+      if (e.empty())
+        if (ir::Status made = textures_.prepare(draw.pass, draw.stages, draw.targets); !made)
+          e = made.message();
       if (!e.empty()) {
         drop();
         return device_error(fmt::format("pass '{}': {}", desc.name, e));
       }
     }
     device_.save_pipeline_cache(); // for the next run (a no-op when nothing was added)
-    return status(textures_.set_batching(true));
+    return textures_.set_batching(true);
   }
 
   ir::Status run_pass(const PassDesc& desc) override {
     if (!graph_) return device_error("no run was begun");
     Draw draw;
     if (std::string e = make_draw(desc, draw); !e.empty()) return device_error(std::move(e));
-    vulkan::DrawResult r = textures_.draw(draw.pass, draw.stages, draw.targets);
-    return status(r.ok ? std::string() : r.error);
+    ir::Result<pass::DrawReport> drawn = textures_.draw(draw.pass, draw.stages, draw.targets);
+    if (!drawn) return std::move(drawn).failure();
+    return ir::ok_status();
   }
 
-  ir::Status finish() override { return status(textures_.flush()); }
+  ir::Status finish() override { return textures_.flush(); }
 
   // TextureSet::upload flushes the passes recorded so far first, so the passes before it
   // read the old image and those after it the new one.
   ir::Status update_input(const std::string& name, const img::Image& image) override {
     auto it = ids_.find(name);
     if (!graph_ || it == ids_.end()) return device_error(fmt::format("no input '{}'", name));
-    return status(textures_.upload(it->second, image));
+    return textures_.upload(it->second, image);
   }
 
   ir::Result<img::Image> read_texture(const std::string& name) override {
     auto it = ids_.find(name);
     if (it == ids_.end()) return device_error(fmt::format("no texture '{}'", name));
-    img::Image out;
-    if (std::string e = textures_.read(it->second, out); !e.empty())
-      return device_error(std::move(e));
-    return out;
+    return textures_.read(it->second);
   }
 
 private:
-  ir::Status status(std::string error) const {
-    if (error.empty()) return ir::ok_status();
-    return device_error(std::move(error));
-  }
-
   struct Draw {
     pass::Pass pass;
     vulkan::StageTextures stages{};

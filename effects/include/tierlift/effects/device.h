@@ -34,8 +34,10 @@ public:
   // its declared size and format; inputs take their image from `inputs` (already at the
   // declared size and stored in the declared format); every other texture starts at zero.
   // A device runs one graph at a time; begin_run drops what an earlier run left.
-  // Every failure below is one error (rule "device", the device's name as its subject)
-  // whose message says why; run_graph adds the pass and the device to it.
+  // Every failure below carries an error whose message says why: rule "device" (the
+  // device's name as its subject) for the device's own checks, or the failure of the
+  // library below passed on (vulkan::TextureSet's, cpu::draw's); run_graph adds the pass and
+  // the device to the message.
   virtual ir::Status begin_run(const EffectGraph& graph, const ImageMap& inputs) = 0;
   // Runs one pass of that graph: it samples the textures it binds and renders into its
   // target with its blend mode; the target's format is the store rule.

@@ -355,16 +355,13 @@ std::string submit_draw(Device::Impl& d, PreparedDraw& draw) {
   return err;
 }
 
-DrawResult draw_pass(Device::Impl& d, const pass::Pass& pass, const DrawTextures& textures) {
-  DrawResult res;
-  auto fail = [&](std::string msg) {
-    res.ok = false;
-    res.error = std::move(msg);
-    return res;
-  };
+ir::Result<pass::DrawReport> draw_pass(Device::Impl& d, const pass::Pass& pass,
+                                       const DrawTextures& textures) {
+  pass::DrawReport res;
   const auto t0 = Clock::now();
   PreparedDraw prepared;
-  if (std::string e = prepare_draw(d, pass, textures, prepared); !e.empty()) return fail(e);
+  if (std::string e = prepare_draw(d, pass, textures, prepared); !e.empty())
+    return draw_failure(std::move(e));
   Resident& target = *textures.target;
 
   // The staging buffer of a host target: its contents go up, the result comes back.
@@ -376,7 +373,7 @@ DrawResult draw_pass(Device::Impl& d, const pass::Pass& pass, const DrawTextures
     std::string err = create_buffer(
         d, cleanup, rt_bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
         rt_staging);
-    if (!err.empty()) return fail(err);
+    if (!err.empty()) return draw_failure(std::move(err));
     pack_pixels(*textures.host_target, rt_staging.mapped);
   }
   res.setup_ms = ms_since(t0);
@@ -396,11 +393,10 @@ DrawResult draw_pass(Device::Impl& d, const pass::Pass& pass, const DrawTextures
   });
   if (!err.empty()) {
     snapshot.restore();
-    return fail(err);
+    return draw_failure(std::move(err));
   }
   res.draw_ms = ms_since(t1);
   if (textures.host_target) unpack_pixels(rt_staging.mapped, *textures.host_target);
-  res.ok = true;
   return res;
 }
 

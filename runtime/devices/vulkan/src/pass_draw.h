@@ -13,6 +13,7 @@
 #include <memory>
 
 #include "resident.h"
+#include "tierlift/pass/device.h"
 #include "tierlift/pass/pass.h"
 
 namespace tierlift::vulkan {
@@ -68,8 +69,15 @@ void record_draw(VkCommandBuffer cb, const Device::Impl& d, PreparedDraw& draw);
 // restored (nothing changed on the device).
 std::string submit_draw(Device::Impl& d, PreparedDraw& draw);
 
-// Draws `pass` into textures.target now (prepare, submit, wait). On failure nothing was
-// submitted that changes any texture, and host_target is unchanged.
-DrawResult draw_pass(Device::Impl& d, const pass::Pass& pass, const DrawTextures& textures);
+// A failed draw or TextureSet call: `message` about "vulkan", rule kDrawRule (device.h).
+inline ir::Failure draw_failure(std::string message) {
+  return ir::fail("vulkan", std::string(kDrawRule), std::move(message));
+}
+
+// Draws `pass` into textures.target now (prepare, submit, wait); the report holds setup_ms
+// and draw_ms. On failure (draw_failure) nothing was submitted that changes any texture, and
+// host_target is unchanged.
+ir::Result<pass::DrawReport> draw_pass(Device::Impl& d, const pass::Pass& pass,
+                                       const DrawTextures& textures);
 
 } // namespace tierlift::vulkan

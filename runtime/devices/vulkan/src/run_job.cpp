@@ -22,34 +22,26 @@ ir::Result<Device*> process_device(const DeviceOptions& options) {
 }
 
 ir::Result<pass::DrawReport> PassDevice::draw(const pass::Pass& pass, img::Image& target) {
-  DrawResult r = device_.draw(pass, target);
-  if (!r.ok) return ir::fail("", "vulkan", "vulkan: " + r.error);
-  return pass::DrawReport{r.setup_ms, r.draw_ms, 0, 0};
+  ir::Result<pass::DrawReport> r = device_.draw(pass, target);
+  if (!r) return ir::fail("", "vulkan", "vulkan: " + r.message());
+  return pass::DrawReport{r->setup_ms, r->draw_ms, 0, 0};
 }
 
-VulkanRunResult run_job_vulkan(const pass::RunRequest& request, pass::RunDiagnostics& diags,
-                               const DeviceOptions& options) {
-  VulkanRunResult out;
+ir::Result<VulkanRun> run_job_vulkan(const pass::RunRequest& request, pass::RunDiagnostics& diags,
+                                     const DeviceOptions& options) {
   ir::Result<pass::Pass> prepared = pass::prepare_pass(request);
   pass::add_by_listing(diags, prepared.diagnostics());
-  if (!prepared) return out;
+  if (!prepared) return ir::fail("", "run", prepared.message());
   ir::Result<Device*> device = process_device(options);
-  if (!device) {
-    out.no_device = true;
-    out.error = device.message();
-    return out;
-  }
+  if (!device) return std::move(device).failure(); // kNoDeviceRule: no driver or device
+  VulkanRun out;
   out.device_name = (*device)->name();
   out.image = img::Image(request.width, request.height, request.format);
-  DrawResult r = (*device)->draw(*prepared, out.image);
-  out.setup_ms = r.setup_ms;
-  out.draw_ms = r.draw_ms;
-  if (!r.ok) {
-    out.error = r.error;
-    return out;
-  }
+  ir::Result<pass::DrawReport> r = (*device)->draw(*prepared, out.image);
+  if (!r) return std::move(r).failure();
+  out.setup_ms = r->setup_ms;
+  out.draw_ms = r->draw_ms;
   out.probes = pass::read_probes(out.image, request.probes);
-  out.ok = true;
   return out;
 }
 

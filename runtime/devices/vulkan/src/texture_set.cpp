@@ -44,58 +44,62 @@ double ms_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
 }
 
+// The status of an internal step that reports an error string (empty: success).
+ir::Status status_of(std::string error) {
+  if (error.empty()) return ir::ok_status();
+  return draw_failure(std::move(error));
+}
+
 } // namespace
 
 TextureSet::TextureSet(Device& device)
     : device_(device), state_(std::make_unique<State>(*device.impl_)) {}
 TextureSet::~TextureSet() = default;
 
-std::string TextureSet::create(uint32_t width, uint32_t height, img::Format format,
-                               TextureId& out) {
+ir::Result<TextureId> TextureSet::create(uint32_t width, uint32_t height, img::Format format) {
   if (width == 0 || height == 0 || width > img::kMaxDimension || height > img::kMaxDimension)
-    return fmt::format("texture size {}x{}: each side must be 1..{}", width, height,
-                       img::kMaxDimension);
+    return draw_failure(fmt::format("texture size {}x{}: each side must be 1..{}", width, height,
+                                    img::kMaxDimension));
   std::unique_ptr<Resident> r;
   if (std::string err = create_resident(*device_.impl_, width, height, format, r); !err.empty())
-    return err;
+    return draw_failure(std::move(err));
   const uint32_t id = state_->next_id++;
   state_->textures.emplace(id, std::move(r));
-  out = static_cast<TextureId>(id);
-  return {};
+  return static_cast<TextureId>(id);
 }
 
-std::string TextureSet::create_stencil(uint32_t width, uint32_t height, TextureId& out) {
+ir::Result<TextureId> TextureSet::create_stencil(uint32_t width, uint32_t height) {
   if (width == 0 || height == 0 || width > img::kMaxDimension || height > img::kMaxDimension)
-    return fmt::format("stencil buffer size {}x{}: each side must be 1..{}", width, height,
-                       img::kMaxDimension);
+    return draw_failure(fmt::format("stencil buffer size {}x{}: each side must be 1..{}", width,
+                                    height, img::kMaxDimension));
   std::unique_ptr<Resident> r;
   if (std::string err = create_stencil_resident(*device_.impl_, width, height, r); !err.empty())
-    return err;
+    return draw_failure(std::move(err));
   const uint32_t id = state_->next_id++;
   state_->textures.emplace(id, std::move(r));
-  out = static_cast<TextureId>(id);
-  return {};
+  return static_cast<TextureId>(id);
 }
 
-std::string TextureSet::upload(TextureId id, const img::Image& image) {
+ir::Status TextureSet::upload(TextureId id, const img::Image& image) {
   Resident* r = state_->find(id);
-  if (!r) return unknown(id);
+  if (!r) return draw_failure(unknown(id));
   if (r->stencil)
-    return fmt::format("texture {} is a stencil buffer: it starts at zero and only draws "
-                       "change it",
-                       static_cast<uint32_t>(id));
+    return draw_failure(fmt::format("texture {} is a stencil buffer: it starts at zero and only "
+                                    "draws change it",
+                                    static_cast<uint32_t>(id)));
   if (image.width != r->width || image.height != r->height ||
       image.rgba.size() != size_t{image.width} * image.height * 4)
-    return fmt::format("upload of a {}x{} image into the {}x{} texture {}", image.width,
-                       image.height, r->width, r->height, static_cast<uint32_t>(id));
-  if (std::string err = state_->flush(); !err.empty()) return err;
+    return draw_failure(fmt::format("upload of a {}x{} image into the {}x{} texture {}",
+                                    image.width, image.height, r->width, r->height,
+                                    static_cast<uint32_t>(id)));
+  if (std::string err = state_->flush(); !err.empty()) return draw_failure(std::move(err));
   Device::Impl& d = *device_.impl_;
   Cleanup cleanup;
   Buffer staging;
   const VkDeviceSize bytes = VkDeviceSize{r->width} * r->height * bytes_per_pixel(r->format);
   if (std::string err = create_buffer(d, cleanup, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, staging);
       !err.empty())
-    return err;
+    return draw_failure(std::move(err));
   if (image.format == r->format) {
     pack_pixels(image, staging.mapped);
   } else {
@@ -111,13 +115,13 @@ std::string TextureSet::upload(TextureId id, const img::Image& image) {
     r->stored = before;
     r->shadow_current = shadow_current;
   }
-  return err;
+  return status_of(std::move(err));
 }
 
-std::string TextureSet::read(TextureId id, img::Image& out) {
+ir::Result<img::Image> TextureSet::read(TextureId id) {
   Resident* r = state_->find(id);
-  if (!r) return unknown(id);
-  if (std::string err = state_->flush(); !err.empty()) return err;
+  if (!r) return draw_failure(unknown(id));
+  if (std::string err = state_->flush(); !err.empty()) return draw_failure(std::move(err));
   Device::Impl& d = *device_.impl_;
   Cleanup cleanup;
   Buffer staging;
@@ -125,25 +129,23 @@ std::string TextureSet::read(TextureId id, img::Image& out) {
       VkDeviceSize{r->width} * r->height * (r->stencil ? 1 : bytes_per_pixel(r->format));
   if (std::string err = create_buffer(d, cleanup, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, staging);
       !err.empty())
-    return err;
+    return draw_failure(std::move(err));
   const TrackedImage before = r->stored;
   std::string err =
       submit_and_wait(d, [&](VkCommandBuffer cb) { record_readback(cb, *r, staging.buffer); });
   if (!err.empty()) {
     r->stored = before;
-    return err;
+    return draw_failure(std::move(err));
   }
   if (r->stencil) { // as the CPU device reads its stencil buffer: the value in red
     img::Image image(r->width, r->height, img::Format::RGBA32F);
     const auto* bytes_in = static_cast<const uint8_t*>(staging.mapped);
     for (size_t i = 0; i < size_t{r->width} * r->height; ++i) image.rgba[4 * i] = bytes_in[i];
-    out = std::move(image);
-    return {};
+    return image;
   }
   img::Image image(r->width, r->height, r->format);
   unpack_pixels(staging.mapped, image);
-  out = std::move(image);
-  return {};
+  return image;
 }
 
 namespace {
@@ -171,8 +173,8 @@ std::string resolve(TextureSet::State& s, const StageTextures& stages, const Ren
   return {};
 }
 
-// The cached draw of `pass`, made now if there is none (a failure, rule "vulkan", when it
-// cannot be made); nullptr when the pass is not cached.
+// The cached draw of `pass`, made now if there is none (a draw_failure when it cannot be
+// made); nullptr when the pass is not cached.
 ir::Result<PreparedDraw*> cached_draw(TextureSet::State& s, const pass::Pass& pass,
                                       const DrawTextures& t) {
   std::optional<std::string> key = draw_key(pass, t);
@@ -180,84 +182,73 @@ ir::Result<PreparedDraw*> cached_draw(TextureSet::State& s, const pass::Pass& pa
   if (PreparedDraw* p = s.draws.find(*key)) return p;
   auto entry = std::make_unique<CachedDraw>();
   if (std::string e = prepare_draw(s.d, pass, t, entry->draw); !e.empty())
-    return ir::fail("vulkan", "vulkan", std::move(e));
+    return draw_failure(std::move(e));
   return &s.draws.insert(*key, pass, std::move(entry));
 }
 
 } // namespace
 
-std::string TextureSet::prepare(const pass::Pass& pass, const StageTextures& stages,
-                                TextureId target) {
+ir::Status TextureSet::prepare(const pass::Pass& pass, const StageTextures& stages,
+                               TextureId target) {
   RenderTargets targets;
   targets.color[0] = target;
   return prepare(pass, stages, targets);
 }
 
-std::string TextureSet::prepare(const pass::Pass& pass, const StageTextures& stages,
-                                const RenderTargets& targets) {
+ir::Status TextureSet::prepare(const pass::Pass& pass, const StageTextures& stages,
+                               const RenderTargets& targets) {
   DrawTextures textures;
-  if (std::string e = resolve(*state_, stages, targets, textures); !e.empty()) return e;
+  if (std::string e = resolve(*state_, stages, targets, textures); !e.empty())
+    return draw_failure(std::move(e));
   ir::Result<PreparedDraw*> cached = cached_draw(*state_, pass, textures);
-  return cached ? std::string() : cached.message();
+  if (!cached) return std::move(cached).failure();
+  return ir::ok_status();
 }
 
-DrawResult TextureSet::draw(const pass::Pass& pass, const StageTextures& stages, TextureId target) {
+ir::Result<pass::DrawReport> TextureSet::draw(const pass::Pass& pass, const StageTextures& stages,
+                                              TextureId target) {
   RenderTargets targets;
   targets.color[0] = target;
   return draw(pass, stages, targets);
 }
 
-DrawResult TextureSet::draw(const pass::Pass& pass, const StageTextures& stages,
-                            const RenderTargets& targets) {
+ir::Result<pass::DrawReport> TextureSet::draw(const pass::Pass& pass, const StageTextures& stages,
+                                              const RenderTargets& targets) {
   DrawTextures textures;
-  DrawResult res;
-  if (std::string e = resolve(*state_, stages, targets, textures); !e.empty()) {
-    res.error = e;
-    return res;
-  }
+  if (std::string e = resolve(*state_, stages, targets, textures); !e.empty())
+    return draw_failure(std::move(e));
   const auto t0 = std::chrono::steady_clock::now();
   ir::Result<PreparedDraw*> cached = cached_draw(*state_, pass, textures);
-  if (!cached) {
-    res.error = cached.message();
-    return res;
-  }
+  if (!cached) return std::move(cached).failure();
   PreparedDraw* p = *cached;
   if (!p) { // not cached: made, drawn and destroyed now
-    if (std::string e = state_->flush(); !e.empty()) {
-      res.error = e;
-      return res;
-    }
+    if (std::string e = state_->flush(); !e.empty()) return draw_failure(std::move(e));
     return draw_pass(*device_.impl_, pass, textures);
   }
+  pass::DrawReport res;
   res.setup_ms = ms_since(t0);
   const auto t1 = std::chrono::steady_clock::now();
   Device::Impl& d = *device_.impl_;
   if (state_->batching) {
     if (state_->pending == VK_NULL_HANDLE)
-      if (std::string e = begin_commands(d, state_->pending); !e.empty()) {
-        res.error = e;
-        return res;
-      }
+      if (std::string e = begin_commands(d, state_->pending); !e.empty())
+        return draw_failure(std::move(e));
     record_draw(state_->pending, d, *p);
   } else {
-    if (std::string e = submit_draw(d, *p); !e.empty()) {
-      res.error = e;
-      return res;
-    }
+    if (std::string e = submit_draw(d, *p); !e.empty()) return draw_failure(std::move(e));
   }
   res.draw_ms = ms_since(t1);
-  res.ok = true;
   return res;
 }
 
-std::string TextureSet::set_batching(bool on) {
+ir::Status TextureSet::set_batching(bool on) {
   std::string err = state_->flush();
   state_->batching = on;
-  return err;
+  return status_of(std::move(err));
 }
 
-std::string TextureSet::flush() {
-  return state_->flush();
+ir::Status TextureSet::flush() {
+  return status_of(state_->flush());
 }
 
 void TextureSet::destroy(TextureId id) {

@@ -7,15 +7,15 @@ namespace tierlift::cpu {
 
 ir::Result<pass::DrawReport> PassDevice::draw(const pass::Pass& pass, img::Image& target) {
   const auto t0 = std::chrono::steady_clock::now();
-  const DrawStats stats = cpu::draw(pass, target, threads_);
+  ir::Result<DrawStats> stats = cpu::draw(pass, target, threads_);
   pass::DrawReport report;
   report.draw_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  if (!stats.ok) return ir::fail("", "draw", stats.error);
-  report.pixels_shaded = stats.pixels_shaded;
-  report.pixels_killed = stats.pixels_killed;
+  if (!stats) return std::move(stats).failure(); // rule kDrawRule ("draw"), no subject
+  report.pixels_shaded = stats->pixels_shaded;
+  report.pixels_killed = stats->pixels_killed;
   ir::Result<pass::DrawReport> out(report);
-  if (stats.triangles == 0)
+  if (stats->triangles == 0)
     out.add({ir::Severity::Warning,
              {},
              "no triangle reached the screen (the vertex listing's oPos "

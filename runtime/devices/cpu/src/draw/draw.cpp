@@ -141,6 +141,10 @@ bool overwrites_all(const Pass& pass, const std::vector<Triangle>& setup, const 
   return detail::covers(setup, whole, sample_offset);
 }
 
+ir::Failure draw_failure(std::string why) {
+  return ir::fail("", std::string(kDrawRule), std::move(why));
+}
+
 void zero_targets(const Pass& pass, const DrawTargets& targets) {
   for (uint32_t i = 0; i < pass.color_targets; ++i)
     std::fill(targets.color[i]->rgba.begin(), targets.color[i]->rgba.end(), 0.0f);
@@ -148,31 +152,25 @@ void zero_targets(const Pass& pass, const DrawTargets& targets) {
 
 } // namespace
 
-DrawStats draw(const Pass& pass, img::Image& target, unsigned threads) {
+ir::Result<DrawStats> draw(const Pass& pass, img::Image& target, unsigned threads) {
   DrawTargets targets;
   targets.color[0] = &target;
   return draw(pass, targets, threads);
 }
 
-DrawStats draw(const Pass& pass, const DrawTargets& targets, unsigned threads) {
+ir::Result<DrawStats> draw(const Pass& pass, const DrawTargets& targets, unsigned threads) {
   DrawStats stats;
   if (std::string why = targets.color[0] ? check_targets(pass, targets) : "no render target";
-      !why.empty()) {
-    stats.ok = false;
-    stats.error = why;
-    return stats;
-  }
+      !why.empty())
+    return draw_failure(std::move(why));
   img::Image& target = *targets.color[0];
   // The block executor stores oC0 into one target and knows no stencil.
   const bool per_pixel_only = pass.color_targets > 1 || pass.depth_stencil.stencil_test;
   Viewport vp = pass.viewport;
   if (vp.width == 0) vp.width = target.width;
   if (vp.height == 0) vp.height = target.height;
-  if (std::string why = check_inputs(pass, target, vp); !why.empty()) {
-    stats.ok = false;
-    stats.error = why;
-    return stats;
-  }
+  if (std::string why = check_inputs(pass, target, vp); !why.empty())
+    return draw_failure(std::move(why));
 
   PassPrograms vms;
   std::unique_ptr<PixelBlockVM> block;
@@ -183,9 +181,7 @@ DrawStats draw(const Pass& pass, const DrawTargets& targets, unsigned threads) {
       block = PixelBlockVM::create(*pass.pixel_program, pass.conventions, pass.ps_constants,
                                    /*coords_2d=*/true); // BoundTextures reads u, v only
   } catch (const std::exception& e) {
-    stats.ok = false;
-    stats.error = std::string("the shader VM refused the program: ") + e.what();
-    return stats;
+    return draw_failure(std::string("the shader VM refused the program: ") + e.what());
   }
 
   // Vertex stage.
@@ -218,11 +214,8 @@ DrawStats draw(const Pass& pass, const DrawTargets& targets, unsigned threads) {
   }
   std::vector<Triangle> setup;
   for (const auto& t : tris) {
-    if (t[0] >= outs.size() || t[1] >= outs.size() || t[2] >= outs.size()) {
-      stats.ok = false;
-      stats.error = "triangle index out of range";
-      return stats;
-    }
+    if (t[0] >= outs.size() || t[1] >= outs.size() || t[2] >= outs.size())
+      return draw_failure("triangle index out of range");
     detail::setup_triangle({&outs[t[0]], &outs[t[1]], &outs[t[2]]}, vp, scissor, pass.conventions,
                            setup);
   }
@@ -255,9 +248,7 @@ DrawStats draw(const Pass& pass, const DrawTargets& targets, unsigned threads) {
     if (job.block)
       for (auto& bw : block_workers) bw = std::make_unique<detail::BlockWorker>(*job.block, job);
   } catch (const std::exception& e) {
-    stats.ok = false;
-    stats.error = std::string("draw failed: ") + e.what();
-    return stats;
+    return draw_failure(std::string("draw failed: ") + e.what());
   }
   if (targets.stale && !overwrites_all(pass, setup, scissor, target, offset))
     zero_targets(pass, targets);
@@ -301,10 +292,7 @@ DrawStats draw(const Pass& pass, const DrawTargets& targets, unsigned threads) {
     stats.pixels_killed += w.killed;
     stats.pixels_block += w.block;
   }
-  if (!failure.empty()) {
-    stats.ok = false;
-    stats.error = "draw failed: " + failure;
-  }
+  if (!failure.empty()) return draw_failure("draw failed: " + failure);
   return stats;
 }
 

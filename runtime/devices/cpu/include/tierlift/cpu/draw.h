@@ -62,6 +62,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "tierlift/cpu/shader_vm.h"
@@ -69,6 +70,7 @@
 #include "tierlift/image/image.h"
 #include "tierlift/ir/conventions.h"
 #include "tierlift/ir/program.h"
+#include "tierlift/ir/result.h"
 
 namespace tierlift::cpu {
 
@@ -86,6 +88,9 @@ using pass::Viewport;
 // render targets (oC0..oC3) and a stencil buffer (no depth buffer: a pass that asks for a
 // depth test or depth writes is refused).
 inline constexpr pass::Capabilities kCapabilities{4, true, false};
+
+// The rule of a failed draw.
+inline constexpr std::string_view kDrawRule = "draw";
 
 // Where one draw writes. color[i] receives oC#i for i < pass.color_targets (every one of them
 // set and of color[0]'s size; each has its own format and store rule, the blend mode is
@@ -105,9 +110,8 @@ struct DrawTargets {
   bool stale = false;
 };
 
+// What a draw did.
 struct DrawStats {
-  bool ok = true;
-  std::string error;          // why nothing was drawn (e.g. a program the VM refuses)
   uint64_t triangles = 0;     // after clipping
   uint64_t pixels_shaded = 0; // pixel-stage invocations
   uint64_t pixels_killed = 0; // discarded by texkill
@@ -116,11 +120,12 @@ struct DrawStats {
 
 // Draws `pass` into `target` (its format decides the store rule). Never throws on bad
 // input: a program the VM cannot run, an index out of range or a target larger than
-// img::kMaxDimension returns ok = false and leaves the target unchanged.
-DrawStats draw(const Pass& pass, img::Image& target, unsigned threads = 0);
+// img::kMaxDimension is a failure (rule kDrawRule, no subject) that says why nothing was
+// drawn, and leaves the target unchanged.
+ir::Result<DrawStats> draw(const Pass& pass, img::Image& target, unsigned threads = 0);
 // The same into several render targets and a stencil buffer (DrawTargets). Passes with more
 // than one target or a stencil test take the per-pixel executor.
-DrawStats draw(const Pass& pass, const DrawTargets& targets, unsigned threads = 0);
+ir::Result<DrawStats> draw(const Pass& pass, const DrawTargets& targets, unsigned threads = 0);
 
 // Blend `src` onto the stored `dst` and quantise for `format` (the per-pixel store rule,
 // exposed for tests). `rounding` is the pass's ir::Conventions::rounding: for RGBA8 targets

@@ -3,6 +3,7 @@
 // call run_job() directly; the CLI prepares the pass once and hands it to each device.
 #pragma once
 
+#include <string_view>
 #include <vector>
 
 #include "tierlift/cpu/draw.h"
@@ -19,20 +20,26 @@ using pass::RunRequest;
 using pass::StageMask;
 using pass::TextureSetting;
 
+// What a run drew.
 struct RunResult {
-  bool ok = false;
   img::Image image;
   std::vector<ProbeValue> probes;
   DrawStats stats;
   double setup_ms = 0, draw_ms = 0;
 };
 
-// Draws `pass` into a new `width`×`height` target of `format` and reads `probes`. ok is
-// false on any error (reported in diags.other); warnings never stop the run.
-RunResult run_pass(const Pass& pass, uint32_t width, uint32_t height, img::Format format,
-                   const std::vector<ProbePoint>& probes, unsigned threads, RunDiagnostics& diags);
+// The rule of run_pass's and run_job's failures; their diagnostics are in `diags`.
+inline constexpr std::string_view kRunRule = "run";
 
-// prepare_pass, then run_pass. ok is false on any error (reported in `diags`).
-RunResult run_job(const RunRequest& request, RunDiagnostics& diags);
+// Draws `pass` into a new `width`×`height` target of `format` and reads `probes`. On any
+// error (reported in diags.other) a failure (rule kRunRule) with that error's message;
+// warnings never stop the run.
+ir::Result<RunResult> run_pass(const Pass& pass, uint32_t width, uint32_t height,
+                               img::Format format, const std::vector<ProbePoint>& probes,
+                               unsigned threads, RunDiagnostics& diags);
+
+// prepare_pass, then run_pass. On any error (reported in `diags`) a failure (rule kRunRule)
+// with the first error's message.
+ir::Result<RunResult> run_job(const RunRequest& request, RunDiagnostics& diags);
 
 } // namespace tierlift::cpu

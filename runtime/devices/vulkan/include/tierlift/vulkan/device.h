@@ -23,7 +23,8 @@
 //     border with D3D9's transparent black border (opaque black/white also map; any other
 //     border colour or MirrorOnce is an error). One mip level, unnormalised LOD 0.
 //   * Constants: codegen::pack_uniforms with the pass's ConstantBanks and bump-env states.
-// Nothing throws: every failure is returned as a message.
+// Nothing throws: every failure is returned as an ir::Result whose error is about "vulkan"
+// (rule kDrawRule for a draw).
 #pragma once
 
 #include <functional>
@@ -34,6 +35,7 @@
 
 #include "tierlift/image/image.h"
 #include "tierlift/ir/result_diagnostics.h"
+#include "tierlift/pass/device.h"
 #include "tierlift/pass/pass.h"
 
 namespace tierlift::vulkan {
@@ -66,19 +68,14 @@ struct DeviceOptions {
   std::function<void(const std::vector<std::string>&)> on_destroyed;
 };
 
-struct DrawResult {
-  bool ok = false;
-  std::string error;
-  double setup_ms = 0; // compile, pipeline, resources, uploads of host images
-  double draw_ms = 0;  // submit to fence (float copies of sampled textures, the draw, readback)
-};
-
 // The rules of Device::create's failures. Only kNoDeviceRule (the loader found no driver,
 // or the driver enumerates no physical device) describes a machine without Vulkan, which a
 // caller may treat as "cannot run here" (ir::failed_with(r, kNoDeviceRule)); every other
 // failure (kDeviceRule) is a fault to report.
 inline constexpr std::string_view kNoDeviceRule = "no-vulkan-device";
 inline constexpr std::string_view kDeviceRule = "vulkan-device";
+// The rule of a failed draw or TextureSet call (texture_set.h); its subject is "vulkan".
+inline constexpr std::string_view kDrawRule = "vulkan";
 
 class Device {
 public:
@@ -94,9 +91,11 @@ public:
   uint32_t subtexel_bits() const; // VkPhysicalDeviceLimits::subTexelPrecisionBits
 
   // Draws `pass` into `target`: its format selects the attachment format, its current
-  // pixels are the destination blending reads; on success it holds the stored result.
-  // On failure the target is unchanged.
-  DrawResult draw(const pass::Pass& pass, img::Image& target);
+  // pixels are the destination blending reads; on success it holds the stored result and
+  // the report its timings: setup_ms (compile, pipeline, resources, uploads of host images)
+  // and draw_ms (submit to fence: float copies of sampled textures, the draw, readback);
+  // the pixel counters stay 0. On failure the target is unchanged.
+  ir::Result<pass::DrawReport> draw(const pass::Pass& pass, img::Image& target);
 
   // Stores the pipelines made so far in the user's cache directory for the next run
   // (pipeline_cache.h; also done when the device is destroyed). Failures are ignored.

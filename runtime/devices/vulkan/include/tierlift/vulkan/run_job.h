@@ -13,8 +13,9 @@
 namespace tierlift::vulkan {
 
 // The process's device for `options`: created on first use and kept until exit (creating it
-// is the slow part of a run). A failure's rule is "device": no Vulkan driver, device or layer,
-// an environment problem rather than a fault of the pass.
+// is the slow part of a run). A failure is Device::create's (rule kNoDeviceRule or
+// kDeviceRule): no Vulkan driver, device or layer, an environment problem rather than a fault
+// of the pass.
 ir::Result<Device*> process_device(const DeviceOptions& options);
 
 class PassDevice final : public pass::Device {
@@ -31,10 +32,8 @@ private:
   vulkan::Device& device_;
 };
 
-struct VulkanRunResult {
-  bool ok = false;
-  bool no_device = false; // no Vulkan driver/device/layer: an environment problem (exit 2)
-  std::string error;
+// What run_job_vulkan drew.
+struct VulkanRun {
   std::string device_name;
   img::Image image;
   std::vector<pass::ProbeValue> probes;
@@ -42,8 +41,11 @@ struct VulkanRunResult {
 };
 
 // prepare_pass (errors in the request go to `diags`), then the pass drawn into a new target
-// of the request's size and format on process_device(options); device problems in `error`.
-VulkanRunResult run_job_vulkan(const pass::RunRequest& request, pass::RunDiagnostics& diags,
-                               const DeviceOptions& options);
+// of the request's size and format on process_device(options). A failure is one of: the
+// request's first error (rule "run"; its diagnostics are in `diags`); the device's, as
+// process_device returns it (rule kNoDeviceRule or kDeviceRule: no Vulkan driver, device or
+// layer, an environment problem, exit 2 in the CLI); the draw's (rule kDrawRule).
+ir::Result<VulkanRun> run_job_vulkan(const pass::RunRequest& request, pass::RunDiagnostics& diags,
+                                     const DeviceOptions& options);
 
 } // namespace tierlift::vulkan

@@ -3,14 +3,14 @@
 // through host memory, and images come back only when read.
 //
 //   vulkan::TextureSet set(device);
-//   vulkan::TextureId scene, glow;
-//   set.create(1280, 720, img::Format::RGBA8, scene);   // zeros until written
+//   vulkan::TextureId scene = *set.create(1280, 720, img::Format::RGBA8); // zeros until written
 //   set.upload(scene, image);                           // stored with RGBA8's store rule
-//   set.create(1280, 720, img::Format::RGBA8, glow);
+//   vulkan::TextureId glow = *set.create(1280, 720, img::Format::RGBA8);
 //   vulkan::StageTextures stages{};
 //   stages[0] = scene;                                  // s0 samples `scene`
 //   set.draw(pass, stages, glow);                       // no upload, no readback
-//   set.read(glow, out);                                // out: RGBA8 values as floats
+//   img::Image out = *set.read(glow);                   // RGBA8 values as floats
+// (each call returns an ir::Result or ir::Status: check it before using the value).
 //
 // What a texture is on the device:
 //   * Stored in its own format (RGBA8 UNORM, RGBA16F, RGBA32F): a draw renders into it with
@@ -35,7 +35,8 @@
 // pass again (same programs, constants, states, textures) only records it. prepare() makes
 // it ahead of the first draw (an effect's setup). Passes without a vertex program, or with a
 // stage sampling a host image, are made anew on every draw.
-// Nothing throws: every failure is returned as a message; a failed call changes no texture.
+// Nothing throws: every failure is returned as an ir::Result (or ir::Status) whose error is
+// about "vulkan", rule kDrawRule (device.h); a failed call changes no texture.
 #pragma once
 
 #include <array>
@@ -44,6 +45,8 @@
 #include <string>
 
 #include "tierlift/image/image.h"
+#include "tierlift/ir/result.h"
+#include "tierlift/pass/device.h"
 #include "tierlift/pass/pass.h"
 #include "tierlift/vulkan/device.h"
 
@@ -74,31 +77,35 @@ public:
   TextureSet(const TextureSet&) = delete;
   TextureSet& operator=(const TextureSet&) = delete;
 
-  // A `width` × `height` texture (1..img::kMaxDimension each) stored in `format`, all zero.
-  std::string create(uint32_t width, uint32_t height, img::Format format, TextureId& out);
-  // A `width` × `height` 8-bit stencil buffer, all zero. It cannot be sampled or uploaded;
-  // read() returns it as RGBA32F with the stencil value (0..255) in red and zeros elsewhere.
-  std::string create_stencil(uint32_t width, uint32_t height, TextureId& out);
+  // A new `width` × `height` texture (1..img::kMaxDimension each) stored in `format`, all
+  // zero.
+  ir::Result<TextureId> create(uint32_t width, uint32_t height, img::Format format);
+  // A new `width` × `height` 8-bit stencil buffer, all zero. It cannot be sampled or
+  // uploaded; read() returns it as RGBA32F with the stencil value (0..255) in red and zeros
+  // elsewhere.
+  ir::Result<TextureId> create_stencil(uint32_t width, uint32_t height);
   // Replaces the texture's contents with `image` (same size; stored with the texture's
   // format's store rule whatever image.format says).
-  std::string upload(TextureId id, const img::Image& image);
-  // The texture's contents: out becomes width × height in its format.
-  std::string read(TextureId id, img::Image& out);
+  ir::Status upload(TextureId id, const img::Image& image);
+  // The texture's contents: width × height in its format.
+  ir::Result<img::Image> read(TextureId id);
   // Draws `pass` into `target`, sampling `stages` (see StageTextures). The target's current
-  // contents are the destination blending reads. Nothing is read back.
-  DrawResult draw(const pass::Pass& pass, const StageTextures& stages, TextureId target);
+  // contents are the destination blending reads. Nothing is read back. The report holds
+  // setup_ms and draw_ms (as Device::draw's); the pixel counters stay 0.
+  ir::Result<pass::DrawReport> draw(const pass::Pass& pass, const StageTextures& stages,
+                                    TextureId target);
   // The same into several render targets and a stencil buffer (MRT, stencil test).
-  DrawResult draw(const pass::Pass& pass, const StageTextures& stages,
-                  const RenderTargets& targets);
+  ir::Result<pass::DrawReport> draw(const pass::Pass& pass, const StageTextures& stages,
+                                    const RenderTargets& targets);
   // Makes what draw(pass, stages, targets) needs, without drawing.
-  std::string prepare(const pass::Pass& pass, const StageTextures& stages, TextureId target);
-  std::string prepare(const pass::Pass& pass, const StageTextures& stages,
-                      const RenderTargets& targets);
+  ir::Status prepare(const pass::Pass& pass, const StageTextures& stages, TextureId target);
+  ir::Status prepare(const pass::Pass& pass, const StageTextures& stages,
+                     const RenderTargets& targets);
   // Batching on: draw() records; off: draw() submits and waits (flushing first). A draw's
-  // DrawResult::draw_ms is then the recording time; the work is timed by flush().
-  std::string set_batching(bool on);
-  // Submits what batched draws recorded and waits for it. Empty string on success.
-  std::string flush();
+  // DrawReport::draw_ms is then the recording time; the work is timed by flush().
+  ir::Status set_batching(bool on);
+  // Submits what batched draws recorded and waits for it.
+  ir::Status flush();
   // Frees one texture (unknown ids are ignored) or all of them (after a flush).
   void destroy(TextureId id);
   void clear();
