@@ -64,10 +64,10 @@ TEST(QuadCoords, ExtractTapsReadsCornerValuesInFp32) {
   auto ps = parse("ps_2_0\ndcl t0\ndcl_2d s0\ntexld r0, t0, s0\nmov oC0, r0\n");
   ASSERT_TRUE(vs && ps);
   auto ex = analytic::extract_taps(*vs, {{0.1f, -0.2f, 0, 0}, {3, 0.5f, 0, 0}}, *ps, {});
-  ASSERT_TRUE(ex) << ex.error;
-  ASSERT_EQ(ex.taps.size(), 1u);
-  ASSERT_TRUE(ex.taps[0].corners.has_value());
-  const analytic::QuadCorners& c = *ex.taps[0].corners;
+  ASSERT_TRUE(ex) << ex.message();
+  ASSERT_EQ(ex->taps.size(), 1u);
+  ASSERT_TRUE(ex->taps[0].corners.has_value());
+  const analytic::QuadCorners& c = *ex->taps[0].corners;
   EXPECT_EQ(c[0][0], 0.1f);
   EXPECT_EQ(c[0][1], -0.2f);
   EXPECT_EQ(c[1][0], 3.0f + 0.1f);
@@ -103,9 +103,9 @@ TEST(QuadCoords, EqualsTheInterpretersInterpolationAtEveryPixel) {
         auto ex = analytic::extract_reads(*vs, {consts[0], consts[1]},
                                           *parse("ps_2_0\ndcl t0\ndcl_2d s0\ntexld r0, t0, s0\n"
                                                  "mov oC0, r0\n"));
-        ASSERT_TRUE(ex) << ex.error;
-        ASSERT_TRUE(ex.reads.at(0).corners.has_value());
-        const analytic::QuadCoords model(*ex.reads[0].corners, s.w, s.h, center);
+        ASSERT_TRUE(ex) << ex.message();
+        ASSERT_TRUE(ex->at(0).corners.has_value());
+        const analytic::QuadCoords model(*(*ex)[0].corners, s.w, s.h, center);
         size_t differ = 0;
         for (uint32_t j = 0; j < s.h; ++j)
           for (uint32_t i = 0; i < s.w; ++i) {

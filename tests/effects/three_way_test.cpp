@@ -239,13 +239,13 @@ void check_half_texel_rule(Tier tier, bool half_texel) {
     ASSERT_EQ(d.textures[0].sampler.address_u, cpu::AddressMode::Clamp);
     ASSERT_EQ(d.textures[0].sampler.address_v, cpu::AddressMode::Clamp);
     const img::Image& source = run.images.at(d.textures[0].texture);
-    analytic::TapExtraction ex =
+    ir::Result<analytic::TapExtraction> ex =
         analytic::extract_taps(*d.vs, d.vs_constants, *d.ps, d.ps_constants);
-    ASSERT_TRUE(ex) << ex.error;
-    ASSERT_EQ(ex.taps.size(), per_pass);
+    ASSERT_TRUE(ex) << ex.message();
+    ASSERT_EQ(ex->taps.size(), per_pass);
     // The intended taps are the profile's first taps along the axis (padding: weight 0).
     const auto texel_taps =
-        tierlift::test::intended_texel_taps(ex.taps, source.width, source.height);
+        tierlift::test::intended_texel_taps(ex->taps, source.width, source.height);
     for (size_t k = 0; k < per_pass && k < plan.taps.size(); ++k) {
       EXPECT_EQ(vertical ? texel_taps[k].dy : texel_taps[k].dx, plan.taps[k].offset) << k;
       EXPECT_EQ(vertical ? texel_taps[k].dx : texel_taps[k].dy, 0) << k;
@@ -260,7 +260,7 @@ void check_half_texel_rule(Tier tier, bool half_texel) {
     ASSERT_TRUE(conv) << conv.message();
     const img::Image& result = run.run->passes[index].result;
     ASSERT_EQ(result.rgba.size(), conv->rgba.size());
-    auto pred = tierlift::test::predict_corner_difference(ex.taps, source, m);
+    auto pred = tierlift::test::predict_corner_difference(ex->taps, source, m);
     ASSERT_TRUE(pred) << pred.message();
     double worst = 0;
     for (size_t v = 0; v < result.rgba.size(); ++v) {

@@ -61,9 +61,9 @@ std::string prepare(const PassDesc& pass, const EffectGraph& graph, const ImageM
   if (in.ps1x_clamp && graph.conventions.ps1x_fixed_bits != 0)
     return fmt::format("pass '{}': ps_1_x fixed-point emulation ({} bits) is not modelled",
                        pass.name, graph.conventions.ps1x_fixed_bits);
-  if (std::string e = analytic::check_position_passthrough(*pass.vs); !e.empty())
+  if (ir::Status quad = analytic::check_position_passthrough(*pass.vs); !quad)
     return fmt::format("cannot model pass '{}' (a full-screen quad): vertex listing: {}", pass.name,
-                       e);
+                       quad.message());
   return "";
 }
 
@@ -212,34 +212,36 @@ std::string run_analytic_pass(const PassDesc& pass, const EffectGraph& graph, Im
     }
     result.emplace(analytic::linear_pass(taps, in, &pass_notes));
   } else if (pass.analytic == AnalyticForm::Linear) {
-    analytic::TapExtraction ex =
+    ir::Result<analytic::TapExtraction> ex =
         analytic::extract_taps(*pass.vs, pass.vs_constants, *pass.ps, pass.ps_constants);
     if (!ex)
       return fmt::format("cannot model pass '{}' as a weighted sum of reads: {}", pass.name,
-                         ex.error);
-    pass_notes = ex.notes;
-    result.emplace(analytic::linear_pass(ex.taps, in, &pass_notes));
+                         ex.message());
+    pass_notes = ex->notes;
+    result.emplace(analytic::linear_pass(ex->taps, in, &pass_notes));
   } else if (pass.analytic == AnalyticForm::MaskByAlphaFogged) {
-    analytic::ReadExtraction ex = analytic::extract_reads(*pass.vs, pass.vs_constants, *pass.ps);
+    ir::Result<std::vector<analytic::Tap>> ex =
+        analytic::extract_reads(*pass.vs, pass.vs_constants, *pass.ps);
     if (!ex)
-      return fmt::format("cannot model pass '{}' as fogged glow sources: {}", pass.name, ex.error);
-    if (ex.reads.size() != 2)
+      return fmt::format("cannot model pass '{}' as fogged glow sources: {}", pass.name,
+                         ex.message());
+    if (ex->size() != 2)
       return fmt::format("cannot model pass '{}' as fogged glow sources: the pixel listing takes "
                          "{} different reads (expected the sources, then the depth)",
-                         pass.name, ex.reads.size());
-    result.emplace(analytic::fogged_mask_pass(ex.reads[0], ex.reads[1],
-                                              analytic::fog_form(*pass.ps, pass.ps_constants), in,
-                                              &pass_notes));
+                         pass.name, ex->size());
+    result.emplace(analytic::fogged_mask_pass(
+        (*ex)[0], (*ex)[1], analytic::fog_form(*pass.ps, pass.ps_constants), in, &pass_notes));
   } else {
-    analytic::ReadExtraction ex = analytic::extract_reads(*pass.vs, pass.vs_constants, *pass.ps);
+    ir::Result<std::vector<analytic::Tap>> ex =
+        analytic::extract_reads(*pass.vs, pass.vs_constants, *pass.ps);
     if (!ex)
       return fmt::format("cannot model pass '{}' as rgb × alpha of one read: {}", pass.name,
-                         ex.error);
-    if (ex.reads.size() != 1)
+                         ex.message());
+    if (ex->size() != 1)
       return fmt::format("cannot model pass '{}' as rgb × alpha of one read: the pixel listing "
                          "takes {} different reads",
-                         pass.name, ex.reads.size());
-    result.emplace(analytic::mask_by_alpha_pass(ex.reads[0], in, &pass_notes));
+                         pass.name, ex->size());
+    result.emplace(analytic::mask_by_alpha_pass((*ex)[0], in, &pass_notes));
   }
   if (!*result) return fmt::format("pass '{}': {}", pass.name, result->message());
   img::Image image = std::move(*result).value();

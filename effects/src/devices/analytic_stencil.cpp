@@ -18,8 +18,8 @@ std::string coverage(const PassDesc& pass, const ir::Conventions& conventions, u
     return {};
   }
   covered.assign(size_t{w} * h, 0);
-  if (std::string e = analytic::check_position_passthrough(*pass.vs); !e.empty())
-    return fmt::format("cannot model pass '{}': vertex listing: {}", pass.name, e);
+  if (ir::Status quad = analytic::check_position_passthrough(*pass.vs); !quad)
+    return fmt::format("cannot model pass '{}': vertex listing: {}", pass.name, quad.message());
   const uint32_t reg = pass::position_input(*pass.vs);
   if (reg >= 16) return fmt::format("pass '{}': position input v{} out of range", pass.name, reg);
   // Screen positions: x_s = (x/w + 1)·W/2, y_s = (1 − y/w)·H/2 (docs/design.md), snapped to

@@ -63,29 +63,23 @@ std::string structural_error(std::string_view who, const ir::Program& vs, const 
   return {};
 }
 
+ir::Failure form_failure(std::string message) {
+  return ir::fail("analytic", std::string(kFormRule), std::move(message));
+}
+
 } // namespace detail
 
-TapExtraction extract_taps(const ir::Program& vs, const std::vector<Vec4>& vs_consts,
-                           const ir::Program& ps, const std::vector<Vec4>& ps_consts) {
-  TapExtraction out;
-  if (std::string e = detail::structural_error("extract_taps", vs, ps); !e.empty()) {
-    out.error = e;
-    return out;
-  }
+ir::Result<TapExtraction> extract_taps(const ir::Program& vs, const std::vector<Vec4>& vs_consts,
+                                       const ir::Program& ps, const std::vector<Vec4>& ps_consts) {
+  if (std::string e = detail::structural_error("extract_taps", vs, ps); !e.empty())
+    return detail::form_failure(e);
   detail::CoordForms coords = detail::evaluate_coords(vs, vs_consts);
-  if (!coords.error.empty()) {
-    out.error = "vertex listing: " + coords.error;
-    return out;
-  }
+  if (!coords.error.empty()) return detail::form_failure("vertex listing: " + coords.error);
   detail::SumForm sum = detail::evaluate_sum(ps, ps_consts, coords.colour);
-  if (!sum.error.empty()) {
-    out.error = "pixel listing: " + sum.error;
-    return out;
-  }
-  if (std::string e = detail::place_taps(coords, sum.taps); !e.empty()) {
-    out.error = e;
-    return out;
-  }
+  if (!sum.error.empty()) return detail::form_failure("pixel listing: " + sum.error);
+  if (std::string e = detail::place_taps(coords, sum.taps); !e.empty())
+    return detail::form_failure(e);
+  TapExtraction out;
   out.taps = std::move(sum.taps);
   out.notes = std::move(sum.notes);
   out.texcoord_input = coords.texcoord_input;

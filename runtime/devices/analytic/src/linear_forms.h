@@ -43,6 +43,9 @@ using ColourConstants = std::array<std::optional<std::array<double, 4>>, 2>;
 // first validate_ir error, naming the listing.
 std::string structural_error(std::string_view who, const ir::Program& vs, const ir::Program& ps);
 
+// A failure of the public extract_* / check_* functions (taps.h: kFormRule).
+ir::Failure form_failure(std::string message);
+
 struct CoordForms {
   uint32_t texcoord_input = 0;
   ColourConstants colour;                          // per oD#: set when it is a constant

@@ -8,7 +8,7 @@
 
 namespace tierlift::analytic {
 
-std::string check_position_passthrough(const ir::Program& vs) {
+ir::Status check_position_passthrough(const ir::Program& vs) {
   uint32_t position = 0; // D3D8-style listings without declarations feed v0
   for (const ir::Declaration& d : vs.decls)
     if (d.reg.file == ir::RegFile::Input && d.usage == ir::DeclUsage::Position) {
@@ -19,20 +19,22 @@ std::string check_position_passthrough(const ir::Program& vs) {
   for (const ir::Instruction& in : vs.code) {
     const ir::OpInfo& info = ir::op_info(in.op);
     if (info.cls == ir::OpClass::Flow && in.op != ir::Opcode::Label)
-      return fmt::format("{}: flow control ({}) is outside the model of the full-screen quad",
-                         detail::where(in.loc), info.mnemonic);
+      return detail::form_failure(
+          fmt::format("{}: flow control ({}) is outside the model of the full-screen quad",
+                      detail::where(in.loc), info.mnemonic));
     if (in.dst && in.dst->file == ir::RegFile::RastOut && in.dst->index == ir::kRastPos) last = &in;
   }
-  if (!last) return "oPos is never written";
+  if (!last) return detail::form_failure("oPos is never written");
   const bool passthrough =
       last->op == ir::Opcode::Mov && last->dst->mask == ir::kFullMask && !last->mods.sat &&
       last->mods.shift == 0 && last->src.size() == 1 && last->src[0].file == ir::RegFile::Input &&
       last->src[0].index == position && !last->src[0].rel &&
       last->src[0].swizzle == ir::kIdentitySwizzle && last->src[0].mod == ir::SrcMod::None;
   if (!passthrough)
-    return fmt::format("{}: oPos is not the position input v{} passed through (mov oPos, v{})",
-                       detail::where(last->loc), position, position);
-  return "";
+    return detail::form_failure(
+        fmt::format("{}: oPos is not the position input v{} passed through (mov oPos, v{})",
+                    detail::where(last->loc), position, position));
+  return ir::ok_status();
 }
 
 } // namespace tierlift::analytic

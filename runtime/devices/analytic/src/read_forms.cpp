@@ -6,25 +6,16 @@
 
 namespace tierlift::analytic {
 
-ReadExtraction extract_reads(const ir::Program& vs, const std::vector<Vec4>& vs_consts,
-                             const ir::Program& ps) {
-  ReadExtraction out;
-  if (std::string e = detail::structural_error("extract_reads", vs, ps); !e.empty()) {
-    out.error = e;
-    return out;
-  }
+ir::Result<std::vector<Tap>>
+extract_reads(const ir::Program& vs, const std::vector<Vec4>& vs_consts, const ir::Program& ps) {
+  if (std::string e = detail::structural_error("extract_reads", vs, ps); !e.empty())
+    return detail::form_failure(e);
   detail::CoordForms coords = detail::evaluate_coords(vs, vs_consts);
-  if (!coords.error.empty()) {
-    out.error = "vertex listing: " + coords.error;
-    return out;
-  }
+  if (!coords.error.empty()) return detail::form_failure("vertex listing: " + coords.error);
   std::vector<Tap> reads;
   for (const ir::Instruction& in : ps.code) {
     ir::Result<std::optional<std::pair<uint32_t, uint32_t>>> sampled = detail::sample_key(in);
-    if (!sampled) {
-      out.error = "pixel listing: " + sampled.message();
-      return out;
-    }
+    if (!sampled) return detail::form_failure("pixel listing: " + sampled.message());
     const std::optional<std::pair<uint32_t, uint32_t>> key = *sampled;
     if (!key) continue;
     auto same = [&](const Tap& t) { return t.texcoord == key->first && t.sampler == key->second; };
@@ -35,12 +26,8 @@ ReadExtraction extract_reads(const ir::Program& vs, const std::vector<Vec4>& vs_
       reads.push_back(t);
     }
   }
-  if (std::string e = detail::place_taps(coords, reads); !e.empty()) {
-    out.error = e;
-    return out;
-  }
-  out.reads = std::move(reads);
-  return out;
+  if (std::string e = detail::place_taps(coords, reads); !e.empty()) return detail::form_failure(e);
+  return reads;
 }
 
 } // namespace tierlift::analytic

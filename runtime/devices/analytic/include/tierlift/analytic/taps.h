@@ -11,9 +11,11 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "tierlift/ir/program.h"
+#include "tierlift/ir/result.h"
 
 namespace tierlift::analytic {
 
@@ -36,9 +38,11 @@ struct TapExtraction {
   std::vector<Tap> taps;          // in the order the pixel listing first samples them
   uint32_t texcoord_input = 0;    // the vs input register (v#) declared dcl_texcoord
   std::vector<std::string> notes; // assumptions the linear model made (e.g. clamps)
-  std::string error;              // non-empty: not of the linear blur form; taps empty
-  explicit operator bool() const { return error.empty(); }
 };
+
+// The rule of every failure below: the listings are not of the form the model knows (one
+// error, subject "analytic", whose message names the listing and the instruction).
+inline constexpr std::string_view kFormRule = "analytic-form";
 
 // vs_consts / ps_consts are the API-set constants c0, c1, …; a `def` in a listing
 // overrides them, as in D3D9. Missing constants read 0. ps_1_x constants clamp to [-1, 1].
@@ -46,24 +50,19 @@ struct TapExtraction {
 // instruction (line:col) that breaks it. Tap coordinates: u' = scale.u·u + offset.u (and v),
 // where u is the texcoord input; a coordinate with a cross term (u' depending on v) or a
 // non-finite scale is not of the form.
-TapExtraction extract_taps(const ir::Program& vs, const std::vector<Vec4>& vs_consts,
-                           const ir::Program& ps, const std::vector<Vec4>& ps_consts);
+ir::Result<TapExtraction> extract_taps(const ir::Program& vs, const std::vector<Vec4>& vs_consts,
+                                       const ir::Program& ps, const std::vector<Vec4>& ps_consts);
 
 // Every texture read the pixel listing takes, in order of first appearance, with its
 // coordinate from the vertex listing (weight left at 0), whatever the listing computes from
 // the reads: the analytic device's non-linear forms (rgb × alpha) say themselves what is
 // done with them. Errors as extract_taps (dependent reads, coordinates not of the form).
-struct ReadExtraction {
-  std::vector<Tap> reads;
-  std::string error;
-  explicit operator bool() const { return error.empty(); }
-};
-ReadExtraction extract_reads(const ir::Program& vs, const std::vector<Vec4>& vs_consts,
-                             const ir::Program& ps);
+ir::Result<std::vector<Tap>>
+extract_reads(const ir::Program& vs, const std::vector<Vec4>& vs_consts, const ir::Program& ps);
 
 // The full-screen quad's position: the analytic model assumes the vertex listing passes its
 // position input (dcl_position, v0 when none is declared) to oPos unchanged, as every glow
-// listing does (`mov oPos, v0`). Empty when it does, else why, naming the instruction.
-std::string check_position_passthrough(const ir::Program& vs);
+// listing does (`mov oPos, v0`). Fails (kFormRule) naming the instruction when it does not.
+ir::Status check_position_passthrough(const ir::Program& vs);
 
 } // namespace tierlift::analytic
