@@ -69,13 +69,14 @@ int run(const Flags& f) {
 
   glsl::CompileResult compiled = glsl::compile_fragment_file(f.file);
   if (!compiled) {
+    const bool io = ir::failed_with(compiled, glsl::kIoRule);
     if (f.json)
-      report.error(compiled.io_error ? "io" : "glsl", compiled.error, f.file);
+      report.error(io ? "io" : "glsl", compiled.message(), f.file);
     else
-      fmt::print(stderr, "{}", compiled.error);
-    return report.finish(compiled.io_error ? kExitUsage : kExitInvalid);
+      fmt::print(stderr, "{}", compiled.message());
+    return report.finish(io ? kExitUsage : kExitInvalid);
   }
-  const glsl::FragmentShader& shader = *compiled.shader;
+  const glsl::FragmentShader& shader = *compiled;
   nlohmann::json& result = report.result();
   result["spirv_words"] = shader.spirv.size();
   result["samplers"] = nlohmann::json::array();

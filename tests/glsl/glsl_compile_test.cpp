@@ -9,6 +9,7 @@
 
 #include "tierlift/codegen/codegen.h"
 #include "tierlift/glsl/glsl.h"
+#include "tierlift/ir/result_diagnostics.h"
 
 namespace tierlift::glsl {
 namespace {
@@ -31,15 +32,15 @@ std::vector<int64_t> decorations(const std::vector<uint32_t>& words, uint32_t de
 
 TEST(GlslCompile, SeedShaderBecomesValidSpirvWithTierliftsBindings) {
   CompileResult r = compile_fragment_file(kSeedH.string());
-  ASSERT_TRUE(r) << r.error;
-  const ir::Status valid = codegen::validate(r.shader->spirv); // spirv-val, Vulkan 1.1
+  ASSERT_TRUE(r) << r.message();
+  const ir::Status valid = codegen::validate(r->spirv); // spirv-val, Vulkan 1.1
   EXPECT_TRUE(valid) << valid.message();
-  ASSERT_EQ(r.shader->samplers.size(), 1u);
-  EXPECT_EQ(r.shader->samplers[0].name, "RTScene");
-  EXPECT_EQ(r.shader->samplers[0].stage, 0u);
-  EXPECT_EQ(decorations(r.shader->spirv, 33), std::vector<int64_t>{2}); // s0 at binding 2
+  ASSERT_EQ(r->samplers.size(), 1u);
+  EXPECT_EQ(r->samplers[0].name, "RTScene");
+  EXPECT_EQ(r->samplers[0].stage, 0u);
+  EXPECT_EQ(decorations(r->spirv, 33), std::vector<int64_t>{2}); // s0 at binding 2
   // vTexCoord in and the colour out: both at location 0.
-  EXPECT_EQ(decorations(r.shader->spirv, 30), (std::vector<int64_t>{0, 0}));
+  EXPECT_EQ(decorations(r->spirv, 30), (std::vector<int64_t>{0, 0}));
 }
 
 TEST(GlslCompile, VersionLineOfALegacySourceIsAccepted) {
@@ -48,10 +49,10 @@ TEST(GlslCompile, VersionLineOfALegacySourceIsAccepted) {
                                      "void main() { gl_FragColor = texture2D(a, uv) + "
                                      "texture2D(b, uv); }\n",
                                      "two.frag");
-  ASSERT_TRUE(r) << r.error;
-  ASSERT_EQ(r.shader->samplers.size(), 2u);
-  EXPECT_EQ(r.shader->samplers[0].stage, 0u);
-  EXPECT_EQ(r.shader->samplers[1].stage, 1u);
+  ASSERT_TRUE(r) << r.message();
+  ASSERT_EQ(r->samplers.size(), 2u);
+  EXPECT_EQ(r->samplers[0].stage, 0u);
+  EXPECT_EQ(r->samplers[1].stage, 1u);
 }
 
 TEST(GlslCompile, UndeclaredIdentifierIsPositionedInTheGlslFile) {
@@ -60,18 +61,20 @@ TEST(GlslCompile, UndeclaredIdentifierIsPositionedInTheGlslFile) {
                                      "  sum += undefined_thing;\n  gl_FragColor = sum; }\n",
                                      "bad.frag");
   ASSERT_FALSE(r);
-  EXPECT_FALSE(r.io_error);
-  EXPECT_EQ(r.error.rfind("bad.frag:3:10: error: 'undefined_thing': undeclared identifier", 0), 0u)
-      << r.error;
-  EXPECT_NE(r.error.find("  sum += undefined_thing;\n"), std::string::npos) << r.error;
-  EXPECT_NE(r.error.find("         ^"), std::string::npos) << r.error; // the caret under col 10
+  EXPECT_FALSE(ir::failed_with(r, kIoRule));
+  EXPECT_EQ(r.message().rfind("bad.frag:3:10: error: 'undefined_thing': undeclared identifier", 0),
+            0u)
+      << r.message();
+  EXPECT_NE(r.message().find("  sum += undefined_thing;\n"), std::string::npos) << r.message();
+  EXPECT_NE(r.message().find("         ^"), std::string::npos)
+      << r.message(); // the caret under col 10
 }
 
 TEST(GlslCompile, SyntaxErrorNamesLineAndToken) {
   // Line 2 lacks its ';': glslang stops at the '}' of line 3, column 1.
   CompileResult r = compile_fragment("void main() {\n  gl_FragColor = vec4(1.0)\n}\n", "semi.frag");
   ASSERT_FALSE(r);
-  EXPECT_EQ(r.error.rfind("semi.frag:3:1: error: ", 0), 0u) << r.error;
+  EXPECT_EQ(r.message().rfind("semi.frag:3:1: error: ", 0), 0u) << r.message();
 }
 
 TEST(GlslCompile, NonSamplerUniformIsRefusedAtItsDeclaration) {
@@ -81,11 +84,11 @@ TEST(GlslCompile, NonSamplerUniformIsRefusedAtItsDeclaration) {
                                      "void main() { gl_FragColor = vec4(gain); }\n",
                                      "gain.frag");
   ASSERT_FALSE(r);
-  EXPECT_EQ(r.error.rfind("gain.frag:2:1: error: 'non-opaque uniforms outside a block': not "
-                          "allowed when using GLSL for Vulkan",
-                          0),
+  EXPECT_EQ(r.message().rfind("gain.frag:2:1: error: 'non-opaque uniforms outside a block': not "
+                              "allowed when using GLSL for Vulkan",
+                              0),
             0u)
-      << r.error;
+      << r.message();
 }
 
 TEST(GlslCompile, UniformBlockIsRefusedByName) {
@@ -96,15 +99,16 @@ TEST(GlslCompile, UniformBlockIsRefusedByName) {
                                      "void main() { gl_FragColor = vec4(gain); }\n",
                                      "block.frag");
   ASSERT_FALSE(r);
-  EXPECT_EQ(r.error.rfind("block.frag:2:", 0), 0u) << r.error;
-  EXPECT_NE(r.error.find("a GLSL pass takes sampler uniforms only"), std::string::npos) << r.error;
+  EXPECT_EQ(r.message().rfind("block.frag:2:", 0), 0u) << r.message();
+  EXPECT_NE(r.message().find("a GLSL pass takes sampler uniforms only"), std::string::npos)
+      << r.message();
 }
 
 TEST(GlslCompile, MissingFileIsAnIoError) {
   CompileResult r = compile_fragment_file("/nonexistent/blur.frag");
   ASSERT_FALSE(r);
-  EXPECT_TRUE(r.io_error);
-  EXPECT_EQ(r.error.rfind("/nonexistent/blur.frag: error: ", 0), 0u) << r.error;
+  EXPECT_TRUE(ir::failed_with(r, kIoRule));
+  EXPECT_EQ(r.message().rfind("/nonexistent/blur.frag: error: ", 0), 0u) << r.message();
 }
 
 TEST(GlslCompile, PlainVulkanGlslForTheBenchmarkPeer) {

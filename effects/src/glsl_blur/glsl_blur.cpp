@@ -19,11 +19,9 @@ constexpr std::string_view kBlurHTarget = "blur_h";
 glsl::CompileResult load_glsl(const std::string& file, std::string_view builtin) {
   if (!file.empty()) return glsl::compile_fragment_file(file);
   std::optional<std::string_view> text = listings::find_embedded(builtin);
-  if (!text) {
-    glsl::CompileResult r;
-    r.error = fmt::format("no built-in GLSL '{}'\n", builtin);
-    return r;
-  }
+  if (!text)
+    return glsl::rendered_failure(std::string(builtin), glsl::kGlslRule,
+                                  fmt::format("no built-in GLSL '{}'\n", builtin));
   return glsl::compile_fragment(*text, "listings/" + std::string(builtin));
 }
 
@@ -62,17 +60,17 @@ PlanResult build_glsl_blur(const GlowParams& params, const GlslBlurParams& g) {
   const int n = static_cast<int>(g.weights.size() / 2);
   for (const Axis& a : axes) {
     glsl::CompileResult shader = load_glsl(a.glsl_file, a.glsl_builtin);
-    if (!shader) return plan_failure(shader.error);
+    if (!shader) return plan_failure(shader.message());
     std::map<std::string, std::string, std::less<>> files;
     if (!a.twin_file.empty()) files.emplace(std::string(a.twin_builtin), a.twin_file);
     ListingResult twin = glow_listing(a.twin_builtin, files, params.listing_options);
     if (!twin) return plan_failure(twin.message());
-    for (const glsl::Sampler& s : shader.shader->samplers)
+    for (const glsl::Sampler& s : shader->samplers)
       if (s.stage != 0)
         return plan_failure(
             fmt::format("{}: error: sampler '{}' is stage {}; the blur pass binds its "
                         "source to stage 0 only\n",
-                        shader.shader->file, s.name, s.stage));
+                        shader->file, s.name, s.stage));
     PassDesc p;
     p.name = a.name;
     p.vs = *vs;
@@ -91,8 +89,8 @@ PlanResult build_glsl_blur(const GlowParams& params, const GlslBlurParams& g) {
     sampler.address_u = sampler.address_v = pass::AddressMode::Clamp;
     p.textures = {{0, a.source, sampler}};
     p.target = a.target;
-    p.glsl_spirv = std::make_shared<const std::vector<uint32_t>>(std::move(shader.shader->spirv));
-    p.glsl_file = shader.shader->file;
+    p.glsl_spirv = std::make_shared<const std::vector<uint32_t>>(std::move(shader->spirv));
+    p.glsl_file = shader->file;
     p.analytic = AnalyticForm::Kernel;
     for (int k = -n; k <= n; ++k) {
       KernelTap t;

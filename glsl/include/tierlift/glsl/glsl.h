@@ -16,6 +16,8 @@
 #include <string_view>
 #include <vector>
 
+#include "tierlift/ir/result.h"
+
 namespace tierlift::glsl {
 
 // The first descriptor binding of a sampler: binding 2 + stage, as docs/spirv-mapping.md
@@ -45,15 +47,16 @@ struct FragmentShader {
   std::vector<Input> inputs;     // by location
 };
 
-struct CompileResult {
-  std::optional<FragmentShader> shader;
-  // Rendered diagnostics, '\n'-ended: "file:line:col: error: message", the source line and
-  // a caret (glslang's own messages, positioned; the column is that of the token glslang
-  // quotes, 1 when it quotes none).
-  std::string error;
-  bool io_error = false; // the file could not be read (exit 2, not 1)
-  explicit operator bool() const { return shader.has_value(); }
-};
+// The shader, or one error: rule kGlslRule (the source does not compile, or is refused) or
+// kIoRule (the file could not be read: exit 2, not 1). Its message is already rendered,
+// '\n'-ended: "file:line:col: error: message", the source line and a caret (glslang's own
+// messages, positioned; the column is that of the token glslang quotes, 1 when it quotes
+// none); the subject is the file name.
+using CompileResult = ir::Result<FragmentShader>;
+inline constexpr std::string_view kGlslRule = "glsl";
+inline constexpr std::string_view kIoRule = "io";
+// Such a failure (the message kept as rendered, long words and all: it quotes the source).
+ir::Failure rendered_failure(const std::string& file, std::string_view rule, std::string text);
 
 // Compiles legacy (or 4.50 Vulkan) GLSL fragment source. `file_name` is what diagnostics
 // show. A `#version` line of the source is accepted and overridden (4.50 core): the
