@@ -1,7 +1,8 @@
 // tierlift run: one pass of a vertex and/or pixel listing over the full-screen quad, a graph of
 // one pass: the flags become one pass::Pass (pass::prepare_pass: listings and textures read
-// once), which the CPU device, the Vulkan device or both draw. Only flags and printing live
-// here.
+// once), that pass a graph of one pass (effects::single_pass_graph), which run_graph runs on
+// the CPU device, the Vulkan device or both, through the one device interface
+// (effects::PassDevice) every effect uses. Only flags and printing live here.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -9,6 +10,8 @@
 #include <fmt/format.h>
 #include <memory>
 #include <new>
+#include <optional>
+#include <string_view>
 
 #include "commands.h"
 #include "front_end.h"
@@ -16,10 +19,11 @@
 #include "report.h"
 #include "run_flags.h"
 #include "run_output.h"
-#include "tierlift/cpu/device.h"
+#include "tierlift/effects/device.h"
+#include "tierlift/effects/run_graph.h"
+#include "tierlift/effects/single_pass.h"
 #include "tierlift/image/compare.h"
 #include "tierlift/ir/ps1x_range.h"
-#include "tierlift/vulkan/run_job.h"
 #include "vulkan_device.h"
 
 namespace tierlift::cli {
@@ -114,8 +118,8 @@ std::vector<std::string> input_files(const RunFlags& f, const pass::RunRequest& 
   return inputs;
 }
 
-// One device's draw of the prepared pass: a new target of the request's size and format, the
-// pass, the probes. Diagnostics go to `report`; ok is false after an error.
+// One device's run of the one-pass graph: its target, the probes, what the draw took.
+// Diagnostics go to `report`; ok is false after an error.
 struct DeviceRun {
   bool ok = false;
   img::Image image;
@@ -123,29 +127,55 @@ struct DeviceRun {
   pass::DrawReport report;
 };
 
-DeviceRun draw_on(pass::Device& device, const pass::Pass& prepared, const pass::RunRequest& req,
-                  Report& report) {
+// A failed run as `tierlift run` has always worded a draw the device refused: the device's
+// own words (run_graph hands them on as notes after its summary), under rule "draw" on the
+// CPU and as "vulkan: …" on Vulkan; the run's summary when there are none. The graph's one
+// pass is the whole draw, so a device's "pass 'run': " adds nothing and is left out.
+void report_failure(const std::vector<ir::Diagnostic>& diagnostics, const std::string& device,
+                    Report& report) {
+  const std::string pass_prefix = fmt::format("pass '{}': ", effects::kSinglePass);
+  bool cause = false;
+  for (const ir::Diagnostic& d : diagnostics) {
+    if (d.severity != ir::Severity::Note) continue; // only the device's cause is a note
+    std::string_view why = d.message;
+    if (why.starts_with(pass_prefix)) why.remove_prefix(pass_prefix.size());
+    if (device == "vulkan")
+      report.error("vulkan", "vulkan: " + std::string(why));
+    else
+      report.error("draw", std::string(why));
+    cause = true;
+  }
+  if (cause) return;
+  for (const ir::Diagnostic& d : diagnostics)
+    if (d.severity == ir::Severity::Error) report.error(d.rule, d.message);
+}
+
+DeviceRun run_on(effects::PassDevice& device, const effects::EffectGraph& graph,
+                 const pass::RunRequest& req, Report& report) {
   DeviceRun out;
-  const auto t0 = std::chrono::steady_clock::now();
+  effects::ImageMap images;
+  std::optional<ir::Result<effects::GraphRun>> run;
   try { // a 16384² float target is 4 GiB: running out of memory is an error, not a crash
-    out.image = img::Image(req.width, req.height, req.format);
+    // Whether the host can hold the image that comes back, asked first (allocated, never
+    // touched; an explicit operator new, which no compiler may leave out): a host out of
+    // memory is this error on every device, as it always was, not a device's refusal.
+    ::operator delete(::operator new (size_t{req.width} * req.height * 4 * sizeof(float)));
+    run.emplace(effects::run_graph(graph, device, images));
   } catch (const std::bad_alloc&) {
     report.error("memory", fmt::format("not enough memory for a {}x{} target and its textures",
                                        req.width, req.height));
     return out;
   }
-  const double alloc_ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  ir::Result<pass::DrawReport> drawn = device.draw(prepared, out.image);
-  for (const ir::Diagnostic& d : drawn.diagnostics()) {
-    if (d.severity == ir::Severity::Error)
-      report.error(d.rule, d.message);
-    else
-      report.warning(d.rule, d.message);
+  if (!*run) {
+    report_failure(run->diagnostics(), device.name(), report);
+    return out;
   }
-  if (!drawn) return out;
-  out.report = *drawn;
-  out.report.setup_ms += alloc_ms;
+  const effects::PassRecord& pass = (*run)->passes.front();
+  for (const ir::Diagnostic& d : pass.warnings) report.warning(d.rule, d.message);
+  out.report = pass.report;
+  out.report.setup_ms = (*run)->setup_ms; // textures, uploads, pipelines
+  out.report.draw_ms = pass.ms;           // the pass, to the end of its work on the device
+  out.image = std::move(images.at(std::string(effects::kSinglePassTarget)));
   out.probes = pass::read_probes(out.image, req.probes);
   out.ok = true;
   return out;
@@ -260,12 +290,19 @@ int run(const RunFlags& f) {
           .count();
   print_run_diagnostics(diags);
   if (!prepared) return report.finish(failure_code(diags));
-  // The same pass on each device asked for, through the one device interface.
+  // The same graph of one pass on each device asked for, through the one device interface.
+  ir::Result<effects::EffectGraph> graph =
+      effects::single_pass_graph(*prepared, req.width, req.height, req.format);
+  if (!graph) {
+    report.error("graph", graph.message());
+    return report.finish(kExitInvalid);
+  }
+  prepared.reset(); // the graph shares the textures; the pass is not needed any more
   DeviceRun out, vk;
   std::string vk_name;
   if (want_cpu) {
-    cpu::PassDevice device(req.threads);
-    out = draw_on(device, *prepared, req, report);
+    effects::CpuPassDevice device(req.threads);
+    out = run_on(device, *graph, req, report);
     out.report.setup_ms += prepare_ms;
     if (!out.ok) return report.finish(kExitInvalid);
   }
@@ -273,8 +310,8 @@ int run(const RunFlags& f) {
     vulkan::Device* device = vulkan_device(f.gpu, report);
     if (!device) return report.finish(kExitUsage);
     vk_name = device->name();
-    vulkan::PassDevice pass_device(*device);
-    vk = draw_on(pass_device, *prepared, req, report);
+    std::unique_ptr<effects::PassDevice> pass_device = effects::make_vulkan_pass_device(*device);
+    vk = run_on(*pass_device, *graph, req, report);
     if (!vk.ok) return report.finish(kExitInvalid);
   }
   // What the run reports as its image and probes: the CPU device's, else the Vulkan one's.

@@ -22,12 +22,12 @@ ir::Status AnalyticPassDevice::begin_run(const EffectGraph& graph, const ImageMa
   return ir::ok_status();
 }
 
-ir::Status AnalyticPassDevice::run_pass(const PassDesc& pass) {
+ir::Result<pass::DrawReport> AnalyticPassDevice::run_pass(const PassDesc& pass) {
   if (!graph_) return device_error("no run was begun");
   if (std::string e = detail::run_analytic_pass(pass, *graph_, images_, midpoints_, &notes_);
       !e.empty())
     return device_error(std::move(e));
-  return ir::ok_status();
+  return pass::DrawReport{}; // math, not a draw: nothing is counted
 }
 
 bool AnalyticPassDevice::rounding_midpoints(const std::string& texture,

@@ -169,6 +169,14 @@ std::string run_analytic_pass(const PassDesc& pass, const EffectGraph& graph, Im
                               MidpointMasks& midpoints, std::vector<std::string>* notes) {
   if (!pass.vs || !pass.ps)
     return fmt::format("pass '{}': needs a vertex and a pixel listing", pass.name);
+  // The model reads taps off straight-line listings; i# and b# only steer flow control.
+  const PassDesc plain;
+  if (pass.vs_int_constants != plain.vs_int_constants ||
+      pass.ps_int_constants != plain.ps_int_constants ||
+      pass.vs_bool_constants != plain.vs_bool_constants ||
+      pass.ps_bool_constants != plain.ps_bool_constants)
+    return fmt::format("pass '{}': the analytic model takes no integer or boolean constants",
+                       pass.name);
   if (pass.analytic == AnalyticForm::Coverage) {
     if (pass.scissor)
       return fmt::format("pass '{}': the analytic object pass has no scissor rectangle", pass.name);

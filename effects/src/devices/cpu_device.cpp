@@ -2,6 +2,7 @@
 // interpreter (cpu::draw). Textures are bound to a pass by reference, not copied, and a run
 // reuses the buffers of the run before (same graph, same sizes): at 1920×1080 a copy or a
 // fresh allocation of one texture costs about as much as a blur pass.
+#include <chrono>
 #include <fmt/format.h>
 
 #include "tierlift/cpu/draw.h"
@@ -68,7 +69,7 @@ void CpuPassDevice::settle(const std::string& name) {
   if (im != images_.end()) std::fill(im->second.rgba.begin(), im->second.rgba.end(), 0.0f);
 }
 
-ir::Status CpuPassDevice::run_pass(const PassDesc& desc) {
+ir::Result<pass::DrawReport> CpuPassDevice::run_pass(const PassDesc& desc) {
   if (!graph_) return device_error("no run was begun");
   ir::Result<pass::Pass> pass = make_pass(desc, placeholders_, graph_->conventions);
   if (!pass) return std::move(pass).failure();
@@ -114,13 +115,27 @@ ir::Status CpuPassDevice::run_pass(const PassDesc& desc) {
     settle(desc.target);
     for (const std::string& m : desc.more_targets) settle(m);
   }
+  const auto t0 = std::chrono::steady_clock::now();
   ir::Result<cpu::DrawStats> s = cpu::draw(*pass, targets, threads_);
+  pass::DrawReport report;
+  report.draw_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   if (!s) {
     settle(desc.target); // zeros, as the run began with
     return std::move(s).failure();
   }
   stale_.erase(desc.target); // drawn: zeroed first or overwritten
-  return ir::ok_status();
+  report.pixels_shaded = s->pixels_shaded;
+  report.pixels_killed = s->pixels_killed;
+  ir::Result<pass::DrawReport> out(report);
+  if (s->triangles == 0) // an empty image is almost always a mistake in the vertex listing
+    out.add({ir::Severity::Warning,
+             {},
+             "no triangle reached the screen (the vertex listing's oPos is degenerate, behind "
+             "the eye or clipped away): the image is empty",
+             "nothing-drawn",
+             ""});
+  return out;
 }
 
 ir::Status CpuPassDevice::update_input(const std::string& name, const img::Image& image) {

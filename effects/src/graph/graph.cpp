@@ -87,8 +87,25 @@ std::string check_outputs(const EffectGraph& g, const PassDesc& p, const Texture
   return {};
 }
 
+// Which listings a pass has: both (every effect's pass), or the forms `tierlift run` draws
+// (single_pass.h) — constant pixel inputs in place of the vertex listing, D3D9's oD0
+// pass-through in place of the pixel listing — each only where both devices draw it.
+std::string check_listings(const PassDesc& p) {
+  if (!p.vs && !p.constant_inputs)
+    return fmt::format("pass '{}': needs a vertex listing (or constant pixel inputs)", p.name);
+  if (p.vs && p.constant_inputs)
+    return fmt::format("pass '{}': constant pixel inputs replace the vertex listing", p.name);
+  if (p.constant_inputs && !p.vertices.empty())
+    return fmt::format("pass '{}': vertices without a vertex listing", p.name);
+  if (p.glsl_spirv && (!p.vs || !p.ps))
+    return fmt::format("pass '{}': a GLSL pass needs a vertex listing and its ps_2_0 twin", p.name);
+  if (!p.ps && (!p.more_targets.empty() || !p.stencil.empty()))
+    return fmt::format("pass '{}': several targets or a stencil need a pixel listing", p.name);
+  return {};
+}
+
 std::string check_pass(const EffectGraph& g, const PassDesc& p) {
-  if (!p.vs || !p.ps) return fmt::format("pass '{}': needs a vertex and a pixel listing", p.name);
+  if (std::string e = check_listings(p); !e.empty()) return e;
   if (p.glsl_spirv && p.ps->profile != ir::Profile::ps_2_0)
     return fmt::format("pass '{}': a GLSL pass's twin must be a ps_2_0 listing", p.name);
   if ((p.analytic == AnalyticForm::Kernel) != !p.kernel.empty())

@@ -32,14 +32,20 @@ std::string prepare_input(const TextureDesc& t, ImageMap& images) {
 
 ir::Result<pass::Pass> make_pass(const PassDesc& desc, const ImageMap& images,
                                  const ir::Conventions& conventions) {
-  if (!desc.vs)
+  if (!desc.vs && !desc.constant_inputs)
     return ir::fail(desc.name, "graph", fmt::format("pass '{}': no vertex listing", desc.name));
   pass::Pass pass;
   pass.vertex_program = desc.vs;
   pass.pixel_program = desc.ps;
   pass.vs_constants.f = desc.vs_constants;
   pass.ps_constants.f = desc.ps_constants;
-  if (desc.vertices.empty()) {
+  pass.vs_constants.i = desc.vs_int_constants;
+  pass.ps_constants.i = desc.ps_int_constants;
+  pass.vs_constants.b = desc.vs_bool_constants;
+  pass.ps_constants.b = desc.ps_bool_constants;
+  if (!desc.vs) {
+    pass.constant_inputs = *desc.constant_inputs; // the quad, no vertices
+  } else if (desc.vertices.empty()) {
     pass::set_full_screen_quad_uv(pass);
   } else {
     pass.vertices = desc.vertices;
@@ -65,22 +71,28 @@ ir::Result<pass::Pass> make_pass(const PassDesc& desc, const ImageMap& images,
 
 namespace {
 
-ir::Failure run_error(std::string message) {
-  return ir::fail("graph", std::string(kRunRule), std::move(message));
+// The run's error; `cause`, a device's refusal, follows it as notes (kRunRule).
+ir::Failure run_error(std::string message, const std::vector<ir::Diagnostic>& cause = {}) {
+  ir::Failure out = ir::fail("graph", std::string(kRunRule), std::move(message));
+  for (ir::Diagnostic d : cause) {
+    d.severity = ir::Severity::Note;
+    out.diagnostics.push_back(std::move(d));
+  }
+  return out;
 }
 
-// check_graph, the inputs at their declared size and format, begin_run. Empty on success.
-std::string begin_graph(const EffectGraph& graph, PassDevice& device, ImageMap& images) {
-  if (ir::Status checked = check_graph(graph); !checked) return checked.message();
+// check_graph, the inputs at their declared size and format, begin_run.
+ir::Status begin_graph(const EffectGraph& graph, PassDevice& device, ImageMap& images) {
+  if (ir::Status checked = check_graph(graph); !checked) return run_error(checked.message());
   for (const TextureDesc& t : graph.textures)
     if (t.input)
-      if (std::string e = prepare_input(t, images); !e.empty()) return e;
+      if (std::string e = prepare_input(t, images); !e.empty()) return run_error(e);
   ImageMap inputs;
   for (const TextureDesc& t : graph.textures)
     if (t.input) inputs.emplace(t.name, images.find(t.name)->second);
   if (ir::Status begun = device.begin_run(graph, inputs); !begun)
-    return fmt::format("{}: {}", device.name(), begun.message());
-  return {};
+    return run_error(fmt::format("{}: {}", device.name(), begun.message()), begun.diagnostics());
+  return ir::ok_status();
 }
 
 // Every texture back into `images` (a failure leaves the map as it was given).
@@ -142,17 +154,20 @@ ir::Result<GraphRun> run_graph(const EffectGraph& graph, PassDevice& device, Ima
                                bool keep_pass_images, const PassProgress& progress) {
   GraphRun run;
   auto t_all = std::chrono::steady_clock::now();
-  if (std::string e = begin_graph(graph, device, images); !e.empty()) return run_error(e);
+  if (ir::Status begun = begin_graph(graph, device, images); !begun)
+    return std::move(begun).failure();
+  run.setup_ms = ms_since(t_all);
 
   for (const PassDesc& desc : graph.passes) {
     if (progress) progress(run.passes.size(), graph.passes.size(), desc);
     auto t0 = std::chrono::steady_clock::now();
-    ir::Status drawn = device.run_pass(desc.at_frame(0));
-    if (drawn) drawn = device.finish(); // the pass's own time, not the time it was queued
-    if (!drawn)
-      return run_error(
-          fmt::format("pass '{}' on {}: {}", desc.name, device.name(), drawn.message()));
-    PassRecord rec{desc.name, desc.target, {}, ms_since(t0), {}, {}};
+    ir::Result<pass::DrawReport> drawn = device.run_pass(desc.at_frame(0));
+    // The pass's own time, not the time it was queued.
+    ir::Status done = drawn ? device.finish() : ir::Status(drawn.failure());
+    if (!done)
+      return run_error(fmt::format("pass '{}' on {}: {}", desc.name, device.name(), done.message()),
+                       done.diagnostics());
+    PassRecord rec{desc.name, desc.target, {}, ms_since(t0), {}, {}, *drawn, drawn.diagnostics()};
     if (std::string e = record_pass(desc, device, keep_pass_images, rec); !e.empty())
       return run_error(e);
     run.passes.push_back(std::move(rec));
@@ -185,10 +200,12 @@ ir::Result<FrameTimes> run_frames(const EffectGraph& graph, PassDevice& device, 
                                   const FrameInputs& inputs_at) {
   FrameTimes times;
   auto t0 = std::chrono::steady_clock::now();
-  if (std::string e = begin_graph(graph, device, images); !e.empty()) return run_error(e);
+  if (ir::Status begun = begin_graph(graph, device, images); !begun)
+    return std::move(begun).failure();
   times.setup_ms = ms_since(t0);
-  auto frame_error = [&](unsigned f, const std::string& why) {
-    return run_error(fmt::format("frame {} on {}: {}", f + 1, device.name(), why));
+  auto frame_error = [&](unsigned f, const std::string& why,
+                         const std::vector<ir::Diagnostic>& cause = {}) {
+    return run_error(fmt::format("frame {} on {}: {}", f + 1, device.name(), why), cause);
   };
   for (unsigned f = 0; f < frames; ++f) {
     auto t = std::chrono::steady_clock::now();
@@ -196,10 +213,12 @@ ir::Result<FrameTimes> run_frames(const EffectGraph& graph, PassDevice& device, 
       if (std::string e = replace_inputs(graph, device, f, inputs_at); !e.empty())
         return frame_error(f, e);
     for (const PassDesc& desc : graph.passes)
-      if (ir::Status drawn = device.run_pass(desc.at_frame(f)); !drawn)
+      if (ir::Result<pass::DrawReport> drawn = device.run_pass(desc.at_frame(f)); !drawn)
         return run_error(fmt::format("frame {}, pass '{}' on {}: {}", f + 1, desc.name,
-                                     device.name(), drawn.message()));
-    if (ir::Status done = device.finish(); !done) return frame_error(f, done.message());
+                                     device.name(), drawn.message()),
+                         drawn.diagnostics());
+    if (ir::Status done = device.finish(); !done)
+      return frame_error(f, done.message(), done.diagnostics());
     times.frame_ms.push_back(ms_since(t));
     if (sink)
       if (ir::Status taken = sink(f, device); !taken) return frame_error(f, taken.message());

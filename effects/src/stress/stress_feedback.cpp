@@ -102,7 +102,7 @@ WayFeedback run_way(PassDevice& device, const EffectGraph& graph, Format f, doub
   if (ir::Status begun = device.begin_run(graph, inputs); !begun) return fail(begun.message());
   auto frame = [&](bool source) -> std::string {
     for (size_t i = 0; i < (source ? 3u : 2u); ++i)
-      if (ir::Status drawn = device.run_pass(graph.passes[i]); !drawn) return drawn.message();
+      if (auto drawn = device.run_pass(graph.passes[i]); !drawn) return drawn.message();
     return device.finish().message();
   };
   auto read = [&](double& v) -> std::string {

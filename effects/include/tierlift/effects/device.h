@@ -40,8 +40,11 @@ public:
   // the device to the message.
   virtual ir::Status begin_run(const EffectGraph& graph, const ImageMap& inputs) = 0;
   // Runs one pass of that graph: it samples the textures it binds and renders into its
-  // target with its blend mode; the target's format is the store rule.
-  virtual ir::Status run_pass(const PassDesc& pass) = 0;
+  // target with its blend mode; the target's format is the store rule. The report holds what
+  // the device counts (the CPU device: pixels shaded and killed; the others leave them 0); a
+  // success may carry warnings (the CPU device: "nothing-drawn" when no triangle reached
+  // the screen).
+  virtual ir::Result<pass::DrawReport> run_pass(const PassDesc& pass) = 0;
   // Waits until every pass run so far is done (a device may queue passes: Vulkan records a
   // frame's passes into one command buffer).
   virtual ir::Status finish() { return ir::ok_status(); }
@@ -78,7 +81,7 @@ public:
       : threads_(threads), executor_(executor) {}
   std::string name() const override { return "cpu"; }
   ir::Status begin_run(const EffectGraph& graph, const ImageMap& inputs) override;
-  ir::Status run_pass(const PassDesc& pass) override;
+  ir::Result<pass::DrawReport> run_pass(const PassDesc& pass) override;
   ir::Status update_input(const std::string& name, const img::Image& image) override;
   ir::Result<img::Image> read_texture(const std::string& name) override;
 

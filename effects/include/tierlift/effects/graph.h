@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -70,8 +71,18 @@ struct KernelTap {
 struct PassDesc {
   std::string name; // unique, e.g. "blur_h.1"
   AnalyticForm analytic = AnalyticForm::Linear;
+  // The listings. An effect's pass has both; `tierlift run` (single_pass.h) may leave out
+  // either: without `vs` the pass has constant_inputs instead, without `ps` D3D9's fixed
+  // function passes oD0 to the target (one target, no stencil: what the devices draw so).
   std::shared_ptr<const ir::Program> vs, ps;
   std::vector<pass::Vec4> vs_constants, ps_constants; // c0, c1, …
+  // i# and b# of each stage (pass::ConstantBank), for listings with flow control; zeros and
+  // false unless set. The analytic device refuses a pass that sets any.
+  std::array<std::array<int32_t, 4>, 16> vs_int_constants{}, ps_int_constants{};
+  std::array<bool, 16> vs_bool_constants{}, ps_bool_constants{};
+  // Only without `vs`: the full-screen quad with these pixel inputs (v#, t#) at every pixel,
+  // exactly as given (pass::Pass::constant_inputs); no `vertices` then.
+  std::optional<pass::PixelInput> constant_inputs;
   std::vector<TextureBind> textures;
   std::string target;
   pass::BlendMode blend = pass::BlendMode::Replace;
@@ -117,7 +128,9 @@ struct EffectGraph {
 };
 
 // Fails (rule "graph", subject "graph") with the first problem of a malformed graph: duplicate or
-// unknown texture or pass names, a pass without both listings, a pass that reads its own target,
+// unknown texture or pass names, a pass without a vertex listing and without constant inputs
+// (or with both, or with constant inputs and vertices), a pass without a pixel listing that has
+// more than one target, a stencil or GLSL, a pass that reads its own target,
 // sizes of 0 or above img::kMaxDimension, a sampler stage bound twice, an input used as a
 // target, a target or stencil named twice in a pass, more than 4 targets or targets of
 // different sizes, a stencil texture used as a colour texture (or the reverse), a stencil

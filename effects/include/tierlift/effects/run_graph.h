@@ -26,24 +26,30 @@ struct PassRecord {
     std::vector<uint8_t> midpoints;
   };
   std::vector<Extra> more;
+  pass::DrawReport report;              // what the device's run_pass said (its counters)
+  std::vector<ir::Diagnostic> warnings; // and the warnings it gave with it
 };
 
 struct GraphRun {
   std::vector<PassRecord> passes;
   double total_ms = 0;
+  double setup_ms = 0; // of total_ms: check, inputs, begin_run (before the first pass)
   // Every texture's rounding-midpoint mask after the run, where the device keeps one.
   std::map<std::string, std::vector<uint8_t>, std::less<>> midpoints;
 };
 
-// The pass::Pass a pass description becomes: full-screen quad (pass::set_full_screen_quad_uv:
-// the vertex listing's position input gets the corners, every dcl_texcoord input the quad uv
-// (0,0) top-left … (1,1) bottom-right), constants, bound textures from `images`, blend,
+// The pass::Pass a pass description becomes: its vertices, else the full-screen quad
+// (pass::set_full_screen_quad_uv: the vertex listing's position input gets the corners, every
+// dcl_texcoord input the quad uv (0,0) top-left … (1,1) bottom-right; without a vertex listing
+// the quad with the constant inputs), constants, bound textures from `images`, blend,
 // conventions. Textures not in `images` are an error (rule "graph").
 ir::Result<pass::Pass> make_pass(const PassDesc& desc, const ImageMap& images,
                                  const ir::Conventions& conventions);
 
 // The rule of run_graph's and run_frames' failures (a graph the device could not run): one
-// error whose message names the pass (and frame) that failed and the device.
+// error whose message names the pass (and frame) that failed and the device, followed, when
+// the device refused, by the device's own diagnostics as notes (severity Note: its words
+// without the run's, for a caller that words the failure itself, e.g. `tierlift run`).
 inline constexpr std::string_view kRunRule = "run";
 
 // Checks the graph, requires every input texture in `images` (or carried by the graph:

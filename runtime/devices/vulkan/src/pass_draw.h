@@ -13,7 +13,6 @@
 #include <memory>
 
 #include "resident.h"
-#include "tierlift/pass/device.h"
 #include "tierlift/pass/pass.h"
 
 namespace tierlift::vulkan {

@@ -21,12 +21,6 @@ ir::Result<Device*> process_device(const DeviceOptions& options) {
   return (*devices)[key] = device->release(); // intentionally never destroyed
 }
 
-ir::Result<pass::DrawReport> PassDevice::draw(const pass::Pass& pass, img::Image& target) {
-  ir::Result<pass::DrawReport> r = device_.draw(pass, target);
-  if (!r) return ir::fail("", "vulkan", "vulkan: " + r.message());
-  return pass::DrawReport{r->setup_ms, r->draw_ms, 0, 0};
-}
-
 ir::Result<VulkanRun> run_job_vulkan(const pass::RunRequest& request, pass::RunDiagnostics& diags,
                                      const DeviceOptions& options) {
   ir::Result<pass::Pass> prepared = pass::prepare_pass(request);

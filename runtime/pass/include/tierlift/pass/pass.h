@@ -2,8 +2,9 @@
 // sampler stages with their sampler and texture-stage state, the geometry, the viewport, the
 // blend and the output-merger state, the conventions. The CPU interpreter (cpu::draw), the
 // Vulkan device (vulkan::Device::draw) and the analytic model all consume this type; none of
-// them defines its own. The effect graph builds one per pass (effects/run_graph.h) and
-// `tierlift run` builds one from its flags (setup.h).
+// them defines its own. The effect graph builds one per pass (effects/run_graph.h); `tierlift
+// run` builds one from its flags (setup.h) and draws it as a graph of one pass
+// (effects/single_pass.h), so every device is reached through effects::PassDevice.
 //
 // Room for what comes next is made here as state, not as implementations: several render
 // targets, a depth/stencil buffer with D3D9's stencil state, fixed-function texture stages.
@@ -160,6 +161,14 @@ struct Pass {
   // run SPIR-V refuses the pass (check_supported); it never draws the twin in its place
   // silently — the effect layer decides that (effects::CpuPassDevice, documented there).
   std::shared_ptr<const std::vector<uint32_t>> pixel_spirv;
+};
+
+// What a draw took, for the report (effects::PassDevice::run_pass returns it); counters a
+// device does not keep stay 0.
+struct DrawReport {
+  double setup_ms = 0; // programs, pipelines, uploads
+  double draw_ms = 0;  // the draw itself (on a GPU that queues it: the recording)
+  uint64_t pixels_shaded = 0, pixels_killed = 0;
 };
 
 // What a device can draw beyond one colour target with programmable stages.

@@ -1,6 +1,7 @@
 // `tierlift run` on the CPU device as a library: the request's pass (pass::prepare_pass,
 // tierlift/pass/setup.h) drawn by cpu::draw, with the probes read back. Tests and benchmarks
-// call run_job() directly; the CLI prepares the pass once and hands it to each device.
+// call run_job() directly; the CLI draws the prepared pass as a graph of one pass through the
+// effect devices (effects/single_pass.h).
 #pragma once
 
 #include <string_view>

@@ -35,7 +35,6 @@
 
 #include "tierlift/image/image.h"
 #include "tierlift/ir/result_diagnostics.h"
-#include "tierlift/pass/device.h"
 #include "tierlift/pass/pass.h"
 
 namespace tierlift::vulkan {

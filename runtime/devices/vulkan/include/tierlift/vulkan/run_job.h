@@ -1,12 +1,11 @@
-// `tierlift run --backend vulkan`: the Vulkan device behind the one device interface
-// (tierlift/pass/device.h), drawing the pass pass::prepare_pass made (the same one the CPU
-// device draws).
+// `tierlift run` on the Vulkan device as a library: the pass pass::prepare_pass made (the
+// same one the CPU device draws), drawn by Device::draw. The CLI draws it through the effect
+// graph's device interface instead (effects/single_pass.h).
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "tierlift/pass/device.h"
 #include "tierlift/pass/setup.h"
 #include "tierlift/vulkan/device.h"
 
@@ -17,20 +16,6 @@ namespace tierlift::vulkan {
 // kDeviceRule): no Vulkan driver, device or layer, an environment problem rather than a fault
 // of the pass.
 ir::Result<Device*> process_device(const DeviceOptions& options);
-
-class PassDevice final : public pass::Device {
-public:
-  explicit PassDevice(vulkan::Device& device) : device_(device) {}
-  std::string name() const override { return "vulkan"; }
-  pass::Capabilities capabilities() const override { return kCapabilities; }
-  // Errors: rule "vulkan", the message starting "vulkan: ".
-  ir::Result<pass::DrawReport> draw(const pass::Pass& pass, img::Image& target) override;
-  vulkan::Device& device() { return device_; }
-
-private:
-  // Spelled out: inside this class, plain `Device` names the base pass::Device.
-  vulkan::Device& device_;
-};
 
 // What run_job_vulkan drew.
 struct VulkanRun {

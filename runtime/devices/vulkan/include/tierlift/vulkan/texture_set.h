@@ -46,7 +46,6 @@
 
 #include "tierlift/image/image.h"
 #include "tierlift/ir/result.h"
-#include "tierlift/pass/device.h"
 #include "tierlift/pass/pass.h"
 #include "tierlift/vulkan/device.h"
 

@@ -1,0 +1,95 @@
+// pass::Pass → a graph of one pass: the inverse of make_pass for what `tierlift run` draws.
+#include "tierlift/effects/single_pass.h"
+
+#include <map>
+
+#include <fmt/format.h>
+
+namespace tierlift::effects {
+namespace {
+
+bool default_viewport(const pass::Viewport& v) {
+  return v.x == 0 && v.y == 0 && v.width == 0 && v.height == 0 && v.min_z == 0.0f &&
+         v.max_z == 1.0f;
+}
+
+bool default_stage_state(const pass::StageState& s) {
+  const pass::StageState none;
+  return s.bumpenv_mat == none.bumpenv_mat && s.bumpenv_lscale == none.bumpenv_lscale &&
+         s.bumpenv_loffset == none.bumpenv_loffset && s.projected == none.projected;
+}
+
+// The first thing of `pass` a PassDesc cannot carry; empty when there is none. Refused
+// rather than dropped, so a device never draws a different pass than the one asked for.
+std::string unsupported(const pass::Pass& pass) {
+  if (!pass.transformed.empty()) return "pre-transformed vertices";
+  if (!pass.fixed_stages.empty()) return "fixed-function texture stages";
+  if (!default_viewport(pass.viewport)) return "a viewport other than the whole target";
+  if (pass.color_targets != 1) return fmt::format("{} colour targets", pass.color_targets);
+  if (pass.depth_stencil.enabled()) return "a depth/stencil state";
+  if (pass.pixel_spirv) return "a SPIR-V pixel stage";
+  if (pass.executor != pass::Executor::Auto) return "the scalar executor";
+  if (!pass.vertex_program && !pass.vertices.empty()) return "vertices without a vertex listing";
+  for (const pass::TextureBinding& b : pass.textures)
+    if (!default_stage_state(b.stage)) return "texture-stage state";
+  return {};
+}
+
+} // namespace
+
+ir::Result<EffectGraph> single_pass_graph(const pass::Pass& pass, uint32_t width, uint32_t height,
+                                          img::Format format) {
+  if (std::string what = unsupported(pass); !what.empty())
+    return ir::fail("graph", "graph",
+                    fmt::format("a graph pass cannot describe {} (tierlift run draws none)", what));
+  EffectGraph graph;
+  graph.conventions = pass.conventions;
+  PassDesc desc;
+  desc.name = std::string(kSinglePass);
+  desc.target = std::string(kSinglePassTarget);
+  desc.vs = pass.vertex_program;
+  desc.ps = pass.pixel_program;
+  desc.vs_constants = pass.vs_constants.f;
+  desc.ps_constants = pass.ps_constants.f;
+  desc.vs_int_constants = pass.vs_constants.i;
+  desc.ps_int_constants = pass.ps_constants.i;
+  desc.vs_bool_constants = pass.vs_constants.b;
+  desc.ps_bool_constants = pass.ps_constants.b;
+  if (pass.vertex_program) {
+    desc.vertices = pass.vertices;
+    desc.triangles = pass.triangles;
+  } else {
+    desc.constant_inputs = pass.constant_inputs;
+  }
+  desc.scissor = pass.scissor;
+  desc.blend = pass.blend;
+  // One input texture per image, however many stages bind it (Listing 4 binds one four
+  // times): one upload on Vulkan, one copy on the CPU.
+  std::map<const img::Image*, std::string> names;
+  for (uint32_t s = 0; s < pass::kMaxSamplers; ++s) {
+    const pass::TextureBinding& b = pass.textures[s];
+    if (!b.image) continue;
+    auto [it, added] = names.emplace(b.image.get(), fmt::format("s{}", s));
+    if (added) {
+      TextureDesc t;
+      t.name = it->second;
+      t.width = b.image->width;
+      t.height = b.image->height;
+      t.format = b.image->format; // stored as it is: run_graph quantizes nothing
+      t.input = true;
+      t.contents = b.image;
+      graph.textures.push_back(std::move(t));
+    }
+    desc.textures.push_back({s, it->second, b.sampler});
+  }
+  TextureDesc target;
+  target.name = desc.target;
+  target.width = width;
+  target.height = height;
+  target.format = format;
+  graph.textures.push_back(std::move(target));
+  graph.passes.push_back(std::move(desc));
+  return graph;
+}
+
+} // namespace tierlift::effects
