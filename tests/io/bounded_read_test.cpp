@@ -122,14 +122,23 @@ TEST(BoundedRead, DirectoriesAndMissingFilesAreErrors) {
 TEST(BoundedRead, PrefixCheckStopsBeforeTheRest) {
   std::string error;
   std::string seen;
-  auto check = [&](std::string_view first) {
+  auto check = [&](std::string_view first) -> tierlift::ir::Status {
     seen = std::string(first.substr(0, 4));
-    return std::string("no signature");
+    return tierlift::ir::fail("", "image", "no signature");
   };
   // /dev/zero with a 1 GiB cap: refused from its first block, long before the cap.
   EXPECT_FALSE(read_capped("/dev/zero", ReadCap{uint64_t{1} << 30, "image file"}, error, check));
   EXPECT_EQ(error, "/dev/zero: no signature");
   EXPECT_EQ(seen, std::string(4, '\0'));
+  // The check's rule is kept (a file of the wrong kind is not an I/O problem); a file that
+  // cannot be opened stays "io".
+  auto wrong_kind =
+      tierlift::io::read_bounded("/dev/zero", ReadCap{uint64_t{1} << 30, "image file"}, check);
+  ASSERT_FALSE(wrong_kind);
+  EXPECT_EQ(wrong_kind.diagnostics().at(0).rule, "image");
+  auto missing = tierlift::io::read_bounded("/nonexistent/tierlift-input", kTiny, check);
+  ASSERT_FALSE(missing);
+  EXPECT_EQ(missing.diagnostics().at(0).rule, "io");
 }
 
 TEST(BoundedRead, FormatsCapsInBinaryUnits) {

@@ -158,7 +158,7 @@ TEST(AtomicFile, SigtermRemovesTheTemporaryFile) {
   ASSERT_GE(child, 0);
   if (child == 0) {
     io::AtomicFile f(dir / "out.bin");
-    if (!f.ok() || !f.write("half of it")) ::_exit(3);
+    if (!f.status() || !f.write("half of it")) ::_exit(3);
     if (!fs::exists(f.temp_path())) ::_exit(4);
     ::raise(SIGTERM); // as a user's kill during a long write
     ::_exit(5);       // not reached: SIGTERM still ends the process
@@ -176,7 +176,7 @@ TEST(AtomicFile, DestroyedUncommittedLeavesTheOldFile) {
   put(dir / "out.bin", "old");
   {
     io::AtomicFile f(dir / "out.bin");
-    ASSERT_TRUE(f.ok()) << f.error();
+    ASSERT_TRUE(f.status()) << f.status().message();
     ASSERT_TRUE(f.write("new"));
   }
   EXPECT_EQ(dir.names(), std::vector<std::string>{"out.bin"});

@@ -42,9 +42,11 @@ std::string format_size(uint64_t bytes) {
 
 namespace {
 
-// The read, or nullopt with `error` set; read_bounded turns the error into a diagnostic.
+// The read, or nullopt with `error` set (and `rule`, when it is not "io"); read_bounded turns
+// the error into a diagnostic.
 std::optional<std::string> read_or_explain(const std::string& path, const ReadCap& cap,
-                                           std::string& error, const PrefixCheck& prefix_check) {
+                                           std::string& error, std::string& rule,
+                                           const PrefixCheck& prefix_check) {
   const std::string name = path == "-" ? std::string("<stdin>") : path;
   Fd in;
   if (path == "-") {
@@ -91,8 +93,13 @@ std::optional<std::string> read_or_explain(const std::string& path, const ReadCa
     data.resize(old + static_cast<size_t>(n));
     if (!checked_prefix && (n == 0 || data.size() >= kChunk)) {
       checked_prefix = true;
-      if (std::string why = prefix_check(data); !why.empty()) {
-        error = fmt::format("{}: {}", name, why);
+      if (ir::Status fits = prefix_check(data); !fits) {
+        error = fmt::format("{}: {}", name, fits.message());
+        for (const ir::Diagnostic& d : fits.diagnostics())
+          if (d.severity == ir::Severity::Error) {
+            rule = d.rule;
+            break;
+          }
         return std::nullopt;
       }
     }
@@ -109,9 +116,10 @@ std::optional<std::string> read_or_explain(const std::string& path, const ReadCa
 
 ir::Result<std::string> read_bounded(const std::string& path, const ReadCap& cap,
                                      const PrefixCheck& prefix_check) {
-  std::string error;
-  std::optional<std::string> data = read_or_explain(path, cap, error, prefix_check);
-  if (!data) return ir::fail(path == "-" ? std::string("<stdin>") : path, "io", std::move(error));
+  std::string error, rule = "io";
+  std::optional<std::string> data = read_or_explain(path, cap, error, rule, prefix_check);
+  if (!data)
+    return ir::fail(path == "-" ? std::string("<stdin>") : path, std::move(rule), std::move(error));
   return std::move(*data);
 }
 

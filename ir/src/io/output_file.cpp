@@ -81,31 +81,35 @@ void AtomicFile::fail(const std::string& what, int err) {
   if (error_.empty()) error_ = fmt::format("{}: {}: {}", shown_, what, std::strerror(err));
 }
 
-bool AtomicFile::write(std::string_view bytes) {
-  if (!ok()) return false;
-  if (!write_all(fd_, bytes)) fail("write failed", errno);
-  return ok();
+ir::Status AtomicFile::status() const {
+  if (error_.empty()) return ir::ok_status();
+  return ir::fail(shown_, "write", error_);
 }
 
-bool AtomicFile::commit() {
-  if (!ok()) return false;
+ir::Status AtomicFile::write(std::string_view bytes) {
+  if (error_.empty() && !write_all(fd_, bytes)) fail("write failed", errno);
+  return status();
+}
+
+ir::Status AtomicFile::commit() {
+  if (!error_.empty()) return status();
   if (::fsync(fd_) != 0) {
     fail("fsync failed", errno);
-    return false;
+    return status();
   }
   int fd = fd_;
   fd_ = -1;
   if (::close(fd) != 0) {
     fail("close failed", errno);
-    return false;
+    return status();
   }
   int err = 0;
   if (!detail::rename_registered_temp(slot_, target_, &err)) {
     fail("cannot rename the temporary file into place", err);
-    return false;
+    return status();
   }
   committed_ = true;
-  return true;
+  return ir::ok_status();
 }
 
 namespace {
@@ -136,8 +140,9 @@ std::string write_or_explain(const std::string& path, std::string_view bytes) {
       return fmt::format("{}: cannot write: not a regular file, FIFO or character device", path);
   }
   AtomicFile out(path);
-  if (out.write(bytes) && out.commit()) return "";
-  return out.error();
+  ir::Status written = out.write(bytes);
+  if (written) written = out.commit();
+  return written.message();
 }
 
 } // namespace

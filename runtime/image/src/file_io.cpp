@@ -16,23 +16,19 @@ namespace {
 
 // Refuses, from its first bytes, a file that is neither PNG nor PFM, before more of it
 // is read (a device or a pipe of noise is then refused at once).
-std::string image_signature(std::string_view first) {
+ir::Status image_signature(std::string_view first) {
   static constexpr unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
   const bool png = first.size() >= 8 && std::memcmp(first.data(), kPng, 8) == 0;
   const bool pfm = first.size() >= 2 && first[0] == 'P' && (first[1] == 'F' || first[1] == 'f');
-  return png || pfm ? "" : "not a PNG or PFM file (unknown signature)";
+  if (png || pfm) return ir::ok_status();
+  return ir::fail("", std::string(kImageRule), "not a PNG or PFM file (unknown signature)");
 }
 
 // The file, read within the image cap; rule kIoRule when it cannot be read at all.
 ir::Result<std::string> read_image_file(const std::string& path) {
-  ir::Result<std::string> read = io::read_bounded(path, io::kImageFileCap, image_signature);
-  if (!read) {
-    // A file that is there but not an image is invalid input, not an I/O error.
-    const std::string error = read.message();
-    const bool io = error.find("unknown signature") == std::string::npos;
-    return ir::fail(path, std::string(io ? kIoRule : kImageRule), error);
-  }
-  return read;
+  // A file that is there but not an image fails with kImageRule (invalid input), one that
+  // cannot be read with "io" (kIoRule): read_bounded keeps the check's rule.
+  return io::read_bounded(path, io::kImageFileCap, image_signature);
 }
 
 // A decoder's failure with the path in front of its message. A positioned one (a PFM header

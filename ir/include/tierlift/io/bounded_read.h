@@ -29,14 +29,15 @@ inline constexpr ReadCap kTokenFileCap{uint64_t{4} << 20, "token file"}; // raw 
 inline constexpr ReadCap kSceneCap{uint64_t{1} << 20, "scene"};          // 1 MiB of JSON
 inline constexpr ReadCap kImageFileCap{uint64_t{1} << 30, "image file"}; // 1 GiB PNG/PFM
 
-// Looks at the first bytes read (at most 64 KiB, fewer for a shorter input) and returns an
-// error message to stop reading at once ("" to go on); an image reader uses it to refuse
-// a file with no image signature before reading more of it.
-using PrefixCheck = std::function<std::string(std::string_view first_bytes)>;
+// Looks at the first bytes read (at most 64 KiB, fewer for a shorter input); a failure stops
+// reading at once. An image reader uses it to refuse a file with no image signature before
+// reading more of it.
+using PrefixCheck = std::function<ir::Status(std::string_view first_bytes)>;
 
 // Reads `path` ("-" = standard input) whole. A failure (rule "io", message "PATH: ...") when
-// it cannot be opened, is a directory, is larger than `cap` (the message names the cap), fails
-// `prefix_check`, or a read fails.
+// it cannot be opened, is a directory, is larger than `cap` (the message names the cap) or a
+// read fails; when `prefix_check` fails, the failure keeps the check's rule (a file that is
+// there but of the wrong kind is not an I/O problem), its message "PATH: " + the check's.
 ir::Result<std::string> read_bounded(const std::string& path, const ReadCap& cap,
                                      const PrefixCheck& prefix_check = nullptr);
 

@@ -33,19 +33,20 @@ ir::Status refuse_if_input(const std::string& output, std::span<const std::strin
 // writers that produce their bytes in pieces, and for the test of the signal clean-up.
 class AtomicFile {
 public:
-  // Creates the temporary file beside `target` (after following symbolic links). On
-  // failure ok() is false and error() says why.
+  // Creates the temporary file beside `target` (after following symbolic links). A failure
+  // to do so is kept: status() says it, and write and commit return it.
   explicit AtomicFile(const std::string& target);
   ~AtomicFile();
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;
 
-  bool ok() const { return error_.empty(); }
-  const std::string& error() const { return error_; }
+  // The first failure so far (rule "write", "PATH: what failed: why"), or success.
+  ir::Status status() const;
   const std::string& temp_path() const { return temp_; }
-  bool write(std::string_view bytes);
-  // fsync, close and rename over the target. False (and the temporary removed) on failure.
-  bool commit();
+  ir::Status write(std::string_view bytes);
+  // fsync, close and rename over the target. On failure the temporary is removed (by the
+  // destructor) and the target is untouched.
+  ir::Status commit();
 
 private:
   void fail(const std::string& what, int err);
