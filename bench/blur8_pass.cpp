@@ -7,8 +7,8 @@
 #include <cstdlib>
 #include <string>
 
-#include "tierlift/cpu/run_job.h"
 #include "tierlift/listings/embedded.h"
+#include "tierlift/pass/setup.h"
 
 namespace tierlift::bench {
 namespace {
@@ -26,7 +26,7 @@ float blur8_offset(int k) {
 }
 
 std::optional<cpu::Pass> blur8_pass() {
-  cpu::RunRequest r;
+  pass::RunRequest r;
   r.vs = listing("listing1_blur8_coords.vsh");
   r.ps = listing("listing2_blur8_weighted_sum.psh");
   if (!r.vs || !r.ps) return std::nullopt;

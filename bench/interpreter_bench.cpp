@@ -12,9 +12,9 @@
 #include "blur8_pass.h"
 #include "tierlift/asm/parser.h"
 #include "tierlift/cpu/draw.h"
-#include "tierlift/cpu/run_job.h"
 #include "tierlift/image/builtin.h"
 #include "tierlift/listings/embedded.h"
+#include "tierlift/pass/setup.h"
 
 using namespace tierlift;
 

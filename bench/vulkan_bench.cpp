@@ -17,8 +17,8 @@
 #include "blur8_pass.h"
 #include "tierlift/asm/parser.h"
 #include "tierlift/cpu/draw.h"
-#include "tierlift/cpu/run_job.h"
 #include "tierlift/listings/embedded.h"
+#include "tierlift/pass/setup.h"
 #include "tierlift/vulkan/device.h"
 
 using namespace tierlift;

@@ -1,6 +1,6 @@
 #include "vulkan_device.h"
 
-#include "tierlift/vulkan/run_job.h" // process_device
+#include "tierlift/vulkan/process_device.h"
 
 namespace tierlift::cli {
 

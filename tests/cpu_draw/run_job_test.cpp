@@ -1,7 +1,7 @@
-// `tierlift run` through its library entry point (run_job) on the article's listings over
-// built-in textures. Expected values are hand-derived from the ramp texture: texel x holds
-// (x + 0.5)/16, so a tap that lands on texel centre t reads (t + 0.5)/16 and a tap on the
-// corner between t−1 and t reads their mean t/16 (clamped at the edges).
+// `tierlift run`'s draw (run_job: prepare_pass, cpu::draw, the probes) on the article's listings
+// over built-in textures. Expected values are hand-derived from the ramp texture: texel x holds (x
+// + 0.5)/16, so a tap that lands on texel centre t reads (t + 0.5)/16 and a tap on the corner
+// between t−1 and t reads their mean t/16 (clamped at the edges).
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -17,11 +17,24 @@
 #include "run_flags.h"
 #include "tierlift/asm/parser.h"
 #include "tierlift/asm/validator.h"
-#include "tierlift/cpu/run_job.h"
 #include "tierlift/ir/result_diagnostics.h"
+
+#include "run_job.h"
 
 namespace tierlift::cpu {
 namespace {
+
+using pass::ConstSetting;
+using pass::ProbePoint;
+using pass::RegisterSetting;
+using pass::RunDiagnostics;
+using pass::RunRequest;
+using pass::StageMask;
+using pass::TextureSetting;
+using test::kRunRule;
+using test::run_job;
+using test::run_pass;
+using test::RunResult;
 
 using namespace tierlift::cli; // the flag parsers
 

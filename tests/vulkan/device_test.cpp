@@ -3,7 +3,6 @@
 #include <cmath>
 
 #include "run_flags.h"
-#include "tierlift/vulkan/run_job.h"
 #include "vk_test_util.h"
 
 namespace tierlift::vulkan::test {
@@ -156,33 +155,6 @@ TEST_F(VulkanTest, BadInputIsAnErrorNotACrash) {
   r = dev->draw(q, t);
   EXPECT_FALSE(r.ok());
   EXPECT_NE(r.message().find("border"), std::string::npos) << r.message();
-}
-
-// run_job_vulkan: the request's pass drawn on the process's device and the probes read back;
-// a request the pass cannot be made from is a failure of rule "run" whose diagnostics went to
-// `diags`, the failure's message the first of them.
-TEST_F(VulkanTest, RunJobDrawsTheRequestAndRefusesABadOne) {
-  pass::RunRequest r;
-  r.width = 5;
-  r.height = 3;
-  r.format = img::Format::RGBA32F;
-  r.inputs.push_back(*cli::parse_input_setting("v0=0.5,0.25,1,1"));
-  r.probes.push_back({4, 2});
-  pass::RunDiagnostics d;
-  ir::Result<VulkanRun> run = run_job_vulkan(r, d, {});
-  ASSERT_TRUE(run) << run.message();
-  EXPECT_FALSE(d.has_errors());
-  EXPECT_NE(run->device_name.find("llvmpipe"), std::string::npos) << run->device_name;
-  EXPECT_EQ(run->image.width, 5u);
-  ASSERT_EQ(run->probes.size(), 1u);
-  EXPECT_EQ(run->probes[0].value, (cpu::Vec4{0.5f, 0.25f, 1, 1}));
-
-  r.width = 0;
-  pass::RunDiagnostics bad;
-  ir::Result<VulkanRun> refused = run_job_vulkan(r, bad, {});
-  EXPECT_TRUE(ir::failed_with(refused, "run"));
-  ASSERT_TRUE(bad.other.has_errors());
-  EXPECT_EQ(refused.message(), bad.other.all()[0].message);
 }
 
 } // namespace

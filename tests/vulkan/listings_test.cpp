@@ -12,17 +12,17 @@ namespace {
 
 constexpr uint32_t W = 64, H = 48;
 
-cpu::ConstSetting cst(std::string_view text) {
+pass::ConstSetting cst(std::string_view text) {
   auto c = cli::parse_const_setting(text);
   EXPECT_TRUE(c) << c.message();
-  return c ? *c : cpu::ConstSetting{};
+  return c ? *c : pass::ConstSetting{};
 }
 
 // Tap k at ((k − taps/2 + half)/W, dy/H) with weights that are not all equal (a falling
 // ramp summing to 1), noise on every stage, bilinear, clamp.
-cpu::RunRequest blur_request(int taps, double half, img::Format format, uint32_t w = W,
-                             uint32_t h = H) {
-  cpu::RunRequest r;
+pass::RunRequest blur_request(int taps, double half, img::Format format, uint32_t w = W,
+                              uint32_t h = H) {
+  pass::RunRequest r;
   r.vs = gpugems_listing(taps == 4 ? "listing3_blur4_coords.vsh" : "listing1_blur8_coords.vsh");
   r.ps = gpugems_listing(taps == 4 ? "listing4_blur4_weighted_sum.psh"
                                    : "listing2_blur8_weighted_sum.psh");
@@ -44,7 +44,7 @@ cpu::RunRequest blur_request(int taps, double half, img::Format format, uint32_t
   return r;
 }
 
-cpu::Pass make_pass(const cpu::RunRequest& r, int subtexel_bits) {
+cpu::Pass make_pass(const pass::RunRequest& r, int subtexel_bits) {
   ir::Result<pass::Pass> p = pass::prepare_pass(r);
   EXPECT_TRUE(p.ok()) << p.message();
   if (!p) return {};
@@ -113,7 +113,7 @@ TEST_F(VulkanTest, Listings3And4TwoPassesSummed) {
 TEST_F(VulkanTest, PixelCentreConventionMatchesTheCpuDevice) {
   img::Image linear[2];
   for (int m = 0; m < 2; ++m) {
-    cpu::RunRequest r = blur_request(8, 0.5, img::Format::RGBA32F);
+    pass::RunRequest r = blur_request(8, 0.5, img::Format::RGBA32F);
     r.conventions.pixel_center = m == 0 ? ir::PixelCenter::D3D9 : ir::PixelCenter::Modern;
     cpu::Pass lin = make_pass(r, int(dev->subtexel_bits()));
     TwoWays a = draw_both(*dev, lin, W, H, img::Format::RGBA32F);
@@ -140,8 +140,8 @@ TEST_F(VulkanTest, PixelCentreConventionMatchesTheCpuDevice) {
 // to the one drawn with every output kept (Listing 1's eight outputs, of which the pixel
 // listing reads four, through an unpruned vertex module is what Listing 3 computes).
 TEST_F(VulkanTest, PruningKeepsTheImage) {
-  cpu::RunRequest r = blur_request(4, 0.5, img::Format::RGBA32F);
-  cpu::RunRequest pruned = r;
+  pass::RunRequest r = blur_request(4, 0.5, img::Format::RGBA32F);
+  pass::RunRequest pruned = r;
   pruned.vs = gpugems_listing("listing1_blur8_coords.vsh");
   for (int k = 4; k < 8; ++k) pruned.constants.push_back(cst(fmt::format("vs:c{}=9,9,0,0", k)));
   cpu::Pass unpruned_pass = make_pass(r, int(dev->subtexel_bits()));

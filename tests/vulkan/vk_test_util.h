@@ -23,9 +23,9 @@
 #include "tierlift/asm/validator.h"
 #include "tierlift/codegen/codegen.h"
 #include "tierlift/cpu/draw.h"
-#include "tierlift/cpu/run_job.h"
 #include "tierlift/image/builtin.h"
 #include "tierlift/image/compare.h"
+#include "tierlift/pass/setup.h"
 #include "tierlift/vulkan/device.h"
 
 namespace tierlift::vulkan::test {
