@@ -173,10 +173,15 @@ ir::Result<DrawStats> draw(const Pass& pass, const DrawTargets& targets, unsigne
     return draw_failure(std::move(why));
 
   PassPrograms vms;
-  std::unique_ptr<PixelBlockVM> block;
-  try {
-    if (pass.vertex_program) vms.vs.emplace(*pass.vertex_program, pass.conventions);
-    if (pass.pixel_program) vms.ps.emplace(*pass.pixel_program, pass.conventions);
+  for (const auto& [program, vm] : {std::pair{pass.vertex_program.get(), &vms.vs},
+                                    std::pair{pass.pixel_program.get(), &vms.ps}}) {
+    if (!program) continue;
+    ir::Result<ShaderVM> made = ShaderVM::create(*program, pass.conventions);
+    if (!made) return draw_failure("the shader VM refused the program: " + made.message());
+    vm->emplace(std::move(*made));
+  }
+  std::unique_ptr<PixelBlockVM> block; // null: the per-pixel VM runs the pixel stage
+  try { // out of memory while planning the block executor: an error, not a crash
     if (pass.pixel_program && pass.executor == Executor::Auto && !per_pixel_only)
       block = PixelBlockVM::create(*pass.pixel_program, pass.conventions, pass.ps_constants,
                                    /*coords_2d=*/true); // BoundTextures reads u, v only

@@ -13,6 +13,15 @@ struct ShaderVM::Impl {
 
 ShaderVM::ShaderVM(const ir::Program& program, const ir::Conventions& conventions)
     : impl_(std::make_unique<Impl>(Impl{vm::prepare(program, conventions)})) {}
+ir::Result<ShaderVM> ShaderVM::create(const ir::Program& program,
+                                      const ir::Conventions& conventions) {
+  try {
+    return ShaderVM(program, conventions);
+  } catch (const std::invalid_argument& e) { // vm::prepare's one way of refusing a program
+    return ir::fail("cpu", std::string(kVmRule), e.what());
+  }
+}
+
 ShaderVM::~ShaderVM() = default;
 ShaderVM::ShaderVM(ShaderVM&&) noexcept = default;
 ShaderVM& ShaderVM::operator=(ShaderVM&&) noexcept = default;

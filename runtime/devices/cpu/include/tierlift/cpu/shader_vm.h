@@ -11,6 +11,7 @@
 
 #include "tierlift/ir/conventions.h"
 #include "tierlift/ir/program.h"
+#include "tierlift/ir/result.h"
 #include "tierlift/pass/registers.h"
 
 namespace tierlift::cpu {
@@ -54,10 +55,18 @@ struct PixelOutput {
   bool discarded = false; // texkill
 };
 
+// The rule of ShaderVM::create's failures.
+inline constexpr std::string_view kVmRule = "vm";
+
 class ShaderVM {
 public:
-  // The program must have passed validation. Throws std::invalid_argument otherwise-broken
-  // programs (e.g. unmatched flow control) at construction, never while running.
+  // The VM for `program`, or why it cannot run it (rule kVmRule, subject "cpu"): a program
+  // validate_ir refuses, or one broken past validation (e.g. unmatched flow control). What
+  // the library's callers use; nothing fails later, while running.
+  static ir::Result<ShaderVM> create(const ir::Program& program,
+                                     const ir::Conventions& conventions);
+  // The same, throwing std::invalid_argument instead (the form the VM's own unit tests take,
+  // where a refused program is the test's failure).
   ShaderVM(const ir::Program& program, const ir::Conventions& conventions);
   ~ShaderVM();
   ShaderVM(ShaderVM&&) noexcept;
