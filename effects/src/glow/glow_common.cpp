@@ -98,7 +98,8 @@ public:
   PassDesc extract() const {
     const GlowContext& c = p_.context;
     const bool fog = c.fog.on;
-    PassDesc d = pass("extract", l_.helper_vs, fog ? l_.fogged : l_.extract, kSourcesTexture);
+    PassDesc d =
+        listing_pass("extract", l_.helper_vs, fog ? l_.fogged : l_.extract, kSourcesTexture);
     d.analytic = fog ? AnalyticForm::MaskByAlphaFogged : AnalyticForm::MaskByAlpha;
     // Point reads at texel centres: offset ½ texel, scale 1 (both reads: same size).
     const Coord centre{0.5 / p_.width, 0.5 / p_.height};
@@ -132,8 +133,8 @@ public:
             {{rx.position / p_.width, ry.position / p_.height, su, sv}, rx.weight * ry.weight});
     constexpr size_t kPerPass = 4;
     for (size_t first = 0; first < reads.size(); first += kPerPass) {
-      PassDesc d = pass(fmt::format("downsample.{}", first / kPerPass), l_.helper_vs, l_.downsample,
-                        kSmallTexture);
+      PassDesc d = listing_pass(fmt::format("downsample.{}", first / kPerPass), l_.helper_vs,
+                                l_.downsample, kSmallTexture);
       std::vector<Coord> coords;
       for (size_t k = first; k < std::min(reads.size(), first + kPerPass); ++k) {
         coords.push_back(reads[k].first);
@@ -157,8 +158,8 @@ public:
     const unsigned per = r_.taps_per_blur_pass;
     const size_t count = (taps.size() + per - 1) / per;
     for (size_t i = 0; i < count; ++i) {
-      PassDesc d = pass(fmt::format("{}.{}", vertical ? "blur_v" : "blur_h", i), l_.blur_vs,
-                        l_.blur_ps, target);
+      PassDesc d = listing_pass(fmt::format("{}.{}", vertical ? "blur_v" : "blur_h", i), l_.blur_vs,
+                                l_.blur_ps, target);
       for (size_t k = 0; k < per; ++k) {
         const size_t t = i * per + k;
         // Padding taps read the centre with weight 0 (adds exactly 0 for finite images).
@@ -210,8 +211,8 @@ public:
     };
     const size_t count = (taps.size() + 1) / 2;
     for (size_t i = 0; i < count; ++i) {
-      PassDesc d = pass(fmt::format("{}.{}", vertical ? "blur_v" : "blur_h", i), r_.stage_blur->vs,
-                        r_.stage_blur->ps, target);
+      PassDesc d = listing_pass(fmt::format("{}.{}", vertical ? "blur_v" : "blur_h", i),
+                                r_.stage_blur->vs, r_.stage_blur->ps, target);
       d.vs_constants.assign(tss::kSpecularConstant + 1, pass::Vec4{0, 0, 0, 0});
       for (size_t k = 0; k < 2; ++k) {
         const size_t t = 2 * i + k;
@@ -232,7 +233,7 @@ public:
   }
 
   PassDesc composite() const {
-    PassDesc d = pass("composite", l_.helper_vs, l_.composite, kFinalTexture);
+    PassDesc d = listing_pass("composite", l_.helper_vs, l_.composite, kFinalTexture);
     // Full-resolution pixel i lies at (i + ½)/n glow texels: u = v·W/(n·gw) + ½/(n·gw).
     const double nw = double(p_.downsample) * gw_, nh = double(p_.downsample) * gh_;
     d.vs_constants = helper_vs_constants(
@@ -251,7 +252,7 @@ public:
   // The after-image's mix: fed = x + g·previous (x: what the blur would read, previous: the
   // saved fed texture or last frame's glow), point reads at the glow's texel centres.
   PassDesc afterimage_mix(std::string_view x, std::string_view previous) const {
-    PassDesc d = pass("afterimage", l_.helper_vs, l_.mix, kFedTexture);
+    PassDesc d = listing_pass("afterimage", l_.helper_vs, l_.mix, kFedTexture);
     d.vs_constants = helper_vs_constants({{0.5 / gw_, 0.5 / gh_}, {0.5 / gw_, 0.5 / gh_}});
     const auto g = static_cast<float>(p_.afterimage_gain / r_.mix_divisor);
     d.ps_constants = {pass::Vec4{g, g, g, 0}};
@@ -265,7 +266,7 @@ public:
   // Afterimage::Sources keeps this frame's fed texture for the next: the mix listing with
   // c0 = 0 (t0 + 0·t1 = t0 exactly), since a pass may not read its own target.
   PassDesc afterimage_save() const {
-    PassDesc d = pass("afterimage_save", l_.helper_vs, l_.mix, kSavedTexture);
+    PassDesc d = listing_pass("afterimage_save", l_.helper_vs, l_.mix, kSavedTexture);
     d.vs_constants = helper_vs_constants({{0.5 / gw_, 0.5 / gh_}, {0.5 / gw_, 0.5 / gh_}});
     d.ps_constants = {pass::Vec4{0, 0, 0, 0}};
     bind(d, 0, kFedTexture, pass::Filter::Point, 1);
@@ -274,22 +275,11 @@ public:
   }
 
 private:
-  static PassDesc pass(std::string name, ProgramPtr vs, ProgramPtr ps, std::string_view target) {
-    PassDesc d;
-    d.name = std::move(name);
-    d.vs = std::move(vs);
-    d.ps = std::move(ps);
-    d.target = std::string(target);
-    return d;
-  }
-
   // A texture the pixel listing reads `reads` times from `stage` on: once on that sampler
   // (ps_2_0), or on stages stage..stage + reads − 1 (ps_1_x, t# reads stage #).
   void bind(PassDesc& d, uint32_t stage, std::string_view texture, pass::Filter filter,
             unsigned reads) const {
-    const unsigned stages = r_.one_stage_per_read ? reads : 1;
-    for (unsigned k = 0; k < stages; ++k)
-      d.textures.push_back({stage + k, std::string(texture), sampler(filter)});
+    bind_reads(d, stage, texture, sampler(filter), reads, r_.one_stage_per_read);
   }
 
   const GlowParams& p_;
@@ -329,6 +319,26 @@ std::string check_params(const GlowParams& p, const TierRecipe& r) {
 }
 
 } // namespace
+
+TierRecipe ps1x_recipe(const GlowParams& params) {
+  const bool above_one = params.intensity_ramp.max(params.intensity) > 1;
+  const bool gain_above_one = params.afterimage_gain_ramp.max(params.afterimage_gain) > 1;
+  const std::string_view plain = "glow/composite_add_ps13.psh",
+                         x4 = "glow/composite_add_x4_ps13.psh";
+  TierRecipe r;
+  r.listings.helper_vs = "glow/quad4_coords_vs11.vsh";
+  r.listings.extract_ps = "glow/extract_sources_ps11.psh";
+  r.listings.downsample_ps = "glow/downsample4_ps13.psh";
+  r.listings.composite_ps = above_one ? x4 : plain;
+  r.listings.mix_ps = gain_above_one ? x4 : plain;
+  r.listings.fogged_ps = "glow/extract_fogged_ps11.psh";
+  r.one_stage_per_read = true; // tex t# reads texture stage #
+  r.constants_clamp_to_one = true;
+  r.composite_divisor = above_one ? 4 : 1;
+  r.mix_divisor = gain_above_one ? 4 : 1;
+  r.max_intensity = 4;
+  return r;
+}
 
 PlanResult build_glow_graph(const GlowParams& p, const TierRecipe& r) {
   GlowPlan plan;

@@ -51,6 +51,13 @@ struct TierRecipe {
   WeightRounding rounding = WeightRounding::ErrorCarry;
 };
 
+// The recipe the ps.1.x tiers (dx8, dx7) share: vs.1.1 helper listings, ps.1.x extract,
+// downsample, composite and mix, one stage per read, constants clamped to [−1, 1], and an
+// intensity (and after-image gain) above 1 reached as c0 = value / 4 times the listing's
+// _x4 (exact: a power of two), up to 4. The tier fills in its name, the blur listings, its
+// taps per blur pass and the reason for the limit.
+TierRecipe ps1x_recipe(const GlowParams& params);
+
 // Checks the parameters every tier shares (downsample, size, intensity ≥ 0 and finite,
 // intensity ≤ recipe.max_intensity), loads the listings, samples the profile and builds
 // the graph. Errors name the parameter (or the listing) at fault.

@@ -51,26 +51,12 @@ PlanResult build_glow_dx7(const GlowParams& params) {
   ir::Result<std::shared_ptr<const tss::Lowered>> blur = blur_states(params);
   if (!blur) return plan_failure(blur.message());
   std::shared_ptr<const tss::Lowered> states = std::move(blur).value();
-  detail::TierRecipe r;
+  // As tier dx8 (glow_dx8.cpp): above 1, c0 = value / 4 and the listing's _x4. Only the
+  // helper listings (no blur listings): the blur comes from the stage states. An 8-bit
+  // colour holds at most 1 as well, as a ps.1.x constant does.
+  detail::TierRecipe r = detail::ps1x_recipe(params);
   r.tier = "dx7";
-  // As tier dx8 (glow_dx8.cpp): above 1, c0 = value / 4 and the listing's _x4.
-  const bool above_one = params.intensity_ramp.max(params.intensity) > 1;
-  const bool gain_above_one = params.afterimage_gain_ramp.max(params.afterimage_gain) > 1;
-  // Only the helper listings: the blur comes from the stage states.
-  r.listings = {"glow/quad4_coords_vs11.vsh",
-                "glow/extract_sources_ps11.psh",
-                "glow/downsample4_ps13.psh",
-                above_one ? "glow/composite_add_x4_ps13.psh" : "glow/composite_add_ps13.psh",
-                "",
-                "",
-                gain_above_one ? "glow/composite_add_x4_ps13.psh" : "glow/composite_add_ps13.psh",
-                "glow/extract_fogged_ps11.psh"};
   r.taps_per_blur_pass = kTapsPerBlurPassDx7;
-  r.one_stage_per_read = true;
-  r.constants_clamp_to_one = true; // an 8-bit colour holds at most 1 as well
-  r.composite_divisor = above_one ? 4 : 1;
-  r.mix_divisor = gain_above_one ? 4 : 1;
-  r.max_intensity = 4;
   r.why_limit = "the helper passes are the dx8 tier's ps.1.x listings";
   r.stage_blur = std::move(states);
   r.rounding = params.weight_rounding;

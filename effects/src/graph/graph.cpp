@@ -142,6 +142,22 @@ std::string check_pass(const EffectGraph& g, const PassDesc& p) {
 
 } // namespace
 
+PassDesc listing_pass(std::string name, std::shared_ptr<const ir::Program> vs,
+                      std::shared_ptr<const ir::Program> ps, std::string_view target) {
+  PassDesc d;
+  d.name = std::move(name);
+  d.vs = std::move(vs);
+  d.ps = std::move(ps);
+  d.target = std::string(target);
+  return d;
+}
+
+void bind_reads(PassDesc& d, uint32_t stage, std::string_view texture, const pass::SamplerState& s,
+                unsigned reads, bool one_stage_per_read) {
+  const unsigned stages = one_stage_per_read ? reads : 1;
+  for (unsigned k = 0; k < stages; ++k) d.textures.push_back({stage + k, std::string(texture), s});
+}
+
 ir::Status check_graph(const EffectGraph& graph) {
   auto fail = [](std::string message) { return ir::fail("graph", "graph", std::move(message)); };
   if (std::string e = check_textures(graph); !e.empty()) return fail(std::move(e));

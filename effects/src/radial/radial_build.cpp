@@ -74,22 +74,6 @@ std::string check(const GlowParams& g, const RadialParams& r, const TierListings
   return {};
 }
 
-PassDesc make_pass(std::string name, ProgramPtr vs, ProgramPtr ps, std::string_view target) {
-  PassDesc d;
-  d.name = std::move(name);
-  d.vs = std::move(vs);
-  d.ps = std::move(ps);
-  d.target = std::string(target);
-  return d;
-}
-
-// `texture` read `reads` times from stage 0 on: one sampler (ps.2.0) or one stage a read.
-void bind(PassDesc& d, uint32_t stage, std::string_view texture, const pass::SamplerState& s,
-          unsigned reads, bool one_stage_per_read) {
-  const unsigned stages = one_stage_per_read ? reads : 1;
-  for (unsigned k = 0; k < stages; ++k) d.textures.push_back({stage + k, std::string(texture), s});
-}
-
 } // namespace
 
 std::vector<RadialCopy> radial_copies(const RadialParams& r, uint32_t width, uint32_t height) {
@@ -148,7 +132,7 @@ PlanResult build_radial(const GlowParams& g, const RadialParams& r) {
   plan.glow_height = g.height;
 
   // The star: the scene image tiled (wrap), four moving reads averaged.
-  PassDesc star = make_pass("star", star_vs, star_ps, kStarTexture);
+  PassDesc star = listing_pass("star", star_vs, star_ps, kStarTexture);
   const unsigned frames = r.moves() ? std::max(1u, r.frames) : 1u;
   for (unsigned f = 0; f < frames; ++f) {
     std::vector<pass::Vec4> offsets;
@@ -158,8 +142,8 @@ PlanResult build_radial(const GlowParams& g, const RadialParams& r) {
     if (frames > 1) star.vs_constants_per_frame.push_back(std::move(offsets));
   }
   star.ps_constants = {splat(0.25)};
-  bind(star, 0, kSceneTexture, sampler(pass::Filter::Linear, pass::AddressMode::Wrap), 4,
-       t.one_stage_per_read);
+  bind_reads(star, 0, kSceneTexture, sampler(pass::Filter::Linear, pass::AddressMode::Wrap), 4,
+             t.one_stage_per_read);
   graph.passes.push_back(std::move(star));
 
   // The beams: per_pass copies a pass, offsets c0.., scales c(per_pass)..; padding copies
@@ -167,7 +151,7 @@ PlanResult build_radial(const GlowParams& g, const RadialParams& r) {
   const std::vector<RadialCopy> copies = radial_copies(r, g.width, g.height);
   const size_t passes = (copies.size() + t.per_pass - 1) / t.per_pass;
   for (size_t p = 0; p < passes; ++p) {
-    PassDesc d = make_pass(fmt::format("zoom.{}", p), zoom_vs, zoom_ps, kGlowTexture);
+    PassDesc d = listing_pass(fmt::format("zoom.{}", p), zoom_vs, zoom_ps, kGlowTexture);
     std::vector<pass::Vec4> offsets, scales;
     for (size_t k = 0; k < t.per_pass; ++k) {
       const size_t i = p * t.per_pass + k;
@@ -178,15 +162,15 @@ PlanResult build_radial(const GlowParams& g, const RadialParams& r) {
     }
     d.vs_constants = offsets;
     d.vs_constants.insert(d.vs_constants.end(), scales.begin(), scales.end());
-    bind(d, 0, kStarTexture, sampler(pass::Filter::Linear, pass::AddressMode::Clamp), t.per_pass,
-         t.one_stage_per_read);
+    bind_reads(d, 0, kStarTexture, sampler(pass::Filter::Linear, pass::AddressMode::Clamp),
+               t.per_pass, t.one_stage_per_read);
     d.blend = p == 0 ? pass::BlendMode::Replace : pass::BlendMode::OneOne;
     graph.passes.push_back(std::move(d));
   }
   plan.blur_passes_per_axis = unsigned(passes);
 
   // The composite: star on stage 0, beams on 1, both read at texel centres.
-  PassDesc comp = make_pass("composite", zoom_vs, composite_ps, kFinalTexture);
+  PassDesc comp = listing_pass("composite", zoom_vs, composite_ps, kFinalTexture);
   std::vector<pass::Vec4> c(2 * t.per_pass, pass::Vec4{0, 0, 0, 0});
   for (size_t k = 0; k < 2; ++k) {
     c[k] = {float(0.5 / g.width), float(0.5 / g.height), 0, 0};
@@ -195,8 +179,10 @@ PlanResult build_radial(const GlowParams& g, const RadialParams& r) {
   comp.vs_constants = c;
   const auto s = static_cast<float>(r.strength);
   comp.ps_constants = {pass::Vec4{s, s, s, 0}};
-  bind(comp, 0, kStarTexture, sampler(pass::Filter::Point, pass::AddressMode::Clamp), 1, false);
-  bind(comp, 1, kGlowTexture, sampler(pass::Filter::Point, pass::AddressMode::Clamp), 1, false);
+  bind_reads(comp, 0, kStarTexture, sampler(pass::Filter::Point, pass::AddressMode::Clamp), 1,
+             false);
+  bind_reads(comp, 1, kGlowTexture, sampler(pass::Filter::Point, pass::AddressMode::Clamp), 1,
+             false);
   graph.passes.push_back(std::move(comp));
   if (ir::Status checked = check_graph(graph); !checked) return plan_failure(checked.message());
   return plan;

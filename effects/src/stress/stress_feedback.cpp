@@ -52,10 +52,7 @@ FeedbackGraph feedback_graph(Format f, double g) {
     gr.textures.push_back({name, 1, 1, f, name == std::string("src")});
   auto pass = [&](std::string name, std::string from, std::string to, double weight,
                   pass::BlendMode blend) {
-    PassDesc d;
-    d.name = std::move(name);
-    d.vs = *vs;
-    d.ps = *ps;
+    PassDesc d = listing_pass(std::move(name), *vs, *ps, to);
     const float w = float(weight);
     for (unsigned k = 0; k < kTapsPerBlurPassDx9; ++k) {
       d.vs_constants.push_back({0.5f, 0.5f, 0, 0}); // the one texel's centre
@@ -65,7 +62,6 @@ FeedbackGraph feedback_graph(Format f, double g) {
     s.filter = pass::Filter::Point;
     s.address_u = s.address_v = pass::AddressMode::Clamp;
     d.textures.push_back({0, std::move(from), s});
-    d.target = std::move(to);
     d.blend = blend;
     gr.passes.push_back(std::move(d));
   };

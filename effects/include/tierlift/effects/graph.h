@@ -119,6 +119,18 @@ struct PassDesc {
   PassDesc at_frame(unsigned frame) const;
 };
 
+// A pass named `name` drawing `vs` + `ps` into `target`, everything else at its default:
+// what every effect builder starts a pass from.
+PassDesc listing_pass(std::string name, std::shared_ptr<const ir::Program> vs,
+                      std::shared_ptr<const ir::Program> ps, std::string_view target);
+
+// Binds `texture` (sampler state `s`) for a pixel listing that reads it `reads` times from
+// `stage` on: once on that sampler when one s# serves every read (ps_2_0's texld tK, sN), or
+// on stages stage .. stage + reads − 1 when each read samples its own stage
+// (`one_stage_per_read`: ps_1_x, where tex tN reads stage N).
+void bind_reads(PassDesc& d, uint32_t stage, std::string_view texture, const pass::SamplerState& s,
+                unsigned reads, bool one_stage_per_read);
+
 struct EffectGraph {
   std::vector<TextureDesc> textures;
   std::vector<PassDesc> passes;
