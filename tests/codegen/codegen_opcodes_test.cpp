@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "compile_valid.h"
 #include "tierlift/asm/parser.h"
 #include "tierlift/codegen/codegen.h"
 #include "tierlift/ir/opcodes.h"
@@ -195,11 +196,7 @@ void expect_compiles(const std::string& text) {
   SCOPED_TRACE(text);
   auto parsed = as::parse_text(text, "<generated>");
   ASSERT_TRUE(parsed.program) << ir::render_text(parsed.diags, parsed.sources);
-  ir::DiagnosticSink diags;
-  auto module = codegen::compile(*parsed.program, {}, diags);
-  ASSERT_TRUE(module) << ir::render_text(diags, parsed.sources);
-  const ir::Status valid = codegen::validate(module->words);
-  EXPECT_TRUE(valid) << valid.message();
+  tierlift::test::compile_valid(*parsed.program, parsed.sources);
 }
 
 } // namespace

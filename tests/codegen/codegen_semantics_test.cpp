@@ -6,6 +6,7 @@
 #include <regex>
 #include <set>
 #include <string>
+#include <string_view>
 
 #include "tierlift/asm/parser.h"
 #include "tierlift/codegen/codegen.h"
@@ -40,6 +41,14 @@ std::set<std::string> results_of(const std::string& text, const std::string& op)
        ++it)
     ids.insert((*it)[1]);
   return ids;
+}
+
+// Every one of `parts` occurs in the disassembly `text` (contains) or none does (lacks).
+void expect_contains(const std::string& text, std::initializer_list<std::string_view> parts) {
+  for (std::string_view part : parts) EXPECT_NE(text.find(part), std::string::npos) << part;
+}
+void expect_lacks(const std::string& text, std::initializer_list<std::string_view> parts) {
+  for (std::string_view part : parts) EXPECT_EQ(text.find(part), std::string::npos) << part;
 }
 
 const char* kMadPs20 = "ps_2_0\ndcl t0\ndcl t1\nmad r0, t0, t1, c0\nmov oC0, r0\n";
@@ -78,9 +87,7 @@ TEST(CodegenSemantics, MinMaxUseOrderedSelectsNotFMinFMax) {
                  "add oPos, r0, r1\n");
   ASSERT_TRUE(m);
   const std::string text = dis(*m);
-  EXPECT_EQ(text.find("FMin"), std::string::npos);
-  EXPECT_EQ(text.find("FMax"), std::string::npos);
-  EXPECT_EQ(text.find("NMin"), std::string::npos);
+  expect_lacks(text, {"FMin", "FMax", "NMin"});
   EXPECT_FALSE(results_of(text, "OpFOrdLessThan").empty());
   EXPECT_FALSE(results_of(text, "OpFOrdGreaterThanEqual").empty());
   EXPECT_EQ(text.find("OpFUnord"), std::string::npos);
@@ -92,9 +99,7 @@ TEST(CodegenSemantics, NoDotFractOrFmaAnywhere) {
                  "m4x4 r3, v0, c4\nadd r0, r0.x, r1\nadd r0, r0, r2\nadd oPos, r0, r3\n");
   ASSERT_TRUE(m);
   const std::string text = dis(*m);
-  EXPECT_EQ(text.find("OpDot"), std::string::npos);
-  EXPECT_EQ(text.find("Fract"), std::string::npos);
-  EXPECT_EQ(text.find("Fma"), std::string::npos);
+  expect_lacks(text, {"OpDot", "Fract", "Fma"});
   EXPECT_NE(text.find("Floor"), std::string::npos);
 }
 
@@ -109,8 +114,7 @@ TEST(CodegenSemantics, TexkillIsOpKillOrDemote) {
   auto demote = build(ps, opt);
   ASSERT_TRUE(demote);
   const std::string text = dis(*demote);
-  EXPECT_NE(text.find("OpDemoteToHelperInvocation"), std::string::npos);
-  EXPECT_NE(text.find("SPV_EXT_demote_to_helper_invocation"), std::string::npos);
+  expect_contains(text, {"OpDemoteToHelperInvocation", "SPV_EXT_demote_to_helper_invocation"});
   EXPECT_EQ(text.find("OpKill"), std::string::npos);
 }
 
@@ -120,12 +124,10 @@ TEST(CodegenSemantics, PositionFixUpIsSpecializable) {
   auto m = build("vs_1_1\ndcl_position v0\nmov oPos, v0\n", opt);
   ASSERT_TRUE(m);
   const std::string text = dis(*m);
-  EXPECT_NE(text.find("OpDecorate %flip_y SpecId 0"), std::string::npos);
-  EXPECT_NE(text.find("OpDecorate %pixel_offset_x SpecId 1"), std::string::npos);
-  EXPECT_NE(text.find("OpDecorate %pixel_offset_y SpecId 2"), std::string::npos);
-  EXPECT_NE(text.find("%flip_y = OpSpecConstant %float -1"), std::string::npos);
-  EXPECT_NE(text.find("%pixel_offset_x = OpSpecConstant %float 0.25"), std::string::npos);
-  EXPECT_NE(text.find("BuiltIn Position"), std::string::npos);
+  expect_contains(text,
+                  {"OpDecorate %flip_y SpecId 0", "OpDecorate %pixel_offset_x SpecId 1",
+                   "OpDecorate %pixel_offset_y SpecId 2", "%flip_y = OpSpecConstant %float -1",
+                   "%pixel_offset_x = OpSpecConstant %float 0.25", "BuiltIn Position"});
 }
 
 TEST(CodegenSemantics, Ps1xMaxValueIsASpecConstantWithTheConventionDefault) {
@@ -134,8 +136,8 @@ TEST(CodegenSemantics, Ps1xMaxValueIsASpecConstantWithTheConventionDefault) {
   auto m = build("ps_1_4\ntexld r0, t0\nmul_x4 r0, r0, c0\n", opt);
   ASSERT_TRUE(m);
   const std::string text = dis(*m);
-  EXPECT_NE(text.find("OpDecorate %ps1x_max_value SpecId 3"), std::string::npos);
-  EXPECT_NE(text.find("%ps1x_max_value = OpSpecConstant %float 8"), std::string::npos);
+  expect_contains(
+      text, {"OpDecorate %ps1x_max_value SpecId 3", "%ps1x_max_value = OpSpecConstant %float 8"});
 }
 
 TEST(CodegenSemantics, FixedPointEmulationValidates) {
@@ -201,8 +203,7 @@ TEST(CodegenSemantics, Vs20IntAndBoolMembersFollowTheFloats) {
   EXPECT_EQ(m->uniforms.int_offset, 64u);
   EXPECT_EQ(m->uniforms.bool_offset, 64u + 256u);
   const std::string text = dis(*m);
-  EXPECT_NE(text.find("OpLoopMerge"), std::string::npos);
-  EXPECT_NE(text.find("OpSelectionMerge"), std::string::npos);
+  expect_contains(text, {"OpLoopMerge", "OpSelectionMerge"});
 }
 
 TEST(CodegenSemantics, SubroutinesBecomeFunctions) {
@@ -211,8 +212,7 @@ TEST(CodegenSemantics, SubroutinesBecomeFunctions) {
                  "label l2\nmul r0, r0, c1\nret\n");
   ASSERT_TRUE(m);
   const std::string text = dis(*m);
-  EXPECT_NE(text.find("%l1 = OpFunction"), std::string::npos);
-  EXPECT_NE(text.find("%l2 = OpFunction"), std::string::npos);
+  expect_contains(text, {"%l1 = OpFunction", "%l2 = OpFunction"});
   EXPECT_EQ(results_of(text, "OpFunctionCall").size(), 3u); // main → d3d_main, l1, l2
 }
 
