@@ -8,6 +8,7 @@
 
 #include "../vulkan/vk_test_util.h"
 #include "scene_error_case.h"
+#include "three_ways.h"
 #include "tierlift/effects/agreement.h"
 #include "tierlift/effects/analytic_device.h"
 #include "tierlift/effects/glow_run.h"
@@ -17,10 +18,9 @@ namespace tierlift::effects {
 namespace {
 
 namespace fs = std::filesystem;
-const fs::path kScenes = fs::path(TIERLIFT_SOURCE_DIR) / "listings" / "scenes";
 
 ir::Result<Scene> parse(const std::string& text) {
-  return parse_scene(text, "s.json", kScenes.string());
+  return parse_shipped(text);
 }
 
 TEST(GlowContextScene, FieldsAreRead) {
@@ -106,27 +106,17 @@ TEST_P(GlowContextShipped, EveryPairAgreesOnEveryPass) {
   const GlowPlan& plan = *plan_built;
   img::ImageResult scene = load_scene_image(*s);
   ASSERT_TRUE(scene) << scene.message();
-  CpuPassDevice cpu_dev(2);
-  AnalyticPassDevice analytic;
-  auto vk = make_vulkan_pass_device(*dev);
-  std::vector<std::pair<std::string, GlowRun>> ways;
-  ways.emplace_back("cpu", run_glow(plan, *scene, cpu_dev, true));
-  ways.emplace_back("vulkan", run_glow(plan, *scene, *vk, true));
-  ways.emplace_back("analytic", run_glow(plan, *scene, analytic, true));
+  test_ways::ThreeDevices devices(*dev);
+  const test_ways::NamedRuns ways = test_ways::run_three_ways(plan, *scene, devices);
   for (const auto& [name, w] : ways) ASSERT_TRUE(w.run.ok()) << name << ": " << w.run.message();
   EXPECT_TRUE(dev->messages().empty()) << dev->messages().front();
-  for (size_t a = 0; a < ways.size(); ++a)
-    for (size_t b = a + 1; b < ways.size(); ++b) {
-      ir::Result<RunAgreement> agree_compared =
-          compare_runs(*ways[a].second.run, ways[a].second.images, *ways[b].second.run,
-                       ways[b].second.images, std::string(kFinalTexture));
-      ASSERT_TRUE(agree_compared.ok()) << agree_compared.message();
-      const RunAgreement& agree = *agree_compared;
-      for (const PassAgreement& row : agree.passes)
-        EXPECT_TRUE(row.verdict.pass) << ways[a].first << " vs " << ways[b].first << ", "
-                                      << row.pass << ": " << row.verdict.summary;
-      EXPECT_TRUE(agree.all_pass);
-    }
+  test_ways::compare_pairs(
+      ways, [](const std::string& a, const std::string& b, const RunAgreement& agree) {
+        for (const PassAgreement& row : agree.passes)
+          EXPECT_TRUE(row.verdict.pass)
+              << a << " vs " << b << ", " << row.pass << ": " << row.verdict.summary;
+        EXPECT_TRUE(agree.all_pass);
+      });
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, GlowContextShipped,

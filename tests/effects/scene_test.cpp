@@ -19,10 +19,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kScenes = fs::path(TIERLIFT_SOURCE_DIR) / "listings" / "scenes";
-
 ir::Result<Scene> parse(const std::string& text) {
-  return parse_scene(text, "s.json", kScenes.string());
+  return parse_shipped(text);
 }
 
 TEST(Scene, EveryShippedSceneLoadsAndBuilds) {
