@@ -134,6 +134,14 @@ std::vector<analytic::Tap> taps_of(const Blur& b, const PassSetup& s) {
   return t->taps;
 }
 
+// The analytic model's blur of `noise` by `taps` lies within `tolerance` of `want`.
+void expect_model_near(const std::vector<analytic::Tap>& taps, const img::Image& noise,
+                       const img::Image& want, double tolerance) {
+  auto model = analytic::blur_pass(taps, noise, clamp_linear_model());
+  ASSERT_TRUE(model) << model.message();
+  EXPECT_LE(max_abs_difference(*model, want), tolerance);
+}
+
 void check_with_half_texel(const Blur& b, uint32_t width = 64, uint32_t height = 32,
                            double tolerance = kTolerance) {
   img::Image noise = img::builtin_noise(width, height, 2026);
@@ -150,9 +158,7 @@ void check_with_half_texel(const Blur& b, uint32_t width = 64, uint32_t height =
   auto conv = tierlift::test::discrete_convolution(texel, noise, clamp_linear_model());
   ASSERT_TRUE(conv) << conv.message();
   EXPECT_LE(max_abs_difference(device, *conv), tolerance);
-  auto model = analytic::blur_pass(taps, noise, clamp_linear_model());
-  ASSERT_TRUE(model) << model.message();
-  EXPECT_LE(max_abs_difference(*model, *conv), tolerance);
+  expect_model_near(taps, noise, *conv, tolerance);
 }
 
 void check_without_half_texel(const Blur& b, uint32_t width = 64, uint32_t height = 32,
@@ -166,9 +172,7 @@ void check_without_half_texel(const Blur& b, uint32_t width = 64, uint32_t heigh
   auto corner = tierlift::test::corner_model(taps, noise, clamp_linear_model());
   ASSERT_TRUE(corner) << corner.message();
   EXPECT_LE(max_abs_difference(device, *corner), tolerance);
-  auto model = analytic::blur_pass(taps, noise, clamp_linear_model());
-  ASSERT_TRUE(model) << model.message();
-  EXPECT_LE(max_abs_difference(device, *model), tolerance);
+  expect_model_near(taps, noise, device, tolerance);
 
   // The device differs from the plain convolution by exactly the predicted amount …
   auto plain = tierlift::test::discrete_convolution(

@@ -53,31 +53,31 @@ struct Builder {
     p.code.push_back(i);
     return *this;
   }
+  // Every declaration is numbered in call order, as the parser numbers statements.
+  Builder& decl(Declaration d) {
+    d.seq = seq++;
+    p.decls.push_back(d);
+    return *this;
+  }
   Builder& dcl_input(uint32_t v, DeclUsage usage, uint8_t usage_index = 0,
                      uint8_t mask = kFullMask) {
     Declaration d;
     d.reg = D(RegFile::Input, v, mask);
     d.usage = usage;
     d.usage_index = usage_index;
-    d.seq = seq++;
-    p.decls.push_back(d);
-    return *this;
+    return decl(d);
   }
   Builder& dcl_ps(RegFile f, uint32_t index, uint8_t mask = kFullMask, InstrMods mods = {}) {
     Declaration d;
     d.reg = D(f, index, mask);
     d.mods = mods;
-    d.seq = seq++;
-    p.decls.push_back(d);
-    return *this;
+    return decl(d);
   }
   Builder& dcl_sampler(uint32_t s, SamplerType type) {
     Declaration d;
     d.reg = D(RegFile::Sampler, s);
     d.sampler_type = type;
-    d.seq = seq++;
-    p.decls.push_back(d);
-    return *this;
+    return decl(d);
   }
   Builder& def(RegFile f, uint32_t index, std::array<uint32_t, 4> raw) {
     ConstDef c;

@@ -8,18 +8,25 @@
 
 using namespace vmtest;
 
+namespace {
+// `op` (rcp, rsq, log, ...) of a in vs_2_0, written to oT0, and of b, written to oT1.
+VertexOutput op_of_two(const char* op, float a, float b, tierlift::ir::Conventions conv = {}) {
+  const std::string o(op);
+  return vs("vs_2_0", o + " r4, r0.x\nmov oT0, r4\n" + o + " r5, r0.y\nmov oT1, r5\n",
+            bank({{a, b, 0, 0}}), conv);
+}
+} // namespace
+
 TEST(Numerics, RcpOfZeroIsFltMax) {
   // rcp(+0) and rcp(-0) are both +FLT_MAX (doc pseudo-code "f == 0 ? +big").
-  auto o =
-      vs20("rcp r4, r0.x\nmov oT0, r4\nrcp r5, r0.y\nmov oT1, r5\n", bank({{0.0f, -0.0f, 0, 0}}));
+  auto o = op_of_two("rcp", 0.0f, -0.0f);
   EXPECT_EQ(o.tex[0][0], FLT_MAX);
   EXPECT_EQ(o.tex[1][3], FLT_MAX);
 }
 
 TEST(Numerics, RcpOfOneIsExact) {
   // rcp(1) = 1 exactly; rcp(4) = 0.25 (exact in binary).
-  auto o =
-      vs20("rcp r4, r0.x\nmov oT0, r4\nrcp r5, r0.y\nmov oT1, r5\n", bank({{1.0f, 4.0f, 0, 0}}));
+  auto o = op_of_two("rcp", 1.0f, 4.0f);
   EXPECT_EQ(o.tex[0][0], 1.0f);
   EXPECT_EQ(o.tex[1][0], 0.25f);
 }
@@ -30,8 +37,7 @@ TEST(Numerics, RcpOverflowClampsToFltMax) {
   float tiny = std::ldexp(1.0f, -140);
   tierlift::ir::Conventions exact;
   exact.rounding = tierlift::ir::Rounding::Exact;
-  auto o = vs("vs_2_0", "rcp r4, r0.x\nmov oT0, r4\nrcp r5, r0.y\nmov oT1, r5\n",
-              bank({{tiny, -tiny, 0, 0}}), exact);
+  auto o = op_of_two("rcp", tiny, -tiny, exact);
   EXPECT_EQ(o.tex[0][0], FLT_MAX);
   EXPECT_EQ(o.tex[1][0], -FLT_MAX);
   // rcp(2^127) = 2^-127, a denormal result, kept.
@@ -39,31 +45,27 @@ TEST(Numerics, RcpOverflowClampsToFltMax) {
 }
 
 TEST(Numerics, RsqOfZeroIsFltMax) {
-  auto o =
-      vs20("rsq r4, r0.x\nmov oT0, r4\nrsq r5, r0.y\nmov oT1, r5\n", bank({{0.0f, -0.0f, 0, 0}}));
+  auto o = op_of_two("rsq", 0.0f, -0.0f);
   EXPECT_EQ(o.tex[0][0], FLT_MAX);
   EXPECT_EQ(o.tex[1][0], FLT_MAX);
 }
 
 TEST(Numerics, RsqOfNegativeUsesAbs) {
   // rsq(-4) = 1/sqrt(4) = 0.5; rsq(-1) = 1 exactly (never NaN).
-  auto o =
-      vs20("rsq r4, r0.x\nmov oT0, r4\nrsq r5, r0.y\nmov oT1, r5\n", bank({{-4.0f, -1.0f, 0, 0}}));
+  auto o = op_of_two("rsq", -4.0f, -1.0f);
   EXPECT_EQ(o.tex[0][0], 0.5f);
   EXPECT_EQ(o.tex[1][0], 1.0f);
 }
 
 TEST(Numerics, LogOfZeroIsMinusFltMax) {
-  auto o =
-      vs20("log r4, r0.x\nmov oT0, r4\nlog r5, r0.y\nmov oT1, r5\n", bank({{0.0f, -0.0f, 0, 0}}));
+  auto o = op_of_two("log", 0.0f, -0.0f);
   EXPECT_EQ(o.tex[0][0], -FLT_MAX);
   EXPECT_EQ(o.tex[1][0], -FLT_MAX);
 }
 
 TEST(Numerics, LogOfNegativeUsesAbs) {
   // log2|-8| = 3; log2|-0.5| = -1.
-  auto o =
-      vs20("log r4, r0.x\nmov oT0, r4\nlog r5, r0.y\nmov oT1, r5\n", bank({{-8.0f, -0.5f, 0, 0}}));
+  auto o = op_of_two("log", -8.0f, -0.5f);
   EXPECT_EQ(o.tex[0][0], 3.0f);
   EXPECT_EQ(o.tex[1][0], -1.0f);
 }

@@ -58,13 +58,15 @@ protected:
     return ss.str();
   }
   // `tierlift glow -q --backend all` on the shipped scene listings/scenes/<scene>: images into
-  // dir/out, stdout and stderr into log; the exit status.
-  int glow_shipped_scene(const std::string& scene, const std::filesystem::path& log) const {
+  // dir/out, stdout and stderr into dir/log.txt (glow_log); the exit status.
+  int glow_shipped_scene(const std::string& scene) const {
     const std::filesystem::path file =
         std::filesystem::path(TIERLIFT_SOURCE_DIR) / "listings" / "scenes" / scene;
-    return run_cli(
-        "glow -q --backend all --scene " + file.string() + " -o " + (dir / "out").string(), log);
+    return run_cli("glow -q --backend all --scene " + file.string() + " -o " +
+                       (dir / "out").string(),
+                   dir / "log.txt");
   }
+  std::string glow_log() const { return read(dir / "log.txt"); }
   // `tierlift glow <flags>--scene dir/bad.json -o dir/out`, bad.json holding `json`: it must
   // exit 1 and write nothing. The log, for the caller's checks of the positioned error.
   std::string glow_refuses_scene(const std::string& json, const std::string& flags = "") const {

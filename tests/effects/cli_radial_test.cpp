@@ -3,23 +3,17 @@
 // 1, nothing written.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "cli_fixture.h"
 
 namespace {
 
-namespace fs = std::filesystem;
-
 class CliRadial : public tierlift::cli_test::CliFixture {};
 
 TEST_F(CliRadial, ShippedSceneThreeWaysWithinTargets) {
-  const fs::path log = dir / "log.txt";
-  ASSERT_EQ(glow_shipped_scene("radial-beams.json", log), 0) << read(log);
-  const std::string text = read(log);
+  ASSERT_EQ(glow_shipped_scene("radial-beams.json"), 0) << glow_log();
+  const std::string text = glow_log();
   EXPECT_NE(text.find("radial-beams dx9: 320x180"), std::string::npos) << text;
   EXPECT_NE(text.find("zoom.3"), std::string::npos) << text; // 32 copies, 8 a pass
   EXPECT_NE(text.find("every pair within design.md's targets"), std::string::npos) << text;

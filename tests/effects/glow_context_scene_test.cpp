@@ -19,13 +19,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-ir::Result<Scene> parse(const std::string& text) {
-  return parse_shipped(text);
-}
-
 TEST(GlowContextScene, FieldsAreRead) {
   ir::Result<Scene> s =
-      parse(R"({"glow": {"fog": {"start": 0.1, "end": 0.9, "color": [0.5, 0, 1]}}})");
+      parse_shipped(R"({"glow": {"fog": {"start": 0.1, "end": 0.9, "color": [0.5, 0, 1]}}})");
   ASSERT_TRUE(s) << s.message();
   const GlowFog& fog = s->params.context.fog;
   EXPECT_TRUE(fog.on);
@@ -35,7 +31,7 @@ TEST(GlowContextScene, FieldsAreRead) {
   EXPECT_EQ(fog.depth, nullptr); // the built-in floor
   EXPECT_EQ(s->params.context.glow_image, nullptr);
 
-  s = parse(R"({"image": "sign.png", "glow_image": "sign-glow.png",
+  s = parse_shipped(R"({"image": "sign.png", "glow_image": "sign-glow.png",
                 "glow": {"fog": {"start": 0, "end": 1, "depth": "sign-glow.png"}}})");
   ASSERT_TRUE(s) << s.message();
   ASSERT_NE(s->params.context.glow_image, nullptr);
@@ -52,7 +48,7 @@ class GlowContextSceneErrors : public ::testing::TestWithParam<Bad> {};
 
 TEST_P(GlowContextSceneErrors, NameTheFieldWithItsPosition) {
   const Bad& b = GetParam();
-  ir::Result<Scene> s = parse(b.text);
+  ir::Result<Scene> s = parse_shipped(b.text);
   expect_positioned_scene_error(s, b);
   EXPECT_FALSE(
       ir::failed_with(s, kSceneIoRule)); // a file the scene names is the scene's error: exit 1
@@ -98,7 +94,7 @@ class GlowContextShipped : public vulkan::test::VulkanTest,
 TEST_P(GlowContextShipped, EveryPairAgreesOnEveryPass) {
   const std::string file = GetParam().file;
   ir::Result<Scene> s =
-      file.starts_with("{") ? parse(file) : load_scene_file((kScenes / file).string());
+      file.starts_with("{") ? parse_shipped(file) : load_scene_file((kScenes / file).string());
   ASSERT_TRUE(s) << s.message();
   s->params.tier = GetParam().tier;
   const PlanResult plan_built = build_scene_effect(*s);

@@ -81,6 +81,17 @@ inline ::testing::AssertionResult is_clean(const std::string& text) {
   return ::testing::AssertionSuccess();
 }
 
+// Parses, and validation reports exactly `n` errors.
+inline ::testing::AssertionResult has_errors(const std::string& text, size_t n) {
+  Run r = run(text);
+  if (!r.parsed.program)
+    return ::testing::AssertionFailure() << "listing does not parse:\n" << dump(r);
+  if (r.diags.error_count() != n)
+    return ::testing::AssertionFailure() << r.diags.error_count() << " errors, not " << n << ":\n"
+                                         << dump(r);
+  return ::testing::AssertionSuccess();
+}
+
 // A case of the rule tables: `bad` breaks the rule (error `rule` at line:col mentioning
 // `mentions`), `good` is the nearest listing that keeps it (no error at all).
 struct RuleCase {
