@@ -15,6 +15,14 @@ VertexOutput op_of_two(const char* op, float a, float b, tierlift::ir::Conventio
   return vs("vs_2_0", o + " r4, r0.x\nmov oT0, r4\n" + o + " r5, r0.y\nmov oT1, r5\n",
             bank({{a, b, 0, 0}}), conv);
 }
+// c0 = `r`, and c[20 + k] = (k, 0, 0, 0) for k = -16..19: a relative read c[a0 + 20] shows
+// the address register's value k in .x.
+ConstantBank with_offsets(Vec4 r) {
+  ConstantBank c = bank({r});
+  c.f.resize(40);
+  for (int i = 4; i < 40; ++i) c.f[i] = {float(i - 20), 0, 0, 0};
+  return c;
+}
 } // namespace
 
 TEST(Numerics, RcpOfZeroIsFltMax) {
@@ -274,9 +282,7 @@ TEST(Numerics, LitEdgeCases) {
 
 TEST(Numerics, MovaRoundsHalfAwayFromZero) {
   // mova a0, (0.5, -0.5, 2.5, -1.49) → (1, -1, 3, -1); c[20 + k] holds k in .x.
-  ConstantBank c = bank({{0.5f, -0.5f, 2.5f, -1.49f}});
-  c.f.resize(40);
-  for (int i = 4; i < 40; ++i) c.f[i] = {float(i - 20), 0, 0, 0};
+  const ConstantBank c = with_offsets({0.5f, -0.5f, 2.5f, -1.49f});
   auto o = vs20("mova a0, r0\nmov oT0, c[a0.x + 20]\nmov oT1, c[a0.y + 20]\n"
                 "mov oT2, c[a0.z + 20]\nmov oT3, c[a0.w + 20]\n",
                 c);
@@ -288,9 +294,7 @@ TEST(Numerics, MovaRoundsHalfAwayFromZero) {
 
 TEST(Numerics, MovA0Floors) {
   // vs_1_1 mov a0.x floors: 1.7 → 1, -0.5 → -1, 2.5 → 2.
-  ConstantBank c = bank({{1.7f, -0.5f, 2.5f, 0}});
-  c.f.resize(40);
-  for (int i = 4; i < 40; ++i) c.f[i] = {float(i - 20), 0, 0, 0};
+  const ConstantBank c = with_offsets({1.7f, -0.5f, 2.5f, 0});
   auto o = vs11("mov a0.x, r0.x\nmov oT0, c[a0.x + 20]\nmov a0.x, r0.y\n"
                 "mov oT1, c[a0.x + 20]\nmov a0.x, r0.z\nmov oT2, c[a0.x + 20]\n",
                 c);
