@@ -2,6 +2,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "temp_dir.h"
 #include "test_util.h"
 
 namespace tierlift::as::test {
@@ -132,13 +133,7 @@ TEST(Preprocessor, ExponentialMacrosAreCutOff) {
 
 class PreprocessorInclude : public ::testing::Test {
 protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("tierlift_pp_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-            "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_ / "inc");
-  }
-  void TearDown() override { fs::remove_all(dir_); }
+  void SetUp() override { fs::create_directories(dir_ / "inc"); }
   void write(const fs::path& rel, const std::string& text) {
     std::ofstream(dir_ / rel, std::ios::binary) << text;
   }
@@ -147,7 +142,8 @@ protected:
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     return parse_text(text, (dir_ / rel).string(), opts);
   }
-  fs::path dir_;
+  tierlift::test::TempDir tmp_{"pp"};
+  const fs::path dir_ = tmp_.path();
 };
 
 TEST_F(PreprocessorInclude, RelativeToTheIncludingFileThenIncludeDirs) {
