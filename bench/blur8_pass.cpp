@@ -55,4 +55,24 @@ std::optional<cpu::Pass> blur8_pass() {
   return std::move(prepared).value();
 }
 
+void set_blur_rate(benchmark::State& state) {
+  state.SetItemsProcessed(int64_t(state.iterations()) * kBlurWidth * kBlurHeight);
+  state.counters["Mpix/s"] = benchmark::Counter(double(kBlurWidth) * kBlurHeight * 1e-6,
+                                                benchmark::Counter::kIsIterationInvariantRate);
+}
+
+void time_interpreter(benchmark::State& state, unsigned threads) {
+  auto pass = blur8_pass();
+  if (!pass) {
+    state.SkipWithError("could not build the pass");
+    return;
+  }
+  img::Image target(kBlurWidth, kBlurHeight, img::Format::RGBA8);
+  for (auto _ : state) {
+    auto stats = cpu::draw(*pass, target, threads);
+    benchmark::DoNotOptimize(stats);
+  }
+  set_blur_rate(state);
+}
+
 } // namespace tierlift::bench

@@ -25,31 +25,11 @@ constexpr uint32_t kW = bench::kBlurWidth, kH = bench::kBlurHeight;
 float offset(int k) {
   return bench::blur8_offset(k);
 }
-std::optional<cpu::Pass> blur_pass() {
-  return bench::blur8_pass();
-}
-
-void interpreter(benchmark::State& state, unsigned threads) {
-  auto pass = blur_pass();
-  if (!pass) {
-    state.SkipWithError("could not build the pass");
-    return;
-  }
-  img::Image target(kW, kH, img::Format::RGBA8);
-  for (auto _ : state) {
-    auto stats = cpu::draw(*pass, target, threads);
-    benchmark::DoNotOptimize(stats);
-  }
-  state.SetItemsProcessed(int64_t(state.iterations()) * kW * kH);
-  state.counters["Mpix/s"] =
-      benchmark::Counter(double(kW) * kH * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
-}
-
 void BM_Interpreter_Listing2_OneCore(benchmark::State& s) {
-  interpreter(s, 1);
+  bench::time_interpreter(s, 1);
 }
 void BM_Interpreter_Listing2_AllCores(benchmark::State& s) {
-  interpreter(s, 0);
+  bench::time_interpreter(s, 0);
 }
 
 // The peer: the same pass as straight-line C++ (D3D9 centres: u = x/W + offset).
@@ -83,9 +63,7 @@ void BM_Peer_PlainLoop(benchmark::State& state) {
     }
     benchmark::DoNotOptimize(target.rgba.data());
   }
-  state.SetItemsProcessed(int64_t(state.iterations()) * kW * kH);
-  state.counters["Mpix/s"] =
-      benchmark::Counter(double(kW) * kH * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+  bench::set_blur_rate(state);
 }
 
 BENCHMARK(BM_Interpreter_Listing2_OneCore)->Unit(benchmark::kMillisecond)->UseRealTime();

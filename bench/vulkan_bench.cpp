@@ -31,12 +31,6 @@ std::optional<cpu::Pass> blur_pass() {
   return bench::blur8_pass();
 }
 
-void set_rate(benchmark::State& state) {
-  state.SetItemsProcessed(int64_t(state.iterations()) * kW * kH);
-  state.counters["Mpix/s"] =
-      benchmark::Counter(double(kW) * kH * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
-}
-
 void BM_Vulkan_Listing2(benchmark::State& state) {
   auto pass = blur_pass();
   if (!pass) {
@@ -62,7 +56,7 @@ void BM_Vulkan_Listing2(benchmark::State& state) {
     draw_ms += r->draw_ms;
     benchmark::DoNotOptimize(target.rgba.data());
   }
-  set_rate(state);
+  bench::set_blur_rate(state);
   state.counters["setup_ms"] = benchmark::Counter(setup_ms, benchmark::Counter::kAvgIterations);
   state.counters["draw_ms"] = benchmark::Counter(draw_ms, benchmark::Counter::kAvgIterations);
   state.SetLabel(dev->name());
@@ -71,17 +65,7 @@ void BM_Vulkan_Listing2(benchmark::State& state) {
 // The CPU interpreter on the same pass, every core (cpu::draw threads = 0), measured in this
 // run so the ratio compares like with like.
 void BM_Vulkan_PeerInterpreter_Listing2_AllCores(benchmark::State& state) {
-  auto pass = blur_pass();
-  if (!pass) {
-    state.SkipWithError("could not build the pass");
-    return;
-  }
-  img::Image target(kW, kH, img::Format::RGBA8);
-  for (auto _ : state) {
-    auto stats = cpu::draw(*pass, target, 0);
-    benchmark::DoNotOptimize(stats);
-  }
-  set_rate(state);
+  bench::time_interpreter(state, 0);
 }
 
 BENCHMARK(BM_Vulkan_Listing2)->Unit(benchmark::kMillisecond)->UseRealTime();

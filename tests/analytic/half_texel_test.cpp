@@ -9,6 +9,7 @@
 #include <cmath>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include "corner_model.h"
@@ -134,14 +135,37 @@ std::vector<analytic::Tap> taps_of(const Blur& b, const PassSetup& s) {
   return t->taps;
 }
 
+// The analytic model's blur of `noise` by `taps` lies within `tolerance` of `want`.
+void expect_model_near(const std::vector<analytic::Tap>& taps, const img::Image& noise,
+                       const img::Image& want, double tolerance) {
+  auto model = analytic::blur_pass(taps, noise, clamp_linear_model());
+  ASSERT_TRUE(model) << model.message();
+  EXPECT_LE(max_abs_difference(*model, want), tolerance);
+}
+
+// Blur b drawn by the CPU device over `noise` (with or without the half texel), and its taps
+// as extracted from the listings; nothing (a failure recorded) when the draw failed.
+struct Drawn {
+  img::Image device;
+  std::vector<analytic::Tap> taps;
+};
+std::optional<Drawn> draw_blur(const Blur& b, const img::Image& noise, bool half_texel) {
+  PassSetup s = make_setup(b, noise, half_texel);
+  std::string error;
+  img::Image device = run_cpu(b, s, error);
+  if (!error.empty()) {
+    ADD_FAILURE() << error;
+    return std::nullopt;
+  }
+  return Drawn{std::move(device), taps_of(b, s)};
+}
+
 void check_with_half_texel(const Blur& b, uint32_t width = 64, uint32_t height = 32,
                            double tolerance = kTolerance) {
   img::Image noise = img::builtin_noise(width, height, 2026);
-  PassSetup s = make_setup(b, noise, true);
-  std::string error;
-  img::Image device = run_cpu(b, s, error);
-  ASSERT_TRUE(error.empty()) << error;
-  auto taps = taps_of(b, s);
+  const std::optional<Drawn> drawn = draw_blur(b, noise, true);
+  ASSERT_TRUE(drawn);
+  const auto& [device, taps] = *drawn;
   auto texel = tierlift::test::intended_texel_taps(taps, noise.width, noise.height);
   for (size_t k = 0; k < texel.size(); ++k) { // the taps are the ones meant
     EXPECT_EQ(b.vertical ? texel[k].dy : texel[k].dx, b.taps[k]);
@@ -150,25 +174,19 @@ void check_with_half_texel(const Blur& b, uint32_t width = 64, uint32_t height =
   auto conv = tierlift::test::discrete_convolution(texel, noise, clamp_linear_model());
   ASSERT_TRUE(conv) << conv.message();
   EXPECT_LE(max_abs_difference(device, *conv), tolerance);
-  auto model = analytic::blur_pass(taps, noise, clamp_linear_model());
-  ASSERT_TRUE(model) << model.message();
-  EXPECT_LE(max_abs_difference(*model, *conv), tolerance);
+  expect_model_near(taps, noise, *conv, tolerance);
 }
 
 void check_without_half_texel(const Blur& b, uint32_t width = 64, uint32_t height = 32,
                               double tolerance = kTolerance) {
   img::Image noise = img::builtin_noise(width, height, 7);
-  PassSetup s = make_setup(b, noise, false);
-  std::string error;
-  img::Image device = run_cpu(b, s, error);
-  ASSERT_TRUE(error.empty()) << error;
-  auto taps = taps_of(b, s);
+  const std::optional<Drawn> drawn = draw_blur(b, noise, false);
+  ASSERT_TRUE(drawn);
+  const auto& [device, taps] = *drawn;
   auto corner = tierlift::test::corner_model(taps, noise, clamp_linear_model());
   ASSERT_TRUE(corner) << corner.message();
   EXPECT_LE(max_abs_difference(device, *corner), tolerance);
-  auto model = analytic::blur_pass(taps, noise, clamp_linear_model());
-  ASSERT_TRUE(model) << model.message();
-  EXPECT_LE(max_abs_difference(device, *model), tolerance);
+  expect_model_near(taps, noise, device, tolerance);
 
   // The device differs from the plain convolution by exactly the predicted amount …
   auto plain = tierlift::test::discrete_convolution(

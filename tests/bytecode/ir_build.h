@@ -49,8 +49,12 @@ struct Builder {
     i.src = src;
     i.mods = mods;
     i.coissue = coissue;
-    i.seq = seq++;
-    p.code.push_back(i);
+    return numbered(p.code, i);
+  }
+  // Every statement is numbered in call order, as the parser numbers them.
+  template <class Statement> Builder& numbered(std::vector<Statement>& to, Statement s) {
+    s.seq = seq++;
+    to.push_back(s);
     return *this;
   }
   Builder& dcl_input(uint32_t v, DeclUsage usage, uint8_t usage_index = 0,
@@ -59,34 +63,26 @@ struct Builder {
     d.reg = D(RegFile::Input, v, mask);
     d.usage = usage;
     d.usage_index = usage_index;
-    d.seq = seq++;
-    p.decls.push_back(d);
-    return *this;
+    return numbered(p.decls, d);
   }
   Builder& dcl_ps(RegFile f, uint32_t index, uint8_t mask = kFullMask, InstrMods mods = {}) {
     Declaration d;
     d.reg = D(f, index, mask);
     d.mods = mods;
-    d.seq = seq++;
-    p.decls.push_back(d);
-    return *this;
+    return numbered(p.decls, d);
   }
   Builder& dcl_sampler(uint32_t s, SamplerType type) {
     Declaration d;
     d.reg = D(RegFile::Sampler, s);
     d.sampler_type = type;
-    d.seq = seq++;
-    p.decls.push_back(d);
-    return *this;
+    return numbered(p.decls, d);
   }
   Builder& def(RegFile f, uint32_t index, std::array<uint32_t, 4> raw) {
     ConstDef c;
     c.file = f;
     c.index = index;
     c.raw = raw;
-    c.seq = seq++;
-    p.defs.push_back(c);
-    return *this;
+    return numbered(p.defs, c);
   }
   Builder& deff(uint32_t index, float a, float b, float c, float d) {
     return def(RegFile::Const, index,

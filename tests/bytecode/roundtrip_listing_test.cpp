@@ -80,6 +80,12 @@ TEST(BytecodeRoundTrip, SharedCorpus) {
   for (const auto& f : files) round_trip(f);
 }
 
+// listings/gpugems21/<name> round-tripped: the tokens `want`, then the end token 0x0000FFFF.
+void expect_article_tokens(const std::string& name, Tokens want) {
+  want.push_back(0x0000FFFF);
+  EXPECT_EQ(round_trip(fs::path(TIERLIFT_SOURCE_DIR) / "listings/gpugems21" / name), want) << name;
+}
+
 TEST(BytecodeRoundTrip, Listing1MatchesHandTokens) {
   // vs_2_0; dcl_position v0, dcl_normal v1, dcl_color v2, dcl_texcoord v3 → usage tokens
   // 0x80000000 | usage (position 0, normal 3, color 10, texcoord 5), dst 0x900F000n.
@@ -89,10 +95,7 @@ TEST(BytecodeRoundTrip, Listing1MatchesHandTokens) {
   append(want, {0x02000001, 0xC00F0000, 0x90E40000}); // mov oPos, v0
   for (uint32_t n = 0; n < 8; ++n) // add oTn, v3, cn: oT type 6, v type 1, c type 2
     append(want, {0x03000002, 0xE00F0000 | n, 0x90E40003, 0xA0E40000 | n});
-  want.push_back(0x0000FFFF);
-  auto got =
-      round_trip(fs::path(TIERLIFT_SOURCE_DIR) / "listings/gpugems21/listing1_blur8_coords.vsh");
-  EXPECT_EQ(got, want);
+  expect_article_tokens("listing1_blur8_coords.vsh", want);
 }
 
 TEST(BytecodeRoundTrip, Listing2MatchesHandTokens) {
@@ -118,10 +121,7 @@ TEST(BytecodeRoundTrip, Listing2MatchesHandTokens) {
     mad(2, k + 1);
   }
   append(want, {0x02000001, 0x800F0800, 0x80E40000}); // mov oC0, r0
-  want.push_back(0x0000FFFF);
-  auto got = round_trip(fs::path(TIERLIFT_SOURCE_DIR) /
-                        "listings/gpugems21/listing2_blur8_weighted_sum.psh");
-  EXPECT_EQ(got, want);
+  expect_article_tokens("listing2_blur8_weighted_sum.psh", want);
 }
 
 TEST(BytecodeRoundTrip, Listing3MatchesHandTokens) {
@@ -129,10 +129,7 @@ TEST(BytecodeRoundTrip, Listing3MatchesHandTokens) {
                  0x80000005, 0x900F0003, 0x00000001, 0xC00F0000, 0x90E40000};
   for (uint32_t n = 0; n < 4; ++n) // SM1: no length field
     append(want, {0x00000002, 0xE00F0000 | n, 0x90E40003, 0xA0E40000 | n});
-  want.push_back(0x0000FFFF);
-  auto got =
-      round_trip(fs::path(TIERLIFT_SOURCE_DIR) / "listings/gpugems21/listing3_blur4_coords.vsh");
-  EXPECT_EQ(got, want);
+  expect_article_tokens("listing3_blur4_coords.vsh", want);
 }
 
 TEST(BytecodeRoundTrip, Listing4MatchesHandTokens) {
@@ -142,10 +139,7 @@ TEST(BytecodeRoundTrip, Listing4MatchesHandTokens) {
   append(want, {0x00000005, 0x800F0000, 0xB0E40000, 0xA0E40000}); // mul r0, t0, c0
   for (uint32_t n = 1; n < 4; ++n)                                // mad r0, tN, cN, r0
     append(want, {0x00000004, 0x800F0000, 0xB0E40000 | n, 0xA0E40000 | n, 0x80E40000});
-  want.push_back(0x0000FFFF);
-  auto got = round_trip(fs::path(TIERLIFT_SOURCE_DIR) /
-                        "listings/gpugems21/listing4_blur4_weighted_sum.psh");
-  EXPECT_EQ(got, want);
+  expect_article_tokens("listing4_blur4_weighted_sum.psh", want);
 }
 
 TEST(BytecodeRoundTrip, ParsedInstructionsMatchHandTokens) {

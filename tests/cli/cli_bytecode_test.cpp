@@ -41,14 +41,17 @@ bool no_vulkan(const tierlift::test::CliResult& r) {
                               r.out.find("mesa-vulkan-drivers") != std::string::npos);
 }
 
+// Listing 4 assembled into the token stream `pso`; the assembler's exit status.
+int assemble_listing4(const fs::path& pso) {
+  return run_cli("assemble " + listing("listing4_blur4_weighted_sum.psh") + " -o " + pso.string())
+      .exit_code;
+}
+
 } // namespace
 
 TEST(CliBytecode, CheckFmtAndSpirvTakeTokenStreams) {
   auto pso = scratch("l4.pso");
-  ASSERT_EQ(
-      run_cli("assemble " + listing("listing4_blur4_weighted_sum.psh") + " -o " + pso.string())
-          .exit_code,
-      0);
+  ASSERT_EQ(assemble_listing4(pso), 0);
   auto check = run_cli("check " + pso.string());
   EXPECT_EQ(check.exit_code, 0) << check.err;
   EXPECT_NE(check.out.find("ok (ps_1_3"), std::string::npos) << check.out;
@@ -88,10 +91,7 @@ TEST(CliBytecode, BinaryWhereTextWasExpectedIsOneLine) {
 // `run --ps x.pso` and `--ps x.psh`: bit-identical images, on each device.
 TEST(CliBytecode, RunDrawsTheSameImageFromTokensAndText) {
   auto pso = scratch("l4run.pso");
-  ASSERT_EQ(
-      run_cli("assemble " + listing("listing4_blur4_weighted_sum.psh") + " -o " + pso.string())
-          .exit_code,
-      0);
+  ASSERT_EQ(assemble_listing4(pso), 0);
   std::string common = " --size 32x32 --format rgba32f --filter linear --address clamp";
   for (int k = 0; k < 4; ++k) {
     common += " --const ps:c" + std::to_string(k) + "=0.25,0.25,0.25,0.25";

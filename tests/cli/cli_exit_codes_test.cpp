@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_test_util.h"
+#include "temp_dir.h"
 
 using tierlift::test::listing;
 using tierlift::test::read_all;
@@ -26,39 +27,16 @@ constexpr const char* kValidPs = "ps_2_0\ndef c0, 0.25, 0.5, 0.75, 1\nmov oC0, c
 constexpr const char* kInvalidPs = "ps_2_0\nmov oC0, r9\n"; // r9 was never written
 
 // A fresh folder per test, removed afterwards.
-struct Scratch {
-  fs::path dir;
-  Scratch() {
-    dir = fs::temp_directory_path() /
-          ("tierlift_exit_" + std::to_string(::getpid()) + "_" +
-           ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-  }
-  ~Scratch() {
-    std::error_code ec;
-    fs::permissions(dir, fs::perms::owner_all, fs::perm_options::add, ec);
-    fs::remove_all(dir, ec);
-  }
-  std::string file(const std::string& name, const std::string& text) const {
-    std::ofstream(dir / name, std::ios::binary) << text;
-    return (dir / name).string();
-  }
-  std::string path(const std::string& name) const { return (dir / name).string(); }
-  std::vector<std::string> names() const {
-    std::vector<std::string> out;
-    for (const auto& e : fs::directory_iterator(dir)) out.push_back(e.path().filename().string());
-    std::sort(out.begin(), out.end());
-    return out;
-  }
+struct Scratch : tierlift::test::TempDir {
+  Scratch() : TempDir("exit") {}
 };
 
 // A folder nothing can be created in, even by root (who ignores permission bits).
 std::string unwritable_folder(const Scratch& s) {
   if (::geteuid() == 0) return "/proc/self";
-  fs::create_directories(s.dir / "ro");
-  fs::permissions(s.dir / "ro", fs::perms::owner_read | fs::perms::owner_exec);
-  return s.path("ro");
+  fs::create_directories(s.path() / "ro");
+  fs::permissions(s.path() / "ro", fs::perms::owner_read | fs::perms::owner_exec);
+  return s.file("ro");
 }
 
 } // namespace
@@ -80,8 +58,8 @@ TEST(ExitCodes, Check) {
   Scratch s;
   EXPECT_EQ(run_cli("check " + s.file("ok.psh", kValidPs)).exit_code, 0);
   EXPECT_EQ(run_cli("check " + s.file("bad.psh", kInvalidPs)).exit_code, 1);
-  EXPECT_EQ(run_cli("check " + s.path("missing.psh")).exit_code, 2);
-  EXPECT_EQ(run_cli("check " + s.dir.string()).exit_code, 2);
+  EXPECT_EQ(run_cli("check " + s.file("missing.psh")).exit_code, 2);
+  EXPECT_EQ(run_cli("check " + s.path().string()).exit_code, 2);
 }
 
 TEST(ExitCodes, CheckRefusesDevZeroNamingTheCap) {
@@ -100,14 +78,14 @@ TEST(ExitCodes, ByteOrderMarkIsAccepted) {
 TEST(ExitCodes, FmtAndItsOutput) {
   Scratch s;
   const std::string in = s.file("a.psh", kValidPs);
-  auto ok = run_cli("fmt " + in + " -o " + s.path("out.psh"));
+  auto ok = run_cli("fmt " + in + " -o " + s.file("out.psh"));
   EXPECT_EQ(ok.exit_code, 0) << ok.err;
   EXPECT_TRUE(ok.out.empty());
   auto dash = run_cli("fmt " + in + " -o -");
   EXPECT_EQ(dash.exit_code, 0);
-  EXPECT_EQ(dash.out, read_all(s.path("out.psh")));
+  EXPECT_EQ(dash.out, read_all(s.file("out.psh")));
   EXPECT_EQ(run_cli("fmt " + s.file("bad.psh", kInvalidPs)).exit_code, 1);
-  EXPECT_EQ(run_cli("fmt " + s.path("missing.psh")).exit_code, 2);
+  EXPECT_EQ(run_cli("fmt " + s.file("missing.psh")).exit_code, 2);
   // The output is the input: refused, the file untouched.
   auto same = run_cli("fmt " + in + " -o " + in);
   EXPECT_EQ(same.exit_code, 2);
@@ -122,8 +100,8 @@ TEST(ExitCodes, AssembleNeverOverwritesItsInput) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(read_all(in), kValidPs);
   // Another name for the same file (a hard link) is the same file.
-  fs::create_hard_link(in, s.path("alias.psh"));
-  EXPECT_EQ(run_cli("assemble " + in + " -o " + s.path("alias.psh")).exit_code, 2);
+  fs::create_hard_link(in, s.file("alias.psh"));
+  EXPECT_EQ(run_cli("assemble " + in + " -o " + s.file("alias.psh")).exit_code, 2);
   EXPECT_EQ(read_all(in), kValidPs);
   EXPECT_EQ(s.names(), (std::vector<std::string>{"alias.psh", "x.psh"}));
 }
@@ -136,7 +114,7 @@ TEST(ExitCodes, AssembleToStandardOutput) {
   ASSERT_GE(r.out.size(), 4u);
   EXPECT_EQ(r.out.substr(0, 4), std::string("\x00\x02\xFF\xFF", 4));
   EXPECT_EQ(s.names(), std::vector<std::string>{"a.psh"}) << "no file named '-'";
-  EXPECT_EQ(run_cli("assemble " + s.path("a.psh") + " -o - --json").exit_code, 2);
+  EXPECT_EQ(run_cli("assemble " + s.file("a.psh") + " -o - --json").exit_code, 2);
 }
 
 TEST(ExitCodes, AssembleIntoAnUnwritableOrMissingFolderLeavesNothing) {
@@ -149,36 +127,36 @@ TEST(ExitCodes, AssembleIntoAnUnwritableOrMissingFolderLeavesNothing) {
   if (::geteuid() != 0) {
     EXPECT_TRUE(fs::is_empty(ro)) << "a temporary file was left";
   }
-  auto m = run_cli("assemble " + in + " -o " + s.path("no/such/out.bin"));
+  auto m = run_cli("assemble " + in + " -o " + s.file("no/such/out.bin"));
   EXPECT_EQ(m.exit_code, 2);
-  EXPECT_FALSE(fs::exists(s.path("no")));
+  EXPECT_FALSE(fs::exists(s.file("no")));
 }
 
 TEST(ExitCodes, AssembleIncludeDirTakesOneValue) {
   Scratch s;
-  fs::create_directories(s.dir / "inc");
-  std::ofstream(s.dir / "inc" / "colour.h") << "def c0, 1, 0, 0, 1\n";
+  fs::create_directories(s.path() / "inc");
+  std::ofstream(s.path() / "inc" / "colour.h") << "def c0, 1, 0, 0, 1\n";
   const std::string in = s.file("a.psh", "ps_2_0\n#include \"colour.h\"\nmov oC0, c0\n");
-  auto r = run_cli("assemble -I " + s.path("inc") + " " + in + " -o " + s.path("a.bin"));
+  auto r = run_cli("assemble -I " + s.file("inc") + " " + in + " -o " + s.file("a.bin"));
   EXPECT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_TRUE(fs::exists(s.path("a.bin")));
-  auto d = run_cli("check -D FOO -D BAR=2 " + in + " -I " + s.path("inc"));
+  EXPECT_TRUE(fs::exists(s.file("a.bin")));
+  auto d = run_cli("check -D FOO -D BAR=2 " + in + " -I " + s.file("inc"));
   EXPECT_EQ(d.exit_code, 0) << d.err;
 }
 
 TEST(ExitCodes, Disasm) {
   Scratch s;
-  ASSERT_EQ(run_cli("assemble " + s.file("a.psh", kValidPs) + " -o " + s.path("a.bin")).exit_code,
+  ASSERT_EQ(run_cli("assemble " + s.file("a.psh", kValidPs) + " -o " + s.file("a.bin")).exit_code,
             0);
-  auto ok = run_cli("disasm " + s.path("a.bin") + " -o " + s.path("a.txt"));
+  auto ok = run_cli("disasm " + s.file("a.bin") + " -o " + s.file("a.txt"));
   EXPECT_EQ(ok.exit_code, 0) << ok.err;
-  EXPECT_EQ(read_all(s.path("a.txt")).rfind("ps_2_0", 0), 0u);
+  EXPECT_EQ(read_all(s.file("a.txt")).rfind("ps_2_0", 0), 0u);
   EXPECT_EQ(run_cli("disasm " + s.file("junk.bin", std::string("\x01\x02\x03\x04", 4))).exit_code,
             1);
-  EXPECT_EQ(run_cli("disasm " + s.path("missing.bin")).exit_code, 2);
-  const std::string bin = read_all(s.path("a.bin"));
-  EXPECT_EQ(run_cli("disasm " + s.path("a.bin") + " -o " + s.path("a.bin")).exit_code, 2);
-  EXPECT_EQ(read_all(s.path("a.bin")), bin);
+  EXPECT_EQ(run_cli("disasm " + s.file("missing.bin")).exit_code, 2);
+  const std::string bin = read_all(s.file("a.bin"));
+  EXPECT_EQ(run_cli("disasm " + s.file("a.bin") + " -o " + s.file("a.bin")).exit_code, 2);
+  EXPECT_EQ(read_all(s.file("a.bin")), bin);
   auto zero = run_cli("disasm /dev/zero");
   EXPECT_EQ(zero.exit_code, 2);
   EXPECT_NE(zero.err.find("too large for a token file"), std::string::npos) << zero.err;
@@ -189,7 +167,7 @@ TEST(ExitCodes, Spirv) {
   const std::string in = s.file("a.psh", kValidPs);
   EXPECT_EQ(run_cli("spirv " + in).exit_code, 0);
   EXPECT_EQ(run_cli("spirv " + s.file("bad.psh", kInvalidPs)).exit_code, 1);
-  EXPECT_EQ(run_cli("spirv " + s.path("missing.psh")).exit_code, 2);
+  EXPECT_EQ(run_cli("spirv " + s.file("missing.psh")).exit_code, 2);
   EXPECT_EQ(run_cli("spirv " + in + " -o " + in).exit_code, 2);
   EXPECT_EQ(read_all(in), kValidPs);
   auto dash = run_cli("spirv " + in + " -o -");
@@ -204,18 +182,18 @@ TEST(ExitCodes, Run) {
   auto ok = run_cli("run --ps " + ps + " --size 4x2 --probe 0,0");
   EXPECT_EQ(ok.exit_code, 0) << ok.err;
   EXPECT_EQ(run_cli("run --ps " + s.file("bad.psh", kInvalidPs) + " --size 4x2").exit_code, 1);
-  EXPECT_EQ(run_cli("run --ps " + s.path("missing.psh")).exit_code, 2);
-  EXPECT_EQ(run_cli("run --ps " + ps + " --texture s0=" + s.path("missing.png")).exit_code, 2);
+  EXPECT_EQ(run_cli("run --ps " + s.file("missing.psh")).exit_code, 2);
+  EXPECT_EQ(run_cli("run --ps " + ps + " --texture s0=" + s.file("missing.png")).exit_code, 2);
   EXPECT_EQ(run_cli("run --ps " + ps + " --size 4x2 -o " + ps).exit_code, 2);
   EXPECT_EQ(read_all(ps), kValidPs);
   // --texture inputs are inputs too.
-  ASSERT_EQ(run_cli("run --ps " + ps + " --size 4x2 -o " + s.path("t.png")).exit_code, 0);
-  const std::string png = read_all(s.path("t.png"));
-  EXPECT_EQ(run_cli("run --ps " + ps + " --size 4x2 --texture s0=" + s.path("t.png") + " -o " +
-                    s.path("t.png"))
+  ASSERT_EQ(run_cli("run --ps " + ps + " --size 4x2 -o " + s.file("t.png")).exit_code, 0);
+  const std::string png = read_all(s.file("t.png"));
+  EXPECT_EQ(run_cli("run --ps " + ps + " --size 4x2 --texture s0=" + s.file("t.png") + " -o " +
+                    s.file("t.png"))
                 .exit_code,
             2);
-  EXPECT_EQ(read_all(s.path("t.png")), png);
+  EXPECT_EQ(read_all(s.file("t.png")), png);
   auto dash = run_cli("run --ps " + ps + " --size 4x2 -o -");
   ASSERT_EQ(dash.exit_code, 0) << dash.err;
   EXPECT_EQ(dash.out, png);
@@ -257,9 +235,9 @@ TEST(ExitCodes, Glow) {
   EXPECT_EQ(ok.exit_code, 0) << ok.err;
   EXPECT_EQ(
       run_cli("glow --backend cpu -q --scene " + s.file("bad.json", "{\"size\": 3}")).exit_code, 1);
-  EXPECT_EQ(run_cli("glow --backend cpu -q --scene " + s.path("missing.json")).exit_code, 2);
-  EXPECT_EQ(run_cli("glow --backend cpu -q --image " + s.path("missing.png")).exit_code, 2);
-  EXPECT_EQ(run_cli("glow --backend cpu -q --scene " + s.dir.string()).exit_code, 2);
+  EXPECT_EQ(run_cli("glow --backend cpu -q --scene " + s.file("missing.json")).exit_code, 2);
+  EXPECT_EQ(run_cli("glow --backend cpu -q --image " + s.file("missing.png")).exit_code, 2);
+  EXPECT_EQ(run_cli("glow --backend cpu -q --scene " + s.path().string()).exit_code, 2);
   EXPECT_EQ(run_cli("glow --backend cpu -q --scene " + scene + " -o -").exit_code, 2);
   auto zero = run_cli("glow --backend cpu -q --scene /dev/zero");
   EXPECT_EQ(zero.exit_code, 2);
@@ -268,7 +246,7 @@ TEST(ExitCodes, Glow) {
 
 TEST(ExitCodes, JsonIsOneDocumentOnStandardOutput) {
   Scratch s;
-  auto bad = run_cli("check --json " + s.file("bad.psh", kInvalidPs) + " " + s.path("none.psh"));
+  auto bad = run_cli("check --json " + s.file("bad.psh", kInvalidPs) + " " + s.file("none.psh"));
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_TRUE(bad.err.empty()) << bad.err;
   auto j = nlohmann::json::parse(bad.out);
@@ -286,7 +264,7 @@ TEST(ExitCodes, JsonIsOneDocumentOnStandardOutput) {
   EXPECT_EQ(r["command"], "run");
   EXPECT_TRUE(r["diagnostics"].empty());
   EXPECT_EQ(r["result"]["probes"][0]["x"], 1);
-  auto fmt = run_cli("fmt --json " + s.path("a.psh"));
+  auto fmt = run_cli("fmt --json " + s.file("a.psh"));
   ASSERT_EQ(fmt.exit_code, 0);
   EXPECT_EQ(nlohmann::json::parse(fmt.out)["result"]["text"].get<std::string>().rfind("ps_2_0", 0),
             0u);

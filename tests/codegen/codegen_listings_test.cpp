@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include "compile_valid.h"
 #include "skip_policy.h"
 #include "tierlift/asm/parser.h"
 #include "tierlift/codegen/codegen.h"
@@ -24,11 +25,8 @@ void compile_listing(const fs::path& path) {
   SCOPED_TRACE(path.string());
   auto parsed = as::parse_text(read_file(path), path.filename().string());
   ASSERT_TRUE(parsed.program) << ir::render_text(parsed.diags, parsed.sources);
-  ir::DiagnosticSink diags;
-  auto module = codegen::compile(*parsed.program, {}, diags);
-  ASSERT_TRUE(module) << ir::render_text(diags, parsed.sources);
-  const ir::Status valid = codegen::validate(module->words);
-  EXPECT_TRUE(valid) << valid.message();
+  auto module = tierlift::test::compile_valid(*parsed.program, parsed.sources);
+  ASSERT_TRUE(module);
   EXPECT_EQ(module->stage, parsed.program->stage());
   EXPECT_EQ(module->words[0], 0x07230203u);
   // The optimised module must validate as well.

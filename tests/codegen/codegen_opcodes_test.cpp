@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "compile_valid.h"
 #include "tierlift/asm/parser.h"
 #include "tierlift/codegen/codegen.h"
 #include "tierlift/ir/opcodes.h"
@@ -33,6 +34,27 @@ std::string flow_body(Opcode op) {
     return "mov r4, v0\ncallnz l1, !b0\nmov oPos, r4\nret\nlabel l1\nmov r4, c1\nret\n";
   default: return {};
   }
+}
+
+// ", src, ..." for the row's sources: vectors r0, r1, r2 in turn (a scalar is its .x), the
+// matrix c4, constants c5 (second source) or c6. Temp sources are r2, r3 in turn with
+// `temps_apart` (the vertex listings) and take the next vector otherwise.
+std::string sources(const ir::OpInfo& info, bool temps_apart) {
+  const char* vec[] = {"r0", "r1", "r2"};
+  const char* temps[] = {"r2", "r3"};
+  int v = 0, t = 0;
+  std::string s;
+  for (int i = 0; i < info.num_src; ++i) {
+    s += ", ";
+    switch (info.src[i]) {
+    case OperandKind::Scalar: s += std::string(vec[v++ % 3]) + ".x"; break;
+    case OperandKind::Matrix: s += "c4"; break;
+    case OperandKind::Const: s += i == 1 ? "c5" : "c6"; break;
+    case OperandKind::Temp: s += temps_apart ? temps[t++ % 2] : vec[v++ % 3]; break;
+    default: s += vec[v++ % 3]; break;
+    }
+  }
+  return s;
 }
 
 // Vertex profiles: every row writes r4 from r0..r3, then oPos and oT0 read r4.
@@ -70,21 +92,7 @@ std::string vertex_listing(const ir::OpInfo& info, Profile p) {
   } else if (info.op == Opcode::Nop) {
     s += "nop\nmov r4, r0\n";
   } else {
-    s += "mov r4, c0\n" + ins + " r4" + mask;
-    const char* vec[] = {"r0", "r1", "r2"};
-    const char* temps[] = {"r2", "r3"};
-    int v = 0, t = 0;
-    for (int i = 0; i < info.num_src; ++i) {
-      s += ", ";
-      switch (info.src[i]) {
-      case OperandKind::Scalar: s += std::string(vec[v++ % 3]) + ".x"; break;
-      case OperandKind::Matrix: s += "c4"; break;
-      case OperandKind::Const: s += i == 1 ? "c5" : "c6"; break;
-      case OperandKind::Temp: s += temps[t++ % 2]; break;
-      default: s += vec[v++ % 3]; break;
-      }
-    }
-    s += "\n";
+    s += "mov r4, c0\n" + ins + " r4" + mask + sources(info, true) + "\n";
   }
   return s + "mov oPos, r4\nmov oT0, r4\n";
 }
@@ -104,19 +112,7 @@ std::string ps20_listing(const ir::OpInfo& info) {
     std::string mask;
     if (info.op == Opcode::M3x2 || info.op == Opcode::SinCos) mask = ".xy";
     if (info.op == Opcode::M3x3 || info.op == Opcode::M4x3 || info.op == Opcode::Crs) mask = ".xyz";
-    s += "mov r4, c0\n" + ins + " r4" + mask;
-    const char* vec[] = {"r0", "r1", "r2"};
-    int v = 0;
-    for (int i = 0; i < info.num_src; ++i) {
-      s += ", ";
-      switch (info.src[i]) {
-      case OperandKind::Scalar: s += std::string(vec[v++ % 3]) + ".x"; break;
-      case OperandKind::Matrix: s += "c4"; break;
-      case OperandKind::Const: s += i == 1 ? "c5" : "c6"; break;
-      default: s += vec[v++ % 3]; break;
-      }
-    }
-    s += "\n";
+    s += "mov r4, c0\n" + ins + " r4" + mask + sources(info, false) + "\n";
   }
   }
   return s + "mov oC0, r4\n";
@@ -195,11 +191,7 @@ void expect_compiles(const std::string& text) {
   SCOPED_TRACE(text);
   auto parsed = as::parse_text(text, "<generated>");
   ASSERT_TRUE(parsed.program) << ir::render_text(parsed.diags, parsed.sources);
-  ir::DiagnosticSink diags;
-  auto module = codegen::compile(*parsed.program, {}, diags);
-  ASSERT_TRUE(module) << ir::render_text(diags, parsed.sources);
-  const ir::Status valid = codegen::validate(module->words);
-  EXPECT_TRUE(valid) << valid.message();
+  tierlift::test::compile_valid(*parsed.program, parsed.sources);
 }
 
 } // namespace

@@ -48,6 +48,18 @@ std::set<uint32_t> locations(const std::vector<uint32_t>& words, uint32_t storag
   return out;
 }
 
+// Listings vs_name and ps_name of listings/gpugems21 compiled as one pipeline.
+std::optional<codegen::CompiledPair> link(const std::string& vs_name, const std::string& ps_name,
+                                          ir::DiagnosticSink& diags) {
+  return codegen::compile_pair(load(vs_name), load(ps_name), {}, diags);
+}
+
+int dead_instructions(const codegen::CompiledPair& pair) {
+  int dead = 0;
+  for (const auto& p : pair.pruned) dead += p.kind == codegen::PrunedItem::Kind::DeadInstruction;
+  return dead;
+}
+
 bool pruned(const codegen::CompiledPair& pair, codegen::PrunedItem::Kind kind,
             const std::string& what) {
   for (const auto& p : pair.pruned)
@@ -58,10 +70,8 @@ bool pruned(const codegen::CompiledPair& pair, codegen::PrunedItem::Kind kind,
 } // namespace
 
 TEST(CodegenPruning, Listing1AgainstListing4DropsOT4ToOT7) {
-  const ir::Program vs = load("listing1_blur8_coords.vsh");
-  const ir::Program ps = load("listing4_blur4_weighted_sum.psh");
   ir::DiagnosticSink diags;
-  auto pair = codegen::compile_pair(vs, ps, {}, diags);
+  auto pair = link("listing1_blur8_coords.vsh", "listing4_blur4_weighted_sum.psh", diags);
   ASSERT_TRUE(pair);
   EXPECT_EQ(locations(pair->vs.words, 3), (std::set<uint32_t>{0, 1, 2, 3}));
   EXPECT_EQ(locations(pair->ps.words, 1), (std::set<uint32_t>{0, 1, 2, 3}));
@@ -72,9 +82,7 @@ TEST(CodegenPruning, Listing1AgainstListing4DropsOT4ToOT7) {
   }
   for (int n = 0; n < 4; ++n)
     EXPECT_FALSE(pruned(*pair, K::VertexOutput, "oT" + std::to_string(n)));
-  int dead = 0;
-  for (const auto& p : pair->pruned) dead += p.kind == K::DeadInstruction;
-  EXPECT_EQ(dead, 4); // add oT4..oT7
+  EXPECT_EQ(dead_instructions(*pair), 4); // add oT4..oT7
   // Listing 1 declares v1 (normal) and v2 (color) and never reads them.
   EXPECT_TRUE(pruned(*pair, K::VertexInput, "v1"));
   EXPECT_TRUE(pruned(*pair, K::VertexInput, "v2"));
@@ -95,10 +103,8 @@ TEST(CodegenPruning, Listing1AgainstListing4DropsOT4ToOT7) {
 }
 
 TEST(CodegenPruning, Listing1AgainstListing2RemovesNothing) {
-  const ir::Program vs = load("listing1_blur8_coords.vsh");
-  const ir::Program ps = load("listing2_blur8_weighted_sum.psh");
   ir::DiagnosticSink diags;
-  auto pair = codegen::compile_pair(vs, ps, {}, diags);
+  auto pair = link("listing1_blur8_coords.vsh", "listing2_blur8_weighted_sum.psh", diags);
   ASSERT_TRUE(pair);
   EXPECT_EQ(locations(pair->vs.words, 3), (std::set<uint32_t>{0, 1, 2, 3, 4, 5, 6, 7}));
   for (const auto& p : pair->pruned) {
@@ -113,10 +119,8 @@ TEST(CodegenPruning, Listing1AgainstListing2RemovesNothing) {
 TEST(CodegenPruning, MissingVertexOutputIsDeclaredAndWarned) {
   // Listing 3 writes oT0..oT3; Listing 2 reads t0..t7: t4..t7 must still exist on the
   // vertex side (reading zero) so the pipeline interface matches, with a warning.
-  const ir::Program vs = load("listing3_blur4_coords.vsh");
-  const ir::Program ps = load("listing2_blur8_weighted_sum.psh");
   ir::DiagnosticSink diags;
-  auto pair = codegen::compile_pair(vs, ps, {}, diags);
+  auto pair = link("listing3_blur4_coords.vsh", "listing2_blur8_weighted_sum.psh", diags);
   ASSERT_TRUE(pair);
   EXPECT_EQ(locations(pair->vs.words, 3), (std::set<uint32_t>{0, 1, 2, 3, 4, 5, 6, 7}));
   EXPECT_EQ(diags.warning_count(), 4u);
@@ -168,9 +172,7 @@ TEST(CodegenPruning, PartialWritesKeepEarlierComponents) {
   auto pair = codegen::compile_pair(*vs, *ps, {}, diags);
   ASSERT_TRUE(pair);
   using K = codegen::PrunedItem::Kind;
-  int dead = 0;
-  for (const auto& p : pair->pruned) dead += p.kind == K::DeadInstruction;
-  EXPECT_EQ(dead, 1);
+  EXPECT_EQ(dead_instructions(*pair), 1);
   EXPECT_TRUE(pruned(*pair, K::DeadInstruction, "mov r1"));
   EXPECT_TRUE(pruned(*pair, K::Constant, "c2"));
   // The pixel shader reads v0, so the vertex side declares oD0 at location 8.
@@ -178,10 +180,8 @@ TEST(CodegenPruning, PartialWritesKeepEarlierComponents) {
 }
 
 TEST(CodegenPruning, ExplainNamesEveryItem) {
-  const ir::Program vs = load("listing1_blur8_coords.vsh");
-  const ir::Program ps = load("listing4_blur4_weighted_sum.psh");
   ir::DiagnosticSink diags;
-  auto pair = codegen::compile_pair(vs, ps, {}, diags);
+  auto pair = link("listing1_blur8_coords.vsh", "listing4_blur4_weighted_sum.psh", diags);
   ASSERT_TRUE(pair);
   const std::string text = codegen::explain(pair->pruned);
   EXPECT_NE(text.find("vertex: removed output oT7: the pixel shader never reads t7"),

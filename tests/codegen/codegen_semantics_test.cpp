@@ -6,6 +6,7 @@
 #include <regex>
 #include <set>
 #include <string>
+#include <string_view>
 
 #include "tierlift/asm/parser.h"
 #include "tierlift/codegen/codegen.h"
@@ -32,6 +33,12 @@ std::string dis(const codegen::ShaderModule& m) {
   return text ? *text : std::string();
 }
 
+// The disassembly of `text` built with `opt`; empty (failures recorded) when it was refused.
+std::string disassembly(const std::string& text, const codegen::CodegenOptions& opt = {}) {
+  auto m = build(text, opt);
+  return m ? dis(*m) : std::string();
+}
+
 // Result ids of every instruction with the given opcode name, e.g. "OpFMul".
 std::set<std::string> results_of(const std::string& text, const std::string& op) {
   std::set<std::string> ids;
@@ -42,14 +49,21 @@ std::set<std::string> results_of(const std::string& text, const std::string& op)
   return ids;
 }
 
+// Every one of `parts` occurs in the disassembly `text` (contains) or none does (lacks).
+void expect_contains(const std::string& text, std::initializer_list<std::string_view> parts) {
+  for (std::string_view part : parts) EXPECT_NE(text.find(part), std::string::npos) << part;
+}
+void expect_lacks(const std::string& text, std::initializer_list<std::string_view> parts) {
+  for (std::string_view part : parts) EXPECT_EQ(text.find(part), std::string::npos) << part;
+}
+
 const char* kMadPs20 = "ps_2_0\ndcl t0\ndcl t1\nmad r0, t0, t1, c0\nmov oC0, r0\n";
 
 } // namespace
 
 TEST(CodegenSemantics, EveryFloatAddAndMulIsNoContraction) {
-  auto m = build(kMadPs20);
-  ASSERT_TRUE(m);
-  const std::string text = dis(*m);
+  const std::string text = disassembly(kMadPs20);
+  ASSERT_FALSE(text.empty());
   int checked = 0;
   for (const char* op : {"OpFMul", "OpFAdd", "OpFSub", "OpFDiv"})
     for (const std::string& id : results_of(text, op)) {
@@ -64,9 +78,8 @@ TEST(CodegenSemantics, EveryFloatAddAndMulIsNoContraction) {
 }
 
 TEST(CodegenSemantics, MadMultiplyHonoursZeroTimesAnything) {
-  auto m = build(kMadPs20);
-  ASSERT_TRUE(m);
-  const std::string text = dis(*m);
+  const std::string text = disassembly(kMadPs20);
+  ASSERT_FALSE(text.empty());
   // legacy_mul: both factors compared with 0 (ordered), or'ed, then a select.
   EXPECT_GE(results_of(text, "OpFOrdEqual").size(), 2u);
   EXPECT_FALSE(results_of(text, "OpLogicalOr").empty());
@@ -74,13 +87,11 @@ TEST(CodegenSemantics, MadMultiplyHonoursZeroTimesAnything) {
 }
 
 TEST(CodegenSemantics, MinMaxUseOrderedSelectsNotFMinFMax) {
-  auto m = build("vs_2_0\ndcl_position v0\ndcl_normal v1\nmin r0, v0, v1\nmax r1, v0, v1\n"
-                 "add oPos, r0, r1\n");
-  ASSERT_TRUE(m);
-  const std::string text = dis(*m);
-  EXPECT_EQ(text.find("FMin"), std::string::npos);
-  EXPECT_EQ(text.find("FMax"), std::string::npos);
-  EXPECT_EQ(text.find("NMin"), std::string::npos);
+  const std::string text =
+      disassembly("vs_2_0\ndcl_position v0\ndcl_normal v1\nmin r0, v0, v1\nmax r1, v0, v1\n"
+                  "add oPos, r0, r1\n");
+  ASSERT_FALSE(text.empty());
+  expect_lacks(text, {"FMin", "FMax", "NMin"});
   EXPECT_FALSE(results_of(text, "OpFOrdLessThan").empty());
   EXPECT_FALSE(results_of(text, "OpFOrdGreaterThanEqual").empty());
   EXPECT_EQ(text.find("OpFUnord"), std::string::npos);
@@ -88,13 +99,11 @@ TEST(CodegenSemantics, MinMaxUseOrderedSelectsNotFMinFMax) {
 
 TEST(CodegenSemantics, NoDotFractOrFmaAnywhere) {
   // dp4, frc and nrm must be explicit sums / x − floor(x) (NUMERICS.md 15, 22).
-  auto m = build("vs_2_0\ndcl_position v0\ndp4 r0.x, v0, c0\nfrc r1, v0\nnrm r2, v0\n"
-                 "m4x4 r3, v0, c4\nadd r0, r0.x, r1\nadd r0, r0, r2\nadd oPos, r0, r3\n");
-  ASSERT_TRUE(m);
-  const std::string text = dis(*m);
-  EXPECT_EQ(text.find("OpDot"), std::string::npos);
-  EXPECT_EQ(text.find("Fract"), std::string::npos);
-  EXPECT_EQ(text.find("Fma"), std::string::npos);
+  const std::string text =
+      disassembly("vs_2_0\ndcl_position v0\ndp4 r0.x, v0, c0\nfrc r1, v0\nnrm r2, v0\n"
+                  "m4x4 r3, v0, c4\nadd r0, r0.x, r1\nadd r0, r0, r2\nadd oPos, r0, r3\n");
+  ASSERT_FALSE(text.empty());
+  expect_lacks(text, {"OpDot", "Fract", "Fma"});
   EXPECT_NE(text.find("Floor"), std::string::npos);
 }
 
@@ -109,33 +118,28 @@ TEST(CodegenSemantics, TexkillIsOpKillOrDemote) {
   auto demote = build(ps, opt);
   ASSERT_TRUE(demote);
   const std::string text = dis(*demote);
-  EXPECT_NE(text.find("OpDemoteToHelperInvocation"), std::string::npos);
-  EXPECT_NE(text.find("SPV_EXT_demote_to_helper_invocation"), std::string::npos);
+  expect_contains(text, {"OpDemoteToHelperInvocation", "SPV_EXT_demote_to_helper_invocation"});
   EXPECT_EQ(text.find("OpKill"), std::string::npos);
 }
 
 TEST(CodegenSemantics, PositionFixUpIsSpecializable) {
   codegen::CodegenOptions opt;
   opt.pixel_offset_x = 0.25f; // 1/width of a 4-pixel-wide target
-  auto m = build("vs_1_1\ndcl_position v0\nmov oPos, v0\n", opt);
-  ASSERT_TRUE(m);
-  const std::string text = dis(*m);
-  EXPECT_NE(text.find("OpDecorate %flip_y SpecId 0"), std::string::npos);
-  EXPECT_NE(text.find("OpDecorate %pixel_offset_x SpecId 1"), std::string::npos);
-  EXPECT_NE(text.find("OpDecorate %pixel_offset_y SpecId 2"), std::string::npos);
-  EXPECT_NE(text.find("%flip_y = OpSpecConstant %float -1"), std::string::npos);
-  EXPECT_NE(text.find("%pixel_offset_x = OpSpecConstant %float 0.25"), std::string::npos);
-  EXPECT_NE(text.find("BuiltIn Position"), std::string::npos);
+  const std::string text = disassembly("vs_1_1\ndcl_position v0\nmov oPos, v0\n", opt);
+  ASSERT_FALSE(text.empty());
+  expect_contains(text,
+                  {"OpDecorate %flip_y SpecId 0", "OpDecorate %pixel_offset_x SpecId 1",
+                   "OpDecorate %pixel_offset_y SpecId 2", "%flip_y = OpSpecConstant %float -1",
+                   "%pixel_offset_x = OpSpecConstant %float 0.25", "BuiltIn Position"});
 }
 
 TEST(CodegenSemantics, Ps1xMaxValueIsASpecConstantWithTheConventionDefault) {
   codegen::CodegenOptions opt;
   opt.conventions.ps1x_max_value = 8.0f;
-  auto m = build("ps_1_4\ntexld r0, t0\nmul_x4 r0, r0, c0\n", opt);
-  ASSERT_TRUE(m);
-  const std::string text = dis(*m);
-  EXPECT_NE(text.find("OpDecorate %ps1x_max_value SpecId 3"), std::string::npos);
-  EXPECT_NE(text.find("%ps1x_max_value = OpSpecConstant %float 8"), std::string::npos);
+  const std::string text = disassembly("ps_1_4\ntexld r0, t0\nmul_x4 r0, r0, c0\n", opt);
+  ASSERT_FALSE(text.empty());
+  expect_contains(
+      text, {"OpDecorate %ps1x_max_value SpecId 3", "%ps1x_max_value = OpSpecConstant %float 8"});
 }
 
 TEST(CodegenSemantics, FixedPointEmulationValidates) {
@@ -147,9 +151,9 @@ TEST(CodegenSemantics, FixedPointEmulationValidates) {
 }
 
 TEST(CodegenSemantics, CoissuedHalvesReadBeforeEitherWrites) {
-  auto m = build("ps_1_1\ntex t0\nmov r0, t0\nmul r0.rgb, r0, v0\n+add r0.a, r0, v1\n");
-  ASSERT_TRUE(m);
-  const std::string text = dis(*m);
+  const std::string text =
+      disassembly("ps_1_1\ntex t0\nmov r0, t0\nmul r0.rgb, r0, v0\n+add r0.a, r0, v1\n");
+  ASSERT_FALSE(text.empty());
   const size_t fn = text.find("%d3d_main = OpFunction");
   ASSERT_NE(fn, std::string::npos);
   // After `mov r0, t0` (first store to r0), both halves load r0 before the next store.
@@ -201,18 +205,16 @@ TEST(CodegenSemantics, Vs20IntAndBoolMembersFollowTheFloats) {
   EXPECT_EQ(m->uniforms.int_offset, 64u);
   EXPECT_EQ(m->uniforms.bool_offset, 64u + 256u);
   const std::string text = dis(*m);
-  EXPECT_NE(text.find("OpLoopMerge"), std::string::npos);
-  EXPECT_NE(text.find("OpSelectionMerge"), std::string::npos);
+  expect_contains(text, {"OpLoopMerge", "OpSelectionMerge"});
 }
 
 TEST(CodegenSemantics, SubroutinesBecomeFunctions) {
-  auto m = build("vs_2_0\ndcl_position v0\ndefb b0, true\nmov r0, v0\ncall l1\n"
-                 "callnz l2, !b0\nmov oPos, r0\nret\nlabel l1\nadd r0, r0, c0\nret\n"
-                 "label l2\nmul r0, r0, c1\nret\n");
-  ASSERT_TRUE(m);
-  const std::string text = dis(*m);
-  EXPECT_NE(text.find("%l1 = OpFunction"), std::string::npos);
-  EXPECT_NE(text.find("%l2 = OpFunction"), std::string::npos);
+  const std::string text =
+      disassembly("vs_2_0\ndcl_position v0\ndefb b0, true\nmov r0, v0\ncall l1\n"
+                  "callnz l2, !b0\nmov oPos, r0\nret\nlabel l1\nadd r0, r0, c0\nret\n"
+                  "label l2\nmul r0, r0, c1\nret\n");
+  ASSERT_FALSE(text.empty());
+  expect_contains(text, {"%l1 = OpFunction", "%l2 = OpFunction"});
   EXPECT_EQ(results_of(text, "OpFunctionCall").size(), 3u); // main → d3d_main, l1, l2
 }
 

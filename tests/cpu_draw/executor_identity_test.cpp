@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "draw_helpers.h"
+#include "program_helpers.h"
 #include "tierlift/asm/parser.h"
 #include "tierlift/asm/validator.h"
 #include "tierlift/cpu/draw.h"
@@ -19,18 +20,7 @@
 namespace tierlift::cpu {
 namespace {
 
-std::shared_ptr<const ir::Program> listing(const std::string& path) {
-  std::ifstream in(std::string(TIERLIFT_SOURCE_DIR) + "/listings/" + path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  auto r = as::parse_text(ss.str(), path);
-  if (!r.program) {
-    ADD_FAILURE() << path << ": " << ir::render_text(r.diags, r.sources);
-    return nullptr;
-  }
-  EXPECT_TRUE(as::validate(*r.program, r.diags)) << ir::render_text(r.diags, r.sources);
-  return std::make_shared<const ir::Program>(*r.program);
-}
+using test::listing_file;
 
 std::shared_ptr<const img::Image> random_image(uint32_t w, uint32_t h, std::mt19937& rng, float lo,
                                                float hi) {
@@ -128,8 +118,8 @@ TEST(ExecutorIdentity, GlowAndArticlePassesInEveryMode) {
                                    AddressMode::Border, AddressMode::MirrorOnce};
   int run = 0;
   for (const PassCase& pc : kCases) {
-    auto vs = listing(pc.vs);
-    auto ps = listing(pc.ps);
+    auto vs = listing_file(pc.vs);
+    auto ps = listing_file(pc.ps);
     ASSERT_TRUE(vs && ps);
     for (int m = 0; m < 6; ++m) {
       ++run;
@@ -234,8 +224,8 @@ TEST(ExecutorIdentity, DenormalTexelsConstantsAndAttributes) {
   std::mt19937 rng(13);
   int run = 0;
   for (const PassCase& pc : kCases) {
-    auto vs = listing(pc.vs);
-    auto ps = listing(pc.ps);
+    auto vs = listing_file(pc.vs);
+    auto ps = listing_file(pc.ps);
     ASSERT_TRUE(vs && ps);
     for (int m : {0, 1, 4}) {
       ++run;

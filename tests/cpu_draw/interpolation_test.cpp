@@ -31,26 +31,24 @@ Pass uv_quad(ir::PixelCenter centre) {
   return p;
 }
 
-TEST(PixelCentres, D3D9QuadInterpolatesTexelCorners) {
+// uv_quad on a 7×5 target: pixel (x, y) interpolates uv ((x + at)/W, (y + at)/H).
+void expect_quad_uv(ir::PixelCenter centre, double at) {
   const uint32_t W = 7, H = 5;
   img::Image im(W, H, img::Format::RGBA32F);
-  ASSERT_TRUE(draw(uv_quad(ir::PixelCenter::D3D9), im, 1).ok());
+  ASSERT_TRUE(draw(uv_quad(centre), im, 1).ok());
   for (uint32_t y = 0; y < H; ++y)
     for (uint32_t x = 0; x < W; ++x) {
-      EXPECT_NEAR(im.at(x, y)[0], static_cast<double>(x) / W, 1e-6) << x << "," << y;
-      EXPECT_NEAR(im.at(x, y)[1], static_cast<double>(y) / H, 1e-6) << x << "," << y;
+      EXPECT_NEAR(im.at(x, y)[0], (x + at) / W, 1e-6) << x << "," << y;
+      EXPECT_NEAR(im.at(x, y)[1], (y + at) / H, 1e-6) << x << "," << y;
     }
 }
 
+TEST(PixelCentres, D3D9QuadInterpolatesTexelCorners) {
+  expect_quad_uv(ir::PixelCenter::D3D9, 0); // u = x/W: the texel corners
+}
+
 TEST(PixelCentres, ModernQuadInterpolatesTexelCentres) {
-  const uint32_t W = 7, H = 5;
-  img::Image im(W, H, img::Format::RGBA32F);
-  ASSERT_TRUE(draw(uv_quad(ir::PixelCenter::Modern), im, 1).ok());
-  for (uint32_t y = 0; y < H; ++y)
-    for (uint32_t x = 0; x < W; ++x) {
-      EXPECT_NEAR(im.at(x, y)[0], (x + 0.5) / W, 1e-6) << x << "," << y;
-      EXPECT_NEAR(im.at(x, y)[1], (y + 0.5) / H, 1e-6) << x << "," << y;
-    }
+  expect_quad_uv(ir::PixelCenter::Modern, 0.5); // u = (x + ½)/W: the texel centres
 }
 
 // Screen triangle A(0,0) w=1, B(8,0) w=4, C(0,8) w=1 with u = (0,1,0), v = (0,0,1).

@@ -4,6 +4,7 @@
 // written out by hand.
 #include <gtest/gtest.h>
 
+#include "program_helpers.h"
 #include "tierlift/asm/parser.h"
 #include "tierlift/cpu/draw.h"
 #include "tierlift/pass/pass.h"
@@ -12,9 +13,7 @@ namespace tierlift::pass {
 namespace {
 
 std::shared_ptr<const ir::Program> vertex(const std::string& text) {
-  auto r = as::parse_text(text, "<test>");
-  EXPECT_TRUE(r.program) << ir::render_text(r.diags, r.sources);
-  return r.program ? std::make_shared<const ir::Program>(*r.program) : nullptr;
+  return cpu::test::parsed(text);
 }
 
 TEST(PassState, PositionIsTheInputDeclaredPositionWithUsageIndexZero) {

@@ -3,6 +3,8 @@
 // blending of 1.0 on RGBA32F, so a pixel's value is the number of times it was drawn.
 #include <gtest/gtest.h>
 
+#include <numeric>
+
 #include "draw_helpers.h"
 
 namespace tierlift::cpu {
@@ -23,6 +25,22 @@ void expect_all(const img::Image& im, int n) {
   for (uint32_t y = 0; y < im.height; ++y)
     for (uint32_t x = 0; x < im.width; ++x)
       ASSERT_EQ(im.at(x, y)[0], static_cast<float>(n)) << "pixel " << x << "," << y;
+}
+
+// The triangles drawn white with ONE/ONE on a w×h target: each pixel holds its draw count.
+img::Image draw_counting(std::vector<VertexOutput> tris, uint32_t w, uint32_t h) {
+  img::Image im(w, h, img::Format::RGBA32F);
+  ir::Result<DrawStats> s =
+      draw(flat_pass(std::move(tris), {1, 1, 1, 1}, BlendMode::OneOne), im, 1);
+  EXPECT_TRUE(s.ok()) << s.message();
+  return im;
+}
+
+// Each pixel drawn once where inside(x, y) holds, and nowhere else.
+template <class Inside> void expect_once_where(const img::Image& im, Inside inside) {
+  for (uint32_t y = 0; y < im.height; ++y)
+    for (uint32_t x = 0; x < im.width; ++x)
+      EXPECT_EQ(im.at(x, y)[0], inside(x, y) ? 1.0f : 0.0f) << x << "," << y;
 }
 
 class QuadCoverage : public ::testing::TestWithParam<std::tuple<int, int, ir::PixelCenter>> {};
@@ -73,13 +91,9 @@ TEST(TopLeftRule, SharedDiagonalOfTheQuadDrawsOnce) {
 TEST(TopLeftRule, DiagonalThroughPixelCentres) {
   const uint32_t W = 8, H = 8;
   auto sv = [&](double x, double y) { return screen_vertex(x, y, W, H); };
-  Pass p = flat_pass({sv(0, 0), sv(4, 0), sv(4, 4), sv(0, 0), sv(4, 4), sv(0, 4)}, {1, 1, 1, 1},
-                     BlendMode::OneOne);
-  img::Image im(W, H, img::Format::RGBA32F);
-  ASSERT_TRUE(draw(p, im, 1).ok());
-  for (uint32_t y = 0; y < H; ++y)
-    for (uint32_t x = 0; x < W; ++x)
-      EXPECT_EQ(im.at(x, y)[0], (x < 4 && y < 4) ? 1.0f : 0.0f) << x << "," << y;
+  const img::Image im =
+      draw_counting({sv(0, 0), sv(4, 0), sv(4, 4), sv(0, 0), sv(4, 4), sv(0, 4)}, W, H);
+  expect_once_where(im, [](uint32_t x, uint32_t y) { return x < 4 && y < 4; });
 }
 
 // Four triangles fanned around the pixel centre (2,2): every pixel of [0,4)² exactly once,
@@ -88,14 +102,10 @@ TEST(TopLeftRule, FanAroundAPixelCentre) {
   const uint32_t W = 6, H = 6;
   auto sv = [&](double x, double y) { return screen_vertex(x, y, W, H); };
   VertexOutput c = sv(2, 2);
-  Pass p = flat_pass(
+  const img::Image im = draw_counting(
       {c, sv(0, 0), sv(4, 0), c, sv(4, 0), sv(4, 4), c, sv(4, 4), sv(0, 4), c, sv(0, 4), sv(0, 0)},
-      {1, 1, 1, 1}, BlendMode::OneOne);
-  img::Image im(W, H, img::Format::RGBA32F);
-  ASSERT_TRUE(draw(p, im, 1).ok());
-  for (uint32_t y = 0; y < H; ++y)
-    for (uint32_t x = 0; x < W; ++x)
-      EXPECT_EQ(im.at(x, y)[0], (x < 4 && y < 4) ? 1.0f : 0.0f) << x << "," << y;
+      W, H);
+  expect_once_where(im, [](uint32_t x, uint32_t y) { return x < 4 && y < 4; });
 }
 
 // Right triangle (0,0), (4,0), (0,4): the hypotenuse x + y = 4 runs through the centres
@@ -104,17 +114,12 @@ TEST(TopLeftRule, HypotenuseThroughCentresIsExcluded) {
   const uint32_t W = 6, H = 6;
   auto sv = [&](double x, double y) { return screen_vertex(x, y, W, H); };
   for (bool flip : {false, true}) { // both windings give the same pixels
-    Pass p = flip ? flat_pass({sv(0, 0), sv(0, 4), sv(4, 0)}, {1, 1, 1, 1}, BlendMode::OneOne)
-                  : flat_pass({sv(0, 0), sv(4, 0), sv(0, 4)}, {1, 1, 1, 1}, BlendMode::OneOne);
-    img::Image im(W, H, img::Format::RGBA32F);
-    ASSERT_TRUE(draw(p, im, 1).ok());
-    int total = 0;
-    for (uint32_t y = 0; y < H; ++y)
-      for (uint32_t x = 0; x < W; ++x) {
-        EXPECT_EQ(im.at(x, y)[0], (x + y < 4) ? 1.0f : 0.0f) << x << "," << y;
-        total += static_cast<int>(im.at(x, y)[0]);
-      }
-    EXPECT_EQ(total, 10);
+    SCOPED_TRACE(flip ? "flipped" : "as written");
+    const img::Image im = flip ? draw_counting({sv(0, 0), sv(0, 4), sv(4, 0)}, W, H)
+                               : draw_counting({sv(0, 0), sv(4, 0), sv(0, 4)}, W, H);
+    expect_once_where(im, [](uint32_t x, uint32_t y) { return x + y < 4; });
+    const std::vector<int> n = counts(im);
+    EXPECT_EQ(std::accumulate(n.begin(), n.end(), 0), 10);
   }
 }
 
@@ -123,10 +128,8 @@ TEST(TopLeftRule, HypotenuseThroughCentresIsExcluded) {
 TEST(TopLeftRule, ComplementaryTrianglesTile) {
   const uint32_t W = 6, H = 6;
   auto sv = [&](double x, double y) { return screen_vertex(x, y, W, H); };
-  Pass p = flat_pass({sv(0, 0), sv(4, 0), sv(0, 4), sv(4, 0), sv(4, 4), sv(0, 4)}, {1, 1, 1, 1},
-                     BlendMode::OneOne);
-  img::Image im(W, H, img::Format::RGBA32F);
-  ASSERT_TRUE(draw(p, im, 1).ok());
+  const img::Image im =
+      draw_counting({sv(0, 0), sv(4, 0), sv(0, 4), sv(4, 0), sv(4, 4), sv(0, 4)}, W, H);
   std::vector<int> got = counts(im), want;
   for (uint32_t y = 0; y < H; ++y)
     for (uint32_t x = 0; x < W; ++x) want.push_back(x < 4 && y < 4 ? 1 : 0);

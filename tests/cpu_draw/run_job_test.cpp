@@ -14,6 +14,7 @@
 
 #include <fmt/format.h>
 
+#include "program_helpers.h"
 #include "run_flags.h"
 #include "tierlift/asm/parser.h"
 #include "tierlift/asm/validator.h"
@@ -41,16 +42,7 @@ using namespace tierlift::cli; // the flag parsers
 constexpr uint32_t N = 16;
 
 std::shared_ptr<const ir::Program> listing(const std::string& name) {
-  std::ifstream in(std::string(TIERLIFT_SOURCE_DIR) + "/listings/gpugems21/" + name);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  auto r = as::parse_text(ss.str(), name);
-  if (!r.program) {
-    ADD_FAILURE() << name << ": " << ir::render_text(r.diags, r.sources);
-    return nullptr;
-  }
-  EXPECT_TRUE(as::validate(*r.program, r.diags)) << ir::render_text(r.diags, r.sources);
-  return std::make_shared<const ir::Program>(*r.program);
+  return test::listing_file("gpugems21/" + name);
 }
 
 ConstSetting cst(std::string_view text) {
@@ -85,6 +77,13 @@ double texel(int t) {
   return (std::clamp(t, 0, int(N) - 1) + 0.5) / N;
 }
 
+// The blur's value at pixel i: the mean over the taps k of read(i + k).
+double tap_mean(int taps, int i, const std::function<double(int)>& read) {
+  double s = 0;
+  for (int k = 0; k < taps; ++k) s += read(i + k);
+  return s / taps;
+}
+
 void expect_rows(const img::Image& im, const std::function<double(int)>& want, double tol) {
   for (uint32_t y = 0; y < im.height; ++y)
     for (uint32_t x = 0; x < im.width; ++x) {
@@ -101,13 +100,7 @@ TEST(RunJob, Listings3And4HalfTexelHitCentres) {
   ASSERT_TRUE(out.ok()) << ir::render_text(d.other, {});
   EXPECT_EQ(d.vs.error_count() + d.ps.error_count() + d.other.warning_count(), 0u);
   expect_rows(
-      out->image,
-      [](int i) {
-        double s = 0;
-        for (int k = 0; k < 4; ++k) s += texel(i + k);
-        return s / 4;
-      },
-      1e-6);
+      out->image, [](int i) { return tap_mean(4, i, texel); }, 1e-6);
   // Spot values: pixel 0 = (0.5+1.5+2.5+3.5)/64 = 0.125; pixel 15 = 15.5/16.
   EXPECT_NEAR(out->image.at(0, 0)[0], 0.125, 1e-7);
   EXPECT_NEAR(out->image.at(15, 3)[0], 0.96875, 1e-7);
@@ -121,11 +114,7 @@ TEST(RunJob, Listings3And4WithoutOffsetHitCorners) {
   ASSERT_TRUE(out.ok());
   expect_rows(
       out->image,
-      [](int i) {
-        double s = 0;
-        for (int k = 0; k < 4; ++k) s += (texel(i + k - 1) + texel(i + k)) / 2;
-        return s / 4;
-      },
+      [](int i) { return tap_mean(4, i, [](int j) { return (texel(j - 1) + texel(j)) / 2; }); },
       1e-6);
   EXPECT_NEAR(out->image.at(0, 0)[0], (1.0 / 32 + 1.0 / 16 + 2.0 / 16 + 3.0 / 16) / 4, 1e-7);
 }
@@ -140,11 +129,7 @@ TEST(RunJob, ModernCentresShiftTheTaps) {
   ASSERT_TRUE(out.ok());
   expect_rows(
       out->image,
-      [](int i) {
-        double s = 0;
-        for (int k = 0; k < 4; ++k) s += (texel(i + k) + texel(i + k + 1)) / 2;
-        return s / 4;
-      },
+      [](int i) { return tap_mean(4, i, [](int j) { return (texel(j) + texel(j + 1)) / 2; }); },
       1e-6);
 }
 
@@ -154,13 +139,7 @@ TEST(RunJob, Listings1And2EightTaps) {
   ir::Result<RunResult> out = run_job(blur_request(8, 0.5, 0.5, img::Format::RGBA32F), d);
   ASSERT_TRUE(out.ok());
   expect_rows(
-      out->image,
-      [](int i) {
-        double s = 0;
-        for (int k = 0; k < 8; ++k) s += texel(i + k);
-        return s / 8;
-      },
-      1e-6);
+      out->image, [](int i) { return tap_mean(8, i, texel); }, 1e-6);
 }
 
 // RGBA8: every stored value is k/255 within half an LSB of the exact result.
@@ -300,11 +279,7 @@ TEST(RunJob, PixelListingAloneOverAnInMemoryTexture) {
 }
 
 std::shared_ptr<const ir::Program> program_text(const std::string& text) {
-  auto r = as::parse_text(text, "<test>");
-  EXPECT_TRUE(r.program) << ir::render_text(r.diags, r.sources);
-  if (!r.program) return nullptr;
-  EXPECT_TRUE(as::validate(*r.program, r.diags)) << ir::render_text(r.diags, r.sources);
-  return std::make_shared<const ir::Program>(*r.program);
+  return test::parsed(text, "<test>", true);
 }
 
 // The fragile case of §9.2: a D3D9 quad with u = 0..1 and no offset puts pixel i exactly on

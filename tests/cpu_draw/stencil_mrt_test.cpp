@@ -3,6 +3,7 @@
 // (docs/d3d9-rules.md, "Stencil"), and a ps_2_0 pass writing oC0 and oC1 into two targets.
 #include <gtest/gtest.h>
 
+#include "program_helpers.h"
 #include "tierlift/asm/parser.h"
 #include "tierlift/asm/validator.h"
 #include "tierlift/cpu/draw.h"
@@ -12,11 +13,7 @@
 namespace tierlift::pass {
 namespace {
 
-std::shared_ptr<const ir::Program> listing(const std::string& text) {
-  auto r = as::parse_text(text, "<test>");
-  EXPECT_TRUE(r.program) << ir::render_text(r.diags, r.sources);
-  return r.program ? std::make_shared<const ir::Program>(*r.program) : nullptr;
-}
+using cpu::test::parsed;
 
 TEST(Stencil, OperationsMatchTheHandTable) {
   DepthStencilState s;
@@ -72,20 +69,25 @@ TEST(Stencil, TestPutsTheReferenceOnTheLeft) {
 
 Pass mrt_pass() {
   Pass p;
-  p.vertex_program = listing("vs_2_0\ndcl_position v0\nmov oPos, v0\n");
-  p.pixel_program = listing("ps_2_0\nmov oC0, c0\nmov oC1, c1\n");
+  p.vertex_program = parsed("vs_2_0\ndcl_position v0\nmov oPos, v0\n");
+  p.pixel_program = parsed("ps_2_0\nmov oC0, c0\nmov oC1, c1\n");
   set_full_screen_quad(p, 0);
   p.ps_constants.f = {Vec4{0.25f, 0.5f, 0.75f, 1}, Vec4{1, 0, 0.5f, 0.125f}};
   return p;
 }
 
-TEST(Mrt, EachTargetReceivesItsOwnOutput) {
+// mrt_pass drawn into the two colour targets t0 and t1.
+ir::Result<cpu::DrawStats> draw_two(img::Image& t0, img::Image& t1) {
   Pass p = mrt_pass();
   p.color_targets = 2;
-  img::Image t0(4, 3), t1(4, 3);
   cpu::DrawTargets targets;
   targets.color = {&t0, &t1, nullptr, nullptr};
-  ir::Result<cpu::DrawStats> s = cpu::draw(p, targets, 1);
+  return cpu::draw(p, targets, 1);
+}
+
+TEST(Mrt, EachTargetReceivesItsOwnOutput) {
+  img::Image t0(4, 3), t1(4, 3);
+  ir::Result<cpu::DrawStats> s = draw_two(t0, t1);
   ASSERT_TRUE(s.ok()) << s.message();
   for (uint32_t y = 0; y < 3; ++y)
     for (uint32_t x = 0; x < 4; ++x) {
@@ -95,6 +97,7 @@ TEST(Mrt, EachTargetReceivesItsOwnOutput) {
                 (Vec4{1, 0, 0.5f, 0.125f}));
     }
   // One target: oC1 goes nowhere, as D3D9 drops outputs without a bound target.
+  Pass p = mrt_pass();
   p.color_targets = 1;
   img::Image only(4, 3);
   ASSERT_TRUE(cpu::draw(p, only, 1).ok());
@@ -102,12 +105,8 @@ TEST(Mrt, EachTargetReceivesItsOwnOutput) {
 }
 
 TEST(Mrt, TargetsOfDifferentSizesAreRefused) {
-  Pass p = mrt_pass();
-  p.color_targets = 2;
   img::Image t0(4, 3), t1(4, 4);
-  cpu::DrawTargets targets;
-  targets.color = {&t0, &t1, nullptr, nullptr};
-  ir::Result<cpu::DrawStats> s = cpu::draw(p, targets, 1);
+  ir::Result<cpu::DrawStats> s = draw_two(t0, t1);
   EXPECT_FALSE(s.ok());
   EXPECT_NE(s.message().find("one size"), std::string::npos) << s.message();
   for (float v : t0.rgba) EXPECT_EQ(v, 0.0f);

@@ -252,33 +252,30 @@ const char* const kEveryForm[] = {
     "cnd r0, r0.a, r1, c4\nadd r0, r0, c4\n",
 };
 
-TEST(BlockIdentity, EveryFormTheBlockPathTakes) {
+// Every listing of kEveryForm in every conventions mode, seeds from `first_seed` on (the cases
+// named `label` n); with `denormals`, inputs, constants and texels half denormals.
+void compare_every_form(uint32_t first_seed, const std::string& label, bool denormals) {
   int n = 0;
   for (const char* text : kEveryForm) {
     const ir::Program program = parse(text);
-    uint32_t seed = 100;
+    uint32_t seed = first_seed;
     for (const ir::Conventions& conv : conventions_modes()) {
-      EXPECT_TRUE(compare(program, conv, 64, seed++, "listing " + std::to_string(n)))
+      EXPECT_TRUE(compare(program, conv, 64, seed++, label + std::to_string(n), denormals))
           << "the block path refused listing " << n;
     }
     ++n;
   }
 }
 
+TEST(BlockIdentity, EveryFormTheBlockPathTakes) {
+  compare_every_form(100, "listing ", false);
+}
+
 // The same listings with inputs, constants and texels that are half denormals of both signs:
 // in lavapipe's mode (every operation flushes them, NUMERICS.md rule 13) and in the exact one
 // (kept), the block path must agree with the per-pixel VM bit for bit.
 TEST(BlockIdentity, DenormalsInInputsConstantsAndTexels) {
-  int n = 0;
-  for (const char* text : kEveryForm) {
-    const ir::Program program = parse(text);
-    uint32_t seed = 500;
-    for (const ir::Conventions& conv : conventions_modes()) {
-      EXPECT_TRUE(compare(program, conv, 64, seed++, "denormal listing " + std::to_string(n), true))
-          << "the block path refused listing " << n;
-    }
-    ++n;
-  }
+  compare_every_form(500, "denormal listing ", true);
 }
 
 // What the block path does not take it must refuse (the caller then runs per pixel):

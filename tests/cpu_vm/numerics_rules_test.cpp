@@ -8,18 +8,33 @@
 
 using namespace vmtest;
 
+namespace {
+// `op` (rcp, rsq, log, ...) of a in vs_2_0, written to oT0, and of b, written to oT1.
+VertexOutput op_of_two(const char* op, float a, float b, tierlift::ir::Conventions conv = {}) {
+  const std::string o(op);
+  return vs("vs_2_0", o + " r4, r0.x\nmov oT0, r4\n" + o + " r5, r0.y\nmov oT1, r5\n",
+            bank({{a, b, 0, 0}}), conv);
+}
+// c0 = `r`, and c[20 + k] = (k, 0, 0, 0) for k = -16..19: a relative read c[a0 + 20] shows
+// the address register's value k in .x.
+ConstantBank with_offsets(Vec4 r) {
+  ConstantBank c = bank({r});
+  c.f.resize(40);
+  for (int i = 4; i < 40; ++i) c.f[i] = {float(i - 20), 0, 0, 0};
+  return c;
+}
+} // namespace
+
 TEST(Numerics, RcpOfZeroIsFltMax) {
   // rcp(+0) and rcp(-0) are both +FLT_MAX (doc pseudo-code "f == 0 ? +big").
-  auto o =
-      vs20("rcp r4, r0.x\nmov oT0, r4\nrcp r5, r0.y\nmov oT1, r5\n", bank({{0.0f, -0.0f, 0, 0}}));
+  auto o = op_of_two("rcp", 0.0f, -0.0f);
   EXPECT_EQ(o.tex[0][0], FLT_MAX);
   EXPECT_EQ(o.tex[1][3], FLT_MAX);
 }
 
 TEST(Numerics, RcpOfOneIsExact) {
   // rcp(1) = 1 exactly; rcp(4) = 0.25 (exact in binary).
-  auto o =
-      vs20("rcp r4, r0.x\nmov oT0, r4\nrcp r5, r0.y\nmov oT1, r5\n", bank({{1.0f, 4.0f, 0, 0}}));
+  auto o = op_of_two("rcp", 1.0f, 4.0f);
   EXPECT_EQ(o.tex[0][0], 1.0f);
   EXPECT_EQ(o.tex[1][0], 0.25f);
 }
@@ -30,8 +45,7 @@ TEST(Numerics, RcpOverflowClampsToFltMax) {
   float tiny = std::ldexp(1.0f, -140);
   tierlift::ir::Conventions exact;
   exact.rounding = tierlift::ir::Rounding::Exact;
-  auto o = vs("vs_2_0", "rcp r4, r0.x\nmov oT0, r4\nrcp r5, r0.y\nmov oT1, r5\n",
-              bank({{tiny, -tiny, 0, 0}}), exact);
+  auto o = op_of_two("rcp", tiny, -tiny, exact);
   EXPECT_EQ(o.tex[0][0], FLT_MAX);
   EXPECT_EQ(o.tex[1][0], -FLT_MAX);
   // rcp(2^127) = 2^-127, a denormal result, kept.
@@ -39,31 +53,27 @@ TEST(Numerics, RcpOverflowClampsToFltMax) {
 }
 
 TEST(Numerics, RsqOfZeroIsFltMax) {
-  auto o =
-      vs20("rsq r4, r0.x\nmov oT0, r4\nrsq r5, r0.y\nmov oT1, r5\n", bank({{0.0f, -0.0f, 0, 0}}));
+  auto o = op_of_two("rsq", 0.0f, -0.0f);
   EXPECT_EQ(o.tex[0][0], FLT_MAX);
   EXPECT_EQ(o.tex[1][0], FLT_MAX);
 }
 
 TEST(Numerics, RsqOfNegativeUsesAbs) {
   // rsq(-4) = 1/sqrt(4) = 0.5; rsq(-1) = 1 exactly (never NaN).
-  auto o =
-      vs20("rsq r4, r0.x\nmov oT0, r4\nrsq r5, r0.y\nmov oT1, r5\n", bank({{-4.0f, -1.0f, 0, 0}}));
+  auto o = op_of_two("rsq", -4.0f, -1.0f);
   EXPECT_EQ(o.tex[0][0], 0.5f);
   EXPECT_EQ(o.tex[1][0], 1.0f);
 }
 
 TEST(Numerics, LogOfZeroIsMinusFltMax) {
-  auto o =
-      vs20("log r4, r0.x\nmov oT0, r4\nlog r5, r0.y\nmov oT1, r5\n", bank({{0.0f, -0.0f, 0, 0}}));
+  auto o = op_of_two("log", 0.0f, -0.0f);
   EXPECT_EQ(o.tex[0][0], -FLT_MAX);
   EXPECT_EQ(o.tex[1][0], -FLT_MAX);
 }
 
 TEST(Numerics, LogOfNegativeUsesAbs) {
   // log2|-8| = 3; log2|-0.5| = -1.
-  auto o =
-      vs20("log r4, r0.x\nmov oT0, r4\nlog r5, r0.y\nmov oT1, r5\n", bank({{-8.0f, -0.5f, 0, 0}}));
+  auto o = op_of_two("log", -8.0f, -0.5f);
   EXPECT_EQ(o.tex[0][0], 3.0f);
   EXPECT_EQ(o.tex[1][0], -1.0f);
 }
@@ -272,9 +282,7 @@ TEST(Numerics, LitEdgeCases) {
 
 TEST(Numerics, MovaRoundsHalfAwayFromZero) {
   // mova a0, (0.5, -0.5, 2.5, -1.49) → (1, -1, 3, -1); c[20 + k] holds k in .x.
-  ConstantBank c = bank({{0.5f, -0.5f, 2.5f, -1.49f}});
-  c.f.resize(40);
-  for (int i = 4; i < 40; ++i) c.f[i] = {float(i - 20), 0, 0, 0};
+  const ConstantBank c = with_offsets({0.5f, -0.5f, 2.5f, -1.49f});
   auto o = vs20("mova a0, r0\nmov oT0, c[a0.x + 20]\nmov oT1, c[a0.y + 20]\n"
                 "mov oT2, c[a0.z + 20]\nmov oT3, c[a0.w + 20]\n",
                 c);
@@ -286,9 +294,7 @@ TEST(Numerics, MovaRoundsHalfAwayFromZero) {
 
 TEST(Numerics, MovA0Floors) {
   // vs_1_1 mov a0.x floors: 1.7 → 1, -0.5 → -1, 2.5 → 2.
-  ConstantBank c = bank({{1.7f, -0.5f, 2.5f, 0}});
-  c.f.resize(40);
-  for (int i = 4; i < 40; ++i) c.f[i] = {float(i - 20), 0, 0, 0};
+  const ConstantBank c = with_offsets({1.7f, -0.5f, 2.5f, 0});
   auto o = vs11("mov a0.x, r0.x\nmov oT0, c[a0.x + 20]\nmov a0.x, r0.y\n"
                 "mov oT1, c[a0.x + 20]\nmov a0.x, r0.z\nmov oT2, c[a0.x + 20]\n",
                 c);

@@ -16,12 +16,7 @@ VertexOutput run(const std::string& body, const ConstantBank& c) {
 TEST(VmFlow, LoopStepsAl) {
   // defi i0 = (3, 2, 2, 0): aL = 2, 4, 6 → r4 = c0 + c2 + c4 + c6 = 0 + 1 + 10 + 100 = 111
   // (c8 = 1000 must not be read).
-  ConstantBank c;
-  c.f.resize(10, Vec4{0, 0, 0, 0});
-  c.f[2] = {1, 1, 1, 1};
-  c.f[4] = {10, 10, 10, 10};
-  c.f[6] = {100, 100, 100, 100};
-  c.f[8] = {1000, 1000, 1000, 1000};
+  const ConstantBank c = splats(10, {{2, 1}, {4, 10}, {6, 100}, {8, 1000}});
   ShaderVM vm(parse(std::string("vs_2_0\ndefi i0, 3, 2, 2, 0\ndcl_position v0\nmov oPos, v0\n"
                                 "mov r4, c0\nloop aL, i0\nadd r4, r4, c[aL]\nendloop\n"
                                 "mov oT0, r4\n")),
@@ -31,10 +26,7 @@ TEST(VmFlow, LoopStepsAl) {
 
 TEST(VmFlow, LoopWithOffsetAndApiIntegers) {
   // API i1 = (2, 1, 3, 0): aL = 1, 4; c[aL + 1] reads c2 and c5 → 1 + 10 = 11.
-  ConstantBank c;
-  c.f.resize(8, Vec4{0, 0, 0, 0});
-  c.f[2] = {1, 1, 1, 1};
-  c.f[5] = {10, 10, 10, 10};
+  ConstantBank c = splats(8, {{2, 1}, {5, 10}});
   c.i[1] = {2, 1, 3, 0};
   auto o = run("mov r4, c0\nloop aL, i1\nadd r4, r4, c[aL + 1]\nendloop\nmov oT0, r4\n", c);
   EXPECT_VEC4(o.tex[0], 11, 11, 11, 11);
@@ -102,11 +94,7 @@ TEST(VmFlow, CallCallnzRet) {
 
 TEST(VmFlow, CallInsideLoopSeesAl) {
   // loop aL = 0, 1, 2 (i0 = (3, 0, 1, 0)); the subroutine adds c[aL + 4]: 1 + 2 + 4 = 7.
-  ConstantBank c;
-  c.f.resize(8, Vec4{0, 0, 0, 0});
-  c.f[4] = {1, 1, 1, 1};
-  c.f[5] = {2, 2, 2, 2};
-  c.f[6] = {4, 4, 4, 4};
+  ConstantBank c = splats(8, {{4, 1}, {5, 2}, {6, 4}});
   c.i[0] = {3, 0, 1, 0};
   auto o = run("mov r4, c0\nloop aL, i0\ncall l0\nendloop\nmov oT0, r4\nret\n"
                "label l0\nadd r4, r4, c[aL + 4]\nret\n",

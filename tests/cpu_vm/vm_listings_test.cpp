@@ -41,11 +41,7 @@ TEST(VmListings, Listing4WeightedSumClampsWeights) {
   // (constant clamp): with c0 = 2 → 0.5·1 + 0.25·(0.25 + 1 + 0.75) = 1.0.
   ShaderVM vm(parse(read_listing("listing4_blur4_weighted_sum.psh")), {});
   EchoTextures tex;
-  PixelInput in;
-  in.tex[0] = {0.5f, 0, 0, 0};
-  in.tex[1] = {0.25f, 0, 0, 0};
-  in.tex[2] = {1, 0, 0, 0};
-  in.tex[3] = {0.75f, 0, 0, 0};
+  PixelInput in = coords({{0.5f, 0, 0, 0}, {0.25f, 0, 0, 0}, {1, 0, 0, 0}, {0.75f, 0, 0, 0}});
   Vec4 q{0.25f, 0.25f, 0.25f, 0.25f};
   EXPECT_FLOAT_EQ(vm.run_pixel(in, bank({q, q, q, q}), tex).color[0][0], 0.625f);
   EXPECT_FLOAT_EQ(vm.run_pixel(in, bank({{2, 2, 2, 2}, q, q, q}), tex).color[0][0], 1.0f);

@@ -11,6 +11,7 @@
 #include <initializer_list>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "tierlift/asm/parser.h"
 #include "tierlift/asm/validator.h"
@@ -96,6 +97,23 @@ inline ConstantBank bank(std::initializer_list<Vec4> c) {
   ConstantBank b;
   b.f.assign(c.begin(), c.end());
   return b;
+}
+
+// n float constants, all zero but for the (index, v) pairs, whose four components are v:
+// the loop tests read a few scattered constants through c[aL].
+inline ConstantBank splats(size_t n, std::initializer_list<std::pair<size_t, float>> at) {
+  ConstantBank b;
+  b.f.resize(n, Vec4{0, 0, 0, 0});
+  for (auto [i, v] : at) b.f[i] = {v, v, v, v};
+  return b;
+}
+
+// Pixel input whose texture coordinates TC0, TC1, ... are `tc` in order.
+inline PixelInput coords(std::initializer_list<Vec4> tc) {
+  PixelInput in;
+  size_t i = 0;
+  for (const Vec4& t : tc) in.tex[i++] = t;
+  return in;
 }
 
 // vs_2_0 / vs_1_1 harness: c0..c3 are copied to r0..r3 (so one instruction may read

@@ -57,6 +57,32 @@ protected:
     ss << in.rdbuf();
     return ss.str();
   }
+  // `tierlift glow -q --backend all` on the shipped scene listings/scenes/<scene>: images into
+  // dir/out, stdout and stderr into dir/log.txt (glow_log); the exit status.
+  int glow_shipped_scene(const std::string& scene) const {
+    const std::filesystem::path file =
+        std::filesystem::path(TIERLIFT_SOURCE_DIR) / "listings" / "scenes" / scene;
+    return run_cli("glow -q --backend all --scene " + file.string() + " -o " +
+                       (dir / "out").string(),
+                   dir / "log.txt");
+  }
+  std::string glow_log() const { return read(dir / "log.txt"); }
+  // `tierlift glow <flags>--scene dir/bad.json -o dir/out`, bad.json holding `json`: it must
+  // exit 1 and write nothing. The log, for the caller's checks of the positioned error.
+  std::string glow_refuses_scene(const std::string& json, const std::string& flags = "") const {
+    const std::filesystem::path scene = dir / "bad.json", log = dir / "log.txt", out = dir / "out";
+    std::ofstream(scene) << json;
+    EXPECT_EQ(run_cli("glow " + flags + "--scene " + scene.string() + " -o " + out.string(), log),
+              1)
+        << read(log);
+    EXPECT_FALSE(std::filesystem::exists(out)) << read(log);
+    return read(log);
+  }
+  // <prefix><way>.png written in `folder` for each of the three ways.
+  static void expect_each_way(const std::filesystem::path& folder, const std::string& prefix) {
+    for (const char* way : {"cpu", "vulkan", "analytic"})
+      EXPECT_TRUE(std::filesystem::exists(folder / (prefix + way + ".png"))) << prefix << way;
+  }
   std::filesystem::path dir;
 };
 

@@ -23,6 +23,8 @@ protected:
     std::ofstream(p) << "{\"size\": [" << w << ", " << h << "]}\n";
     return p;
   }
+  // `tierlift glow` on a 16384² scene into dir/images, under the limit `prefix` sets.
+  void expect_huge_scene_refused(const std::string& prefix);
 };
 
 TEST_F(CliGlowFrames, JsonReportsSetupAndSteadyFramesPerDevice) {
@@ -72,21 +74,21 @@ void expect_refused(const std::string& out, const std::string& err, const fs::pa
   EXPECT_EQ(out, "");
 }
 
-TEST_F(CliGlowFrames, SceneBeyondTheMemoryBudgetIsRefusedBeforeRunning) {
+void CliGlowFrames::expect_huge_scene_refused(const std::string& prefix) {
   std::string out, err;
   const fs::path o = dir / "images";
-  const int rc = run("glow --scene " + scene(16384, 16384).string() + " -o " + o.string(), out, err,
-                     "TIERLIFT_MEMORY_LIMIT=17179869184 ");
+  const int rc =
+      run("glow --scene " + scene(16384, 16384).string() + " -o " + o.string(), out, err, prefix);
   expect_refused(out, err, o, rc);
+}
+
+TEST_F(CliGlowFrames, SceneBeyondTheMemoryBudgetIsRefusedBeforeRunning) {
+  expect_huge_scene_refused("TIERLIFT_MEMORY_LIMIT=17179869184 ");
 }
 
 #if !defined(__SANITIZE_ADDRESS__) // ASan's shadow memory cannot live under `ulimit -v`
 TEST_F(CliGlowFrames, SceneBeyondTheAddressSpaceLimitIsRefusedBeforeRunning) {
-  std::string out, err;
-  const fs::path o = dir / "images";
-  const int rc = run("glow --scene " + scene(16384, 16384).string() + " -o " + o.string(), out, err,
-                     "ulimit -v 16777216; ");
-  expect_refused(out, err, o, rc);
+  expect_huge_scene_refused("ulimit -v 16777216; ");
 }
 #endif
 

@@ -30,28 +30,21 @@ TEST_F(CliGlslBlur, AllThreeWaysAgree) {
       << text;
   EXPECT_NE(text.find("kernel weights sum to 0.98"), std::string::npos) << text;
   EXPECT_NE(text.find("every pair within design.md's targets"), std::string::npos) << text;
-  for (const char* way : {"cpu", "vulkan", "analytic"})
-    EXPECT_TRUE(fs::exists(dir / "out" / (std::string("final-") + way + ".png"))) << way;
+  expect_each_way(dir / "out", "final-");
 }
 
 TEST_F(CliGlslBlur, BadGlslIsPositionedInTheGlslFileAndNothingIsWritten) {
   std::ofstream(dir / "bad.frag") << "varying vec2 vTexCoord;\nvoid main(void)\n{\n"
                                      "  gl_FragColor = texture2D(RTScene, vTexCoord);\n}\n";
-  std::ofstream(dir / "bad.json")
-      << R"({"effect": "glsl-blur", "size": [512, 512], "glsl": {"horizontal": "bad.frag"}})";
-  const fs::path log = dir / "log.txt";
-  EXPECT_EQ(run_cli("glow --backend cpu --scene " + (dir / "bad.json").string() + " -o " +
-                        (dir / "out").string(),
-                    log),
-            1);
-  const std::string text = read(log);
+  const std::string text = glow_refuses_scene(
+      R"({"effect": "glsl-blur", "size": [512, 512], "glsl": {"horizontal": "bad.frag"}})",
+      "--backend cpu ");
   // "  gl_FragColor = texture2D(" is 27 characters: RTScene starts at column 28 of line 4.
   EXPECT_NE(
       text.find((dir / "bad.frag").string() + ":4:28: error: 'RTScene': undeclared identifier"),
       std::string::npos)
       << text;
   EXPECT_NE(text.find("                           ^~~~~~~"), std::string::npos) << text;
-  EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
 TEST_F(CliGlslBlur, GlslObjectUnderTheGlowIsAPositionedSceneError) {

@@ -18,15 +18,8 @@ namespace fs = std::filesystem;
 class CliOutline : public tierlift::cli_test::CliFixture {};
 
 TEST_F(CliOutline, ShippedSceneRunsOnEveryDeviceWithEveryTargetCompared) {
-  const fs::path scene =
-      fs::path(TIERLIFT_SOURCE_DIR) / "listings" / "scenes" / "stencil-outline.json";
-  const fs::path log = dir / "log.txt";
-  ASSERT_EQ(
-      run_cli("glow -q --backend all --scene " + scene.string() + " -o " + (dir / "out").string(),
-              log),
-      0)
-      << read(log);
-  const std::string text = read(log);
+  ASSERT_EQ(glow_shipped_scene("stencil-outline.json"), 0) << glow_log();
+  const std::string text = glow_log();
   // The rows of the object pass's three outputs and of the stencil test's buffer; cpu ·
   // vulkan agree exactly on each (the coverage, the constants and the stencil values are
   // exact in both; no blur has run yet).
@@ -35,24 +28,18 @@ TEST_F(CliOutline, ShippedSceneRunsOnEveryDeviceWithEveryTargetCompared) {
         << row << "\n"
         << text;
   EXPECT_NE(text.find("every pair within design.md's targets"), std::string::npos) << text;
-  for (const char* way : {"cpu", "vulkan", "analytic"})
-    EXPECT_TRUE(fs::exists(dir / "out" / (std::string("final-") + way + ".png"))) << way;
+  expect_each_way(dir / "out", "final-");
 }
 
 TEST_F(CliOutline, StencilReferenceOutOfRangeExitsOneAndWritesNothing) {
-  const fs::path scene = dir / "bad.json", log = dir / "log.txt";
-  std::ofstream(scene) << "{\n  \"effect\": \"stencil-outline\",\n  \"size\": [64, 48],\n"
-                          "  \"outline\": { \"stencil_ref\": 256 }\n}\n";
-  EXPECT_EQ(
-      run_cli("glow --backend all --scene " + scene.string() + " -o " + (dir / "out").string(),
-              log),
-      1)
-      << read(log);
-  EXPECT_NE(read(log).find("bad.json:4:31: error: /outline/stencil_ref: 256 is outside 1..255"),
+  const std::string text =
+      glow_refuses_scene("{\n  \"effect\": \"stencil-outline\",\n  \"size\": [64, 48],\n"
+                         "  \"outline\": { \"stencil_ref\": 256 }\n}\n",
+                         "--backend all ");
+  EXPECT_NE(text.find("bad.json:4:31: error: /outline/stencil_ref: 256 is outside 1..255"),
             std::string::npos)
-      << read(log);
-  EXPECT_NE(read(log).find("^"), std::string::npos) << read(log);
-  EXPECT_FALSE(fs::exists(dir / "out"));
+      << text;
+  EXPECT_NE(text.find("^"), std::string::npos) << text;
 }
 
 // The validator's MRT rule at the command line: oC1 written without oC0 names the file, the

@@ -3,46 +3,28 @@
 // 1, nothing written.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "cli_fixture.h"
 
 namespace {
 
-namespace fs = std::filesystem;
-
 class CliRadial : public tierlift::cli_test::CliFixture {};
 
 TEST_F(CliRadial, ShippedSceneThreeWaysWithinTargets) {
-  const fs::path scene =
-      fs::path(TIERLIFT_SOURCE_DIR) / "listings" / "scenes" / "radial-beams.json";
-  const fs::path log = dir / "log.txt";
-  ASSERT_EQ(
-      run_cli("glow -q --backend all --scene " + scene.string() + " -o " + (dir / "out").string(),
-              log),
-      0)
-      << read(log);
-  const std::string text = read(log);
+  ASSERT_EQ(glow_shipped_scene("radial-beams.json"), 0) << glow_log();
+  const std::string text = glow_log();
   EXPECT_NE(text.find("radial-beams dx9: 320x180"), std::string::npos) << text;
   EXPECT_NE(text.find("zoom.3"), std::string::npos) << text; // 32 copies, 8 a pass
   EXPECT_NE(text.find("every pair within design.md's targets"), std::string::npos) << text;
-  for (const char* way : {"cpu", "vulkan", "analytic"})
-    EXPECT_TRUE(fs::exists(dir / "out" / (std::string("glow-") + way + ".png"))) << way;
+  expect_each_way(dir / "out", "glow-");
 }
 
 TEST_F(CliRadial, BadRadialFieldExitsOneAndWritesNothing) {
-  const fs::path scene = dir / "bad.json", log = dir / "log.txt";
-  std::ofstream(scene) << "{\n  \"effect\": \"radial-beams\",\n  \"radial\": { \"centre\": [2, "
-                          "0.5] }\n}\n";
-  EXPECT_EQ(run_cli("glow --scene " + scene.string() + " -o " + (dir / "out").string(), log), 1)
-      << read(log);
-  EXPECT_NE(read(log).find("bad.json:3:26: error: /radial/centre/0: 2 is outside"),
-            std::string::npos)
-      << read(log);
-  EXPECT_FALSE(fs::exists(dir / "out"));
+  const std::string text = glow_refuses_scene(
+      "{\n  \"effect\": \"radial-beams\",\n  \"radial\": { \"centre\": [2, 0.5] }\n}\n");
+  EXPECT_NE(text.find("bad.json:3:26: error: /radial/centre/0: 2 is outside"), std::string::npos)
+      << text;
 }
 
 } // namespace

@@ -8,6 +8,7 @@
 
 #include "../vulkan/vk_test_util.h"
 #include "scene_error_case.h"
+#include "three_ways.h"
 #include "tierlift/effects/agreement.h"
 #include "tierlift/effects/analytic_device.h"
 #include "tierlift/effects/glow_run.h"
@@ -17,15 +18,10 @@ namespace tierlift::effects {
 namespace {
 
 namespace fs = std::filesystem;
-const fs::path kScenes = fs::path(TIERLIFT_SOURCE_DIR) / "listings" / "scenes";
-
-ir::Result<Scene> parse(const std::string& text) {
-  return parse_scene(text, "s.json", kScenes.string());
-}
 
 TEST(GlowContextScene, FieldsAreRead) {
   ir::Result<Scene> s =
-      parse(R"({"glow": {"fog": {"start": 0.1, "end": 0.9, "color": [0.5, 0, 1]}}})");
+      parse_shipped(R"({"glow": {"fog": {"start": 0.1, "end": 0.9, "color": [0.5, 0, 1]}}})");
   ASSERT_TRUE(s) << s.message();
   const GlowFog& fog = s->params.context.fog;
   EXPECT_TRUE(fog.on);
@@ -35,7 +31,7 @@ TEST(GlowContextScene, FieldsAreRead) {
   EXPECT_EQ(fog.depth, nullptr); // the built-in floor
   EXPECT_EQ(s->params.context.glow_image, nullptr);
 
-  s = parse(R"({"image": "sign.png", "glow_image": "sign-glow.png",
+  s = parse_shipped(R"({"image": "sign.png", "glow_image": "sign-glow.png",
                 "glow": {"fog": {"start": 0, "end": 1, "depth": "sign-glow.png"}}})");
   ASSERT_TRUE(s) << s.message();
   ASSERT_NE(s->params.context.glow_image, nullptr);
@@ -52,7 +48,7 @@ class GlowContextSceneErrors : public ::testing::TestWithParam<Bad> {};
 
 TEST_P(GlowContextSceneErrors, NameTheFieldWithItsPosition) {
   const Bad& b = GetParam();
-  ir::Result<Scene> s = parse(b.text);
+  ir::Result<Scene> s = parse_shipped(b.text);
   expect_positioned_scene_error(s, b);
   EXPECT_FALSE(
       ir::failed_with(s, kSceneIoRule)); // a file the scene names is the scene's error: exit 1
@@ -98,7 +94,7 @@ class GlowContextShipped : public vulkan::test::VulkanTest,
 TEST_P(GlowContextShipped, EveryPairAgreesOnEveryPass) {
   const std::string file = GetParam().file;
   ir::Result<Scene> s =
-      file.starts_with("{") ? parse(file) : load_scene_file((kScenes / file).string());
+      file.starts_with("{") ? parse_shipped(file) : load_scene_file((kScenes / file).string());
   ASSERT_TRUE(s) << s.message();
   s->params.tier = GetParam().tier;
   const PlanResult plan_built = build_scene_effect(*s);
@@ -106,27 +102,17 @@ TEST_P(GlowContextShipped, EveryPairAgreesOnEveryPass) {
   const GlowPlan& plan = *plan_built;
   img::ImageResult scene = load_scene_image(*s);
   ASSERT_TRUE(scene) << scene.message();
-  CpuPassDevice cpu_dev(2);
-  AnalyticPassDevice analytic;
-  auto vk = make_vulkan_pass_device(*dev);
-  std::vector<std::pair<std::string, GlowRun>> ways;
-  ways.emplace_back("cpu", run_glow(plan, *scene, cpu_dev, true));
-  ways.emplace_back("vulkan", run_glow(plan, *scene, *vk, true));
-  ways.emplace_back("analytic", run_glow(plan, *scene, analytic, true));
+  test_ways::ThreeDevices devices(*dev);
+  const test_ways::NamedRuns ways = test_ways::run_three_ways(plan, *scene, devices);
   for (const auto& [name, w] : ways) ASSERT_TRUE(w.run.ok()) << name << ": " << w.run.message();
   EXPECT_TRUE(dev->messages().empty()) << dev->messages().front();
-  for (size_t a = 0; a < ways.size(); ++a)
-    for (size_t b = a + 1; b < ways.size(); ++b) {
-      ir::Result<RunAgreement> agree_compared =
-          compare_runs(*ways[a].second.run, ways[a].second.images, *ways[b].second.run,
-                       ways[b].second.images, std::string(kFinalTexture));
-      ASSERT_TRUE(agree_compared.ok()) << agree_compared.message();
-      const RunAgreement& agree = *agree_compared;
-      for (const PassAgreement& row : agree.passes)
-        EXPECT_TRUE(row.verdict.pass) << ways[a].first << " vs " << ways[b].first << ", "
-                                      << row.pass << ": " << row.verdict.summary;
-      EXPECT_TRUE(agree.all_pass);
-    }
+  test_ways::compare_pairs(
+      ways, [](const std::string& a, const std::string& b, const RunAgreement& agree) {
+        for (const PassAgreement& row : agree.passes)
+          EXPECT_TRUE(row.verdict.pass)
+              << a << " vs " << b << ", " << row.pass << ": " << row.verdict.summary;
+        EXPECT_TRUE(agree.all_pass);
+      });
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, GlowContextShipped,

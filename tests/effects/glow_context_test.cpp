@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <memory>
+#include <optional>
 
 #include "../vulkan/vk_test_util.h"
 #include "tierlift/effects/agreement.h"
@@ -50,13 +51,22 @@ img::Image source_image() {
 }
 
 struct Ways {
+  GlowPlan plan;
   std::vector<std::pair<std::string, GlowRun>> runs;
 };
 
 class GlowContext3 : public vulkan::test::VulkanTest, public ::testing::WithParamInterface<Tier> {
 protected:
-  Ways run_all(const GlowPlan& plan, const img::Image& scene) {
-    Ways w;
+  // p's plan on the three ways over `scene`; nothing (the failure recorded) when p does not
+  // build.
+  std::optional<Ways> run_all(const GlowParams& p, const img::Image& scene) {
+    PlanResult plan_built = build_glow(p);
+    if (!plan_built) {
+      ADD_FAILURE() << plan_built.message();
+      return std::nullopt;
+    }
+    Ways w{std::move(*plan_built), {}};
+    const GlowPlan& plan = w.plan;
     CpuPassDevice cpu_dev(1);
     AnalyticPassDevice analytic;
     auto vk = make_vulkan_pass_device(*dev);
@@ -110,12 +120,10 @@ TEST_P(GlowContext3, FogFadesEachSourceByTheLinearFogFraction) {
   for (uint32_t y = 0; y < kH; ++y)
     for (uint32_t x = 0; x < kW; ++x) depth->at(x, y)[0] = float(kDepth[x]); // red is the depth
   p.context.fog.depth = depth;
-  const PlanResult plan_built = build_glow(p);
-  ASSERT_TRUE(plan_built) << plan_built.message();
-  const GlowPlan& plan = *plan_built;
   const img::Image scene = source_image();
-  const Ways w = run_all(plan, scene);
-  expect_glow(w, scene, p.tier, [&](uint32_t x, uint32_t y) {
+  const std::optional<Ways> w = run_all(p, scene);
+  ASSERT_TRUE(w);
+  expect_glow(*w, scene, p.tier, [&](uint32_t x, uint32_t y) {
     // By hand: d ≤ start keeps the source, d ≥ end leaves the fog colour, in between the
     // fraction (end − d)/(end − start) of the source.
     const double d = kDepth[x];
@@ -127,7 +135,7 @@ TEST_P(GlowContext3, FogFadesEachSourceByTheLinearFogFraction) {
   });
   // The closed form's ends, spelled out: beyond end only the fog colour glows; near, a
   // texel of alpha 0 does not glow at all.
-  const img::Image& glow = w.runs[0].second.images.at(std::string(kGlowTexture));
+  const img::Image& glow = w->runs[0].second.images.at(std::string(kGlowTexture));
   EXPECT_NEAR(glow.at(7, 0)[2], kFog[2], 2e-6);
   EXPECT_NEAR(glow.at(6, 1)[1], kFog[1], 2e-6);
   EXPECT_NEAR(glow.at(0, 2)[2], 0.0, 2e-6);
@@ -137,12 +145,10 @@ TEST_P(GlowContext3, BuiltInFloorFogsTheTopRows) {
   GlowParams p = one_tap(GetParam());
   p.context.fog.on = true;
   p.context.fog.start = 0.25, p.context.fog.end = 0.75; // black fog
-  const PlanResult plan_built = build_glow(p);
-  ASSERT_TRUE(plan_built) << plan_built.message();
-  const GlowPlan& plan = *plan_built;
   const img::Image scene = source_image();
-  const Ways w = run_all(plan, scene);
-  expect_glow(w, scene, p.tier, [&](uint32_t x, uint32_t y) {
+  const std::optional<Ways> w = run_all(p, scene);
+  ASSERT_TRUE(w);
+  expect_glow(*w, scene, p.tier, [&](uint32_t x, uint32_t y) {
     const double d = 1 - (y + 0.5) / kH; // rows 5/6, 1/2, 1/6 of the way up
     const double f = std::clamp((0.75 - d) / 0.5, 0.0, 1.0);
     const float* s = scene.at(x, y);
@@ -158,18 +164,16 @@ TEST_P(GlowContext3, GlowImageGlowsWhereTheSceneAlphaIsZero) {
   glow->at(2, 1)[0] = 1, glow->at(2, 1)[1] = 0.5f, glow->at(2, 1)[3] = 1;
   glow->at(6, 0)[2] = 0.8f, glow->at(6, 0)[3] = 0.25f;
   p.context.glow_image = glow;
-  const PlanResult plan_built = build_glow(p);
-  ASSERT_TRUE(plan_built) << plan_built.message();
-  const GlowPlan& plan = *plan_built;
-  const Ways w = run_all(plan, scene);
-  expect_glow(w, scene, p.tier, [&](uint32_t x, uint32_t y) {
+  const std::optional<Ways> w = run_all(p, scene);
+  ASSERT_TRUE(w);
+  expect_glow(*w, scene, p.tier, [&](uint32_t x, uint32_t y) {
     const float* g = glow->at(x, y);
     return std::array<double, 3>{g[0] * g[3], g[1] * g[3], g[2] * g[3]};
   });
   // Pruning must not take the scene's zero alpha for "no sources": the frame is unchanged.
-  const PrunedGraph pruned = prune_glow(plan, scene);
+  const PrunedGraph pruned = prune_glow(w->plan, scene);
   EXPECT_TRUE(pruned.left_out.empty() && pruned.limited.empty());
-  const img::Image& glow_out = w.runs[0].second.images.at(std::string(kGlowTexture));
+  const img::Image& glow_out = w->runs[0].second.images.at(std::string(kGlowTexture));
   EXPECT_NEAR(glow_out.at(2, 1)[0], 1.0, 2e-6);
   EXPECT_NEAR(glow_out.at(6, 0)[2], 0.2, 2e-6);
 }

@@ -48,9 +48,15 @@ img::Image random_scene() {
   return im;
 }
 
-// final(x, y) = w[x − x0 + 4] · w[y − y0 + 4] × the texel, zero outside the 9×9 footprint.
-void expect_impulse_response(const img::Image& out, uint32_t x0, uint32_t y0, double tol,
+// The default blur run on `device` over impulse(x0, y0): final(x, y) = w[x − x0 + 4] ·
+// w[y − y0 + 4] × the texel, zero outside the 9×9 footprint, within `tol`.
+void expect_impulse_response(PassDevice& device, uint32_t x0, uint32_t y0, double tol,
                              const std::string& way) {
+  PlanResult plan_built = build_glsl_blur(params_512(), GlslBlurParams{});
+  ASSERT_TRUE(plan_built) << plan_built.message();
+  GlowRun r = run_glow(*plan_built, impulse(x0, y0), device);
+  ASSERT_TRUE(r.run.ok()) << way << ": " << r.run.message();
+  const img::Image& out = r.images.at("final");
   double worst = 0;
   for (uint32_t y = 0; y < kSize; ++y)
     for (uint32_t x = 0; x < kSize; ++x) {
@@ -85,38 +91,23 @@ TEST(GlslBlur, WeightsSummingTo098AreReported) {
 }
 
 TEST(GlslBlur, AnalyticImpulseResponseIsTheOuterProductOfTheWeights) {
-  PlanResult plan_built = build_glsl_blur(params_512(), GlslBlurParams{});
-  ASSERT_TRUE(plan_built) << plan_built.message();
-  GlowPlan& plan = *plan_built;
   auto dev = make_analytic_pass_device();
-  GlowRun r = run_glow(plan, impulse(200, 300), *dev);
-  ASSERT_TRUE(r.run.ok()) << r.run.message();
   // Double sums of nine products, stored as float: within float's half ulp of 0.16².
-  expect_impulse_response(r.images.at("final"), 200, 300, 1e-8, "analytic");
+  expect_impulse_response(*dev, 200, 300, 1e-8, "analytic");
 }
 
 TEST(GlslBlur, CpuRunsTheTwinWithTheSameImpulseResponse) {
-  PlanResult plan_built = build_glsl_blur(params_512(), GlslBlurParams{});
-  ASSERT_TRUE(plan_built) << plan_built.message();
-  GlowPlan& plan = *plan_built;
   CpuPassDevice cpu(2);
-  GlowRun r = run_glow(plan, impulse(4, 507), cpu); // the footprint touches the edges
-  ASSERT_TRUE(r.run.ok()) << r.run.message();
   // fp32: each output is a product of two fp32 weights (within 2^-24 relative each) summed
-  // with zeros, so within 1e-7 of the exact product.
-  expect_impulse_response(r.images.at("final"), 4, 507, 1e-7, "cpu");
+  // with zeros, so within 1e-7 of the exact product. The footprint touches the edges.
+  expect_impulse_response(cpu, 4, 507, 1e-7, "cpu");
 }
 
 using GlslBlurVulkan = vulkan::test::VulkanTest;
 
 TEST_F(GlslBlurVulkan, GlslImpulseResponseOnLavapipe) {
-  PlanResult plan_built = build_glsl_blur(params_512(), GlslBlurParams{});
-  ASSERT_TRUE(plan_built) << plan_built.message();
-  GlowPlan& plan = *plan_built;
   auto vk = make_vulkan_pass_device(*dev);
-  GlowRun r = run_glow(plan, impulse(256, 256), *vk);
-  ASSERT_TRUE(r.run.ok()) << r.run.message();
-  expect_impulse_response(r.images.at("final"), 256, 256, 1e-7, "vulkan (GLSL)");
+  expect_impulse_response(*vk, 256, 256, 1e-7, "vulkan (GLSL)");
 }
 
 // The three ways on a random scene: GLSL on Vulkan, the twin on the interpreter, the kernel

@@ -7,9 +7,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <random>
 
 #include "../vulkan/vk_test_util.h"
+#include "three_way_scenes.h"
+#include "three_ways.h"
 #include "tierlift/effects/agreement.h"
 #include "tierlift/effects/analytic_device.h"
 #include "tierlift/effects/glow_run.h"
@@ -18,6 +19,8 @@
 
 namespace tierlift::effects {
 namespace {
+
+using test_ways::ThreeDevices;
 
 constexpr uint32_t kW = 41, kH = 33;
 constexpr uint32_t kX0 = 29, kY0 = 11; // the lit texel
@@ -62,12 +65,35 @@ GlowParams glow_params(Tier tier, img::Format format = img::Format::RGBA32F) {
   return g;
 }
 
-// A frame sink's body: the star texture read back after the frame, kept in `frames`.
-ir::Status read_star(PassDevice& device, std::vector<img::Image>& frames) {
-  ir::Result<img::Image> star = device.read_texture(std::string(kStarTexture));
-  if (!star) return std::move(star).failure();
-  frames.push_back(std::move(*star));
-  return ir::ok_status();
+// The animated tests' run: kFrames frames from radial.frame = kFirst, the star moving with
+// amplitude kA at rate kRate (half a time unit a frame: it moves by texels between frames).
+constexpr unsigned kFrames = 3, kFirst = 5;
+constexpr double kA = 3, kRate = 2;
+
+RadialParams moving_params() {
+  RadialParams r = still_params();
+  r.amplitude = kA;
+  r.rate = kRate;
+  r.frame = kFirst;
+  r.frames = kFrames;
+  return r;
+}
+
+// The star texture of each frame of `graph` run on `device` over `scene` (none after a failed
+// run, which fails the test).
+std::vector<img::Image> star_frames(const EffectGraph& graph, const img::Image& scene,
+                                    PassDevice& device) {
+  ImageMap images{{std::string(kSceneTexture), scene}};
+  std::vector<img::Image> frames;
+  ir::Result<FrameTimes> run =
+      run_frames(graph, device, images, kFrames, [&](unsigned, PassDevice& d) -> ir::Status {
+        ir::Result<img::Image> star = d.read_texture(std::string(kStarTexture));
+        if (!star) return std::move(star).failure();
+        frames.push_back(std::move(*star));
+        return ir::ok_status();
+      });
+  EXPECT_TRUE(run.ok()) << device.name() << ": " << run.message();
+  return frames;
 }
 
 class RadialWays : public vulkan::test::VulkanTest, public ::testing::WithParamInterface<Tier> {};
@@ -77,13 +103,10 @@ TEST_P(RadialWays, SingleBrightPixelMatchesTheClosedForm) {
   PlanResult plan_built = build_radial(glow_params(GetParam()), r);
   ASSERT_TRUE(plan_built) << plan_built.message();
   GlowPlan& plan = *plan_built;
-  CpuPassDevice cpu(2);
-  AnalyticPassDevice analytic;
-  auto vk = make_vulkan_pass_device(*dev);
+  ThreeDevices ways(*dev);
   const img::Image scene = single_pixel();
   double worst = 0, peak = 0;
-  for (PassDevice* d :
-       {static_cast<PassDevice*>(&cpu), vk.get(), static_cast<PassDevice*>(&analytic)}) {
+  for (PassDevice* d : ways.all()) {
     GlowRun run = run_glow(plan, scene, *d, false);
     ASSERT_TRUE(run.run.ok()) << run.run.message();
     const img::Image& beams = run.images.at(std::string(kGlowTexture));
@@ -110,11 +133,7 @@ TEST_P(RadialWays, SingleBrightPixelMatchesTheClosedForm) {
 }
 
 img::Image random_scene(uint32_t seed) {
-  img::Image im(kW, kH);
-  std::mt19937 rng(seed);
-  std::uniform_int_distribution<int> byte(0, 255);
-  for (float& v : im.rgba) v = float(byte(rng)) / 255.0f;
-  return im;
+  return test_scenes::random_bytes(kW, kH, seed);
 }
 
 TEST_P(RadialWays, ThreeWaysAgreeOnEveryPassWithTheStarMoving) {
@@ -125,31 +144,20 @@ TEST_P(RadialWays, ThreeWaysAgreeOnEveryPassWithTheStarMoving) {
     PlanResult plan_built = build_radial(glow_params(GetParam(), f), r);
     ASSERT_TRUE(plan_built) << plan_built.message();
     GlowPlan& plan = *plan_built;
-    CpuPassDevice cpu(2);
-    AnalyticPassDevice analytic;
-    auto vk = make_vulkan_pass_device(*dev);
-    const img::Image scene = random_scene(7);
-    std::vector<std::pair<std::string, GlowRun>> ways;
-    ways.emplace_back("cpu", run_glow(plan, scene, cpu, true));
-    ways.emplace_back("vulkan", run_glow(plan, scene, *vk, true));
-    ways.emplace_back("analytic", run_glow(plan, scene, analytic, true));
+    ThreeDevices devices(*dev);
+    const test_ways::NamedRuns ways = test_ways::run_three_ways(plan, random_scene(7), devices);
     for (auto& [name, w] : ways) ASSERT_TRUE(w.run.ok()) << name << ": " << w.run.message();
-    for (size_t a = 0; a < ways.size(); ++a)
-      for (size_t b = a + 1; b < ways.size(); ++b) {
-        ir::Result<RunAgreement> agree_compared =
-            compare_runs(*ways[a].second.run, ways[a].second.images, *ways[b].second.run,
-                         ways[b].second.images, std::string(kFinalTexture));
-        ASSERT_TRUE(agree_compared.ok()) << agree_compared.message();
-        const RunAgreement& agree = *agree_compared;
-        for (const PassAgreement& row : agree.passes) {
-          EXPECT_TRUE(row.verdict.pass) << ways[a].first << " vs " << ways[b].first << ", "
-                                        << row.pass << ": " << row.verdict.summary;
-          std::printf("[radial] %s %s %s-%s %-10s max abs %.3g\n",
-                      std::string(tier_name(GetParam())).c_str(),
-                      std::string(img::format_name(f)).c_str(), ways[a].first.c_str(),
-                      ways[b].first.c_str(), row.pass.c_str(), row.comparison.max_abs_all);
-        }
-      }
+    test_ways::compare_pairs(
+        ways, [&](const std::string& a, const std::string& b, const RunAgreement& agree) {
+          for (const PassAgreement& row : agree.passes) {
+            EXPECT_TRUE(row.verdict.pass)
+                << a << " vs " << b << ", " << row.pass << ": " << row.verdict.summary;
+            std::printf("[radial] %s %s %s-%s %-10s max abs %.3g\n",
+                        std::string(tier_name(GetParam())).c_str(),
+                        std::string(img::format_name(f)).c_str(), a.c_str(), b.c_str(),
+                        row.pass.c_str(), row.comparison.max_abs_all);
+          }
+        });
   }
   EXPECT_TRUE(dev->messages().empty()) << dev->messages().front();
 }
@@ -158,31 +166,18 @@ TEST_P(RadialWays, ThreeWaysAgreeOnEveryPassWithTheStarMoving) {
 // still plan built for frame F + f (whose star the tests above check against the closed
 // form), the frames differ from each other, and the devices agree frame by frame.
 TEST_P(RadialWays, FramesAnimateTheStarAsTheStillFramesDo) {
-  constexpr unsigned kFrames = 3, kFirst = 5;
-  RadialParams r = still_params();
-  r.amplitude = 3;
-  r.rate = 2; // half a time unit a frame: the star moves by texels between frames
-  r.frame = kFirst;
-  r.frames = kFrames;
+  const RadialParams r = moving_params();
   const GlowParams g = glow_params(GetParam());
   PlanResult moving_built = build_radial(g, r);
   ASSERT_TRUE(moving_built) << moving_built.message();
   GlowPlan& moving = *moving_built;
   ASSERT_EQ(moving.graph.passes.front().vs_constants_per_frame.size(), kFrames);
   const img::Image scene = random_scene(3);
-  CpuPassDevice cpu(2);
-  AnalyticPassDevice analytic;
-  auto vk = make_vulkan_pass_device(*dev);
+  ThreeDevices ways(*dev);
   std::vector<std::vector<img::Image>> stars; // [device][frame]
-  for (PassDevice* d :
-       {static_cast<PassDevice*>(&cpu), vk.get(), static_cast<PassDevice*>(&analytic)}) {
-    ImageMap images{{std::string(kSceneTexture), scene}};
-    std::vector<img::Image> frames;
-    ir::Result<FrameTimes> run = run_frames(
-        moving.graph, *d, images, kFrames,
-        [&](unsigned, PassDevice& dev_) -> ir::Status { return read_star(dev_, frames); });
-    ASSERT_TRUE(run.ok()) << d->name() << ": " << run.message();
-    ASSERT_EQ(frames.size(), kFrames);
+  for (PassDevice* d : ways.all()) {
+    std::vector<img::Image> frames = star_frames(moving.graph, scene, *d);
+    ASSERT_EQ(frames.size(), kFrames) << d->name();
     // Each frame equals the still plan of that frame, on the same device.
     for (unsigned f = 0; f < kFrames; ++f) {
       RadialParams still = r;
@@ -216,17 +211,9 @@ TEST_P(RadialWays, FramesAnimateTheStarAsTheStillFramesDo) {
 // at any point between texel centres returns the linear function exactly, so the star at
 // pixel (x, y) is ((x + mean_k dx_k)/W, (y + mean_k dy_k)/H) away from the wrapped edges.
 TEST_P(RadialWays, AnimatedStarMatchesTheClosedFormEachFrame) {
-  constexpr unsigned kFrames = 3, kFirst = 5;
-  constexpr double kA = 3, kRate = 2;
   constexpr double kFx[4] = {0.70, -0.55, 0.35, -0.90}, kFy[4] = {0.45, 0.80, -0.65, -0.30};
   constexpr double kPh[4] = {0.0, 1.3, 2.6, 4.1};
-  RadialParams r = still_params();
-  r.amplitude = kA;
-  r.rate = kRate;
-  r.frame = kFirst;
-  r.frames = kFrames;
-  const GlowParams g = glow_params(GetParam());
-  PlanResult plan_built = build_radial(g, r);
+  PlanResult plan_built = build_radial(glow_params(GetParam()), moving_params());
   ASSERT_TRUE(plan_built) << plan_built.message();
   GlowPlan& plan = *plan_built;
   img::Image ramp(kW, kH);
@@ -250,19 +237,10 @@ TEST_P(RadialWays, AnimatedStarMatchesTheClosedFormEachFrame) {
   // Float coordinates and weights: a few ulps of values below 1 (no subtexel rounding).
   constexpr double kTol = 1e-5;
   const uint32_t margin = uint32_t(2 * kA) + 2; // the reads stay clear of the wrap seam
-  CpuPassDevice cpu(2);
-  AnalyticPassDevice analytic;
-  auto vk = make_vulkan_pass_device(*dev);
-  for (PassDevice* d :
-       {static_cast<PassDevice*>(&cpu), vk.get(), static_cast<PassDevice*>(&analytic)}) {
-    ImageMap images{{std::string(kSceneTexture), ramp}};
-    std::vector<img::Image> frames;
-    ir::Result<FrameTimes> run =
-        run_frames(plan.graph, *d, images, kFrames, [&](unsigned, PassDevice& dev_) -> ir::Status {
-          return read_star(dev_, frames);
-        });
-    ASSERT_TRUE(run.ok()) << d->name() << ": " << run.message();
-    ASSERT_EQ(frames.size(), kFrames);
+  ThreeDevices ways(*dev);
+  for (PassDevice* d : ways.all()) {
+    const std::vector<img::Image> frames = star_frames(plan.graph, ramp, *d);
+    ASSERT_EQ(frames.size(), kFrames) << d->name();
     for (unsigned f = 0; f < kFrames; ++f) {
       double worst = 0;
       for (uint32_t y = margin; y + margin < kH; ++y)

@@ -5,11 +5,21 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 
 #include "tierlift/effects/scene.h"
 
 namespace tierlift::effects {
+
+// The shipped scenes' folder, where the scene texts of the tests resolve relative paths.
+inline const std::filesystem::path kScenes =
+    std::filesystem::path(TIERLIFT_SOURCE_DIR) / "listings" / "scenes";
+
+// `text` loaded as the scene file "s.json" of the shipped scenes' folder.
+inline ir::Result<Scene> parse_shipped(const std::string& text) {
+  return parse_scene(text, "s.json", kScenes.string());
+}
 
 struct SceneErrorCase {
   const char* text;

@@ -19,12 +19,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kScenes = fs::path(TIERLIFT_SOURCE_DIR) / "listings" / "scenes";
-
-ir::Result<Scene> parse(const std::string& text) {
-  return parse_scene(text, "s.json", kScenes.string());
-}
-
 TEST(Scene, EveryShippedSceneLoadsAndBuilds) {
   size_t n = 0;
   for (const auto& e : fs::directory_iterator(kScenes)) {
@@ -65,7 +59,7 @@ TEST(Scene, DefaultJsonSaysWhatTheBuiltInDefaultIs) {
 }
 
 TEST(Scene, FieldsAreRead) {
-  ir::Result<Scene> s = parse(R"({"size": [64, 48], "glow": {"tier": "dx8", "downsample": 3,
+  ir::Result<Scene> s = parse_shipped(R"({"size": [64, 48], "glow": {"tier": "dx8", "downsample": 3,
     "format": "rgba8", "half_texel": false, "intensity": 0.5, "taps": 5,
     "profile": {"gaussians": [{"sigma": 2, "weight": 1}]}}})");
   ASSERT_TRUE(s) << s.message();
@@ -88,7 +82,7 @@ class SceneErrors : public ::testing::TestWithParam<Bad> {};
 
 TEST_P(SceneErrors, NameTheFieldWithItsPosition) {
   const Bad& b = GetParam();
-  expect_positioned_scene_error(parse(b.text), b);
+  expect_positioned_scene_error(parse_shipped(b.text), b);
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -110,13 +104,13 @@ INSTANTIATE_TEST_SUITE_P(
         Bad{"{\"glow\": {\"taps\": 4}}", "s.json:1:19: error: /glow/taps", "even"}));
 
 TEST(Scene, SyntaxErrorsHaveAPosition) {
-  ir::Result<Scene> s = parse("{\n  \"glow\": {\"tier\": \"dx9\", }\n}");
+  ir::Result<Scene> s = parse_shipped("{\n  \"glow\": {\"tier\": \"dx9\", }\n}");
   ASSERT_FALSE(s);
   EXPECT_NE(s.message().find("s.json:2:27: error: syntax error"), std::string::npos) << s.message();
 }
 
 TEST(Scene, WeightsThatDoNotSumToOneWarnByHowMuch) {
-  ir::Result<Scene> s = parse(R"({"glow": {"profile": {"gaussians": [
+  ir::Result<Scene> s = parse_shipped(R"({"glow": {"profile": {"gaussians": [
       {"sigma": 3, "weight": 0.49}, {"sigma": 1, "weight": 0.49}]}}})");
   ASSERT_TRUE(s) << s.message();
   // 0.98 per axis, 0.98² = 0.9604 after both: 3.96 % darker.
@@ -130,7 +124,7 @@ TEST(Scene, WeightsThatDoNotSumToOneWarnByHowMuch) {
 TEST(Scene, SawtoothTapsByHand) {
   // period 2 px, radius 3 px, N = 1: saw(x) = 1 − frac(|x|/2) → x = 0: 1, ±1: ½, ±2: 1, ±3: ½;
   // the sum is 5, so the taps are 0.2, 0.1, 0.2, 0.1 from the centre out.
-  ir::Result<Scene> s = parse(R"({"glow": {"downsample": 1,
+  ir::Result<Scene> s = parse_shipped(R"({"glow": {"downsample": 1,
       "profile": {"sawtooth": {"period": 2, "radius": 3, "weight": 1}}}})");
   ASSERT_TRUE(s) << s.message();
   ir::Result<std::vector<BlurTap>> sampled = sample_blur_profile(s->params.profile, 1);

@@ -8,8 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <random>
 
+#include "three_way_scenes.h"
 #include "tierlift/effects/agreement.h"
 #include "tierlift/effects/analytic_device.h"
 #include "tierlift/effects/glow_run.h"
@@ -19,11 +19,7 @@ namespace {
 
 // rgb and alpha random multiples of 1/255 (the glow sources then hold many midpoints).
 img::Image random_scene(uint32_t w, uint32_t h, uint32_t seed) {
-  img::Image im(w, h);
-  std::mt19937 rng(seed);
-  std::uniform_int_distribution<int> byte(0, 255);
-  for (float& v : im.rgba) v = float(byte(rng)) / 255.0f;
-  return im;
+  return test_scenes::random_bytes(w, h, seed);
 }
 
 // The RGBA8 downsample, checked against independent math: the passes point-read the

@@ -31,4 +31,13 @@ inline img::Image make_scene(Scene s, uint32_t& w, uint32_t& h) {
   return im;
 }
 
+// Every channel a random multiple of 1/255, drawn pixel by pixel in rgba order.
+inline img::Image random_bytes(uint32_t w, uint32_t h, uint32_t seed) {
+  img::Image im(w, h);
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> byte(0, 255);
+  for (float& v : im.rgba) v = float(byte(rng)) / 255.0f;
+  return im;
+}
+
 } // namespace tierlift::effects::test_scenes

@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "temp_dir.h"
 #include "tierlift/io/bounded_read.h"
 
 namespace fs = std::filesystem;
@@ -19,19 +20,9 @@ using tierlift::io::ReadCap;
 
 namespace {
 
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    path = fs::temp_directory_path() /
-           ("tierlift_io_read_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-  std::string file(const std::string& name, const std::string& bytes) const {
-    std::ofstream(path / name, std::ios::binary) << bytes;
-    return (path / name).string();
-  }
+// A fresh folder per test, removed afterwards.
+struct TempDir : tierlift::test::TempDir {
+  TempDir() : tierlift::test::TempDir("io_read") {}
 };
 
 constexpr ReadCap kTiny{16, "test input"};
@@ -113,9 +104,9 @@ TEST(BoundedRead, ReadsAShortPipeWhole) {
 TEST(BoundedRead, DirectoriesAndMissingFilesAreErrors) {
   TempDir dir;
   std::string error;
-  EXPECT_FALSE(read_capped(dir.path.string(), kTiny, error));
+  EXPECT_FALSE(read_capped(dir.path().string(), kTiny, error));
   EXPECT_NE(error.find("is a directory"), std::string::npos) << error;
-  EXPECT_FALSE(read_capped((dir.path / "missing").string(), kTiny, error));
+  EXPECT_FALSE(read_capped((dir.path() / "missing").string(), kTiny, error));
   EXPECT_NE(error.find("cannot read"), std::string::npos) << error;
 }
 

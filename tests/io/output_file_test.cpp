@@ -16,6 +16,7 @@
 
 #include <gtest/gtest.h>
 
+#include "temp_dir.h"
 #include "tierlift/io/output_file.h"
 
 namespace fs = std::filesystem;
@@ -24,24 +25,9 @@ namespace ir = tierlift::ir;
 
 namespace {
 
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    path = fs::temp_directory_path() /
-           ("tierlift_io_write_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-  std::string operator/(const std::string& name) const { return (path / name).string(); }
-  // Every name in the folder, hidden ones included.
-  std::vector<std::string> names() const {
-    std::vector<std::string> out;
-    for (const auto& e : fs::directory_iterator(path)) out.push_back(e.path().filename().string());
-    std::sort(out.begin(), out.end());
-    return out;
-  }
+// A fresh folder per test, removed afterwards.
+struct TempDir : tierlift::test::TempDir {
+  TempDir() : tierlift::test::TempDir("io_write") {}
 };
 
 std::string slurp(const std::string& p) {
@@ -104,7 +90,7 @@ TEST(WriteOutput, WritesThroughACharacterDevice) {
 
 TEST(WriteOutput, DirectoriesAndMissingFoldersFailWithoutLeftovers) {
   TempDir dir;
-  EXPECT_NE(io::write_output(dir.path.string(), "x").message().find("is a directory"),
+  EXPECT_NE(io::write_output(dir.path().string(), "x").message().find("is a directory"),
             std::string::npos);
   std::string err = io::write_output(dir / "no/such/folder/out.bin", "x").message();
   EXPECT_NE(err.find("no/such/folder/out.bin"), std::string::npos) << err;
@@ -136,7 +122,7 @@ TEST(SameFile, ComparesDeviceAndInodeNotNames) {
   fs::create_symlink(dir / "a.psh", dir / "soft.psh");
   EXPECT_TRUE(io::same_file(dir / "a.psh", dir / "hard.psh"));
   EXPECT_TRUE(io::same_file(dir / "a.psh", dir / "soft.psh"));
-  EXPECT_TRUE(io::same_file(dir / "a.psh", dir.path.string() + "/./a.psh"));
+  EXPECT_TRUE(io::same_file(dir / "a.psh", dir.path().string() + "/./a.psh"));
   EXPECT_FALSE(io::same_file(dir / "a.psh", dir / "b.psh"));
   EXPECT_FALSE(io::same_file(dir / "a.psh", dir / "missing.psh"));
   EXPECT_FALSE(io::same_file("-", "-"));

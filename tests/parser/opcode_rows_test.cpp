@@ -75,18 +75,15 @@ TEST(ParserOpcodeRows, DeclarationAndDefinitionRows) {
 }
 
 TEST(ParserOpcodeRows, WrongOperandCountIsReportedAtTheMnemonicOrTheExtraOperand) {
-  auto few = first_error("vs_1_1\nadd r0, r1\n");
-  EXPECT_EQ(few.rule, "operand-count");
-  EXPECT_EQ(few.line, 2u);
-  EXPECT_EQ(few.col, 1u);
-  EXPECT_NE(few.message.find("3 operands"), std::string::npos) << few.message;
-  auto many = first_error("vs_1_1\nmov r0, r1, r2\n");
-  EXPECT_EQ(many.rule, "operand-count");
-  EXPECT_EQ(many.line, 2u);
-  EXPECT_EQ(many.col, 13u);
-  auto none = first_error("ps_1_4\nphase r0\n");
-  EXPECT_EQ(none.rule, "operand-count");
-  EXPECT_EQ(none.col, 7u);
+  expect_first_errors({
+      {.text = "vs_1_1\nadd r0, r1\n",
+       .rule = "operand-count",
+       .line = 2,
+       .col = 1,
+       .message_has = "3 operands"},
+      {.text = "vs_1_1\nmov r0, r1, r2\n", .rule = "operand-count", .line = 2, .col = 13},
+      {.text = "ps_1_4\nphase r0\n", .rule = "operand-count", .col = 7},
+  });
 }
 
 } // namespace

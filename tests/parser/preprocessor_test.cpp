@@ -2,6 +2,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "temp_dir.h"
 #include "test_util.h"
 
 namespace tierlift::as::test {
@@ -53,10 +54,11 @@ TEST(Preprocessor, SelfReferenceDoesNotLoopAndUndefWorks) {
   ASSERT_EQ(p.code.size(), 3u);
   EXPECT_EQ(p.code[1].src[0].index, 1u);
   EXPECT_EQ(p.code[2].src[0].index, 0u);
-  auto e = first_error("vs_1_1\n#define A B\n#define B A\nmov A, v0\n");
-  EXPECT_EQ(e.rule, "unknown-register"); // A → B → A stops; 'A' is no register
-  EXPECT_EQ(e.line, 4u);
-  EXPECT_EQ(e.col, 5u);
+  // A → B → A stops; 'A' is no register.
+  expect_first_errors({{.text = "vs_1_1\n#define A B\n#define B A\nmov A, v0\n",
+                        .rule = "unknown-register",
+                        .line = 4,
+                        .col = 5}});
 }
 
 TEST(Preprocessor, ConditionalsWithExpressions) {
@@ -91,36 +93,32 @@ TEST(Preprocessor, CommandLineDefines) {
 }
 
 TEST(Preprocessor, ErrorsAndUnterminatedIf) {
-  auto e = first_error("vs_1_1\n#error stop here\nmov r0, v0\n");
-  EXPECT_EQ(e.rule, "preprocessor");
-  EXPECT_EQ(e.line, 2u);
-  EXPECT_EQ(e.col, 1u);
-  EXPECT_NE(e.message.find("stop here"), std::string::npos);
-  auto u = first_error("vs_1_1\nmov r0, v0\n  #if 1\nmov r1, v0\n");
-  EXPECT_EQ(u.rule, "preprocessor");
-  EXPECT_EQ(u.line, 3u);
-  EXPECT_EQ(u.col, 3u);
-  auto d = first_error("vs_1_1\n#if 1 / 0\n#endif\n");
-  EXPECT_EQ(d.rule, "preprocessor");
-  auto x = first_error("vs_1_1\n#endif\n");
-  EXPECT_EQ(x.rule, "preprocessor");
-  auto m = first_error("vs_1_1\n#define F(a, b) a b\nF(mov)\n");
-  EXPECT_EQ(m.rule, "preprocessor");
-  EXPECT_EQ(m.line, 3u);
+  expect_first_errors({
+      {.text = "vs_1_1\n#error stop here\nmov r0, v0\n",
+       .rule = "preprocessor",
+       .line = 2,
+       .col = 1,
+       .message_has = "stop here"},
+      {.text = "vs_1_1\nmov r0, v0\n  #if 1\nmov r1, v0\n",
+       .rule = "preprocessor",
+       .line = 3,
+       .col = 3},
+      {.text = "vs_1_1\n#if 1 / 0\n#endif\n", .rule = "preprocessor"},
+      {.text = "vs_1_1\n#endif\n", .rule = "preprocessor"},
+      {.text = "vs_1_1\n#define F(a, b) a b\nF(mov)\n", .rule = "preprocessor", .line = 3},
+  });
 }
 
 TEST(Preprocessor, DeeplyNestedExpressionsAndMacrosAreBounded) {
-  auto parens = first_error("vs_1_1\n#if " + std::string(100000, '(') + "1\n#endif\n");
-  EXPECT_EQ(parens.rule, "preprocessor");
-  auto unary = first_error("vs_1_1\n#if " + std::string(100000, '-') + "1\n#endif\n");
-  EXPECT_EQ(unary.rule, "preprocessor");
   std::string chain = "vs_1_1\n";
   for (int i = 0; i < 200; ++i)
     chain += "#define M" + std::to_string(i) + " M" + std::to_string(i + 1) + "\n";
   chain += "mov r0, M0\n";
-  auto deep = first_error(chain);
-  EXPECT_EQ(deep.rule, "preprocessor"); // 64 levels of expansion at most
-  EXPECT_EQ(deep.line, 202u);
+  expect_first_errors({
+      {.text = "vs_1_1\n#if " + std::string(100000, '(') + "1\n#endif\n", .rule = "preprocessor"},
+      {.text = "vs_1_1\n#if " + std::string(100000, '-') + "1\n#endif\n", .rule = "preprocessor"},
+      {.text = chain, .rule = "preprocessor", .line = 202}, // 64 levels of expansion at most
+  });
 }
 
 TEST(Preprocessor, ExponentialMacrosAreCutOff) {
@@ -135,13 +133,7 @@ TEST(Preprocessor, ExponentialMacrosAreCutOff) {
 
 class PreprocessorInclude : public ::testing::Test {
 protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("tierlift_pp_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-            "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_ / "inc");
-  }
-  void TearDown() override { fs::remove_all(dir_); }
+  void SetUp() override { fs::create_directories(dir_ / "inc"); }
   void write(const fs::path& rel, const std::string& text) {
     std::ofstream(dir_ / rel, std::ios::binary) << text;
   }
@@ -150,7 +142,8 @@ protected:
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     return parse_text(text, (dir_ / rel).string(), opts);
   }
-  fs::path dir_;
+  tierlift::test::TempDir tmp_{"pp"};
+  const fs::path dir_ = tmp_.path();
 };
 
 TEST_F(PreprocessorInclude, RelativeToTheIncludingFileThenIncludeDirs) {

@@ -25,10 +25,8 @@ TEST(ParserVersion, BothSpellingsGiveTheSameProfile) {
 }
 
 TEST(ParserVersion, UnsupportedVersionIsNamed) {
-  auto e = first_error("ps_3_0\nmov oC0, r0\n");
-  EXPECT_EQ(e.rule, "unsupported-version");
-  EXPECT_EQ(e.line, 1u);
-  EXPECT_EQ(e.col, 1u);
+  expect_first_errors(
+      {{.text = "ps_3_0\nmov oC0, r0\n", .rule = "unsupported-version", .line = 1, .col = 1}});
 }
 
 TEST(ParserComments, AllCommentFormsAreIgnored) {

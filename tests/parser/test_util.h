@@ -1,6 +1,8 @@
 // Helpers shared by the parser tests.
 #pragma once
 
+#include <initializer_list>
+#include <optional>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -39,6 +41,39 @@ inline FirstError first_error(const std::string& text, const ParseOptions& opts 
       break;
     }
   return e;
+}
+
+// One expected first error; a field left unset is not checked, since many cases pin
+// only the rule or the column that the case is about.
+struct ErrorCase {
+  std::string text = {};
+  std::string rule = {};
+  std::optional<uint32_t> line = {}, col = {}, length = {};
+  std::optional<size_t> errors = {};
+  std::string message_has = {}; // a part the message must contain; empty: not checked
+};
+inline void expect_first_errors(std::initializer_list<ErrorCase> cases,
+                                const ParseOptions& opts = {}) {
+  for (const ErrorCase& c : cases) {
+    SCOPED_TRACE("in:\n" + c.text);
+    FirstError e = first_error(c.text, opts);
+    EXPECT_EQ(e.rule, c.rule);
+    if (c.line) {
+      EXPECT_EQ(e.line, *c.line);
+    }
+    if (c.col) {
+      EXPECT_EQ(e.col, *c.col);
+    }
+    if (c.length) {
+      EXPECT_EQ(e.length, *c.length);
+    }
+    if (c.errors) {
+      EXPECT_EQ(e.errors, *c.errors);
+    }
+    if (!c.message_has.empty()) {
+      EXPECT_NE(e.message.find(c.message_has), std::string::npos) << e.message;
+    }
+  }
 }
 
 } // namespace tierlift::as::test

@@ -95,9 +95,7 @@ TIERLIFT_RULE_SUITE(DataflowRules, kCases);
 
 // Every missing component is reported, and every error of a listing in one run.
 TEST(DataflowRulesExtra, AllErrorsInOneRun) {
-  auto r = tierlift::vtest::run("vs_1_1\nadd r0, r1, r2\nmov oPos, r3\n");
-  ASSERT_TRUE(r.parsed.program);
-  EXPECT_EQ(r.diags.error_count(), 3u) << tierlift::vtest::dump(r);
+  EXPECT_TRUE(tierlift::vtest::has_errors("vs_1_1\nadd r0, r1, r2\nmov oPos, r3\n", 3));
 }
 
 } // namespace

@@ -81,6 +81,27 @@ inline ::testing::AssertionResult is_clean(const std::string& text) {
   return ::testing::AssertionSuccess();
 }
 
+// Valid (is_clean), with the warning `rule` at line:col mentioning every string of
+// `mentions`: a listing a device takes with a remark.
+inline ::testing::AssertionResult only_warns(const std::string& text, const std::string& rule,
+                                             uint32_t line, uint32_t col,
+                                             const std::vector<std::string>& mentions) {
+  ::testing::AssertionResult clean = is_clean(text);
+  if (!clean) return clean;
+  return has_warning(text, rule, line, col, mentions);
+}
+
+// Parses, and validation reports exactly `n` errors.
+inline ::testing::AssertionResult has_errors(const std::string& text, size_t n) {
+  Run r = run(text);
+  if (!r.parsed.program)
+    return ::testing::AssertionFailure() << "listing does not parse:\n" << dump(r);
+  if (r.diags.error_count() != n)
+    return ::testing::AssertionFailure() << r.diags.error_count() << " errors, not " << n << ":\n"
+                                         << dump(r);
+  return ::testing::AssertionSuccess();
+}
+
 // A case of the rule tables: `bad` breaks the rule (error `rule` at line:col mentioning
 // `mentions`), `good` is the nearest listing that keeps it (no error at all).
 struct RuleCase {

@@ -22,6 +22,9 @@
 #include <cfloat>
 #include <cmath>
 #include <limits>
+#include <set>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include <fmt/format.h>
@@ -153,6 +156,21 @@ struct DiffSetup {
   img::Format format = img::Format::RGBA32F;
 };
 
+// n textures on stages 0..n-1, texture k drawn from s.seed·10 + k.
+inline void add_random_textures(DiffSetup& s, uint32_t n, InputRange r, uint32_t w = kDiffW,
+                                uint32_t h = kDiffH) {
+  for (uint32_t k = 0; k < n; ++k) s.textures.push_back(random_texture(s.seed * 10 + k, r, w, h));
+}
+
+// The first word of each line of `listing`, cut at the first of `ends`: the mnemonics a case
+// table covers, for the tests that every opcode of a family has a case.
+inline void add_mnemonics(std::set<std::string>& covered, const std::string& listing,
+                          const char* ends) {
+  std::istringstream in(listing);
+  std::string line;
+  while (std::getline(in, line)) covered.insert(line.substr(0, line.find_first_of(ends)));
+}
+
 // The full-screen quad (v0 corners, v3 quad-uv) or one triangle per pixel carrying random
 // v1..v4 (see the header comment).
 inline void set_geometry(cpu::Pass& pass, const DiffSetup& s) {
@@ -278,6 +296,12 @@ inline void expect_agree(const DiffResult& r, const std::string& what) {
   EXPECT_LE(r.diff.max_scaled, 1e-5) << what << ": " << r.diff.first_bad;
   if (r.diff.max_scaled > 1e-6)
     std::printf("[vk-agreement] note: %s: max scaled diff %.3g\n", what.c_str(), r.diff.max_scaled);
+}
+
+// expect_agree, and the case's differences counted into its family's maxima.
+inline void expect_agree(const DiffResult& r, const std::string& what, FamilyMax& family) {
+  expect_agree(r, what);
+  family.add(r.diff);
 }
 
 } // namespace tierlift::vulkan::test

@@ -76,13 +76,11 @@ TEST_P(Ps1xDiff, CpuAndVulkanAgree) {
   for (uint64_t seed : {1, 2, 3}) {
     DiffSetup s;
     s.seed = seed;
-    for (uint32_t k = 0; k < 3; ++k)
-      s.textures.push_back(random_texture(seed * 10 + k, {-0.5f, 1.5f, 0.15f}));
+    add_random_textures(s, 3, {-0.5f, 1.5f, 0.15f});
     s.ps_c = random_constants(seed * 100, 8, {-1.5f, 1.5f, 0.1f});
     s.vs_c = random_constants(seed * 1000, 2, {-0.25f, 1.25f, 0.0f});
     DiffResult r = run_diff(*dev, kVs11, ps_text(c), s);
-    expect_agree(r, fmt::format("{} {} seed {}", c.profile, c.name, seed));
-    g_ps1x.add(r.diff);
+    expect_agree(r, fmt::format("{} {} seed {}", c.profile, c.name, seed), g_ps1x);
   }
 }
 

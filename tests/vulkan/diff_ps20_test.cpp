@@ -81,14 +81,13 @@ TEST_P(Ps20Diff, CpuAndVulkanAgree) {
   for (uint64_t seed : {1, 2}) {
     DiffSetup s;
     s.seed = seed;
-    for (uint32_t k = 0; k < 3; ++k) s.textures.push_back(random_texture(seed * 10 + k, {}));
+    add_random_textures(s, 3, {});
     // s3 feeds sincos, whose input must lie in [−π, π] (docs/d3d9-rules.md §5.1).
     s.textures.push_back(random_texture(seed * 10 + 3, {-3.14159f, 3.14159f, 0.0f}));
     s.ps_c = random_constants(seed * 100, 8, {-2, 2, 0.2f});
     s.ps_c[6] = {1e-40f, -1e-40f, 0x1p-140f, -0x1p-140f};
     DiffResult r = run_diff(*dev, kQuadVs, ps_text(c.body), s);
-    expect_agree(r, fmt::format("{} seed {}", c.name, seed));
-    g_ps20.add(r.diff);
+    expect_agree(r, fmt::format("{} seed {}", c.name, seed), g_ps20);
   }
 }
 
@@ -98,11 +97,7 @@ INSTANTIATE_TEST_SUITE_P(Ops, Ps20Diff, ::testing::ValuesIn(kPs20Cases),
 // Every arithmetic row of the opcode table legal in ps_2_0 has a case above.
 TEST(Ps20DiffCoverage, EveryArithmeticOpcodeHasACase) {
   std::set<std::string> covered;
-  for (const OpCase& c : kPs20Cases) {
-    std::istringstream in(c.body);
-    std::string line;
-    while (std::getline(in, line)) covered.insert(line.substr(0, line.find_first_of(" _")));
-  }
+  for (const OpCase& c : kPs20Cases) add_mnemonics(covered, c.body, " _");
   for (const ir::OpInfo& row : ir::opcode_table())
     if (row.cls == ir::OpClass::Arith && ir::legal_in(row, ir::Profile::ps_2_0)) {
       EXPECT_TRUE(covered.count(std::string(row.mnemonic))) << row.mnemonic;

@@ -70,8 +70,7 @@ TEST_P(AddrDiff, CpuAndVulkanAgree) {
     s.seed = seed;
     // Signed data (bump offsets, normals) in [−1, 1]; no inf/NaN, which would make the
     // dependent coordinates themselves undefined.
-    for (uint32_t k = 0; k < 4; ++k)
-      s.textures.push_back(random_texture(seed * 10 + k, {-1, 1, 0}, 8, 8));
+    add_random_textures(s, 4, {-1, 1, 0}, 8, 8);
     s.vs_c = kVsConsts;
     s.ps_c = random_constants(seed * 100, 2, {-1, 1, 0});
     DiffResult r = run_diff_with(*dev, kVs, c.ps, s, [&](cpu::Pass& p) {
@@ -84,9 +83,8 @@ TEST_P(AddrDiff, CpuAndVulkanAgree) {
             seed == 2 ? cpu::AddressMode::Wrap : cpu::AddressMode::Clamp;
       }
     });
-    expect_agree(r, fmt::format("{} seed {}", c.name, seed));
+    expect_agree(r, fmt::format("{} seed {}", c.name, seed), g_addr);
     print_case_agreement(r, fmt::format("{} seed {}", c.name, seed));
-    g_addr.add(r.diff);
     // Not a degenerate case: the pixels differ (dependent reads hit several texels; texkill
     // keeps some pixels and discards others).
     std::set<std::array<float, 4>> distinct;
@@ -102,11 +100,7 @@ INSTANTIATE_TEST_SUITE_P(TexAddr, AddrDiff, ::testing::ValuesIn(kAddrCases),
 // Every texture-address opcode of ps_1_1…1_4 (and phase) has a case above.
 TEST(AddrDiffCoverage, EveryTextureAddressOpcodeHasACase) {
   std::set<std::string> covered;
-  for (const AddrCase& c : kAddrCases) {
-    std::istringstream in(c.ps);
-    std::string line;
-    while (std::getline(in, line)) covered.insert(line.substr(0, line.find(' ')));
-  }
+  for (const AddrCase& c : kAddrCases) add_mnemonics(covered, c.ps, " ");
   for (const char* m :
        {"texbem",     "texbeml",    "texm3x2pad",  "texm3x2tex",   "texm3x2depth", "texm3x3pad",
         "texm3x3",    "texm3x3tex", "texm3x3spec", "texm3x3vspec", "texreg2ar",    "texreg2gb",

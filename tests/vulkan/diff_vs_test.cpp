@@ -94,18 +94,15 @@ TEST_P(VsDiff, CpuAndVulkanAgree) {
     DiffResult r;
     if (c.vs20) {
       r = run_diff(*dev, vs_text(c, false, "oT0"), kPsFromT0, s);
-      expect_agree(r, fmt::format("vs_2_0 {} seed {}", c.name, seed));
-      g_vs20.add(r.diff);
+      expect_agree(r, fmt::format("vs_2_0 {} seed {}", c.name, seed), g_vs20);
     }
     if (c.vs11) {
       r = run_diff(*dev, vs_text(c, true, "oT0"), kPsFromT0, s);
-      expect_agree(r, fmt::format("vs_1_1 {} seed {}", c.name, seed));
-      g_vs11.add(r.diff);
+      expect_agree(r, fmt::format("vs_1_1 {} seed {}", c.name, seed), g_vs11);
     }
     // Through oD0: saturated per vertex, then read as v0 (saturated again) by the pixel shader.
     r = run_diff(*dev, vs_text(c, !c.vs20, "oD0"), kPsFromV0, s);
-    expect_agree(r, fmt::format("{} via oD0 seed {}", c.name, seed));
-    g_vsd0.add(r.diff);
+    expect_agree(r, fmt::format("{} via oD0 seed {}", c.name, seed), g_vsd0);
   }
 }
 

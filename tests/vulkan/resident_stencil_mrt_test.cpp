@@ -4,6 +4,8 @@
 // worked out by hand in the comments (the same table tests/cpu_draw/stencil_mrt_test.cpp
 // checks the CPU device against); the device runs with validation and synchronization
 // validation on, so a missing barrier between the stencil's uses fails the test too.
+#include <optional>
+
 #include "resident_fixture.h"
 
 namespace tierlift::vulkan::test {
@@ -155,6 +157,21 @@ TEST_F(ResidentTest, StencilOperationsAndComparisonsFollowD3D9) {
       EXPECT_TRUE(set.draw(p, StageTextures{}, t).ok());
     }
   };
+  // One full-width draw over freshly stored columns, its stencil state set by `state`, and
+  // then the stencil (or the colour) target read back; nothing when the draw or read failed.
+  auto draw_and_read = [&](auto state, bool stencil) -> std::optional<img::Image> {
+    TextureSet set(*dev);
+    RenderTargets t;
+    fresh(set, t);
+    cpu::Pass p = columns({1, 1, 1, 1}, 0, kW);
+    p.depth_stencil.stencil_test = true;
+    state(p.depth_stencil);
+    img::Image out;
+    if (!set.draw(p, StageTextures{}, t).ok() ||
+        !succeeded(set.read(stencil ? t.stencil : t.color[0]), out))
+      return std::nullopt;
+    return out;
+  };
   struct OpCase {
     pass::StencilOp op;
     uint32_t write_mask;
@@ -174,20 +191,16 @@ TEST_F(ResidentTest, StencilOperationsAndComparisonsFollowD3D9) {
       {pass::StencilOp::Invert, 0x0f, {0x0f, 0x0e, 0x0a, 0x55, 0xf1, 0xf0, 0x1d, 0x1c}},
   };
   for (const OpCase& oc : ops) {
-    TextureSet set(*dev);
-    RenderTargets t;
-    fresh(set, t);
-    cpu::Pass p = columns({1, 1, 1, 1}, 0, kW);
-    p.depth_stencil.stencil_test = true;
-    p.depth_stencil.stencil_pass = oc.op;
-    p.depth_stencil.stencil_ref = 0x3c;
-    p.depth_stencil.stencil_write_mask = oc.write_mask;
-    ASSERT_TRUE(set.draw(p, StageTextures{}, t).ok());
-    img::Image st;
-    ASSERT_TRUE(succeeded(set.read(t.stencil), st));
-    for (uint32_t x = 0; x < kW; ++x)
-      EXPECT_EQ(stencil_at(st, x), oc.want[x])
-          << "op " << int(oc.op) << " mask " << oc.write_mask << " column " << x;
+    SCOPED_TRACE(testing::Message() << "op " << int(oc.op) << " mask " << oc.write_mask);
+    const std::optional<img::Image> st = draw_and_read(
+        [&](auto& ds) {
+          ds.stencil_pass = oc.op;
+          ds.stencil_ref = 0x3c;
+          ds.stencil_write_mask = oc.write_mask;
+        },
+        true);
+    ASSERT_TRUE(st);
+    for (uint32_t x = 0; x < kW; ++x) EXPECT_EQ(stencil_at(*st, x), oc.want[x]) << "column " << x;
   }
   struct FuncCase {
     pass::CompareFunc f;
@@ -208,20 +221,17 @@ TEST_F(ResidentTest, StencilOperationsAndComparisonsFollowD3D9) {
       {pass::CompareFunc::Greater, 0x0f, {1, 1, 0, 0, 0, 0, 1, 1}},
   };
   for (const FuncCase& fc : funcs) {
-    TextureSet set(*dev);
-    RenderTargets t;
-    fresh(set, t);
-    cpu::Pass p = columns({1, 1, 1, 1}, 0, kW);
-    p.depth_stencil.stencil_test = true;
-    p.depth_stencil.stencil_func = fc.f;
-    p.depth_stencil.stencil_ref = 5;
-    p.depth_stencil.stencil_read_mask = fc.read_mask;
-    ASSERT_TRUE(set.draw(p, StageTextures{}, t).ok());
-    img::Image c;
-    ASSERT_TRUE(succeeded(set.read(t.color[0]), c));
+    SCOPED_TRACE(testing::Message() << "func " << int(fc.f) << " read mask " << fc.read_mask);
+    const std::optional<img::Image> c = draw_and_read(
+        [&](auto& ds) {
+          ds.stencil_func = fc.f;
+          ds.stencil_ref = 5;
+          ds.stencil_read_mask = fc.read_mask;
+        },
+        false);
+    ASSERT_TRUE(c);
     for (uint32_t x = 0; x < kW; ++x)
-      EXPECT_EQ(c.at(x, 1)[0], fc.want[x] ? 1.0f : 0.0f)
-          << "func " << int(fc.f) << " read mask " << fc.read_mask << " column " << x;
+      EXPECT_EQ(c->at(x, 1)[0], fc.want[x] ? 1.0f : 0.0f) << "column " << x;
   }
 }
 
