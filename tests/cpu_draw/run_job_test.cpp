@@ -32,10 +32,10 @@ using pass::RunDiagnostics;
 using pass::RunRequest;
 using pass::StageMask;
 using pass::TextureSetting;
-using test::kRunRule;
-using test::run_job;
-using test::run_pass;
-using test::RunResult;
+using ::tierlift::test::kRunRule;
+using ::tierlift::test::run_job;
+using ::tierlift::test::run_pass;
+using ::tierlift::test::RunResult;
 
 using namespace tierlift::cli; // the flag parsers
 
