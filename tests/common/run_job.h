@@ -4,7 +4,6 @@
 // cpu::draw do for it without the graph around them.
 #pragma once
 
-#include <chrono>
 #include <new>
 #include <string>
 #include <vector>
@@ -26,18 +25,10 @@ using pass::RunRequest;
 struct RunResult {
   img::Image image;
   std::vector<ProbeValue> probes;
-  cpu::DrawStats stats;
-  double setup_ms = 0, draw_ms = 0;
 };
 
 // The rule of run_pass's and run_job's failures; their diagnostics are in `diags`.
 inline constexpr std::string_view kRunRule = "run";
-
-using Clock = std::chrono::steady_clock;
-
-inline double ms_since(Clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
 
 // Reports the error to `diags.other` (where the CLI renders it) and returns it as the run's
 // failure.
@@ -47,13 +38,11 @@ inline ir::Failure run_error(RunDiagnostics& diags, std::string rule, std::strin
 }
 
 // Draws `pass` into a new `width`×`height` target of `format` and reads `probes`. On any
-// error (reported in diags.other) a failure (rule kRunRule) with that error's message;
-// warnings never stop the run.
+// error (reported in diags.other) a failure (rule kRunRule) with that error's message.
 inline ir::Result<RunResult> run_pass(const Pass& pass, uint32_t width, uint32_t height,
                                       img::Format format, const std::vector<ProbePoint>& probes,
                                       unsigned threads, RunDiagnostics& diags) {
   RunResult result;
-  auto t0 = Clock::now();
   try { // a 16384² float target is 4 GiB: running out of memory is an error, not a crash
     result.image = img::Image(width, height, format);
   } catch (const std::bad_alloc&) {
@@ -61,17 +50,8 @@ inline ir::Result<RunResult> run_pass(const Pass& pass, uint32_t width, uint32_t
         diags, "memory",
         fmt::format("not enough memory for a {}x{} target and its textures", width, height));
   }
-  result.setup_ms = ms_since(t0);
-
-  auto t1 = Clock::now();
   ir::Result<cpu::DrawStats> stats = cpu::draw(pass, result.image, threads);
-  result.draw_ms = ms_since(t1);
   if (!stats) return run_error(diags, std::string(cpu::kDrawRule), stats.message());
-  result.stats = *stats;
-  if (result.stats.triangles == 0)
-    diags.other.warning({}, "nothing-drawn",
-                        "no triangle reached the screen (the vertex listing's oPos is "
-                        "degenerate, behind the eye or clipped away): the image is empty");
   for (const ProbePoint& p : probes)
     if (p.x >= width || p.y >= height)
       return run_error(
@@ -80,18 +60,14 @@ inline ir::Result<RunResult> run_pass(const Pass& pass, uint32_t width, uint32_t
   result.probes = pass::read_probes(result.image, probes);
   return result;
 }
+
 // prepare_pass, then run_pass. On any error (reported in `diags`) a failure (rule kRunRule)
 // with the first error's message.
 inline ir::Result<RunResult> run_job(const RunRequest& req, RunDiagnostics& diags) {
-  auto t0 = Clock::now();
   ir::Result<Pass> pass = pass::prepare_pass(req);
   pass::add_by_listing(diags, pass.diagnostics());
   if (!pass) return ir::fail("", std::string(kRunRule), pass.message());
-  const double prepare_ms = ms_since(t0);
-  ir::Result<RunResult> result =
-      run_pass(*pass, req.width, req.height, req.format, req.probes, req.threads, diags);
-  if (result) result->setup_ms += prepare_ms;
-  return result;
+  return run_pass(*pass, req.width, req.height, req.format, req.probes, req.threads, diags);
 }
 
 } // namespace tierlift::test
