@@ -72,11 +72,6 @@ std::string rewrite_varyings(std::string& text) {
 
 } // namespace
 
-ir::Failure rendered_failure(const std::string& file, std::string_view rule, std::string text) {
-  return ir::Failure{{ir::Diagnostic{ir::Severity::Error, ir::SourceLoc{}, std::move(text),
-                                     std::string(rule), file}}};
-}
-
 CompileResult compile_fragment(std::string_view source, const std::string& file_name) {
   init_glslang();
   const std::string text(source); // what diagnostics show
@@ -102,14 +97,14 @@ CompileResult compile_fragment(std::string_view source, const std::string& file_
   // 4.50 core whatever the source's #version says: the preamble's `layout` needs it, and the
   // legacy names it replaces are what a 1.10 source would use.
   if (!shader.parse(GetDefaultResources(), 450, ECoreProfile, true, false, kMessages)) {
-    return rendered_failure(file_name, kGlslRule,
-                            render_glslang_log(shader.getInfoLog(), text, file_name));
+    return ir::fail_rendered(file_name, std::string(kGlslRule),
+                             render_glslang_log(shader.getInfoLog(), text, file_name));
   }
   glslang::TProgram program;
   program.addShader(&shader);
   if (!program.link(kMessages) || !program.mapIO()) {
-    return rendered_failure(file_name, kGlslRule,
-                            render_glslang_log(program.getInfoLog(), text, file_name));
+    return ir::fail_rendered(file_name, std::string(kGlslRule),
+                             render_glslang_log(program.getInfoLog(), text, file_name));
   }
   program.buildReflection(EShReflectionIntermediateIO); // a fragment stage alone has inputs
   FragmentShader fs;
@@ -118,8 +113,8 @@ CompileResult compile_fragment(std::string_view source, const std::string& file_
     const glslang::TObjectReflection& u = program.getUniform(i);
     const glslang::TType* type = u.getType();
     if (!type || type->getBasicType() != glslang::EbtSampler) {
-      return rendered_failure(
-          file_name, kGlslRule,
+      return ir::fail_rendered(
+          file_name, std::string(kGlslRule),
           render_at_name(u.name,
                          fmt::format("uniform '{}': a GLSL pass takes sampler uniforms "
                                      "only (its textures); put constants in the source",
@@ -129,8 +124,8 @@ CompileResult compile_fragment(std::string_view source, const std::string& file_
     const int binding = u.getBinding();
     if (binding < static_cast<int>(kFirstSamplerBinding) ||
         binding >= static_cast<int>(kFirstSamplerBinding + 16)) {
-      return rendered_failure(
-          file_name, kGlslRule,
+      return ir::fail_rendered(
+          file_name, std::string(kGlslRule),
           render_at_name(
               u.name,
               fmt::format(
@@ -160,9 +155,9 @@ CompileResult compile_fragment(std::string_view source, const std::string& file_
   spv.validate = false; // spirv-val below, with the rules tierlift's own modules meet
   glslang::GlslangToSpv(*program.getIntermediate(EShLangFragment), fs.spirv, &spv);
   if (ir::Status valid = codegen::validate(fs.spirv); !valid) {
-    return rendered_failure(file_name, kGlslRule,
-                            fmt::format("{}: error: spirv-val rejects glslang's SPIR-V: {}\n",
-                                        file_name, valid.message()));
+    return ir::fail_rendered(file_name, std::string(kGlslRule),
+                             fmt::format("{}: error: spirv-val rejects glslang's SPIR-V: {}\n",
+                                         file_name, valid.message()));
   }
   return fs;
 }
@@ -173,7 +168,7 @@ CompileResult compile_fragment_file(const std::string& path) {
     // "PATH: why" → "PATH: error: why", the form of the other diagnostics.
     std::string why = text.message();
     if (why.starts_with(path + ": ")) why.erase(0, path.size() + 2);
-    return rendered_failure(path, kIoRule, fmt::format("{}: error: {}\n", path, why));
+    return ir::fail_rendered(path, std::string(kIoRule), fmt::format("{}: error: {}\n", path, why));
   }
   if (text->starts_with("\xEF\xBB\xBF")) text->erase(0, 3); // a byte-order mark is no text
   return compile_fragment(*text, path);

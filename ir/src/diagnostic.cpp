@@ -163,6 +163,11 @@ Failure fail_at(SourceLoc loc, std::string rule, std::string message) {
       Severity::Error, loc, shorten_long_words(std::move(message)), std::move(rule), {}}}};
 }
 
+Failure fail_rendered(std::string subject, std::string rule, std::string rendered) {
+  return Failure{{Diagnostic{Severity::Error, SourceLoc{}, std::move(rendered), std::move(rule),
+                             std::move(subject)}}};
+}
+
 Failure fail(const DiagnosticSink& sink) {
   assert(sink.has_errors());
   return Failure{sink.all()};

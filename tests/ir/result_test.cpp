@@ -67,4 +67,17 @@ TEST(Result, SubjectRendersInTheFileNamesPlace) {
             "a.psh:2:10: error: bad register [reg]\n    mov oC0, r9\n             ^~\n");
 }
 
+// A rendered message quotes its source line: fail_rendered keeps it whole, where fail cuts a
+// word past kMaxEchoedWord bytes (a 50 MB token must not reach standard error).
+TEST(Result, RenderedFailureKeepsItsTextWhole) {
+  const std::string word(ir::kMaxEchoedWord + 1, 'x');
+  const std::string text = "a.frag:1:1: error: '" + word + "' undeclared\n  " + word + "\n  ^\n";
+  ir::Status kept = ir::fail_rendered("a.frag", "glsl", text);
+  ASSERT_FALSE(kept.ok());
+  EXPECT_EQ(kept.message(), text);
+  EXPECT_EQ(kept.diagnostics()[0].rule, "glsl");
+  EXPECT_EQ(kept.diagnostics()[0].subject, "a.frag");
+  EXPECT_NE(ir::Status(ir::fail("a.frag", "glsl", text)).message(), text);
+}
+
 } // namespace

@@ -20,8 +20,8 @@ glsl::CompileResult load_glsl(const std::string& file, std::string_view builtin)
   if (!file.empty()) return glsl::compile_fragment_file(file);
   std::optional<std::string_view> text = listings::find_embedded(builtin);
   if (!text)
-    return glsl::rendered_failure(std::string(builtin), glsl::kGlslRule,
-                                  fmt::format("no built-in GLSL '{}'\n", builtin));
+    return ir::fail_rendered(std::string(builtin), std::string(glsl::kGlslRule),
+                             fmt::format("no built-in GLSL '{}'\n", builtin));
   return glsl::compile_fragment(*text, "listings/" + std::string(builtin));
 }
 

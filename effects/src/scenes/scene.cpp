@@ -34,11 +34,6 @@ std::string file_error(const std::string& path, const std::string& message) {
 
 } // namespace
 
-ir::Failure scene_failure(std::string_view rule, std::string subject, std::string rendered) {
-  return ir::Failure{{ir::Diagnostic{ir::Severity::Error, ir::SourceLoc{}, std::move(rendered),
-                                     std::string(rule), std::move(subject)}}};
-}
-
 std::vector<std::string> glow_warnings(const GlowParams& params) {
   std::vector<std::string> out;
   const double sum = profile_weight_sum(params.profile);
@@ -102,7 +97,8 @@ ir::Result<Scene> load_scene_file(const std::string& path) {
   const std::string name = path == "-" ? "<stdin>" : path;
   // Within the scene cap: a device or a pipe given as the scene is refused after 1 MiB.
   ir::Result<std::string> text = io::read_bounded(path, io::kSceneCap);
-  if (!text) return scene_failure(kSceneIoRule, name, file_error(name, text.message()));
+  if (!text)
+    return ir::fail_rendered(name, std::string(kSceneIoRule), file_error(name, text.message()));
   const std::string base_dir =
       path == "-" ? std::string() : std::filesystem::path(path).parent_path().string();
   return parse_scene(*text, name, base_dir);
@@ -120,8 +116,9 @@ Scene default_scene() {
 ir::Result<Scene> scene_from_png(const std::string& png_path) {
   img::ImageResult png = img::read_image(png_path); // PNG, or PFM for HDR values
   if (!png)
-    return scene_failure(img::is_io_error(png) ? kSceneIoRule : kSceneRule, png_path,
-                         file_error(png_path, png.message()));
+    return ir::fail_rendered(png_path,
+                             std::string(img::is_io_error(png) ? kSceneIoRule : kSceneRule),
+                             file_error(png_path, png.message()));
   Scene s;
   s.image = png_path;
   s.params.width = png->width;

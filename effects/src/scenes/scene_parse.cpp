@@ -190,7 +190,7 @@ ir::Result<Scene> parse_scene(std::string_view json_text, const std::string& fil
   if (check.failed() || !scene) {
     ir::DiagnosticSink sink;
     check.move_to(sink);
-    return scene_failure(kSceneRule, file_name, ir::render_text(sink, sm));
+    return ir::fail_rendered(file_name, std::string(kSceneRule), ir::render_text(sink, sm));
   }
   return std::move(*scene);
 }

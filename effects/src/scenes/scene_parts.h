@@ -48,10 +48,6 @@ void read_glow_image(const Json& v, FieldChecker& check, const std::string& base
 void read_fog(const Json& v, const std::string& pointer, FieldChecker& check,
               const std::string& base_dir, GlowParams& params);
 
-// The one error of a scene that cannot be had (scene.h): `rendered` kept whole, since it
-// quotes the scene's lines already and ir::fail would shorten them again.
-ir::Failure scene_failure(std::string_view rule, std::string subject, std::string rendered);
-
 // `path` as seen from `base_dir` ("" = the working directory); absolute paths stay.
 std::string resolve_path(const std::string& base_dir, const std::string& path);
 

@@ -51,12 +51,10 @@ struct FragmentShader {
 // kIoRule (the file could not be read: exit 2, not 1). Its message is already rendered,
 // '\n'-ended: "file:line:col: error: message", the source line and a caret (glslang's own
 // messages, positioned; the column is that of the token glslang quotes, 1 when it quotes
-// none); the subject is the file name.
+// none), kept verbatim (ir::fail_rendered); the subject is the file name.
 using CompileResult = ir::Result<FragmentShader>;
 inline constexpr std::string_view kGlslRule = "glsl";
 inline constexpr std::string_view kIoRule = "io";
-// Such a failure (the message kept as rendered, long words and all: it quotes the source).
-ir::Failure rendered_failure(const std::string& file, std::string_view rule, std::string text);
 
 // Compiles legacy (or 4.50 Vulkan) GLSL fragment source. `file_name` is what diagnostics
 // show. A `#version` line of the source is accepted and overridden (4.50 core): the

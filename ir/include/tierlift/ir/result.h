@@ -28,6 +28,11 @@ Failure fail(std::string subject, std::string rule, std::string message);
 Failure fail_at(SourceLoc loc, std::string rule, std::string message);
 // Everything a sink collected (it must hold at least one error).
 Failure fail(const DiagnosticSink& sink);
+// A failure whose message is already rendered text ("file:line:col: error: …", the quoted
+// source line and a caret, '\n'-ended), kept verbatim: no word is shortened, since it quotes
+// the source its positions point into. For errors a library renders itself (a scene's JSON,
+// glslang's log), whose positions no SourceManager of the caller knows.
+Failure fail_rendered(std::string subject, std::string rule, std::string rendered);
 
 template <class T> class [[nodiscard]] Result {
 public:
