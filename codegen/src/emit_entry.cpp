@@ -174,7 +174,7 @@ std::optional<ShaderModule> Emitter::run() {
   }
   for (const auto& [stage, var] : samplers_)
     m.samplers.push_back(
-        {kDescriptorSet, kFirstSamplerBinding + stage, stage, sampler_type(stage)});
+        {kDescriptorSet, kFirstSamplerBinding + stage, stage, sampler_type(stage), fetches(stage)});
   m.spec_constants = spec_info_;
   m.writes_depth = writes_depth_;
   m.uses_kill = uses_kill_;

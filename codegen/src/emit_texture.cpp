@@ -1,6 +1,8 @@
 // Texture instructions (docs/d3d9-rules.md §5.5–§5.7): sampling through combined image samplers
 // at set 0, binding 2 + stage; ps_1_1…1_3 texture-address instructions with their pad
 // rows; texkill as OpKill or OpDemoteToHelperInvocation.
+#include <array>
+
 #include <spirv/unified1/GLSL.std.450.h>
 
 #include "tierlift/codegen/emitter.h"
@@ -47,6 +49,45 @@ Id Emitter::sampler_var(uint32_t stage) {
   return var;
 }
 
+bool Emitter::fetches(uint32_t stage) const {
+  return opt.stage_fetch_unorm8[stage & 15] && sampler_type(stage) == ir::SamplerType::Tex2D;
+}
+
+Id Emitter::fetch_unorm8(Id si, Id uv) {
+  // The texel index point sampling takes on each axis: floor(fl32(u·N)) (one float multiply,
+  // as the interpreter's point_texel), NaN → 0, clamped to [0, N − 1] (CLAMP addressing).
+  b.capability(spv::Capability::ImageQuery);
+  const Id t_ivec2 = b.type_vector(t_int, 2), t_bvec2 = b.type_vector(t_bool, 2);
+  const Id image = b.op(Op::OpImage, b.type_image(t_float, spv::Dim::Dim2D), {si});
+  const Id size = b.op(Op::OpImageQuerySizeLod, t_ivec2, {image, b.const_int(0)});
+  const Id n = b.op(Op::OpConvertSToF, t_vec2, {size});
+  const Id zero2 = b.const_composite(t_vec2, std::array{f(0), f(0)});
+  const Id one2 = b.const_composite(t_vec2, std::array{f(1), f(1)});
+  const Id x = b.op(Op::OpFMul, t_vec2, {uv, n});
+  b.decorate(x, spv::Decoration::NoContraction);
+  const Id finite = b.op(Op::OpSelect, t_vec2, {b.op(Op::OpIsNan, t_bvec2, {x}), zero2, x});
+  const Id floor = b.ext_inst(glsl, t_vec2, GLSLstd450Floor, std::array{finite});
+  const Id last = b.op(Op::OpFSub, t_vec2, {n, one2});
+  const Id clamped = b.ext_inst(glsl, t_vec2, GLSLstd450FClamp, std::array{floor, zero2, last});
+  const Id index = b.op(Op::OpConvertFToS, t_ivec2, {clamped});
+  const Id texel =
+      b.op(Op::OpImageFetch, t_vec4,
+           {image, index, static_cast<uint32_t>(spv::ImageOperandsMask::Lod), b.const_int(0)});
+  // The texel's exact k/255.0f from the device's UNORM value v (which may be an ulp or two
+  // off k/255, as lavapipe's is for 126 of the 256 levels):
+  //   k = roundEven(v·255)                      exact: v is far closer to k/255 than 1/510
+  //   k/255 = (k·65793 + k/255) · 2^-24         since 2^24/255 = 65793 + 1/255
+  //   fl32(k/255) = fl32(k·65793 + v) · 2^-24   k·65793 < 2^24 is exact; v's error is far
+  //                                             below the distance of k·65793 + k/255 from a
+  //                                             rounding boundary (k/255 is a repeating
+  //                                             8-bit pattern), and 2^-24 scales exactly.
+  // Every step is one float operation (tests check all 256 levels, ±2 ulps of v).
+  const Id k =
+      b.ext_inst(glsl, t_vec4, GLSLstd450RoundEven, std::array{fmul(texel, splat(f(255.0f)))});
+  const Id sum = fadd(fmul(k, splat(f(65793.0f))), texel);
+  return fmul(sum, splat(f(0x1p-24f)));
+}
+
 Id Emitter::sample(uint32_t stage, Id coord, std::optional<Id> bias) {
   const Id var = sampler_var(stage);
   const ir::SamplerType type = sampler_type(stage);
@@ -55,6 +96,8 @@ Id Emitter::sample(uint32_t stage, Id coord, std::optional<Id> bias) {
   const Id c = type == ir::SamplerType::Tex2D
                    ? b.op(Op::OpVectorShuffle, t_vec2, {coord, coord, 0, 1})
                    : b.op(Op::OpVectorShuffle, t_vec3, {coord, coord, 0, 1, 2});
+  // A bias changes nothing there: one mip level, POINT both ways.
+  if (fetches(stage)) return fetch_unorm8(si, c);
   if (bias)
     return b.op(Op::OpImageSampleImplicitLod, t_vec4,
                 {si, c, static_cast<uint32_t>(spv::ImageOperandsMask::Bias), *bias});

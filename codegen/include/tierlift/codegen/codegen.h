@@ -48,6 +48,13 @@ struct CodegenOptions {
   std::array<ir::SamplerType, 16> stage_texture_type{};
   // ps_1_1…1_3 D3DTTFF_PROJECTED per stage: tex divides the coordinate by its w.
   std::array<bool, 16> stage_projected{};
+  // Per stage: the stage reads an RGBA8 UNORM texture through a POINT, CLAMP/CLAMP sampler.
+  // A 2D read there fetches the texel itself instead of sampling: the index is the one point
+  // sampling takes (floor(fl32(u·N)), NaN → 0, clamped to the edge) and each stored byte k
+  // becomes k/255.0f correctly rounded, the value a float copy of the texture would hold, in
+  // a few float operations (emit_texture.cpp). The device then binds the RGBA8 image itself.
+  // SamplerInfo::fetch_unorm8 says which stages got it.
+  std::array<bool, 16> stage_fetch_unorm8{};
   bool optimize = false; // run spirv-opt's performance passes after validation
   // Entry point name.
   std::string entry_point = "main";
@@ -87,6 +94,7 @@ struct SamplerInfo {
   uint32_t set = kDescriptorSet, binding = 0;
   uint32_t stage = 0; // s# / texture stage
   ir::SamplerType type = ir::SamplerType::Tex2D;
+  bool fetch_unorm8 = false; // CodegenOptions::stage_fetch_unorm8 applied to this stage
 };
 
 struct SpecConstantInfo {

@@ -101,6 +101,16 @@ std::string host_texture(Device::Impl& d, uint32_t stage, const img::Image& im, 
   return {};
 }
 
+// Whether a stage's reads fetch the stored RGBA8 bytes in place instead of sampling a float
+// shadow (codegen::CodegenOptions::stage_fetch_unorm8): a resident RGBA8 colour texture read
+// with POINT filtering and CLAMP addressing on both axes. The fetch reproduces point
+// sampling's texel and the shadow's exact k/255.0f, so the image is the same; what it saves is
+// the shadow's conversion each time the texture changed.
+bool fetches_in_place(const Resident* r, const pass::SamplerState& s) {
+  return r && !r->stencil && r->format == img::Format::RGBA8 && s.filter == pass::Filter::Point &&
+         s.address_u == pass::AddressMode::Clamp && s.address_v == pass::AddressMode::Clamp;
+}
+
 // The layouts a failed submit must restore (recording already advanced them).
 struct LayoutSnapshot {
   std::vector<std::pair<TrackedImage*, VkImageLayout>> saved;
@@ -191,8 +201,10 @@ std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawText
   auto ps_prog = pass.pixel_program ? pass.pixel_program : passthrough_pixel_program();
   codegen::CodegenOptions co;
   co.conventions = pass.conventions;
-  for (uint32_t s = 0; s < pass::kMaxSamplers; ++s)
+  for (uint32_t s = 0; s < pass::kMaxSamplers; ++s) {
     co.stage_projected[s] = pass.textures[s].stage.projected;
+    co.stage_fetch_unorm8[s] = fetches_in_place(textures.stages[s], pass.textures[s].sampler);
+  }
   ir::DiagnosticSink diags;
   auto pair = codegen::compile_pair(*vs_prog, *ps_prog, co, diags);
   if (!pair) return join_diagnostics(diags);
@@ -220,9 +232,10 @@ std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawText
       const img::Image& im = pass.textures[s].image ? *pass.textures[s].image : unbound;
       err = host_texture(d, si.stage, im, out, r);
     }
-    if (err.empty()) err = ensure_shadow(d, *r);
+    out.fetched[s] = si.fetch_unorm8;
+    if (err.empty() && !si.fetch_unorm8) err = ensure_shadow(d, *r);
     if (!err.empty()) return err;
-    images[s] = &r->sampled();
+    images[s] = si.fetch_unorm8 ? &r->stored.image : &r->sampled();
   }
 
   // Vertex and index buffers.
@@ -315,8 +328,9 @@ std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawText
 }
 
 void record_draw(VkCommandBuffer cb, const Device::Impl& d, PreparedDraw& p) {
-  for (Resident* r : p.sampled)
-    if (r) record_as_sampled(cb, d, *r);
+  for (uint32_t s = 0; s < pass::kMaxSamplers; ++s)
+    if (Resident* r = p.sampled[s])
+      p.fetched[s] ? record_as_fetched(cb, *r) : record_as_sampled(cb, d, *r);
   Resident& target = *p.target;
   record_as_target(cb, target);
   for (Resident* m : p.more_targets)

@@ -39,6 +39,7 @@ struct PreparedDraw {
   Cleanup objects;
   std::vector<std::unique_ptr<Resident>> host_textures;
   std::array<Resident*, pass::kMaxSamplers> sampled{}; // the stages the pixel program reads
+  std::array<bool, pass::kMaxSamplers> fetched{};      // those reading RGBA8 bytes in place
   Resident* target = nullptr;
   std::array<Resident*, 3> more_targets{}; // as in DrawTextures, those the pass draws into
   Resident* stencil = nullptr;

@@ -95,7 +95,8 @@ std::string create_resident(Device::Impl& d, uint32_t width, uint32_t height, im
   const VkFormat vf = vk_format(format);
   VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                             VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-  if (r->samples_stored()) usage |= VK_IMAGE_USAGE_SAMPLED_BIT;
+  // RGBA8 is also read in place: a point read fetches the stored bytes (record_as_fetched).
+  if (r->samples_stored() || format == img::Format::RGBA8) usage |= VK_IMAGE_USAGE_SAMPLED_BIT;
   if (std::string err = create_image(d, r->objects, width, height, vf, usage, r->stored.image);
       !err.empty())
     return err;
@@ -206,6 +207,11 @@ void record_as_sampled(VkCommandBuffer cb, const Device::Impl& d, Resident& r) {
   }
   transition(cb, r.samples_stored() ? r.stored : r.shadow,
              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+}
+
+void record_as_fetched(VkCommandBuffer cb, Resident& r) {
+  clear_if_new(cb, r);
+  transition(cb, r.stored, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
 }
 
 void record_readback(VkCommandBuffer cb, Resident& r, VkBuffer staging) {

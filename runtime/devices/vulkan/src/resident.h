@@ -9,7 +9,10 @@
 // RGBA8 and RGBA16F a float "shadow" copy is made on the device when a pass samples the
 // texture after it changed, exactly: RGBA16F by a same-size NEAREST blit (every half is a
 // float; measured exact for all 63 490 non-NaN halves), RGBA8 through a table of k/255.0f
-// (unorm8_to_float.h: lavapipe's blit is one ulp off in 126 of 256 levels).
+// (unorm8_to_float.h: lavapipe's blit is one ulp off in 126 of 256 levels). A point read of an
+// RGBA8 texture with edge clamping needs no shadow: its shader fetches the stored bytes and
+// converts them exactly itself (record_as_fetched), so the shadow is made only for the other
+// reads (linear filtering, wrap or mirror addressing).
 #pragma once
 
 #include <cstdint>
@@ -73,6 +76,9 @@ void record_as_target(VkCommandBuffer cb, Resident& r);
 void record_as_stencil(VkCommandBuffer cb, Resident& r);
 // Makes the image passes sample current and SHADER_READ_ONLY_OPTIMAL (ensure_shadow first).
 void record_as_sampled(VkCommandBuffer cb, const Device::Impl& d, Resident& r);
+// Makes the stored RGBA8 image itself SHADER_READ_ONLY_OPTIMAL, for a stage whose reads fetch
+// its bytes (codegen::CodegenOptions::stage_fetch_unorm8): no float shadow is made or needed.
+void record_as_fetched(VkCommandBuffer cb, Resident& r);
 // Copies the stored image into `staging` and makes it visible to the host (a stencil
 // buffer: its stencil aspect, one byte per pixel, rows packed).
 void record_readback(VkCommandBuffer cb, Resident& r, VkBuffer staging);
