@@ -4,6 +4,8 @@
 //     GLSL (glsl_glow_peer.h) on the same device, alternating frame for frame; run.sh
 //     prints Vulkan / GLSL (the lift's cost: ≤ 1.0 is the aim);
 //   * BM_Glow_Interpreter/<case>: the steady-state frame on the CPU device;
+//   * BM_Glow_InterpreterVsOpenCV/<case>: the CPU device's frame and OpenCV's, alternating
+//     frame for frame; run.sh prints interpreter / OpenCV (the target is <= 2.0);
 //   * BM_Glow_OpenCV: the same glow written with OpenCV (rgb × alpha, resize INTER_AREA,
 //     sepFilter2D with the plan's own taps, resize INTER_LINEAR, add) in float;
 //   * BM_GlowScale_<device>/<w>x<h>/taps:<n> (glow_frames.h): frame time against size and
@@ -86,6 +88,12 @@ void BM_Glow_OpenCV(benchmark::State& state) {
 
 // ---- the glow on a tierlift device --------------------------------------------------------
 
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n == 0 ? 0.0 : n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+}
+
 void run_device(benchmark::State& state, effects::PassDevice& dev, effects::Tier tier,
                 img::Format format) {
   const effects::PlanResult plan = make_plan(tier, format);
@@ -165,11 +173,6 @@ void BM_Glow_VulkanVsGlsl(benchmark::State& state, effects::Tier tier, img::Form
     ours_ms.push_back(ms(t0, t1));
     peer_ms.push_back(ms(t1, t2));
   }
-  auto median = [](std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n == 0 ? 0.0 : n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
-  };
   state.counters["vulkan_ms"] = median(ours_ms);
   state.counters["glsl_ms"] = median(peer_ms);
   state.counters["vulkan_over_glsl"] = median(ours_ms) / median(peer_ms);
@@ -177,10 +180,62 @@ void BM_Glow_VulkanVsGlsl(benchmark::State& state, effects::Tier tier, img::Form
   state.SetLabel(vk->name());
 }
 
-// The interpreter on every core (threads 0). Seconds a frame: a fixed, small iteration count.
+// The interpreter on every core (threads 0).
 void BM_Glow_Interpreter(benchmark::State& state, effects::Tier tier, img::Format format) {
   effects::CpuPassDevice dev(0);
   run_device(state, dev, tier, format);
+}
+
+// The interpreter against OpenCV, frame for frame, as BM_Glow_VulkanVsGlsl pairs Vulkan with
+// its peer: each iteration runs one interpreter frame (every core) and one OpenCV frame (its
+// own threads), so a load that comes and goes falls on both. Counters: the median frame of
+// each and their ratio (bench/run.sh prints it; the target is <= 2.0). OpenCV runs the float
+// glow whatever the case's format: the peer is the same for every case.
+void BM_Glow_InterpreterVsOpenCV(benchmark::State& state, effects::Tier tier, img::Format format) {
+  const effects::PlanResult plan = make_plan(tier, format);
+  const effects::PlanResult float_plan = make_plan(effects::Tier::Dx9, img::Format::RGBA32F);
+  if (!plan || !float_plan) {
+    state.SkipWithError((plan ? float_plan : plan).message().c_str());
+    return;
+  }
+  img::Image input = scene();
+  input.format = format;
+  img::quantize_in_place(input);
+  effects::CpuPassDevice dev(0);
+  const effects::ImageMap inputs{{std::string(effects::kSceneTexture), input}};
+  auto frame = [&]() -> std::string {
+    for (const effects::PassDesc& p : plan->graph.passes)
+      if (auto s = dev.run_pass(p); !s) return p.name + ": " + s.message();
+    return dev.finish().message();
+  };
+  bench::OpenCvGlow peer(float_plan->taps, kDownsample);
+  const cv::Mat in = bench::wrap(scene());
+  std::string error = dev.begin_run(plan->graph, inputs).message();
+  if (error.empty()) error = frame(); // both warm, as in run_device_frames
+  benchmark::DoNotOptimize(peer.run(in).data);
+  using Clock = std::chrono::steady_clock;
+  auto ms = [](Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double, std::milli>(b - a).count();
+  };
+  std::vector<double> ours_ms, peer_ms;
+  for (auto _ : state) {
+    const auto t0 = Clock::now();
+    if (error.empty()) error = frame();
+    const auto t1 = Clock::now();
+    benchmark::DoNotOptimize(peer.run(in).data);
+    benchmark::ClobberMemory();
+    const auto t2 = Clock::now();
+    if (!error.empty()) {
+      state.SkipWithError(error.c_str());
+      return;
+    }
+    ours_ms.push_back(ms(t0, t1));
+    peer_ms.push_back(ms(t1, t2));
+  }
+  state.counters["interpreter_ms"] = median(ours_ms);
+  state.counters["opencv_ms"] = median(peer_ms);
+  state.counters["interpreter_over_opencv"] = median(ours_ms) / median(peer_ms);
+  state.counters["passes"] = double(plan->graph.passes.size());
 }
 
 using effects::Tier;
@@ -196,7 +251,9 @@ TIERLIFT_GLOW_CASES(BM_Glow_Vulkan, Unit(benchmark::kMillisecond)->UseRealTime()
 TIERLIFT_GLOW_CASES(BM_Glow_VulkanVsGlsl,
                     Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0));
 TIERLIFT_GLOW_CASES(BM_Glow_Interpreter,
-                    Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(2));
+                    Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0));
+TIERLIFT_GLOW_CASES(BM_Glow_InterpreterVsOpenCV,
+                    Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3.0));
 
 // Scaling of the devices this file knows (another device's file registers its own).
 [[maybe_unused]] const bool kScalingRegistered = [] {

@@ -3,7 +3,9 @@
 //
 // What one frame is on a tierlift device: every pass of the plan, then PassDevice::finish()
 // (the work is done; nothing is read back). The graph's textures, its pipelines and the
-// scene's upload are setup: begin_run, once, outside the timed loop. The GLSL peer's frame
+// scene's upload are setup: begin_run, once, outside the timed loop, and so is one warm-up
+// frame (the first frame also pays for first touches of pages, worker threads starting and
+// pipelines made on first use: the steady state is what is measured). The GLSL peer's frame
 // is the same (glsl_glow_peer.h).
 #pragma once
 

@@ -86,8 +86,8 @@ void llvmpipe_linear_plain(const BlockRead& r, int bits) {
 // integer < 2^24 is exact in double, and both round it once); floor and truncation agree on
 // values ≥ 0; address_texel leaves indices inside the texture alone (Clamp's right-hand
 // neighbour is min(i0 + 1, N − 1), what address_texel gives); the lerp is rounding::lerp on
-// four channels at once (flush, subtract, flush, one fused multiply-add, flush). Texels are
-// loaded as one RGBA vector each and transposed four lanes at a time into the lane arrays.
+// eight lanes of a channel at once (flush, subtract, flush, one fused multiply-add, flush).
+// Texels are loaded as one RGBA vector each and transposed into channel vectors.
 constexpr int kGroup = 8;
 
 // A texture whose float offsets 4·(y·W + x) fit an int32: every image the readers accept.
@@ -95,19 +95,37 @@ bool int32_texels(const img::Image& im) {
   return uint64_t{im.width} * im.height * 4 <= uint64_t{INT32_MAX};
 }
 
-[[gnu::target("avx2,fma")]] inline __m128 flush4(__m128 v) {
-  const __m128i bits = _mm_castps_si128(v);
-  const __m128i exponent = _mm_and_si128(bits, _mm_set1_epi32(0x7F800000));
-  const __m128 zero_exponent = _mm_castsi128_ps(_mm_cmpeq_epi32(exponent, _mm_setzero_si128()));
-  const __m128 sign = _mm_castsi128_ps(_mm_and_si128(bits, _mm_set1_epi32(INT32_MIN)));
-  return _mm_blendv_ps(v, sign, zero_exponent);
+[[gnu::target("avx2,fma")]] inline __m256 flush8(__m256 v) {
+  const __m256i bits = _mm256_castps_si256(v);
+  const __m256i exponent = _mm256_and_si256(bits, _mm256_set1_epi32(0x7F800000));
+  const __m256 zero_exponent =
+      _mm256_castsi256_ps(_mm256_cmpeq_epi32(exponent, _mm256_setzero_si256()));
+  const __m256 sign = _mm256_castsi256_ps(_mm256_and_si256(bits, _mm256_set1_epi32(INT32_MIN)));
+  return _mm256_blendv_ps(v, sign, zero_exponent);
 }
 
-// rounding::lerp on the four channels of one texel pair.
-[[gnu::target("avx2,fma")]] inline __m128 lerp4(__m128 alpha, __m128 v0, __m128 v1) {
-  v0 = flush4(v0);
-  v1 = flush4(v1);
-  return flush4(_mm_fmadd_ps(alpha, flush4(_mm_sub_ps(v1, v0)), v0));
+// rounding::lerp on eight lanes of one channel (flush, subtract, flush, one fused
+// multiply-add, flush): the per-lane lerp on the same values, eight at once.
+[[gnu::target("avx2,fma")]] inline __m256 lerp8(__m256 alpha, __m256 v0, __m256 v1) {
+  v0 = flush8(v0);
+  v1 = flush8(v1);
+  return flush8(_mm256_fmadd_ps(alpha, flush8(_mm256_sub_ps(v1, v0)), v0));
+}
+
+// The RGBA texels at float offsets o[0..7] as four channel vectors (lane k: texel k): texels
+// k and k + 4 share a 256-bit row, and a 4×4 transpose within each 128-bit half does the rest.
+[[gnu::target("avx2,fma")]] inline void channels8(const float* base, const int32_t* o,
+                                                  __m256 c[4]) {
+  __m256 t[4];
+  for (int k = 0; k < 4; ++k)
+    t[k] = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(base + o[k])),
+                                _mm_loadu_ps(base + o[k + 4]), 1);
+  const __m256 xy01 = _mm256_unpacklo_ps(t[0], t[1]), zw01 = _mm256_unpackhi_ps(t[0], t[1]);
+  const __m256 xy23 = _mm256_unpacklo_ps(t[2], t[3]), zw23 = _mm256_unpackhi_ps(t[2], t[3]);
+  c[0] = _mm256_shuffle_ps(xy01, xy23, _MM_SHUFFLE(1, 0, 1, 0));
+  c[1] = _mm256_shuffle_ps(xy01, xy23, _MM_SHUFFLE(3, 2, 3, 2));
+  c[2] = _mm256_shuffle_ps(zw01, zw23, _MM_SHUFFLE(1, 0, 1, 0));
+  c[3] = _mm256_shuffle_ps(zw01, zw23, _MM_SHUFFLE(3, 2, 3, 2));
 }
 
 // Four RGBA texels (lanes l..l+3) into the lane arrays.
@@ -213,23 +231,21 @@ bool int32_texels(const img::Image& im) {
       continue;
     }
     alignas(32) int32_t o00[kGroup], o10[kGroup], o01[kGroup], o11[kGroup];
-    alignas(32) float wx[kGroup], wy[kGroup];
     const __m256i row0 = _mm256_mullo_epi32(j0, width), row1 = _mm256_mullo_epi32(j1, width);
     offset(o00, row0, i0);
     offset(o10, row0, i1);
     offset(o01, row1, i0);
     offset(o11, row1, i1);
-    _mm256_store_ps(wx, quantize8(ax, bits));
-    _mm256_store_ps(wy, quantize8(ay, bits));
-    __m128 t[kGroup];
-    for (int k = 0; k < kGroup; ++k) {
-      const __m128 a = _mm_set1_ps(wx[k]);
-      const __m128 top = lerp4(a, _mm_loadu_ps(base + o00[k]), _mm_loadu_ps(base + o10[k]));
-      const __m128 bottom = lerp4(a, _mm_loadu_ps(base + o01[k]), _mm_loadu_ps(base + o11[k]));
-      t[k] = lerp4(_mm_set1_ps(wy[k]), top, bottom);
-    }
-    put4(t[0], t[1], t[2], t[3], r.out, l);
-    put4(t[4], t[5], t[6], t[7], r.out, l + 4);
+    ax = quantize8(ax, bits);
+    ay = quantize8(ay, bits);
+    __m256 t00[4], t10[4], t01[4], t11[4];
+    channels8(base, o00, t00);
+    channels8(base, o10, t10);
+    channels8(base, o01, t01);
+    channels8(base, o11, t11);
+    for (int c = 0; c < 4; ++c)
+      _mm256_storeu_ps(r.out[c] + l,
+                       lerp8(ay, lerp8(ax, t00[c], t10[c]), lerp8(ax, t01[c], t11[c])));
   }
   llvmpipe_linear_body(r, bits, l, r.n);
 }

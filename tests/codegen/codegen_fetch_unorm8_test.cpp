@@ -1,0 +1,101 @@
+// CodegenOptions::stage_fetch_unorm8: a point read of an RGBA8 texture becomes a texel fetch
+// plus a few float operations that turn the device's UNORM value into k/255.0f exactly. The
+// module must validate and use the fetch only where asked (2D stages); the arithmetic the
+// shader does is replayed here on the host, for every level and for device values up to two
+// ulps away from k/255 (lavapipe's are one ulp off for 126 levels).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+#include "tierlift/asm/parser.h"
+#include "tierlift/codegen/codegen.h"
+
+using namespace tierlift;
+
+namespace {
+
+std::optional<codegen::ShaderModule> build(const std::string& text,
+                                           const codegen::CodegenOptions& opt) {
+  auto parsed = as::parse_text(text, "<test>");
+  EXPECT_TRUE(parsed.program) << ir::render_text(parsed.diags, parsed.sources);
+  if (!parsed.program) return std::nullopt;
+  ir::DiagnosticSink diags;
+  auto m = codegen::compile(*parsed.program, opt, diags);
+  EXPECT_TRUE(m) << ir::render_text(diags, parsed.sources);
+  if (m) {
+    const ir::Status valid = codegen::validate(m->words);
+    EXPECT_TRUE(valid) << valid.message();
+  }
+  return m;
+}
+
+std::string dis(const codegen::ShaderModule& m) {
+  ir::Result<std::string> text = codegen::disassemble(m.words);
+  EXPECT_TRUE(text) << text.message();
+  return text ? *text : std::string();
+}
+
+constexpr const char* kTwoStages = "ps_2_0\ndcl t0.xy\ndcl t1.xyz\ndcl_2d s0\ndcl_cube s1\n"
+                                   "texld r0, t0, s0\ntexld r1, t1, s1\nadd oC0, r0, r1\n";
+
+TEST(CodegenFetchUnorm8, TwoDStagesFetchAndOthersStillSample) {
+  codegen::CodegenOptions opt;
+  opt.stage_fetch_unorm8[0] = opt.stage_fetch_unorm8[1] = true;
+  const auto m = build(kTwoStages, opt);
+  ASSERT_TRUE(m);
+  ASSERT_EQ(m->samplers.size(), 2u);
+  for (const codegen::SamplerInfo& s : m->samplers)
+    EXPECT_EQ(s.fetch_unorm8, s.stage == 0) << "s" << s.stage; // a cube map is sampled
+  const std::string text = dis(*m);
+  EXPECT_NE(text.find("OpImageFetch"), std::string::npos);
+  EXPECT_NE(text.find("OpImageQuerySizeLod"), std::string::npos);
+  EXPECT_NE(text.find("OpImageSampleImplicitLod"), std::string::npos); // s1
+
+  const auto plain = build(kTwoStages, {});
+  ASSERT_TRUE(plain);
+  for (const codegen::SamplerInfo& s : plain->samplers) EXPECT_FALSE(s.fetch_unorm8);
+  EXPECT_EQ(dis(*plain).find("OpImageFetch"), std::string::npos);
+}
+
+TEST(CodegenFetchUnorm8, Ps1xTexFetchesToo) {
+  codegen::CodegenOptions opt;
+  opt.stage_fetch_unorm8[2] = true;
+  const auto m = build("ps_1_1\ntex t2\nmov r0, t2\n", opt);
+  ASSERT_TRUE(m);
+  ASSERT_EQ(m->samplers.size(), 1u);
+  EXPECT_TRUE(m->samplers[0].fetch_unorm8);
+}
+
+// The shader's steps on one value v (emit_texture.cpp), each rounded to float as the device
+// rounds it: k = roundEven(v·255), then (k·65793 + v)·2^-24.
+float decode(float v) {
+  const volatile float scaled = v * 255.0f;
+  const float k = std::nearbyint(scaled); // round to nearest even (the default mode)
+  const volatile float high = k * 65793.0f;
+  const volatile float sum = high + v;
+  return sum * 0x1p-24f;
+}
+
+TEST(CodegenFetchUnorm8, DecodeGivesKOver255ForEveryLevelWithinTwoUlps) {
+  const float step = 1.0f / 255.0f;
+  int inexact_products = 0;
+  for (int k = 0; k < 256; ++k) {
+    const float exact = static_cast<float>(k) / 255.0f; // correctly rounded
+    const volatile float product = static_cast<float>(k) * step;
+    if (product != exact) ++inexact_products;
+    for (float start : {exact, static_cast<float>(product)}) {
+      float lo = start, hi = start;
+      for (int ulps = 0; ulps <= 2; ++ulps) {
+        EXPECT_EQ(decode(lo), exact) << "k " << k << ", " << ulps << " ulps below";
+        EXPECT_EQ(decode(hi), exact) << "k " << k << ", " << ulps << " ulps above";
+        lo = k == 0 ? 0.0f : std::nextafter(lo, 0.0f);
+        hi = k == 0 ? 0.0f : std::nextafter(hi, 2.0f);
+      }
+    }
+  }
+  EXPECT_EQ(inexact_products, 126); // the levels a k·(1/255) conversion gets wrong
+}
+
+} // namespace

@@ -1,0 +1,109 @@
+// A point read of a resident RGBA8 texture with edge clamping fetches the stored bytes in the
+// shader (codegen::CodegenOptions::stage_fetch_unorm8) instead of sampling a float copy. It
+// must read the texel the CPU device reads, at every coordinate (texel corners that float
+// cannot hold, outside the texture, NaN, infinities), and the value k/255.0f that the float
+// copy held: checked here against the CPU device and against values computed in the test.
+#include <cmath>
+#include <limits>
+
+#include "resident_fixture.h"
+#include "tierlift/cpu/draw.h"
+
+namespace tierlift::vulkan::test {
+namespace {
+
+// 13 × 7 texels, every level 0..255 on some channel (odd sizes on purpose).
+img::Image levels_texture() {
+  img::Image im(13, 7, img::Format::RGBA8);
+  for (size_t i = 0; i < im.rgba.size(); ++i)
+    im.rgba[i] = static_cast<float>((i * 37) % 256) / 255.0f;
+  return im;
+}
+
+// t0 = uv·c2 + c0 (uv: the quad's, pixel x at x/W with D3D9 centres): the coordinates of the
+// target's pixels sweep the texture as the constants say.
+cpu::Pass read_pass(cpu::Vec4 scale, cpu::Vec4 offset, cpu::AddressMode mode) {
+  cpu::Pass p = quad_pass(parse_listing("vs_2_0\ndcl_position v0\ndcl_texcoord v1\n"
+                                        "mov oPos, v0\nmad oT0, v1, c2, c0\n",
+                                        "scaled.vsh"),
+                          copy_ps(), {offset, {0, 0, 0, 0}, scale}, {}, cpu::BlendMode::Replace);
+  p.textures[0].sampler.filter = cpu::Filter::Point;
+  p.textures[0].sampler.address_u = p.textures[0].sampler.address_v = mode;
+  return p;
+}
+
+// The pass drawn into a w × h RGBA32F texture on the device, reading `tex` resident in RGBA8.
+img::Image on_device(Device& dev, const img::Image& tex, const cpu::Pass& p, uint32_t w,
+                     uint32_t h) {
+  TextureSet set(dev);
+  TextureId src{}, dst{};
+  EXPECT_TRUE(succeeded(set.create(tex.width, tex.height, img::Format::RGBA8), src));
+  EXPECT_TRUE(succeeded(set.create(w, h, img::Format::RGBA32F), dst));
+  EXPECT_TRUE(succeeded(set.upload(src, tex)));
+  StageTextures stages{};
+  stages[0] = src;
+  ir::Result<pass::DrawReport> r = set.draw(p, stages, dst);
+  EXPECT_TRUE(r.ok()) << r.message();
+  img::Image out;
+  EXPECT_TRUE(succeeded(set.read(dst), out));
+  return out;
+}
+
+img::Image on_cpu(const img::Image& tex, cpu::Pass p, uint32_t w, uint32_t h) {
+  p.textures[0].image = std::make_shared<img::Image>(tex);
+  img::Image out(w, h, img::Format::RGBA32F);
+  EXPECT_TRUE(cpu::draw(p, out, 2).ok());
+  return out;
+}
+
+struct Sweep {
+  const char* what;
+  cpu::Vec4 scale, offset;
+  uint32_t w, h;
+};
+
+TEST_F(ResidentTest, Rgba8PointFetchReadsTheInterpretersTexelEverywhere) {
+  const img::Image tex = levels_texture();
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  const Sweep sweeps[] = {
+      // Four pixels per texel: u = x/52 puts every fourth pixel on a texel corner i/13, which
+      // float holds only approximately (fl32(u·13) decides the side).
+      {"corners", {1, 1, 0, 0}, {0, 0, 0, 0}, 52, 28},
+      {"outside on both sides", {2.3f, 1.9f, 0, 0}, {-0.6f, -0.45f, 0, 0}, 61, 29},
+      {"far outside", {0, 0, 0, 0}, {1e30f, -1e30f, 0, 0}, 5, 3},
+      {"NaN", {1, 1, 0, 0}, {nan, nan, 0, 0}, 5, 3},
+      {"infinities", {inf, -inf, 0, 0}, {0, 0, 0, 0}, 5, 3},
+  };
+  for (const Sweep& s : sweeps) {
+    SCOPED_TRACE(s.what);
+    const cpu::Pass p = read_pass(s.scale, s.offset, cpu::AddressMode::Clamp);
+    const img::Image vk = on_device(*dev, tex, p, s.w, s.h);
+    const img::Image cpu = on_cpu(tex, p, s.w, s.h);
+    std::string where;
+    EXPECT_TRUE(same_bits(cpu, vk, &where)) << where;
+  }
+}
+
+TEST_F(ResidentTest, Rgba8PointFetchGivesKOver255ForEveryLevel) {
+  // 16 × 16 texels, level (p + 64c) mod 256 on channel c of texel p; read at texel centres
+  // with edge clamping (the in-place fetch) and with wrapping (the float copy): both must
+  // hold exactly k/255.0f, computed here.
+  img::Image im(16, 16, img::Format::RGBA8);
+  for (uint32_t p = 0; p < 256; ++p)
+    for (uint32_t c = 0; c < 4; ++c) im.rgba[p * 4 + c] = float((p + 64 * c) % 256) / 255.0f;
+  for (cpu::AddressMode mode : {cpu::AddressMode::Clamp, cpu::AddressMode::Wrap}) {
+    SCOPED_TRACE(static_cast<int>(mode));
+    const cpu::Pass p = read_pass({1, 1, 0, 0}, {0.5f / 16, 0.5f / 16, 0, 0}, mode);
+    const img::Image out = on_device(*dev, im, p, 16, 16);
+    ASSERT_EQ(out.rgba.size(), im.rgba.size());
+    for (uint32_t q = 0; q < 256; ++q)
+      for (uint32_t c = 0; c < 4; ++c) {
+        const uint32_t k = (q + 64 * c) % 256;
+        ASSERT_EQ(out.rgba[q * 4 + c], float(k) / 255.0f) << "level " << k;
+      }
+  }
+}
+
+} // namespace
+} // namespace tierlift::vulkan::test
