@@ -133,6 +133,16 @@ TEST(MemoryPlan, HandComputedBytesPerDevice) {
   // Per-pass images kept: one host image of each pass's target more, per device.
   const MemoryPlan keep = plan_memory(g, {"cpu"}, true);
   EXPECT_EQ(keep.devices[0].kept, 576u + 128u + 32u);
+
+  // Point reads with edge clamping fetch RGBA8 bytes in place: no float copy of `scene`;
+  // `a` keeps its copy while one of its two reads still wraps.
+  pass::SamplerState clamped;
+  clamped.address_u = clamped.address_v = pass::AddressMode::Clamp;
+  g.passes[0].textures[0].sampler = clamped;
+  g.passes[1].textures[0].sampler = clamped;
+  EXPECT_EQ(plan_memory(g, {"vulkan"}, false).devices[0].kept, 288u + 96u + 288u);
+  g.passes[1].textures[1].sampler = clamped;
+  EXPECT_EQ(plan_memory(g, {"vulkan"}, false).devices[0].kept, 288u + 96u);
 }
 
 TEST(MemoryPlan, FormatBytes) {

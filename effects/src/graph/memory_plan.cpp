@@ -45,9 +45,19 @@ DeviceMemory plan_device(const EffectGraph& g, const std::string& device, bool k
   m.kept = all_host; // the run's images handed back
   if (keep)
     for (const PassDesc& p : g.passes) m.kept += host(g.find_texture(p.target));
-  std::set<std::string_view> sampled;
+  // The textures some pass samples, and those it samples through the Vulkan device's float
+  // copy: every read of an RGBA16F texture; of an RGBA8 one, all but point reads with edge
+  // clamping, which fetch the stored bytes in place (codegen::CodegenOptions::
+  // stage_fetch_unorm8).
+  std::set<std::string_view> sampled, copied;
   for (const PassDesc& p : g.passes)
-    for (const TextureBind& b : p.textures) sampled.insert(b.texture);
+    for (const TextureBind& b : p.textures) {
+      sampled.insert(b.texture);
+      const pass::SamplerState& s = b.sampler;
+      if (s.filter != pass::Filter::Point || s.address_u != pass::AddressMode::Clamp ||
+          s.address_v != pass::AddressMode::Clamp)
+        copied.insert(b.texture);
+    }
 
   if (device == "vulkan") {
     uint64_t largest_stored = 0;
@@ -55,10 +65,8 @@ DeviceMemory plan_device(const EffectGraph& g, const std::string& device, bool k
       const uint64_t stored = pixels(t) * stored_bytes_per_pixel(t.format);
       largest_stored = std::max(largest_stored, stored);
       m.kept += stored;
-      if (t.format != img::Format::RGBA32F && sampled.count(t.name)) {
-        m.kept += pixels(t) * 16;
-        if (t.format == img::Format::RGBA8) m.kept += pixels(t) * 20;
-      }
+      if (t.format == img::Format::RGBA16F && sampled.count(t.name)) m.kept += pixels(t) * 16;
+      if (t.format == img::Format::RGBA8 && copied.count(t.name)) m.kept += pixels(t) * 36;
     }
     // A read: staging in the stored format plus the host image it becomes (before it
     // replaces the kept one); an upload: the caller's inputs copy and staging.

@@ -10,9 +10,11 @@
 //     each bound texture (make_pass gives every stage its own image: ps_1_x binds a texture
 //     on several stages);
 //   * vulkan (lavapipe: device memory is host memory): every texture in its own format,
-//     plus for RGBA8 / RGBA16F textures that passes sample the float copy (16 B/px) and,
-//     RGBA8, the conversion's byte and float buffers (20 B/px); during a read or an upload
-//     a staging buffer in the texture's format;
+//     plus the float copy (16 B/px) of an RGBA16F texture that a pass samples and of an
+//     RGBA8 texture that a pass samples other than by a point read with edge clamping (such
+//     a read fetches the stored bytes in place), with, RGBA8, the conversion's byte and
+//     float buffers (20 B/px); during a read or an upload a staging buffer in the texture's
+//     format;
 //   * analytic: its own copy of every texture and a midpoint mask (1 B/px) of each RGBA8
 //     one, plus during a pass the new target and, RGBA8, a float slack image of each read.
 // Devices run one after another and their results stay (the agreement table compares them),
