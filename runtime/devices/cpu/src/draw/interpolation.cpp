@@ -170,7 +170,9 @@ namespace {
   for (int l = 0; l < kBlockLanes; ++l) fx[l] = static_cast<float>(x[l]);
   // With dadx = ±0 (1/w constant along the row: every 2D pass), dadx·x is the same signed zero
   // at every x ≥ 0, so every lane's 1/w is the one at x = 0: one division per block. When it
-  // is exactly 1 the products by it are skipped too: v·1 = v, and v is already flushed.
+  // is exactly 1 the products by it are skipped too: v·1 = v, and v is already flushed. The
+  // same holds for a texture coordinate plane with dadx = ±0 (x ≥ 0 at every pixel): one
+  // evaluation per block.
   bool unit = false;
   if (w.dadx == 0.0f) {
     const float o = 1.0f / eval(w, 0.0f, fy);
@@ -207,6 +209,12 @@ namespace {
         continue;
       }
       const Plane pl = p.tex[r][c];
+      if (pl.dadx == 0.0f && w.dadx == 0.0f) {
+        // Constant along the row (the v of a 2D pass): every lane's value is lane 0's.
+        const float v = unit ? eval(pl, fx[0], fy) : perspective(pl, fx[0], fy, oow[0]);
+        std::fill(out, out + kBlockLanes, v);
+        continue;
+      }
       if (unit) {
 #pragma GCC unroll 1
         for (int l = 0; l < kBlockLanes; ++l) out[l] = eval(pl, fx[l], fy);
