@@ -4,11 +4,15 @@
 // even; products of bytes with (t + (t >> 8) + 128) >> 8, t = a·b; sums saturate at 255.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <memory>
+#include <random>
 #include <vector>
 
+#include "program_helpers.h"
 #include "tierlift/cpu/draw.h"
 #include "tierlift/rounding/rounding.h"
 
@@ -141,10 +145,9 @@ TEST(Rgba8StoreLlvmpipe, DrawFollowsThePassConvention) {
   EXPECT_EQ(b.at(1, 1)[1], byte(229));
 }
 
-// The lane form of the store (rounding::unorm8_llvmpipe_stored, the block executor's RGBA8
-// Replace store) against the scalar rule: around every byte's value and every midpoint
-// (k ± ½)/255, 64 floats either side; zeros, denormals, negatives, 1 and above, ±inf, NaN.
-TEST(Rgba8StoreLlvmpipe, LaneFormMatchesTheRuleBitForBit) {
+// Around every byte's value and every midpoint (k ± ½)/255, 64 floats either side; zeros,
+// denormals, negatives, 1 and above, ±inf, NaN.
+std::vector<float> store_probes() {
   std::vector<float> probe;
   auto around = [&](float c) {
     float v = c;
@@ -161,6 +164,13 @@ TEST(Rgba8StoreLlvmpipe, LaneFormMatchesTheRuleBitForBit) {
                   1.0f, 1.5f, 256.0f, 3e38f, inf, -inf, std::numeric_limits<float>::quiet_NaN(),
                   -std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::max()})
     probe.push_back(v);
+  return probe;
+}
+
+// The lane form of the store (rounding::unorm8_llvmpipe_stored, the block executor's RGBA8
+// Replace store) against the scalar rule, on store_probes().
+TEST(Rgba8StoreLlvmpipe, LaneFormMatchesTheRuleBitForBit) {
+  const std::vector<float> probe = store_probes();
   std::vector<float> out(probe.size());
   rounding::unorm8_llvmpipe_stored(probe.data(), out.data(), static_cast<int>(probe.size()));
   size_t differ = 0;
@@ -174,6 +184,71 @@ TEST(Rgba8StoreLlvmpipe, LaneFormMatchesTheRuleBitForBit) {
       ADD_FAILURE() << std::hexfloat << probe[i] << ": lane " << out[i] << ", rule " << want;
   }
   EXPECT_EQ(differ, 0u);
+}
+
+// The byte forms the block blend uses (rounding::unorm8_llvmpipe_bytes for the source,
+// unorm8_nearest_bytes for the destination) against the scalar rules, on store_probes().
+TEST(Rgba8StoreLlvmpipe, ByteFormsMatchTheRules) {
+  const std::vector<float> probe = store_probes();
+  const int n = static_cast<int>(probe.size());
+  std::vector<int32_t> src(probe.size()), dst(probe.size());
+  rounding::unorm8_llvmpipe_bytes(probe.data(), src.data(), n);
+  rounding::unorm8_nearest_bytes(probe.data(), dst.data(), n);
+  for (size_t i = 0; i < probe.size(); ++i) {
+    ASSERT_EQ(src[i], rounding::unorm8_llvmpipe(probe[i])) << std::hexfloat << probe[i];
+    const float nearest = rounding::unorm8_nearest(probe[i]);
+    ASSERT_EQ(rounding::unorm8_levels()[static_cast<size_t>(dst[i])], nearest)
+        << std::hexfloat << probe[i];
+  }
+}
+
+// The block executor's store of every blend mode on an RGBA8 target (bytes in lane arrays)
+// against blend_and_store pixel by pixel: each pixel reads one probe as its colour from a
+// texel-for-pixel texture, over a destination that holds the probes shuffled, unquantised (a
+// target uploaded as is: values between the steps, NaN, values outside [0, 1]) and, second
+// round, quantised to k/255.
+TEST(Rgba8StoreLlvmpipe, BlockBlendMatchesThePixelRule) {
+  const std::vector<float> probe = store_probes();
+  const uint32_t w = 61, h = static_cast<uint32_t>(probe.size() / 4 / 61);
+  auto colours = std::make_shared<img::Image>(w, h);
+  std::copy(probe.begin(), probe.begin() + colours->rgba.size(), colours->rgba.begin());
+  Pass pass;
+  pass.vertex_program = test::parsed("vs_2_0\ndcl_position v0\ndcl_texcoord v3\nmov oPos, v0\n"
+                                     "mov oT0, v3\n");
+  pass.pixel_program =
+      test::parsed("ps_2_0\ndcl t0.xy\ndcl_2d s0\ntexld r0, t0, s0\nmov oC0, r0\n");
+  set_full_screen_quad(pass, 0);
+  for (size_t k = 0; k < pass.vertices.size(); ++k) pass.vertices[k].v[3] = kQuadUV[k];
+  pass.conventions.pixel_center = ir::PixelCenter::Modern; // pixel i reads texel i
+  pass.textures[0].image = colours;
+  pass.textures[0].sampler.filter = Filter::Point;
+  pass.textures[0].sampler.address_u = pass.textures[0].sampler.address_v = AddressMode::Clamp;
+  img::Image start(w, h, U8);
+  std::vector<float> shuffled = probe;
+  std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937(34));
+  std::copy(shuffled.begin(), shuffled.begin() + start.rgba.size(), start.rgba.begin());
+  for (int round = 0; round < 2; ++round) {
+    if (round == 1) img::quantize_in_place(start);
+    for (BlendMode mode : {BlendMode::Replace, BlendMode::OneOne, BlendMode::SrcAlphaOne,
+                           BlendMode::SrcAlphaInvSrcAlpha}) {
+      SCOPED_TRACE(static_cast<int>(mode) + 10 * round);
+      pass.blend = mode;
+      img::Image block = start;
+      ir::Result<DrawStats> a = draw(pass, block, 2);
+      ASSERT_TRUE(a.ok());
+      ASSERT_GT(a->pixels_block, 0u); // the block executor ran
+      size_t differ = 0;
+      for (size_t px = 0; px < size_t{w} * h; ++px) {
+        const float* c = &colours->rgba[4 * px];
+        const float* d = &start.rgba[4 * px];
+        const Vec4 want = blend_and_store(mode, U8, {c[0], c[1], c[2], c[3]},
+                                          {d[0], d[1], d[2], d[3]}, kLlvmpipe);
+        if (std::memcmp(&block.rgba[4 * px], want.data(), 16) != 0 && ++differ < 5)
+          ADD_FAILURE() << "pixel " << px << ": " << block.rgba[4 * px] << " vs " << want[0];
+      }
+      EXPECT_EQ(differ, 0u);
+    }
+  }
 }
 
 } // namespace

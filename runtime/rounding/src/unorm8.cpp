@@ -51,4 +51,25 @@ void unorm8_llvmpipe_stored(const float* in, float* out, int n) {
   }
 }
 
+void unorm8_llvmpipe_bytes(const float* in, int32_t* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    const float v = in[i];
+    const float t = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; // as unorm8_llvmpipe_stored
+    const float scaled = t * 255.0f;
+    int32_t k = static_cast<int32_t>(scaled);
+    const float rest = scaled - static_cast<float>(k);
+    out[i] = k + ((rest > 0.5f || (rest == 0.5f && (k & 1) != 0)) ? 1 : 0);
+  }
+}
+
+void unorm8_nearest_bytes(const float* in, int32_t* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    // unorm8_nearest's steps: clamp in double (NaN → 0: the comparisons fail), v·255 exact,
+    // + ½ and floor (truncation, the value being ≥ 0).
+    const double v = static_cast<double>(in[i]);
+    const double t = v > 0.0 ? (v < 1.0 ? v : 1.0) : 0.0;
+    out[i] = static_cast<int32_t>(t * 255.0 + 0.5);
+  }
+}
+
 } // namespace tierlift::rounding

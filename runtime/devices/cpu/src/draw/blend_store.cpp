@@ -95,6 +95,39 @@ Vec4 blend_unorm8_llvmpipe(BlendMode mode, const Vec4& src_in, const Vec4& dst_i
   return out;
 }
 
+// blend_unorm8_llvmpipe on lane arrays, for every blend mode: the source bytes, then the
+// destination's (read before any lane is written; a block's pixels are distinct), then the
+// same integer blend, lane by lane. The byte loops vectorise; the result is the same bits as
+// blend_unorm8_llvmpipe pixel by pixel (tests/cpu_draw/rgba8_block_blend_test.cpp).
+void store_block_unorm8_llvmpipe(BlendMode mode, const LaneVec4& src,
+                                 const std::array<bool, kBlockLanes>& discarded, const int64_t* x,
+                                 int n, float* row) {
+  int32_t s[4][kBlockLanes], d[4][kBlockLanes];
+  float dst[kBlockLanes];
+  for (int c = 0; c < 4; ++c) {
+    rounding::unorm8_llvmpipe_bytes(src.c[c], s[c], n);
+    if (mode == BlendMode::Replace) continue;
+    for (int l = 0; l < n; ++l) dst[l] = row[4 * x[l] + c];
+    rounding::unorm8_nearest_bytes(dst, d[c], n);
+  }
+  const std::array<float, 256>& levels = rounding::unorm8_levels();
+  for (int l = 0; l < n; ++l) {
+    if (discarded[static_cast<size_t>(l)]) continue;
+    float* p = row + 4 * x[l];
+    const int a = s[3][l];
+    for (int c = 0; c < 4; ++c) {
+      int v = s[c][l];
+      switch (mode) {
+      case BlendMode::Replace: break;
+      case BlendMode::OneOne: v += d[c][l]; break;
+      case BlendMode::SrcAlphaOne: v = mul_norm8(v, a) + d[c][l]; break;
+      case BlendMode::SrcAlphaInvSrcAlpha: v = mul_norm8(v, a) + mul_norm8(d[c][l], 255 - a); break;
+      }
+      p[c] = levels[static_cast<size_t>(std::min(v, 255))];
+    }
+  }
+}
+
 } // namespace
 
 Vec4 blend_and_store(BlendMode mode, img::Format format, const Vec4& src, const Vec4& dst,
@@ -121,18 +154,20 @@ void store_block(BlendMode mode, img::Format format, ir::Rounding rounding, cons
       return store_block_float32<BlendMode::SrcAlphaInvSrcAlpha>(src, discarded, x, n, row);
     }
   }
-  if (format == img::Format::RGBA8 && rounding == ir::Rounding::Llvmpipe &&
-      mode == BlendMode::Replace) {
-    // Replace reads no destination: blend_unorm8_llvmpipe is then the byte of the source
-    // over 255, computed four lane arrays at a time instead of one pixel at a time.
-    LaneVec4 stored;
-    for (int c = 0; c < 4; ++c) rounding::unorm8_llvmpipe_stored(src.c[c], stored.c[c], n);
-    for (int l = 0; l < n; ++l) {
-      if (discarded[static_cast<size_t>(l)]) continue;
-      float* p = row + 4 * x[l];
-      for (int c = 0; c < 4; ++c) p[c] = stored.c[c][l];
+  if (format == img::Format::RGBA8 && rounding == ir::Rounding::Llvmpipe) {
+    if (mode == BlendMode::Replace) {
+      // Replace reads no destination: blend_unorm8_llvmpipe is then the byte of the source
+      // over 255, computed four lane arrays at a time instead of one pixel at a time.
+      LaneVec4 stored;
+      for (int c = 0; c < 4; ++c) rounding::unorm8_llvmpipe_stored(src.c[c], stored.c[c], n);
+      for (int l = 0; l < n; ++l) {
+        if (discarded[static_cast<size_t>(l)]) continue;
+        float* p = row + 4 * x[l];
+        for (int c = 0; c < 4; ++c) p[c] = stored.c[c][l];
+      }
+      return;
     }
-    return;
+    return store_block_unorm8_llvmpipe(mode, src, discarded, x, n, row);
   }
   for (int l = 0; l < n; ++l) {
     if (discarded[static_cast<size_t>(l)]) continue;

@@ -54,6 +54,12 @@ uint8_t unorm8_llvmpipe(float value);
 // (tests/cpu_draw/rgba8_store_llvmpipe_test.cpp walks the byte boundaries and ties).
 void unorm8_llvmpipe_stored(const float* in, float* out, int n);
 
+// The bytes behind the same rules, for i < n, as branch-free loops the compiler vectorises
+// (the CPU device's block blend on RGBA8 targets): unorm8_llvmpipe(in[i]) and the byte
+// unorm8_nearest(in[i]) stands for (round(clamp(in[i])·255) in double, ties up, NaN → 0).
+void unorm8_llvmpipe_bytes(const float* in, int32_t* out, int n);
+void unorm8_nearest_bytes(const float* in, int32_t* out, int n);
+
 // The float an RGBA8 texel holds for byte k: k/255 correctly rounded (k / 255.0f), as a table
 // so that converting a texel costs no division. Every RGBA8 image holds these values.
 const std::array<float, 256>& unorm8_levels();
