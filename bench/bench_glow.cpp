@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -94,6 +95,37 @@ double median(std::vector<double> v) {
   return n == 0 ? 0.0 : n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
 }
 
+// One frame of ours, then one of the peer's, each iteration, so that a load that comes and
+// goes on the machine falls on both; each frame returns an error message (empty: fine).
+// Counters <ours>_ms and <peer>_ms (median frames) and <ours>_over_<peer>. False after a
+// failure (the benchmark is skipped with its message).
+bool alternate_frames(benchmark::State& state, const std::string& ours_name,
+                      const std::function<std::string()>& ours, const std::string& peer_name,
+                      const std::function<std::string()>& peer) {
+  using Clock = std::chrono::steady_clock;
+  auto ms = [](Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double, std::milli>(b - a).count();
+  };
+  std::vector<double> ours_ms, peer_ms;
+  for (auto _ : state) {
+    const auto t0 = Clock::now();
+    std::string error = ours();
+    const auto t1 = Clock::now();
+    if (error.empty()) error = peer();
+    const auto t2 = Clock::now();
+    if (!error.empty()) {
+      state.SkipWithError(error.c_str());
+      return false;
+    }
+    ours_ms.push_back(ms(t0, t1));
+    peer_ms.push_back(ms(t1, t2));
+  }
+  state.counters[ours_name + "_ms"] = median(ours_ms);
+  state.counters[peer_name + "_ms"] = median(peer_ms);
+  state.counters[ours_name + "_over_" + peer_name] = median(ours_ms) / median(peer_ms);
+  return true;
+}
+
 void run_device(benchmark::State& state, effects::PassDevice& dev, effects::Tier tier,
                 img::Format format) {
   const effects::PlanResult plan = make_plan(tier, format);
@@ -144,38 +176,19 @@ void BM_Glow_VulkanVsGlsl(benchmark::State& state, effects::Tier tier, img::Form
       bench::GlslGlowPeer::create(plan->graph, input, &error);
   std::unique_ptr<effects::PassDevice> ours = effects::make_vulkan_pass_device(*vk);
   const effects::ImageMap inputs{{std::string(effects::kSceneTexture), input}};
+  auto our_frame = [&]() -> std::string {
+    for (const effects::PassDesc& p : plan->graph.passes)
+      if (auto s = ours->run_pass(p); !s) return s.message();
+    return ours->finish().message();
+  };
   if (peer && (error = ours->begin_run(plan->graph, inputs).message()).empty())
     error = peer->frame(); // both warm: first-touch of every texture's pages
-  for (const effects::PassDesc& p : plan->graph.passes)
-    if (error.empty()) error = ours->run_pass(p).message();
-  if (error.empty()) error = ours->finish().message();
+  if (error.empty()) error = our_frame();
   if (!error.empty()) {
     state.SkipWithError(error.c_str());
     return;
   }
-  using Clock = std::chrono::steady_clock;
-  auto ms = [](Clock::time_point a, Clock::time_point b) {
-    return std::chrono::duration<double, std::milli>(b - a).count();
-  };
-  std::vector<double> ours_ms, peer_ms;
-  for (auto _ : state) {
-    const auto t0 = Clock::now();
-    for (const effects::PassDesc& p : plan->graph.passes)
-      if (error.empty()) error = ours->run_pass(p).message();
-    if (error.empty()) error = ours->finish().message();
-    const auto t1 = Clock::now();
-    if (error.empty()) error = peer->frame();
-    const auto t2 = Clock::now();
-    if (!error.empty()) {
-      state.SkipWithError(error.c_str());
-      return;
-    }
-    ours_ms.push_back(ms(t0, t1));
-    peer_ms.push_back(ms(t1, t2));
-  }
-  state.counters["vulkan_ms"] = median(ours_ms);
-  state.counters["glsl_ms"] = median(peer_ms);
-  state.counters["vulkan_over_glsl"] = median(ours_ms) / median(peer_ms);
+  if (!alternate_frames(state, "vulkan", our_frame, "glsl", [&] { return peer->frame(); })) return;
   state.counters["passes"] = double(plan->graph.passes.size());
   state.SetLabel(vk->name());
 }
@@ -213,28 +226,16 @@ void BM_Glow_InterpreterVsOpenCV(benchmark::State& state, effects::Tier tier, im
   std::string error = dev.begin_run(plan->graph, inputs).message();
   if (error.empty()) error = frame(); // both warm, as in run_device_frames
   benchmark::DoNotOptimize(peer.run(in).data);
-  using Clock = std::chrono::steady_clock;
-  auto ms = [](Clock::time_point a, Clock::time_point b) {
-    return std::chrono::duration<double, std::milli>(b - a).count();
-  };
-  std::vector<double> ours_ms, peer_ms;
-  for (auto _ : state) {
-    const auto t0 = Clock::now();
-    if (error.empty()) error = frame();
-    const auto t1 = Clock::now();
+  if (!error.empty()) {
+    state.SkipWithError(error.c_str());
+    return;
+  }
+  auto peer_frame = [&] {
     benchmark::DoNotOptimize(peer.run(in).data);
     benchmark::ClobberMemory();
-    const auto t2 = Clock::now();
-    if (!error.empty()) {
-      state.SkipWithError(error.c_str());
-      return;
-    }
-    ours_ms.push_back(ms(t0, t1));
-    peer_ms.push_back(ms(t1, t2));
-  }
-  state.counters["interpreter_ms"] = median(ours_ms);
-  state.counters["opencv_ms"] = median(peer_ms);
-  state.counters["interpreter_over_opencv"] = median(ours_ms) / median(peer_ms);
+    return std::string();
+  };
+  if (!alternate_frames(state, "interpreter", frame, "opencv", peer_frame)) return;
   state.counters["passes"] = double(plan->graph.passes.size());
 }
 

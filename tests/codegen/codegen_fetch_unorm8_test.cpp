@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <string>
 
+#include "compile_valid.h"
 #include "tierlift/asm/parser.h"
 #include "tierlift/codegen/codegen.h"
 
@@ -21,14 +22,7 @@ std::optional<codegen::ShaderModule> build(const std::string& text,
   auto parsed = as::parse_text(text, "<test>");
   EXPECT_TRUE(parsed.program) << ir::render_text(parsed.diags, parsed.sources);
   if (!parsed.program) return std::nullopt;
-  ir::DiagnosticSink diags;
-  auto m = codegen::compile(*parsed.program, opt, diags);
-  EXPECT_TRUE(m) << ir::render_text(diags, parsed.sources);
-  if (m) {
-    const ir::Status valid = codegen::validate(m->words);
-    EXPECT_TRUE(valid) << valid.message();
-  }
-  return m;
+  return test::compile_valid(*parsed.program, parsed.sources, opt);
 }
 
 std::string dis(const codegen::ShaderModule& m) {

@@ -203,21 +203,10 @@ INSTANTIATE_TEST_SUITE_P(Formats, ResidentChain,
 
 // Point-samples every texel of `im` (stored in `f`) into an RGBA32F texture on the device.
 img::Image sampled_copy(Device& dev, const img::Image& im, img::Format f) {
-  TextureSet set(dev);
-  TextureId src{}, dst{};
-  EXPECT_TRUE(succeeded(set.create(im.width, im.height, f), src));
-  EXPECT_TRUE(succeeded(set.create(im.width, im.height, img::Format::RGBA32F), dst));
-  EXPECT_TRUE(succeeded(set.upload(src, im)));
   // Texel centres: the quad's uv (u = i/W at pixel i, D3D9 centres) plus half a texel.
   const cpu::Vec4 half{0.5f / im.width, 0.5f / im.height, 0, 0};
   cpu::Pass p = quad_pass(two_coords_vs(), copy_ps(), {half, half}, {}, cpu::BlendMode::Replace);
-  StageTextures stages{};
-  stages[0] = src;
-  ir::Result<pass::DrawReport> r = set.draw(p, stages, dst);
-  EXPECT_TRUE(r.ok()) << r.message();
-  img::Image out;
-  EXPECT_TRUE(succeeded(set.read(dst), out));
-  return out;
+  return draw_reading(dev, im, f, p, im.width, im.height);
 }
 
 TEST_F(ResidentTest, Rgba8SamplesExactlyKOver255) {

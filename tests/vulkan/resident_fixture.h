@@ -76,6 +76,24 @@ inline cpu::Pass quad_pass(std::shared_ptr<const ir::Program> vs,
   return p;
 }
 
+// `pass` drawn into a new w × h RGBA32F texture while stage 0 reads `tex`, resident in
+// `format` (uploaded first); the target read back.
+inline img::Image draw_reading(Device& dev, const img::Image& tex, img::Format format,
+                               const cpu::Pass& pass, uint32_t w, uint32_t h) {
+  TextureSet set(dev);
+  TextureId src{}, dst{};
+  EXPECT_TRUE(succeeded(set.create(tex.width, tex.height, format), src));
+  EXPECT_TRUE(succeeded(set.create(w, h, img::Format::RGBA32F), dst));
+  EXPECT_TRUE(succeeded(set.upload(src, tex)));
+  StageTextures stages{};
+  stages[0] = src;
+  ir::Result<pass::DrawReport> r = set.draw(pass, stages, dst);
+  EXPECT_TRUE(r.ok()) << r.message();
+  img::Image out;
+  EXPECT_TRUE(succeeded(set.read(dst), out));
+  return out;
+}
+
 // Bit-for-bit equality of two images (NaN equals NaN only with the same bits); the first
 // difference in *where.
 inline bool same_bits(const img::Image& a, const img::Image& b, std::string* where) {

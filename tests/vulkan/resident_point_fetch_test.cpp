@@ -32,23 +32,6 @@ cpu::Pass read_pass(cpu::Vec4 scale, cpu::Vec4 offset, cpu::AddressMode mode) {
   return p;
 }
 
-// The pass drawn into a w × h RGBA32F texture on the device, reading `tex` resident in RGBA8.
-img::Image on_device(Device& dev, const img::Image& tex, const cpu::Pass& p, uint32_t w,
-                     uint32_t h) {
-  TextureSet set(dev);
-  TextureId src{}, dst{};
-  EXPECT_TRUE(succeeded(set.create(tex.width, tex.height, img::Format::RGBA8), src));
-  EXPECT_TRUE(succeeded(set.create(w, h, img::Format::RGBA32F), dst));
-  EXPECT_TRUE(succeeded(set.upload(src, tex)));
-  StageTextures stages{};
-  stages[0] = src;
-  ir::Result<pass::DrawReport> r = set.draw(p, stages, dst);
-  EXPECT_TRUE(r.ok()) << r.message();
-  img::Image out;
-  EXPECT_TRUE(succeeded(set.read(dst), out));
-  return out;
-}
-
 img::Image on_cpu(const img::Image& tex, cpu::Pass p, uint32_t w, uint32_t h) {
   p.textures[0].image = std::make_shared<img::Image>(tex);
   img::Image out(w, h, img::Format::RGBA32F);
@@ -78,7 +61,7 @@ TEST_F(ResidentTest, Rgba8PointFetchReadsTheInterpretersTexelEverywhere) {
   for (const Sweep& s : sweeps) {
     SCOPED_TRACE(s.what);
     const cpu::Pass p = read_pass(s.scale, s.offset, cpu::AddressMode::Clamp);
-    const img::Image vk = on_device(*dev, tex, p, s.w, s.h);
+    const img::Image vk = draw_reading(*dev, tex, img::Format::RGBA8, p, s.w, s.h);
     const img::Image cpu = on_cpu(tex, p, s.w, s.h);
     std::string where;
     EXPECT_TRUE(same_bits(cpu, vk, &where)) << where;
@@ -95,7 +78,7 @@ TEST_F(ResidentTest, Rgba8PointFetchGivesKOver255ForEveryLevel) {
   for (cpu::AddressMode mode : {cpu::AddressMode::Clamp, cpu::AddressMode::Wrap}) {
     SCOPED_TRACE(static_cast<int>(mode));
     const cpu::Pass p = read_pass({1, 1, 0, 0}, {0.5f / 16, 0.5f / 16, 0, 0}, mode);
-    const img::Image out = on_device(*dev, im, p, 16, 16);
+    const img::Image out = draw_reading(*dev, im, img::Format::RGBA8, p, 16, 16);
     ASSERT_EQ(out.rgba.size(), im.rgba.size());
     for (uint32_t q = 0; q < 256; ++q)
       for (uint32_t c = 0; c < 4; ++c) {
