@@ -37,6 +37,16 @@ Id Emitter::load_const(uint32_t index, const std::optional<ir::RelAddr>& rel) {
     // 0 rather than declare a gigantic block, as the interpreter's missing registers do.
     if (index >= 65536) return vec4_const(0, 0, 0, 0);
     consts_read_.insert(index);
+    const std::vector<bool>& replicated = prog.stage() == ir::ShaderStage::Vertex
+                                              ? opt.replicated_vs_constants
+                                              : opt.replicated_ps_constants;
+    if (index < replicated.size() && replicated[index]) {
+      // CodegenOptions::replicated_*: x stands for all four components.
+      const Id x =
+          b.op(Op::OpAccessChain, b.type_pointer(SC::Uniform, t_float),
+               {uniform_var_, b.const_uint(kMemberFloat), b.const_uint(index), b.const_uint(0)});
+      return splat(b.op(Op::OpLoad, t_float, {x}));
+    }
     const Id chain = b.op(Op::OpAccessChain, ptr_vec4,
                           {uniform_var_, b.const_uint(kMemberFloat), b.const_uint(index)});
     return b.op(Op::OpLoad, t_vec4, {chain});

@@ -55,6 +55,12 @@ struct CodegenOptions {
   // a few float operations (emit_texture.cpp). The device then binds the RGBA8 image itself.
   // SamplerInfo::fetch_unorm8 says which stages got it.
   std::array<bool, 16> stage_fetch_unorm8{};
+  // Per stage, the c# whose four components hold the same bits when the module runs (a
+  // weight replicated across rgba, as the glow's listings read theirs). A read of such a
+  // register without relative addressing loads its x and replicates it: the same value, and
+  // lavapipe runs it far faster than a vec4 uniform read (the glow's blur passes: 1.3×).
+  // The Vulkan device fills these from the constants it binds; empty: every read is a vec4.
+  std::vector<bool> replicated_vs_constants, replicated_ps_constants;
   bool optimize = false; // run spirv-opt's performance passes after validation
   // Entry point name.
   std::string entry_point = "main";

@@ -3,6 +3,7 @@
 // mapping, pass_draw.h for the split).
 #include "pass_draw.h"
 
+#include <bit>
 #include <chrono>
 #include <cstring>
 
@@ -111,6 +112,20 @@ bool fetches_in_place(const Resident* r, const pass::SamplerState& s) {
          s.address_u == pass::AddressMode::Clamp && s.address_v == pass::AddressMode::Clamp;
 }
 
+// The constants whose four components hold the same bits (codegen::CodegenOptions::
+// replicated_*): what the bank binds is what the module reads, since the draw is prepared
+// (and cached, draw_cache.h) for these constants.
+std::vector<bool> replicated_constants(const pass::ConstantBank& bank) {
+  std::vector<bool> out(bank.f.size());
+  for (size_t k = 0; k < bank.f.size(); ++k) {
+    const pass::Vec4& v = bank.f[k];
+    const auto x = std::bit_cast<uint32_t>(v[0]);
+    out[k] = x == std::bit_cast<uint32_t>(v[1]) && x == std::bit_cast<uint32_t>(v[2]) &&
+             x == std::bit_cast<uint32_t>(v[3]);
+  }
+  return out;
+}
+
 // The layouts a failed submit must restore (recording already advanced them).
 struct LayoutSnapshot {
   std::vector<std::pair<TrackedImage*, VkImageLayout>> saved;
@@ -201,6 +216,8 @@ std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawText
   auto ps_prog = pass.pixel_program ? pass.pixel_program : passthrough_pixel_program();
   codegen::CodegenOptions co;
   co.conventions = pass.conventions;
+  co.replicated_vs_constants = replicated_constants(pass.vs_constants);
+  co.replicated_ps_constants = replicated_constants(pass.ps_constants);
   for (uint32_t s = 0; s < pass::kMaxSamplers; ++s) {
     co.stage_projected[s] = pass.textures[s].stage.projected;
     co.stage_fetch_unorm8[s] = fetches_in_place(textures.stages[s], pass.textures[s].sampler);

@@ -1,8 +1,10 @@
-// CodegenOptions::stage_fetch_unorm8: a point read of an RGBA8 texture becomes a texel fetch
-// plus a few float operations that turn the device's UNORM value into k/255.0f exactly. The
-// module must validate and use the fetch only where asked (2D stages); the arithmetic the
-// shader does is replayed here on the host, for every level and for device values up to two
-// ulps away from k/255 (lavapipe's are one ulp off for 126 levels).
+// The options the Vulkan device sets per draw from what it binds.
+// * stage_fetch_unorm8: a point read of an RGBA8 texture becomes a texel fetch plus a few
+//   float operations that turn the device's UNORM value into k/255.0f exactly. The module
+//   must validate and use the fetch only where asked (2D stages); the arithmetic the shader
+//   does is replayed here on the host, for every level and for device values up to two ulps
+//   away from k/255 (lavapipe's are one ulp off for 126 levels).
+// * replicated_*_constants: a listed constant is read as one float, replicated.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -90,6 +92,26 @@ TEST(CodegenFetchUnorm8, DecodeGivesKOver255ForEveryLevelWithinTwoUlps) {
     }
   }
   EXPECT_EQ(inexact_products, 126); // the levels a k·(1/255) conversion gets wrong
+}
+
+// CodegenOptions::replicated_ps_constants: a listed c# read without relative addressing loads
+// one float (a Uniform float pointer into the block) and replicates it; the others, and every
+// relative read, stay vec4 loads. The module validates either way.
+TEST(CodegenReplicatedConstants, ListedRegistersLoadOneComponent) {
+  const std::string text = "ps_2_0\ndcl t0.xy\nmul r0, t0, c1\nmad r0, r0, c2, c1\nmov oC0, r0\n";
+  codegen::CodegenOptions opt;
+  opt.replicated_ps_constants = {false, true, false};
+  const auto m = build(text, opt);
+  ASSERT_TRUE(m);
+  const std::string with = dis(*m);
+  EXPECT_NE(with.find("%_ptr_Uniform_float"), std::string::npos);
+  const auto plain = build(text, {});
+  ASSERT_TRUE(plain);
+  EXPECT_EQ(dis(*plain).find("%_ptr_Uniform_float"), std::string::npos);
+  // The vertex stage's list is its own: a pixel-stage list leaves a vertex listing alone.
+  const auto vs = build("vs_2_0\ndcl_position v0\nmul oPos, v0, c1\n", opt);
+  ASSERT_TRUE(vs);
+  EXPECT_EQ(dis(*vs).find("%_ptr_Uniform_float"), std::string::npos);
 }
 
 } // namespace
