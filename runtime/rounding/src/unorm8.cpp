@@ -37,25 +37,13 @@ uint8_t unorm8_llvmpipe(float value) {
   return static_cast<uint8_t>(k);
 }
 
-void unorm8_llvmpipe_stored(const float* in, float* out, int n) {
+void unorm8_llvmpipe_bytes(const float* in, int32_t* out, int n) {
   for (int i = 0; i < n; ++i) {
-    // NaN and ≤ 0 → 0, ≥ 1 → 1 (product 255), as the two tests of unorm8_llvmpipe.
+    // NaN and ≤ 0 → 0, ≥ 1 → 255, as the two tests of unorm8_llvmpipe.
     const float v = in[i];
     const float t = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;
     const float scaled = t * 255.0f; // in [0, 255]: the same fl32 product
     // Truncation is floor here (scaled ≥ 0) and needs no rounding mode; the rest is exact.
-    int k = static_cast<int>(scaled);
-    const float rest = scaled - static_cast<float>(k);
-    k += (rest > 0.5f || (rest == 0.5f && (k & 1) != 0)) ? 1 : 0;
-    out[i] = static_cast<float>(k) / 255.0f; // unorm8_levels()[k], correctly rounded
-  }
-}
-
-void unorm8_llvmpipe_bytes(const float* in, int32_t* out, int n) {
-  for (int i = 0; i < n; ++i) {
-    const float v = in[i];
-    const float t = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; // as unorm8_llvmpipe_stored
-    const float scaled = t * 255.0f;
     int32_t k = static_cast<int32_t>(scaled);
     const float rest = scaled - static_cast<float>(k);
     out[i] = k + ((rest > 0.5f || (rest == 0.5f && (k & 1) != 0)) ? 1 : 0);

@@ -96,7 +96,8 @@ Vec4 blend_unorm8_llvmpipe(BlendMode mode, const Vec4& src_in, const Vec4& dst_i
 }
 
 // blend_unorm8_llvmpipe on lane arrays, for every blend mode: the source bytes, then the
-// destination's (read before any lane is written; a block's pixels are distinct), then the
+// destination's (Replace reads none; read before any lane is written, a block's pixels
+// being distinct), then the
 // same integer blend, lane by lane. The byte loops vectorise; the result is the same bits as
 // blend_unorm8_llvmpipe pixel by pixel (tests/cpu_draw/rgba8_block_blend_test.cpp).
 void store_block_unorm8_llvmpipe(BlendMode mode, const LaneVec4& src,
@@ -154,21 +155,8 @@ void store_block(BlendMode mode, img::Format format, ir::Rounding rounding, cons
       return store_block_float32<BlendMode::SrcAlphaInvSrcAlpha>(src, discarded, x, n, row);
     }
   }
-  if (format == img::Format::RGBA8 && rounding == ir::Rounding::Llvmpipe) {
-    if (mode == BlendMode::Replace) {
-      // Replace reads no destination: blend_unorm8_llvmpipe is then the byte of the source
-      // over 255, computed four lane arrays at a time instead of one pixel at a time.
-      LaneVec4 stored;
-      for (int c = 0; c < 4; ++c) rounding::unorm8_llvmpipe_stored(src.c[c], stored.c[c], n);
-      for (int l = 0; l < n; ++l) {
-        if (discarded[static_cast<size_t>(l)]) continue;
-        float* p = row + 4 * x[l];
-        for (int c = 0; c < 4; ++c) p[c] = stored.c[c][l];
-      }
-      return;
-    }
+  if (format == img::Format::RGBA8 && rounding == ir::Rounding::Llvmpipe)
     return store_block_unorm8_llvmpipe(mode, src, discarded, x, n, row);
-  }
   for (int l = 0; l < n; ++l) {
     if (discarded[static_cast<size_t>(l)]) continue;
     float* p = row + 4 * x[l];

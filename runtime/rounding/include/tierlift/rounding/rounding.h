@@ -48,15 +48,12 @@ float unorm8_nearest(float value);
 // the even side (fl32(0.5/255) = 0.00196078443 stores 0 here, 1 there). NUMERICS.md rule 34.
 uint8_t unorm8_llvmpipe(float value);
 
-// unorm8_llvmpipe(in[i]) / 255.0f — the float an RGBA8 target holds after the store — for
-// i < n, as one branch-free loop the compiler vectorises (the CPU device's block store). The
-// same steps on the same floats as the rule above, so the same bits for every input
-// (tests/cpu_draw/rgba8_store_llvmpipe_test.cpp walks the byte boundaries and ties).
-void unorm8_llvmpipe_stored(const float* in, float* out, int n);
-
-// The bytes behind the same rules, for i < n, as branch-free loops the compiler vectorises
-// (the CPU device's block blend on RGBA8 targets): unorm8_llvmpipe(in[i]) and the byte
-// unorm8_nearest(in[i]) stands for (round(clamp(in[i])·255) in double, ties up, NaN → 0).
+// The bytes of the rules above for in[i], i < n, as branch-free loops the compiler
+// vectorises (the CPU device's block store and blend on RGBA8 targets): the same steps on
+// the same floats, so the same bytes for every input (tests/cpu_draw/
+// rgba8_store_llvmpipe_test.cpp walks the byte boundaries and ties). unorm8_llvmpipe_bytes:
+// unorm8_llvmpipe(in[i]); unorm8_nearest_bytes: the byte unorm8_nearest(in[i]) stands for
+// (round(clamp(in[i])·255) in double, ties up, NaN → 0).
 void unorm8_llvmpipe_bytes(const float* in, int32_t* out, int n);
 void unorm8_nearest_bytes(const float* in, int32_t* out, int n);
 
