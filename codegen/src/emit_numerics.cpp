@@ -26,7 +26,19 @@ Id Emitter::bsplat(Id cond) {
 }
 
 Id Emitter::comp(Id vec4, uint32_t i) {
-  return b.op(Op::OpCompositeExtract, t_float, {vec4, i});
+  return keep_never_zero(vec4, b.op(Op::OpCompositeExtract, t_float, {vec4, i}));
+}
+
+Id Emitter::keep_never_zero(Id from, Id to) {
+  if (never_zero(from)) never_zero_.insert(to);
+  return to;
+}
+
+Id Emitter::false_const(int n) {
+  const Id no = b.const_bool(false);
+  if (n == 1) return no;
+  const Id parts[] = {no, no, no, no};
+  return b.const_composite(t_bvec4, parts);
 }
 
 Id Emitter::compose(Id x, Id y, Id z, Id w) {
@@ -108,7 +120,11 @@ Id SpirvArith::exp2(Id a) const {
 Id SpirvArith::log2(Id a) const {
   return e.glsl1(GLSLstd450Log2, a, n);
 }
+// A compare with zero of a value that is never zero (Emitter::never_zero_) is false; the
+// rules then drop the branch it would have chosen (lor, select below).
 Id SpirvArith::eq(Id a, Id c) const {
+  const Id zero = k(0.0f);
+  if ((c == zero && e.never_zero(a)) || (a == zero && e.never_zero(c))) return e.false_const(n);
   return e.cmp(Op::OpFOrdEqual, a, c, n);
 }
 Id SpirvArith::lt(Id a, Id c) const {
@@ -121,6 +137,8 @@ Id SpirvArith::ge(Id a, Id c) const {
   return e.cmp(Op::OpFOrdGreaterThanEqual, a, c, n);
 }
 Id SpirvArith::lor(Id a, Id c) const {
+  if (a == e.false_const(n)) return c;
+  if (c == e.false_const(n)) return a;
   return e.b.op(Op::OpLogicalOr, e.bool_type(n), {a, c});
 }
 Id SpirvArith::land(Id a, Id c) const {
@@ -130,6 +148,7 @@ Id SpirvArith::is_nan(Id a) const {
   return e.b.op(Op::OpIsNan, e.bool_type(n), {a});
 }
 Id SpirvArith::select(Id c, Id a, Id b) const {
+  if (c == e.false_const(n)) return b;
   return e.select(c, a, b, n);
 }
 

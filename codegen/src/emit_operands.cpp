@@ -40,16 +40,23 @@ Id Emitter::load_const(uint32_t index, const std::optional<ir::RelAddr>& rel) {
     const std::vector<bool>& replicated = prog.stage() == ir::ShaderStage::Vertex
                                               ? opt.replicated_vs_constants
                                               : opt.replicated_ps_constants;
+    const std::vector<bool>& nonzero = prog.stage() == ir::ShaderStage::Vertex
+                                           ? opt.nonzero_vs_constants
+                                           : opt.nonzero_ps_constants;
+    Id value;
     if (index < replicated.size() && replicated[index]) {
       // CodegenOptions::replicated_*: x stands for all four components.
       const Id x =
           b.op(Op::OpAccessChain, b.type_pointer(SC::Uniform, t_float),
                {uniform_var_, b.const_uint(kMemberFloat), b.const_uint(index), b.const_uint(0)});
-      return splat(b.op(Op::OpLoad, t_float, {x}));
+      value = splat(b.op(Op::OpLoad, t_float, {x}));
+    } else {
+      const Id chain = b.op(Op::OpAccessChain, ptr_vec4,
+                            {uniform_var_, b.const_uint(kMemberFloat), b.const_uint(index)});
+      value = b.op(Op::OpLoad, t_vec4, {chain});
     }
-    const Id chain = b.op(Op::OpAccessChain, ptr_vec4,
-                          {uniform_var_, b.const_uint(kMemberFloat), b.const_uint(index)});
-    return b.op(Op::OpLoad, t_vec4, {chain});
+    if (index < nonzero.size() && nonzero[index]) never_zero_.insert(value);
+    return value;
   }
   const_relative_ = true;
   Id offset;
@@ -136,6 +143,10 @@ Id Emitter::load_register(RegFile file, uint32_t index, const std::optional<ir::
 
 Id Emitter::load_src(const ir::SrcOperand& s, uint32_t index_offset) {
   Id v = load_register(s.file, s.index + index_offset, s.rel);
+  // Only a swizzle and a sign change keep a never-zero constant so (Emitter::never_zero_);
+  // the ps_1_x clamp and the other modifiers may make zeros.
+  const bool nonzero_kept = never_zero(v) && (s.mod == SrcMod::None || s.mod == SrcMod::Neg) &&
+                            !ir::is_ps1x(prog.profile);
   if (s.file == RegFile::Const && ir::is_ps1x(prog.profile))
     v = rule::clamp_sym(arith(4), v, splat(f(1.0f)));
   if (const int8_t by = ir::src_mod_info(s.mod).divide_by; by >= 0) {
@@ -148,7 +159,9 @@ Id Emitter::load_src(const ir::SrcOperand& s, uint32_t index_offset) {
              {v, v, ir::swizzle_component(s.swizzle, 0), ir::swizzle_component(s.swizzle, 1),
               ir::swizzle_component(s.swizzle, 2), ir::swizzle_component(s.swizzle, 3)});
   }
-  return ir::apply_source_modifier(arith(4), s.mod, v);
+  const Id out = ir::apply_source_modifier(arith(4), s.mod, v);
+  if (nonzero_kept) never_zero_.insert(out);
+  return out;
 }
 
 Id Emitter::scalar_src(const ir::SrcOperand& s) {

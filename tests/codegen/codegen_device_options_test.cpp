@@ -5,6 +5,8 @@
 //   does is replayed here on the host, for every level and for device values up to two ulps
 //   away from k/255 (lavapipe's are one ulp off for 126 levels).
 // * replicated_*_constants: a listed constant is read as one float, replicated.
+// * nonzero_*_constants: a product with a listed constant tests only the other factor for
+//   zero (the Vulkan tests compare the images with the interpreter's).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -112,6 +114,35 @@ TEST(CodegenReplicatedConstants, ListedRegistersLoadOneComponent) {
   const auto vs = build("vs_2_0\ndcl_position v0\nmul oPos, v0, c1\n", opt);
   ASSERT_TRUE(vs);
   EXPECT_EQ(dis(*vs).find("%_ptr_Uniform_float"), std::string::npos);
+}
+
+size_t count(const std::string& text, const std::string& what) {
+  size_t n = 0;
+  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+TEST(CodegenNonzeroConstants, ProductsTestOnlyTheOtherFactor) {
+  const std::string text = "ps_2_0\ndcl t0.xy\nmul r0, t0, -c1.yzxw\nmov oC0, r0\n";
+  codegen::CodegenOptions opt;
+  opt.nonzero_ps_constants = {false, true};
+  const auto with = build(text, opt);
+  const auto plain = build(text, {});
+  ASSERT_TRUE(with && plain);
+  EXPECT_EQ(count(dis(*with), "OpFOrdEqual"), 1u);
+  EXPECT_EQ(count(dis(*with), "OpLogicalOr"), 0u);
+  EXPECT_EQ(count(dis(*plain), "OpFOrdEqual"), 2u);
+  EXPECT_EQ(count(dis(*plain), "OpLogicalOr"), 1u);
+  // A register not listed, and ps_1_x (its constants are clamped to [-1, 1] on read; the
+  // clamp of a NaN may be a zero), keep both tests.
+  opt.nonzero_ps_constants = {true, false};
+  const auto other = build(text, opt);
+  ASSERT_TRUE(other);
+  EXPECT_EQ(count(dis(*other), "OpLogicalOr"), 1u);
+  opt.nonzero_ps_constants = {true};
+  const auto ps14 = build("ps_1_4\nmul r0, r0, c0\n", opt);
+  ASSERT_TRUE(ps14);
+  EXPECT_GE(count(dis(*ps14), "OpLogicalOr"), 1u);
 }
 
 } // namespace

@@ -1,8 +1,13 @@
-// Constants whose four components hold the same bits are read as one float and replicated
-// (codegen::CodegenOptions::replicated_*_constants, set by the Vulkan device from the bank it
-// binds). The image must be the interpreter's, bit for bit, whether or not a constant
-// qualifies: replicated weights, weights that differ per channel, zeros of both signs (equal
-// as floats, not as bits), NaN and infinities.
+// What the Vulkan device tells the code generator about the constants it binds:
+// * codegen::CodegenOptions::replicated_*_constants: a constant whose four components hold
+//   the same bits is read as one float and replicated;
+// * codegen::CodegenOptions::nonzero_*_constants: in a product with a constant none of whose
+//   components is ±0 or a denormal, the "0 × anything = +0" rule tests only the other factor.
+// The image must be the interpreter's, bit for bit, whether or not a constant qualifies:
+// replicated weights, weights that differ per channel, zeros of both signs (equal as floats,
+// not as bits), denormals (zeros to lavapipe and to the interpreter's default rounding),
+// NaN and infinities, against texels that are zeros of both signs, denormals, tiny values
+// whose products underflow, NaN and infinities.
 #include <cmath>
 #include <limits>
 
@@ -39,6 +44,49 @@ TEST_F(ResidentTest, ReplicatedConstantsGiveTheInterpretersImage) {
     ASSERT_TRUE(cpu::draw(p, cpu, 2).ok());
     std::string where;
     EXPECT_TRUE(same_bits(cpu, vk, &where)) << where;
+  }
+}
+
+// Bit for bit, except that any NaN matches any NaN: lavapipe's compiler moves a negation past
+// a product (a × −b becomes −(a × b)), which flips the sign of a NaN the product passes on;
+// the interpreter negates first. Zeros still compare by their bits.
+bool same_bits_but_nan_signs(img::Image a, img::Image b, std::string* where) {
+  for (img::Image* im : {&a, &b})
+    for (float& x : im->rgba)
+      if (std::isnan(x)) x = std::numeric_limits<float>::quiet_NaN();
+  return same_bits(a, b, where);
+}
+
+TEST_F(ResidentTest, NonZeroConstantsKeepTheZeroRule) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  const float specials[] = {0.0f, -0.0f, 1e-39f, -1e-39f, 1e-30f, -1e-30f, nan, inf, -inf, 0.75f};
+  img::Image tex(17, 9, img::Format::RGBA32F);
+  for (size_t i = 0; i < tex.rgba.size(); ++i)
+    tex.rgba[i] = specials[(i * 7) % std::size(specials)];
+  const std::vector<cpu::Vec4> banks[] = {
+      // Every constant qualifies; products with the tiny texels underflow to zeros of their sign.
+      {{1e-10f, 1e-10f, 1e-10f, 1e-10f}, {-3, 0.5f, -1e-38f, 2}, {inf, -inf, nan, 1}},
+      // None qualifies: a zero or a denormal component in each.
+      {{0.5f, 0, 1, 2}, {1e-40f, 1e-40f, 1e-40f, 1e-40f}, {-0.0f, 1, 1, 1}},
+  };
+  // Products with the constant second, negated and swizzled, first, and in a dot product.
+  const auto ps = parse_listing("ps_2_0\ndcl t0.xy\ndcl t1.xy\ndcl_2d s0\ntexld r0, t0, s0\n"
+                                "texld r1, t1, s0\nmul r0, r0, c0\nmad r0, r1, -c1.yzxw, r0\n"
+                                "mul r0, c2, r0\ndp3 r2.x, r1, c1\nadd r0.y, r0.y, r2.x\n"
+                                "mov oC0, r0\n",
+                                "nonzero.psh");
+  for (const auto& bank : banks) {
+    const cpu::Vec4 off{0.5f / tex.width, 0.5f / tex.height, 0, 0};
+    cpu::Pass p = quad_pass(two_coords_vs(), ps, {off, {1.5f / tex.width, off[1], 0, 0}}, bank,
+                            cpu::BlendMode::Replace);
+    p.textures[0].sampler.filter = cpu::Filter::Point;
+    const img::Image vk = draw_reading(*dev, tex, img::Format::RGBA32F, p, tex.width, tex.height);
+    p.textures[0].image = std::make_shared<img::Image>(tex);
+    img::Image cpu(tex.width, tex.height, img::Format::RGBA32F);
+    ASSERT_TRUE(cpu::draw(p, cpu, 2).ok());
+    std::string where;
+    EXPECT_TRUE(same_bits_but_nan_signs(cpu, vk, &where)) << where;
   }
 }
 

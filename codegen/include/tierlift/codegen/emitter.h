@@ -6,6 +6,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -109,6 +110,13 @@ public:
   SpirvArith arith(int n = 4);
   Id dot(Id a, Id c, int count); // rule::dot over the first count components of two vec4
   Id to_index(Id x);             // rule::index_range, then float → int
+  // Values known never to compare equal to zero in any component (CodegenOptions::
+  // nonzero_*_constants, through swizzles, negation and component extraction): the rules'
+  // compares with zero fold to false for them (SpirvArith::eq, lor, select).
+  std::unordered_set<Id> never_zero_;
+  bool never_zero(Id v) const { return never_zero_.contains(v); }
+  Id keep_never_zero(Id from, Id to); // `to` is never zero where `from` is; returns `to`
+  Id false_const(int n);              // false of width n
 
   // ---- registers and operands (emit_operands.cpp) ----
   Id register_var(ir::RegFile file, uint32_t index); // Private vec4 (a0: ivec4)

@@ -3,6 +3,7 @@
 // mapping, pass_draw.h for the split).
 #include "pass_draw.h"
 
+#include <algorithm>
 #include <bit>
 #include <chrono>
 #include <cstring>
@@ -126,6 +127,16 @@ std::vector<bool> replicated_constants(const pass::ConstantBank& bank) {
   return out;
 }
 
+// The constants none of whose components compares equal to zero, even with denormals read as
+// zeros (codegen::CodegenOptions::nonzero_*): a non-zero exponent field in all four.
+std::vector<bool> nonzero_constants(const pass::ConstantBank& bank) {
+  std::vector<bool> out(bank.f.size());
+  for (size_t k = 0; k < bank.f.size(); ++k)
+    out[k] = std::ranges::all_of(
+        bank.f[k], [](float x) { return (std::bit_cast<uint32_t>(x) & 0x7F800000u) != 0; });
+  return out;
+}
+
 // The layouts a failed submit must restore (recording already advanced them).
 struct LayoutSnapshot {
   std::vector<std::pair<TrackedImage*, VkImageLayout>> saved;
@@ -218,6 +229,8 @@ std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawText
   co.conventions = pass.conventions;
   co.replicated_vs_constants = replicated_constants(pass.vs_constants);
   co.replicated_ps_constants = replicated_constants(pass.ps_constants);
+  co.nonzero_vs_constants = nonzero_constants(pass.vs_constants);
+  co.nonzero_ps_constants = nonzero_constants(pass.ps_constants);
   for (uint32_t s = 0; s < pass::kMaxSamplers; ++s) {
     co.stage_projected[s] = pass.textures[s].stage.projected;
     co.stage_fetch_unorm8[s] = fetches_in_place(textures.stages[s], pass.textures[s].sampler);
