@@ -53,7 +53,16 @@ bool Emitter::fetches(uint32_t stage) const {
   return opt.stage_fetch_unorm8[stage & 15] && sampler_type(stage) == ir::SamplerType::Tex2D;
 }
 
-Id Emitter::fetch_unorm8(Id si, Id uv) {
+Id Emitter::point_texel_unorm8(Id si, Id uv) {
+  const Id zero2 = b.const_composite(t_vec2, std::array{f(0), f(0)});
+  const Id one2 = b.const_composite(t_vec2, std::array{f(1), f(1)});
+  if (opt.point_sampling_floors) {
+    // The device's own point sampler picks the interpreter's texel for u in [0, 1]; outside,
+    // the edge texel is the one u = 0 or 1 picks, and NClamp sends a NaN to 0 as point_texel
+    // does (NMax returns the other operand).
+    const Id in_range = b.ext_inst(glsl, t_vec2, GLSLstd450NClamp, std::array{uv, zero2, one2});
+    return b.op(Op::OpImageSampleImplicitLod, t_vec4, {si, in_range});
+  }
   // The texel index point sampling takes on each axis: floor(fl32(u·N)) (one float multiply,
   // as the interpreter's point_texel), NaN → 0, clamped to [0, N − 1] (CLAMP addressing).
   b.capability(spv::Capability::ImageQuery);
@@ -61,8 +70,6 @@ Id Emitter::fetch_unorm8(Id si, Id uv) {
   const Id image = b.op(Op::OpImage, b.type_image(t_float, spv::Dim::Dim2D), {si});
   const Id size = b.op(Op::OpImageQuerySizeLod, t_ivec2, {image, b.const_int(0)});
   const Id n = b.op(Op::OpConvertSToF, t_vec2, {size});
-  const Id zero2 = b.const_composite(t_vec2, std::array{f(0), f(0)});
-  const Id one2 = b.const_composite(t_vec2, std::array{f(1), f(1)});
   const Id x = b.op(Op::OpFMul, t_vec2, {uv, n});
   b.decorate(x, spv::Decoration::NoContraction);
   const Id finite = b.op(Op::OpSelect, t_vec2, {b.op(Op::OpIsNan, t_bvec2, {x}), zero2, x});
@@ -70,9 +77,12 @@ Id Emitter::fetch_unorm8(Id si, Id uv) {
   const Id last = b.op(Op::OpFSub, t_vec2, {n, one2});
   const Id clamped = b.ext_inst(glsl, t_vec2, GLSLstd450FClamp, std::array{floor, zero2, last});
   const Id index = b.op(Op::OpConvertFToS, t_ivec2, {clamped});
-  const Id texel =
-      b.op(Op::OpImageFetch, t_vec4,
-           {image, index, static_cast<uint32_t>(spv::ImageOperandsMask::Lod), b.const_int(0)});
+  return b.op(Op::OpImageFetch, t_vec4,
+              {image, index, static_cast<uint32_t>(spv::ImageOperandsMask::Lod), b.const_int(0)});
+}
+
+Id Emitter::fetch_unorm8(Id si, Id uv) {
+  const Id texel = point_texel_unorm8(si, uv);
   // The texel's exact k/255.0f from the device's UNORM value v (which may be an ulp or two
   // off k/255, as lavapipe's is for 126 of the 256 levels):
   //   k = roundEven(v·255)                      exact: v is far closer to k/255 than 1/510

@@ -66,6 +66,23 @@ TEST(CodegenFetchUnorm8, Ps1xTexFetchesToo) {
   EXPECT_TRUE(m->samplers[0].fetch_unorm8);
 }
 
+// CodegenOptions::point_sampling_floors (lavapipe): the device's own point sampler finds the
+// texel at the coordinate clamped to [0, 1]; the value is decoded the same way. The Vulkan
+// tests compare both ways with the interpreter on lavapipe.
+TEST(CodegenFetchUnorm8, PointSamplingFloorsSamplesTheClampedCoordinate) {
+  codegen::CodegenOptions opt;
+  opt.stage_fetch_unorm8[0] = true;
+  opt.point_sampling_floors = true;
+  const auto m = build(kTwoStages, opt);
+  ASSERT_TRUE(m);
+  EXPECT_TRUE(m->samplers[0].fetch_unorm8);
+  const std::string text = dis(*m);
+  EXPECT_EQ(text.find("OpImageFetch"), std::string::npos);
+  EXPECT_EQ(text.find("OpImageQuerySizeLod"), std::string::npos);
+  EXPECT_NE(text.find("NClamp"), std::string::npos);
+  EXPECT_NE(text.find("RoundEven"), std::string::npos); // the decode
+}
+
 // The shader's steps on one value v (emit_texture.cpp), each rounded to float as the device
 // rounds it: k = roundEven(v·255), then (k·65793 + v)·2^-24.
 float decode(float v) {

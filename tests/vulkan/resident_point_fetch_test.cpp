@@ -1,8 +1,12 @@
-// A point read of a resident RGBA8 texture with edge clamping fetches the stored bytes in the
+// A point read of a resident RGBA8 texture with edge clamping reads the stored bytes in the
 // shader (codegen::CodegenOptions::stage_fetch_unorm8) instead of sampling a float copy. It
 // must read the texel the CPU device reads, at every coordinate (texel corners that float
 // cannot hold, outside the texture, NaN, infinities), and the value k/255.0f that the float
 // copy held: checked here against the CPU device and against values computed in the test.
+// Both ways to find the texel are checked on lavapipe: its own point sampler at the clamped
+// coordinate (CodegenOptions::point_sampling_floors, lavapipe's default) and the index the
+// shader computes, then a fetch (every other device; DeviceOptions::llvmpipe_point_sampling
+// off).
 #include <cmath>
 #include <limits>
 
@@ -45,7 +49,22 @@ struct Sweep {
   uint32_t w, h;
 };
 
-TEST_F(ResidentTest, Rgba8PointFetchReadsTheInterpretersTexelEverywhere) {
+// The resident tests' device with the shader-computed index and fetch, as on a GPU.
+const ir::Result<Device*>& index_fetching_device() {
+  static const ir::Result<Device*> shared = [] {
+    DeviceOptions o;
+    o.synchronization_validation = true;
+    o.llvmpipe_point_sampling = false;
+    return program_device(o);
+  }();
+  return shared;
+}
+class ResidentIndexFetchTest : public ResidentTest {
+protected:
+  const ir::Result<Device*>& acquire_device() override { return index_fetching_device(); }
+};
+
+void reads_the_interpreters_texel_everywhere(Device& dev) {
   const img::Image tex = levels_texture();
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const float inf = std::numeric_limits<float>::infinity();
@@ -61,14 +80,14 @@ TEST_F(ResidentTest, Rgba8PointFetchReadsTheInterpretersTexelEverywhere) {
   for (const Sweep& s : sweeps) {
     SCOPED_TRACE(s.what);
     const cpu::Pass p = read_pass(s.scale, s.offset, cpu::AddressMode::Clamp);
-    const img::Image vk = draw_reading(*dev, tex, img::Format::RGBA8, p, s.w, s.h);
+    const img::Image vk = draw_reading(dev, tex, img::Format::RGBA8, p, s.w, s.h);
     const img::Image cpu = on_cpu(tex, p, s.w, s.h);
     std::string where;
     EXPECT_TRUE(same_bits(cpu, vk, &where)) << where;
   }
 }
 
-TEST_F(ResidentTest, Rgba8PointFetchGivesKOver255ForEveryLevel) {
+void gives_k_over_255_for_every_level(Device& dev) {
   // 16 × 16 texels, level (p + 64c) mod 256 on channel c of texel p; read at texel centres
   // with edge clamping (the in-place fetch) and with wrapping (the float copy): both must
   // hold exactly k/255.0f, computed here.
@@ -78,7 +97,7 @@ TEST_F(ResidentTest, Rgba8PointFetchGivesKOver255ForEveryLevel) {
   for (cpu::AddressMode mode : {cpu::AddressMode::Clamp, cpu::AddressMode::Wrap}) {
     SCOPED_TRACE(static_cast<int>(mode));
     const cpu::Pass p = read_pass({1, 1, 0, 0}, {0.5f / 16, 0.5f / 16, 0, 0}, mode);
-    const img::Image out = draw_reading(*dev, im, img::Format::RGBA8, p, 16, 16);
+    const img::Image out = draw_reading(dev, im, img::Format::RGBA8, p, 16, 16);
     ASSERT_EQ(out.rgba.size(), im.rgba.size());
     for (uint32_t q = 0; q < 256; ++q)
       for (uint32_t c = 0; c < 4; ++c) {
@@ -86,6 +105,19 @@ TEST_F(ResidentTest, Rgba8PointFetchGivesKOver255ForEveryLevel) {
         ASSERT_EQ(out.rgba[q * 4 + c], float(k) / 255.0f) << "level " << k;
       }
   }
+}
+
+TEST_F(ResidentTest, Rgba8PointFetchReadsTheInterpretersTexelEverywhere) {
+  reads_the_interpreters_texel_everywhere(*dev);
+}
+TEST_F(ResidentIndexFetchTest, Rgba8PointFetchReadsTheInterpretersTexelEverywhere) {
+  reads_the_interpreters_texel_everywhere(*dev);
+}
+TEST_F(ResidentTest, Rgba8PointFetchGivesKOver255ForEveryLevel) {
+  gives_k_over_255_for_every_level(*dev);
+}
+TEST_F(ResidentIndexFetchTest, Rgba8PointFetchGivesKOver255ForEveryLevel) {
+  gives_k_over_255_for_every_level(*dev);
 }
 
 } // namespace

@@ -55,6 +55,13 @@ struct CodegenOptions {
   // a few float operations (emit_texture.cpp). The device then binds the RGBA8 image itself.
   // SamplerInfo::fetch_unorm8 says which stages got it.
   std::array<bool, 16> stage_fetch_unorm8{};
+  // The device's point sampler with CLAMP_TO_EDGE picks texel floor(fl32(u·N)), clamped to
+  // [0, N − 1], for every u in [0, 1] on each axis, as the interpreter does (lavapipe: one
+  // float multiply and a floor; not a GPU, whose sub-texel coordinates are fixed point). A
+  // stage_fetch_unorm8 read then samples the RGBA8 image at (u, v) clamped to [0, 1] (NaN →
+  // 0; every u outside picks the same edge texel as before) and decodes the value as the
+  // fetch does, instead of computing the index and fetching.
+  bool point_sampling_floors = false;
   // Per stage, the c# whose four components hold the same bits when the module runs (a
   // weight replicated across rgba, as the glow's listings read theirs). A read of such a
   // register without relative addressing loads its x and replicates it: the same value, and

@@ -175,6 +175,14 @@ ir::Result<std::unique_ptr<Device>> Device::create(const DeviceOptions& options)
   impl->physical = chosen;
   vkGetPhysicalDeviceProperties(chosen, &impl->props);
   vkGetPhysicalDeviceMemoryProperties(chosen, &impl->memory);
+  // lavapipe (Mesa's vendor id, a CPU device named llvmpipe): its point sampler takes the
+  // texel index as floor(fl32(u·N)), the interpreter's (lp_bld_sample*.c: one multiply by
+  // the float size, then a floor). A GPU's fixed-point sub-texel coordinates do not.
+  constexpr uint32_t kMesaVendorId = 0x10005; // VK_VENDOR_ID_MESA
+  impl->point_sampling_floors = options.llvmpipe_point_sampling &&
+                                impl->props.vendorID == kMesaVendorId &&
+                                impl->props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU &&
+                                std::string_view(impl->props.deviceName).starts_with("llvmpipe");
   if (impl->props.apiVersion < VK_API_VERSION_1_1)
     return fail(fmt::format("{} supports only Vulkan {}.{}; tierlift needs 1.1",
                             impl->props.deviceName, VK_API_VERSION_MAJOR(impl->props.apiVersion),

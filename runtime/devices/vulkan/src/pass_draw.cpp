@@ -231,6 +231,7 @@ std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawText
   co.replicated_ps_constants = replicated_constants(pass.ps_constants);
   co.nonzero_vs_constants = nonzero_constants(pass.vs_constants);
   co.nonzero_ps_constants = nonzero_constants(pass.ps_constants);
+  co.point_sampling_floors = d.point_sampling_floors;
   for (uint32_t s = 0; s < pass::kMaxSamplers; ++s) {
     co.stage_projected[s] = pass.textures[s].stage.projected;
     co.stage_fetch_unorm8[s] = fetches_in_place(textures.stages[s], pass.textures[s].sampler);

@@ -30,6 +30,9 @@ struct Device::Impl {
   VkCommandPool pool = VK_NULL_HANDLE;
   VkPhysicalDeviceProperties props{};
   VkPhysicalDeviceMemoryProperties memory{};
+  // codegen::CodegenOptions::point_sampling_floors: this device is lavapipe and
+  // DeviceOptions::llvmpipe_point_sampling leaves it on.
+  bool point_sampling_floors = false;
 
   std::unique_ptr<Unorm8Converter> unorm8; // created on first use
   // pipeline_cache.h: created on first use, saved when pipelines were added.

@@ -60,6 +60,12 @@ struct DeviceOptions {
   // With `validation`: also enable the layer's synchronization validation (hazards between
   // commands: missing or wrong barriers). Slower; tests of barrier-heavy paths use it.
   bool synchronization_validation = false;
+  // On lavapipe, a point read of a resident RGBA8 texture samples it with the device's own
+  // point sampler and decodes the value, instead of computing the texel index in the shader
+  // and fetching (codegen::CodegenOptions::point_sampling_floors): lavapipe picks the
+  // interpreter's texel, and samples 8-bit texels faster than it fetches them. Ignored on
+  // any other device. false: the fetch everywhere (tests cover both paths on lavapipe).
+  bool llvmpipe_point_sampling = true;
   // Called once when the device is destroyed, after vkDestroyDevice and vkDestroyInstance,
   // with every message not cleared before. With `validation` these include the layer's
   // report of Vulkan objects created and never destroyed (it checks at both calls); tests
