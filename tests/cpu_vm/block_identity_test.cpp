@@ -250,6 +250,18 @@ const char* const kEveryForm[] = {
     "ps_1_1\ndef c4, 1e-40, -1e-40, 0.5, -1.4e-45\ntex t0\ntexcoord t1\n"
     "mul_x2 r0.rgb, t0_bx2, c4\n+add r0.a, t1.a, -c4.b\nmad r1, c4, t1_bias, -t0\n"
     "cnd r0, r0.a, r1, c4\nadd r0, r0, c4\n",
+    // Products with a constant factor that is ±0 in every component (the product is +0; mad
+    // adds +0 to its addend, which turns a -0 addend into +0) or never zero (only the other
+    // factor is tested), on either side, each result written out on its own.
+    "ps_2_0\ndef c8, 0, -0, 0, -0\ndcl t0\ndcl v0\ndcl_2d s0\ntexld r0, t0, s0\n"
+    "mad r1, r0, c8, -v0\nmov oC0, r1\n",
+    "ps_2_0\ndef c8, 0, -0, 0, -0\ndcl t0\ndcl v0\nmad r1, c8.yzxw, t0, v0\nmov oC0, r1\n",
+    "ps_2_0\ndef c8, -0, -0, 0, 0\ndcl v0\nmul r1, c8, v0\nmov oC0, r1\n",
+    "ps_2_0\ndef c9, 0.5, -2, 1e30, -1e-10\ndcl t0\ndcl v0\ndcl_2d s0\ntexld r0, t0, s0\n"
+    "mad r1, r0, c9, -v0\nmov oC0, r1\n",
+    "ps_2_0\ndef c9, 0.5, -2, 1e30, -1e-10\ndcl t0\ndcl v0\nmul r1, c9.wzyx, v0\n"
+    "mad r1, c9, t0, r1\nmov oC0, r1\n",
+    "ps_2_0\ndef c9, 0.5, -2, 1e30, -1e-10\ndcl v0\nmul r1, v0, c9\nmov oC0, r1\n",
 };
 
 // Every listing of kEveryForm in every conventions mode, seeds from `first_seed` on (the cases

@@ -51,6 +51,7 @@ struct SpirvArith {
   Id add(Id a, Id c) const;
   Id sub(Id a, Id c) const;
   Id fmul(Id a, Id c) const;
+  Id fmul_y_normal(Id a, Id c) const { return fmul(a, c); }
   Id div(Id a, Id c) const;
   Id neg(Id a) const;
   Id abs(Id a) const;

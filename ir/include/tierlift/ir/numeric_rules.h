@@ -8,6 +8,8 @@
 // A back end `A` provides a value type `A::V`, a condition type `A::B` and:
 //   k(x)                      a constant of the back end's width
 //   add sub fmul div          one fp32 operation each, one rounding (fmul: a plain product)
+//   fmul_y_normal(x, y)       fmul when y is known not to be a denormal (the Flush mode
+//                             need not flush it; the value is fmul's)
 //   neg abs                   data movement: they change the sign bit only
 //   floor sqrt exp2 log2      one operation each
 //   eq lt gt ge               ordered compares: a NaN makes them false
@@ -41,6 +43,27 @@ template <class A, class V = typename A::V> V mul(const A& a, V x, V y) {
 // Rule 14: mad = round(round(x × y) + z), not fused.
 template <class A, class V = typename A::V> V mad(const A& a, V x, V y, V z) {
   return a.add(mul(a, x, y), z);
+}
+
+// Rules 8 and 14 when one factor is known never to compare equal to zero (a non-zero
+// exponent field: a normal number, an infinity or a NaN; never ±0 or a denormal, which the
+// Flush mode reads as zero): only the other factor is tested. The same value as mul / mad
+// for every value of the tested factor, one compare and one OR fewer. The CPU block executor
+// uses them for a constant factor (vm_block.cpp); the code generator gets the same by
+// folding its compare (CodegenOptions::nonzero_*_constants).
+template <class A, class V = typename A::V> V mul_y_nonzero(const A& a, V x, V y) {
+  const V zero = a.k(0.0f);
+  return a.select(a.eq(x, zero), zero, a.fmul_y_normal(x, y));
+}
+template <class A, class V = typename A::V> V mul_x_nonzero(const A& a, V x, V y) {
+  const V zero = a.k(0.0f);
+  return a.select(a.eq(y, zero), zero, a.fmul(x, y));
+}
+template <class A, class V = typename A::V> V mad_y_nonzero(const A& a, V x, V y, V z) {
+  return a.add(mul_y_nonzero(a, x, y), z);
+}
+template <class A, class V = typename A::V> V mad_x_nonzero(const A& a, V x, V y, V z) {
+  return a.add(mul_x_nonzero(a, x, y), z);
 }
 
 // Rule 15: dot products sum left to right, ((x0·y0 + x1·y1) + x2·y2) + x3·y3.

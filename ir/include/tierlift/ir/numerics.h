@@ -61,6 +61,7 @@ template <Denormals D> struct FloatArith {
   static float add(float a, float b) { return dz<D>(dz<D>(a) + dz<D>(b)); }
   static float sub(float a, float b) { return dz<D>(dz<D>(a) - dz<D>(b)); }
   static float fmul(float a, float b) { return dz<D>(dz<D>(a) * dz<D>(b)); }
+  static float fmul_y_normal(float a, float b) { return dz<D>(dz<D>(a) * b); }
   static float div(float a, float b) { return dz<D>(dz<D>(a) / dz<D>(b)); }
   static float neg(float a) { return -a; }
   static float abs(float a) { return std::fabs(a); }
@@ -115,6 +116,13 @@ template <Denormals D = kKeep> inline float legacy_cos(float x) {
 // Products (rules 8, 14) and lrp.
 TIERLIFT_FP32_RULE(legacy_mul, mul, (float a, float b), TL_ARGS(a, b))
 TIERLIFT_FP32_RULE(legacy_mad, mad, (float a, float b, float c), TL_ARGS(a, b, c))
+// The same with a factor known never to compare equal to zero (numeric_rules.h).
+TIERLIFT_FP32_RULE(legacy_mul_y_nonzero, mul_y_nonzero, (float a, float b), TL_ARGS(a, b))
+TIERLIFT_FP32_RULE(legacy_mul_x_nonzero, mul_x_nonzero, (float a, float b), TL_ARGS(a, b))
+TIERLIFT_FP32_RULE(legacy_mad_y_nonzero, mad_y_nonzero, (float a, float b, float c),
+                   TL_ARGS(a, b, c))
+TIERLIFT_FP32_RULE(legacy_mad_x_nonzero, mad_x_nonzero, (float a, float b, float c),
+                   TL_ARGS(a, b, c))
 TIERLIFT_FP32_RULE(legacy_lrp, lrp, (float s0, float s1, float s2), TL_ARGS(s0, s1, s2))
 // Scalar transcendental instructions (rules 1–7, 16–18).
 TIERLIFT_FP32_RULE(legacy_rcp, rcp, (float x), x)

@@ -137,6 +137,20 @@ void compute_per_lane(const vm::Step& st, const View* s, int n, int mask, LaneVe
   }
 }
 
+// Source k is a folded constant none of whose components in `mask` compares equal to zero
+// (BlockSrc::nonzero): products with it test only the other factor.
+TL_INLINE bool nonzero_factor(const BlockStep& b, int k, int mask) {
+  const BlockSrc& s = b.src[static_cast<size_t>(k)];
+  return s.way == SrcWay::Folded && (s.nonzero & mask) == mask;
+}
+
+// Source k is a folded constant whose components in `mask` are all ±0 (BlockSrc::zero): a
+// product with it is +0 (rule 8), whatever the other factor holds.
+TL_INLINE bool zero_factor(const BlockStep& b, int k, int mask) {
+  const BlockSrc& s = b.src[static_cast<size_t>(k)];
+  return s.way == SrcWay::Folded && (s.zero & mask) == mask;
+}
+
 // The VM's compute functions of the same opcodes (vm_arith.cpp) call the same rules with the
 // same D; compute_per_lane calls the VM's own, taken from the table of the program's mode.
 template <Denormals D>
@@ -155,11 +169,27 @@ TL_INLINE void compute(const Impl& im, const BlockStep& b, int half, int n, Scra
     lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_sub<D>(a, e); });
     return;
   case Opcode::Mul:
-    lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_mul<D>(a, e); });
+    if (zero_factor(b, 1, m) || zero_factor(b, 0, m))
+      lanes1(d, m, s[0], [](float) { return 0.0f; });
+    else if (nonzero_factor(b, 1, m))
+      lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_mul_y_nonzero<D>(a, e); });
+    else if (nonzero_factor(b, 0, m))
+      lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_mul_x_nonzero<D>(a, e); });
+    else
+      lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_mul<D>(a, e); });
     return;
   case Opcode::Mad:
-    lanes3(d, m, s[0], s[1], s[2],
-           [](float a, float e, float f) { return num::legacy_mad<D>(a, e, f); });
+    if (zero_factor(b, 1, m) || zero_factor(b, 0, m))
+      lanes1(d, m, s[2], [](float f) { return num::legacy_add<D>(0.0f, f); });
+    else if (nonzero_factor(b, 1, m))
+      lanes3(d, m, s[0], s[1], s[2],
+             [](float a, float e, float f) { return num::legacy_mad_y_nonzero<D>(a, e, f); });
+    else if (nonzero_factor(b, 0, m))
+      lanes3(d, m, s[0], s[1], s[2],
+             [](float a, float e, float f) { return num::legacy_mad_x_nonzero<D>(a, e, f); });
+    else
+      lanes3(d, m, s[0], s[1], s[2],
+             [](float a, float e, float f) { return num::legacy_mad<D>(a, e, f); });
     return;
   case Opcode::Min:
     lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_min<D>(a, e); });

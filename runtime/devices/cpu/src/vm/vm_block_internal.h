@@ -45,6 +45,12 @@ struct BlockSrc {
   uint16_t slot = 0;
   uint8_t comp[4] = {0, 1, 2, 3};
   int32_t folded = -1;
+  // Folded: bit c set when component c never compares equal to zero (a non-zero exponent
+  // field), so a product with it needs to test only the other factor (rule::mul_y_nonzero).
+  uint8_t nonzero = 0;
+  // Folded: bit c set when component c is ±0, so a product with it is +0 whatever the other
+  // factor (rule 8): mul stores +0 and mad adds +0 to its addend.
+  uint8_t zero = 0;
   // Reads PixelBlockInput::tex[slot − kTexBase] in place of the register: t# that no step
   // writes hold the coordinates unchanged, so the 1 KB copy into the register per block and
   // per coordinate is saved (find_input_reads).

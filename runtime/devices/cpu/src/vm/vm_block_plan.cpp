@@ -2,6 +2,7 @@
 // takes, which constants are folded once per draw, and which register components start at
 // zero. Programs it does not take run on the per-pixel VM.
 #include <algorithm>
+#include <bit>
 #include <stdexcept>
 
 #include "tierlift/ir/numerics.h"
@@ -49,7 +50,13 @@ bool plan_src(const vm::SrcDesc& s, Impl& im, const ConstantBank& bank, BlockSrc
     inv.consts = &bank;
     out.way = SrcWay::Folded;
     out.folded = static_cast<int32_t>(im.folded.size());
-    im.folded.push_back(splat4(vm::fetch_general(s, inv)));
+    const Vec4 v = vm::fetch_general(s, inv);
+    im.folded.push_back(splat4(v));
+    for (int c = 0; c < 4; ++c) {
+      const uint32_t bits = std::bit_cast<uint32_t>(v[c]);
+      if ((bits & 0x7F800000u) != 0) out.nonzero |= uint8_t(1u << c);
+      if ((bits & 0x7FFFFFFFu) == 0) out.zero |= uint8_t(1u << c);
+    }
     return true;
   }
   case vm::SrcKind::Slot: break;
