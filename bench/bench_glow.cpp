@@ -190,6 +190,14 @@ void BM_Glow_VulkanVsGlsl(benchmark::State& state, effects::Tier tier, img::Form
   }
   if (!alternate_frames(state, "vulkan", our_frame, "glsl", [&] { return peer->frame(); })) return;
   state.counters["passes"] = double(plan->graph.passes.size());
+  // That the peer does the same work (RGBA32F, where it can read its frame back): its final
+  // frame against ours, once, after the loop (counter glsl_max_abs_vs_vulkan).
+  img::Image peer_final;
+  ir::Result<img::Image> ours_final = ours->read_texture(std::string(effects::kFinalTexture));
+  if (format == img::Format::RGBA32F && ours_final &&
+      peer->read(std::string(effects::kFinalTexture), peer_final).empty())
+    if (auto c = img::compare(*ours_final, peer_final))
+      state.counters["glsl_max_abs_vs_vulkan"] = c->max_abs_all;
   state.SetLabel(vk->name());
 }
 

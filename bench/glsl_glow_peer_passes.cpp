@@ -77,7 +77,20 @@ int fill_uniforms(const effects::PassDesc& p, const std::string& kind, Uniforms&
   }
   for (size_t k = 0; k < p.ps_constants.size() && k < 8; ++k)
     for (int c = 0; c < 4; ++c) u.weight[k][c] = p.ps_constants[k][c];
-  return coords;
+  if (kind == "extract" || kind == "composite") return coords;
+  // A read weighted 0 adds exactly 0: a chain written by hand does not make it (the lift
+  // leaves it out too, ir::zero_constant_products). The glow's last blur pass of an axis
+  // weights the slots past the last tap by 0. At least one read stays.
+  int kept = 0;
+  for (int k = 0; k < coords; ++k) {
+    const bool zero =
+        u.weight[k][0] == 0 && u.weight[k][1] == 0 && u.weight[k][2] == 0 && u.weight[k][3] == 0;
+    if (zero && (kept > 0 || k + 1 < coords)) continue;
+    std::memmove(u.coord[kept], u.coord[k], sizeof(u.coord[k]));
+    std::memmove(u.weight[kept], u.weight[k], sizeof(u.weight[k]));
+    ++kept;
+  }
+  return kept;
 }
 
 } // namespace

@@ -60,14 +60,6 @@ void note_unread(const ir::Program& prog, const std::vector<bool>& dead, ir::Sha
                      {}});
 }
 
-std::map<Reg, uint8_t> pixel_outputs_live(const ir::Program& ps) {
-  std::map<Reg, uint8_t> live;
-  if (ir::is_ps1x(ps.profile)) live[{RegFile::Temp, 0}] = 0xF;
-  for (uint32_t n = 0; n < 4; ++n) live[{RegFile::ColorOut, n}] = 0xF;
-  live[{RegFile::DepthOut, 0}] = 0xF;
-  return live;
-}
-
 } // namespace
 
 std::optional<CompiledPair> compile_pair(const ir::Program& vs, const ir::Program& ps,
@@ -83,7 +75,7 @@ std::optional<CompiledPair> compile_pair(const ir::Program& vs, const ir::Progra
     }
   CompiledPair pair;
   EmitPlan ps_plan;
-  ps_plan.skip = ir::dead_instructions(ps, pixel_outputs_live(ps));
+  ps_plan.skip = ir::dead_instructions(ps, ir::pixel_live_out(ps));
   const std::set<Reg> wanted = ir::live_inputs(ps, ps_plan.skip);
 
   EmitPlan vs_plan;

@@ -262,6 +262,10 @@ const char* const kEveryForm[] = {
     "ps_2_0\ndef c9, 0.5, -2, 1e30, -1e-10\ndcl t0\ndcl v0\nmul r1, c9.wzyx, v0\n"
     "mad r1, c9, t0, r1\nmov oC0, r1\n",
     "ps_2_0\ndef c9, 0.5, -2, 1e30, -1e-10\ndcl v0\nmul r1, v0, c9\nmov oC0, r1\n",
+    // A constant that is zero in some components only: a product keeping the others is
+    // left alone, one keeping the zero ones only is not (ir::zero_constant_products).
+    "ps_2_0\ndef c8, 0, -0, 0, 1\ndcl t0\ndcl_2d s0\ntexld r0, t0, s0\nmul r1, r0, c8\n"
+    "mad r1.xyz, r0, c8, r1\nmov oC0, r1\n",
 };
 
 // Every listing of kEveryForm in every conventions mode, seeds from `first_seed` on (the cases

@@ -2,7 +2,9 @@
 // * codegen::CodegenOptions::replicated_*_constants: a constant whose four components hold
 //   the same bits is read as one float and replicated;
 // * codegen::CodegenOptions::nonzero_*_constants: in a product with a constant none of whose
-//   components is ±0 or a denormal, the "0 × anything = +0" rule tests only the other factor.
+//   components is ±0 or a denormal, the "0 × anything = +0" rule tests only the other factor;
+// * ir::zero_constant_products: a product with a constant that is ±0 where the result is kept
+//   reads nothing else, and what fed only it is pruned.
 // The image must be the interpreter's, bit for bit, whether or not a constant qualifies:
 // replicated weights, weights that differ per channel, zeros of both signs (equal as floats,
 // not as bits), denormals (zeros to lavapipe and to the interpreter's default rounding),
@@ -69,6 +71,8 @@ TEST_F(ResidentTest, NonZeroConstantsKeepTheZeroRule) {
       {{1e-10f, 1e-10f, 1e-10f, 1e-10f}, {-3, 0.5f, -1e-38f, 2}, {inf, -inf, nan, 1}},
       // None qualifies: a zero or a denormal component in each.
       {{0.5f, 0, 1, 2}, {1e-40f, 1e-40f, 1e-40f, 1e-40f}, {-0.0f, 1, 1, 1}},
+      // Zero factors (ir::zero_constant_products: the first texture read is then dead).
+      {{0, -0.0f, 0, -0.0f}, {-0.0f, 0, 0, 0}, {0.5f, 2, 1, 3}},
   };
   // Products with the constant second, negated and swizzled, first, and in a dot product.
   const auto ps = parse_listing("ps_2_0\ndcl t0.xy\ndcl t1.xy\ndcl_2d s0\ntexld r0, t0, s0\n"

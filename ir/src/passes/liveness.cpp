@@ -52,6 +52,14 @@ RegisterReads registers_read(const Instruction& ins, Profile p) {
   return r;
 }
 
+std::map<RegKey, uint8_t> pixel_live_out(const Program& ps) {
+  std::map<RegKey, uint8_t> live;
+  if (is_ps1x(ps.profile)) live[{RegFile::Temp, 0}] = 0xF;
+  for (uint32_t n = 0; n < 4; ++n) live[{RegFile::ColorOut, n}] = 0xF;
+  live[{RegFile::DepthOut, 0}] = 0xF;
+  return live;
+}
+
 std::vector<bool> dead_instructions(const Program& prog, std::map<RegKey, uint8_t> live) {
   std::vector<bool> dead(prog.code.size(), false);
   if (std::any_of(prog.code.begin(), prog.code.end(), is_flow)) {

@@ -36,6 +36,9 @@ bool has_side_effect(const Instruction& ins, Profile p);
 // in `live_out` are dead. Result: one flag per instruction of program.code.
 std::vector<bool> dead_instructions(const Program& program, std::map<RegKey, uint8_t> live_out);
 
+// What a pixel program's results are: oC0..oC3 and oDepth, and r0 in ps_1_x (its colour).
+std::map<RegKey, uint8_t> pixel_live_out(const Program& ps);
+
 // What the pixel program's live code reads from the vertex stage: {TexCrdOut, n} for
 // t# / TC(n), {AttrOut, n} for v#.
 std::set<RegKey> live_inputs(const Program& ps, const std::vector<bool>& dead);

@@ -4,10 +4,13 @@
 // transforms (expand_matrix_macros) are opt-in for a backend that wants them.
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <map>
 #include <optional>
+#include <span>
 #include <string_view>
 
 #include "tierlift/ir/program.h"
@@ -60,5 +63,17 @@ std::optional<RelativeReach> relative_reach(const Program& program);
 // opts in; the interpreter and the SPIR-V emitter evaluate the macros directly today. Exact
 // for validated listings: the destination may alias neither the vector nor a matrix row.
 void expand_matrix_macros(Program& program);
+
+// --- products with a zero constant ------------------------------------------------------
+// mul d, a, b / mad d, a, b, c where a or b reads a c# (no relative addressing, no modifier
+// but negation) that is ±0 in every component d keeps, after the swizzle: the listing's def,
+// else bank[index]. NUMERICS.md rule 8 makes the product +0 whatever the other factor holds,
+// so the other factor is replaced by the zero one (mul d, z, z / mad d, z, z, c): the same
+// result bit for bit, in every conventions mode, and the other factor's register is no
+// longer read. Liveness (dead_instructions) then finds the texture reads that only fed such
+// products: the glow's blur passes weight the slots past the last tap by 0 (7 of 32 reads
+// per axis at the default 25 taps). Returns how many instructions it rewrote. A device that
+// binds `bank` runs it before planning the draw (both devices, pixel programs).
+size_t zero_constant_products(Program& program, std::span<const std::array<float, 4>> bank);
 
 } // namespace tierlift::ir

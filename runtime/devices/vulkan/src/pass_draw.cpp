@@ -13,6 +13,7 @@
 #include "bindings.h"
 #include "pipeline.h"
 #include "synthetic_programs.h"
+#include "tierlift/ir/passes.h"
 
 namespace tierlift::vulkan {
 namespace {
@@ -225,6 +226,13 @@ std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawText
   // Programs → SPIR-V.
   auto vs_prog = pass.vertex_program ? pass.vertex_program : passthrough_vertex_program();
   auto ps_prog = pass.pixel_program ? pass.pixel_program : passthrough_pixel_program();
+  // Products with a ±0 constant factor read nothing else (ir::zero_constant_products), so
+  // the code generator's pruning drops the texture reads and varyings that only fed them.
+  // The draw is prepared (and cached, draw_cache.h) for these constants. Not for a GLSL pass:
+  // its own SPIR-V needs the interface of the whole twin.
+  if (ir::Program copy = *ps_prog;
+      !pass.pixel_spirv && ir::zero_constant_products(copy, pass.ps_constants.f) > 0)
+    ps_prog = std::make_shared<const ir::Program>(std::move(copy));
   codegen::CodegenOptions co;
   co.conventions = pass.conventions;
   co.replicated_vs_constants = replicated_constants(pass.vs_constants);

@@ -5,7 +5,9 @@
 #include <bit>
 #include <stdexcept>
 
+#include "tierlift/ir/liveness.h"
 #include "tierlift/ir/numerics.h"
+#include "tierlift/ir/passes.h"
 #include "vm_block_internal.h"
 
 namespace tierlift::cpu {
@@ -186,8 +188,25 @@ std::unique_ptr<PixelBlockVM> PixelBlockVM::create(const ir::Program& program,
                                                    const ConstantBank& constants, bool coords_2d) {
   if (program.stage() != ir::ShaderStage::Pixel) return nullptr;
   auto im = std::make_unique<Impl>();
+  // Products with a ±0 constant factor read nothing else, and what fed only them is
+  // dropped (ir::zero_constant_products): the same results for these constants.
+  std::optional<ir::Program> specialised;
+  if (ir::Program copy = program; ir::zero_constant_products(copy, constants.f) > 0) {
+    const std::vector<bool> dead = ir::dead_instructions(copy, ir::pixel_live_out(copy));
+    for (size_t i = 0; i < copy.code.size(); ++i)
+      if (dead[i]) {
+        ir::Instruction& ins = copy.code[i];
+        ins.op = ir::Opcode::Nop;
+        ins.dst.reset();
+        ins.src.clear();
+        ins.mods = {};
+        ins.coissue = false;
+      }
+    specialised = std::move(copy);
+  }
+  const ir::Program& run = specialised ? *specialised : program;
   try {
-    im->p = vm::prepare(program, conventions);
+    im->p = vm::prepare(run, conventions);
   } catch (const std::invalid_argument&) {
     return nullptr;
   }

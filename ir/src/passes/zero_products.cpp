@@ -1,0 +1,60 @@
+// Pass: products with a constant factor that is ±0 where the result is kept (passes.h).
+#include <bit>
+
+#include "tierlift/ir/passes.h"
+#include "tierlift/ir/registers.h"
+
+namespace tierlift::ir {
+namespace {
+
+// The value of c# as the program reads it: a def wins over the bank; a register the bank
+// does not hold reads 0, as both devices read it.
+std::optional<std::array<float, 4>> constant_value(const FoldedDefs& defs, uint32_t index,
+                                                   std::span<const std::array<float, 4>> bank) {
+  if (const ConstDef* d = defs.find(RegFile::Const, index))
+    return std::array<float, 4>{d->f(0), d->f(1), d->f(2), d->f(3)};
+  if (index < bank.size()) return bank[index];
+  return std::nullopt; // left alone: the device decides what it reads
+}
+
+// Whether source `s` reads ±0 in every component of `mask` (after its swizzle; negation
+// keeps a zero a zero, other modifiers are not taken).
+bool reads_zero(const SrcOperand& s, uint8_t mask, const FoldedDefs& defs,
+                std::span<const std::array<float, 4>> bank) {
+  if (s.file != RegFile::Const || s.rel || (s.mod != SrcMod::None && s.mod != SrcMod::Neg))
+    return false;
+  const auto v = constant_value(defs, s.index, bank);
+  if (!v) return false;
+  for (uint32_t c = 0; c < 4; ++c)
+    if ((mask & (1u << c)) &&
+        (std::bit_cast<uint32_t>((*v)[swizzle_component(s.swizzle, c)]) & 0x7FFFFFFFu) != 0)
+      return false;
+  return true;
+}
+
+} // namespace
+
+size_t zero_constant_products(Program& program, std::span<const std::array<float, 4>> bank) {
+  const FoldedDefs defs = fold_defs(program);
+  size_t rewritten = 0;
+  for (Instruction& ins : program.code) {
+    if ((ins.op != Opcode::Mul && ins.op != Opcode::Mad) || !ins.dst || ins.src.size() < 2)
+      continue;
+    const uint8_t mask = ins.dst->mask;
+    for (size_t zero = 0; zero < 2; ++zero) {
+      const size_t other = 1 - zero;
+      if (!reads_zero(ins.src[zero], mask, defs, bank)) continue;
+      if (ins.src[other].file == ins.src[zero].file &&
+          ins.src[other].index == ins.src[zero].index && !ins.src[other].rel)
+        break; // already reads nothing else
+      const SourceLoc loc = ins.src[other].loc;
+      ins.src[other] = ins.src[zero];
+      ins.src[other].loc = loc;
+      ++rewritten;
+      break;
+    }
+  }
+  return rewritten;
+}
+
+} // namespace tierlift::ir
