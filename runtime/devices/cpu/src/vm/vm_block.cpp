@@ -240,11 +240,20 @@ template <Denormals D> TL_INLINE void store(const vm::DstDesc& d, const LaneVec4
   LaneVec4& r = sc.reg[d.slot];
   for (int c = 0; c < 4; ++c) {
     if (!(d.mask & (1 << c))) continue;
-    if (d.plain) {
-      std::memcpy(r.c[c], v.c[c], sizeof(Lanes));
-    } else {
-      for (int l = 0; l < L; ++l) r.c[c][l] = vm::dst_transform<D>(d, v.c[c][l]);
-    }
+    std::memcpy(r.c[c], v.c[c], sizeof(Lanes));
+    if (d.plain) continue;
+    // vm::dst_transform's steps in its order, one lane loop per step the destination has:
+    // one loop with all four would compute every step on every lane and select.
+    float* o = r.c[c];
+    if (d.scale != 1.0f)
+      for (int l = 0; l < L; ++l) o[l] = num::legacy_scale<D>(o[l], d.scale);
+    if (d.range)
+      for (int l = 0; l < L; ++l) o[l] = num::legacy_ps1x_range<D>(o[l], d.max_value);
+    if (d.sat)
+      for (int l = 0; l < L; ++l) o[l] = num::legacy_saturate<D>(o[l]);
+    if (d.fixed_bits > 0)
+      for (int l = 0; l < L; ++l)
+        o[l] = num::legacy_fixed_quantise<D>(o[l], d.fixed_bits, d.max_value);
   }
 }
 
