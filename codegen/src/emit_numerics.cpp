@@ -26,12 +26,9 @@ Id Emitter::bsplat(Id cond) {
 }
 
 Id Emitter::comp(Id vec4, uint32_t i) {
-  return keep_never_zero(vec4, b.op(Op::OpCompositeExtract, t_float, {vec4, i}));
-}
-
-Id Emitter::keep_never_zero(Id from, Id to) {
-  if (never_zero(from)) never_zero_.insert(to);
-  return to;
+  const Id x = b.op(Op::OpCompositeExtract, t_float, {vec4, i});
+  set_never_zero(x, (never_zero(vec4) >> i) & 1);
+  return x;
 }
 
 Id Emitter::false_const(int n) {
@@ -124,8 +121,17 @@ Id SpirvArith::log2(Id a) const {
 // rules then drop the branch it would have chosen (lor, select below).
 Id SpirvArith::eq(Id a, Id c) const {
   const Id zero = k(0.0f);
-  if ((c == zero && e.never_zero(a)) || (a == zero && e.never_zero(c))) return e.false_const(n);
-  return e.cmp(Op::OpFOrdEqual, a, c, n);
+  const Id x = c == zero ? a : a == zero ? c : 0; // the value compared with zero, if one is
+  const uint8_t known = x ? e.never_zero(x) : uint8_t{0};
+  const uint8_t all = n == 1 ? 1 : 0xF;
+  if (known == 0) return e.cmp(Op::OpFOrdEqual, a, c, n);
+  if (known == all) return e.false_const(n);
+  // Some components known: false there, a compare for the others.
+  Id parts[4];
+  for (uint32_t i = 0; i < 4; ++i)
+    parts[i] = (known >> i) & 1 ? e.b.const_bool(false)
+                                : e.cmp(Op::OpFOrdEqual, e.comp(x, i), e.f(0.0f), 1);
+  return e.b.op(Op::OpCompositeConstruct, e.t_bvec4, {parts[0], parts[1], parts[2], parts[3]});
 }
 Id SpirvArith::lt(Id a, Id c) const {
   return e.cmp(Op::OpFOrdLessThan, a, c, n);

@@ -40,9 +40,9 @@ Id Emitter::load_const(uint32_t index, const std::optional<ir::RelAddr>& rel) {
     const std::vector<bool>& replicated = prog.stage() == ir::ShaderStage::Vertex
                                               ? opt.replicated_vs_constants
                                               : opt.replicated_ps_constants;
-    const std::vector<bool>& nonzero = prog.stage() == ir::ShaderStage::Vertex
-                                           ? opt.nonzero_vs_constants
-                                           : opt.nonzero_ps_constants;
+    const std::vector<uint8_t>& nonzero = prog.stage() == ir::ShaderStage::Vertex
+                                              ? opt.nonzero_vs_constants
+                                              : opt.nonzero_ps_constants;
     Id value;
     if (index < replicated.size() && replicated[index]) {
       // CodegenOptions::replicated_*: x stands for all four components.
@@ -55,7 +55,7 @@ Id Emitter::load_const(uint32_t index, const std::optional<ir::RelAddr>& rel) {
                             {uniform_var_, b.const_uint(kMemberFloat), b.const_uint(index)});
       value = b.op(Op::OpLoad, t_vec4, {chain});
     }
-    if (index < nonzero.size() && nonzero[index]) never_zero_.insert(value);
+    if (index < nonzero.size()) set_never_zero(value, nonzero[index] & 0xF);
     return value;
   }
   const_relative_ = true;
@@ -143,10 +143,11 @@ Id Emitter::load_register(RegFile file, uint32_t index, const std::optional<ir::
 
 Id Emitter::load_src(const ir::SrcOperand& s, uint32_t index_offset) {
   Id v = load_register(s.file, s.index + index_offset, s.rel);
-  // Only a swizzle and a sign change keep a never-zero constant so (Emitter::never_zero_);
+  // Only a swizzle and a sign change keep a never-zero component so (Emitter::never_zero_);
   // the ps_1_x clamp and the other modifiers may make zeros.
-  const bool nonzero_kept = never_zero(v) && (s.mod == SrcMod::None || s.mod == SrcMod::Neg) &&
-                            !ir::is_ps1x(prog.profile);
+  const uint8_t nonzero_read =
+      (s.mod == SrcMod::None || s.mod == SrcMod::Neg) && !ir::is_ps1x(prog.profile) ? never_zero(v)
+                                                                                    : uint8_t{0};
   if (s.file == RegFile::Const && ir::is_ps1x(prog.profile))
     v = rule::clamp_sym(arith(4), v, splat(f(1.0f)));
   if (const int8_t by = ir::src_mod_info(s.mod).divide_by; by >= 0) {
@@ -160,7 +161,11 @@ Id Emitter::load_src(const ir::SrcOperand& s, uint32_t index_offset) {
               ir::swizzle_component(s.swizzle, 2), ir::swizzle_component(s.swizzle, 3)});
   }
   const Id out = ir::apply_source_modifier(arith(4), s.mod, v);
-  if (nonzero_kept) never_zero_.insert(out);
+  uint8_t swizzled = 0;
+  for (int c = 0; c < 4; ++c)
+    swizzled |=
+        static_cast<uint8_t>(((nonzero_read >> ir::swizzle_component(s.swizzle, c)) & 1) << c);
+  set_never_zero(out, swizzled);
   return out;
 }
 

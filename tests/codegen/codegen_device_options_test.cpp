@@ -142,7 +142,7 @@ size_t count(const std::string& text, const std::string& what) {
 TEST(CodegenNonzeroConstants, ProductsTestOnlyTheOtherFactor) {
   const std::string text = "ps_2_0\ndcl t0.xy\nmul r0, t0, -c1.yzxw\nmov oC0, r0\n";
   codegen::CodegenOptions opt;
-  opt.nonzero_ps_constants = {false, true};
+  opt.nonzero_ps_constants = {0, 0xF};
   const auto with = build(text, opt);
   const auto plain = build(text, {});
   ASSERT_TRUE(with && plain);
@@ -152,14 +152,29 @@ TEST(CodegenNonzeroConstants, ProductsTestOnlyTheOtherFactor) {
   EXPECT_EQ(count(dis(*plain), "OpLogicalOr"), 1u);
   // A register not listed, and ps_1_x (its constants are clamped to [-1, 1] on read; the
   // clamp of a NaN may be a zero), keep both tests.
-  opt.nonzero_ps_constants = {true, false};
+  opt.nonzero_ps_constants = {0xF, 0};
   const auto other = build(text, opt);
   ASSERT_TRUE(other);
   EXPECT_EQ(count(dis(*other), "OpLogicalOr"), 1u);
-  opt.nonzero_ps_constants = {true};
+  opt.nonzero_ps_constants = {0xF};
   const auto ps14 = build("ps_1_4\nmul r0, r0, c0\n", opt);
   ASSERT_TRUE(ps14);
   EXPECT_GE(count(dis(*ps14), "OpLogicalOr"), 1u);
+}
+
+TEST(CodegenNonzeroConstants, SomeComponentsKnown) {
+  // c1 = (s, s, s, 0), as the glow's composite weights: x, y, z are known, and after the
+  // .yzxw swizzle the unknown one is still w. One vector compare for t0, one float compare
+  // for the constant's w, and a bvec4 of three false and that compare.
+  const std::string text = "ps_2_0\ndcl t0.xy\nmul r0, t0, c1.yzxw\nmov oC0, r0\n";
+  codegen::CodegenOptions opt;
+  opt.nonzero_ps_constants = {0, 0x7};
+  const auto m = build(text, opt);
+  ASSERT_TRUE(m);
+  const std::string with = dis(*m);
+  EXPECT_EQ(count(with, "OpFOrdEqual %v4bool"), 1u);
+  EXPECT_EQ(count(with, "OpFOrdEqual %bool"), 1u);
+  EXPECT_EQ(count(with, "OpCompositeConstruct %v4bool %false %false %false"), 1u);
 }
 
 } // namespace

@@ -68,13 +68,14 @@ struct CodegenOptions {
   // lavapipe runs it far faster than a vec4 uniform read (the glow's blur passes: 1.3×).
   // The Vulkan device fills these from the constants it binds; empty: every read is a vec4.
   std::vector<bool> replicated_vs_constants, replicated_ps_constants;
-  // Per stage, the c# none of whose four components compares equal to zero when the module
-  // runs: each has a non-zero exponent field (normal, infinite or NaN; not ±0, and not a
-  // denormal, which Rounding::Llvmpipe reads as zero). In a product with such a register
-  // (read without relative addressing, swizzled, negated or not) the "0 × anything = +0"
-  // rule (NUMERICS.md rule 8) tests only the other factor: the same value, two operations
-  // fewer (lavapipe: the glow's blur passes ~2 % faster). Filled by the Vulkan device.
-  std::vector<bool> nonzero_vs_constants, nonzero_ps_constants;
+  // Per stage and c#, the components that never compare equal to zero when the module runs
+  // (bit c for component c): each has a non-zero exponent field (normal, infinite or NaN;
+  // not ±0, and not a denormal, which Rounding::Llvmpipe reads as zero). In a product with
+  // such a register (read without relative addressing, swizzled, negated or not) the
+  // "0 × anything = +0" rule (NUMERICS.md rule 8) tests only the other factor in those
+  // components: the same value, fewer operations (lavapipe: the glow's blur passes ~3 %
+  // faster; its composite weights rgb, not alpha). Filled by the Vulkan device.
+  std::vector<uint8_t> nonzero_vs_constants, nonzero_ps_constants;
   bool optimize = false; // run spirv-opt's performance passes after validation
   // Entry point name.
   std::string entry_point = "main";

@@ -6,7 +6,7 @@
 #include <optional>
 #include <set>
 #include <string>
-#include <unordered_set>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -114,10 +114,16 @@ public:
   // Values known never to compare equal to zero in any component (CodegenOptions::
   // nonzero_*_constants, through swizzles, negation and component extraction): the rules'
   // compares with zero fold to false for them (SpirvArith::eq, lor, select).
-  std::unordered_set<Id> never_zero_;
-  bool never_zero(Id v) const { return never_zero_.contains(v); }
-  Id keep_never_zero(Id from, Id to); // `to` is never zero where `from` is; returns `to`
-  Id false_const(int n);              // false of width n
+  // Per value, the components known never to be zero (bit c; a float: bit 0).
+  std::unordered_map<Id, uint8_t> never_zero_;
+  uint8_t never_zero(Id v) const {
+    const auto it = never_zero_.find(v);
+    return it == never_zero_.end() ? 0 : it->second;
+  }
+  void set_never_zero(Id v, uint8_t components) {
+    if (components) never_zero_[v] = components;
+  }
+  Id false_const(int n); // false of width n
 
   // ---- registers and operands (emit_operands.cpp) ----
   Id register_var(ir::RegFile file, uint32_t index); // Private vec4 (a0: ivec4)

@@ -128,13 +128,14 @@ std::vector<bool> replicated_constants(const pass::ConstantBank& bank) {
   return out;
 }
 
-// The constants none of whose components compares equal to zero, even with denormals read as
-// zeros (codegen::CodegenOptions::nonzero_*): a non-zero exponent field in all four.
-std::vector<bool> nonzero_constants(const pass::ConstantBank& bank) {
-  std::vector<bool> out(bank.f.size());
+// Per constant, the components that never compare equal to zero, even with denormals read as
+// zeros (codegen::CodegenOptions::nonzero_*): those with a non-zero exponent field.
+std::vector<uint8_t> nonzero_constants(const pass::ConstantBank& bank) {
+  std::vector<uint8_t> out(bank.f.size());
   for (size_t k = 0; k < bank.f.size(); ++k)
-    out[k] = std::ranges::all_of(
-        bank.f[k], [](float x) { return (std::bit_cast<uint32_t>(x) & 0x7F800000u) != 0; });
+    for (int c = 0; c < 4; ++c)
+      if ((std::bit_cast<uint32_t>(bank.f[k][static_cast<size_t>(c)]) & 0x7F800000u) != 0)
+        out[k] |= static_cast<uint8_t>(1u << c);
   return out;
 }
 
