@@ -266,6 +266,11 @@ const char* const kEveryForm[] = {
     // left alone, one keeping the zero ones only is not (ir::zero_constant_products).
     "ps_2_0\ndef c8, 0, -0, 0, 1\ndcl t0\ndcl_2d s0\ntexld r0, t0, s0\nmul r1, r0, c8\n"
     "mad r1.xyz, r0, c8, r1\nmov oC0, r1\n",
+    // ps_1_1 and ps_1_4 (Listing 4's shape): a read weighted by a zero def is left out.
+    "ps_1_1\ndef c1, 0, -0, 0, 0\ntex t0\ntex t1\ntex t2\nmul r0, t0, c0\n"
+    "mad r0, t1, c1, r0\nmad r0, t2, c2, r0\n",
+    "ps_1_4\ndef c1, 0, 0, -0, 0\ntexld r0, t0\ntexld r1, t1\ntexld r2, t2\n"
+    "mul r0, r0, c0\nmad r0, r1, c1, r0\nmad r0, r2, c2, r0\n",
 };
 
 // Every listing of kEveryForm in every conventions mode, seeds from `first_seed` on (the cases
