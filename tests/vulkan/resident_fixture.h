@@ -15,11 +15,15 @@
 
 namespace tierlift::vulkan::test {
 
-// Owned by the program and destroyed at its end, like shared_device (vk_test_util.h).
+// Owned by the program and destroyed at its end, like shared_device (vk_test_util.h). One per
+// value of DeviceOptions::llvmpipe_point_sampling (false: RGBA8 point reads compute their
+// index and fetch on lavapipe too, as on every other device).
+template <bool LlvmpipePointSampling = true>
 inline const ir::Result<Device*>& sync_validated_device() {
   static const ir::Result<Device*> shared = [] {
     DeviceOptions o;
     o.synchronization_validation = true;
+    o.llvmpipe_point_sampling = LlvmpipePointSampling;
     return program_device(o);
   }();
   return shared;

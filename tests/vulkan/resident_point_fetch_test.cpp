@@ -50,18 +50,9 @@ struct Sweep {
 };
 
 // The resident tests' device with the shader-computed index and fetch, as on a GPU.
-const ir::Result<Device*>& index_fetching_device() {
-  static const ir::Result<Device*> shared = [] {
-    DeviceOptions o;
-    o.synchronization_validation = true;
-    o.llvmpipe_point_sampling = false;
-    return program_device(o);
-  }();
-  return shared;
-}
 class ResidentIndexFetchTest : public ResidentTest {
 protected:
-  const ir::Result<Device*>& acquire_device() override { return index_fetching_device(); }
+  const ir::Result<Device*>& acquire_device() override { return sync_validated_device<false>(); }
 };
 
 void reads_the_interpreters_texel_everywhere(Device& dev) {
