@@ -111,21 +111,33 @@ void store_block_unorm8_llvmpipe(BlendMode mode, const LaneVec4& src,
     for (int l = 0; l < n; ++l) dst[l] = row[4 * x[l] + c];
     rounding::unorm8_nearest_bytes(dst, d[c], n);
   }
-  const std::array<float, 256>& levels = rounding::unorm8_levels();
+  // The blend per mode and channel over the lanes (loops the compiler vectorises), then each
+  // byte's value k/255.0f (what rounding::unorm8_levels holds, computed the same way).
+  // Channel 3 goes last, in place: the others read its source byte as the alpha factor.
+  const int32_t* a = s[3];
+  float out[4][kBlockLanes];
+  for (int c = 0; c < 4; ++c) {
+    int32_t* v = s[c];
+    const int32_t* e = d[c];
+    switch (mode) {
+    case BlendMode::Replace: break;
+    case BlendMode::OneOne:
+      for (int l = 0; l < n; ++l) v[l] += e[l];
+      break;
+    case BlendMode::SrcAlphaOne:
+      for (int l = 0; l < n; ++l) v[l] = mul_norm8(v[l], a[l]) + e[l];
+      break;
+    case BlendMode::SrcAlphaInvSrcAlpha:
+      for (int l = 0; l < n; ++l) v[l] = mul_norm8(v[l], a[l]) + mul_norm8(e[l], 255 - a[l]);
+      break;
+    }
+  }
+  for (int c = 0; c < 4; ++c)
+    for (int l = 0; l < n; ++l) out[c][l] = static_cast<float>(std::min(s[c][l], 255)) / 255.0f;
   for (int l = 0; l < n; ++l) {
     if (discarded[static_cast<size_t>(l)]) continue;
     float* p = row + 4 * x[l];
-    const int a = s[3][l];
-    for (int c = 0; c < 4; ++c) {
-      int v = s[c][l];
-      switch (mode) {
-      case BlendMode::Replace: break;
-      case BlendMode::OneOne: v += d[c][l]; break;
-      case BlendMode::SrcAlphaOne: v = mul_norm8(v, a) + d[c][l]; break;
-      case BlendMode::SrcAlphaInvSrcAlpha: v = mul_norm8(v, a) + mul_norm8(d[c][l], 255 - a); break;
-      }
-      p[c] = levels[static_cast<size_t>(std::min(v, 255))];
-    }
+    for (int c = 0; c < 4; ++c) p[c] = out[c][l];
   }
 }
 
