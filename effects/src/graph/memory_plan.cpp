@@ -53,10 +53,7 @@ DeviceMemory plan_device(const EffectGraph& g, const std::string& device, bool k
   for (const PassDesc& p : g.passes)
     for (const TextureBind& b : p.textures) {
       sampled.insert(b.texture);
-      const pass::SamplerState& s = b.sampler;
-      if (s.filter != pass::Filter::Point || s.address_u != pass::AddressMode::Clamp ||
-          s.address_v != pass::AddressMode::Clamp)
-        copied.insert(b.texture);
+      if (!pass::point_clamped(b.sampler)) copied.insert(b.texture);
     }
 
   if (device == "vulkan") {

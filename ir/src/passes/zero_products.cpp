@@ -1,20 +1,19 @@
 // Pass: products with a constant factor that is ±0 where the result is kept (passes.h).
-#include <bit>
-
+#include "tierlift/ir/numerics.h"
 #include "tierlift/ir/passes.h"
 #include "tierlift/ir/registers.h"
 
 namespace tierlift::ir {
 namespace {
 
-// The value of c# as the program reads it: a def wins over the bank; a register the bank
-// does not hold reads 0, as both devices read it.
+// The value of c# as the program reads it: a def wins over the bank. A register the bank
+// does not hold: nullopt, the instruction is left as it is.
 std::optional<std::array<float, 4>> constant_value(const FoldedDefs& defs, uint32_t index,
                                                    std::span<const std::array<float, 4>> bank) {
   if (const ConstDef* d = defs.find(RegFile::Const, index))
     return std::array<float, 4>{d->f(0), d->f(1), d->f(2), d->f(3)};
   if (index < bank.size()) return bank[index];
-  return std::nullopt; // left alone: the device decides what it reads
+  return std::nullopt;
 }
 
 // Whether source `s` reads ±0 in every component of `mask` (after its swizzle; negation
@@ -26,8 +25,7 @@ bool reads_zero(const SrcOperand& s, uint8_t mask, const FoldedDefs& defs,
   const auto v = constant_value(defs, s.index, bank);
   if (!v) return false;
   for (uint32_t c = 0; c < 4; ++c)
-    if ((mask & (1u << c)) &&
-        (std::bit_cast<uint32_t>((*v)[swizzle_component(s.swizzle, c)]) & 0x7FFFFFFFu) != 0)
+    if ((mask & (1u << c)) && !numerics::signed_zero((*v)[swizzle_component(s.swizzle, c)]))
       return false;
   return true;
 }

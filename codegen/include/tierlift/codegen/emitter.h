@@ -111,10 +111,10 @@ public:
   SpirvArith arith(int n = 4);
   Id dot(Id a, Id c, int count); // rule::dot over the first count components of two vec4
   Id to_index(Id x);             // rule::index_range, then float → int
-  // Values known never to compare equal to zero in any component (CodegenOptions::
-  // nonzero_*_constants, through swizzles, negation and component extraction): the rules'
-  // compares with zero fold to false for them (SpirvArith::eq, lor, select).
-  // Per value, the components known never to be zero (bit c; a float: bit 0).
+  // Per value, the components known never to compare equal to zero (bit c; a float: bit 0):
+  // CodegenOptions::nonzero_*_constants, carried through swizzles, negation and component
+  // extraction. The rules' compares with zero fold to false there (SpirvArith::eq, lor,
+  // select).
   std::unordered_map<Id, uint8_t> never_zero_;
   uint8_t never_zero(Id v) const {
     const auto it = never_zero_.find(v);

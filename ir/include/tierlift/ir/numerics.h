@@ -45,6 +45,17 @@ inline float flush_denormal(float x) {
   const auto u = std::bit_cast<uint32_t>(x);
   return (u & 0x7F800000u) == 0 ? std::bit_cast<float>(u & 0x80000000u) : x;
 }
+// x never compares equal to zero, whatever the denormal mode: its exponent field is not 0
+// (a normal number, an infinity or a NaN). A product with such a factor need test only the
+// other one for rule 8 (mul_y_nonzero; the code generator's nonzero_*_constants).
+inline bool never_compares_zero(float x) {
+  return (std::bit_cast<uint32_t>(x) & 0x7F800000u) != 0;
+}
+// x is +0 or −0 (a denormal is not: Rounding::Exact keeps it).
+inline bool signed_zero(float x) {
+  return (std::bit_cast<uint32_t>(x) & 0x7FFFFFFFu) == 0;
+}
+
 // An operand (in) or result (out) of one fp32 operation under D.
 template <Denormals D> inline float dz(float x) {
   if constexpr (D == Denormals::Flush) return flush_denormal(x);

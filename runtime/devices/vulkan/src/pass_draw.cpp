@@ -13,6 +13,7 @@
 #include "bindings.h"
 #include "pipeline.h"
 #include "synthetic_programs.h"
+#include "tierlift/ir/numerics.h"
 #include "tierlift/ir/passes.h"
 
 namespace tierlift::vulkan {
@@ -110,8 +111,7 @@ std::string host_texture(Device::Impl& d, uint32_t stage, const img::Image& im, 
 // sampling's texel and the shadow's exact k/255.0f, so the image is the same; what it saves is
 // the shadow's conversion each time the texture changed.
 bool fetches_in_place(const Resident* r, const pass::SamplerState& s) {
-  return r && !r->stencil && r->format == img::Format::RGBA8 && s.filter == pass::Filter::Point &&
-         s.address_u == pass::AddressMode::Clamp && s.address_v == pass::AddressMode::Clamp;
+  return r && !r->stencil && r->format == img::Format::RGBA8 && pass::point_clamped(s);
 }
 
 // The constants whose four components hold the same bits (codegen::CodegenOptions::
@@ -134,7 +134,7 @@ std::vector<uint8_t> nonzero_constants(const pass::ConstantBank& bank) {
   std::vector<uint8_t> out(bank.f.size());
   for (size_t k = 0; k < bank.f.size(); ++k)
     for (int c = 0; c < 4; ++c)
-      if ((std::bit_cast<uint32_t>(bank.f[k][static_cast<size_t>(c)]) & 0x7F800000u) != 0)
+      if (ir::numerics::never_compares_zero(bank.f[k][static_cast<size_t>(c)]))
         out[k] |= static_cast<uint8_t>(1u << c);
   return out;
 }

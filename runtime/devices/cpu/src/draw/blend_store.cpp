@@ -97,9 +97,9 @@ Vec4 blend_unorm8_llvmpipe(BlendMode mode, const Vec4& src_in, const Vec4& dst_i
 
 // blend_unorm8_llvmpipe on lane arrays, for every blend mode: the source bytes, then the
 // destination's (Replace reads none; read before any lane is written, a block's pixels
-// being distinct), then the
-// same integer blend, lane by lane. The byte loops vectorise; the result is the same bits as
-// blend_unorm8_llvmpipe pixel by pixel (tests/cpu_draw/rgba8_block_blend_test.cpp).
+// being distinct), then the same integer blend. The loops vectorise; the result is the same
+// bits as blend_unorm8_llvmpipe pixel by pixel (BlockBlendMatchesThePixelRule in
+// tests/cpu_draw/rgba8_store_llvmpipe_test.cpp).
 void store_block_unorm8_llvmpipe(BlendMode mode, const LaneVec4& src,
                                  const std::array<bool, kBlockLanes>& discarded, const int64_t* x,
                                  int n, float* row) {

@@ -2,7 +2,6 @@
 // takes, which constants are folded once per draw, and which register components start at
 // zero. Programs it does not take run on the per-pixel VM.
 #include <algorithm>
-#include <bit>
 #include <stdexcept>
 
 #include "tierlift/ir/liveness.h"
@@ -55,9 +54,8 @@ bool plan_src(const vm::SrcDesc& s, Impl& im, const ConstantBank& bank, BlockSrc
     const Vec4 v = vm::fetch_general(s, inv);
     im.folded.push_back(splat4(v));
     for (int c = 0; c < 4; ++c) {
-      const uint32_t bits = std::bit_cast<uint32_t>(v[c]);
-      if ((bits & 0x7F800000u) != 0) out.nonzero |= uint8_t(1u << c);
-      if ((bits & 0x7FFFFFFFu) == 0) out.zero |= uint8_t(1u << c);
+      if (ir::numerics::never_compares_zero(v[c])) out.nonzero |= uint8_t(1u << c);
+      if (ir::numerics::signed_zero(v[c])) out.zero |= uint8_t(1u << c);
     }
     return true;
   }

@@ -40,6 +40,15 @@ struct SamplerState {
   Vec4 border_color{0, 0, 0, 0};
 };
 
+// POINT filtering with CLAMP addressing on both axes: each read takes one texel, and never
+// from beyond the edge. The Vulkan device reads an RGBA8 texture sampled so from its stored
+// bytes, without a float copy (codegen::CodegenOptions::stage_fetch_unorm8), and the memory
+// plan (effects/memory_plan.h) counts no copy for it.
+inline bool point_clamped(const SamplerState& s) {
+  return s.filter == Filter::Point && s.address_u == AddressMode::Clamp &&
+         s.address_v == AddressMode::Clamp;
+}
+
 // What one sampler stage holds: a texture (shared, so one image can be bound to several
 // stages as Listing 4 does), the sampler state, and the ps_1_x texture-stage state.
 struct TextureBinding {
