@@ -45,10 +45,14 @@ bool Emitter::emit_arith(const ir::Instruction& ins, PendingStore& out) {
   case Opcode::Mova: v = src(0); break;
   case Opcode::Add: v = v4.add(src(0), src(1)); break;
   case Opcode::Sub: v = v4.sub(src(0), src(1)); break;
-  case Opcode::Mul: v = rule::mul(v4, src(0), src(1)); break;
+  case Opcode::Mul: {
+    const Id a = src(0), c = src(1);
+    v = plain_factors(0, 1, out.mask) ? rule::mul_plain(v4, a, c) : rule::mul(v4, a, c);
+    break;
+  }
   case Opcode::Mad: {
     const Id a = src(0), c = src(1), d = src(2);
-    v = rule::mad(v4, a, c, d);
+    v = plain_factors(0, 1, out.mask) ? rule::mad_plain(v4, a, c, d) : rule::mad(v4, a, c, d);
     break;
   }
   case Opcode::Dp3: v = splat(dot(src(0), src(1), 3)); break;

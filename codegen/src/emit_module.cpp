@@ -169,8 +169,18 @@ void Emitter::emit_code() {
   b.name(fn_main_, "d3d_main");
   b.begin_block(b.fresh_id());
   std::vector<PendingStore> pending;
+  if (opt.plain_values && prog.stage() == ir::ShaderStage::Pixel) {
+    ir::PlainValueInputs in;
+    in.constants = opt.ps_constant_values;
+    for (uint32_t s = 0; s < 16; ++s)
+      if (fetches(s)) in.unorm8_stages |= 1u << s;
+    in.ps1x_max = opt.conventions.ps1x_max_value;
+    in.ps1x_fixed_bits = opt.conventions.ps1x_fixed_bits;
+    plain_ = ir::plain_values(prog, in);
+  }
   for (size_t i = 0; i < prog.code.size() && !failed; ++i) {
     const ir::Instruction& ins = prog.code[i];
+    current_ = i;
     if (!ins.coissue) flush(pending);
     if (i < plan.skip.size() && plan.skip[i]) continue;
     const ir::OpInfo& info = ir::op_info(ins.op);
@@ -180,13 +190,16 @@ void Emitter::emit_code() {
       continue;
     }
     if (ins.op == ir::Opcode::Nop) continue;
+    const size_t stores = pending.size();
     if (info.cls == ir::OpClass::Texture) {
       std::optional<PendingStore> st;
       if (emit_texture(ins, st) && st) pending.push_back(*st);
-      continue;
+    } else {
+      PendingStore st;
+      if (emit_arith(ins, st)) pending.push_back(st);
     }
-    PendingStore st;
-    if (emit_arith(ins, st)) pending.push_back(st);
+    if (pending.size() > stores && i < plain_.within_ps1x_range.size())
+      pending.back().within_ps1x_range = plain_.within_ps1x_range[i];
   }
   flush(pending);
   if (!flow_.empty() && !failed) error(prog.code.back().loc, "unterminated flow control");
@@ -195,6 +208,12 @@ void Emitter::emit_code() {
       error(prog.version_loc, "call to l" + std::to_string(label) + ", which is never defined");
   if (b.block_open()) b.op_void(Op::OpReturn, {});
   b.end_function();
+}
+
+bool Emitter::plain_factors(size_t a, size_t b, uint8_t mask) const {
+  if (current_ >= plain_.sources.size() || a >= 4 || b >= 4) return false;
+  const std::array<uint8_t, 4>& s = plain_.sources[current_];
+  return (s[a] & s[b] & mask) == mask;
 }
 
 void Emitter::flush(std::vector<PendingStore>& pending) {

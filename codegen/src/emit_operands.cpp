@@ -6,6 +6,7 @@
 #include <spirv/unified1/GLSL.std.450.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 
 #include "tierlift/codegen/emitter.h"
@@ -148,7 +149,7 @@ Id Emitter::load_src(const ir::SrcOperand& s, uint32_t index_offset) {
   const uint8_t nonzero_read =
       (s.mod == SrcMod::None || s.mod == SrcMod::Neg) && !ir::is_ps1x(prog.profile) ? never_zero(v)
                                                                                     : uint8_t{0};
-  if (s.file == RegFile::Const && ir::is_ps1x(prog.profile))
+  if (s.file == RegFile::Const && ir::is_ps1x(prog.profile) && !const_within_unit(s))
     v = rule::clamp_sym(arith(4), v, splat(f(1.0f)));
   if (const int8_t by = ir::src_mod_info(s.mod).divide_by; by >= 0) {
     Id x = comp(v, 0), y = comp(v, 1);
@@ -167,6 +168,21 @@ Id Emitter::load_src(const ir::SrcOperand& s, uint32_t index_offset) {
         static_cast<uint8_t>(((nonzero_read >> ir::swizzle_component(s.swizzle, c)) & 1) << c);
   set_never_zero(out, swizzled);
   return out;
+}
+
+// Whether the clamp of a ps_1_x constant read to [−1, 1] changes nothing: with its values
+// known (CodegenOptions::plain_values), each component is ±0 or a normal number of magnitude
+// at most 1 (a denormal would be flushed by the clamp's min/max).
+bool Emitter::const_within_unit(const ir::SrcOperand& s) const {
+  if (!opt.plain_values || s.rel) return false;
+  const ir::ConstDef* d = defs_.find(ir::RegFile::Const, s.index);
+  if (!d && s.index >= opt.ps_constant_values.size()) return false;
+  for (int c = 0; c < 4; ++c) {
+    const float x = d ? d->f(c) : opt.ps_constant_values[s.index][static_cast<size_t>(c)];
+    if (!(std::fabs(x) <= 1.0f) || (!ir::numerics::signed_zero(x) && std::fabs(x) < FLT_MIN))
+      return false;
+  }
+  return true;
 }
 
 Id Emitter::scalar_src(const ir::SrcOperand& s) {
@@ -201,7 +217,8 @@ void Emitter::store(const PendingStore& st, bool ps1x_range) {
     const float scale = std::ldexp(1.0f, std::clamp<int>(st.mods.shift, -8, 8));
     v = fmul(v, vec4_const(scale, scale, scale, scale));
   }
-  if (ps1x_range) v = rule::clamp_sym(arith(4), v, splat(ps1x_max_value()));
+  if (ps1x_range && !st.within_ps1x_range)
+    v = rule::clamp_sym(arith(4), v, splat(ps1x_max_value()));
   if (st.mods.sat) v = rule::saturate(arith(4), v);
   if (ps1x_range && opt.conventions.ps1x_fixed_bits > 0) {
     const float scale = std::ldexp(1.0f, std::clamp(opt.conventions.ps1x_fixed_bits, 1, 23));

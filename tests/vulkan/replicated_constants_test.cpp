@@ -19,22 +19,6 @@
 namespace tierlift::vulkan::test {
 namespace {
 
-// `ps` with the pixel constants `bank`, reading `tex` (RGBA32F, point) at t0 = the pixel's
-// texel and t1 = the next one, drawn by the interpreter and by `dev`: {cpu, vulkan}.
-std::pair<img::Image, img::Image> draw_both_ways(Device& dev, const img::Image& tex,
-                                                 std::shared_ptr<const ir::Program> ps,
-                                                 const std::vector<cpu::Vec4>& bank) {
-  const cpu::Vec4 off{0.5f / tex.width, 0.5f / tex.height, 0, 0};
-  cpu::Pass p = quad_pass(two_coords_vs(), std::move(ps), {off, {1.5f / tex.width, off[1], 0, 0}},
-                          bank, cpu::BlendMode::Replace);
-  p.textures[0].sampler.filter = cpu::Filter::Point;
-  img::Image vk = draw_reading(dev, tex, img::Format::RGBA32F, p, tex.width, tex.height);
-  p.textures[0].image = std::make_shared<img::Image>(tex);
-  img::Image cpu(tex.width, tex.height, img::Format::RGBA32F);
-  EXPECT_TRUE(cpu::draw(p, cpu, 2).ok());
-  return {std::move(cpu), std::move(vk)};
-}
-
 TEST_F(ResidentTest, ReplicatedConstantsGiveTheInterpretersImage) {
   img::Image tex(23, 11, img::Format::RGBA32F);
   for (size_t i = 0; i < tex.rgba.size(); ++i)

@@ -10,6 +10,7 @@
 #include <string>
 #include <utility>
 
+#include "tierlift/cpu/draw.h"
 #include "tierlift/vulkan/texture_set.h"
 #include "vk_test_util.h"
 
@@ -114,6 +115,27 @@ inline bool same_bits(const img::Image& a, const img::Image& b, std::string* whe
       return false;
     }
   return true;
+}
+
+// `ps` with the pixel constants `bank`, reading `tex` (resident in `format`; POINT, CLAMP) at
+// t0 = the pixel's texel and t1 = the next one, drawn into RGBA32F by the interpreter and by
+// `dev` under `conventions`: {cpu, vulkan}.
+inline std::pair<img::Image, img::Image> draw_both_ways(Device& dev, const img::Image& tex,
+                                                        std::shared_ptr<const ir::Program> ps,
+                                                        const std::vector<cpu::Vec4>& bank,
+                                                        img::Format format = img::Format::RGBA32F,
+                                                        const ir::Conventions& conventions = {}) {
+  const cpu::Vec4 off{0.5f / tex.width, 0.5f / tex.height, 0, 0};
+  cpu::Pass p = quad_pass(two_coords_vs(), std::move(ps), {off, {1.5f / tex.width, off[1], 0, 0}},
+                          bank, cpu::BlendMode::Replace);
+  p.conventions = conventions;
+  p.textures[0].sampler.filter = cpu::Filter::Point;
+  p.textures[0].sampler.address_u = p.textures[0].sampler.address_v = cpu::AddressMode::Clamp;
+  img::Image vk = draw_reading(dev, tex, format, p, tex.width, tex.height);
+  p.textures[0].image = std::make_shared<img::Image>(tex);
+  img::Image cpu(tex.width, tex.height, img::Format::RGBA32F);
+  EXPECT_TRUE(cpu::draw(p, cpu, 2).ok());
+  return {std::move(cpu), std::move(vk)};
 }
 
 } // namespace tierlift::vulkan::test

@@ -76,6 +76,14 @@ struct CodegenOptions {
   // components: the same value, fewer operations (lavapipe: the glow's blur passes ~3 %
   // faster; its composite weights rgb, not alpha). Filled by the Vulkan device.
   std::vector<uint8_t> nonzero_vs_constants, nonzero_ps_constants;
+  // Whether a pixel module may leave out what ir::plain_values proves changes nothing for
+  // these constants (the c# the device binds; a def wins) and the stage_fetch_unorm8 reads:
+  // the zero test of a product whose factors are both plain (rule::mul_plain), and a ps_1_x
+  // range clamp that no plain result reaches (SpecId 3 may then be raised, not lowered,
+  // from conventions.ps1x_max_value). lavapipe, dx8 RGBA8 glow: 1.43 -> 1.3 of the GLSL
+  // peer. Filled by the Vulkan device.
+  bool plain_values = false;
+  std::vector<std::array<float, 4>> ps_constant_values;
   bool optimize = false; // run spirv-opt's performance passes after validation
   // Entry point name.
   std::string entry_point = "main";

@@ -14,6 +14,7 @@
 #include "tierlift/codegen/spirv_builder.h"
 #include "tierlift/ir/numeric_rules.h"
 #include "tierlift/ir/passes.h"
+#include "tierlift/ir/plain_values.h"
 
 namespace tierlift::codegen {
 
@@ -33,8 +34,9 @@ struct EmitPlan {
 struct PendingStore {
   ir::DstOperand dst;
   ir::InstrMods mods;
-  Id value = 0;       // vec4
-  uint8_t mask = 0xF; // the destination mask, possibly narrowed by the opcode
+  Id value = 0;                   // vec4
+  uint8_t mask = 0xF;             // the destination mask, possibly narrowed by the opcode
+  bool within_ps1x_range = false; // ir::PlainValueFacts: the ps_1_x range clamp is a no-op
 };
 
 class Emitter;
@@ -124,6 +126,12 @@ public:
     if (components) never_zero_[v] = components;
   }
   Id false_const(int n); // false of width n
+  // CodegenOptions::plain_values: what ir::plain_values knows of each instruction (empty
+  // when the option is off), and the instruction being emitted.
+  ir::PlainValueFacts plain_;
+  size_t current_ = 0;
+  // Whether source operands a and b of the current instruction are both plain in `mask`.
+  bool plain_factors(size_t a, size_t b, uint8_t mask) const;
 
   // ---- registers and operands (emit_operands.cpp) ----
   Id register_var(ir::RegFile file, uint32_t index); // Private vec4 (a0: ivec4)
@@ -131,6 +139,7 @@ public:
   Id load_register(ir::RegFile file, uint32_t index, const std::optional<ir::RelAddr>& rel);
   Id load_src(const ir::SrcOperand& s, uint32_t index_offset = 0);
   Id scalar_src(const ir::SrcOperand& s); // replicate-swizzle component (the w slot)
+  bool const_within_unit(const ir::SrcOperand& s) const;
   Id load_const(uint32_t index, const std::optional<ir::RelAddr>& rel);
   Id load_int_const(uint32_t index);          // ivec4
   Id load_bool_const(uint32_t index);         // bool

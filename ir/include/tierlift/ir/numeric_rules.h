@@ -66,6 +66,16 @@ template <class A, class V = typename A::V> V mad_x_nonzero(const A& a, V x, V y
   return a.add(mul_x_nonzero(a, x, y), z);
 }
 
+// Rules 8 and 14 for two plain factors (ir/plain_values.h: each +0 or a positive normal
+// number): when either is zero it is +0, and +0 times a finite non-negative number is +0,
+// so the plain product already is the rule's value, in every denormal mode.
+template <class A, class V = typename A::V> V mul_plain(const A& a, V x, V y) {
+  return a.fmul(x, y);
+}
+template <class A, class V = typename A::V> V mad_plain(const A& a, V x, V y, V z) {
+  return a.add(mul_plain(a, x, y), z);
+}
+
 // Rule 15: dot products sum left to right, ((x0·y0 + x1·y1) + x2·y2) + x3·y3.
 template <class A, class V = typename A::V> V dot(const A& a, const V* x, const V* y, int n) {
   V sum = mul(a, x[0], y[0]);

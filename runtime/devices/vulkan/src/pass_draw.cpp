@@ -241,6 +241,8 @@ std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawText
   co.nonzero_vs_constants = nonzero_constants(pass.vs_constants);
   co.nonzero_ps_constants = nonzero_constants(pass.ps_constants);
   co.point_sampling_floors = d.point_sampling_floors;
+  co.plain_values = true;
+  co.ps_constant_values = pass.ps_constants.f;
   for (uint32_t s = 0; s < pass::kMaxSamplers; ++s) {
     co.stage_projected[s] = pass.textures[s].stage.projected;
     co.stage_fetch_unorm8[s] = fetches_in_place(textures.stages[s], pass.textures[s].sampler);

@@ -1,13 +1,9 @@
-// RGBA8 UNORM → RGBA32F on the device through a table of k/255.0f (unorm8_to_float.h).
+// RGBA8 UNORM → RGBA32F on the device, k/255.0f computed exactly (unorm8_to_float.h).
 #include "unorm8_to_float.h"
-
-#include <algorithm>
-#include <array>
 
 #include <spirv/unified1/spirv.hpp11>
 
 #include "tierlift/codegen/spirv_builder.h"
-#include "tierlift/rounding/rounding.h"
 
 namespace tierlift::vulkan {
 namespace {
@@ -20,16 +16,19 @@ std::vector<uint32_t> unorm8_to_float_spirv() {
   // The GLSL it corresponds to:
   //   layout(local_size_x = 8, local_size_y = 8) in;
   //   layout(set = 0, binding = 0) readonly buffer In { uint texels[]; };
-  //   layout(set = 0, binding = 1) readonly buffer Table { float table[]; };
-  //   layout(set = 0, binding = 2) writeonly buffer Out { vec4 dst[]; };
+  //   layout(set = 0, binding = 1) writeonly buffer Out { vec4 dst[]; };
   //   layout(push_constant) uniform Size { uint width, height; };
   //   void main() {
   //     uvec3 id = gl_GlobalInvocationID;
   //     if (id.x < width && id.y < height) {
   //       uint t = texels[id.y * width + id.x];          // R in the low byte
-  //       dst[id.y * width + id.x] = vec4(table[t & 255], table[(t >> 8) & 255],
-  //                                         table[(t >> 16) & 255], table[t >> 24]);
+  //       dst[id.y * width + id.x] = vec4(level(t & 255), level((t >> 8) & 255),
+  //                                         level((t >> 16) & 255), level(t >> 24));
   //     }
+  //   }
+  //   precise float level(uint k) {
+  //     float f = float(k);
+  //     return (f * 65793.0 + f * (1.0 / 255.0)) * 0x1p-24;
   //   }
   using spv::Decoration;
   using spv::Op;
@@ -57,8 +56,7 @@ std::vector<uint32_t> unorm8_to_float_spirv() {
     return var;
   };
   const codegen::Id src = storage_block(t_uint, 4, 0, true);
-  const codegen::Id tab = storage_block(t_float, 4, 1, true);
-  const codegen::Id dst = storage_block(t_v4float, 16, 2, false);
+  const codegen::Id dst = storage_block(t_v4float, 16, 1, false);
   const codegen::Id size_members[] = {t_uint, t_uint};
   const codegen::Id size_block = b.type_struct(size_members);
   b.member_decorate(size_block, 0, Decoration::Offset, 0u);
@@ -97,13 +95,26 @@ std::vector<uint32_t> unorm8_to_float_spirv() {
   const codegen::Id t =
       b.op(Op::OpLoad, t_uint,
            {b.op(Op::OpAccessChain, b.type_pointer(SC::StorageBuffer, t_uint), {src, c0, i})});
-  const codegen::Id ptr_sb_float = b.type_pointer(SC::StorageBuffer, t_float);
+  // k/255.0f from the byte k, exactly: k/255 = (k·65793 + k/255)·2^-24 (2^24/255 = 65793 +
+  // 1/255). k·65793 < 2^24 is exact; fl(k·fl(1/255)) is within an ulp (2^-24) of k/255,
+  // while k·65793 + k/255 lies at least 1/(255·2^8) of the sum's ulp from a rounding midpoint
+  // (k/255 repeats an 8-bit pattern), so the sum rounds as the exact one does; 2^-24 scales
+  // exactly. Every level is checked (Rgba8SamplesExactlyKOver255).
+  const codegen::Id f65793 = b.const_float(65793.0f), finv = b.const_float(1.0f / 255.0f),
+                    fscale = b.const_float(0x1p-24f);
+  auto op = [&](Op o, codegen::Id x, codegen::Id y) {
+    const codegen::Id r = b.op(o, t_float, {x, y});
+    b.decorate(r, Decoration::NoContraction);
+    return r;
+  };
   codegen::Id rgba[4];
   for (uint32_t c = 0; c < 4; ++c) {
     // Byte c of the texel: (t >> 8c) & 255 (the top byte needs no mask).
     codegen::Id byte = c == 0 ? t : b.op(Op::OpShiftRightLogical, t_uint, {t, b.const_uint(8 * c)});
     if (c < 3) byte = b.op(Op::OpBitwiseAnd, t_uint, {byte, c255});
-    rgba[c] = b.op(Op::OpLoad, t_float, {b.op(Op::OpAccessChain, ptr_sb_float, {tab, c0, byte})});
+    const codegen::Id k = b.op(Op::OpConvertUToF, t_float, {byte});
+    const codegen::Id sum = op(Op::OpFAdd, op(Op::OpFMul, k, f65793), op(Op::OpFMul, k, finv));
+    rgba[c] = op(Op::OpFMul, sum, fscale);
   }
   const codegen::Id v =
       b.op(Op::OpCompositeConstruct, t_v4float, {rgba[0], rgba[1], rgba[2], rgba[3]});
@@ -123,20 +134,12 @@ std::string ensure_unorm8_converter(Device::Impl& d) {
   auto c = std::make_unique<Unorm8Converter>();
   VkDevice dev = d.device;
   VkResult r;
-  std::string err = create_buffer(d, c->objects, 256 * sizeof(float),
-                                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, c->table);
-  if (!err.empty()) return err;
-  auto* table = static_cast<float*>(c->table.mapped);
-  const std::array<float, 256>& levels = rounding::unorm8_levels(); // k/255.0f, correctly rounded
-  std::copy(levels.begin(), levels.end(), table);
-
-  const VkDescriptorSetLayoutBinding bindings[3] = {
+  const VkDescriptorSetLayoutBinding bindings[2] = {
       {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
-      {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
-      {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr}};
+      {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr}};
   VkDescriptorSetLayoutCreateInfo dli{};
   dli.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
-  dli.bindingCount = 3;
+  dli.bindingCount = 2;
   dli.pBindings = bindings;
   if ((r = vkCreateDescriptorSetLayout(dev, &dli, nullptr, &c->set_layout)) != VK_SUCCESS)
     return vk_error("vkCreateDescriptorSetLayout", r);
@@ -191,7 +194,7 @@ std::string create_unorm8_scratch(Device::Impl& d, Cleanup& cleanup, uint32_t wi
                         out.floats);
   if (!err.empty()) return err;
   VkDevice dev = d.device;
-  const VkDescriptorPoolSize sizes[1] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 3}};
+  const VkDescriptorPoolSize sizes[1] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2}};
   VkDescriptorPoolCreateInfo dpi{};
   dpi.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
   dpi.maxSets = 1;
@@ -208,11 +211,10 @@ std::string create_unorm8_scratch(Device::Impl& d, Cleanup& cleanup, uint32_t wi
   dsa.pSetLayouts = &d.unorm8->set_layout;
   if ((r = vkAllocateDescriptorSets(dev, &dsa, &out.set)) != VK_SUCCESS)
     return vk_error("vkAllocateDescriptorSets", r);
-  const VkDescriptorBufferInfo infos[3] = {{out.bytes.buffer, 0, VK_WHOLE_SIZE},
-                                           {d.unorm8->table.buffer, 0, VK_WHOLE_SIZE},
+  const VkDescriptorBufferInfo infos[2] = {{out.bytes.buffer, 0, VK_WHOLE_SIZE},
                                            {out.floats.buffer, 0, VK_WHOLE_SIZE}};
-  VkWriteDescriptorSet writes[3]{};
-  for (uint32_t k = 0; k < 3; ++k) {
+  VkWriteDescriptorSet writes[2]{};
+  for (uint32_t k = 0; k < 2; ++k) {
     writes[k].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
     writes[k].dstSet = out.set;
     writes[k].dstBinding = k;
@@ -220,7 +222,7 @@ std::string create_unorm8_scratch(Device::Impl& d, Cleanup& cleanup, uint32_t wi
     writes[k].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     writes[k].pBufferInfo = &infos[k];
   }
-  vkUpdateDescriptorSets(dev, 3, writes, 0, nullptr);
+  vkUpdateDescriptorSets(dev, 2, writes, 0, nullptr);
   return {};
 }
 

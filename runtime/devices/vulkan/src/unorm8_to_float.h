@@ -6,10 +6,12 @@
 // one ulp (measured on Mesa 22.3: level 3 reads 0.011764707, k/255 is 0.0117647061), and
 // one ulp in a sampled texel flips stored RGBA8 results of later passes by a whole step.
 // Device::draw samples the host's k/255.0f, and so does the CPU device. So the stored bytes are
-// copied into a buffer, a small compute shader maps each byte through a 256-entry table of
-// k/255.0f (computed on the host, correctly rounded) into a float buffer, and that is copied
-// into the float image: exact by construction, no float arithmetic on the device. (Storing
-// into a storage image instead measured slower on lavapipe: ~29 vs ~17 ms at 1280×720.)
+// copied into a buffer, a small compute shader computes k/255.0f from each byte k in float
+// operations that round exactly once where it matters (unorm8_to_float_spirv says why it is
+// exact), and that is copied into the float image. It replaced a 256-entry table of k/255.0f
+// in a storage buffer, whose four gathers per texel lavapipe runs slowly (1080p RGBA8 glow:
+// about a millisecond a frame). (Storing into a storage image instead measured slower on
+// lavapipe: ~29 vs ~17 ms at 1280×720.)
 #pragma once
 
 #include <cstdint>
@@ -20,24 +22,23 @@
 
 namespace tierlift::vulkan {
 
-// Per device, created on first use: shader, pipeline, layouts and the table.
+// Per device, created on first use: shader, pipeline and layouts.
 struct Unorm8Converter {
   Cleanup objects;
   VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
   VkPipelineLayout layout = VK_NULL_HANDLE;
   VkPipeline pipeline = VK_NULL_HANDLE;
-  Buffer table; // 256 floats, k/255.0f
 };
 
 // Per texture: the buffer the stored bytes are copied into, the float buffer the shader
-// writes, and the descriptor set binding them and the table.
+// writes, and the descriptor set binding them.
 struct Unorm8Scratch {
   Buffer bytes, floats;
   VkDescriptorSet set = VK_NULL_HANDLE;
 };
 
-// The compute shader (SPIR-V 1.3): set 0 = {0: uint texels[], 1: float table[256],
-// 2: vec4 out[]} (storage buffers); push constants (width, height); local size 8 × 8.
+// The compute shader (SPIR-V 1.3): set 0 = {0: uint texels[], 1: vec4 out[]} (storage
+// buffers); push constants (width, height); local size 8 × 8.
 std::vector<uint32_t> unorm8_to_float_spirv();
 
 // Creates d.unorm8 if it does not exist yet.
