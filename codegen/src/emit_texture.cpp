@@ -82,9 +82,15 @@ Id Emitter::point_texel_unorm8(Id si, Id uv) {
 }
 
 Id Emitter::fetch_unorm8(Id si, Id uv) {
-  const Id texel = point_texel_unorm8(si, uv);
-  // The texel's exact k/255.0f from the device's UNORM value v (which may be an ulp or two
-  // off k/255, as lavapipe's is for 126 of the 256 levels):
+  const Id v = point_texel_unorm8(si, uv);
+  // The texel's exact k/255.0f from the device's UNORM value v (unorm8_decode.h says why each
+  // decode is exact where the device chose it; decode_on_host is the same arithmetic).
+  switch (opt.unorm8_decode) {
+  case Unorm8Decode::None: return v;
+  case Unorm8Decode::TwoMultiply:
+    return fmul(fmul(v, splat(f(kTwoMultiply[0]))), splat(f(kTwoMultiply[1])));
+  case Unorm8Decode::RoundAndRebuild: break;
+  }
   //   k = roundEven(v·255)                      exact: v is far closer to k/255 than 1/510
   //   k/255 = (k·65793 + k/255) · 2^-24         since 2^24/255 = 65793 + 1/255
   //   fl32(k/255) = fl32(k·65793 + v) · 2^-24   k·65793 < 2^24 is exact; v's error is far
@@ -92,9 +98,8 @@ Id Emitter::fetch_unorm8(Id si, Id uv) {
   //                                             rounding boundary (k/255 is a repeating
   //                                             8-bit pattern), and 2^-24 scales exactly.
   // Every step is one float operation (tests check all 256 levels, ±2 ulps of v).
-  const Id k =
-      b.ext_inst(glsl, t_vec4, GLSLstd450RoundEven, std::array{fmul(texel, splat(f(255.0f)))});
-  const Id sum = fadd(fmul(k, splat(f(65793.0f))), texel);
+  const Id k = b.ext_inst(glsl, t_vec4, GLSLstd450RoundEven, std::array{fmul(v, splat(f(255.0f)))});
+  const Id sum = fadd(fmul(k, splat(f(65793.0f))), v);
   return fmul(sum, splat(f(0x1p-24f)));
 }
 

@@ -18,13 +18,16 @@ namespace tierlift::vulkan::test {
 
 // Owned by the program and destroyed at its end, like shared_device (vk_test_util.h). One per
 // value of DeviceOptions::llvmpipe_point_sampling (false: RGBA8 point reads compute their
-// index and fetch on lavapipe too, as on every other device).
-template <bool LlvmpipePointSampling = true>
+// index and fetch on lavapipe too, as on every other device) and of
+// DeviceOptions::choose_unorm8_decode (false: the general decode, as where no cheaper one
+// is exact).
+template <bool LlvmpipePointSampling = true, bool ChooseDecode = true>
 inline const ir::Result<Device*>& sync_validated_device() {
   static const ir::Result<Device*> shared = [] {
     DeviceOptions o;
     o.synchronization_validation = true;
     o.llvmpipe_point_sampling = LlvmpipePointSampling;
+    o.choose_unorm8_decode = ChooseDecode;
     return program_device(o);
   }();
   return shared;

@@ -6,7 +6,8 @@
 // Both ways to find the texel are checked on lavapipe: its own point sampler at the clamped
 // coordinate (CodegenOptions::point_sampling_floors, lavapipe's default) and the index the
 // shader computes, then a fetch (every other device; DeviceOptions::llvmpipe_point_sampling
-// off).
+// off); each with the decode the device chose by reading every level (two multiplies on
+// lavapipe) and with the general one (DeviceOptions::choose_unorm8_decode off).
 #include <cmath>
 #include <limits>
 
@@ -53,6 +54,20 @@ struct Sweep {
 class ResidentIndexFetchTest : public ResidentTest {
 protected:
   const ir::Result<Device*>& acquire_device() override { return sync_validated_device<false>(); }
+};
+// Both ways to find the texel again with the general decode (round and rebuild), which a
+// device whose values no cheaper decode maps exactly keeps.
+class ResidentGeneralDecodeTest : public ResidentTest {
+protected:
+  const ir::Result<Device*>& acquire_device() override {
+    return sync_validated_device<true, false>();
+  }
+};
+class ResidentIndexFetchGeneralDecodeTest : public ResidentTest {
+protected:
+  const ir::Result<Device*>& acquire_device() override {
+    return sync_validated_device<false, false>();
+  }
 };
 
 void reads_the_interpreters_texel_everywhere(Device& dev) {
@@ -104,11 +119,37 @@ TEST_F(ResidentTest, Rgba8PointFetchReadsTheInterpretersTexelEverywhere) {
 TEST_F(ResidentIndexFetchTest, Rgba8PointFetchReadsTheInterpretersTexelEverywhere) {
   reads_the_interpreters_texel_everywhere(*dev);
 }
+TEST_F(ResidentGeneralDecodeTest, Rgba8PointFetchReadsTheInterpretersTexelEverywhere) {
+  reads_the_interpreters_texel_everywhere(*dev);
+}
+TEST_F(ResidentIndexFetchGeneralDecodeTest, Rgba8PointFetchReadsTheInterpretersTexelEverywhere) {
+  reads_the_interpreters_texel_everywhere(*dev);
+}
 TEST_F(ResidentTest, Rgba8PointFetchGivesKOver255ForEveryLevel) {
   gives_k_over_255_for_every_level(*dev);
 }
 TEST_F(ResidentIndexFetchTest, Rgba8PointFetchGivesKOver255ForEveryLevel) {
   gives_k_over_255_for_every_level(*dev);
+}
+TEST_F(ResidentGeneralDecodeTest, Rgba8PointFetchGivesKOver255ForEveryLevel) {
+  gives_k_over_255_for_every_level(*dev);
+}
+TEST_F(ResidentIndexFetchGeneralDecodeTest, Rgba8PointFetchGivesKOver255ForEveryLevel) {
+  gives_k_over_255_for_every_level(*dev);
+}
+
+// Which decode each device chose (DeviceOptions::choose_unorm8_decode). lavapipe returns
+// one of the two values the two-multiply decode is exact for (unorm8_decode.h); a device
+// whose values already are k/255.0f would need none. Without the choice: the general one.
+TEST_F(ResidentTest, TheDeviceChoosesTheCheapestExactDecode) {
+  const bool lavapipe = dev->name().find("llvmpipe") != std::string::npos;
+  if (lavapipe) {
+    EXPECT_EQ(dev->unorm8_reads(), "two multiplies");
+    ASSERT_TRUE(sync_validated_device<false>().ok());
+    EXPECT_EQ((*sync_validated_device<false>())->unorm8_reads(), "two multiplies");
+  }
+  ASSERT_TRUE((sync_validated_device<true, false>().ok()));
+  EXPECT_EQ((*sync_validated_device<true, false>())->unorm8_reads(), "round and rebuild");
 }
 
 } // namespace

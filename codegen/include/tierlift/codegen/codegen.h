@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "tierlift/codegen/unorm8_decode.h"
 #include "tierlift/ir/conventions.h"
 #include "tierlift/ir/diagnostic.h"
 #include "tierlift/ir/program.h"
@@ -55,6 +56,10 @@ struct CodegenOptions {
   // a few float operations (emit_texture.cpp). The device then binds the RGBA8 image itself.
   // SamplerInfo::fetch_unorm8 says which stages got it.
   std::array<bool, 16> stage_fetch_unorm8{};
+  // How those reads turn the device's value into k/255.0f (unorm8_decode.h): the Vulkan
+  // device chooses by reading every level once. The default is right on every device whose
+  // value is within a few ulps of k/255.
+  Unorm8Decode unorm8_decode = Unorm8Decode::RoundAndRebuild;
   // The device's point sampler with CLAMP_TO_EDGE picks texel floor(fl32(u·N)), clamped to
   // [0, N − 1], for every u in [0, 1] on each axis, as the interpreter does (lavapipe: one
   // float multiply and a floor; not a GPU, whose sub-texel coordinates are fixed point). A

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "pipeline_cache.h"
+#include "unorm8_probe.h"
 #include "unorm8_to_float.h"
 #include "vk_internal.h"
 
@@ -227,7 +228,18 @@ ir::Result<std::unique_ptr<Device>> Device::create(const DeviceOptions& options)
     return fail(vk_error("vkCreateCommandPool", r));
   }
   impl->on_destroyed = options.on_destroyed; // a device that was never made has nothing to report
-  return Created(std::unique_ptr<Device>(new Device(std::move(impl))));
+  std::unique_ptr<Device> device(new Device(std::move(impl)));
+  // Read every RGBA8 level once, undecoded, and keep the cheapest decode that is exact for
+  // all of them (codegen/unorm8_decode.h); none exact: RGBA8 reads go through the float copy.
+  if (!options.choose_unorm8_decode) return Created(std::move(device));
+  Impl& d = *device->impl_;
+  d.unorm8_decode = codegen::Unorm8Decode::None;
+  ir::Result<std::vector<float>> levels = read_unorm8_levels(*device);
+  if (!levels) return levels.failure();
+  const std::optional<codegen::Unorm8Decode> decode = codegen::choose_unorm8_decode(*levels);
+  d.unorm8_decode = decode.value_or(codegen::Unorm8Decode::RoundAndRebuild);
+  d.unorm8_in_place = decode.has_value();
+  return Created(std::move(device));
 }
 
 std::string Device::name() const {
@@ -235,6 +247,9 @@ std::string Device::name() const {
 }
 uint32_t Device::subtexel_bits() const {
   return impl_->props.limits.subTexelPrecisionBits;
+}
+std::string Device::unorm8_reads() const {
+  return impl_->unorm8_in_place ? codegen::unorm8_decode_name(impl_->unorm8_decode) : "float copy";
 }
 
 std::vector<std::string> Device::messages() const {

@@ -110,8 +110,9 @@ std::string host_texture(Device::Impl& d, uint32_t stage, const img::Image& im, 
 // with POINT filtering and CLAMP addressing on both axes. The fetch reproduces point
 // sampling's texel and the shadow's exact k/255.0f, so the image is the same; what it saves is
 // the shadow's conversion each time the texture changed.
-bool fetches_in_place(const Resident* r, const pass::SamplerState& s) {
-  return r && !r->stencil && r->format == img::Format::RGBA8 && pass::point_clamped(s);
+bool fetches_in_place(const Device::Impl& d, const Resident* r, const pass::SamplerState& s) {
+  return d.unorm8_in_place && r && !r->stencil && r->format == img::Format::RGBA8 &&
+         pass::point_clamped(s);
 }
 
 // The constants whose four components hold the same bits (codegen::CodegenOptions::
@@ -241,11 +242,12 @@ std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawText
   co.nonzero_vs_constants = nonzero_constants(pass.vs_constants);
   co.nonzero_ps_constants = nonzero_constants(pass.ps_constants);
   co.point_sampling_floors = d.point_sampling_floors;
+  co.unorm8_decode = d.unorm8_decode;
   co.plain_values = true;
   co.ps_constant_values = pass.ps_constants.f;
   for (uint32_t s = 0; s < pass::kMaxSamplers; ++s) {
     co.stage_projected[s] = pass.textures[s].stage.projected;
-    co.stage_fetch_unorm8[s] = fetches_in_place(textures.stages[s], pass.textures[s].sampler);
+    co.stage_fetch_unorm8[s] = fetches_in_place(d, textures.stages[s], pass.textures[s].sampler);
   }
   ir::DiagnosticSink diags;
   auto pair = codegen::compile_pair(*vs_prog, *ps_prog, co, diags);

@@ -56,4 +56,25 @@ std::shared_ptr<const ir::Program> passthrough_pixel_program() {
   return p;
 }
 
+std::shared_ptr<const ir::Program> texel_copy_pixel_program() {
+  auto p = std::make_shared<ir::Program>();
+  p->profile = ir::Profile::ps_2_0;
+  ir::Declaration t0;
+  t0.reg = ir::DstOperand{ir::RegFile::Texture, 0, ir::kFullMask, {}};
+  ir::Declaration s0;
+  s0.reg = ir::DstOperand{ir::RegFile::Sampler, 0, ir::kFullMask, {}};
+  s0.sampler_type = ir::SamplerType::Tex2D;
+  p->decls = {t0, s0};
+  ir::Instruction tex = mov(ir::RegFile::Temp, 0, ir::RegFile::Texture, 0);
+  tex.op = ir::Opcode::TexLd;
+  ir::SrcOperand sampler;
+  sampler.file = ir::RegFile::Sampler;
+  tex.src.push_back(sampler);
+  p->code = {tex, mov(ir::RegFile::ColorOut, 0, ir::RegFile::Temp, 0)};
+  uint32_t seq = 0;
+  for (auto& d : p->decls) d.seq = seq++;
+  for (auto& c : p->code) c.seq = seq++;
+  return p;
+}
+
 } // namespace tierlift::vulkan

@@ -15,5 +15,7 @@ inline constexpr uint32_t kPassPosition = 0, kPassColor = 1, kPassTex = 3;
 std::shared_ptr<const ir::Program> passthrough_vertex_program();
 // ps_2_0: dcl v0; mov oC0, v0.
 std::shared_ptr<const ir::Program> passthrough_pixel_program();
+// ps_2_0: dcl t0; dcl_2d s0; texld r0, t0, s0; mov oC0, r0.
+std::shared_ptr<const ir::Program> texel_copy_pixel_program();
 
 } // namespace tierlift::vulkan

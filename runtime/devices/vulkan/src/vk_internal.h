@@ -11,6 +11,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include "tierlift/codegen/unorm8_decode.h"
 #include "tierlift/vulkan/device.h"
 
 namespace tierlift::vulkan {
@@ -33,6 +34,12 @@ struct Device::Impl {
   // codegen::CodegenOptions::point_sampling_floors: this device is lavapipe and
   // DeviceOptions::llvmpipe_point_sampling leaves it on.
   bool point_sampling_floors = false;
+  // How in-place RGBA8 reads decode this device's values into k/255.0f, chosen when the
+  // device is created by reading every level (unorm8_probe.h, codegen/unorm8_decode.h);
+  // false in_place: no decode is exact here, and RGBA8 textures are read through their
+  // exact float copy instead.
+  codegen::Unorm8Decode unorm8_decode = codegen::Unorm8Decode::RoundAndRebuild;
+  bool unorm8_in_place = true;
 
   std::unique_ptr<Unorm8Converter> unorm8; // created on first use
   // pipeline_cache.h: created on first use, saved when pipelines were added.

@@ -66,6 +66,10 @@ struct DeviceOptions {
   // interpreter's texel, and samples 8-bit texels faster than it fetches them. Ignored on
   // any other device. false: the fetch everywhere (tests cover both paths on lavapipe).
   bool llvmpipe_point_sampling = true;
+  // Read every RGBA8 level once when the device is created and decode in-place RGBA8 reads
+  // with the cheapest decode exact for all of them (unorm8_reads()). false: the general
+  // decode on every device, nothing read (tests cover both on lavapipe).
+  bool choose_unorm8_decode = true;
   // Called once when the device is destroyed, after vkDestroyDevice and vkDestroyInstance,
   // with every message not cleared before. With `validation` these include the layer's
   // report of Vulkan objects created and never destroyed (it checks at both calls); tests
@@ -94,6 +98,11 @@ public:
 
   std::string name() const;       // physical device name, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
   uint32_t subtexel_bits() const; // VkPhysicalDeviceLimits::subTexelPrecisionBits
+  // How a point read of a resident RGBA8 texture turns this device's value into k/255.0f,
+  // chosen when the device was created by reading every level: "none" (the value already
+  // is), "two multiplies" (lavapipe), "round and rebuild", or "float copy" (no decode is
+  // exact here: such textures are read through their exact RGBA32F copy).
+  std::string unorm8_reads() const;
 
   // Draws `pass` into `target`: its format selects the attachment format, its current
   // pixels are the destination blending reads; on success it holds the stored result and
