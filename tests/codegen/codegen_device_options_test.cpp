@@ -134,9 +134,7 @@ TEST(CodegenReplicatedConstants, ListedRegistersLoadOneComponent) {
 }
 
 size_t count(const std::string& text, const std::string& what) {
-  size_t n = 0;
-  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-  return n;
+  return test::count_occurrences(text, what);
 }
 
 TEST(CodegenNonzeroConstants, ProductsTestOnlyTheOtherFactor) {

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "compile_valid.h"
 #include "tierlift/asm/parser.h"
 #include "tierlift/codegen/codegen.h"
 #include "tierlift/ir/plain_values.h"
@@ -21,9 +22,7 @@ namespace {
 using Bank = std::vector<std::array<float, 4>>;
 
 ir::Program parse(const std::string& text) {
-  auto parsed = as::parse_text(text, "<test>");
-  EXPECT_TRUE(parsed.program) << ir::render_text(parsed.diags, parsed.sources);
-  return parsed.program ? *parsed.program : ir::Program{};
+  return test::parse_program(text);
 }
 
 ir::PlainValueFacts facts(const ir::Program& p, const Bank& bank, uint32_t unorm8 = 1,
@@ -150,9 +149,7 @@ TEST(PlainValues, FlowControlForgetsEverything) {
 }
 
 size_t count(const std::string& text, const std::string& what) {
-  size_t n = 0;
-  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-  return n;
+  return test::count_occurrences(text, what);
 }
 
 std::string pixel_spirv_text(const ir::Program& ps, const codegen::CodegenOptions& o) {

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "compile_valid.h"
 #include "tierlift/asm/parser.h"
 #include "tierlift/codegen/codegen.h"
 #include "tierlift/ir/liveness.h"
@@ -22,9 +23,7 @@ namespace {
 using Bank = std::vector<std::array<float, 4>>;
 
 ir::Program parse(const std::string& text) {
-  auto parsed = as::parse_text(text, "<test>");
-  EXPECT_TRUE(parsed.program) << ir::render_text(parsed.diags, parsed.sources);
-  return parsed.program ? *parsed.program : ir::Program{};
+  return test::parse_program(text);
 }
 
 // Listing 2's shape, cut to three taps: r1 (tap 1) feeds only the product with c1.
@@ -34,9 +33,7 @@ constexpr const char* kThreeTaps = "ps_2_0\ndcl t0.xy\ndcl t1.xy\ndcl t2.xy\ndcl
                                    "mov oC0, r0\n";
 
 size_t count(const std::string& text, const std::string& what) {
-  size_t n = 0;
-  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-  return n;
+  return test::count_occurrences(text, what);
 }
 
 TEST(ZeroConstantProducts, AZeroWeightDropsItsTextureRead) {
