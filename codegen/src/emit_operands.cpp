@@ -175,13 +175,11 @@ Id Emitter::load_src(const ir::SrcOperand& s, uint32_t index_offset) {
 // at most 1 (a denormal would be flushed by the clamp's min/max).
 bool Emitter::const_within_unit(const ir::SrcOperand& s) const {
   if (!opt.plain_values || s.rel) return false;
-  const ir::ConstDef* d = defs_.find(ir::RegFile::Const, s.index);
-  if (!d && s.index >= opt.ps_constant_values.size()) return false;
-  for (int c = 0; c < 4; ++c) {
-    const float x = d ? d->f(c) : opt.ps_constant_values[s.index][static_cast<size_t>(c)];
+  const auto value = ir::constant_value(defs_, s.index, opt.ps_constant_values);
+  if (!value) return false;
+  for (const float x : *value)
     if (!(std::fabs(x) <= 1.0f) || (!ir::numerics::signed_zero(x) && std::fabs(x) < FLT_MIN))
       return false;
-  }
   return true;
 }
 

@@ -27,4 +27,12 @@ FoldedDefs fold_defs(const Program& program) {
   return out;
 }
 
+std::optional<std::array<float, 4>> constant_value(const FoldedDefs& defs, uint32_t index,
+                                                   std::span<const std::array<float, 4>> bank) {
+  if (const ConstDef* d = defs.find(RegFile::Const, index))
+    return std::array<float, 4>{d->f(0), d->f(1), d->f(2), d->f(3)};
+  if (index < bank.size()) return bank[index];
+  return std::nullopt;
+}
+
 } // namespace tierlift::ir

@@ -127,10 +127,11 @@ private:
     Lanes v{};
     if (s.file == RegFile::Const) {
       if (s.rel) return v;
-      const ConstDef* d = defs_.find(RegFile::Const, s.index);
-      if (!d && s.index >= in_.constants.size()) return v;
+      const std::optional<std::array<float, 4>> value =
+          constant_value(defs_, s.index, in_.constants);
+      if (!value) return v;
       for (uint32_t c = 0; c < 4; ++c) {
-        v[c] = of_constant(d ? d->f(static_cast<int>(c)) : in_.constants[s.index][c]);
+        v[c] = of_constant((*value)[c]);
         // ps_1_x reads a constant clamped to [−1, 1].
         if (is_ps1x(p_.profile)) v[c] = clamp_above(v[c], 1.0f);
       }
@@ -186,6 +187,10 @@ private:
     return within;
   }
 
+  // The components the devices store (the code generator's PendingStore mask): not
+  // ir::written_mask, which gives the components left *defined* (texcrd's .w, say, is
+  // written but undefined) and ignores a texture instruction's mask; a fact must follow every
+  // component that changes.
   uint8_t written(const Instruction& ins) const {
     const uint8_t mask = ins.dst->mask & 0xF;
     return op_info(ins.op).cls == OpClass::Texture

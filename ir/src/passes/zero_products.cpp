@@ -6,16 +6,6 @@
 namespace tierlift::ir {
 namespace {
 
-// The value of c# as the program reads it: a def wins over the bank. A register the bank
-// does not hold: nullopt, the instruction is left as it is.
-std::optional<std::array<float, 4>> constant_value(const FoldedDefs& defs, uint32_t index,
-                                                   std::span<const std::array<float, 4>> bank) {
-  if (const ConstDef* d = defs.find(RegFile::Const, index))
-    return std::array<float, 4>{d->f(0), d->f(1), d->f(2), d->f(3)};
-  if (index < bank.size()) return bank[index];
-  return std::nullopt;
-}
-
 // Whether source `s` reads ±0 in every component of `mask` (after its swizzle; negation
 // keeps a zero a zero, other modifiers are not taken).
 bool reads_zero(const SrcOperand& s, uint8_t mask, const FoldedDefs& defs,

@@ -43,6 +43,10 @@ struct FoldedDefs {
   const ConstDef* find(RegFile file, uint32_t index) const&& = delete;
 };
 FoldedDefs fold_defs(const Program& program);
+// The value of c# as a program reads it: its winning def, else bank[index] (the constants a
+// device binds); nullopt when neither holds the register.
+std::optional<std::array<float, 4>> constant_value(const FoldedDefs& defs, uint32_t index,
+                                                   std::span<const std::array<float, 4>> bank);
 
 // --- relative addressing ------------------------------------------------------------------
 // The c# a relative read c[a0.x + n] / c[aL + n] can reach. Nothing bounds a0 or aL
