@@ -169,9 +169,9 @@ void Emitter::emit_code() {
   b.name(fn_main_, "d3d_main");
   b.begin_block(b.fresh_id());
   std::vector<PendingStore> pending;
-  if (opt.plain_values && prog.stage() == ir::ShaderStage::Pixel) {
+  if (opt.known_ps_constants && prog.stage() == ir::ShaderStage::Pixel) {
     ir::PlainValueInputs in;
-    in.constants = opt.ps_constant_values;
+    in.constants = *opt.known_ps_constants;
     for (uint32_t s = 0; s < 16; ++s)
       if (fetches(s)) in.unorm8_stages |= 1u << s;
     in.ps1x_max = opt.conventions.ps1x_max_value;

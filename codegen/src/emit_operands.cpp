@@ -6,6 +6,7 @@
 #include <spirv/unified1/GLSL.std.450.h>
 
 #include <algorithm>
+#include <bit>
 #include <cfloat>
 #include <cmath>
 
@@ -20,6 +21,15 @@ using ir::RegFile;
 using ir::SrcMod;
 using spv::Op;
 using SC = spv::StorageClass;
+
+namespace {
+// The four components hold the same bits (NaN payloads and zero signs included).
+bool replicated(const std::array<float, 4>& v) {
+  const auto x = std::bit_cast<uint32_t>(v[0]);
+  return x == std::bit_cast<uint32_t>(v[1]) && x == std::bit_cast<uint32_t>(v[2]) &&
+         x == std::bit_cast<uint32_t>(v[3]);
+}
+} // namespace
 
 Id Emitter::load_const(uint32_t index, const std::optional<ir::RelAddr>& rel) {
   // NUMERICS.md rule 13: under Rounding::Llvmpipe a def's denormals load as zeros of their
@@ -38,15 +48,13 @@ Id Emitter::load_const(uint32_t index, const std::optional<ir::RelAddr>& rel) {
     // 0 rather than declare a gigantic block, as the interpreter's missing registers do.
     if (index >= 65536) return vec4_const(0, 0, 0, 0);
     consts_read_.insert(index);
-    const std::vector<bool>& replicated = prog.stage() == ir::ShaderStage::Vertex
-                                              ? opt.replicated_vs_constants
-                                              : opt.replicated_ps_constants;
-    const std::vector<uint8_t>& nonzero = prog.stage() == ir::ShaderStage::Vertex
-                                              ? opt.nonzero_vs_constants
-                                              : opt.nonzero_ps_constants;
+    // CodegenOptions::known_*_constants: the value this register will hold, if known.
+    const auto& known =
+        prog.stage() == ir::ShaderStage::Vertex ? opt.known_vs_constants : opt.known_ps_constants;
+    const std::array<float, 4>* k = known && index < known->size() ? &(*known)[index] : nullptr;
     Id value;
-    if (index < replicated.size() && replicated[index]) {
-      // CodegenOptions::replicated_*: x stands for all four components.
+    if (k && replicated(*k)) {
+      // x stands for all four components.
       const Id x =
           b.op(Op::OpAccessChain, b.type_pointer(SC::Uniform, t_float),
                {uniform_var_, b.const_uint(kMemberFloat), b.const_uint(index), b.const_uint(0)});
@@ -56,7 +64,13 @@ Id Emitter::load_const(uint32_t index, const std::optional<ir::RelAddr>& rel) {
                             {uniform_var_, b.const_uint(kMemberFloat), b.const_uint(index)});
       value = b.op(Op::OpLoad, t_vec4, {chain});
     }
-    if (index < nonzero.size()) set_never_zero(value, nonzero[index] & 0xF);
+    if (k) {
+      uint8_t never_zero = 0;
+      for (int c = 0; c < 4; ++c)
+        if (ir::numerics::never_compares_zero((*k)[static_cast<size_t>(c)]))
+          never_zero |= static_cast<uint8_t>(1u << c);
+      set_never_zero(value, never_zero);
+    }
     return value;
   }
   const_relative_ = true;
@@ -171,11 +185,11 @@ Id Emitter::load_src(const ir::SrcOperand& s, uint32_t index_offset) {
 }
 
 // Whether the clamp of a ps_1_x constant read to [−1, 1] changes nothing: with its values
-// known (CodegenOptions::plain_values), each component is ±0 or a normal number of magnitude
+// known (CodegenOptions::known_ps_constants), each component is ±0 or a normal number of magnitude
 // at most 1 (a denormal would be flushed by the clamp's min/max).
 bool Emitter::const_within_unit(const ir::SrcOperand& s) const {
-  if (!opt.plain_values || s.rel) return false;
-  const auto value = ir::constant_value(defs_, s.index, opt.ps_constant_values);
+  if (!opt.known_ps_constants || s.rel) return false;
+  const auto value = ir::constant_value(defs_, s.index, *opt.known_ps_constants);
   if (!value) return false;
   for (const float x : *value)
     if (!(std::fabs(x) <= 1.0f) || (!ir::numerics::signed_zero(x) && std::fabs(x) < FLT_MIN))

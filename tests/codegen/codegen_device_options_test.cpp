@@ -4,9 +4,9 @@
 //   must validate and use the fetch only where asked (2D stages); the arithmetic the shader
 //   does is replayed here on the host, for every level and for device values up to two ulps
 //   away from k/255 (lavapipe's are one ulp off for 126 levels).
-// * replicated_*_constants: a listed constant is read as one float, replicated.
-// * nonzero_*_constants: a product with a listed constant tests only the other factor for
-//   zero (the Vulkan tests compare the images with the interpreter's).
+// * known_*_constants: a constant whose components hold the same bits is read as one float,
+//   replicated; a product with a constant never zero tests only the other factor for zero
+//   (the Vulkan tests compare the images with the interpreter's).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -113,13 +113,14 @@ TEST(CodegenFetchUnorm8, DecodeGivesKOver255ForEveryLevelWithinTwoUlps) {
   EXPECT_EQ(inexact_products, 126); // the levels a k·(1/255) conversion gets wrong
 }
 
-// CodegenOptions::replicated_ps_constants: a listed c# read without relative addressing loads
-// one float (a Uniform float pointer into the block) and replicates it; the others, and every
-// relative read, stay vec4 loads. The module validates either way.
+// CodegenOptions::known_ps_constants: a c# whose four components hold the same bits, read
+// without relative addressing, loads one float (a Uniform float pointer into the block) and
+// replicates it; the others, and every relative read, stay vec4 loads. The module validates
+// either way.
 TEST(CodegenReplicatedConstants, ListedRegistersLoadOneComponent) {
   const std::string text = "ps_2_0\ndcl t0.xy\nmul r0, t0, c1\nmad r0, r0, c2, c1\nmov oC0, r0\n";
   codegen::CodegenOptions opt;
-  opt.replicated_ps_constants = {false, true, false};
+  opt.known_ps_constants = {{{1, 2, 3, 4}, {5, 5, 5, 5}, {1, 2, 3, 4}}}; // c1 replicated
   const auto m = build(text, opt);
   ASSERT_TRUE(m);
   const std::string with = dis(*m);
@@ -127,7 +128,7 @@ TEST(CodegenReplicatedConstants, ListedRegistersLoadOneComponent) {
   const auto plain = build(text, {});
   ASSERT_TRUE(plain);
   EXPECT_EQ(dis(*plain).find("%_ptr_Uniform_float"), std::string::npos);
-  // The vertex stage's list is its own: a pixel-stage list leaves a vertex listing alone.
+  // The vertex stage's values are its own: pixel-stage values leave a vertex listing alone.
   const auto vs = build("vs_2_0\ndcl_position v0\nmul oPos, v0, c1\n", opt);
   ASSERT_TRUE(vs);
   EXPECT_EQ(dis(*vs).find("%_ptr_Uniform_float"), std::string::npos);
@@ -140,7 +141,7 @@ size_t count(const std::string& text, const std::string& what) {
 TEST(CodegenNonzeroConstants, ProductsTestOnlyTheOtherFactor) {
   const std::string text = "ps_2_0\ndcl t0.xy\nmul r0, t0, -c1.yzxw\nmov oC0, r0\n";
   codegen::CodegenOptions opt;
-  opt.nonzero_ps_constants = {0, 0xF};
+  opt.known_ps_constants = {{{0, 0, 0, 0}, {1, 2, 3, 4}}}; // c1 never zero
   const auto with = build(text, opt);
   const auto plain = build(text, {});
   ASSERT_TRUE(with && plain);
@@ -150,11 +151,11 @@ TEST(CodegenNonzeroConstants, ProductsTestOnlyTheOtherFactor) {
   EXPECT_EQ(count(dis(*plain), "OpLogicalOr"), 1u);
   // A register not listed, and ps_1_x (its constants are clamped to [-1, 1] on read; the
   // clamp of a NaN may be a zero), keep both tests.
-  opt.nonzero_ps_constants = {0xF, 0};
+  opt.known_ps_constants = {{{1, 2, 3, 4}, {0, 0, 0, 0}}};
   const auto other = build(text, opt);
   ASSERT_TRUE(other);
   EXPECT_EQ(count(dis(*other), "OpLogicalOr"), 1u);
-  opt.nonzero_ps_constants = {0xF};
+  opt.known_ps_constants = {{{1, 2, 3, 4}}};
   const auto ps14 = build("ps_1_4\nmul r0, r0, c0\n", opt);
   ASSERT_TRUE(ps14);
   EXPECT_GE(count(dis(*ps14), "OpLogicalOr"), 1u);
@@ -166,7 +167,7 @@ TEST(CodegenNonzeroConstants, SomeComponentsKnown) {
   // for the constant's w, and a bvec4 of three false and that compare.
   const std::string text = "ps_2_0\ndcl t0.xy\nmul r0, t0, c1.yzxw\nmov oC0, r0\n";
   codegen::CodegenOptions opt;
-  opt.nonzero_ps_constants = {0, 0x7};
+  opt.known_ps_constants = {{{0, 0, 0, 0}, {0.5f, 0.5f, 0.5f, 0}}};
   const auto m = build(text, opt);
   ASSERT_TRUE(m);
   const std::string with = dis(*m);

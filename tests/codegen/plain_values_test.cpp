@@ -167,17 +167,17 @@ TEST(PlainValues, TheCodeGeneratorLeavesOutTheZeroTests) {
   const ir::Program ps = parse(kTwoTaps);
   codegen::CodegenOptions o;
   o.stage_fetch_unorm8[0] = true;
-  o.ps_constant_values = {{0.5f, 0.5f, 0.5f, 0.5f}, {0.25f, 0.25f, 0.25f, 0.25f}, {2, 2, 2, 2}};
   const std::string full = pixel_spirv_text(ps, o);
-  o.plain_values = true;
+  o.known_ps_constants = {{{0.5f, 0.5f, 0.5f, 0.5f}, {0.25f, 0.25f, 0.25f, 0.25f}, {2, 2, 2, 2}}};
   const std::string plain = pixel_spirv_text(ps, o);
   // Three products, each with two compares against zero, an OR and a select.
   EXPECT_EQ(count(full, "OpFOrdEqual"), 6u);
   EXPECT_EQ(count(plain, "OpFOrdEqual"), 0u);
   EXPECT_EQ(count(plain, "OpFMul"), count(full, "OpFMul"));
-  // A negative weight keeps its product's test.
-  o.ps_constant_values[2] = {-2, 2, 2, 2};
-  EXPECT_EQ(count(pixel_spirv_text(ps, o), "OpFOrdEqual"), 2u);
+  // A negative weight keeps its product's test: one compare, of the other factor (the
+  // weight itself never compares equal to zero).
+  (*o.known_ps_constants)[2] = {-2, 2, 2, 2};
+  EXPECT_EQ(count(pixel_spirv_text(ps, o), "OpFOrdEqual"), 1u);
 }
 
 } // namespace

@@ -1,7 +1,7 @@
 // What the Vulkan device tells the code generator about the constants it binds:
-// * codegen::CodegenOptions::replicated_*_constants: a constant whose four components hold
+// * codegen::CodegenOptions::known_*_constants: a constant whose four components hold
 //   the same bits is read as one float and replicated;
-// * codegen::CodegenOptions::nonzero_*_constants: in a product with a constant none of whose
+// * the same known constants: in a product with a constant none of whose
 //   components is ±0 or a denormal, the "0 × anything = +0" rule tests only the other factor;
 // * ir::zero_constant_products: a product with a constant that is ±0 where the result is kept
 //   reads nothing else, and what fed only it is pruned.

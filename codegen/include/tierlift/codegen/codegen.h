@@ -67,28 +67,26 @@ struct CodegenOptions {
   // 0; every u outside picks the same edge texel as before) and decodes the value as the
   // fetch does, instead of computing the index and fetching.
   bool point_sampling_floors = false;
-  // Per stage, the c# whose four components hold the same bits when the module runs (a
-  // weight replicated across rgba, as the glow's listings read theirs). A read of such a
-  // register without relative addressing loads its x and replicates it: the same value, and
-  // lavapipe runs it far faster than a vec4 uniform read (the glow's blur passes: 1.3×).
-  // The Vulkan device fills these from the constants it binds; empty: every read is a vec4.
-  std::vector<bool> replicated_vs_constants, replicated_ps_constants;
-  // Per stage and c#, the components that never compare equal to zero when the module runs
-  // (bit c for component c): each has a non-zero exponent field (normal, infinite or NaN;
-  // not ±0, and not a denormal, which Rounding::Llvmpipe reads as zero). In a product with
-  // such a register (read without relative addressing, swizzled, negated or not) the
-  // "0 × anything = +0" rule (NUMERICS.md rule 8) tests only the other factor in those
-  // components: the same value, fewer operations (lavapipe: the glow's blur passes ~3 %
-  // faster; its composite weights rgb, not alpha). Filled by the Vulkan device.
-  std::vector<uint8_t> nonzero_vs_constants, nonzero_ps_constants;
-  // Whether a pixel module may leave out what ir::plain_values proves changes nothing for
-  // these constants (the c# the device binds; a def wins) and the stage_fetch_unorm8 reads:
-  // the zero test of a product whose factors are both plain (rule::mul_plain), and a ps_1_x
-  // range clamp that no plain result reaches (SpecId 3 may then be raised, not lowered,
-  // from conventions.ps1x_max_value). lavapipe, dx8 RGBA8 glow: 1.43 -> 1.3 of the GLSL
-  // peer. Filled by the Vulkan device.
-  bool plain_values = false;
-  std::vector<std::array<float, 4>> ps_constant_values;
+  // Per stage, the c# values the module will run with: the constants the device binds (a
+  // def still wins). The Vulkan device fills both and caches a prepared draw under its
+  // constants (draw_cache.h), so the module never meets others. Unset: nothing is known.
+  // Known, the module is specialised for them, each time to the same value bit for bit:
+  //  * a c# whose four components hold the same bits (a weight replicated across rgba, as
+  //    the glow's listings read theirs), read without relative addressing, loads its x and
+  //    replicates it; lavapipe runs that far faster than a vec4 uniform read (the glow's
+  //    blur passes: 1.3×);
+  //  * in a product with a c# (read without relative addressing, swizzled, negated or not),
+  //    the "0 × anything = +0" rule (NUMERICS.md rule 8) tests only the other factor in the
+  //    components that never compare equal to zero: a non-zero exponent field (normal,
+  //    infinite or NaN; not ±0, and not a denormal, which Rounding::Llvmpipe reads as zero);
+  //    lavapipe: the glow's blur passes ~3 % faster;
+  //  * a pixel module leaves out what ir::plain_values proves changes nothing for these
+  //    constants and the stage_fetch_unorm8 reads: the zero test of a product whose factors
+  //    are both plain (rule::mul_plain), a ps_1_x range clamp that no plain result reaches
+  //    (SpecId 3 may then be raised, not lowered, from conventions.ps1x_max_value) and the
+  //    [−1, 1] clamp of a ps_1_x constant inside it; lavapipe, dx8 RGBA8 glow: 1.43 → 1.31 of
+  //    the GLSL peer.
+  std::optional<std::vector<std::array<float, 4>>> known_vs_constants, known_ps_constants;
   bool optimize = false; // run spirv-opt's performance passes after validation
   // Entry point name.
   std::string entry_point = "main";

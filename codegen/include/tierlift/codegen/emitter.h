@@ -114,7 +114,7 @@ public:
   Id dot(Id a, Id c, int count); // rule::dot over the first count components of two vec4
   Id to_index(Id x);             // rule::index_range, then float → int
   // Per value, the components known never to compare equal to zero (bit c; a float: bit 0):
-  // CodegenOptions::nonzero_*_constants, carried through swizzles, negation and component
+  // CodegenOptions::known_*_constants, carried through swizzles, negation and component
   // extraction. The rules' compares with zero fold to false there (SpirvArith::eq, lor,
   // select).
   std::unordered_map<Id, uint8_t> never_zero_;
@@ -126,8 +126,8 @@ public:
     if (components) never_zero_[v] = components;
   }
   Id false_const(int n); // false of width n
-  // CodegenOptions::plain_values: what ir::plain_values knows of each instruction (empty
-  // when the option is off), and the instruction being emitted.
+  // What ir::plain_values knows of each instruction (empty unless
+  // CodegenOptions::known_ps_constants is set), and the instruction being emitted.
   ir::PlainValueFacts plain_;
   size_t current_ = 0;
   // Whether source operands a and b of the current instruction are both plain in `mask`.

@@ -50,7 +50,7 @@ template <class A, class V = typename A::V> V mad(const A& a, V x, V y, V z) {
 // Flush mode reads as zero): only the other factor is tested. The same value as mul / mad
 // for every value of the tested factor, one compare and one OR fewer. The CPU block executor
 // uses them for a constant factor (vm_block.cpp); the code generator gets the same by
-// folding its compare (CodegenOptions::nonzero_*_constants).
+// folding its compare (CodegenOptions::known_*_constants).
 template <class A, class V = typename A::V> V mul_y_nonzero(const A& a, V x, V y) {
   const V zero = a.k(0.0f);
   return a.select(a.eq(x, zero), zero, a.fmul_y_normal(x, y));

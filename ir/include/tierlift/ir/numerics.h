@@ -47,7 +47,7 @@ inline float flush_denormal(float x) {
 }
 // x never compares equal to zero, whatever the denormal mode: its exponent field is not 0
 // (a normal number, an infinity or a NaN). A product with such a factor need test only the
-// other one for rule 8 (mul_y_nonzero; the code generator's nonzero_*_constants).
+// other one for rule 8 (mul_y_nonzero; the code generator's known_*_constants).
 inline bool never_compares_zero(float x) {
   return (std::bit_cast<uint32_t>(x) & 0x7F800000u) != 0;
 }

@@ -4,7 +4,6 @@
 #include "pass_draw.h"
 
 #include <algorithm>
-#include <bit>
 #include <chrono>
 #include <cstring>
 
@@ -13,7 +12,6 @@
 #include "bindings.h"
 #include "pipeline.h"
 #include "synthetic_programs.h"
-#include "tierlift/ir/numerics.h"
 #include "tierlift/ir/passes.h"
 
 namespace tierlift::vulkan {
@@ -115,31 +113,6 @@ bool fetches_in_place(const Device::Impl& d, const Resident* r, const pass::Samp
          pass::point_clamped(s);
 }
 
-// The constants whose four components hold the same bits (codegen::CodegenOptions::
-// replicated_*): what the bank binds is what the module reads, since the draw is prepared
-// (and cached, draw_cache.h) for these constants.
-std::vector<bool> replicated_constants(const pass::ConstantBank& bank) {
-  std::vector<bool> out(bank.f.size());
-  for (size_t k = 0; k < bank.f.size(); ++k) {
-    const pass::Vec4& v = bank.f[k];
-    const auto x = std::bit_cast<uint32_t>(v[0]);
-    out[k] = x == std::bit_cast<uint32_t>(v[1]) && x == std::bit_cast<uint32_t>(v[2]) &&
-             x == std::bit_cast<uint32_t>(v[3]);
-  }
-  return out;
-}
-
-// Per constant, the components that never compare equal to zero, even with denormals read as
-// zeros (codegen::CodegenOptions::nonzero_*): those with a non-zero exponent field.
-std::vector<uint8_t> nonzero_constants(const pass::ConstantBank& bank) {
-  std::vector<uint8_t> out(bank.f.size());
-  for (size_t k = 0; k < bank.f.size(); ++k)
-    for (int c = 0; c < 4; ++c)
-      if (ir::numerics::never_compares_zero(bank.f[k][static_cast<size_t>(c)]))
-        out[k] |= static_cast<uint8_t>(1u << c);
-  return out;
-}
-
 // The layouts a failed submit must restore (recording already advanced them).
 struct LayoutSnapshot {
   std::vector<std::pair<TrackedImage*, VkImageLayout>> saved;
@@ -237,14 +210,10 @@ std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawText
     ps_prog = std::make_shared<const ir::Program>(std::move(copy));
   codegen::CodegenOptions co;
   co.conventions = pass.conventions;
-  co.replicated_vs_constants = replicated_constants(pass.vs_constants);
-  co.replicated_ps_constants = replicated_constants(pass.ps_constants);
-  co.nonzero_vs_constants = nonzero_constants(pass.vs_constants);
-  co.nonzero_ps_constants = nonzero_constants(pass.ps_constants);
+  co.known_vs_constants = pass.vs_constants.f; // the draw is cached under them
+  co.known_ps_constants = pass.ps_constants.f;
   co.point_sampling_floors = d.point_sampling_floors;
   co.unorm8_decode = d.unorm8_decode;
-  co.plain_values = true;
-  co.ps_constant_values = pass.ps_constants.f;
   for (uint32_t s = 0; s < pass::kMaxSamplers; ++s) {
     co.stage_projected[s] = pass.textures[s].stage.projected;
     co.stage_fetch_unorm8[s] = fetches_in_place(d, textures.stages[s], pass.textures[s].sampler);
