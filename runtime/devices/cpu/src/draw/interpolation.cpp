@@ -158,16 +158,19 @@ namespace {
 // count compute values nobody reads). Inlined into two functions: one built for AVX2 + FMA,
 // where std::fma becomes one vector instruction, and the baseline one, where it is a call
 // into libm; both round exactly once per fma, so they agree bit for bit.
-[[gnu::always_inline]] inline void llvmpipe_lanes_body(const Triangle& t, const int64_t* x,
-                                                       int64_t y, uint8_t color_reads,
-                                                       uint32_t tex_components,
+[[gnu::always_inline]] inline void llvmpipe_lanes_body(const Triangle& t, int64_t x0, int64_t y,
+                                                       uint8_t color_reads, uint32_t tex_components,
                                                        PixelBlockInput& in) {
   const AttributePlanes& p = t.planes;
   const float fy = static_cast<float>(y);
   float fx[kBlockLanes], oow[kBlockLanes];
   const Plane w = p.oow;
+  // Lane l is pixel x0 + l. x0 + l < 16384 + 64 (draw() refuses wider targets), so the sum
+  // of the two floats is that integer exactly. Computed rather than loaded: x[] was just
+  // written lane by lane, and wide loads of it stalled on store forwarding.
+  const float x0f = static_cast<float>(x0);
 #pragma GCC unroll 1
-  for (int l = 0; l < kBlockLanes; ++l) fx[l] = static_cast<float>(x[l]);
+  for (int l = 0; l < kBlockLanes; ++l) fx[l] = x0f + static_cast<float>(l);
   // With dadx = ±0 (1/w constant along the row: every 2D pass), dadx·x is the same signed zero
   // at every x ≥ 0, so every lane's 1/w is the one at x = 0: one division per block. When it
   // is exactly 1 the products by it are skipped too: v·1 = v, and v is already flushed. The
@@ -226,25 +229,25 @@ namespace {
   }
 }
 
-void llvmpipe_lanes(const Triangle& t, const int64_t* x, int64_t y, uint8_t color_reads,
+void llvmpipe_lanes(const Triangle& t, int64_t x0, int64_t y, uint8_t color_reads,
                     uint32_t tex_components, PixelBlockInput& in) {
-  llvmpipe_lanes_body(t, x, y, color_reads, tex_components, in);
+  llvmpipe_lanes_body(t, x0, y, color_reads, tex_components, in);
 }
 
 #if defined(__x86_64__) && defined(__GNUC__)
-[[gnu::target("avx2,fma")]] void llvmpipe_lanes_fma(const Triangle& t, const int64_t* x, int64_t y,
+[[gnu::target("avx2,fma")]] void llvmpipe_lanes_fma(const Triangle& t, int64_t x0, int64_t y,
                                                     uint8_t color_reads, uint32_t tex_components,
                                                     PixelBlockInput& in) {
-  llvmpipe_lanes_body(t, x, y, color_reads, tex_components, in);
+  llvmpipe_lanes_body(t, x0, y, color_reads, tex_components, in);
 }
 bool fma_hardware() {
   static const bool yes = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
   return yes;
 }
 #else
-void llvmpipe_lanes_fma(const Triangle& t, const int64_t* x, int64_t y, uint8_t color_reads,
+void llvmpipe_lanes_fma(const Triangle& t, int64_t x0, int64_t y, uint8_t color_reads,
                         uint32_t tex_components, PixelBlockInput& in) {
-  llvmpipe_lanes_body(t, x, y, color_reads, tex_components, in);
+  llvmpipe_lanes_body(t, x0, y, color_reads, tex_components, in);
 }
 bool fma_hardware() {
   return false;
@@ -268,9 +271,9 @@ void interpolate_block(const Triangle& t, const int64_t (*e)[3], const int64_t* 
     return;
   }
   if (fma_hardware())
-    llvmpipe_lanes_fma(t, x, y, color_reads, tex_components, in);
+    llvmpipe_lanes_fma(t, x[0], y, color_reads, tex_components, in);
   else
-    llvmpipe_lanes(t, x, y, color_reads, tex_components, in);
+    llvmpipe_lanes(t, x[0], y, color_reads, tex_components, in);
 }
 
 } // namespace tierlift::cpu::detail

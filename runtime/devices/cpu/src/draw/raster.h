@@ -142,8 +142,8 @@ void store_block(BlendMode mode, img::Format format, ir::Rounding rounding, cons
                  const std::array<bool, kBlockLanes>& discarded, const int64_t* x, int n,
                  float* row);
 
-// The inputs `reads` names (bits 0–1 colours, 8–15 texture coordinates) of n pixels (x[l], y)
-// into lanes 0..n−1, bit-identical to interpolate().
+// The inputs `reads` names (bits 0–1 colours, 8–15 texture coordinates) of n consecutive
+// pixels (x[l] = x[0] + l, y) into lanes 0..n−1, bit-identical to interpolate().
 void interpolate_block(const Triangle& t, const int64_t (*e)[3], const int64_t* x, int64_t y, int n,
                        uint8_t color_reads, uint32_t tex_components, PixelBlockInput& in);
 
