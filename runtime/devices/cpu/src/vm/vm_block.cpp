@@ -25,10 +25,6 @@ using namespace block;
 
 namespace {
 
-// Inlined into both builds of the steps (run_steps, run_steps_avx2), so that each vectorises
-// its lane loops for its own target.
-#define TL_INLINE [[gnu::always_inline]] inline
-
 using Impl = PixelBlockVM::Impl;
 using Scratch = PixelBlockVM::Scratch;
 

@@ -11,6 +11,10 @@
 #include "tierlift/cpu/pixel_block.h"
 #include "vm_internal.h"
 
+// The step functions (vm_block.cpp, vm_block_store.h) are inlined into both builds of the
+// steps (run_steps, run_steps_avx2), so that each vectorises its lane loops for its own target.
+#define TL_INLINE [[gnu::always_inline]] inline
+
 namespace tierlift::cpu {
 
 namespace block {

@@ -1,14 +1,12 @@
 // The block executor's store: an instruction's result lanes into the destination register
 // through vm::dst_transform's steps (shift, ps_1_x range clamp, saturate, fixed point), each a
-// lane loop the compiler vectorises. Inlined into both builds of the steps (vm_block.cpp).
+// lane loop the compiler vectorises (TL_INLINE: vm_block_internal.h).
 #pragma once
 
 #include <cstring>
 
 #include "tierlift/ir/numerics.h"
 #include "vm_block_internal.h"
-
-#define TL_BLOCK_INLINE [[gnu::always_inline]] inline
 
 namespace tierlift::cpu::block {
 
@@ -20,7 +18,7 @@ namespace num = ir::numerics;
 // and the zero it flushes to both lie strictly inside ±max, so the compares come out the same
 // either way; and `lo > v ? lo : v`, `max < v ? max : v` keep a NaN, as clamp_sym's selects
 // do (executor_identity_test holds the block path to the per-pixel VM on such values).
-template <num::Denormals D> TL_BLOCK_INLINE void range_clamp(const float* in, float* o, float max) {
+template <num::Denormals D> TL_INLINE void range_clamp(const float* in, float* o, float max) {
   const float lo = -max;
   for (int l = 0; l < L; ++l) {
     float v = in[l];
@@ -32,7 +30,7 @@ template <num::Denormals D> TL_BLOCK_INLINE void range_clamp(const float* in, fl
 
 // The result `v` of one instruction into its register `r` through the destination's steps.
 template <num::Denormals D>
-TL_BLOCK_INLINE void store_lanes(const vm::DstDesc& d, const LaneVec4& v, LaneVec4& r) {
+TL_INLINE void store_lanes(const vm::DstDesc& d, const LaneVec4& v, LaneVec4& r) {
   for (int c = 0; c < 4; ++c) {
     if (!(d.mask & (1 << c))) continue;
     // vm::dst_transform's steps in its order, one lane loop per step the destination has:
@@ -65,5 +63,3 @@ TL_BLOCK_INLINE void store_lanes(const vm::DstDesc& d, const LaneVec4& v, LaneVe
 }
 
 } // namespace tierlift::cpu::block
-
-#undef TL_BLOCK_INLINE
