@@ -37,34 +37,15 @@ uint8_t unorm8_llvmpipe(float value) {
   return static_cast<uint8_t>(k);
 }
 
-// Built for AVX2 and for the baseline, chosen once at load time: the CPU device's block
-// store calls these for every pixel it writes.
+// Built for AVX2 and for the baseline, chosen once at load time.
 [[gnu::target_clones("avx2", "default")]] void unorm8_llvmpipe_bytes(const float* in, int32_t* out,
                                                                      int n) {
-  for (int i = 0; i < n; ++i) {
-    // NaN and ≤ 0 → 0, ≥ 1 → 255, as the two tests of unorm8_llvmpipe.
-    const float v = in[i];
-    const float low = v > 0.0f ? v : 0.0f;
-    const float t = low < 1.0f ? low : 1.0f;
-    const float scaled = t * 255.0f; // in [0, 255]: the same fl32 product
-    // Truncation is floor here (scaled ≥ 0) and needs no rounding mode; the rest is exact.
-    const int32_t k = static_cast<int32_t>(scaled);
-    const float rest = scaled - static_cast<float>(k);
-    // Ties to even; & and | rather than && and || keep the loop free of branches.
-    const int32_t up = (rest > 0.5f ? 1 : 0) | ((rest == 0.5f ? 1 : 0) & (k & 1));
-    out[i] = k + up;
-  }
+  for (int i = 0; i < n; ++i) out[i] = unorm8_llvmpipe_lane(in[i]);
 }
 
 [[gnu::target_clones("avx2", "default")]] void unorm8_nearest_bytes(const float* in, int32_t* out,
                                                                     int n) {
-  for (int i = 0; i < n; ++i) {
-    // unorm8_nearest's steps: clamp in double (NaN → 0: the comparisons fail), v·255 exact,
-    // + ½ and floor (truncation, the value being ≥ 0).
-    const double v = static_cast<double>(in[i]);
-    const double t = v > 0.0 ? (v < 1.0 ? v : 1.0) : 0.0;
-    out[i] = static_cast<int32_t>(t * 255.0 + 0.5);
-  }
+  for (int i = 0; i < n; ++i) out[i] = unorm8_nearest_lane(in[i]);
 }
 
 } // namespace tierlift::rounding

@@ -30,11 +30,11 @@ inline float blend_equation(BlendMode mode, float s, float a, float d) {
 // RGBA32F's store rule is the identity (img::quantize): each stored value is the blend
 // equation itself, written over the destination in place.
 template <BlendMode kMode>
-void store_block_float32(const LaneVec4& src, const std::array<bool, kBlockLanes>& discarded,
-                         const int64_t* x, int n, float* row) {
+void store_block_float32(const LaneVec4& src, const std::array<bool, kBlockLanes>& discarded, int n,
+                         float* first) {
   for (int l = 0; l < n; ++l) {
     if (discarded[static_cast<size_t>(l)]) continue;
-    float* p = row + 4 * x[l];
+    float* p = first + 4 * l;
     const float a = src.c[3][l];
     for (int c = 0; c < 4; ++c) p[c] = blend_equation(kMode, src.c[c][l], a, p[c]);
   }
@@ -97,47 +97,56 @@ Vec4 blend_unorm8_llvmpipe(BlendMode mode, const Vec4& src_in, const Vec4& dst_i
 
 // blend_unorm8_llvmpipe on lane arrays, for every blend mode: the source bytes, then the
 // destination's (Replace reads none; read before any lane is written, a block's pixels
-// being distinct), then the same integer blend. The loops vectorise; the result is the same
-// bits as blend_unorm8_llvmpipe pixel by pixel (BlockBlendMatchesThePixelRule in
-// tests/cpu_draw/rgba8_store_llvmpipe_test.cpp).
-void store_block_unorm8_llvmpipe(BlendMode mode, const LaneVec4& src,
-                                 const std::array<bool, kBlockLanes>& discarded, const int64_t* x,
-                                 int n, float* row) {
-  int32_t s[4][kBlockLanes], d[4][kBlockLanes];
-  float dst[kBlockLanes];
-  for (int c = 0; c < 4; ++c) {
-    rounding::unorm8_llvmpipe_bytes(src.c[c], s[c], n);
-    if (mode == BlendMode::Replace) continue;
-    for (int l = 0; l < n; ++l) dst[l] = row[4 * x[l] + c];
-    rounding::unorm8_nearest_bytes(dst, d[c], n);
-  }
-  // The blend per mode and channel over the lanes (loops the compiler vectorises), then each
-  // byte's value k/255.0f (what rounding::unorm8_levels holds, computed the same way).
-  // Channel 3 goes last, in place: the others read its source byte as the alpha factor.
-  const int32_t* a = s[3];
-  float out[4][kBlockLanes];
-  for (int c = 0; c < 4; ++c) {
-    int32_t* v = s[c];
-    const int32_t* e = d[c];
-    switch (mode) {
-    case BlendMode::Replace: break;
-    case BlendMode::OneOne:
-      for (int l = 0; l < n; ++l) v[l] += e[l];
-      break;
-    case BlendMode::SrcAlphaOne:
-      for (int l = 0; l < n; ++l) v[l] = mul_norm8(v[l], a[l]) + e[l];
-      break;
-    case BlendMode::SrcAlphaInvSrcAlpha:
-      for (int l = 0; l < n; ++l) v[l] = mul_norm8(v[l], a[l]) + mul_norm8(e[l], 255 - a[l]);
-      break;
+// being distinct), then the same integer blend, each byte's value k/255.0f (what
+// rounding::unorm8_levels holds, computed the same way) and the write. The loops vectorise;
+// the result is the same bits as blend_unorm8_llvmpipe pixel by pixel
+// (BlockBlendMatchesThePixelRule in tests/cpu_draw/rgba8_store_llvmpipe_test.cpp, and the
+// block executor's identity tests). Built for AVX2 and for the baseline, chosen at load
+// time: the baseline has no packed 32-bit multiply for mul_norm8, and this store runs for
+// every pixel an RGBA8 pass writes.
+[[gnu::target_clones("avx2", "default")]] void
+store_block_unorm8_llvmpipe(BlendMode mode, const LaneVec4& src,
+                            const std::array<bool, kBlockLanes>& discarded, int n, float* p) {
+  int32_t s[4][kBlockLanes];
+  for (int c = 0; c < 4; ++c)
+    for (int l = 0; l < n; ++l) s[c][l] = rounding::unorm8_llvmpipe_lane(src.c[c][l]);
+  if (mode != BlendMode::Replace) {
+    int32_t d[4][kBlockLanes];
+    for (int l = 0; l < n; ++l)
+      for (int c = 0; c < 4; ++c) d[c][l] = rounding::unorm8_nearest_lane(p[4 * l + c]);
+    // The blend per mode and channel over the lanes. Channel 3 goes last, in place: the
+    // others read its source byte as the alpha factor.
+    const int32_t* a = s[3];
+    for (int c = 0; c < 4; ++c) {
+      int32_t* v = s[c];
+      const int32_t* e = d[c];
+      switch (mode) {
+      case BlendMode::Replace: break;
+      case BlendMode::OneOne:
+        for (int l = 0; l < n; ++l) v[l] += e[l];
+        break;
+      case BlendMode::SrcAlphaOne:
+        for (int l = 0; l < n; ++l) v[l] = mul_norm8(v[l], a[l]) + e[l];
+        break;
+      case BlendMode::SrcAlphaInvSrcAlpha:
+        for (int l = 0; l < n; ++l) v[l] = mul_norm8(v[l], a[l]) + mul_norm8(e[l], 255 - a[l]);
+        break;
+      }
     }
   }
+  float out[4][kBlockLanes];
   for (int c = 0; c < 4; ++c)
     for (int l = 0; l < n; ++l) out[c][l] = static_cast<float>(std::min(s[c][l], 255)) / 255.0f;
+  bool any_discarded = false;
+  for (int l = 0; l < n; ++l) any_discarded |= discarded[static_cast<size_t>(l)];
+  if (!any_discarded) { // the usual block: one interleaving loop the compiler vectorises
+    for (int l = 0; l < n; ++l)
+      for (int c = 0; c < 4; ++c) p[4 * l + c] = out[c][l];
+    return;
+  }
   for (int l = 0; l < n; ++l) {
     if (discarded[static_cast<size_t>(l)]) continue;
-    float* p = row + 4 * x[l];
-    for (int c = 0; c < 4; ++c) p[c] = out[c][l];
+    for (int c = 0; c < 4; ++c) p[4 * l + c] = out[c][l];
   }
 }
 
@@ -153,25 +162,24 @@ Vec4 blend_and_store(BlendMode mode, img::Format format, const Vec4& src, const 
 namespace detail {
 
 void store_block(BlendMode mode, img::Format format, ir::Rounding rounding, const LaneVec4& src,
-                 const std::array<bool, kBlockLanes>& discarded, const int64_t* x, int n,
-                 float* row) {
+                 const std::array<bool, kBlockLanes>& discarded, int64_t x0, int n, float* row) {
+  float* first = row + 4 * x0;
   if (format == img::Format::RGBA32F) {
     switch (mode) {
     case BlendMode::Replace:
-      return store_block_float32<BlendMode::Replace>(src, discarded, x, n, row);
-    case BlendMode::OneOne:
-      return store_block_float32<BlendMode::OneOne>(src, discarded, x, n, row);
+      return store_block_float32<BlendMode::Replace>(src, discarded, n, first);
+    case BlendMode::OneOne: return store_block_float32<BlendMode::OneOne>(src, discarded, n, first);
     case BlendMode::SrcAlphaOne:
-      return store_block_float32<BlendMode::SrcAlphaOne>(src, discarded, x, n, row);
+      return store_block_float32<BlendMode::SrcAlphaOne>(src, discarded, n, first);
     case BlendMode::SrcAlphaInvSrcAlpha:
-      return store_block_float32<BlendMode::SrcAlphaInvSrcAlpha>(src, discarded, x, n, row);
+      return store_block_float32<BlendMode::SrcAlphaInvSrcAlpha>(src, discarded, n, first);
     }
   }
   if (format == img::Format::RGBA8 && rounding == ir::Rounding::Llvmpipe)
-    return store_block_unorm8_llvmpipe(mode, src, discarded, x, n, row);
+    return store_block_unorm8_llvmpipe(mode, src, discarded, n, first);
   for (int l = 0; l < n; ++l) {
     if (discarded[static_cast<size_t>(l)]) continue;
-    float* p = row + 4 * x[l];
+    float* p = first + 4 * l;
     const Vec4 v =
         blend_and_store(mode, format, {src.c[0][l], src.c[1][l], src.c[2][l], src.c[3][l]},
                         {p[0], p[1], p[2], p[3]}, rounding);

@@ -105,7 +105,10 @@ struct RasterJob {
   DrawTargets targets; // target is targets.color[0]
 };
 
-struct WorkerStats {
+// One worker's counters, on a cache line of their own: the workers' counters lie side by
+// side in one vector and are written once a block, and counters sharing a line made every
+// block of one worker evict that line from the other's cache.
+struct alignas(64) WorkerStats {
   uint64_t shaded = 0, killed = 0, block = 0;
 };
 
@@ -136,11 +139,11 @@ bool covers(const std::vector<Triangle>& triangles, const PixelRect& rect, int64
 void raster_rows_block(const RasterJob& job, int64_t y0, int64_t y1, BlockWorker& w,
                        WorkerStats& stats);
 
-// blend_and_store for lanes 0..n−1 of a block on one row (`row`: the target's row, pixel x[l]
-// at row + 4·x[l]), discarded lanes left alone; RGBA32F targets take an inlined loop.
+// blend_and_store for lanes 0..n−1 of a block of n consecutive pixels on one row (`row`: the
+// target's row, lane l's pixel x0 + l at row + 4·(x0 + l)), discarded lanes left alone;
+// RGBA32F targets take an inlined loop.
 void store_block(BlendMode mode, img::Format format, ir::Rounding rounding, const LaneVec4& src,
-                 const std::array<bool, kBlockLanes>& discarded, const int64_t* x, int n,
-                 float* row);
+                 const std::array<bool, kBlockLanes>& discarded, int64_t x0, int n, float* row);
 
 // The inputs `reads` names (bits 0–1 colours, 8–15 texture coordinates) of n consecutive
 // pixels (x[l] = x[0] + l, y) into lanes 0..n−1, bit-identical to interpolate().

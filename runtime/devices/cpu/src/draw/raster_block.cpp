@@ -32,7 +32,7 @@ void shade_block(const RasterJob& job, const Triangle& t, int64_t y, int n, Bloc
   stats.shaded += static_cast<uint64_t>(n);
   for (int l = 0; l < n; ++l) stats.killed += w.out.discarded[static_cast<size_t>(l)] ? 1 : 0;
   store_block(job.pass.blend, job.target.format, job.pass.conventions.rounding, *w.out.color,
-              w.out.discarded, w.x, n, job.target.at(0, static_cast<uint32_t>(y)));
+              w.out.discarded, w.x[0], n, job.target.at(0, static_cast<uint32_t>(y)));
 }
 
 // Integer division rounded toward −∞ / +∞ (d > 0).

@@ -57,6 +57,28 @@ uint8_t unorm8_llvmpipe(float value);
 void unorm8_llvmpipe_bytes(const float* in, int32_t* out, int n);
 void unorm8_nearest_bytes(const float* in, int32_t* out, int n);
 
+// One element of the loops above, inline for loops elsewhere that fuse the conversion with
+// their own work (the CPU device's RGBA8 block store); the same steps, so the same bytes.
+inline int32_t unorm8_llvmpipe_lane(float v) {
+  // NaN and ≤ 0 → 0, ≥ 1 → 255, as the two tests of unorm8_llvmpipe.
+  const float low = v > 0.0f ? v : 0.0f;
+  const float t = low < 1.0f ? low : 1.0f;
+  const float scaled = t * 255.0f; // in [0, 255]: the same fl32 product
+  // Truncation is floor here (scaled ≥ 0) and needs no rounding mode; the rest is exact.
+  const int32_t k = static_cast<int32_t>(scaled);
+  const float rest = scaled - static_cast<float>(k);
+  // Ties to even; & and | rather than && and || keep the loop free of branches.
+  const int32_t up = (rest > 0.5f ? 1 : 0) | ((rest == 0.5f ? 1 : 0) & (k & 1));
+  return k + up;
+}
+inline int32_t unorm8_nearest_lane(float value) {
+  // unorm8_nearest's steps: clamp in double (NaN → 0: the comparisons fail), v·255 exact,
+  // + ½ and floor (truncation, the value being ≥ 0).
+  const double v = static_cast<double>(value);
+  const double t = v > 0.0 ? (v < 1.0 ? v : 1.0) : 0.0;
+  return static_cast<int32_t>(t * 255.0 + 0.5);
+}
+
 // The float an RGBA8 texel holds for byte k: k/255 correctly rounded (k / 255.0f), as a table
 // so that converting a texel costs no division. Every RGBA8 image holds these values.
 const std::array<float, 256>& unorm8_levels();
