@@ -96,5 +96,104 @@ TEST(BlockSampling, EveryLaneAsThePerLaneRead) {
   EXPECT_GT(compared, 100000u);
 }
 
+// Point reads of texels that lie side by side in memory, as a pass reading its source one
+// to one makes them (the block read loads such a group of eight with four wide loads): runs
+// along a row, runs that go on at the start of the next row (still side by side in memory),
+// and runs with one lane moved a texel away or onto another row.
+TEST(BlockSampling, PointReadsOfTexelsSideBySide) {
+  std::mt19937 rng(5);
+  size_t compared = 0;
+  for (const auto& [w, h] : {std::pair{37u, 23u}, std::pair{64u, 64u}}) {
+    std::array<TextureBinding, kMaxSamplers> b{};
+    b[0].image = texture(w, h, rng);
+    b[0].sampler.filter = Filter::Point;
+    const BoundTextures t(b, 0, true);
+    std::uniform_int_distribution<uint32_t> start(0, w * h - kBlockLanes), lane(0, kBlockLanes - 1),
+        sign(0, 1);
+    for (int round = 0; round < 300; ++round) {
+      Lanes u{}, v{}, zero{}, out[4];
+      const uint32_t first = start(rng);
+      for (int l = 0; l < kBlockLanes; ++l) {
+        const uint32_t p = first + static_cast<uint32_t>(l);
+        u[l] = (static_cast<float>(p % w) + 0.5f) / static_cast<float>(w);
+        v[l] = (static_cast<float>(p / w) + 0.5f) / static_cast<float>(h);
+      }
+      // One lane a texel left or right (onto its neighbour's texel, say), or a row down.
+      const int moved = static_cast<int>(lane(rng));
+      const float side = sign(rng) ? 1.0f : -1.0f;
+      if (round % 3 == 1) u[moved] += side / static_cast<float>(w);
+      if (round % 3 == 2) v[moved] = std::fmod(v[moved] + 1.0f / static_cast<float>(h), 1.0f);
+      const float* coord[4] = {u, v, zero, zero};
+      t.sample_block(0, coord, nullptr, kBlockLanes, out);
+      for (int l = 0; l < kBlockLanes; ++l) {
+        const Vec4 want = t.sample(0, {u[l], v[l], 0, 0}, 0);
+        for (int c = 0; c < 4; ++c) {
+          ASSERT_EQ(std::memcmp(&out[c][l], &want[c], sizeof(float)), 0)
+              << "lane " << l << " channel " << c << " round " << round;
+          ++compared;
+        }
+      }
+    }
+  }
+  EXPECT_EQ(compared, size_t{2} * 300 * kBlockLanes * 4);
+}
+
+// The llvmpipe bilinear read skips rounding::lerp's flushes for a group whose texels are all
+// 0, ±∞, NaN or at least 2^-40 in magnitude (smooth_texels in texture_sampling_block.cpp).
+// The smallest values a lerp can make come from cancellation: texels of one magnitude a few
+// ulps apart, with signs alternating in a checkerboard, read near texel corners (weights
+// about ½) so that each lerp nearly cancels, or near centres (weights of a few 2^-24). At
+// 2^-40 and 2^-41 (the bound the skip rests on, and the first scale below it) they stay
+// normal; the smallest scales here reach the denormals, where the flushes must be kept (a
+// bound of 2^-72 or lower fails this test; the proof beside smooth_texels holds for any
+// bound of 2^-55 or more).
+TEST(BlockSampling, BilinearFlushesSkippedOnlyWhereNothingCanBeDenormal) {
+  std::mt19937 rng(77);
+  size_t compared = 0;
+  const float scales[] = {0x1p-40f, 0x1p-41f, 0x1p-52f, 0x1p-64f, 0x1p-76f, 0x1p-88f, 0x1p-100f};
+  for (float scale : scales) {
+    const uint32_t w = 16, h = 16;
+    auto im = std::make_shared<img::Image>(w, h, img::Format::RGBA32F);
+    std::uniform_int_distribution<int> ulps(0, 3);
+    for (uint32_t y = 0; y < h; ++y)
+      for (uint32_t x = 0; x < w; ++x)
+        for (int c = 0; c < 4; ++c)
+          im->at(x, y)[c] =
+              ((x + y) % 2 ? -scale : scale) * (1.0f + static_cast<float>(ulps(rng)) * 0x1p-23f);
+    std::array<TextureBinding, kMaxSamplers> b{};
+    b[0].image = im;
+    b[0].sampler.filter = Filter::Linear;
+    const BoundTextures t(b, 0, true);
+    std::uniform_int_distribution<int> texel(1, static_cast<int>(w) - 2), step(-4, 4), half(0, 1);
+    // A texel corner (weight ½) or centre (weight 0), moved by a few float steps.
+    auto near = [&](uint32_t n) {
+      float c =
+          (static_cast<float>(texel(rng)) + (half(rng) ? 0.5f : 0.0f)) / static_cast<float>(n);
+      const int k = step(rng);
+      for (int i = 0; i < std::abs(k); ++i) c = std::nextafter(c, k > 0 ? 1.0f : 0.0f);
+      return c;
+    };
+    for (int round = 0; round < 200; ++round) {
+      Lanes u{}, v{}, zero{}, out[4];
+      for (int l = 0; l < kBlockLanes; ++l) {
+        u[l] = near(w);
+        v[l] = near(h);
+      }
+      const float* coord[4] = {u, v, zero, zero};
+      t.sample_block(0, coord, nullptr, kBlockLanes, out);
+      for (int l = 0; l < kBlockLanes; ++l) {
+        const Vec4 want = t.sample(0, {u[l], v[l], 0, 0}, 0);
+        for (int c = 0; c < 4; ++c) {
+          ASSERT_EQ(std::memcmp(&out[c][l], &want[c], sizeof(float)), 0)
+              << "scale " << scale << " lane " << l << " channel " << c << ": " << out[c][l]
+              << " vs " << want[c];
+          ++compared;
+        }
+      }
+    }
+  }
+  EXPECT_EQ(compared, std::size(scales) * 200 * kBlockLanes * 4);
+}
+
 } // namespace
 } // namespace tierlift::cpu

@@ -112,6 +112,55 @@ bool int32_texels(const img::Image& im) {
   return flush8(_mm256_fmadd_ps(alpha, flush8(_mm256_sub_ps(v1, v0)), v0));
 }
 
+// lerp8 without its flushes, for groups whose texels pass smooth_texels below.
+[[gnu::target("avx2,fma")]] inline __m256 lerp8_exact(__m256 alpha, __m256 v0, __m256 v1) {
+  return _mm256_fmadd_ps(alpha, _mm256_sub_ps(v1, v0), v0);
+}
+
+// Whether no texel value of the four channel vectors of each of t[0..3] is a nonzero of
+// magnitude below 2^-40 (±0, ±∞ and NaN pass). Then none of lerp8's four flushes can change a
+// value, and lerp8_exact gives the same bits. Why: a finite texel v with |v| ≥ 2^-40 is a
+// multiple of 2^-63 (its ulp is at least 2^-40-23), and so is 0. A bilinear weight is a
+// multiple of 2^-24 in [0, 1]: it is x − floor(x), exact, of x = fl(u·N) − ½ after the
+// clamp, and x is a multiple of 2^-24 (below 1 it is fl(u·N) − ½ exactly, with fl(u·N) in
+// [½, 1½) a multiple of 2^-24; from 1 up its ulp is at least 2^-23); the sub-texel
+// quantisation rounds it to a multiple of 2^-bits, or leaves it past 24 bits. So, for finite
+// values:
+//  - the texels are not denormal;
+//  - v1 − v0 is a multiple of 2^-63, and rounding it to float keeps that (below 2^-39 it is
+//    exact, above it the ulp is coarser), so it is 0 or at least 2^-63 in magnitude;
+//  - α·(v1 − v0) + v0 is a multiple of 2^-87 before its one rounding and after it, the same
+//    way: 0 or at least 2^-87;
+//  - the second lerp on two such values: difference a multiple of 2^-87, result a multiple
+//    of 2^-111, 0 or at least 2^-111.
+// Nothing is below 2^-126, the smallest normal float. A flush leaves ±∞ and NaN alone
+// (texels, or a step that overflows), so every step after them is the same either way.
+[[gnu::target("avx2,fma")]] inline bool smooth_texels(const __m256 (*t)[4]) {
+  // (bits << 1) − 1 as an unsigned number: the sign dropped, ±0 wrapped to the largest value.
+  // A nonzero below 2^-40 is exactly one whose number is below that of 2^-40.
+  const __m256i one = _mm256_set1_epi32(1);
+  __m256i least = _mm256_set1_epi32(-1);
+  for (int k = 0; k < 4; ++k)
+    for (int c = 0; c < 4; ++c)
+      least = _mm256_min_epu32(
+          least, _mm256_sub_epi32(_mm256_slli_epi32(_mm256_castps_si256(t[k][c]), 1), one));
+  const __m256i limit = _mm256_set1_epi32(static_cast<int32_t>((0x2B800000u << 1) - 1)); // 2^-40
+  const __m256i ok = _mm256_cmpeq_epi32(_mm256_max_epu32(least, limit), least);
+  return _mm256_movemask_ps(_mm256_castsi256_ps(ok)) == 0xFF;
+}
+
+// Four vectors, vector k holding texel k in its low half and texel k + 4 in its high half,
+// as four channel vectors (lane k: texel k): a 4×4 transpose within each 128-bit half.
+[[gnu::target("avx2,fma")]] inline void transpose8(__m256 t0, __m256 t1, __m256 t2, __m256 t3,
+                                                   __m256 c[4]) {
+  const __m256 xy01 = _mm256_unpacklo_ps(t0, t1), zw01 = _mm256_unpackhi_ps(t0, t1);
+  const __m256 xy23 = _mm256_unpacklo_ps(t2, t3), zw23 = _mm256_unpackhi_ps(t2, t3);
+  c[0] = _mm256_shuffle_ps(xy01, xy23, _MM_SHUFFLE(1, 0, 1, 0));
+  c[1] = _mm256_shuffle_ps(xy01, xy23, _MM_SHUFFLE(3, 2, 3, 2));
+  c[2] = _mm256_shuffle_ps(zw01, zw23, _MM_SHUFFLE(1, 0, 1, 0));
+  c[3] = _mm256_shuffle_ps(zw01, zw23, _MM_SHUFFLE(3, 2, 3, 2));
+}
+
 // The RGBA texels at float offsets o[0..7] as four channel vectors (lane k: texel k): texels
 // k and k + 4 share a 256-bit row, and a 4×4 transpose within each 128-bit half does the rest.
 [[gnu::target("avx2,fma")]] inline void channels8(const float* base, const int32_t* o,
@@ -120,12 +169,7 @@ bool int32_texels(const img::Image& im) {
   for (int k = 0; k < 4; ++k)
     t[k] = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(base + o[k])),
                                 _mm_loadu_ps(base + o[k + 4]), 1);
-  const __m256 xy01 = _mm256_unpacklo_ps(t[0], t[1]), zw01 = _mm256_unpackhi_ps(t[0], t[1]);
-  const __m256 xy23 = _mm256_unpacklo_ps(t[2], t[3]), zw23 = _mm256_unpackhi_ps(t[2], t[3]);
-  c[0] = _mm256_shuffle_ps(xy01, xy23, _MM_SHUFFLE(1, 0, 1, 0));
-  c[1] = _mm256_shuffle_ps(xy01, xy23, _MM_SHUFFLE(3, 2, 3, 2));
-  c[2] = _mm256_shuffle_ps(zw01, zw23, _MM_SHUFFLE(1, 0, 1, 0));
-  c[3] = _mm256_shuffle_ps(zw01, zw23, _MM_SHUFFLE(3, 2, 3, 2));
+  transpose8(t[0], t[1], t[2], t[3], c);
 }
 
 // Four RGBA texels (lanes l..l+3) into the lane arrays.
@@ -162,12 +206,27 @@ bool int32_texels(const img::Image& im) {
       point_body(r, l, l + kGroup);
       continue;
     }
-    alignas(32) int32_t at[kGroup];
-    _mm256_store_si256(reinterpret_cast<__m256i*>(at),
-                       _mm256_slli_epi32(_mm256_add_epi32(_mm256_mullo_epi32(j, width), i), 2));
+    const __m256i at = _mm256_slli_epi32(_mm256_add_epi32(_mm256_mullo_epi32(j, width), i), 2);
+    const __m256i first = _mm256_broadcastd_epi32(_mm256_castsi256_si128(at));
+    if (_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(
+            at, _mm256_add_epi32(first, _mm256_setr_epi32(0, 4, 8, 12, 16, 20, 24, 28))))) ==
+        0xFF) {
+      // Eight texels side by side on one row (a pass reading its source one to one): four
+      // wide loads, texels k and k + 4 paired in each 128-bit half as channels8 pairs them.
+      const float* p = base + _mm256_cvtsi256_si32(at);
+      const __m256 t01 = _mm256_loadu_ps(p), t23 = _mm256_loadu_ps(p + 8);
+      const __m256 t45 = _mm256_loadu_ps(p + 16), t67 = _mm256_loadu_ps(p + 24);
+      __m256 c[4];
+      transpose8(_mm256_permute2f128_ps(t01, t45, 0x20), _mm256_permute2f128_ps(t01, t45, 0x31),
+                 _mm256_permute2f128_ps(t23, t67, 0x20), _mm256_permute2f128_ps(t23, t67, 0x31), c);
+      for (int ch = 0; ch < 4; ++ch) _mm256_storeu_ps(r.out[ch] + l, c[ch]);
+      continue;
+    }
+    alignas(32) int32_t o[kGroup];
+    _mm256_store_si256(reinterpret_cast<__m256i*>(o), at);
     for (int k = 0; k < kGroup; k += 4)
-      put4(_mm_loadu_ps(base + at[k]), _mm_loadu_ps(base + at[k + 1]),
-           _mm_loadu_ps(base + at[k + 2]), _mm_loadu_ps(base + at[k + 3]), r.out, l + k);
+      put4(_mm_loadu_ps(base + o[k]), _mm_loadu_ps(base + o[k + 1]), _mm_loadu_ps(base + o[k + 2]),
+           _mm_loadu_ps(base + o[k + 3]), r.out, l + k);
   }
   point_body(r, l, r.n);
 }
@@ -238,14 +297,20 @@ bool int32_texels(const img::Image& im) {
     offset(o11, row1, i1);
     ax = quantize8(ax, bits);
     ay = quantize8(ay, bits);
-    __m256 t00[4], t10[4], t01[4], t11[4];
-    channels8(base, o00, t00);
-    channels8(base, o10, t10);
-    channels8(base, o01, t01);
-    channels8(base, o11, t11);
-    for (int c = 0; c < 4; ++c)
-      _mm256_storeu_ps(r.out[c] + l,
-                       lerp8(ay, lerp8(ax, t00[c], t10[c]), lerp8(ax, t01[c], t11[c])));
+    __m256 t[4][4]; // texels 00, 10, 01, 11
+    channels8(base, o00, t[0]);
+    channels8(base, o10, t[1]);
+    channels8(base, o01, t[2]);
+    channels8(base, o11, t[3]);
+    if (smooth_texels(t)) {
+      for (int c = 0; c < 4; ++c)
+        _mm256_storeu_ps(r.out[c] + l, lerp8_exact(ay, lerp8_exact(ax, t[0][c], t[1][c]),
+                                                   lerp8_exact(ax, t[2][c], t[3][c])));
+    } else {
+      for (int c = 0; c < 4; ++c)
+        _mm256_storeu_ps(r.out[c] + l,
+                         lerp8(ay, lerp8(ax, t[0][c], t[1][c]), lerp8(ax, t[2][c], t[3][c])));
+    }
   }
   llvmpipe_linear_body(r, bits, l, r.n);
 }
