@@ -10,6 +10,7 @@
 
 #include "raster.h"
 #include "tierlift/pass/stencil.h"
+#include "worker_pool.h"
 
 namespace tierlift::cpu {
 namespace {
@@ -278,20 +279,9 @@ ir::Result<DrawStats> draw(const Pass& pass, const DrawTargets& targets, unsigne
     }
   };
   std::vector<WorkerStats> per(workers);
-  {
-    // This thread is worker 0. A thread that cannot be started leaves its bands to the
-    // others (the counter hands out whatever is left).
-    std::vector<std::thread> pool;
-    for (unsigned i = 1; i < workers; ++i) {
-      try {
-        pool.emplace_back(work, i, std::ref(per[i]));
-      } catch (const std::exception&) {
-        break;
-      }
-    }
-    work(0, per[0]);
-    for (auto& th : pool) th.join();
-  }
+  // This thread is worker 0. A worker that cannot be started leaves its bands to the others
+  // (the counter hands out whatever is left).
+  detail::WorkerPool::shared().run(workers, [&](unsigned i) { work(i, per[i]); });
   for (const auto& w : per) {
     stats.pixels_shaded += w.shaded;
     stats.pixels_killed += w.killed;
