@@ -9,6 +9,10 @@
 #include "tierlift/cpu/draw.h"
 #include "tierlift/rounding/rounding.h"
 
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#endif
+
 namespace tierlift::cpu {
 namespace {
 
@@ -150,6 +154,63 @@ store_block_unorm8_llvmpipe(BlendMode mode, const LaneVec4& src,
   }
 }
 
+#if defined(__x86_64__) && defined(__GNUC__)
+// k/255.0f for the integer-valued floats k = 0..255, without a division: the product with
+// fl(1/255), then one correction by its exact residual k − q·255 (both steps fused). For all
+// 256 values it is k/255 correctly rounded, the same float as the division (worked out for
+// each k, and BlockBlendMatchesThePixelRule stores every level through it).
+[[gnu::target("avx2,fma")]] inline __m256 unorm8_levels8(__m256 k) {
+  const __m256 inverse = _mm256_set1_ps(1.0f / 255.0f);
+  const __m256 q = _mm256_mul_ps(k, inverse);
+  const __m256 residual = _mm256_fnmadd_ps(q, _mm256_set1_ps(255.0f), k);
+  return _mm256_fmadd_ps(residual, inverse, q);
+}
+
+// store_block_unorm8_llvmpipe for Replace with no killed lane, eight lanes at a time: the
+// same byte as rounding::unorm8_llvmpipe_lane (max with 0 gives 0 for NaN and −0, min with 1,
+// the fl32 product with 255, then nearest-even rounding with the mode in the instruction, not
+// MXCSR's), its level, and the four channels interleaved into eight RGBA pixels.
+[[gnu::target("avx2,fma")]] void replace_unorm8_llvmpipe_avx2(const LaneVec4& src, int n,
+                                                              float* p) {
+  const __m256 zero = _mm256_setzero_ps(), one = _mm256_set1_ps(1.0f);
+  const __m256 scale = _mm256_set1_ps(255.0f);
+  int l = 0;
+  for (; l + 8 <= n; l += 8) {
+    __m256 c[4];
+    for (int k = 0; k < 4; ++k) {
+      const __m256 t = _mm256_min_ps(_mm256_max_ps(_mm256_loadu_ps(src.c[k] + l), zero), one);
+      c[k] = unorm8_levels8(
+          _mm256_round_ps(_mm256_mul_ps(t, scale), _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC));
+    }
+    const __m256 rg0 = _mm256_unpacklo_ps(c[0], c[1]), rg1 = _mm256_unpackhi_ps(c[0], c[1]);
+    const __m256 ba0 = _mm256_unpacklo_ps(c[2], c[3]), ba1 = _mm256_unpackhi_ps(c[2], c[3]);
+    // Pixels 0|4, 1|5, 2|6, 3|7 (low half | high half), then in order.
+    const __m256 p04 = _mm256_shuffle_ps(rg0, ba0, _MM_SHUFFLE(1, 0, 1, 0));
+    const __m256 p15 = _mm256_shuffle_ps(rg0, ba0, _MM_SHUFFLE(3, 2, 3, 2));
+    const __m256 p26 = _mm256_shuffle_ps(rg1, ba1, _MM_SHUFFLE(1, 0, 1, 0));
+    const __m256 p37 = _mm256_shuffle_ps(rg1, ba1, _MM_SHUFFLE(3, 2, 3, 2));
+    float* out = p + 4 * l;
+    _mm256_storeu_ps(out, _mm256_permute2f128_ps(p04, p15, 0x20));
+    _mm256_storeu_ps(out + 8, _mm256_permute2f128_ps(p26, p37, 0x20));
+    _mm256_storeu_ps(out + 16, _mm256_permute2f128_ps(p04, p15, 0x31));
+    _mm256_storeu_ps(out + 24, _mm256_permute2f128_ps(p26, p37, 0x31));
+  }
+  for (; l < n; ++l)
+    for (int k = 0; k < 4; ++k)
+      p[4 * l + k] = static_cast<float>(rounding::unorm8_llvmpipe_lane(src.c[k][l])) / 255.0f;
+}
+
+bool avx2_fma() {
+  static const bool yes = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  return yes;
+}
+#else
+void replace_unorm8_llvmpipe_avx2(const LaneVec4&, int, float*) {}
+bool avx2_fma() {
+  return false;
+}
+#endif
+
 } // namespace
 
 Vec4 blend_and_store(BlendMode mode, img::Format format, const Vec4& src, const Vec4& dst,
@@ -175,8 +236,12 @@ void store_block(BlendMode mode, img::Format format, ir::Rounding rounding, cons
       return store_block_float32<BlendMode::SrcAlphaInvSrcAlpha>(src, discarded, n, first);
     }
   }
-  if (format == img::Format::RGBA8 && rounding == ir::Rounding::Llvmpipe)
+  if (format == img::Format::RGBA8 && rounding == ir::Rounding::Llvmpipe) {
+    if (mode == BlendMode::Replace && avx2_fma() &&
+        std::none_of(discarded.begin(), discarded.begin() + n, [](bool d) { return d; }))
+      return replace_unorm8_llvmpipe_avx2(src, n, first);
     return store_block_unorm8_llvmpipe(mode, src, discarded, n, first);
+  }
   for (int l = 0; l < n; ++l) {
     if (discarded[static_cast<size_t>(l)]) continue;
     float* p = first + 4 * l;
