@@ -166,22 +166,76 @@ store_block_unorm8_llvmpipe(BlendMode mode, const LaneVec4& src,
   return _mm256_fmadd_ps(residual, inverse, q);
 }
 
-// store_block_unorm8_llvmpipe for Replace with no killed lane, eight lanes at a time: the
-// same byte as rounding::unorm8_llvmpipe_lane (max with 0 gives 0 for NaN and −0, min with 1,
-// the fl32 product with 255, then nearest-even rounding with the mode in the instruction, not
-// MXCSR's), its level, and the four channels interleaved into eight RGBA pixels.
-[[gnu::target("avx2,fma")]] void replace_unorm8_llvmpipe_avx2(const LaneVec4& src, int n,
-                                                              float* p) {
-  const __m256 zero = _mm256_setzero_ps(), one = _mm256_set1_ps(1.0f);
-  const __m256 scale = _mm256_set1_ps(255.0f);
+// rounding::unorm8_llvmpipe_lane on eight lanes: max with 0 (NaN and −0 give 0), min with 1,
+// the fl32 product with 255, nearest-even rounding with the mode in the instruction (not
+// MXCSR's), then the integer.
+[[gnu::target("avx2,fma")]] inline __m256i source_bytes8(__m256 v) {
+  const __m256 t = _mm256_min_ps(_mm256_max_ps(v, _mm256_setzero_ps()), _mm256_set1_ps(1.0f));
+  return _mm256_cvttps_epi32(_mm256_round_ps(_mm256_mul_ps(t, _mm256_set1_ps(255.0f)),
+                                             _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC));
+}
+
+// rounding::unorm8_nearest_lane on four lanes, in double as it is: max with 0 (NaN gives 0),
+// min with 1, ·255 (exact), + ½, truncation.
+[[gnu::target("avx2,fma")]] inline __m128i nearest_bytes4(__m128 v) {
+  const __m256d t =
+      _mm256_min_pd(_mm256_max_pd(_mm256_cvtps_pd(v), _mm256_setzero_pd()), _mm256_set1_pd(1.0));
+  return _mm256_cvttpd_epi32(
+      _mm256_add_pd(_mm256_mul_pd(t, _mm256_set1_pd(255.0)), _mm256_set1_pd(0.5)));
+}
+[[gnu::target("avx2,fma")]] inline __m256i nearest_bytes8(__m256 v) {
+  return _mm256_set_m128i(nearest_bytes4(_mm256_extractf128_ps(v, 1)),
+                          nearest_bytes4(_mm256_castps256_ps128(v)));
+}
+
+// mul_norm8 on eight lanes (a·b ≥ 0, so the shifts are the same logical or arithmetic).
+[[gnu::target("avx2,fma")]] inline __m256i mul_norm8_8(__m256i a, __m256i b) {
+  const __m256i t = _mm256_mullo_epi32(a, b);
+  return _mm256_srli_epi32(
+      _mm256_add_epi32(_mm256_add_epi32(t, _mm256_srli_epi32(t, 8)), _mm256_set1_epi32(0x80)), 8);
+}
+
+// store_block_unorm8_llvmpipe for a block with no killed lane, eight lanes at a time: the
+// same bytes and blend step by step, the destination's eight RGBA pixels read with four wide
+// loads and split into channels, the results interleaved back with four wide stores.
+[[gnu::target("avx2,fma")]] void store_unorm8_llvmpipe_avx2(BlendMode mode, const LaneVec4& src,
+                                                            int n, float* p) {
+  const __m256i max_byte = _mm256_set1_epi32(255);
   int l = 0;
   for (; l + 8 <= n; l += 8) {
-    __m256 c[4];
-    for (int k = 0; k < 4; ++k) {
-      const __m256 t = _mm256_min_ps(_mm256_max_ps(_mm256_loadu_ps(src.c[k] + l), zero), one);
-      c[k] = unorm8_levels8(
-          _mm256_round_ps(_mm256_mul_ps(t, scale), _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC));
+    float* px = p + 4 * l;
+    __m256i v[4];
+    for (int c = 0; c < 4; ++c) v[c] = source_bytes8(_mm256_loadu_ps(src.c[c] + l));
+    if (mode != BlendMode::Replace) {
+      const __m256 d01 = _mm256_loadu_ps(px), d23 = _mm256_loadu_ps(px + 8);
+      const __m256 d45 = _mm256_loadu_ps(px + 16), d67 = _mm256_loadu_ps(px + 24);
+      // Vector k: pixel k in the low half, pixel k + 4 in the high half; then a 4×4
+      // transpose within each half gives the channels.
+      const __m256 q0 = _mm256_permute2f128_ps(d01, d45, 0x20);
+      const __m256 q1 = _mm256_permute2f128_ps(d01, d45, 0x31);
+      const __m256 q2 = _mm256_permute2f128_ps(d23, d67, 0x20);
+      const __m256 q3 = _mm256_permute2f128_ps(d23, d67, 0x31);
+      const __m256 xy01 = _mm256_unpacklo_ps(q0, q1), zw01 = _mm256_unpackhi_ps(q0, q1);
+      const __m256 xy23 = _mm256_unpacklo_ps(q2, q3), zw23 = _mm256_unpackhi_ps(q2, q3);
+      const __m256i d[4] = {nearest_bytes8(_mm256_shuffle_ps(xy01, xy23, _MM_SHUFFLE(1, 0, 1, 0))),
+                            nearest_bytes8(_mm256_shuffle_ps(xy01, xy23, _MM_SHUFFLE(3, 2, 3, 2))),
+                            nearest_bytes8(_mm256_shuffle_ps(zw01, zw23, _MM_SHUFFLE(1, 0, 1, 0))),
+                            nearest_bytes8(_mm256_shuffle_ps(zw01, zw23, _MM_SHUFFLE(3, 2, 3, 2)))};
+      const __m256i a = v[3], inverse_a = _mm256_sub_epi32(max_byte, a);
+      for (int c = 0; c < 4; ++c) {
+        switch (mode) {
+        case BlendMode::Replace: break;
+        case BlendMode::OneOne: v[c] = _mm256_add_epi32(v[c], d[c]); break;
+        case BlendMode::SrcAlphaOne: v[c] = _mm256_add_epi32(mul_norm8_8(v[c], a), d[c]); break;
+        case BlendMode::SrcAlphaInvSrcAlpha:
+          v[c] = _mm256_add_epi32(mul_norm8_8(v[c], a), mul_norm8_8(d[c], inverse_a));
+          break;
+        }
+      }
     }
+    __m256 c[4];
+    for (int k = 0; k < 4; ++k)
+      c[k] = unorm8_levels8(_mm256_cvtepi32_ps(_mm256_min_epi32(v[k], max_byte)));
     const __m256 rg0 = _mm256_unpacklo_ps(c[0], c[1]), rg1 = _mm256_unpackhi_ps(c[0], c[1]);
     const __m256 ba0 = _mm256_unpacklo_ps(c[2], c[3]), ba1 = _mm256_unpackhi_ps(c[2], c[3]);
     // Pixels 0|4, 1|5, 2|6, 3|7 (low half | high half), then in order.
@@ -189,15 +243,17 @@ store_block_unorm8_llvmpipe(BlendMode mode, const LaneVec4& src,
     const __m256 p15 = _mm256_shuffle_ps(rg0, ba0, _MM_SHUFFLE(3, 2, 3, 2));
     const __m256 p26 = _mm256_shuffle_ps(rg1, ba1, _MM_SHUFFLE(1, 0, 1, 0));
     const __m256 p37 = _mm256_shuffle_ps(rg1, ba1, _MM_SHUFFLE(3, 2, 3, 2));
-    float* out = p + 4 * l;
-    _mm256_storeu_ps(out, _mm256_permute2f128_ps(p04, p15, 0x20));
-    _mm256_storeu_ps(out + 8, _mm256_permute2f128_ps(p26, p37, 0x20));
-    _mm256_storeu_ps(out + 16, _mm256_permute2f128_ps(p04, p15, 0x31));
-    _mm256_storeu_ps(out + 24, _mm256_permute2f128_ps(p26, p37, 0x31));
+    _mm256_storeu_ps(px, _mm256_permute2f128_ps(p04, p15, 0x20));
+    _mm256_storeu_ps(px + 8, _mm256_permute2f128_ps(p26, p37, 0x20));
+    _mm256_storeu_ps(px + 16, _mm256_permute2f128_ps(p04, p15, 0x31));
+    _mm256_storeu_ps(px + 24, _mm256_permute2f128_ps(p26, p37, 0x31));
   }
-  for (; l < n; ++l)
-    for (int k = 0; k < 4; ++k)
-      p[4 * l + k] = static_cast<float>(rounding::unorm8_llvmpipe_lane(src.c[k][l])) / 255.0f;
+  for (; l < n; ++l) { // the tail, pixel by pixel through the rule
+    float* px = p + 4 * l;
+    const Vec4 out = blend_unorm8_llvmpipe(
+        mode, {src.c[0][l], src.c[1][l], src.c[2][l], src.c[3][l]}, {px[0], px[1], px[2], px[3]});
+    std::copy(out.begin(), out.end(), px);
+  }
 }
 
 bool avx2_fma() {
@@ -205,7 +261,7 @@ bool avx2_fma() {
   return yes;
 }
 #else
-void replace_unorm8_llvmpipe_avx2(const LaneVec4&, int, float*) {}
+void store_unorm8_llvmpipe_avx2(BlendMode, const LaneVec4&, int, float*) {}
 bool avx2_fma() {
   return false;
 }
@@ -237,9 +293,9 @@ void store_block(BlendMode mode, img::Format format, ir::Rounding rounding, cons
     }
   }
   if (format == img::Format::RGBA8 && rounding == ir::Rounding::Llvmpipe) {
-    if (mode == BlendMode::Replace && avx2_fma() &&
+    if (avx2_fma() &&
         std::none_of(discarded.begin(), discarded.begin() + n, [](bool d) { return d; }))
-      return replace_unorm8_llvmpipe_avx2(src, n, first);
+      return store_unorm8_llvmpipe_avx2(mode, src, n, first);
     return store_block_unorm8_llvmpipe(mode, src, discarded, n, first);
   }
   for (int l = 0; l < n; ++l) {
