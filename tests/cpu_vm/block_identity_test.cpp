@@ -271,6 +271,26 @@ const char* const kEveryForm[] = {
     "mad r0, t1, c1, r0\nmad r0, t2, c2, r0\n",
     "ps_1_4\ndef c1, 0, 0, -0, 0\ntexld r0, t0\ntexld r1, t1\ntexld r2, t2\n"
     "mul r0, r0, c0\nmad r0, r1, c1, r0\nmad r0, r2, c2, r0\n",
+    // A texel (a denormal, with DenormalTextures) or a coordinate passed on by an
+    // instruction that moves or selects bits, then scaled far up or added to a zero: the
+    // operand must still be flushed in lavapipe's mode (BlockStep::clean may not be set for
+    // what reads it), or the product is a normal number instead of ±0 and the sum keeps the
+    // sign of the denormal instead of +0. One chain per listing, so that none hides another.
+    "ps_2_0\ndef c8, 1e30, 0, -1e30, 0.5\ndcl t0\ndcl_2d s0\ntexld r0, t0, s0\nmov r1, r0\n"
+    "mul r2, r1, c8.x\nmov oC0, r2\n",
+    "ps_2_0\ndef c8, 1e30, 0, -1e30, 0.5\ndcl t0\ndcl_2d s0\ntexld r0, t0, s0\nmov r1, r0\n"
+    "add r2, r1, c8.y\nmov oC0, r2\n",
+    "ps_2_0\ndef c8, 1e30, 0, -1e30, 0.5\ndcl t0\ndcl_2d s0\ntexld r0, t0, s0\nabs r1, r0\n"
+    "mul r2, r1, c8.z\nmov oC0, r2\n",
+    "ps_2_0\ndef c8, 1e30, 0, -1e30, 0.5\ndcl t0\ndcl_2d s0\ntexld r0, t0, s0\n"
+    "min r1, r0, c8.y\nmul r2, r1, c8.x\nmov oC0, r2\n",
+    "ps_2_0\ndef c8, 1e30, 0, -1e30, 0.5\ndcl t0\ndcl_2d s0\ntexld r0, t0, s0\n"
+    "max r1, r0, -r0\nmul r2, r1, c8.x\nmov oC0, r2\n",
+    "ps_2_0\ndef c8, 1e30, 0, -1e30, 0.5\ndcl t0\ndcl_2d s0\ntexld r0, t0, s0\n"
+    "cmp r1, r0, r0, -r0\nmul r2, r1, c8.x\nmov oC0, r2\n",
+    "ps_2_0\ndef c8, 1e30, 0, -1e30, 0.5\ndcl t0\nmov r1, t0\nmul r2, r1, c8.x\nmov oC0, r2\n",
+    "ps_1_4\ndef c7, 1, 0, -1, 0.5\ntexld r0, t0\nmov r1, r0\nmul_x4 r2, r1, c7.x\n"
+    "add r0, r2, c7.y\n",
 };
 
 // Every listing of kEveryForm in every conventions mode, seeds from `first_seed` on (the cases

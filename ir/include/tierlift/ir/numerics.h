@@ -37,6 +37,11 @@ inline constexpr float kFltMax = rule::kFltMax;
 enum class Denormals : uint8_t {
   Keep,  // IEEE: denormal operands and results are kept (ir::Rounding::Exact)
   Flush, // as lavapipe (x86 DAZ + FTZ): in and out of every operation (Rounding::Llvmpipe)
+  // Flush, for a rule whose operands are known to hold no denormal (the CPU block executor
+  // proves it per instruction): results are flushed, operands are not looked at. The same
+  // values as Flush for such operands, since flushing a non-denormal changes nothing; every
+  // value inside a rule is then a flushed result, a constant or a select among those.
+  FlushResults,
 };
 inline constexpr Denormals kKeep = Denormals::Keep, kFlush = Denormals::Flush;
 
@@ -56,8 +61,13 @@ inline bool signed_zero(float x) {
   return (std::bit_cast<uint32_t>(x) & 0x7FFFFFFFu) == 0;
 }
 
-// An operand (in) or result (out) of one fp32 operation under D.
+// A result (or, outside FloatArith, any value) of one fp32 operation under D.
 template <Denormals D> inline float dz(float x) {
+  if constexpr (D != Denormals::Keep) return flush_denormal(x);
+  return x;
+}
+// An operand of one fp32 operation under D (FloatArith): FlushResults leaves it alone.
+template <Denormals D> inline float dz_in(float x) {
   if constexpr (D == Denormals::Flush) return flush_denormal(x);
   return x;
 }
@@ -69,23 +79,23 @@ template <Denormals D> struct FloatArith {
   using V = float;
   using B = bool;
   static float k(float x) { return x; }
-  static float add(float a, float b) { return dz<D>(dz<D>(a) + dz<D>(b)); }
-  static float sub(float a, float b) { return dz<D>(dz<D>(a) - dz<D>(b)); }
-  static float fmul(float a, float b) { return dz<D>(dz<D>(a) * dz<D>(b)); }
-  static float fmul_y_normal(float a, float b) { return dz<D>(dz<D>(a) * b); }
-  static float div(float a, float b) { return dz<D>(dz<D>(a) / dz<D>(b)); }
+  static float add(float a, float b) { return dz<D>(dz_in<D>(a) + dz_in<D>(b)); }
+  static float sub(float a, float b) { return dz<D>(dz_in<D>(a) - dz_in<D>(b)); }
+  static float fmul(float a, float b) { return dz<D>(dz_in<D>(a) * dz_in<D>(b)); }
+  static float fmul_y_normal(float a, float b) { return dz<D>(dz_in<D>(a) * b); }
+  static float div(float a, float b) { return dz<D>(dz_in<D>(a) / dz_in<D>(b)); }
   static float neg(float a) { return -a; }
   static float abs(float a) { return std::fabs(a); }
-  static float floor(float a) { return std::floor(dz<D>(a)); }
-  static float sqrt(float a) { return dz<D>(std::sqrt(dz<D>(a))); }
-  static float exp2(float a) { return dz<D>(std::exp2(dz<D>(a))); }
-  static float log2(float a) { return std::log2(dz<D>(a)); }
-  static float sin(float a) { return dz<D>(std::sin(dz<D>(a))); }
-  static float cos(float a) { return dz<D>(std::cos(dz<D>(a))); }
-  static bool eq(float a, float b) { return dz<D>(a) == dz<D>(b); }
-  static bool lt(float a, float b) { return dz<D>(a) < dz<D>(b); }
-  static bool gt(float a, float b) { return dz<D>(a) > dz<D>(b); }
-  static bool ge(float a, float b) { return dz<D>(a) >= dz<D>(b); }
+  static float floor(float a) { return std::floor(dz_in<D>(a)); }
+  static float sqrt(float a) { return dz<D>(std::sqrt(dz_in<D>(a))); }
+  static float exp2(float a) { return dz<D>(std::exp2(dz_in<D>(a))); }
+  static float log2(float a) { return std::log2(dz_in<D>(a)); }
+  static float sin(float a) { return dz<D>(std::sin(dz_in<D>(a))); }
+  static float cos(float a) { return dz<D>(std::cos(dz_in<D>(a))); }
+  static bool eq(float a, float b) { return dz_in<D>(a) == dz_in<D>(b); }
+  static bool lt(float a, float b) { return dz_in<D>(a) < dz_in<D>(b); }
+  static bool gt(float a, float b) { return dz_in<D>(a) > dz_in<D>(b); }
+  static bool ge(float a, float b) { return dz_in<D>(a) >= dz_in<D>(b); }
   static bool lor(bool a, bool b) { return a || b; }
   static bool land(bool a, bool b) { return a && b; }
   static bool is_nan(float a) { return a != a; }

@@ -158,9 +158,11 @@ TL_INLINE bool zero_factor(const BlockStep& b, int k, int mask) {
 
 // The VM's compute functions of the same opcodes (vm_arith.cpp) call the same rules with the
 // same D; compute_per_lane calls the VM's own, taken from the table of the program's mode.
-template <Denormals D>
-TL_INLINE void compute(const Impl& im, const BlockStep& b, int half, int n, Scratch& sc,
-                       LaneVec4& d, vm::Invocation& inv) {
+// Sources are fetched under D and the rules run under R: D, or FlushResults for a step
+// whose sources hold no denormal (compute, below).
+template <Denormals D, Denormals R>
+TL_INLINE void compute_as(const Impl& im, const BlockStep& b, int half, int n, Scratch& sc,
+                          LaneVec4& d, vm::Invocation& inv) {
   const vm::Step& st = *b.step;
   const int m = st.dst.mask;
   View s[4];
@@ -168,76 +170,86 @@ TL_INLINE void compute(const Impl& im, const BlockStep& b, int half, int n, Scra
   switch (st.ins->op) {
   case Opcode::Mov: lanes1(d, m, s[0], [](float a) { return a; }); return;
   case Opcode::Add:
-    lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_add<D>(a, e); });
+    lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_add<R>(a, e); });
     return;
   case Opcode::Sub:
-    lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_sub<D>(a, e); });
+    lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_sub<R>(a, e); });
     return;
   case Opcode::Mul:
     if (zero_factor(b, 1, m) || zero_factor(b, 0, m))
       lanes1(d, m, s[0], [](float) { return 0.0f; });
     else if (nonzero_factor(b, 1, m))
-      lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_mul_y_nonzero<D>(a, e); });
+      lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_mul_y_nonzero<R>(a, e); });
     else if (nonzero_factor(b, 0, m))
-      lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_mul_x_nonzero<D>(a, e); });
+      lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_mul_x_nonzero<R>(a, e); });
     else
-      lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_mul<D>(a, e); });
+      lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_mul<R>(a, e); });
     return;
   case Opcode::Mad:
     if (zero_factor(b, 1, m) || zero_factor(b, 0, m))
-      lanes1(d, m, s[2], [](float f) { return num::legacy_add<D>(0.0f, f); });
+      lanes1(d, m, s[2], [](float f) { return num::legacy_add<R>(0.0f, f); });
     else if (nonzero_factor(b, 1, m))
       lanes3(d, m, s[0], s[1], s[2],
-             [](float a, float e, float f) { return num::legacy_mad_y_nonzero<D>(a, e, f); });
+             [](float a, float e, float f) { return num::legacy_mad_y_nonzero<R>(a, e, f); });
     else if (nonzero_factor(b, 0, m))
       lanes3(d, m, s[0], s[1], s[2],
-             [](float a, float e, float f) { return num::legacy_mad_x_nonzero<D>(a, e, f); });
+             [](float a, float e, float f) { return num::legacy_mad_x_nonzero<R>(a, e, f); });
     else
       lanes3(d, m, s[0], s[1], s[2],
-             [](float a, float e, float f) { return num::legacy_mad<D>(a, e, f); });
+             [](float a, float e, float f) { return num::legacy_mad<R>(a, e, f); });
     return;
   case Opcode::Min:
-    lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_min<D>(a, e); });
+    lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_min<R>(a, e); });
     return;
   case Opcode::Max:
-    lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_max<D>(a, e); });
+    lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_max<R>(a, e); });
     return;
   case Opcode::Slt:
-    lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_slt<D>(a, e); });
+    lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_slt<R>(a, e); });
     return;
   case Opcode::Sge:
-    lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_sge<D>(a, e); });
+    lanes2(d, m, s[0], s[1], [](float a, float e) { return num::legacy_sge<R>(a, e); });
     return;
   case Opcode::Lrp:
     lanes3(d, m, s[0], s[1], s[2],
-           [](float a, float e, float f) { return num::legacy_lrp<D>(a, e, f); });
+           [](float a, float e, float f) { return num::legacy_lrp<R>(a, e, f); });
     return;
   case Opcode::Cmp:
     lanes3(d, m, s[0], s[1], s[2],
-           [](float a, float e, float f) { return num::legacy_cmp<D>(a, e, f); });
+           [](float a, float e, float f) { return num::legacy_cmp<R>(a, e, f); });
     return;
   case Opcode::Cnd:
     lanes3(d, m, s[0], s[1], s[2],
-           [](float a, float e, float f) { return num::legacy_cnd<D>(a, e, f); });
+           [](float a, float e, float f) { return num::legacy_cnd<R>(a, e, f); });
     return;
   case Opcode::Abs: lanes1(d, m, s[0], [](float a) { return std::fabs(a); }); return;
   case Opcode::Dp3:
     lanes_dot(d, m, s[0], s[1],
-              [](const float* x, const float* y, int) { return num::legacy_dp3<D>(x, y); });
+              [](const float* x, const float* y, int) { return num::legacy_dp3<R>(x, y); });
     return;
   case Opcode::Dp4:
     lanes_dot(d, m, s[0], s[1],
-              [](const float* x, const float* y, int) { return num::legacy_dp4<D>(x, y); });
+              [](const float* x, const float* y, int) { return num::legacy_dp4<R>(x, y); });
     return;
   case Opcode::Dp2Add: {
     const float* w = s[2].c[3]; // the scalar operand reads its 4th swizzle slot
     lanes_dot(d, m, s[0], s[1], [w](const float* x, const float* y, int l) {
-      return num::legacy_add<D>(num::legacy_dp2<D>(x, y), w[l]);
+      return num::legacy_add<R>(num::legacy_dp2<R>(x, y), w[l]);
     });
     return;
   }
   default: compute_per_lane(st, s, n, m, d, inv); return;
   }
+}
+
+// compute under D, with the operand flushes left out where BlockStep::clean says no source
+// can hold a denormal (the same values: flushing a value that is not one changes nothing).
+template <Denormals D>
+TL_INLINE void compute(const Impl& im, const BlockStep& b, int half, int n, Scratch& sc,
+                       LaneVec4& d, vm::Invocation& inv) {
+  if constexpr (D == Denormals::Flush)
+    if (b.clean) return compute_as<D, Denormals::FlushResults>(im, b, half, n, sc, d, inv);
+  compute_as<D, D>(im, b, half, n, sc, d, inv);
 }
 
 template <Denormals D> TL_INLINE void store(const vm::DstDesc& d, const LaneVec4& v, Scratch& sc) {

@@ -59,6 +59,8 @@ struct BlockSrc {
   // writes hold the coordinates unchanged, so the 1 KB copy into the register per block and
   // per coordinate is saved (find_input_reads).
   bool input = false;
+  // Folded: no component is a denormal.
+  bool no_denormal = false;
 };
 
 struct BlockStep {
@@ -68,6 +70,9 @@ struct BlockStep {
   // The lane loops write the destination register's masked components themselves, with no
   // copy through Scratch::dst (vm_block_plan.cpp's direct_write says when that is safe).
   bool direct = false;
+  // No source can hold a denormal (vm_block_plan.cpp's find_clean_sources): under
+  // Denormals::Flush the rules run as Denormals::FlushResults, without flushing operands.
+  bool clean = false;
 };
 
 struct View {

@@ -53,9 +53,12 @@ bool plan_src(const vm::SrcDesc& s, Impl& im, const ConstantBank& bank, BlockSrc
     out.folded = static_cast<int32_t>(im.folded.size());
     const Vec4 v = vm::fetch_general(s, inv);
     im.folded.push_back(splat4(v));
+    out.no_denormal = true;
     for (int c = 0; c < 4; ++c) {
       if (ir::numerics::never_compares_zero(v[c])) out.nonzero |= uint8_t(1u << c);
       if (ir::numerics::signed_zero(v[c])) out.zero |= uint8_t(1u << c);
+      if (!ir::numerics::never_compares_zero(v[c]) && !ir::numerics::signed_zero(v[c]))
+        out.no_denormal = false;
     }
     return true;
   }
@@ -126,6 +129,96 @@ void find_zero_components(Impl& im) {
     for (int c = 0; c < 4; ++c)
       if (need[s] & (1u << c))
         im.zero_components.emplace_back(static_cast<uint16_t>(s), static_cast<uint8_t>(c));
+}
+
+// Which steps read only sources that cannot hold a denormal (BlockStep::clean), walking the
+// steps in order with, per register component, whether what it holds can be one. At the
+// start: zeros, and the colours run() saturates (both clean); the texture coordinates of
+// ps_2_0 are not known. A source is clean when it is a folded constant with no denormal
+// component, or a plain or negated register read whose four swizzled components are clean
+// (a per-lane modifier, or coordinates read in place, count as not clean). A write leaves
+// its components clean when
+//  - the instruction's result is flushed by its rule (add, sub, mul, mad, lrp and the dot
+//    products round through FloatArith, whose results are flushed; slt and sge give 0 or
+//    1), or selects among clean sources (mov, abs, min, max, cmp, cnd with every source
+//    clean); or
+//  - the destination's own steps end in a flush: the ps_1_x range clamp (max ≥ 1) and
+//    _sat flush their result, and a flushed value stays clean through the shift and the
+//    fixed-point steps (their results are FloatArith results too).
+// Texture reads give texels bit for bit and every other instruction counts as not clean.
+// This is only used under Denormals::Flush; executor_identity_test holds it to the
+// per-pixel VM with denormal constants, texels and coordinates.
+void find_clean_sources(Impl& im) {
+  std::array<uint8_t, vm::kSlotCount> clean;
+  clean.fill(0xF);
+  if (!im.p.ps11_13)
+    for (int i = 0; i < vm::kTexCount; ++i) clean[vm::kTexBase + i] = 0;
+  auto source_clean = [&](const BlockStep& b, int k) {
+    const BlockSrc& s = b.src[static_cast<size_t>(k)];
+    if (s.way == SrcWay::Folded) return s.no_denormal;
+    if (s.way == SrcWay::General || s.input) return false;
+    for (int c = 0; c < 4; ++c)
+      if (!(clean[s.slot] & (1u << s.comp[c]))) return false;
+    return true;
+  };
+  auto sources_clean = [&](const BlockStep& b) {
+    for (int k = 0; k < b.step->nsrc; ++k)
+      if (!source_clean(b, k)) return false;
+    return true;
+  };
+  auto result_clean = [&](const BlockStep& b) {
+    switch (b.step->ins->op) {
+    case Opcode::Add:
+    case Opcode::Sub:
+    case Opcode::Mul:
+    case Opcode::Mad:
+    case Opcode::Lrp:
+    case Opcode::Dp3:
+    case Opcode::Dp4:
+    case Opcode::Dp2Add:
+    case Opcode::Slt:
+    case Opcode::Sge: return true;
+    case Opcode::Mov:
+    case Opcode::Abs:
+    case Opcode::Min:
+    case Opcode::Max:
+    case Opcode::Cmp:
+    case Opcode::Cnd: return b.clean;
+    default: return false;
+    }
+  };
+  auto write = [&](const BlockStep& b, bool result) {
+    const vm::DstDesc& d = b.step->dst;
+    if (d.kind != vm::DstKind::Slot) return;
+    const bool flushed = (d.range && d.max_value >= 1.0f) || d.sat;
+    if (result || flushed)
+      clean[d.slot] |= d.mask;
+    else
+      clean[d.slot] &= static_cast<uint8_t>(~d.mask);
+  };
+  for (size_t i = 0; i < im.steps.size(); ++i) {
+    BlockStep& b = im.steps[i];
+    switch (b.op) {
+    case BlockOp::Skip: break;
+    case BlockOp::Arith:
+      b.clean = sources_clean(b);
+      write(b, result_clean(b));
+      break;
+    case BlockOp::ArithPair: { // both halves read before either writes
+      BlockStep& second = im.steps[i + 1];
+      b.clean = sources_clean(b);
+      second.clean = sources_clean(second);
+      write(b, result_clean(b));
+      write(second, result_clean(second));
+      break;
+    }
+    case BlockOp::Phase:
+      for (int r = 0; r < 6; ++r) clean[vm::kTempBase + r] |= 0x8; // w set to 0
+      break;
+    case BlockOp::TexKill: break;
+    default: write(b, false); break; // texture reads and coordinates
+    }
+  }
 }
 
 // Whether a step may compute straight into its destination register: a plain register write
@@ -262,6 +355,7 @@ std::unique_ptr<PixelBlockVM> PixelBlockVM::create(const ir::Program& program,
   im->out_slot = static_cast<uint16_t>(p.ps1x ? vm::kTempBase : vm::kOutBase + vm::kOutC0);
   find_zero_components(*im);
   find_input_reads(*im);
+  find_clean_sources(*im);
   return std::unique_ptr<PixelBlockVM>(new PixelBlockVM(std::move(im)));
 }
 
