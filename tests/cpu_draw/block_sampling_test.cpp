@@ -10,6 +10,7 @@
 #include <limits>
 #include <memory>
 #include <random>
+#include <string>
 
 #include "tierlift/cpu/texture.h"
 
@@ -51,6 +52,26 @@ float coordinate(uint32_t n, std::mt19937& rng) {
   }
 }
 
+// Lanes 0..n−1 read through the block read and through the per-lane read (sample) must be
+// the same bits; the number of values compared (a failure names the first that differs).
+size_t expect_block_as_lanes(const BoundTextures& t, const Lanes& u, const Lanes& v, int n,
+                             const std::string& what) {
+  Lanes zero{}, out[4];
+  const float* coord[4] = {u, v, zero, zero};
+  t.sample_block(0, coord, nullptr, n, out);
+  size_t compared = 0;
+  for (int l = 0; l < n; ++l) {
+    const Vec4 want = t.sample(0, {u[l], v[l], 0, 0}, 0);
+    for (int c = 0; c < 4; ++c, ++compared)
+      if (std::memcmp(&out[c][l], &want[c], sizeof(float)) != 0) {
+        ADD_FAILURE() << what << ", lane " << l << " channel " << c << " u " << u[l] << " v "
+                      << v[l] << ": " << out[c][l] << " vs " << want[c];
+        return compared;
+      }
+  }
+  return compared;
+}
+
 TEST(BlockSampling, EveryLaneAsThePerLaneRead) {
   std::mt19937 rng(2024);
   const AddressMode modes[] = {AddressMode::Clamp, AddressMode::Wrap, AddressMode::Mirror,
@@ -71,7 +92,7 @@ TEST(BlockSampling, EveryLaneAsThePerLaneRead) {
             for (int round = 0; round < 40; ++round) {
               // Mostly blocks whose lanes are all inside (the vector path), sometimes with
               // one edge case among them, and a count that leaves a tail.
-              Lanes u{}, v{}, zero{}, out[4];
+              Lanes u{}, v{};
               const bool plain = round % 2 == 0;
               std::uniform_real_distribution<float> in(0.0f, 1.0f);
               for (int l = 0; l < kBlockLanes; ++l) {
@@ -79,18 +100,11 @@ TEST(BlockSampling, EveryLaneAsThePerLaneRead) {
                 v[l] = plain ? in(rng) : coordinate(h, rng);
               }
               const int n = round % 5 == 4 ? 61 : kBlockLanes;
-              const float* coord[4] = {u, v, zero, zero};
-              t.sample_block(0, coord, nullptr, n, out);
-              for (int l = 0; l < n; ++l) {
-                const Vec4 want = t.sample(0, {u[l], v[l], 0, 0}, 0);
-                for (int c = 0; c < 4; ++c) {
-                  ASSERT_EQ(std::memcmp(&out[c][l], &want[c], sizeof(float)), 0)
-                      << "lane " << l << " channel " << c << " u " << u[l] << " v " << v[l]
-                      << " filter " << filter << " mode " << static_cast<int>(mu) << " bits "
-                      << bits << " llvmpipe " << llvmpipe << ": " << out[c][l] << " vs " << want[c];
-                  ++compared;
-                }
-              }
+              compared += expect_block_as_lanes(t, u, v, n,
+                                                "filter " + std::to_string(filter) + " mode " +
+                                                    std::to_string(static_cast<int>(mu)) +
+                                                    " bits " + std::to_string(bits) + " llvmpipe " +
+                                                    std::to_string(llvmpipe));
             }
           }
   EXPECT_GT(compared, 100000u);
@@ -111,7 +125,7 @@ TEST(BlockSampling, PointReadsOfTexelsSideBySide) {
     std::uniform_int_distribution<uint32_t> start(0, w * h - kBlockLanes), lane(0, kBlockLanes - 1),
         sign(0, 1);
     for (int round = 0; round < 300; ++round) {
-      Lanes u{}, v{}, zero{}, out[4];
+      Lanes u{}, v{};
       const uint32_t first = start(rng);
       for (int l = 0; l < kBlockLanes; ++l) {
         const uint32_t p = first + static_cast<uint32_t>(l);
@@ -123,16 +137,7 @@ TEST(BlockSampling, PointReadsOfTexelsSideBySide) {
       const float side = sign(rng) ? 1.0f : -1.0f;
       if (round % 3 == 1) u[moved] += side / static_cast<float>(w);
       if (round % 3 == 2) v[moved] = std::fmod(v[moved] + 1.0f / static_cast<float>(h), 1.0f);
-      const float* coord[4] = {u, v, zero, zero};
-      t.sample_block(0, coord, nullptr, kBlockLanes, out);
-      for (int l = 0; l < kBlockLanes; ++l) {
-        const Vec4 want = t.sample(0, {u[l], v[l], 0, 0}, 0);
-        for (int c = 0; c < 4; ++c) {
-          ASSERT_EQ(std::memcmp(&out[c][l], &want[c], sizeof(float)), 0)
-              << "lane " << l << " channel " << c << " round " << round;
-          ++compared;
-        }
-      }
+      compared += expect_block_as_lanes(t, u, v, kBlockLanes, "round " + std::to_string(round));
     }
   }
   EXPECT_EQ(compared, size_t{2} * 300 * kBlockLanes * 4);
@@ -174,22 +179,12 @@ TEST(BlockSampling, BilinearFlushesSkippedOnlyWhereNothingCanBeDenormal) {
       return c;
     };
     for (int round = 0; round < 200; ++round) {
-      Lanes u{}, v{}, zero{}, out[4];
+      Lanes u{}, v{};
       for (int l = 0; l < kBlockLanes; ++l) {
         u[l] = near(w);
         v[l] = near(h);
       }
-      const float* coord[4] = {u, v, zero, zero};
-      t.sample_block(0, coord, nullptr, kBlockLanes, out);
-      for (int l = 0; l < kBlockLanes; ++l) {
-        const Vec4 want = t.sample(0, {u[l], v[l], 0, 0}, 0);
-        for (int c = 0; c < 4; ++c) {
-          ASSERT_EQ(std::memcmp(&out[c][l], &want[c], sizeof(float)), 0)
-              << "scale " << scale << " lane " << l << " channel " << c << ": " << out[c][l]
-              << " vs " << want[c];
-          ++compared;
-        }
-      }
+      compared += expect_block_as_lanes(t, u, v, kBlockLanes, "scale " + std::to_string(scale));
     }
   }
   EXPECT_EQ(compared, std::size(scales) * 200 * kBlockLanes * 4);

@@ -8,8 +8,7 @@
 #include <random>
 #include <thread>
 
-#include "draw_helpers.h"
-#include "tierlift/asm/parser.h"
+#include "random_passes.h"
 #include "tierlift/cpu/draw.h"
 
 namespace tierlift::cpu {
@@ -19,28 +18,8 @@ namespace {
 // SRCALPHA blending: every worker's bands differ, and a mix-up of bands, of per-worker state
 // or of counters shows in the image or the stats.
 Pass random_pass(uint32_t seed) {
-  static const auto ps = std::make_shared<const ir::Program>(
-      *as::parse_text("ps_2_0\ndcl v0\ndcl t0\ndcl t1\ndcl_2d s0\ntexld r0, t0, s0\n"
-                      "mad r0, r0, v0, t1\ntexkill t1\nmov oC0, r0\n",
-                      "<test>")
-           .program);
   std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> pos(-20.0, 120.0);
-  std::uniform_real_distribution<float> val(-0.5f, 1.5f), wclip(0.5f, 3.0f);
-  Pass pass;
-  pass.pixel_program = ps;
-  for (int i = 0; i < 30; ++i) {
-    VertexOutput v = test::screen_vertex(pos(rng), pos(rng), 97, 61, wclip(rng));
-    v.color[0] = {val(rng), val(rng), val(rng), val(rng)};
-    v.tex[0] = {val(rng), val(rng), val(rng), val(rng)};
-    v.tex[1] = {val(rng), val(rng), val(rng), val(rng)};
-    pass.transformed.push_back(v);
-  }
-  auto tex = std::make_shared<img::Image>(13, 9, img::Format::RGBA32F);
-  std::uniform_real_distribution<float> texel(0.0f, 1.0f);
-  for (float& x : tex->rgba) x = texel(rng);
-  pass.textures[0].image = tex;
-  pass.textures[0].sampler.filter = Filter::Linear;
+  Pass pass = test::random_perspective_pass(rng, 30, 97, 61);
   pass.blend = BlendMode::SrcAlphaInvSrcAlpha;
   return pass;
 }

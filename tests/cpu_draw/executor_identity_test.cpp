@@ -13,6 +13,7 @@
 
 #include "draw_helpers.h"
 #include "program_helpers.h"
+#include "random_passes.h"
 #include "tierlift/asm/parser.h"
 #include "tierlift/asm/validator.h"
 #include "tierlift/cpu/draw.h"
@@ -154,30 +155,12 @@ TEST(ExecutorIdentity, GlowAndArticlePassesInEveryMode) {
 // killed lanes among written ones, perspective-correct inputs, onto RGBA32F and RGBA8
 // targets that start with random content (each blend mode reads it).
 TEST(ExecutorIdentity, RandomPerspectiveTriangles) {
-  auto ps = std::make_shared<const ir::Program>(*as::parse_text("ps_2_0\ndcl v0\ndcl t0\ndcl t1\n"
-                                                                "dcl_2d s0\ntexld r0, t0, s0\n"
-                                                                "mad r0, r0, v0, t1\n"
-                                                                "texkill t1\nmov oC0, r0\n",
-                                                                "<test>")
-                                                     .program);
   std::mt19937 rng(11);
-  std::uniform_real_distribution<double> pos(-20.0, 90.0);
-  std::uniform_real_distribution<float> val(-0.5f, 1.5f), wclip(0.5f, 3.0f);
   const BlendMode blends[] = {BlendMode::SrcAlphaInvSrcAlpha, BlendMode::Replace, BlendMode::OneOne,
                               BlendMode::SrcAlphaOne};
   for (int m = 0; m < 3; ++m)
     for (int f = 0; f < 2; ++f) {
-      Pass pass;
-      pass.pixel_program = ps;
-      for (int i = 0; i < 24; ++i) {
-        VertexOutput v = test::screen_vertex(pos(rng), pos(rng), 71, 53, wclip(rng));
-        v.color[0] = {val(rng), val(rng), val(rng), val(rng)};
-        v.tex[0] = {val(rng), val(rng), val(rng), val(rng)};
-        v.tex[1] = {val(rng), val(rng), val(rng), val(rng)};
-        pass.transformed.push_back(v);
-      }
-      pass.textures[0].image = random_image(17, 11, rng, 0.0f, 1.0f);
-      pass.textures[0].sampler.filter = Filter::Linear;
+      Pass pass = test::random_perspective_pass(rng, 24, 71, 53);
       pass.conventions = mode(m);
       pass.blend = blends[(m + 3 * f) % 4];
       img::Image start = *random_image(71, 53, rng, -0.25f, 1.25f);

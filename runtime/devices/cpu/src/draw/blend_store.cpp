@@ -99,8 +99,9 @@ Vec4 blend_unorm8_llvmpipe(BlendMode mode, const Vec4& src_in, const Vec4& dst_i
   return out;
 }
 
-// blend_unorm8_llvmpipe on lane arrays, for every blend mode: the source bytes, then the
-// destination's (Replace reads none; read before any lane is written, a block's pixels
+// blend_unorm8_llvmpipe on lane arrays, for every blend mode (blocks with a killed lane, and
+// machines without AVX2 + FMA; store_unorm8_llvmpipe_avx2 below takes the rest): the source bytes,
+// then the destination's (Replace reads none; read before any lane is written, a block's pixels
 // being distinct), then the same integer blend, each byte's value k/255.0f (what
 // rounding::unorm8_levels holds, computed the same way) and the write. The loops vectorise;
 // the result is the same bits as blend_unorm8_llvmpipe pixel by pixel

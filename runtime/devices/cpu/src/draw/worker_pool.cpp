@@ -1,6 +1,7 @@
 // WorkerPool (worker_pool.h): sleeping threads woken once per draw.
 #include "worker_pool.h"
 
+#include <algorithm>
 #include <exception>
 
 namespace tierlift::cpu::detail {

@@ -49,11 +49,11 @@ float unorm8_nearest(float value);
 uint8_t unorm8_llvmpipe(float value);
 
 // The bytes of the rules above for in[i], i < n, as branch-free loops the compiler
-// vectorises (the CPU device's block store and blend on RGBA8 targets): the same steps on
-// the same floats, so the same bytes for every input (tests/cpu_draw/
-// rgba8_store_llvmpipe_test.cpp walks the byte boundaries and ties). unorm8_llvmpipe_bytes:
-// unorm8_llvmpipe(in[i]); unorm8_nearest_bytes: the byte unorm8_nearest(in[i]) stands for
-// (round(clamp(in[i])·255) in double, ties up, NaN → 0).
+// vectorises: the same steps on the same floats, so the same bytes for every input
+// (tests/cpu_draw/rgba8_store_llvmpipe_test.cpp walks the byte boundaries and ties through
+// them, and so checks the lane forms below, which the CPU device's block store inlines).
+// unorm8_llvmpipe_bytes: unorm8_llvmpipe(in[i]); unorm8_nearest_bytes: the byte
+// unorm8_nearest(in[i]) stands for (round(clamp(in[i])·255) in double, ties up, NaN → 0).
 void unorm8_llvmpipe_bytes(const float* in, int32_t* out, int n);
 void unorm8_nearest_bytes(const float* in, int32_t* out, int n);
 
