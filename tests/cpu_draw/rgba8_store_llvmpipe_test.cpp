@@ -169,12 +169,12 @@ std::vector<float> store_probes() {
   return probe;
 }
 
-// The lane form of the store (rounding::unorm8_llvmpipe_bytes through the levels table, the
-// block executor's RGBA8 Replace store) against the scalar rule, on store_probes().
+// The lane form of the store (rounding::unorm8_llvmpipe_lane through the levels table, the
+// block store's source byte) against the scalar rule, on store_probes().
 TEST(Rgba8StoreLlvmpipe, LaneFormMatchesTheRuleBitForBit) {
   const std::vector<float> probe = store_probes();
   std::vector<int32_t> bytes(probe.size());
-  rounding::unorm8_llvmpipe_bytes(probe.data(), bytes.data(), static_cast<int>(probe.size()));
+  for (size_t i = 0; i < probe.size(); ++i) bytes[i] = rounding::unorm8_llvmpipe_lane(probe[i]);
   size_t differ = 0;
   for (size_t i = 0; i < probe.size(); ++i) {
     const float want = rounding::unorm8_levels()[rounding::unorm8_llvmpipe(probe[i])];
@@ -189,14 +189,15 @@ TEST(Rgba8StoreLlvmpipe, LaneFormMatchesTheRuleBitForBit) {
   EXPECT_EQ(differ, 0u);
 }
 
-// The byte forms the block blend uses (rounding::unorm8_llvmpipe_bytes for the source,
-// unorm8_nearest_bytes for the destination) against the scalar rules, on store_probes().
+// The byte forms the block blend uses (rounding::unorm8_llvmpipe_lane for the source,
+// unorm8_nearest_lane for the destination) against the scalar rules, on store_probes().
 TEST(Rgba8StoreLlvmpipe, ByteFormsMatchTheRules) {
   const std::vector<float> probe = store_probes();
-  const int n = static_cast<int>(probe.size());
   std::vector<int32_t> src(probe.size()), dst(probe.size());
-  rounding::unorm8_llvmpipe_bytes(probe.data(), src.data(), n);
-  rounding::unorm8_nearest_bytes(probe.data(), dst.data(), n);
+  for (size_t i = 0; i < probe.size(); ++i) {
+    src[i] = rounding::unorm8_llvmpipe_lane(probe[i]);
+    dst[i] = rounding::unorm8_nearest_lane(probe[i]);
+  }
   for (size_t i = 0; i < probe.size(); ++i) {
     ASSERT_EQ(src[i], rounding::unorm8_llvmpipe(probe[i])) << std::hexfloat << probe[i];
     const float nearest = rounding::unorm8_nearest(probe[i]);

@@ -37,15 +37,4 @@ uint8_t unorm8_llvmpipe(float value) {
   return static_cast<uint8_t>(k);
 }
 
-// Built for AVX2 and for the baseline, chosen once at load time.
-[[gnu::target_clones("avx2", "default")]] void unorm8_llvmpipe_bytes(const float* in, int32_t* out,
-                                                                     int n) {
-  for (int i = 0; i < n; ++i) out[i] = unorm8_llvmpipe_lane(in[i]);
-}
-
-[[gnu::target_clones("avx2", "default")]] void unorm8_nearest_bytes(const float* in, int32_t* out,
-                                                                    int n) {
-  for (int i = 0; i < n; ++i) out[i] = unorm8_nearest_lane(in[i]);
-}
-
 } // namespace tierlift::rounding

@@ -4,14 +4,12 @@
 // and stores RGBA16F rounded toward zero.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "raster.h"
+#include "simd_rgba.h"
 #include "tierlift/cpu/draw.h"
 #include "tierlift/rounding/rounding.h"
-
-#if defined(__x86_64__) && defined(__GNUC__)
-#include <immintrin.h>
-#endif
 
 namespace tierlift::cpu {
 namespace {
@@ -99,19 +97,15 @@ Vec4 blend_unorm8_llvmpipe(BlendMode mode, const Vec4& src_in, const Vec4& dst_i
   return out;
 }
 
-// blend_unorm8_llvmpipe on lane arrays, for every blend mode (blocks with a killed lane, and
-// machines without AVX2 + FMA; store_unorm8_llvmpipe_avx2 below takes the rest): the source bytes,
-// then the destination's (Replace reads none; read before any lane is written, a block's pixels
-// being distinct), then the same integer blend, each byte's value k/255.0f (what
-// rounding::unorm8_levels holds, computed the same way) and the write. The loops vectorise;
-// the result is the same bits as blend_unorm8_llvmpipe pixel by pixel
-// (BlockBlendMatchesThePixelRule in tests/cpu_draw/rgba8_store_llvmpipe_test.cpp, and the
-// block executor's identity tests). Built for AVX2 and for the baseline, chosen at load
-// time: the baseline has no packed 32-bit multiply for mul_norm8, and this store runs for
-// every pixel an RGBA8 pass writes.
-[[gnu::target_clones("avx2", "default")]] void
-store_block_unorm8_llvmpipe(BlendMode mode, const LaneVec4& src,
-                            const std::array<bool, kBlockLanes>& discarded, int n, float* p) {
+// blend_unorm8_llvmpipe on lane arrays, for every blend mode, on machines without AVX2 + FMA
+// (store_unorm8_llvmpipe_avx2 below is the same store for the others): the source bytes,
+// then the destination's (Replace reads none; read before any lane is written, a block's
+// pixels being distinct), then the same integer blend, each byte's value k/255.0f (what
+// rounding::unorm8_levels holds, computed the same way) and the write. The result is the
+// same bits as blend_unorm8_llvmpipe pixel by pixel (BlockBlendMatchesThePixelRule in
+// tests/cpu_draw/rgba8_store_llvmpipe_test.cpp, and the block executor's identity tests).
+void store_block_unorm8_llvmpipe(BlendMode mode, const LaneVec4& src,
+                                 const std::array<bool, kBlockLanes>& discarded, int n, float* p) {
   int32_t s[4][kBlockLanes];
   for (int c = 0; c < 4; ++c)
     for (int l = 0; l < n; ++l) s[c][l] = rounding::unorm8_llvmpipe_lane(src.c[c][l]);
@@ -155,7 +149,10 @@ store_block_unorm8_llvmpipe(BlendMode mode, const LaneVec4& src,
   }
 }
 
-#if defined(__x86_64__) && defined(__GNUC__)
+#if TIERLIFT_CPU_AVX2
+using detail::load_rgba8;
+using detail::store_rgba8;
+
 // k/255.0f for the integer-valued floats k = 0..255, without a division: the product with
 // fl(1/255), then one correction by its exact residual k − q·255 (both steps fused). For all
 // 256 values it is k/255 correctly rounded, the same float as the division (worked out for
@@ -196,11 +193,13 @@ store_block_unorm8_llvmpipe(BlendMode mode, const LaneVec4& src,
       _mm256_add_epi32(_mm256_add_epi32(t, _mm256_srli_epi32(t, 8)), _mm256_set1_epi32(0x80)), 8);
 }
 
-// store_block_unorm8_llvmpipe for a block with no killed lane, eight lanes at a time: the
-// same bytes and blend step by step, the destination's eight RGBA pixels read with four wide
-// loads and split into channels, the results interleaved back with four wide stores.
-[[gnu::target("avx2,fma")]] void store_unorm8_llvmpipe_avx2(BlendMode mode, const LaneVec4& src,
-                                                            int n, float* p) {
+// store_block_unorm8_llvmpipe eight lanes at a time: the same bytes and blend step by step,
+// the destination's eight RGBA pixels read with four wide loads and split into channels, the
+// results interleaved back with four wide stores (a group with a killed lane is written
+// pixel by pixel, its killed pixels left alone).
+[[gnu::target("avx2,fma")]] void
+store_unorm8_llvmpipe_avx2(BlendMode mode, const LaneVec4& src,
+                           const std::array<bool, kBlockLanes>& discarded, int n, float* p) {
   const __m256i max_byte = _mm256_set1_epi32(255);
   int l = 0;
   for (; l + 8 <= n; l += 8) {
@@ -208,28 +207,17 @@ store_block_unorm8_llvmpipe(BlendMode mode, const LaneVec4& src,
     __m256i v[4];
     for (int c = 0; c < 4; ++c) v[c] = source_bytes8(_mm256_loadu_ps(src.c[c] + l));
     if (mode != BlendMode::Replace) {
-      const __m256 d01 = _mm256_loadu_ps(px), d23 = _mm256_loadu_ps(px + 8);
-      const __m256 d45 = _mm256_loadu_ps(px + 16), d67 = _mm256_loadu_ps(px + 24);
-      // Vector k: pixel k in the low half, pixel k + 4 in the high half; then a 4×4
-      // transpose within each half gives the channels.
-      const __m256 q0 = _mm256_permute2f128_ps(d01, d45, 0x20);
-      const __m256 q1 = _mm256_permute2f128_ps(d01, d45, 0x31);
-      const __m256 q2 = _mm256_permute2f128_ps(d23, d67, 0x20);
-      const __m256 q3 = _mm256_permute2f128_ps(d23, d67, 0x31);
-      const __m256 xy01 = _mm256_unpacklo_ps(q0, q1), zw01 = _mm256_unpackhi_ps(q0, q1);
-      const __m256 xy23 = _mm256_unpacklo_ps(q2, q3), zw23 = _mm256_unpackhi_ps(q2, q3);
-      const __m256i d[4] = {nearest_bytes8(_mm256_shuffle_ps(xy01, xy23, _MM_SHUFFLE(1, 0, 1, 0))),
-                            nearest_bytes8(_mm256_shuffle_ps(xy01, xy23, _MM_SHUFFLE(3, 2, 3, 2))),
-                            nearest_bytes8(_mm256_shuffle_ps(zw01, zw23, _MM_SHUFFLE(1, 0, 1, 0))),
-                            nearest_bytes8(_mm256_shuffle_ps(zw01, zw23, _MM_SHUFFLE(3, 2, 3, 2)))};
+      __m256 dst[4];
+      load_rgba8(px, dst);
       const __m256i a = v[3], inverse_a = _mm256_sub_epi32(max_byte, a);
       for (int c = 0; c < 4; ++c) {
+        const __m256i d = nearest_bytes8(dst[c]);
         switch (mode) {
         case BlendMode::Replace: break;
-        case BlendMode::OneOne: v[c] = _mm256_add_epi32(v[c], d[c]); break;
-        case BlendMode::SrcAlphaOne: v[c] = _mm256_add_epi32(mul_norm8_8(v[c], a), d[c]); break;
+        case BlendMode::OneOne: v[c] = _mm256_add_epi32(v[c], d); break;
+        case BlendMode::SrcAlphaOne: v[c] = _mm256_add_epi32(mul_norm8_8(v[c], a), d); break;
         case BlendMode::SrcAlphaInvSrcAlpha:
-          v[c] = _mm256_add_epi32(mul_norm8_8(v[c], a), mul_norm8_8(d[c], inverse_a));
+          v[c] = _mm256_add_epi32(mul_norm8_8(v[c], a), mul_norm8_8(d, inverse_a));
           break;
         }
       }
@@ -237,19 +225,20 @@ store_block_unorm8_llvmpipe(BlendMode mode, const LaneVec4& src,
     __m256 c[4];
     for (int k = 0; k < 4; ++k)
       c[k] = unorm8_levels8(_mm256_cvtepi32_ps(_mm256_min_epi32(v[k], max_byte)));
-    const __m256 rg0 = _mm256_unpacklo_ps(c[0], c[1]), rg1 = _mm256_unpackhi_ps(c[0], c[1]);
-    const __m256 ba0 = _mm256_unpacklo_ps(c[2], c[3]), ba1 = _mm256_unpackhi_ps(c[2], c[3]);
-    // Pixels 0|4, 1|5, 2|6, 3|7 (low half | high half), then in order.
-    const __m256 p04 = _mm256_shuffle_ps(rg0, ba0, _MM_SHUFFLE(1, 0, 1, 0));
-    const __m256 p15 = _mm256_shuffle_ps(rg0, ba0, _MM_SHUFFLE(3, 2, 3, 2));
-    const __m256 p26 = _mm256_shuffle_ps(rg1, ba1, _MM_SHUFFLE(1, 0, 1, 0));
-    const __m256 p37 = _mm256_shuffle_ps(rg1, ba1, _MM_SHUFFLE(3, 2, 3, 2));
-    _mm256_storeu_ps(px, _mm256_permute2f128_ps(p04, p15, 0x20));
-    _mm256_storeu_ps(px + 8, _mm256_permute2f128_ps(p26, p37, 0x20));
-    _mm256_storeu_ps(px + 16, _mm256_permute2f128_ps(p04, p15, 0x31));
-    _mm256_storeu_ps(px + 24, _mm256_permute2f128_ps(p26, p37, 0x31));
+    static_assert(sizeof(bool) == 1);
+    uint64_t killed; // the group's eight flags at once
+    std::memcpy(&killed, &discarded[static_cast<size_t>(l)], sizeof killed);
+    if (killed == 0) {
+      store_rgba8(c, px);
+      continue;
+    }
+    alignas(32) float out[32];
+    store_rgba8(c, out);
+    for (int k = 0; k < 8; ++k)
+      if (!discarded[static_cast<size_t>(l + k)]) std::memcpy(px + 4 * k, out + 4 * k, 16);
   }
   for (; l < n; ++l) { // the tail, pixel by pixel through the rule
+    if (discarded[static_cast<size_t>(l)]) continue;
     float* px = p + 4 * l;
     const Vec4 out = blend_unorm8_llvmpipe(
         mode, {src.c[0][l], src.c[1][l], src.c[2][l], src.c[3][l]}, {px[0], px[1], px[2], px[3]});
@@ -257,15 +246,9 @@ store_block_unorm8_llvmpipe(BlendMode mode, const LaneVec4& src,
   }
 }
 
-bool avx2_fma() {
-  static const bool yes = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-  return yes;
-}
 #else
-void store_unorm8_llvmpipe_avx2(BlendMode, const LaneVec4&, int, float*) {}
-bool avx2_fma() {
-  return false;
-}
+void store_unorm8_llvmpipe_avx2(BlendMode, const LaneVec4&, const std::array<bool, kBlockLanes>&,
+                                int, float*) {}
 #endif
 
 } // namespace
@@ -294,9 +277,7 @@ void store_block(BlendMode mode, img::Format format, ir::Rounding rounding, cons
     }
   }
   if (format == img::Format::RGBA8 && rounding == ir::Rounding::Llvmpipe) {
-    if (avx2_fma() &&
-        std::none_of(discarded.begin(), discarded.begin() + n, [](bool d) { return d; }))
-      return store_unorm8_llvmpipe_avx2(mode, src, n, first);
+    if (cpu_runs_avx2_fma()) return store_unorm8_llvmpipe_avx2(mode, src, discarded, n, first);
     return store_block_unorm8_llvmpipe(mode, src, discarded, n, first);
   }
   for (int l = 0; l < n; ++l) {

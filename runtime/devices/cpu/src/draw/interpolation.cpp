@@ -25,6 +25,7 @@
 #include <cmath>
 
 #include "raster.h"
+#include "simd_rgba.h"
 #include "tierlift/ir/numerics.h"
 
 namespace tierlift::cpu::detail {
@@ -234,23 +235,16 @@ void llvmpipe_lanes(const Triangle& t, int64_t x0, int64_t y, uint8_t color_read
   llvmpipe_lanes_body(t, x0, y, color_reads, tex_components, in);
 }
 
-#if defined(__x86_64__) && defined(__GNUC__)
+#if TIERLIFT_CPU_AVX2
 [[gnu::target("avx2,fma")]] void llvmpipe_lanes_fma(const Triangle& t, int64_t x0, int64_t y,
                                                     uint8_t color_reads, uint32_t tex_components,
                                                     PixelBlockInput& in) {
   llvmpipe_lanes_body(t, x0, y, color_reads, tex_components, in);
 }
-bool fma_hardware() {
-  static const bool yes = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-  return yes;
-}
 #else
 void llvmpipe_lanes_fma(const Triangle& t, int64_t x0, int64_t y, uint8_t color_reads,
                         uint32_t tex_components, PixelBlockInput& in) {
   llvmpipe_lanes_body(t, x0, y, color_reads, tex_components, in);
-}
-bool fma_hardware() {
-  return false;
 }
 #endif
 
@@ -270,7 +264,7 @@ void interpolate_block(const Triangle& t, const int64_t (*e)[3], const int64_t* 
     }
     return;
   }
-  if (fma_hardware())
+  if (cpu_runs_avx2_fma())
     llvmpipe_lanes_fma(t, x[0], y, color_reads, tex_components, in);
   else
     llvmpipe_lanes(t, x[0], y, color_reads, tex_components, in);

@@ -7,11 +7,8 @@
 #include <climits>
 
 #include "sampling_rules.h"
+#include "simd_rgba.h"
 #include "tierlift/cpu/texture.h"
-
-#if defined(__x86_64__) && defined(__GNUC__)
-#include <immintrin.h>
-#endif
 
 namespace tierlift::cpu {
 namespace {
@@ -77,7 +74,7 @@ void llvmpipe_linear_plain(const BlockRead& r, int bits) {
   llvmpipe_linear_body(r, bits, 0, r.n);
 }
 
-#if defined(__x86_64__) && defined(__GNUC__)
+#if TIERLIFT_CPU_AVX2
 // The AVX2 build runs eight lanes at a time where every lane's texels lie inside the texture
 // on both axes (the common case), and sends any group of eight with one lane outside, and
 // the lanes past the last full group, through the per-lane bodies above. Inside the texture
@@ -88,6 +85,8 @@ void llvmpipe_linear_plain(const BlockRead& r, int bits) {
 // neighbour is min(i0 + 1, N − 1), what address_texel gives); the lerp is rounding::lerp on
 // eight lanes of a channel at once (flush, subtract, flush, one fused multiply-add, flush).
 // Texels are loaded as one RGBA vector each and transposed into channel vectors.
+using detail::load_rgba8;
+using detail::transpose8;
 constexpr int kGroup = 8;
 
 // A texture whose float offsets 4·(y·W + x) fit an int32: every image the readers accept.
@@ -149,18 +148,6 @@ bool int32_texels(const img::Image& im) {
   return _mm256_movemask_ps(_mm256_castsi256_ps(ok)) == 0xFF;
 }
 
-// Four vectors, vector k holding texel k in its low half and texel k + 4 in its high half,
-// as four channel vectors (lane k: texel k): a 4×4 transpose within each 128-bit half.
-[[gnu::target("avx2,fma")]] inline void transpose8(__m256 t0, __m256 t1, __m256 t2, __m256 t3,
-                                                   __m256 c[4]) {
-  const __m256 xy01 = _mm256_unpacklo_ps(t0, t1), zw01 = _mm256_unpackhi_ps(t0, t1);
-  const __m256 xy23 = _mm256_unpacklo_ps(t2, t3), zw23 = _mm256_unpackhi_ps(t2, t3);
-  c[0] = _mm256_shuffle_ps(xy01, xy23, _MM_SHUFFLE(1, 0, 1, 0));
-  c[1] = _mm256_shuffle_ps(xy01, xy23, _MM_SHUFFLE(3, 2, 3, 2));
-  c[2] = _mm256_shuffle_ps(zw01, zw23, _MM_SHUFFLE(1, 0, 1, 0));
-  c[3] = _mm256_shuffle_ps(zw01, zw23, _MM_SHUFFLE(3, 2, 3, 2));
-}
-
 // The RGBA texels at float offsets o[0..7] as four channel vectors (lane k: texel k): texels
 // k and k + 4 share a 256-bit row, and a 4×4 transpose within each 128-bit half does the rest.
 [[gnu::target("avx2,fma")]] inline void channels8(const float* base, const int32_t* o,
@@ -211,14 +198,9 @@ bool int32_texels(const img::Image& im) {
     if (_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(
             at, _mm256_add_epi32(first, _mm256_setr_epi32(0, 4, 8, 12, 16, 20, 24, 28))))) ==
         0xFF) {
-      // Eight texels side by side on one row (a pass reading its source one to one): four
-      // wide loads, texels k and k + 4 paired in each 128-bit half as channels8 pairs them.
-      const float* p = base + _mm256_cvtsi256_si32(at);
-      const __m256 t01 = _mm256_loadu_ps(p), t23 = _mm256_loadu_ps(p + 8);
-      const __m256 t45 = _mm256_loadu_ps(p + 16), t67 = _mm256_loadu_ps(p + 24);
+      // Eight texels side by side (a pass reading its source one to one): four wide loads.
       __m256 c[4];
-      transpose8(_mm256_permute2f128_ps(t01, t45, 0x20), _mm256_permute2f128_ps(t01, t45, 0x31),
-                 _mm256_permute2f128_ps(t23, t67, 0x20), _mm256_permute2f128_ps(t23, t67, 0x31), c);
+      load_rgba8(base + _mm256_cvtsi256_si32(at), c);
       for (int ch = 0; ch < 4; ++ch) _mm256_storeu_ps(r.out[ch] + l, c[ch]);
       continue;
     }
@@ -314,19 +296,12 @@ bool int32_texels(const img::Image& im) {
   }
   llvmpipe_linear_body(r, bits, l, r.n);
 }
-bool fma_hardware() {
-  static const bool yes = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-  return yes;
-}
 #else
 void point_fma(const BlockRead& r) {
   point_body(r, 0, r.n);
 }
 void llvmpipe_linear_fma(const BlockRead& r, int bits) {
   llvmpipe_linear_body(r, bits, 0, r.n);
-}
-bool fma_hardware() {
-  return false;
 }
 #endif
 
@@ -341,7 +316,7 @@ void BoundTextures::sample_block(uint32_t stage, const float* const coord[4], co
   }
   const TextureBinding& b = bindings_[stage];
   const BlockRead r{*b.image, b.sampler, coord[0], coord[1], n, out};
-  const bool fma = fma_hardware();
+  const bool fma = cpu_runs_avx2_fma();
   if (b.sampler.filter == Filter::Point) {
     fma ? point_fma(r) : point_plain(r);
   } else if (llvmpipe_) {

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "tierlift/cpu/cpu_features.h"
 #include "tierlift/cpu/pixel_block.h"
 #include "tierlift/ir/numerics.h"
 #include "vm_block_internal.h"
@@ -435,18 +436,11 @@ template <Denormals D>
                                             Scratch& sc) {
   run_steps_body<D>(im, in, textures, out, sc);
 }
-bool avx2_hardware() {
-  static const bool yes = __builtin_cpu_supports("avx2");
-  return yes;
-}
 #else
 template <Denormals D>
 void run_steps_avx2(const Impl& im, const PixelBlockInput& in, const TextureUnit& textures,
                     PixelBlockOutput& out, Scratch& sc) {
   run_steps_body<D>(im, in, textures, out, sc);
-}
-bool avx2_hardware() {
-  return false;
 }
 #endif
 
@@ -454,7 +448,7 @@ bool avx2_hardware() {
 
 void PixelBlockVM::run(const PixelBlockInput& in, const TextureUnit& textures,
                        PixelBlockOutput& out, Scratch& sc) const {
-  const bool wide = avx2_hardware();
+  const bool wide = cpu_runs_avx2();
   if (impl_->p.flush)
     (wide ? run_steps_avx2<Denormals::Flush> : run_steps<Denormals::Flush>)(*impl_, in, textures,
                                                                             out, sc);

@@ -146,8 +146,8 @@ void find_zero_components(Impl& im) {
 //    _sat flush their result, and a flushed value stays clean through the shift and the
 //    fixed-point steps (their results are FloatArith results too).
 // Texture reads give texels bit for bit and every other instruction counts as not clean.
-// This is only used under Denormals::Flush; executor_identity_test holds it to the
-// per-pixel VM with denormal constants, texels and coordinates.
+// This is only used under Denormals::Flush; block_identity_test and executor_identity_test
+// hold it to the per-pixel VM with denormal constants, texels and coordinates.
 void find_clean_sources(Impl& im) {
   std::array<uint8_t, vm::kSlotCount> clean;
   clean.fill(0xF);

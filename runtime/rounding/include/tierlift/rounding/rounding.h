@@ -48,17 +48,11 @@ float unorm8_nearest(float value);
 // the even side (fl32(0.5/255) = 0.00196078443 stores 0 here, 1 there). NUMERICS.md rule 34.
 uint8_t unorm8_llvmpipe(float value);
 
-// The bytes of the rules above for in[i], i < n, as branch-free loops the compiler
-// vectorises: the same steps on the same floats, so the same bytes for every input
-// (tests/cpu_draw/rgba8_store_llvmpipe_test.cpp walks the byte boundaries and ties through
-// them, and so checks the lane forms below, which the CPU device's block store inlines).
-// unorm8_llvmpipe_bytes: unorm8_llvmpipe(in[i]); unorm8_nearest_bytes: the byte
-// unorm8_nearest(in[i]) stands for (round(clamp(in[i])·255) in double, ties up, NaN → 0).
-void unorm8_llvmpipe_bytes(const float* in, int32_t* out, int n);
-void unorm8_nearest_bytes(const float* in, int32_t* out, int n);
-
-// One element of the loops above, inline for loops elsewhere that fuse the conversion with
-// their own work (the CPU device's RGBA8 block store); the same steps, so the same bytes.
+// The bytes of the rules above, branch-free, for loops the compiler vectorises (the CPU
+// device's baseline RGBA8 block store): the same steps on the same floats, so the same bytes
+// for every input (tests/cpu_draw/rgba8_store_llvmpipe_test.cpp walks the byte boundaries
+// and ties). unorm8_llvmpipe_lane: unorm8_llvmpipe(v); unorm8_nearest_lane: the byte
+// unorm8_nearest(v) stands for (round(clamp(v)·255) in double, ties up, NaN → 0).
 inline int32_t unorm8_llvmpipe_lane(float v) {
   // NaN and ≤ 0 → 0, ≥ 1 → 255, as the two tests of unorm8_llvmpipe.
   const float low = v > 0.0f ? v : 0.0f;
