@@ -2,6 +2,7 @@
 #include "unorm8_probe.h"
 
 #include "synthetic_programs.h"
+#include "tierlift/rounding/rounding.h"
 #include "tierlift/vulkan/texture_set.h"
 
 namespace tierlift::vulkan {
@@ -11,7 +12,7 @@ ir::Result<std::vector<float>> read_unorm8_levels(Device& device) {
   img::Image levels(kSide, kSide, img::Format::RGBA8);
   for (uint32_t p = 0; p < kSide * kSide; ++p)
     for (uint32_t c = 0; c < 4; ++c)
-      levels.rgba[p * 4 + c] = static_cast<float>((p + 64 * c) % 256) / 255.0f;
+      levels.rgba[p * 4 + c] = rounding::unorm8_levels()[(p + 64 * c) % 256];
 
   // Pixel (i, j) reads texel (i, j) at its centre: the quad's uv (i/16 at pixel i, D3D9
   // centres) plus half a texel, through a POINT, CLAMP/CLAMP sampler (the in-place read).
