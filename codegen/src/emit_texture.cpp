@@ -108,11 +108,16 @@ Id Emitter::sample(uint32_t stage, Id coord, std::optional<Id> bias) {
   const ir::SamplerType type = sampler_type(stage);
   const Id image = b.type_image(t_float, dim_of(type));
   const Id si = b.op(Op::OpLoad, b.type_sampled_image(image), {var});
-  const Id c = type == ir::SamplerType::Tex2D
-                   ? b.op(Op::OpVectorShuffle, t_vec2, {coord, coord, 0, 1})
-                   : b.op(Op::OpVectorShuffle, t_vec3, {coord, coord, 0, 1, 2});
+  Id c = type == ir::SamplerType::Tex2D
+             ? b.op(Op::OpVectorShuffle, t_vec2, {coord, coord, 0, 1})
+             : b.op(Op::OpVectorShuffle, t_vec3, {coord, coord, 0, 1, 2});
   // A bias changes nothing there: one mip level, POINT both ways.
   if (fetches(stage)) return fetch_unorm8(si, c);
+  if (type == ir::SamplerType::Tex2D && opt.stage_point_clamped[stage & 15]) {
+    const Id zero2 = b.const_composite(t_vec2, std::array{f(0), f(0)});
+    const Id one2 = b.const_composite(t_vec2, std::array{f(1), f(1)});
+    c = b.ext_inst(glsl, t_vec2, GLSLstd450NClamp, std::array{c, zero2, one2});
+  }
   if (bias)
     return b.op(Op::OpImageSampleImplicitLod, t_vec4,
                 {si, c, static_cast<uint32_t>(spv::ImageOperandsMask::Bias), *bias});

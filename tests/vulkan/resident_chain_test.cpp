@@ -99,10 +99,27 @@ std::map<std::string, img::Image> host_images(img::Format f, unsigned seed) {
   return host;
 }
 
-class ResidentChain : public ResidentTest, public ::testing::WithParamInterface<img::Format> {};
+// A format, and whether the device reads RGBA8 in place (DeviceOptions::unorm8_in_place:
+// the float copy drawn by an in-place read, else converted by the compute shader).
+struct ChainCase {
+  img::Format format;
+  bool in_place = true;
+};
+
+void PrintTo(const ChainCase& c, std::ostream* os) {
+  *os << img::format_name(c.format) << (c.in_place ? "" : ", compute copy");
+}
+
+class ResidentChain : public ResidentTest, public ::testing::WithParamInterface<ChainCase> {
+protected:
+  const ir::Result<Device*>& acquire_device() override {
+    return GetParam().in_place ? sync_validated_device()
+                               : sync_validated_device<true, true, false>();
+  }
+};
 
 TEST_P(ResidentChain, EqualsDrawPerPassBitForBit) {
-  const img::Format f = GetParam();
+  const img::Format f = GetParam().format;
   const auto& sizes = chain_sizes();
 
   // Old path: host images between passes, Device::draw per pass.
@@ -146,7 +163,7 @@ TEST_P(ResidentChain, EqualsDrawPerPassBitForBit) {
 // constants and textures, so a prepared draw found under the wrong key shows here. Any
 // message of the validation layer (synchronization validation on) fails the test.
 TEST_P(ResidentChain, BatchedFramesOfPreparedDrawsEqualDrawPerPass) {
-  const img::Format f = GetParam();
+  const img::Format f = GetParam().format;
   const auto& sizes = chain_sizes();
   std::map<std::string, img::Image> host = host_images(f, 11);
   std::vector<img::Image> host_d; // "d" after each frame
@@ -195,10 +212,13 @@ TEST_P(ResidentChain, BatchedFramesOfPreparedDrawsEqualDrawPerPass) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Formats, ResidentChain,
-                         ::testing::Values(img::Format::RGBA8, img::Format::RGBA16F,
-                                           img::Format::RGBA32F),
+                         ::testing::Values(ChainCase{img::Format::RGBA8},
+                                           ChainCase{img::Format::RGBA8, false},
+                                           ChainCase{img::Format::RGBA16F},
+                                           ChainCase{img::Format::RGBA32F}),
                          [](const auto& info) {
-                           return std::string(img::format_name(info.param));
+                           return std::string(img::format_name(info.param.format)) +
+                                  (info.param.in_place ? "" : "_compute_copy");
                          });
 
 // Point-samples every texel of `im` (stored in `f`) into an RGBA32F texture on the device.

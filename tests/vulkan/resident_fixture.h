@@ -20,14 +20,16 @@ namespace tierlift::vulkan::test {
 // value of DeviceOptions::llvmpipe_point_sampling (false: RGBA8 point reads compute their
 // index and fetch on lavapipe too, as on every other device) and of
 // DeviceOptions::choose_unorm8_decode (false: the general decode, as where no cheaper one
-// is exact).
-template <bool LlvmpipePointSampling = true, bool ChooseDecode = true>
+// is exact) and of DeviceOptions::unorm8_in_place (false: every RGBA8 read samples the float
+// copy the compute conversion makes, as where no decode is exact).
+template <bool LlvmpipePointSampling = true, bool ChooseDecode = true, bool InPlace = true>
 inline const ir::Result<Device*>& sync_validated_device() {
   static const ir::Result<Device*> shared = [] {
     DeviceOptions o;
     o.synchronization_validation = true;
     o.llvmpipe_point_sampling = LlvmpipePointSampling;
     o.choose_unorm8_decode = ChooseDecode;
+    o.unorm8_in_place = InPlace;
     return program_device(o);
   }();
   return shared;

@@ -7,7 +7,10 @@
 // coordinate (CodegenOptions::point_sampling_floors, lavapipe's default) and the index the
 // shader computes, then a fetch (every other device; DeviceOptions::llvmpipe_point_sampling
 // off); each with the decode the device chose by reading every level (two multiplies on
-// lavapipe) and with the general one (DeviceOptions::choose_unorm8_decode off).
+// lavapipe) and with the general one (DeviceOptions::choose_unorm8_decode off). The float
+// copy other reads sample is drawn by the same in-place read; with in-place reads off
+// (DeviceOptions::unorm8_in_place), every read samples the copy the compute shader converts,
+// and must read the same texels and values.
 #include <cmath>
 #include <limits>
 
@@ -70,7 +73,16 @@ protected:
   }
 };
 
-void reads_the_interpreters_texel_everywhere(Device& dev) {
+// No RGBA8 read in place: every one samples the float copy the compute shader converts from
+// the stored bytes, as on a device where no decode is exact.
+class ResidentComputeCopyTest : public ResidentTest {
+protected:
+  const ir::Result<Device*>& acquire_device() override {
+    return sync_validated_device<true, true, false>();
+  }
+};
+
+void reads_the_interpreters_texel_everywhere(Device& dev, img::Format format = img::Format::RGBA8) {
   const img::Image tex = levels_texture();
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const float inf = std::numeric_limits<float>::infinity();
@@ -86,7 +98,7 @@ void reads_the_interpreters_texel_everywhere(Device& dev) {
   for (const Sweep& s : sweeps) {
     SCOPED_TRACE(s.what);
     const cpu::Pass p = read_pass(s.scale, s.offset, cpu::AddressMode::Clamp);
-    const img::Image vk = draw_reading(dev, tex, img::Format::RGBA8, p, s.w, s.h);
+    const img::Image vk = draw_reading(dev, tex, format, p, s.w, s.h);
     const img::Image cpu = on_cpu(tex, p, s.w, s.h);
     std::string where;
     EXPECT_TRUE(same_bits(cpu, vk, &where)) << where;
@@ -125,6 +137,16 @@ TEST_F(ResidentGeneralDecodeTest, Rgba8PointFetchReadsTheInterpretersTexelEveryw
 TEST_F(ResidentIndexFetchGeneralDecodeTest, Rgba8PointFetchReadsTheInterpretersTexelEverywhere) {
   reads_the_interpreters_texel_everywhere(*dev);
 }
+// The same reads of a texture passes sample as it is (RGBA32F) and, on the device without
+// in-place reads, of RGBA8 through the float copy: the far-outside sweep failed both (texel 0
+// where the interpreter reads the last) until sampled point reads clamped their coordinate
+// (codegen::CodegenOptions::stage_point_clamped).
+TEST_F(ResidentTest, Rgba32fPointReadReadsTheInterpretersTexelEverywhere) {
+  reads_the_interpreters_texel_everywhere(*dev, img::Format::RGBA32F);
+}
+TEST_F(ResidentComputeCopyTest, Rgba8PointReadReadsTheInterpretersTexelEverywhere) {
+  reads_the_interpreters_texel_everywhere(*dev);
+}
 TEST_F(ResidentTest, Rgba8PointFetchGivesKOver255ForEveryLevel) {
   gives_k_over_255_for_every_level(*dev);
 }
@@ -135,6 +157,9 @@ TEST_F(ResidentGeneralDecodeTest, Rgba8PointFetchGivesKOver255ForEveryLevel) {
   gives_k_over_255_for_every_level(*dev);
 }
 TEST_F(ResidentIndexFetchGeneralDecodeTest, Rgba8PointFetchGivesKOver255ForEveryLevel) {
+  gives_k_over_255_for_every_level(*dev);
+}
+TEST_F(ResidentComputeCopyTest, Rgba8ReadsGiveKOver255ForEveryLevel) {
   gives_k_over_255_for_every_level(*dev);
 }
 
@@ -150,6 +175,8 @@ TEST_F(ResidentTest, TheDeviceChoosesTheCheapestExactDecode) {
   }
   ASSERT_TRUE((sync_validated_device<true, false>().ok()));
   EXPECT_EQ((*sync_validated_device<true, false>())->unorm8_reads(), "round and rebuild");
+  ASSERT_TRUE((sync_validated_device<true, true, false>().ok()));
+  EXPECT_EQ((*sync_validated_device<true, true, false>())->unorm8_reads(), "float copy");
 }
 
 } // namespace

@@ -63,6 +63,9 @@ DeviceMemory plan_device(const EffectGraph& g, const std::string& device, bool k
       largest_stored = std::max(largest_stored, stored);
       m.kept += stored;
       if (t.format == img::Format::RGBA16F && sampled.count(t.name)) m.kept += pixels(t) * 16;
+      // RGBA8: the float image (16 bytes a texel), which a device reading RGBA8 in place
+      // draws; one that cannot converts it by compute through two buffers (4 + 16 bytes).
+      // The plan does not know which device runs it and counts the larger.
       if (t.format == img::Format::RGBA8 && copied.count(t.name)) m.kept += pixels(t) * 36;
     }
     // A read: staging in the stored format plus the host image it becomes (before it

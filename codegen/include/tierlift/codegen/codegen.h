@@ -56,6 +56,13 @@ struct CodegenOptions {
   // a few float operations (emit_texture.cpp). The device then binds the RGBA8 image itself.
   // SamplerInfo::fetch_unorm8 says which stages got it.
   std::array<bool, 16> stage_fetch_unorm8{};
+  // Per stage: the stage's sampler is POINT with CLAMP/CLAMP addressing. A 2D read that
+  // samples (every one but a stage_fetch_unorm8 read, which clamps itself) clamps (u, v) to
+  // [0, 1] first, NaN → 0. Inside [0, 1] that changes nothing, and outside every u picks the
+  // edge texel, as CLAMP does; but lavapipe's point sampler turns a u·N beyond the int range
+  // into texel 0 (u = 1e30 read texel 0 of an RGBA32F texture, where the interpreter reads
+  // the last), and a clamped u never gets there.
+  std::array<bool, 16> stage_point_clamped{};
   // How those reads turn the device's value into k/255.0f (unorm8_decode.h): the Vulkan
   // device chooses by reading every level once. The default is right on every device whose
   // value is within a few ulps of k/255.

@@ -231,8 +231,9 @@ ir::Result<std::unique_ptr<Device>> Device::create(const DeviceOptions& options)
   std::unique_ptr<Device> device(new Device(std::move(impl)));
   // Read every RGBA8 level once, undecoded, and keep the cheapest decode that is exact for
   // all of them (codegen/unorm8_decode.h); none exact: RGBA8 reads go through the float copy.
-  if (!options.choose_unorm8_decode) return Created(std::move(device));
   Impl& d = *device->impl_;
+  d.unorm8_in_place = options.unorm8_in_place;
+  if (!options.choose_unorm8_decode || !options.unorm8_in_place) return Created(std::move(device));
   d.unorm8_decode = codegen::Unorm8Decode::None;
   ir::Result<std::vector<float>> levels = read_unorm8_levels(*device);
   if (!levels) return levels.failure();

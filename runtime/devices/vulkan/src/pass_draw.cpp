@@ -119,7 +119,7 @@ struct LayoutSnapshot {
   std::vector<std::pair<Resident*, bool>> shadows;
   void save(Resident& r) {
     saved.emplace_back(&r.stored, r.stored.layout);
-    saved.emplace_back(&r.shadow, r.shadow.layout);
+    if (r.shadow) save(*r.shadow); // its layout, and the draw that fills it changes it
     shadows.emplace_back(&r, r.shadow_current);
   }
   void restore() {
@@ -217,6 +217,7 @@ std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawText
   for (uint32_t s = 0; s < pass::kMaxSamplers; ++s) {
     co.stage_projected[s] = pass.textures[s].stage.projected;
     co.stage_fetch_unorm8[s] = fetches_in_place(d, textures.stages[s], pass.textures[s].sampler);
+    co.stage_point_clamped[s] = pass::point_clamped(pass.textures[s].sampler);
   }
   ir::DiagnosticSink diags;
   auto pair = codegen::compile_pair(*vs_prog, *ps_prog, co, diags);

@@ -3,6 +3,9 @@
 
 #include <fmt/format.h>
 
+#include "pass_draw.h"
+#include "synthetic_programs.h"
+
 namespace tierlift::vulkan {
 namespace {
 
@@ -137,7 +140,7 @@ std::string create_stencil_resident(Device::Impl& d, uint32_t width, uint32_t he
 
 std::string ensure_shadow(Device::Impl& d, Resident& r) {
   if (r.stencil) return "a stencil buffer cannot be sampled";
-  if (r.samples_stored() || r.shadow.image.image != VK_NULL_HANDLE) return {};
+  if (r.samples_stored() || r.shadow) return {};
   const bool unorm8 = r.format == img::Format::RGBA8;
   VkFormatProperties src, dst;
   vkGetPhysicalDeviceFormatProperties(d.physical, vk_format(r.format), &src);
@@ -147,13 +150,23 @@ std::string ensure_shadow(Device::Impl& d, Resident& r) {
   if (!can)
     return fmt::format("the Vulkan device cannot convert {} textures to RGBA32F for sampling",
                        img::format_name(r.format));
-  Image2D shadow;
-  std::string err =
-      create_image(d, r.objects, r.width, r.height, kSampledFormat,
-                   VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, shadow);
-  if (err.empty() && unorm8) err = create_unorm8_scratch(d, r.objects, r.width, r.height, r.unorm8);
+  std::unique_ptr<Resident> shadow;
+  std::shared_ptr<PreparedDraw> draw;
+  std::string err = create_resident(d, r.width, r.height, img::Format::RGBA32F, shadow);
+  if (err.empty() && unorm8 && d.unorm8_in_place) {
+    draw = std::make_shared<PreparedDraw>();
+    DrawTextures textures;
+    textures.stages[0] = &r;
+    textures.target = shadow.get();
+    err = prepare_draw(d, texel_copy_pass(r.width, r.height), textures, *draw);
+    if (err.empty() && !draw->fetched[0]) err = "the RGBA8 shadow's draw does not read in place";
+  } else if (err.empty() && unorm8) {
+    err = create_unorm8_scratch(d, r.objects, r.width, r.height, r.unorm8);
+  }
   if (!err.empty()) return err;
-  r.shadow.image = shadow; // only once complete: a failed call leaves no half-made shadow
+  // Only once complete: a failed call leaves no half-made shadow.
+  r.shadow = std::move(shadow);
+  r.to_shadow = std::move(draw);
   return {};
 }
 
@@ -186,27 +199,30 @@ void record_as_stencil(VkCommandBuffer cb, Resident& r) {
 
 void record_as_sampled(VkCommandBuffer cb, const Device::Impl& d, Resident& r) {
   clear_if_new(cb, r);
-  if (r.format == img::Format::RGBA8 && !r.shadow_current) {
-    transition(cb, r.stored, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
-    transition(cb, r.shadow, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
-    record_unorm8_to_float(cb, d, r.unorm8, r.stored.image.image, r.shadow.image.image, r.width,
-                           r.height);
-    r.shadow_current = true;
-  } else if (!r.samples_stored() && !r.shadow_current) {
-    // NEAREST blit of the same size: every texel converted on its own, no filtering.
-    transition(cb, r.stored, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
-    transition(cb, r.shadow, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
-    VkImageBlit blit{};
-    blit.srcSubresource = blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    blit.srcOffsets[1] =
-        blit.dstOffsets[1] = {static_cast<int32_t>(r.width), static_cast<int32_t>(r.height), 1};
-    vkCmdBlitImage(cb, r.stored.image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                   r.shadow.image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit,
-                   VK_FILTER_NEAREST);
+  if (!r.samples_stored() && !r.shadow_current) {
+    TrackedImage& shadow = r.shadow->stored;
+    if (r.to_shadow) {
+      record_draw(cb, d, *r.to_shadow); // reads r in place, renders the shadow
+    } else if (r.format == img::Format::RGBA8) {
+      transition(cb, r.stored, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+      transition(cb, shadow, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+      record_unorm8_to_float(cb, d, r.unorm8, r.stored.image.image, shadow.image.image, r.width,
+                             r.height);
+    } else {
+      // NEAREST blit of the same size: every texel converted on its own, no filtering.
+      transition(cb, r.stored, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+      transition(cb, shadow, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+      VkImageBlit blit{};
+      blit.srcSubresource = blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+      blit.srcOffsets[1] =
+          blit.dstOffsets[1] = {static_cast<int32_t>(r.width), static_cast<int32_t>(r.height), 1};
+      vkCmdBlitImage(cb, r.stored.image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                     shadow.image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit,
+                     VK_FILTER_NEAREST);
+    }
     r.shadow_current = true;
   }
-  transition(cb, r.samples_stored() ? r.stored : r.shadow,
-             VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+  transition(cb, r.sampled_tracked(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
 }
 
 void record_as_fetched(VkCommandBuffer cb, Resident& r) {

@@ -6,13 +6,21 @@
 // R32G32B32A32_SFLOAT image: lavapipe filters float textures with exact float weights, which
 // is what keeps the CPU device and lavapipe bit-identical (an RGBA8 UNORM texture may be
 // filtered with fixed-point weights). For RGBA32F the stored image is sampled directly; for
-// RGBA8 and RGBA16F a float "shadow" copy is made on the device when a pass samples the
-// texture after it changed, exactly: RGBA16F by a same-size NEAREST blit (every half is a
-// float; measured exact for all 63 490 non-NaN halves), RGBA8 through a table of k/255.0f
-// (unorm8_to_float.h: lavapipe's blit is one ulp off in 126 of 256 levels). A point read of an
-// RGBA8 texture with edge clamping needs no shadow: its shader fetches the stored bytes and
-// converts them exactly itself (record_as_fetched), so the shadow is made only for the other
-// reads (linear filtering, wrap or mirror addressing).
+// RGBA8 and RGBA16F a float "shadow" texture is made on the device when a pass samples the
+// texture after it changed, exactly:
+//   * RGBA16F by a same-size NEAREST blit (every half is a float; measured exact for all
+//     63 490 non-NaN halves);
+//   * RGBA8, on a device whose in-place reads decode exactly (Device::Impl::unorm8_in_place),
+//     by a draw into the shadow that reads each texel in place (synthetic_programs.h:
+//     texel_copy_pass, the same read a point-sampling pass makes);
+//   * RGBA8 elsewhere, through the compute conversion of unorm8_to_float.h (lavapipe's own
+//     blit is one ulp off in 126 of the 256 levels).
+// The draw replaced the compute conversion where it can: the copy to a buffer, the dispatch
+// and the copy back cost lavapipe about 3 ms a frame for the 480×270 glow texture of the
+// 1080p RGBA8 glow (measured by leaving them out), the draw a fraction of one pass.
+// A point read of an RGBA8 texture with edge clamping needs no shadow: its shader fetches the
+// stored bytes and converts them exactly itself (record_as_fetched), so the shadow is made
+// only for the other reads (linear filtering, wrap or mirror addressing).
 #pragma once
 
 #include <cstdint>
@@ -31,6 +39,8 @@ struct TrackedImage {
   VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
 };
 
+struct PreparedDraw; // pass_draw.h
+
 struct Resident {
   uint32_t width = 0, height = 0;
   img::Format format = img::Format::RGBA32F;
@@ -39,14 +49,19 @@ struct Resident {
   // per pixel. `format` is then meaningless.
   bool stencil = false;
   TrackedImage stored;         // in `format`
-  TrackedImage shadow;         // RGBA8 / RGBA16F only, created on first sampling
   bool shadow_current = false; // shadow holds the stored values
-  Unorm8Scratch unorm8;        // RGBA8: what the conversion into the shadow needs
+  Unorm8Scratch unorm8;        // RGBA8 converted by compute: the conversion's buffers
   Cleanup objects;             // owns the Vulkan objects above (destroyed with the texture)
+  // RGBA8 / RGBA16F only, created on first sampling (ensure_shadow): the RGBA32F texture
+  // passes sample, and for RGBA8 read in place the draw that fills it. Declared last so
+  // that the draw goes first, then the shadow, then this texture's own objects.
+  std::unique_ptr<Resident> shadow;
+  std::shared_ptr<PreparedDraw> to_shadow;
 
   bool samples_stored() const { return !stencil && format == img::Format::RGBA32F; }
-  // The image passes sample (valid after prepare_sampled).
-  const Image2D& sampled() const { return samples_stored() ? stored.image : shadow.image; }
+  // The image passes sample and its tracked layout (valid after ensure_shadow).
+  TrackedImage& sampled_tracked() { return samples_stored() ? stored : shadow->stored; }
+  const Image2D& sampled() const { return samples_stored() ? stored.image : shadow->stored.image; }
 };
 
 // A texture of `width` × `height` in `format` (sizes already checked by the caller). Its

@@ -77,4 +77,21 @@ std::shared_ptr<const ir::Program> texel_copy_pixel_program() {
   return p;
 }
 
+pass::Pass texel_copy_pass(uint32_t width, uint32_t height) {
+  pass::Pass p;
+  p.vertex_program = passthrough_vertex_program();
+  p.pixel_program = texel_copy_pixel_program();
+  pass::set_full_screen_quad(p, kPassPosition);
+  for (size_t c = 0; c < p.vertices.size(); ++c) {
+    pass::Vec4 uv = pass::kQuadUV[c];
+    uv[0] += 0.5f / float(width);
+    uv[1] += 0.5f / float(height);
+    p.vertices[c].v[kPassTex] = uv;
+  }
+  pass::SamplerState& s = p.textures[0].sampler;
+  s.filter = pass::Filter::Point;
+  s.address_u = s.address_v = pass::AddressMode::Clamp;
+  return p;
+}
+
 } // namespace tierlift::vulkan

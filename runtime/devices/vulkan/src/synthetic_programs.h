@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "tierlift/ir/program.h"
+#include "tierlift/pass/pass.h"
 
 namespace tierlift::vulkan {
 
@@ -17,5 +18,11 @@ std::shared_ptr<const ir::Program> passthrough_vertex_program();
 std::shared_ptr<const ir::Program> passthrough_pixel_program();
 // ps_2_0: dcl t0; dcl_2d s0; texld r0, t0, s0; mov oC0, r0.
 std::shared_ptr<const ir::Program> texel_copy_pixel_program();
+
+// The pass that copies texel (i, j) of its stage-0 texture to pixel (i, j) of a target of
+// `width` × `height` texels: the full-screen quad, whose uv at pixel i is i/width (D3D9
+// centres), plus half a texel, read by texel_copy_pixel_program through a POINT sampler with
+// CLAMP addressing. An RGBA8 texture is thus read in place (its stored bytes, decoded).
+pass::Pass texel_copy_pass(uint32_t width, uint32_t height);
 
 } // namespace tierlift::vulkan

@@ -14,21 +14,8 @@ ir::Result<std::vector<float>> read_unorm8_levels(Device& device) {
     for (uint32_t c = 0; c < 4; ++c)
       levels.rgba[p * 4 + c] = rounding::unorm8_levels()[(p + 64 * c) % 256];
 
-  // Pixel (i, j) reads texel (i, j) at its centre: the quad's uv (i/16 at pixel i, D3D9
-  // centres) plus half a texel, through a POINT, CLAMP/CLAMP sampler (the in-place read).
-  pass::Pass p;
-  p.vertex_program = passthrough_vertex_program();
-  p.pixel_program = texel_copy_pixel_program();
-  pass::set_full_screen_quad(p, kPassPosition);
-  for (size_t c = 0; c < p.vertices.size(); ++c) {
-    pass::Vec4 uv = pass::kQuadUV[c];
-    uv[0] += 0.5f / kSide;
-    uv[1] += 0.5f / kSide;
-    p.vertices[c].v[kPassTex] = uv;
-  }
-  pass::SamplerState& s = p.textures[0].sampler;
-  s.filter = pass::Filter::Point;
-  s.address_u = s.address_v = pass::AddressMode::Clamp;
+  // Pixel (i, j) reads texel (i, j) at its centre, in place (undecoded while probing).
+  const pass::Pass p = texel_copy_pass(kSide, kSide);
 
   TextureSet set(device);
   ir::Result<TextureId> src = set.create(kSide, kSide, img::Format::RGBA8);

@@ -1,5 +1,6 @@
 // Internal: the exact RGBA8 UNORM → R32G32B32A32_SFLOAT conversion behind a sampled RGBA8
-// texture's float copy (resident.h).
+// texture's float copy on a device whose in-place reads no decode makes exact
+// (DeviceOptions::unorm8_in_place; elsewhere a draw fills the copy, resident.h).
 //
 // Why not vkCmdBlitImage (which serves RGBA16F exactly): lavapipe's blit converts UNORM8 as
 // k · fl(1/255), which differs from the correctly rounded k/255 in 126 of the 256 levels by

@@ -70,6 +70,12 @@ struct DeviceOptions {
   // with the cheapest decode exact for all of them (unorm8_reads()). false: the general
   // decode on every device, nothing read (tests cover both on lavapipe).
   bool choose_unorm8_decode = true;
+  // Read RGBA8 texels in place and decode them: point reads with edge clamping fetch the
+  // stored bytes, and the float copy every other read samples is drawn by such a read.
+  // false: neither, every RGBA8 read samples a float copy converted from the stored bytes by
+  // a compute shader, as on a device where no decode is exact (unorm8_reads() "float copy";
+  // tests cover it on lavapipe).
+  bool unorm8_in_place = true;
   // Called once when the device is destroyed, after vkDestroyDevice and vkDestroyInstance,
   // with every message not cleared before. With `validation` these include the layer's
   // report of Vulkan objects created and never destroyed (it checks at both calls); tests
