@@ -53,16 +53,21 @@ bool Emitter::fetches(uint32_t stage) const {
   return opt.stage_fetch_unorm8[stage & 15] && sampler_type(stage) == ir::SamplerType::Tex2D;
 }
 
-Id Emitter::point_texel_unorm8(Id si, Id uv) {
+Id Emitter::clamp_uv01(Id uv) {
   const Id zero2 = b.const_composite(t_vec2, std::array{f(0), f(0)});
   const Id one2 = b.const_composite(t_vec2, std::array{f(1), f(1)});
+  return b.ext_inst(glsl, t_vec2, GLSLstd450NClamp, std::array{uv, zero2, one2});
+}
+
+Id Emitter::point_texel_unorm8(Id si, Id uv) {
   if (opt.point_sampling_floors) {
     // The device's own point sampler picks the interpreter's texel for u in [0, 1]; outside,
     // the edge texel is the one u = 0 or 1 picks, and NClamp sends a NaN to 0 as point_texel
     // does (NMax returns the other operand).
-    const Id in_range = b.ext_inst(glsl, t_vec2, GLSLstd450NClamp, std::array{uv, zero2, one2});
-    return b.op(Op::OpImageSampleImplicitLod, t_vec4, {si, in_range});
+    return b.op(Op::OpImageSampleImplicitLod, t_vec4, {si, clamp_uv01(uv)});
   }
+  const Id zero2 = b.const_composite(t_vec2, std::array{f(0), f(0)});
+  const Id one2 = b.const_composite(t_vec2, std::array{f(1), f(1)});
   // The texel index point sampling takes on each axis: floor(fl32(u·N)) (one float multiply,
   // as the interpreter's point_texel), NaN → 0, clamped to [0, N − 1] (CLAMP addressing).
   b.capability(spv::Capability::ImageQuery);
@@ -113,11 +118,9 @@ Id Emitter::sample(uint32_t stage, Id coord, std::optional<Id> bias) {
              : b.op(Op::OpVectorShuffle, t_vec3, {coord, coord, 0, 1, 2});
   // A bias changes nothing there: one mip level, POINT both ways.
   if (fetches(stage)) return fetch_unorm8(si, c);
-  if (type == ir::SamplerType::Tex2D && opt.stage_point_clamped[stage & 15]) {
-    const Id zero2 = b.const_composite(t_vec2, std::array{f(0), f(0)});
-    const Id one2 = b.const_composite(t_vec2, std::array{f(1), f(1)});
-    c = b.ext_inst(glsl, t_vec2, GLSLstd450NClamp, std::array{c, zero2, one2});
-  }
+  // A POINT/CLAMP read at the clamped coordinate: the same texel, and no u·N that
+  // overflows the device's conversion to an index (CodegenOptions::stage_point_clamped).
+  if (type == ir::SamplerType::Tex2D && opt.stage_point_clamped[stage & 15]) c = clamp_uv01(c);
   if (bias)
     return b.op(Op::OpImageSampleImplicitLod, t_vec4,
                 {si, c, static_cast<uint32_t>(spv::ImageOperandsMask::Bias), *bias});

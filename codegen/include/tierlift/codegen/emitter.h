@@ -164,6 +164,7 @@ public:
   bool fetches(uint32_t stage) const;               // CodegenOptions::stage_fetch_unorm8 applies
   Id fetch_unorm8(Id sampled_image, Id coord_vec2); // the texel's k/255.0f
   Id point_texel_unorm8(Id sampled_image, Id coord_vec2); // its UNORM value, as the device has it
+  Id clamp_uv01(Id coord_vec2); // NClamp(uv, 0, 1): u in [0, 1] kept, NaN → 0
   void kill_if_any_negative(Id value, int components);
   Id texcoord_input(uint32_t m); // TC(m)
   Id pad_value_[2] = {0, 0};     // texm3x2pad / texm3x3pad results (u', v')
