@@ -89,6 +89,8 @@ VkBufferImageCopy whole_image(const Resident& r) {
 
 } // namespace
 
+Resident::~Resident() = default;
+
 std::string create_resident(Device::Impl& d, uint32_t width, uint32_t height, img::Format format,
                             std::unique_ptr<Resident>& out) {
   auto r = std::make_unique<Resident>();
@@ -151,10 +153,10 @@ std::string ensure_shadow(Device::Impl& d, Resident& r) {
     return fmt::format("the Vulkan device cannot convert {} textures to RGBA32F for sampling",
                        img::format_name(r.format));
   std::unique_ptr<Resident> shadow;
-  std::shared_ptr<PreparedDraw> draw;
+  std::unique_ptr<PreparedDraw> draw;
   std::string err = create_resident(d, r.width, r.height, img::Format::RGBA32F, shadow);
   if (err.empty() && unorm8 && d.unorm8_in_place) {
-    draw = std::make_shared<PreparedDraw>();
+    draw = std::make_unique<PreparedDraw>();
     DrawTextures textures;
     textures.stages[0] = &r;
     textures.target = shadow.get();
