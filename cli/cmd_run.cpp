@@ -243,6 +243,8 @@ int run(const RunFlags& f) {
   bool listings_ok = true;
   for (auto* l : {&vs, &ps}) {
     if (!*l) continue;
+    if ((*l)->program && !check_executable(**l, want_cpu ? "the interpreter" : "SPIR-V"))
+      listings_ok = false;
     report.diagnostics((*l)->diags, (*l)->sources);
     listings_ok = listings_ok && (*l)->program && !(*l)->diags.has_errors();
   }

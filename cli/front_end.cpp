@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "tierlift/io/output_file.h"
+#include "tierlift/ir/passes.h"
 #include "tierlift/ir/profile.h"
 #include "tierlift/ir/result_diagnostics.h"
 
@@ -25,7 +26,8 @@ void add_front_end_options(CLI::App* sub, FrontEndOptions& o, bool skip_validati
       ->allow_extra_args(false);
   sub->add_option("--profile", o.profile,
                   "Validate against this profile instead of the listing's version line "
-                  "(vs_1_1 vs_2_0 ps_1_1 ps_1_2 ps_1_3 ps_1_4 ps_2_0)");
+                  "(vs_1_1 vs_2_0 vs_2_x vs_3_0 ps_1_1 ps_1_2 ps_1_3 ps_1_4 ps_2_0 ps_2_x "
+                  "ps_3_0, or the fxc targets ps_2_a ps_2_b vs_2_a for the 2.x caps)");
   if (json_flag)
     sub->add_flag("--json", o.json,
                   "Print one JSON document on standard output (docs/command-line.md)");
@@ -72,18 +74,25 @@ ir::Result<LoadedListing> load_listing(const std::string& path, const FrontEndOp
   // Visual Studio saves listings with a UTF-8 byte-order mark; it is not part of the text.
   if (text->starts_with("\xEF\xBB\xBF")) text->erase(0, 3);
   std::optional<ir::Profile> target;
+  std::optional<ir::Caps2x> caps;
   if (!options.profile.empty()) {
     target = ir::parse_profile(options.profile);
+    if (auto preset = ir::caps_preset(options.profile)) {
+      target = preset->first;
+      caps = preset->second;
+    }
     if (!target)
       return ir::fail(path, "io",
-                      fmt::format("unknown profile '{}' (expected one of vs_1_1 vs_2_0 ps_1_1 "
-                                  "ps_1_2 ps_1_3 ps_1_4 ps_2_0)",
+                      fmt::format("unknown profile '{}' (expected one of vs_1_1 vs_2_0 vs_2_x "
+                                  "vs_2_a vs_3_0 ps_1_1 ps_1_2 ps_1_3 ps_1_4 ps_2_0 ps_2_x "
+                                  "ps_2_a ps_2_b ps_3_0)",
                                   options.profile));
   }
   as::LoadOptions lopts;
   lopts.parse.defines = split_defines(options.defines);
   lopts.parse.include_dirs = options.include_dirs;
   lopts.profile = target;
+  lopts.caps = caps;
   lopts.skip_validation = options.skip_validation;
   lopts.strict = options.strict;
   uint32_t file = out.sources.add(path == "-" ? "<stdin>" : path, std::move(*text));
@@ -93,6 +102,14 @@ ir::Result<LoadedListing> load_listing(const std::string& path, const FrontEndOp
   ir::add_all(out.diags, r.program.diagnostics());
   if (r.program) out.program = std::move(r.program).value();
   return out;
+}
+
+bool check_executable(LoadedListing& listing, std::string_view backend) {
+  if (!listing.program) return false;
+  ir::Status s = ir::check_executable(*listing.program, backend);
+  if (s) return true;
+  ir::add_all(listing.diags, s.diagnostics());
+  return false;
 }
 
 nlohmann::json diagnostics_json(const LoadedListing& listing) {

@@ -55,6 +55,11 @@ struct LoadedListing {
 ir::Result<LoadedListing> load_listing(const std::string& path, const FrontEndOptions& options,
                                        const io::ReadCap& cap = io::kListingCap);
 
+// True when `backend` ("the interpreter", "SPIR-V") can run the listing's program; otherwise
+// adds its positioned "not-supported" error to the listing's diagnostics (shader models 2.x
+// and 3.0 are checked, printed and assembled, not yet executed).
+bool check_executable(LoadedListing& listing, std::string_view backend);
+
 // OK when `output` ("-" = standard output) may be written: it is none of `inputs` (same
 // device and inode). Commands check this before doing any work, so nothing is touched.
 ir::Status output_conflict(const std::string& output, const std::vector<std::string>& inputs);

@@ -16,6 +16,10 @@ std::optional<ShaderModule> compile(const ir::Program& program, const CodegenOpt
     ir::add_all(diags, s.diagnostics());
     return std::nullopt;
   }
+  if (ir::Status s = ir::check_executable(program, "SPIR-V"); !s) {
+    ir::add_all(diags, s.diagnostics());
+    return std::nullopt;
+  }
   EmitPlan plan;
   Emitter emitter(program, options, plan, diags);
   return emitter.run();

@@ -69,10 +69,11 @@ std::optional<CompiledPair> compile_pair(const ir::Program& vs, const ir::Progra
     return std::nullopt;
   }
   for (const ir::Program* p : {&vs, &ps})
-    if (ir::Status s = ir::validate_ir(*p); !s) { // as compile() does, before any analysis
-      ir::add_all(diags, s.diagnostics());
-      return std::nullopt;
-    }
+    for (ir::Status s : {ir::validate_ir(*p), ir::check_executable(*p, "SPIR-V")})
+      if (!s) { // as compile() does, before any analysis
+        ir::add_all(diags, s.diagnostics());
+        return std::nullopt;
+      }
   CompiledPair pair;
   EmitPlan ps_plan;
   ps_plan.skip = ir::dead_instructions(ps, ir::pixel_live_out(ps));

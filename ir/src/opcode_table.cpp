@@ -1,5 +1,7 @@
 // The one opcode table. Columns of `slots`: vs_1_1 vs_2_0 ps_1_1 ps_1_2 ps_1_3 ps_1_4 ps_2_0;
-// "no" = not legal there. Slot costs are the ISA's (macros at their expanded size). The
+// "no" = not legal there. The columns of the 2.x and 3.0 profiles (vs_2_x ps_2_x vs_3_0
+// ps_3_0) follow vs_2_0 and ps_2_0 unless kLaterColumns says otherwise; the rows only
+// those profiles have (after DefB) give them with later(). Slot costs are the ISA's (macros at their expanded size). The
 // semantic columns (matrix rows, written components, source lanes, sampling, implicit
 // reads and writes) are added by the wrappers around a row; semantics.h answers from them.
 #include <algorithm>
@@ -30,7 +32,23 @@ constexpr Row row(Opcode op, std::string_view mn, uint16_t code, OpClass cls, bo
               cls,   dst,         0,      {K::None, K::None, K::None, K::None},
               slots, extra_arith, summary};
   for (K k : srcs) info.src[info.num_src++] = k;
+  // vs_2_x and vs_3_0 start from vs_2_0, ps_2_x and ps_3_0 from ps_2_0.
+  constexpr int vs20 = profile_index(Profile::vs_2_0), ps20 = profile_index(Profile::ps_2_0);
+  info.slots[profile_index(Profile::vs_2_x)] = info.slots[vs20];
+  info.slots[profile_index(Profile::vs_3_0)] = info.slots[vs20];
+  info.slots[profile_index(Profile::ps_2_x)] = info.slots[ps20];
+  info.slots[profile_index(Profile::ps_3_0)] = info.slots[ps20];
   return Row{info, OpSemantics{}};
+}
+
+// The slot costs in vs_2_x, ps_2_x, vs_3_0, ps_3_0 (in that order).
+using Later = std::array<int8_t, 4>;
+constexpr Row later(Row r, Later cols) {
+  r.info.slots[profile_index(Profile::vs_2_x)] = cols[0];
+  r.info.slots[profile_index(Profile::ps_2_x)] = cols[1];
+  r.info.slots[profile_index(Profile::vs_3_0)] = cols[2];
+  r.info.slots[profile_index(Profile::ps_3_0)] = cols[3];
+  return r;
 }
 
 // Semantic columns, applied to a row: row(...) then these (each returns the amended row).
@@ -87,6 +105,7 @@ constexpr auto A = OpClass::Arith;
 constexpr auto T = OpClass::Texture;
 constexpr auto F = OpClass::Flow;
 constexpr auto D = OpClass::Decl;
+constexpr S none{no, no, no, no, no, no, no};
 constexpr K V = K::Vector;
 constexpr K Sc = K::Scalar;
 
@@ -174,14 +193,78 @@ constexpr Row kRows[] = {
   row(Opcode::Def,      "def",         0x51, D, true,  {},                 {0,  0,  0,  0,  0,  0,  0},  "float constant"),
   row(Opcode::DefI,     "defi",        0x30, D, true,  {},                 {no, 0, no, no, no, no, no},  "integer constant"),
   row(Opcode::DefB,     "defb",        0x2F, D, true,  {},                 {no, 0, no, no, no, no, no},  "boolean constant"),
+
+  //                                                                                          vs2x p2x vs30 p30
+  writes(later(row(Opcode::SinCos3,  "sincos",      0x25, A, true,  {Sc},     none, "d.x = cos, d.y = sin (one source)"), {no, no, 8, 8}), 0x3),
+  later(row(Opcode::Break,    "break",       0x2C, F, false, {},       none, "leave the loop or rep"),                {1,  1,  1,  1}),
+  later(row(Opcode::BreakGt,  "break_gt",    0x2D, F, false, {V, V},   none, "break if s0 > s1", 1),                 {3,  3,  3,  3}),
+  later(row(Opcode::BreakEq,  "break_eq",    0x2D, F, false, {V, V},   none, "break if s0 == s1", 2),                {3,  3,  3,  3}),
+  later(row(Opcode::BreakGe,  "break_ge",    0x2D, F, false, {V, V},   none, "break if s0 >= s1", 3),                {3,  3,  3,  3}),
+  later(row(Opcode::BreakLt,  "break_lt",    0x2D, F, false, {V, V},   none, "break if s0 < s1", 4),                 {3,  3,  3,  3}),
+  later(row(Opcode::BreakNe,  "break_ne",    0x2D, F, false, {V, V},   none, "break if s0 != s1", 5),                {3,  3,  3,  3}),
+  later(row(Opcode::BreakLe,  "break_le",    0x2D, F, false, {V, V},   none, "break if s0 <= s1", 6),                {3,  3,  3,  3}),
+  later(row(Opcode::BreakP,   "breakp",      0x60, F, false, {K::Predicate}, none, "break if the predicate"),        {3,  3,  3,  3}),
+  later(row(Opcode::IfGt,     "if_gt",       0x29, F, false, {V, V},   none, "if s0 > s1", 1),                       {3,  3,  3,  3}),
+  later(row(Opcode::IfEq,     "if_eq",       0x29, F, false, {V, V},   none, "if s0 == s1", 2),                      {3,  3,  3,  3}),
+  later(row(Opcode::IfGe,     "if_ge",       0x29, F, false, {V, V},   none, "if s0 >= s1", 3),                      {3,  3,  3,  3}),
+  later(row(Opcode::IfLt,     "if_lt",       0x29, F, false, {V, V},   none, "if s0 < s1", 4),                       {3,  3,  3,  3}),
+  later(row(Opcode::IfNe,     "if_ne",       0x29, F, false, {V, V},   none, "if s0 != s1", 5),                      {3,  3,  3,  3}),
+  later(row(Opcode::IfLe,     "if_le",       0x29, F, false, {V, V},   none, "if s0 <= s1", 6),                      {3,  3,  3,  3}),
+  later(row(Opcode::SetpGt,   "setp_gt",     0x5E, A, true,  {V, V},   none, "p0 = s0 > s1 per component", 1),       {1,  1,  1,  1}),
+  later(row(Opcode::SetpEq,   "setp_eq",     0x5E, A, true,  {V, V},   none, "p0 = s0 == s1 per component", 2),      {1,  1,  1,  1}),
+  later(row(Opcode::SetpGe,   "setp_ge",     0x5E, A, true,  {V, V},   none, "p0 = s0 >= s1 per component", 3),      {1,  1,  1,  1}),
+  later(row(Opcode::SetpLt,   "setp_lt",     0x5E, A, true,  {V, V},   none, "p0 = s0 < s1 per component", 4),       {1,  1,  1,  1}),
+  later(row(Opcode::SetpNe,   "setp_ne",     0x5E, A, true,  {V, V},   none, "p0 = s0 != s1 per component", 5),      {1,  1,  1,  1}),
+  later(row(Opcode::SetpLe,   "setp_le",     0x5E, A, true,  {V, V},   none, "p0 = s0 <= s1 per component", 6),      {1,  1,  1,  1}),
+  samples(lanes(later(row(Opcode::TexLdL,   "texldl",      0x5F, T, true,  {V, K::Sampler}, none, "d = sample at lod src.w"), {no, no, 2, 2}), LaneRule::CoordinateW)),
+  samples(lanes(later(row(Opcode::TexLdD,   "texldd",      0x5D, T, true,  {V, K::Sampler, V, V}, none, "d = sample with gradients s2, s3"), {no, 3, no, 3}), LaneRule::Coordinate)),
+  later(row(Opcode::Dsx,      "dsx",         0x5B, A, true,  {V},      none, "d = rate of change along x"),           {no, 2, no, 2}),
+  later(row(Opcode::Dsy,      "dsy",         0x5C, A, true,  {V},      none, "d = rate of change along y"),           {no, 2, no, 2}),
 };
 // clang-format on
 
 static_assert(std::size(kRows) == kOpcodeCount, "one row per Opcode");
 
+// Rows of the first seven profiles whose 2.x / 3.0 columns differ from vs_2_0 / ps_2_0:
+// ps_2_x and ps_3_0 have static flow control (loop and aL in ps_3_0 only), i# and b#;
+// 3.0's sincos takes one source (SinCos3).
+struct LaterColumns {
+  Opcode op;
+  Later cols; // vs_2_x ps_2_x vs_3_0 ps_3_0
+};
+// clang-format off
+constexpr LaterColumns kLaterColumns[] = {
+  {Opcode::SinCos,  {8,  8, no, no}},
+  {Opcode::Call,    {2,  2,  2,  2}},
+  {Opcode::CallNz,  {3,  3,  3,  3}},
+  {Opcode::Loop,    {3, no,  3,  3}},
+  {Opcode::Ret,     {1,  1,  1,  1}},
+  {Opcode::EndLoop, {2, no,  2,  2}},
+  {Opcode::Label,   {0,  0,  0,  0}},
+  {Opcode::Rep,     {3,  3,  3,  3}},
+  {Opcode::EndRep,  {2,  2,  2,  2}},
+  {Opcode::If,      {3,  3,  3,  3}},
+  {Opcode::Else,    {1,  1,  1,  1}},
+  {Opcode::EndIf,   {1,  1,  1,  1}},
+  {Opcode::DefI,    {0,  0,  0,  0}},
+  {Opcode::DefB,    {0,  0,  0,  0}},
+};
+// clang-format on
+
+constexpr std::array<Row, kOpcodeCount> with_later_columns() {
+  std::array<Row, kOpcodeCount> out{};
+  for (size_t i = 0; i < kOpcodeCount; ++i) out[i] = kRows[i];
+  for (const LaterColumns& l : kLaterColumns) {
+    Row& r = out[static_cast<size_t>(l.op)];
+    r = later(r, l.cols);
+  }
+  return out;
+}
+constexpr auto kAllRows = with_later_columns();
+
 template <class T, class Pick> constexpr std::array<T, kOpcodeCount> column(Pick pick) {
   std::array<T, kOpcodeCount> out{};
-  for (size_t i = 0; i < kOpcodeCount; ++i) out[i] = pick(kRows[i]);
+  for (size_t i = 0; i < kOpcodeCount; ++i) out[i] = pick(kAllRows[i]);
   return out;
 }
 constexpr auto kTable = column<OpInfo>([](const Row& r) { return r.info; });

@@ -30,15 +30,18 @@ namespace {
 bool same(const InstrMods& a, const InstrMods& b) {
   return a.sat == b.sat && a.pp == b.pp && a.centroid == b.centroid && a.shift == b.shift;
 }
+bool same(const std::optional<RelAddr>& a, const std::optional<RelAddr>& b) {
+  if (a.has_value() != b.has_value()) return false;
+  return !a || (a->file == b->file && a->component == b->component &&
+                a->token_swizzle() == b->token_swizzle());
+}
 bool same(const DstOperand& a, const DstOperand& b) {
-  return a.file == b.file && a.index == b.index && a.mask == b.mask;
+  return a.file == b.file && a.index == b.index && a.mask == b.mask && same(a.rel, b.rel);
 }
 bool same(const SrcOperand& a, const SrcOperand& b) {
   if (a.file != b.file || a.index != b.index || a.swizzle != b.swizzle || a.mod != b.mod)
     return false;
-  if (a.rel.has_value() != b.rel.has_value()) return false;
-  return !a.rel || (a.rel->file == b.rel->file && a.rel->component == b.rel->component &&
-                    a.rel->token_swizzle() == b.rel->token_swizzle());
+  return same(a.rel, b.rel);
 }
 
 std::string where(const SourceLoc& loc) {
@@ -76,6 +79,8 @@ std::string ir_difference(const Program& a, const Program& b) {
     if (x.op != y.op) return fmt::format("instruction {} opcode differs{}", i + 1, where(x.loc));
     if (!same(x.mods, y.mods) || x.coissue != y.coissue)
       return fmt::format("instruction {} modifiers differ{}", i + 1, where(x.loc));
+    if (x.pred.has_value() != y.pred.has_value() || (x.pred && !same(*x.pred, *y.pred)))
+      return fmt::format("instruction {} predicate differs{}", i + 1, where(x.loc));
     if (x.dst.has_value() != y.dst.has_value() || (x.dst && !same(*x.dst, *y.dst)))
       return fmt::format("instruction {} destination differs{}", i + 1, where(x.loc));
     if (x.src.size() != y.src.size())

@@ -21,11 +21,15 @@ uint8_t bytecode_regtype(RegFile f) {
   case RegFile::ConstBool: return 14;
   case RegFile::Loop: return 15;
   case RegFile::Label: return 18;
+  case RegFile::Output: return 6;
+  case RegFile::Predicate: return 19;
+  case RegFile::Misc: return 17;
   }
   return 0;
 }
 
-std::optional<RegFile> regfile_from_bytecode(uint8_t type, ShaderStage stage) {
+std::optional<RegFile> regfile_from_bytecode(uint8_t type, Profile profile) {
+  const ShaderStage stage = stage_of(profile);
   switch (type) {
   case 0: return RegFile::Temp;
   case 1: return RegFile::Input;
@@ -33,14 +37,16 @@ std::optional<RegFile> regfile_from_bytecode(uint8_t type, ShaderStage stage) {
   case 3: return stage == ShaderStage::Vertex ? RegFile::Addr : RegFile::Texture;
   case 4: return RegFile::RastOut;
   case 5: return RegFile::AttrOut;
-  case 6: return RegFile::TexCrdOut;
+  case 6: return profile == Profile::vs_3_0 ? RegFile::Output : RegFile::TexCrdOut;
   case 7: return RegFile::ConstInt;
   case 8: return RegFile::ColorOut;
   case 9: return RegFile::DepthOut;
   case 10: return RegFile::Sampler;
   case 14: return RegFile::ConstBool;
   case 15: return RegFile::Loop;
+  case 17: return RegFile::Misc;
   case 18: return RegFile::Label;
+  case 19: return RegFile::Predicate;
   default: return std::nullopt;
   }
 }
@@ -62,6 +68,9 @@ std::string register_name(RegFile f, uint32_t index) {
   case RegFile::ConstBool: return fmt::format("b{}", index);
   case RegFile::Loop: return "aL";
   case RegFile::Label: return fmt::format("l{}", index);
+  case RegFile::Output: return fmt::format("o{}", index);
+  case RegFile::Predicate: return fmt::format("p{}", index);
+  case RegFile::Misc: return index == kMiscPosition ? "vPos" : "vFace";
   }
   return "?";
 }

@@ -57,6 +57,7 @@ private:
 
   uint32_t dst_token(const ir::DstOperand& d, const ir::InstrMods& mods) {
     check_register(d.file, d.index, d.loc);
+    if (d.rel) problem(d.loc, "relative destination outside an instruction");
     if ((d.mask & ir::kFullMask) == 0) problem(d.loc, "empty write mask");
     // x2/x4/x8 and d2/d4/d8 only: the reader rejects the other values of the 4-bit field.
     if (mods.shift < -3 || mods.shift > 3)
@@ -79,8 +80,8 @@ private:
       return;
     }
     body.push_back(tok | bc::kRelativeBit);
-    if (p_.stage() != ir::ShaderStage::Vertex) {
-      problem(s.loc, "pixel shaders have no relative addressing");
+    if (p_.stage() != ir::ShaderStage::Vertex && p_.profile != ir::Profile::ps_3_0) {
+      problem(s.loc, "pixel shaders before ps_3_0 have no relative addressing");
       return;
     }
     if (!sm2()) {
@@ -89,15 +90,36 @@ private:
         problem(s.rel->loc, "vs_1_1 relative addressing can only use a0.x");
       return;
     }
-    if (s.rel->file != RegFile::Addr && s.rel->file != RegFile::Loop)
-      problem(s.rel->loc, "relative addressing needs a0 or aL");
-    if (s.rel->component > 3) problem(s.rel->loc, "relative component out of range");
-    body.push_back(register_bits(s.rel->file, 0) |
-                   (uint32_t{s.rel->token_swizzle()} << bc::kSwizzleShift));
+    address_token(*s.rel, body);
   }
 
-  void emit(const ir::OpInfo& info, bool coissue, const std::vector<uint32_t>& body) {
+  // SM2+: the token after a relative operand names a0 (with its swizzle) or aL.
+  void address_token(const ir::RelAddr& rel, std::vector<uint32_t>& body) {
+    if (rel.file != RegFile::Addr && rel.file != RegFile::Loop)
+      problem(rel.loc, "relative addressing needs a0 or aL");
+    if (rel.component > 3) problem(rel.loc, "relative component out of range");
+    body.push_back(register_bits(rel.file, 0) | (uint32_t{rel.token_swizzle()} << bc::kSwizzleShift));
+  }
+
+  // The destination, and the address token of o[a0.x + n] (vs_3_0).
+  void dst_tokens(const ir::DstOperand& d, const ir::InstrMods& mods, std::vector<uint32_t>& body) {
+    ir::DstOperand plain = d;
+    plain.rel.reset();
+    uint32_t tok = dst_token(plain, mods);
+    if (!d.rel) {
+      body.push_back(tok);
+      return;
+    }
+    body.push_back(tok | bc::kRelativeBit);
+    if (p_.profile != ir::Profile::vs_3_0)
+      problem(d.loc, "only vs_3_0 addresses a destination relatively");
+    address_token(*d.rel, body);
+  }
+
+  void emit(const ir::OpInfo& info, bool coissue, const std::vector<uint32_t>& body,
+            bool predicated = false) {
     uint32_t tok = uint32_t{info.code} | (uint32_t{info.control} << bc::kControlShift);
+    if (predicated) tok |= bc::kPredicatedBit;
     // The longest body is 7 tokens (three relative sources), far below the 4-bit limit.
     if (sm2()) tok |= (static_cast<uint32_t>(body.size()) << bc::kLengthShift) & bc::kLengthMask;
     if (coissue) tok |= bc::kCoissueBit;
@@ -121,9 +143,17 @@ private:
                                    ins.dst ? "a destination and " : "", ins.src.size()));
     if (ins.coissue && !ir::is_ps1x(p_.profile)) problem(ins.loc, "co-issue exists only in ps_1_x");
     std::vector<uint32_t> body;
-    if (ins.dst) body.push_back(dst_token(*ins.dst, ins.mods));
+    if (ins.dst) dst_tokens(*ins.dst, ins.mods, body);
+    // A predicated instruction carries p0 (its swizzle, ! as SrcMod::Not) right after the
+    // destination (Wine's d3dcompiler asm tests: "(!p0) add r2, r2, r3").
+    if (ins.pred) {
+      if (!ir::has_predication(p_.profile))
+        problem(ins.pred->loc, "predicated instructions need vs_2_x, ps_2_x or a 3.0 profile");
+      if (ins.pred->rel) problem(ins.pred->loc, "a predicate is not addressed relatively");
+      src_tokens(*ins.pred, body);
+    }
     for (const auto& s : ins.src) src_tokens(s, body);
-    emit(info, ins.coissue, body);
+    emit(info, ins.coissue, body, ins.pred.has_value());
   }
 
   void declaration(const ir::Declaration& d) {
@@ -133,15 +163,20 @@ private:
     if (d.reg.file == RegFile::Sampler) {
       usage |= (uint32_t{static_cast<uint8_t>(d.sampler_type)} << bc::kSamplerTypeShift) &
                bc::kSamplerTypeMask;
-    } else if (p_.stage() == ir::ShaderStage::Vertex) {
-      // Vertex inputs carry their semantic; ps_2_0 v#/t# carry usage 0 (Microsoft's layout).
+    } else if (p_.stage() == ir::ShaderStage::Vertex ||
+               (p_.profile == ir::Profile::ps_3_0 && d.reg.file == RegFile::Input)) {
+      // Vertex inputs and outputs and ps_3_0 inputs carry their semantic; ps_2_0 v#/t# and
+      // ps_3_0 vPos/vFace carry usage 0 (Microsoft's layout).
       if (d.usage_index > 15) problem(d.loc, "usage index above 15");
       usage |= (uint32_t{static_cast<uint8_t>(d.usage)} & bc::kUsageMask) |
                ((uint32_t{d.usage_index} << bc::kUsageIndexShift) & bc::kUsageIndexMask);
     }
-    bool ps_input = p_.stage() == ir::ShaderStage::Pixel && d.reg.file != RegFile::Sampler;
+    // ps_3_0 samplers take _pp / _centroid too (D3DAssemble writes them; Wine's asm tests).
+    bool ps_input = p_.stage() == ir::ShaderStage::Pixel &&
+                    (d.reg.file != RegFile::Sampler || p_.profile == ir::Profile::ps_3_0);
     if (d.mods.sat || d.mods.shift != 0 || (!ps_input && (d.mods.pp || d.mods.centroid)))
-      problem(d.loc, "only ps_2_0 v#/t# declarations take modifiers (_pp, _centroid)");
+      problem(d.loc, "only pixel-shader declarations take modifiers (_pp, _centroid)");
+    if (d.reg.rel) problem(d.loc, "a declaration names one register");
     emit(info, false, {usage, dst_token(d.reg, d.mods)});
   }
 

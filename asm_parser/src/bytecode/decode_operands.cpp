@@ -14,7 +14,9 @@ bool nameable(ir::RegFile file, uint32_t index) {
   case ir::RegFile::RastOut: return index <= ir::kRastPts;
   case ir::RegFile::Addr:
   case ir::RegFile::DepthOut:
+  case ir::RegFile::Predicate:
   case ir::RegFile::Loop: return index == 0;
+  case ir::RegFile::Misc: return index <= ir::kMiscFace;
   default: return true;
   }
 }
@@ -27,7 +29,7 @@ bool TokenReader::param_common(uint32_t tok, size_t at, const char* what, ir::Re
     return fail(at, fmt::format("{} token without bit 31 (operand missing?)", what));
   if (tok & kParamReserved) return fail(at, fmt::format("reserved bits 14-15 set in {}", what));
   uint8_t type = decode_regtype(tok);
-  auto f = ir::regfile_from_bytecode(type, p_.stage());
+  auto f = ir::regfile_from_bytecode(type, p_.profile);
   if (!f) return fail(at, fmt::format("register type {} is not used by these profiles", type));
   index = tok & kRegNumMask;
   if (!nameable(*f, index))
@@ -38,8 +40,8 @@ bool TokenReader::param_common(uint32_t tok, size_t at, const char* what, ir::Re
 
 bool TokenReader::dst(uint32_t tok, size_t at, ir::DstOperand& out, ir::InstrMods& mods) {
   if (!param_common(tok, at, "destination", out.file, out.index)) return false;
-  if (tok & kRelativeBit)
-    return fail(at, "relative addressing of a destination is not in these profiles");
+  if ((tok & kRelativeBit) && p_.profile != ir::Profile::vs_3_0)
+    return fail(at, "relative addressing of a destination is only in vs_3_0 (o[a0.x + n])");
   uint32_t resmod = (tok & kResultModMask) >> kResultModShift;
   if (resmod & ~(kResultSat | kResultPp | kResultCentroid))
     return fail(at, fmt::format("unknown result modifier bits 0x{:X}", resmod));
@@ -55,6 +57,10 @@ bool TokenReader::dst(uint32_t tok, size_t at, ir::DstOperand& out, ir::InstrMod
   mods.pp = (resmod & kResultPp) != 0;
   mods.centroid = (resmod & kResultCentroid) != 0;
   mods.shift = static_cast<int8_t>(shift);
+  if (!(tok & kRelativeBit)) return true;
+  ir::SrcOperand address; // relative() fills the RelAddr of a source; the destination takes it
+  if (!relative(address)) return false;
+  out.rel = address.rel;
   return true;
 }
 
@@ -67,8 +73,8 @@ bool TokenReader::src(uint32_t tok, size_t at, ir::SrcOperand& out) {
   out.mod = static_cast<ir::SrcMod>(mod);
   out.loc = loc_at(at);
   if (!(tok & kRelativeBit)) return true;
-  if (p_.stage() != ir::ShaderStage::Vertex)
-    return fail(at, "relative addressing in a pixel shader");
+  if (p_.stage() != ir::ShaderStage::Vertex && p_.profile != ir::Profile::ps_3_0)
+    return fail(at, "relative addressing in a pixel shader before ps_3_0");
   if (!has_length_field(p_.profile)) {
     // vs_1_1: the bit alone; a0.x is implied and no address token follows.
     out.rel = ir::RelAddr{ir::RegFile::Addr, 0, loc_at(at), std::nullopt};
@@ -77,7 +83,7 @@ bool TokenReader::src(uint32_t tok, size_t at, ir::SrcOperand& out) {
   return relative(out);
 }
 
-// vs_2_0: the token after a relative source names a0 or aL with a replicate swizzle.
+// SM2+: the token after a relative operand names a0 or aL with a replicate swizzle.
 bool TokenReader::relative(ir::SrcOperand& out) {
   uint32_t tok = 0;
   size_t at = 0;

@@ -38,7 +38,7 @@ bool TokenReader::version() {
     uint32_t kind = t_[0] >> 16;
     if (kind == 0xFFFE || kind == 0xFFFF)
       return fail(0, fmt::format("{} shader version {}.{} is not one of vs_1_1, vs_2_0, "
-                                 "ps_1_1..ps_1_4, ps_2_0",
+                                 "vs_2_x, vs_3_0, ps_1_1..ps_1_4, ps_2_0, ps_2_x, ps_3_0",
                                  kind == 0xFFFE ? "vertex" : "pixel", (t_[0] >> 8) & 0xFF,
                                  t_[0] & 0xFF));
     return fail(0, "not a shader version token (expected 0xFFFE.... or 0xFFFF....)");
@@ -113,15 +113,20 @@ const ir::OpInfo* TokenReader::lookup(uint32_t tok) {
 bool TokenReader::statement() {
   uint32_t tok = t_[pos_];
   instr_at_ = pos_;
-  if (tok & kInstrReserved) {
+  const uint32_t reserved =
+      ir::has_predication(p_.profile) ? (kInstrReserved & ~kPredicatedBit) : kInstrReserved;
+  if (tok & reserved) {
     const char* which = (tok & kParamBit)        ? "bit 31 set (a parameter token where an "
                                                    "instruction was expected)"
-                        : (tok & kPredicatedBit) ? "predicated bit set (not in these profiles)"
+                        : (tok & kPredicatedBit) ? "predicated bit set (only vs_2_x, ps_2_x "
+                                                   "and 3.0 have predicates)"
                                                  : "reserved bit 29 set";
     return fail(pos_, which);
   }
   const ir::OpInfo* info = lookup(tok);
   if (!info) return false;
+  if ((tok & kPredicatedBit) && info->cls == ir::OpClass::Decl)
+    return fail(pos_, "predicated bit set on a declaration or definition");
   if ((tok & kCoissueBit) && (!ir::is_ps1x(p_.profile) || info->cls == ir::OpClass::Decl))
     return fail(pos_, fmt::format("co-issue bit set on '{}' in {}", info->mnemonic,
                                   ir::profile_name(p_.profile)));
@@ -162,6 +167,15 @@ bool TokenReader::instruction(const ir::OpInfo& info, uint32_t tok) {
     if (!next(t, at) || !dst(t, at, d, ins.mods)) return false;
     ins.dst = d;
   }
+  if (tok & kPredicatedBit) {
+    // p0 follows the destination (docs/d3d9-rules.md §11.1).
+    ir::SrcOperand pr;
+    if (!next(t, at) || !src(t, at, pr)) return false;
+    if (pr.file != ir::RegFile::Predicate || pr.rel ||
+        (pr.mod != ir::SrcMod::None && pr.mod != ir::SrcMod::Not))
+      return fail(at, "the predicate token of a predicated instruction must be p0 or !p0");
+    ins.pred = pr;
+  }
   for (int i = 0; i < info.num_src; ++i) {
     ir::SrcOperand s;
     if (!next(t, at) || !src(t, at, s)) return false;
@@ -179,6 +193,7 @@ bool TokenReader::declaration() {
   size_t usage_at = 0, at = 0;
   if (!next(usage, usage_at) || !next(t, at) || !dst(t, at, d.reg, d.mods)) return false;
   if (!(usage & kParamBit)) return fail(usage_at, "dcl usage token without bit 31");
+  if (d.reg.rel) return fail(at, "a declaration of a relatively addressed register");
   if (d.reg.file == ir::RegFile::Sampler) {
     if (usage & ~(kParamBit | kSamplerTypeMask))
       return fail(usage_at, "reserved bits set in a sampler declaration");
@@ -187,25 +202,30 @@ bool TokenReader::declaration() {
       return fail(usage_at,
                   fmt::format("sampler type {} is not 2d (2), cube (3) or volume (4)", type));
     d.sampler_type = static_cast<ir::SamplerType>(type);
-  } else if (p_.stage() == ir::ShaderStage::Vertex && d.reg.file == ir::RegFile::Input) {
+  } else if ((p_.stage() == ir::ShaderStage::Vertex && d.reg.file == ir::RegFile::Input) ||
+             (p_.profile == ir::Profile::vs_3_0 && d.reg.file == ir::RegFile::Output) ||
+             (p_.profile == ir::Profile::ps_3_0 && d.reg.file == ir::RegFile::Input)) {
     if (usage & ~(kParamBit | kUsageMask | kUsageIndexMask))
-      return fail(usage_at, "reserved bits set in a vertex input declaration");
+      return fail(usage_at, "reserved bits set in an input or output declaration");
     uint32_t u = usage & kUsageMask;
     if (u > static_cast<uint32_t>(ir::DeclUsage::Sample))
       return fail(usage_at, fmt::format("unknown declaration usage {}", u));
     d.usage = static_cast<ir::DeclUsage>(u);
     d.usage_index = static_cast<uint8_t>((usage & kUsageIndexMask) >> kUsageIndexShift);
   } else if (p_.stage() == ir::ShaderStage::Pixel &&
-             (d.reg.file == ir::RegFile::Input || d.reg.file == ir::RegFile::Texture)) {
-    if (usage != kParamBit) return fail(usage_at, "ps_2_0 v#/t# declarations carry usage 0");
+             (d.reg.file == ir::RegFile::Input || d.reg.file == ir::RegFile::Texture ||
+              d.reg.file == ir::RegFile::Misc)) {
+    if (usage != kParamBit)
+      return fail(usage_at, "ps_2_0 v#/t# and ps_3_0 vPos/vFace declarations carry usage 0");
   } else {
     return fail(at, fmt::format("{} cannot be declared in {}",
                                 ir::register_name(d.reg.file, d.reg.index),
                                 ir::profile_name(p_.profile)));
   }
-  // Only ps_2_0 v#/t# declarations take modifiers (_pp, _centroid); nothing takes _sat or a
-  // shift, and the text syntax has no way to say them.
-  bool ps_input = p_.stage() == ir::ShaderStage::Pixel && d.reg.file != ir::RegFile::Sampler;
+  // Only pixel-shader v#/t# declarations (and ps_3_0 samplers) take modifiers (_pp,
+  // _centroid); nothing takes _sat or a shift, and the text syntax has no way to say them.
+  bool ps_input = p_.stage() == ir::ShaderStage::Pixel &&
+                  (d.reg.file != ir::RegFile::Sampler || p_.profile == ir::Profile::ps_3_0);
   if (d.mods.sat || d.mods.shift != 0 || (!ps_input && (d.mods.pp || d.mods.centroid)))
     return fail(at, "result modifier or shift on this declaration");
   p_.decls.push_back(d);
@@ -228,7 +248,7 @@ bool TokenReader::definition(const ir::OpInfo& info) {
     return fail(at, fmt::format("'{}' defines {}, not {}", info.mnemonic,
                                 ir::register_name(want, 0).substr(0, 1) + "#",
                                 ir::register_name(d.file, d.index)));
-  if (d.mask != ir::kFullMask || mods.sat || mods.pp || mods.centroid || mods.shift != 0)
+  if (d.mask != ir::kFullMask || mods.sat || mods.pp || mods.centroid || mods.shift != 0 || d.rel)
     return fail(at, "a constant definition takes a full write mask and no modifiers");
   c.file = d.file;
   c.index = d.index;

@@ -44,6 +44,7 @@ std::optional<ir::Program> check_program(std::optional<ir::Program> program,
   if (!options.strict) apply_windows_leniency(*program, profile, diags);
   ValidateOptions vo;
   vo.warnings = options.warnings;
+  vo.caps = options.caps;
   if (!options.skip_validation && !validate(*program, profile, diags, vo)) return std::nullopt;
   return program;
 }

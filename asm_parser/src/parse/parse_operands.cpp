@@ -36,6 +36,7 @@ constexpr NamedReg kIndexed[] = {
     {"r", ir::RegFile::Temp},     {"v", ir::RegFile::Input},      {"c", ir::RegFile::Const},
     {"a", ir::RegFile::Addr},     {"t", ir::RegFile::Texture},    {"s", ir::RegFile::Sampler},
     {"i", ir::RegFile::ConstInt}, {"b", ir::RegFile::ConstBool},  {"l", ir::RegFile::Label},
+    {"o", ir::RegFile::Output},   {"p", ir::RegFile::Predicate},
 };
 
 } // namespace
@@ -48,7 +49,9 @@ bool Parser::register_name(const Token& t, std::string_view name, Operand& out, 
       {"ofog", {ir::RegFile::RastOut, ir::kRastFog}},
       {"opts", {ir::RegFile::RastOut, ir::kRastPts}},
       {"odepth", {ir::RegFile::DepthOut, 0}},
-      {"al", {ir::RegFile::Loop, 0}}};
+      {"al", {ir::RegFile::Loop, 0}},
+      {"vpos", {ir::RegFile::Misc, ir::kMiscPosition}},
+      {"vface", {ir::RegFile::Misc, ir::kMiscFace}}};
   for (auto& [n, reg] : fixed)
     if (name == n) {
       out.file = reg.first;
@@ -67,8 +70,8 @@ bool Parser::register_name(const Token& t, std::string_view name, Operand& out, 
     auto [p, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), idx);
     if (ec != std::errc() || idx > kMaxRegisterIndex)
       return fail(loc, "bad-number", fmt::format("register index '{}' is too large", digits));
-    // a0 is the only address register; "a1" would print back as a0.
-    if (r.file == ir::RegFile::Addr && idx != 0) break;
+    // a0 and p0 are the only address and predicate registers; "a1" would print back as a0.
+    if ((r.file == ir::RegFile::Addr || r.file == ir::RegFile::Predicate) && idx != 0) break;
     out.index = idx;
     return true;
   }
@@ -212,11 +215,12 @@ bool Parser::relative(Operand& out, bool has_index) {
 }
 
 bool Parser::to_dst(const Operand& in, ir::DstOperand& out) {
-  if (in.neg || in.comp || in.bnot || !in.modifier.empty() || in.rel)
-    return fail(in.loc, "syntax", "a destination takes no modifier, negation or relative address");
+  if (in.neg || in.comp || in.bnot || !in.modifier.empty())
+    return fail(in.loc, "syntax", "a destination takes no modifier or negation");
   out.file = in.file;
   out.index = in.index;
   out.loc = in.loc;
+  out.rel = in.rel; // o[a0.x + n] in vs_3_0; the validator says where it is allowed
   out.mask = ir::kFullMask;
   if (!in.suffix) return true;
   std::string letters = lower(*in.suffix);

@@ -90,8 +90,24 @@ bool Parser::instr_mods(const Token& mn, std::string_view mods, ir::InstrMods& o
   });
 }
 
+bool Parser::predicate(ir::SrcOperand& out) {
+  ir::SourceLoc open = cur().loc;
+  advance(); // '('
+  Operand op;
+  if (!operand(op)) return false;
+  if (!at_punct(")"))
+    return fail(cur().loc, "syntax",
+                fmt::format("expected ')' after the predicate, found {}", describe(cur())));
+  advance();
+  if (op.file != ir::RegFile::Predicate || op.neg || op.comp || !op.modifier.empty() || op.rel)
+    return fail(op.loc, "syntax", "a predicate is written (p0), (p0.x) or (!p0.x)");
+  if (!to_src(op, out)) return false;
+  out.loc = span_to_prev(open);
+  return true;
+}
+
 bool Parser::instruction(const Token& mn, std::string_view base, std::string_view mods,
-                         bool coissue) {
+                         bool coissue, std::optional<ir::SrcOperand> pred) {
   const ir::OpInfo* info = ir::find_opcode(base, prog_.profile);
   if (!info && continued_)
     return fail(mn.loc, "syntax",
@@ -104,6 +120,7 @@ bool Parser::instruction(const Token& mn, std::string_view base, std::string_vie
   ir::Instruction ins;
   ins.op = info->op;
   ins.coissue = coissue;
+  ins.pred = std::move(pred);
   ins.loc = mn.loc;
   if (!instr_mods(mn, mods, ins.mods)) return false;
 
@@ -193,6 +210,7 @@ bool Parser::declaration(const Token& mn, std::string_view mods) {
     return fail(mn.loc, "operand-count", "'dcl' takes 1 operand (the declared register), found 0");
   Operand op;
   if (!operand(op) || !to_dst(op, decl.reg)) return false;
+  if (decl.reg.rel) return fail(op.loc, "syntax", "a declaration names one register, not o[...]");
   if (!at_eol() && at_punct(","))
     return fail(cur().loc, "operand-count", "'dcl' takes 1 operand (the declared register)");
   decl.seq = seq_++;

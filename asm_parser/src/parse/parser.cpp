@@ -51,7 +51,8 @@ bool Parser::version() {
     if (!loc.valid()) loc = {main_file_, 1, 1, 0};
     return fail(
         loc, "missing-version",
-        "missing version statement: a listing starts with vs_1_1, vs_2_0, ps_1_1 ... ps_2_0");
+        "missing version statement: a listing starts with vs_1_1, vs_2_0, vs_2_x, vs_3_0, "
+        "ps_1_1 ... ps_2_0, ps_2_x or ps_3_0");
   }
   if (t.kind == TokKind::Ident) {
     std::string name = lower(t.text);
@@ -65,12 +66,13 @@ bool Parser::version() {
         (name[2] == '_' || name[2] == '.'))
       return fail(t.loc, "unsupported-version",
                   fmt::format("unsupported shader version '{}' (supported: vs_1_1, vs_2_0, "
-                              "ps_1_1, ps_1_2, ps_1_3, ps_1_4, ps_2_0)",
+                              "vs_2_x, vs_3_0, ps_1_1, ps_1_2, ps_1_3, ps_1_4, ps_2_0, ps_2_x, "
+                              "ps_3_0)",
                               t.text));
   }
   return fail(t.loc, "missing-version",
               fmt::format("missing version statement before {}: a listing starts with vs_1_1, "
-                          "vs_2_0, ps_1_1 ... ps_2_0",
+                          "vs_2_0, vs_2_x, vs_3_0, ps_1_1 ... ps_2_0, ps_2_x or ps_3_0",
                           describe(t)));
 }
 
@@ -98,6 +100,11 @@ bool Parser::statement() {
     coissue = true;
     advance();
   }
+  std::optional<ir::SrcOperand> pred;
+  if (!coissue && at_punct("(")) {
+    pred.emplace();
+    if (!predicate(*pred)) return false;
+  }
   const Token& mn = cur();
   if (mn.kind != TokKind::Ident)
     return fail(mn.loc, "syntax", fmt::format("expected an instruction, found {}", describe(mn)));
@@ -109,6 +116,18 @@ bool Parser::statement() {
   if (size_t us = name.find('_'); us != std::string::npos) {
     base = std::string_view(name).substr(0, us);
     mods = std::string_view(name).substr(us); // keeps the leading '_'
+    // if_gt, break_ne, setp_le: the comparison is part of the mnemonic, not a modifier.
+    size_t next = name.find('_', us + 1);
+    std::string_view with_cmp = std::string_view(name).substr(0, next);
+    if (!ir::rows_for_mnemonic(with_cmp).empty()) {
+      base = with_cmp;
+      mods = next == std::string::npos ? std::string_view() : std::string_view(name).substr(next);
+    }
+  }
+  if (pred) {
+    if (base == "dcl" || base == "def" || base == "defi" || base == "defb")
+      return fail(pred->loc, "syntax", "a declaration or definition cannot be predicated");
+    return instruction(mn, base, mods, false, std::move(pred));
   }
   if (!coissue) {
     if (base == "dcl") return declaration(mn, mods);

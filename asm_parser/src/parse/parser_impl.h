@@ -64,7 +64,10 @@ private:
   bool statement();
 
   // parse_statements.cpp
-  bool instruction(const Token& mn, std::string_view base, std::string_view mods, bool coissue);
+  bool instruction(const Token& mn, std::string_view base, std::string_view mods, bool coissue,
+                   std::optional<ir::SrcOperand> pred = std::nullopt);
+  // "(p0)", "(!p0.x)" before a predicated instruction.
+  bool predicate(ir::SrcOperand& out);
   bool instr_mods(const Token& mn, std::string_view mods, ir::InstrMods& out);
   bool declaration(const Token& mn, std::string_view parts);
   bool definition(const Token& mn, ir::Opcode op);

@@ -52,15 +52,19 @@ std::string rel_swizzle_text(uint8_t swz) {
   return out;
 }
 
+// "c[a0.x + 4]", "v[aL]", "o[a0 + 12]".
+std::string relative_text(ir::RegFile file, uint32_t index, const ir::RelAddr& rel) {
+  // a0 as the address token has it: "a0" (identity), "a0.x", or "a0.xyww" as written.
+  std::string reg = rel.file == ir::RegFile::Loop ? std::string("aL")
+                                                  : "a0" + rel_swizzle_text(rel.token_swizzle());
+  return index ? fmt::format("{}[{} + {}]", file_prefix(file), reg, index)
+               : fmt::format("{}[{}]", file_prefix(file), reg);
+}
+
 std::string src_text(const ir::SrcOperand& s) {
   std::string out(src_mod_prefix(s.mod));
   if (s.rel) {
-    // a0 as the address token has it: "a0" (identity), "a0.x", or "a0.xyww" as written.
-    std::string reg = s.rel->file == ir::RegFile::Loop
-                          ? std::string("aL")
-                          : "a0" + rel_swizzle_text(s.rel->token_swizzle());
-    out += s.index ? fmt::format("{}[{} + {}]", file_prefix(s.file), reg, s.index)
-                   : fmt::format("{}[{}]", file_prefix(s.file), reg);
+    out += relative_text(s.file, s.index, *s.rel);
   } else {
     out += ir::register_name(s.file, s.index);
   }
@@ -70,7 +74,8 @@ std::string src_text(const ir::SrcOperand& s) {
 }
 
 std::string dst_text(const ir::DstOperand& d) {
-  return ir::register_name(d.file, d.index) + ir::mask_text(d.mask);
+  std::string reg = d.rel ? relative_text(d.file, d.index, *d.rel) : ir::register_name(d.file, d.index);
+  return reg + ir::mask_text(d.mask);
 }
 
 // Fixed order: shift, _sat, _pp, _centroid.
@@ -86,8 +91,10 @@ std::string mods_text(const ir::InstrMods& m) {
 
 std::string decl_text(const ir::Declaration& d, ir::Profile profile) {
   std::string out = "dcl";
-  // Vertex inputs always name their usage; index 0 is left out (dcl_texcoord = dcl_texcoord0).
+  // Vertex inputs and outputs and ps_3_0 inputs always name their usage; index 0 is left
+  // out (dcl_texcoord = dcl_texcoord0).
   bool usage = (ir::is_vertex(profile) && d.reg.file != ir::RegFile::Sampler) ||
+               (profile == ir::Profile::ps_3_0 && d.reg.file == ir::RegFile::Input) ||
                d.usage != ir::DeclUsage::Position || d.usage_index != 0;
   if (usage) {
     out += fmt::format("_{}", usage_name(d.usage));
@@ -127,6 +134,7 @@ std::string print_definition(const ir::ConstDef& d) {
 
 std::string print_instruction(const ir::Instruction& ins, ir::Profile /*profile*/) {
   std::string out = ins.coissue ? "+" : "";
+  if (ins.pred) out += "(" + src_text(*ins.pred) + ") ";
   out += ir::op_info(ins.op).mnemonic;
   out += mods_text(ins.mods);
   bool first = true;

@@ -20,9 +20,10 @@ namespace tierlift::as::detail {
 struct Ctx {
   const ir::Program& prog;
   ir::Profile target;
-  const ir::ProfileLimits& lim;
+  const ir::ProfileLimits& lim; // the profile's limits with the caps' temps and slots
   ir::DiagnosticSink& sink;
   ValidateOptions opt;
+  ir::Caps2x caps;                  // ValidateOptions::caps or ir::default_caps(target)
   std::set<uint32_t> warned_consts; // vertex c# past the guaranteed count, warned once
 
   std::string_view pname() const { return ir::profile_name(target); }
@@ -30,9 +31,14 @@ struct Ctx {
   bool ps11_13() const { return ir::is_ps11_13(target); }
   bool ps14() const { return target == ir::Profile::ps_1_4; }
   bool ps1x() const { return ir::is_ps1x(target); }
-  bool ps20() const { return target == ir::Profile::ps_2_0; }
+  // Pixel / vertex shader model 2.0 or later (2.0, 2.x, 3.0).
+  bool ps2up() const { return !vs() && ir::is_sm2_or_later(target); }
+  bool vs2up() const { return vs() && ir::is_sm2_or_later(target); }
   bool vs11() const { return target == ir::Profile::vs_1_1; }
   bool vs20() const { return target == ir::Profile::vs_2_0; }
+  bool vs30() const { return target == ir::Profile::vs_3_0; }
+  bool ps30() const { return target == ir::Profile::ps_3_0; }
+  bool sm3() const { return ir::is_sm3(target); }
 
   void error(const ir::SourceLoc& loc, std::string_view rule, std::string msg) const {
     sink.error(loc, std::string(rule), std::move(msg));
@@ -79,5 +85,6 @@ void check_masks(Ctx& c);        // rules_masks.cpp
 void check_special(Ctx& c);      // rules_special.cpp (per-instruction operand rules)
 void check_coissue(Ctx& c);      // rules_coissue.cpp
 void check_flow(Ctx& c);         // rules_flow.cpp
+void check_later(Ctx& c);        // rules_later.cpp (2.x and 3.0: predicates, setp, o#, ...)
 
 } // namespace tierlift::as::detail

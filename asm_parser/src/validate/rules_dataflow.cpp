@@ -31,7 +31,8 @@ struct Flow {
   std::map<uint32_t, std::map<Key, uint8_t>> sub_writes; // label → writes of its body
 
   bool tracked(RegFile f) const {
-    return f == RegFile::Temp || (f == RegFile::Texture && c.ps11_13()) || f == RegFile::Addr;
+    return f == RegFile::Temp || (f == RegFile::Texture && c.ps11_13()) || f == RegFile::Addr ||
+           f == RegFile::Predicate;
   }
 
   void need(RegFile f, uint32_t index, uint8_t comps, const ir::SourceLoc& loc) {
@@ -56,6 +57,12 @@ struct Flow {
 
   void reads(const ir::Instruction& ins) {
     const ir::OpInfo& info = info_of(ins);
+    if (ins.pred)
+      need(RegFile::Predicate, 0,
+           ir::is_replicate(ins.pred->swizzle)
+               ? static_cast<uint8_t>(1 << (ins.pred->swizzle & 3))
+               : (ins.dst ? ins.dst->mask : uint8_t{0xF}), // p0.x gates .x, p0.y .y, ...
+           ins.pred->loc);
     for (size_t k = 0; k < ins.src.size(); ++k) {
       const ir::SrcOperand& s = ins.src[k];
       // Labels, b#, i#, aL and samplers carry no data; a wrong register there is an
@@ -101,7 +108,10 @@ struct Flow {
   // §5.7). The doc's second trigger (a texld whose destination was written before) is not
   // modelled: only the data dependence through src0 counts.
   void dependent_reads(const ir::Instruction& ins) {
-    if (!c.ps20() || !ins.dst || ins.dst->file != RegFile::Temp) return;
+    // ps_2_0, and ps_2_x whose caps keep the limit (ps_2_b); 3.0 has none.
+    if (!c.ps2up() || c.caps.no_dependent_limit || c.sm3() || !ins.dst ||
+        ins.dst->file != RegFile::Temp)
+      return;
     int lvl = 0;
     for (const ir::SrcOperand& s : ins.src)
       if (s.file == RegFile::Temp) lvl = std::max(lvl, level[s.index]);
@@ -109,7 +119,8 @@ struct Flow {
       ++lvl;
       if (lvl == 5)
         c.error(ins.loc, "dependent-read",
-                "ps_2_0 allows 4 levels of dependent texture reads; this texld is the 5th");
+                fmt::format("{} allows 4 levels of dependent texture reads; this texld is the 5th",
+                            c.pname()));
     }
     int& slot = level[ins.dst->index];
     slot = ins.dst->mask == ir::kFullMask ? lvl : std::max(slot, lvl);

@@ -1,7 +1,8 @@
-// vs_2_0 static flow control (docs/d3d9-rules.md §5.3): if/else/endif, loop/endloop and rep/endrep
-// nest properly; loop/rep nest one deep; calls go forward to defined labels and do not nest;
-// a label directly follows a ret; at most 16 static flow-control instructions; aL only
-// inside a loop; loop/rep counters within their ranges.
+// Flow control (docs/d3d9-rules.md §5.3, §14): if/else/endif, loop/endloop and rep/endrep
+// nest properly; a label directly follows a ret; aL only inside a loop; loop/rep counters
+// within their ranges. vs_2_0: loop/rep nest one deep, calls go forward and do not nest, at
+// most 16 static flow-control instructions. 2.x and 3.0: loop/rep nest as deep as the caps'
+// static depth, if_comp / if p0 as deep as the dynamic depth, break* only inside loop/rep.
 #include <map>
 #include <vector>
 
@@ -16,10 +17,21 @@ using ir::RegFile;
 constexpr int kMaxStaticFlow = 16;
 
 struct Block {
-  Opcode op; // If, Loop or Rep
+  Opcode op; // If, Loop or Rep (if_comp opens an If block too)
   const ir::Instruction* open;
   bool has_else = false;
+  bool dynamic = false; // if_comp, if p0: counts against the dynamic depth
 };
+
+bool is_if_comp(Opcode op) {
+  return op == Opcode::IfGt || op == Opcode::IfEq || op == Opcode::IfGe || op == Opcode::IfLt ||
+         op == Opcode::IfNe || op == Opcode::IfLe;
+}
+bool is_break(Opcode op) {
+  return op == Opcode::Break || op == Opcode::BreakGt || op == Opcode::BreakEq ||
+         op == Opcode::BreakGe || op == Opcode::BreakLt || op == Opcode::BreakNe ||
+         op == Opcode::BreakLe || op == Opcode::BreakP;
+}
 
 const ir::ConstDef* find_int_def(const ir::Program& p, uint32_t index) {
   const ir::ConstDef* last = nullptr; // the last definition wins
@@ -57,10 +69,30 @@ bool uses_loop_reg(const ir::Instruction& ins) {
   return false;
 }
 
+// if b#, if p0.x, if_comp: one more if block. Dynamic ones (p0, comparisons) nest as deep
+// as DynamicFlowControlDepth; a device without dynamic flow control has none.
+void open_if(Ctx& c, std::vector<Block>& stack, const ir::Instruction& ins, bool dynamic) {
+  if (dynamic) {
+    int depth = 1;
+    for (const Block& b : stack) depth += b.dynamic;
+    if (depth > c.caps.dynamic_depth)
+      c.error(ins.loc, "flow",
+              c.caps.dynamic_depth == 0
+                  ? fmt::format("{} is dynamic flow control, which these {} caps do not have "
+                                "(DynamicFlowControlDepth 0)",
+                                mnemonic(ins), c.pname())
+                  : fmt::format("{} allows dynamic flow control nesting depth {}; this {} is at "
+                                "depth {}",
+                                c.pname(), c.caps.dynamic_depth, mnemonic(ins), depth));
+  }
+  stack.push_back({Opcode::If, &ins, false, dynamic});
+}
+
 } // namespace
 
 void check_flow(Ctx& c) {
-  if (!c.vs20()) return;
+  const bool later = ir::has_predication(c.target); // 2.x, 3.0
+  if (!c.vs20() && !later) return;
   const auto& code = c.prog.code;
   std::vector<Block> stack;
   std::map<uint32_t, size_t> labels; // label index → position
@@ -76,7 +108,7 @@ void check_flow(Ctx& c) {
     const ir::Instruction& ins = code[i];
     bool counts = ins.op == Opcode::If || ins.op == Opcode::Loop || ins.op == Opcode::Rep ||
                   ins.op == Opcode::Call || ins.op == Opcode::CallNz;
-    if (counts && ++flow_count == kMaxStaticFlow + 1)
+    if (counts && !later && ++flow_count == kMaxStaticFlow + 1)
       c.error(ins.loc, "flow",
               fmt::format("vs_2_0 allows {} static flow-control instructions (if, loop, rep, "
                           "call, callnz); this is the {}",
@@ -86,18 +118,36 @@ void check_flow(Ctx& c) {
       for (const Block& b : stack) in_loop = in_loop || b.op == Opcode::Loop;
       if (!in_loop) c.error(ins.loc, "flow", "aL is only valid inside a loop ... endloop block");
     }
-    switch (ins.op) {
-    case Opcode::If: stack.push_back({Opcode::If, &ins}); break;
-    case Opcode::Loop:
-    case Opcode::Rep:
-      if (loops_open())
+    if (is_if_comp(ins.op)) {
+      open_if(c, stack, ins, true);
+      continue;
+    }
+    if (is_break(ins.op)) {
+      if (!loops_open()) c.error(ins.loc, "flow", fmt::format("{} outside loop/rep", mnemonic(ins)));
+      if (ins.op != Opcode::Break && c.caps.dynamic_depth == 0)
         c.error(ins.loc, "flow",
-                fmt::format("vs_2_0 allows loop/rep nesting depth 1; this {} is inside another "
-                            "loop",
-                            mnemonic(ins)));
+                fmt::format("{} is dynamic flow control, which these {} caps do not have "
+                            "(DynamicFlowControlDepth 0)",
+                            mnemonic(ins), c.pname()));
+      continue;
+    }
+    switch (ins.op) {
+    case Opcode::If:
+      open_if(c, stack, ins, !ins.src.empty() && ins.src[0].file == RegFile::Predicate);
+      break;
+    case Opcode::Loop:
+    case Opcode::Rep: {
+      int depth = 1;
+      for (const Block& b : stack) depth += b.op != Opcode::If;
+      const int allowed = later ? c.caps.static_depth : 1;
+      if (depth > allowed)
+        c.error(ins.loc, "flow",
+                fmt::format("{} allows loop/rep nesting depth {}; this {} is at depth {}",
+                            c.pname(), allowed, mnemonic(ins), depth));
       check_counter(c, ins);
       stack.push_back({ins.op, &ins});
       break;
+    }
     case Opcode::Else:
       if (stack.empty() || stack.back().op != Opcode::If || stack.back().has_else)
         c.error(ins.loc, "flow", "else without a matching if");
@@ -123,7 +173,12 @@ void check_flow(Ctx& c) {
     }
     case Opcode::Call:
     case Opcode::CallNz:
-      if (in_sub)
+      if (later && c.caps.static_depth == 0)
+        c.error(ins.loc, "flow",
+                fmt::format("{} is static flow control, which these {} caps do not have "
+                            "(StaticFlowControlDepth 0)",
+                            mnemonic(ins), c.pname()));
+      if (in_sub && !later)
         c.error(ins.loc, "flow", "vs_2_0 allows call nesting depth 1: no call inside a subroutine");
       calls.push_back(i);
       break;
@@ -159,7 +214,7 @@ void check_flow(Ctx& c) {
     auto it = labels.find(call.src[0].index);
     if (it == labels.end())
       c.error(call.src[0].loc, "flow", fmt::format("label l{} is not defined", call.src[0].index));
-    else if (it->second < i)
+    else if (it->second < i && !later)
       c.error(call.src[0].loc, "flow",
               fmt::format("vs_2_0 only allows forward calls: label l{} is at line {}, before "
                           "this call",

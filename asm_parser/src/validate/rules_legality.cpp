@@ -51,6 +51,7 @@ const char* kind_text(OperandKind k) {
   case OperandKind::LoopReg: return "the loop counter aL";
   case OperandKind::Const: return "a float constant c#";
   case OperandKind::Temp: return "a temporary r#";
+  case OperandKind::Predicate: return "the predicate p0";
   default: return "a data register (r#, v#, c# or t#)";
   }
 }
@@ -58,7 +59,9 @@ const char* kind_text(OperandKind k) {
 bool kind_accepts(OperandKind k, RegFile f) {
   switch (k) {
   case OperandKind::Sampler: return f == RegFile::Sampler;
-  case OperandKind::Bool: return f == RegFile::ConstBool;
+  // if and callnz take b# or, in 2.x and 3.0, the predicate (if p0.x, callnz l0, !p0.z).
+  case OperandKind::Bool: return f == RegFile::ConstBool || f == RegFile::Predicate;
+  case OperandKind::Predicate: return f == RegFile::Predicate;
   case OperandKind::Int: return f == RegFile::ConstInt;
   case OperandKind::Label: return f == RegFile::Label;
   case OperandKind::LoopReg: return f == RegFile::Loop;
@@ -68,7 +71,7 @@ bool kind_accepts(OperandKind k, RegFile f) {
   default:
     return is_data_file(f) || f == RegFile::Addr || f == RegFile::RastOut ||
            f == RegFile::AttrOut || f == RegFile::TexCrdOut || f == RegFile::ColorOut ||
-           f == RegFile::DepthOut;
+           f == RegFile::DepthOut || f == RegFile::Output || f == RegFile::Misc;
   }
 }
 

@@ -41,6 +41,7 @@ std::string instruction_rule(const Ctx& c, const ir::Instruction& ins, uint8_t m
                : fmt::format("{} writes all four components; it takes no mask, not {}", mn, got);
   // sincos: .x, .y or .xy (instruction pages; the masking page's .xyz is a doc conflict).
   case Opcode::SinCos:
+  case Opcode::SinCos3:
     return (m == X || m == Y || m == XY) ? ""
                                          : fmt::format("sincos writes .x, .y or .xy, not {}", got);
   // frc in vs_1_1: .y or .xy (instruction page and MojoShader; doc conflict with the masking
@@ -67,7 +68,8 @@ std::string instruction_rule(const Ctx& c, const ir::Instruction& ins, uint8_t m
   // translators, any mask is accepted.
   default: break;
   }
-  if (is_texture_op(ins) && m != FULL)
+  // 3.0 texture instructions write through any mask (fxc writes texld r0.xyz).
+  if (is_texture_op(ins) && m != FULL && !c.sm3())
     return fmt::format("{} takes no destination mask, not {}", mn, got);
   return {};
 }
@@ -88,6 +90,8 @@ std::string register_rule(const Ctx& c, const ir::DstOperand& d) {
                          reg_name(d.file, d.index), got);
     return {};
   case RegFile::ColorOut:
+    if (c.ps30()) return {}; // ps_3_0 writes oC# component by component
+    [[fallthrough]];
   case RegFile::DepthOut:
     return d.mask == FULL
                ? ""

@@ -50,15 +50,15 @@ void check_instr_mods(Ctx& c, const ir::Instruction& ins) {
                           mn));
   }
   if (m.sat) {
-    if (c.vs())
+    if (c.vs() && !c.vs30())
       c.error(ins.loc, "modifier",
               fmt::format("_sat is not allowed in {} (vs_3_0 only)", c.pname()));
     else if (!is_arith_op(ins))
       c.error(ins.loc, "modifier", fmt::format("_sat is not allowed on {}", mn));
-    else if (c.ps20() && (ins.op == Opcode::Frc || ins.op == Opcode::SinCos))
+    else if (c.target == ir::Profile::ps_2_0 && (ins.op == Opcode::Frc || ins.op == Opcode::SinCos))
       c.error(ins.loc, "modifier", fmt::format("_sat is not allowed on {} in ps_2_0", mn));
   }
-  if (m.pp && !c.ps20())
+  if (m.pp && !c.ps2up())
     c.error(ins.loc, "modifier",
             fmt::format("_pp is not allowed in {}: partial precision is a ps_2_0 hint", c.pname()));
   if (m.centroid) c.error(ins.loc, "modifier", "_centroid is only allowed on ps_2_0 declarations");
@@ -81,18 +81,23 @@ std::string srcmod_problem(const Ctx& c, const ir::Instruction& ins, size_t k, i
   const ir::OpInfo& info = info_of(ins);
   OperandKind kind = k < info.num_src ? info.src[k] : OperandKind::Vector;
   std::string_view name = srcmod_text(m);
-  if (m == SrcMod::Not)
+  if (m == SrcMod::Not) {
+    // 2.x/3.0: the predicate may be negated where it is read (if !p0.x, breakp !p0.x).
+    if (s.file == RegFile::Predicate && (kind == OperandKind::Bool || kind == OperandKind::Predicate))
+      return {};
     return ins.op == Opcode::CallNz && k == 1 ? ""
                                               : "! (boolean not) is only allowed on callnz's b#";
+  }
+  if ((m == SrcMod::Abs || m == SrcMod::AbsNeg) && c.sm3()) return {};
   if (m == SrcMod::Abs || m == SrcMod::AbsNeg)
     return fmt::format("_abs is a vs_3_0/ps_3_0 modifier, not available in {}; use the abs "
                        "instruction",
                        c.pname());
   if (kind == OperandKind::Matrix) return "the matrix operand of a matrix macro takes no modifier";
-  if (c.vs() || c.ps20()) {
+  if (c.vs() || c.ps2up()) {
     if (m == SrcMod::Neg && (kind == OperandKind::Vector || kind == OperandKind::Scalar ||
                              kind == OperandKind::Temp || kind == OperandKind::Const))
-      return (c.ps20() && is_texture_op(ins)) ? "texture instructions take no source modifier" : "";
+      return (c.ps2up() && is_texture_op(ins)) ? "texture instructions take no source modifier" : "";
     if (m == SrcMod::Neg) return fmt::format("{} cannot be negated", reg_name(s.file, s.index));
     return fmt::format("{} is not allowed in {}, which only has negate", name, c.pname());
   }
@@ -128,6 +133,7 @@ bool ps_swizzle_ok(const Ctx& c, uint8_t swz, uint8_t dst_mask) {
   int comp = swz & 3;
   if (c.ps11_13()) return rep && (comp == 3 || (comp == 2 && dst_mask == 0x8));
   if (c.ps14()) return rep;
+  if (c.caps.arbitrary_swizzle) return true; // ps_2_x with the cap, ps_3_0
   // ps_2_0
   return rep || swz == ir::make_swizzle(1, 2, 0, 3) || swz == ir::make_swizzle(2, 0, 1, 3) ||
          swz == ir::make_swizzle(3, 2, 1, 0);
@@ -136,6 +142,9 @@ bool ps_swizzle_ok(const Ctx& c, uint8_t swz, uint8_t dst_mask) {
 std::string allowed_swizzles(const Ctx& c) {
   if (c.ps11_13()) return "identity, .a (alpha replicate) and .b when the destination is .a";
   if (c.ps14()) return "identity and the replicates .x .y .z .w";
+  if (c.target == ir::Profile::ps_2_x)
+    return "identity, the replicates .x .y .z .w, .yzxw, .zxyw and .wzyx (these caps have no "
+           "arbitrary swizzles)";
   return "identity, the replicates .x .y .z .w, .yzxw, .zxyw and .wzyx";
 }
 
@@ -153,8 +162,15 @@ std::string swizzle_problem(const Ctx& c, const ir::Instruction& ins, size_t k) 
   // sheet's §4.3 table reads.
   case OperandKind::Matrix:
     return identity ? "" : "the matrix operand of a matrix macro takes no swizzle";
-  case OperandKind::Sampler:
+  // p0 read by if, callnz, breakp: one component (.x .y .z .w) or all four.
+  case OperandKind::Predicate:
   case OperandKind::Bool:
+    if (s.file == RegFile::Predicate)
+      return identity || ir::is_replicate(swz)
+                 ? ""
+                 : fmt::format("p0 is read as one component (.x .y .z .w), not {}", sw);
+    return identity ? "" : fmt::format("{} takes no swizzle", reg_name(s.file, s.index));
+  case OperandKind::Sampler:
   case OperandKind::Int:
   case OperandKind::Label:
   case OperandKind::LoopReg:
@@ -169,7 +185,7 @@ std::string swizzle_problem(const Ctx& c, const ir::Instruction& ins, size_t k) 
   default: break;
   }
   if (ins.op == Opcode::Crs && !identity) return "crs takes no swizzle on its sources";
-  if (c.ps20() && is_texture_op(ins) && !identity)
+  if (c.ps2up() && !c.caps.arbitrary_swizzle && is_texture_op(ins) && !identity)
     return fmt::format("{} takes no swizzle on its sources", info.mnemonic);
   if (c.ps11_13() && is_texture_op(ins) && !identity)
     return fmt::format("{} takes no swizzle on its sources", info.mnemonic);

@@ -90,7 +90,7 @@ void check_pixel20(Ctx& c) {
   }
   if (!colour.count(0))
     c.error(program_loc(c), "output-rule",
-            "oC0 is never written; every ps_2_0 shader must write it");
+            fmt::format("oC0 is never written; every {} shader must write it", c.pname()));
   for (auto& [index, ins] : colour)
     for (uint32_t k = 0; k < index; ++k)
       if (!colour.count(k)) {
@@ -100,6 +100,39 @@ void check_pixel20(Ctx& c) {
                             index, k));
         break;
       }
+}
+
+// vs_3_0: no fixed outputs; what is written goes to declared o# (rules_decls.cpp). A
+// position output is what the rasterizer needs: warn when none is declared or written.
+void check_vertex30(Ctx& c) {
+  const ir::Declaration* position = nullptr;
+  for (const ir::Declaration& d : c.prog.decls)
+    if (d.reg.file == RegFile::Output && d.usage == ir::DeclUsage::Position && d.usage_index == 0)
+      position = &d;
+  if (!position) {
+    c.warning(program_loc(c), "output-rule",
+              "no output is declared dcl_position: the vertex position is undefined");
+    return;
+  }
+  for (const ir::Instruction& ins : c.prog.code)
+    if (ins.dst && ins.dst->file == RegFile::Output &&
+        (ins.dst->rel || ins.dst->index == position->reg.index))
+      return;
+  c.warning(position->loc, "output-rule",
+            fmt::format("the position output o{} is declared but never written",
+                        position->reg.index));
+}
+
+// ps_3_0: oC# and oDepth are written by any instruction, any number of times, with any
+// mask (the ps_2_0 "one mov" rule is gone); oC0..oC3 and oDepth only.
+void check_pixel30(Ctx& c) {
+  bool colour = false;
+  for (const ir::Instruction& ins : c.prog.code)
+    colour = colour || (ins.dst && (ins.dst->file == RegFile::ColorOut ||
+                                    ins.dst->file == RegFile::DepthOut));
+  if (!colour)
+    c.warning(program_loc(c), "output-rule",
+              "ps_3_0 writes neither oC# nor oDepth: the pixel has no output");
 }
 
 void check_pixel1x(Ctx& c) {
@@ -114,9 +147,13 @@ void check_pixel1x(Ctx& c) {
 } // namespace
 
 void check_outputs(Ctx& c) {
-  if (c.vs())
+  if (c.vs30())
+    check_vertex30(c);
+  else if (c.ps30())
+    check_pixel30(c);
+  else if (c.vs())
     check_vertex(c);
-  else if (c.ps20())
+  else if (c.ps2up())
     check_pixel20(c);
   else
     check_pixel1x(c);

@@ -1,6 +1,7 @@
 // Register files and indices per profile (ir::limits), read-only / write-only files, read
 // ports (distinct registers of one file per instruction; a co-issued pair counted
 // together) and where relative addressing may appear.
+#include <optional>
 #include <set>
 #include <string>
 #include <utility>
@@ -46,17 +47,39 @@ void check_index(Ctx& c, RegFile f, uint32_t index, const ir::SourceLoc& loc) {
   }
 }
 
+// Which files may be addressed relatively: c# in vertex shaders; in vs_3_0 also v# (with
+// aL) and the outputs o#; in ps_3_0 c# and v# with aL only.
+bool relative_file_ok(const Ctx& c, RegFile f) {
+  if (c.vs30()) return f == RegFile::Const || f == RegFile::Input || f == RegFile::Output;
+  if (c.ps30()) return f == RegFile::Const || f == RegFile::Input;
+  return c.vs() && f == RegFile::Const;
+}
+
+void check_relative(Ctx& c, RegFile file, uint32_t index, const std::optional<ir::RelAddr>& rel,
+                    const ir::SourceLoc& loc) {
+  if (!rel) return;
+  if (!c.vs() && !c.ps30()) {
+    c.error(loc, "relative-address",
+            "relative addressing is only available in vertex shaders and ps_3_0");
+    return;
+  }
+  if (!relative_file_ok(c, file)) {
+    c.error(loc, "relative-address",
+            fmt::format("{} cannot be addressed relatively in {}", reg_name(file, index),
+                        c.pname()));
+    return;
+  }
+  const ir::SourceLoc at = rel->loc.valid() ? rel->loc : loc;
+  if (!c.vs() && rel->file != RegFile::Loop)
+    c.error(at, "relative-address", "ps_3_0 addresses registers with aL only (v[aL + n])");
+  if (c.vs30() && file == RegFile::Input && rel->file != RegFile::Loop)
+    c.error(at, "relative-address", "vs_3_0 addresses inputs with aL only (v[aL + n])");
+}
+
 void check_relative(Ctx& c, const ir::SrcOperand& s) {
   if (!s.rel) return;
-  if (!c.vs()) {
-    c.error(s.loc, "relative-address", "relative addressing is only available in vertex shaders");
-    return;
-  }
-  if (s.file != RegFile::Const) {
-    c.error(s.loc, "relative-address",
-            fmt::format("only c# can be addressed relatively, not {}", reg_name(s.file, s.index)));
-    return;
-  }
+  check_relative(c, s.file, s.index, s.rel, s.loc);
+  if (!c.vs() || !relative_file_ok(c, s.file)) return;
   if (c.vs11() && (s.rel->file != RegFile::Addr || s.rel->component != 0))
     c.error(s.rel->loc.valid() ? s.rel->loc : s.loc, "relative-address",
             "vs_1_1 only allows c[a0.x + n] relative addressing");
@@ -145,7 +168,11 @@ void check_registers(Ctx& c) {
   const auto& code = c.prog.code;
   for (size_t i = 0; i < code.size(); ++i) {
     const ir::Instruction& ins = code[i];
-    if (ins.dst) check_index(c, ins.dst->file, ins.dst->index, ins.dst->loc);
+    if (ins.dst) {
+      check_index(c, ins.dst->file, ins.dst->index, ins.dst->loc);
+      check_relative(c, ins.dst->file, ins.dst->index, ins.dst->rel, ins.dst->loc);
+    }
+    if (ins.pred) check_index(c, ins.pred->file, ins.pred->index, ins.pred->loc);
     for (const ir::SrcOperand& s : ins.src) {
       check_index(c, s.file, s.index, s.loc);
       check_relative(c, s);

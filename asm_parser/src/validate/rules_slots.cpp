@@ -59,7 +59,7 @@ void check_pixel(Ctx& c) {
     } else if (is_arith_op(ins)) {
       arith.add(c, ins, cost, scope());
     }
-    if (c.ps20()) total.add(c, ins, cost + info_of(ins).extra_arith, "");
+    if (c.ps2up()) total.add(c, ins, cost + info_of(ins).extra_arith, "");
   }
 }
 

@@ -104,8 +104,9 @@ void check_arith(Ctx& c, const ir::Instruction& ins) {
   if (ins.dst && ins.dst->file == RegFile::Addr) {
     if (c.vs11() && ins.op != Opcode::Mov)
       c.error(ins.dst->loc, "instruction-rule", "vs_1_1 writes a0 with mov only");
-    if (c.vs20() && ins.op != Opcode::Mova)
-      c.error(ins.dst->loc, "instruction-rule", "vs_2_0 writes a0 with mova only (not mov)");
+    if (c.vs2up() && ins.op != Opcode::Mova)
+      c.error(ins.dst->loc, "instruction-rule",
+              fmt::format("{} writes a0 with mova only (not mov)", c.pname()));
   }
   check_matrix(c, ins);
 }
@@ -125,7 +126,10 @@ void check_texture(Ctx& c, const ir::Instruction& ins) {
     return;
   }
   if (ins.op == Opcode::TexKill) {
-    if (d.file != RegFile::Temp && d.file != RegFile::Texture)
+    if (c.ps30() && d.file != RegFile::Temp && d.file != RegFile::Input)
+      c.error(d.loc, "operand-kind",
+              fmt::format("texkill in ps_3_0 tests r# or v#, not {}", reg_name(d.file, d.index)));
+    else if (!c.ps30() && d.file != RegFile::Temp && d.file != RegFile::Texture)
       c.error(d.loc, "operand-kind",
               fmt::format("texkill tests r# or t#, not {}", reg_name(d.file, d.index)));
     return;
@@ -136,7 +140,14 @@ void check_texture(Ctx& c, const ir::Instruction& ins) {
     return;
   }
   need_temp_dst(c, ins);
-  if ((c.ps14() || c.ps20()) && !ins.src.empty() && ins.src[0].file != RegFile::Temp &&
+  if (c.sm3()) {
+    // 3.0 texture coordinates come from r#, v# or c#.
+    const RegFile f = ins.src.empty() ? RegFile::Temp : ins.src[0].file;
+    if (f != RegFile::Temp && f != RegFile::Input && f != RegFile::Const)
+      c.error(ins.src[0].loc, "operand-kind",
+              fmt::format("{} reads coordinates from r#, v# or c#, not {}", mnemonic(ins),
+                          reg_name(f, ins.src[0].index)));
+  } else if ((c.ps14() || c.ps2up()) && !ins.src.empty() && ins.src[0].file != RegFile::Temp &&
       ins.src[0].file != RegFile::Texture)
     c.error(ins.src[0].loc, "operand-kind",
             fmt::format("{} reads coordinates from t# or r#, not {}", mnemonic(ins),

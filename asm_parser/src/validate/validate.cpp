@@ -15,8 +15,16 @@ bool validate(const ir::Program& program, ir::Profile target, ir::DiagnosticSink
   // Rules run family by family; their findings are handed on in source order, as a
   // compiler reports them.
   ir::DiagnosticSink local;
+  const ir::Caps2x caps = options.caps.value_or(ir::default_caps(target));
+  // The 2.x caps narrow the profile's largest counts (NumTemps, NumInstructionSlots).
+  ir::ProfileLimits lim = ir::limits(target);
+  if (ir::is_sm2x(target)) {
+    lim.temps = caps.temps;
+    lim.max_slots = caps.slots;
+    if (target == ir::Profile::ps_2_x && !caps.no_texture_limit) lim.max_tex_slots = 32;
+  }
   {
-    detail::Ctx all{program, target, ir::limits(target), local, options, {}};
+    detail::Ctx all{program, target, lim, local, options, caps, {}};
     detail::check_legality(all);
   }
   // Every other rule looks only at instructions the profile has: an instruction that does
@@ -30,7 +38,7 @@ bool validate(const ir::Program& program, ir::Profile target, ir::DiagnosticSink
   std::erase_if(legal.defs, [&](const ir::ConstDef& d) {
     return d.file != ir::RegFile::Const && !ir::legal_in(ir::op_info(ir::Opcode::DefI), target);
   });
-  detail::Ctx c{legal, target, ir::limits(target), local, options, {}};
+  detail::Ctx c{legal, target, lim, local, options, caps, {}};
   detail::check_registers(c);
   detail::check_declarations(c);
   detail::check_order(c);
@@ -43,6 +51,7 @@ bool validate(const ir::Program& program, ir::Profile target, ir::DiagnosticSink
   detail::check_flow(c);
   detail::check_dataflow(c);
   detail::check_outputs(c);
+  detail::check_later(c);
   std::vector<ir::Diagnostic> found = local.all();
   std::stable_sort(found.begin(), found.end(),
                    [](const ir::Diagnostic& a, const ir::Diagnostic& b) {

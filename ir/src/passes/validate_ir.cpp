@@ -1,6 +1,9 @@
 // The structural IR validator: the invariants every pass leaves behind. Unlike the
 // assembler's validator it knows no listing rules (read ports, slot counts, ordering); it
 // guards what the backends index and dispatch on.
+#include <algorithm>
+#include <iterator>
+
 #include <fmt/format.h>
 
 #include "tierlift/ir/passes.h"
@@ -30,6 +33,9 @@ uint32_t addressable(RegFile f, Profile p) {
   case RegFile::ConstBool: return l.bool_consts;
   case RegFile::Loop: return vs ? 1 : 0;
   case RegFile::Label: return l.labels;
+  case RegFile::Output: return vs ? l.tex_outputs : 0;
+  case RegFile::Predicate: return has_predication(p) ? 1 : 0;
+  case RegFile::Misc: return p == Profile::ps_3_0 ? 2 : 0;
   }
   return 0;
 }
@@ -86,6 +92,34 @@ Status validate_ir(const Program& program) {
   }
   if (sink.has_errors()) return fail(sink);
   return ok_status();
+}
+
+Status check_executable(const Program& program, std::string_view backend) {
+  if (std::find(std::begin(kExecutableProfiles), std::end(kExecutableProfiles),
+                program.profile) != std::end(kExecutableProfiles))
+    return ok_status();
+  // Name the first statement that only the later profiles have, so the user sees what
+  // to change; a listing of plain 2.0 instructions is refused at its version line.
+  DiagnosticSink sink;
+  for (const Instruction& ins : program.code) {
+    const auto v = static_cast<int>(ins.op);
+    const bool later_only = v >= static_cast<int>(Opcode::SinCos3) && v < kOpcodeCount;
+    if (later_only || ins.pred) {
+      std::string what = v < kOpcodeCount ? std::string(op_info(ins.op).mnemonic) : "?";
+      if (ins.pred) what = "predicated " + what;
+      sink.error(ins.loc, "not-supported",
+                 fmt::format("not supported yet by {}: {} ({} executes shader models 1 "
+                             "and 2.0; {} is checked, printed and assembled only)",
+                             backend, what, backend, profile_name(program.profile)));
+      return fail(sink);
+    }
+  }
+  sink.error(program.version_loc, "not-supported",
+             fmt::format("not supported yet by {}: {} ({} executes shader models 1 and 2.0; {} "
+                         "is checked, printed and assembled only)",
+                         backend, profile_name(program.profile), backend,
+                         profile_name(program.profile)));
+  return fail(sink);
 }
 
 Result<Program> run_pass(const Program& program, std::string_view name,

@@ -41,6 +41,7 @@ std::string describe_binary(std::string_view bytes);
 struct LoadOptions {
   ParseOptions parse;                 // text only: -D, -I
   std::optional<ir::Profile> profile; // validate against this instead of the version's
+  std::optional<ir::Caps2x> caps;     // 2.x features to validate against (fxc's ps_2_a ...)
   bool skip_validation = false;
   // false: apply_windows_leniency (validator.h) before validating — what Windows took is
   // taken, with a warning. true: the documented rules only.

@@ -30,6 +30,8 @@
 //   output-rule       oPos, oT#, oC#, oDepth rules; (warning) ps_1_x r0 never written
 #pragma once
 
+#include <optional>
+
 #include "tierlift/ir/diagnostic.h"
 #include "tierlift/ir/program.h"
 
@@ -46,6 +48,9 @@ size_t apply_windows_leniency(ir::Program& program, ir::Profile target, ir::Diag
 
 struct ValidateOptions {
   bool warnings = true; // legal-but-suspicious code (unread declared input, def twice, ...)
+  // The 2.x features of the device (temps, slots, flow-control depths, predication,
+  // gradients, arbitrary swizzles, dependent reads); unset: ir::default_caps(target).
+  std::optional<ir::Caps2x> caps;
 };
 
 // Checks `program` against `target` (normally program.profile; --profile may name another).

@@ -1,4 +1,4 @@
-// THE opcode table: one row per instruction shape of the seven profiles. The parser,
+// THE opcode table: one row per instruction shape of the eleven profiles. The parser,
 // validator, printer, bytecode reader/writer, interpreter and code generator all read it.
 // A mnemonic whose operand shape differs by profile has one row per shape (texld in ps_1_4
 // takes one source, in ps_2_0 two); find_opcode() picks the row legal in a profile.
@@ -28,6 +28,11 @@ enum class Opcode : uint8_t {
   TexM3x3, TexM3x3Spec, TexM3x3VSpec, TexDp3, TexDp3Tex, TexDepth,
   // declarations and definitions (kept in Program::decls / Program::defs, not in code)
   Dcl, Def, DefI, DefB,
+  // shader models 2.x and 3.0. A comparison is part of the row (bytecode control field
+  // gt 1, eq 2, ge 3, lt 4, ne 5, le 6: OpInfo::control), one row per mnemonic as written.
+  SinCos3, Break, BreakGt, BreakEq, BreakGe, BreakLt, BreakNe, BreakLe, BreakP,
+  IfGt, IfEq, IfGe, IfLt, IfNe, IfLe, SetpGt, SetpEq, SetpGe, SetpLt, SetpNe, SetpLe,
+  TexLdL, TexLdD, Dsx, Dsy,
   Count
 };
 // clang-format on
@@ -53,6 +58,7 @@ enum class OperandKind : uint8_t {
   LoopReg, // aL
   Const,   // c# only (sincos constants, texm3x3spec eye vector)
   Temp,    // r# only (sgn scratch registers)
+  Predicate, // p0 (breakp); if and callnz also take p0 where their row says Bool
 };
 
 struct OpInfo {

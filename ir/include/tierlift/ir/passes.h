@@ -25,6 +25,10 @@ namespace tierlift::ir {
 // profile can address (relative constant bases and matrix rows included), defs in a
 // constant file. Errors point at the instruction or operand, rule "ir".
 Status validate_ir(const Program& program);
+// OK when `backend` ("the interpreter", "SPIR-V") can run the program: shader models 1 and
+// 2.0. A 2.x or 3.0 program is refused with a positioned "not-supported" error naming its
+// first instruction that only those profiles have (or its version line).
+Status check_executable(const Program& program, std::string_view backend);
 
 // Runs `pass` over a copy of `program`, then validate_ir; a failure names the pass.
 Result<Program> run_pass(const Program& program, std::string_view name,

@@ -66,6 +66,8 @@ struct DstOperand {
   uint32_t index = 0;
   uint8_t mask = kFullMask;
   SourceLoc loc;
+  // o[a0.x + n] / o[aL + n]: vs_3_0 outputs addressed relatively.
+  std::optional<RelAddr> rel = std::nullopt;
 };
 
 // Instruction (result) modifiers. shift: +1 _x2, +2 _x4, +3 _x8, -1 _d2, -2 _d4, -3 _d8.
@@ -80,6 +82,8 @@ struct Instruction {
   Opcode op = Opcode::Nop;
   InstrMods mods;
   bool coissue = false; // "+" prefix (ps_1_x)
+  // "(p0.x)" / "(!p0)" before the mnemonic (2.x, 3.0): p0 with its swizzle and SrcMod::Not.
+  std::optional<SrcOperand> pred;
   std::optional<DstOperand> dst;
   std::vector<SrcOperand> src;
   SourceLoc loc;    // the mnemonic

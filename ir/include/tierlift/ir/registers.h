@@ -28,13 +28,18 @@ enum class RegFile : uint8_t {
   ConstBool, // b#
   Loop,      // aL
   Label,     // l#
+  Output,    // o# (vs_3_0: outputs declared with a semantic; bytecode type 6, as oT#)
+  Predicate, // p0 (2.x, 3.0)
+  Misc,      // vPos (0), vFace (1) (ps_3_0)
 };
 
 inline constexpr uint32_t kRastPos = 0, kRastFog = 1, kRastPts = 2;
+inline constexpr uint32_t kMiscPosition = 0, kMiscFace = 1;
 
 // Bytecode register type (docs/d3d9-rules.md §11.2).
 uint8_t bytecode_regtype(RegFile f);
-std::optional<RegFile> regfile_from_bytecode(uint8_t type, ShaderStage stage);
+// Type 3 is a0 or t# by stage; type 6 is oT# before vs_3_0 and o# in it.
+std::optional<RegFile> regfile_from_bytecode(uint8_t type, Profile profile);
 
 // "r3", "c[a0.x + 4]" is printed elsewhere; this gives the plain name of file+index.
 std::string register_name(RegFile f, uint32_t index);

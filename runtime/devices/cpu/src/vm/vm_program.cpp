@@ -179,6 +179,8 @@ Prepared prepare(const ir::Program& program, const ir::Conventions& conv) {
   // The structural checks every backend runs first (ir/passes.h); the interpreter refuses
   // a program it cannot run as it refuses any other: std::invalid_argument.
   if (ir::Status s = ir::validate_ir(program); !s) throw std::invalid_argument(s.message());
+  if (ir::Status s = ir::check_executable(program, "the interpreter"); !s)
+    throw std::invalid_argument(s.message());
   Prepared p;
   p.program = program;
   p.conv = conv;

@@ -1,0 +1,85 @@
+// Shader models 2.x and 3.0 through the command line: check, fmt, assemble and disasm take
+// them; spirv and run refuse them cleanly (not yet executed) with a positioned message and
+// exit 1; --profile takes fxc's ps_2_a / ps_2_b presets.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "cli_test_util.h"
+#include "temp_dir.h"
+
+using tierlift::test::read_all;
+using tierlift::test::run_cli;
+
+namespace {
+
+struct Scratch : tierlift::test::TempDir {
+  Scratch() : TempDir("later") {}
+};
+
+constexpr const char* kPs30 = "ps_3_0\n"
+                              "dcl_texcoord0 v0.xy\n"
+                              "dcl_2d s0\n"
+                              "texld r0, v0, s0\n"
+                              "setp_gt p0, r0, c0\n"
+                              "(p0) mul r0, r0, c1\n"
+                              "mov oC0, r0\n";
+
+constexpr const char* kVs30 = "vs_3_0\n"
+                              "dcl_position v0\n"
+                              "dcl_position o0\n"
+                              "mov o0, v0\n";
+
+} // namespace
+
+TEST(CliLaterProfiles, CheckFmtAssembleDisasm) {
+  Scratch s;
+  const std::string ps = s.file("a.psh", kPs30);
+  auto check = run_cli("check " + ps);
+  EXPECT_EQ(check.exit_code, 0) << check.err;
+  auto fmt = run_cli("fmt " + ps + " -o -");
+  ASSERT_EQ(fmt.exit_code, 0) << fmt.err;
+  EXPECT_NE(fmt.out.find("(p0) mul r0, r0, c1\n"), std::string::npos) << fmt.out;
+  EXPECT_NE(fmt.out.find("dcl_texcoord v0.xy\n"), std::string::npos) << fmt.out;
+  ASSERT_EQ(run_cli("assemble " + ps + " -o " + s.file("a.bin")).exit_code, 0);
+  // ps_3_0 version token 0xFFFF0300, little-endian.
+  EXPECT_EQ(read_all(s.file("a.bin")).substr(0, 4), std::string("\x00\x03\xFF\xFF", 4));
+  auto dis = run_cli("disasm " + s.file("a.bin") + " -o -");
+  ASSERT_EQ(dis.exit_code, 0) << dis.err;
+  EXPECT_EQ(dis.out, fmt.out);
+  EXPECT_EQ(run_cli("check " + s.file("v.vsh", kVs30)).exit_code, 0);
+}
+
+TEST(CliLaterProfiles, SpirvAndRunRefuseWithAPosition) {
+  Scratch s;
+  const std::string ps = s.file("a.psh", kPs30);
+  auto spirv = run_cli("spirv " + ps);
+  EXPECT_EQ(spirv.exit_code, 1);
+  EXPECT_NE(spirv.err.find("a.psh:5:1: error: not supported yet by SPIR-V: setp_gt"),
+            std::string::npos)
+      << spirv.err;
+  auto run = run_cli("run --ps " + ps + " --backend cpu -o " + s.file("out.png"));
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_NE(run.err.find("a.psh:5:1: error: not supported yet by the interpreter: setp_gt"),
+            std::string::npos)
+      << run.err;
+  EXPECT_FALSE(std::filesystem::exists(s.file("out.png")));
+  // A 3.0 listing of plain instructions is refused at its version line.
+  auto vs = run_cli("spirv " + s.file("v.vsh", kVs30));
+  EXPECT_EQ(vs.exit_code, 1);
+  EXPECT_NE(vs.err.find("v.vsh:1:1: error: not supported yet by SPIR-V: vs_3_0"),
+            std::string::npos)
+      << vs.err;
+}
+
+TEST(CliLaterProfiles, ProfilePresetsOfFxc) {
+  Scratch s;
+  const std::string ps = s.file("b.psh", "ps_2_x\ndcl t0\ndsx r0, t0\nmov oC0, r0\n");
+  EXPECT_EQ(run_cli("check " + ps).exit_code, 0);
+  EXPECT_EQ(run_cli("check --profile ps_2_a " + ps).exit_code, 0);
+  auto b = run_cli("check --profile ps_2_b " + ps);
+  EXPECT_EQ(b.exit_code, 1);
+  EXPECT_NE(b.err.find("b.psh:3:1: error: dsx is a gradient instruction"), std::string::npos)
+      << b.err;
+  EXPECT_EQ(run_cli("check --profile ps_2_c " + ps).exit_code, 2);
+}
