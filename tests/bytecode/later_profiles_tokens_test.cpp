@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "tierlift/asm/bytecode.h"
+#include "tierlift/asm/constant_table.h"
 #include "tierlift/asm/parser.h"
 #include "tierlift/asm/printer.h"
 
@@ -216,4 +217,25 @@ TEST(LaterProfileTokens, PredicatedTokenOutsideTheLaterProfilesIsRefused) {
   ir::DiagnosticSink d2;
   EXPECT_FALSE(as::disassemble(
       {0xffff0300, 0x03000001, 0x800f200c, 0xb0000000, 0x80e40000, 0x0000ffff}, d2));
+}
+
+// A ps_3_0 stream with fxc's CTAB comment after the version token (layout as in
+// constant_table_test.cpp: float4x4 "g_mWVP" in c4..c7, target "ps_3_0" = 0x335F7370
+// 0x0000305F): the table is read, and the comment is skipped by the disassembler.
+TEST(LaterProfileTokens, Ps30ConstantTableIsRead) {
+  const Tokens stream = {
+      0xFFFF0300, 0x0016FFFE, 0x42415443, 28, 80, 0xFFFF0300, 1, 28, 0, 72, 64, 0x00040002,
+      0x00000004, 48,         0,          0x00030003, 0x00040004, 0x00000001, 0, 0x576D5F67,
+      0x00005056, 0x335F7370, 0x0000305F, 0x00006C74, 0x02000001, 0x800F0800, 0xA0E40004,
+      0x0000FFFF};
+  ir::DiagnosticSink diags;
+  auto t = as::read_constant_table(stream, diags);
+  ASSERT_TRUE(t.has_value());
+  EXPECT_EQ(t->target, "ps_3_0");
+  ASSERT_EQ(t->constants.size(), 1u);
+  EXPECT_EQ(t->constants[0].registers(), "c4..c7");
+  auto p = as::disassemble(stream, diags);
+  ASSERT_TRUE(p.has_value());
+  EXPECT_EQ(p->profile, ir::Profile::ps_3_0);
+  EXPECT_EQ(as::print_program(*p), "ps_3_0\nmov oC0, c4\n");
 }

@@ -26,7 +26,7 @@ TEST(ParserVersion, BothSpellingsGiveTheSameProfile) {
 
 TEST(ParserVersion, UnsupportedVersionIsNamed) {
   expect_first_errors(
-      {{.text = "ps_3_0\nmov oC0, r0\n", .rule = "unsupported-version", .line = 1, .col = 1}});
+      {{.text = "ps_4_0\nmov oC0, r0\n", .rule = "unsupported-version", .line = 1, .col = 1}});
 }
 
 TEST(ParserComments, AllCommentFormsAreIgnored) {

@@ -1,6 +1,10 @@
 // Shader models 2.x and 3.0: listings in the style fxc writes are valid, and each rule of
 // docs/d3d9-rules.md §14 is reported where it is broken (bad) and quiet in the nearest
 // listing that keeps it (good).
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
 #include "tierlift/ir/profile.h"
 #include "validator_test_util.h"
 
@@ -84,6 +88,22 @@ TEST(LaterProfiles, FxcStylePs30IsValid) {
 
 TEST(LaterProfiles, FxcStyleVs30IsValid) {
   EXPECT_TRUE(is_clean(kVs30));
+}
+
+// The fuzz seeds of the later profiles (tests/fuzz/seeds, read by .ci/run) stay valid, so
+// the fuzzer starts from listings that reach every rule.
+TEST(LaterProfiles, FuzzSeedsAreValid) {
+  namespace fs = std::filesystem;
+  int n = 0;
+  for (const auto& e : fs::directory_iterator(fs::path(TIERLIFT_SOURCE_DIR) / "tests/fuzz/seeds")) {
+    std::ifstream in(e.path());
+    std::stringstream text;
+    text << in.rdbuf();
+    SCOPED_TRACE(e.path().string());
+    EXPECT_TRUE(is_clean(text.str()));
+    ++n;
+  }
+  EXPECT_GE(n, 4);
 }
 
 // A ps_2_x listing with 2_a's features is valid under the default (most capable) caps and
