@@ -1,9 +1,10 @@
 // The one opcode table. Columns of `slots`: vs_1_1 vs_2_0 ps_1_1 ps_1_2 ps_1_3 ps_1_4 ps_2_0;
 // "no" = not legal there. The columns of the 2.x and 3.0 profiles (vs_2_x ps_2_x vs_3_0
 // ps_3_0) follow vs_2_0 and ps_2_0 unless kLaterColumns says otherwise; the rows only
-// those profiles have (after DefB) give them with later(). Slot costs are the ISA's (macros at their expanded size). The
-// semantic columns (matrix rows, written components, source lanes, sampling, implicit
-// reads and writes) are added by the wrappers around a row; semantics.h answers from them.
+// those profiles have (after DefB) give them with later(). Slot costs are the ISA's (macros at
+// their expanded size). The semantic columns (matrix rows, written components, source lanes,
+// sampling, implicit reads and writes) are added by the wrappers around a row; semantics.h answers
+// from them.
 #include <algorithm>
 #include <map>
 #include <string>

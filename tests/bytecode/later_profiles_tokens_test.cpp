@@ -128,8 +128,7 @@ TEST(LaterProfileTokens, Vs30AsWindowsAssemblesIt) {
       {"vs_3_0\nmov r2, r1_abs\n", {0xfffe0300, 0x02000001, 0x800f0002, 0x8be40001, 0x0000ffff}},
       {"vs_3_0\nmov r2, r1.xygb\n", {0xfffe0300, 0x02000001, 0x800f0002, 0x80940001, 0x0000ffff}},
       {"vs_3_0\nmov r2.xyb, r1\n", {0xfffe0300, 0x02000001, 0x80070002, 0x80e40001, 0x0000ffff}},
-      {"vs_3_0\nmova_sat a0.x, r1\n",
-       {0xfffe0300, 0x0200002e, 0xb0110000, 0x80e40001, 0x0000ffff}},
+      {"vs_3_0\nmova_sat a0.x, r1\n", {0xfffe0300, 0x0200002e, 0xb0110000, 0x80e40001, 0x0000ffff}},
       // 3.0's sincos has one source (0x25 with length 2).
       {"vs_3_0\nsincos r0, r1\n", {0xfffe0300, 0x02000025, 0x800f0000, 0x80e40001, 0x0000ffff}},
       {"vs_3_0\ndef c0, 1.0f, 1.0f, 1.0f, 0.5f\n",
@@ -188,18 +187,22 @@ TEST(LaterProfileTokens, EveryComparisonByHand) {
     expect_case({("vs_2_x\nsetp_" + n + " p0, r0.x, c1.y\n").c_str(),
                  {0xfffe0201, 0x0300005e | cmp, 0xb00f1000, 0x80000000, 0xa0550001, 0x0000ffff}});
   }
+  // The ifc_ / breakc_ spellings of other disassemblers are the same instructions.
+  EXPECT_EQ(as::assemble(parse("ps_3_0\nifc_lt r0.x, c1.y\nendif\n")),
+            as::assemble(parse("ps_3_0\nif_lt r0.x, c1.y\nendif\n")));
+  EXPECT_EQ(as::assemble(parse("vs_3_0\nrep i0\nbreakc_ne r0.x, c1.y\nendrep\n")),
+            as::assemble(parse("vs_3_0\nrep i0\nbreak_ne r0.x, c1.y\nendrep\n")));
 }
 
 // ps_3_0 keeps ps_2_0's texld forms (texldp control 1, texldb control 2) and predicated
 // texture reads: (p0.y) puts p0 with .yyyy (0x55) after the destination.
 TEST(LaterProfileTokens, Ps30TextureFormsByHand) {
   expect_case({"ps_3_0\ndcl_2d s1\ntexldp r0, r1, s1\ntexldb r2, r1, s1\n",
-               {0xffff0300, 0x0200001f, 0x90000000, 0xa00f0801, 0x03010042, 0x800f0000,
-                0x80e40001, 0xa0e40801, 0x03020042, 0x800f0002, 0x80e40001, 0xa0e40801,
-                0x0000ffff}});
-  expect_case({"ps_3_0\n(p0.y) texld r0, r1, s1\n",
-               {0xffff0300, 0x14000042, 0x800f0000, 0xb0551000, 0x80e40001, 0xa0e40801,
-                0x0000ffff}});
+               {0xffff0300, 0x0200001f, 0x90000000, 0xa00f0801, 0x03010042, 0x800f0000, 0x80e40001,
+                0xa0e40801, 0x03020042, 0x800f0002, 0x80e40001, 0xa0e40801, 0x0000ffff}});
+  expect_case(
+      {"ps_3_0\n(p0.y) texld r0, r1, s1\n",
+       {0xffff0300, 0x14000042, 0x800f0000, 0xb0551000, 0x80e40001, 0xa0e40801, 0x0000ffff}});
   // sincos in 3.0 with its usual .xy mask and a replicate source: mask 3 → 0x80030000.
   expect_case({"ps_3_0\nsincos r0.xy, r1.w\n",
                {0xffff0300, 0x02000025, 0x80030000, 0x80ff0001, 0x0000ffff}});
@@ -209,9 +212,8 @@ TEST(LaterProfileTokens, Ps30TextureFormsByHand) {
 // addressing of a destination outside vs_3_0.
 TEST(LaterProfileTokens, PredicatedTokenOutsideTheLaterProfilesIsRefused) {
   ir::DiagnosticSink diags;
-  EXPECT_FALSE(as::disassemble({0xfffe0200, 0x14000002, 0x800f0002, 0xbde41000, 0x80e40002,
-                                0x80e40003, 0x0000ffff},
-                               diags));
+  EXPECT_FALSE(as::disassemble(
+      {0xfffe0200, 0x14000002, 0x800f0002, 0xbde41000, 0x80e40002, 0x80e40003, 0x0000ffff}, diags));
   ASSERT_FALSE(diags.all().empty());
   EXPECT_NE(diags.all()[0].message.find("predicated"), std::string::npos);
   ir::DiagnosticSink d2;
@@ -223,11 +225,11 @@ TEST(LaterProfileTokens, PredicatedTokenOutsideTheLaterProfilesIsRefused) {
 // constant_table_test.cpp: float4x4 "g_mWVP" in c4..c7, target "ps_3_0" = 0x335F7370
 // 0x0000305F): the table is read, and the comment is skipped by the disassembler.
 TEST(LaterProfileTokens, Ps30ConstantTableIsRead) {
-  const Tokens stream = {
-      0xFFFF0300, 0x0016FFFE, 0x42415443, 28, 80, 0xFFFF0300, 1, 28, 0, 72, 64, 0x00040002,
-      0x00000004, 48,         0,          0x00030003, 0x00040004, 0x00000001, 0, 0x576D5F67,
-      0x00005056, 0x335F7370, 0x0000305F, 0x00006C74, 0x02000001, 0x800F0800, 0xA0E40004,
-      0x0000FFFF};
+  const Tokens stream = {0xFFFF0300, 0x0016FFFE, 0x42415443, 28,         80,         0xFFFF0300,
+                         1,          28,         0,          72,         64,         0x00040002,
+                         0x00000004, 48,         0,          0x00030003, 0x00040004, 0x00000001,
+                         0,          0x576D5F67, 0x00005056, 0x335F7370, 0x0000305F, 0x00006C74,
+                         0x02000001, 0x800F0800, 0xA0E40004, 0x0000FFFF};
   ir::DiagnosticSink diags;
   auto t = as::read_constant_table(stream, diags);
   ASSERT_TRUE(t.has_value());

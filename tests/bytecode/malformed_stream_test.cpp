@@ -91,7 +91,8 @@ TEST(BytecodeMalformed, LengthFieldMustMatchOperands) {
 TEST(BytecodeMalformed, UnknownOpcodes) {
   expect_error(with(kPs20, 11, 0x02001234), 11, "unknown opcode 0x1234");
   // dsx (0x5B) exists only in ps_2_x and ps_3_0: the table names it.
-  expect_error(with(kPs20, 11, 0x0200005B), 11, "'dsx' (opcode 0x5B) is not an instruction of ps_2_0");
+  expect_error(with(kPs20, 11, 0x0200005B), 11,
+               "'dsx' (opcode 0x5B) is not an instruction of ps_2_0");
   // dp4 exists, but not in ps_1_1.
   expect_error({0xFFFF0101, 0x00000009, 0x800F0000, 0x80E40000, 0x80E40000, 0x0000FFFF}, 1,
                "not an instruction of ps_1_1");

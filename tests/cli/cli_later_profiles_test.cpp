@@ -67,8 +67,7 @@ TEST(CliLaterProfiles, SpirvAndRunRefuseWithAPosition) {
   // A 3.0 listing of plain instructions is refused at its version line.
   auto vs = run_cli("spirv " + s.file("v.vsh", kVs30));
   EXPECT_EQ(vs.exit_code, 1);
-  EXPECT_NE(vs.err.find("v.vsh:1:1: error: not supported yet by SPIR-V: vs_3_0"),
-            std::string::npos)
+  EXPECT_NE(vs.err.find("v.vsh:1:1: error: not supported yet by SPIR-V: vs_3_0"), std::string::npos)
       << vs.err;
 }
 

@@ -46,7 +46,7 @@ TEST(OpcodeTable, AvailabilityMatchesTheSheet) {
 TEST(Profile, BothSpellingsAndTokens) {
   EXPECT_EQ(parse_profile("ps.1.3"), Profile::ps_1_3);
   EXPECT_EQ(parse_profile("vs_2_0"), Profile::vs_2_0);
-  EXPECT_FALSE(parse_profile("ps_3_0").has_value());
+  EXPECT_FALSE(parse_profile("ps_4_0").has_value());
   EXPECT_EQ(version_token(Profile::vs_1_1), 0xFFFE0101u);
   EXPECT_EQ(version_token(Profile::ps_1_4), 0xFFFF0104u);
   EXPECT_EQ(version_token(Profile::ps_2_0), 0xFFFF0200u);

@@ -98,7 +98,8 @@ private:
     if (rel.file != RegFile::Addr && rel.file != RegFile::Loop)
       problem(rel.loc, "relative addressing needs a0 or aL");
     if (rel.component > 3) problem(rel.loc, "relative component out of range");
-    body.push_back(register_bits(rel.file, 0) | (uint32_t{rel.token_swizzle()} << bc::kSwizzleShift));
+    body.push_back(register_bits(rel.file, 0) |
+                   (uint32_t{rel.token_swizzle()} << bc::kSwizzleShift));
   }
 
   // The destination, and the address token of o[a0.x + n] (vs_3_0).

@@ -49,10 +49,9 @@ bool Parser::version() {
   if (t.kind == TokKind::End) {
     ir::SourceLoc loc = t.loc;
     if (!loc.valid()) loc = {main_file_, 1, 1, 0};
-    return fail(
-        loc, "missing-version",
-        "missing version statement: a listing starts with vs_1_1, vs_2_0, vs_2_x, vs_3_0, "
-        "ps_1_1 ... ps_2_0, ps_2_x or ps_3_0");
+    return fail(loc, "missing-version",
+                "missing version statement: a listing starts with vs_1_1, vs_2_0, vs_2_x, vs_3_0, "
+                "ps_1_1 ... ps_2_0, ps_2_x or ps_3_0");
   }
   if (t.kind == TokKind::Ident) {
     std::string name = lower(t.text);
@@ -112,6 +111,9 @@ bool Parser::statement() {
   std::string name = lower(mn.text);
   if (ir::parse_profile(name))
     return fail(mn.loc, "syntax", "the version statement must come first and only once");
+  // Some disassemblers write the comparison forms as ifc_gt / breakc_gt: the same rows.
+  if (name.starts_with("ifc_")) name.erase(2, 1);
+  if (name.starts_with("breakc_")) name.erase(5, 1);
   std::string_view base = name, mods;
   if (size_t us = name.find('_'); us != std::string::npos) {
     base = std::string_view(name).substr(0, us);

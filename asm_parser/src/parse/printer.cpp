@@ -74,7 +74,8 @@ std::string src_text(const ir::SrcOperand& s) {
 }
 
 std::string dst_text(const ir::DstOperand& d) {
-  std::string reg = d.rel ? relative_text(d.file, d.index, *d.rel) : ir::register_name(d.file, d.index);
+  std::string reg =
+      d.rel ? relative_text(d.file, d.index, *d.rel) : ir::register_name(d.file, d.index);
   return reg + ir::mask_text(d.mask);
 }
 

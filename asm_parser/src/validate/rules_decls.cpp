@@ -47,7 +47,8 @@ void check_decl_sm3(Ctx& c, const ir::Declaration& d,
             fmt::format("two {} declare the same usage and usage index ({})",
                         r.file == RegFile::Output ? "outputs" : "inputs", d.usage_index));
   if (d.mods.sat || d.mods.shift != 0)
-    c.error(d.loc, "modifier", fmt::format("{} declarations take only _pp and _centroid", c.pname()));
+    c.error(d.loc, "modifier",
+            fmt::format("{} declarations take only _pp and _centroid", c.pname()));
   else if ((c.vs30() || sampler) && (d.mods.pp || d.mods.centroid))
     c.error(d.loc, "modifier",
             c.vs30() ? "vs_3_0 declarations take no modifiers"

@@ -123,7 +123,8 @@ void check_flow(Ctx& c) {
       continue;
     }
     if (is_break(ins.op)) {
-      if (!loops_open()) c.error(ins.loc, "flow", fmt::format("{} outside loop/rep", mnemonic(ins)));
+      if (!loops_open())
+        c.error(ins.loc, "flow", fmt::format("{} outside loop/rep", mnemonic(ins)));
       if (ins.op != Opcode::Break && c.caps.dynamic_depth == 0)
         c.error(ins.loc, "flow",
                 fmt::format("{} is dynamic flow control, which these {} caps do not have "

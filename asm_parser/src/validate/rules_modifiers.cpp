@@ -83,7 +83,8 @@ std::string srcmod_problem(const Ctx& c, const ir::Instruction& ins, size_t k, i
   std::string_view name = srcmod_text(m);
   if (m == SrcMod::Not) {
     // 2.x/3.0: the predicate may be negated where it is read (if !p0.x, breakp !p0.x).
-    if (s.file == RegFile::Predicate && (kind == OperandKind::Bool || kind == OperandKind::Predicate))
+    if (s.file == RegFile::Predicate &&
+        (kind == OperandKind::Bool || kind == OperandKind::Predicate))
       return {};
     return ins.op == Opcode::CallNz && k == 1 ? ""
                                               : "! (boolean not) is only allowed on callnz's b#";
@@ -97,7 +98,8 @@ std::string srcmod_problem(const Ctx& c, const ir::Instruction& ins, size_t k, i
   if (c.vs() || c.ps2up()) {
     if (m == SrcMod::Neg && (kind == OperandKind::Vector || kind == OperandKind::Scalar ||
                              kind == OperandKind::Temp || kind == OperandKind::Const))
-      return (c.ps2up() && is_texture_op(ins)) ? "texture instructions take no source modifier" : "";
+      return (c.ps2up() && is_texture_op(ins)) ? "texture instructions take no source modifier"
+                                               : "";
     if (m == SrcMod::Neg) return fmt::format("{} cannot be negated", reg_name(s.file, s.index));
     return fmt::format("{} is not allowed in {}, which only has negate", name, c.pname());
   }

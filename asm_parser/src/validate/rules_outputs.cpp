@@ -118,9 +118,9 @@ void check_vertex30(Ctx& c) {
     if (ins.dst && ins.dst->file == RegFile::Output &&
         (ins.dst->rel || ins.dst->index == position->reg.index))
       return;
-  c.warning(position->loc, "output-rule",
-            fmt::format("the position output o{} is declared but never written",
-                        position->reg.index));
+  c.warning(
+      position->loc, "output-rule",
+      fmt::format("the position output o{} is declared but never written", position->reg.index));
 }
 
 // ps_3_0: oC# and oDepth are written by any instruction, any number of times, with any
@@ -128,8 +128,8 @@ void check_vertex30(Ctx& c) {
 void check_pixel30(Ctx& c) {
   bool colour = false;
   for (const ir::Instruction& ins : c.prog.code)
-    colour = colour || (ins.dst && (ins.dst->file == RegFile::ColorOut ||
-                                    ins.dst->file == RegFile::DepthOut));
+    colour = colour || (ins.dst &&
+                        (ins.dst->file == RegFile::ColorOut || ins.dst->file == RegFile::DepthOut));
   if (!colour)
     c.warning(program_loc(c), "output-rule",
               "ps_3_0 writes neither oC# nor oDepth: the pixel has no output");

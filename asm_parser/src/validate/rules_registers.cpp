@@ -64,9 +64,9 @@ void check_relative(Ctx& c, RegFile file, uint32_t index, const std::optional<ir
     return;
   }
   if (!relative_file_ok(c, file)) {
-    c.error(loc, "relative-address",
-            fmt::format("{} cannot be addressed relatively in {}", reg_name(file, index),
-                        c.pname()));
+    c.error(
+        loc, "relative-address",
+        fmt::format("{} cannot be addressed relatively in {}", reg_name(file, index), c.pname()));
     return;
   }
   const ir::SourceLoc at = rel->loc.valid() ? rel->loc : loc;

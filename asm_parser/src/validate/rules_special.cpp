@@ -148,7 +148,7 @@ void check_texture(Ctx& c, const ir::Instruction& ins) {
               fmt::format("{} reads coordinates from r#, v# or c#, not {}", mnemonic(ins),
                           reg_name(f, ins.src[0].index)));
   } else if ((c.ps14() || c.ps2up()) && !ins.src.empty() && ins.src[0].file != RegFile::Temp &&
-      ins.src[0].file != RegFile::Texture)
+             ins.src[0].file != RegFile::Texture)
     c.error(ins.src[0].loc, "operand-kind",
             fmt::format("{} reads coordinates from t# or r#, not {}", mnemonic(ins),
                         reg_name(ins.src[0].file, ins.src[0].index)));

@@ -95,8 +95,8 @@ Status validate_ir(const Program& program) {
 }
 
 Status check_executable(const Program& program, std::string_view backend) {
-  if (std::find(std::begin(kExecutableProfiles), std::end(kExecutableProfiles),
-                program.profile) != std::end(kExecutableProfiles))
+  if (std::find(std::begin(kExecutableProfiles), std::end(kExecutableProfiles), program.profile) !=
+      std::end(kExecutableProfiles))
     return ok_status();
   // Name the first statement that only the later profiles have, so the user sees what
   // to change; a listing of plain 2.0 instructions is refused at its version line.

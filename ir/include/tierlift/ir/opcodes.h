@@ -51,13 +51,13 @@ enum class OperandKind : uint8_t {
   Vector, // any readable register, swizzle allowed
   Scalar, // replicate swizzle required (.x/.y/.z/.w); default .x when none given? no: see validator
   Matrix, // base register of a matrix macro: no swizzle, no negate
-  Sampler, // s#
-  Bool,    // b# (optionally !b# for callnz)
-  Int,     // i#
-  Label,   // l#
-  LoopReg, // aL
-  Const,   // c# only (sincos constants, texm3x3spec eye vector)
-  Temp,    // r# only (sgn scratch registers)
+  Sampler,   // s#
+  Bool,      // b# (optionally !b# for callnz)
+  Int,       // i#
+  Label,     // l#
+  LoopReg,   // aL
+  Const,     // c# only (sincos constants, texm3x3spec eye vector)
+  Temp,      // r# only (sgn scratch registers)
   Predicate, // p0 (breakp); if and callnz also take p0 where their row says Bool
 };
 

@@ -4,8 +4,8 @@
 
 #include <cstdint>
 #include <optional>
-#include <utility>
 #include <string_view>
+#include <utility>
 
 namespace tierlift::ir {
 
@@ -129,15 +129,15 @@ const ProfileLimits& limits(Profile p);
 // shader model 3 minimums): the knobs a ps_2_x / vs_2_x listing is validated against. fxc's
 // targets ps_2_a, ps_2_b and vs_2_a are presets of these (docs/d3d9-rules.md §14).
 struct Caps2x {
-  uint8_t temps;              // r# (NumTemps: 12..32)
-  uint16_t slots;             // instruction slots (96..512 pixel, 256 vertex; 512 in SM3)
-  uint8_t static_depth;       // nesting of call/callnz/if b#/rep/loop (StaticFlowControlDepth)
-  uint8_t dynamic_depth;      // nesting of if_comp/if pred/break_comp (DynamicFlowControlDepth)
-  bool predication;           // p0, setp, (p0) instructions
-  bool gradients;             // dsx, dsy, texldd (pixel)
-  bool arbitrary_swizzle;     // any source swizzle (pixel)
-  bool no_dependent_limit;    // no limit on dependent texture reads (pixel)
-  bool no_texture_limit;      // no separate texture-instruction limit (pixel)
+  uint8_t temps;           // r# (NumTemps: 12..32)
+  uint16_t slots;          // instruction slots (96..512 pixel, 256 vertex; 512 in SM3)
+  uint8_t static_depth;    // nesting of call/callnz/if b#/rep/loop (StaticFlowControlDepth)
+  uint8_t dynamic_depth;   // nesting of if_comp/if pred/break_comp (DynamicFlowControlDepth)
+  bool predication;        // p0, setp, (p0) instructions
+  bool gradients;          // dsx, dsy, texldd (pixel)
+  bool arbitrary_swizzle;  // any source swizzle (pixel)
+  bool no_dependent_limit; // no limit on dependent texture reads (pixel)
+  bool no_texture_limit;   // no separate texture-instruction limit (pixel)
 };
 // The default for a profile: for vs_2_x / ps_2_x the most every 2.x device may report
 // (Windows validates against the device, so a listing one device takes is legal); for the

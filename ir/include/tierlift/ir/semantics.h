@@ -47,8 +47,7 @@ struct OpSemantics {
   // Components the instruction can write, per profile (frc in vs_1_1 writes .xy only, m3x2
   // .xy, crs .xyz); 0 where the "destination" names a stage or operand, not a result
   // (texm3x*pad, texkill, texdepth, texm3x2depth).
-  std::array<uint8_t, kProfileCount> writes{0xF, 0xF, 0xF, 0xF, 0xF, 0xF,
-                                            0xF, 0xF, 0xF, 0xF, 0xF};
+  std::array<uint8_t, kProfileCount> writes{0xF, 0xF, 0xF, 0xF, 0xF, 0xF, 0xF, 0xF, 0xF, 0xF, 0xF};
   LaneRule lanes = LaneRule::Written;
   uint8_t src_lanes = 0; // LaneRule::Fixed: the lanes each vector source reads
   bool samples = false;  // reads a texture (through s#, or stage m in ps_1_x)

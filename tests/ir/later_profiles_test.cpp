@@ -1,0 +1,123 @@
+// The four later profiles in the IR: names, version tokens, register types, the opcode
+// table's rows for them (bytecode numbers from the published D3D9 encoding), and the
+// execution guard that refuses them with a position.
+#include <gtest/gtest.h>
+
+#include "tierlift/ir/opcodes.h"
+#include "tierlift/ir/passes.h"
+#include "tierlift/ir/profile.h"
+#include "tierlift/ir/registers.h"
+
+using namespace tierlift::ir;
+
+TEST(LaterProfiles, NamesAndVersionTokens) {
+  EXPECT_EQ(parse_profile("vs_2_x"), Profile::vs_2_x);
+  EXPECT_EQ(parse_profile("ps.2.x"), Profile::ps_2_x);
+  EXPECT_EQ(parse_profile("ps_2_X"), Profile::ps_2_x);
+  EXPECT_EQ(parse_profile("vs.3.0"), Profile::vs_3_0);
+  EXPECT_EQ(parse_profile("ps_3_0"), Profile::ps_3_0);
+  EXPECT_FALSE(parse_profile("ps_2_a").has_value()); // a caps preset, not a profile
+  EXPECT_EQ(version_token(Profile::vs_2_x), 0xFFFE0201u);
+  EXPECT_EQ(version_token(Profile::ps_2_x), 0xFFFF0201u);
+  EXPECT_EQ(version_token(Profile::vs_3_0), 0xFFFE0300u);
+  EXPECT_EQ(version_token(Profile::ps_3_0), 0xFFFF0300u);
+  EXPECT_EQ(profile_from_version_token(0xFFFF0300u), Profile::ps_3_0);
+  EXPECT_TRUE(is_vertex(Profile::vs_3_0));
+  EXPECT_TRUE(is_pixel(Profile::ps_2_x));
+}
+
+TEST(LaterProfiles, RegisterTypes) {
+  EXPECT_EQ(bytecode_regtype(RegFile::Predicate), 19);
+  EXPECT_EQ(bytecode_regtype(RegFile::Misc), 17);
+  EXPECT_EQ(bytecode_regtype(RegFile::Output), 6);
+  EXPECT_EQ(regfile_from_bytecode(6, Profile::vs_3_0), RegFile::Output);
+  EXPECT_EQ(regfile_from_bytecode(6, Profile::vs_2_0), RegFile::TexCrdOut);
+  EXPECT_EQ(regfile_from_bytecode(19, Profile::ps_3_0), RegFile::Predicate);
+  EXPECT_EQ(register_name(RegFile::Misc, kMiscFace), "vFace");
+  EXPECT_EQ(register_name(RegFile::Misc, kMiscPosition), "vPos");
+  EXPECT_EQ(register_name(RegFile::Output, 11), "o11");
+}
+
+// Opcode and control numbers of the D3D9 encoding (d3d9types.h's D3DSIO_* values and the
+// comparison codes gt 1, eq 2, ge 3, lt 4, ne 5, le 6).
+TEST(LaterProfiles, NewRowsCarryThePublishedNumbers) {
+  struct Pin {
+    const char* mnemonic;
+    Profile profile;
+    uint16_t code;
+    uint8_t control;
+  };
+  const Pin pins[] = {
+      {"break", Profile::vs_2_x, 0x2C, 0},    {"break_gt", Profile::vs_2_x, 0x2D, 1},
+      {"break_eq", Profile::vs_2_x, 0x2D, 2}, {"break_ge", Profile::ps_2_x, 0x2D, 3},
+      {"break_lt", Profile::ps_3_0, 0x2D, 4}, {"break_ne", Profile::vs_3_0, 0x2D, 5},
+      {"break_le", Profile::vs_3_0, 0x2D, 6}, {"breakp", Profile::ps_2_x, 0x60, 0},
+      {"if_gt", Profile::vs_2_x, 0x29, 1},    {"if_eq", Profile::vs_2_x, 0x29, 2},
+      {"if_ge", Profile::ps_2_x, 0x29, 3},    {"if_lt", Profile::ps_3_0, 0x29, 4},
+      {"if_ne", Profile::vs_3_0, 0x29, 5},    {"if_le", Profile::vs_3_0, 0x29, 6},
+      {"setp_gt", Profile::vs_2_x, 0x5E, 1},  {"setp_eq", Profile::vs_2_x, 0x5E, 2},
+      {"setp_ge", Profile::ps_2_x, 0x5E, 3},  {"setp_lt", Profile::ps_3_0, 0x5E, 4},
+      {"setp_ne", Profile::vs_3_0, 0x5E, 5},  {"setp_le", Profile::vs_3_0, 0x5E, 6},
+      {"texldl", Profile::vs_3_0, 0x5F, 0},   {"texldd", Profile::ps_2_x, 0x5D, 0},
+      {"dsx", Profile::ps_3_0, 0x5B, 0},      {"dsy", Profile::ps_3_0, 0x5C, 0},
+      {"sincos", Profile::vs_3_0, 0x25, 0},   {"loop", Profile::ps_3_0, 0x1B, 0},
+      {"defi", Profile::ps_2_x, 0x30, 0},     {"defb", Profile::ps_3_0, 0x2F, 0},
+  };
+  for (const Pin& p : pins) {
+    SCOPED_TRACE(p.mnemonic);
+    const OpInfo* row = find_opcode(p.mnemonic, p.profile);
+    ASSERT_NE(row, nullptr);
+    EXPECT_TRUE(legal_in(*row, p.profile));
+    EXPECT_EQ(row->code, p.code);
+    EXPECT_EQ(row->control, p.control);
+    EXPECT_EQ(find_opcode_by_code(p.code, p.control, p.profile), row);
+  }
+  // sincos: three sources up to 2.x, one in 3.0.
+  EXPECT_EQ(find_opcode("sincos", Profile::vs_2_x)->num_src, 3);
+  EXPECT_EQ(find_opcode("sincos", Profile::ps_3_0)->num_src, 1);
+  EXPECT_EQ(find_opcode("sincos", Profile::ps_3_0)->op, Opcode::SinCos3);
+}
+
+TEST(LaterProfiles, CapsPresets) {
+  auto a = caps_preset("ps_2_a"), b = caps_preset("ps_2_b"), v = caps_preset("vs_2_a");
+  ASSERT_TRUE(a && b && v);
+  EXPECT_EQ(a->first, Profile::ps_2_x);
+  EXPECT_EQ(a->second.temps, 22);
+  EXPECT_TRUE(a->second.predication && a->second.gradients && a->second.arbitrary_swizzle);
+  EXPECT_EQ(b->second.temps, 32);
+  EXPECT_FALSE(b->second.predication || b->second.gradients || b->second.no_dependent_limit);
+  EXPECT_EQ(v->first, Profile::vs_2_x);
+  EXPECT_EQ(v->second.temps, 13);
+  EXPECT_FALSE(caps_preset("ps_2_c").has_value());
+}
+
+// The interpreter and the code generator run shader models 1 and 2.0 only; a later program
+// is refused at its first later-only instruction, or at its version line.
+TEST(LaterProfiles, ExecutionIsRefusedWithAPosition) {
+  Program p;
+  p.profile = Profile::ps_3_0;
+  p.version_loc = {1, 1, 1, 6};
+  Instruction mov;
+  mov.op = Opcode::Mov;
+  mov.loc = {1, 2, 1, 3};
+  p.code.push_back(mov);
+  Status s = check_executable(p, "the interpreter");
+  ASSERT_FALSE(s.ok());
+  ASSERT_EQ(s.diagnostics().size(), 1u);
+  EXPECT_EQ(s.diagnostics()[0].loc.line, 1u);
+  EXPECT_NE(s.diagnostics()[0].message.find("not supported yet by the interpreter: ps_3_0"),
+            std::string::npos);
+  Instruction setp;
+  setp.op = Opcode::SetpLe;
+  setp.loc = {1, 3, 5, 7};
+  p.code.push_back(setp);
+  s = check_executable(p, "SPIR-V");
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.diagnostics()[0].loc.line, 3u);
+  EXPECT_EQ(s.diagnostics()[0].loc.col, 5u);
+  EXPECT_NE(s.diagnostics()[0].message.find("not supported yet by SPIR-V: setp_le"),
+            std::string::npos);
+  p.profile = Profile::ps_2_0;
+  p.code.pop_back();
+  EXPECT_TRUE(check_executable(p, "SPIR-V").ok());
+}
