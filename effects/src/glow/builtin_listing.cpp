@@ -4,6 +4,7 @@
 
 #include "tierlift/asm/load.h"
 #include "tierlift/io/bounded_read.h"
+#include "tierlift/ir/passes.h"
 #include "tierlift/ir/result_diagnostics.h"
 #include "tierlift/listings/embedded.h"
 
@@ -38,6 +39,10 @@ ListingResult parse_and_validate(std::string text, std::string name, bool allow_
   if (!r.program)
     return ir::fail(sources.files[file].name, "listing",
                     ir::render_text(r.program.diagnostics(), sources));
+  // Every effect pass runs on the interpreter and on Vulkan: a 2.x / 3.0 listing is read
+  // but cannot run yet, and is refused here with its position.
+  if (ir::Status s = ir::check_executable(*r.program, "the interpreter or SPIR-V"); !s)
+    return ir::fail(sources.files[file].name, "listing", ir::render_text(s.diagnostics(), sources));
   return std::make_shared<const ir::Program>(std::move(r.program).value());
 }
 
