@@ -287,3 +287,36 @@ const RuleCase kCases[] = {
 TIERLIFT_RULE_SUITE(LaterRules, kCases);
 
 } // namespace
+
+// The listings Wine's d3dcompiler tests expect D3DAssemble to refuse, for the later
+// profiles: each is refused here by the parser or the validator.
+TEST(LaterProfiles, WhatWindowsRefusesIsRefused) {
+  const char* refused[] = {
+      "ps_3_0\ndcl_2d s2\ntexldd_x2 r0, v1, s2, v3, v4\n",
+      "vs_1_1\n(p0) add r0, r0, v0\n",
+      "ps_3_0\nmov r0, v[ a0 + 12 ]\n",
+      "ps_3_0\nmov r0, v[ aL.x + 12 ]\n",
+      "ps_3_0\ndcl_2d s2\ntexldd r0, t1, s2, v3, v4\n",
+      "vs_3_0\nmov r2, 2 - r0\n",
+      "vs_3_0\nmov r2, c[ aL + 3.4 ]\n",
+      "vs_3_0\nmov r2, 1 - r1\n",
+      "ps_3_0\ndcl_positiont o0\n",
+      "vs_3_0\nadd_pp r0, r0, r1\n",
+      "ps_3_0\nadd_x4 r0, r0, r1\n",
+      "ps_3_0\nadd oC4, r0, r1\n",
+      "vs_3_0\nadd r0, r0, v17\n",
+      "vs_3_0\nadd o13, r0, r1\n",
+      "vs_3_0\ncall l2048\n",
+      "ps_3_0\ntexld r0, r1, s20\n",
+      "vs_3_0\nadd r0, r0[ a0.x ], r1\n",
+      "ps_3_0\nadd r0, v[ a0.x ], r1\n",
+      "ps_3_0\ndcl_texcoord0_sat v0\n",
+      "ps_3_0\ndcl_texcoord0_x2 v0\n",
+      "vs_3_0\ndcl_texcoord0_centroid v0\n",
+      "vs_3_0\ndcl_2d_pp s0\n",
+  };
+  for (const char* text : refused) {
+    tierlift::vtest::Run r = tierlift::vtest::run(text);
+    EXPECT_FALSE(r.parsed.program && r.valid) << text;
+  }
+}
