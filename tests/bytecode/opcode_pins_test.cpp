@@ -218,9 +218,9 @@ TEST(OpcodePins, RegisterTypes) {
     uint8_t type;
   };
   static constexpr TypePin kTypePins[] = {
-      {"r0", 0},  {"v0", 1},  {"c0", 2},  {"a0", 3},    {"t0", 3},  {"oPos", 4},
-      {"oD0", 5}, {"oT0", 6}, {"o0", 6},  {"i0", 7},    {"oC0", 8}, {"oDepth", 9},
-      {"s0", 10}, {"b0", 14}, {"aL", 15}, {"vPos", 17}, {"l0", 18}, {"p0", 19},
+      {"r0", 0},  {"v0", 1},    {"c0", 2},     {"a0", 3},  {"t0", 3},     {"oPos", 4}, {"oD0", 5},
+      {"oT0", 6}, {"o0", 6},    {"i0", 7},     {"oC0", 8}, {"oDepth", 9}, {"s0", 10},  {"b0", 14},
+      {"aL", 15}, {"vPos", 17}, {"vFace", 17}, {"l0", 18}, {"p0", 19},
   };
   size_t checked = 0;
   for (int f = 0; f < 256; ++f) {
@@ -235,7 +235,7 @@ TEST(OpcodePins, RegisterTypes) {
     EXPECT_EQ(ir::bytecode_regtype(file), pin->type);
     // Back from the number: types 3 (a0 / t#) and the vertex outputs the stage tells apart.
     const auto stage = name == "t0" ? ir::ShaderStage::Pixel : ir::ShaderStage::Vertex;
-    if (name != "o0" && name != "vPos") {
+    if (name != "o0" && name != "vPos" && name != "vFace") {
       EXPECT_EQ(ir::regfile_from_bytecode(pin->type, stage), file);
     }
     ++checked;
