@@ -24,7 +24,7 @@ uint32_t le32(const std::string& b, size_t i) {
 class ArrayScanner {
 public:
   ArrayScanner(const std::string& text, ir::DiagnosticSink& diags, uint32_t file)
-      : s_(text), diags_(&diags), file_(file) {}
+      : s_(text), diags_(diags), file_(file) {}
 
   std::optional<std::vector<uint32_t>> run() {
     size_t first = find_open_brace(0);
@@ -40,15 +40,13 @@ public:
     std::vector<Stream> streams;
     std::optional<std::vector<uint32_t>> first_without_version;
     size_t report_at = std::string::npos;
-    ir::DiagnosticSink* real = diags_;
     for (size_t open = first; open != std::string::npos; open = find_open_brace(open + 1)) {
       std::string name = array_name();
       bool declared_array = decl_.find('[') != std::string::npos;
       if (report_at == std::string::npos && declared_array) report_at = open;
-      ir::DiagnosticSink scratch;
-      diags_ = &scratch;
+      trying_ = true; // a candidate that is no array fails silently
       auto tokens = read_values(open);
-      diags_ = real;
+      trying_ = false;
       if (!tokens) continue;
       if ((tokens->front() >> 16) >= 0xFFFE)
         streams.push_back({open, name, std::move(*tokens)});
@@ -61,12 +59,12 @@ public:
     }
     if (streams.size() > 1) {
       const Stream& s = streams.front();
-      diags_->note(loc_of(s.open), "token-file",
-                   fmt::format("{} arrays in this file hold a token stream; the first, {}at "
-                               "line {}, is the one read (keep one shader per file to read "
-                               "another)",
-                               streams.size(), s.name.empty() ? "" : "'" + s.name + "' ",
-                               loc_of(s.open).line));
+      diags_.note(loc_of(s.open), "token-file",
+                  fmt::format("{} arrays in this file hold a token stream; the first, {}at "
+                              "line {}, is the one read (keep one shader per file to read "
+                              "another)",
+                              streams.size(), s.name.empty() ? "" : "'" + s.name + "' ",
+                              loc_of(s.open).line));
     }
     return std::move(streams.front().tokens);
   }
@@ -124,8 +122,10 @@ private:
     return loc;
   }
 
+  // While candidates are tried nothing is reported, and no position is worked out: that
+  // walk from the start of the file, once per brace, would make a large source quadratic.
   std::nullopt_t fail(size_t at, const std::string& message) {
-    diags_->error(loc_of(at), "token-file", message);
+    if (!trying_) diags_.error(loc_of(at), "token-file", message);
     return std::nullopt;
   }
 
@@ -281,7 +281,8 @@ private:
   }
 
   const std::string& s_;
-  ir::DiagnosticSink* diags_; // switched to a scratch sink while candidates are tried
+  ir::DiagnosticSink& diags_;
+  bool trying_ = false; // reading a candidate array: failures are not reported
   uint32_t file_;
   size_t pos_ = 0;
   std::string decl_;

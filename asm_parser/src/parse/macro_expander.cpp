@@ -42,12 +42,15 @@ bool is_modifier_suffix(std::string_view s) {
 // longest prefix that names an object-like macro, and only when all that follows it is
 // modifiers, so an identifier that merely contains a macro's name is left alone.
 size_t MacroTable::modifier_split(std::string_view name) const {
-  for (size_t us = name.rfind('_'); us != std::string_view::npos && us > 0;
+  // The longest modifier run ("_sat_x2_bx2") is far shorter than this; the bound keeps a
+  // name made of thousands of '_' parts linear.
+  constexpr size_t kMaxSuffix = 32;
+  for (size_t us = name.rfind('_');
+       us != std::string_view::npos && us > 0 && name.size() - us <= kMaxSuffix;
        us = name.rfind('_', us - 1)) {
+    if (!is_modifier_suffix(name.substr(us))) continue;
     auto it = macros_.find(name.substr(0, us));
-    if (it != macros_.end() && !it->second.function_like && !it->second.active &&
-        is_modifier_suffix(name.substr(us)))
-      return us;
+    if (it != macros_.end() && !it->second.function_like && !it->second.active) return us;
   }
   return std::string_view::npos;
 }

@@ -41,9 +41,9 @@ void texcrd_mask(const ir::Instruction& ins, ir::DiagnosticSink& diags) {
   if (ins.op != Opcode::TexCrd || !ins.dst || ins.dst->mask != ir::kFullMask) return;
   bool dw = !ins.src.empty() && ins.src[0].mod == ir::SrcMod::Dw;
   diags.warning(ins.dst->loc, "write-mask",
-                fmt::format("texcrd without a write mask defines {} only; the 4th channel{} "
-                            "is left undefined (Microsoft's assembler keeps the full mask, and "
-                            "so does tierlift; --strict rejects it)",
+                fmt::format("texcrd with the full write mask defines {} only; the 4th channel{} "
+                            "is left undefined (Microsoft's assembler writes it when no mask is "
+                            "given, and tierlift keeps the full mask; --strict rejects it)",
                             dw ? ".rg (.xy)" : ".rgb (.xyz)", dw ? " and the 3rd" : ""));
 }
 
