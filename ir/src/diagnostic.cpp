@@ -34,9 +34,30 @@ size_t utf8_length(std::string_view s, size_t i) {
   return n;
 }
 
+// A byte that is not UTF-8, read as Windows-1252 (the code page legacy listings' comments
+// are most often in), as UTF-8; "?" for the five bytes that code page leaves unassigned.
+std::string windows1252(unsigned char b) {
+  static constexpr uint16_t k80[32] = {
+      0x20AC, 0,      0x201A, 0x0192, 0x201E, 0x2026, 0x2020, 0x2021, 0x02C6, 0x2030, 0x0160,
+      0x2039, 0x0152, 0,      0x017D, 0,      0,      0x2018, 0x2019, 0x201C, 0x201D, 0x2022,
+      0x2013, 0x2014, 0x02DC, 0x2122, 0x0161, 0x203A, 0x0153, 0,      0x017E, 0x0178};
+  const uint32_t cp = b >= 0xA0 ? b : k80[b - 0x80];
+  if (cp == 0) return "?";
+  std::string out;
+  if (cp < 0x800) {
+    out += static_cast<char>(0xC0 | (cp >> 6));
+  } else {
+    out += static_cast<char>(0xE0 | (cp >> 12));
+    out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
+  }
+  out += static_cast<char>(0x80 | (cp & 0x3F));
+  return out;
+}
+
 // The quoted line made printable, and the caret's indentation counted in characters, not
-// bytes: tabs become one space, control bytes and invalid UTF-8 become '?', and a UTF-8
-// character (the no-break spaces of web-copied listings) takes one column.
+// bytes: tabs become one space, control bytes become '?', a byte that is not UTF-8 is read
+// as Windows-1252 (one byte, one column: the positions are those of the file as saved), and
+// a UTF-8 character (the no-break spaces of web-copied listings) takes one column.
 struct QuotedLine {
   std::string text;
   size_t caret_indent = 0;
@@ -50,7 +71,7 @@ QuotedLine quote(std::string_view line, size_t byte_col) {
     unsigned char u = static_cast<unsigned char>(line[i]);
     size_t n = utf8_length(line, i);
     if (n == 0) {
-      q.text += '?';
+      q.text += windows1252(u);
       n = 1;
     } else if (n == 1) {
       q.text += line[i] == '\t' ? ' ' : (u < 0x20 || u == 0x7f) ? '?' : line[i];

@@ -73,7 +73,9 @@ TEST(ParserErrors, EmptyFileAndCommentOnlyFile) {
 }
 
 TEST(ParserErrors, BinaryInputIsOneError) {
-  std::string nul("vs_1_1\nmov r0, v0\nab\0cd\n", 21);
+  // A NUL with text after it (NUL bytes that only end the file are padding: the text ends
+  // there, ShippedForms.TrailingNulBytesEndTheText).
+  std::string nul("vs_1_1\nmov r0, v0\nab\0cd\n", 24);
   std::string junk = "vs_1_1\nmov r0, \xFF\xFE\x80 v0\n";
   for (int i = 0; i < 1000; ++i) junk += "\xC3\x28\xA0\xA1 \x90\n";
   expect_first_errors({

@@ -20,13 +20,6 @@ const RuleCase kCases[] = {
      5,
      {"oT0 together must be .x, .xy, .xyz or .xyzw; they are .y"},
      "vs_1_1\nmov oPos, v0\nmov oT0.x, v0\nmov oT0.y, v0\n"},
-    {"TexcoordsFromZero",
-     "vs_1_1\nmov oPos, v0\nmov oT1, v0\n",
-     "output-rule",
-     3,
-     5,
-     {"oT1 is written, so every oT below it must be written too; oT0 is not"},
-     "vs_1_1\nmov oPos, v0\nmov oT1, v0\nmov oT0, v0\n"},
     {"Ps20WritesOC0",
      "ps_2_0\nmov oC1, c0\n",
      "output-rule",
@@ -93,6 +86,22 @@ const RuleCase kCases[] = {
 };
 
 TIERLIFT_RULE_SUITE(OutputRules, kCases);
+
+// Which oT# a vertex shader writes is its own business: Direct3D hands oTn to the pixel
+// shader's texture coordinate n by number, and fxc writes oT1 alone for a shader whose only
+// coordinate output is TEXCOORD1 (docs/d3d9-rules.md §3.1). tierlift used to demand oT0..oT(n-1)
+// with oTn; these are the listings it refused.
+TEST(OutputRulesTaken, TexcoordsNeedNotStartAtZero) {
+  using tierlift::vtest::is_clean;
+  EXPECT_TRUE(is_clean("vs_1_1\ndcl_position v0\nmov oPos, v0\nmov oT1, v0\n"));
+  EXPECT_TRUE(is_clean("vs_1_1\ndcl_position v0\nm4x4 oPos, v0, c0\nmov oT3.xy, v0\n"
+                       "mov oT7, v0\n"));
+  EXPECT_TRUE(is_clean("vs_2_0\ndcl_position v0\ndcl_texcoord1 v1\nm4x4 oPos, v0, c0\n"
+                       "mov oT1.xy, v1\n"));
+  // The mask rule of each oT# still holds.
+  EXPECT_TRUE(tierlift::vtest::has_error("vs_1_1\ndcl_position v0\nmov oPos, v0\nmov oT2.y, v0\n",
+                                         "output-rule", 4, 5, {"oT2 together must be .x, .xy"}));
+}
 
 TEST(OutputWarnings, Ps1xR0NeverWritten) {
   const char* text = "ps_1_1\nmov r1, v0\n";

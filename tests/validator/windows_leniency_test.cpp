@@ -8,6 +8,8 @@
 #include "loaded_listing.h"
 #include "tierlift/asm/bytecode.h"
 #include "tierlift/asm/load.h"
+#include "tierlift/asm/parser.h"
+#include "tierlift/ir/semantics.h"
 
 namespace {
 
@@ -59,25 +61,36 @@ TEST(WindowsLeniency, BareRcpInTextStillReadsX) {
   EXPECT_EQ(l.diags.warning_count(), 0u) << l.rendered;
 }
 
-// ps_1_4 "texcrd r0, t0" without a mask writes .xyz. The stream Wine's d3d8 cnd_test
-// lists as "texcrd r0, t0" carries exactly that mask (0x80070000): the whole shader
-// assembles to its tokens (def = 0x51, texcrd = 0x40, cnd = 0x50; 1.0f = 0x3F800000).
-TEST(WindowsLeniency, Ps14TexcrdWithoutMaskWritesXyz) {
+// ps_1_4 "texcrd r0, t0" without a mask: Microsoft's assembler writes the full mask
+// (0x800F0000; Wine's d3dcompiler asm tests expect exactly that for "texcrd r0, t0", and
+// 0x801F0004 for "texcrd_sat r4, t3"), so the stream keeps it; what the instruction
+// defines is still .xyz (.xy with _dw). tierlift used to write 0x80070000 here.
+// Tokens by hand: def = 0x51, texcrd = 0x40, cnd = 0x50; 1.0f = 0x3F800000.
+TEST(WindowsLeniency, Ps14TexcrdWithoutMaskKeepsTheFullMask) {
   const char* text = "ps_1_4\ndef c0, 0, 0, 0, 1\ntexcrd r0, t0\nmov r0.a, c0.a\n"
                      "cnd r0, r0, c1, c2\n";
   Loaded l = load(text, false);
   ASSERT_TRUE(l.r().program.ok()) << l.rendered;
   EXPECT_EQ(l.count(ir::Severity::Warning, "write-mask"), 1u) << l.rendered;
-  EXPECT_EQ(l.r().program->code[0].dst->mask, 0x7);
+  EXPECT_NE(l.rendered.find("keeps the full mask"), std::string::npos) << l.rendered;
+  EXPECT_EQ(l.rendered.find("as Windows did"), std::string::npos) << l.rendered;
+  const ir::Instruction& texcrd = l.r().program->code[0];
+  EXPECT_EQ(texcrd.dst->mask, 0xF);
+  EXPECT_EQ(ir::written_mask(texcrd, ir::Profile::ps_1_4), 0x7);
   Tokens expected = {0xFFFF0104, 0x00000051, 0xA00F0000, 0x00000000, 0x00000000,
-                     0x00000000, 0x3F800000, 0x00000040, 0x80070000, 0xB0E40000,
+                     0x00000000, 0x3F800000, 0x00000040, 0x800F0000, 0xB0E40000,
                      0x00000001, 0x80080000, 0xA0FF0000, 0x00000050, 0x800F0000,
                      0x80E40000, 0xA0E40001, 0xA0E40002, 0x0000FFFF};
   EXPECT_EQ(as::assemble(*l.r().program), expected);
-  // _dw writes .rg.
+  // texcrd_sat is refused by the validator; the assembler still writes its full mask.
+  as::ParseResult sat = as::parse_text("ps_1_4\ntexcrd_sat r4, t3\nmov r0.rgb, r4\n");
+  ASSERT_TRUE(sat.program.has_value());
+  EXPECT_EQ(as::assemble(*sat.program), (Tokens{0xFFFF0104, 0x00000040, 0x801F0004, 0xB0E40003,
+                                                0x00000001, 0x80070000, 0x80E40004, 0x0000FFFF}));
+  // _dw defines .rg.
   Loaded dw = load("ps_1_4\ntexcrd r0, t0_dw.xyw\nmov r0.a, c0.a\n", false);
   ASSERT_TRUE(dw.r().program.ok()) << dw.rendered;
-  EXPECT_EQ(dw.r().program->code[0].dst->mask, 0x3);
+  EXPECT_EQ(ir::written_mask(dw.r().program->code[0], ir::Profile::ps_1_4), 0x3);
 }
 
 TEST(WindowsLeniency, StrictRejectsTexcrdWithoutMask) {

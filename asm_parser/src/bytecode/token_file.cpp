@@ -3,6 +3,7 @@
 // small scanner, not a C parser: it finds the first '{' outside comments, strings and
 // preprocessor lines and reads numbers separated by commas up to the matching '}'.
 #include <cctype>
+#include <map>
 
 #include <fmt/format.h>
 
@@ -26,9 +27,54 @@ public:
       : s_(text), diags_(diags), file_(file) {}
 
   std::optional<std::vector<uint32_t>> run() {
-    size_t open = find_open_brace();
+    size_t first = find_open_brace(0);
+    if (first == std::string::npos) return read_values(std::string::npos); // a bare list
+    // C++ around the array (engines keep precompiled shaders among their code): every brace
+    // is a candidate, and the first array whose first value is a version token is the
+    // shader. With none, the errors reported are those of the first array declaration.
+    struct Stream {
+      size_t open;
+      std::string name;
+      std::vector<uint32_t> tokens;
+    };
+    std::vector<Stream> streams;
+    std::optional<std::vector<uint32_t>> first_without_version;
+    size_t report_at = std::string::npos;
+    for (size_t open = first; open != std::string::npos; open = find_open_brace(open + 1)) {
+      std::string name = array_name();
+      bool declared_array = decl_.find('[') != std::string::npos;
+      if (report_at == std::string::npos && declared_array) report_at = open;
+      trying_ = true; // a candidate that is no array fails silently
+      auto tokens = read_values(open);
+      trying_ = false;
+      if (!tokens) continue;
+      if ((tokens->front() >> 16) >= 0xFFFE)
+        streams.push_back({open, name, std::move(*tokens)});
+      else if (!first_without_version)
+        first_without_version = std::move(tokens);
+    }
+    if (streams.empty()) {
+      if (first_without_version) return first_without_version; // the reader names its fault
+      return read_values(report_at == std::string::npos ? first : report_at);
+    }
+    if (streams.size() > 1) {
+      const Stream& s = streams.front();
+      diags_.note(loc_of(s.open), "token-file",
+                  fmt::format("{} arrays in this file hold a token stream; the first, {}at "
+                              "line {}, is the one read (keep one shader per file to read "
+                              "another)",
+                              streams.size(), s.name.empty() ? "" : "'" + s.name + "' ",
+                              loc_of(s.open).line));
+    }
+    return std::move(streams.front().tokens);
+  }
+
+private:
+  // The values of the array whose '{' is at `open` (npos: a bare list, read whole).
+  std::optional<std::vector<uint32_t>> read_values(size_t open) {
     bool braced = open != std::string::npos;
     pos_ = braced ? open + 1 : 0;
+    decl_ = braced ? decl_at_.at(open) : std::string();
     std::vector<uint64_t> values;
     for (;;) {
       skip_space();
@@ -50,8 +96,20 @@ public:
     return pack(values, braced ? open : 0);
   }
 
-private:
-  std::nullopt_t fail(size_t at, const std::string& message) {
+  // The name declared before the current '[': "g_ps" of "static const DWORD g_ps[] =".
+  std::string array_name() const {
+    size_t bracket = decl_.find('[');
+    if (bracket == std::string::npos) return {};
+    size_t end = bracket;
+    while (end > 0 && std::isspace(static_cast<unsigned char>(decl_[end - 1]))) --end;
+    size_t begin = end;
+    while (begin > 0 &&
+           (std::isalnum(static_cast<unsigned char>(decl_[begin - 1])) || decl_[begin - 1] == '_'))
+      --begin;
+    return decl_.substr(begin, end - begin);
+  }
+
+  ir::SourceLoc loc_of(size_t at) const {
     ir::SourceLoc loc{file_, 1, 1, 1};
     for (size_t i = 0; i < at && i < s_.size(); ++i) {
       if (s_[i] == '\n') {
@@ -61,7 +119,13 @@ private:
         ++loc.col;
       }
     }
-    diags_.error(loc, "token-file", message);
+    return loc;
+  }
+
+  // While candidates are tried nothing is reported, and no position is worked out: that
+  // walk from the start of the file, once per brace, would make a large source quadratic.
+  std::nullopt_t fail(size_t at, const std::string& message) {
+    if (!trying_) diags_.error(loc_of(at), "token-file", message);
     return std::nullopt;
   }
 
@@ -100,11 +164,12 @@ private:
     }
   }
 
-  // The first '{' that is code. Records the declaration text before it (comments left
-  // out), which tells a BYTE array from a DWORD array.
-  size_t find_open_brace() {
-    bool line_start = true;
-    pos_ = 0;
+  // The first '{' that is code at or after `from`. Records the declaration text before it (comments
+  // left out), which tells a BYTE array from a DWORD array.
+  size_t find_open_brace(size_t from) {
+    bool line_start = from == 0;
+    pos_ = from;
+    decl_.clear();
     while (pos_ < s_.size()) {
       char c = s_[pos_];
       if (skip_comment()) continue;
@@ -123,7 +188,10 @@ private:
         ++pos_;
         continue;
       }
-      if (c == '{') return pos_;
+      if (c == '{') {
+        decl_at_[pos_] = decl_;
+        return pos_;
+      }
       if (c == ';' || c == '}')
         decl_.clear();
       else
@@ -214,9 +282,11 @@ private:
 
   const std::string& s_;
   ir::DiagnosticSink& diags_;
+  bool trying_ = false; // reading a candidate array: failures are not reported
   uint32_t file_;
   size_t pos_ = 0;
   std::string decl_;
+  std::map<size_t, std::string> decl_at_; // the declaration text before each '{' found
 };
 
 } // namespace

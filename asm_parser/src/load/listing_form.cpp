@@ -16,22 +16,15 @@ bool is_version_token(uint32_t t) {
   return (t >> 16) == 0xFFFE || (t >> 16) == 0xFFFF;
 }
 
-// Valid UTF-8 without NUL or control characters other than white space.
+// Text: no NUL or control characters other than white space, once the NUL padding some
+// tools append is left out. Bytes above 0x7F need not be UTF-8: comments in a legacy 8-bit
+// code page (Windows-1252, -1251) are common in shipped listings, and the lexer skips
+// comments unread (outside a comment such a byte is still an error there, with its line).
 bool looks_like_text(std::string_view b) {
-  for (size_t i = 0; i < b.size();) {
-    unsigned char c = static_cast<unsigned char>(b[i]);
-    if (c < 0x80) {
-      if ((c < 0x20 && c != '\t' && c != '\n' && c != '\r' && c != '\f' && c != '\v') || c == 0x7F)
-        return false;
-      ++i;
-      continue;
-    }
-    size_t n = (c >> 5) == 6 ? 2 : (c >> 4) == 14 ? 3 : (c >> 3) == 30 ? 4 : 0;
-    if (n == 0 || i + n > b.size()) return false;
-    for (size_t k = 1; k < n; ++k)
-      if ((static_cast<unsigned char>(b[i + k]) >> 6) != 2) return false;
-    i += n;
-  }
+  b = without_trailing_nuls(b);
+  for (unsigned char c : b)
+    if ((c < 0x20 && c != '\t' && c != '\n' && c != '\r' && c != '\f' && c != '\v') || c == 0x7F)
+      return false;
   return true;
 }
 
@@ -45,6 +38,10 @@ bool is_token_array(std::string_view b) {
 }
 
 } // namespace
+
+std::string_view without_trailing_nuls(std::string_view bytes) {
+  return bytes.substr(0, bytes.find_last_not_of('\0') + 1);
+}
 
 std::string_view listing_form_name(ListingForm form) {
   switch (form) {
@@ -60,7 +57,7 @@ ListingForm detect_listing_form(std::string_view bytes) {
   if (bytes.size() >= 4 && bytes.size() % 4 == 0 && is_version_token(le32(bytes, 0)))
     return ListingForm::TokenStream;
   if (!looks_like_text(bytes)) return ListingForm::Binary;
-  if (is_token_array(bytes)) return ListingForm::TokenArray;
+  if (is_token_array(without_trailing_nuls(bytes))) return ListingForm::TokenArray;
   return ListingForm::Text;
 }
 

@@ -45,6 +45,7 @@ std::optional<ir::Program> check_program(std::optional<ir::Program> program,
   ValidateOptions vo;
   vo.warnings = options.warnings;
   vo.caps = options.caps;
+  vo.windows_leniency = !options.strict;
   if (!options.skip_validation && !validate(*program, profile, diags, vo)) return std::nullopt;
   return program;
 }
@@ -56,6 +57,10 @@ Loaded load_listing(uint32_t file, ir::SourceManager& sm, const LoadOptions& opt
   // becomes the program's Result, so nothing is reported twice or through a second channel.
   ir::DiagnosticSink diags;
   const ListingForm form = detect_listing_form(sm.files[file].text);
+  // Text padded with NUL bytes reads as the text before them; the lines and columns of what
+  // is left are unchanged.
+  if (form == ListingForm::Text || form == ListingForm::TokenArray)
+    sm.files[file].text.resize(without_trailing_nuls(sm.files[file].text).size());
   Read read;
   switch (form) {
   case ListingForm::Binary:

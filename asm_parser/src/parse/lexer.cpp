@@ -51,7 +51,10 @@ public:
     out_ = &out;
     if (!started_) {
       started_ = true;
-      // NUL bytes mean a binary file: one clear error instead of a flood of syntax errors.
+      // NUL bytes after the text are padding some tools write (one game's dumps end every
+      // file with one): the text ends where they start. NUL bytes anywhere else mean a
+      // binary file: one clear error instead of a flood of syntax errors.
+      text_ = text_.substr(0, text_.find_last_not_of('\0') + 1);
       if (size_t nul = text_.find('\0'); nul != std::string_view::npos) {
         advance_to(nul);
         binary_error("input contains a NUL byte; this looks like a binary file, not assembly");
@@ -198,6 +201,8 @@ private:
       uint32_t cp = 0;
       size_t n = utf8_length(text_, pos_, cp);
       if (n == 0) {
+        // Bytes of a legacy 8-bit code page (Windows-1252, -1251) are fine in comments, which
+        // are skipped unread; outside one, a statement never holds them.
         binary_error("input is not valid UTF-8 text (binary file?)");
         return false;
       }

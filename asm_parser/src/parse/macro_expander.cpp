@@ -18,7 +18,72 @@ bool is_punct(const Token& t, std::string_view p) {
   return t.kind == TokKind::Punct && t.text == p;
 }
 
+// "_bx2", "_sat_x2": every '_'-separated part is a source or instruction modifier.
+bool is_modifier_suffix(std::string_view s) {
+  static constexpr std::string_view kWords[] = {"bias", "bx2", "x2",  "dz",      "db", "dw",
+                                                "da",   "abs", "sat", "pp",      "x4", "x8",
+                                                "d2",   "d4",  "d8",  "centroid"};
+  if (s.size() < 2 || s[0] != '_') return false;
+  for (size_t i = 1; i <= s.size();) {
+    size_t end = std::min(s.find('_', i), s.size());
+    std::string word(s.substr(i, end - i));
+    for (char& c : word)
+      if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+    if (std::find(std::begin(kWords), std::end(kWords), word) == std::end(kWords)) return false;
+    i = end + 1;
+  }
+  return true;
+}
+
 } // namespace
+
+// Microsoft's assembler expands a macro written with a modifier glued on ("#define TEX t0",
+// then "TEX_bx2"), although C would read TEX_bx2 as one unknown name. The split is the
+// longest prefix that names an object-like macro, and only when all that follows it is
+// modifiers, so an identifier that merely contains a macro's name is left alone.
+size_t MacroTable::modifier_split(std::string_view name) const {
+  // The longest modifier run ("_sat_x2_bx2") is far shorter than this; the bound keeps a
+  // name made of thousands of '_' parts linear.
+  constexpr size_t kMaxSuffix = 32;
+  for (size_t us = name.rfind('_');
+       us != std::string_view::npos && us > 0 && name.size() - us <= kMaxSuffix;
+       us = name.rfind('_', us - 1)) {
+    if (!is_modifier_suffix(name.substr(us))) continue;
+    auto it = macros_.find(name.substr(0, us));
+    if (it != macros_.end() && !it->second.function_like && !it->second.active) return us;
+  }
+  return std::string_view::npos;
+}
+
+// Expands the macro part of `t` (split at `us`) and glues the modifier onto what it gives:
+// "t0" + "_bx2" -> "t0_bx2"; "c[a0.x + 1]" + "_bx2" -> "c[a0.x + 1]" "_bx2", which the operand
+// parser reads as a modifier after the brackets. False when the expansion ends in anything
+// else, so the caller reports the name as it stands.
+bool MacroTable::expand_with_modifier(const Token& t, size_t us, std::vector<Token>& out,
+                                      const ir::SourceLoc* use, int depth) {
+  Token head = t;
+  head.text = t.text.substr(0, us);
+  std::vector<Token> expanded;
+  if (!expand_impl(std::span<const Token>(&head, 1), expanded, use, depth)) return false;
+  if (expanded.empty()) return false;
+  Token& last = expanded.back();
+  std::string_view suffix = t.text.substr(us);
+  if (last.kind == TokKind::Ident) {
+    storage_->push_back(
+        std::make_unique<std::string>(std::string(last.text) + std::string(suffix)));
+    last.text = *storage_->back();
+  } else if (is_punct(last, "]")) {
+    Token mod = last;
+    mod.kind = TokKind::Ident;
+    mod.text = suffix;
+    mod.space_before = false;
+    expanded.push_back(mod);
+  } else {
+    return false;
+  }
+  out.insert(out.end(), expanded.begin(), expanded.end());
+  return true;
+}
 
 bool MacroTable::expand(std::span<const Token> in, std::vector<Token>& out,
                         ir::DiagnosticSink& diags) {
@@ -47,6 +112,10 @@ bool MacroTable::expand_impl(std::span<const Token> in, std::vector<Token>& out,
   for (size_t i = 0; i < in.size(); ++i) {
     const Token& t = in[i];
     auto it = t.kind == TokKind::Ident ? macros_.find(t.text) : macros_.end();
+    if (it == macros_.end() && t.kind == TokKind::Ident) {
+      size_t us = modifier_split(t.text);
+      if (us != std::string_view::npos && expand_with_modifier(t, us, out, use, depth)) continue;
+    }
     if (it == macros_.end() || it->second.active ||
         (it->second.function_like && (i + 1 >= in.size() || !is_punct(in[i + 1], "(")))) {
       if (!push(out, t, use)) {

@@ -42,6 +42,9 @@ private:
   bool substitute_call(const Macro& m, std::span<const Token> in, size_t& i, ir::SourceLoc loc,
                        int depth, std::vector<Token>& subst);
   bool push(std::vector<Token>& out, Token t, const ir::SourceLoc* use);
+  size_t modifier_split(std::string_view name) const;
+  bool expand_with_modifier(const Token& t, size_t us, std::vector<Token>& out,
+                            const ir::SourceLoc* use, int depth);
   void paste(std::vector<Token>& toks);
 
   std::map<std::string, Macro, std::less<>> macros_;

@@ -98,6 +98,11 @@ bool Parser::statement() {
   if (at_punct("+")) {
     coissue = true;
     advance();
+    // "mul r0.rgb, r0, t0 +" / "mov r0.a, t1": the '+' that pairs two instructions may end
+    // the first line instead of starting the second (Microsoft's assembler reads statements,
+    // not lines). One '+' pairs them however it is placed; a second one is the same mark.
+    while (cur().kind == TokKind::Newline) advance();
+    if (at_punct("+")) advance();
   }
   std::optional<ir::SrcOperand> pred;
   if (!coissue && at_punct("(")) {

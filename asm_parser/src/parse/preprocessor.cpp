@@ -2,6 +2,7 @@
 // Macro expansion lives in macro_expander.cpp, #if arithmetic in pp_expr.cpp.
 #include "tierlift/asm/preprocessor.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -282,14 +283,24 @@ private:
     include_stack_.pop_back();
   }
 
+  // Listings written on Windows name their headers "..\common\light.inl". A backslash is
+  // an ordinary file-name byte on POSIX, so the name is first tried as written and then
+  // with every backslash read as a directory separator.
   std::optional<fs::path> find_include(const std::string& target, uint32_t from) {
     std::error_code ec;
     std::vector<fs::path> dirs{fs::path(sm_.files[from].name).parent_path()};
     for (const std::string& d : options_.include_dirs) dirs.emplace_back(d);
-    for (const fs::path& d : dirs) {
-      fs::path p = d / target;
-      if (fs::is_regular_file(p, ec)) return p;
+    std::vector<std::string> spellings{target};
+    if (target.find('\\') != std::string::npos) {
+      std::string slashed = target;
+      std::replace(slashed.begin(), slashed.end(), '\\', '/');
+      spellings.push_back(slashed);
     }
+    for (const std::string& name : spellings)
+      for (const fs::path& d : dirs) {
+        fs::path p = d / name;
+        if (fs::is_regular_file(p, ec)) return p;
+      }
     return std::nullopt;
   }
 

@@ -60,6 +60,7 @@ std::string instruction_rule(const Ctx& c, const ir::Instruction& ins, uint8_t m
   // texcrd forms (docs/d3d9-rules.md §4.5): rM.rgb from tN[.xyz|.xyw], rM.rg from tN_dw.xyw.
   case Opcode::TexCrd: {
     bool dw = !ins.src.empty() && ins.src[0].mod == ir::SrcMod::Dw;
+    if (m == FULL && c.opt.windows_leniency) return {}; // D3DAssemble's spelling, warned about
     if (dw) return m == XY ? "" : fmt::format("texcrd with _dw writes .rg (.xy), not {}", got);
     return m == XYZ ? "" : fmt::format("texcrd writes .rgb (.xyz), not {}", got);
   }

@@ -1,6 +1,8 @@
-// Output-register rules (docs/d3d9-rules.md §3.1, §3.5, §6): vs writes oPos, oT# masks are .x/.xy/
-// .xyz/.xyzw and oT0..oT(n-1) are written with oTn; ps_2_0 writes oC# and oDepth with a plain
-// mov, each at most once, oC0 always and oC0..oC(n-1) with oCn; ps_1_x's output is r0.
+// Output-register rules (docs/d3d9-rules.md §3.1, §3.5, §6): vs writes oPos and each oT#'s masks
+// together are .x/.xy/.xyz/.xyzw (which oT# are written is free: Direct3D pairs oTn with the
+// pixel shader's t#/texcoord n by number, so oT1 without oT0 is legal, as fxc writes it);
+// ps_2_0 writes oC# and oDepth with a plain mov, each at most once, oC0 always and
+// oC0..oC(n-1) with oCn; ps_1_x's output is r0.
 #include <map>
 
 #include "context.h"
@@ -39,14 +41,6 @@ void check_vertex(Ctx& c) {
               fmt::format("the components written to oT{} together must be .x, .xy, .xyz or "
                           ".xyzw; they are {}",
                           index, mask_name(m)));
-    for (uint32_t k = 0; k < index; ++k)
-      if (!tex.count(k)) {
-        c.error(e.second->dst->loc, "output-rule",
-                fmt::format("oT{} is written, so every oT below it must be written too; oT{} "
-                            "is not",
-                            index, k));
-        break;
-      }
   }
 }
 

@@ -14,8 +14,6 @@ namespace {
 using ir::Opcode;
 using ir::OperandKind;
 
-constexpr uint8_t kXyz = 0x7, kXy = 0x3;
-
 // A scalar source (rcp, rsq, exp, log, expp, logp, pow) with the identity swizzle: the
 // runtime took the stream, and the operation read the swizzle's 4th slot, .w — the rule the
 // interpreter and codegen already apply to every scalar source. The IR gets the .w
@@ -34,16 +32,19 @@ void scalar_sources(ir::Instruction& ins, ir::DiagnosticSink& diags) {
   }
 }
 
-// ps_1_4 texcrd with no write mask: the Windows assembler and runtime took it; the
-// instruction writes .rgb (.rg with _dw), and the 4th channel is not written.
-void texcrd_mask(ir::Instruction& ins, ir::DiagnosticSink& diags) {
+// ps_1_4 texcrd with no write mask: Microsoft's assembler took it and wrote the full mask
+// into the stream (0x800F0000 for "texcrd r0, t0", as Wine's d3dcompiler tests record it),
+// and the runtime ran it. The mask stays as written, so the bytes are D3DAssemble's; what
+// the instruction defines is .rgb (.rg with _dw), which ir::written_mask already says, and
+// the validator takes the full mask once this leniency applies (ValidateOptions).
+void texcrd_mask(const ir::Instruction& ins, ir::DiagnosticSink& diags) {
   if (ins.op != Opcode::TexCrd || !ins.dst || ins.dst->mask != ir::kFullMask) return;
   bool dw = !ins.src.empty() && ins.src[0].mod == ir::SrcMod::Dw;
-  ins.dst->mask = dw ? kXy : kXyz;
   diags.warning(ins.dst->loc, "write-mask",
-                fmt::format("texcrd without a write mask writes {}, as Windows did "
-                            "(--strict rejects it)",
-                            dw ? ".rg (.xy)" : ".rgb (.xyz)"));
+                fmt::format("texcrd with the full write mask defines {} only; the 4th channel{} "
+                            "is left undefined (Microsoft's assembler writes it when no mask is "
+                            "given, and tierlift keeps the full mask; --strict rejects it)",
+                            dw ? ".rg (.xy)" : ".rgb (.xyz)", dw ? " and the 3rd" : ""));
 }
 
 } // namespace

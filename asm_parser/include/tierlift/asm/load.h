@@ -30,6 +30,9 @@ enum class ListingForm {
 };
 std::string_view listing_form_name(ListingForm form); // "text", "token stream", ...
 
+// `bytes` without the run of NUL bytes at its end that some tools pad text files with.
+std::string_view without_trailing_nuls(std::string_view bytes);
+
 // The form of `bytes`. A C array counts as a TokenArray only when its first value is a
 // version token (0xFFFE…/0xFFFF…); anything else that is text is Text.
 ListingForm detect_listing_form(std::string_view bytes);

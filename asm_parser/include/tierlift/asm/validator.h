@@ -42,7 +42,8 @@ namespace tierlift::as {
 // leniency"). Run it before validate() unless the user asked for --strict:
 //   swizzle     a scalar source (rcp, rsq, exp, log, expp, logp, pow) with the identity
 //               swizzle, as D3D8-era token streams carry it: read as .w
-//   write-mask  ps_1_4 texcrd with no write mask: writes .xyz (.xy with _dw)
+//   write-mask  ps_1_4 texcrd with no write mask: kept full, as D3DAssemble writes it;
+//               it defines .xyz (.xy with _dw)
 // Returns the number of rewrites (= warnings added).
 size_t apply_windows_leniency(ir::Program& program, ir::Profile target, ir::DiagnosticSink& diags);
 
@@ -51,6 +52,9 @@ struct ValidateOptions {
   // The 2.x features of the device (temps, slots, flow-control depths, predication,
   // gradients, arbitrary swizzles, dependent reads); unset: ir::default_caps(target).
   std::optional<ir::Caps2x> caps;
+  // apply_windows_leniency ran: take the forms it reports but keeps as written (ps_1_4
+  // texcrd with the full mask).
+  bool windows_leniency = false;
 };
 
 // Checks `program` against `target` (normally program.profile; --profile may name another).
