@@ -16,7 +16,9 @@
 
 namespace tierlift::vulkan {
 
-// "vkCreateImage failed: VK_ERROR_OUT_OF_HOST_MEMORY"
+// A VkResult in words: "out of device memory" (never the bare number).
+std::string vk_result_words(VkResult r);
+// "out of host memory in vkCreateImage"
 std::string vk_error(const char* what, VkResult r);
 
 struct Unorm8Converter; // unorm8_to_float.h
