@@ -38,10 +38,11 @@ protected:
         << R"({"image": "builtin:neon", "size": [24, 16], "glow": {"format": "rgba32f", "downsample": 2}})";
     return s.string();
   }
-  // sh -c '<script>' with stdout and stderr apart; the raw wait status.
+  // sh -c '<script>' with the last command's stdout and stderr apart; the raw wait status.
+  // Scripts exec tierlift, so no shell waits for it to add its own "Segmentation fault".
   int raw(const std::string& script, std::string& out, std::string& err) const {
-    const std::string command = "sh -c '" + script + "' > " + (dir / "out.txt").string() + " 2> " +
-                                (dir / "err.txt").string();
+    const std::string command = "sh -c '" + script + " > " + (dir / "out.txt").string() + " 2> " +
+                                (dir / "err.txt").string() + "'";
     const int status = std::system(command.c_str());
     out = read(dir / "out.txt");
     err = read(dir / "err.txt");
@@ -117,7 +118,7 @@ TEST_F(CliDevices, RunTakesBackendListsAndFallsBackWithoutVulkan) {
 TEST_F(CliDevices, CrashHandlerNamesTheStageAndKeepsTheExitStatus) {
   std::string out, err;
   const std::string tierlift = TIERLIFT_CLI_PATH;
-  int status = raw("TIERLIFT_TEST_CRASH=vulkan-device " + tierlift + " run --json --ps " +
+  int status = raw("exec env TIERLIFT_TEST_CRASH=vulkan-device " + tierlift + " run --json --ps " +
                        listing() + " --size 4x4 --backend vulkan",
                    out, err);
   EXPECT_TRUE(died_of(status, SIGSEGV)) << status;
@@ -132,7 +133,7 @@ TEST_F(CliDevices, CrashHandlerNamesTheStageAndKeepsTheExitStatus) {
             "crashed (SIGSEGV, segmentation fault) in the Vulkan driver while creating the "
             "device");
   // A pass on the interpreter, without --json: the line only, naming the pass.
-  status = raw("TIERLIFT_TEST_CRASH=pass " + tierlift + " run --ps " + listing() +
+  status = raw("exec env TIERLIFT_TEST_CRASH=pass " + tierlift + " run --ps " + listing() +
                    " --size 4x4 --backend cpu",
                out, err);
   EXPECT_TRUE(died_of(status, SIGSEGV)) << status;
@@ -146,7 +147,7 @@ TEST_F(CliDevices, AddressSpaceLimitIsASentenceNotACrash) {
   const std::string tierlift = TIERLIFT_CLI_PATH;
   // lavapipe's vkCreateDevice segfaults under this limit in most runs; tierlift refuses first.
   for (int attempt = 0; attempt < 3; ++attempt) {
-    const int status = raw("ulimit -v 400000; " + tierlift + " run --ps " + listing() +
+    const int status = raw("ulimit -v 400000; exec " + tierlift + " run --ps " + listing() +
                                " --size 4x4 --backend vulkan",
                            out, err);
     EXPECT_FALSE(died_of(status, SIGSEGV)) << err;
