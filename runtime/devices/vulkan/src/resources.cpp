@@ -44,12 +44,6 @@ std::string format_words(VkFormat f) {
   }
 }
 
-// A failed allocation as a sentence: "out of device memory while allocating a 16384x16384
-// RGBA32F image (4.0 GiB)".
-std::string allocation_failed(VkResult r, const std::string& what, uint64_t bytes) {
-  return fmt::format("{} while allocating {} ({})", vk_result_words(r), what, size_words(bytes));
-}
-
 // Empty on success, else why, in words (`what` names the object the memory is for).
 std::string allocate(Device::Impl& d, Cleanup& cleanup, const VkMemoryRequirements& req,
                      VkMemoryPropertyFlags flags, VkDeviceMemory& out, const std::string& what) {
@@ -67,6 +61,18 @@ std::string allocate(Device::Impl& d, Cleanup& cleanup, const VkMemoryRequiremen
 }
 
 } // namespace
+
+std::string allocation_failed(VkResult r, const std::string& what, uint64_t bytes) {
+  return fmt::format("{} while allocating {} ({})", vk_result_words(r), what, size_words(bytes));
+}
+
+std::string image_words(uint32_t width, uint32_t height, VkFormat format) {
+  return fmt::format("a {}x{} {} image", width, height, format_words(format));
+}
+
+uint64_t image_bytes(uint32_t width, uint32_t height, VkFormat format) {
+  return uint64_t{width} * height * bytes_per_texel(format);
+}
 
 std::string create_buffer(Device::Impl& d, Cleanup& cleanup, VkDeviceSize size,
                           VkBufferUsageFlags usage, Buffer& out) {
@@ -113,10 +119,9 @@ std::string create_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint
   ii.usage = usage;
   ii.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
   ii.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  const std::string what = fmt::format("a {}x{} {} image", width, height, format_words(format));
+  const std::string what = image_words(width, height, format);
   VkResult r = vkCreateImage(d.device, &ii, nullptr, &out.image);
-  if (r != VK_SUCCESS)
-    return allocation_failed(r, what, uint64_t{width} * height * bytes_per_texel(format));
+  if (r != VK_SUCCESS) return allocation_failed(r, what, image_bytes(width, height, format));
   VkDevice dev = d.device;
   VkImage img = out.image;
   VkMemoryRequirements req;
