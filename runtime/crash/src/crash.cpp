@@ -1,5 +1,5 @@
 // The crash handler (crash.h). Everything after a signal arrives is async-signal-safe:
-// plain loops over fixed buffers, write(2), signal(2) and raise(3). The text it needs is
+// plain loops over fixed buffers, write(2), sigaction(2), signal(2) and raise(3). The text it needs is
 // composed earlier, in normal context, when install_handler runs and when a Stage begins.
 #include "tierlift/crash/crash.h"
 
@@ -27,6 +27,8 @@ std::atomic<bool> g_json{false};
 std::atomic<bool> g_document_written{false};
 
 constexpr int kSignals[] = {SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL};
+constexpr size_t kSignalCount = sizeof kSignals / sizeof kSignals[0];
+struct sigaction g_previous[kSignalCount]; // what each signal did before install_handler
 
 // Bounded copy that always terminates `dst`.
 void copy(char* dst, size_t size, std::string_view src) {
@@ -153,8 +155,12 @@ void on_crash(int sig) {
     line[n] = '\n';
     write_all(STDERR_FILENO, line, n + 1);
   }
-  // The default action, so the exit status stays 128 + signal (and a core can be dumped).
-  signal(sig, SIG_DFL);
+  // The action from before install_handler (the default, so the exit status stays
+  // 128 + signal and a core can be dumped; under AddressSanitizer its own report).
+  bool restored = false;
+  for (size_t i = 0; i < kSignalCount; ++i)
+    if (kSignals[i] == sig) restored = sigaction(sig, &g_previous[i], nullptr) == 0;
+  if (!restored) signal(sig, SIG_DFL);
   raise(sig);
 }
 
@@ -174,7 +180,7 @@ void install_handler(std::string_view command, bool json) {
   sa.sa_handler = on_crash;
   sigemptyset(&sa.sa_mask);
   sa.sa_flags = SA_ONSTACK | SA_RESETHAND;
-  for (const int sig : kSignals) sigaction(sig, &sa, nullptr);
+  for (size_t i = 0; i < kSignalCount; ++i) sigaction(kSignals[i], &sa, &g_previous[i]);
 }
 
 void document_written() {

@@ -3,10 +3,10 @@
 // status 128 + signal and no word. install_handler catches SIGSEGV, SIGBUS, SIGABRT, SIGFPE
 // and SIGILL, writes one line naming the stage that was running on standard error (under
 // --json instead the JSON document every command prints, with that line as its error), then
-// restores the default action and raises the signal again, so the exit status stays
-// 128 + signal and a core dump is still possible.
+// restores the action it replaced (the default one, or a sanitizer's) and raises the signal
+// again, so the exit status stays 128 + signal and a core dump is still possible.
 //
-// The handler uses only async-signal-safe calls (write, signal, raise): everything it prints
+// The handler uses only async-signal-safe calls (write, sigaction, signal, raise): everything it prints
 // is composed before the crash, when a Stage begins, into fixed buffers.
 #pragma once
 
