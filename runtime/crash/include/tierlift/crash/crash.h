@@ -6,8 +6,8 @@
 // restores the action it replaced (the default one, or a sanitizer's) and raises the signal
 // again, so the exit status stays 128 + signal and a core dump is still possible.
 //
-// The handler uses only async-signal-safe calls (write, sigaction, signal, raise): everything it prints
-// is composed before the crash, when a Stage begins, into fixed buffers.
+// The handler uses only async-signal-safe calls (write, sigaction, signal, raise): everything it
+// prints is composed before the crash, when a Stage begins, into fixed buffers.
 #pragma once
 
 #include <string>
