@@ -1,6 +1,6 @@
 // The crash handler (crash.h). Everything after a signal arrives is async-signal-safe:
-// plain loops over fixed buffers, write(2), sigaction(2), signal(2) and raise(3). The text it needs is
-// composed earlier, in normal context, when install_handler runs and when a Stage begins.
+// plain loops over fixed buffers, write(2), sigaction(2), signal(2) and raise(3). The text it needs
+// is composed earlier, in normal context, when install_handler runs and when a Stage begins.
 #include "tierlift/crash/crash.h"
 
 #include <atomic>
