@@ -16,6 +16,7 @@
 #include "glow_report.h"
 #include "report.h"
 #include "tierlift/effects/analytic_device.h"
+#include "tierlift/effects/backends.h"
 #include "tierlift/effects/memory_plan.h"
 #include "tierlift/effects/prune.h"
 #include "tierlift/effects/scene.h"
@@ -32,7 +33,6 @@ struct GlowFlags {
   bool no_half_texel = false, json = false, quiet = false;
   bool explain = false, no_prune = false; // --explain: what pruning left out; --no-prune
   FrontEndOptions listing; // -D, -I, --profile, --skip-validation (its json is unused)
-  bool both_devices() const { return backend == "both"; } // cpu and vulkan, no analytic
   unsigned threads = 0;
   unsigned frames = 0; // --frames N: setup and N steady-state frames per device (0: off)
 };
@@ -86,19 +86,12 @@ effects::PassProgress progress_printer(const std::string& way, bool quiet) {
   };
 }
 
-// The devices the flags run, in order.
-std::vector<std::string> device_names(const GlowFlags& f) {
-  if (f.backend == "all") return {"cpu", "vulkan", "analytic"};
-  if (f.both_devices()) return {"cpu", "vulkan"};
-  return {f.backend};
-}
-
 // Memory known before running: the run's peak (effects::plan_memory) against what the
 // machine has. False after printing why the scene does not fit, and what would.
-bool memory_fits(const effects::GlowPlan& plan, const GlowFlags& f, const std::string& where,
-                 Report& report, uint64_t* planned) {
+bool memory_fits(const effects::GlowPlan& plan, const GlowFlags& f,
+                 const std::vector<std::string>& names, const std::string& where, Report& report,
+                 uint64_t* planned) {
   const uint64_t available = effects::available_memory();
-  const std::vector<std::string> names = device_names(f);
   // The scene as loaded stays beside the run; --frames runs each device once more, alone.
   // Besides the images: the program, its listings and the Vulkan driver (lavapipe, LLVM),
   // measured at 92 MB resident for a 16×16 scene on all three devices.
@@ -211,6 +204,12 @@ int run(const GlowFlags& f) {
                                       f.listing.profile));
     return report.finish(kExitUsage);
   }
+  const ir::Result<effects::BackendChoice> backends =
+      effects::parse_backends(f.backend, {"cpu", "vulkan", "analytic"});
+  if (!backends) {
+    report.error("usage", backends.message());
+    return report.finish(kExitUsage);
+  }
   std::optional<effects::Scene> scene = scene_from_flags(f, report, &exit_code);
   if (!scene) return report.finish(exit_code);
   const effects::GlowParams& params = scene->params;
@@ -227,7 +226,8 @@ int run(const GlowFlags& f) {
   }
   effects::GlowPlan& plan = *built;
   uint64_t planned_bytes = 0;
-  if (!memory_fits(plan, f, where, report, &planned_bytes)) return report.finish(kExitInvalid);
+  if (!memory_fits(plan, f, backends->ways, where, report, &planned_bytes))
+    return report.finish(kExitInvalid);
   img::ImageResult image = effects::load_scene_image(*scene);
   if (!image) {
     const bool io = img::is_io_error(image);
@@ -254,26 +254,26 @@ int run(const GlowFlags& f) {
   // image would not hold for the others.
   if (!f.no_prune && !params.motion.on()) plan.graph = pruned.graph;
 
-  const bool all = f.backend == "all", both = f.both_devices();
   // The process's device (vulkan::process_device): never destroyed, so lavapipe stays loaded
   // and LeakSanitizer can attribute the driver's process-lifetime allocations to its module
-  // (tests/lsan.supp), as in `tierlift run`.
-  vulkan::Device* vk = nullptr;
-  double vk_create_ms = 0;
-  if (all || both || f.backend == "vulkan") {
-    const auto t0 = std::chrono::steady_clock::now();
-    vk = vulkan_device(f.gpu, report);
-    if (!vk) return report.finish(kExitUsage);
-    vk_create_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  // (tests/lsan.supp), as in `tierlift run`. "all" leaves Vulkan out, with a note, where the
+  // machine has none (effects::select_ways).
+  const auto t0 = std::chrono::steady_clock::now();
+  vulkan::DeviceOptions vk_options;
+  vk_options.gpu_filter = f.gpu;
+  const ir::Result<effects::SelectedWays> selected = effects::select_ways(*backends, vk_options);
+  if (!selected) {
+    report.error("device", selected.message());
+    return report.finish(kExitUsage);
   }
+  vulkan::Device* vk = selected->vulkan;
+  const double vk_create_ms =
+      vk ? std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count()
+         : 0;
+  if (!selected->note.empty()) report.warning("backend", selected->note);
   std::vector<std::pair<std::string, std::unique_ptr<effects::PassDevice>>> devices;
-  if (all || both || f.backend == "cpu")
-    devices.emplace_back("cpu", std::make_unique<effects::CpuPassDevice>(f.threads));
-  if (vk && (all || both || f.backend == "vulkan"))
-    devices.emplace_back("vulkan", effects::make_vulkan_pass_device(*vk));
-  if (all || f.backend == "analytic")
-    devices.emplace_back("analytic", effects::make_analytic_pass_device());
+  for (const std::string& name : selected->ways)
+    devices.emplace_back(name, make_device(name, f, vk));
 
   const bool keep = devices.size() > 1;
   std::vector<GlowWay> ways;
@@ -330,7 +330,10 @@ int run(const GlowFlags& f) {
   if (report.json()) {
     nlohmann::json& j = report.result();
     j = summary_json(*scene, plan, ways);
-    if (vk && (all || both || f.backend == "vulkan")) j["vulkan_device"] = vk->name();
+    if (vk) j["vulkan_device"] = vk->name();
+    j["backends"] = {{"ran", selected->ways}, {"note", selected->note}};
+    if (!selected->left_out_why.empty())
+      j["backends"]["left_out"] = {{{"way", "vulkan"}, {"why", selected->left_out_why}}};
     j["agreement"] = agreement_json(pairs);
     if (!frames.empty()) j["frames"] = frames_json(frames);
     if (animated) {
@@ -446,9 +449,9 @@ void register_glow_command(CLI::App& app) {
                   "rgba32f when it names none)")
       ->check(CLI::IsMember({"rgba8", "rgba16f", "rgba32f"}));
   sub->add_option("--backend", f->backend,
-                  "cpu | vulkan | analytic | both | all (both: cpu and vulkan; all: the three "
-                  "ways; their agreement is printed)")
-      ->check(CLI::IsMember({"cpu", "vulkan", "analytic", "both", "all"}))
+                  "cpu | vulkan | analytic | both | all, or a comma list such as cpu,analytic "
+                  "(both: cpu and vulkan; all: every way the machine has, saying what it left "
+                  "out; the agreement of every pair that ran is printed)")
       ->capture_default_str();
   sub->add_option("--ps1x-max", f->ps1x_max,
                   "ps_1_x register range of tier dx8: geforce3 (1), radeon8500 (8), d3d9 "

@@ -3,11 +3,13 @@
 // once), that pass a graph of one pass (effects::single_pass_graph), which run_graph runs on
 // the CPU device, the Vulkan device or both, through the one device interface
 // (effects::PassDevice) every effect uses. Only flags and printing live here.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <memory>
 #include <new>
 #include <optional>
@@ -19,7 +21,9 @@
 #include "report.h"
 #include "run_flags.h"
 #include "run_output.h"
+#include "tierlift/effects/backends.h"
 #include "tierlift/effects/device.h"
+#include "tierlift/effects/memory_plan.h"
 #include "tierlift/effects/run_graph.h"
 #include "tierlift/effects/single_pass.h"
 #include "tierlift/image/compare.h"
@@ -217,7 +221,17 @@ int run(const RunFlags& f) {
     report.error("usage", e.message);
     return report.finish(kExitUsage);
   }
-  const bool want_cpu = f.backend != "vulkan", want_vulkan = f.backend != "cpu";
+  const ir::Result<effects::BackendChoice> backends =
+      effects::parse_backends(f.backend, {"cpu", "vulkan"});
+  if (!backends) {
+    report.error("usage", backends.message());
+    return report.finish(kExitUsage);
+  }
+  auto wants = [&](const char* way) {
+    return std::find(backends->ways.begin(), backends->ways.end(), way) != backends->ways.end();
+  };
+  const bool want_cpu = wants("cpu");
+  bool want_vulkan = wants("vulkan");
   if (!f.output.empty()) {
     std::string why = check_output(f.output, input_files(f, req), f.fe.json).message();
     if (why.empty() && f.output == "-" && want_cpu && want_vulkan)
@@ -300,6 +314,26 @@ int run(const RunFlags& f) {
     return report.finish(kExitInvalid);
   }
   prepared.reset(); // the graph shares the textures; the pass is not needed any more
+  // Memory known before anything is allocated (effects::plan_memory), as glow plans it.
+  if (std::string why = effects::memory_refusal(
+          effects::plan_memory(*graph, backends->ways, false, effects::kProgramBytes),
+          effects::available_memory(),
+          fmt::format("the {}x{} {} target on {}", req.width, req.height,
+                      img::format_name(req.format), fmt::join(backends->ways, " + ")));
+      !why.empty()) {
+    report.error("memory", why + "; a smaller --size or --format, or one backend, needs less");
+    return report.finish(kExitInvalid);
+  }
+  // "all" leaves Vulkan out, with a note, where the machine has none (effects::select_ways).
+  vulkan::DeviceOptions vk_options;
+  vk_options.gpu_filter = f.gpu;
+  const ir::Result<effects::SelectedWays> selected = effects::select_ways(*backends, vk_options);
+  if (!selected) {
+    report.error("device", selected.message());
+    return report.finish(kExitUsage);
+  }
+  if (!selected->note.empty()) report.warning("backend", selected->note);
+  want_vulkan = selected->vulkan != nullptr;
   DeviceRun out, vk;
   std::string vk_name;
   if (want_cpu) {
@@ -309,8 +343,7 @@ int run(const RunFlags& f) {
     if (!out.ok) return report.finish(kExitInvalid);
   }
   if (want_vulkan) {
-    vulkan::Device* device = vulkan_device(f.gpu, report);
-    if (!device) return report.finish(kExitUsage);
+    vulkan::Device* device = selected->vulkan;
     vk_name = device->name();
     std::unique_ptr<effects::PassDevice> pass_device = effects::make_vulkan_pass_device(*device);
     vk = run_on(*pass_device, *graph, req, report);
@@ -353,6 +386,7 @@ int run(const RunFlags& f) {
     nlohmann::json& j = report.result();
     j = result_json(f, req, shown, write_ms);
     j["backend"] = f.backend;
+    j["backends"] = {{"ran", selected->ways}, {"note", selected->note}};
     if (want_vulkan) j["vulkan_device"] = vk_name;
     if (agreement) {
       j["agreement"] = {{"max_abs", agreement->max_abs},
@@ -421,10 +455,9 @@ void register_run_command(CLI::App& app) {
   sub->add_option("--threads", f->threads, "Worker threads (0 = every core)")
       ->capture_default_str();
   sub->add_option("--backend", f->backend,
-                  "cpu | vulkan | both (both, or its alias all: compare the two devices at the "
-                  "agreement targets)")
-      ->check(CLI::IsMember({"cpu", "vulkan", "both", "all"}))
-      ->transform([](std::string s) { return s == "all" ? std::string("both") : s; })
+                  "cpu | vulkan | both, or a list such as vulkan,cpu (both: compare the two "
+                  "devices at the agreement targets; all: both where the machine has Vulkan, "
+                  "else cpu with a note)")
       ->capture_default_str();
   sub->add_option("--gpu", f->gpu, "Vulkan device name filter (default: lavapipe)");
   set_action(sub, [f] { return run(*f); });

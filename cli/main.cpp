@@ -6,6 +6,7 @@
 
 #include "commands.h"
 #include "report.h"
+#include "tierlift/crash/crash.h"
 
 namespace {
 
@@ -69,6 +70,8 @@ int main(int argc, char** argv) {
   tierlift::cli::register_glow_command(app);
   tierlift::cli::register_report_command(app);
   tierlift::cli::register_glsl_command(app);
+  // A crash (a driver's, most likely) says what was running instead of a bare exit 139.
+  tierlift::crash::install_handler(intended_command(app, argc, argv), json_requested(argc, argv));
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

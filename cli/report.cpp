@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "tierlift/crash/crash.h"
+
 namespace tierlift::cli {
 
 Report::Report(std::string command, bool json) : command_(std::move(command)), json_(json) {}
@@ -56,6 +58,7 @@ int Report::finish(int exit_code) {
                           {"result", result_}};
     // Invalid UTF-8 from a listing becomes U+FFFD rather than an exception.
     fmt::print("{}\n", doc.dump(2, ' ', false, nlohmann::json::error_handler_t::replace));
+    crash::document_written(); // a later crash adds its line, not a second document
   }
   std::fflush(stdout);
   return exit_code;

@@ -142,6 +142,12 @@ uint64_t available_memory() {
   return available;
 }
 
+std::string memory_refusal(const MemoryPlan& plan, uint64_t available, const std::string& what) {
+  if (available == 0 || plan.peak <= available) return {};
+  return fmt::format("{} needs {} of memory at its peak and {} is available", what,
+                     format_bytes(plan.peak), format_bytes(available));
+}
+
 std::string format_bytes(uint64_t bytes) {
   const double gib = double(bytes) / (1024.0 * 1024.0 * 1024.0);
   if (gib >= 1) return fmt::format("{:.1f} GiB ({} bytes)", gib, bytes);

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "tierlift/crash/crash.h"
+
 namespace tierlift::effects {
 namespace {
 
@@ -154,12 +156,20 @@ ir::Result<GraphRun> run_graph(const EffectGraph& graph, PassDevice& device, Ima
                                bool keep_pass_images, const PassProgress& progress) {
   GraphRun run;
   auto t_all = std::chrono::steady_clock::now();
-  if (ir::Status begun = begin_graph(graph, device, images); !begun)
-    return std::move(begun).failure();
+  {
+    const crash::Stage stage("setup", fmt::format("while setting up the {} device (textures, "
+                                                  "uploads, pipelines)",
+                                                  device.name()));
+    if (ir::Status begun = begin_graph(graph, device, images); !begun)
+      return std::move(begun).failure();
+  }
   run.setup_ms = ms_since(t_all);
 
   for (const PassDesc& desc : graph.passes) {
     if (progress) progress(run.passes.size(), graph.passes.size(), desc);
+    // A crash in a pass (a driver's, most likely) names the pass and the device.
+    const crash::Stage stage(
+        "pass", fmt::format("while running pass '{}' on {}", desc.name, device.name()));
     auto t0 = std::chrono::steady_clock::now();
     ir::Result<pass::DrawReport> drawn = device.run_pass(desc.at_frame(0));
     // The pass's own time, not the time it was queued.

@@ -61,6 +61,42 @@ std::vector<StressRow> non_finite(const StressOptions& o) {
   return rows;
 }
 
+// One +inf texel at (8, 8) of a 16×16 RGBA32F scene, σ 1 (R = 3), no downsample, through
+// the composite. The glow holds +inf on the (2R+1)² footprint; the composite reads it with
+// bilinear filtering at its texel centres (α = 0, exact at a power-of-two size), and the
+// filter unit's a + α·(b − a) (NUMERICS.md rule 36) gives NaN wherever the texel itself or
+// its right, lower or lower-right neighbour is +inf: the footprint plus a column to its left
+// and a row above, (2R+2)² = 64 texels of the final frame. Masks equal on every way.
+StressRow infinite_composite(const StressOptions& o) {
+  constexpr uint32_t n = 16;
+  GlowParams p = small_params(n, n, 1, Format::RGBA32F, 1.0);
+  const PlanResult plan = build_glow(p);
+  img::Image scene = uniform_scene(n, n, 0, 1);
+  float* t = scene.at(8, 8);
+  t[0] = t[1] = t[2] = std::numeric_limits<float>::infinity();
+  StressRow row;
+  row.id = "non-finite.composite";
+  row.regime = "non-finite";
+  row.format = "rgba32f";
+  row.quantity = "final texels holding nan (one +inf scene texel, through the composite)";
+  row.expected = 64;
+  row.bound = "(2R+2)² = 8²: the filter unit's lerp meets +inf at weight 0 (rule 36)";
+  const std::vector<WayImages> ways = run_on_ways(plan, scene, o);
+  row.error = first_error(ways);
+  for (const WayImages& wi : ways) {
+    if (!wi.error.empty()) continue;
+    const img::Image& f = wi.images.at(std::string(kFinalTexture));
+    StressMeasure m{wi.way, 0, {}};
+    for (size_t i = 0; i < f.rgba.size(); i += 4) {
+      const bool hit = std::isnan(f.rgba[i]);
+      m.mask.push_back(hit ? 1 : 0);
+      m.value += hit;
+    }
+    row.measured.push_back(std::move(m));
+  }
+  return row;
+}
+
 // A denormal source through one tap of weight 1 (max_taps 1): the glow is the source.
 // RGBA32F: 1e-39 is an fp32 denormal (the smallest normal is 2^-126 ≈ 1.18e-38); lavapipe
 // flushes denormals to zero (its LLVM code runs with flush-to-zero), so the Vulkan way may
@@ -106,6 +142,8 @@ StressRow denormal(const StressOptions& o, Format f) {
 std::vector<StressCase> extreme_cases() {
   return {
       {"non-finite", non_finite},
+      {"non-finite.composite",
+       [](const StressOptions& o) { return std::vector{infinite_composite(o)}; }},
       {"denormal.rgba32f",
        [](const StressOptions& o) { return std::vector{denormal(o, Format::RGBA32F)}; }},
       {"denormal.rgba16f",

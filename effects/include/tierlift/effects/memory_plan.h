@@ -54,6 +54,15 @@ MemoryPlan plan_memory(const EffectGraph& graph, const std::vector<std::string>&
 // space. 0 when unknown.
 uint64_t available_memory();
 
+// Held beside the images by every run: the program, its listings and the Vulkan driver
+// (lavapipe, LLVM), measured at 92 MB resident for a 16×16 glow on all three devices.
+inline constexpr uint64_t kProgramBytes = 96ull << 20;
+
+// Empty when the plan's peak fits `available` (0: unknown, nothing to hold against);
+// otherwise the sentence refusing the run before anything is allocated: "<what> needs 8.0 GiB
+// (…) of memory at its peak and 1.0 GiB (…) is available".
+std::string memory_refusal(const MemoryPlan& plan, uint64_t available, const std::string& what);
+
 // "1.5 GiB (1610612736 bytes)"
 std::string format_bytes(uint64_t bytes);
 

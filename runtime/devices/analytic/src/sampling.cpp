@@ -75,6 +75,48 @@ Split split(double p, int subtexel_bits, double snap) {
   return {i0, frac};
 }
 
+// A bilinear read whose 2×2 footprint holds a non-finite texel in channel c, as the
+// devices' filter unit computes it (NUMERICS.md rule 36): a + α·(b − a) along u, then along
+// v, in IEEE fp32. Unlike a weighted sum it turns an infinite texel into NaN wherever the
+// texel sits in the lower slot (inf − inf, or −inf + inf) or has weight 0 (0·inf), so a
+// weight of 0 does not keep the texel out. The finite texels cannot change the result
+// (it is ±inf or NaN whatever they hold), so their float is enough.
+double filter_unit_lerp(const std::array<std::array<double, 4>, 4>& tx, int c, double alpha,
+                        double beta) {
+  auto lerp = [](float a, float v0, float v1) { return std::fma(a, v1 - v0, v0); };
+  const auto a = static_cast<float>(alpha), b = static_cast<float>(beta);
+  const float top = lerp(a, float(tx[0][c]), float(tx[1][c]));
+  const float bottom = lerp(a, float(tx[2][c]), float(tx[3][c]));
+  return lerp(b, top, bottom);
+}
+
+// The bilinear read of texels (i0, j0)…(i0 + 1, j0 + 1) with fractions fx, fy: weights in
+// double, each texel of weight 0 left out (an exact read stays exact); a channel whose
+// footprint holds ±inf or NaN as the filter unit computes it (filter_unit_lerp).
+template <class Note>
+std::array<double, 4> bilinear(const img::Image& t, int64_t i0, int64_t j0, double fx, double fy,
+                               const SamplerModel& s, const Note& note) {
+  std::array<std::array<double, 4>, 4> tx{}; // t00, t10, t01, t11
+  for (int b = 0; b < 2; ++b)
+    for (int a = 0; a < 2; ++a) tx[2 * b + a] = texel(t, i0 + a, j0 + b, s);
+  const double wx[2] = {1.0 - fx, fx}, wy[2] = {1.0 - fy, fy};
+  std::array<double, 4> out{};
+  for (int b = 0; b < 2; ++b)
+    for (int a = 0; a < 2; ++a) {
+      const double wgt = wx[a] * wy[b];
+      if (wgt == 0.0) continue; // keeps exact reads exact
+      note(tx[2 * b + a]);
+      for (int c = 0; c < 4; ++c) out[c] += wgt * tx[2 * b + a][c];
+    }
+  for (int c = 0; c < 4; ++c)
+    for (const auto& texel_c : tx)
+      if (!std::isfinite(texel_c[c])) {
+        out[c] = filter_unit_lerp(tx, c, fx, fy);
+        break;
+      }
+  return out;
+}
+
 } // namespace
 
 double snap_tolerance(uint32_t texels) {
@@ -92,16 +134,7 @@ std::array<double, 4> sample(const img::Image& t, double u, double v, const Samp
   }
   Split sx = split(u * w - 0.5, subtexel_bits, snap_tolerance(t.width)),
         sy = split(v * h - 0.5, subtexel_bits, snap_tolerance(t.height));
-  std::array<double, 4> out{};
-  const double wx[2] = {1.0 - sx.frac, sx.frac}, wy[2] = {1.0 - sy.frac, sy.frac};
-  for (int b = 0; b < 2; ++b)
-    for (int a = 0; a < 2; ++a) {
-      double wgt = wx[a] * wy[b];
-      if (wgt == 0.0) continue; // keeps exact reads exact (and NaN texels out of 0-weight)
-      auto tx = texel(t, sx.i0 + a, sy.i0 + b, s);
-      for (int c = 0; c < 4; ++c) out[c] += wgt * tx[c];
-    }
-  return out;
+  return bilinear(t, sx.i0, sy.i0, sx.frac, sy.frac, s, [](const std::array<double, 4>&) {});
 }
 
 } // namespace tierlift::analytic
@@ -165,17 +198,7 @@ std::array<double, 4> sample_at_float(const img::Image& t, float u, float v, con
   }
   const FloatSplit sx = float_split(u, t.width, s.address_u, subtexel_bits);
   const FloatSplit sy = float_split(v, t.height, s.address_v, subtexel_bits);
-  std::array<double, 4> out{};
-  const double wx[2] = {1.0 - sx.frac, sx.frac}, wy[2] = {1.0 - sy.frac, sy.frac};
-  for (int b = 0; b < 2; ++b)
-    for (int a = 0; a < 2; ++a) {
-      const double wgt = wx[a] * wy[b];
-      if (wgt == 0.0) continue; // keeps exact reads exact (and NaN texels out of 0-weight)
-      const auto tx = texel(t, sx.i0 + a, sy.i0 + b, s);
-      note(tx);
-      for (int c = 0; c < 4; ++c) out[c] += wgt * tx[c];
-    }
-  return out;
+  return bilinear(t, sx.i0, sy.i0, sx.frac, sy.frac, s, note);
 }
 
 namespace {

@@ -5,7 +5,9 @@
 
 #include <fmt/format.h>
 
+#include "address_space.h"
 #include "pipeline_cache.h"
+#include "tierlift/crash/crash.h"
 #include "unorm8_probe.h"
 #include "unorm8_to_float.h"
 #include "vk_internal.h"
@@ -62,8 +64,28 @@ std::string lower(std::string s) {
 
 } // namespace
 
+std::string vk_result_words(VkResult r) {
+  switch (r) {
+  case VK_ERROR_OUT_OF_HOST_MEMORY: return "out of host memory";
+  case VK_ERROR_OUT_OF_DEVICE_MEMORY: return "out of device memory";
+  case VK_ERROR_INITIALIZATION_FAILED: return "the driver could not initialise";
+  case VK_ERROR_DEVICE_LOST: return "the device was lost (the driver failed)";
+  case VK_ERROR_MEMORY_MAP_FAILED: return "the memory could not be mapped";
+  case VK_ERROR_LAYER_NOT_PRESENT: return "a Vulkan layer is missing";
+  case VK_ERROR_EXTENSION_NOT_PRESENT: return "a Vulkan extension is missing";
+  case VK_ERROR_FEATURE_NOT_PRESENT: return "a device feature is missing";
+  case VK_ERROR_INCOMPATIBLE_DRIVER: return "no compatible Vulkan driver";
+  case VK_ERROR_TOO_MANY_OBJECTS: return "too many Vulkan objects";
+  case VK_ERROR_FORMAT_NOT_SUPPORTED: return "the format is not supported";
+  case VK_ERROR_FRAGMENTED_POOL:
+  case VK_ERROR_OUT_OF_POOL_MEMORY: return "out of descriptor pool memory";
+  case VK_TIMEOUT: return "the device timed out";
+  default: return "an error the driver did not name";
+  }
+}
+
 std::string vk_error(const char* what, VkResult r) {
-  return fmt::format("{} failed: VkResult {}", what, static_cast<int>(r));
+  return fmt::format("{} in {}", vk_result_words(r), what);
 }
 
 Device::Impl::~Impl() {
@@ -99,6 +121,8 @@ ir::Result<std::unique_ptr<Device>> Device::create(const DeviceOptions& options)
     return ir::fail("vulkan", std::string(rule), std::move(msg));
   };
   auto fail = [&](std::string msg) { return fail_as(kDeviceRule, std::move(msg)); };
+  // A driver that crashes here (lavapipe under a tight `ulimit -v`) gets its line.
+  const crash::Stage stage("vulkan-device", "in the Vulkan driver while creating the device");
   auto impl = std::make_unique<Impl>();
 
   std::vector<const char*> layers, extensions;
@@ -212,6 +236,11 @@ ir::Result<std::unique_ptr<Device>> Device::create(const DeviceOptions& options)
   dci.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
   dci.queueCreateInfoCount = 1;
   dci.pQueueCreateInfos = &qci;
+  // lavapipe crashes inside vkCreateDevice when the address-space limit leaves it too little
+  // room (address_space.h): foreseen, it is a sentence instead of a SIGSEGV.
+  if (impl->props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU)
+    if (std::string why = address_space_refusal(cpu_device_address_space()); !why.empty())
+      return fail(why);
   r = vkCreateDevice(chosen, &dci, nullptr, &impl->device);
   if (r != VK_SUCCESS) {
     impl->device = VK_NULL_HANDLE;

@@ -3,6 +3,7 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <fmt/format.h>
 
 #include "tierlift/rounding/rounding.h"
 #include "vk_internal.h"
@@ -17,8 +18,35 @@ uint32_t find_memory(const Device::Impl& d, uint32_t bits, VkMemoryPropertyFlags
   return UINT32_MAX;
 }
 
+// "1.5 GiB", "3.0 MiB", "512 bytes"
+std::string size_words(uint64_t bytes) {
+  if (bytes >= (1ull << 30)) return fmt::format("{:.1f} GiB", double(bytes) / double(1ull << 30));
+  if (bytes >= (1ull << 20)) return fmt::format("{:.1f} MiB", double(bytes) / double(1ull << 20));
+  return fmt::format("{} bytes", bytes);
+}
+
+uint64_t bytes_per_texel(VkFormat f) {
+  switch (f) {
+  case VK_FORMAT_R32G32B32A32_SFLOAT: return 16;
+  case VK_FORMAT_R16G16B16A16_SFLOAT: return 8;
+  case VK_FORMAT_S8_UINT: return 1;
+  default: return 4;
+  }
+}
+
+std::string format_words(VkFormat f) {
+  switch (f) {
+  case VK_FORMAT_R32G32B32A32_SFLOAT: return "RGBA32F";
+  case VK_FORMAT_R16G16B16A16_SFLOAT: return "RGBA16F";
+  case VK_FORMAT_R8G8B8A8_UNORM: return "RGBA8";
+  case VK_FORMAT_S8_UINT: return "stencil";
+  default: return "depth/stencil";
+  }
+}
+
+// Empty on success, else why, in words (`what` names the object the memory is for).
 std::string allocate(Device::Impl& d, Cleanup& cleanup, const VkMemoryRequirements& req,
-                     VkMemoryPropertyFlags flags, VkDeviceMemory& out) {
+                     VkMemoryPropertyFlags flags, VkDeviceMemory& out, const std::string& what) {
   uint32_t type = find_memory(d, req.memoryTypeBits, flags);
   if (type == UINT32_MAX) type = find_memory(d, req.memoryTypeBits, 0);
   if (type == UINT32_MAX) return "no suitable Vulkan memory type";
@@ -27,12 +55,24 @@ std::string allocate(Device::Impl& d, Cleanup& cleanup, const VkMemoryRequiremen
   ai.allocationSize = req.size;
   ai.memoryTypeIndex = type;
   VkResult r = vkAllocateMemory(d.device, &ai, nullptr, &out);
-  if (r != VK_SUCCESS) return vk_error("vkAllocateMemory", r);
+  if (r != VK_SUCCESS) return allocation_failed(r, what, req.size);
   cleanup.destroy_later(d.device, out, vkFreeMemory);
   return {};
 }
 
 } // namespace
+
+std::string allocation_failed(VkResult r, const std::string& what, uint64_t bytes) {
+  return fmt::format("{} while allocating {} ({})", vk_result_words(r), what, size_words(bytes));
+}
+
+std::string image_words(uint32_t width, uint32_t height, VkFormat format) {
+  return fmt::format("a {}x{} {} image", width, height, format_words(format));
+}
+
+uint64_t image_bytes(uint32_t width, uint32_t height, VkFormat format) {
+  return uint64_t{width} * height * bytes_per_texel(format);
+}
 
 std::string create_buffer(Device::Impl& d, Cleanup& cleanup, VkDeviceSize size,
                           VkBufferUsageFlags usage, Buffer& out) {
@@ -41,8 +81,9 @@ std::string create_buffer(Device::Impl& d, Cleanup& cleanup, VkDeviceSize size,
   bi.size = size == 0 ? 16 : size;
   bi.usage = usage;
   bi.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  const std::string what = "a host buffer";
   VkResult r = vkCreateBuffer(d.device, &bi, nullptr, &out.buffer);
-  if (r != VK_SUCCESS) return vk_error("vkCreateBuffer", r);
+  if (r != VK_SUCCESS) return allocation_failed(r, what, bi.size);
   VkDevice dev = d.device;
   VkBuffer buf = out.buffer;
   VkMemoryRequirements req;
@@ -50,7 +91,7 @@ std::string create_buffer(Device::Impl& d, Cleanup& cleanup, VkDeviceSize size,
   // Memory is freed after the buffer is destroyed (cleanup runs in reverse order).
   std::string err = allocate(
       d, cleanup, req, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
-      out.memory);
+      out.memory, what);
   if (!err.empty()) {
     vkDestroyBuffer(dev, buf, nullptr);
     return err;
@@ -78,13 +119,15 @@ std::string create_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint
   ii.usage = usage;
   ii.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
   ii.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  const std::string what = image_words(width, height, format);
   VkResult r = vkCreateImage(d.device, &ii, nullptr, &out.image);
-  if (r != VK_SUCCESS) return vk_error("vkCreateImage", r);
+  if (r != VK_SUCCESS) return allocation_failed(r, what, image_bytes(width, height, format));
   VkDevice dev = d.device;
   VkImage img = out.image;
   VkMemoryRequirements req;
   vkGetImageMemoryRequirements(dev, img, &req);
-  std::string err = allocate(d, cleanup, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, out.memory);
+  std::string err =
+      allocate(d, cleanup, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, out.memory, what);
   if (!err.empty()) {
     vkDestroyImage(dev, img, nullptr);
     return err;

@@ -16,8 +16,15 @@
 
 namespace tierlift::vulkan {
 
-// "vkCreateImage failed: VK_ERROR_OUT_OF_HOST_MEMORY"
+// A VkResult in words: "out of device memory" (never the bare number).
+std::string vk_result_words(VkResult r);
+// "out of host memory in vkCreateImage"
 std::string vk_error(const char* what, VkResult r);
+// A failed allocation as a sentence: "out of device memory while allocating a 16384x16384
+// RGBA32F image (4.0 GiB)"; `what` from image_words, or "a host buffer".
+std::string allocation_failed(VkResult r, const std::string& what, uint64_t bytes);
+std::string image_words(uint32_t width, uint32_t height, VkFormat format); // "a 4x4 RGBA8 image"
+uint64_t image_bytes(uint32_t width, uint32_t height, VkFormat format);
 
 struct Unorm8Converter; // unorm8_to_float.h
 
