@@ -56,12 +56,8 @@ bool json_requested(int argc, char** argv) {
   return false;
 }
 
-} // namespace
-
-int main(int argc, char** argv) {
-  // Standard output is checked like every output: a closed or full one is exit 2.
-  tierlift::io::guard_standard_streams();
-  tierlift::io::check_stdout_at_exit("tierlift");
+// Parses the flags and runs the command; main() wraps it.
+int run_main(int argc, char** argv) {
   CLI::App app{"tierlift: lift Direct3D shader assembly (vs/ps 1.x-2.0) onto Vulkan"};
   app.set_version_flag("-V,--version", std::string("tierlift ") + TIERLIFT_VERSION);
   app.footer(kExamples);
@@ -95,8 +91,17 @@ int main(int argc, char** argv) {
     app.exit(e);
     return tierlift::cli::kExitUsage;
   }
+  return tierlift::cli::run_selected(app);
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  // Standard output is checked like every output: a closed or full one is exit 2.
+  tierlift::io::guard_standard_streams();
+  tierlift::io::check_stdout_at_exit("tierlift");
   try {
-    return tierlift::cli::run_selected(app);
+    return run_main(argc, argv);
   } catch (const std::system_error& e) {
     // fmt::print throws when standard output cannot take the text (a full disk, a closed
     // descriptor); std::filesystem throws the same kind. Either is an I/O error, said once.

@@ -133,8 +133,8 @@ TEST(CliOutputs, FmtRefusesWhatItWouldDrop) {
   EXPECT_NE(inc.err.find("#include \"c.inc\"\n    ^~~~~~~~"), std::string::npos) << inc.err;
   EXPECT_TRUE(inc.out.empty()) << inc.out;
 
-  const std::string branches = "ps_2_0\ndef c0, 1, 0, 0, 1\n#ifdef RED\nmov oC0, c0\n#else\n"
-                               "mov oC0, c0.y\n#endif\n";
+  const std::string branches = "ps_2_0\ndef c0, 1, 0, 0, 1\n#ifdef RED\nmov r0, c0\n#else\n"
+                               "mov r0, c0.y\n#endif\nmov oC0, r0\n";
   auto cond = run_cli("fmt " + s.file("b.psh", branches));
   EXPECT_EQ(cond.exit_code, 1);
   EXPECT_NE(cond.err.find("b.psh:3:1: error: fmt cannot keep #ifdef"), std::string::npos)
@@ -143,7 +143,7 @@ TEST(CliOutputs, FmtRefusesWhatItWouldDrop) {
   const std::string macro = s.file("d.psh", "ps_2_0\ndef c0, 1, 0, 0, 1\nmov oC0, COLOUR\n");
   auto use = run_cli("fmt -D COLOUR=c0 " + macro + " -o " + s.file("out.psh"));
   EXPECT_EQ(use.exit_code, 1);
-  EXPECT_NE(use.err.find("d.psh:3:9: error: fmt cannot keep macro COLOUR"), std::string::npos)
+  EXPECT_NE(use.err.find("d.psh:3:10: error: fmt cannot keep macro COLOUR"), std::string::npos)
       << use.err;
   EXPECT_FALSE(fs::exists(s.file("out.psh")));
 
