@@ -47,6 +47,10 @@ void register_assemble_command(CLI::App& app) {
       return report.finish(kExitUsage);
     }
     LoadedListing& l = *loaded;
+    if (ir::Status out = refuse_included(opts->output, l); !out) {
+      report.error("io", out.message(), opts->output);
+      return report.finish(kExitUsage);
+    }
     // The checked form: a field the token stream cannot carry is an error, not truncated.
     std::optional<std::vector<uint32_t>> tokens;
     if (l.program) tokens = as::assemble(*l.program, l.diags);

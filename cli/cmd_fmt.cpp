@@ -5,9 +5,32 @@
 #include "commands.h"
 #include "front_end.h"
 #include "report.h"
+#include "tierlift/asm/preprocessor.h"
 #include "tierlift/asm/printer.h"
 
 namespace tierlift::cli {
+namespace {
+
+// One error at the first directive or -D macro use of a text listing (none otherwise):
+// fmt prints the parsed program, where #include is inlined, macros are expanded and the
+// #if branch not taken is gone, so it refuses rather than lose source.
+ir::DiagnosticSink preprocessor_kept(const LoadedListing& l, const FrontEndOptions& fe) {
+  ir::DiagnosticSink out;
+  if (l.form != as::ListingForm::Text) return out; // a C array's #if 0 is not the listing's
+  as::ParseOptions po;
+  po.defines = split_defines(fe.defines);
+  if (std::optional<as::PreprocessorUse> use = as::first_preprocessor_use(0, l.sources, po))
+    out.error(use->loc, "fmt-preprocessor",
+              fmt::format("fmt cannot keep {}: it prints the parsed program, in which #include "
+                          "is inlined, macros are expanded and the #if branch not taken is "
+                          "gone; format a listing without directives or -D macros (an "
+                          "included file can be formatted on its own), or keep this one as "
+                          "it is",
+                          use->what));
+  return out;
+}
+
+} // namespace
 
 void register_fmt_command(CLI::App& app) {
   struct Opts {
@@ -32,8 +55,17 @@ void register_fmt_command(CLI::App& app) {
       return report.finish(kExitUsage);
     }
     LoadedListing& l = *loaded;
+    if (ir::Status out = refuse_included(opts->output, l); !out) {
+      report.error("io", out.message(), opts->output);
+      return report.finish(kExitUsage);
+    }
     report.diagnostics(l.diags, l.sources);
     if (!l.program) return report.finish(kExitInvalid);
+    // The program has no directives and no macros left: printing it would drop them.
+    if (ir::DiagnosticSink kept = preprocessor_kept(l, opts->fe); kept.has_errors()) {
+      report.diagnostics(kept, l.sources);
+      return report.finish(kExitInvalid);
+    }
     // The listing's comments and paragraphs stay; a formatter must not delete them.
     std::string text = as::print_program_with_comments(*l.program, l.sources.files[0].text, 0);
     if (opts->output == "-") {

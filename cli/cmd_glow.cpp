@@ -212,6 +212,17 @@ int run(const GlowFlags& f) {
   }
   std::optional<effects::Scene> scene = scene_from_flags(f, report, &exit_code);
   if (!scene) return report.finish(exit_code);
+  // -o DIR is written as one (io/output_folder.h): complete at the end, or untouched.
+  std::optional<io::OutputFolder> out_dir;
+  if (!f.output.empty()) {
+    std::vector<std::string> inputs = effects::scene_input_files(*scene);
+    inputs.insert(inputs.end(), {f.scene, f.image});
+    out_dir.emplace(f.output, std::move(inputs), "glow");
+    if (ir::Status s = out_dir->status(); !s) {
+      report.error("io", s.message(), f.output);
+      return report.finish(kExitUsage);
+    }
+  }
   const effects::GlowParams& params = scene->params;
   const std::string where = scene->file.empty() ? "tierlift glow" : scene->file;
 
@@ -302,8 +313,8 @@ int run(const GlowFlags& f) {
     effects::SceneAt scene_at;
     if (params.motion.on())
       scene_at = [&](unsigned frame) { return effects::load_scene_image(*scene, frame + 1); };
-    if (err = run_animation(plan, *image, names, make, f.frames, f.output,
-                            {f.scene, f.image, scene->image}, scene_at, animation);
+    if (err = run_animation(plan, *image, names, make, f.frames, out_dir ? &*out_dir : nullptr,
+                            scene_at, animation);
         !err.empty()) {
       report.error("frames", err);
       return report.finish(kExitInvalid);
@@ -316,17 +327,23 @@ int run(const GlowFlags& f) {
       return report.finish(kExitInvalid);
     }
   std::vector<std::string> written;
-  if (!f.output.empty())
-    if (err = write_glow_images(f.output, ways, params.format != img::Format::RGBA8,
-                                {f.scene, f.image, scene->image}, &written);
-        !err.empty()) {
+  if (out_dir) {
+    err = write_glow_images(*out_dir, ways, params.format != img::Format::RGBA8);
+    if (err.empty()) {
+      ir::Result<std::vector<std::string>> done = out_dir->commit();
+      if (done)
+        written = std::move(done).value();
+      else
+        err = done.message();
+    }
+    if (!err.empty()) {
       report.error("io", err, f.output);
       return report.finish(kExitUsage);
     }
+  }
 
   bool all_within = !animated || animation.all_within();
   for (const PairAgreement& p : pairs) all_within = all_within && p.agreement.all_pass;
-  written.insert(written.end(), animation.written.begin(), animation.written.end());
   if (report.json()) {
     nlohmann::json& j = report.result();
     j = summary_json(*scene, plan, ways);

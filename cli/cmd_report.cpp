@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <unistd.h>
 
@@ -13,6 +14,8 @@
 #include "report.h"
 #include "tierlift/effects/report_files.h"
 #include "tierlift/effects/report_sweep.h"
+#include "tierlift/effects/scene.h"
+#include "tierlift/io/output_folder.h"
 #include "vulkan_device.h"
 
 namespace tierlift::cli {
@@ -114,6 +117,20 @@ int run(const ReportFlags& f) {
     return report.finish(io ? kExitUsage : kExitInvalid);
   }
   const effects::Scene& scene = *load;
+  // -o DIR: made whole at the end or left as it was (io/output_folder.h); a report file
+  // that would replace one of the scene's inputs is refused before the sweep.
+  std::optional<io::OutputFolder> out_dir;
+  if (!f.output.empty()) {
+    std::vector<std::string> inputs = effects::scene_input_files(scene);
+    inputs.insert(inputs.end(), {f.scene, f.image});
+    out_dir.emplace(f.output, std::move(inputs), "report");
+    for (const std::string& name : effects::report_file_names())
+      if (ir::Result<std::string> path = out_dir->path(name); !path) break;
+    if (ir::Status st = out_dir->status(); !st) {
+      report.error("io", st.message(), f.output);
+      return report.finish(kExitUsage);
+    }
+  }
   effects::SweepSettings s = f.quick ? effects::quick_sweep() : effects::full_sweep();
   if (f.frames != 0) s.frames = f.frames;
   if (ir::Status lists = apply_lists(f, s); !lists) {
@@ -160,8 +177,8 @@ int run(const ReportFlags& f) {
   info.intensity = scene.params.intensity;
   if (vk) info.vulkan_device = vk->name();
   std::vector<std::string> written;
-  if (!f.output.empty()) {
-    ir::Result<std::vector<std::string>> files = effects::write_report(f.output, r, s, info);
+  if (out_dir) {
+    ir::Result<std::vector<std::string>> files = effects::write_report(*out_dir, r, s, info);
     if (!files) {
       report.error("io", files.message(), f.output);
       return report.finish(kExitUsage);

@@ -263,6 +263,13 @@ int run(const RunFlags& f) {
     listings_ok = listings_ok && (*l)->program && !(*l)->diags.has_errors();
   }
   if (!listings_ok) return report.finish(kExitInvalid);
+  for (const std::string& out :
+       {f.output, want_cpu && want_vulkan && !f.output.empty() ? vulkan_output(f.output) : ""})
+    for (auto* l : {&vs, &ps})
+      if (ir::Status refused = *l ? refuse_included(out, **l) : ir::ok_status(); !refused) {
+        report.error("io", refused.message(), out);
+        return report.finish(kExitUsage);
+      }
   // Constants named by a token stream's CTAB become the registers they cover.
   auto table = [](const std::optional<LoadedListing>& l) {
     return l && l->constants ? &*l->constants : nullptr;

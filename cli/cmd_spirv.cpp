@@ -50,6 +50,10 @@ void register_spirv_command(CLI::App& app) {
         report.error("io", l->message());
         return report.finish(kExitUsage);
       }
+      if (ir::Status out = refuse_included(opts->output, **l); !out) {
+        report.error("io", out.message(), opts->output);
+        return report.finish(kExitUsage);
+      }
       report.diagnostics((*l)->diags, (*l)->sources);
       if (!(*l)->program) return report.finish(kExitInvalid); // never compile an invalid listing
     }

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -17,6 +18,7 @@
 #include "report.h"
 #include "tierlift/effects/analytic_device.h"
 #include "tierlift/effects/stress.h"
+#include "tierlift/io/output_folder.h"
 #include "vulkan_device.h"
 
 namespace tierlift::cli {
@@ -61,6 +63,15 @@ int run_stress(const StressFlags& f) {
     report.error("usage", "-o names a folder for report --stress (stress.json, stress.md)");
     return report.finish(kExitUsage);
   }
+  // -o DIR: whole at the end or as it was (io/output_folder.h); a bad DIR is said at once.
+  std::optional<io::OutputFolder> out_dir;
+  if (!f.output.empty()) {
+    out_dir.emplace(f.output, std::vector<std::string>{}, "stress");
+    if (ir::Status st = out_dir->status(); !st) {
+      report.error("io", st.message(), f.output);
+      return report.finish(kExitUsage);
+    }
+  }
   // The process's device, kept until exit as in `tierlift glow` (tests/lsan.supp).
   vulkan::Device* vk = vulkan_device(f.gpu, report);
   if (!vk) return report.finish(kExitUsage);
@@ -96,22 +107,26 @@ int run_stress(const StressFlags& f) {
                             {"seconds", seconds},
                             {"vulkan_device", vk->name()}};
   std::vector<std::string> written;
-  if (!f.output.empty()) {
-    std::error_code ec;
-    std::filesystem::create_directories(f.output, ec);
+  if (out_dir) {
     const std::string md =
         fmt::format("# tierlift report --stress\n\nVulkan device: {}; {:.1f} s\n\n{}", vk->name(),
                     seconds, effects::stress_table(rows, true));
     for (const auto& [name, text] :
          {std::pair<std::string, std::string>{"stress.json", j.dump(2) + "\n"},
           {"stress.md", md}}) {
-      const std::string path = (std::filesystem::path(f.output) / name).string();
-      if (std::string err = write_output(path, text); !err.empty()) {
-        report.error("io", err, path);
+      ir::Result<std::string> path = out_dir->path(name);
+      std::string err = path ? write_output(*path, text) : path.message();
+      if (!err.empty()) {
+        report.error("io", err, f.output);
         return report.finish(kExitUsage);
       }
-      written.push_back(path);
     }
+    ir::Result<std::vector<std::string>> done = out_dir->commit();
+    if (!done) {
+      report.error("io", done.message(), f.output);
+      return report.finish(kExitUsage);
+    }
+    written = std::move(done).value();
   }
   if (report.json()) {
     report.result() = j;

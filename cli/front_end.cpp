@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "tierlift/asm/preprocessor.h"
 #include "tierlift/io/output_file.h"
 #include "tierlift/ir/passes.h"
 #include "tierlift/ir/profile.h"
@@ -40,6 +41,16 @@ void add_front_end_options(CLI::App* sub, FrontEndOptions& o, bool skip_validati
 
 ir::Status output_conflict(const std::string& output, const std::vector<std::string>& inputs) {
   return io::refuse_if_input(output, inputs);
+}
+
+ir::Status refuse_included(const std::string& output, const LoadedListing& listing) {
+  for (const std::string& inc : as::included_files(listing.sources))
+    if (io::same_file(output, inc))
+      return ir::fail(output, "write",
+                      fmt::format("{}: refusing to write over {}, which {} #includes{}", output,
+                                  inc, listing.sources.files[0].name,
+                                  inc == output ? "" : " (the same file)"));
+  return ir::ok_status();
 }
 
 ir::Status check_output(const std::string& output, const std::vector<std::string>& inputs,

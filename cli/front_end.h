@@ -63,6 +63,9 @@ bool check_executable(LoadedListing& listing, std::string_view backend);
 // OK when `output` ("-" = standard output) may be written: it is none of `inputs` (same
 // device and inode). Commands check this before doing any work, so nothing is touched.
 ir::Status output_conflict(const std::string& output, const std::vector<std::string>& inputs);
+// After loading: OK when `output` is none of the files `listing` #included (directly or
+// through another include); the refusal names both. Nothing has been written yet.
+ir::Status refuse_included(const std::string& output, const LoadedListing& listing);
 // output_conflict, and also refuses "-o -" together with --json (both want standard
 // output).
 ir::Status check_output(const std::string& output, const std::vector<std::string>& inputs,

@@ -7,7 +7,6 @@
 
 #include "tierlift/image/compare.h"
 #include "tierlift/image/io.h"
-#include "tierlift/io/output_file.h"
 
 namespace tierlift::cli {
 namespace {
@@ -49,28 +48,23 @@ img::Image contact_strip(const std::vector<const img::Image*>& frames) {
   return strip;
 }
 
-std::string write_frames(const std::string& dir, const std::vector<img::Image>& frames,
-                         const std::vector<std::string>& inputs, std::vector<std::string>& out) {
+std::string write_frames(io::OutputFolder& out, const std::vector<img::Image>& frames) {
   std::vector<std::string> names;
-  for (size_t f = 0; f < frames.size(); ++f)
-    names.push_back((std::filesystem::path(dir) / fmt::format("frame-{:04}.png", f + 1)).string());
-  const std::string strip_name = (std::filesystem::path(dir) / "frames-strip.png").string();
-  names.push_back(strip_name);
-  for (const std::string& n : names) // every name checked before the first is written
-    if (ir::Status refused = io::refuse_if_input(n, inputs); !refused) return refused.message();
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) return fmt::format("{}: cannot create the folder: {}", dir, ec.message());
-  for (size_t f = 0; f < frames.size(); ++f) {
-    if (ir::Status s = img::write_png(names[f], opaque(frames[f])); !s) return s.message();
-    out.push_back(names[f]);
+  for (size_t f = 0; f < frames.size(); ++f) names.push_back(fmt::format("frame-{:04}.png", f + 1));
+  names.push_back("frames-strip.png");
+  std::vector<std::string> paths;
+  for (const std::string& n : names) { // every name checked before the first is written
+    ir::Result<std::string> path = out.path(n);
+    if (!path) return path.message();
+    paths.push_back(*path);
   }
+  for (size_t f = 0; f < frames.size(); ++f)
+    if (ir::Status s = img::write_png(paths[f], opaque(frames[f])); !s) return s.message();
   std::vector<const img::Image*> picked;
   const size_t count = std::min<size_t>(kStripFrames, frames.size());
   for (size_t k = 0; k < count; ++k)
     picked.push_back(&frames[count == 1 ? 0 : k * (frames.size() - 1) / (count - 1)]);
-  if (ir::Status s = img::write_png(strip_name, contact_strip(picked)); !s) return s.message();
-  out.push_back(strip_name);
+  if (ir::Status s = img::write_png(paths.back(), contact_strip(picked)); !s) return s.message();
   return {};
 }
 
@@ -83,9 +77,8 @@ bool Animation::all_within() const {
 
 std::string run_animation(const effects::GlowPlan& plan, const img::Image& scene,
                           const std::vector<std::string>& devices, const DeviceFactory& make,
-                          unsigned frames, const std::string& dir,
-                          const std::vector<std::string>& inputs, const effects::SceneAt& scene_at,
-                          Animation& out) {
+                          unsigned frames, io::OutputFolder* folder,
+                          const effects::SceneAt& scene_at, Animation& out) {
   const std::string final_name(effects::kFinalTexture);
   const img::Format format = plan.graph.find_texture(final_name)->format;
   // Every device's frames are kept until the last device has been compared with them
@@ -123,7 +116,7 @@ std::string run_animation(const effects::GlowPlan& plan, const img::Image& scene
     out.times.push_back({devices[d], run.run.value()});
     kept.push_back(std::move(mine));
   }
-  if (!dir.empty() && !kept.empty()) return write_frames(dir, kept.front(), inputs, out.written);
+  if (folder && !kept.empty()) return write_frames(*folder, kept.front());
   return {};
 }
 

@@ -13,6 +13,7 @@
 
 #include "glow_report.h"
 #include "tierlift/effects/glow_run.h"
+#include "tierlift/io/output_folder.h"
 
 namespace tierlift::cli {
 
@@ -29,7 +30,6 @@ struct FramePairAgreement {
 struct Animation {
   std::vector<FrameReport> times;
   std::vector<FramePairAgreement> pairs;
-  std::vector<std::string> written;
   bool all_within() const;
 };
 
@@ -37,13 +37,12 @@ using DeviceFactory = std::function<std::unique_ptr<effects::PassDevice>(const s
 
 // Runs `frames` frames of the plan on each device `devices` names (in order), compares
 // each later device with each earlier one frame by frame (the final image), and writes the
-// first device's frames into `dir` when it is not empty (never over one of `inputs`).
-// Empty string on success, else why.
+// first device's frames into `folder` when there is one (committed by the caller, with
+// the glow's images). Empty string on success, else why.
 std::string run_animation(const effects::GlowPlan& plan, const img::Image& scene,
                           const std::vector<std::string>& devices, const DeviceFactory& make,
-                          unsigned frames, const std::string& dir,
-                          const std::vector<std::string>& inputs, const effects::SceneAt& scene_at,
-                          Animation& out);
+                          unsigned frames, io::OutputFolder* folder,
+                          const effects::SceneAt& scene_at, Animation& out);
 
 void print_animation(const Animation& a);
 nlohmann::json animation_json(const Animation& a);

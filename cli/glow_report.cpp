@@ -85,12 +85,10 @@ nlohmann::json agreement_json(const std::vector<PairAgreement>& pairs) {
   return out;
 }
 
-std::string write_glow_images(const std::string& dir, const std::vector<GlowWay>& ways,
-                              bool float_targets, const std::vector<std::string>& inputs,
-                              std::vector<std::string>* written) {
-  if (dir == "-") return "-o names a folder for glow (several images); '-' is not one";
+std::string write_glow_images(io::OutputFolder& out, const std::vector<GlowWay>& ways,
+                              bool float_targets) {
   struct File {
-    std::string path;
+    std::string name;
     const img::Image* image;
     bool pfm;
   };
@@ -100,27 +98,26 @@ std::string write_glow_images(const std::string& dir, const std::vector<GlowWay>
          {effects::kSceneTexture, effects::kGlowTexture, effects::kFinalTexture}) {
       const auto it = way.glow.images.find(tex);
       if (it == way.glow.images.end()) continue;
-      const std::filesystem::path base =
-          std::filesystem::path(dir) / fmt::format("{}-{}", tex, way.name);
-      files.push_back({base.string() + ".png", &it->second, false});
-      if (float_targets) files.push_back({base.string() + ".pfm", &it->second, true});
+      const std::string base = fmt::format("{}-{}", tex, way.name);
+      files.push_back({base + ".png", &it->second, false});
+      if (float_targets) files.push_back({base + ".pfm", &it->second, true});
     }
-  // Every name is checked before the first is written: an input is never replaced.
-  for (const File& f : files)
-    if (ir::Status refused = io::refuse_if_input(f.path, inputs); !refused)
-      return refused.message();
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) return fmt::format("{}: cannot create the folder: {}", dir, ec.message());
+  // Every name is checked (never one of the inputs) before the first is written.
+  std::vector<std::string> paths;
   for (const File& f : files) {
+    ir::Result<std::string> path = out.path(f.name);
+    if (!path) return path.message();
+    paths.push_back(*path);
+  }
+  for (size_t i = 0; i < files.size(); ++i) {
+    const File& f = files[i];
     auto write = [&]() -> ir::Status {
-      if (f.pfm) return img::write_pfm(f.path, *f.image);
+      if (f.pfm) return img::write_pfm(paths[i], *f.image);
       img::Image opaque = *f.image;
-      for (size_t i = 3; i < opaque.rgba.size(); i += 4) opaque.rgba[i] = 1.0f;
-      return img::write_png(f.path, opaque);
+      for (size_t k = 3; k < opaque.rgba.size(); k += 4) opaque.rgba[k] = 1.0f;
+      return img::write_png(paths[i], opaque);
     };
     if (ir::Status s = write(); !s) return s.message();
-    if (written) written->push_back(f.path);
   }
   return {};
 }

@@ -9,6 +9,7 @@
 
 #include "tierlift/effects/agreement.h"
 #include "tierlift/effects/glow_run.h"
+#include "tierlift/io/output_folder.h"
 #include "tierlift/ir/result.h"
 
 namespace tierlift::cli {
@@ -44,13 +45,12 @@ void print_frames_table(const std::vector<FrameReport>& frames);
 // {"<device>": {"setup_ms", "median_ms", "min_ms", "max_ms", "n"}}
 nlohmann::json frames_json(const std::vector<FrameReport>& frames);
 
-// Writes DIR/{scene,glow,final}-<way>.png for each way (opaque copies: the scene's alpha is
-// the glow mask, and viewers would show the ground as transparent), plus .pfm of each when
-// the target format is a float format. Empty string on success. Every file is written to a
-// temporary name and renamed into place. A name that is one of `inputs` (the same file) is
-// refused before anything is written.
-std::string write_glow_images(const std::string& dir, const std::vector<GlowWay>& ways,
-                              bool float_targets, const std::vector<std::string>& inputs,
-                              std::vector<std::string>* written);
+// Writes {scene,glow,final}-<way>.png for each way into `out` (opaque copies: the scene's
+// alpha is the glow mask, and viewers would show the ground as transparent), plus .pfm of
+// each when the target format is a float format. Empty string on success. The folder
+// refuses a name that is one of the run's inputs before anything is written; nothing
+// reaches DIR before out.commit().
+std::string write_glow_images(io::OutputFolder& out, const std::vector<GlowWay>& ways,
+                              bool float_targets);
 
 } // namespace tierlift::cli

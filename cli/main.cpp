@@ -2,11 +2,15 @@
 // by the modules (asm_parser, runtime, codegen).
 #include <fmt/format.h>
 
+#include <cstdio>
 #include <string_view>
+#include <system_error>
+#include <unistd.h>
 
 #include "commands.h"
 #include "report.h"
 #include "tierlift/crash/crash.h"
+#include "tierlift/io/std_streams.h"
 
 namespace {
 
@@ -53,9 +57,8 @@ bool json_requested(int argc, char** argv) {
   return false;
 }
 
-} // namespace
-
-int main(int argc, char** argv) {
+// Parses the flags and runs the command; main() wraps it.
+int run_main(int argc, char** argv) {
   CLI::App app{"tierlift: lift Direct3D shader assembly (vs/ps 1.x-2.0) onto Vulkan"};
   app.set_version_flag("-V,--version", std::string("tierlift ") + TIERLIFT_VERSION);
   app.footer(kExamples);
@@ -92,4 +95,23 @@ int main(int argc, char** argv) {
     return tierlift::cli::kExitUsage;
   }
   return tierlift::cli::run_selected(app);
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  // Standard output is checked like every output: a closed or full one is exit 2.
+  tierlift::io::guard_standard_streams();
+  tierlift::io::check_stdout_at_exit("tierlift");
+  try {
+    return run_main(argc, argv);
+  } catch (const std::system_error& e) {
+    // fmt::print throws when standard output cannot take the text (a full disk, a closed
+    // descriptor); std::filesystem throws the same kind. Either is an I/O error, said once.
+    const std::string why = tierlift::io::flush_stdout();
+    fmt::print(stderr, "tierlift: error: {}\n", why.empty() ? std::string(e.what()) : why);
+    if (why.empty()) return tierlift::cli::kExitUsage;
+    std::fflush(stderr);
+    ::_exit(tierlift::cli::kExitUsage); // the exit-time check would say it a second time
+  }
 }

@@ -278,6 +278,7 @@ private:
       return;
     }
     uint32_t id = sm_.add(path->string(), buf.str());
+    sm_.files[id].included = true;
     include_stack_.push_back(canon);
     process_file(id, depth + 1);
     include_stack_.pop_back();

@@ -9,6 +9,7 @@
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -354,71 +355,49 @@ std::string report_markdown(const SweepResult& r, const SweepSettings& s, const 
 
 namespace {
 
-// write_report's work; empty on success, else why (the temporary folder removed).
-std::string write_report_files(const std::string& dir, const SweepResult& r, const SweepSettings& s,
+// write_report's work; empty on success, else why (the caller's folder, never committed,
+// then removes what was written).
+std::string write_report_files(io::OutputFolder& out, const SweepResult& r, const SweepSettings& s,
                                const ReportInfo& info, std::vector<std::string>* written) {
-  if (dir.empty() || dir == "-") return "-o names a folder for the report; '-' is not one";
-  const fs::path target = fs::path(dir);
-  std::error_code ec;
-  const bool exists = fs::exists(target, ec);
-  if (exists && !fs::is_directory(target, ec))
-    return fmt::format("{}: exists and is not a folder", dir);
-  fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  if (target.filename().empty()) parent = target.parent_path().parent_path();
-  if (parent.empty()) parent = ".";
-  if (!fs::is_directory(parent, ec)) return fmt::format("{}: no such folder", parent.string());
-  std::string pattern =
-      (parent / fmt::format(".{}.tmpXXXXXX",
-                            target.filename().empty() ? "report" : target.filename().string()))
-          .string();
-  if (!mkdtemp(pattern.data()))
-    return fmt::format("{}: cannot make a temporary folder: {}", parent.string(),
-                       std::strerror(errno));
-  const fs::path tmp = pattern;
-  auto fail = [&](std::string why) {
-    fs::remove_all(tmp, ec);
-    return why;
-  };
-  const std::vector<std::pair<std::string, std::string>> texts = {
-      {"report.json", report_json(r, s, info).dump(2) + "\n"},
-      {"report.csv", report_csv(r)},
-      {"report.md", report_markdown(r, s, info)}};
-  for (const auto& [name, text] : texts)
-    if (std::string e = write_text(tmp / name, text); !e.empty()) return fail(e);
-  std::string script;
-  if (std::string e = plot_files(r, info, tmp, &script); !e.empty()) return fail(e);
-  if (std::string e = run_gnuplot(tmp); !e.empty()) return fail(e);
-  for (const char* name : {"plot.dat", "plot.gp", "gnuplot.log"}) fs::remove(tmp / name, ec);
-  const char* files[] = {"report.json", "report.csv", "report.md", "error-vs-time.png",
-                         "error-vs-time.svg"};
-  for (const char* name : files)
-    if (!fs::is_regular_file(tmp / name, ec))
-      return fail(fmt::format("{} did not write {}", gnuplot_program(), name));
-  if (!exists) {
-    fs::rename(tmp, target, ec);
-    if (ec)
-      return fail(fmt::format("{}: cannot move the report into place: {}", dir, ec.message()));
-  } else {
-    // DIR is there already (maybe with other files): each file is renamed into it.
-    for (const char* name : files) {
-      fs::rename(tmp / name, target / name, ec);
-      if (ec)
-        return fail(fmt::format("{}: cannot move {} into place: {}", dir, name, ec.message()));
-    }
-    fs::remove_all(tmp, ec);
+  std::vector<std::string> paths;
+  for (const std::string& name : report_file_names()) {
+    ir::Result<std::string> path = out.path(name);
+    if (!path) return path.message();
+    paths.push_back(*path);
   }
-  if (written)
-    for (const char* name : files) written->push_back((target / name).string());
+  const fs::path tmp = out.temp_dir(); // gnuplot's data, script and log: scratch beside them
+  const std::string texts[] = {report_json(r, s, info).dump(2) + "\n", report_csv(r),
+                               report_markdown(r, s, info)};
+  for (size_t i = 0; i < std::size(texts); ++i)
+    if (std::string e = write_text(paths[i], texts[i]); !e.empty()) return e;
+  std::string script;
+  if (std::string e = plot_files(r, info, tmp, &script); !e.empty()) return e;
+  if (std::string e = run_gnuplot(tmp); !e.empty()) return e;
+  std::error_code ec;
+  for (const char* name : {"plot.dat", "plot.gp", "gnuplot.log"}) fs::remove(tmp / name, ec);
+  for (const std::string& path : paths)
+    if (!fs::is_regular_file(path, ec))
+      return fmt::format("{} did not write {}", gnuplot_program(),
+                         fs::path(path).filename().string());
+  ir::Result<std::vector<std::string>> done = out.commit();
+  if (!done) return done.message();
+  if (written) *written = std::move(done).value();
   return {};
 }
 
 } // namespace
 
-ir::Result<std::vector<std::string>> write_report(const std::string& dir, const SweepResult& r,
+const std::vector<std::string>& report_file_names() {
+  static const std::vector<std::string> names = {"report.json", "report.csv", "report.md",
+                                                 "error-vs-time.png", "error-vs-time.svg"};
+  return names;
+}
+
+ir::Result<std::vector<std::string>> write_report(io::OutputFolder& out, const SweepResult& r,
                                                   const SweepSettings& s, const ReportInfo& info) {
   std::vector<std::string> written;
-  if (std::string e = write_report_files(dir, r, s, info, &written); !e.empty())
-    return ir::fail(dir, "io", std::move(e));
+  if (std::string e = write_report_files(out, r, s, info, &written); !e.empty())
+    return ir::fail(out.dir(), "io", std::move(e));
   return written;
 }
 

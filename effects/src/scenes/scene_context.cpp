@@ -15,16 +15,18 @@ constexpr NumberRange kDepth{-1e6, 1e6};
 constexpr NumberRange kFogChannel{0, 1};
 
 // A PNG or PFM of the scene's size, named by the string at `at`; null after an error.
+// `*file` is set to the path read (an input no output may replace).
 std::shared_ptr<const img::Image> read_scene_sized(const Json& v, const std::string& at,
                                                    FieldChecker& c, const std::string& base_dir,
-                                                   const GlowParams& p) {
+                                                   const GlowParams& p, std::string* file) {
   std::optional<std::string> name = c.string(v, at);
   if (!name) return nullptr;
   if (name->empty()) {
     c.error(at, "is empty; expected a PNG or PFM file");
     return nullptr;
   }
-  img::ImageResult image = img::read_image(resolve_path(base_dir, *name));
+  *file = resolve_path(base_dir, *name);
+  img::ImageResult image = img::read_image(*file);
   if (!image) {
     const std::string why = image.message().substr(0, image.message().find('\n'));
     c.error(at, fmt::format("cannot read the image: {}", why));
@@ -47,7 +49,8 @@ std::span<const std::string_view> scene_fog_keys() {
 }
 
 void read_glow_image(const Json& v, FieldChecker& c, const std::string& base_dir, Scene& s) {
-  s.params.context.glow_image = read_scene_sized(v, "/glow_image", c, base_dir, s.params);
+  s.params.context.glow_image =
+      read_scene_sized(v, "/glow_image", c, base_dir, s.params, &s.params.context.glow_image_file);
   if (s.params.context.glow_image)
     for (const std::string& w : image_warnings(*s.params.context.glow_image))
       s.warnings.push_back("glow image: " + w);
@@ -69,7 +72,7 @@ void read_fog(const Json& v, const std::string& at, FieldChecker& c, const std::
   if (const Json* col = member(v, "color"))
     c.numbers(*col, at + "/color", kFogChannel, fog.color, "[r, g, b] (three numbers in 0..1)");
   if (const Json* d = member(v, "depth"))
-    fog.depth = read_scene_sized(*d, at + "/depth", c, base_dir, p);
+    fog.depth = read_scene_sized(*d, at + "/depth", c, base_dir, p, &fog.depth_file);
   if (c.failed()) return;
   // Tiers dx8 and dx7 draw the fog in ps.1.1: its constants must fit [-1, 1].
   if (p.tier != Tier::Dx9)

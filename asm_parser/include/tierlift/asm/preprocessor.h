@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -72,5 +73,21 @@ LexStatus lex_text(uint32_t file, std::string_view text, ir::DiagnosticSink& dia
 // sm). Errors go to diags; the stream is still returned so the parser can report more.
 TokenStream preprocess(uint32_t file, ir::SourceManager& sm, ir::DiagnosticSink& diags,
                        const ParseOptions& options);
+
+// The files #include opened while `sm` was filled (directly or through another include), as
+// the paths they were opened by, each once, in the order first opened. They are inputs of
+// the command as much as the listing: no output may replace one (io::refuse_if_input).
+std::vector<std::string> included_files(const ir::SourceManager& sm);
+
+// What a listing's text needs the preprocessor for, if anything: the position of its first
+// directive (a line starting with '#', taken or skipped) or of its first use of a macro
+// given as `options.defines` (-D). `fmt` prints the IR, in which directives and macros no
+// longer exist, so it refuses such a listing rather than lose them.
+struct PreprocessorUse {
+  ir::SourceLoc loc;
+  std::string what; // "#include", "#define", "#ifdef", …, or "macro NAME"
+};
+std::optional<PreprocessorUse> first_preprocessor_use(uint32_t file, const ir::SourceManager& sm,
+                                                      const ParseOptions& options);
 
 } // namespace tierlift::as

@@ -30,11 +30,13 @@ struct GlowFog {
   // depth = 1 − (y + ½)/height at pixel row y (the bottom row near 0, the top row near 1,
   // as a floor receding toward a horizon at the top of the picture).
   std::shared_ptr<const img::Image> depth;
+  std::string depth_file; // the file `depth` was read from ("" for the built-in floor)
 };
 
 struct GlowContext {
   // The glow render, the scene's size (RGBA32F as read); null: the scene image's own.
   std::shared_ptr<const img::Image> glow_image;
+  std::string glow_image_file; // the file it was read from
   GlowFog fog;
   bool on() const { return glow_image || fog.on; }
 };

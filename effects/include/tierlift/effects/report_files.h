@@ -2,8 +2,8 @@
 // settings), report.csv, report.md (the Pareto front, the scene's own configuration and
 // where it stands, the cheapest configuration within 1/255 of the ideal) and the plot
 // error-vs-time.png / .svg, drawn by gnuplot from a data file and a script tierlift writes.
-// Everything is made in a temporary folder beside DIR and moved into DIR at the end, so an
-// error leaves DIR as it was (absent when it was absent).
+// Everything is made in the temporary folder of an io::OutputFolder and moved into DIR at
+// the end, so an error or an interrupt leaves DIR as it was (absent when it was absent).
 #pragma once
 
 #include "tierlift/ir/result.h"
@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tierlift/effects/report_sweep.h"
+#include "tierlift/io/output_folder.h"
 
 namespace tierlift::effects {
 
@@ -33,10 +34,14 @@ std::string report_markdown(const SweepResult& r, const SweepSettings& s, const 
 // The gnuplot program: TIERLIFT_GNUPLOT when set, else "gnuplot" on PATH.
 std::string gnuplot_program();
 
-// Writes every file into `dir` (created when missing) and returns their paths; on failure
-// (rule "io", subject `dir`) nothing changed in `dir`. gnuplot missing is an error that says
-// which package brings it.
-ir::Result<std::vector<std::string>> write_report(const std::string& dir, const SweepResult& r,
+// The names of the report's files, in the order write_report writes them. A command names
+// them to its OutputFolder before the sweep, so a clash with an input is refused at once.
+const std::vector<std::string>& report_file_names();
+
+// Writes every file into `out` and commits it; the files' paths. On failure (rule "io",
+// subject DIR) nothing changed in DIR. gnuplot missing is an error that says which package
+// brings it.
+ir::Result<std::vector<std::string>> write_report(io::OutputFolder& out, const SweepResult& r,
                                                   const SweepSettings& s, const ReportInfo& info);
 
 } // namespace tierlift::effects

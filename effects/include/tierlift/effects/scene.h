@@ -86,6 +86,12 @@ img::ImageResult load_scene_image(const Scene& scene);
 // their circles, the angle 2π·(frame − 1)/period); frame 1 is load_scene_image's.
 img::ImageResult load_scene_image(const Scene& scene, unsigned frame);
 
+// Every file the scene reads, which no output may replace: the scene file, its image, the
+// glow image and the fog's depth image, the listings and GLSL files it names, and what
+// those listings #include (their preprocessor run with the scene's listing options). Paths
+// as the scene resolved them; "-" and built-in names are left out.
+std::vector<std::string> scene_input_files(const Scene& scene);
+
 // What a run with these parameters should be told, one line each; empty when all is well.
 // Weights that do not sum to one: "profile weights sum to 0.98: the glow is 3.96 % darker
 // than its sources (0.9604 after both axes)" — the blur runs on x, then on y, so the

@@ -30,6 +30,9 @@ struct SourceLoc {
 struct SourceFile {
   std::string name; // as given on the command line ("-" shows as "<stdin>")
   std::string text;
+  // Read by the preprocessor's #include (name: the path it opened): an input of the command
+  // as much as the listing is (as::included_files).
+  bool included = false;
 };
 
 // Owns every file a program was read from (the listing and its #includes), so that
