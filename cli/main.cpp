@@ -19,6 +19,7 @@ constexpr const char* kExamples = R"(Examples:
   tierlift report --quick -o report-out             glow error against run time, Pareto plot
   tierlift spirv blur.vsh --pair blur.psh --explain   SPIR-V, pruned against the other stage
   tierlift run --vs blur.vsh --ps blur.psh --texture s0=builtin:noise:64x64 -o out.pfm
+  tierlift diff a.png b.pfm --tolerance 0.004 --heatmap d.png   how far two images are apart
 Conventions (every command; docs/command-line.md):
   '-' as an input reads standard input; -o - writes standard output (one-file outputs).
   An output that is one of the inputs is refused (exit 2); -o onto a symbolic link writes
@@ -69,6 +70,8 @@ int main(int argc, char** argv) {
   tierlift::cli::register_glow_command(app);
   tierlift::cli::register_report_command(app);
   tierlift::cli::register_glsl_command(app);
+  tierlift::cli::register_diff_command(app);
+  tierlift::cli::refuse_empty_outputs(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -32,6 +32,10 @@ std::string report_markdown(const SweepResult& r, const SweepSettings& s, const 
 
 // The gnuplot program: TIERLIFT_GNUPLOT when set, else "gnuplot" on PATH.
 std::string gnuplot_program();
+// Whether gnuplot_program() can be run (an executable file at that path, or on PATH): a
+// failure (rule "io") that says which package brings it. Callers ask before a sweep, so a
+// missing gnuplot is not found only after minutes of work.
+ir::Status check_gnuplot();
 
 // Writes every file into `dir` (created when missing) and returns their paths; on failure
 // (rule "io", subject `dir`) nothing changed in `dir`. gnuplot missing is an error that says
