@@ -84,7 +84,7 @@ TEST(CliDocs, ImageHelpNamesPfm) {
   for (const char* command : {"glow", "report"}) {
     auto r = run_cli(std::string(command) + " --help");
     ASSERT_EQ(r.exit_code, 0);
-    const size_t at = r.out.find("--image");
+    const size_t at = r.out.find("--image TEXT");
     ASSERT_NE(at, std::string::npos) << r.out;
     EXPECT_NE(r.out.substr(at, 200).find("PFM"), std::string::npos) << command;
   }
