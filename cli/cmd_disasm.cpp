@@ -8,6 +8,7 @@
 #include "report.h"
 #include "tierlift/asm/constant_table.h"
 #include "tierlift/asm/printer.h"
+#include "tierlift/asm/text_form.h"
 
 namespace tierlift::cli {
 
@@ -43,10 +44,16 @@ void register_disasm_command(CLI::App& app) {
     }
     LoadedListing& l = *loaded;
     if (l.form == as::ListingForm::Text) {
+      // Say what it is: an empty file or a broken C array is not "assembly text".
+      ir::DiagnosticSink why;
+      const std::string what = as::describe_text_form(l.sources.files[0].text, why);
       report.error("listing-form",
-                   "this is assembly text, not a token stream; `tierlift fmt` prints it in "
-                   "canonical form, `tierlift assemble` makes a token stream of it",
+                   what.empty() ? "this is assembly text, not a token stream; `tierlift fmt` "
+                                  "prints it in canonical form, `tierlift assemble` makes a "
+                                  "token stream of it"
+                                : fmt::format("this is {}, not a token stream", what),
                    opts->file);
+      report.diagnostics(why, l.sources);
       return report.finish(kExitInvalid);
     }
     report.diagnostics(l.diags, l.sources);

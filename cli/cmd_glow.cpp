@@ -14,6 +14,7 @@
 #include "front_end.h"
 #include "glow_frames.h"
 #include "glow_report.h"
+#include "progress_line.h"
 #include "report.h"
 #include "tierlift/effects/analytic_device.h"
 #include "tierlift/effects/backends.h"
@@ -141,7 +142,8 @@ std::string run_frames(const effects::GlowPlan& plan, const img::Image& scene,
   for (const GlowWay& way : ways) {
     std::unique_ptr<effects::PassDevice> device = make_device(way.name, f, vk);
     if (!device) return fmt::format("{}: no device", way.name);
-    effects::GlowFrames run = effects::run_glow_frames(plan, scene, *device, f.frames);
+    effects::GlowFrames run = effects::run_glow_frames(plan, scene, *device, f.frames, {}, {}, {},
+                                                       frame_progress_line(way.name));
     if (!run.run.ok()) return run.run.message();
     if (way.name == "vulkan") run.run->setup_ms += vk_create_ms; // the device is setup too
     auto a = run.images.find(final_name);
@@ -193,6 +195,7 @@ nlohmann::json summary_json(const effects::Scene& scene, const effects::GlowPlan
 
 int run(const GlowFlags& f) {
   Report report("glow", f.json);
+  set_frame_progress(!f.quiet && !f.json);
   int exit_code = kExitOk;
   if (f.output == "-") {
     report.error("usage", "-o names a folder for glow (several images); '-' is not one");
@@ -449,7 +452,8 @@ void register_glow_command(CLI::App& app) {
       "glow", "Run the Real-Time Glow (GPU Gems ch. 21) on the interpreter, on Vulkan and as "
               "analytic math, and print how they agree");
   auto* scene = sub->add_option("--scene", f->scene, "Scene file (JSON, listings/scenes/)");
-  sub->add_option("--image", f->image, "PNG with alpha as the scene (default glow parameters)")
+  sub->add_option("--image", f->image,
+                  "PNG with alpha, or PFM (HDR, alpha 1), as the scene (default glow parameters)")
       ->excludes(scene);
   sub->add_option("--tier", f->tier,
                   "dx9 (Listings 1 + 2) | dx8 (Listings 3 + 4) | dx7 (two fixed-function "

@@ -142,6 +142,12 @@ int run(const ReportFlags& f) {
                           "--half-texel each need at least one value");
     return report.finish(kExitUsage);
   }
+  // The plot needs gnuplot: asked before the sweep, not found missing after it.
+  if (!f.output.empty())
+    if (ir::Status plot = effects::check_gnuplot(); !plot) {
+      report.error("io", plot.message(), f.output);
+      return report.finish(kExitUsage);
+    }
   img::ImageResult image = effects::load_scene_image(scene);
   if (!image) {
     const bool io = img::is_io_error(image);
@@ -203,7 +209,8 @@ void register_report_command(CLI::App& app) {
       "report", "Sweep the glow over tier, downsample, taps, format and half texel: error "
                 "against the ideal glow, agreement and run time, with a Pareto plot");
   auto* scene = sub->add_option("--scene", f->scene, "Scene file (JSON, listings/scenes/)");
-  sub->add_option("--image", f->image, "PNG with alpha as the scene (default glow parameters)")
+  sub->add_option("--image", f->image,
+                  "PNG with alpha, or PFM (HDR, alpha 1), as the scene (default glow parameters)")
       ->excludes(scene);
   sub->add_option("-o,--output", f->output,
                   "Folder for report.json, report.csv, report.md, error-vs-time.png/.svg");
@@ -230,6 +237,14 @@ void register_report_command(CLI::App& app) {
   auto stress = std::make_shared<StressFlags>();
   add_stress_flags(sub, *stress);
   set_action(sub, [f, stress] {
+    if (!stress->stress && !stress->only.empty()) {
+      // Without --stress the sweep would run in full and --case be ignored: refused.
+      Report refusal("report", f->json);
+      refusal.error("usage", fmt::format("--case {}: needs --stress (tierlift report --stress "
+                                         "--case ID runs one case of the stress catalogue)",
+                                         stress->only));
+      return refusal.finish(kExitUsage);
+    }
     if (!stress->stress) return run(*f);
     if (!f->scene.empty() || !f->image.empty() || f->quick) {
       fmt::print(stderr, "tierlift report: error: --stress runs its own catalogue of scenes; "

@@ -36,12 +36,13 @@ namespace {
 struct RunFlags {
   std::string vs, ps, size = "256x256", format = "rgba32f", filter = "point", address = "wrap";
   std::string pixel_center = "d3d9", output;
-  std::vector<std::string> consts, inputs, attrs, textures, probes;
+  std::vector<std::string> consts, inputs, attrs, textures, probes, bumps;
   int subtexel_bits = 0;
   std::string ps1x_max{ir::kDefaultPs1xPreset};
   unsigned threads = 0;
   std::string backend = "cpu", gpu;
-  FrontEndOptions fe; // -D, -I, --profile, --strict, --skip-validation, --json
+  bool keep_alpha = false; // PNG: the shader's alpha as stored, not opaque
+  FrontEndOptions fe;      // -D, -I, --profile, --strict, --skip-validation, --json
 };
 
 // A usage problem: message on stderr, exit 2.
@@ -76,6 +77,7 @@ pass::RunRequest build_request(const RunFlags& f) {
   for (const auto& s : f.inputs) r.inputs.push_back(need(parse_input_setting(s)));
   for (const auto& s : f.attrs) r.attrs.push_back(need(parse_attr_setting(s)));
   for (const auto& s : f.textures) r.textures.push_back(need(parse_texture_setting(s)));
+  for (const auto& s : f.bumps) r.bump_matrices.push_back(need(parse_bump_setting(s)));
   for (const auto& s : f.probes) {
     pass::ProbePoint p = need(parse_probe(s));
     if (p.x >= r.width || p.y >= r.height)
@@ -97,6 +99,7 @@ pass::RunRequest build_request(const RunFlags& f) {
   if (!ps1x_max) throw UsageError{"--ps1x-max " + ps1x_max.message()};
   r.conventions.ps1x_max_value = *ps1x_max;
   r.threads = f.threads;
+  r.texcoords_from_quad = true; // a t# --input does not set is the quad's uv, as in glow
   return r;
 }
 
@@ -288,6 +291,7 @@ int run(const RunFlags& f) {
   }
   if (vs) req.vs = std::make_shared<const ir::Program>(*vs->program);
   if (ps) req.ps = std::make_shared<const ir::Program>(*ps->program);
+  report_input_sources(req, report);
 
   auto print_run_diagnostics = [&](const pass::RunDiagnostics& d) {
     if (vs) report.diagnostics(d.vs, vs->sources);
@@ -296,8 +300,7 @@ int run(const RunFlags& f) {
   };
   auto failure_code = [](const pass::RunDiagnostics& d) {
     for (const auto& e : d.other.all())
-      if (e.severity == ir::Severity::Error && e.rule == pass::kRuleTextureMissing)
-        return kExitUsage;
+      if (e.severity == ir::Severity::Error && pass::is_usage_rule(e.rule)) return kExitUsage;
     return kExitInvalid;
   };
 
@@ -379,7 +382,7 @@ int run(const RunFlags& f) {
     if (want_cpu && want_vulkan) files.emplace_back(vulkan_output(f.output), &vk.image);
     for (const auto& [path, image] : files) {
       std::string warning;
-      std::string err = write_run_output(path, *image, &warning);
+      std::string err = write_run_output(path, *image, &warning, f.keep_alpha);
       if (!warning.empty()) report.warning("clamped", warning, path);
       if (!err.empty()) {
         report.error("io", err, path);
@@ -394,6 +397,7 @@ int run(const RunFlags& f) {
     j = result_json(f, req, shown, write_ms);
     j["backend"] = f.backend;
     j["backends"] = {{"ran", selected->ways}, {"note", selected->note}};
+    j["inputs"] = input_sources_json(req);
     if (want_vulkan) j["vulkan_device"] = vk_name;
     if (agreement) {
       j["agreement"] = {{"max_abs", agreement->max_abs},
@@ -433,7 +437,9 @@ void register_run_command(CLI::App& app) {
       app.add_subcommand("run", "Draw one pass (vertex and/or pixel listing) over the full-screen "
                                 "quad on the CPU interpreter, on Vulkan, or both");
   sub->add_option("--vs", f->vs, "Vertex listing (vs_1_1, vs_2_0)");
-  sub->add_option("--ps", f->ps, "Pixel listing (ps_1_1 .. ps_2_0); none: oD0 passes through");
+  sub->add_option("--ps", f->ps,
+                  "Pixel listing (ps_1_1 .. ps_2_0); none: oD0 passes through. Without --vs "
+                  "its t# are the quad's uv unless --input sets them");
   sub->add_option("--size", f->size, "Render target WxH (up to 16384x16384)")
       ->capture_default_str();
   // rgba32f by default, as glow: lossless, so comparisons see the shader's own values.
@@ -445,6 +451,9 @@ void register_run_command(CLI::App& app) {
   sub->add_option("--input", f->inputs, "Pixel-stage input v#|t#=x,y,z,w (without --vs)");
   sub->add_option("--attr", f->attrs, "Vertex input vN=x,y,z,w or vN=quad-uv (with --vs)");
   sub->add_option("--texture", f->textures, "sN=FILE.png|FILE.pfm|builtin:NAME[:WxH]");
+  sub->add_option("--bump-matrix", f->bumps,
+                  "STAGE=m00,m01,m10,m11: texbem/texbeml's bump matrix of texture stage STAGE "
+                  "(default 0: no offset)");
   sub->add_option("--filter", f->filter, "point | linear (all samplers)")->capture_default_str();
   sub->add_option("--address", f->address, "clamp | wrap | mirror | border (all samplers)")
       ->capture_default_str();
@@ -456,6 +465,8 @@ void register_run_command(CLI::App& app) {
                   "d3d9, max, or a number >= 1")
       ->capture_default_str();
   sub->add_option("--probe", f->probes, "Print the stored value of pixel X,Y");
+  sub->add_flag("--keep-alpha", f->keep_alpha,
+                "PNG: keep the shader's alpha (default: opaque, so viewers show the colour)");
   sub->add_option("-o,--output", f->output,
                   "Write the image (.png, or .pfm for float RGB; '-': PNG on standard output)");
   add_front_end_options(sub, f->fe, true);

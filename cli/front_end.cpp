@@ -5,6 +5,8 @@
 #include <fmt/format.h>
 
 #include "tierlift/asm/preprocessor.h"
+#include "report.h"
+#include "tierlift/asm/parser.h"
 #include "tierlift/io/output_file.h"
 #include "tierlift/ir/passes.h"
 #include "tierlift/ir/profile.h"
@@ -18,17 +20,42 @@ void add_strict_flag(CLI::App* sub, FrontEndOptions& o) {
                 "(scalar sources without a replicate swizzle, ps_1_4 texcrd without a mask)");
 }
 
+namespace {
+
+// -D NAME[=VALUE] the preprocessor takes: a bad one (NAME not an identifier, VALUE that does
+// not lex) is a usage error (exit 2) when the flag is read, not an error of the listing
+// (exit 1). The preprocessor itself decides, on an empty listing, so the rule is its own.
+std::string define_problem(std::string& word) {
+  as::ParseOptions options;
+  options.defines = split_defines({word});
+  options.allow_include = false;
+  as::ParseResult r = as::parse_text("vs_1_1\n", "-D", options);
+  for (const ir::Diagnostic& d : r.diags.all())
+    if (d.severity == ir::Severity::Error && d.rule == "preprocessor")
+      return fmt::format("'{}' is not NAME or NAME=VALUE (NAME an identifier, VALUE tokens of "
+                         "assembly)",
+                         word);
+  return {};
+}
+
+} // namespace
+
 void add_front_end_options(CLI::App* sub, FrontEndOptions& o, bool skip_validation_flag,
                            bool json_flag) {
   // allow_extra_args(false): `-I dir file.psh` gives -I one folder, not every word after it.
   sub->add_option("-D,--define", o.defines, "Preprocessor macro NAME or NAME=VALUE (repeatable)")
-      ->allow_extra_args(false);
+      ->allow_extra_args(false)
+      ->check(CLI::Validator(define_problem, "", "define"));
   sub->add_option("-I,--include-dir", o.include_dirs, "Folder searched by #include (repeatable)")
       ->allow_extra_args(false);
   sub->add_option("--profile", o.profile,
                   "Validate against this profile instead of the listing's version line "
                   "(vs_1_1 vs_2_0 vs_2_x vs_3_0 ps_1_1 ps_1_2 ps_1_3 ps_1_4 ps_2_0 ps_2_x "
                   "ps_3_0, or the fxc targets ps_2_a ps_2_b vs_2_a for the 2.x caps)");
+  sub->add_option_function<size_t>(
+         "--max-errors", [](const size_t& n) { Report::set_error_limit(n); },
+         "Show at most N errors of the listings, then stop (0: all; default 100)")
+      ->type_name("N");
   if (json_flag)
     sub->add_flag("--json", o.json,
                   "Print one JSON document on standard output (docs/command-line.md)");

@@ -1,4 +1,5 @@
 #include "glow_frames.h"
+#include "progress_line.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -111,7 +112,8 @@ std::string run_animation(const effects::GlowPlan& plan, const img::Image& scene
       return ir::ok_status();
     };
     effects::GlowFrames run =
-        effects::run_glow_frames(plan, scene, *device, frames, {final_name}, sink, scene_at);
+        effects::run_glow_frames(plan, scene, *device, frames, {final_name}, sink, scene_at,
+                                 frame_progress_line(devices[d]));
     if (!run.run.ok()) return run.run.message();
     out.times.push_back({devices[d], run.run.value()});
     kept.push_back(std::move(mine));

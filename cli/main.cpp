@@ -24,6 +24,7 @@ constexpr const char* kExamples = R"(Examples:
   tierlift report --quick -o report-out             glow error against run time, Pareto plot
   tierlift spirv blur.vsh --pair blur.psh --explain   SPIR-V, pruned against the other stage
   tierlift run --vs blur.vsh --ps blur.psh --texture s0=builtin:noise:64x64 -o out.pfm
+  tierlift diff a.png b.pfm --tolerance 0.004 --heatmap d.png   how far two images are apart
 Conventions (every command; docs/command-line.md):
   '-' as an input reads standard input; -o - writes standard output (one-file outputs).
   An output that is one of the inputs is refused (exit 2); -o onto a symbolic link writes
@@ -73,6 +74,8 @@ int run_main(int argc, char** argv) {
   tierlift::cli::register_glow_command(app);
   tierlift::cli::register_report_command(app);
   tierlift::cli::register_glsl_command(app);
+  tierlift::cli::register_diff_command(app);
+  tierlift::cli::refuse_empty_outputs(app);
   // A crash (a driver's, most likely) says what was running instead of a bare exit 139.
   tierlift::crash::install_handler(intended_command(app, argc, argv), json_requested(argc, argv));
   try {

@@ -30,8 +30,13 @@ public:
   // One error whose message is rendered diagnostics already (a scene's, effects/scene.h):
   // the text as it is, or under --json one `rule` error naming `file`.
   void rendered_error(std::string_view rule, const std::string& rendered, const std::string& file);
-  // Diagnostics of a listing (positions, carets).
+  // Diagnostics of a listing (positions, carets). At most error_limit() errors are shown per
+  // run, as compilers do: the one after the limit and everything after it are replaced by
+  // one note "too many errors; stopping".
   void diagnostics(const ir::DiagnosticSink& sink, const ir::SourceManager& sources);
+  // --max-errors N (0: no limit); 100 by default. One setting for the process.
+  static void set_error_limit(size_t limit);
+  static size_t error_limit();
   // Text that is the command's output: standard output as is, or result[key] in JSON.
   void output(std::string_view key, const std::string& text);
   // The command-specific part of the JSON document.
@@ -46,6 +51,8 @@ private:
   bool json_;
   nlohmann::json diagnostics_ = nlohmann::json::array();
   nlohmann::json result_ = nlohmann::json::object();
+  size_t errors_shown_ = 0;
+  bool stopped_ = false; // the error limit was reached: no more listing diagnostics
 };
 
 } // namespace tierlift::cli

@@ -4,12 +4,19 @@
 #include <fmt/format.h>
 
 #include "tierlift/image/io.h"
+#include "tierlift/pass/input_sources.h"
 
 namespace tierlift::cli {
 
-std::string write_run_output(const std::string& path, const img::Image& image,
-                             std::string* warning) {
+std::string write_run_output(const std::string& path, const img::Image& stored,
+                             std::string* warning, bool keep_alpha) {
   const bool pfm = path.size() >= 4 && (path.ends_with(".pfm") || path.ends_with(".PFM"));
+  img::Image opaque;
+  if (!pfm && !keep_alpha) {
+    opaque = stored;
+    for (size_t i = 3; i < opaque.rgba.size(); i += 4) opaque.rgba[i] = 1.0f;
+  }
+  const img::Image& image = !pfm && !keep_alpha ? opaque : stored;
   if (!pfm && warning) {
     size_t clamped = 0;
     for (float v : image.rgba) clamped += !(v >= 0.0f && v <= 1.0f);
@@ -23,6 +30,22 @@ std::string write_run_output(const std::string& path, const img::Image& image,
                                       image.format == img::Format::RGBA8 ? img::PngDepth::Bits8
                                                                          : img::PngDepth::Bits16);
   return s.message();
+}
+
+} // namespace tierlift::cli
+
+namespace tierlift::cli {
+
+void report_input_sources(const pass::RunRequest& request, const Report& report) {
+  if (report.json()) return;
+  for (const pass::InputSource& s : pass::describe_inputs(request))
+    fmt::print(stderr, "tierlift run: note: {}: {}\n", s.reg, s.source);
+}
+
+nlohmann::json input_sources_json(const pass::RunRequest& request) {
+  nlohmann::json out = nlohmann::json::object();
+  for (const pass::InputSource& s : pass::describe_inputs(request)) out[s.reg] = s.source;
+  return out;
 }
 
 } // namespace tierlift::cli

@@ -3,6 +3,7 @@
 #include <bit>
 #include <cctype>
 #include <cerrno>
+#include <cfloat>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -88,6 +89,31 @@ bool parse_vec4(std::string_view s, Vec4& v) {
   return true;
 }
 
+// The field of "a,b,c,d" that is a decimal number beyond float's range (strtof overflows
+// it to inf, which parse_float refuses), or empty: a message that says so reads better than
+// "needs four numbers" for a value that is a number.
+std::string out_of_float_range(std::string_view s) {
+  std::vector<std::string_view> fields;
+  split_fields(s, 0, fields);
+  for (std::string_view field : fields) {
+    std::string text(trim(field));
+    if (!text.empty() && (text.back() == 'f' || text.back() == 'F')) text.pop_back();
+    if (text.empty() || text.find_first_not_of("0123456789.eE+-") != std::string::npos) continue;
+    char* end = nullptr;
+    const double v = std::strtod(text.c_str(), &end);
+    if (end == text.c_str() + text.size() && std::isfinite(v) && std::fabs(v) > FLT_MAX)
+      return text;
+  }
+  return {};
+}
+
+// "needs four numbers" or, for a number beyond float's range, that.
+std::string vec4_problem(std::string_view value, std::string_view needs) {
+  if (std::string big = out_of_float_range(value); !big.empty())
+    return fmt::format("{} is out of float range (largest {:g})", big, FLT_MAX);
+  return std::string(needs);
+}
+
 // "NAME=VALUE" → (NAME, VALUE).
 bool split_assignment(std::string_view text, std::string_view& name, std::string_view& value) {
   size_t eq = text.find('=');
@@ -128,7 +154,8 @@ ir::Result<ConstSetting> parse_const_setting(std::string_view text) {
   if (parse_reg(name, "c", kMaxConstRegisters, c.index)) {
     c.file = ir::RegFile::Const;
     if (parse_vec4(value, c.f)) return c;
-    return usage(fmt::format("--const '{}': c# needs four numbers x,y,z,w", text));
+    return usage(fmt::format("--const '{}': {}", text,
+                             vec4_problem(value, "c# needs four numbers x,y,z,w")));
   } else if (parse_reg(name, "i", 16, c.index)) {
     c.file = ir::RegFile::ConstInt;
     std::vector<std::string_view> f;
@@ -163,7 +190,8 @@ ir::Result<RegisterSetting> parse_input_setting(std::string_view text) {
     return usage(fmt::format("--input '{}': expected v0|v1|t0..t7=x,y,z,w", text));
   }
   if (parse_vec4(value, r.value)) return r;
-  return usage(fmt::format("--input '{}': the value needs four numbers x,y,z,w", text));
+  return usage(fmt::format("--input '{}': {}", text,
+                           vec4_problem(value, "the value needs four numbers x,y,z,w")));
 }
 
 ir::Result<RegisterSetting> parse_attr_setting(std::string_view text) {
@@ -177,7 +205,8 @@ ir::Result<RegisterSetting> parse_attr_setting(std::string_view text) {
     return r;
   }
   if (parse_vec4(value, r.value)) return r;
-  return usage(fmt::format("--attr '{}': the value needs four numbers x,y,z,w or quad-uv", text));
+  return usage(fmt::format("--attr '{}': {}", text,
+                           vec4_problem(value, "the value needs four numbers x,y,z,w or quad-uv")));
 }
 
 ir::Result<TextureSetting> parse_texture_setting(std::string_view text) {
@@ -190,6 +219,22 @@ ir::Result<TextureSetting> parse_texture_setting(std::string_view text) {
   }
   t.source = std::string(value);
   return t;
+}
+
+ir::Result<pass::BumpSetting> parse_bump_setting(std::string_view text) {
+  pass::BumpSetting b;
+  std::string_view name, value;
+  // Texture stages of ps_1_x: 0..7 (ps_1_4 has 6, the rest 4; the validator's business).
+  if (!split_assignment(text, name, value) || !parse_u32(name, b.stage) || b.stage >= 8)
+    return usage(fmt::format("--bump-matrix '{}': expected STAGE=m00,m01,m10,m11 with STAGE "
+                             "0..7",
+                             text));
+  Vec4 m{};
+  if (!parse_vec4(value, m))
+    return usage(fmt::format("--bump-matrix '{}': {}", text,
+                             vec4_problem(value, "the matrix needs four numbers m00,m01,m10,m11")));
+  b.matrix = m;
+  return b;
 }
 
 ir::Result<ProbePoint> parse_probe(std::string_view text) {

@@ -33,6 +33,8 @@ ir::Result<RegisterSetting> parse_input_setting(std::string_view text);
 ir::Result<RegisterSetting> parse_attr_setting(std::string_view text);
 // --texture sN=FILE.png|FILE.pfm|builtin:NAME[:WxH]
 ir::Result<TextureSetting> parse_texture_setting(std::string_view text);
+// --bump-matrix STAGE=m00,m01,m10,m11 (texbem/texbeml, texture stage 0..7)
+ir::Result<pass::BumpSetting> parse_bump_setting(std::string_view text);
 // --probe X,Y
 ir::Result<ProbePoint> parse_probe(std::string_view text);
 // "WxH", 1..img::kMaxDimension each.

@@ -220,8 +220,8 @@ TEST(RunJob, BadTextureIsAnError) {
   EXPECT_TRUE(ir::failed_with(out, kRunRule));
   ASSERT_EQ(d.other.error_count(), 2u);
   EXPECT_EQ(d.other.all()[0].rule, pass::kRuleTextureMissing);
-  EXPECT_EQ(d.other.all()[1].rule, "texture");
-  EXPECT_EQ(out.message(), d.other.all()[0].message); // the first error, rendered from `d`
+  EXPECT_EQ(d.other.all()[1].rule, pass::kRuleTextureSpec); // a builtin word: usage
+  EXPECT_EQ(out.message(), d.other.all()[0].message);       // the first error, rendered from `d`
 }
 
 // Errors after the pass is prepared (a probe outside the image, a draw the device refuses)

@@ -113,6 +113,22 @@ TEST_F(CliReport, BadInputLeavesTheFolderAbsent) {
   EXPECT_TRUE(leftovers().empty());
 }
 
+TEST_F(CliReport, CaseNeedsStressAndGnuplotIsLookedForBeforeTheSweep) {
+  std::string out, err;
+  // --case alone used to start the whole sweep and ignore it: a usage error now.
+  EXPECT_EQ(run("report --case dx9-nan-source", out, err), 2);
+  EXPECT_NE(err.find("needs --stress"), std::string::npos) << err;
+  EXPECT_EQ(err.find("[report]"), std::string::npos) << err;
+  // gnuplot missing: refused before the first configuration runs (no progress line).
+  const fs::path rep = dir / "rep";
+  EXPECT_EQ(run(small_sweep() + " --tiers dx9 --formats rgba8 --no-vulkan -o " + rep.string(), out,
+                err, "TIERLIFT_GNUPLOT=/nonexistent/gnuplot "),
+            2);
+  EXPECT_NE(err.find("gnuplot-nox"), std::string::npos) << err;
+  EXPECT_EQ(err.find("[report]"), std::string::npos) << err;
+  EXPECT_FALSE(fs::exists(rep));
+}
+
 TEST_F(CliReport, JsonIsOneDocument) {
   std::string out, err;
   ASSERT_EQ(run(small_sweep() + " --tiers dx8 --formats rgba8 --json", out, err), 0) << err;

@@ -205,5 +205,24 @@ TEST(ReportIdeal, ParetoFrontKeepsOnlyUndominatedPoints) {
   EXPECT_EQ(pareto_front(cs), (std::vector<size_t>{4, 0, 1, 3}));
 }
 
+TEST(ReportIdeal, ParetoFrontCountsNearlyEqualErrorsAsEqual) {
+  auto point = [](double ms, double rmse) {
+    ConfigResult c;
+    c.times = {{"vulkan", 0, ms, ms, ms, 1}};
+    c.final.rmse = rmse;
+    return c;
+  };
+  // Twice as slow for 2e-12 less error (relative 2e-10): the slower one is dominated.
+  EXPECT_EQ(pareto_front({point(1, 0.01), point(2, 0.01 - 2e-12)}), (std::vector<size_t>{0}));
+  // Near 0 the absolute tolerance (1e-9) decides: 1e-12 against 0 is a tie.
+  EXPECT_EQ(pareto_front({point(1, 1e-12), point(2, 0)}), (std::vector<size_t>{0}));
+  // 1e-5 less error on 0.01 (relative 1e-3) is a real gain: both stay.
+  EXPECT_EQ(pareto_front({point(1, 0.01), point(2, 0.01 - 1e-5)}), (std::vector<size_t>{0, 1}));
+  // Equal time and errors within the tolerance: a tie, both kept.
+  EXPECT_EQ(pareto_front({point(1, 0.01), point(1, 0.01 + 1e-12)}), (std::vector<size_t>{0, 1}));
+  EXPECT_TRUE(same_error(0.5, 0.5 + 4e-7));
+  EXPECT_FALSE(same_error(0.5, 0.5 + 6e-7));
+}
+
 } // namespace
 } // namespace tierlift::effects

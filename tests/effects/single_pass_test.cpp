@@ -186,13 +186,29 @@ TEST(SinglePassGraph, RefusesWhatAPassDescCannotCarry) {
   mrt.color_targets = 2;
   pass::Pass transformed = prepare(r);
   transformed.transformed.resize(3);
-  pass::Pass stage = prepare(r);
-  stage.textures[1].stage.projected = true;
-  for (const pass::Pass* p : {&mrt, &transformed, &stage}) {
+  for (const pass::Pass* p : {&mrt, &transformed}) {
     ir::Result<EffectGraph> g = single_pass_graph(*p, 4, 4, img::Format::RGBA32F);
     ASSERT_FALSE(g);
     EXPECT_EQ(g.diagnostics()[0].rule, "graph");
   }
+}
+
+// Texture-stage state (texbem's bump matrix, `run --bump-matrix`) travels with the binding.
+TEST(SinglePassGraph, CarriesTextureStageState) {
+  const pass::RunRequest r = blur_request(img::Format::RGBA32F);
+  pass::Pass stage = prepare(r);
+  stage.textures[1].stage.projected = true;
+  stage.textures[1].stage.bumpenv_mat = {0.5f, -0.25f, 0.125f, 2.0f};
+  ir::Result<EffectGraph> g = single_pass_graph(stage, 4, 4, img::Format::RGBA32F);
+  ASSERT_TRUE(g) << g.message();
+  bool found = false;
+  for (const TextureBind& b : g->passes[0].textures) {
+    if (b.stage != 1) continue;
+    found = true;
+    EXPECT_TRUE(b.stage_state.projected);
+    EXPECT_EQ(b.stage_state.bumpenv_mat, (std::array<float, 4>{0.5f, -0.25f, 0.125f, 2.0f}));
+  }
+  EXPECT_TRUE(found);
 }
 
 // check_graph takes a missing listing only in the forms the devices draw.

@@ -71,6 +71,15 @@ std::string mutate(std::string text, std::mt19937& rng) {
   return text;
 }
 
+// Where the line starting at `start` ends: '\n', or a '\r' not followed by '\n' (CR-only
+// line endings count as line breaks, as the lexer counts them); npos at the end.
+size_t line_end(const std::string& text, size_t start) {
+  for (size_t i = start; i < text.size(); ++i)
+    if (text[i] == '\n' || (text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n')))
+      return i;
+  return std::string::npos;
+}
+
 // A position that names a line of its file (a diagnostic at the end of a file may name the
 // line after the last newline) and a column on that line or just past its end, counted in
 // the file's bytes (a CRLF line's '\r' is one of them: "end of line" may point past it).
@@ -79,11 +88,11 @@ bool usable_position(const ir::SourceLoc& loc, const ir::SourceManager& sources)
   const std::string& text = sources.files[loc.file].text;
   size_t start = 0;
   for (uint32_t line = 1; line < loc.line; ++line) {
-    start = text.find('\n', start);
+    start = line_end(text, start);
     if (start == std::string::npos) return false;
     ++start;
   }
-  const size_t end = std::min(text.find('\n', start), text.size());
+  const size_t end = std::min(line_end(text, start), text.size());
   return loc.col <= end - start + 1;
 }
 

@@ -63,7 +63,7 @@ public:
     }
     while (pos_ < text_.size()) {
       unsigned char c = static_cast<unsigned char>(text_[pos_]);
-      if (c == '\n') {
+      if (line_break_at(pos_)) {
         emit(TokKind::Newline, pos_, 1, space_);
         ++pos_;
         ++line_;
@@ -115,6 +115,13 @@ private:
 
   char peek(size_t k) const { return pos_ + k < text_.size() ? text_[pos_ + k] : '\0'; }
 
+  // '\n', or a '\r' not followed by '\n': files saved with classic Mac OS line endings
+  // (CR only) have lines too (ir::SourceManager::line_text splits them the same way).
+  bool line_break_at(size_t i) const {
+    return text_[i] == '\n' ||
+           (text_[i] == '\r' && (i + 1 >= text_.size() || text_[i + 1] != '\n'));
+  }
+
   ir::SourceLoc loc_at(size_t offset, size_t len) const {
     return {file_, line_, static_cast<uint32_t>(offset - line_start_ + 1),
             static_cast<uint32_t>(len)};
@@ -127,7 +134,7 @@ private:
   // Moves line bookkeeping forward to `offset` (only used before an early error).
   void advance_to(size_t offset) {
     for (; pos_ < offset; ++pos_)
-      if (text_[pos_] == '\n') line_start_ = pos_ + 1, ++line_;
+      if (line_break_at(pos_)) line_start_ = pos_ + 1, ++line_;
   }
 
   void binary_error(std::string msg) {
@@ -151,8 +158,10 @@ private:
   // how Microsoft's assembler reads it (Wine's d3dcompiler asm tests check c[REG] = c10).
   bool splice_line() {
     size_t p = pos_ + 1;
-    while (p < text_.size() && (text_[p] == ' ' || text_[p] == '\t' || text_[p] == '\r')) ++p;
-    if (p >= text_.size() || text_[p] != '\n') return false;
+    while (p < text_.size() &&
+           (text_[p] == ' ' || text_[p] == '\t' || (text_[p] == '\r' && !line_break_at(p))))
+      ++p;
+    if (p >= text_.size() || !line_break_at(p)) return false;
     pos_ = p + 1;
     ++line_;
     line_start_ = pos_;
@@ -160,8 +169,9 @@ private:
   }
 
   void skip_to_newline() {
-    size_t nl = text_.find('\n', pos_);
-    pos_ = nl == std::string_view::npos ? text_.size() : nl;
+    size_t nl = pos_;
+    while (nl < text_.size() && !line_break_at(nl)) ++nl;
+    pos_ = nl;
   }
 
   bool skip_block_comment() {
@@ -173,7 +183,7 @@ private:
     }
     // Keep line numbers right across the comment's own newlines.
     for (size_t i = pos_; i < close; ++i)
-      if (text_[i] == '\n') ++line_, line_start_ = i + 1;
+      if (line_break_at(i)) ++line_, line_start_ = i + 1;
     pos_ = close + 2;
     return true;
   }

@@ -253,7 +253,7 @@ private:
     }
     auto path = find_include(target, file);
     if (!path) {
-      diags_.error(loc, "preprocessor", fmt::format("cannot find include file '{}'", target));
+      diags_.error(loc, "preprocessor", missing_include_message(target, file));
       return;
     }
     std::error_code ec;
@@ -282,6 +282,25 @@ private:
     include_stack_.push_back(canon);
     process_file(id, depth + 1);
     include_stack_.pop_back();
+  }
+
+  // Why find_include found nothing: no such file, or one that exists but is no regular
+  // file (a device such as /dev/zero, a FIFO, a folder), which "cannot find" would hide.
+  std::string missing_include_message(const std::string& target, uint32_t from) {
+    std::error_code ec;
+    std::vector<fs::path> dirs{fs::path(sm_.files[from].name).parent_path()};
+    for (const std::string& d : options_.include_dirs) dirs.emplace_back(d);
+    for (const fs::path& d : dirs) {
+      const fs::file_status st = fs::status(d / target, ec);
+      if (!ec && fs::exists(st) && !fs::is_regular_file(st))
+        return fmt::format("include file '{}' is not a regular file ({}); #include reads files "
+                           "only",
+                           target,
+                           fs::is_directory(st) ? "a folder"
+                           : fs::is_fifo(st)    ? "a FIFO"
+                                                : "a device or special file");
+    }
+    return fmt::format("cannot find include file '{}'", target);
   }
 
   // Listings written on Windows name their headers "..\common\light.inl". A backslash is

@@ -13,7 +13,8 @@ GlowRun run_glow(const GlowPlan& plan, const img::Image& scene, PassDevice& devi
 
 GlowFrames run_glow_frames(const GlowPlan& plan, const img::Image& scene, PassDevice& device,
                            unsigned frames, const std::vector<std::string>& read_back,
-                           const GlowFrameSink& sink, const SceneAt& scene_at) {
+                           const GlowFrameSink& sink, const SceneAt& scene_at,
+                           const FrameProgress& progress) {
   ImageMap images;
   images.emplace(std::string(kSceneTexture), scene);
   FrameSink frame_sink;
@@ -38,7 +39,7 @@ GlowFrames run_glow_frames(const GlowPlan& plan, const img::Image& scene, PassDe
       return ir::ok_status();
     };
   ir::Result<FrameTimes> run =
-      run_frames(plan.graph, device, images, frames, frame_sink, inputs_at);
+      run_frames(plan.graph, device, images, frames, frame_sink, inputs_at, progress);
   return GlowFrames{std::move(run), std::move(images)};
 }
 

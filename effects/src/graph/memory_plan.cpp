@@ -132,13 +132,8 @@ uint64_t available_memory() {
   rlimit as{};
   if (getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY)
     available = available ? std::min<uint64_t>(available, as.rlim_cur) : as.rlim_cur;
-  if (const char* limit = std::getenv("TIERLIFT_MEMORY_LIMIT")) {
-    uint64_t bytes = 0;
-    const char* end = limit + std::strlen(limit);
-    auto [ptr, ec] = std::from_chars(limit, end, bytes);
-    if (ec == std::errc() && ptr == end && bytes > 0)
-      available = available ? std::min(available, bytes) : bytes;
-  }
+  if (ir::Result<std::optional<uint64_t>> limit = memory_limit_from_env(); limit && *limit)
+    available = available ? std::min(available, **limit) : **limit;
   return available;
 }
 
@@ -146,6 +141,19 @@ std::string memory_refusal(const MemoryPlan& plan, uint64_t available, const std
   if (available == 0 || plan.peak <= available) return {};
   return fmt::format("{} needs {} of memory at its peak and {} is available", what,
                      format_bytes(plan.peak), format_bytes(available));
+}
+
+ir::Result<std::optional<uint64_t>> memory_limit_from_env() {
+  const char* limit = std::getenv("TIERLIFT_MEMORY_LIMIT");
+  if (!limit) return std::optional<uint64_t>();
+  uint64_t bytes = 0;
+  const char* end = limit + std::strlen(limit);
+  auto [ptr, ec] = std::from_chars(limit, end, bytes);
+  if (ec == std::errc() && ptr == end && bytes > 0) return std::optional<uint64_t>(bytes);
+  return ir::fail("TIERLIFT_MEMORY_LIMIT", "usage",
+                  fmt::format("TIERLIFT_MEMORY_LIMIT='{}': expected a whole number of bytes > 0 "
+                              "(e.g. 4294967296 for 4 GiB)",
+                              limit));
 }
 
 std::string format_bytes(uint64_t bytes) {

@@ -64,6 +64,7 @@ ir::Result<pass::Pass> make_pass(const PassDesc& desc, const ImageMap& images,
     pass::TextureBinding& binding = pass.textures[b.stage];
     binding.image = std::make_shared<const img::Image>(it->second);
     binding.sampler = b.sampler;
+    binding.stage = b.stage_state;
   }
   pass.blend = desc.blend;
   pass.conventions = conventions;
@@ -207,7 +208,7 @@ double FrameTimes::max_ms() const {
 
 ir::Result<FrameTimes> run_frames(const EffectGraph& graph, PassDevice& device, ImageMap& images,
                                   unsigned frames, const FrameSink& sink,
-                                  const FrameInputs& inputs_at) {
+                                  const FrameInputs& inputs_at, const FrameProgress& progress) {
   FrameTimes times;
   auto t0 = std::chrono::steady_clock::now();
   if (ir::Status begun = begin_graph(graph, device, images); !begun)
@@ -232,6 +233,7 @@ ir::Result<FrameTimes> run_frames(const EffectGraph& graph, PassDevice& device, 
     times.frame_ms.push_back(ms_since(t));
     if (sink)
       if (ir::Status taken = sink(f, device); !taken) return frame_error(f, taken.message());
+    if (progress) progress(f + 1, frames);
   }
   if (std::string e = read_all(graph, device, images); !e.empty()) return run_error(e);
   return times;

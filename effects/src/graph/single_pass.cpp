@@ -13,12 +13,6 @@ bool default_viewport(const pass::Viewport& v) {
          v.max_z == 1.0f;
 }
 
-bool default_stage_state(const pass::StageState& s) {
-  const pass::StageState none;
-  return s.bumpenv_mat == none.bumpenv_mat && s.bumpenv_lscale == none.bumpenv_lscale &&
-         s.bumpenv_loffset == none.bumpenv_loffset && s.projected == none.projected;
-}
-
 // The first thing of `pass` a PassDesc cannot carry; empty when there is none. Refused
 // rather than dropped, so a device never draws a different pass than the one asked for.
 std::string unsupported(const pass::Pass& pass) {
@@ -30,8 +24,6 @@ std::string unsupported(const pass::Pass& pass) {
   if (pass.pixel_spirv) return "a SPIR-V pixel stage";
   if (pass.executor != pass::Executor::Auto) return "the scalar executor";
   if (!pass.vertex_program && !pass.vertices.empty()) return "vertices without a vertex listing";
-  for (const pass::TextureBinding& b : pass.textures)
-    if (!default_stage_state(b.stage)) return "texture-stage state";
   return {};
 }
 
@@ -80,7 +72,7 @@ ir::Result<EffectGraph> single_pass_graph(const pass::Pass& pass, uint32_t width
       t.contents = b.image;
       graph.textures.push_back(std::move(t));
     }
-    desc.textures.push_back({s, it->second, b.sampler});
+    desc.textures.push_back({s, it->second, b.sampler, b.stage});
   }
   TextureDesc target;
   target.name = desc.target;

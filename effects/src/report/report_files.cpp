@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iterator>
 #include <spawn.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -156,6 +157,34 @@ std::string gnuplot_program() {
   return env && *env ? env : "gnuplot";
 }
 
+ir::Status check_gnuplot() {
+  const std::string program = gnuplot_program();
+  auto runnable = [](const std::string& path) {
+    struct stat st {};
+    return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) &&
+           ::access(path.c_str(), X_OK) == 0;
+  };
+  bool found = false;
+  if (program.find('/') != std::string::npos) {
+    found = runnable(program);
+  } else if (const char* path = std::getenv("PATH")) {
+    std::string_view dirs = path;
+    while (!found) {
+      const size_t colon = dirs.find(':');
+      const std::string dir(dirs.substr(0, colon));
+      found = runnable((dir.empty() ? std::string(".") : dir) + "/" + program);
+      if (colon == std::string_view::npos) break;
+      dirs.remove_prefix(colon + 1);
+    }
+  }
+  if (found) return ir::ok_status();
+  return ir::fail("gnuplot", "io",
+                  fmt::format("cannot find {} to draw the plot (install the Debian package "
+                              "gnuplot-nox; scripts/install-deps.sh does; TIERLIFT_GNUPLOT names "
+                              "another program)",
+                              program));
+}
+
 nlohmann::json report_json(const SweepResult& r, const SweepSettings& s, const ReportInfo& info) {
   nlohmann::json tiers = nlohmann::json::array(), formats = nlohmann::json::array();
   for (Tier t : s.tiers) tiers.push_back(tier_name(t));
@@ -222,6 +251,8 @@ nlohmann::json report_json(const SweepResult& r, const SweepSettings& s, const R
   }
   j["configurations"] = configs;
   j["pareto"] = r.pareto;
+  j["pareto_error_tolerance"] = {{"relative", kParetoRelativeTolerance},
+                                 {"absolute", kParetoAbsoluteTolerance}};
   j["cheapest_within_1_255"] =
       r.cheapest_within ? nlohmann::json(*r.cheapest_within) : nlohmann::json(nullptr);
   return j;
@@ -280,7 +311,10 @@ std::string report_markdown(const SweepResult& r, const SweepSettings& s, const 
   const std::string head =
       "| configuration | frame ms | final RMSE | final max abs | glow RMSE | pixels off > "
       "1/255 | ways agree |\n| --- | ---: | ---: | ---: | ---: | ---: | --- |\n";
-  md += "## Pareto front\n\nNo other configuration is both faster and closer to the ideal.\n\n" +
+  md += fmt::format("## Pareto front\n\nNo other configuration is both faster and closer to the "
+                    "ideal. Final RMSEs within {:g} of the larger one, or within {:g}, count as "
+                    "equal: the faster of two such configurations is kept.\n\n",
+                    kParetoRelativeTolerance, kParetoAbsoluteTolerance) +
         head;
   for (size_t i : r.pareto) md += row(i);
   md += "\n## The scene's own configuration\n\n";

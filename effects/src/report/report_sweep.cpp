@@ -206,6 +206,12 @@ double ConfigResult::frame_ms() const {
   return 0;
 }
 
+bool same_error(double a, double b) {
+  const double tolerance = std::max(kParetoRelativeTolerance * std::max(std::fabs(a), std::fabs(b)),
+                                    kParetoAbsoluteTolerance);
+  return a == b || std::fabs(a - b) <= tolerance;
+}
+
 std::vector<size_t> pareto_front(const std::vector<ConfigResult>& configs) {
   std::vector<size_t> front;
   for (size_t i = 0; i < configs.size(); ++i) {
@@ -215,8 +221,10 @@ std::vector<size_t> pareto_front(const std::vector<ConfigResult>& configs) {
     for (size_t j = 0; j < configs.size() && !dominated; ++j) {
       const ConfigResult& b = configs[j];
       if (j == i || !b.skipped.empty() || b.times.empty()) continue;
-      dominated = b.frame_ms() <= a.frame_ms() && b.final.rmse <= a.final.rmse &&
-                  (b.frame_ms() < a.frame_ms() || b.final.rmse < a.final.rmse);
+      const bool same = same_error(b.final.rmse, a.final.rmse);
+      const bool no_worse = same || b.final.rmse < a.final.rmse;
+      dominated = b.frame_ms() <= a.frame_ms() && no_worse &&
+                  (b.frame_ms() < a.frame_ms() || (!same && b.final.rmse < a.final.rmse));
     }
     if (!dominated) front.push_back(i);
   }

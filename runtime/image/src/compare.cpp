@@ -13,12 +13,13 @@ bool same_value(float a, float b) {
   return a == b || (std::isnan(a) && std::isnan(b));
 }
 
-double difference(float a, float b) {
+} // namespace
+
+double channel_difference(float a, float b) {
   if (same_value(a, b)) return 0.0;
   if (!std::isfinite(a) || !std::isfinite(b)) return std::numeric_limits<double>::infinity();
   return std::fabs(static_cast<double>(a) - static_cast<double>(b));
 }
-} // namespace
 
 ir::Result<Comparison> compare(const Image& a, const Image& b) {
   auto fail = [](std::string msg) -> ir::Result<Comparison> {
@@ -41,7 +42,7 @@ ir::Result<Comparison> compare(const Image& a, const Image& b) {
       float va = a.rgba[p * 4 + ch], vb = b.rgba[p * 4 + ch];
       if (std::isfinite(va)) full = std::fmax(full, std::fabs(static_cast<double>(va)));
       if (std::isfinite(vb)) full = std::fmax(full, std::fabs(static_cast<double>(vb)));
-      double d = difference(va, vb);
+      double d = channel_difference(va, vb);
       if (d != 0.0) identical = false;
       if (std::isinf(d)) c.non_finite_mismatch = true;
       sq[ch] += d * d;

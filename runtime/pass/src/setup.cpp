@@ -9,6 +9,8 @@
 #include "tierlift/image/builtin.h"
 #include "tierlift/image/io.h"
 #include "tierlift/ir/passes.h"
+#include "tierlift/ir/profile.h"
+#include "tierlift/pass/input_sources.h"
 
 namespace tierlift::pass {
 namespace {
@@ -92,7 +94,10 @@ bool bind_textures(const RunRequest& req, Pass& pass, RunDiagnostics& diags) {
       if (!r) {
         // Could not be read at all (missing, a folder, over the cap): an I/O error.
         bool missing = !img::is_builtin_spec(t.source) && img::is_io_error(r);
-        diags.other.error({}, std::string(missing ? kRuleTextureMissing : "texture"),
+        const std::string_view rule = img::is_builtin_spec(t.source) ? kRuleTextureSpec
+                                      : missing                      ? kRuleTextureMissing
+                                                                     : std::string_view("texture");
+        diags.other.error({}, std::string(rule),
                           fmt::format("--texture s{}: {}", t.sampler, r.message()));
         ok = false;
         continue;
@@ -171,6 +176,41 @@ bool check_indices(const RunRequest& req, RunDiagnostics& diags) {
   for (const auto& in : req.inputs)
     if (in.index >= (in.file == ir::RegFile::Input ? 2u : 8u))
       refuse("pixel input " + ir::register_name(in.file, in.index));
+  for (const BumpSetting& b : req.bump_matrices)
+    if (b.stage >= kMaxSamplers) refuse(fmt::format("texture stage {}", b.stage));
+  return ok;
+}
+
+// The c# a stage can be given: the profile's count for a pixel listing (ps_1_x 8, ps_2_0
+// 32); 256 for a vertex listing, as many as a Direct3D 9 device takes for any vertex profile
+// (vs_1_1 guarantees 96, but relative reads reach further on every device since the GeForce3).
+uint32_t settable_float_constants(const ir::Program& program) {
+  return program.stage() == ir::ShaderStage::Vertex ? 256u
+                                                    : ir::limits(program.profile).float_consts;
+}
+
+// A c# setting no stage of the run can hold (ps:c999) is refused: written nowhere, it
+// would be ignored without a word.
+bool check_constant_ranges(const RunRequest& req, RunDiagnostics& diags) {
+  bool ok = true;
+  for (const ConstSetting& c : req.constants) {
+    if (c.file != ir::RegFile::Const) continue;
+    bool held = false, applies_somewhere = false;
+    std::string limits;
+    for (const auto* program : {req.vs.get(), req.ps.get()}) {
+      if (!program || !applies(c.stage, program->stage())) continue;
+      applies_somewhere = true;
+      const uint32_t count = settable_float_constants(*program);
+      held = held || c.index < count;
+      limits += fmt::format("{}{} has c0..c{}", limits.empty() ? "" : ", ",
+                            ir::profile_name(program->profile), count - 1);
+    }
+    if (!applies_somewhere || held) continue;
+    diags.other.error(
+        {}, std::string(kRuleConstantRange),
+        fmt::format("--const c{}: outside the constant registers ({})", c.index, limits));
+    ok = false;
+  }
   return ok;
 }
 
@@ -193,17 +233,20 @@ std::optional<Pass> prepare(const RunRequest& req, RunDiagnostics& diags) {
     diags.ps.error(req.ps->version_loc, "stage", "--ps expects a pixel listing (ps_1_1 .. ps_2_0)");
     ok = false;
   }
-  if (!ok || !check_indices(req, diags)) return std::nullopt;
+  if (!ok || !check_indices(req, diags) || !check_constant_ranges(req, diags)) return std::nullopt;
   pass.vertex_program = req.vs;
   pass.pixel_program = req.ps;
   pass.conventions = req.conventions;
   if (req.vs) ok = build_constants(*req.vs, req.constants, pass.vs_constants, diags.vs) && ok;
   if (req.ps) ok = build_constants(*req.ps, req.constants, pass.ps_constants, diags.ps) && ok;
   ok = bind_textures(req, pass, diags) && ok;
+  for (const BumpSetting& b : req.bump_matrices)
+    pass.textures[b.stage].stage.bumpenv_mat = b.matrix;
   if (req.vs)
     set_vertex_inputs(req, pass, diags);
   else
     set_pixel_inputs(req, pass, diags);
+  if (uses_quad_uv_stage(req)) set_quad_uv_stage(req, pass); // t# from the quad's uv
   if (!ok) return std::nullopt;
   return pass;
 }

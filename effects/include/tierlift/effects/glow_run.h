@@ -34,6 +34,7 @@ using SceneAt = std::function<img::ImageResult(unsigned frame)>;
 using GlowFrameSink = std::function<ir::Status(unsigned frame, const ImageMap& images)>;
 GlowFrames run_glow_frames(const GlowPlan& plan, const img::Image& scene, PassDevice& device,
                            unsigned frames, const std::vector<std::string>& read_back = {},
-                           const GlowFrameSink& sink = {}, const SceneAt& scene_at = {});
+                           const GlowFrameSink& sink = {}, const SceneAt& scene_at = {},
+                           const FrameProgress& progress = {});
 
 } // namespace tierlift::effects

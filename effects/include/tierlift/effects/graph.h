@@ -42,6 +42,7 @@ struct TextureBind {
   uint32_t stage = 0; // sampler stage s# (ps_2_0) / texture stage (ps_1_x)
   std::string texture;
   pass::SamplerState sampler;
+  pass::StageState stage_state = {}; // texbem's bump matrix, projection (ps_1_x)
 };
 
 // What the analytic device computes for a pass. Linear: the pixel is a weighted sum of

@@ -22,10 +22,12 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "tierlift/effects/graph.h"
+#include "tierlift/ir/result.h"
 
 namespace tierlift::effects {
 
@@ -53,6 +55,10 @@ MemoryPlan plan_memory(const EffectGraph& graph, const std::vector<std::string>&
 // limit that works under AddressSanitizer, whose shadow memory needs an unlimited address
 // space. 0 when unknown.
 uint64_t available_memory();
+// TIERLIFT_MEMORY_LIMIT as available_memory reads it: unset (nullopt), a whole number of
+// bytes > 0, or an error (rule "usage") naming the variable and its value: a budget that
+// is mistyped must not be dropped without a word.
+ir::Result<std::optional<uint64_t>> memory_limit_from_env();
 
 // Held beside the images by every run: the program, its listings and the Vulkan driver
 // (lavapipe, LLVM), measured at 92 MB resident for a 16×16 glow on all three devices.

@@ -33,6 +33,10 @@ std::string report_markdown(const SweepResult& r, const SweepSettings& s, const 
 
 // The gnuplot program: TIERLIFT_GNUPLOT when set, else "gnuplot" on PATH.
 std::string gnuplot_program();
+// Whether gnuplot_program() can be run (an executable file at that path, or on PATH): a
+// failure (rule "io") that says which package brings it. Callers ask before a sweep, so a
+// missing gnuplot is not found only after minutes of work.
+ir::Status check_gnuplot();
 
 // The names of the report's files, in the order write_report writes them. A command names
 // them to its OutputFolder before the sweep, so a clash with an input is refused at once.

@@ -104,8 +104,17 @@ ir::Result<SweepResult> run_sweep(const Scene& scene, const img::Image& image,
                                   const SweepSettings& s, vulkan::Device* vk,
                                   const SweepProgress& progress = {});
 
+// Two final RMSEs the Pareto front counts as equal: within kParetoRelativeTolerance of the
+// larger, or within kParetoAbsoluteTolerance (for errors near 0). Far below anything a
+// person sees (1/255 = 3.9e-3) and above the run-to-run noise of a sum of squares in double:
+// without it a configuration twice as slow stayed on the front for 2e-12 less error.
+inline constexpr double kParetoRelativeTolerance = 1e-6;
+inline constexpr double kParetoAbsoluteTolerance = 1e-9;
+bool same_error(double a, double b);
+
 // Indices of the configurations no other one beats on both frame time and final RMSE
-// (ties kept), ordered by frame time. Skipped configurations are left out.
+// (ties kept; RMSEs within same_error are ties), ordered by frame time. Skipped
+// configurations are left out.
 std::vector<size_t> pareto_front(const std::vector<ConfigResult>& configs);
 
 } // namespace tierlift::effects

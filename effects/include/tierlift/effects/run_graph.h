@@ -85,9 +85,13 @@ struct FrameTimes {
 // change (a moving scene): it fills the map (input name → image, at the declared size; it
 // is stored in the declared format), and the device replaces them (update_input).
 using FrameSink = std::function<ir::Status(unsigned frame, PassDevice& device)>;
+// `progress`, when set, is told after each frame how many are done (1..frames) and of how
+// many: a long --frames run on a terminal shows where it is (cli/progress_line.h).
 using FrameInputs = std::function<ir::Status(unsigned frame, ImageMap& changed)>;
+using FrameProgress = std::function<void(unsigned done, unsigned frames)>;
 ir::Result<FrameTimes> run_frames(const EffectGraph& graph, PassDevice& device, ImageMap& images,
                                   unsigned frames, const FrameSink& sink = {},
-                                  const FrameInputs& inputs_at = {});
+                                  const FrameInputs& inputs_at = {},
+                                  const FrameProgress& progress = {});
 
 } // namespace tierlift::effects

@@ -26,6 +26,10 @@ struct Comparison {
   bool non_finite_mismatch = false; // NaN or ±inf in one image and not the other
 };
 
+// |a − b| of one channel value as compare() counts it: 0 for equal values (NaN equals NaN),
+// +inf when either is NaN or infinite and they are not equal.
+double channel_difference(float a, float b);
+
 // Differences a − b. Sizes must match; otherwise a failure that says why. A value that is
 // NaN or infinite in one image but not equal in the other counts as an infinite difference.
 ir::Result<Comparison> compare(const Image& a, const Image& b);

@@ -17,7 +17,8 @@
 //   * Geometry is always the full-screen quad. With a vertex program, its position input
 //     (pass.h, position_input) gets the quad's corners, attrs feed the other inputs (quad_uv:
 //     (0,0) top-left … (1,1) bottom-right), and inputs not given read (0,0,0,1). Without one,
-//     the pixel stage's v#/t# are the constants of `inputs` at every pixel (default 0).
+//     the pixel stage's v#/t# are the constants of `inputs` at every pixel (default 0), but
+//     with texcoords_from_quad a t# not given is the quad's uv (input_sources.h).
 //   * Constants: a c#/i#/b# a listing reads that is neither given nor def'd is an ERROR
 //     naming the register (a forgotten --const otherwise silently gives a black image);
 //     reads through a0/aL cannot be checked and only warn. Constants for StageMask::Both go
@@ -73,6 +74,14 @@ struct TextureSetting {
   std::shared_ptr<const img::Image> image; // when set: this image, `source` only names it
 };
 
+// texbem/texbeml's 2×2 bump-environment matrix of texture stage `stage` (D3DTSS_BUMPENVMAT00,
+// 01, 10, 11): u' = u + M00·du + M10·dv, v' = v + M01·du + M11·dv. Stages not given keep 0
+// (texbem then samples at the unbumped coordinate, as a D3D9 device does by default).
+struct BumpSetting {
+  uint32_t stage = 0;
+  std::array<float, 4> matrix{0, 0, 0, 0}; // M00, M01, M10, M11
+};
+
 struct ProbePoint {
   uint32_t x = 0, y = 0;
 };
@@ -88,8 +97,12 @@ struct RunRequest {
   img::Format format = img::Format::RGBA8;
   std::vector<ConstSetting> constants;
   std::vector<RegisterSetting> inputs; // used only without a vertex program
-  std::vector<RegisterSetting> attrs;  // used only with a vertex program
+  // Without a vertex program: every t# the pixel listing names and `inputs` does not set is
+  // the quad's uv, not 0 (input_sources.h). `tierlift run` sets it.
+  bool texcoords_from_quad = false;
+  std::vector<RegisterSetting> attrs; // used only with a vertex program
   std::vector<TextureSetting> textures;
+  std::vector<BumpSetting> bump_matrices;
   Filter filter = Filter::Point;
   AddressMode address = AddressMode::Wrap;
   ir::Conventions conventions;
@@ -107,6 +120,14 @@ struct RunDiagnostics {
 // Rule of the `other` error for a texture file that does not exist (an I/O problem, as
 // opposed to a file that exists but does not decode).
 inline constexpr std::string_view kRuleTextureMissing = "texture-missing";
+// A builtin: texture spec that names no built-in texture or has a bad size.
+inline constexpr std::string_view kRuleTextureSpec = "texture-spec";
+// A c# setting no stage of the run has a register for (ps:c999).
+inline constexpr std::string_view kRuleConstantRange = "constant-range";
+// Errors of these rules come from a flag's value, not from the listings: usage errors.
+constexpr bool is_usage_rule(std::string_view rule) {
+  return rule == kRuleTextureMissing || rule == kRuleTextureSpec || rule == kRuleConstantRange;
+}
 
 // The pass `request` describes, textures loaded (each source once), or the errors why not;
 // warnings never stop it and ride along with the pass. Checks the size too
