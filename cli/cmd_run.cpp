@@ -19,6 +19,7 @@
 #include "report.h"
 #include "run_flags.h"
 #include "run_output.h"
+#include "run_trace.h"
 #include "tierlift/effects/device.h"
 #include "tierlift/effects/run_graph.h"
 #include "tierlift/effects/single_pass.h"
@@ -37,6 +38,7 @@ struct RunFlags {
   std::string ps1x_max{ir::kDefaultPs1xPreset};
   unsigned threads = 0;
   std::string backend = "cpu", gpu;
+  std::string trace;  // --trace X,Y (run_trace.h)
   FrontEndOptions fe; // -D, -I, --profile, --strict, --skip-validation, --json
 };
 
@@ -218,6 +220,21 @@ int run(const RunFlags& f) {
     return report.finish(kExitUsage);
   }
   const bool want_cpu = f.backend != "vulkan", want_vulkan = f.backend != "cpu";
+  std::optional<PixelTraceRequest> trace;
+  if (!f.trace.empty()) {
+    ir::Result<pass::ProbePoint> at = parse_probe(f.trace);
+    if (!at || at->x >= req.width || at->y >= req.height) {
+      report.error("usage", fmt::format("--trace '{}': expected X,Y inside the {}x{} image",
+                                        f.trace, req.width, req.height));
+      return report.finish(kExitUsage);
+    }
+    if (f.ps.empty()) {
+      report.error("usage", "--trace follows a pixel listing's instructions: give --ps");
+      return report.finish(kExitUsage);
+    }
+    trace = PixelTraceRequest{at->x,      at->y,    req.width,   req.height,
+                              req.format, want_cpu, want_vulkan, f.gpu};
+  }
   if (!f.output.empty()) {
     std::string why = check_output(f.output, input_files(f, req), f.fe.json).message();
     if (why.empty() && f.output == "-" && want_cpu && want_vulkan)
@@ -297,7 +314,7 @@ int run(const RunFlags& f) {
     report.error("graph", graph.message());
     return report.finish(kExitInvalid);
   }
-  prepared.reset(); // the graph shares the textures; the pass is not needed any more
+  if (!trace) prepared.reset(); // the graph shares the textures; only a trace needs the pass
   DeviceRun out, vk;
   std::string vk_name;
   if (want_cpu) {
@@ -375,6 +392,8 @@ int run(const RunFlags& f) {
                  verdict->pass ? "within targets" : "BEYOND TARGETS");
     }
   }
+  if (trace)
+    if (int code = print_pixel_trace(*prepared, *trace, report)) return report.finish(code);
   if (verdict && !verdict->pass) {
     report.error("agreement", verdict->summary);
     return report.finish(kExitInvalid);
@@ -425,6 +444,9 @@ void register_run_command(CLI::App& app) {
       ->transform([](std::string s) { return s == "all" ? std::string("both") : s; })
       ->capture_default_str();
   sub->add_option("--gpu", f->gpu, "Vulkan device name filter (default: lavapipe)");
+  sub->add_option("--trace", f->trace,
+                  "Follow pixel X,Y through the pixel listing: each instruction's result on "
+                  "each device of --backend, and the first instruction where they differ");
   set_action(sub, [f] { return run(*f); });
 }
 

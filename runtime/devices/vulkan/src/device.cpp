@@ -212,6 +212,12 @@ ir::Result<std::unique_ptr<Device>> Device::create(const DeviceOptions& options)
   dci.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
   dci.queueCreateInfoCount = 1;
   dci.pQueueCreateInfos = &qci;
+  // The one optional feature: storage-buffer writes from a pixel shader, for tracing a pixel.
+  VkPhysicalDeviceFeatures supported{}, wanted{};
+  vkGetPhysicalDeviceFeatures(chosen, &supported);
+  wanted.fragmentStoresAndAtomics = supported.fragmentStoresAndAtomics;
+  impl->fragment_stores = supported.fragmentStoresAndAtomics == VK_TRUE;
+  dci.pEnabledFeatures = &wanted;
   r = vkCreateDevice(chosen, &dci, nullptr, &impl->device);
   if (r != VK_SUCCESS) {
     impl->device = VK_NULL_HANDLE;
