@@ -28,7 +28,7 @@ const char* kVs = "vs_2_0\n"
                   "mov oT0, v3\n";
 
 // Line numbers of the instructions below: 5 mov, 6 mul, 7 add (reads c2, the planted
-// constant), 8 mad, 9 add (.xy), 10 mov.
+// constant), 8 mad, 9 mov, 10 add (.xy), 11 mov.
 const char* kPs = "ps_2_0\n"
                   "def c0, 2, 4, 0.5, 1\n"
                   "def c1, 0.25, -1, 3, 0\n"
@@ -37,6 +37,7 @@ const char* kPs = "ps_2_0\n"
                   "mul r1, t0, r0\n"
                   "add r1, r1, c2\n"
                   "mad r2, r1, c1, c0\n"
+                  "mov r3, c1\n"
                   "add r3.xy, r2, -t0\n"
                   "mov oC0, r3\n";
 
@@ -63,16 +64,17 @@ std::vector<Vec> expected_values() {
   const Vec r0{2, 4, 0.5f, 1};
   const Vec r1{t0[0] * 2, t0[1] * 4, t0[2] * 0.5f, t0[3] * 1}; // (0.75, 2, 0, 1); + c2 = 0
   const Vec r2{r1[0] * 0.25f + 2, r1[1] * -1 + 4, r1[2] * 3 + 0.5f, r1[3] * 0 + 1};
-  const Vec r3{r2[0] - t0[0], r2[1] - t0[1], 0, 0}; // .zw never written: 0
+  const Vec c1{0.25f, -1, 3, 0};
+  const Vec r3{r2[0] - t0[0], r2[1] - t0[1], c1[2], c1[3]}; // .zw kept from the mov
   EXPECT_EQ(r2, (Vec{2.1875f, 2, 0.5f, 1}));
-  EXPECT_EQ(r3, (Vec{1.8125f, 1.5f, 0, 0}));
-  return {r0, r1, r1, r2, r3, r3};
+  EXPECT_EQ(r3, (Vec{1.8125f, 1.5f, 3, 0}));
+  return {r0, r1, r1, r2, c1, r3, r3};
 }
 
 void expect_column(const PixelTraceTable& t, bool vulkan) {
   const std::vector<Vec> want = expected_values();
   ASSERT_EQ(t.rows.size(), want.size());
-  const uint32_t lines[] = {5, 6, 7, 8, 9, 10};
+  const uint32_t lines[] = {5, 6, 7, 8, 9, 10, 11};
   for (size_t i = 0; i < want.size(); ++i) {
     const TraceRow& row = t.rows[i];
     EXPECT_EQ(row.line, lines[i]);
@@ -82,8 +84,9 @@ void expect_column(const PixelTraceTable& t, bool vulkan) {
     EXPECT_EQ(cell->value, want[i]) << "row " << i << " " << row.text;
   }
   EXPECT_EQ(t.rows[3].text, "mad r2, r1, c1, c0");
-  EXPECT_EQ(t.rows[4].dest, "r3");
-  EXPECT_EQ(t.rows[5].dest, "oC0");
+  EXPECT_EQ(t.rows[5].dest, "r3");
+  EXPECT_EQ(t.rows[5].mask, 0x3);
+  EXPECT_EQ(t.rows[6].dest, "oC0");
 }
 
 TEST(PixelTrace, InterpreterColumnHoldsTheHandComputedValues) {
@@ -118,13 +121,13 @@ TEST_F(PixelTraceVulkan, BothColumnsHoldTheHandComputedValues) {
   ir::Result<vulkan::ShaderTrace> vk =
       trace_on_vulkan(*dev, p, kW, kH, img::Format::RGBA32F, kX, kY);
   ASSERT_TRUE(vk) << vk.message();
-  EXPECT_EQ(vk->points, (std::vector<uint32_t>{0, 1, 2, 3, 4, 5}));
+  EXPECT_EQ(vk->points, (std::vector<uint32_t>{0, 1, 2, 3, 4, 5, 6}));
   const PixelTraceTable t = make_trace_table(*p.pixel_program, kX, kY, &*cpu, &*vk);
   expect_column(t, false);
   expect_column(t, true);
   EXPECT_TRUE(t.vulkan_covered);
   EXPECT_FALSE(t.first_difference);
-  EXPECT_NE(format_trace_table(t).find("no difference: the 6 recorded instructions agree"),
+  EXPECT_NE(format_trace_table(t).find("no difference: the 7 recorded instructions agree"),
             std::string::npos);
 }
 
@@ -135,14 +138,14 @@ TEST_F(PixelTraceVulkan, OnlyTheTracedPixelRecords) {
   ir::Result<vulkan::ShaderTrace> vk =
       trace_on_vulkan(*dev, p, kW, kH, img::Format::RGBA32F, kX + 1, kY);
   ASSERT_TRUE(vk) << vk.message();
-  ASSERT_EQ(vk->hits.size(), 6u);
+  ASSERT_EQ(vk->hits.size(), 7u);
   for (uint32_t h : vk->hits) EXPECT_EQ(h, 1u); // one invocation, not the whole quad
   EXPECT_EQ(vk->value[1], (Vec{0.5f * 2, 0.5f * 4, 0, 1}));
 }
 
 // A difference planted on the Vulkan side: c2.z = 0.25 there, 0 on the interpreter. It first
 // shows at line 7 (add r1, r1, c2: r1.z), spreads to line 8 (mad r2: r2.z), and no further:
-// line 9 writes r3.xy only and the columns are compared in the written components.
+// line 10 writes r3.xy only, from r2.xy.
 TEST_F(PixelTraceVulkan, APlantedDifferenceIsNamedWhereItStarts) {
   const pass::Pass cpu_pass = traced_pass({0, 0, 0, 0});
   const pass::Pass vk_pass = traced_pass({0, 0, 0.25f, 0});
@@ -159,7 +162,7 @@ TEST_F(PixelTraceVulkan, APlantedDifferenceIsNamedWhereItStarts) {
   EXPECT_EQ(first.text, "add r1, r1, c2");
   EXPECT_EQ(first.vulkan->value, (Vec{0.75f, 2, 0.25f, 1}));
   EXPECT_EQ(first.interpreter->value, (Vec{0.75f, 2, 0, 1}));
-  const std::vector<bool> differs{false, false, true, true, false, false};
+  const std::vector<bool> differs{false, false, true, true, false, false, false};
   for (size_t i = 0; i < t.rows.size(); ++i) EXPECT_EQ(t.rows[i].differs, differs[i]) << i;
   EXPECT_EQ(t.rows[3].vulkan->value[2], 0.25f * 3 + 0.5f);
   const std::string text = format_trace_table(t);
