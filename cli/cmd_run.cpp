@@ -22,6 +22,7 @@
 #include "run_flags.h"
 #include "run_output.h"
 #include "tierlift/effects/backends.h"
+#include "run_trace.h"
 #include "tierlift/effects/device.h"
 #include "tierlift/effects/memory_plan.h"
 #include "tierlift/effects/run_graph.h"
@@ -42,6 +43,7 @@ struct RunFlags {
   unsigned threads = 0;
   std::string backend = "cpu", gpu;
   bool keep_alpha = false; // PNG: the shader's alpha as stored, not opaque
+  std::string trace;       // --trace X,Y (run_trace.h)
   FrontEndOptions fe;      // -D, -I, --profile, --strict, --skip-validation, --json
 };
 
@@ -235,6 +237,21 @@ int run(const RunFlags& f) {
   };
   const bool want_cpu = wants("cpu");
   bool want_vulkan = wants("vulkan");
+  std::optional<PixelTraceRequest> trace;
+  if (!f.trace.empty()) {
+    ir::Result<pass::ProbePoint> at = parse_probe(f.trace);
+    if (!at || at->x >= req.width || at->y >= req.height) {
+      report.error("usage", fmt::format("--trace '{}': expected X,Y inside the {}x{} image",
+                                        f.trace, req.width, req.height));
+      return report.finish(kExitUsage);
+    }
+    if (f.ps.empty()) {
+      report.error("usage", "--trace follows a pixel listing's instructions: give --ps");
+      return report.finish(kExitUsage);
+    }
+    trace = PixelTraceRequest{at->x,      at->y,    req.width,   req.height,
+                              req.format, want_cpu, want_vulkan, f.gpu};
+  }
   if (!f.output.empty()) {
     std::string why = check_output(f.output, input_files(f, req), f.fe.json).message();
     if (why.empty() && f.output == "-" && want_cpu && want_vulkan)
@@ -323,7 +340,7 @@ int run(const RunFlags& f) {
     report.error("graph", graph.message());
     return report.finish(kExitInvalid);
   }
-  prepared.reset(); // the graph shares the textures; the pass is not needed any more
+  if (!trace) prepared.reset(); // the graph shares the textures; only a trace needs the pass
   // Memory known before anything is allocated (effects::plan_memory), as glow plans it.
   if (std::string why = effects::memory_refusal(
           effects::plan_memory(*graph, backends->ways, false, effects::kProgramBytes),
@@ -344,6 +361,7 @@ int run(const RunFlags& f) {
   }
   if (!selected->note.empty()) report.warning("backend", selected->note);
   want_vulkan = selected->vulkan != nullptr;
+  if (trace) trace->vulkan = want_vulkan; // "all" may have left Vulkan out
   DeviceRun out, vk;
   std::string vk_name;
   if (want_cpu) {
@@ -422,6 +440,8 @@ int run(const RunFlags& f) {
                  verdict->pass ? "within targets" : "BEYOND TARGETS");
     }
   }
+  if (trace)
+    if (int code = print_pixel_trace(*prepared, *trace, report)) return report.finish(code);
   if (verdict && !verdict->pass) {
     report.error("agreement", verdict->summary);
     return report.finish(kExitInvalid);
@@ -478,6 +498,9 @@ void register_run_command(CLI::App& app) {
                   "else cpu with a note)")
       ->capture_default_str();
   sub->add_option("--gpu", f->gpu, "Vulkan device name filter (default: lavapipe)");
+  sub->add_option("--trace", f->trace,
+                  "Follow pixel X,Y through the pixel listing: each instruction's result on "
+                  "each device of --backend, and the first instruction where they differ");
   set_action(sub, [f] { return run(*f); });
 }
 

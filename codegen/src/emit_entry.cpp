@@ -52,6 +52,7 @@ void Emitter::emit_entry() {
   b.begin_function(t_void, b.type_function(t_void), fn);
   b.name(fn, opt.entry_point);
   b.begin_block(b.fresh_id());
+  if (tracing()) trace_begin_entry();
   b.op(Op::OpFunctionCall, t_void, {fn_main_});
   const bool vertex = prog.stage() == ir::ShaderStage::Vertex;
   auto load = [&](RegFile file, uint32_t index) {
@@ -137,6 +138,7 @@ std::optional<ShaderModule> Emitter::run() {
   if (failed) return std::nullopt;
   emit_entry();
   declare_uniforms();
+  if (tracing()) declare_trace_buffer();
   if (uses_kill_ && opt.kill == KillMode::Demote) {
     b.capability(spv::Capability::DemoteToHelperInvocation);
     b.extension("SPV_EXT_demote_to_helper_invocation");
@@ -178,6 +180,9 @@ std::optional<ShaderModule> Emitter::run() {
   m.spec_constants = spec_info_;
   m.writes_depth = writes_depth_;
   m.uses_kill = uses_kill_;
+  if (tracing())
+    m.trace = TraceInfo{kDescriptorSet, opt.trace->binding, static_cast<uint32_t>(prog.code.size()),
+                        trace_points_};
   return m;
 }
 

@@ -198,6 +198,7 @@ void Emitter::emit_code() {
       PendingStore st;
       if (emit_arith(ins, st)) pending.push_back(st);
     }
+    if (pending.size() > stores) pending.back().index = i;
     if (pending.size() > stores && i < plain_.within_ps1x_range.size())
       pending.back().within_ps1x_range = plain_.within_ps1x_range[i];
   }
@@ -218,8 +219,10 @@ bool Emitter::plain_factors(size_t a, size_t b, uint8_t mask) const {
 
 void Emitter::flush(std::vector<PendingStore>& pending) {
   const bool ps1x = ir::is_ps1x(prog.profile);
-  for (const PendingStore& st : pending)
+  for (const PendingStore& st : pending) {
     store(st, ps1x && (st.dst.file == RegFile::Temp || st.dst.file == RegFile::Texture));
+    if (tracing()) trace_store(st);
+  }
   pending.clear();
 }
 

@@ -22,6 +22,7 @@ inline constexpr uint32_t kDescriptorSet = 0;
 inline constexpr uint32_t kVertexConstantsBinding = 0;
 inline constexpr uint32_t kPixelConstantsBinding = 1;
 inline constexpr uint32_t kFirstSamplerBinding = 2; // binding = 2 + sampler/stage number
+inline constexpr uint32_t kTraceBinding = 18;       // CodegenOptions::trace's storage buffer
 // Interface locations shared by both stages: tN/oTN at N, vN/oDN at 8 + N, oFog at 10.
 inline constexpr uint32_t kTexCoordLocation = 0;
 inline constexpr uint32_t kColorLocation = 8;
@@ -36,6 +37,19 @@ enum class KillMode {
   Kill,   // OpKill (core SPIR-V; the invocation ends, no helper remains)
   Demote, // OpDemoteToHelperInvocation (SPV_EXT_demote_to_helper_invocation)
 };
+
+// CodegenOptions::trace: the pixel whose every instruction result the pixel module records.
+// Entry i of the storage buffer (binding `binding`, set 0) belongs to instruction i of
+// Program::code: { vec4 value; uint hits; } at 32·i (value at +0, hits at +16). After an
+// instruction stores its destination register, the invocation at pixel (x, y) (gl_FragCoord
+// truncated: pixel x spans [x, x + 1)) writes the whole register there (a0: its integers
+// as floats) and adds 1 to hits; other invocations write nothing. The buffer must start at
+// zero; hits then counts how often the instruction ran (loops: value is the last run's).
+struct TracePixel {
+  uint32_t x = 0, y = 0;
+  uint32_t binding = kTraceBinding;
+};
+inline constexpr uint32_t kTraceEntryBytes = 32;
 
 struct CodegenOptions {
   ir::Conventions conventions;
@@ -95,6 +109,9 @@ struct CodegenOptions {
   //    the GLSL peer.
   std::optional<std::vector<std::array<float, 4>>> known_vs_constants, known_ps_constants;
   bool optimize = false; // run spirv-opt's performance passes after validation
+  // Pixel stage only (a vertex module ignores it): record one pixel's instruction results
+  // (TracePixel). Unset, the module is exactly the one it always was.
+  std::optional<TracePixel> trace;
   // Entry point name.
   std::string entry_point = "main";
 };
@@ -142,6 +159,13 @@ struct SpecConstantInfo {
   std::string name; // "flip_y", "pixel_offset_x", ...
 };
 
+// The record a traced pixel module writes (CodegenOptions::trace).
+struct TraceInfo {
+  uint32_t set = kDescriptorSet, binding = kTraceBinding;
+  uint32_t entries = 0;         // Program::code.size(): the buffer holds kTraceEntryBytes each
+  std::vector<uint32_t> points; // the instructions that record (those storing a register)
+};
+
 struct ShaderModule {
   ir::ShaderStage stage = ir::ShaderStage::Vertex;
   std::vector<uint32_t> words;
@@ -152,6 +176,7 @@ struct ShaderModule {
   std::vector<SpecConstantInfo> spec_constants; // all float, 4 bytes each
   bool writes_depth = false;
   bool uses_kill = false;
+  std::optional<TraceInfo> trace; // set when CodegenOptions::trace applied
 };
 
 // What linking-time pruning left out, one entry per item (for --explain).

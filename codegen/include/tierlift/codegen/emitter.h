@@ -37,6 +37,7 @@ struct PendingStore {
   Id value = 0;                   // vec4
   uint8_t mask = 0xF;             // the destination mask, possibly narrowed by the opcode
   bool within_ps1x_range = false; // ir::PlainValueFacts: the ps_1_x range clamp is a no-op
+  size_t index = 0;               // the instruction in Program::code (CodegenOptions::trace)
 };
 
 class Emitter;
@@ -204,6 +205,16 @@ public:
   bool writes_depth_ = false, uses_kill_ = false;
   Id depth_out_var_ = 0;
   Id fn_main_ = 0;
+
+  // CodegenOptions::trace (emit_trace.cpp): whether this module traces, the Private bool
+  // "this invocation is the traced pixel" the entry point sets, the buffer, the instructions
+  // that record.
+  bool tracing() const;
+  void trace_store(const PendingStore& st); // after st's register was written
+  void trace_begin_entry();                 // in the entry point, before d3d_main runs
+  void declare_trace_buffer();
+  Id trace_flag_ = 0, trace_var_ = 0, trace_ptr_vec4_ = 0, trace_ptr_uint_ = 0;
+  std::vector<uint32_t> trace_points_;
 
 private:
   void begin_module();

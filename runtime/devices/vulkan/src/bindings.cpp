@@ -62,6 +62,16 @@ std::string create_bindings(Device::Impl& d, Cleanup& cleanup, const codegen::Co
     textures.push_back(t);
   }
 
+  // A traced pixel module's record (codegen::TracePixel): a storage buffer starting at zero.
+  if (const std::optional<codegen::TraceInfo>& trace = pair.ps.trace) {
+    const VkDeviceSize bytes = VkDeviceSize{trace->entries} * codegen::kTraceEntryBytes;
+    err = create_buffer(d, cleanup, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, out.trace);
+    if (!err.empty()) return err;
+    std::memset(out.trace.mapped, 0, out.trace.size);
+    bindings.push_back({trace->binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
+                        VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
+  }
+
   // Descriptor set layout, pool, set; pipeline layout.
   VkDescriptorSetLayoutCreateInfo dli{};
   dli.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
@@ -80,12 +90,13 @@ std::string create_bindings(Device::Impl& d, Cleanup& cleanup, const codegen::Co
   if ((r = vkCreatePipelineLayout(dev, &pli, nullptr, &layout)) != VK_SUCCESS)
     return vk_error("vkCreatePipelineLayout", r);
   cleanup.destroy_later(dev, layout, vkDestroyPipelineLayout);
-  VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2},
-                                   {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 16}};
+  VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2},
+                                   {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 16},
+                                   {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}};
   VkDescriptorPoolCreateInfo dpi{};
   dpi.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
   dpi.maxSets = 1;
-  dpi.poolSizeCount = 2;
+  dpi.poolSizeCount = out.trace.buffer ? 3 : 2; // untraced: the pool it always was
   dpi.pPoolSizes = sizes;
   VkDescriptorPool dpool = VK_NULL_HANDLE;
   if ((r = vkCreateDescriptorPool(dev, &dpi, nullptr, &dpool)) != VK_SUCCESS)
@@ -99,7 +110,7 @@ std::string create_bindings(Device::Impl& d, Cleanup& cleanup, const codegen::Co
   VkDescriptorSet& set = out.set;
   if ((r = vkAllocateDescriptorSets(dev, &dsa, &set)) != VK_SUCCESS)
     return vk_error("vkAllocateDescriptorSets", r);
-  std::vector<VkDescriptorBufferInfo> buffer_infos(ubos.size());
+  std::vector<VkDescriptorBufferInfo> buffer_infos(ubos.size() + 1);
   std::vector<VkDescriptorImageInfo> image_infos(textures.size());
   std::vector<VkWriteDescriptorSet> writes;
   auto write = [&](uint32_t binding, VkDescriptorType type) -> VkWriteDescriptorSet& {
@@ -114,6 +125,11 @@ std::string create_bindings(Device::Impl& d, Cleanup& cleanup, const codegen::Co
   for (size_t k = 0; k < ubos.size(); ++k) {
     buffer_infos[k] = {ubos[k].buf.buffer, 0, VK_WHOLE_SIZE};
     write(ubos[k].binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER).pBufferInfo = &buffer_infos[k];
+  }
+  if (out.trace.buffer) {
+    buffer_infos.back() = {out.trace.buffer, 0, VK_WHOLE_SIZE};
+    write(pair.ps.trace->binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER).pBufferInfo =
+        &buffer_infos.back();
   }
   for (size_t k = 0; k < textures.size(); ++k) {
     image_infos[k] = {textures[k].sampler, textures[k].view,

@@ -19,6 +19,7 @@ using SampledImages = std::array<const Image2D*, pass::kMaxSamplers>;
 struct Bindings {
   VkPipelineLayout layout = VK_NULL_HANDLE;
   VkDescriptorSet set = VK_NULL_HANDLE;
+  Buffer trace; // pair.ps.trace: the storage buffer it records into, zeroed
 };
 
 // Empty string on success; every object is registered with `cleanup`. Samplers come from

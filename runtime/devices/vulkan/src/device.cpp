@@ -241,6 +241,12 @@ ir::Result<std::unique_ptr<Device>> Device::create(const DeviceOptions& options)
   if (impl->props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU)
     if (std::string why = address_space_refusal(cpu_device_address_space()); !why.empty())
       return fail(why);
+  // The one optional feature: storage-buffer writes from a pixel shader, for tracing a pixel.
+  VkPhysicalDeviceFeatures supported{}, wanted{};
+  vkGetPhysicalDeviceFeatures(chosen, &supported);
+  wanted.fragmentStoresAndAtomics = supported.fragmentStoresAndAtomics;
+  impl->fragment_stores = supported.fragmentStoresAndAtomics == VK_TRUE;
+  dci.pEnabledFeatures = &wanted;
   r = vkCreateDevice(chosen, &dci, nullptr, &impl->device);
   if (r != VK_SUCCESS) {
     impl->device = VK_NULL_HANDLE;

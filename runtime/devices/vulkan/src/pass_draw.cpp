@@ -182,6 +182,20 @@ std::string check_targets(const pass::Pass& pass, const DrawTextures& t) {
   return {};
 }
 
+// The traced module's record (codegen::TracePixel's layout) out of its storage buffer.
+void read_trace(const PreparedDraw& p, ShaderTrace& out) {
+  const codegen::TraceInfo& info = *p.trace_info;
+  out.points = info.points;
+  out.value.assign(info.entries, {0, 0, 0, 0});
+  out.hits.assign(info.entries, 0);
+  const auto* bytes = static_cast<const unsigned char*>(p.trace.mapped);
+  for (uint32_t i = 0; i < info.entries; ++i) {
+    const unsigned char* entry = bytes + size_t{i} * codegen::kTraceEntryBytes;
+    std::memcpy(out.value[i].data(), entry, 16);
+    std::memcpy(&out.hits[i], entry + 16, 4);
+  }
+}
+
 } // namespace
 
 std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawTextures& textures,
@@ -213,6 +227,12 @@ std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawText
   co.known_vs_constants = pass.vs_constants.f; // the draw is cached under them
   co.known_ps_constants = pass.ps_constants.f;
   co.point_sampling_floors = d.point_sampling_floors;
+  if (textures.trace) {
+    if (!d.fragment_stores)
+      return "the Vulkan device cannot write a buffer from a pixel shader "
+             "(fragmentStoresAndAtomics), which tracing a pixel needs";
+    co.trace = *textures.trace;
+  }
   co.unorm8_decode = d.unorm8_decode;
   for (uint32_t s = 0; s < pass::kMaxSamplers; ++s) {
     co.stage_projected[s] = pass.textures[s].stage.projected;
@@ -271,6 +291,8 @@ std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawText
   if (!err.empty()) return err;
   out.layout = bound.layout;
   out.set = bound.set;
+  out.trace = bound.trace;
+  out.trace_info = pair->ps.trace;
 
   // Render pass, framebuffer, pipeline.
   std::vector<VkFormat> formats;
@@ -417,6 +439,14 @@ ir::Result<pass::DrawReport> draw_pass(Device::Impl& d, const pass::Pass& pass,
   std::string err = submit_and_wait(d, [&](VkCommandBuffer cb) {
     if (textures.host_target) record_upload(cb, target, rt_staging.buffer);
     record_draw(cb, d, prepared);
+    if (prepared.trace.buffer) { // the pixel stage's record made visible to the host
+      VkMemoryBarrier mb{};
+      mb.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
+      mb.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+      mb.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+      vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0,
+                           1, &mb, 0, nullptr, 0, nullptr);
+    }
     if (textures.host_target) record_readback(cb, target, rt_staging.buffer);
   });
   if (!err.empty()) {
@@ -425,6 +455,7 @@ ir::Result<pass::DrawReport> draw_pass(Device::Impl& d, const pass::Pass& pass,
   }
   res.draw_ms = ms_since(t1);
   if (textures.host_target) unpack_pixels(rt_staging.mapped, *textures.host_target);
+  if (textures.trace_out && prepared.trace_info) read_trace(prepared, *textures.trace_out);
   return res;
 }
 

@@ -11,9 +11,12 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 
 #include "resident.h"
+#include "tierlift/codegen/codegen.h"
 #include "tierlift/pass/pass.h"
+#include "tierlift/vulkan/texture_set.h"
 
 namespace tierlift::vulkan {
 
@@ -31,6 +34,10 @@ struct DrawTextures {
   // where the result is read back to after it (in the same submit as the draw). Must have
   // the target's size and format. nullptr: the target stays on the device.
   img::Image* host_target = nullptr;
+  // Set: the pixel module records this pixel (codegen::TracePixel) into a storage buffer,
+  // which draw_pass reads into trace_out. Such a draw is never cached.
+  const codegen::TracePixel* trace = nullptr;
+  ShaderTrace* trace_out = nullptr;
 };
 
 // Everything one draw of one pass needs, owned by `objects` (destroyed with the entry).
@@ -53,6 +60,9 @@ struct PreparedDraw {
   VkViewport viewport{};
   VkRect2D scissor{};
   bool visible = false; // something to draw (the render pass still runs: loadOp LOAD)
+  // DrawTextures::trace: the buffer the module records into (zeroed) and what it records.
+  Buffer trace;
+  std::optional<codegen::TraceInfo> trace_info;
 };
 
 // Creates what drawing `pass` into textures.target needs (host_target is ignored here).

@@ -241,6 +241,23 @@ ir::Result<pass::DrawReport> TextureSet::draw(const pass::Pass& pass, const Stag
   return res;
 }
 
+ir::Result<ShaderTrace> TextureSet::draw_traced(const pass::Pass& pass, const StageTextures& stages,
+                                                TextureId target, uint32_t x, uint32_t y) {
+  RenderTargets targets;
+  targets.color[0] = target;
+  DrawTextures textures;
+  if (std::string e = resolve(*state_, stages, targets, textures); !e.empty())
+    return draw_failure(std::move(e));
+  if (std::string e = state_->flush(); !e.empty()) return draw_failure(std::move(e));
+  const codegen::TracePixel pixel{x, y, codegen::kTraceBinding};
+  ShaderTrace out;
+  textures.trace = &pixel;
+  textures.trace_out = &out;
+  ir::Result<pass::DrawReport> drawn = draw_pass(*device_.impl_, pass, textures);
+  if (!drawn) return std::move(drawn).failure();
+  return out;
+}
+
 ir::Status TextureSet::set_batching(bool on) {
   std::string err = state_->flush();
   state_->batching = on;

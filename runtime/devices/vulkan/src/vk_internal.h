@@ -47,6 +47,9 @@ struct Device::Impl {
   // exact float copy instead.
   codegen::Unorm8Decode unorm8_decode = codegen::Unorm8Decode::RoundAndRebuild;
   bool unorm8_in_place = true;
+  // VkPhysicalDeviceFeatures::fragmentStoresAndAtomics, enabled where the device has it: a
+  // traced pixel module (codegen::TracePixel) writes a storage buffer.
+  bool fragment_stores = false;
 
   std::unique_ptr<Unorm8Converter> unorm8; // created on first use
   // pipeline_cache.h: created on first use, saved when pipelines were added.

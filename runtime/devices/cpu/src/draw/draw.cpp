@@ -190,41 +190,15 @@ ir::Result<DrawStats> draw(const Pass& pass, const DrawTargets& targets, unsigne
     return draw_failure(std::string("the shader VM refused the program: ") + e.what());
   }
 
-  // Vertex stage.
-  std::vector<VertexOutput> outs;
-  std::vector<std::array<uint32_t, 3>> tris = pass.triangles;
-  const bool constant_inputs = !vms.vs && pass.transformed.empty();
-  if (vms.vs) {
-    outs.reserve(pass.vertices.size());
-    for (const VertexInput& v : pass.vertices)
-      outs.push_back(vms.vs->run_vertex(v, pass.vs_constants));
-  } else if (!constant_inputs) {
-    outs = pass.transformed;
-  } else {
-    for (const Vec4& c : kQuadCorners) outs.emplace_back().pos = c;
-    tris.assign(kQuadTriangles.begin(), kQuadTriangles.end());
-  }
-  if (tris.empty())
-    for (uint32_t i = 0; i + 2 < outs.size(); i += 3) tris.push_back({i, i + 1, i + 2});
-
-  // Setup.
-  const int64_t offset = detail::sample_offset(pass.conventions);
-  PixelRect scissor{std::max<int64_t>(0, vp.x), std::max<int64_t>(0, vp.y),
-                    std::min<int64_t>(target.width, int64_t{vp.x} + vp.width),
-                    std::min<int64_t>(target.height, int64_t{vp.y} + vp.height)};
-  if (pass.scissor) {
-    scissor.x0 = std::max<int64_t>(scissor.x0, pass.scissor->x0);
-    scissor.y0 = std::max<int64_t>(scissor.y0, pass.scissor->y0);
-    scissor.x1 = std::min<int64_t>(scissor.x1, pass.scissor->x1);
-    scissor.y1 = std::min<int64_t>(scissor.y1, pass.scissor->y1);
-  }
-  std::vector<Triangle> setup;
-  for (const auto& t : tris) {
-    if (t[0] >= outs.size() || t[1] >= outs.size() || t[2] >= outs.size())
-      return draw_failure("triangle index out of range");
-    detail::setup_triangle({&outs[t[0]], &outs[t[1]], &outs[t[2]]}, vp, scissor, pass.conventions,
-                           setup);
-  }
+  detail::PassSetup ps;
+  if (std::string why = detail::setup_pass(pass, vms.vs ? &*vms.vs : nullptr, vp, target.width,
+                                           target.height, ps);
+      !why.empty())
+    return draw_failure(std::move(why));
+  const std::vector<Triangle>& setup = ps.triangles;
+  const PixelRect& scissor = ps.scissor;
+  const int64_t offset = ps.sample_offset;
+  const bool constant_inputs = ps.constant_inputs;
   stats.triangles = setup.size();
   if (setup.empty() || scissor.x0 >= scissor.x1 || scissor.y0 >= scissor.y1) {
     if (targets.stale) zero_targets(pass, targets);
@@ -289,6 +263,47 @@ ir::Result<DrawStats> draw(const Pass& pass, const DrawTargets& targets, unsigne
   }
   if (!failure.empty()) return draw_failure("draw failed: " + failure);
   return stats;
+}
+
+// The vertex stage and setup of a pass, shared with trace_pixel (raster.h).
+std::string detail::setup_pass(const Pass& pass, const ShaderVM* vs, const Viewport& vp,
+                               uint32_t width, uint32_t height, PassSetup& out) {
+  // Vertex stage.
+  std::vector<VertexOutput> outs;
+  std::vector<std::array<uint32_t, 3>> tris = pass.triangles;
+  const bool constant_inputs = out.constant_inputs = !vs && pass.transformed.empty();
+  if (vs) {
+    outs.reserve(pass.vertices.size());
+    for (const VertexInput& v : pass.vertices) outs.push_back(vs->run_vertex(v, pass.vs_constants));
+  } else if (!constant_inputs) {
+    outs = pass.transformed;
+  } else {
+    for (const Vec4& c : kQuadCorners) outs.emplace_back().pos = c;
+    tris.assign(kQuadTriangles.begin(), kQuadTriangles.end());
+  }
+  if (tris.empty())
+    for (uint32_t i = 0; i + 2 < outs.size(); i += 3) tris.push_back({i, i + 1, i + 2});
+
+  // Setup.
+  out.sample_offset = detail::sample_offset(pass.conventions);
+  PixelRect& scissor = out.scissor;
+  scissor = PixelRect{std::max<int64_t>(0, vp.x), std::max<int64_t>(0, vp.y),
+                      std::min<int64_t>(width, int64_t{vp.x} + vp.width),
+                      std::min<int64_t>(height, int64_t{vp.y} + vp.height)};
+  if (pass.scissor) {
+    scissor.x0 = std::max<int64_t>(scissor.x0, pass.scissor->x0);
+    scissor.y0 = std::max<int64_t>(scissor.y0, pass.scissor->y0);
+    scissor.x1 = std::min<int64_t>(scissor.x1, pass.scissor->x1);
+    scissor.y1 = std::min<int64_t>(scissor.y1, pass.scissor->y1);
+  }
+  std::vector<Triangle>& setup = out.triangles;
+  for (const auto& t : tris) {
+    if (t[0] >= outs.size() || t[1] >= outs.size() || t[2] >= outs.size())
+      return "triangle index out of range";
+    detail::setup_triangle({&outs[t[0]], &outs[t[1]], &outs[t[2]]}, vp, scissor, pass.conventions,
+                           setup);
+  }
+  return {};
 }
 
 } // namespace tierlift::cpu

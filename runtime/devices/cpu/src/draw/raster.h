@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "tierlift/cpu/draw.h"
@@ -64,6 +65,20 @@ struct Triangle {
 void setup_triangle(const std::array<const VertexOutput*, 3>& tri, const Viewport& viewport,
                     const PixelRect& scissor, const ir::Conventions& conventions,
                     std::vector<Triangle>& out);
+
+// A pass's vertex stage and triangle setup (the first half of a draw): the triangles to
+// rasterise in primitive order, the drawable rectangle, the sample offset, and whether the
+// pixel inputs are the pass's constant ones (no vertex program, no transformed vertices).
+struct PassSetup {
+  std::vector<Triangle> triangles;
+  PixelRect scissor;
+  int64_t sample_offset = 0;
+  bool constant_inputs = false;
+};
+// `vs`: the pass's vertex program's VM, nullptr without one; `vp` with its size filled in.
+// Empty string on success, else why nothing can be drawn.
+std::string setup_pass(const Pass& pass, const ShaderVM* vs, const Viewport& vp, uint32_t width,
+                       uint32_t height, PassSetup& out);
 
 // Sample offset of pixel (i, j) in 1/256 pixel: 0 for D3D9 centres, 128 for modern ones.
 int64_t sample_offset(const ir::Conventions& conventions);

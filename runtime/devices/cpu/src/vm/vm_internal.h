@@ -141,6 +141,8 @@ struct Invocation {
 // vm_program.cpp
 Prepared prepare(const ir::Program& program, const ir::Conventions& conv);
 void run(const Prepared& p, Invocation& inv);
+// run, recording each instruction's destination after it ran (InstructionTrace).
+void run_traced(const Prepared& p, Invocation& inv, InstructionTrace& trace);
 
 // vm_operands.cpp. fetch/store take a fast inline path for the common plain operands
 // (the VM runs per pixel) and fall back to the general functions otherwise.

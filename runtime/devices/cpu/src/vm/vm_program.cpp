@@ -242,4 +242,43 @@ void run(const Prepared& p, Invocation& inv) {
   }
 }
 
+namespace {
+
+// Instruction `at`'s destination register as it is now (a0: its integers as floats; the
+// depth instructions: oDepth).
+void record(const Prepared& p, const Invocation& inv, int32_t at, InstructionTrace& trace) {
+  const ir::Instruction& ins = p.program.code[static_cast<size_t>(at)];
+  if (!ins.dst) return;
+  Vec4 value{};
+  if (ins.op == Opcode::TexDepth || ins.op == Opcode::TexM3x2Depth) {
+    // They write the pixel's depth, not their destination register (as the SPIR-V does).
+    if (!inv.pout || !inv.pout->depth) return;
+    value[0] = *inv.pout->depth;
+  } else if (ins.dst->file == RegFile::Addr) {
+    for (int c = 0; c < 4; ++c) value[c] = static_cast<float>(inv.a0[c]);
+  } else {
+    const int slot = flat_slot(ins.dst->file, ins.dst->index, p.program.stage());
+    if (slot < 0) return;
+    value = inv.reg[slot];
+  }
+  trace.value[static_cast<size_t>(at)] = value;
+  ++trace.hits[static_cast<size_t>(at)];
+}
+
+} // namespace
+
+void run_traced(const Prepared& p, Invocation& inv, InstructionTrace& trace) {
+  trace.value.assign(p.steps.size(), Vec4{0, 0, 0, 0});
+  trace.hits.assign(p.steps.size(), 0);
+  const Step* steps = p.steps.data();
+  const auto n = static_cast<int32_t>(p.steps.size());
+  while (inv.pc < n && !inv.stop) {
+    const int32_t at = inv.pc;
+    const Step& s = steps[inv.pc++];
+    s.exec(s, inv);
+    record(p, inv, at, trace);
+    if (s.exec == exec_arith_pair) record(p, inv, at + 1, trace); // it ran the second half too
+  }
+}
+
 } // namespace tierlift::cpu::vm

@@ -60,9 +60,10 @@ VertexOutput ShaderVM::run_vertex(const VertexInput& in, const ConstantBank& con
   return out;
 }
 
-PixelOutput ShaderVM::run_pixel(const PixelInput& in, const ConstantBank& constants,
-                                const TextureUnit& textures) const {
-  const vm::Prepared& p = impl_->p;
+namespace {
+
+PixelOutput pixel(const vm::Prepared& p, const PixelInput& in, const ConstantBank& constants,
+                  const TextureUnit& textures, InstructionTrace* trace) {
   vm::Invocation inv;
   begin(inv, p, constants);
   PixelOutput out;
@@ -79,7 +80,10 @@ PixelOutput ShaderVM::run_pixel(const PixelInput& in, const ConstantBank& consta
   // registers that texture instructions fill.
   if (!p.ps11_13)
     for (int i = 0; i < vm::kTexCount; ++i) inv.reg[vm::kTexBase + i] = in.tex[i];
-  vm::run(p, inv);
+  if (trace)
+    vm::run_traced(p, inv, *trace);
+  else
+    vm::run(p, inv);
 
   const Vec4* o = inv.reg + vm::kOutBase;
   if (p.ps1x) {
@@ -91,6 +95,18 @@ PixelOutput ShaderVM::run_pixel(const PixelInput& in, const ConstantBank& consta
     if (inv.out_written & (1u << vm::kOutDepth)) out.depth = o[vm::kOutDepth][0];
   }
   return out;
+}
+
+} // namespace
+
+PixelOutput ShaderVM::run_pixel(const PixelInput& in, const ConstantBank& constants,
+                                const TextureUnit& textures) const {
+  return pixel(impl_->p, in, constants, textures, nullptr);
+}
+
+PixelOutput ShaderVM::run_pixel(const PixelInput& in, const ConstantBank& constants,
+                                const TextureUnit& textures, InstructionTrace& trace) const {
+  return pixel(impl_->p, in, constants, textures, &trace);
 }
 
 } // namespace tierlift::cpu

@@ -127,6 +127,21 @@ ir::Result<DrawStats> draw(const Pass& pass, img::Image& target, unsigned thread
 // than one target or a stencil test take the per-pixel executor.
 ir::Result<DrawStats> draw(const Pass& pass, const DrawTargets& targets, unsigned threads = 0);
 
+// One pixel of a draw, traced (tierlift run --trace): the pixel program run at pixel (x, y)
+// of a width × height target with the inputs the draw gives it there — those of the last
+// triangle covering the pixel, in primitive order — recording every instruction's
+// destination (InstructionTrace). The per-pixel VM runs it; the block executor a draw may
+// take gives the same values bit for bit (tests/cpu_draw/executor_identity_test.cpp).
+struct PixelTrace {
+  bool covered = false; // no triangle covers the pixel (or it lies outside the viewport)
+  InstructionTrace trace;
+  PixelOutput output;
+};
+// Fails (rule kDrawRule) where draw() would, or when the pass has no pixel program or (x, y)
+// lies outside the target.
+ir::Result<PixelTrace> trace_pixel(const Pass& pass, uint32_t width, uint32_t height, uint32_t x,
+                                   uint32_t y);
+
 // Blend `src` onto the stored `dst` and quantise for `format` (the per-pixel store rule,
 // exposed for tests). `rounding` is the pass's ir::Conventions::rounding: for RGBA8 targets
 // Llvmpipe converts the source with rounding::unorm8_llvmpipe and blends in 8-bit integers as

@@ -55,6 +55,15 @@ struct PixelOutput {
   bool discarded = false; // texkill
 };
 
+// One invocation's record of every instruction it ran (ShaderVM::run_pixel with a trace):
+// entry i belongs to instruction i of Program::code. value: the instruction's destination
+// register, all four components, after its last run (a0: its integers as floats); hits: how
+// many times it ran. Instructions without a destination register keep hits 0.
+struct InstructionTrace {
+  std::vector<Vec4> value;
+  std::vector<uint32_t> hits;
+};
+
 // The rule of ShaderVM::create's failures.
 inline constexpr std::string_view kVmRule = "vm";
 
@@ -78,6 +87,9 @@ public:
   VertexOutput run_vertex(const VertexInput& in, const ConstantBank& constants) const;
   PixelOutput run_pixel(const PixelInput& in, const ConstantBank& constants,
                         const TextureUnit& textures) const;
+  // The same, recording each instruction's destination into `trace` (sized to the program).
+  PixelOutput run_pixel(const PixelInput& in, const ConstantBank& constants,
+                        const TextureUnit& textures, InstructionTrace& trace) const;
 
 private:
   struct Impl;

@@ -43,6 +43,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "tierlift/image/image.h"
 #include "tierlift/ir/result.h"
@@ -66,6 +67,18 @@ using StageTextures = std::array<TextureId, pass::kMaxSamplers>;
 struct RenderTargets {
   std::array<TextureId, 4> color{};
   TextureId stencil = TextureId::None;
+};
+
+// What TextureSet::draw_traced records of one pixel (codegen::TracePixel): entry i belongs to
+// instruction i of the pass's pixel program. points: the instructions the module records
+// (those storing a register: not flow control, not one the code generator left out as dead);
+// value: the destination register after the instruction's last run at the pixel (a0: its
+// integers as floats); hits: how many times it ran there (0: never, or no triangle covered
+// the pixel).
+struct ShaderTrace {
+  std::vector<uint32_t> points;
+  std::vector<std::array<float, 4>> value;
+  std::vector<uint32_t> hits;
 };
 
 class TextureSet {
@@ -96,6 +109,11 @@ public:
   // The same into several render targets and a stencil buffer (MRT, stencil test).
   ir::Result<pass::DrawReport> draw(const pass::Pass& pass, const StageTextures& stages,
                                     const RenderTargets& targets);
+  // draw(pass, stages, target) with the pixel program instrumented to record pixel (x, y)
+  // (ShaderTrace): made for this draw only (never cached), submitted and waited for. Fails
+  // when the device cannot store from a pixel shader (fragmentStoresAndAtomics).
+  ir::Result<ShaderTrace> draw_traced(const pass::Pass& pass, const StageTextures& stages,
+                                      TextureId target, uint32_t x, uint32_t y);
   // Makes what draw(pass, stages, targets) needs, without drawing.
   ir::Status prepare(const pass::Pass& pass, const StageTextures& stages, TextureId target);
   ir::Status prepare(const pass::Pass& pass, const StageTextures& stages,
