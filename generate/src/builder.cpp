@@ -184,7 +184,12 @@ std::vector<ir::Instruction> Builder::tail(const std::vector<ir::Instruction>& c
                      : *it == Opcode::Rep ? Opcode::EndRep
                                           : Opcode::EndLoop,
                      std::nullopt));
-  const std::optional<uint32_t> full = last_full_temp(code, profile, temps);
+  std::vector<ir::Instruction> all = code;
+  if (pending_phase) {
+    t.push_back(make(Opcode::Phase, std::nullopt));
+    all.push_back(t.back());
+  }
+  const std::optional<uint32_t> full = last_full_temp(all, profile, temps);
   if (ir::is_vertex(profile)) {
     t.push_back(
         make(Opcode::Mov, dst_reg(RegFile::RastOut, ir::kRastPos), {src_reg(RegFile::Input, 0)}));

@@ -48,6 +48,9 @@ public:
   std::vector<bool> has_else;                         // per open block
   std::vector<uint32_t> labels;                       // subroutines called so far
   bool want_more_colours = false, want_depth = false; // ps_2_0 extra outputs (fixed per listing)
+  // ps_1_4: a phase marker will follow (the tail writes one meanwhile), so the instructions
+  // proposed now are in phase 1 (bem is legal only there).
+  bool pending_phase = false;
   const std::vector<ir::Instruction>& body() const { return body_; }
 
 private:

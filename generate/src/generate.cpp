@@ -27,10 +27,16 @@ std::string generate_listing(std::string_view profile_name, std::uint64_t seed, 
     detail::instruction_loop(b, n, false, true);
     break;
   case ir::Profile::ps_1_4:
+    b.pending_phase = b.rng.chance(0.6);
     detail::texture_section_ps14(b, false);
     detail::instruction_loop(b, n / 2, false, true);
-    if (b.rng.chance(0.6) && b.accept({detail::make(ir::Opcode::Phase, std::nullopt)}))
-      detail::texture_section_ps14(b, true);
+    if (b.pending_phase) {
+      b.pending_phase = false;
+      if (b.accept({detail::make(ir::Opcode::Phase, std::nullopt)}))
+        detail::texture_section_ps14(b, true);
+      else
+        b.pending_phase = true; // the body is valid with the tail's marker only
+    }
     detail::instruction_loop(b, n - n / 2, false, true);
     break;
   default: detail::instruction_loop(b, n, true, true); break;

@@ -67,10 +67,10 @@ std::vector<RegFile> readable_files(const Builder& b) {
 ir::DstOperand random_destination(Builder& b) {
   ir::DstOperand d = dst_reg(RegFile::Temp, b.rng.below(b.temps));
   if (ir::is_vertex(b.profile) && b.rng.chance(0.2)) {
-    const uint32_t pick = b.rng.below(7);
+    const uint32_t pick = b.rng.below(8);
     d = pick < 2   ? dst_reg(RegFile::AttrOut, pick)
         : pick < 6 ? dst_reg(RegFile::TexCrdOut, pick - 2)
-                   : dst_reg(RegFile::RastOut, ir::kRastFog, 1);
+                   : dst_reg(RegFile::RastOut, pick == 6 ? ir::kRastFog : ir::kRastPts, 1);
   } else if (ir::is_ps11_13(b.profile) && b.rng.chance(0.15)) {
     d = dst_reg(RegFile::Texture, b.rng.below(4));
   }
@@ -146,8 +146,12 @@ std::vector<ir::Instruction> propose(Builder& b, const ir::OpInfo& row) {
   if (row.has_dst) {
     ins.dst = random_destination(b);
     if (row.op == Opcode::Mova ||
-        (row.op == Opcode::Mov && b.profile == ir::Profile::vs_1_1 && b.rng.chance(0.1)))
+        (row.op == Opcode::Mov && b.profile == ir::Profile::vs_1_1 && b.rng.chance(0.3)))
       ins.dst = dst_reg(RegFile::Addr, 0, b.rng.chance(0.5) ? 1 : ir::kFullMask);
+    // A row that writes fewer components (bem .xy, crs .xyz, m3x2 .xy) often gets its mask.
+    if (const uint8_t w = ir::op_writes(row.op, b.profile);
+        w != 0 && w != ir::kFullMask && b.rng.chance(0.5))
+      ins.dst->mask = w;
     if (row.op == Opcode::SinCos) ins.dst->mask = static_cast<uint8_t>(1 + b.rng.below(3));
   }
   for (size_t k = 0; k < row.num_src; ++k) {

@@ -84,8 +84,10 @@ Statement parse_statement(const std::string& line) {
 // modifier suffix, without its swizzle or mask, and (sources only) the constant c0.
 std::vector<std::string> simpler_operands(const std::string& op, bool source) {
   std::vector<std::string> out;
-  for (const char* prefix : {"1-", "-", "!"})
-    if (op.rfind(prefix, 0) == 0) out.push_back(op.substr(std::string(prefix).size()));
+  std::string prefix;
+  for (const char* p : {"1-", "-", "!"})
+    if (op.rfind(p, 0) == 0 && prefix.empty()) prefix = p;
+  if (!prefix.empty()) out.push_back(op.substr(prefix.size()));
   const size_t close = op.rfind(']');
   const size_t dot = op.find('.', close == std::string::npos ? 0 : close);
   const size_t under = op.find('_', close == std::string::npos ? 0 : close);
@@ -95,7 +97,9 @@ std::vector<std::string> simpler_operands(const std::string& op, bool source) {
     out.push_back(no_suffix);
   }
   if (dot != std::string::npos) out.push_back(op.substr(0, dot));
-  if (source && op != "c0") out.push_back("c0");
+  // The constant keeps the sign or complement: a failure may need the modifier, not the register.
+  if (source && op != prefix + "c0") out.push_back(prefix + "c0");
+  if (source && !prefix.empty() && op != "c0") out.push_back("c0");
   return out;
 }
 

@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <string>
 #include <string_view>
 
@@ -34,6 +35,20 @@ struct GenerateOptions {
 std::string generate_listing(std::string_view profile, std::uint64_t seed, std::size_t index,
                              const GenerateOptions& options);
 std::string generate_listing(std::string_view profile, std::uint64_t seed, std::size_t index);
+
+// What a set of listings exercises, counted by name: the figures `tierlift generate` prints
+// and the coverage tests check.
+struct Coverage {
+  std::size_t listings = 0, invalid = 0;      // invalid: did not parse or validate (not counted)
+  std::map<std::string, std::size_t> opcodes; // "mad", "texm3x3spec"
+  std::map<std::string, std::size_t> source_modifiers;      // "negate (-)", "_bx2", "1-"
+  std::map<std::string, std::size_t> instruction_modifiers; // "_sat", "_pp", "_x2", "+" (co-issue)
+  std::map<std::string, std::size_t> register_files;        // "r", "c", "oPos", "c[a0]", "c[aL]"
+  std::map<std::string, std::size_t> swizzles;              // ".xyzw" for identity, ".x", ".wzyx"
+  std::map<std::string, std::size_t> write_masks;           // ".xyzw" for full, ".xy"
+  void add(const std::string& listing);
+  std::string summary() const; // one line per category: "opcodes 32: abs add ..."
+};
 
 // Delta reduction: the smallest listing found that still satisfies still_fails (the
 // predicate decides validity and failure). Lines first (ddmin over the statements after the
