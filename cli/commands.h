@@ -28,5 +28,6 @@ void register_spirv_command(CLI::App& app);
 void register_glow_command(CLI::App& app);
 void register_report_command(CLI::App& app); // report, report --stress
 void register_glsl_command(CLI::App& app);
+void register_generate_command(CLI::App& app);
 
 } // namespace tierlift::cli
