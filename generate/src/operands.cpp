@@ -163,7 +163,9 @@ std::vector<ir::Instruction> propose(Builder& b, const ir::OpInfo& row) {
     ins.src.push_back(*s);
   }
   if (row.op == Opcode::CallNz && b.rng.chance(0.5)) ins.src[1].mod = ir::SrcMod::Not;
-  if (row.cls == ir::OpClass::Arith) random_instruction_modifiers(b, ins);
+  // Modifiers act on a result: none on nop (the validator lets nop_sat through, but the
+  // token stream has nowhere to keep it).
+  if (row.cls == ir::OpClass::Arith && row.has_dst) random_instruction_modifiers(b, ins);
   // ps_2_0 texld reads a coordinate register whole: a t# or a temp, no modifier.
   if (row.cls == ir::OpClass::Texture && b.profile == ir::Profile::ps_2_0) {
     if (ins.dst) ins.dst->mask = ir::kFullMask;
