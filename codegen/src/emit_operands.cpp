@@ -9,6 +9,8 @@
 #include <bit>
 #include <cfloat>
 #include <cmath>
+#include <cstdlib>
+#include <string_view>
 
 #include "tierlift/codegen/emitter.h"
 #include "tierlift/ir/numerics.h"
@@ -23,6 +25,24 @@ using spv::Op;
 using SC = spv::StorageClass;
 
 namespace {
+// TEST ONLY, a planted translation bug: with TIERLIFT_TEST_PLANT=drop-negate in the
+// environment, every source modifier loses its negation here (-r0 reads r0, -r0_bx2 reads
+// r0_bx2). The generated corpus must find it and the reducer shrink it
+// (tests/vulkan/generated_plant_test.cpp, docs/generate.md). This is the one place the
+// variable is read; nothing else sets it.
+SrcMod planted(SrcMod m) {
+  const char* plant = std::getenv("TIERLIFT_TEST_PLANT");
+  if (!plant || std::string_view(plant) != "drop-negate") return m;
+  switch (m) {
+  case SrcMod::Neg: return SrcMod::None;
+  case SrcMod::BiasNeg: return SrcMod::Bias;
+  case SrcMod::Bx2Neg: return SrcMod::Bx2;
+  case SrcMod::X2Neg: return SrcMod::X2;
+  case SrcMod::AbsNeg: return SrcMod::Abs;
+  default: return m;
+  }
+}
+
 // The four components hold the same bits (NaN payloads and zero signs included).
 bool replicated(const std::array<float, 4>& v) {
   const auto x = std::bit_cast<uint32_t>(v[0]);
@@ -175,7 +195,7 @@ Id Emitter::load_src(const ir::SrcOperand& s, uint32_t index_offset) {
              {v, v, ir::swizzle_component(s.swizzle, 0), ir::swizzle_component(s.swizzle, 1),
               ir::swizzle_component(s.swizzle, 2), ir::swizzle_component(s.swizzle, 3)});
   }
-  const Id out = ir::apply_source_modifier(arith(4), s.mod, v);
+  const Id out = ir::apply_source_modifier(arith(4), planted(s.mod), v);
   uint8_t swizzled = 0;
   for (int c = 0; c < 4; ++c)
     swizzled |=

@@ -1,0 +1,51 @@
+// generate_listing: the profile's sections in order, then the printed program.
+#include <stdexcept>
+#include <string>
+
+#include "builder.h"
+#include "tierlift/asm/printer.h"
+#include "tierlift/ir/profile.h"
+
+namespace tierlift::gen {
+
+std::string generate_listing(std::string_view profile_name, std::uint64_t seed, std::size_t index,
+                             const GenerateOptions& options) {
+  const std::optional<ir::Profile> profile = ir::parse_profile(profile_name);
+  if (!profile) throw std::invalid_argument("unknown profile '" + std::string(profile_name) + "'");
+  // One stream per (profile, seed, index): listing k does not depend on listings before it.
+  detail::Rng mix(seed ^ (0x9E3779B97F4A7C15ull * (index + 1)) ^
+                  (std::uint64_t(ir::profile_index(*profile)) << 56));
+  detail::Builder b(*profile, options, mix.next());
+  const std::size_t lo = options.min_instructions;
+  const std::size_t n =
+      lo + b.rng.below(options.max_instructions >= lo ? options.max_instructions - lo + 1 : 1);
+  switch (*profile) {
+  case ir::Profile::ps_1_1:
+  case ir::Profile::ps_1_2:
+  case ir::Profile::ps_1_3:
+    detail::texture_stages_ps11_13(b);
+    detail::instruction_loop(b, n, false, true);
+    break;
+  case ir::Profile::ps_1_4:
+    b.pending_phase = b.rng.chance(0.6);
+    detail::texture_section_ps14(b, false);
+    detail::instruction_loop(b, n / 2, false, true);
+    if (b.pending_phase) {
+      b.pending_phase = false;
+      if (b.accept({detail::make(ir::Opcode::Phase, std::nullopt)}))
+        detail::texture_section_ps14(b, true);
+      else
+        b.pending_phase = true; // the body is valid with the tail's marker only
+    }
+    detail::instruction_loop(b, n - n / 2, false, true);
+    break;
+  default: detail::instruction_loop(b, n, true, true); break;
+  }
+  return as::print_program(b.finish());
+}
+
+std::string generate_listing(std::string_view profile, std::uint64_t seed, std::size_t index) {
+  return generate_listing(profile, seed, index, GenerateOptions{});
+}
+
+} // namespace tierlift::gen
