@@ -97,9 +97,12 @@ std::vector<std::string> simpler_operands(const std::string& op, bool source) {
     out.push_back(no_suffix);
   }
   if (dot != std::string::npos) out.push_back(op.substr(0, dot));
-  // The constant keeps the sign or complement: a failure may need the modifier, not the register.
+  // The constant keeps the sign or complement: a failure may need the modifier, not the
+  // register. A second constant for a failure that needs two different values (lrp s0, s1, s2
+  // with s1 = s2 hides s0).
   if (source && op != prefix + "c0") out.push_back(prefix + "c0");
   if (source && !prefix.empty() && op != "c0") out.push_back("c0");
+  if (source && op != prefix + "c0" && op != prefix + "c1") out.push_back(prefix + "c1");
   return out;
 }
 

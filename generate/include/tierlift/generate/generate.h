@@ -53,7 +53,7 @@ struct Coverage {
 // Delta reduction: the smallest listing found that still satisfies still_fails (the
 // predicate decides validity and failure). Lines first (ddmin over the statements after the
 // version line), then operands (swizzles and masks dropped, modifiers dropped, sources
-// replaced by c0), repeated until nothing more goes. Deterministic. `text` itself must
+// replaced by c0, else c1), repeated until nothing more goes. Deterministic. `text` itself must
 // satisfy the predicate; otherwise it is returned unchanged.
 std::string reduce_listing(const std::string& text,
                            const std::function<bool(const std::string&)>& still_fails);
