@@ -28,5 +28,6 @@ void register_spirv_command(CLI::App& app);
 void register_glow_command(CLI::App& app);
 void register_report_command(CLI::App& app); // report, report --stress
 void register_glsl_command(CLI::App& app);
+void register_test_command(CLI::App& app); // test, test merge
 
 } // namespace tierlift::cli

@@ -69,6 +69,7 @@ int main(int argc, char** argv) {
   tierlift::cli::register_glow_command(app);
   tierlift::cli::register_report_command(app);
   tierlift::cli::register_glsl_command(app);
+  tierlift::cli::register_test_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
