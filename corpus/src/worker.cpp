@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include "tierlift/corpus/runner.h"
+#include "tierlift/vulkan/device.h"
 
 namespace tierlift::corpus {
 namespace {
@@ -61,7 +62,12 @@ int worker_loop(std::FILE* in, std::FILE* out, StageOptions options,
   for (;;) {
     bool eof = false;
     const std::string line = read_line(in, eof);
-    if (eof) return 0;
+    if (eof) {
+      // The pipelines this worker made, for the next worker and the next run (the device's
+      // cache file in the user's cache folder, shared by every worker on the machine).
+      if (options.device) options.device->save_pipeline_cache();
+      return 0;
+    }
     std::optional<Case> c = case_from_json(nlohmann::json::parse(line, nullptr, false));
     if (!c) {
       std::fprintf(stderr, "tierlift test --worker: not a case: %s\n", line.c_str());

@@ -13,13 +13,13 @@ using tierlift::test::read_all;
 
 namespace {
 
-struct Run {
+struct TestRun {
   int exit_code = -1;
   std::string out;
 };
 
 // `env` goes before the binary (VAR=value ...).
-Run tierlift_test(const std::string& env, const std::string& args) {
+TestRun tierlift_test(const std::string& env, const std::string& args) {
   fs::path log = fs::temp_directory_path() / ("tierlift_test_cmd_" + std::to_string(::getpid()));
   std::string cmd =
       env + " " + TIERLIFT_CLI_PATH + " test -q " + args + " >" + log.string() + " 2>&1";
@@ -68,7 +68,7 @@ fs::path corpus(const std::string& name) {
 
 TEST(CliTest, CleanCorpusPassesEveryStageOnBothDevices) {
   fs::path root = corpus("clean"), out = root.parent_path() / "out";
-  Run r = tierlift_test("", "-j 2 -o " + out.string() + " " + root.string());
+  TestRun r = tierlift_test("", "-j 2 -o " + out.string() + " " + root.string());
   EXPECT_EQ(r.exit_code, 0) << r.out << read_all(out / "summary.md");
   auto v = verdicts(out);
   ASSERT_EQ(v.size(), 5u) << r.out;
@@ -83,8 +83,8 @@ TEST(CliTest, KilledHungAndTruncatedCostOneCaseEach) {
   fs::path root = corpus("contain"), out = root.parent_path() / "out";
   // A token stream cut short inside its first instruction (and not a whole DWORD).
   write(root / "f.pso", std::string("\x00\x02\xff\xff\x01\x00\x00", 7));
-  Run r = tierlift_test("TIERLIFT_TEST_CRASH_ON=c/b.psh TIERLIFT_TEST_HANG_ON=c/d.psh",
-                        "-j 2 --timeout 3 --no-rerun -o " + out.string() + " " + root.string());
+  TestRun r = tierlift_test("TIERLIFT_TEST_CRASH_ON=c/b.psh TIERLIFT_TEST_HANG_ON=c/d.psh",
+                            "-j 2 --timeout 3 --no-rerun -o " + out.string() + " " + root.string());
   EXPECT_EQ(r.exit_code, 1) << r.out;
   auto v = verdicts(out);
   EXPECT_EQ(v["c/a.psh"], "pass");
@@ -96,39 +96,45 @@ TEST(CliTest, KilledHungAndTruncatedCostOneCaseEach) {
   EXPECT_NE(read_all(out / "results.jsonl").find("signal 9"), std::string::npos);
   // Every failure names the command that reproduces it alone.
   EXPECT_NE(r.out.find("reproduce: tierlift test"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("--only 'c/b.psh@"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("--only c/b.psh@"), std::string::npos) << r.out;
 }
 
 TEST(CliTest, BaselineNewFailureFixedAndUpdate) {
   fs::path root = corpus("baseline"), dir = root.parent_path();
   write(root / "bad.psh", "ps_2_0\nmov oC0, r7\n"); // r7 read before written
-  Run first = tierlift_test("", "--check-only -o " + (dir / "o1").string() + " " + root.string());
+  TestRun first =
+      tierlift_test("", "--check-only -o " + (dir / "o1").string() + " " + root.string());
   EXPECT_EQ(first.exit_code, 1) << first.out;
   fs::copy_file(dir / "o1" / "failures.csv", dir / "baseline.csv");
-  Run second = tierlift_test("", "--check-only --baseline " + (dir / "baseline.csv").string() +
-                                     " -o " + (dir / "o2").string() + " " + root.string());
+  TestRun second = tierlift_test("", "--check-only --baseline " + (dir / "baseline.csv").string() +
+                                         " -o " + (dir / "o2").string() + " " + root.string());
   EXPECT_EQ(second.exit_code, 0) << second.out;
   // A skipped case never runs.
   write(dir / "skips.txt", "c/a\\.psh@\n");
-  Run skipped = tierlift_test("", "--check-only --skips " + (dir / "skips.txt").string() + " -o " +
-                                      (dir / "o4").string() + " " + root.string());
+  TestRun skipped = tierlift_test("", "--check-only --skips " + (dir / "skips.txt").string() +
+                                          " -o " + (dir / "o4").string() + " " + root.string());
   EXPECT_EQ(verdicts(dir / "o4")["c/a.psh"], "skip");
-  // --update-baseline writes this run's failures (none now).
-  Run update = tierlift_test("", "--check-only --update-baseline --baseline " +
-                                     (dir / "baseline.csv").string() + " -o " +
-                                     (dir / "o5").string() + " " + root.string());
+  // --update-baseline writes this run's failures: bad.psh, failing validation, in place of
+  // what the file held.
+  write(dir / "baseline.csv", "id,verdict,stage\nold@0,fail,parse\n");
+  TestRun update = tierlift_test("", "--check-only --update-baseline --baseline " +
+                                         (dir / "baseline.csv").string() + " -o " +
+                                         (dir / "o5").string() + " " + root.string());
   EXPECT_EQ(update.exit_code, 0) << update.out;
-  EXPECT_EQ(read_all(dir / "baseline.csv"), "id,verdict,stage\n");
+  const std::string baseline = read_all(dir / "baseline.csv");
+  EXPECT_EQ(baseline.substr(0, 27), "id,verdict,stage\nc/bad.psh@") << baseline;
+  EXPECT_TRUE(baseline.ends_with(",fail,validate\n")) << baseline;
+  EXPECT_EQ(std::count(baseline.begin(), baseline.end(), '\n'), 2);
 }
 
 TEST(CliTest, FixedBaselineFailureExitsOne) {
   fs::path root = corpus("fixed"), dir = root.parent_path();
-  Run list = tierlift_test("", "--list " + root.string());
+  TestRun list = tierlift_test("", "--list " + root.string());
   const std::string a_id = list.out.substr(0, list.out.find('\n'));
   ASSERT_EQ(a_id.substr(0, 8), "c/a.psh@") << list.out;
   write(dir / "baseline.csv", "id,verdict,stage\n" + a_id + ",fail,diff\n");
-  Run r = tierlift_test("", "--check-only --baseline " + (dir / "baseline.csv").string() + " -o " +
-                                (dir / "o").string() + " " + root.string());
+  TestRun r = tierlift_test("", "--check-only --baseline " + (dir / "baseline.csv").string() +
+                                    " -o " + (dir / "o").string() + " " + root.string());
   EXPECT_EQ(r.exit_code, 1) << r.out;
   EXPECT_NE(r.out.find("FIXED " + a_id), std::string::npos) << r.out;
 }
@@ -144,7 +150,7 @@ TEST(CliTest, ShardsMergeIntoTheSingleRunAndResumeFinishesARun) {
     tierlift_test("", "--shard " + std::to_string(i) + "/3 -o " + d + " " + common);
     shard_dirs += " " + d;
   }
-  Run merge = tierlift_test("", "merge" + shard_dirs + " -o " + (dir / "merged").string());
+  TestRun merge = tierlift_test("", "merge" + shard_dirs + " -o " + (dir / "merged").string());
   EXPECT_EQ(merge.exit_code, 1) << merge.out; // bad.psh fails in both
   for (const char* f : {"results.csv", "failures.csv", "summary.md"})
     EXPECT_EQ(read_all(dir / "merged" / f), read_all(dir / "one" / f)) << f;

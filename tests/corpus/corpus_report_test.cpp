@@ -41,7 +41,7 @@ fs::path fresh_dir(const std::string& name) {
 TEST(CorpusExpectations, BaselineFlakesAndFixed) {
   Expectations e;
   e.baseline = {"known@1", "gone@2"};
-  e.flakes.emplace("^wobbly/");
+  e.flakes.emplace_back("^wobbly/");
   EXPECT_EQ(classify(result("known@1", Verdict::Fail), e), Outcome::ExpectedFailure);
   EXPECT_EQ(classify(result("gone@2", Verdict::Pass), e), Outcome::Fixed);
   EXPECT_EQ(classify(result("new@3", Verdict::Crash), e), Outcome::NewFailure);
