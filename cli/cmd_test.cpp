@@ -156,10 +156,11 @@ void print_outcome(const std::vector<corpus::CaseResult>& results, const corpus:
   for (const corpus::CaseResult& r : results) {
     const corpus::Outcome o = corpus::classify(r, e);
     if (o == corpus::Outcome::NewFailure) {
-      std::string stage = r.failed_stage();
+      std::string stage = r.failed_stage(), why = r.note;
+      for (const corpus::StageResult& s : r.stages)
+        if (s.stage == stage) why = s.message;
       fmt::print("FAIL {} ({} {}): {}\n  reproduce: {}\n", r.id, stage.empty() ? "worker" : stage,
-                 corpus::verdict_name(r.verdict), r.note.empty() ? "see results.jsonl" : r.note,
-                 r.repro);
+                 corpus::verdict_name(r.verdict), why, r.repro);
     } else if (o == corpus::Outcome::Fixed) {
       fmt::print("FIXED {}: in the baseline, passes now (update the baseline)\n", r.id);
     }

@@ -71,10 +71,53 @@ std::vector<uint32_t> sampled_stages(const ir::Program& p) {
   return out;
 }
 
+// A vertex shader's oPos usually comes from constants (a world-view-projection matrix): with
+// generated constants the quad lands off the target, and two devices that agree on an empty
+// image prove nothing. The run draws a copy whose oPos writes go to a temporary register the
+// shader never uses, followed by `mov oPos, v<position>`: the quad covers the target and what
+// the shader computes for oD0 is on every pixel. Programs with subroutines (where "the end"
+// is not the last statement) or no position input declared are drawn as they are.
+ir::Program with_quad_position(const ir::Program& p) {
+  const uint32_t position = pass::position_input(p);
+  bool declared = false, used[256] = {};
+  uint32_t last_seq = 0;
+  for (const ir::Declaration& d : p.decls) {
+    declared |= d.reg.file == ir::RegFile::Input && d.reg.index == position;
+    last_seq = std::max(last_seq, d.seq);
+  }
+  for (const ir::ConstDef& d : p.defs) last_seq = std::max(last_seq, d.seq);
+  for (const ir::Instruction& ins : p.code) {
+    if (ins.op == ir::Opcode::Ret || ins.op == ir::Opcode::Label) return p;
+    if (ins.dst && ins.dst->file == ir::RegFile::Temp && ins.dst->index < 256)
+      used[ins.dst->index] = true;
+    for (const ir::SrcOperand& s : ins.src)
+      if (s.file == ir::RegFile::Temp && s.index < 256) used[s.index] = true;
+    last_seq = std::max(last_seq, ins.seq);
+  }
+  uint32_t spare = ir::limits(p.profile).temps;
+  while (spare > 0 && used[spare - 1]) --spare;
+  if (!declared || spare == 0) return p;
+  ir::Program q = p;
+  for (ir::Instruction& ins : q.code)
+    if (ins.dst && ins.dst->file == ir::RegFile::RastOut && ins.dst->index == ir::kRastPos) {
+      ins.dst->file = ir::RegFile::Temp;
+      ins.dst->index = spare - 1;
+    }
+  ir::Instruction mov;
+  mov.op = ir::Opcode::Mov;
+  mov.dst = ir::DstOperand{ir::RegFile::RastOut, ir::kRastPos, ir::kFullMask, {}};
+  ir::SrcOperand from;
+  from.file = ir::RegFile::Input;
+  from.index = position;
+  mov.src.push_back(from);
+  mov.seq = last_seq + 1;
+  q.code.push_back(std::move(mov));
+  return q;
+}
+
 pass::RunRequest request(const ir::Program& program, const StageOptions& o, Rng& rng,
                          unsigned set) {
   pass::RunRequest r;
-  auto shared = std::make_shared<const ir::Program>(program);
   const ir::ProfileLimits& lim = ir::limits(program.profile);
   r.width = r.height = o.size;
   r.format = img::Format::RGBA32F;
@@ -91,7 +134,7 @@ pass::RunRequest request(const ir::Program& program, const StageOptions& o, Rng&
     r.constants.push_back(
         {pass::StageMask::Both, ir::RegFile::ConstBool, i, {}, {}, rng.below(2) == 1});
   if (program.stage() == ir::ShaderStage::Vertex) {
-    r.vs = shared;
+    r.vs = std::make_shared<const ir::Program>(with_quad_position(program));
     const uint32_t position = pass::position_input(program);
     const std::vector<uint32_t> uv = pass::texcoord_inputs(program);
     for (uint32_t v = 0; v < lim.inputs; ++v) {
@@ -100,7 +143,7 @@ pass::RunRequest request(const ir::Program& program, const StageOptions& o, Rng&
       r.attrs.push_back({ir::RegFile::Input, v, vec(rng, set), is_uv});
     }
   } else {
-    r.ps = shared;
+    r.ps = std::make_shared<const ir::Program>(program);
     for (uint32_t v = 0; v < lim.inputs; ++v)
       r.inputs.push_back({ir::RegFile::Input, v, vec(rng, set), false});
     for (uint32_t t = 0; t < lim.texcoords; ++t)
