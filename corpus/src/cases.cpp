@@ -43,8 +43,12 @@ constexpr std::streamsize kHashCap = std::streamsize{64} << 20;
 std::optional<std::string> read_prefix(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
   if (!in) return std::nullopt;
-  std::string bytes(static_cast<size_t>(kHashCap), '\0');
-  in.read(bytes.data(), kHashCap);
+  // Sized to the file (a buffer of the whole cap per file would cost a page fault per 4 KiB).
+  std::error_code ec;
+  const uintmax_t size = fs::file_size(p, ec);
+  const std::streamsize want = ec ? kHashCap : std::min<std::streamsize>(kHashCap, size);
+  std::string bytes(static_cast<size_t>(want), '\0');
+  in.read(bytes.data(), want);
   bytes.resize(static_cast<size_t>(in.gcount()));
   return bytes;
 }
