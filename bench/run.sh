@@ -7,7 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build}
 benches=(bench_front_end bench_codegen)
-for extra in bench_interpreter bench_vulkan bench_glow; do
+for extra in bench_interpreter bench_vulkan bench_glow bench_corpus; do
   if grep -q "$extra" "$build/build.ninja" 2>/dev/null; then benches+=("$extra"); fi
 done
 cmake --build "$build" --target "${benches[@]}" >/dev/null
@@ -87,6 +87,23 @@ for case in glow_cases:
     if old and new:
         print(f"glow 1080p/4 {case}: interpreter speed-up new over old = "
               f"{sec(old)/sec(new):.1f}x ({sec(old)*1e3:.0f} ms -> {sec(new)*1e3:.0f} ms)")
+# tierlift test (bench_corpus): cases per second, and the full lift per case against the
+# floor measured in the same run, lavapipe's own vkCreateGraphicsPipelines time for the same
+# cases (target <= 1.5); two workers against one (target >= 1.8).
+for what in ("CheckOnly", "FullLift"):
+    for jobs in (1, 2):
+        w = find(f"BM_Corpus_Workers/{what}/{jobs}")
+        if w:
+            print(f"tierlift test {what}, {jobs} worker(s): {w['items_per_second']:.1f} cases/s")
+    one, two = find(f"BM_Corpus_Workers/{what}/1"), find(f"BM_Corpus_Workers/{what}/2")
+    if one and two:
+        print(f"tierlift test {what}: 2 workers / 1 worker = {sec(one)/sec(two):.2f}x (target >= 1.8)")
+lift = find("BM_Corpus_InProcess/FullLift")
+if lift and lift.get("floor_ms_per_case", 0) > 0:
+    per_case = 1e3 / lift["items_per_second"]
+    print(f"tierlift test full lift in process: {per_case:.1f} ms/case, vkCreateGraphicsPipelines "
+          f"floor {lift['floor_ms_per_case']:.1f} ms/case, ratio "
+          f"{per_case / lift['floor_ms_per_case']:.2f} (target <= 1.5)")
 # Scaling: BM_GlowScale_<device>/<w>x<h>/taps:<n>. The exponent b of time = a * (pixels *
 # taps)^b, least squares in log-log over every size and tap count of the device (1.0: linear).
 import math, re

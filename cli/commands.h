@@ -28,6 +28,7 @@ void register_spirv_command(CLI::App& app);
 void register_glow_command(CLI::App& app);
 void register_report_command(CLI::App& app); // report, report --stress
 void register_glsl_command(CLI::App& app);
+void register_test_command(CLI::App& app); // test, test merge
 void register_generate_command(CLI::App& app);
 void register_diff_command(CLI::App& app);
 // -o "" on every subcommand is a usage error, not "no output" (registered commands first).

@@ -74,6 +74,7 @@ int run_main(int argc, char** argv) {
   tierlift::cli::register_glow_command(app);
   tierlift::cli::register_report_command(app);
   tierlift::cli::register_glsl_command(app);
+  tierlift::cli::register_test_command(app);
   tierlift::cli::register_generate_command(app);
   tierlift::cli::register_diff_command(app);
   tierlift::cli::refuse_empty_outputs(app);

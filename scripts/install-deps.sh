@@ -15,4 +15,5 @@ $SUDO apt-get install -y --no-install-recommends \
   libglm-dev libgtest-dev libgmock-dev libbenchmark-dev \
   libcli11-dev libfmt-dev nlohmann-json3-dev libstb-dev libpng-dev zlib1g-dev \
   gnuplot-nox \
+  slurm-wlm munge \
   libopencv-imgproc-dev  # OpenCV core + imgproc (~6.5 MB): the glow benchmark's peer only

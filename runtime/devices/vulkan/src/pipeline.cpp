@@ -1,12 +1,18 @@
 // Render pass, framebuffer, sampler and graphics pipeline of one pass.
 #include "pipeline.h"
+#include "tierlift/vulkan/pipeline_stats.h"
 
 #include "pipeline_cache.h"
+
+#include <atomic>
+#include <chrono>
 
 #include <fmt/format.h>
 
 namespace tierlift::vulkan {
 namespace {
+// What pipeline_creation_ms (device.h) reports: every device's pipeline creations.
+std::atomic<int64_t> g_pipeline_creation_ns{0};
 
 VkSamplerAddressMode address_mode(pass::AddressMode m) {
   switch (m) {
@@ -271,11 +277,19 @@ std::string create_pipeline(Device::Impl& d, Cleanup& cleanup, const PipelineDes
   ci.pDynamicState = &ds;
   ci.layout = desc.layout;
   ci.renderPass = desc.render_pass;
+  const auto t0 = std::chrono::steady_clock::now();
   VkResult r = vkCreateGraphicsPipelines(d.device, pipeline_cache(d), 1, &ci, nullptr, &out);
+  g_pipeline_creation_ns +=
+      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - t0)
+          .count();
   if (r != VK_SUCCESS) return vk_error("vkCreateGraphicsPipelines", r);
   d.pipeline_cache_dirty = true;
   cleanup.destroy_later(d.device, out, vkDestroyPipeline);
   return {};
+}
+
+double pipeline_creation_ms() {
+  return static_cast<double>(g_pipeline_creation_ns.load()) / 1e6;
 }
 
 } // namespace tierlift::vulkan

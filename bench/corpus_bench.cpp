@@ -1,0 +1,99 @@
+// `tierlift test` throughput: cases per second over our listings (and the shared corpus
+// where present), check-only and the full lift, in process and with 1 and 2 worker
+// processes; and the floor it is held against, measured in the same run: the time lavapipe
+// itself spends in vkCreateGraphicsPipelines for the pipelines of the same cases
+// (vulkan::pipeline_creation_ms). bench/run.sh prints the ratios.
+#include <filesystem>
+#include <unistd.h>
+
+#include <benchmark/benchmark.h>
+
+#include "tierlift/corpus/cases.h"
+#include "tierlift/corpus/runner.h"
+#include "tierlift/corpus/stages.h"
+#include "tierlift/vulkan/pipeline_stats.h"
+#include "tierlift/vulkan/process_device.h"
+
+namespace {
+
+using namespace tierlift;
+
+const std::vector<corpus::Case>& cases() {
+  static const std::vector<corpus::Case> all = [] {
+    std::vector<std::string> roots{std::string(TIERLIFT_SOURCE_DIR) + "/listings"};
+    if (std::filesystem::is_directory(TIERLIFT_SHARED_DIR "/corpus"))
+      roots.push_back(TIERLIFT_SHARED_DIR "/corpus");
+    auto found = corpus::discover(roots);
+    return found ? *found : std::vector<corpus::Case>{};
+  }();
+  return all;
+}
+
+// In process: the stages alone, no worker, no pipes. The full lift also reports the floor.
+void BM_Corpus_InProcess(benchmark::State& state, bool check_only) {
+  corpus::StageOptions o;
+  o.check_only = check_only;
+  if (!check_only) {
+    ir::Result<vulkan::Device*> d = vulkan::process_device({});
+    if (!d) {
+      state.SkipWithError(d.message().c_str());
+      return;
+    }
+    o.device = *d;
+  }
+  double floor_ms = 0;
+  size_t n = 0;
+  for (auto _ : state) {
+    const double before = vulkan::pipeline_creation_ms();
+    for (const corpus::Case& c : cases()) benchmark::DoNotOptimize(corpus::run_case(c, o));
+    floor_ms += vulkan::pipeline_creation_ms() - before;
+    n += cases().size();
+  }
+  state.SetItemsProcessed(static_cast<int64_t>(n));
+  state.counters["cases"] = static_cast<double>(cases().size());
+  state.counters["floor_ms_per_case"] = n ? floor_ms / static_cast<double>(n) : 0;
+}
+
+// Worker processes (`tierlift test --worker`), as a run uses them: pipes, process start,
+// one Vulkan device per worker.
+void BM_Corpus_Workers(benchmark::State& state, bool check_only) {
+  const auto out = std::filesystem::temp_directory_path() /
+                   ("tierlift_bench_corpus_" + std::to_string(::getpid()));
+  corpus::RunOptions o;
+  o.worker_argv = {TIERLIFT_CLI_PATH, "test", "--worker"};
+  if (check_only) o.worker_argv.push_back("--check-only");
+  o.jobs = static_cast<unsigned>(state.range(0));
+  o.out_dir = out.string();
+  o.rerun = false;
+  size_t n = 0;
+  for (auto _ : state) {
+    auto r = corpus::run_corpus(cases(), o);
+    if (!r) state.SkipWithError(r.message().c_str());
+    n += cases().size();
+  }
+  std::filesystem::remove_all(out);
+  state.SetItemsProcessed(static_cast<int64_t>(n));
+}
+
+} // namespace
+
+BENCHMARK_CAPTURE(BM_Corpus_InProcess, CheckOnly, true)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_Corpus_InProcess, FullLift, false)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(2);
+BENCHMARK_CAPTURE(BM_Corpus_Workers, CheckOnly, true)
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(2);
+BENCHMARK_CAPTURE(BM_Corpus_Workers, FullLift, false)
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
+BENCHMARK_MAIN();

@@ -1,0 +1,63 @@
+// The coordinator of a corpus run and its workers. Each case runs in a worker process (the
+// `tierlift test --worker` command, or any command that speaks the protocol below), so a
+// shader that crashes, aborts or hangs the lift costs its own case — reported `crash` with
+// the signal or exit status, or `timeout` with the limit — and the worker is started again.
+//
+// Protocol, one JSON object per line: the coordinator writes a case to the worker's standard
+// input ({"id", "path"} or {"id", "text", "generated": {...}}); the worker answers with the
+// case's results.jsonl line on its standard output. End of input: the worker exits.
+//
+// Every result is appended to DIR/results.jsonl (and flushed) as it arrives, so a run killed
+// whole keeps what it finished, and `resume` continues from there.
+#pragma once
+
+#include <cstdio>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "tierlift/corpus/cases.h"
+#include "tierlift/corpus/report.h"
+#include "tierlift/corpus/result.h"
+#include "tierlift/corpus/stages.h"
+#include "tierlift/ir/result.h"
+
+namespace tierlift::corpus {
+
+nlohmann::json case_json(const Case& c);
+std::optional<Case> case_from_json(const nlohmann::json& j);
+
+struct RunOptions {
+  std::vector<std::string> worker_argv; // argv[0] a path: the worker command
+  unsigned jobs = 1;                    // worker processes
+  double timeout_s = 60;                // per case, wall clock
+  std::string out_dir;
+  bool resume = false;   // keep DIR/results.jsonl and run only the cases it lacks
+  bool rerun = true;     // run each unexpected failure once more (flake or failure?)
+  bool progress = false; // a progress line on standard error (a terminal)
+  Expectations expectations;
+  // The command that reproduces a case alone (stored with its result).
+  std::function<std::string(const Case&)> repro;
+};
+
+// Runs `cases` (their --skips already applied by the caller or not: a case whose id matches
+// a skip pattern is recorded `skip` without running) and writes the reports. The results
+// are every case of DIR/results.jsonl afterwards (resumed ones included), sorted by id.
+ir::Result<std::vector<CaseResult>> run_corpus(const std::vector<Case>& cases,
+                                               const RunOptions& options);
+
+// A failing generated case made smaller: the listing text, and the predicate "still fails the
+// same stage" that the reducer keeps true (gen::reduce_listing has this shape).
+using Reducer =
+    std::function<std::string(const std::string&, const std::function<bool(const std::string&)>&)>;
+
+// The worker's loop: cases from `in`, results to `out`, until end of input. The device is
+// made by `make_device` on the first case that reaches the draw (null: the draw is skipped).
+// Test hooks (environment): TIERLIFT_TEST_CRASH_ON / TIERLIFT_TEST_HANG_ON, a substring of an
+// id: the worker kills itself with SIGKILL / sleeps forever on that case.
+int worker_loop(std::FILE* in, std::FILE* out, StageOptions options,
+                const std::function<vulkan::Device*()>& make_device, const Reducer& reducer);
+
+} // namespace tierlift::corpus

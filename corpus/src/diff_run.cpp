@@ -1,0 +1,229 @@
+#include "diff_run.h"
+
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "tierlift/corpus/cases.h"
+#include "tierlift/effects/device.h"
+#include "tierlift/effects/run_graph.h"
+#include "tierlift/effects/single_pass.h"
+#include "tierlift/image/compare.h"
+#include "tierlift/ir/profile.h"
+#include "tierlift/pass/setup.h"
+
+namespace tierlift::corpus {
+namespace {
+
+// splitmix64: the project's seeded generator (img::builtin_noise uses the same).
+struct Rng {
+  uint64_t state;
+  uint64_t next() {
+    uint64_t z = (state += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+  }
+  uint32_t below(uint32_t n) { return static_cast<uint32_t>(next() % n); }
+};
+
+// NUMERICS.md's special values: zeros, ±1, infinities, NaN, denormals, large magnitudes.
+constexpr float kSpecial[] = {0.0f,
+                              -0.0f,
+                              1.0f,
+                              -1.0f,
+                              std::numeric_limits<float>::infinity(),
+                              -std::numeric_limits<float>::infinity(),
+                              std::numeric_limits<float>::quiet_NaN(),
+                              1e-40f, // denormal
+                              -1e-40f,
+                              1e30f,
+                              -1e30f,
+                              65504.0f};
+
+// Set 0: ordinary values only; set 1: special values only; later sets: a quarter special.
+// Ordinary values are multiples of 1/64 in [-2, 2], exact in every format on the way.
+float value(Rng& rng, unsigned set) {
+  const bool special = set == 1 || (set >= 2 && rng.below(4) == 0);
+  if (special) return kSpecial[rng.below(std::size(kSpecial))];
+  return (static_cast<float>(rng.below(257)) - 128.0f) / 64.0f;
+}
+pass::Vec4 vec(Rng& rng, unsigned set) {
+  return {value(rng, set), value(rng, set), value(rng, set), value(rng, set)};
+}
+// Texture coordinates stay in [0, 1]: addressing at extreme coordinates is a documented
+// difference between the devices (docs/stage-states.md), not what this run looks for.
+pass::Vec4 coordinate(Rng& rng) {
+  auto c = [&] { return static_cast<float>(rng.below(65)) / 64.0f; };
+  return {c(), c(), c(), 1.0f};
+}
+
+std::vector<uint32_t> sampled_stages(const ir::Program& p) {
+  std::vector<uint32_t> out;
+  if (p.profile == ir::Profile::ps_2_0) {
+    for (const ir::Declaration& d : p.decls)
+      if (d.reg.file == ir::RegFile::Sampler && d.sampler_type == ir::SamplerType::Tex2D)
+        out.push_back(d.reg.index);
+  } else if (ir::is_pixel(p.profile)) {
+    for (uint32_t s = 0; s < ir::limits(p.profile).samplers; ++s) out.push_back(s);
+  }
+  return out;
+}
+
+// A vertex shader's oPos usually comes from constants (a world-view-projection matrix): with
+// generated constants the quad lands off the target, and two devices that agree on an empty
+// image prove nothing. The run draws a copy whose oPos writes go to a temporary register the
+// shader never uses, followed by `mov oPos, v<position>`: the quad covers the target and what
+// the shader computes for oD0 is on every pixel. Programs with subroutines (where "the end"
+// is not the last statement) or no position input declared are drawn as they are.
+ir::Program with_quad_position(const ir::Program& p) {
+  const uint32_t position = pass::position_input(p);
+  bool declared = false, used[256] = {};
+  uint32_t last_seq = 0;
+  for (const ir::Declaration& d : p.decls) {
+    declared |= d.reg.file == ir::RegFile::Input && d.reg.index == position;
+    last_seq = std::max(last_seq, d.seq);
+  }
+  for (const ir::ConstDef& d : p.defs) last_seq = std::max(last_seq, d.seq);
+  for (const ir::Instruction& ins : p.code) {
+    if (ins.op == ir::Opcode::Ret || ins.op == ir::Opcode::Label) return p;
+    if (ins.dst && ins.dst->file == ir::RegFile::Temp && ins.dst->index < 256)
+      used[ins.dst->index] = true;
+    for (const ir::SrcOperand& s : ins.src)
+      if (s.file == ir::RegFile::Temp && s.index < 256) used[s.index] = true;
+    last_seq = std::max(last_seq, ins.seq);
+  }
+  uint32_t spare = ir::limits(p.profile).temps;
+  while (spare > 0 && used[spare - 1]) --spare;
+  if (!declared || spare == 0) return p;
+  ir::Program q = p;
+  for (ir::Instruction& ins : q.code)
+    if (ins.dst && ins.dst->file == ir::RegFile::RastOut && ins.dst->index == ir::kRastPos) {
+      ins.dst->file = ir::RegFile::Temp;
+      ins.dst->index = spare - 1;
+    }
+  ir::Instruction mov;
+  mov.op = ir::Opcode::Mov;
+  mov.dst = ir::DstOperand{ir::RegFile::RastOut, ir::kRastPos, ir::kFullMask, {}};
+  ir::SrcOperand from;
+  from.file = ir::RegFile::Input;
+  from.index = position;
+  mov.src.push_back(from);
+  mov.seq = last_seq + 1;
+  q.code.push_back(std::move(mov));
+  return q;
+}
+
+pass::RunRequest request(const ir::Program& program, const StageOptions& o, Rng& rng,
+                         unsigned set) {
+  pass::RunRequest r;
+  const ir::ProfileLimits& lim = ir::limits(program.profile);
+  r.width = r.height = o.size;
+  r.format = img::Format::RGBA32F;
+  r.threads = 1; // the workers are the parallelism
+  for (uint32_t i = 0; i < lim.float_consts; ++i)
+    r.constants.push_back({pass::StageMask::Both, ir::RegFile::Const, i, vec(rng, set), {}, false});
+  for (uint32_t i = 0; i < lim.int_consts; ++i) {
+    pass::ConstSetting c{pass::StageMask::Both, ir::RegFile::ConstInt, i, {}, {}, false};
+    c.i = {static_cast<int32_t>(rng.below(4)), static_cast<int32_t>(rng.below(4)),
+           static_cast<int32_t>(rng.below(4)) - 1, 0};
+    r.constants.push_back(c);
+  }
+  for (uint32_t i = 0; i < lim.bool_consts; ++i)
+    r.constants.push_back(
+        {pass::StageMask::Both, ir::RegFile::ConstBool, i, {}, {}, rng.below(2) == 1});
+  if (program.stage() == ir::ShaderStage::Vertex) {
+    r.vs = std::make_shared<const ir::Program>(with_quad_position(program));
+    const uint32_t position = pass::position_input(program);
+    const std::vector<uint32_t> uv = pass::texcoord_inputs(program);
+    for (uint32_t v = 0; v < lim.inputs; ++v) {
+      if (v == position) continue;
+      const bool is_uv = std::find(uv.begin(), uv.end(), v) != uv.end();
+      r.attrs.push_back({ir::RegFile::Input, v, vec(rng, set), is_uv});
+    }
+  } else {
+    r.ps = std::make_shared<const ir::Program>(program);
+    for (uint32_t v = 0; v < lim.inputs; ++v)
+      r.inputs.push_back({ir::RegFile::Input, v, vec(rng, set), false});
+    for (uint32_t t = 0; t < lim.texcoords; ++t)
+      r.inputs.push_back({ir::RegFile::Texture, t, coordinate(rng), false});
+    for (uint32_t s : sampled_stages(program))
+      r.textures.emplace_back(s, fmt::format("builtin:noise:8x8:{}", rng.below(1000) + 1));
+  }
+  r.filter = set % 2 == 0 ? pass::Filter::Point : pass::Filter::Linear;
+  r.address = pass::AddressMode::Clamp;
+  return r;
+}
+
+// One device's image of the graph, or why not.
+ir::Result<img::Image> draw(const effects::EffectGraph& graph, effects::PassDevice& device) {
+  effects::ImageMap images;
+  ir::Result<effects::GraphRun> run = effects::run_graph(graph, device, images);
+  if (!run) return run.failure();
+  return std::move(images.at(std::string(effects::kSinglePassTarget)));
+}
+
+std::string why(const std::vector<ir::Diagnostic>& ds) {
+  std::string out;
+  for (const ir::Diagnostic& d : ds) {
+    if (d.severity == ir::Severity::Warning) continue;
+    if (!out.empty()) out += "; ";
+    out += d.message;
+  }
+  return out;
+}
+
+} // namespace
+
+StageResult differential_run(const ir::Program& program, const std::string& id,
+                             const StageOptions& o, std::optional<Difference>& difference) {
+  StageResult s{std::string(kStageDiff), Verdict::Pass, {}, 0};
+  Rng rng{o.seed ^ fnv1a64(id)};
+  effects::CpuPassDevice cpu(1);
+  std::unique_ptr<effects::PassDevice> vk = effects::make_vulkan_pass_device(*o.device);
+  for (unsigned set = 0; set < o.input_sets; ++set) {
+    const pass::RunRequest req = request(program, o, rng, set);
+    ir::Result<pass::Pass> made = pass::prepare_pass(req);
+    ir::Result<effects::EffectGraph> graph =
+        made ? effects::single_pass_graph(*made, req.width, req.height, req.format)
+             : ir::Result<effects::EffectGraph>(made.failure());
+    if (!graph) {
+      s.verdict = Verdict::Fail;
+      s.message = fmt::format("input set {}: {}", set, why(graph.diagnostics()));
+      return s;
+    }
+    ir::Result<img::Image> a = draw(*graph, cpu);
+    ir::Result<img::Image> b = draw(*graph, *vk);
+    if (!a || !b) {
+      s.verdict = Verdict::Fail;
+      s.message = fmt::format("input set {}: {}{}", set, a ? "" : "cpu: " + why(a.diagnostics()),
+                              b ? "" : " vulkan: " + why(b.diagnostics()));
+      return s;
+    }
+    ir::Result<img::Comparison> c = img::compare(*a, *b);
+    if (!c) {
+      s.verdict = Verdict::Fail;
+      s.message = c.message();
+      return s;
+    }
+    img::Verdict v = img::judge(*c, req.format);
+    if (v.pass) continue;
+    Difference d;
+    d.input_set = set;
+    d.x = c->worst_x;
+    d.y = c->worst_y;
+    d.channel = c->worst_channel;
+    d.cpu = a->at(d.x, d.y)[d.channel];
+    d.vulkan = b->at(d.x, d.y)[d.channel];
+    d.summary = v.summary;
+    s.verdict = Verdict::Fail;
+    s.message = fmt::format("input set {}: pixel {},{} {}: interpreter {} vulkan {} ({})", set, d.x,
+                            d.y, "rgba"[d.channel], d.cpu, d.vulkan, v.summary);
+    difference = d;
+    return s;
+  }
+  return s;
+}
+
+} // namespace tierlift::corpus

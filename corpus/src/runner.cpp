@@ -1,0 +1,306 @@
+// The coordinator: hands cases to worker processes over pipes, turns a worker's death or
+// silence into that case's verdict, restarts it, appends every result to results.jsonl as
+// it arrives, reruns unexpected failures once, and writes the reports at the end.
+#include "tierlift/corpus/runner.h"
+
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstring>
+#include <deque>
+#include <fcntl.h>
+#include <filesystem>
+#include <map>
+#include <poll.h>
+#include <set>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include "tierlift/io/output_file.h"
+
+namespace tierlift::corpus {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Worker {
+  pid_t pid = -1;
+  int to = -1, from = -1;
+  std::string buffer;
+  std::optional<size_t> job; // index into the case list
+  Clock::time_point started;
+};
+
+bool spawn(Worker& w, const std::vector<std::string>& argv, int log_fd) {
+  int in[2], out[2];
+  if (::pipe2(in, O_CLOEXEC) != 0) return false;
+  if (::pipe2(out, O_CLOEXEC) != 0) {
+    ::close(in[0]);
+    ::close(in[1]);
+    return false;
+  }
+  std::vector<char*> args;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::dup2(in[0], 0);
+    ::dup2(out[1], 1);
+    if (log_fd >= 0) ::dup2(log_fd, 2);
+    ::execv(args[0], args.data());
+    ::_exit(127);
+  }
+  ::close(in[0]);
+  ::close(out[1]);
+  if (pid < 0) {
+    ::close(in[1]);
+    ::close(out[0]);
+    return false;
+  }
+  w = Worker{};
+  w.pid = pid;
+  w.to = in[1];
+  w.from = out[0];
+  return true;
+}
+
+// Closes the pipes and collects the process; its wait status.
+int reap(Worker& w, bool kill_first) {
+  if (kill_first) ::kill(w.pid, SIGKILL);
+  ::close(w.to);
+  ::close(w.from);
+  int status = 0;
+  while (::waitpid(w.pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  w.pid = -1;
+  return status;
+}
+
+std::string death(int status) {
+  if (WIFSIGNALED(status))
+    return fmt::format("worker killed by signal {} ({})", WTERMSIG(status),
+                       ::strsignal(WTERMSIG(status)));
+  return fmt::format("worker exited with status {} before answering", WEXITSTATUS(status));
+}
+
+bool write_all(int fd, const std::string& s) {
+  size_t done = 0;
+  while (done < s.size()) {
+    ssize_t n = ::write(fd, s.data() + done, s.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    done += static_cast<size_t>(n);
+  }
+  return true;
+}
+
+std::string file_name_of(const std::string& id) {
+  std::string out;
+  for (char c : id) out += std::isalnum(static_cast<unsigned char>(c)) || c == '.' ? c : '_';
+  return out;
+}
+
+class Coordinator {
+public:
+  Coordinator(const std::vector<Case>& cases, const RunOptions& o) : cases_(cases), o_(o) {}
+
+  ir::Status run() {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    fs::create_directories(o_.out_dir, ec);
+    jsonl_path_ = (fs::path(o_.out_dir) / "results.jsonl").string();
+    std::set<std::string> done;
+    if (o_.resume)
+      for (CaseResult& r : read_results_jsonl(jsonl_path_)) done.insert(r.id);
+    jsonl_ = ::open(jsonl_path_.c_str(),
+                    O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC | (o_.resume ? 0 : O_TRUNC), 0644);
+    if (jsonl_ < 0)
+      return ir::fail(jsonl_path_, "io", fmt::format("{}: {}", jsonl_path_, std::strerror(errno)));
+    const std::string log = (fs::path(o_.out_dir) / "workers.log").string();
+    log_ = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    std::deque<size_t> pending;
+    for (size_t i = 0; i < cases_.size(); ++i) {
+      if (done.contains(cases_[i].id)) continue;
+      if (Expectations::matches(o_.expectations.skips, cases_[i].id)) {
+        CaseResult r;
+        r.id = cases_[i].id;
+        r.verdict = Verdict::Skip;
+        r.note = "--skips";
+        record(cases_[i], r);
+        continue;
+      }
+      pending.push_back(i);
+    }
+    total_ = pending.size();
+    t0_ = Clock::now();
+    std::signal(SIGPIPE, SIG_IGN);
+    ir::Status s = drain(pending, 1);
+    std::deque<size_t> again(rerun_.begin(), rerun_.end());
+    if (s && o_.rerun && !again.empty()) s = drain(again, 2);
+    for (Worker& w : workers_)
+      if (w.pid > 0) reap(w, false);
+    if (o_.progress) std::fputs("\n", stderr);
+    ::close(jsonl_);
+    if (log_ >= 0) ::close(log_);
+    return s;
+  }
+
+private:
+  ir::Status drain(std::deque<size_t>& pending, unsigned attempt) {
+    attempt_ = attempt;
+    const unsigned jobs = std::max(1u, std::min<unsigned>(o_.jobs, pending.size()));
+    workers_.resize(std::max<size_t>(workers_.size(), jobs));
+    for (;;) {
+      size_t busy = 0;
+      for (size_t k = 0; k < jobs; ++k) {
+        Worker& w = workers_[k];
+        if (!w.job && !pending.empty()) {
+          if (w.pid < 0 && !spawn(w, o_.worker_argv, log_))
+            return ir::fail("worker", "io", "cannot start a worker process");
+          w.job = pending.front();
+          pending.pop_front();
+          w.started = Clock::now();
+          w.buffer.clear();
+          if (!write_all(w.to, case_json(cases_[*w.job]).dump() + "\n")) {
+            finish_dead(w, reap(w, true));
+            continue;
+          }
+        }
+        if (w.job) ++busy;
+      }
+      if (busy == 0 && pending.empty()) return ir::ok_status();
+      wait_for(jobs);
+    }
+  }
+
+  void wait_for(unsigned jobs) {
+    std::vector<pollfd> fds;
+    std::vector<size_t> which;
+    int timeout_ms = 500; // the progress line is redrawn at least this often
+    const auto now = Clock::now();
+    for (size_t k = 0; k < jobs; ++k) {
+      Worker& w = workers_[k];
+      if (!w.job) continue;
+      fds.push_back({w.from, POLLIN, 0});
+      which.push_back(k);
+      const double left_ms =
+          o_.timeout_s * 1000 - std::chrono::duration<double, std::milli>(now - w.started).count();
+      timeout_ms = std::min(timeout_ms, std::max(0, static_cast<int>(left_ms) + 1));
+    }
+    ::poll(fds.data(), fds.size(), timeout_ms);
+    for (size_t i = 0; i < fds.size(); ++i) {
+      Worker& w = workers_[which[i]];
+      if (fds[i].revents) read_from(w);
+    }
+    for (size_t k = 0; k < jobs; ++k) {
+      Worker& w = workers_[k];
+      if (!w.job) continue;
+      if (std::chrono::duration<double>(Clock::now() - w.started).count() <= o_.timeout_s) continue;
+      reap(w, true);
+      CaseResult r =
+          lost(w, Verdict::Timeout,
+               fmt::format("no answer within --timeout {} s; worker killed", o_.timeout_s));
+      record(cases_[*w.job], r);
+      w.job.reset();
+    }
+    progress();
+  }
+
+  void read_from(Worker& w) {
+    char chunk[65536];
+    const ssize_t n = ::read(w.from, chunk, sizeof chunk);
+    if (n < 0 && errno == EINTR) return;
+    if (n <= 0) {
+      finish_dead(w, reap(w, false));
+      return;
+    }
+    w.buffer.append(chunk, static_cast<size_t>(n));
+    const size_t nl = w.buffer.find('\n');
+    if (nl == std::string::npos) return;
+    std::optional<CaseResult> r =
+        from_json(nlohmann::json::parse(w.buffer.substr(0, nl), nullptr, false));
+    w.buffer.erase(0, nl + 1);
+    if (!r) {
+      finish_dead(w, reap(w, true));
+      return;
+    }
+    record(cases_[*w.job], *r);
+    w.job.reset();
+  }
+
+  CaseResult lost(const Worker& w, Verdict v, std::string note) {
+    CaseResult r;
+    r.id = cases_[*w.job].id;
+    r.verdict = v;
+    r.note = std::move(note);
+    r.ms = std::chrono::duration<double, std::milli>(Clock::now() - w.started).count();
+    return r;
+  }
+
+  void finish_dead(Worker& w, int status) {
+    if (!w.job) return;
+    record(cases_[*w.job], lost(w, Verdict::Crash, death(status)));
+    w.job.reset();
+  }
+
+  void record(const Case& c, CaseResult r) {
+    r.attempt = attempt_;
+    if (o_.repro) r.repro = o_.repro(c);
+    const bool unexpected = is_failure(r.verdict) && !o_.expectations.baseline.contains(r.id) &&
+                            !Expectations::matches(o_.expectations.flakes, r.id);
+    if (attempt_ == 1 && unexpected) rerun_.push_back(index_of(c));
+    if (attempt_ == 2 && !is_failure(r.verdict)) r.flaky = true;
+    if (!r.reduced.empty()) {
+      namespace fs = std::filesystem;
+      std::error_code ec;
+      fs::create_directories(fs::path(o_.out_dir) / "reduced", ec);
+      const std::string path =
+          (fs::path(o_.out_dir) / "reduced" / (file_name_of(r.id) + ".asm")).string();
+      if (io::write_output(path, r.reduced))
+        r.repro += fmt::format(" (reduced program: tierlift test {})", path);
+    }
+    write_all(jsonl_, to_json(r).dump() + "\n");
+    if (attempt_ == 1) {
+      ++finished_;
+      if (is_failure(r.verdict)) ++failures_;
+    }
+  }
+
+  size_t index_of(const Case& c) const { return static_cast<size_t>(&c - cases_.data()); }
+
+  void progress() {
+    if (!o_.progress || attempt_ != 1) return;
+    const double s = std::chrono::duration<double>(Clock::now() - t0_).count();
+    const double rate = s > 0 ? finished_ / s : 0;
+    const double left = rate > 0 ? (total_ - std::min(total_, finished_)) / rate : 0;
+    std::fprintf(stderr, "\r[%zu/%zu] %.1f cases/s, %zu failures, %d:%02d left   ", finished_,
+                 total_, rate, failures_, static_cast<int>(left) / 60, static_cast<int>(left) % 60);
+  }
+
+  const std::vector<Case>& cases_;
+  const RunOptions& o_;
+  std::vector<Worker> workers_;
+  std::vector<size_t> rerun_;
+  std::string jsonl_path_;
+  int jsonl_ = -1, log_ = -1;
+  unsigned attempt_ = 1;
+  size_t total_ = 0, finished_ = 0, failures_ = 0;
+  Clock::time_point t0_;
+};
+
+} // namespace
+
+ir::Result<std::vector<CaseResult>> run_corpus(const std::vector<Case>& cases,
+                                               const RunOptions& options) {
+  Coordinator coordinator(cases, options);
+  if (ir::Status s = coordinator.run(); !s) return s.failure();
+  std::vector<CaseResult> results =
+      read_results_jsonl((std::filesystem::path(options.out_dir) / "results.jsonl").string());
+  if (ir::Status s = write_reports(options.out_dir, results, options.expectations); !s)
+    return s.failure();
+  return results;
+}
+
+} // namespace tierlift::corpus

@@ -1,0 +1,219 @@
+// The stages before the draw: parse, validate, token round trip, SPIR-V. Each records its
+// verdict and its time; a stage whose input an earlier stage could not give is skipped.
+#include "tierlift/corpus/stages.h"
+
+#include <chrono>
+#include <regex>
+
+#include <fmt/format.h>
+
+#include "diff_run.h"
+#include "tierlift/asm/bytecode.h"
+#include "tierlift/asm/load.h"
+#include "tierlift/codegen/codegen.h"
+#include "tierlift/io/bounded_read.h"
+#include "tierlift/ir/profile.h"
+#include "tierlift/ir/result_diagnostics.h"
+
+namespace tierlift::corpus {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+// The first lines of rendered diagnostics: enough to say why, short enough for a CSV cell.
+std::string first_lines(const std::string& text, size_t lines = 3) {
+  size_t pos = 0;
+  for (size_t i = 0; i < lines && pos != std::string::npos; ++i) {
+    pos = text.find('\n', pos);
+    if (pos != std::string::npos) ++pos;
+  }
+  std::string out = text.substr(0, pos);
+  while (!out.empty() && out.back() == '\n') out.pop_back();
+  return out.size() > 600 ? out.substr(0, 600) + "…" : out;
+}
+
+// Shader model 3 (and anything newer) is refused by the front end; the case is then
+// "unsupported", a known gap, not a failure. Told from the version line or token.
+bool newer_than_front_end(std::string_view bytes, as::ListingForm form) {
+  if (form == as::ListingForm::TokenStream || form == as::ListingForm::Binary) {
+    if (bytes.size() < 4) return false;
+    const unsigned major = static_cast<unsigned char>(bytes[1]);
+    const unsigned kind = static_cast<unsigned char>(bytes[2]) |
+                          (static_cast<unsigned>(static_cast<unsigned char>(bytes[3])) << 8);
+    return (kind == 0xFFFE || kind == 0xFFFF) && major >= 3;
+  }
+  static const std::regex version(R"((^|\n)[ \t]*(vs|ps)[._]([3-9])[._])", std::regex::icase);
+  if (form == as::ListingForm::TokenArray) {
+    static const std::regex token(R"(0x[fF]{3}[eEfF]0[3-9]0)");
+    return std::regex_search(bytes.begin(), bytes.end(), token);
+  }
+  return std::regex_search(bytes.begin(), bytes.end(), version);
+}
+
+struct Front {
+  ir::SourceManager sources;
+  std::optional<as::Loaded> loaded;
+};
+
+Front load(const std::string& path, const std::string& bytes, bool validate) {
+  Front f;
+  uint32_t file = f.sources.add(path, bytes);
+  as::LoadOptions o;
+  o.skip_validation = !validate;
+  f.loaded.emplace(as::load_listing(file, f.sources, o));
+  return f;
+}
+
+std::string rendered(const ir::Result<ir::Program>& r, const ir::SourceManager& sm) {
+  return first_lines(ir::render_text(r.diagnostics(), sm));
+}
+
+// Comment tokens (CTAB and the like) do not survive IR; the identity is on the rest.
+std::vector<uint32_t> without_comments(const std::vector<uint32_t>& tokens) {
+  std::vector<uint32_t> out;
+  for (size_t i = 0; i < tokens.size(); ++i) {
+    if ((tokens[i] & 0xFFFF) == 0xFFFE && i > 0) {
+      i += (tokens[i] >> 16) & 0x7FFF;
+      continue;
+    }
+    out.push_back(tokens[i]);
+  }
+  return out;
+}
+
+StageResult round_trip(const Front& parsed) {
+  StageResult s{std::string(kStageRoundTrip), Verdict::Pass, {}, 0};
+  const ir::Program& program = *parsed.loaded->program;
+  ir::DiagnosticSink diags;
+  std::optional<std::vector<uint32_t>> tokens = as::assemble(program, diags);
+  if (!tokens) {
+    s.verdict = Verdict::Fail;
+    s.message = "assemble: " + first_lines(ir::render_text(diags, parsed.sources));
+    return s;
+  }
+  if (!parsed.loaded->tokens.empty()) { // bytecode in: assemble ∘ disassemble = identity
+    const std::vector<uint32_t> original = without_comments(parsed.loaded->tokens);
+    for (size_t i = 0; i < std::max(original.size(), tokens->size()); ++i) {
+      if (i < original.size() && i < tokens->size() && original[i] == (*tokens)[i]) continue;
+      s.verdict = Verdict::Fail;
+      s.message = fmt::format(
+          "token {} differs after disassemble and assemble: read {}, written {}", i,
+          i < original.size() ? fmt::format("0x{:08x}", original[i]) : std::string("(end)"),
+          i < tokens->size() ? fmt::format("0x{:08x}", (*tokens)[i]) : std::string("(end)"));
+      return s;
+    }
+    return s;
+  }
+  // Text in: disassemble ∘ assemble gives the same program.
+  std::optional<ir::Program> back = as::disassemble(*tokens, diags);
+  if (!back) {
+    s.verdict = Verdict::Fail;
+    s.message = "disassemble: " + first_lines(ir::render_text(diags, parsed.sources));
+  } else if (!ir::same_ir(program, *back)) {
+    s.verdict = Verdict::Fail;
+    s.message =
+        "assemble then disassemble changed the program: " + ir::ir_difference(program, *back);
+  }
+  return s;
+}
+
+StageResult spirv(const ir::Program& program, const ir::SourceManager& sm) {
+  StageResult s{std::string(kStageSpirv), Verdict::Pass, {}, 0};
+  ir::DiagnosticSink diags;
+  if (!codegen::compile(program, codegen::CodegenOptions{}, diags)) {
+    s.verdict = Verdict::Fail;
+    s.message = first_lines(ir::render_text(diags, sm));
+    if (s.message.empty()) s.message = "SPIR-V generation failed";
+  }
+  return s;
+}
+
+// Runs `body` as stage `name` when `ready`, else records it skipped.
+template <class F>
+void stage(CaseResult& r, std::string_view name, bool ready, const char* why_not, F&& body) {
+  if (!ready) {
+    r.stages.push_back({std::string(name), Verdict::Skip, why_not, 0});
+    return;
+  }
+  const auto t0 = Clock::now();
+  StageResult s = body();
+  s.ms = ms_since(t0);
+  r.stages.push_back(std::move(s));
+}
+
+Verdict overall(const CaseResult& r) {
+  Verdict v = Verdict::Pass;
+  for (const StageResult& s : r.stages) {
+    if (is_failure(s.verdict)) return s.verdict;
+    if (s.verdict == Verdict::Unsupported) v = Verdict::Unsupported;
+  }
+  return v;
+}
+
+} // namespace
+
+CaseResult run_listing(const std::string& id, const std::string& display_path, std::string bytes,
+                       const StageOptions& options) {
+  const auto t0 = Clock::now();
+  CaseResult r;
+  r.id = id;
+  if (bytes.starts_with("\xEF\xBB\xBF")) bytes.erase(0, 3); // a UTF-8 byte-order mark
+  const as::ListingForm form = as::detect_listing_form(bytes);
+  r.form = std::string(as::listing_form_name(form));
+
+  const auto t_parse = Clock::now();
+  Front parsed = load(display_path, bytes, false);
+  StageResult parse{std::string(kStageParse), Verdict::Pass, {}, 0};
+  if (!parsed.loaded->program) {
+    parse.verdict = newer_than_front_end(bytes, form) ? Verdict::Unsupported : Verdict::Fail;
+    parse.message = rendered(parsed.loaded->program, parsed.sources);
+  } else {
+    r.profile = std::string(ir::profile_name(parsed.loaded->program->profile));
+  }
+  parse.ms = ms_since(t_parse);
+  const bool parsed_ok = parse.verdict == Verdict::Pass;
+  r.stages.push_back(std::move(parse));
+
+  std::optional<Front> valid;
+  stage(r, kStageValidate, parsed_ok, "not parsed", [&] {
+    valid.emplace(load(display_path, bytes, true));
+    StageResult s{std::string(kStageValidate), Verdict::Pass, {}, 0};
+    if (!valid->loaded->program) {
+      s.verdict = Verdict::Fail;
+      s.message = rendered(valid->loaded->program, valid->sources);
+      valid.reset();
+    }
+    return s;
+  });
+  const bool run_more = !options.check_only;
+  const char* later = options.check_only ? "check only" : "not valid";
+  stage(r, kStageRoundTrip, parsed_ok && run_more, options.check_only ? later : "not parsed",
+        [&] { return round_trip(parsed); });
+  stage(r, kStageSpirv, valid.has_value() && run_more, later,
+        [&] { return spirv(*valid->loaded->program, valid->sources); });
+  const bool spirv_ok = r.stages.back().verdict == Verdict::Pass;
+  stage(r, kStageDiff, spirv_ok && run_more && options.device,
+        !options.device && run_more ? "no Vulkan device" : "no SPIR-V",
+        [&] { return differential_run(*valid->loaded->program, id, options, r.difference); });
+  r.verdict = overall(r);
+  r.ms = ms_since(t0);
+  return r;
+}
+
+CaseResult run_case(const Case& c, const StageOptions& options) {
+  if (c.generated || c.path.empty()) return run_listing(c.id, c.id, c.text, options);
+  ir::Result<std::string> bytes = io::read_bounded(c.path, io::kListingCap);
+  if (!bytes) {
+    CaseResult r;
+    r.id = c.id;
+    r.verdict = Verdict::Fail;
+    r.stages.push_back({std::string(kStageParse), Verdict::Fail, bytes.message(), 0});
+    return r;
+  }
+  return run_listing(c.id, c.path, std::move(*bytes), options);
+}
+
+} // namespace tierlift::corpus

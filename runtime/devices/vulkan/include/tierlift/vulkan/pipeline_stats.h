@@ -1,0 +1,11 @@
+// What the driver itself spends on pipelines, for benchmarks that hold the whole lift
+// against it (bench/corpus_bench.cpp).
+#pragma once
+
+namespace tierlift::vulkan {
+
+// Time spent inside vkCreateGraphicsPipelines by every device of this process so far, in
+// milliseconds.
+double pipeline_creation_ms();
+
+} // namespace tierlift::vulkan
