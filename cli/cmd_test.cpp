@@ -14,9 +14,9 @@
 #include "tierlift/corpus/cases.h"
 #include "tierlift/corpus/report.h"
 #include "tierlift/corpus/runner.h"
+#include "tierlift/generate/generate.h"
 #include "tierlift/io/output_file.h"
 #include "tierlift/vulkan/process_device.h"
-#include "tierlift/generate/generate.h"
 
 namespace tierlift::cli {
 namespace {

@@ -4,9 +4,9 @@
 
 #include <fmt/format.h>
 
-#include "tierlift/asm/preprocessor.h"
 #include "report.h"
 #include "tierlift/asm/parser.h"
+#include "tierlift/asm/preprocessor.h"
 #include "tierlift/io/output_file.h"
 #include "tierlift/ir/passes.h"
 #include "tierlift/ir/profile.h"
