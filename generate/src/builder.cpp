@@ -237,7 +237,9 @@ bool Builder::accept(const std::vector<ir::Instruction>& ins) {
   if (ins.empty()) return false;
   ir::Program p = assemble(ins);
   ir::DiagnosticSink diags;
-  if (!as::validate(p, profile, diags, as::ValidateOptions{.warnings = false})) return false;
+  as::ValidateOptions quiet;
+  quiet.warnings = false;
+  if (!as::validate(p, profile, diags, quiet)) return false;
   body_.insert(body_.end(), ins.begin(), ins.end());
   return true;
 }
