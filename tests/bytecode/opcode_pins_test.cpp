@@ -233,11 +233,15 @@ TEST(OpcodePins, RegisterTypes) {
       if (p.name == name) pin = &p;
     ASSERT_NE(pin, nullptr) << "no pin names this register file: add its D3DSPR_* number";
     EXPECT_EQ(ir::bytecode_regtype(file), pin->type);
-    // Back from the number: types 3 (a0 / t#) and the vertex outputs the stage tells apart.
-    const auto stage = name == "t0" ? ir::ShaderStage::Pixel : ir::ShaderStage::Vertex;
-    if (name != "o0" && name != "vPos" && name != "vFace") {
-      EXPECT_EQ(ir::regfile_from_bytecode(pin->type, stage), file);
-    }
+    // Back from the number: type 3 is a0 or t# by stage, type 6 oT# or o# by profile; each
+    // file is read back in a profile that has it.
+    const bool pixel = name == "t0" || name == "oC0" || name == "oDepth" || name == "s0";
+    const bool sm3_pixel = name == "vPos" || name == "p0";
+    const ir::Profile profile = pixel          ? ir::Profile::ps_2_0
+                                : sm3_pixel    ? ir::Profile::ps_3_0
+                                : name == "o0" ? ir::Profile::vs_3_0
+                                               : ir::Profile::vs_2_0;
+    EXPECT_EQ(ir::regfile_from_bytecode(pin->type, profile), file);
     ++checked;
   }
   EXPECT_GE(checked, 15u);
