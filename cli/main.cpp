@@ -60,7 +60,8 @@ bool json_requested(int argc, char** argv) {
 
 // Parses the flags and runs the command; main() wraps it.
 int run_main(int argc, char** argv) {
-  CLI::App app{"tierlift: lift Direct3D shader assembly (vs/ps 1.x-2.0) onto Vulkan"};
+  CLI::App app{"tierlift: lift Direct3D shader assembly (vs/ps 1.x-3.0; 2.x/3.0 front end only) "
+               "onto Vulkan"};
   app.set_version_flag("-V,--version", std::string("tierlift ") + TIERLIFT_VERSION);
   app.footer(kExamples);
   app.require_subcommand(0, 1);

@@ -112,8 +112,18 @@ TEST(CorpusStages, InvalidListingFailsValidateAndSkipsTheRest) {
   EXPECT_EQ(r.failed_stage(), "validate");
 }
 
-TEST(CorpusStages, ShaderModel3IsUnsupportedNotAFailure) {
+TEST(CorpusStages, ShaderModel3IsCheckedThenUnsupportedNotAFailure) {
+  // The front end takes it (parse, validate, round trip); SPIR-V does not run it yet.
   CaseResult r = run_listing("c", "c.psh", "ps_3_0\nmov oC0, c0\n", no_device());
+  EXPECT_EQ(stage_verdict(r, kStageParse), Verdict::Pass);
+  EXPECT_EQ(stage_verdict(r, kStageValidate), Verdict::Pass);
+  EXPECT_EQ(stage_verdict(r, kStageRoundTrip), Verdict::Pass);
+  EXPECT_EQ(stage_verdict(r, kStageSpirv), Verdict::Unsupported);
+  EXPECT_EQ(r.verdict, Verdict::Unsupported);
+}
+
+TEST(CorpusStages, ShaderModel4IsUnsupportedNotAFailure) {
+  CaseResult r = run_listing("d", "d.psh", "ps_4_0\nmov oC0, c0\n", no_device());
   EXPECT_EQ(stage_verdict(r, kStageParse), Verdict::Unsupported);
   EXPECT_EQ(r.verdict, Verdict::Unsupported);
   EXPECT_FALSE(r.stages.front().message.empty());
