@@ -1,5 +1,5 @@
-// `tierlift test` throughput: cases per second over our listings (and the shared corpus
-// where present), check-only and the full lift, in process and with 1 and 2 worker
+// `tierlift test` throughput: cases per second over our listings and tests/corpus,
+// check-only and the full lift, in process and with 1 and 2 worker
 // processes; and the floor it is held against, measured in the same run: the time lavapipe
 // itself spends in vkCreateGraphicsPipelines for the pipelines of the same cases
 // (vulkan::pipeline_creation_ms). bench/run.sh prints the ratios.
@@ -20,9 +20,8 @@ using namespace tierlift;
 
 const std::vector<corpus::Case>& cases() {
   static const std::vector<corpus::Case> all = [] {
-    std::vector<std::string> roots{std::string(TIERLIFT_SOURCE_DIR) + "/listings"};
-    if (std::filesystem::is_directory(TIERLIFT_SHARED_DIR "/corpus"))
-      roots.push_back(TIERLIFT_SHARED_DIR "/corpus");
+    const std::vector<std::string> roots{std::string(TIERLIFT_SOURCE_DIR) + "/listings",
+                                         std::string(TIERLIFT_SOURCE_DIR) + "/tests/corpus"};
     auto found = corpus::discover(roots);
     return found ? *found : std::vector<corpus::Case>{};
   }();
