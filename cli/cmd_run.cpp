@@ -127,15 +127,6 @@ std::vector<std::string> input_files(const RunFlags& f, const pass::RunRequest& 
   return inputs;
 }
 
-// One device's run of the one-pass graph: its target, the probes, what the draw took.
-// Diagnostics go to `report`; ok is false after an error.
-struct DeviceRun {
-  bool ok = false;
-  img::Image image;
-  std::vector<pass::ProbeValue> probes;
-  pass::DrawReport report;
-};
-
 // A failed run as `tierlift run` has always worded a draw the device refused: the device's
 // own words (run_graph hands them on as notes after its summary), under rule "draw" on the
 // CPU and as "vulkan: …" on Vulkan; the run's summary when there are none. The graph's one
@@ -237,21 +228,13 @@ int run(const RunFlags& f) {
   };
   const bool want_cpu = wants("cpu");
   bool want_vulkan = wants("vulkan");
-  std::optional<PixelTraceRequest> trace;
-  if (!f.trace.empty()) {
-    ir::Result<pass::ProbePoint> at = parse_probe(f.trace);
-    if (!at || at->x >= req.width || at->y >= req.height) {
-      report.error("usage", fmt::format("--trace '{}': expected X,Y inside the {}x{} image",
-                                        f.trace, req.width, req.height));
-      return report.finish(kExitUsage);
-    }
-    if (f.ps.empty()) {
-      report.error("usage", "--trace follows a pixel listing's instructions: give --ps");
-      return report.finish(kExitUsage);
-    }
-    trace = PixelTraceRequest{at->x,      at->y,    req.width,   req.height,
-                              req.format, want_cpu, want_vulkan, f.gpu};
+  ir::Result<std::optional<PixelTraceRequest>> traced =
+      trace_request(f.trace, !f.ps.empty(), req, want_cpu, want_vulkan, f.gpu);
+  if (!traced) {
+    report.error("usage", traced.message());
+    return report.finish(kExitUsage);
   }
+  std::optional<PixelTraceRequest> trace = *traced;
   if (!f.output.empty()) {
     std::string why = check_output(f.output, input_files(f, req), f.fe.json).message();
     if (why.empty() && f.output == "-" && want_cpu && want_vulkan)
@@ -427,18 +410,7 @@ int run(const RunFlags& f) {
       j["timing_ms"]["vulkan_draw"] = vk.report.draw_ms;
     }
   } else {
-    for (const auto& p : shown.probes)
-      fmt::print("{},{}: {} {} {} {}\n", p.x, p.y, p.value[0], p.value[1], p.value[2], p.value[3]);
-    if (agreement) {
-      for (const auto& p : vk.probes)
-        fmt::print("{},{} (vulkan): {} {} {} {}\n", p.x, p.y, p.value[0], p.value[1], p.value[2],
-                   p.value[3]);
-      fmt::print("cpu vs vulkan ({}): max abs per channel {:.3g} {:.3g} {:.3g} {:.3g}, rmse "
-                 "{:.3g}, identical pixels {:.2f} %: {}\n",
-                 vk_name, agreement->max_abs[0], agreement->max_abs[1], agreement->max_abs[2],
-                 agreement->max_abs[3], agreement->rmse_all, agreement->identical_share * 100.0,
-                 verdict->pass ? "within targets" : "BEYOND TARGETS");
-    }
+    print_text_result(shown, vk, vk_name, agreement, verdict);
   }
   if (trace)
     if (int code = print_pixel_trace(*prepared, *trace, report)) return report.finish(code);

@@ -48,4 +48,21 @@ nlohmann::json input_sources_json(const pass::RunRequest& request) {
   return out;
 }
 
+// The run's text output: each probe's value, and with two devices the agreement line.
+void print_text_result(const DeviceRun& shown, const DeviceRun& vk, const std::string& vk_name,
+                       const std::optional<img::Comparison>& agreement,
+                       const std::optional<img::Verdict>& verdict) {
+  for (const auto& p : shown.probes)
+    fmt::print("{},{}: {} {} {} {}\n", p.x, p.y, p.value[0], p.value[1], p.value[2], p.value[3]);
+  if (!agreement) return;
+  for (const auto& p : vk.probes)
+    fmt::print("{},{} (vulkan): {} {} {} {}\n", p.x, p.y, p.value[0], p.value[1], p.value[2],
+               p.value[3]);
+  fmt::print("cpu vs vulkan ({}): max abs per channel {:.3g} {:.3g} {:.3g} {:.3g}, rmse "
+             "{:.3g}, identical pixels {:.2f} %: {}\n",
+             vk_name, agreement->max_abs[0], agreement->max_abs[1], agreement->max_abs[2],
+             agreement->max_abs[3], agreement->rmse_all, agreement->identical_share * 100.0,
+             verdict->pass ? "within targets" : "BEYOND TARGETS");
+}
+
 } // namespace tierlift::cli

@@ -1,13 +1,31 @@
 // Where `tierlift run` writes its image.
 #pragma once
 
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "report.h"
+#include "tierlift/image/compare.h"
 #include "tierlift/image/image.h"
+#include "tierlift/pass/pass.h"
 #include "tierlift/pass/setup.h"
 
 namespace tierlift::cli {
+
+// One device's run of the one-pass graph: its target, the probes, what the draw took.
+// Diagnostics go to `report`; ok is false after an error.
+struct DeviceRun {
+  bool ok = false;
+  img::Image image;
+  std::vector<pass::ProbeValue> probes;
+  pass::DrawReport report;
+};
+
+// The run's text output: each probe's value, and with two devices the agreement line.
+void print_text_result(const DeviceRun& shown, const DeviceRun& vk, const std::string& vk_name,
+                       const std::optional<img::Comparison>& agreement,
+                       const std::optional<img::Verdict>& verdict);
 
 // Writes the image atomically: ".pfm" → PFM (float RGB), otherwise PNG, 8-bit for RGBA8
 // targets and 16-bit for float targets. Empty string on success, else the reason. When a

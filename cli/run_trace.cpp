@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "commands.h"
+#include "run_flags.h"
 #include "tierlift/effects/pixel_trace.h"
 #include "vulkan_device.h"
 
@@ -50,6 +51,22 @@ nlohmann::json table_json(const effects::PixelTraceTable& t) {
 }
 
 } // namespace
+
+ir::Result<std::optional<PixelTraceRequest>> trace_request(const std::string& flag, bool has_ps,
+                                                           const pass::RunRequest& run, bool cpu,
+                                                           bool vulkan, const std::string& gpu) {
+  if (flag.empty()) return std::optional<PixelTraceRequest>();
+  ir::Result<pass::ProbePoint> at = parse_probe(flag);
+  if (!at || at->x >= run.width || at->y >= run.height)
+    return ir::fail("--trace", "usage",
+                    fmt::format("--trace '{}': expected X,Y inside the {}x{} image", flag,
+                                run.width, run.height));
+  if (!has_ps)
+    return ir::fail("--trace", "usage",
+                    "--trace follows a pixel listing's instructions: give --ps");
+  return std::optional<PixelTraceRequest>(
+      PixelTraceRequest{at->x, at->y, run.width, run.height, run.format, cpu, vulkan, gpu});
+}
 
 int print_pixel_trace(const pass::Pass& pass, const PixelTraceRequest& req, Report& report) {
   if (!pass.pixel_program) {
