@@ -363,17 +363,7 @@ int run(const GlowFlags& f) {
     j["memory"] = {{"planned_peak_bytes", planned_bytes},
                    {"available_bytes", effects::available_memory()}};
     j["all_within_targets"] = all_within;
-    nlohmann::json left = nlohmann::json::array();
-    for (const effects::LeftOut& l : pruned.left_out)
-      left.push_back({{"what", l.what}, {"why", l.why}});
-    nlohmann::json limited = nlohmann::json::array();
-    for (const effects::LeftOut& l : pruned.limited)
-      limited.push_back({{"what", l.what}, {"why", l.why}});
-    nlohmann::json kept = nlohmann::json::array();
-    for (const effects::LeftOut& k : pruned.kept)
-      kept.push_back({{"what", k.what}, {"why", k.why}});
-    j["pruning"] = {
-        {"enabled", !f.no_prune}, {"left_out", left}, {"limited", limited}, {"kept", kept}};
+    j["pruning"] = pruning_json(pruned, !f.no_prune);
     j["written"] = written;
   } else {
     if (radial)
@@ -403,24 +393,7 @@ int run(const GlowFlags& f) {
     for (const GlowWay& w : ways)
       fmt::print("{}: {} passes in {:.1f} ms{}\n", w.name, w.glow.run->passes.size(),
                  w.glow.run->total_ms, w.name == "vulkan" ? fmt::format(" ({})", vk->name()) : "");
-    if (f.explain) {
-      const bool varies = scene_moves;
-      fmt::print("pruning {}: {} of {} passes left out, {} limited to the sources' box{}\n",
-                 f.no_prune ? "off (--no-prune)" : "on", varies ? 0 : pruned.left_out.size(),
-                 pruned.passes_before, varies ? 0 : pruned.limited.size(),
-                 varies ? " (the scene changes from frame to frame: pruning bounds values from "
-                          "one image, so the whole plan runs)"
-                 : !pruned.changed() ? " (the scene needs every pass, everywhere)"
-                                     : "");
-      for (const effects::LeftOut& l : varies ? std::vector<effects::LeftOut>{} : pruned.left_out)
-        fmt::print("  {} {}: {}\n", f.no_prune ? "would leave out" : "left out", l.what, l.why);
-      for (const effects::LeftOut& l : varies ? std::vector<effects::LeftOut>{} : pruned.limited)
-        fmt::print("  {} {}: {}\n", f.no_prune ? "would limit" : "limited", l.what, l.why);
-      for (const effects::LeftOut& k : varies ? std::vector<effects::LeftOut>{} : pruned.kept)
-        fmt::print("  kept {}: {}\n", k.what, k.why);
-      fmt::print("  kept: the SPIR-V pair pruning of every pass (unused constants, inputs and "
-                 "outputs; tierlift spirv --pair --explain)\n");
-    }
+    if (f.explain) print_pruning(pruned, f.no_prune, scene_moves);
     print_frames_table(frames);
     if (animated) print_animation(animation);
     print_agreement_table(pairs);

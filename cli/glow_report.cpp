@@ -144,4 +144,35 @@ nlohmann::json frames_json(const std::vector<FrameReport>& frames) {
   return j;
 }
 
+void print_pruning(const effects::PrunedGraph& pruned, bool no_prune, bool varies) {
+  fmt::print("pruning {}: {} of {} passes left out, {} limited to the sources' box{}\n",
+             no_prune ? "off (--no-prune)" : "on", varies ? 0 : pruned.left_out.size(),
+             pruned.passes_before, varies ? 0 : pruned.limited.size(),
+             varies ? " (the scene changes from frame to frame: pruning bounds values from "
+                      "one image, so the whole plan runs)"
+             : !pruned.changed() ? " (the scene needs every pass, everywhere)"
+                                 : "");
+  const std::vector<effects::LeftOut> none;
+  for (const effects::LeftOut& l : varies ? none : pruned.left_out)
+    fmt::print("  {} {}: {}\n", no_prune ? "would leave out" : "left out", l.what, l.why);
+  for (const effects::LeftOut& l : varies ? none : pruned.limited)
+    fmt::print("  {} {}: {}\n", no_prune ? "would limit" : "limited", l.what, l.why);
+  for (const effects::LeftOut& k : varies ? none : pruned.kept)
+    fmt::print("  kept {}: {}\n", k.what, k.why);
+  fmt::print("  kept: the SPIR-V pair pruning of every pass (unused constants, inputs and "
+             "outputs; tierlift spirv --pair --explain)\n");
+}
+
+nlohmann::json pruning_json(const effects::PrunedGraph& pruned, bool enabled) {
+  auto list = [](const std::vector<effects::LeftOut>& items) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const effects::LeftOut& l : items) out.push_back({{"what", l.what}, {"why", l.why}});
+    return out;
+  };
+  return {{"enabled", enabled},
+          {"left_out", list(pruned.left_out)},
+          {"limited", list(pruned.limited)},
+          {"kept", list(pruned.kept)}};
+}
+
 } // namespace tierlift::cli

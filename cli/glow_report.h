@@ -9,6 +9,7 @@
 
 #include "tierlift/effects/agreement.h"
 #include "tierlift/effects/glow_run.h"
+#include "tierlift/effects/prune.h"
 #include "tierlift/io/output_folder.h"
 #include "tierlift/ir/result.h"
 
@@ -52,5 +53,10 @@ nlohmann::json frames_json(const std::vector<FrameReport>& frames);
 // reaches DIR before out.commit().
 std::string write_glow_images(io::OutputFolder& out, const std::vector<GlowWay>& ways,
                               bool float_targets);
+
+// What pruning left out, limited to a box and kept: `glow --explain` prints it (`varies`: the
+// scene changes per frame, so the whole plan ran); --json carries it as result.pruning.
+void print_pruning(const effects::PrunedGraph& pruned, bool no_prune, bool varies);
+nlohmann::json pruning_json(const effects::PrunedGraph& pruned, bool enabled);
 
 } // namespace tierlift::cli
