@@ -48,6 +48,49 @@ inline LinearAxis llvmpipe_linear_axis(float u, uint32_t n, AddressMode mode, in
   return a;
 }
 
+// llvmpipe's reading of an axis whose coordinate it cannot address (NUMERICS.md rule 37;
+// Direct3D 9 leaves such reads undefined, so matching lavapipe is a device-matching choice):
+// the integer conversion of a non-finite value gives INT_MIN and the bilinear weight
+// x − floor(x) is NaN. Per address mode (n texels, u·N rounded to float as llvmpipe does):
+//   * Wrap, n a power of two: fl32(u·N) not finite: POINT reads texel INT_MIN & (n − 1) = 0,
+//     LINEAR a NaN weight. Other sizes take fract(u) first: u not finite: POINT reads the
+//     clamped fraction's texel n − 1, LINEAR a NaN weight.
+//   * Border: fl32(u·N) not finite: POINT reads the border colour, LINEAR a NaN weight.
+//   * Mirror: u not finite: the mirrored coordinate is NaN, which llvmpipe sends to 0: texel
+//     0 (LINEAR: both taps texel 0, weight ½).
+//   * Clamp: already the ordinary rule (llvmpipe clamps the coordinate; NaN as documented).
+// A NaN weight makes every channel NaN (the lerp propagates it).
+struct UnaddressableAxis {
+  enum class Kind : uint8_t { Ordinary, NanWeight, Texel, Border } kind = Kind::Ordinary;
+  int64_t texel = 0;
+  float alpha = 0;
+};
+inline UnaddressableAxis llvmpipe_unaddressable(float u, uint32_t n, AddressMode mode,
+                                                Filter filter) {
+  using Kind = UnaddressableAxis::Kind;
+  const bool linear = filter != Filter::Point;
+  const bool scaled_finite = std::isfinite(u * static_cast<float>(n));
+  switch (mode) {
+  case AddressMode::Wrap:
+    if ((n & (n - 1)) == 0) {
+      if (scaled_finite) return {};
+      return linear ? UnaddressableAxis{Kind::NanWeight, 0, 0}
+                    : UnaddressableAxis{Kind::Texel, 0, 0};
+    }
+    if (std::isfinite(u)) return {};
+    return linear ? UnaddressableAxis{Kind::NanWeight, 0, 0}
+                  : UnaddressableAxis{Kind::Texel, static_cast<int64_t>(n) - 1, 0};
+  case AddressMode::Border:
+    if (scaled_finite) return {};
+    return linear ? UnaddressableAxis{Kind::NanWeight, 0, 0}
+                  : UnaddressableAxis{Kind::Border, 0, 0};
+  case AddressMode::Mirror:
+    if (std::isfinite(u)) return {};
+    return {Kind::Texel, 0, 0.5f};
+  default: return {};
+  }
+}
+
 inline float llvmpipe_lerp(float alpha, float v0, float v1) {
   return rounding::lerp(alpha, v0, v1);
 }

@@ -305,6 +305,22 @@ void llvmpipe_linear_fma(const BlockRead& r, int bits) {
 }
 #endif
 
+// Whether a lane's coordinate is one llvmpipe cannot address under a mode other than Clamp
+// (detail::llvmpipe_unaddressable): those lanes take the per-lane read and its rule.
+bool unaddressable_lane(const TextureBinding& b, const float* const coord[4], int n) {
+  const SamplerState& s = b.sampler;
+  const auto axis = [&](const float* c, uint32_t size, AddressMode mode) {
+    if (mode == AddressMode::Clamp) return false;
+    for (int l = 0; l < n; ++l)
+      if (detail::llvmpipe_unaddressable(c[l], size, mode, s.filter).kind !=
+          detail::UnaddressableAxis::Kind::Ordinary)
+        return true;
+    return false;
+  };
+  return axis(coord[0], b.image->width, s.address_u) ||
+         axis(coord[1], b.image->height, s.address_v);
+}
+
 } // namespace
 
 void BoundTextures::sample_block(uint32_t stage, const float* const coord[4], const float* bias,
@@ -315,6 +331,10 @@ void BoundTextures::sample_block(uint32_t stage, const float* const coord[4], co
     return;
   }
   const TextureBinding& b = bindings_[stage];
+  if (llvmpipe_ && unaddressable_lane(b, coord, n)) {
+    TextureUnit::sample_block(stage, coord, bias, n, out); // sample_texture_llvmpipe's rule
+    return;
+  }
   const BlockRead r{*b.image, b.sampler, coord[0], coord[1], n, out};
   const bool fma = cpu_runs_avx2_fma();
   if (b.sampler.filter == Filter::Point) {
