@@ -1,0 +1,92 @@
+// NUMERICS.md rule 38: the differential stage leaves out what Direct3D 9 leaves undefined, a
+// pixel program that samples at a non-finite coordinate, and nothing else.
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <string>
+
+#include "loaded_listing.h"
+#include "tierlift/corpus/stages.h"
+#include "tierlift/corpus/undefined_reads.h"
+#include "tierlift/vulkan/device.h"
+#include "tierlift/vulkan/process_device.h"
+
+namespace tierlift::corpus {
+namespace {
+
+std::shared_ptr<const ir::Program> program(const std::string& text) {
+  test::LoadedListing l = test::load_bytes(text, "p.psh");
+  EXPECT_TRUE(l.r().program) << l.rendered;
+  return std::make_shared<const ir::Program>(*l.r().program);
+}
+
+// texldp divides t0 by its w: w = 0 makes (0.5/0, 0.25/0) = (inf, inf); 0/0 makes NaN.
+pass::Pass projected_pass(float x, float w) {
+  pass::Pass p;
+  p.pixel_program = program("ps_2_0\ndcl t0\ndcl_2d s0\ntexldp r0, t0, s0\nmov oC0, r0\n");
+  p.constant_inputs.tex[0] = {x, 0.25f, 0.0f, w};
+  auto im = std::make_shared<img::Image>(4, 4, img::Format::RGBA32F);
+  p.textures[0].image = im;
+  return p;
+}
+
+TEST(UndefinedReads, NonFiniteCoordinateIsNamed) {
+  EXPECT_EQ(non_finite_read(projected_pass(0.5f, 0.0f)), "s0 at (inf, inf)");
+  EXPECT_EQ(non_finite_read(projected_pass(0.0f, 0.0f)), "s0 at (nan, inf)");
+}
+
+TEST(UndefinedReads, FiniteCoordinatesAndNoReadsAreDefined) {
+  EXPECT_EQ(non_finite_read(projected_pass(0.5f, 2.0f)), "");
+  EXPECT_EQ(non_finite_read(projected_pass(1e30f, 1e-30f)), "s0 at (inf, 2.5e+29)");
+  pass::Pass plain;
+  plain.pixel_program = program("ps_2_0\nmov oC0, c0\n");
+  EXPECT_EQ(non_finite_read(plain), "");
+}
+
+// The interpolated case is outside the rule: a pass with a vertex program excludes nothing.
+TEST(UndefinedReads, InterpolatedInputsAreNotJudged) {
+  pass::Pass p = projected_pass(0.5f, 0.0f);
+  p.vertex_program = program("vs_2_0\ndcl_position v0\nmov oPos, v0\n");
+  EXPECT_EQ(non_finite_read(p), "");
+}
+
+vulkan::Device* lavapipe() {
+  ir::Result<vulkan::Device*> d = vulkan::process_device({});
+  return d ? *d : nullptr;
+}
+
+// Generated case 00020 of `tierlift test --generate 500 --profile ps_2_0 --seed 1`, reduced: nrm
+// of an infinite vector gives w = 0, which lavapipe's compiler folds into a division by a
+// constant zero whose result differs pixel by pixel. Without rule 38 the stage fails.
+constexpr const char* kDivideByFoldedZero = R"(ps_2_0
+dcl_2d s2
+def c2, inf, -inf, 0x7fc00000, 0.5
+abs r7, c0
+nrm r7.w, c2.x
+texldp r6, r7, s2
+frc r4, r6
+mov oC0, r4
+)";
+
+TEST(UndefinedReads, DifferentialStageLeavesTheUndefinedSetsOut) {
+  vulkan::Device* device = lavapipe();
+  if (!device) GTEST_SKIP() << "no Vulkan device";
+  StageOptions o;
+  o.device = device;
+  const CaseResult r = run_listing("generated/ps_2_0/seed1/00020", "x.psh", kDivideByFoldedZero, o);
+  ASSERT_EQ(r.stages.back().stage, kStageDiff);
+  EXPECT_EQ(r.stages.back().verdict, Verdict::Pass) << r.stages.back().message;
+  EXPECT_NE(r.stages.back().message.find("not compared: undefined in D3D9 (s2 at (inf, inf))"),
+            std::string::npos)
+      << r.stages.back().message;
+
+  // The same program with w = 0.5 reads at finite coordinates: compared, and agreeing.
+  std::string finite = kDivideByFoldedZero;
+  finite.replace(finite.find("nrm r7.w, c2.x"), 14, "mov r7.w, c2.w");
+  const CaseResult f = run_listing("generated/ps_2_0/seed1/00020", "x.psh", finite, o);
+  EXPECT_EQ(f.stages.back().verdict, Verdict::Pass) << f.stages.back().message;
+  EXPECT_EQ(f.stages.back().message, "");
+}
+
+} // namespace
+} // namespace tierlift::corpus
