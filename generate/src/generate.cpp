@@ -8,10 +8,28 @@
 
 namespace tierlift::gen {
 
+bool generates(ir::Profile p) {
+  switch (p) {
+  case ir::Profile::vs_1_1:
+  case ir::Profile::vs_2_0:
+  case ir::Profile::ps_1_1:
+  case ir::Profile::ps_1_2:
+  case ir::Profile::ps_1_3:
+  case ir::Profile::ps_1_4:
+  case ir::Profile::ps_2_0: return true;
+  default: return false;
+  }
+}
+
 std::string generate_listing(std::string_view profile_name, std::uint64_t seed, std::size_t index,
                              const GenerateOptions& options) {
   const std::optional<ir::Profile> profile = ir::parse_profile(profile_name);
   if (!profile) throw std::invalid_argument("unknown profile '" + std::string(profile_name) + "'");
+  // The profiles whose shapes (output rules, declarations) the builder knows: listings of
+  // ps_2_x or vs_3_0 from it would not validate (no oC0 write, no dcl of oPos).
+  if (!generates(*profile))
+    throw std::invalid_argument("the generator does not write " + std::string(profile_name) +
+                                " programs (it writes vs_1_1, vs_2_0, ps_1_1 ... ps_1_4, ps_2_0)");
   // One stream per (profile, seed, index): listing k does not depend on listings before it.
   detail::Rng mix(seed ^ (0x9E3779B97F4A7C15ull * (index + 1)) ^
                   (std::uint64_t(ir::profile_index(*profile)) << 56));

@@ -16,6 +16,8 @@
 #include <string>
 #include <string_view>
 
+#include "tierlift/ir/profile.h"
+
 namespace tierlift::gen {
 
 struct GenerateOptions {
@@ -31,9 +33,11 @@ struct GenerateOptions {
 
 // A valid random listing (assembly text) of `profile` ("ps_2_0", "vs_1_1", ...),
 // deterministic in (profile, seed, index, options). Throws std::invalid_argument for a
-// profile the front end does not know.
+// profile the front end does not know and for one the generator does not write (generates).
 std::string generate_listing(std::string_view profile, std::uint64_t seed, std::size_t index,
                              const GenerateOptions& options);
+// The profiles it writes: vs_1_1, vs_2_0, ps_1_1 ... ps_1_4, ps_2_0 (not 2_x, not 3_0).
+bool generates(ir::Profile profile);
 std::string generate_listing(std::string_view profile, std::uint64_t seed, std::size_t index);
 
 // What a set of listings exercises, counted by name: the figures `tierlift generate` prints
