@@ -34,6 +34,12 @@ int run_generate(const GenerateOpts& o) {
     report.error("usage", fmt::format("unknown profile '{}'", o.profile));
     return report.finish(kExitUsage);
   }
+  if (!gen::generates(*profile)) {
+    report.error("usage", fmt::format("the generator does not write {} programs (it writes "
+                                      "vs_1_1, vs_2_0, ps_1_1 ... ps_1_4, ps_2_0)",
+                                      o.profile));
+    return report.finish(kExitUsage);
+  }
   std::error_code ec;
   std::filesystem::create_directories(o.output, ec);
   if (!std::filesystem::is_directory(o.output)) {

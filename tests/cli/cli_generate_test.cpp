@@ -55,5 +55,18 @@ TEST(CliGenerate, UnknownProfileIsAUsageError) {
   EXPECT_FALSE(std::filesystem::exists(dir.file("out")));
 }
 
+// A profile the front end knows but the generator has no shapes for is a usage error (it
+// aborted on an uncaught exception before).
+TEST(CliGenerate, ProfileTheGeneratorDoesNotWriteIsAUsageError) {
+  TempDir dir("cli_generate_3_0");
+  CliResult r = run_cli("generate --profile vs_3_0 -o " + dir.file("out"));
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("the generator does not write vs_3_0 programs"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("out")));
+  CliResult t = run_cli("test --generate 1 --profile ps_2_x -o " + dir.file("t"));
+  EXPECT_EQ(t.exit_code, 2) << t.err;
+  EXPECT_NE(t.err.find("the generator does not write ps_2_x programs"), std::string::npos) << t.err;
+}
+
 } // namespace
 } // namespace tierlift::test
