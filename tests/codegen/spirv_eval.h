@@ -210,6 +210,10 @@ private:
       case Op::OpSLessThan: icmp([](int32_t x, int32_t y) { return x < y; }); break;
       case Op::OpSGreaterThan: icmp([](int32_t x, int32_t y) { return x > y; }); break;
       case Op::OpSGreaterThanEqual: icmp([](int32_t x, int32_t y) { return x >= y; }); break;
+      case Op::OpBitcast: val_[a[1]] = val_.at(a[2]); break;
+      case Op::OpBitwiseAnd:
+        icmp([](int32_t x, int32_t y) { return uint32_t(x) & uint32_t(y); });
+        break;
       case Op::OpIAdd: icmp([](int32_t x, int32_t y) { return uint32_t(x) + uint32_t(y); }); break;
       case Op::OpISub: icmp([](int32_t x, int32_t y) { return uint32_t(x) - uint32_t(y); }); break;
       case Op::OpSelect: {

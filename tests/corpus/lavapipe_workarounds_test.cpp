@@ -1,0 +1,37 @@
+// Cases the generated corpus found where lavapipe computed a wrong value and the SPIR-V now
+// takes a form it compiles right; each fails its differential stage without the workaround.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "tierlift/corpus/stages.h"
+#include "tierlift/vulkan/device.h"
+#include "tierlift/vulkan/process_device.h"
+
+namespace tierlift::corpus {
+namespace {
+
+vulkan::Device* lavapipe() {
+  ir::Result<vulkan::Device*> d = vulkan::process_device({});
+  return d ? *d : nullptr;
+}
+
+// `tierlift test --generate 200 --profile ps_2_0 --seed 3`, case 00075, reduced: abs of a
+// constant vector with a NaN in z came back unchanged from lavapipe (G: −inf, not inf) while
+// GLSL FAbs was the emitted form (codegen SpirvArith::abs now clears the sign bit).
+TEST(LavapipeWorkarounds, AbsOfAConstantVectorHoldingNan) {
+  vulkan::Device* device = lavapipe();
+  if (!device) GTEST_SKIP() << "no Vulkan device";
+  StageOptions o;
+  o.device = device;
+  for (const char* text : {"ps_2_0\ndef c2, inf, -inf, 0x7fc00000, 0.5\nabs r7, c2\nmov oC0, r7\n",
+                           "ps_2_0\ndef c2, 1, -2, 0x7fc00000, 0.5\nmov r0, c2\nabs r7, r0\n"
+                           "mov oC0, r7\n"}) {
+    const CaseResult r = run_listing("abs", "abs.psh", text, o);
+    ASSERT_EQ(r.stages.back().stage, kStageDiff);
+    EXPECT_EQ(r.stages.back().verdict, Verdict::Pass) << text << r.stages.back().message;
+  }
+}
+
+} // namespace
+} // namespace tierlift::corpus
