@@ -14,6 +14,7 @@
 #include "tierlift/corpus/cases.h"
 #include "tierlift/corpus/report.h"
 #include "tierlift/corpus/runner.h"
+#include "tierlift/corpus/shard.h"
 #include "tierlift/generate/generate.h"
 #include "tierlift/io/output_file.h"
 #include "tierlift/vulkan/process_device.h"
@@ -23,7 +24,8 @@ namespace {
 
 struct TestFlags {
   std::vector<std::string> paths, only, profiles, merge_dirs;
-  std::string output = "test-results", baseline, flakes, skips, shard, gpu, merge_output;
+  std::string output = "test-results", baseline, flakes, skips, shard, shard_costs, gpu,
+              merge_output;
   unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
   double timeout = 60;
   unsigned inputs = 3, size = 8;
@@ -147,7 +149,16 @@ ir::Result<std::vector<corpus::Case>> gather(const TestFlags& f) {
         index >= count)
       return ir::fail("--shard", "usage",
                       fmt::format("--shard {}: expected I/N with 0 <= I < N", f.shard));
-    std::erase_if(cases, [&](const corpus::Case& c) { return !corpus::in_shard(c, index, count); });
+    if (!f.shard_costs.empty()) {
+      auto costs = corpus::read_costs(f.shard_costs);
+      if (!costs) return costs.failure();
+      cases = corpus::balanced_shard(cases, *costs, index, count);
+    } else {
+      std::erase_if(cases,
+                    [&](const corpus::Case& c) { return !corpus::in_shard(c, index, count); });
+    }
+  } else if (!f.shard_costs.empty()) {
+    return ir::fail("--shard-costs", "usage", "--shard-costs needs --shard I/N");
   }
   return cases;
 }
@@ -292,7 +303,10 @@ void register_test_command(CLI::App& app) {
                 "Rewrite the --baseline file with this run's failures");
   sub->add_flag("--no-rerun", f->no_rerun, "Do not rerun unexpected failures");
   sub->add_flag("--resume", f->resume, "Continue the run whose results.jsonl is in -o");
-  sub->add_option("--shard", f->shard, "Run share I of N (0-based), by a hash of the id");
+  sub->add_option("--shard", f->shard,
+                  "Run share I of N (0-based), by a hash of the id, or by cost with --shard-costs");
+  sub->add_option("--shard-costs", f->shard_costs,
+                  "An earlier run's results.jsonl: balance the --shard shares by its case times");
   sub->add_option("--only", f->only, "Run only the case with this id (repeatable)");
   sub->add_option("--generate", f->generate, "Add N generated programs per --profile");
   sub->add_option("--profile", f->profiles, "Profile of the generated programs (repeatable)");

@@ -139,6 +139,31 @@ TEST(CliTest, FixedBaselineFailureExitsOne) {
   EXPECT_NE(r.out.find("FIXED " + a_id), std::string::npos) << r.out;
 }
 
+// Shards balanced by the single run's times (--shard-costs) still merge into the single run;
+// a cost file without --shard, or one that cannot be read, is a usage or I/O error.
+TEST(CliTest, CostBalancedShardsMergeIntoTheSingleRun) {
+  fs::path root = corpus("cost_shards"), dir = root.parent_path();
+  write(root / "bad.psh", "ps_2_0\nmov oC0, r7\n");
+  const std::string common = "--check-only --no-rerun " + root.string();
+  tierlift_test("", "-o " + (dir / "one").string() + " " + common);
+  const std::string costs = " --shard-costs " + (dir / "one" / "results.jsonl").string();
+  std::string shard_dirs;
+  for (int i = 0; i < 2; ++i) {
+    const std::string d = (dir / ("c" + std::to_string(i))).string();
+    tierlift_test("", "--shard " + std::to_string(i) + "/2" + costs + " -o " + d + " " + common);
+    shard_dirs += " " + d;
+  }
+  TestRun merge = tierlift_test("", "merge" + shard_dirs + " -o " + (dir / "merged").string());
+  EXPECT_EQ(merge.exit_code, 1) << merge.out;
+  for (const char* f : {"results.csv", "failures.csv", "summary.md"})
+    EXPECT_EQ(read_all(dir / "merged" / f), read_all(dir / "one" / f)) << f;
+  EXPECT_EQ(tierlift_test("", costs.substr(1) + " " + common).exit_code, 2);
+  EXPECT_EQ(
+      tierlift_test("", "--shard 0/2 --shard-costs " + (dir / "none.jsonl").string() + " " + common)
+          .exit_code,
+      2);
+}
+
 TEST(CliTest, ShardsMergeIntoTheSingleRunAndResumeFinishesARun) {
   fs::path root = corpus("shards"), dir = root.parent_path();
   write(root / "bad.psh", "ps_2_0\nmov oC0, r7\n");

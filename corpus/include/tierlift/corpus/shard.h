@@ -1,0 +1,30 @@
+// --shard I/N balanced by cost (`--shard-costs FILE`): where an earlier run's results.jsonl
+// says how long each case took, the shards get about the same total time instead of about
+// the same number of cases. The partition depends only on the case ids and the cost file, so
+// every machine given the same file computes the same shards, and each case is in exactly
+// one of them (`tierlift test merge` of the shards is the single run).
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "tierlift/corpus/cases.h"
+#include "tierlift/ir/result.h"
+
+namespace tierlift::corpus {
+
+// Microseconds per id from a results.jsonl (its "ms", the first attempt's). A missing or
+// unreadable file is an error (rule "io"); lines that are not results are left out.
+ir::Result<std::map<std::string, uint64_t>> read_costs(const std::string& results_jsonl);
+
+// Shard `index` of `count` by longest processing time first: the cases sorted by cost
+// (largest first, ties by id), each given to the shard whose total is smallest so far (ties:
+// the lowest shard). A case the costs do not name (a new or edited file) costs the median of
+// the known costs (1 when none is known). Returns the shard's cases in their input order.
+std::vector<Case> balanced_shard(const std::vector<Case>& cases,
+                                 const std::map<std::string, uint64_t>& costs, size_t index,
+                                 size_t count);
+
+} // namespace tierlift::corpus
