@@ -73,19 +73,6 @@ std::string rendered(const ir::Result<ir::Program>& r, const ir::SourceManager& 
   return first_lines(ir::render_text(r.diagnostics(), sm));
 }
 
-// Comment tokens (CTAB and the like) do not survive IR; the identity is on the rest.
-std::vector<uint32_t> without_comments(const std::vector<uint32_t>& tokens) {
-  std::vector<uint32_t> out;
-  for (size_t i = 0; i < tokens.size(); ++i) {
-    if ((tokens[i] & 0xFFFF) == 0xFFFE && i > 0) {
-      i += (tokens[i] >> 16) & 0x7FFF;
-      continue;
-    }
-    out.push_back(tokens[i]);
-  }
-  return out;
-}
-
 StageResult round_trip(const Front& parsed) {
   StageResult s{std::string(kStageRoundTrip), Verdict::Pass, {}, 0};
   const ir::Program& program = *parsed.loaded->program;
@@ -96,8 +83,9 @@ StageResult round_trip(const Front& parsed) {
     s.message = "assemble: " + first_lines(ir::render_text(diags, parsed.sources));
     return s;
   }
-  if (!parsed.loaded->tokens.empty()) { // bytecode in: assemble ∘ disassemble = identity
-    const std::vector<uint32_t> original = without_comments(parsed.loaded->tokens);
+  if (!parsed.loaded->tokens.empty()) { // bytecode in: assemble ∘ disassemble = identity,
+    // comment blocks (CTAB and the like) included
+    const std::vector<uint32_t>& original = parsed.loaded->tokens;
     for (size_t i = 0; i < std::max(original.size(), tokens->size()); ++i) {
       if (i < original.size() && i < tokens->size() && original[i] == (*tokens)[i]) continue;
       s.verdict = Verdict::Fail;

@@ -90,17 +90,20 @@ Caps2x default_caps(Profile p) {
 }
 
 std::optional<std::pair<Profile, Caps2x>> caps_preset(std::string_view name) {
-  // fxc's targets, as D3DX describes the devices they stand for: ps_2_a (22 temps, 512
-  // slots, dynamic flow control, predication, gradients, arbitrary swizzles, no
-  // dependent-read or texture-instruction limit), ps_2_b (32 temps, 512 slots, no
-  // texture-instruction limit, nothing else), vs_2_a (13 temps, dynamic flow control 24,
-  // static depth 4, predication).
+  // fxc's targets, as the D3DX reference (D3DXGetPixelShaderProfile,
+  // D3DXGetVertexShaderProfile) describes them: each is ps_2_0 / vs_2_0 plus a list of
+  // capabilities, and nothing off that list. ps_2_a: 22 temps, arbitrary swizzles,
+  // gradients, predication, no dependent-read or texture-instruction limit; no flow control
+  // (its hardware class had no branching in pixel shaders). ps_2_b: 32 temps and no
+  // texture-instruction limit, nothing else. vs_2_a: 13 temps, dynamic flow control (24, the
+  // one depth vs_2_x allows), predication; loop/rep and call nest one deep, as in vs_2_0.
+  // Both pixel targets have 512 slots (the published pixel-shader comparison tables).
   if (name == "ps_2_a")
-    return std::pair{Profile::ps_2_x, Caps2x{22, 512, 4, 24, true, true, true, true, true}};
+    return std::pair{Profile::ps_2_x, Caps2x{22, 512, 0, 0, true, true, true, true, true}};
   if (name == "ps_2_b")
     return std::pair{Profile::ps_2_x, Caps2x{32, 512, 0, 0, false, false, false, false, true}};
   if (name == "vs_2_a")
-    return std::pair{Profile::vs_2_x, Caps2x{13, 256, 4, 24, true, false, false, false, false}};
+    return std::pair{Profile::vs_2_x, Caps2x{13, 256, 1, 24, true, false, false, false, false}};
   return std::nullopt;
 }
 

@@ -8,15 +8,17 @@ namespace tierlift::ir {
 
 std::vector<Program::Statement> Program::statements() const {
   std::vector<Statement> out;
-  out.reserve(decls.size() + defs.size() + code.size());
+  out.reserve(decls.size() + defs.size() + code.size() + comments.size());
   for (size_t i = 0; i < decls.size(); ++i) out.push_back({Statement::Kind::Decl, i});
   for (size_t i = 0; i < defs.size(); ++i) out.push_back({Statement::Kind::Def, i});
   for (size_t i = 0; i < code.size(); ++i) out.push_back({Statement::Kind::Code, i});
+  for (size_t i = 0; i < comments.size(); ++i) out.push_back({Statement::Kind::Comment, i});
   auto seq = [this](const Statement& s) {
     switch (s.kind) {
     case Statement::Kind::Decl: return decls[s.index].seq;
     case Statement::Kind::Def: return defs[s.index].seq;
     case Statement::Kind::Code: return code[s.index].seq;
+    case Statement::Kind::Comment: return comments[s.index].seq;
     }
     return uint32_t{0};
   };
@@ -58,8 +60,15 @@ std::string ir_difference(const Program& a, const Program& b) {
     return fmt::format("{} vs {} constant definitions", a.defs.size(), b.defs.size());
   if (a.code.size() != b.code.size())
     return fmt::format("{} vs {} instructions", a.code.size(), b.code.size());
-  // Order of statements (decl/def/code interleaving) must match too.
-  auto sa = a.statements(), sb = b.statements();
+  // Order of statements (decl/def/code interleaving) must match too; comment blocks are
+  // not part of the shader.
+  auto shader_only = [](std::vector<Program::Statement> all) {
+    std::erase_if(all, [](const Program::Statement& s) {
+      return s.kind == Program::Statement::Kind::Comment;
+    });
+    return all;
+  };
+  auto sa = shader_only(a.statements()), sb = shader_only(b.statements());
   for (size_t i = 0; i < sa.size(); ++i)
     if (sa[i].kind != sb[i].kind || sa[i].index != sb[i].index)
       return fmt::format("statement order differs at statement {}", i + 1);

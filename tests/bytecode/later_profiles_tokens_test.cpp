@@ -223,7 +223,8 @@ TEST(LaterProfileTokens, PredicatedTokenOutsideTheLaterProfilesIsRefused) {
 
 // A ps_3_0 stream with fxc's CTAB comment after the version token (layout as in
 // constant_table_test.cpp: float4x4 "g_mWVP" in c4..c7, target "ps_3_0" = 0x335F7370
-// 0x0000305F): the table is read, and the comment is skipped by the disassembler.
+// 0x0000305F): the table is read, and the disassembly keeps the comment as "//!comment"
+// lines (eight words a line) that assemble back to the same stream.
 TEST(LaterProfileTokens, Ps30ConstantTableIsRead) {
   const Tokens stream = {0xFFFF0300, 0x0016FFFE, 0x42415443, 28,         80,         0xFFFF0300,
                          1,          28,         0,          72,         64,         0x00040002,
@@ -239,5 +240,13 @@ TEST(LaterProfileTokens, Ps30ConstantTableIsRead) {
   auto p = as::disassemble(stream, diags);
   ASSERT_TRUE(p.has_value());
   EXPECT_EQ(p->profile, ir::Profile::ps_3_0);
-  EXPECT_EQ(as::print_program(*p), "ps_3_0\nmov oC0, c4\n");
+  EXPECT_EQ(as::print_program(*p),
+            "ps_3_0\n"
+            "//!comment 0x42415443 0x0000001c 0x00000050 0xffff0300 0x00000001 0x0000001c "
+            "0x00000000 0x00000048\n"
+            "//!comment+ 0x00000040 0x00040002 0x00000004 0x00000030 0x00000000 0x00030003 "
+            "0x00040004 0x00000001\n"
+            "//!comment+ 0x00000000 0x576d5f67 0x00005056 0x335f7370 0x0000305f 0x00006c74\n"
+            "mov oC0, c4\n");
+  EXPECT_EQ(as::assemble(*p), stream);
 }

@@ -5,6 +5,8 @@
 #include <random>
 
 #include "tierlift/asm/bytecode.h"
+#include "tierlift/asm/parser.h"
+#include "tierlift/asm/printer.h"
 
 using tierlift::as::assemble;
 using tierlift::as::disassemble;
@@ -163,14 +165,15 @@ TEST(BytecodeMalformed, Definitions) {
 }
 
 TEST(BytecodeMalformed, Comments) {
-  // A comment anywhere between statements is skipped.
+  // A comment anywhere between statements is kept, word for word and in its place.
   std::vector<uint32_t> t = kPs20;
   t.insert(t.begin() + 1, {0x0002FFFE, 0x42415443, 0x0000001C});
   t.insert(t.begin() + 14, {0x0000FFFE}); // empty comment
   DiagnosticSink diags;
   auto p = disassemble(t, diags);
   ASSERT_TRUE(p.has_value());
-  EXPECT_EQ(assemble(*p), kPs20);
+  EXPECT_EQ(p->comments.size(), 2u);
+  EXPECT_EQ(assemble(*p), t);
   // Comment longer than what is left: 0x7FFF DWORDs announced, 2 present.
   expect_error({0xFFFF0200, 0x7FFFFFFE, 0x0000FFFF, 0x0000FFFF}, 1, "runs past the end");
   expect_error({0xFFFF0200, 0x8001FFFE, 0, 0x0000FFFF}, 1, "bit 31");
@@ -202,6 +205,10 @@ TEST(BytecodeMalformed, BitFlipsAreRejectedOrRoundTripExactly) {
         }
         ++accepted;
         EXPECT_EQ(assemble(*p), t) << "token " << i << " bit " << bit;
+        // And through the printed text (what `disasm` writes and `assemble` reads).
+        auto text = tierlift::as::parse_text(tierlift::as::print_program(*p), "d.asm");
+        ASSERT_TRUE(text.program.has_value()) << tierlift::as::print_program(*p);
+        EXPECT_EQ(assemble(*text.program), t) << tierlift::as::print_program(*p);
       }
     }
   }
@@ -213,9 +220,13 @@ TEST(BytecodeMalformed, BitFlipsAreRejectedOrRoundTripExactly) {
     t[0] = (n % 2) ? 0xFFFF0200 : 0xFFFE0101;
     DiagnosticSink diags;
     auto p = disassemble(t, diags);
-    if (p)
-      EXPECT_EQ(assemble(*p), t);
-    else
+    if (!p) {
       EXPECT_TRUE(diags.has_errors());
+      continue;
+    }
+    EXPECT_EQ(assemble(*p), t);
+    auto text = tierlift::as::parse_text(tierlift::as::print_program(*p), "d.asm");
+    ASSERT_TRUE(text.program.has_value()) << tierlift::as::print_program(*p);
+    EXPECT_EQ(assemble(*text.program), t) << tierlift::as::print_program(*p);
   }
 }

@@ -155,3 +155,57 @@ static const DWORD g_copy_ps[] = {0xffff0101, 0x00000001, 0x800f0000, 0x90e40000
   EXPECT_EQ(tokens_of(one), kCoissuePair);
   EXPECT_EQ(one.count(ir::Severity::Note, "token-file"), 0u) << one.rendered;
 }
+
+namespace {
+
+// ps.1.1: tex t0; tex t1; def c0, 0.5, 0.5, 0.5, 1 (after the tex, as written); mul r0, c0,
+// t1. def = opcode 0x51, c0 = 0xA00F0000, 0.5f = 0x3F000000, 1.0f = 0x3F800000.
+const Tokens kDefAfterTex = {0xFFFF0101, 0x00000042, 0xB00F0000, 0x00000042, 0xB00F0001, 0x00000051,
+                             0xA00F0000, 0x3F000000, 0x3F000000, 0x3F000000, 0x3F800000, 0x00000005,
+                             0x800F0000, 0xA0E40000, 0xB0E40001, 0x0000FFFF};
+
+// "line:col rule" of every diagnostic of `severity`.
+std::string where(const LoadedListing& l, ir::Severity severity) {
+  std::string out;
+  for (const ir::Diagnostic& d : l.diags.all())
+    if (d.severity == severity)
+      out += std::to_string(d.loc.line) + ":" + std::to_string(d.loc.col) + " " + d.rule + "\n";
+  return out;
+}
+
+as::LoadOptions strict() {
+  as::LoadOptions o;
+  o.strict = true;
+  return o;
+}
+
+} // namespace
+
+// Valve's ps_1_1 listings (Source SDK 2013) write "def c0 0.5f 0.5f 0.5f 1.0f" after their
+// tex instructions, and shipped that way: taken with a warning for each form (rule "syntax"
+// at the first missing comma, rule "order" at the def); --strict refuses both, with the same
+// positions (docs/d3d9-rules.md §12.8).
+TEST(ShippedForms, DefWithoutCommasAfterTex) {
+  const std::string text = "ps.1.1\ntex t0\ntex t1\ndef c0 0.5f 0.5f 0.5f 1.0f\nmul r0, c0, t1\n";
+  LoadedListing l = load_bytes(text, "a.psh");
+  EXPECT_EQ(tokens_of(l), kDefAfterTex);
+  EXPECT_EQ(where(l, ir::Severity::Warning), "4:8 syntax\n4:1 order\n") << l.rendered;
+  EXPECT_NE(l.rendered.find("--strict rejects it"), std::string::npos) << l.rendered;
+
+  LoadedListing s = load_bytes(text, "a.psh", strict());
+  EXPECT_FALSE(s.r().program.ok());
+  EXPECT_EQ(where(s, ir::Severity::Error), "4:8 syntax\n") << s.rendered;
+  EXPECT_NE(s.rendered.find("expected ','"), std::string::npos) << s.rendered;
+
+  // With its commas, the def after tex alone: a warning by default, an error under --strict.
+  const std::string commas = "ps.1.1\ntex t0\ntex t1\ndef c0, 0.5, 0.5, 0.5, 1\nmul r0, c0, t1\n";
+  LoadedListing c = load_bytes(commas, "b.psh");
+  EXPECT_EQ(tokens_of(c), kDefAfterTex);
+  EXPECT_EQ(where(c, ir::Severity::Warning), "4:1 order\n") << c.rendered;
+  LoadedListing cs = load_bytes(commas, "b.psh", strict());
+  EXPECT_FALSE(cs.r().program.ok());
+  EXPECT_EQ(where(cs, ir::Severity::Error), "4:1 order\n") << cs.rendered;
+  EXPECT_NE(cs.rendered.find("def must come before the first instruction (tex at line 2)"),
+            std::string::npos)
+      << cs.rendered;
+}

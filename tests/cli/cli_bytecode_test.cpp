@@ -126,6 +126,17 @@ TEST(CliBytecode, ConstantTableNamesInDisasmAndRun) {
   auto d = run_cli("disasm " + pso.string());
   ASSERT_EQ(d.exit_code, 0) << d.err;
   EXPECT_NE(d.out.find("c4..c7  g_mWVP  float4x4"), std::string::npos) << d.out;
+  // The CTAB itself is kept as "//!comment" lines: assembling the disassembly gives back the
+  // stream byte for byte (docs/d3d9-rules.md §11.4).
+  EXPECT_NE(d.out.find("//!comment 0x42415443 0x0000001c"), std::string::npos) << d.out;
+  auto text = write("ctab.asm", d.out);
+  auto back = scratch("ctab_back.pso");
+  auto a = run_cli("assemble " + text.string() + " -o " + back.string());
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  std::ifstream in(back, std::ios::binary);
+  std::stringstream bytes;
+  bytes << in.rdbuf();
+  EXPECT_EQ(bytes.str(), le_bytes(t));
   auto j = run_cli("check --json " + pso.string());
   EXPECT_NE(j.out.find("\"g_mWVP\""), std::string::npos) << j.out;
   auto r = run_cli("run --ps " + pso.string() +

@@ -1,7 +1,8 @@
 // Feeds arbitrary bytes to the bytecode reader: the file forms (raw DWORDs or a C array,
 // read_token_file) and the same bytes taken directly as little-endian DWORDs. Any crash,
 // hang or sanitizer report is a finding, and so is a broken invariant: a stream the reader
-// accepts must come back unchanged in meaning after assemble → disassemble.
+// accepts must assemble back to exactly its own words (comment blocks included), and through
+// the printed text to the same words again.
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "tierlift/asm/bytecode.h"
+#include "tierlift/asm/parser.h"
 #include "tierlift/asm/printer.h"
 #include "tierlift/asm/validator.h"
 
@@ -29,9 +31,16 @@ void check_stream(const std::vector<uint32_t>& tokens) {
   ir::DiagnosticSink d2;
   auto again = as::assemble(*program, d2);
   if (!again) return; // the writer says which statement it cannot carry
+  if (*again != tokens) std::abort();
   ir::DiagnosticSink d3;
   auto back = as::disassemble(*again, d3);
   if (!back || !ir::same_ir(*program, *back)) std::abort();
+  // disasm ∘ assemble through the text form is the identity too.
+  auto reparsed = as::parse_text(as::print_program(*program), "disasm.asm");
+  if (!reparsed.program) std::abort();
+  ir::DiagnosticSink d4;
+  auto from_text = as::assemble(*reparsed.program, d4);
+  if (!from_text || *from_text != tokens) std::abort();
 }
 
 } // namespace

@@ -78,16 +78,44 @@ TEST(LaterProfiles, NewRowsCarryThePublishedNumbers) {
   EXPECT_EQ(find_opcode("sincos", Profile::ps_3_0)->op, Opcode::SinCos3);
 }
 
+// Every value of fxc's three 2.x targets. Sources: the D3DX reference pages
+// D3DXGetPixelShaderProfile and D3DXGetVertexShaderProfile (each target is ps_2_0 / vs_2_0
+// plus the capabilities they list, and nothing else), and the published pixel-shader
+// comparison tables for the 512 instruction slots of ps_2_a and ps_2_b.
 TEST(LaterProfiles, CapsPresets) {
   auto a = caps_preset("ps_2_a"), b = caps_preset("ps_2_b"), v = caps_preset("vs_2_a");
   ASSERT_TRUE(a && b && v);
+  // ps_2_a: r# >= 22, arbitrary swizzle, dsx/dsy, predication, no dependent-read limit, no
+  // texture-instruction limit; flow control is not on its list (neither static nor dynamic).
   EXPECT_EQ(a->first, Profile::ps_2_x);
   EXPECT_EQ(a->second.temps, 22);
-  EXPECT_TRUE(a->second.predication && a->second.gradients && a->second.arbitrary_swizzle);
+  EXPECT_EQ(a->second.slots, 512);
+  EXPECT_EQ(a->second.static_depth, 0);
+  EXPECT_EQ(a->second.dynamic_depth, 0);
+  EXPECT_TRUE(a->second.predication);
+  EXPECT_TRUE(a->second.gradients);
+  EXPECT_TRUE(a->second.arbitrary_swizzle);
+  EXPECT_TRUE(a->second.no_dependent_limit);
+  EXPECT_TRUE(a->second.no_texture_limit);
+  // ps_2_b: r# >= 32 and no texture-instruction limit, nothing else.
+  EXPECT_EQ(b->first, Profile::ps_2_x);
   EXPECT_EQ(b->second.temps, 32);
-  EXPECT_FALSE(b->second.predication || b->second.gradients || b->second.no_dependent_limit);
+  EXPECT_EQ(b->second.slots, 512);
+  EXPECT_EQ(b->second.static_depth, 0);
+  EXPECT_EQ(b->second.dynamic_depth, 0);
+  EXPECT_FALSE(b->second.predication);
+  EXPECT_FALSE(b->second.gradients);
+  EXPECT_FALSE(b->second.arbitrary_swizzle);
+  EXPECT_FALSE(b->second.no_dependent_limit);
+  EXPECT_TRUE(b->second.no_texture_limit);
+  // vs_2_a: r# >= 13, dynamic flow control (vs_2_x's one non-zero depth, 24), predication;
+  // loop/rep and call nesting stay vs_2_0's 1 (the vertex nesting table: 1 to 4 by caps).
   EXPECT_EQ(v->first, Profile::vs_2_x);
   EXPECT_EQ(v->second.temps, 13);
+  EXPECT_EQ(v->second.slots, 256);
+  EXPECT_EQ(v->second.static_depth, 1);
+  EXPECT_EQ(v->second.dynamic_depth, 24);
+  EXPECT_TRUE(v->second.predication);
   EXPECT_FALSE(caps_preset("ps_2_c").has_value());
 }
 

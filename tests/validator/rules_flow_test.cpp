@@ -125,4 +125,23 @@ TEST(FlowRulesExtra, StaticFlowControlCount) {
                         {"vs_2_0 allows 16 static flow-control instructions", "this is the 17th"}));
 }
 
+// Microsoft's vertex nesting tables give vs_2_x the same static flow count of 16, and count
+// the else of an if b# (in vs_2_0 too); if p0 and if_comp are dynamic and do not count.
+TEST(FlowRulesExtra, StaticFlowCountOfVs2x) {
+  std::string head = "vs_2_x\ndcl_position v0\ndefb b0, true\n";
+  EXPECT_TRUE(is_clean(head + repeat("if b0\nendif", 16) + "mov oPos, v0\n"));
+  EXPECT_TRUE(has_error(head + repeat("if b0\nendif", 17) + "mov oPos, v0\n", "flow", 36, 1,
+                        {"vs_2_x allows 16 static flow-control instructions", "this is the 17th"}));
+  // 8 if/else/endif: 16 counted, at the limit; a 9th if is the 17th (line 4 + 8 * 3 = 28).
+  EXPECT_TRUE(is_clean(head + repeat("if b0\nelse\nendif", 8) + "mov oPos, v0\n"));
+  EXPECT_TRUE(has_error(head + repeat("if b0\nelse\nendif", 8) + "if b0\nendif\nmov oPos, v0\n",
+                        "flow", 28, 1, {"this is the 17th"}));
+  const std::string v0 = "vs_2_0\ndcl_position v0\ndefb b0, true\n";
+  EXPECT_TRUE(has_error(v0 + repeat("if b0\nelse\nendif", 8) + "if b0\nendif\nmov oPos, v0\n",
+                        "flow", 28, 1, {"vs_2_0 allows 16"}));
+  // Dynamic ifs are not counted: 17 if_gt blocks after 16 if b# are fine.
+  EXPECT_TRUE(is_clean(head + repeat("if b0\nendif", 16) + repeat("if_gt c0.x, c1.x\nendif", 17) +
+                       "mov oPos, v0\n"));
+}
+
 } // namespace

@@ -136,6 +136,25 @@ TEST(LaterProfiles, Ps2xCapsPresets) {
       << errors_b;
 }
 
+// ps_2_a has no flow control (the D3DX reference lists none among its capabilities): rep and
+// if_comp are refused under it, and taken under the default 2.x caps.
+TEST(LaterProfiles, Ps2aHasNoFlowControl) {
+  const std::string text = "ps_2_x\ndefi i0, 2, 0, 0, 0\nmov r0, c0\nrep i0\nadd r0, r0, c1\n"
+                           "endrep\nif_gt r0.x, c2.x\nmov r0, c3\nendif\nmov oC0, r0\n";
+  EXPECT_TRUE(is_clean(text));
+  auto parsed = tierlift::as::parse_text(text, "t.asm");
+  ASSERT_TRUE(parsed.program.has_value());
+  tierlift::as::ValidateOptions o;
+  o.caps = ir::caps_preset("ps_2_a")->second;
+  ir::DiagnosticSink diags;
+  EXPECT_FALSE(tierlift::as::validate(*parsed.program, ir::Profile::ps_2_x, diags, o));
+  std::string lines;
+  for (const ir::Diagnostic& d : diags.all())
+    if (d.severity == ir::Severity::Error)
+      lines += std::to_string(d.loc.line) + " " + d.rule + "\n";
+  EXPECT_EQ(lines, "4 flow\n7 flow\n");
+}
+
 // ps_2_x's temps follow the caps: r22 exists with 32 temps (default, ps_2_b), not in ps_2_a.
 TEST(LaterProfiles, Ps2xTempsFollowTheCaps) {
   const std::string text = "ps_2_x\nmov r22, c0\nmov oC0, r22\n";

@@ -1,6 +1,6 @@
 // ir::Program → Direct3D 9 token stream, laid out as Microsoft's assembler lays it out:
-// version token, every statement in listing order, end token. Opcodes and operand shapes
-// come from the one opcode table; token bit positions from token_layout.h.
+// version token, every statement and comment block in listing order, end token. Opcodes and operand
+// shapes come from the one opcode table; token bit positions from token_layout.h.
 #include <fmt/format.h>
 
 #include "tierlift/asm/bytecode.h"
@@ -22,6 +22,7 @@ public:
       case ir::Program::Statement::Kind::Decl: declaration(p_.decls[st.index]); break;
       case ir::Program::Statement::Kind::Def: definition(p_.defs[st.index]); break;
       case ir::Program::Statement::Kind::Code: instruction(p_.code[st.index]); break;
+      case ir::Program::Statement::Kind::Comment: comment(p_.comments[st.index]); break;
       }
     }
     out_.push_back(bc::kEndToken);
@@ -197,6 +198,18 @@ private:
       body.insert(body.end(), c.raw.begin(), c.raw.end());
     }
     emit(info, false, body);
+  }
+
+  // The comment token carries the payload's length in bits 16-30: 32767 DWORDs at most.
+  void comment(const ir::CommentBlock& c) {
+    constexpr size_t kMaxWords = bc::kCommentSizeMask >> bc::kCommentSizeShift;
+    if (c.words.size() > kMaxWords)
+      problem(c.loc, fmt::format("a comment block of {} DWORDs (a comment token holds {} at most)",
+                                 c.words.size(), kMaxWords));
+    out_.push_back(
+        uint32_t{bc::kCommentOpcode} |
+        ((static_cast<uint32_t>(c.words.size()) << bc::kCommentSizeShift) & bc::kCommentSizeMask));
+    out_.insert(out_.end(), c.words.begin(), c.words.end());
   }
 
   const ir::Program& p_;

@@ -1,4 +1,5 @@
-// Direct3D 9 token stream → ir::Program: version token, statements, comments, end token.
+// Direct3D 9 token stream → ir::Program: version token, statements, comment blocks, end
+// token.
 // Operand counts come from the opcode table (SM1 has no length field); in SM2 the length
 // field is checked against what the operands actually take.
 #include <algorithm>
@@ -72,7 +73,8 @@ std::optional<ir::Program> TokenReader::run() {
       return std::move(p_);
     }
     if (opcode == kCommentOpcode) {
-      // Comments (CTAB and the like) carry nothing the IR keeps: skip the payload.
+      // Comments (CTAB and the like) mean nothing to the shader, but they are kept word
+      // for word: assembling the disassembly must give back the same bytes.
       if (tok & kParamBit) {
         fail(pos_, "comment token with bit 31 set");
         return std::nullopt;
@@ -83,6 +85,12 @@ std::optional<ir::Program> TokenReader::run() {
         fail(pos_, fmt::format("comment of {} DWORDs runs past the end ({} left)", n, left));
         return std::nullopt;
       }
+      ir::CommentBlock block;
+      block.loc = loc_at(pos_);
+      block.seq = seq_++;
+      block.words.assign(t_.begin() + static_cast<std::ptrdiff_t>(pos_ + 1),
+                         t_.begin() + static_cast<std::ptrdiff_t>(pos_ + 1 + n));
+      p_.comments.push_back(std::move(block));
       pos_ += 1 + n;
       continue;
     }

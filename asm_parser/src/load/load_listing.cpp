@@ -70,7 +70,12 @@ Loaded load_listing(uint32_t file, ir::SourceManager& sm, const LoadOptions& opt
     break;
   case ListingForm::TokenStream:
   case ListingForm::TokenArray: read = read_tokens(file, sm, diags, form); break;
-  case ListingForm::Text: read.program = parse_program(file, sm, diags, options.parse); break;
+  case ListingForm::Text: {
+    ParseOptions parse = options.parse;
+    parse.strict = parse.strict || options.strict;
+    read.program = parse_program(file, sm, diags, parse);
+    break;
+  }
   }
   std::optional<ir::Program> program = check_program(std::move(read.program), diags, options);
   // Every failing path above reports an error; the guard keeps a Failure from ever being

@@ -80,6 +80,12 @@ public:
         space_ = true;
       } else if (c == '\\' && splice_line()) {
         space_ = true;
+      } else if (size_t mark = comment_block_mark(); mark != 0) {
+        // "//!comment 0x...": the words of a token-stream comment block, read as tokens
+        // (docs/d3d9-rules.md, "Comment blocks"); any other '//' line is a comment.
+        emit(TokKind::Punct, pos_, mark, space_);
+        pos_ += mark;
+        space_ = false;
       } else if (c == ';' || (c == '/' && peek(1) == '/')) {
         skip_to_newline();
         space_ = true;
@@ -111,6 +117,16 @@ private:
     status_ = LexStatus::Stopped;
     finished_ = true;
     return true;
+  }
+
+  // Length of the "//!comment" mark at pos_, or 0. "//!commentary" is an ordinary comment.
+  size_t comment_block_mark() const {
+    constexpr std::string_view kMark = kCommentBlockMark;
+    if (text_.substr(pos_, kMark.size()) != kMark) return 0;
+    size_t end = pos_ + kMark.size();
+    return end < text_.size() && is_ident_char(static_cast<unsigned char>(text_[end]))
+               ? 0
+               : kMark.size();
   }
 
   char peek(size_t k) const { return pos_ + k < text_.size() ? text_[pos_ + k] : '\0'; }

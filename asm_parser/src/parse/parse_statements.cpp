@@ -235,12 +235,13 @@ bool Parser::definition(const Token& mn, ir::Opcode op) {
                 fmt::format("'{}' defines a plain {}# register", lower(mn.text), letter));
   def.index = reg.index;
   int count = op == ir::Opcode::DefB ? 1 : 4;
+  std::optional<ir::SourceLoc> missing_comma;
   for (int k = 0; k < count; ++k) {
     if (at_eol())
       return fail(mn.loc, "operand-count",
                   fmt::format("'{}' takes {} value{}, found {}", lower(mn.text), count,
                               count == 1 ? "" : "s", k));
-    if (!expect_comma()) return false;
+    if (!def_comma(missing_comma)) return false;
     bool ok = op == ir::Opcode::Def    ? float_value(def.raw[k])
               : op == ir::Opcode::DefI ? int_value(def.raw[k])
                                        : bool_value(def.raw[k]);
@@ -249,8 +250,26 @@ bool Parser::definition(const Token& mn, ir::Opcode op) {
   if (at_punct(","))
     return fail(cur().loc, "operand-count",
                 fmt::format("'{}' takes {} value{}", lower(mn.text), count, count == 1 ? "" : "s"));
+  if (missing_comma)
+    diags_.warning(*missing_comma, "syntax",
+                   fmt::format("'{}' without commas between its register and values: "
+                               "shipped listings use the form and it is taken; the documented "
+                               "syntax puts a comma before each value (--strict rejects it)",
+                               lower(mn.text)));
   def.seq = seq_++;
   prog_.defs.push_back(def);
+  return true;
+}
+
+// Valve's ps_1_1 listings write "def c0 0.5f 0.5f 0.5f 1.0f", and the shaders shipped: the
+// values are still separate tokens, so nothing is ambiguous without the commas.
+bool Parser::def_comma(std::optional<ir::SourceLoc>& missing) {
+  if (at_punct(",")) {
+    advance();
+    return true;
+  }
+  if (strict_) return expect_comma();
+  if (!missing) missing = cur().loc;
   return true;
 }
 

@@ -94,6 +94,7 @@ std::optional<ir::Program> Parser::run() {
 }
 
 bool Parser::statement() {
+  if (at_punct(kCommentBlockMark)) return comment_block();
   bool coissue = false;
   if (at_punct("+")) {
     coissue = true;
@@ -153,7 +154,7 @@ std::optional<ir::Program> parse_program(uint32_t file, ir::SourceManager& sm,
   try {
     TokenStream ts = preprocess(file, sm, diags, options);
     if (ts.binary) return std::nullopt;
-    detail::Parser parser(ts, diags, file);
+    detail::Parser parser(ts, diags, file, options.strict);
     auto program = parser.run();
     if (diags.error_count() > errors_before) return std::nullopt;
     return program;

@@ -36,8 +36,9 @@ std::string lower(std::string_view s);
 
 class Parser {
 public:
-  Parser(const TokenStream& ts, ir::DiagnosticSink& diags, uint32_t main_file)
-      : toks_(ts.tokens), diags_(diags), main_file_(main_file), first_error_(diags.error_count()) {}
+  Parser(const TokenStream& ts, ir::DiagnosticSink& diags, uint32_t main_file, bool strict)
+      : toks_(ts.tokens), diags_(diags), main_file_(main_file), strict_(strict),
+        first_error_(diags.error_count()) {}
   // The program, or nullopt when any error was reported.
   std::optional<ir::Program> run();
 
@@ -62,6 +63,8 @@ private:
   // parser.cpp
   bool version();
   bool statement();
+  // "//!comment 0x..." and its "//!comment+" continuation lines (parse_comment_block.cpp).
+  bool comment_block();
 
   // parse_statements.cpp
   bool instruction(const Token& mn, std::string_view base, std::string_view mods, bool coissue,
@@ -75,6 +78,8 @@ private:
   bool int_value(uint32_t& raw);
   bool bool_value(uint32_t& raw);
   bool expect_comma();
+  // The comma before a def value: missing is taken with a warning unless strict_ (§12.8).
+  bool def_comma(std::optional<ir::SourceLoc>& missing);
 
   // parse_operands.cpp
   bool operand(Operand& out);
@@ -86,6 +91,7 @@ private:
   const std::vector<Token>& toks_;
   ir::DiagnosticSink& diags_;
   uint32_t main_file_;
+  bool strict_;
   size_t first_error_;
   size_t pos_ = 0;
   uint32_t seq_ = 0;

@@ -5,6 +5,7 @@
 #include <string_view>
 #include <vector>
 
+#include "tierlift/asm/preprocessor.h"
 #include "tierlift/asm/printer.h"
 
 namespace tierlift::as {
@@ -22,6 +23,15 @@ std::string_view trim(std::string_view s) {
   while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r'))
     s.remove_suffix(1);
   return s;
+}
+
+// "//!comment" at text[i], not followed by a letter (as the lexer reads it).
+bool comment_block_at(std::string_view text, size_t i) {
+  if (!text.substr(i).starts_with(kCommentBlockMark)) return false;
+  size_t end = i + kCommentBlockMark.size();
+  if (end >= text.size()) return true;
+  const char c = text[end];
+  return !((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_');
 }
 
 // The comment syntax of the lexer: ';' and '//' to the end of the line, '/* */' anywhere
@@ -54,6 +64,13 @@ std::vector<LineTrivia> scan(std::string_view text) {
         in_block = false;
         flush_piece();
       }
+      continue;
+    }
+    if (comment_block_at(text, i)) {
+      // A comment block's line: the IR holds its words and prints them as a statement.
+      lines.back().code = true;
+      size_t end = text.find('\n', i);
+      i = (end == std::string_view::npos ? text.size() : end) - 1;
       continue;
     }
     if (c == ';' || (c == '/' && next == '/')) {
@@ -130,6 +147,10 @@ std::string print_program_with_comments(const ir::Program& p, std::string_view s
     case ir::Program::Statement::Kind::Code:
       text = print_instruction(p.code[st.index], p.profile);
       loc = p.code[st.index].loc;
+      break;
+    case ir::Program::Statement::Kind::Comment:
+      text = print_comment_block(p.comments[st.index]);
+      loc = p.comments[st.index].loc;
       break;
     }
     const uint32_t line = line_in(loc, file);

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "tierlift/asm/preprocessor.h"
 #include "tierlift/ir/source_modifiers.h"
 
 namespace tierlift::as {
@@ -123,7 +124,22 @@ std::string def_text(const ir::ConstDef& d) {
   }
 }
 
+// Eight words a line: "//!comment 0x42415443 ..." then "//!comment+ ..." lines.
+std::string comment_text(const ir::CommentBlock& c) {
+  constexpr size_t kWordsPerLine = 8;
+  std::string out(kCommentBlockMark);
+  for (size_t i = 0; i < c.words.size(); ++i) {
+    if (i > 0 && i % kWordsPerLine == 0) out += fmt::format("\n{}+", kCommentBlockMark);
+    out += fmt::format(" 0x{:08x}", c.words[i]);
+  }
+  return out;
+}
+
 } // namespace
+
+std::string print_comment_block(const ir::CommentBlock& c) {
+  return comment_text(c);
+}
 
 std::string print_declaration(const ir::Declaration& d, ir::Profile profile) {
   return decl_text(d, profile);
@@ -158,6 +174,7 @@ std::string print_program(const ir::Program& p) {
     case ir::Program::Statement::Kind::Code:
       out += print_instruction(p.code[st.index], p.profile);
       break;
+    case ir::Program::Statement::Kind::Comment: out += comment_text(p.comments[st.index]); break;
     }
     out += '\n';
   }

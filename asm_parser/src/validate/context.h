@@ -85,6 +85,7 @@ void check_masks(Ctx& c);        // rules_masks.cpp
 void check_special(Ctx& c);      // rules_special.cpp (per-instruction operand rules)
 void check_coissue(Ctx& c);      // rules_coissue.cpp
 void check_flow(Ctx& c);         // rules_flow.cpp
+void check_call_nesting(Ctx& c); // rules_calls.cpp (2.x and 3.0)
 void check_later(Ctx& c);        // rules_later.cpp (2.x and 3.0: predicates, setp, o#, ...)
 
 } // namespace tierlift::as::detail

@@ -1,8 +1,9 @@
 // Flow control (docs/d3d9-rules.md §5.3, §14): if/else/endif, loop/endloop and rep/endrep
 // nest properly; a label directly follows a ret; aL only inside a loop; loop/rep counters
-// within their ranges. vs_2_0: loop/rep nest one deep, calls go forward and do not nest, at
-// most 16 static flow-control instructions. 2.x and 3.0: loop/rep nest as deep as the caps'
-// static depth, if_comp / if p0 as deep as the dynamic depth, break* only inside loop/rep.
+// within their ranges. vs_2_0: loop/rep nest one deep, calls go forward and do not nest.
+// vs_2_0 and vs_2_x: at most 16 static flow-control instructions. 2.x and 3.0: loop/rep nest as
+// deep as the caps' static depth, if_comp / if p0 as deep as the dynamic depth, break* only inside
+// loop/rep.
 #include <map>
 #include <vector>
 
@@ -69,6 +70,22 @@ bool uses_loop_reg(const ir::Instruction& ins) {
   return false;
 }
 
+// What counts against the static flow count (16) of vs_2_0 and vs_2_x, per Microsoft's
+// vertex nesting tables: if b# and an else of one, loop, rep, call, callnz b#. The dynamic
+// forms (if p0, if_comp, callnz p0) do not count.
+bool counts_static_flow(const ir::Instruction& ins, const std::vector<Block>& stack) {
+  switch (ins.op) {
+  case Opcode::If: return ins.src.empty() || ins.src[0].file != RegFile::Predicate;
+  case Opcode::Else:
+    return !stack.empty() && stack.back().op == Opcode::If && !stack.back().dynamic;
+  case Opcode::Loop:
+  case Opcode::Rep:
+  case Opcode::Call: return true;
+  case Opcode::CallNz: return ins.src.size() < 2 || ins.src[1].file != RegFile::Predicate;
+  default: return false;
+  }
+}
+
 // if b#, if p0.x, if_comp: one more if block. Dynamic ones (p0, comparisons) nest as deep
 // as DynamicFlowControlDepth; a device without dynamic flow control has none.
 void open_if(Ctx& c, std::vector<Block>& stack, const ir::Instruction& ins, bool dynamic) {
@@ -99,6 +116,8 @@ void check_flow(Ctx& c) {
   std::vector<size_t> calls;
   bool in_sub = false;
   int flow_count = 0;
+  // The static flow count of Microsoft's vertex nesting tables: vs_2_0 and vs_2_x only.
+  const bool counted_flow = c.vs20() || c.target == ir::Profile::vs_2_x;
   auto loops_open = [&]() {
     for (const Block& b : stack)
       if (b.op != Opcode::If) return true;
@@ -106,13 +125,11 @@ void check_flow(Ctx& c) {
   };
   for (size_t i = 0; i < code.size(); ++i) {
     const ir::Instruction& ins = code[i];
-    bool counts = ins.op == Opcode::If || ins.op == Opcode::Loop || ins.op == Opcode::Rep ||
-                  ins.op == Opcode::Call || ins.op == Opcode::CallNz;
-    if (counts && !later && ++flow_count == kMaxStaticFlow + 1)
+    if (counted_flow && counts_static_flow(ins, stack) && ++flow_count == kMaxStaticFlow + 1)
       c.error(ins.loc, "flow",
-              fmt::format("vs_2_0 allows {} static flow-control instructions (if, loop, rep, "
-                          "call, callnz); this is the {}",
-                          kMaxStaticFlow, ordinal(kMaxStaticFlow + 1)));
+              fmt::format("{} allows {} static flow-control instructions (if b#, its else, "
+                          "loop, rep, call, callnz b#); this is the {}",
+                          c.pname(), kMaxStaticFlow, ordinal(kMaxStaticFlow + 1)));
     if (uses_loop_reg(ins) && !in_sub) {
       bool in_loop = false;
       for (const Block& b : stack) in_loop = in_loop || b.op == Opcode::Loop;

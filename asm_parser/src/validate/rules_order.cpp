@@ -21,14 +21,25 @@ void check_decls_first(Ctx& c) {
       c.error(d.loc, "order",
               fmt::format("dcl must come before the first instruction ({} at line {})",
                           mnemonic(*first), first->loc.line));
-  for (const ir::ConstDef& d : c.prog.defs)
-    if (d.seq > first->seq)
+  for (const ir::ConstDef& d : c.prog.defs) {
+    if (d.seq < first->seq) continue;
+    const char* name = d.file == RegFile::ConstInt    ? "defi"
+                       : d.file == RegFile::ConstBool ? "defb"
+                                                      : "def";
+    // Shipped listings put a def after their tex instructions (Valve's ps_1_1 files), and a
+    // definition holds for the whole shader wherever it stands (docs/d3d9-rules.md §12.8).
+    if (c.opt.windows_leniency)
+      c.sink.warning(d.loc, "order",
+                     fmt::format("{} after the first instruction ({} at line {}): shipped "
+                                 "listings do this and it is taken, the constant holds for the "
+                                 "whole shader; the documented order puts definitions first "
+                                 "(--strict rejects it)",
+                                 name, mnemonic(*first), first->loc.line));
+    else
       c.error(d.loc, "order",
-              fmt::format("{} must come before the first instruction ({} at line {})",
-                          d.file == RegFile::ConstInt    ? "defi"
-                          : d.file == RegFile::ConstBool ? "defb"
-                                                         : "def",
+              fmt::format("{} must come before the first instruction ({} at line {})", name,
                           mnemonic(*first), first->loc.line));
+  }
 }
 
 // nop costs no slot in ps_1_x and may sit anywhere.

@@ -49,6 +49,7 @@ bool validate(const ir::Program& program, ir::Profile target, ir::DiagnosticSink
   detail::check_coissue(c);
   detail::check_texture_ops(c);
   detail::check_flow(c);
+  detail::check_call_nesting(c);
   detail::check_dataflow(c);
   detail::check_outputs(c);
   detail::check_later(c);

@@ -34,6 +34,9 @@ struct ParseOptions {
   std::vector<std::string> include_dirs;
   // false: every #include is an error (fuzzing, untrusted text that must not read files).
   bool allow_include = true;
+  // true (--strict): the documented syntax only. false: forms shipped listings use are
+  // taken with a warning (docs/d3d9-rules.md §12.8: def values without commas).
+  bool strict = false;
 };
 
 // Parses sm.files[file]. Every problem becomes a diagnostic with a position; on any error

@@ -28,6 +28,11 @@ enum class TokKind : uint8_t {
   End,     // end of the whole stream
 };
 
+// A line comment that starts with this mark holds the words of a token-stream comment block
+// (ir::CommentBlock): the lexer hands it out as one Punct token, the rest of the line as
+// ordinary tokens. Other assemblers read it as the comment it looks like.
+inline constexpr std::string_view kCommentBlockMark = "//!comment";
+
 struct Token {
   TokKind kind = TokKind::End;
   bool space_before = false; // white space or a comment separates it from the previous token

@@ -14,11 +14,16 @@ namespace tierlift::as {
 // vertex dcl names its usage and leaves index 0 out ("dcl_texcoord v3", "dcl_normal2 v1");
 // pixel dcl has no usage ("dcl_pp t0.xy"), samplers "dcl_2d s0"; relative addressing as
 // "c[a0.x + 4]" / "c[aL]"; NaN constants as their raw bits "0x7fc00001" (read back by the
-// parser), other floats via fmt "{}" (1, 0.5, -0, 1e-07, inf).
+// parser), other floats via fmt "{}" (1, 0.5, -0, 1e-07, inf); comment blocks of a token
+// stream where they stood, as print_comment_block writes them.
 std::string print_program(const ir::Program& program);
 std::string print_instruction(const ir::Instruction& ins, ir::Profile profile);
 std::string print_declaration(const ir::Declaration& d, ir::Profile profile);
 std::string print_definition(const ir::ConstDef& d);
+// A comment block of the token stream as the parser reads it back: "//!comment" and its
+// words in hexadecimal, eight a line, further lines marked "//!comment+" (one or more lines,
+// no final newline).
+std::string print_comment_block(const ir::CommentBlock& c);
 
 // print_program, keeping the comments and paragraphs of `source` (the text of sm.files[file]
 // the program was parsed from): comment-only lines stay where they were, a statement's

@@ -53,7 +53,8 @@ struct ValidateOptions {
   // gradients, arbitrary swizzles, dependent reads); unset: ir::default_caps(target).
   std::optional<ir::Caps2x> caps;
   // apply_windows_leniency ran: take the forms it reports but keeps as written (ps_1_4
-  // texcrd with the full mask).
+  // texcrd with the full mask), and a def after the first instruction (a warning, rule
+  // "order", as shipped listings have it).
   bool windows_leniency = false;
 };
 

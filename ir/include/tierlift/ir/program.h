@@ -132,23 +132,36 @@ struct ConstDef {
   bool b() const { return raw[0] != 0; }
 };
 
+// A comment token of the stream (D3DSIO_COMMENT: the "CTAB" constant table, fxc's debug
+// information, or any other block a tool put there), kept word for word so that assembling
+// a disassembled stream gives back the same bytes. It means nothing to the shader: same_ir
+// leaves comment blocks out, and only the printer, the assembler and the disassembler read
+// them. Text form: docs/d3d9-rules.md, "Comment blocks".
+struct CommentBlock {
+  std::vector<uint32_t> words; // the payload, without the comment token itself
+  SourceLoc loc;
+  uint32_t seq = 0;
+};
+
 struct Program {
   Profile profile = Profile::vs_1_1;
   SourceLoc version_loc;
   std::vector<Declaration> decls;
   std::vector<ConstDef> defs;
   std::vector<Instruction> code; // executable instructions, in order (incl. phase, labels)
+  std::vector<CommentBlock> comments;
 
   ShaderStage stage() const { return stage_of(profile); }
-  // Statements in listing order (decls, defs and code interleaved by seq).
+  // Statements in listing order (decls, defs, code and comment blocks interleaved by seq).
   struct Statement {
-    enum class Kind { Decl, Def, Code } kind;
+    enum class Kind { Decl, Def, Code, Comment } kind;
     size_t index;
   };
   std::vector<Statement> statements() const;
 };
 
-// Structural equality, ignoring source positions. Used by the round-trip tests.
+// Structural equality, ignoring source positions and comment blocks. Used by the
+// round-trip tests.
 bool same_ir(const Program& a, const Program& b);
 // First difference as a readable line, or "" when same_ir holds.
 std::string ir_difference(const Program& a, const Program& b);
