@@ -171,11 +171,13 @@ bool Emitter::emit_arith(const ir::Instruction& ins, PendingStore& out) {
 }
 
 Id Emitter::bumpenv(uint32_t stage, uint32_t which) {
-  // ps_1_x uniform member kMemberBump: per stage (M00, M01, M10, M11) at 2·stage and
-  // (lscale, loffset, 0, 0) at 2·stage + 1.
+  // ps_1_x uniform member kMemberBump (UniformBlockInfo): per stage the matrix slot, then
+  // (lscale, loffset, 0, 0).
+  const uint32_t slot =
+      (stage % UniformBlockInfo::kBumpStages) * UniformBlockInfo::kBumpSlotsPerStage;
   const Id chain =
       b.op(Op::OpAccessChain, b.type_pointer(SC::Uniform, t_vec4),
-           {uniform_var_, b.const_uint(kMemberBump), b.const_uint((stage & 7) * 2 + (which & 1))});
+           {uniform_var_, b.const_uint(kMemberBump), b.const_uint(slot + (which & 1))});
   return b.op(Op::OpLoad, t_vec4, {chain});
 }
 

@@ -200,8 +200,8 @@ public:
   Id spec_float(uint32_t spec_id, float default_value, const std::string& name);
   // Block members: 0 c[], then vs_2_0: 1 i[16], 2 b[16]; ps_1_x: 1 bumpenv[16].
   static constexpr uint32_t kMemberFloat = 0, kMemberInt = 1, kMemberBool = 2, kMemberBump = 1;
-  uint32_t float_count_ = 0, offset_int_ = 0, offset_bool_ = 0, offset_bump_ = 0;
-  uint32_t size_bytes_ = 0;
+  uint32_t float_count_ = 0;
+  UniformBlockInfo layout_; // uniform_block_layout's, set by declare_uniforms
   bool writes_depth_ = false, uses_kill_ = false;
   Id depth_out_var_ = 0;
   Id fn_main_ = 0;
