@@ -453,8 +453,7 @@ void register_run_command(CLI::App& app) {
   sub->add_option("--subtexel-bits", f->subtexel_bits, "Bilinear fraction bits (0 = exact)")
       ->capture_default_str();
   sub->add_option("--ps1x-max", f->ps1x_max,
-                  "ps_1_x register range (MaxPixelShaderValue): geforce3 (1), radeon8500 (8), "
-                  "d3d9, max, or a number >= 1")
+                  "ps_1_x register range (MaxPixelShaderValue): " + ir::ps1x_choices())
       ->capture_default_str();
   sub->add_option("--probe", f->probes, "Print the stored value of pixel X,Y");
   sub->add_flag("--keep-alpha", f->keep_alpha,
