@@ -91,6 +91,14 @@ TEST(CliDocs, ImageHelpNamesPfm) {
   }
 }
 
+// Every flag of the command line is in docs/command-line.md; these six were in no doc.
+TEST(CliDocs, SmallerFlagsAreDocumented) {
+  const std::string doc = read_all(std::string(TIERLIFT_SOURCE_DIR) + "/docs/command-line.md");
+  for (const char* flag : {"`run --pixel-center", "`run --probe", "`run --subtexel-bits",
+                           "`run --threads", "`--quiet`", "`assemble --c-name"})
+    EXPECT_NE(doc.find(flag), std::string::npos) << flag;
+}
+
 // --ps1x-max's help prints the presets from the one table (ir::kPs1xPresets), every one.
 TEST(CliDocs, Ps1xMaxHelpListsTheTable) {
   for (const char* command : {"run", "glow"}) {
