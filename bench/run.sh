@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Runs every benchmark program (Release build) and prints our figures beside the peer's
+# Runs every benchmark program (of the build given, by default the RelWithDebInfo one of
+# `cmake --preset default`) and prints our figures beside the peer's
 # measured in the same run, as ratios.
 # Usage: bench/run.sh [build-dir]   (default: build, configured by `cmake --preset default`)
 # TIERLIFT_BENCH_FILTER=REGEX runs only the benchmarks it matches (e.g. 'Glow').

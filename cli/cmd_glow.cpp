@@ -448,8 +448,7 @@ void register_glow_command(CLI::App& app) {
                   "out; the agreement of every pair that ran is printed)")
       ->capture_default_str();
   sub->add_option("--ps1x-max", f->ps1x_max,
-                  "ps_1_x register range of tier dx8: geforce3 (1), radeon8500 (8), d3d9 "
-                  "(default), max, or a number >= 1");
+                  "ps_1_x register range of tier dx8: " + ir::ps1x_choices());
   sub->add_flag("--no-half-texel", f->no_half_texel,
                 "Leave the half texel out of the blur offsets (taps land on texel corners)");
   sub->add_option("-o,--output", f->output,

@@ -17,7 +17,6 @@
 
 #include "commands.h"
 #include "front_end.h"
-#include "named_constants.h"
 #include "report.h"
 #include "run_flags.h"
 #include "run_output.h"
@@ -59,13 +58,6 @@ template <class T> T need(std::optional<T> value, const std::string& error) {
 template <class T> T need(ir::Result<T> value) {
   if (!value) throw UsageError{value.message()};
   return std::move(value).value();
-}
-
-// --const settings, names already resolved to registers (named_constants.h).
-std::vector<pass::ConstSetting> parse_constants(const std::vector<std::string>& settings) {
-  std::vector<pass::ConstSetting> out;
-  for (const auto& s : settings) out.push_back(need(parse_const_setting(s)));
-  return out;
 }
 
 // Every flag but --const (read once the listings' constant tables are known).
@@ -277,18 +269,13 @@ int run(const RunFlags& f) {
   auto table = [](const std::optional<LoadedListing>& l) {
     return l && l->constants ? &*l->constants : nullptr;
   };
-  ir::Result<std::vector<std::string>> consts =
-      resolve_named_constants(f.consts, table(vs), table(ps));
+  ir::Result<std::vector<pass::ConstSetting>> consts =
+      parse_const_assignments(f.consts, table(vs), table(ps));
   if (!consts) {
     report.error("usage", consts.message());
     return report.finish(kExitUsage);
   }
-  try {
-    req.constants = parse_constants(*consts);
-  } catch (const UsageError& e) {
-    report.error("usage", e.message);
-    return report.finish(kExitUsage);
-  }
+  req.constants = std::move(*consts);
   if (vs) req.vs = std::make_shared<const ir::Program>(*vs->program);
   if (ps) req.ps = std::make_shared<const ir::Program>(*ps->program);
   report_input_sources(req, report);
@@ -453,8 +440,7 @@ void register_run_command(CLI::App& app) {
   sub->add_option("--subtexel-bits", f->subtexel_bits, "Bilinear fraction bits (0 = exact)")
       ->capture_default_str();
   sub->add_option("--ps1x-max", f->ps1x_max,
-                  "ps_1_x register range (MaxPixelShaderValue): geforce3 (1), radeon8500 (8), "
-                  "d3d9, max, or a number >= 1")
+                  "ps_1_x register range (MaxPixelShaderValue): " + ir::ps1x_choices())
       ->capture_default_str();
   sub->add_option("--probe", f->probes, "Print the stored value of pixel X,Y");
   sub->add_flag("--keep-alpha", f->keep_alpha,

@@ -150,10 +150,6 @@ bool check_executable(LoadedListing& listing, std::string_view backend) {
   return false;
 }
 
-nlohmann::json diagnostics_json(const LoadedListing& listing) {
-  return nlohmann::json::parse(ir::render_json(listing.diags, listing.sources));
-}
-
 nlohmann::json constants_json(const as::ConstantTable& table) {
   static constexpr const char* kSets[] = {"bool", "int4", "float4", "sampler"};
   nlohmann::json out = nlohmann::json::array();
@@ -165,11 +161,6 @@ nlohmann::json constants_json(const as::ConstantTable& table) {
                    {"count", c.count},
                    {"type", c.type}});
   return out;
-}
-
-void print_diagnostics(const LoadedListing& listing) {
-  std::string text = ir::render_text(listing.diags, listing.sources);
-  std::fputs(text.c_str(), stderr);
 }
 
 } // namespace tierlift::cli

@@ -74,11 +74,7 @@ ir::Status check_output(const std::string& output, const std::vector<std::string
 // else goes through a temporary file renamed into place. "" on success.
 std::string write_output(const std::string& path, std::string_view bytes);
 
-// Diagnostics of one listing as JSON (the objects of ir::render_json).
-nlohmann::json diagnostics_json(const LoadedListing& listing);
 // A CTAB as JSON: [{"name", "registers", "set", "index", "count", "type"}].
 nlohmann::json constants_json(const as::ConstantTable& table);
-// Text diagnostics to stderr.
-void print_diagnostics(const LoadedListing& listing);
 
 } // namespace tierlift::cli

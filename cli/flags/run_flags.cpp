@@ -11,6 +11,7 @@
 #include <string>
 
 #include "run_flags.h"
+#include "tierlift/asm/constant_table.h"
 
 namespace tierlift::cli {
 namespace {
@@ -139,43 +140,162 @@ ir::Failure usage(std::string message) {
 
 } // namespace
 
-ir::Result<ConstSetting> parse_const_setting(std::string_view text) {
-  ConstSetting c;
-  std::string_view body = trim(text);
-  if (body.substr(0, 3) == "vs:")
-    c.stage = StageMask::Vertex, body.remove_prefix(3);
-  else if (body.substr(0, 3) == "ps:")
-    c.stage = StageMask::Pixel, body.remove_prefix(3);
-  std::string_view name, value;
-  if (!split_assignment(body, name, value)) {
-    return usage(fmt::format(
-        "--const '{}': expected [vs:|ps:]cN=x,y,z,w, iN=a,b,c,d or bN=true|false", text));
+namespace {
+
+// "[vs:|ps:]…": the stages a setting names, the prefix taken off `body` (the one place it is
+// read).
+StageMask take_stage_prefix(std::string_view& body) {
+  if (body.starts_with("vs:")) {
+    body.remove_prefix(3);
+    return StageMask::Vertex;
   }
-  if (parse_reg(name, "c", kMaxConstRegisters, c.index)) {
-    c.file = ir::RegFile::Const;
+  if (body.starts_with("ps:")) {
+    body.remove_prefix(3);
+    return StageMask::Pixel;
+  }
+  return StageMask::Both;
+}
+
+// A register name — c, i or b and digits — and its file and index (the index not yet
+// checked against the file's size); nullopt for any other name (a CTAB name, then).
+struct RegisterName {
+  ir::RegFile file;
+  uint32_t index = 0;
+};
+std::optional<RegisterName> register_name(std::string_view name) {
+  if (name.size() < 2) return std::nullopt;
+  ir::RegFile file;
+  switch (name[0]) {
+  case 'c': file = ir::RegFile::Const; break;
+  case 'i': file = ir::RegFile::ConstInt; break;
+  case 'b': file = ir::RegFile::ConstBool; break;
+  default: return std::nullopt;
+  }
+  for (char ch : name.substr(1))
+    if (!std::isdigit(static_cast<unsigned char>(ch))) return std::nullopt;
+  uint32_t index = 0;
+  if (!parse_u32(name.substr(1), index)) index = UINT32_MAX; // too many digits: out of range
+  return RegisterName{file, index};
+}
+
+// The value of one register `reg`, typed by its file: four floats (c#), four integers (i#)
+// or a boolean (b#). `text` is the whole setting, for messages.
+ir::Result<ConstSetting> register_value(StageMask stage, RegisterName reg, std::string_view value,
+                                        std::string_view text) {
+  ConstSetting c;
+  c.stage = stage;
+  c.file = reg.file;
+  c.index = reg.index;
+  const uint32_t limit = reg.file == ir::RegFile::Const ? kMaxConstRegisters : 16;
+  if (reg.index >= limit)
+    return usage(fmt::format("--const '{}': register must be c0..c{}, i0..i15 or b0..b15", text,
+                             kMaxConstRegisters - 1));
+  if (reg.file == ir::RegFile::Const) {
     if (parse_vec4(value, c.f)) return c;
     return usage(fmt::format("--const '{}': {}", text,
                              vec4_problem(value, "c# needs four numbers x,y,z,w")));
-  } else if (parse_reg(name, "i", 16, c.index)) {
-    c.file = ir::RegFile::ConstInt;
+  }
+  if (reg.file == ir::RegFile::ConstInt) {
     std::vector<std::string_view> f;
     bool ok = split_fields(value, 4, f);
     for (int k = 0; ok && k < 4; ++k) ok = parse_i32(f[k], c.i[k]);
     if (ok) return c;
     return usage(fmt::format("--const '{}': i# needs four integers a,b,c,d", text));
-  } else if (parse_reg(name, "b", 16, c.index)) {
-    c.file = ir::RegFile::ConstBool;
-    if (value == "true" || value == "1")
-      c.b = true;
-    else if (value == "false" || value == "0")
-      c.b = false;
-    else {
-      return usage(fmt::format("--const '{}': b# is true or false", text));
-    }
+  }
+  if (value == "true" || value == "1" || value == "false" || value == "0") {
+    c.b = value == "true" || value == "1";
     return c;
   }
-  return usage(fmt::format("--const '{}': register must be c0..c{}, i0..i15 or b0..b15", text,
-                           kMaxConstRegisters - 1));
+  return usage(fmt::format("--const '{}': b# is true or false", text));
+}
+
+// The registers a constant named by a constant table covers: a boolean takes one value, a
+// float or integer constant 4 per register in register order (a matrix or an array: up to
+// 4·count), a sampler none (it is bound with --texture).
+ir::Result<std::vector<ConstSetting>> named_value(StageMask stage, const as::NamedConstant& c,
+                                                  std::string_view value, std::string_view text) {
+  auto fail = [&](std::string why) {
+    return usage(fmt::format("--const '{}': {}", text, std::move(why)));
+  };
+  std::vector<std::string_view> values;
+  split_fields(value, 0, values);
+  std::vector<ConstSetting> out;
+  if (c.set == as::ConstantSet::Sampler)
+    return fail(
+        fmt::format("'{}' is a sampler ({}); bind it with --texture", c.name, c.registers()));
+  if (c.set == as::ConstantSet::Bool) {
+    if (values.size() != 1)
+      return fail(fmt::format("'{}' ({}) takes one value, true or false", c.name, c.registers()));
+    ir::Result<ConstSetting> b =
+        register_value(stage, {ir::RegFile::ConstBool, c.index}, value, text);
+    if (!b) return b.failure();
+    out.push_back(*b);
+    return out;
+  }
+  if (values.size() % 4 != 0 || values.size() > 4 * size_t{c.count})
+    return fail(fmt::format("'{}' ({}, {}) takes 4 numbers per register, at most {}; got {}",
+                            c.name, c.registers(), c.type.empty() ? "?" : c.type, 4 * c.count,
+                            values.size()));
+  const ir::RegFile file =
+      c.set == as::ConstantSet::Int4 ? ir::RegFile::ConstInt : ir::RegFile::Const;
+  for (uint32_t r = 0; r < values.size() / 4; ++r) {
+    const std::string_view* v = &values[4 * r];
+    const std::string four = fmt::format("{},{},{},{}", v[0], v[1], v[2], v[3]);
+    ir::Result<ConstSetting> s = register_value(stage, {file, c.index + r}, four, text);
+    if (!s) return s.failure();
+    out.push_back(*s);
+  }
+  return out;
+}
+
+} // namespace
+
+ir::Result<std::vector<ConstSetting>> parse_const_assignment(std::string_view text,
+                                                             const as::ConstantTable* vs,
+                                                             const as::ConstantTable* ps) {
+  std::string_view body = trim(text);
+  const StageMask stage = take_stage_prefix(body);
+  std::string_view name, value;
+  if (!split_assignment(body, name, value))
+    return usage(fmt::format(
+        "--const '{}': expected [vs:|ps:]cN=x,y,z,w, iN=a,b,c,d or bN=true|false", text));
+  if (std::optional<RegisterName> reg = register_name(name)) {
+    ir::Result<ConstSetting> c = register_value(stage, *reg, value, text);
+    if (!c) return c.failure();
+    return std::vector<ConstSetting>{*c};
+  }
+  std::vector<ConstSetting> out;
+  for (auto [mask, table] : {std::pair{StageMask::Vertex, vs}, {StageMask::Pixel, ps}}) {
+    const as::NamedConstant* c =
+        table && (stage == StageMask::Both || stage == mask) ? table->find(name) : nullptr;
+    if (!c) continue;
+    ir::Result<std::vector<ConstSetting>> regs = named_value(mask, *c, value, text);
+    if (!regs) return regs.failure();
+    out.insert(out.end(), regs->begin(), regs->end());
+  }
+  if (out.empty())
+    return usage(fmt::format("--const '{}': '{}' is neither a register (cN, iN, bN) nor a "
+                             "constant named in the listings' constant tables (CTAB){}",
+                             text, name, vs || ps ? "" : "; these listings carry none"));
+  return out;
+}
+
+ir::Result<std::vector<ConstSetting>> parse_const_assignments(const std::vector<std::string>& texts,
+                                                              const as::ConstantTable* vs,
+                                                              const as::ConstantTable* ps) {
+  std::vector<ConstSetting> out;
+  for (const std::string& text : texts) {
+    ir::Result<std::vector<ConstSetting>> one = parse_const_assignment(text, vs, ps);
+    if (!one) return one.failure();
+    out.insert(out.end(), one->begin(), one->end());
+  }
+  return out;
+}
+
+ir::Result<ConstSetting> parse_const_setting(std::string_view text) {
+  ir::Result<std::vector<ConstSetting>> one = parse_const_assignment(text, nullptr, nullptr);
+  if (!one) return one.failure();
+  return one->front();
 }
 
 ir::Result<RegisterSetting> parse_input_setting(std::string_view text) {
@@ -251,7 +371,7 @@ ir::Result<std::array<uint32_t, 2>> parse_size(std::string_view text) {
       !parse_u32(text.substr(x + 1), h)) {
     return usage(fmt::format("--size '{}': expected WxH, e.g. 256x256", text));
   }
-  if (w == 0 || h == 0 || w > img::kMaxDimension || h > img::kMaxDimension) {
+  if (!img::valid_size(w, h)) {
     return usage(
         fmt::format("--size '{}': width and height must be 1..{}", text, img::kMaxDimension));
   }

@@ -9,9 +9,14 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "tierlift/ir/result.h"
 #include "tierlift/pass/setup.h"
+
+namespace tierlift::as {
+struct ConstantTable;
+} // namespace tierlift::as
 
 namespace tierlift::cli {
 
@@ -25,7 +30,20 @@ using pass::StageMask;
 using pass::TextureSetting;
 using pass::Vec4;
 
-// --const [vs:|ps:]cN=x,y,z,w | iN=a,b,c,d | bN=true|false
+// --const [vs:|ps:]NAME=VALUE, parsed once into typed settings: NAME a register (cN=x,y,z,w,
+// iN=a,b,c,d, bN=true|false) or a constant named by the constant table (CTAB) of the vertex
+// or pixel listing (either may be null; "vs:"/"ps:" picks the table, neither prefix tries
+// both): a matrix or array takes 4 numbers per register in register order and gives a
+// setting per register. Fails (rule "usage") when the name is in neither table or the value
+// does not fit.
+ir::Result<std::vector<ConstSetting>> parse_const_assignment(std::string_view text,
+                                                             const as::ConstantTable* vs,
+                                                             const as::ConstantTable* ps);
+// Every --const of a run, in order.
+ir::Result<std::vector<ConstSetting>> parse_const_assignments(const std::vector<std::string>& texts,
+                                                              const as::ConstantTable* vs,
+                                                              const as::ConstantTable* ps);
+// One register setting (no constant tables).
 ir::Result<ConstSetting> parse_const_setting(std::string_view text);
 // --input v#|t#=x,y,z,w (pixel stage)
 ir::Result<RegisterSetting> parse_input_setting(std::string_view text);

@@ -165,13 +165,9 @@ std::optional<ShaderModule> Emitter::run() {
   m.entry_point = opt.entry_point;
   m.interface = interface_;
   if (uniform_var_) {
+    m.uniforms = layout_;
     m.uniforms.binding =
         prog.stage() == ir::ShaderStage::Vertex ? kVertexConstantsBinding : kPixelConstantsBinding;
-    m.uniforms.float_count = float_count_;
-    m.uniforms.int_offset = offset_int_;
-    m.uniforms.bool_offset = offset_bool_;
-    m.uniforms.bump_offset = offset_bump_;
-    m.uniforms.size_bytes = size_bytes_;
     m.uniforms.float_used.assign(consts_read_.begin(), consts_read_.end());
   }
   for (const auto& [stage, var] : samplers_)

@@ -2,6 +2,7 @@
 // register variables, the entry point that calls it and copies the output registers to the
 // stage interface, and the uniform block sized once every constant read is known.
 #include <spirv/unified1/GLSL.std.450.h>
+#include <tuple>
 
 #include "tierlift/codegen/emitter.h"
 #include "tierlift/ir/profile.h"
@@ -113,39 +114,33 @@ void Emitter::declare_uniforms() {
     return;
   }
   const uint32_t fcount = float_count_ > 0 ? float_count_ : 1;
+  layout_ = uniform_block_layout(fcount, has_int, has_bump);
+  layout_.float_count = float_count_;
   // Array types are shared (c[16] and bumpenv[16] are one type): decorate each once.
   std::set<Id> strided;
-  auto array16 = [&](Id elem, uint32_t count) {
+  auto array = [&](Id elem, uint32_t count) {
     const Id arr = b.type_array(elem, b.const_uint(count));
-    if (strided.insert(arr).second) b.decorate(arr, spv::Decoration::ArrayStride, 16);
+    if (strided.insert(arr).second)
+      b.decorate(arr, spv::Decoration::ArrayStride, UniformBlockInfo::kStride);
     return arr;
   };
-  const Id arr_f = array16(t_vec4, fcount);
-  std::vector<Id> members{arr_f};
-  std::vector<std::pair<std::string, uint32_t>> offsets{{"c", 0}};
-  uint32_t offset = 16 * fcount;
+  using Member = std::tuple<Id, const char*, uint32_t>; // type, name, offset
+  std::vector<Member> members{{array(t_vec4, fcount), "c", 0}};
   if (has_int) {
-    const Id arr_i = array16(t_ivec4, 16);
-    const Id arr_b = array16(t_uint, 16);
-    members.push_back(arr_i);
-    offsets.emplace_back("i", offset);
-    offset += 256;
-    members.push_back(arr_b);
-    offsets.emplace_back("b", offset);
-    offset += 256;
+    members.emplace_back(array(t_ivec4, UniformBlockInfo::kIntRegisters), "i", layout_.int_offset);
+    members.emplace_back(array(t_uint, UniformBlockInfo::kBoolRegisters), "b", layout_.bool_offset);
   }
   if (has_bump) {
-    // Per texture stage: (M00, M01, M10, M11) and (lscale, loffset, 0, 0).
-    const Id arr_m = array16(t_vec4, 16);
-    members.push_back(arr_m);
-    offsets.emplace_back("bumpenv", offset);
-    offset += 256;
+    const uint32_t slots = UniformBlockInfo::kBumpStages * UniformBlockInfo::kBumpSlotsPerStage;
+    members.emplace_back(array(t_vec4, slots), "bumpenv", layout_.bump_offset);
   }
-  uniform_block_ = b.type_struct(members);
+  std::vector<Id> types;
+  for (const Member& m : members) types.push_back(std::get<0>(m));
+  uniform_block_ = b.type_struct(types);
   b.decorate(uniform_block_, spv::Decoration::Block);
   for (uint32_t m = 0; m < members.size(); ++m) {
-    b.member_decorate(uniform_block_, m, spv::Decoration::Offset, offsets[m].second);
-    b.member_name(uniform_block_, m, offsets[m].first);
+    b.member_decorate(uniform_block_, m, spv::Decoration::Offset, std::get<2>(members[m]));
+    b.member_name(uniform_block_, m, std::get<1>(members[m]));
   }
   b.global_variable(b.type_pointer(SC::Uniform, uniform_block_), SC::Uniform, 0, uniform_var_);
   const bool vertex = prog.stage() == ir::ShaderStage::Vertex;
@@ -154,12 +149,24 @@ void Emitter::declare_uniforms() {
              vertex ? kVertexConstantsBinding : kPixelConstantsBinding);
   b.name(uniform_block_, vertex ? "VsConstants" : "PsConstants");
   b.name(uniform_var_, vertex ? "vs_constants" : "ps_constants");
+}
+
+UniformBlockInfo uniform_block_layout(uint32_t float_slots, bool has_int, bool has_bump) {
+  constexpr uint32_t kStride = UniformBlockInfo::kStride;
+  UniformBlockInfo u;
+  uint32_t offset = kStride * float_slots;
   if (has_int) {
-    offset_int_ = offsets[kMemberInt].second;
-    offset_bool_ = offsets[kMemberBool].second;
+    u.int_offset = offset;
+    offset += kStride * UniformBlockInfo::kIntRegisters;
+    u.bool_offset = offset;
+    offset += kStride * UniformBlockInfo::kBoolRegisters;
   }
-  if (has_bump) offset_bump_ = offsets[kMemberBump].second;
-  size_bytes_ = offset;
+  if (has_bump) {
+    u.bump_offset = offset;
+    offset += kStride * UniformBlockInfo::kBumpStages * UniformBlockInfo::kBumpSlotsPerStage;
+  }
+  u.size_bytes = offset;
+  return u;
 }
 
 void Emitter::emit_code() {

@@ -3,6 +3,8 @@
 // rows; texkill as OpKill or OpDemoteToHelperInvocation.
 #include <array>
 
+#include <fmt/format.h>
+
 #include <spirv/unified1/GLSL.std.450.h>
 
 #include "tierlift/codegen/emitter.h"
@@ -44,7 +46,7 @@ Id Emitter::sampler_var(uint32_t stage) {
       b.global_variable(b.type_pointer(SC::UniformConstant, sampled), SC::UniformConstant);
   b.decorate(var, spv::Decoration::DescriptorSet, kDescriptorSet);
   b.decorate(var, spv::Decoration::Binding, kFirstSamplerBinding + stage);
-  b.name(var, "s" + std::to_string(stage));
+  b.name(var, fmt::format("s{}", stage)); // not "s" + temporary: GCC 12 -Wrestrict at -O3
   samplers_.emplace(stage, var);
   return var;
 }
@@ -153,6 +155,34 @@ void Emitter::kill_if_any_negative(Id value, int components) {
   b.begin_block(merge);
 }
 
+PendingStore Emitter::texture_store(const ir::Instruction& ins, Id v) {
+  PendingStore st;
+  st.dst = *ins.dst;
+  st.mods = ins.mods;
+  st.mask = ins.dst->mask;
+  st.value = v;
+  return st;
+}
+
+PendingStore Emitter::depth_store(Id z) {
+  PendingStore st;
+  st.dst.file = RegFile::DepthOut;
+  st.dst.index = 0;
+  st.mask = 0x1;
+  st.value = splat(z);
+  return st;
+}
+
+Id Emitter::stage_texcoord(uint32_t stage) {
+  Id c = texcoord_input(stage);
+  if (opt.stage_projected[stage & 15] && sampler_type(stage) != ir::SamplerType::Cube) {
+    // (x/w, y/w, z/w, 1), as the interpreter's projected().
+    const Id w = comp(c, 3);
+    c = compose(fdiv(comp(c, 0), w, 1), fdiv(comp(c, 1), w, 1), fdiv(comp(c, 2), w, 1), f(1.0f));
+  }
+  return c;
+}
+
 bool Emitter::emit_texture(const ir::Instruction& ins, std::optional<PendingStore>& out) {
   const ir::OpInfo& info = ir::op_info(ins.op);
   if (!ins.dst || ins.src.size() < info.num_src) {
@@ -162,37 +192,11 @@ bool Emitter::emit_texture(const ir::Instruction& ins, std::optional<PendingStor
   const uint32_t m = ins.dst->index;
   const Id zero = f(0.0f);
   auto result = [&](Id v) {
-    PendingStore st;
-    st.dst = *ins.dst;
-    st.mods = ins.mods;
-    st.mask = ins.dst->mask;
-    st.value = v;
-    out = st;
+    out = texture_store(ins, v);
     return true;
-  };
-  auto depth = [&](Id z) {
-    PendingStore st;
-    st.dst.file = RegFile::DepthOut;
-    st.dst.index = 0;
-    st.mask = 0x1;
-    st.value = splat(z);
-    out = st;
-    return true;
-  };
-  auto tc = [&](uint32_t stage) {
-    Id c = texcoord_input(stage);
-    if (opt.stage_projected[stage & 15] && sampler_type(stage) != ir::SamplerType::Cube) {
-      // (x/w, y/w, z/w, 1), as the interpreter's projected().
-      const Id w = comp(c, 3);
-      c = compose(fdiv(comp(c, 0), w, 1), fdiv(comp(c, 1), w, 1), fdiv(comp(c, 2), w, 1), f(1.0f));
-    }
-    return c;
-  };
-  auto dot3_tc = [&](uint32_t stage) {
-    return dot(texcoord_input(stage), load_src(ins.src[0]), 3);
   };
   switch (ins.op) {
-  case Opcode::Tex: return result(sample(m, tc(m)));
+  case Opcode::Tex: return result(sample(m, stage_texcoord(m)));
   case Opcode::TexLd14: return result(sample(m, load_src(ins.src[0])));
   case Opcode::TexLd:
   case Opcode::TexLdP:
@@ -222,21 +226,7 @@ bool Emitter::emit_texture(const ir::Instruction& ins, std::optional<PendingStor
     return true;
   }
   case Opcode::TexBem:
-  case Opcode::TexBemL: {
-    const Id tn = load_src(ins.src[0]);
-    const Id c = tc(m);
-    const Id mat = bumpenv(m, 0);
-    const Id r = comp(tn, 0), g = comp(tn, 1);
-    const Id u = rule::bump_offset(arith(1), comp(c, 0), comp(mat, 0), r, comp(mat, 2), g);
-    const Id v = rule::bump_offset(arith(1), comp(c, 1), comp(mat, 1), r, comp(mat, 3), g);
-    Id s = sample(m, compose(u, v, comp(c, 2), comp(c, 3)));
-    if (ins.op == Opcode::TexBemL) {
-      const Id lum = bumpenv(m, 1);
-      const Id k = rule::bump_luminance(arith(1), comp(tn, 2), comp(lum, 0), comp(lum, 1));
-      s = rule::mul(arith(4), s, splat(k));
-    }
-    return result(s);
-  }
+  case Opcode::TexBemL: return result(bump_sample(ins));
   case Opcode::TexReg2Ar:
   case Opcode::TexReg2Gb:
   case Opcode::TexReg2Rgb: {
@@ -247,51 +237,92 @@ bool Emitter::emit_texture(const ir::Instruction& ins, std::optional<PendingStor
                      : compose(comp(tn, 0), comp(tn, 1), comp(tn, 2), zero);
     return result(sample(m, c));
   }
+  case Opcode::TexDp3: return result(splat(dot3_texcoord(ins, m)));
+  case Opcode::TexDp3Tex:
+    return result(sample(m, compose(dot3_texcoord(ins, m), zero, zero, zero)));
+  case Opcode::TexDepth: {
+    const Id r5 = load_register(RegFile::Temp, m, std::nullopt);
+    const Id r = comp(r5, 0), g = comp(r5, 1);
+    out = depth_store(rule::depth_ratio(arith(1), r, g));
+    return true;
+  }
+  default: return emit_texture_matrix(ins, out);
+  }
+}
+
+Id Emitter::dot3_texcoord(const ir::Instruction& ins, uint32_t stage) {
+  return dot(texcoord_input(stage), load_src(ins.src[0]), 3);
+}
+
+// texbem / texbeml: the coordinate offset by the bump matrix times the source's (r, g), and
+// for texbeml the sample scaled by the luminance.
+Id Emitter::bump_sample(const ir::Instruction& ins) {
+  const uint32_t m = ins.dst->index;
+  const Id tn = load_src(ins.src[0]);
+  const Id c = stage_texcoord(m);
+  const Id mat = bumpenv(m, 0);
+  const Id r = comp(tn, 0), g = comp(tn, 1);
+  const Id u = rule::bump_offset(arith(1), comp(c, 0), comp(mat, 0), r, comp(mat, 2), g);
+  const Id v = rule::bump_offset(arith(1), comp(c, 1), comp(mat, 1), r, comp(mat, 3), g);
+  Id s = sample(m, compose(u, v, comp(c, 2), comp(c, 3)));
+  if (ins.op == Opcode::TexBemL) {
+    const Id lum = bumpenv(m, 1);
+    const Id k = rule::bump_luminance(arith(1), comp(tn, 2), comp(lum, 0), comp(lum, 1));
+    s = rule::mul(arith(4), s, splat(k));
+  }
+  return s;
+}
+
+// The texm3x2 / texm3x3 family: pad rows keep their dot products, the last row uses them.
+bool Emitter::emit_texture_matrix(const ir::Instruction& ins, std::optional<PendingStore>& out) {
+  const uint32_t m = ins.dst->index;
+  const Id zero = f(0.0f);
+  switch (ins.op) {
   case Opcode::TexM3x2Pad:
   case Opcode::TexM3x3Pad:
-    pad_value_[pad_count_ & 1] = dot3_tc(m);
+    pad_value_[pad_count_ & 1] = dot3_texcoord(ins, m);
     ++pad_count_;
     return true;
   case Opcode::TexM3x2Tex:
   case Opcode::TexM3x2Depth: {
-    const Id v = dot3_tc(m);
+    const Id v = dot3_texcoord(ins, m);
     const Id u = pad_value_[0] ? pad_value_[0] : zero;
     pad_count_ = 0;
-    if (ins.op == Opcode::TexM3x2Tex) return result(sample(m, compose(u, v, zero, zero)));
-    return depth(rule::depth_ratio(arith(1), u, v));
+    out = ins.op == Opcode::TexM3x2Tex ? texture_store(ins, sample(m, compose(u, v, zero, zero)))
+                                       : depth_store(rule::depth_ratio(arith(1), u, v));
+    return true;
   }
   case Opcode::TexM3x3Tex:
   case Opcode::TexM3x3:
   case Opcode::TexM3x3Spec:
   case Opcode::TexM3x3VSpec: {
-    const Id w = dot3_tc(m);
+    const Id w = dot3_texcoord(ins, m);
     const Id u = pad_value_[0] ? pad_value_[0] : zero;
     const Id v = pad_value_[1] ? pad_value_[1] : zero;
     pad_count_ = 0;
     const Id n = compose(u, v, w, zero);
-    if (ins.op == Opcode::TexM3x3) return result(compose(u, v, w, f(1.0f)));
-    if (ins.op == Opcode::TexM3x3Tex) return result(sample(m, n));
-    Id e;
-    if (ins.op == Opcode::TexM3x3Spec) {
-      e = load_src(ins.src[1]);
+    if (ins.op == Opcode::TexM3x3) {
+      out = texture_store(ins, compose(u, v, w, f(1.0f)));
+    } else if (ins.op == Opcode::TexM3x3Tex) {
+      out = texture_store(ins, sample(m, n));
     } else {
-      const uint32_t m0 = m >= 2 ? m - 2 : 0, m1 = m >= 1 ? m - 1 : 0;
-      e = compose(comp(texcoord_input(m0), 3), comp(texcoord_input(m1), 3),
-                  comp(texcoord_input(m), 3), zero);
+      Id e;
+      if (ins.op == Opcode::TexM3x3Spec) {
+        e = load_src(ins.src[1]);
+      } else {
+        const uint32_t m0 = m >= 2 ? m - 2 : 0, m1 = m >= 1 ? m - 1 : 0;
+        e = compose(comp(texcoord_input(m0), 3), comp(texcoord_input(m1), 3),
+                    comp(texcoord_input(m), 3), zero);
+      }
+      const Id k = rule::reflect_scale(arith(1), dot(n, e, 3), dot(n, n, 3));
+      const Id r = rule::reflect_component(arith(4), splat(k), n, e);
+      out = texture_store(ins, sample(m, r));
     }
-    const Id k = rule::reflect_scale(arith(1), dot(n, e, 3), dot(n, n, 3));
-    const Id r = rule::reflect_component(arith(4), splat(k), n, e);
-    return result(sample(m, r));
-  }
-  case Opcode::TexDp3: return result(splat(dot3_tc(m)));
-  case Opcode::TexDp3Tex: return result(sample(m, compose(dot3_tc(m), zero, zero, zero)));
-  case Opcode::TexDepth: {
-    const Id r5 = load_register(RegFile::Temp, m, std::nullopt);
-    const Id r = comp(r5, 0), g = comp(r5, 1);
-    return depth(rule::depth_ratio(arith(1), r, g));
+    return true;
   }
   default:
-    error(ins.loc, "code generation for '" + std::string(info.mnemonic) + "' is not implemented");
+    error(ins.loc, "code generation for '" + std::string(ir::op_info(ins.op).mnemonic) +
+                       "' is not implemented");
     return false;
   }
 }

@@ -21,8 +21,11 @@ namespace {
 
 std::string describe(const ir::Instruction& ins) {
   std::string s(ir::op_info(ins.op).mnemonic);
-  if (ins.dst)
-    s += " " + ir::register_name(ins.dst->file, ins.dst->index) + ir::mask_text(ins.dst->mask);
+  if (ins.dst) { // appended piece by piece: " " + temporary trips GCC 12's false -Wrestrict
+    s += ' ';
+    s += ir::register_name(ins.dst->file, ins.dst->index);
+    s += ir::mask_text(ins.dst->mask);
+  }
   return s;
 }
 

@@ -1,6 +1,5 @@
 #include "tierlift/ir/ps1x_range.h"
 
-#include <array>
 #include <cctype>
 #include <cerrno>
 #include <cfloat>
@@ -13,15 +12,6 @@
 namespace tierlift::ir {
 namespace {
 
-// Order matters for ps1x_max_label: the first preset with a value names it.
-constexpr std::array<Ps1xPreset, 4> kPresets{{
-    {"d3d9", FLT_MAX,
-     "a D3D9-class driver: float pipelines, the range reported as FLT_MAX (the default)"},
-    {"geforce3", 1.0f, "the first ps_1_1 parts (GeForce3/4 Ti): registers clamp to [-1, 1]"},
-    {"radeon8500", 8.0f, "ps_1_4 parts (Radeon 8500): [-8, 8], the least ps_1_4 allows"},
-    {"max", FLT_MAX, "the largest finite float: no clamp short of overflow"},
-}};
-
 bool iequal(std::string_view a, std::string_view b) {
   if (a.size() != b.size()) return false;
   for (size_t i = 0; i < a.size(); ++i)
@@ -33,22 +23,23 @@ bool iequal(std::string_view a, std::string_view b) {
 
 } // namespace
 
-std::span<const Ps1xPreset> ps1x_presets() {
-  return kPresets;
-}
-
-float default_ps1x_max() {
-  return FLT_MAX;
+std::string ps1x_choices() {
+  std::string out;
+  for (const Ps1xPreset& p : kPs1xPresets) {
+    const std::string value =
+        p.max_value == FLT_MAX ? std::string("FLT_MAX") : fmt::format("{}", p.max_value);
+    const bool is_default = p.name == kDefaultPs1xPreset;
+    out += fmt::format("{} ({}{}), ", p.name, value, is_default ? ", the default" : "");
+  }
+  return out + "or a number >= 1";
 }
 
 Result<float> parse_ps1x_max(std::string_view text) {
-  for (const Ps1xPreset& p : kPresets)
+  for (const Ps1xPreset& p : kPs1xPresets)
     if (iequal(text, p.name)) return p.max_value;
   auto fail = [&](std::string why) -> Result<float> {
     return ir::fail("ps1x-max", "value",
-                    fmt::format("'{}': {}; expected geforce3 (1), radeon8500 (8), d3d9, max or a "
-                                "number >= 1",
-                                text, why));
+                    fmt::format("'{}': {}; expected {}", text, why, ps1x_choices()));
   };
   if (text.empty()) return fail("empty");
   // strtof on a NUL-terminated copy: std::from_chars for float is missing on older libstdc++.
@@ -63,7 +54,7 @@ Result<float> parse_ps1x_max(std::string_view text) {
 }
 
 std::string ps1x_max_label(float value) {
-  for (const Ps1xPreset& p : kPresets)
+  for (const Ps1xPreset& p : kPs1xPresets)
     if (p.max_value == value) return std::string(p.name);
   return fmt::format("{}", value);
 }

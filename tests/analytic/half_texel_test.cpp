@@ -114,7 +114,7 @@ img::Image run_cpu(const Blur& b, const PassSetup& s, std::string& error,
 analytic::PassModel clamp_linear_model() {
   analytic::PassModel m;
   m.sampler.filter = analytic::Filter::Linear;
-  m.sampler.address_u = m.sampler.address_v = analytic::Address::Clamp;
+  m.sampler.address_u = m.sampler.address_v = analytic::AddressMode::Clamp;
   return m;
 }
 

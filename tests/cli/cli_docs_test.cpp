@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli_test_util.h"
+#include "tierlift/ir/ps1x_range.h"
 
 using tierlift::test::read_all;
 using tierlift::test::run_cli;
@@ -87,6 +88,28 @@ TEST(CliDocs, ImageHelpNamesPfm) {
     const size_t at = r.out.find("--image TEXT");
     ASSERT_NE(at, std::string::npos) << r.out;
     EXPECT_NE(r.out.substr(at, 200).find("PFM"), std::string::npos) << command;
+  }
+}
+
+// Every flag of the command line is in docs/command-line.md; these six were in no doc.
+TEST(CliDocs, SmallerFlagsAreDocumented) {
+  const std::string doc = read_all(std::string(TIERLIFT_SOURCE_DIR) + "/docs/command-line.md");
+  for (const char* flag : {"`run --pixel-center", "`run --probe", "`run --subtexel-bits",
+                           "`run --threads", "`--quiet`", "`assemble --c-name"})
+    EXPECT_NE(doc.find(flag), std::string::npos) << flag;
+}
+
+// --ps1x-max's help prints the presets from the one table (ir::kPs1xPresets), every one.
+TEST(CliDocs, Ps1xMaxHelpListsTheTable) {
+  for (const char* command : {"run", "glow"}) {
+    auto r = run_cli(std::string(command) + " --help");
+    ASSERT_EQ(r.exit_code, 0);
+    const size_t at = r.out.find("--ps1x-max");
+    ASSERT_NE(at, std::string::npos) << r.out;
+    const std::string help = r.out.substr(at, 400);
+    EXPECT_NE(help.find(tierlift::ir::ps1x_choices()), std::string::npos) << command << help;
+    for (const tierlift::ir::Ps1xPreset& p : tierlift::ir::kPs1xPresets)
+      EXPECT_NE(help.find(std::string(p.name) + " ("), std::string::npos) << command << p.name;
   }
 }
 

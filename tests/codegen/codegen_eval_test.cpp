@@ -34,9 +34,17 @@ struct Uniforms {
   pass::Pass stages;
 };
 
+// The ps_1_x range of the geforce3 preset (1), whose clamps the hand-computed values below
+// show (the default conventions have the d3d9 preset's FLT_MAX).
+codegen::CodegenOptions geforce3() {
+  codegen::CodegenOptions o;
+  o.conventions.ps1x_max_value = 1.0f;
+  return o;
+}
+
 EvalResult run(const std::string& text, const Uniforms& u,
                const std::map<uint32_t, Vec4>& inputs = {},
-               const codegen::CodegenOptions& opt = {}) {
+               const codegen::CodegenOptions& opt = geforce3()) {
   auto parsed = as::parse_text(text, "<eval>");
   EXPECT_TRUE(parsed.program) << ir::render_text(parsed.diags, parsed.sources);
   if (!parsed.program) return {};
@@ -224,7 +232,7 @@ TEST(CodegenEval, Ps1xClampsModifiersAndCoissue) {
   // Both halves of a pair read r0 before either writes.
   r = run("ps_1_1\nmov r0, c1\nmul r0.rgb, r0, c1\n+add r0.a, r0, c1\n", u);
   expect_same(r.out[0], {0.25f, 0.25f, 0.25f, 1.0f}, "co-issue");
-  codegen::CodegenOptions fixed;
+  codegen::CodegenOptions fixed = geforce3();
   fixed.conventions.ps1x_fixed_bits = 8;
   r = run("ps_1_1\nmov r0, c0\n", consts({{0.3f, -0.3f, 0.999f, 0}}), {}, fixed);
   expect_same(r.out[0], {77.0f / 256, -77.0f / 256, 1.0f, 0.0f}, "fixed point 8 bits");

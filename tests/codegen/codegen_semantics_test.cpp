@@ -208,6 +208,35 @@ TEST(CodegenSemantics, Vs20IntAndBoolMembersFollowTheFloats) {
   expect_contains(text, {"OpLoopMerge", "OpSelectionMerge"});
 }
 
+// The block layout is described once (codegen::uniform_block_layout): std140 with 16-byte
+// elements, by hand. vs_2_0 with 3 float slots: i[16] at 48, b[16] at 48 + 256 = 304, size
+// 304 + 256 = 560. ps_1_x with 1 slot: bumpenv at 16, two slots per stage, so stage 3's
+// matrix at 16 + 3·32 = 112, its lscale at 128, loffset at 132; size 16 + 16·16 = 272.
+// The module declares the offsets the layout gives (the device packs by the same struct).
+TEST(CodegenSemantics, UniformLayoutByHand) {
+  const codegen::UniformBlockInfo v = codegen::uniform_block_layout(3, true, false);
+  EXPECT_EQ(v.int_offset, 48u);
+  EXPECT_EQ(v.bool_offset, 304u);
+  EXPECT_EQ(v.bump_offset, 0u);
+  EXPECT_EQ(v.size_bytes, 560u);
+  EXPECT_EQ(v.int_at(2, 3), 48u + 32u + 12u);
+  EXPECT_EQ(v.bool_at(5), 304u + 80u);
+  EXPECT_EQ(codegen::UniformBlockInfo::float_at(7, 2), 7u * 16u + 8u);
+  const codegen::UniformBlockInfo p = codegen::uniform_block_layout(1, false, true);
+  EXPECT_EQ(p.int_offset, 0u);
+  EXPECT_EQ(p.bump_offset, 16u);
+  EXPECT_EQ(p.size_bytes, 272u);
+  EXPECT_EQ(p.bump_matrix_at(3, 1), 116u);
+  EXPECT_EQ(p.bump_lscale_at(3), 128u);
+  EXPECT_EQ(p.bump_loffset_at(3), 132u);
+
+  auto m = build("ps_1_1\ntex t0\ntexbem t1, t0\nmov r0, t1\n");
+  ASSERT_TRUE(m);
+  EXPECT_EQ(m->uniforms.bump_offset, 16u);
+  EXPECT_EQ(m->uniforms.size_bytes, 272u);
+  expect_contains(dis(*m), {"OpMemberDecorate %PsConstants 1 Offset 16"});
+}
+
 TEST(CodegenSemantics, SubroutinesBecomeFunctions) {
   const std::string text =
       disassembly("vs_2_0\ndcl_position v0\ndefb b0, true\nmov r0, v0\ncall l1\n"

@@ -16,7 +16,10 @@
 
 namespace tierlift::test {
 
-using analytic::address_texel;
+// The address rule (pass::address_texel) with −1 for the border colour.
+inline int64_t address_texel(int64_t i, int64_t n, pass::AddressMode mode) {
+  return pass::address_texel(mode, i, n).value_or(-1);
+}
 using analytic::PassModel;
 using analytic::pixel_uv;
 using analytic::Tap;

@@ -16,6 +16,7 @@
 
 #include "program_helpers.h"
 #include "run_flags.h"
+#include "tierlift/asm/constant_table.h"
 #include "tierlift/asm/parser.h"
 #include "tierlift/asm/validator.h"
 #include "tierlift/ir/result_diagnostics.h"
@@ -321,6 +322,53 @@ TEST(RunJob, PointSamplingOnTheD3D9QuadPicksTexelI) {
         }
     }
   }
+}
+
+// --const parsed once (parse_const_assignment): a CTAB name becomes typed register settings
+// directly. g_m (c4..c6, float4x3) takes 4 numbers per register; vs: picks the vertex
+// table, no prefix tries both (g_both is in each); bools take one value; samplers refuse.
+TEST(ConstAssignment, NamedConstantsBecomeTypedRegisters) {
+  as::ConstantTable vs, ps;
+  vs.constants = {{"g_m", as::ConstantSet::Float4, 4, 3, "float4x3"},
+                  {"g_both", as::ConstantSet::Int4, 2, 1, "int4"},
+                  {"g_on", as::ConstantSet::Bool, 5, 1, "bool"}};
+  ps.constants = {{"g_both", as::ConstantSet::Float4, 9, 1, "float4"},
+                  {"g_tex", as::ConstantSet::Sampler, 0, 1, "sampler2D"}};
+  auto m = parse_const_assignment("g_m=1,2,3,4,5,6,7,8", &vs, &ps);
+  ASSERT_TRUE(m) << m.message();
+  ASSERT_EQ(m->size(), 2u); // two of the three registers given
+  EXPECT_EQ((*m)[0].stage, StageMask::Vertex);
+  EXPECT_EQ((*m)[0].file, ir::RegFile::Const);
+  EXPECT_EQ((*m)[0].index, 4u);
+  EXPECT_EQ((*m)[1].index, 5u);
+  EXPECT_EQ((*m)[1].f, (Vec4{5, 6, 7, 8}));
+  auto both = parse_const_assignment("g_both=1,2,3,4", &vs, &ps);
+  ASSERT_TRUE(both) << both.message();
+  ASSERT_EQ(both->size(), 2u);
+  EXPECT_EQ((*both)[0].file, ir::RegFile::ConstInt);
+  EXPECT_EQ((*both)[0].index, 2u);
+  EXPECT_EQ((*both)[0].i, (std::array<int32_t, 4>{1, 2, 3, 4}));
+  EXPECT_EQ((*both)[1].stage, StageMask::Pixel);
+  EXPECT_EQ((*both)[1].file, ir::RegFile::Const);
+  EXPECT_EQ((*both)[1].index, 9u);
+  auto ps_only = parse_const_assignment("ps:g_both=1,2,3,4", &vs, &ps);
+  ASSERT_TRUE(ps_only);
+  ASSERT_EQ(ps_only->size(), 1u);
+  EXPECT_EQ((*ps_only)[0].stage, StageMask::Pixel);
+  auto on = parse_const_assignment("vs:g_on=true", &vs, &ps);
+  ASSERT_TRUE(on);
+  EXPECT_EQ((*on)[0].file, ir::RegFile::ConstBool);
+  EXPECT_EQ((*on)[0].index, 5u);
+  EXPECT_TRUE((*on)[0].b);
+  // A register name is a register, tables or not.
+  auto reg = parse_const_assignment("ps:c3=1,1,1,1", &vs, &ps);
+  ASSERT_TRUE(reg);
+  EXPECT_EQ((*reg)[0].index, 3u);
+  for (const char* bad : {"g_m=1,2,3", "g_m=1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16", "g_m=1,2,3,x",
+                          "ps:g_m=1,2,3,4", "g_on=1,0", "g_tex=0,0,0,0", "g_nope=1,2,3,4"})
+    EXPECT_FALSE(parse_const_assignment(bad, &vs, &ps)) << bad;
+  EXPECT_NE(parse_const_assignment("g_tex=0", &vs, &ps).message().find("--texture"),
+            std::string::npos);
 }
 
 TEST(RunOptions, ParsersAcceptAndRefuse) {

@@ -92,6 +92,33 @@ TEST(Addressing, EveryModeOnIndicesOutside) {
     EXPECT_EQ(address_texel(AddressMode::Mirror, -k, 4), mirror_neg[k - 1]);
 }
 
+// More edge values of the one address rule (pass::address_texel, which the CPU samplers
+// and the analytic model both read), by hand for N = 4: wrap 9 → 9 − 8 = 1; mirror 5 → 2
+// (period 0 1 2 3 3 2 1 0), 8 → 0 (next period); clamp far out → the edge texel; mirror-once
+// −2 → 1, −7 → mirror 6 → clamped 3; a one-texel axis maps everything to 0 but for Border;
+// an empty axis reads the border colour.
+TEST(Addressing, OneRuleAtEdgeValues) {
+  using pass::address_texel;
+  EXPECT_EQ(address_texel(AddressMode::Wrap, 9, 4), 1);
+  EXPECT_EQ(address_texel(AddressMode::Wrap, -4, 4), 0);
+  EXPECT_EQ(address_texel(AddressMode::Wrap, -5, 4), 3);
+  EXPECT_EQ(address_texel(AddressMode::Mirror, 5, 4), 2);
+  EXPECT_EQ(address_texel(AddressMode::Mirror, 8, 4), 0);
+  EXPECT_EQ(address_texel(AddressMode::Clamp, -6, 4), 0);
+  EXPECT_EQ(address_texel(AddressMode::Clamp, 6, 4), 3);
+  EXPECT_EQ(address_texel(AddressMode::Clamp, INT64_MIN / 2, 4), 0);
+  EXPECT_EQ(address_texel(AddressMode::Border, 4, 4), std::nullopt);
+  EXPECT_EQ(address_texel(AddressMode::Border, 3, 4), 3);
+  EXPECT_EQ(address_texel(AddressMode::MirrorOnce, -2, 4), 1);
+  EXPECT_EQ(address_texel(AddressMode::MirrorOnce, -7, 4), 3);
+  for (AddressMode m :
+       {AddressMode::Wrap, AddressMode::Mirror, AddressMode::Clamp, AddressMode::MirrorOnce})
+    for (int64_t i : {-3, -1, 0, 1, 5})
+      EXPECT_EQ(address_texel(m, i, 1), 0) << static_cast<int>(m) << " " << i;
+  EXPECT_EQ(address_texel(AddressMode::Border, 1, 1), std::nullopt);
+  EXPECT_EQ(address_texel(AddressMode::Wrap, 0, 0), std::nullopt);
+}
+
 // The same through the sampler: point sampling at the centre of texel index −1, 4, 9 on
 // the u axis (row 0), R = texel x.
 TEST(Addressing, ThroughThePointSampler) {

@@ -47,7 +47,15 @@ inline tierlift::ir::Program parse(const std::string& text, bool validate = true
   return *r.program;
 }
 
-inline ShaderVM make_vm(const std::string& text, tierlift::ir::Conventions conv = {}) {
+// The VM suites pin the ps_1_x range of the geforce3 preset (1), the range whose clamps their
+// hand-computed values show; the default conventions have the d3d9 preset's FLT_MAX.
+inline tierlift::ir::Conventions geforce3() {
+  tierlift::ir::Conventions c;
+  c.ps1x_max_value = 1.0f;
+  return c;
+}
+
+inline ShaderVM make_vm(const std::string& text, tierlift::ir::Conventions conv = geforce3()) {
   return ShaderVM(parse(text), conv);
 }
 

@@ -192,6 +192,6 @@ TEST(VmTexture, Ps1xTextureResultsClampToRange) {
   // ps_1_1 with max 1: a sample of (2, −3, 0.5, 1) lands in t0 as (1, −1, 0.5, 1).
   ConstTextures tex;
   tex.value = {2, -3, 0.5f, 1};
-  ShaderVM vm(parse("ps_1_1\ntex t0\nmov r0, t0\n"), {});
+  ShaderVM vm(parse("ps_1_1\ntex t0\nmov r0, t0\n"), geforce3());
   EXPECT_VEC4(vm.run_pixel({}, {}, tex).color[0], 1, -1, 0.5f, 1);
 }

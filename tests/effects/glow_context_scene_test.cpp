@@ -74,7 +74,8 @@ INSTANTIATE_TEST_SUITE_P(
         Bad{R"({"effect": "radial-beams", "size": [160, 96], "glow_image": "sign-glow.png"})",
             "s.json:1:47: error: /glow_image", "applies to effect \"glow\" only"},
         Bad{R"({"effect": "glsl-blur", "glow": {"fog": {"start": 0, "end": 1}}})",
-            "s.json:1:34: error: /glow/fog", "applies to effect \"glow\" only"}));
+            "s.json:1:34: error: /glow/fog", "applies to effect \"glow\" only"}),
+    scene_case_name);
 
 struct Shipped {
   const char* file;

@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <filesystem>
+#include <ostream>
 #include <string>
 
 #include "tierlift/effects/scene.h"
@@ -26,6 +28,20 @@ struct SceneErrorCase {
   const char* where; // "s.json:L:C: error: /pointer"
   const char* says;
 };
+
+// How a case prints (GetParam) and its test name: the field and the reason, not the bytes of
+// the struct ("Fields/SceneErrors.ReportsPositionedError/glow_tier_0").
+inline void PrintTo(const SceneErrorCase& c, std::ostream* os) {
+  *os << c.where << " (" << c.says << ")";
+}
+inline std::string scene_case_name(const ::testing::TestParamInfo<SceneErrorCase>& info) {
+  std::string where = info.param.where;
+  const size_t slash = where.find(" /");
+  std::string name;
+  for (char ch : slash == std::string::npos ? std::string("file") : where.substr(slash + 2))
+    name += std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
+  return name + "_" + std::to_string(info.index);
+}
 
 // `s` is the load of `b.text`: it failed, names the place and the reason, and has a caret
 // line; when `where` starts with "file:line:col:", the caret sits under that column (the

@@ -65,7 +65,8 @@ INSTANTIATE_TEST_SUITE_P(
         Bad{R"({"glow": {"motion": {"radius": 0.1, "perimod": 16}}})", "error: /glow/motion",
             "missing \"period\""},
         Bad{R"({"glow": {"motion": {"period": 8}}})", "error: /glow/motion", "missing \"radius\""},
-        Bad{R"({"glow": {"intensity": {}}})", "error: /glow/intensity", "missing \"keyframes\""}));
+        Bad{R"({"glow": {"intensity": {}}})", "error: /glow/intensity", "missing \"keyframes\""}),
+    scene_case_name);
 
 } // namespace
 } // namespace tierlift::effects

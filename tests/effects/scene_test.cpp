@@ -101,7 +101,10 @@ INSTANTIATE_TEST_SUITE_P(
         Bad{"{\"glow\": {\"colour\": 1}}", "s.json:1:11: error: /glow/colour", "unknown key"},
         Bad{"{\"glow\": {\"tier\": \"dx8\", \"intensity\": 5}}",
             "s.json:1:39: error: /glow/intensity", "outside 0..4"},
-        Bad{"{\"glow\": {\"taps\": 4}}", "s.json:1:19: error: /glow/taps", "even"}));
+        Bad{"{\"glow\": {\"taps\": 4}}", "s.json:1:19: error: /glow/taps", "even"},
+        // The one tap cap (effects::kMaxBlurTaps): radius 1024, 2·1024 + 1 taps.
+        Bad{"{\"glow\": {\"taps\": 2051}}", "s.json:1:19: error: /glow/taps", "outside 1..2049"}),
+    scene_case_name);
 
 TEST(Scene, SyntaxErrorsHaveAPosition) {
   ir::Result<Scene> s = parse_shipped("{\n  \"glow\": {\"tier\": \"dx9\", }\n}");

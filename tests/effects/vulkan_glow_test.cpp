@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ostream>
+
+#include <fmt/format.h>
 
 #include "../vulkan/vk_test_util.h"
 #include "tierlift/effects/agreement.h"
@@ -85,12 +88,25 @@ TEST_P(GlowVulkan, EveryPassAgrees) {
   EXPECT_NE(a.images.at(std::string(kFinalTexture)).rgba, a.images.at("scene").rgba);
 }
 
+// Readable parameters: "dx9 rgba32f 128x64 ds2 half-texel default-scene intensity 1".
+void PrintTo(const Case& c, std::ostream* os) {
+  *os << tier_name(c.tier) << " " << img::format_name(c.format) << " " << c.width << "x" << c.height
+      << " ds" << c.downsample << (c.half_texel ? " half-texel" : " corners")
+      << (c.random_scene ? " random-scene" : " default-scene");
+}
+std::string case_name(const ::testing::TestParamInfo<Case>& info) {
+  const Case& c = info.param;
+  return fmt::format("{}_{}_ds{}_{}", tier_name(c.tier), img::format_name(c.format), c.downsample,
+                     info.index);
+}
+
 INSTANTIATE_TEST_SUITE_P(Glow, GlowVulkan,
                          ::testing::Values(Case{img::Format::RGBA32F, 2, true},
                                            Case{img::Format::RGBA32F, 1, true},
                                            Case{img::Format::RGBA32F, 2, false},
                                            Case{img::Format::RGBA32F, 4, true},
-                                           Case{img::Format::RGBA8, 3, true}));
+                                           Case{img::Format::RGBA8, 3, true}),
+                         case_name);
 
 // Tier dx8 (Listings 3 + 4, ps.1.x helpers) on small odd sizes, both formats, N = 1, 2, 4.
 constexpr Case dx8(img::Format f, unsigned n, bool random, bool half = true, double i = 1) {
@@ -104,7 +120,8 @@ INSTANTIATE_TEST_SUITE_P(
                       dx8(img::Format::RGBA32F, 2, true), dx8(img::Format::RGBA8, 2, true),
                       dx8(img::Format::RGBA32F, 3, true, false),
                       dx8(img::Format::RGBA32F, 2, false, true, 2.5),
-                      dx8(img::Format::RGBA8, 4, true, true, 0.5)));
+                      dx8(img::Format::RGBA8, 4, true, true, 0.5)),
+    case_name);
 
 // Bilinear read of `im` at texel-space position (gx, gy) (texel k centred at k + 0.5),
 // clamp addressing, exact weights, in double.

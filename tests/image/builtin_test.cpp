@@ -99,3 +99,13 @@ TEST(Builtin, DefaultSizeAndErrors) {
   EXPECT_NE(unknown.message().find("unknown builtin"), std::string::npos) << unknown.message();
   EXPECT_TRUE(img::load_texture("builtin:impulse:3x3"));
 }
+
+// The size cap every input reads (img::valid_size): each side 1..16384.
+TEST(ImageSize, CapByHand) {
+  EXPECT_TRUE(tierlift::img::valid_size(1, 1));
+  EXPECT_TRUE(tierlift::img::valid_size(16384, 16384));
+  EXPECT_FALSE(tierlift::img::valid_size(16385, 1));
+  EXPECT_FALSE(tierlift::img::valid_size(1, 16385));
+  EXPECT_FALSE(tierlift::img::valid_size(0, 7));
+  EXPECT_FALSE(tierlift::img::valid_size(7, 0));
+}

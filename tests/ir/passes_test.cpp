@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "tierlift/ir/device_pipeline.h"
 #include "tierlift/ir/passes.h"
 
 using namespace tierlift;
@@ -101,36 +102,46 @@ TEST(RunPass, ValidatesTheResultAndNamesThePass) {
   EXPECT_NE(bad.message().find("after clear-masks"), std::string::npos) << bad.message();
 }
 
-TEST(ExpandMatrixMacros, OneDotProductPerWrittenRow) {
-  // m4x3 r0.xyz, v0, c4 → dp4 r0.x, v0, c4; dp4 r0.y, v0, c5; dp4 r0.z, v0, c6.
-  auto out = ir::run_pass(matrix_program(), "expand-matrix-macros", ir::expand_matrix_macros);
-  ASSERT_TRUE(out.ok()) << out.message();
-  ASSERT_EQ(out->code.size(), 3u);
-  for (uint32_t row = 0; row < 3; ++row) {
-    const ir::Instruction& ins = out->code[row];
-    EXPECT_EQ(ins.op, Opcode::Dp4);
-    EXPECT_EQ(ins.dst->mask, 1u << row);
-    EXPECT_EQ(ins.src[0].file, RegFile::Input);
-    EXPECT_EQ(ins.src[1].index, 4 + row);
-  }
-  // m3x2 r0.xy → two dp3; a narrower mask keeps only its rows.
-  auto m32 = ir::run_pass(matrix_program(Opcode::M3x2, 0x2), "expand", ir::expand_matrix_macros);
-  ASSERT_TRUE(m32.ok());
-  ASSERT_EQ(m32->code.size(), 1u);
-  EXPECT_EQ(m32->code[0].op, Opcode::Dp3);
-  EXPECT_EQ(m32->code[0].src[1].index, 5u);
-}
-
-TEST(RelativeReach, EveryDeviceConstantOnceAnyReadIsRelative) {
-  ir::Program p = matrix_program();
-  EXPECT_FALSE(ir::relative_reach(p).has_value());
-  p.code[0].src[1].rel = ir::RelAddr{RegFile::Addr, 0, {}};
-  const auto reach = ir::relative_reach(p);
-  ASSERT_TRUE(reach.has_value());
-  EXPECT_EQ(reach->begin, 0u);
-  EXPECT_EQ(reach->end, 256u); // vs_2_0 guarantees 256 c#, the devices offer 256
+TEST(RelativeConstantLimit, EveryDeviceConstant) {
+  EXPECT_EQ(ir::relative_constant_limit(Profile::vs_2_0), 256u);
   EXPECT_EQ(ir::relative_constant_limit(Profile::ps_2_0), 32u);
   EXPECT_EQ(ir::relative_constant_limit(Profile::vs_1_1), 256u); // guaranteed 96
+}
+
+ir::Instruction instr(Opcode op, RegFile dst, uint32_t index, std::vector<ir::SrcOperand> s) {
+  ir::Instruction ins;
+  ins.op = op;
+  ins.dst = ir::DstOperand{dst, index, 0xF, {}};
+  ins.src = std::move(s);
+  return ins;
+}
+
+// ps_2_0: mov r1, t0 / mul r0, r1, c1 / mov oC0, r0, with c1 bound to 0. The device pipeline
+// rewrites the product to mul r0, c1, c1 (+0 whatever r1 holds), so mov r1, t0 feeds
+// nothing and becomes nop; with drop_dead off (the Vulkan device, whose emitter prunes) it
+// stays; with c1 = 1 nothing is rewritten and nothing copied.
+TEST(DevicePipeline, SpecialisesDropsDeadCodeAndValidates) {
+  ir::Program p;
+  p.profile = Profile::ps_2_0;
+  p.code = {instr(Opcode::Mov, RegFile::Temp, 1, {src(RegFile::Texture, 0)}),
+            instr(Opcode::Mul, RegFile::Temp, 0, {src(RegFile::Temp, 1), src(RegFile::Const, 1)}),
+            instr(Opcode::Mov, RegFile::ColorOut, 0, {src(RegFile::Temp, 0)})};
+  std::vector<std::array<float, 4>> bank(2, {0, 0, 0, 0});
+  auto out = ir::prepare_for_device(p, bank);
+  ASSERT_TRUE(out) << out.message();
+  ASSERT_TRUE(out->specialised);
+  const ir::Program& s = *out->specialised;
+  EXPECT_EQ(s.code[0].op, Opcode::Nop);
+  EXPECT_EQ(s.code[1].src[0].file, RegFile::Const);
+  EXPECT_EQ(s.code[1].src[0].index, 1u);
+  EXPECT_EQ(s.code[2].op, Opcode::Mov);
+  auto kept = ir::prepare_for_device(p, bank, {.drop_dead = false});
+  ASSERT_TRUE(kept && kept->specialised);
+  EXPECT_EQ(kept->specialised->code[0].op, Opcode::Mov);
+  bank[1] = {1, 1, 1, 1};
+  auto same = ir::prepare_for_device(p, bank);
+  ASSERT_TRUE(same);
+  EXPECT_FALSE(same->specialised);
 }
 
 } // namespace

@@ -4,6 +4,7 @@
 
 #include <cfloat>
 
+#include "tierlift/ir/conventions.h"
 #include "tierlift/ir/ps1x_range.h"
 
 using namespace tierlift::ir;
@@ -45,4 +46,18 @@ TEST(Ps1xRange, LabelsNameThePreset) {
   EXPECT_EQ(ps1x_max_label(1.0f), "geforce3");
   EXPECT_EQ(ps1x_max_label(8.0f), "radeon8500");
   EXPECT_EQ(ps1x_max_label(4.0f), "4");
+}
+
+// The help texts and messages print the choices from the table, in its order.
+TEST(Ps1xRange, ChoicesComeFromTheTable) {
+  EXPECT_EQ(ps1x_choices(), "d3d9 (FLT_MAX, the default), geforce3 (1), radeon8500 (8), "
+                            "max (FLT_MAX), or a number >= 1");
+  EXPECT_NE(parse_ps1x_max("0.5").message().find(ps1x_choices()), std::string::npos);
+}
+
+// One default: the conventions a device starts from are the d3d9 preset's, as in `tierlift
+// run`, `tierlift glow` and scenes (it was 1, geforce3's, for a bare Conventions).
+TEST(Ps1xRange, ConventionsStartFromTheDefaultPreset) {
+  EXPECT_EQ(Conventions{}.ps1x_max_value, FLT_MAX);
+  EXPECT_EQ(ps1x_max_label(Conventions{}.ps1x_max_value), kDefaultPs1xPreset);
 }

@@ -151,7 +151,12 @@ std::string print_definition(const ir::ConstDef& d) {
 
 std::string print_instruction(const ir::Instruction& ins, ir::Profile /*profile*/) {
   std::string out = ins.coissue ? "+" : "";
-  if (ins.pred) out += "(" + src_text(*ins.pred) + ") ";
+  // Appended piece by piece: "(" + temporary trips GCC 12's false -Wrestrict at -O3.
+  if (ins.pred) {
+    out += '(';
+    out += src_text(*ins.pred);
+    out += ") ";
+  }
   out += ir::op_info(ins.op).mnemonic;
   out += mods_text(ins.mods);
   bool first = true;

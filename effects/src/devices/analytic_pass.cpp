@@ -14,17 +14,6 @@
 namespace tierlift::effects::detail {
 namespace {
 
-analytic::Address address(pass::AddressMode m) {
-  switch (m) {
-  case pass::AddressMode::Wrap: return analytic::Address::Wrap;
-  case pass::AddressMode::Mirror: return analytic::Address::Mirror;
-  case pass::AddressMode::Clamp: return analytic::Address::Clamp;
-  case pass::AddressMode::Border: return analytic::Address::Border;
-  case pass::AddressMode::MirrorOnce: return analytic::Address::MirrorOnce;
-  }
-  return analytic::Address::Wrap;
-}
-
 // The parts of a pass that do not depend on its form: stages, model, blend, ps_1_x rule.
 std::string prepare(const PassDesc& pass, const EffectGraph& graph, const ImageMap& images,
                     analytic::LinearPassInput& in) {
@@ -159,8 +148,8 @@ void keep_outside_scissor(const pass::ScissorRect& r, const img::Image& before, 
 analytic::SamplerModel sampler_model(const pass::SamplerState& s) {
   analytic::SamplerModel m;
   m.filter = s.filter == pass::Filter::Linear ? analytic::Filter::Linear : analytic::Filter::Point;
-  m.address_u = address(s.address_u);
-  m.address_v = address(s.address_v);
+  m.address_u = s.address_u;
+  m.address_v = s.address_v;
   for (int c = 0; c < 4; ++c) m.border[c] = s.border_color[c];
   return m;
 }

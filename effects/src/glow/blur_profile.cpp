@@ -8,7 +8,7 @@
 namespace tierlift::effects {
 namespace {
 
-constexpr double kMaxRadiusTexels = 1024;
+constexpr double kMaxRadiusTexels = kMaxBlurRadius;
 
 double gauss_value(int k, double s) {
   if (k == 0) return 1; // also when s² underflows: 0 / 0 must not make a NaN

@@ -291,8 +291,7 @@ private:
 std::string check_params(const GlowParams& p, const TierRecipe& r) {
   if (p.downsample < 1 || p.downsample > 4)
     return fmt::format("downsample {}: expected 1..4", p.downsample);
-  if (p.width == 0 || p.height == 0 || p.width > img::kMaxDimension ||
-      p.height > img::kMaxDimension)
+  if (!img::valid_size(p.width, p.height))
     return fmt::format("scene size {}x{}: expected 1..{}", p.width, p.height, img::kMaxDimension);
   if (!std::isfinite(p.intensity) || p.intensity < 0)
     return fmt::format("intensity {}: expected a finite value >= 0", p.intensity);

@@ -37,7 +37,7 @@ struct Axis {
 PlanResult build_glsl_blur(const GlowParams& params, const GlslBlurParams& g) {
   GlowPlan plan;
   const uint32_t w = params.width, h = params.height;
-  if (w == 0 || h == 0 || w > img::kMaxDimension || h > img::kMaxDimension)
+  if (!img::valid_size(w, h))
     return plan_failure(
         fmt::format("scene size {}x{}: expected 1..{} each", w, h, img::kMaxDimension));
   if (g.weights.empty() || g.weights.size() % 2 == 0)

@@ -33,8 +33,7 @@ std::string check_textures(const EffectGraph& g) {
   for (const TextureDesc& t : g.textures) {
     if (t.name.empty()) return "a texture has no name";
     if (!names.insert(t.name).second) return fmt::format("texture '{}' is declared twice", t.name);
-    if (t.width == 0 || t.height == 0 || t.width > img::kMaxDimension ||
-        t.height > img::kMaxDimension)
+    if (!img::valid_size(t.width, t.height))
       return fmt::format("texture '{}': size {}x{} outside 1..{}", t.name, t.width, t.height,
                          img::kMaxDimension);
   }

@@ -53,8 +53,7 @@ pass::Vec4 splat(double w) {
 }
 
 std::string check(const GlowParams& g, const RadialParams& r, const TierListings& t) {
-  if (g.width == 0 || g.height == 0 || g.width > img::kMaxDimension ||
-      g.height > img::kMaxDimension)
+  if (!img::valid_size(g.width, g.height))
     return fmt::format("scene size {}x{}: expected 1..{}", g.width, g.height, img::kMaxDimension);
   for (double c : r.centre)
     if (!std::isfinite(c) || c < 0 || c > 1)

@@ -143,8 +143,7 @@ img::ImageResult load_scene_image(const Scene& scene, unsigned frame) {
     return ir::fail(scene.image, "scene", std::move(message));
   };
   const GlowParams& p = scene.params;
-  if (p.width == 0 || p.height == 0 || p.width > img::kMaxDimension ||
-      p.height > img::kMaxDimension)
+  if (!img::valid_size(p.width, p.height))
     return fail(fmt::format("{}: the scene size {}x{} is outside 1..{}", scene.image, p.width,
                             p.height, img::kMaxDimension));
   if (scene.image == kBuiltinNeon) {

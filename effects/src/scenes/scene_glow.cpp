@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "scene_parts.h"
+#include "tierlift/effects/blur_profile.h"
 #include "tierlift/effects/scene.h"
 #include "tierlift/listings/embedded.h"
 
@@ -23,7 +24,6 @@ constexpr NumberRange kLength{0, 4096, true}; // σ and period, in full-resoluti
 constexpr NumberRange kRadius{0, 4096};
 constexpr NumberRange kWeight{0, 1000};
 constexpr NumberRange kIntensity{0, 1000};
-constexpr int64_t kMaxTaps = 2049; // radius 1024, the limit of sample_blur_profile
 
 void read_gaussians(const Json& v, const std::string& at, FieldChecker& c, BlurProfile& out) {
   if (!v.is_array()) {
@@ -141,7 +141,7 @@ void read_glow(const Json& g, FieldChecker& c, const std::string& base_dir, Glow
     if (auto n = c.integer(*v, at + "/downsample", 1, 4)) p.downsample = unsigned(*n);
   if (const Json* v = member(g, "profile")) read_profile(*v, at + "/profile", c, p.profile);
   if (const Json* v = member(g, "taps"))
-    if (auto n = c.integer(*v, at + "/taps", 1, kMaxTaps)) {
+    if (auto n = c.integer(*v, at + "/taps", 1, kMaxBlurTaps)) {
       if (*n % 2 == 0)
         c.error(at + "/taps",
                 fmt::format("{} is even; the kernel is centred, so taps must be odd", *n));

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "scene_parts.h"
+#include "tierlift/effects/blur_profile.h"
 #include "tierlift/effects/scene.h"
 
 namespace tierlift::effects {
@@ -14,7 +15,7 @@ namespace {
 
 constexpr std::string_view kGlslKeys[] = {"horizontal",    "vertical", "horizontal_twin",
                                           "vertical_twin", "weights",  "step"};
-constexpr size_t kMaxKernelTaps = 2049; // as glow.taps
+constexpr size_t kMaxKernelTaps = kMaxBlurTaps; // as glow.taps
 
 } // namespace
 

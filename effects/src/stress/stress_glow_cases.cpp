@@ -147,7 +147,7 @@ std::vector<StressRow> sigma_tiny(const StressOptions& o) {
 // Drift bound: each store moves by at most half a step, so |glow − v| ≤ 2·P·step/2.
 std::vector<StressRow> sigma_limit(const StressOptions& o, Format f) {
   constexpr double v = 0.25;
-  GlowParams p = small_params(4, 4, 1, f, 4096, 2049);
+  GlowParams p = small_params(4, 4, 1, f, 4096, kMaxBlurTaps);
   const PlanResult plan = build_glow(p);
   StressRow row;
   row.id = fmt::format("sigma.limit.{}", fmt_name(f));

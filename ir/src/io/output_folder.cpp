@@ -76,7 +76,8 @@ OutputFolder::OutputFolder(std::string dir, std::vector<std::string> inputs, std
       fail(fmt::format("{}: cannot make the folder: {} is not a folder", dir_, nearest.string()));
       return;
     }
-    pattern = (nearest / ("." + full.filename().string() + ".tmpXXXXXX")).string();
+    // fmt::format for the GCC 12 -Wrestrict false positive (output_file.cpp says more).
+    pattern = (nearest / fmt::format(".{}.tmpXXXXXX", full.filename().string())).string();
   }
   int err = 0;
   slot_ = detail::create_registered_temp_dir(pattern, &err);

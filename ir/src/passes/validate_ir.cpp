@@ -122,17 +122,16 @@ Status check_executable(const Program& program, std::string_view backend) {
   return fail(sink);
 }
 
-Result<Program> run_pass(const Program& program, std::string_view name,
+Result<Program> run_pass(Program program, std::string_view name,
                          const std::function<void(Program&)>& pass) {
-  Program out = program;
-  pass(out);
-  Status valid = validate_ir(out);
+  pass(program);
+  Status valid = validate_ir(program);
   if (!valid.ok()) {
     Failure f = std::move(valid).failure();
     for (Diagnostic& d : f.diagnostics) d.message = fmt::format("after {}: {}", name, d.message);
     return f;
   }
-  return out;
+  return program;
 }
 
 } // namespace tierlift::ir

@@ -61,12 +61,6 @@ bool is_io_error(const ImageResult& r) {
   return ir::failed_with(r, kIoRule);
 }
 
-ir::Result<std::vector<uint8_t>> read_file_bytes(const std::string& path) {
-  ir::Result<std::string> read = io::read_bounded(path, io::kImageFileCap);
-  if (!read) return std::move(read).failure();
-  return std::vector<uint8_t>(read->begin(), read->end());
-}
-
 ir::Status write_file_atomic(const std::string& path, std::span<const uint8_t> bytes) {
   return io::write_output(
       path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));

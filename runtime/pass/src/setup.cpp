@@ -216,8 +216,7 @@ bool check_constant_ranges(const RunRequest& req, RunDiagnostics& diags) {
 
 // prepare_pass's work: its checks report into the sink of the listing they point into.
 std::optional<Pass> prepare(const RunRequest& req, RunDiagnostics& diags) {
-  if (req.width == 0 || req.height == 0 || req.width > img::kMaxDimension ||
-      req.height > img::kMaxDimension) {
+  if (!img::valid_size(req.width, req.height)) {
     diags.other.error(
         {}, "size",
         fmt::format("size {}x{} outside 1..{}", req.width, req.height, img::kMaxDimension));

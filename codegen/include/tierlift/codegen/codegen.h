@@ -136,15 +136,39 @@ struct InterfaceVar {
   uint8_t usage_index = 0;
 };
 
+// A stage's constant block in std140, the one description of its layout: the code generator
+// declares the block from it (emit_module.cpp) and a device packs the bank into it
+// (vulkan/uniforms.h). Members, each an array of 16-byte elements: vec4 c[] at 0; vs_2_0:
+// ivec4 i[16], then uint b[16]; ps_1_x: vec4 bumpenv[16], two per texture stage — (M00, M01,
+// M10, M11) and (lscale, loffset, 0, 0).
 struct UniformBlockInfo {
+  static constexpr uint32_t kStride = 16; // ArrayStride of every member
+  static constexpr uint32_t kIntRegisters = 16, kBoolRegisters = 16;
+  static constexpr uint32_t kBumpStages = 8, kBumpSlotsPerStage = 2;
+
   uint32_t set = kDescriptorSet, binding = 0;
-  uint32_t float_count = 0;         // vec4 c[float_count] at offset 0, stride 16
+  uint32_t float_count = 0;         // vec4 c[float_count] at offset 0
   uint32_t int_offset = 0;          // ivec4 i[16] (0 when absent)
-  uint32_t bool_offset = 0;         // uint b[16], stride 16 (0 when absent)
+  uint32_t bool_offset = 0;         // uint b[16] (0 when absent)
   uint32_t bump_offset = 0;         // ps_1_x: vec4 bumpenv[16] (0 when absent)
   uint32_t size_bytes = 0;          // 0: no block
   std::vector<uint32_t> float_used; // c# read by the program (after pruning)
+
+  // Byte offsets of single values (component k = 0..3).
+  static uint32_t float_at(uint32_t c, uint32_t k) { return kStride * c + 4 * k; }
+  uint32_t int_at(uint32_t n, uint32_t k) const { return int_offset + kStride * n + 4 * k; }
+  uint32_t bool_at(uint32_t n) const { return bool_offset + kStride * n; }
+  uint32_t bump_matrix_at(uint32_t stage, uint32_t k) const {
+    return bump_offset + kStride * kBumpSlotsPerStage * stage + 4 * k;
+  }
+  uint32_t bump_lscale_at(uint32_t stage) const { return bump_matrix_at(stage, 0) + kStride; }
+  uint32_t bump_loffset_at(uint32_t stage) const { return bump_matrix_at(stage, 1) + kStride; }
 };
+
+// The layout of a block declaring `float_slots` c# elements (at least 1 when the block
+// exists), the integer and boolean registers (vs_2_0) and the bump-environment states
+// (ps_1_x). float_count is left to the caller (the registers in use, possibly 0).
+UniformBlockInfo uniform_block_layout(uint32_t float_slots, bool has_int, bool has_bump);
 
 struct SamplerInfo {
   uint32_t set = kDescriptorSet, binding = 0;

@@ -154,7 +154,20 @@ public:
   // ---- instruction emitters (emit_arith.cpp, emit_texture.cpp, emit_flow.cpp) ----
   // Arithmetic: the vec4 result and the mask it may write (narrowed for macros).
   bool emit_arith(const ir::Instruction& ins, PendingStore& out);
+  // emit_arith's three groups, each 0 for an opcode not its own: per component (mov … cmp),
+  // scalar (rcp, rsq, exp, log, pow, sincos), across components (dp*, lit, dst, matrices,
+  // crs, nrm, bem).
+  Id arith_per_component(const ir::Instruction& ins, uint8_t mask);
+  Id arith_scalar(const ir::Instruction& ins);
+  Id arith_across_components(const ir::Instruction& ins);
   bool emit_texture(const ir::Instruction& ins, std::optional<PendingStore>& out);
+  // emit_texture's parts: the texm3x2 / texm3x3 family, texbem(l)'s read, the stores.
+  bool emit_texture_matrix(const ir::Instruction& ins, std::optional<PendingStore>& out);
+  Id bump_sample(const ir::Instruction& ins);
+  Id stage_texcoord(uint32_t stage); // t# of a stage, divided by w when the stage projects
+  Id dot3_texcoord(const ir::Instruction& ins, uint32_t stage); // t#·src0 over .xyz
+  PendingStore texture_store(const ir::Instruction& ins, Id v);
+  PendingStore depth_store(Id z); // oDepth.x = z
   bool emit_flow(const ir::Instruction& ins, size_t index);
   void error(const ir::SourceLoc& loc, const std::string& message);
 
@@ -200,8 +213,8 @@ public:
   Id spec_float(uint32_t spec_id, float default_value, const std::string& name);
   // Block members: 0 c[], then vs_2_0: 1 i[16], 2 b[16]; ps_1_x: 1 bumpenv[16].
   static constexpr uint32_t kMemberFloat = 0, kMemberInt = 1, kMemberBool = 2, kMemberBump = 1;
-  uint32_t float_count_ = 0, offset_int_ = 0, offset_bool_ = 0, offset_bump_ = 0;
-  uint32_t size_bytes_ = 0;
+  uint32_t float_count_ = 0;
+  UniformBlockInfo layout_; // uniform_block_layout's, set by declare_uniforms
   bool writes_depth_ = false, uses_kill_ = false;
   Id depth_out_var_ = 0;
   Id fn_main_ = 0;

@@ -20,6 +20,11 @@
 
 namespace tierlift::effects {
 
+// The widest blur: radius 1024 texels, so at most 2·1024 + 1 taps — the one cap on taps, read
+// by sample_blur_profile and by the scenes' "taps" and GLSL "weights".
+inline constexpr int kMaxBlurRadius = 1024;
+inline constexpr int kMaxBlurTaps = 2 * kMaxBlurRadius + 1;
+
 struct Gaussian {
   double sigma = 1;  // in full-resolution pixels
   double weight = 1; // what the term's taps sum to

@@ -99,7 +99,7 @@ private:
   void settle(const std::string& name); // zeroes `name` if it is stale
 };
 
-// Wraps a device the caller owns (and keeps alive). Only when tierlift_vulkan is built.
+// Wraps a device the caller owns (and keeps alive). tierlift_vulkan is always built.
 std::unique_ptr<PassDevice> make_vulkan_pass_device(vulkan::Device& device);
 
 } // namespace tierlift::effects

@@ -2,6 +2,8 @@
 // one place. The interpreter, the analytic model and the Vulkan device all read it.
 #pragma once
 
+#include "tierlift/ir/ps1x_range.h"
+
 namespace tierlift::ir {
 
 enum class PixelCenter {
@@ -30,9 +32,9 @@ struct Conventions {
   // Sub-texel precision of bilinear weights: 0 = exact, N = fractions quantised to N bits
   // (lavapipe reports 8, but its float-texture path does not quantise: 0 matches it).
   int subtexel_bits = 0;
-  // ps_1_x: registers clamp to [-max, +max] (PixelShader1xMaxValue; the default 1 is the
-  // minimum for ps_1_1–1_3). Constants always clamp to [-1, 1].
-  float ps1x_max_value = 1.0f;
+  // ps_1_x: registers clamp to [-max, +max] (PixelShader1xMaxValue; the default is the
+  // d3d9 preset of ps1x_range.h, what D3D9 runtimes report). Constants always clamp to [-1, 1].
+  float ps1x_max_value = default_ps1x_max();
   // ps_1_x fixed-point emulation: 0 = off (fp32), 8 or 9 = fraction bits of the hardware.
   int ps1x_fixed_bits = 0;
   // Llvmpipe (default) makes the CPU and Vulkan devices agree at every target size.

@@ -123,9 +123,6 @@ template <Denormals D = kKeep> inline float legacy_scale(float a, float b) {
 template <Denormals D = kKeep> inline float legacy_div(float a, float b) {
   return FloatArith<D>::div(a, b);
 }
-template <Denormals D = kKeep> inline float legacy_floor(float x) {
-  return FloatArith<D>::floor(x);
-}
 template <Denormals D = kKeep> inline float legacy_sin(float x) {
   return FloatArith<D>::sin(x);
 }

@@ -48,9 +48,9 @@ enum class OpClass : uint8_t {
 // What a source operand position expects.
 enum class OperandKind : uint8_t {
   None,
-  Vector, // any readable register, swizzle allowed
-  Scalar, // replicate swizzle required (.x/.y/.z/.w); default .x when none given? no: see validator
-  Matrix, // base register of a matrix macro: no swizzle, no negate
+  Vector,    // any readable register, swizzle allowed
+  Scalar,    // replicate swizzle needed; bare rcp/rsq text reads .x, a bare token .w (leniency)
+  Matrix,    // base register of a matrix macro: no swizzle, no negate
   Sampler,   // s#
   Bool,      // b# (optionally !b# for callnz)
   Int,       // i#

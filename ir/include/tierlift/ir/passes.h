@@ -1,7 +1,7 @@
-// Normalisation passes over an ir::Program, each named and each followed by the structural
-// IR validator (run_pass). Analyses (fold_defs, relative_reach) compute once what the
-// interpreter, the code generator and the run planner used to work out on their own;
-// transforms (expand_matrix_macros) are opt-in for a backend that wants them.
+// Passes over an ir::Program and the structural IR validator. Analyses (fold_defs,
+// relative_constant_limit) compute once what the interpreter, the code generator and the run
+// planner would otherwise work out on their own; the one transform, zero_constant_products,
+// runs in the device pipeline (device_pipeline.h), through run_pass.
 #pragma once
 
 #include <array>
@@ -30,8 +30,9 @@ Status validate_ir(const Program& program);
 // first instruction that only those profiles have (or its version line).
 Status check_executable(const Program& program, std::string_view backend);
 
-// Runs `pass` over a copy of `program`, then validate_ir; a failure names the pass.
-Result<Program> run_pass(const Program& program, std::string_view name,
+// Runs `pass` over `program`, then validate_ir; a failure names the pass (device_pipeline.h
+// runs its steps through it).
+Result<Program> run_pass(Program program, std::string_view name,
                          const std::function<void(Program&)>& pass);
 
 // --- fold defs --------------------------------------------------------------------------
@@ -57,20 +58,7 @@ std::optional<std::array<float, 4>> constant_value(const FoldedDefs& defs, uint3
 // statically, so every register the device offers is reachable: [0, limit), with limit the
 // profile's float-constant count, at least 256 in a vertex shader (the devices' count; the
 // interpreter and the generated code read (0, 0, 0, 0) outside it).
-struct RelativeReach {
-  uint32_t begin = 0;
-  uint32_t end = 0; // one past the last reachable register
-};
 uint32_t relative_constant_limit(Profile p);
-// The range, or nullopt when the program reads no constant relatively.
-std::optional<RelativeReach> relative_reach(const Program& program);
-
-// --- matrix macros ----------------------------------------------------------------------
-// m4x4 / m4x3 / m3x4 / m3x3 / m3x2 d, s, m  →  one dp4 (m4xN) or dp3 (m3xN) per row:
-// d.x = dot(s, m), d.y = dot(s, m+1) … with the instruction modifiers on each. A backend
-// opts in; the interpreter and the SPIR-V emitter evaluate the macros directly today. Exact
-// for validated listings: the destination may alias neither the vector nor a matrix row.
-void expand_matrix_macros(Program& program);
 
 // --- products with a zero constant ------------------------------------------------------
 // mul d, a, b / mad d, a, b, c where a or b reads a c# (no relative addressing, no modifier
@@ -81,7 +69,7 @@ void expand_matrix_macros(Program& program);
 // longer read. Liveness (dead_instructions) then finds the texture reads that only fed such
 // products: the glow's blur passes weight the slots past the last tap by 0 (7 of 32 reads
 // per axis at the default 25 taps). Returns how many instructions it rewrote. A device that
-// binds `bank` runs it before planning the draw (both devices, pixel programs).
+// binds `bank` runs it before planning the draw: step 1 of ir::prepare_for_device.
 size_t zero_constant_products(Program& program, std::span<const std::array<float, 4>> bank);
 
 } // namespace tierlift::ir

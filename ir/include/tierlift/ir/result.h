@@ -1,9 +1,9 @@
-// The one error style of tierlift's libraries: a function that can fail returns
-// Result<T> (a value, or the diagnostics that say why there is none) or Status (Result of
-// nothing). Diagnostics that point into a listing or a scene carry a SourceLoc; the others (a
-// file that cannot be read, a device that cannot start) name their subject instead. The CLI
-// renders them (ir::render_text / render_json) and turns them into exit codes; no library
-// prints, throws across its interface, or reports through an out-parameter string.
+// The error style of tierlift's library interfaces: a function that can fail returns Result<T>
+// (a value, or the diagnostics that say why there is none) or Status (Result of nothing).
+// Located diagnostics carry a SourceLoc; others (an unreadable file, no device) name a subject.
+// The CLI renders them and turns them into exit codes; no library prints. Not yet everywhere
+// inside: several Vulkan-internal helpers still return a message string, and ShaderVM keeps a
+// throwing constructor for the VM's unit tests (ShaderVM::create is the Result form).
 #pragma once
 
 #include <cassert>

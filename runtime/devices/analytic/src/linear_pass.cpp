@@ -38,8 +38,7 @@ ir::Result<Setup> check(const LinearPassInput& in) {
   Setup s;
   s.width = in.model.target_width;
   s.height = in.model.target_height;
-  if (s.width == 0 || s.height == 0 || s.width > img::kMaxDimension ||
-      s.height > img::kMaxDimension) {
+  if (!img::valid_size(s.width, s.height)) {
     return fail(fmt::format("target {}x{}: expected 1..{}", s.width, s.height, img::kMaxDimension));
   }
   for (const StageTexture& t : in.textures) {

@@ -12,26 +12,12 @@ std::array<double, 2> pixel_uv(uint32_t i, uint32_t j, uint32_t width, uint32_t 
   return {model.u0 + (model.u1 - model.u0) * x, model.v0 + (model.v1 - model.v0) * y};
 }
 
-int64_t address_texel(int64_t i, int64_t n, Address mode) {
-  auto mod = [](int64_t a, int64_t m) { return ((a % m) + m) % m; };
-  auto mirror = [](int64_t k) { return k >= 0 ? k : -(1 + k); };
-  switch (mode) {
-  case Address::Wrap: return mod(i, n);
-  case Address::Mirror: {
-    int64_t t = mod(i, 2 * n) - n;
-    return (n - 1) - mirror(t);
-  }
-  case Address::Clamp: return i < 0 ? 0 : (i >= n ? n - 1 : i);
-  case Address::Border: return (i < 0 || i >= n) ? -1 : i;
-  case Address::MirrorOnce: {
-    int64_t m = mirror(i);
-    return m >= n ? n - 1 : m;
-  }
-  }
-  return -1;
-}
-
 namespace {
+
+// The texel index after addressing (pass::address_texel), −1 for the border colour.
+int64_t addressed_index(int64_t i, int64_t n, AddressMode mode) {
+  return pass::address_texel(mode, i, n).value_or(-1);
+}
 
 // Far outside any texture, yet safe to convert to int64 and to add small offsets to.
 constexpr double kPositionLimit = 1e12;
@@ -42,8 +28,8 @@ double limit_position(double p) {
 }
 
 std::array<double, 4> texel(const img::Image& t, int64_t x, int64_t y, const SamplerModel& s) {
-  int64_t ax = address_texel(x, t.width, s.address_u);
-  int64_t ay = address_texel(y, t.height, s.address_v);
+  int64_t ax = addressed_index(x, t.width, s.address_u);
+  int64_t ay = addressed_index(y, t.height, s.address_v);
   if (ax < 0 || ay < 0) return s.border;
   const auto px = static_cast<uint32_t>(ax), py = static_cast<uint32_t>(ay);
   return {texel_value(t, px, py, 0), texel_value(t, px, py, 1), texel_value(t, px, py, 2),
@@ -150,10 +136,10 @@ struct FloatSplit {
   int64_t i0;
   double frac;
 };
-FloatSplit float_split(float u, uint32_t n, Address mode, int subtexel_bits) {
+FloatSplit float_split(float u, uint32_t n, AddressMode mode, int subtexel_bits) {
   const float size = static_cast<float>(n);
   float x = u * size;
-  if (mode == Address::Clamp) {
+  if (mode == AddressMode::Clamp) {
     x = x < size ? x : size;
     x = x - 0.5f;
     x = x > 0.0f ? x : 0.0f;
@@ -205,8 +191,8 @@ namespace {
 
 // A texel as the devices hold it: the image's float (RGBA8: the float nearest k/255).
 std::array<float, 4> texel_fp32(const img::Image& t, int64_t x, int64_t y, const SamplerModel& s) {
-  const int64_t ax = address_texel(x, t.width, s.address_u);
-  const int64_t ay = address_texel(y, t.height, s.address_v);
+  const int64_t ax = addressed_index(x, t.width, s.address_u);
+  const int64_t ay = addressed_index(y, t.height, s.address_v);
   if (ax < 0 || ay < 0)
     return {float(s.border[0]), float(s.border[1]), float(s.border[2]), float(s.border[3])};
   const float* p = t.at(static_cast<uint32_t>(ax), static_cast<uint32_t>(ay));

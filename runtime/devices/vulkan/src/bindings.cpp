@@ -3,6 +3,7 @@
 #include "bindings.h"
 
 #include <cstring>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -11,85 +12,107 @@
 
 namespace tierlift::vulkan {
 
-std::string create_bindings(Device::Impl& d, Cleanup& cleanup, const codegen::CompiledPair& pair,
-                            const pass::Pass& pass, const SampledImages& images, Bindings& out) {
-  std::string err;
-  // Descriptor bindings: uniform blocks, then combined image samplers.
-  std::vector<VkDescriptorSetLayoutBinding> bindings;
+namespace {
+
+ir::Failure binding_failure(std::string message) {
+  return ir::fail("vulkan", std::string(kDrawRule), std::move(message));
+}
+
+// What descriptor set 0 holds: the uniform buffers, the sampled textures, the trace buffer.
+struct Resources {
   struct Ubo {
     Buffer buf;
     uint32_t binding;
   };
-  std::vector<Ubo> ubos;
-  auto add_ubo = [&](const codegen::ShaderModule& m, const pass::ConstantBank& bank,
-                     VkShaderStageFlags stage) {
-    if (m.uniforms.size_bytes == 0 || !err.empty()) return;
-    std::vector<uint32_t> words = pack_uniforms(m, bank, pass);
-    Ubo u{{}, m.uniforms.binding};
-    err = create_buffer(d, cleanup, words.size() * 4, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, u.buf);
-    if (!err.empty()) return;
-    std::memcpy(u.buf.mapped, words.data(), words.size() * 4);
-    bindings.push_back({u.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, stage, nullptr});
-    ubos.push_back(u);
-  };
-  add_ubo(pair.vs, pass.vs_constants, VK_SHADER_STAGE_VERTEX_BIT);
-  add_ubo(pair.ps, pass.ps_constants, VK_SHADER_STAGE_FRAGMENT_BIT);
-  if (!err.empty()) return err;
-
-  VkFormatProperties tex_props;
-  vkGetPhysicalDeviceFormatProperties(d.physical, VK_FORMAT_R32G32B32A32_SFLOAT, &tex_props);
   struct Texture {
     VkImageView view = VK_NULL_HANDLE;
     VkSampler sampler = VK_NULL_HANDLE;
     uint32_t binding = 0;
   };
+  std::vector<VkDescriptorSetLayoutBinding> layout;
+  std::vector<Ubo> ubos;
   std::vector<Texture> textures;
+};
+
+// The uniform blocks, filled with pack_uniforms (uniforms.h).
+ir::Status add_uniform_blocks(Device::Impl& d, Cleanup& cleanup, const codegen::CompiledPair& pair,
+                              const pass::Pass& pass, Resources& res) {
+  for (auto [m, bank, stage] :
+       {std::tuple{&pair.vs, &pass.vs_constants, VK_SHADER_STAGE_VERTEX_BIT},
+        std::tuple{&pair.ps, &pass.ps_constants, VK_SHADER_STAGE_FRAGMENT_BIT}}) {
+    if (m->uniforms.size_bytes == 0) continue;
+    std::vector<uint32_t> words = pack_uniforms(*m, *bank, pass);
+    Resources::Ubo u{{}, m->uniforms.binding};
+    std::string err =
+        create_buffer(d, cleanup, words.size() * 4, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, u.buf);
+    if (!err.empty()) return binding_failure(std::move(err));
+    std::memcpy(u.buf.mapped, words.data(), words.size() * 4);
+    res.layout.push_back(
+        {u.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VkShaderStageFlags(stage), nullptr});
+    res.ubos.push_back(u);
+  }
+  return ir::ok_status();
+}
+
+// The combined image samplers: each sampled stage's image with a sampler of its state.
+ir::Status add_textures(Device::Impl& d, Cleanup& cleanup, const codegen::CompiledPair& pair,
+                        const pass::Pass& pass, const SampledImages& images, Resources& res) {
+  VkFormatProperties tex_props;
+  vkGetPhysicalDeviceFormatProperties(d.physical, VK_FORMAT_R32G32B32A32_SFLOAT, &tex_props);
   for (const auto& si : pair.ps.samplers) {
     if (si.type != ir::SamplerType::Tex2D)
-      return fmt::format("s{}: only 2D textures are supported on the Vulkan device", si.stage);
+      return binding_failure(
+          fmt::format("s{}: only 2D textures are supported on the Vulkan device", si.stage));
     const uint32_t stage = si.stage % pass::kMaxSamplers;
     const pass::TextureBinding& tb = pass.textures[stage];
-    if (!images[stage]) return fmt::format("s{}: no texture to sample", si.stage);
+    if (!images[stage]) return binding_failure(fmt::format("s{}: no texture to sample", si.stage));
     if (tb.sampler.filter == pass::Filter::Linear &&
         !(tex_props.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT))
-      return "the Vulkan device cannot filter RGBA32F textures linearly";
-    Texture t;
+      return binding_failure("the Vulkan device cannot filter RGBA32F textures linearly");
+    Resources::Texture t;
     t.binding = si.binding;
     t.view = images[stage]->view;
-    if (err = create_sampler(d, cleanup, tb.sampler, t.sampler); !err.empty()) return err;
-    bindings.push_back({t.binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
-                        VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
-    textures.push_back(t);
+    if (std::string err = create_sampler(d, cleanup, tb.sampler, t.sampler); !err.empty())
+      return binding_failure(std::move(err));
+    res.layout.push_back({t.binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+                          VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
+    res.textures.push_back(t);
   }
+  return ir::ok_status();
+}
 
-  // A traced pixel module's record (codegen::TracePixel): a storage buffer starting at zero.
-  if (const std::optional<codegen::TraceInfo>& trace = pair.ps.trace) {
-    const VkDeviceSize bytes = VkDeviceSize{trace->entries} * codegen::kTraceEntryBytes;
-    err = create_buffer(d, cleanup, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, out.trace);
-    if (!err.empty()) return err;
-    std::memset(out.trace.mapped, 0, out.trace.size);
-    bindings.push_back({trace->binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
+// A traced pixel module's record (codegen::TracePixel): a storage buffer starting at zero.
+ir::Status add_trace_buffer(Device::Impl& d, Cleanup& cleanup, const codegen::CompiledPair& pair,
+                            Resources& res, Bindings& out) {
+  const std::optional<codegen::TraceInfo>& trace = pair.ps.trace;
+  if (!trace) return ir::ok_status();
+  const VkDeviceSize bytes = VkDeviceSize{trace->entries} * codegen::kTraceEntryBytes;
+  std::string err = create_buffer(d, cleanup, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, out.trace);
+  if (!err.empty()) return binding_failure(std::move(err));
+  std::memset(out.trace.mapped, 0, out.trace.size);
+  res.layout.push_back({trace->binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
                         VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
-  }
+  return ir::ok_status();
+}
 
-  // Descriptor set layout, pool, set; pipeline layout.
+// The descriptor set layout, the pipeline layout over it, a pool and the set.
+ir::Status create_set(Device::Impl& d, Cleanup& cleanup, const Resources& res, Bindings& out) {
   VkDescriptorSetLayoutCreateInfo dli{};
   dli.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
-  dli.bindingCount = static_cast<uint32_t>(bindings.size());
-  dli.pBindings = bindings.data();
+  dli.bindingCount = static_cast<uint32_t>(res.layout.size());
+  dli.pBindings = res.layout.data();
   VkDescriptorSetLayout dsl = VK_NULL_HANDLE;
   VkResult r = vkCreateDescriptorSetLayout(d.device, &dli, nullptr, &dsl);
-  if (r != VK_SUCCESS) return vk_error("vkCreateDescriptorSetLayout", r);
+  if (r != VK_SUCCESS) return binding_failure(vk_error("vkCreateDescriptorSetLayout", r));
   VkDevice dev = d.device;
   cleanup.destroy_later(dev, dsl, vkDestroyDescriptorSetLayout);
   VkPipelineLayoutCreateInfo pli{};
   pli.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
   pli.setLayoutCount = 1;
   pli.pSetLayouts = &dsl;
-  VkPipelineLayout& layout = out.layout;
-  if ((r = vkCreatePipelineLayout(dev, &pli, nullptr, &layout)) != VK_SUCCESS)
-    return vk_error("vkCreatePipelineLayout", r);
-  cleanup.destroy_later(dev, layout, vkDestroyPipelineLayout);
+  if ((r = vkCreatePipelineLayout(dev, &pli, nullptr, &out.layout)) != VK_SUCCESS)
+    return binding_failure(vk_error("vkCreatePipelineLayout", r));
+  cleanup.destroy_later(dev, out.layout, vkDestroyPipelineLayout);
   VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2},
                                    {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 16},
                                    {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}};
@@ -100,45 +123,62 @@ std::string create_bindings(Device::Impl& d, Cleanup& cleanup, const codegen::Co
   dpi.pPoolSizes = sizes;
   VkDescriptorPool dpool = VK_NULL_HANDLE;
   if ((r = vkCreateDescriptorPool(dev, &dpi, nullptr, &dpool)) != VK_SUCCESS)
-    return vk_error("vkCreateDescriptorPool", r);
+    return binding_failure(vk_error("vkCreateDescriptorPool", r));
   cleanup.destroy_later(dev, dpool, vkDestroyDescriptorPool);
   VkDescriptorSetAllocateInfo dsa{};
   dsa.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
   dsa.descriptorPool = dpool;
   dsa.descriptorSetCount = 1;
   dsa.pSetLayouts = &dsl;
-  VkDescriptorSet& set = out.set;
-  if ((r = vkAllocateDescriptorSets(dev, &dsa, &set)) != VK_SUCCESS)
-    return vk_error("vkAllocateDescriptorSets", r);
-  std::vector<VkDescriptorBufferInfo> buffer_infos(ubos.size() + 1);
-  std::vector<VkDescriptorImageInfo> image_infos(textures.size());
+  if ((r = vkAllocateDescriptorSets(dev, &dsa, &out.set)) != VK_SUCCESS)
+    return binding_failure(vk_error("vkAllocateDescriptorSets", r));
+  return ir::ok_status();
+}
+
+// Points the set's bindings at the buffers and images.
+void write_set(Device::Impl& d, const codegen::CompiledPair& pair, const Resources& res,
+               const Bindings& out) {
+  std::vector<VkDescriptorBufferInfo> buffer_infos(res.ubos.size() + 1);
+  std::vector<VkDescriptorImageInfo> image_infos(res.textures.size());
   std::vector<VkWriteDescriptorSet> writes;
   auto write = [&](uint32_t binding, VkDescriptorType type) -> VkWriteDescriptorSet& {
     VkWriteDescriptorSet& w = writes.emplace_back();
     w.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
-    w.dstSet = set;
+    w.dstSet = out.set;
     w.dstBinding = binding;
     w.descriptorCount = 1;
     w.descriptorType = type;
     return w;
   };
-  for (size_t k = 0; k < ubos.size(); ++k) {
-    buffer_infos[k] = {ubos[k].buf.buffer, 0, VK_WHOLE_SIZE};
-    write(ubos[k].binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER).pBufferInfo = &buffer_infos[k];
+  for (size_t k = 0; k < res.ubos.size(); ++k) {
+    buffer_infos[k] = {res.ubos[k].buf.buffer, 0, VK_WHOLE_SIZE};
+    write(res.ubos[k].binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER).pBufferInfo = &buffer_infos[k];
   }
   if (out.trace.buffer) {
     buffer_infos.back() = {out.trace.buffer, 0, VK_WHOLE_SIZE};
     write(pair.ps.trace->binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER).pBufferInfo =
         &buffer_infos.back();
   }
-  for (size_t k = 0; k < textures.size(); ++k) {
-    image_infos[k] = {textures[k].sampler, textures[k].view,
+  for (size_t k = 0; k < res.textures.size(); ++k) {
+    image_infos[k] = {res.textures[k].sampler, res.textures[k].view,
                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    write(textures[k].binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER).pImageInfo =
+    write(res.textures[k].binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER).pImageInfo =
         &image_infos[k];
   }
-  vkUpdateDescriptorSets(dev, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
-  return {};
+  vkUpdateDescriptorSets(d.device, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
+}
+
+} // namespace
+
+ir::Status create_bindings(Device::Impl& d, Cleanup& cleanup, const codegen::CompiledPair& pair,
+                           const pass::Pass& pass, const SampledImages& images, Bindings& out) {
+  Resources res; // descriptor bindings: uniform blocks, then combined image samplers
+  if (ir::Status s = add_uniform_blocks(d, cleanup, pair, pass, res); !s) return s;
+  if (ir::Status s = add_textures(d, cleanup, pair, pass, images, res); !s) return s;
+  if (ir::Status s = add_trace_buffer(d, cleanup, pair, res, out); !s) return s;
+  if (ir::Status s = create_set(d, cleanup, res, out); !s) return s;
+  write_set(d, pair, res, out);
+  return ir::ok_status();
 }
 
 } // namespace tierlift::vulkan

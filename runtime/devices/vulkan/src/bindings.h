@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "tierlift/codegen/codegen.h"
+#include "tierlift/ir/result.h"
 #include "tierlift/pass/pass.h"
 #include "vk_internal.h"
 
@@ -22,9 +23,9 @@ struct Bindings {
   Buffer trace; // pair.ps.trace: the storage buffer it records into, zeroed
 };
 
-// Empty string on success; every object is registered with `cleanup`. Samplers come from
-// pass.textures[stage].sampler, images from `images`.
-std::string create_bindings(Device::Impl& d, Cleanup& cleanup, const codegen::CompiledPair& pair,
-                            const pass::Pass& pass, const SampledImages& images, Bindings& out);
+// Every object is registered with `cleanup`; a failure is one error of rule kDrawRule.
+// Samplers come from pass.textures[stage].sampler, images from `images`.
+ir::Status create_bindings(Device::Impl& d, Cleanup& cleanup, const codegen::CompiledPair& pair,
+                           const pass::Pass& pass, const SampledImages& images, Bindings& out);
 
 } // namespace tierlift::vulkan

@@ -114,22 +114,21 @@ Device::Impl::~Impl() {
 Device::Device(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 Device::~Device() = default;
 
-ir::Result<std::unique_ptr<Device>> Device::create(const DeviceOptions& options) {
-  using Created = ir::Result<std::unique_ptr<Device>>;
-  // Every failure is kDeviceRule unless it is one of the two "no device" cases below.
-  auto fail_as = [](std::string_view rule, std::string msg) -> Created {
-    return ir::fail("vulkan", std::string(rule), std::move(msg));
-  };
-  auto fail = [&](std::string msg) { return fail_as(kDeviceRule, std::move(msg)); };
-  // A driver that crashes here (lavapipe under a tight `ulimit -v`) gets its line.
-  const crash::Stage stage("vulkan-device", "in the Vulkan driver while creating the device");
-  auto impl = std::make_unique<Impl>();
+namespace {
 
+// Every failure is kDeviceRule unless it is one of the two "no device" cases (kNoDeviceRule).
+ir::Failure device_failure(std::string msg, std::string_view rule = kDeviceRule) {
+  return ir::fail("vulkan", std::string(rule), std::move(msg));
+}
+
+// The instance, with the validation layer and its messenger when asked for.
+ir::Status create_instance(Device::Impl& impl, const DeviceOptions& options) {
   std::vector<const char*> layers, extensions;
   if (options.validation) {
     if (!has_layer(kValidationLayer))
-      return fail("the Vulkan validation layer VK_LAYER_KHRONOS_validation is not installed: "
-                  "install the Debian package vulkan-validationlayers");
+      return device_failure(
+          "the Vulkan validation layer VK_LAYER_KHRONOS_validation is not installed: "
+          "install the Debian package vulkan-validationlayers");
     layers.push_back(kValidationLayer);
     extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
     if (options.synchronization_validation)
@@ -146,7 +145,7 @@ ir::Result<std::unique_ptr<Device>> Device::create(const DeviceOptions& options)
   ici.ppEnabledLayerNames = layers.data();
   ici.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
   ici.ppEnabledExtensionNames = extensions.data();
-  VkDebugUtilsMessengerCreateInfoEXT mci = messenger_info(impl.get());
+  VkDebugUtilsMessengerCreateInfoEXT mci = messenger_info(&impl);
   if (options.validation) ici.pNext = &mci; // messages of vkCreate/DestroyInstance too
   const VkValidationFeatureEnableEXT sync =
       VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT;
@@ -158,30 +157,37 @@ ir::Result<std::unique_ptr<Device>> Device::create(const DeviceOptions& options)
     features.pNext = &mci;
     ici.pNext = &features;
   }
-  VkResult r = vkCreateInstance(&ici, nullptr, &impl->instance);
+  const VkResult r = vkCreateInstance(&ici, nullptr, &impl.instance);
   if (r != VK_SUCCESS) {
-    impl->instance = VK_NULL_HANDLE;
+    impl.instance = VK_NULL_HANDLE;
     // The loader answers INCOMPATIBLE_DRIVER when it finds no driver (ICD) at all. Anything
     // else (out of memory, a layer or extension missing, initialization failed) is a fault
     // of an installed Vulkan, not its absence.
-    if (r == VK_ERROR_INCOMPATIBLE_DRIVER) return fail_as(kNoDeviceRule, kNoDriverHint);
-    return fail(vk_error("vkCreateInstance", r));
+    if (r == VK_ERROR_INCOMPATIBLE_DRIVER) return device_failure(kNoDriverHint, kNoDeviceRule);
+    return device_failure(vk_error("vkCreateInstance", r));
   }
   if (options.validation) {
     auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-        vkGetInstanceProcAddr(impl->instance, "vkCreateDebugUtilsMessengerEXT"));
-    if (!create || create(impl->instance, &mci, nullptr, &impl->messenger) != VK_SUCCESS)
-      return fail("cannot create the VK_EXT_debug_utils messenger of the validation layer");
+        vkGetInstanceProcAddr(impl.instance, "vkCreateDebugUtilsMessengerEXT"));
+    if (!create || create(impl.instance, &mci, nullptr, &impl.messenger) != VK_SUCCESS)
+      return device_failure(
+          "cannot create the VK_EXT_debug_utils messenger of the validation layer");
   }
+  return ir::ok_status();
+}
 
+// The physical device: the first CPU device (lavapipe), or the first whose name contains
+// options.gpu_filter; its properties, and whether its point sampler floors as lavapipe's.
+ir::Status choose_physical_device(Device::Impl& impl, const DeviceOptions& options) {
   uint32_t count = 0;
-  r = vkEnumeratePhysicalDevices(impl->instance, &count, nullptr);
-  if (r != VK_SUCCESS) return fail(vk_error("vkEnumeratePhysicalDevices", r));
+  VkResult r = vkEnumeratePhysicalDevices(impl.instance, &count, nullptr);
+  if (r != VK_SUCCESS) return device_failure(vk_error("vkEnumeratePhysicalDevices", r));
   std::vector<VkPhysicalDevice> devices(count);
-  if (count) r = vkEnumeratePhysicalDevices(impl->instance, &count, devices.data());
-  if (r != VK_SUCCESS && r != VK_INCOMPLETE) return fail(vk_error("vkEnumeratePhysicalDevices", r));
+  if (count) r = vkEnumeratePhysicalDevices(impl.instance, &count, devices.data());
+  if (r != VK_SUCCESS && r != VK_INCOMPLETE)
+    return device_failure(vk_error("vkEnumeratePhysicalDevices", r));
   devices.resize(count);
-  if (devices.empty()) return fail_as(kNoDeviceRule, kNoDriverHint);
+  if (devices.empty()) return device_failure(kNoDriverHint, kNoDeviceRule);
   VkPhysicalDevice chosen = VK_NULL_HANDLE;
   std::string names;
   for (VkPhysicalDevice pd : devices) {
@@ -195,41 +201,45 @@ ir::Result<std::unique_ptr<Device>> Device::create(const DeviceOptions& options)
   }
   if (!chosen && options.gpu_filter.empty()) chosen = devices.front();
   if (!chosen)
-    return fail(
+    return device_failure(
         fmt::format("no Vulkan device matches \"{}\" (found: {})", options.gpu_filter, names));
-  impl->physical = chosen;
-  vkGetPhysicalDeviceProperties(chosen, &impl->props);
-  vkGetPhysicalDeviceMemoryProperties(chosen, &impl->memory);
+  impl.physical = chosen;
+  vkGetPhysicalDeviceProperties(chosen, &impl.props);
+  vkGetPhysicalDeviceMemoryProperties(chosen, &impl.memory);
   // lavapipe (Mesa's vendor id, a CPU device named llvmpipe): its point sampler takes the
   // texel index as floor(fl32(u·N)), the interpreter's (lp_bld_sample*.c: one multiply by
   // the float size, then a floor). A GPU's fixed-point sub-texel coordinates do not.
   constexpr uint32_t kMesaVendorId = 0x10005; // VK_VENDOR_ID_MESA
-  impl->point_sampling_floors = options.llvmpipe_point_sampling &&
-                                impl->props.vendorID == kMesaVendorId &&
-                                impl->props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU &&
-                                std::string_view(impl->props.deviceName).starts_with("llvmpipe");
-  if (impl->props.apiVersion < VK_API_VERSION_1_1)
-    return fail(fmt::format("{} supports only Vulkan {}.{}; tierlift needs 1.1",
-                            impl->props.deviceName, VK_API_VERSION_MAJOR(impl->props.apiVersion),
-                            VK_API_VERSION_MINOR(impl->props.apiVersion)));
+  impl.point_sampling_floors = options.llvmpipe_point_sampling &&
+                               impl.props.vendorID == kMesaVendorId &&
+                               impl.props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU &&
+                               std::string_view(impl.props.deviceName).starts_with("llvmpipe");
+  if (impl.props.apiVersion < VK_API_VERSION_1_1)
+    return device_failure(fmt::format(
+        "{} supports only Vulkan {}.{}; tierlift needs 1.1", impl.props.deviceName,
+        VK_API_VERSION_MAJOR(impl.props.apiVersion), VK_API_VERSION_MINOR(impl.props.apiVersion)));
+  return ir::ok_status();
+}
 
+// The logical device with one graphics queue, and its command pool.
+ir::Status create_logical_device(Device::Impl& impl) {
   uint32_t qcount = 0;
-  vkGetPhysicalDeviceQueueFamilyProperties(chosen, &qcount, nullptr);
+  vkGetPhysicalDeviceQueueFamilyProperties(impl.physical, &qcount, nullptr);
   std::vector<VkQueueFamilyProperties> families(qcount);
-  vkGetPhysicalDeviceQueueFamilyProperties(chosen, &qcount, families.data());
+  vkGetPhysicalDeviceQueueFamilyProperties(impl.physical, &qcount, families.data());
   families.resize(qcount);
   bool found = false;
   for (uint32_t i = 0; i < families.size() && !found; ++i)
     if (families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) {
-      impl->queue_family = i;
+      impl.queue_family = i;
       found = true;
     }
-  if (!found) return fail(fmt::format("{} has no graphics queue", impl->props.deviceName));
+  if (!found) return device_failure(fmt::format("{} has no graphics queue", impl.props.deviceName));
 
   float priority = 1.0f;
   VkDeviceQueueCreateInfo qci{};
   qci.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO;
-  qci.queueFamilyIndex = impl->queue_family;
+  qci.queueFamilyIndex = impl.queue_family;
   qci.queueCount = 1;
   qci.pQueuePriorities = &priority;
   VkDeviceCreateInfo dci{};
@@ -238,30 +248,43 @@ ir::Result<std::unique_ptr<Device>> Device::create(const DeviceOptions& options)
   dci.pQueueCreateInfos = &qci;
   // lavapipe crashes inside vkCreateDevice when the address-space limit leaves it too little
   // room (address_space.h): foreseen, it is a sentence instead of a SIGSEGV.
-  if (impl->props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU)
+  if (impl.props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU)
     if (std::string why = address_space_refusal(cpu_device_address_space()); !why.empty())
-      return fail(why);
+      return device_failure(why);
   // The one optional feature: storage-buffer writes from a pixel shader, for tracing a pixel.
   VkPhysicalDeviceFeatures supported{}, wanted{};
-  vkGetPhysicalDeviceFeatures(chosen, &supported);
+  vkGetPhysicalDeviceFeatures(impl.physical, &supported);
   wanted.fragmentStoresAndAtomics = supported.fragmentStoresAndAtomics;
-  impl->fragment_stores = supported.fragmentStoresAndAtomics == VK_TRUE;
+  impl.fragment_stores = supported.fragmentStoresAndAtomics == VK_TRUE;
   dci.pEnabledFeatures = &wanted;
-  r = vkCreateDevice(chosen, &dci, nullptr, &impl->device);
+  VkResult r = vkCreateDevice(impl.physical, &dci, nullptr, &impl.device);
   if (r != VK_SUCCESS) {
-    impl->device = VK_NULL_HANDLE;
-    return fail(vk_error("vkCreateDevice", r));
+    impl.device = VK_NULL_HANDLE;
+    return device_failure(vk_error("vkCreateDevice", r));
   }
-  vkGetDeviceQueue(impl->device, impl->queue_family, 0, &impl->queue);
+  vkGetDeviceQueue(impl.device, impl.queue_family, 0, &impl.queue);
   VkCommandPoolCreateInfo pci{};
   pci.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
   pci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-  pci.queueFamilyIndex = impl->queue_family;
-  r = vkCreateCommandPool(impl->device, &pci, nullptr, &impl->pool);
+  pci.queueFamilyIndex = impl.queue_family;
+  r = vkCreateCommandPool(impl.device, &pci, nullptr, &impl.pool);
   if (r != VK_SUCCESS) {
-    impl->pool = VK_NULL_HANDLE;
-    return fail(vk_error("vkCreateCommandPool", r));
+    impl.pool = VK_NULL_HANDLE;
+    return device_failure(vk_error("vkCreateCommandPool", r));
   }
+  return ir::ok_status();
+}
+
+} // namespace
+
+ir::Result<std::unique_ptr<Device>> Device::create(const DeviceOptions& options) {
+  using Created = ir::Result<std::unique_ptr<Device>>;
+  // A driver that crashes here (lavapipe under a tight `ulimit -v`) gets its line.
+  const crash::Stage stage("vulkan-device", "in the Vulkan driver while creating the device");
+  auto impl = std::make_unique<Impl>();
+  if (ir::Status s = create_instance(*impl, options); !s) return s.failure();
+  if (ir::Status s = choose_physical_device(*impl, options); !s) return s.failure();
+  if (ir::Status s = create_logical_device(*impl); !s) return s.failure();
   impl->on_destroyed = options.on_destroyed; // a device that was never made has nothing to report
   std::unique_ptr<Device> device(new Device(std::move(impl)));
   // Read every RGBA8 level once, undecoded, and keep the cheapest decode that is exact for

@@ -7,8 +7,7 @@
 namespace tierlift::vulkan {
 
 ir::Result<pass::DrawReport> Device::draw(const pass::Pass& pass, img::Image& target) {
-  if (target.width == 0 || target.height == 0 || target.width > img::kMaxDimension ||
-      target.height > img::kMaxDimension)
+  if (!img::valid_size(target.width, target.height))
     return draw_failure("render target size must be 1..16384 on each side");
   if (target.rgba.size() != size_t{target.width} * target.height * 4)
     return draw_failure("render target pixel buffer does not match its size");

@@ -12,7 +12,7 @@
 #include "bindings.h"
 #include "pipeline.h"
 #include "synthetic_programs.h"
-#include "tierlift/ir/passes.h"
+#include "tierlift/ir/device_pipeline.h"
 
 namespace tierlift::vulkan {
 namespace {
@@ -219,9 +219,11 @@ std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawText
   // the code generator's pruning drops the texture reads and varyings that only fed them.
   // The draw is prepared (and cached, draw_cache.h) for these constants. Not for a GLSL pass:
   // its own SPIR-V needs the interface of the whole twin.
-  if (ir::Program copy = *ps_prog;
-      !pass.pixel_spirv && ir::zero_constant_products(copy, pass.ps_constants.f) > 0)
-    ps_prog = std::make_shared<const ir::Program>(std::move(copy));
+  if (!pass.pixel_spirv) { // the device pipeline (ir/device_pipeline.h); the emitter prunes
+    auto p = ir::prepare_for_device(*ps_prog, pass.ps_constants.f, {.drop_dead = false});
+    if (!p) return p.message();
+    if (p->specialised) ps_prog = std::make_shared<const ir::Program>(std::move(*p->specialised));
+  }
   codegen::CodegenOptions co;
   co.conventions = pass.conventions;
   co.known_vs_constants = pass.vs_constants.f; // the draw is cached under them
@@ -287,8 +289,8 @@ std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawText
 
   // Descriptor set 0 and the pipeline layout.
   Bindings bound;
-  err = create_bindings(d, cleanup, *pair, pass, images, bound);
-  if (!err.empty()) return err;
+  if (ir::Status s = create_bindings(d, cleanup, *pair, pass, images, bound); !s)
+    return s.message();
   out.layout = bound.layout;
   out.set = bound.set;
   out.trace = bound.trace;

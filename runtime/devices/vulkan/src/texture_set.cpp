@@ -57,7 +57,7 @@ TextureSet::TextureSet(Device& device)
 TextureSet::~TextureSet() = default;
 
 ir::Result<TextureId> TextureSet::create(uint32_t width, uint32_t height, img::Format format) {
-  if (width == 0 || height == 0 || width > img::kMaxDimension || height > img::kMaxDimension)
+  if (!img::valid_size(width, height))
     return draw_failure(fmt::format("texture size {}x{}: each side must be 1..{}", width, height,
                                     img::kMaxDimension));
   std::unique_ptr<Resident> r;
@@ -69,7 +69,7 @@ ir::Result<TextureId> TextureSet::create(uint32_t width, uint32_t height, img::F
 }
 
 ir::Result<TextureId> TextureSet::create_stencil(uint32_t width, uint32_t height) {
-  if (width == 0 || height == 0 || width > img::kMaxDimension || height > img::kMaxDimension)
+  if (!img::valid_size(width, height))
     return draw_failure(fmt::format("stencil buffer size {}x{}: each side must be 1..{}", width,
                                     height, img::kMaxDimension));
   std::unique_ptr<Resident> r;

@@ -5,39 +5,6 @@
 #include "tierlift/cpu/texture.h"
 
 namespace tierlift::cpu {
-namespace {
-
-// Mathematical (non-negative) modulo.
-int64_t mod_floor(int64_t a, int64_t n) {
-  int64_t r = a % n;
-  return r < 0 ? r + n : r;
-}
-int64_t mirror(int64_t n) {
-  return n >= 0 ? n : -(1 + n);
-}
-
-} // namespace
-
-std::optional<int64_t> address_texel(AddressMode mode, int64_t i, int64_t n) {
-  if (n <= 0) return std::nullopt;
-  if (i >= 0 && i < n) return i; // every mode leaves indices inside the texture alone
-  switch (mode) {
-  case AddressMode::Wrap: return mod_floor(i, n);
-  case AddressMode::Mirror: {
-    int64_t t = mod_floor(i, 2 * n) - n;
-    return (n - 1) - mirror(t);
-  }
-  case AddressMode::Clamp: return i < 0 ? 0 : (i >= n ? n - 1 : i);
-  case AddressMode::Border:
-    if (i < 0 || i >= n) return std::nullopt;
-    return i;
-  case AddressMode::MirrorOnce: {
-    int64_t m = mirror(i);
-    return m >= n ? n - 1 : m;
-  }
-  }
-  return std::nullopt;
-}
 
 double quantize_fraction(double alpha, int subtexel_bits) {
   if (subtexel_bits <= 0) return alpha;

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "tierlift/ir/liveness.h"
+#include "tierlift/ir/device_pipeline.h"
 #include "tierlift/ir/numerics.h"
 #include "tierlift/ir/passes.h"
 #include "vm_block_internal.h"
@@ -279,23 +279,11 @@ std::unique_ptr<PixelBlockVM> PixelBlockVM::create(const ir::Program& program,
                                                    const ConstantBank& constants, bool coords_2d) {
   if (program.stage() != ir::ShaderStage::Pixel) return nullptr;
   auto im = std::make_unique<Impl>();
-  // Products with a ±0 constant factor read nothing else, and what fed only them is
-  // dropped (ir::zero_constant_products): the same results for these constants.
-  std::optional<ir::Program> specialised;
-  if (ir::Program copy = program; ir::zero_constant_products(copy, constants.f) > 0) {
-    const std::vector<bool> dead = ir::dead_instructions(copy, ir::pixel_live_out(copy));
-    for (size_t i = 0; i < copy.code.size(); ++i)
-      if (dead[i]) {
-        ir::Instruction& ins = copy.code[i];
-        ins.op = ir::Opcode::Nop;
-        ins.dst.reset();
-        ins.src.clear();
-        ins.mods = {};
-        ins.coissue = false;
-      }
-    specialised = std::move(copy);
-  }
-  const ir::Program& run = specialised ? *specialised : program;
+  // The device pipeline (ir/device_pipeline.h): products with a ±0 constant factor read
+  // nothing else, and what fed only them is dropped — the same results for these constants.
+  ir::Result<ir::DeviceProgram> prepared = ir::prepare_for_device(program, constants.f);
+  if (!prepared) return nullptr;
+  const ir::Program& run = prepared->specialised ? *prepared->specialised : program;
   try {
     im->p = vm::prepare(run, conventions);
   } catch (const std::invalid_argument&) {

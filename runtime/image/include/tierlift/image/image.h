@@ -13,8 +13,12 @@ enum class Format { RGBA8, RGBA16F, RGBA32F };
 std::string_view format_name(Format f); // "rgba8", "rgba16f", "rgba32f"
 std::optional<Format> parse_format(std::string_view name);
 
-// Largest width or height tierlift accepts anywhere (images, targets, textures).
+// Largest width or height tierlift accepts anywhere (images, targets, textures, scenes).
 inline constexpr uint32_t kMaxDimension = 16384;
+// The size cap, the one check every input of a size reads: each side 1..kMaxDimension.
+constexpr bool valid_size(uint32_t width, uint32_t height) {
+  return width >= 1 && height >= 1 && width <= kMaxDimension && height <= kMaxDimension;
+}
 
 struct Image {
   uint32_t width = 0, height = 0;

@@ -64,7 +64,5 @@ ir::Status write_pfm(const std::string& path, const Image& image,
 // Writes bytes with tierlift::io::write_output: temp file in the same folder renamed over
 // `path` (symbolic links followed), FIFOs and character devices written straight through.
 ir::Status write_file_atomic(const std::string& path, std::span<const uint8_t> bytes);
-// Whole file within io::kImageFileCap, or an error.
-ir::Result<std::vector<uint8_t>> read_file_bytes(const std::string& path);
 
 } // namespace tierlift::img

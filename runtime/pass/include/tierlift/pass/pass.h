@@ -24,12 +24,12 @@
 #include "tierlift/ir/conventions.h"
 #include "tierlift/ir/program.h"
 #include "tierlift/ir/result.h"
+#include "tierlift/pass/addressing.h"
 #include "tierlift/pass/registers.h"
 
 namespace tierlift::pass {
 
 enum class Filter : uint8_t { Point, Linear };
-enum class AddressMode : uint8_t { Wrap, Mirror, Clamp, Border, MirrorOnce };
 
 // D3DSAMP_* state of one sampler stage. The defaults are D3D9's: POINT, WRAP, border colour
 // 0x00000000.

@@ -1,7 +1,9 @@
 // The analytic model of a blur pass, in double: the exact image a full-screen quad with
 // the given taps must produce, from the sample positions of the conventions (pixel centre,
 // filter, addressing, sub-texel precision) and the store rule of the target format. It
-// shares no code with the CPU device, so agreement between the two means something.
+// shares no arithmetic with the CPU device, so agreement between the two means something;
+// what the two share is the D3D9 address rule (tierlift/pass/addressing.h), a table of
+// index facts rather than arithmetic.
 #pragma once
 
 #include <array>
@@ -14,16 +16,17 @@
 #include "tierlift/image/image.h"
 #include "tierlift/image/io.h"
 #include "tierlift/ir/conventions.h"
+#include "tierlift/pass/addressing.h"
 
 namespace tierlift::analytic {
 
 enum class Filter { Point, Linear };
-// D3DTADDRESS modes (docs/d3d9-rules.md §10.2).
-enum class Address { Wrap, Mirror, Clamp, Border, MirrorOnce };
+// D3DTADDRESS modes and their rule are the device-neutral pass state's (one definition).
+using pass::AddressMode;
 
 struct SamplerModel {
   Filter filter = Filter::Linear;
-  Address address_u = Address::Clamp, address_v = Address::Clamp;
+  AddressMode address_u = AddressMode::Clamp, address_v = AddressMode::Clamp;
   std::array<double, 4> border{0, 0, 0, 0}; // BORDER colour (D3D9 default 0x00000000)
 };
 
@@ -94,9 +97,6 @@ std::array<double, 4> sample_at_float(const img::Image& texture, float u, float 
 // fma(a, y − x, x), the filter unit's arithmetic in lavapipe's float-texture path.
 std::array<float, 4> sample_fp32(const img::Image& texture, float u, float v,
                                  const SamplerModel& sampler, int subtexel_bits = 0);
-// The texel index an address mode maps i to, or -1 for "border colour".
-int64_t address_texel(int64_t i, int64_t n, Address mode);
-
 // The blur pass: pixel = Σ_k weight_k · sample(scale_k·uv + offset_k), one texture (every
 // tap's sampler stage reads `source`), stored with img::quantize. linear_pass.h has the
 // general form (several textures, blending, ps_1_x ranges).

@@ -14,15 +14,12 @@
 namespace tierlift::cpu {
 
 // Sampler state and stage bindings are the device-neutral pass state's (tierlift/pass).
+using pass::address_texel; // the D3DTADDRESS rule (tierlift/pass/addressing.h)
 using pass::AddressMode;
 using pass::Filter;
 using pass::kMaxSamplers;
 using pass::SamplerState;
 using pass::TextureBinding;
-
-// The texel index an address mode turns `i` into on an axis of `n` texels (n ≥ 1), or
-// nullopt when the border colour is read instead (Border, index outside [0, n−1]).
-std::optional<int64_t> address_texel(AddressMode mode, int64_t i, int64_t n);
 
 // Bilinear fraction quantised to `subtexel_bits` (0 = exact): round(α·2^N)/2^N, the
 // rounding Vulkan describes for subTexelPrecisionBits.
