@@ -138,7 +138,8 @@ bool Emitter::emit_arith(const ir::Instruction& ins, PendingStore& out) {
     v = rule::mul(v4, a, splat(scale));
     break;
   }
-  case Opcode::SinCos: {
+  case Opcode::SinCos:
+  case Opcode::SinCos3: { // 3.0's one-source form: the same, no constants read
     const Id x = sc(0);
     v = compose(glsl1(GLSLstd450Cos, x, 1), glsl1(GLSLstd450Sin, x, 1), zero, zero);
     break;
