@@ -82,6 +82,12 @@ bool Emitter::emit_flow(const ir::Instruction& ins, size_t) {
       fr.step = clamp_int(b.op(Op::OpCompositeExtract, t_int, {iv, 2}), ir::flow::kMinStep,
                           ir::flow::kMaxStep);
     }
+    // Reaching the loop costs ir::flow::kEntryCost units of the invocation's budget.
+    const Id before = b.op(Op::OpLoad, t_int, {iterations_var()});
+    b.op_void(Op::OpStore,
+              {iterations_var(),
+               b.op(Op::OpIAdd, t_int,
+                    {before, b.const_int(static_cast<int32_t>(ir::flow::kEntryCost))})});
     fr.header = b.fresh_id();
     fr.merge = b.fresh_id();
     fr.cont = b.fresh_id();
@@ -94,7 +100,7 @@ bool Emitter::emit_flow(const ir::Instruction& ins, size_t) {
     const Id budget = b.const_int(static_cast<int32_t>(ir::flow::kIterationBudget));
     const Id more = b.op(Op::OpLogicalAnd, t_bool,
                          {b.op(Op::OpSGreaterThan, t_bool, {n, b.const_int(0)}),
-                          b.op(Op::OpSLessThan, t_bool, {spent, budget})});
+                          b.op(Op::OpSLessThanEqual, t_bool, {spent, budget})});
     b.op_void(Op::OpLoopMerge,
               {fr.merge, fr.cont, static_cast<uint32_t>(spv::LoopControlMask::MaskNone)});
     b.op_void(Op::OpBranchConditional, {more, body, fr.merge});

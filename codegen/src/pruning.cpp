@@ -76,7 +76,8 @@ std::optional<CompiledPair> compile_linked_pair(const ir::Program& vs, const ir:
                                                 ir::DiagnosticSink& diags) {
   CompiledPair pair;
   EmitPlan ps_plan;
-  if (prunable(ps)) ps_plan.skip = ir::dead_instructions(ps, ir::pixel_live_out(ps));
+  ps_plan.skip = prunable(ps) ? ir::dead_instructions(ps, ir::pixel_live_out(ps))
+                              : std::vector<bool>(ps.code.size(), false);
   const std::set<Reg> wanted = ir::live_inputs(ps, ps_plan.skip);
 
   EmitPlan vs_plan;
@@ -107,7 +108,8 @@ std::optional<CompiledPair> compile_linked_pair(const ir::Program& vs, const ir:
   std::map<Reg, uint8_t> vs_live;
   for (const Reg& r : *vs_plan.vs_outputs) vs_live[r] = 0xF;
   vs_live[{RegFile::RastOut, ir::kRastPos}] = 0xF;
-  if (prunable(vs)) vs_plan.skip = ir::dead_instructions(vs, vs_live);
+  vs_plan.skip =
+      prunable(vs) ? ir::dead_instructions(vs, vs_live) : std::vector<bool>(vs.code.size(), false);
   note_unread(vs, vs_plan.skip, ir::ShaderStage::Vertex, pair.pruned);
   note_unread(ps, ps_plan.skip, ir::ShaderStage::Pixel, pair.pruned);
 

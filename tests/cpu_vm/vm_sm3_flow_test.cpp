@@ -112,19 +112,21 @@ TEST(VmSm3Flow, SincosOneSource) {
 
 TEST(VmSm3Flow, IterationBudgetEndsEveryLoop) {
   // Three nested rep 255 (invalid: past the nesting limit, so unvalidated) would run 16.6
-  // million iterations. The budget (65536 completed iterations, ir::flow::kIterationBudget)
-  // ends them: the first outer pass completes 255 · 255 inner + 255 middle + 1 outer =
-  // 65281; the second outer pass's first middle pass runs its inner loop 255 times (65536
-  // completed), then every loop leaves at its test. Adds: 255 · 255 + 255 = 65280, and the
-  // code after the loops runs.
-  static_assert(tierlift::ir::flow::kIterationBudget == 65536);
+  // million iterations. The budget (ir/flow_rules.h: 2 units to reach a loop, 1 per
+  // completed iteration, at most 65000) ends them: reaching the outer and the middle loop
+  // spends 4; each middle iteration spends 2 + 255 (its inner loop) + 1 = 258, so after 251
+  // of them 4 + 251 · 258 = 64762. The 252nd reaches its inner loop at 64764 and runs
+  // iterations while the units stay ≤ 65000: 1 + 236 of them. Adds: 251 · 255 + 237 =
+  // 64242; then every loop leaves at its test and the code after the loops runs.
+  static_assert(tierlift::ir::flow::kIterationBudget == 65000);
+  static_assert(tierlift::ir::flow::kEntryCost == 2);
   ConstantBank c = bank({{0, 0, 0, 0}, {1, 1, 1, 1}});
   c.i[0] = {255, 0, 0, 0};
   ShaderVM vm(parse("ps_3_0\nmov r4, c0\nrep i0\nrep i0\nrep i0\nadd r4, r4, c1\nendrep\nendrep\n"
                     "endrep\nmov oC0, r4\n",
                     false),
               {});
-  EXPECT_EQ(run_ps(vm, {}, nullptr, c).color[0][0], 65280.0f);
+  EXPECT_EQ(run_ps(vm, {}, nullptr, c).color[0][0], 64242.0f);
 }
 
 TEST(VmSm3Flow, VposAndVface) {

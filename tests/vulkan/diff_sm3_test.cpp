@@ -30,7 +30,7 @@ const Sm3Case kSm3Cases[] = {
     {"if_comp_nested", "if_ne r0.z, r1.z\nif_le r0.w, r2.w\nmov r4, r1\nelse\nmov r4, r2\nendif\nelse\nmov r4, r0\nendif"},
     {"if_eq_nan", "if_eq r0.x, r0.x\nmov r4, c1\nelse\nmov r4, c2\nendif"},
     {"if_predicate", "setp_lt p0, r0, r1\nif p0.y\nmov r4, r2\nendif\nif !p0.w\nadd r4, r4, r0\nendif"},
-    {"setp_predicated", "setp_gt p0, r0, r1\n(p0) mov r4, r2\n(!p0.yxwz) add r4, r4, r0"},
+    {"setp_predicated", "setp_gt p0, r0, r1\n(p0) mov r4, r2\n(!p0.y) add r4, r4, r0"},
     {"setp_all", "setp_eq p0.x, r0, r1\nsetp_ne p0.y, r0, r1\nsetp_le p0.z, r0, r1\nsetp_lt p0.w, r0, r1\n(p0) mov r4, c1\n(!p0) mov r4, c2"},
     {"predicated_setp", "setp_ge p0, r0, c0\n(p0.x) setp_lt p0.yz, r1, r2\n(p0) mov r4, r1"},
     {"callnz_predicate", "setp_gt p0, r0, r1\ncallnz l0, p0.x\ncallnz l1, !p0.y", "ps_3_0"},

@@ -81,16 +81,6 @@ void check_semantic_interface(const Program& program, std::string_view backend,
                              "register)",
                              backend, register_name(d.reg.file, d.reg.index)));
   }
-  auto relative = [&](const std::optional<RelAddr>& rel, RegFile f, uint32_t index, SourceLoc loc) {
-    if (rel && f == *file)
-      sink.error(loc, "not-supported",
-                 fmt::format("not supported yet by {}: {} addressed relatively", backend,
-                             register_name(f, index)));
-  };
-  for (const Instruction& ins : program.code) {
-    if (ins.dst) relative(ins.dst->rel, ins.dst->file, ins.dst->index, ins.dst->loc);
-    for (const SrcOperand& s : ins.src) relative(s.rel, s.file, s.index, s.loc);
-  }
 }
 
 Program link_by_semantic(const Program& program) {

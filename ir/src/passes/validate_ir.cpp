@@ -130,6 +130,17 @@ Status check_executable(const Program& program, std::string_view backend) {
                fmt::format("not supported yet by {}: {} in {} ({})", backend, what,
                            profile_name(program.profile), why));
   }
+  // Relative addressing of anything but c# (vs_3_0's v[aL + n], o[aL + n]).
+  for (const Instruction& ins : program.code) {
+    auto refuse = [&](RegFile f, uint32_t index, SourceLoc loc) {
+      sink.error(loc, "not-supported",
+                 fmt::format("not supported yet by {}: {} addressed relatively (only c# is)",
+                             backend, register_name(f, index)));
+    };
+    if (ins.dst && ins.dst->rel) refuse(ins.dst->file, ins.dst->index, ins.dst->loc);
+    for (const SrcOperand& s : ins.src)
+      if (s.rel && s.file != RegFile::Const) refuse(s.file, s.index, s.loc);
+  }
   check_semantic_interface(program, backend, sink);
   if (sink.has_errors()) return fail(sink);
   return ok_status();

@@ -21,13 +21,18 @@ inline constexpr int32_t kMinCount = 0, kMaxCount = 255;
 inline constexpr int32_t kMinStart = 0, kMaxStart = 255;
 inline constexpr int32_t kMinStep = -128, kMaxStep = 127;
 
-// Every loop and rep of one invocation together complete at most this many iterations
+// The loop work of one invocation is budgeted in units: reaching a loop or rep costs
+// kEntryCost (its first test and its leaving), each completed iteration (reaching
+// endloop/endrep) one more; break costs nothing. A loop starts an iteration only while its
+// own count remains and the units spent so far, this test's included, are at most
+// kIterationBudget; once they are not, every loop leaves at its next test and the code
+// after it runs as usual. Why these numbers: no legal program comes near them
 // (D3DCAPS9's MaxVShaderInstructionsExecuted / MaxPShaderInstructionsExecuted are at least
-// 65535 for shader model 3: no legal program runs longer). A loop starts an iteration only
-// while its own count and this budget both remain; once the budget is spent every loop
-// leaves at its next test and the code after it runs as usual. An iteration counts when it
-// reaches endloop/endrep (break leaves without spending).
-inline constexpr uint32_t kIterationBudget = 65536;
+// 65535 for shader model 3), and lavapipe ends any loop by itself after 65535 loop
+// iterations of a SIMD group, counting about two more per loop reached (llvmpipe's loop
+// limiter): a budget that costs as much and stops first is the one both devices can keep.
+inline constexpr uint32_t kIterationBudget = 65000;
+inline constexpr uint32_t kEntryCost = 2;
 
 // The comparison of if_comp / break_comp / setp_comp (bytecode control field 1..6).
 enum class Comparison : uint8_t { Gt = 1, Eq = 2, Ge = 3, Lt = 4, Ne = 5, Le = 6 };

@@ -27,8 +27,9 @@ namespace tierlift::ir {
 Status validate_ir(const Program& program);
 // OK when `backend` ("the interpreter", "SPIR-V") can run the program: every program of
 // shader models 1 and 2.0; in 2.x and 3.0 all but gradients (dsx, dsy, texldd), texldl,
-// predicated flow control or texkill, and semantics the 2.0 interface cannot carry
-// (sm3_interface.h): each of those gets a positioned "not-supported" error.
+// predicated flow control or texkill, relative addressing of anything but c# (vs_3_0's
+// v[aL], o[aL]) and semantics the 2.0 interface cannot carry (sm3_interface.h): each of
+// those gets a positioned "not-supported" error.
 Status check_executable(const Program& program, std::string_view backend);
 
 // Runs `pass` over a copy of `program`, then validate_ir; a failure names the pass.

@@ -21,9 +21,10 @@ namespace tierlift::ir {
 std::optional<std::pair<RegFile, uint32_t>> semantic_register(ShaderStage stage, DeclUsage usage,
                                                               uint8_t usage_index);
 
-// Errors (rule "not-supported", at the declaration or operand) for what the renaming cannot
-// carry: a semantic without a 2.0 register, two declarations on one register, and o#/v#
-// addressed relatively (o[aL], v[aL + n]). Adds nothing for a program of another profile.
+// Errors (rule "not-supported", at the declaration) for what the renaming cannot carry: a
+// semantic without a 2.0 register, two declarations on one register. Adds nothing for a
+// program of another profile. (o#/v# addressed relatively are refused by
+// ir::check_executable, as every relative operand but c#.)
 void check_semantic_interface(const Program& program, std::string_view backend,
                               DiagnosticSink& sink);
 

@@ -34,7 +34,8 @@ bool bool_const(const Step& s, const Invocation& inv) {
 void open_frame(const Step& s, Invocation& inv, bool is_loop) {
   auto i = int_const(s, inv);
   int32_t count = std::clamp(i[0], flow::kMinCount, flow::kMaxCount);
-  if (count == 0 || inv.iterations >= flow::kIterationBudget) {
+  inv.iterations += flow::kEntryCost;
+  if (count == 0 || inv.iterations > flow::kIterationBudget) {
     inv.pc = s.target;
     return;
   }
@@ -66,7 +67,7 @@ void close_frame(const Step& s, Invocation& inv) {
   LoopFrame& f = inv.loops[inv.loop_depth - 1];
   if (f.is_loop) inv.al += f.step;
   ++inv.iterations;
-  if (--f.remaining > 0 && inv.iterations < flow::kIterationBudget) {
+  if (--f.remaining > 0 && inv.iterations <= flow::kIterationBudget) {
     inv.pc = f.body_pc;
     return;
   }

@@ -133,7 +133,7 @@ struct Invocation {
   uint32_t out_written = 0;
   int32_t pc = 0;
   bool stop = false;
-  uint32_t iterations = 0; // loop and rep iterations completed (ir::flow::kIterationBudget)
+  uint32_t iterations = 0; // loop units spent (ir::flow::kIterationBudget)
   bool p0[4] = {false, false, false, false};
   int loop_depth = 0, call_depth = 0;
   LoopFrame loops[kMaxLoopDepth];
