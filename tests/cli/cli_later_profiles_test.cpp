@@ -55,7 +55,8 @@ TEST(CliLaterProfiles, SpirvAndRunTakeThemAndRefuseGradientsWithAPosition) {
   const std::string ps = s.file("a.psh", kPs30);
   auto spirv = run_cli("spirv " + ps + " -o " + s.file("a.spv"));
   EXPECT_EQ(spirv.exit_code, 0) << spirv.err;
-  auto run = run_cli("run --ps " + ps + " --backend cpu -o " + s.file("out.png"));
+  auto run = run_cli("run --ps " + ps + " --const ps:c0=0.5,0.5,0.5,0.5 --const ps:c1=2,2,2,2" +
+                     " --backend cpu -o " + s.file("out.png"));
   EXPECT_EQ(run.exit_code, 0) << run.err;
   EXPECT_TRUE(std::filesystem::exists(s.file("out.png")));
   EXPECT_EQ(run_cli("spirv " + s.file("v.vsh", kVs30) + " -o " + s.file("v.spv")).exit_code, 0);
