@@ -120,8 +120,8 @@ TEST(CorpusStages, ShaderModel3RunsAndGradientsAreUnsupportedNotAFailure) {
   EXPECT_EQ(stage_verdict(r, kStageValidate), Verdict::Pass);
   EXPECT_EQ(stage_verdict(r, kStageRoundTrip), Verdict::Pass);
   EXPECT_EQ(stage_verdict(r, kStageSpirv), Verdict::Pass);
-  CaseResult g = run_listing(
-      "g", "g.psh", "ps_3_0\ndcl_texcoord0 v0\ndsx r0, v0\nmov oC0, r0\n", no_device());
+  CaseResult g =
+      run_listing("g", "g.psh", "ps_3_0\ndcl_texcoord0 v0\ndsx r0, v0\nmov oC0, r0\n", no_device());
   EXPECT_EQ(stage_verdict(g, kStageValidate), Verdict::Pass);
   EXPECT_EQ(stage_verdict(g, kStageSpirv), Verdict::Unsupported);
   EXPECT_EQ(g.verdict, Verdict::Unsupported);
