@@ -5,6 +5,7 @@
 #include "tierlift/codegen/emitter.h"
 #include "tierlift/ir/passes.h"
 #include "tierlift/ir/result_diagnostics.h"
+#include "tierlift/ir/sm3_interface.h"
 
 namespace tierlift::codegen {
 
@@ -21,7 +22,9 @@ std::optional<ShaderModule> compile(const ir::Program& program, const CodegenOpt
     return std::nullopt;
   }
   EmitPlan plan;
-  Emitter emitter(program, options, plan, diags);
+  // Shader model 3's o#/v# become the 2.0 registers of their semantics (sm3_interface.h).
+  const ir::Program linked = ir::link_by_semantic(program);
+  Emitter emitter(linked, options, plan, diags);
   return emitter.run();
 }
 

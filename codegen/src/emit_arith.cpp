@@ -107,7 +107,8 @@ Id Emitter::arith_scalar(const ir::Instruction& ins) {
     const Id x = sc(0), y = sc(1);
     return splat(rule::pow(s1, x, y));
   }
-  case Opcode::SinCos: {
+  case Opcode::SinCos:
+  case Opcode::SinCos3: { // 3.0's one-source form: the same, no constants read
     const Id x = sc(0), zero = f(0.0f);
     return compose(glsl1(GLSLstd450Cos, x, 1), glsl1(GLSLstd450Sin, x, 1), zero, zero);
   }

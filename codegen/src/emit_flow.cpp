@@ -1,8 +1,10 @@
-// vs_2_0 static flow control as structured SPIR-V control flow: if/else/endif → selection
-// constructs, loop/rep → loop constructs with a Private iteration counter (i#.x clamped to
-// the legal 0–255 so a bad constant cannot hang the device), label/ret → one SPIR-V
-// function per subroutine (registers are Private, so subroutines share them), call/callnz
-// → OpFunctionCall. ps_1_4 phase needs no code.
+// Flow control of shader models 2.0 to 3.0 as structured SPIR-V control flow:
+// if/if_comp/if p0 … else … endif → selection constructs; loop/rep → loop constructs with a
+// Private iteration counter, the counts clamped and the invocation's iterations budgeted by
+// the rules of ir/flow_rules.h (the interpreter's), so no constant can hang the device;
+// break/break_comp/breakp → a branch to the innermost loop's merge block; label/ret → one
+// SPIR-V function per subroutine (registers are Private, so subroutines share them),
+// call/callnz → OpFunctionCall. ps_1_4 phase needs no code.
 #include <algorithm>
 
 #include "tierlift/codegen/emitter.h"
@@ -34,6 +36,21 @@ namespace {
 constexpr uint32_t kNone = 0;
 }
 
+Id Emitter::iterations_var() {
+  if (!iterations_var_) {
+    iterations_var_ =
+        b.global_variable(b.type_pointer(SC::Private, t_int), SC::Private, b.const_int(0));
+    b.name(iterations_var_, "iterations");
+  }
+  return iterations_var_;
+}
+
+Emitter::FlowFrame* Emitter::innermost_loop() {
+  for (auto it = flow_.rbegin(); it != flow_.rend(); ++it)
+    if (it->kind != FlowFrame::Kind::If) return &*it;
+  return nullptr;
+}
+
 bool Emitter::emit_flow(const ir::Instruction& ins, size_t) {
   const ir::OpInfo& info = ir::op_info(ins.op);
   if (ins.src.size() < info.num_src) {
@@ -52,25 +69,38 @@ bool Emitter::emit_flow(const ir::Instruction& ins, size_t) {
     FlowFrame fr;
     fr.kind = kind;
     const Id iv = load_int_const(int_reg);
-    const Id count = clamp_int(b.op(Op::OpCompositeExtract, t_int, {iv, 0}), 0, 255);
+    const Id count = clamp_int(b.op(Op::OpCompositeExtract, t_int, {iv, 0}), ir::flow::kMinCount,
+                               ir::flow::kMaxCount);
     fr.counter = b.global_variable(b.type_pointer(SC::Private, t_int), SC::Private, b.const_int(0));
     b.op_void(Op::OpStore, {fr.counter, count});
     if (kind == FlowFrame::Kind::Loop) {
-      // aL starts at i.y clamped to 0–255 and steps by i.z clamped to −128–127 (the legal
-      // ranges, as the interpreter clamps them).
+      // aL starts at i.y and steps by i.z, each clamped to its legal range (ir/flow_rules.h,
+      // as the interpreter clamps them).
       fr.saved_al = b.op(Op::OpLoad, t_int, {loop_var()});
-      b.op_void(Op::OpStore,
-                {loop_var(), clamp_int(b.op(Op::OpCompositeExtract, t_int, {iv, 1}), 0, 255)});
-      fr.step = clamp_int(b.op(Op::OpCompositeExtract, t_int, {iv, 2}), -128, 127);
+      b.op_void(Op::OpStore, {loop_var(), clamp_int(b.op(Op::OpCompositeExtract, t_int, {iv, 1}),
+                                                    ir::flow::kMinStart, ir::flow::kMaxStart)});
+      fr.step = clamp_int(b.op(Op::OpCompositeExtract, t_int, {iv, 2}), ir::flow::kMinStep,
+                          ir::flow::kMaxStep);
     }
+    // Reaching the loop costs ir::flow::kEntryCost units of the invocation's budget.
+    const Id before = b.op(Op::OpLoad, t_int, {iterations_var()});
+    b.op_void(Op::OpStore,
+              {iterations_var(),
+               b.op(Op::OpIAdd, t_int,
+                    {before, b.const_int(static_cast<int32_t>(ir::flow::kEntryCost))})});
     fr.header = b.fresh_id();
     fr.merge = b.fresh_id();
     fr.cont = b.fresh_id();
     const Id body = b.fresh_id();
     b.op_void(Op::OpBranch, {fr.header});
     b.begin_block(fr.header);
+    // Another iteration while the count and the invocation's budget both remain.
     const Id n = b.op(Op::OpLoad, t_int, {fr.counter});
-    const Id more = b.op(Op::OpSGreaterThan, t_bool, {n, b.const_int(0)});
+    const Id spent = b.op(Op::OpLoad, t_int, {iterations_var()});
+    const Id budget = b.const_int(static_cast<int32_t>(ir::flow::kIterationBudget));
+    const Id more = b.op(Op::OpLogicalAnd, t_bool,
+                         {b.op(Op::OpSGreaterThan, t_bool, {n, b.const_int(0)}),
+                          b.op(Op::OpSLessThanEqual, t_bool, {spent, budget})});
     b.op_void(Op::OpLoopMerge,
               {fr.merge, fr.cont, static_cast<uint32_t>(spv::LoopControlMask::MaskNone)});
     b.op_void(Op::OpBranchConditional, {more, body, fr.merge});
@@ -90,6 +120,8 @@ bool Emitter::emit_flow(const ir::Instruction& ins, size_t) {
     b.begin_block(fr.cont);
     const Id n = b.op(Op::OpLoad, t_int, {fr.counter});
     b.op_void(Op::OpStore, {fr.counter, b.op(Op::OpISub, t_int, {n, b.const_int(1)})});
+    const Id spent = b.op(Op::OpLoad, t_int, {iterations_var()});
+    b.op_void(Op::OpStore, {iterations_var(), b.op(Op::OpIAdd, t_int, {spent, b.const_int(1)})});
     if (kind == FlowFrame::Kind::Loop) {
       const Id al = b.op(Op::OpLoad, t_int, {loop_var()});
       b.op_void(Op::OpStore, {loop_var(), b.op(Op::OpIAdd, t_int, {al, fr.step})});
@@ -100,7 +132,58 @@ bool Emitter::emit_flow(const ir::Instruction& ins, size_t) {
     return true;
   };
 
+  auto open_if = [&](Id cond) {
+    FlowFrame fr;
+    fr.kind = FlowFrame::Kind::If;
+    fr.merge = b.fresh_id();
+    fr.else_label = b.fresh_id();
+    const Id then = b.fresh_id();
+    b.op_void(Op::OpSelectionMerge,
+              {fr.merge, static_cast<uint32_t>(spv::SelectionControlMask::MaskNone)});
+    b.op_void(Op::OpBranchConditional, {cond, then, fr.else_label});
+    b.begin_block(then);
+    flow_.push_back(fr);
+  };
+  // break: a branch to the innermost loop's merge block (which restores aL); the rest of
+  // the block is unreachable. cond: break only when it holds (break_comp, breakp).
+  auto leave_loop = [&](Id cond) {
+    FlowFrame* loop = innermost_loop();
+    if (!loop) {
+      error(ins.loc, "'" + std::string(info.mnemonic) + "' outside a loop");
+      return false;
+    }
+    const Id out = loop->merge;
+    if (!cond) {
+      b.op_void(Op::OpBranch, {out});
+      b.begin_block(b.fresh_id());
+      return true;
+    }
+    const Id leave = b.fresh_id(), stay = b.fresh_id();
+    b.op_void(Op::OpSelectionMerge,
+              {stay, static_cast<uint32_t>(spv::SelectionControlMask::MaskNone)});
+    b.op_void(Op::OpBranchConditional, {cond, leave, stay});
+    b.begin_block(leave);
+    b.op_void(Op::OpBranch, {out});
+    b.begin_block(stay);
+    return true;
+  };
+  auto predicate_operand = [&]() -> const ir::SrcOperand* {
+    for (const ir::SrcOperand& s : ins.src)
+      if (s.file == ir::RegFile::Predicate) return &s;
+    return nullptr;
+  };
+  if (const auto c = ir::flow::comparison_of(ins.op)) {
+    const Id cond = compare(*c, first_component(ins.src[0]), first_component(ins.src[1]), 1);
+    if (ins.op >= Opcode::IfGt && ins.op <= Opcode::IfLe) {
+      open_if(cond);
+      return true;
+    }
+    return leave_loop(cond);
+  }
+
   switch (ins.op) {
+  case Opcode::Break: return leave_loop(0);
+  case Opcode::BreakP: return leave_loop(predicate_component(ins.src[0]));
   case Opcode::Phase:
     // The alpha of every r# is lost across the marker; tierlift defines it as 0 (the
     // interpreter's exec_phase, NUMERICS.md "phase alpha").
@@ -115,17 +198,8 @@ bool Emitter::emit_flow(const ir::Instruction& ins, size_t) {
     }
     return true;
   case Opcode::If: {
-    FlowFrame fr;
-    fr.kind = FlowFrame::Kind::If;
-    fr.merge = b.fresh_id();
-    fr.else_label = b.fresh_id();
-    const Id then = b.fresh_id();
-    const Id c = bool_operand(ins.src[0]);
-    b.op_void(Op::OpSelectionMerge,
-              {fr.merge, static_cast<uint32_t>(spv::SelectionControlMask::MaskNone)});
-    b.op_void(Op::OpBranchConditional, {c, then, fr.else_label});
-    b.begin_block(then);
-    flow_.push_back(fr);
+    const ir::SrcOperand* p = predicate_operand();
+    open_if(p ? predicate_component(*p) : bool_operand(ins.src[0]));
     return true;
   }
   case Opcode::Else: {
@@ -159,7 +233,8 @@ bool Emitter::emit_flow(const ir::Instruction& ins, size_t) {
   case Opcode::EndRep: return end_loop(FlowFrame::Kind::Rep);
   case Opcode::Call: b.op(Op::OpFunctionCall, t_void, {label_fn(ins.src[0].index)}); return true;
   case Opcode::CallNz: {
-    const Id c = bool_operand(ins.src[1]);
+    const ir::SrcOperand* p = predicate_operand();
+    const Id c = p ? predicate_component(*p) : bool_operand(ins.src[1]);
     const Id then = b.fresh_id(), merge = b.fresh_id();
     b.op_void(Op::OpSelectionMerge,
               {merge, static_cast<uint32_t>(spv::SelectionControlMask::MaskNone)});

@@ -99,7 +99,8 @@ Id Emitter::input_var(RegFile file, uint32_t index) {
 }
 
 void Emitter::declare_uniforms() {
-  const bool has_int = prog.profile == ir::Profile::vs_2_0;
+  const bool has_int =
+      prog.profile == ir::Profile::vs_2_0 || ir::has_predication(prog.profile); // i#, b#
   const bool has_bump = ir::is_ps1x(prog.profile);
   if (const_relative_) {
     float_count_ = relative_limit();
@@ -196,6 +197,10 @@ void Emitter::emit_code() {
       emit_flow(ins, i);
       continue;
     }
+    if (ir::flow::comparison_of(ins.op)) { // setp_comp
+      emit_setp(ins);
+      continue;
+    }
     if (ins.op == ir::Opcode::Nop) continue;
     const size_t stores = pending.size();
     if (info.cls == ir::OpClass::Texture) {
@@ -206,6 +211,7 @@ void Emitter::emit_code() {
       if (emit_arith(ins, st)) pending.push_back(st);
     }
     if (pending.size() > stores) pending.back().index = i;
+    if (pending.size() > stores && ins.pred) pending.back().pred = predicate_mask(*ins.pred);
     if (pending.size() > stores && i < plain_.within_ps1x_range.size())
       pending.back().within_ps1x_range = plain_.within_ps1x_range[i];
   }

@@ -171,6 +171,7 @@ Id Emitter::load_register(RegFile file, uint32_t index, const std::optional<ir::
   case RegFile::TexCrdOut:
   case RegFile::ColorOut:
   case RegFile::DepthOut: return b.op(Op::OpLoad, t_vec4, {register_var(file, index)});
+  case RegFile::Misc: return misc_input(index);
   default: break;
   }
   return vec4_const(0, 0, 0, 0); // samplers, labels, i#, b#: read by their instructions
@@ -239,6 +240,10 @@ void Emitter::store(const PendingStore& st, bool ps1x_range) {
       const Id x = comp(st.value, i);
       parts[i] =
           to_index(floor_mode ? rule::mov_a0_floor(arith(1), x) : rule::mova_round(arith(1), x));
+      if (st.pred) // predicated: the old value where the predicate does not hold
+        parts[i] = b.op(Op::OpSelect, t_int,
+                        {b.op(Op::OpCompositeExtract, t_bool, {st.pred, i}), parts[i],
+                         b.op(Op::OpCompositeExtract, t_int, {old, i})});
     }
     b.op_void(Op::OpStore, {var, b.op(Op::OpCompositeConstruct, t_ivec4,
                                       {parts[0], parts[1], parts[2], parts[3]})});
@@ -258,6 +263,8 @@ void Emitter::store(const PendingStore& st, bool ps1x_range) {
   }
   if (st.dst.file == RegFile::DepthOut) writes_depth_ = true;
   const Id var = register_var(st.dst.file, st.dst.index);
+  if (st.pred) // predicated: the old value where the predicate does not hold
+    v = b.op(Op::OpSelect, t_vec4, {st.pred, v, b.op(Op::OpLoad, t_vec4, {var})});
   if (mask != 0xF) {
     const Id old = b.op(Op::OpLoad, t_vec4, {var});
     uint32_t sel[4];

@@ -17,7 +17,7 @@ using spv::Op;
 using SC = spv::StorageClass;
 
 ir::SamplerType Emitter::sampler_type(uint32_t stage) const {
-  if (prog.profile == ir::Profile::ps_2_0) {
+  if (ir::is_sm2_or_later(prog.profile)) { // ps_2_0, ps_2_x, ps_3_0 declare their samplers
     for (const ir::Declaration& d : prog.decls)
       if (d.reg.file == RegFile::Sampler && d.reg.index == stage &&
           d.sampler_type != ir::SamplerType::Unknown)
@@ -220,7 +220,7 @@ bool Emitter::emit_texture(const ir::Instruction& ins, std::optional<PendingStor
     } else {
       v = load_register(ins.dst->file, m, std::nullopt);
       // SM2 tests all four components (Wine; the docs say three, docs/d3d9-rules.md §5.7).
-      if (prog.profile == ir::Profile::ps_2_0) n = 4;
+      if (!ir::is_ps1x(prog.profile)) n = 4;
     }
     kill_if_any_negative(v, n);
     return true;

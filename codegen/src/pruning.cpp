@@ -11,6 +11,7 @@
 #include "tierlift/ir/liveness.h"
 #include "tierlift/ir/passes.h"
 #include "tierlift/ir/result_diagnostics.h"
+#include "tierlift/ir/sm3_interface.h"
 
 namespace tierlift::codegen {
 
@@ -65,21 +66,21 @@ void note_unread(const ir::Program& prog, const std::vector<bool>& dead, ir::Sha
 
 } // namespace
 
-std::optional<CompiledPair> compile_pair(const ir::Program& vs, const ir::Program& ps,
-                                         const CodegenOptions& options, ir::DiagnosticSink& diags) {
-  if (vs.stage() != ir::ShaderStage::Vertex || ps.stage() != ir::ShaderStage::Pixel) {
-    diags.error(vs.version_loc, "codegen", "compile_pair needs a vertex and a pixel shader");
-    return std::nullopt;
-  }
-  for (const ir::Program* p : {&vs, &ps})
-    for (ir::Status s : {ir::validate_ir(*p), ir::check_executable(*p, "SPIR-V")})
-      if (!s) { // as compile() does, before any analysis
-        ir::add_all(diags, s.diagnostics());
-        return std::nullopt;
-      }
+namespace {
+// Whether the liveness passes may drop instructions of `p`: not in 2.x and 3.0, whose
+// breaks, predicated writes and setp they do not model; those programs are emitted whole.
+bool prunable(const ir::Program& p) {
+  return !ir::has_predication(p.profile);
+}
+
+// compile_pair after the checks, on programs linked by semantic.
+std::optional<CompiledPair> compile_linked_pair(const ir::Program& vs, const ir::Program& ps,
+                                                const CodegenOptions& options,
+                                                ir::DiagnosticSink& diags) {
   CompiledPair pair;
   EmitPlan ps_plan;
-  ps_plan.skip = ir::dead_instructions(ps, ir::pixel_live_out(ps));
+  ps_plan.skip = prunable(ps) ? ir::dead_instructions(ps, ir::pixel_live_out(ps))
+                              : std::vector<bool>(ps.code.size(), false);
   const std::set<Reg> wanted = ir::live_inputs(ps, ps_plan.skip);
 
   EmitPlan vs_plan;
@@ -110,7 +111,8 @@ std::optional<CompiledPair> compile_pair(const ir::Program& vs, const ir::Progra
   std::map<Reg, uint8_t> vs_live;
   for (const Reg& r : *vs_plan.vs_outputs) vs_live[r] = 0xF;
   vs_live[{RegFile::RastOut, ir::kRastPos}] = 0xF;
-  vs_plan.skip = ir::dead_instructions(vs, vs_live);
+  vs_plan.skip =
+      prunable(vs) ? ir::dead_instructions(vs, vs_live) : std::vector<bool>(vs.code.size(), false);
   note_unread(vs, vs_plan.skip, ir::ShaderStage::Vertex, pair.pruned);
   note_unread(ps, ps_plan.skip, ir::ShaderStage::Pixel, pair.pruned);
 
@@ -122,6 +124,29 @@ std::optional<CompiledPair> compile_pair(const ir::Program& vs, const ir::Progra
   pair.vs = std::move(*vm);
   pair.ps = std::move(*pm);
   return pair;
+}
+
+} // namespace
+
+std::optional<CompiledPair> compile_pair(const ir::Program& vs_listing,
+                                         const ir::Program& ps_listing,
+                                         const CodegenOptions& options, ir::DiagnosticSink& diags) {
+  if (vs_listing.stage() != ir::ShaderStage::Vertex ||
+      ps_listing.stage() != ir::ShaderStage::Pixel) {
+    diags.error(vs_listing.version_loc, "codegen",
+                "compile_pair needs a vertex and a pixel shader");
+    return std::nullopt;
+  }
+  for (const ir::Program* p : {&vs_listing, &ps_listing})
+    for (ir::Status s : {ir::validate_ir(*p), ir::check_executable(*p, "SPIR-V")})
+      if (!s) { // as compile() does, before any analysis
+        ir::add_all(diags, s.diagnostics());
+        return std::nullopt;
+      }
+  // Shader model 3 links by semantic: from here on both stages speak the 2.0 interface.
+  const ir::Program vs_linked = ir::link_by_semantic(vs_listing);
+  const ir::Program ps_linked = ir::link_by_semantic(ps_listing);
+  return compile_linked_pair(vs_linked, ps_linked, options, diags);
 }
 
 } // namespace tierlift::codegen

@@ -62,7 +62,7 @@ pass::Vec4 coordinate(Rng& rng) {
 
 std::vector<uint32_t> sampled_stages(const ir::Program& p) {
   std::vector<uint32_t> out;
-  if (p.profile == ir::Profile::ps_2_0) {
+  if (ir::is_sm2_or_later(p.profile)) { // ps_2_0, ps_2_x, ps_3_0 declare their samplers
     for (const ir::Declaration& d : p.decls)
       if (d.reg.file == ir::RegFile::Sampler && d.sampler_type == ir::SamplerType::Tex2D)
         out.push_back(d.reg.index);
@@ -145,9 +145,12 @@ pass::RunRequest request(const ir::Program& program, const StageOptions& o, Rng&
     }
   } else {
     r.ps = std::make_shared<const ir::Program>(program);
-    for (uint32_t v = 0; v < lim.inputs; ++v)
+    // ps_3_0 reads its v# by semantic (ir/sm3_interface.h): color0-1 are the colour inputs,
+    // texcoord0-7 the coordinates, as in ps_2_0.
+    const bool sm3 = ir::is_sm3(program.profile);
+    for (uint32_t v = 0; v < (sm3 ? 2u : lim.inputs); ++v)
       r.inputs.push_back({ir::RegFile::Input, v, vec(rng, set), false});
-    for (uint32_t t = 0; t < lim.texcoords; ++t)
+    for (uint32_t t = 0; t < (sm3 ? 8u : lim.texcoords); ++t)
       r.inputs.push_back({ir::RegFile::Texture, t, coordinate(rng), false});
     for (uint32_t s : sampled_stages(program))
       r.textures.emplace_back(s, fmt::format("builtin:noise:8x8:{}", rng.below(1000) + 1));

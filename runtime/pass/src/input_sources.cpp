@@ -4,12 +4,16 @@
 #include <fmt/format.h>
 #include <tuple>
 
+#include "tierlift/ir/sm3_interface.h"
+
 namespace tierlift::pass {
 namespace {
 
 // Bit n set: register n of `file` is declared or named by an instruction (source or
 // destination: ps_1_x's `tex t0` names the coordinate set it reads as its destination).
-uint16_t registers_named(const ir::Program& program, ir::RegFile file, uint32_t limit) {
+// A ps_3_0's v# count by their semantic (dcl_texcoord2 v0 names t2), as the devices read them.
+uint16_t registers_named(const ir::Program& listing, ir::RegFile file, uint32_t limit) {
+  const ir::Program program = ir::link_by_semantic(listing);
   uint16_t mask = 0;
   auto add = [&](ir::RegFile f, uint32_t index) {
     if (f == file && index < limit) mask |= static_cast<uint16_t>(1u << index);

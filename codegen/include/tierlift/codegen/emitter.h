@@ -12,6 +12,7 @@
 
 #include "tierlift/codegen/codegen.h"
 #include "tierlift/codegen/spirv_builder.h"
+#include "tierlift/ir/flow_rules.h"
 #include "tierlift/ir/numeric_rules.h"
 #include "tierlift/ir/passes.h"
 #include "tierlift/ir/plain_values.h"
@@ -37,6 +38,7 @@ struct PendingStore {
   Id value = 0;                   // vec4
   uint8_t mask = 0xF;             // the destination mask, possibly narrowed by the opcode
   bool within_ps1x_range = false; // ir::PlainValueFacts: the ps_1_x range clamp is a no-op
+  Id pred = 0;                    // predicated instruction: bvec4, component i written if true
   size_t index = 0;               // the instruction in Program::code (CodegenOptions::trace)
 };
 
@@ -199,6 +201,21 @@ public:
   bool routine_ended_ = false; // a top-level ret ended the current routine
   Id label_fn(uint32_t label);
   Id clamp_int(Id v, int32_t lo, int32_t hi);
+  // Loop and rep iterations the invocation has completed (ir::flow::kIterationBudget).
+  Id iterations_var();
+  Id iterations_var_ = 0;
+  FlowFrame* innermost_loop();
+
+  // ---- shader models 2.x and 3.0 (emit_predication.cpp) ----
+  // x `c` y by ir::flow::compare, at width n (1: bool, 4: bvec4).
+  Id compare(ir::flow::Comparison c, Id x, Id y, int n);
+  Id first_component(const ir::SrcOperand& s);     // if_comp / break_comp operands
+  Id p0_var();                                     // Private bvec4
+  Id predicate_component(const ir::SrcOperand& p); // bool: p0.c, negated by !p0
+  Id predicate_mask(const ir::SrcOperand& p);      // bvec4: "(p0.swz)" per destination component
+  void emit_setp(const ir::Instruction& ins);
+  Id misc_input(uint32_t index); // vPos, vFace
+  Id p0_var_ = 0, frag_coord_var_ = 0, front_facing_var_ = 0;
 
   // Interface and resources (emit_module.cpp).
   std::map<std::pair<ir::RegFile, uint32_t>, Id> regs_, inputs_;

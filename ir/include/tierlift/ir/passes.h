@@ -25,9 +25,11 @@ namespace tierlift::ir {
 // profile can address (relative constant bases and matrix rows included), defs in a
 // constant file. Errors point at the instruction or operand, rule "ir".
 Status validate_ir(const Program& program);
-// OK when `backend` ("the interpreter", "SPIR-V") can run the program: shader models 1 and
-// 2.0. A 2.x or 3.0 program is refused with a positioned "not-supported" error naming its
-// first instruction that only those profiles have (or its version line).
+// OK when `backend` ("the interpreter", "SPIR-V") can run the program: every program of
+// shader models 1 and 2.0; in 2.x and 3.0 all but gradients (dsx, dsy, texldd), texldl,
+// predicated flow control or texkill, relative addressing of anything but c# (vs_3_0's
+// v[aL], o[aL]) and semantics the 2.0 interface cannot carry (sm3_interface.h): each of
+// those gets a positioned "not-supported" error.
 Status check_executable(const Program& program, std::string_view backend);
 
 // Runs `pass` over `program`, then validate_ir; a failure names the pass (device_pipeline.h

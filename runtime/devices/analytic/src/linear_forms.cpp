@@ -60,8 +60,13 @@ std::string structural_error(std::string_view who, const ir::Program& vs, const 
     return fmt::format("{} needs a vertex listing and a pixel listing", who);
   if (ir::Status s = ir::validate_ir(vs); !s) return "vertex listing: " + s.message();
   if (ir::Status s = ir::validate_ir(ps); !s) return "pixel listing: " + s.message();
-  for (const ir::Program* p : {&vs, &ps})
+  for (const ir::Program* p : {&vs, &ps}) {
     if (ir::Status s = ir::check_executable(*p, "the analytic model"); !s) return s.message();
+    // Its forms know the registers and instructions of shader models 1 and 2.0 only.
+    if (ir::has_predication(p->profile))
+      return fmt::format("the analytic model runs shader models 1 and 2.0, not {}",
+                         ir::profile_name(p->profile));
+  }
   return {};
 }
 

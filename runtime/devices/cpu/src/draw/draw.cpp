@@ -76,10 +76,9 @@ void raster_rows(const RasterJob& job, int64_t y0, int64_t y1, WorkerStats& stat
           inside = e[k] > 0 || (e[k] == 0 && t.top_left[k]);
         }
         if (!inside) continue;
-        if (job.constant_inputs)
-          shade_pixel(job, constant, x, y, stats);
-        else
-          shade_pixel(job, detail::interpolate(t, e, x, y), x, y, stats);
+        PixelInput in = job.constant_inputs ? constant : detail::interpolate(t, e, x, y);
+        detail::set_position_and_face(in, t, x, y);
+        shade_pixel(job, in, x, y, stats);
       }
     }
   }

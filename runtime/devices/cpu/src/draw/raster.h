@@ -57,6 +57,7 @@ struct Triangle {
   std::array<bool, 3> top_left{}; // edge k runs from v[k+1] to v[k+2]
   PixelRect bounds;               // pixels whose sample point may be inside, ∩ scissor
   bool llvmpipe = false;          // interpolate with `planes` (else exact barycentrics)
+  bool front = true;              // clockwise on screen as given (before the swap): vFace +1
   AttributePlanes planes;
 };
 
@@ -87,6 +88,12 @@ int64_t sample_offset(const ir::Conventions& conventions);
 // point (all ≥ 0 inside), (x, y) its pixel index.
 void setup_planes(Triangle& t);
 PixelInput interpolate(const Triangle& t, const int64_t e[3], int64_t x, int64_t y);
+// ps_3_0 vPos and vFace of pixel (x, y) of t: its integer coordinates and t's facing.
+inline void set_position_and_face(PixelInput& in, const Triangle& t, int64_t x, int64_t y) {
+  in.pos_x = static_cast<float>(x);
+  in.pos_y = static_cast<float>(y);
+  in.face = t.front ? 1.0f : -1.0f;
+}
 
 // Rounding::Llvmpipe's arithmetic (tierlift/rounding/rounding.h, measured in
 // tests/vulkan/denormals_test.cpp): setup and interpolation flush denormals, planes are

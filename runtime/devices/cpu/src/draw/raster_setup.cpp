@@ -127,6 +127,7 @@ void emit(ScreenVertex a, ScreenVertex b, ScreenVertex c, const PixelRect& sciss
   t.v = {a, b, c};
   t.area = edge(a, b, c.x, c.y);
   if (t.area == 0) return; // degenerate after snapping: covers nothing
+  t.front = t.area > 0;    // y points down: a positive area runs clockwise on screen
   if (t.area < 0) {        // no culling: both windings are drawn
     std::swap(t.v[1], t.v[2]);
     t.area = -t.area;

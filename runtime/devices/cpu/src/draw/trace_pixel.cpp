@@ -76,6 +76,7 @@ ir::Result<PixelTrace> trace_pixel(const Pass& pass, uint32_t width, uint32_t he
   } else {
     in = detail::interpolate(*last, last_e, px, py);
   }
+  detail::set_position_and_face(in, *last, px, py);
   const BoundTextures textures(pass.textures, pass.conventions.subtexel_bits,
                                pass.conventions.rounding == ir::Rounding::Llvmpipe);
   out.covered = true;

@@ -135,7 +135,8 @@ VM_OP(op_nrm) {
   d = each(s[0], [f](float a) { return num::legacy_mul<D>(a, f); });
 }
 
-// sincos: d.x = cos, d.y = sin; the mask was limited to .xy at preparation.
+// sincos (both forms: 2.0's constants are not read): d.x = cos, d.y = sin; the mask was
+// limited to .xy at preparation.
 VM_OP(op_sincos) {
   float a = sc(s[0]);
   d = {num::legacy_cos<D>(a), num::legacy_sin<D>(a), 0.0f, 0.0f};
@@ -198,7 +199,7 @@ template <Denormals D> constexpr OpcodeTable<ComputeFn> compute_table() {
       {Opcode::Crs, op_crs<D>},   {Opcode::Sgn, op_sgn<D>},       {Opcode::Abs, op_abs<D>},
       {Opcode::Nrm, op_nrm<D>},   {Opcode::SinCos, op_sincos<D>}, {Opcode::Expp, op_expp<D>},
       {Opcode::Logp, op_logp<D>}, {Opcode::Cnd, op_cnd<D>},       {Opcode::Cmp, op_cmp<D>},
-      {Opcode::Bem, op_bem<D>},   {Opcode::Dp2Add, op_dp2add<D>}};
+      {Opcode::Bem, op_bem<D>},   {Opcode::Dp2Add, op_dp2add<D>}, {Opcode::SinCos3, op_sincos<D>}};
   return OpcodeTable<ComputeFn>(rows);
 }
 constexpr OpcodeTable<ComputeFn> kComputeKeep = compute_table<Denormals::Keep>();

@@ -300,6 +300,8 @@ std::unique_ptr<PixelBlockVM> PixelBlockVM::create(const ir::Program& program,
     const ir::Opcode op = st.ins->op;
     std::optional<BlockOp> bop = block_op(op, ir::op_info(op).cls);
     if (!bop || st.rows) return nullptr;
+    // Predication and setp (2.x, 3.0) run per pixel only.
+    if (st.ins->pred || st.exec == vm::exec_setp) return nullptr;
     b.op = *bop;
     if (b.op == BlockOp::Arith && st.exec == vm::exec_arith_pair) b.op = BlockOp::ArithPair;
     if (st.dst.kind == vm::DstKind::AddrFloor || st.dst.kind == vm::DstKind::AddrRound)
@@ -314,6 +316,7 @@ std::unique_ptr<PixelBlockVM> PixelBlockVM::create(const ir::Program& program,
           return nullptr;
         const vm::SrcDesc& sd = st.src[static_cast<size_t>(k)];
         if (sd.kind != vm::SrcKind::Slot) continue;
+        if (sd.slot >= vm::kMiscBase) return nullptr; // vPos, vFace: per pixel only
         read[sd.slot] = true;
         if (sd.slot < vm::kTexBase || sd.slot >= vm::kTexBase + vm::kTexCount) continue;
         // The components of t# this operand can pass on: its swizzle's, all four under a

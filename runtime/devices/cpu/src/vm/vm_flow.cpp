@@ -1,15 +1,21 @@
-// vs_2_0 static flow control (docs/d3d9-rules.md §5.3) and the ps_1_4 phase marker. Jump targets
-// were matched at preparation; the frames live in the Invocation (fixed arrays, no heap).
-// Counts are clamped to the legal ranges and backward jumps are budgeted, so that no
-// program can hang the interpreter.
+// Flow control of shader models 2.0 to 3.0 (docs/d3d9-rules.md §5.3): static if/loop/rep/
+// call, the dynamic forms of 2.x and 3.0 (if_comp, if p0, break, break_comp, breakp, callnz
+// p0), setp and predicated instructions; and the ps_1_4 phase marker. Jump targets were
+// matched at preparation; the frames live in the Invocation (fixed arrays, no heap). Counts
+// are clamped to the legal ranges and iterations budgeted by the rules of ir/flow_rules.h,
+// the ones the generated SPIR-V follows, so that no program can hang either device.
 #include <algorithm>
 #include <array>
 
+#include "tierlift/ir/flow_rules.h"
+#include "tierlift/ir/numerics.h"
 #include "vm_internal.h"
 
 namespace tierlift::cpu::vm {
 
 using ir::Opcode;
+namespace flow = ir::flow;
+namespace num = ir::numerics;
 
 namespace {
 
@@ -23,11 +29,13 @@ bool bool_const(const Step& s, const Invocation& inv) {
   return b != s.negate;
 }
 
-// Opens a loop or rep frame; a zero count skips the body (pc = past the end).
+// Opens a loop or rep frame; a zero count or a spent budget skips the body (pc = past the
+// end).
 void open_frame(const Step& s, Invocation& inv, bool is_loop) {
   auto i = int_const(s, inv);
-  int32_t count = std::clamp(i[0], 0, 255);
-  if (count == 0) {
+  int32_t count = std::clamp(i[0], flow::kMinCount, flow::kMaxCount);
+  inv.iterations += flow::kEntryCost;
+  if (count == 0 || inv.iterations > flow::kIterationBudget) {
     inv.pc = s.target;
     return;
   }
@@ -40,25 +48,30 @@ void open_frame(const Step& s, Invocation& inv, bool is_loop) {
   f.body_pc = inv.pc;
   f.is_loop = is_loop;
   f.saved_al = inv.al;
-  f.step = is_loop ? std::clamp(i[2], -128, 127) : 0;
-  if (is_loop) inv.al = std::clamp(i[1], 0, 255);
+  f.step = is_loop ? std::clamp(i[2], flow::kMinStep, flow::kMaxStep) : 0;
+  if (is_loop) inv.al = std::clamp(i[1], flow::kMinStart, flow::kMaxStart);
 }
 
+// Leaves the innermost loop: aL back to its value before the loop.
+void pop_frame(Invocation& inv) {
+  const LoopFrame& f = inv.loops[inv.loop_depth - 1];
+  if (f.is_loop) inv.al = f.saved_al;
+  --inv.loop_depth;
+}
+
+// endloop / endrep: the iteration is complete; another starts while the count and the
+// invocation's budget both remain (ir::flow::kIterationBudget).
 void close_frame(const Step& s, Invocation& inv) {
   (void)s;
   if (inv.loop_depth == 0) return;
   LoopFrame& f = inv.loops[inv.loop_depth - 1];
   if (f.is_loop) inv.al += f.step;
-  if (--f.remaining > 0) {
-    if (++inv.backward_jumps > kMaxBackwardJumps) {
-      inv.stop = true;
-      return;
-    }
+  ++inv.iterations;
+  if (--f.remaining > 0 && inv.iterations <= flow::kIterationBudget) {
     inv.pc = f.body_pc;
     return;
   }
-  if (f.is_loop) inv.al = f.saved_al;
-  --inv.loop_depth;
+  pop_frame(inv);
 }
 
 void exec_loop(const Step& s, Invocation& inv) {
@@ -105,6 +118,42 @@ void exec_ret(const Step& s, Invocation& inv) {
   inv.pc = inv.calls[--inv.call_depth];
 }
 
+// p0's component `aux`, negated by !p0 (if p0.x, callnz l#, p0.y, breakp !p0.z).
+bool predicate(const Step& s, const Invocation& inv) {
+  return inv.p0[s.aux & 3] != s.negate;
+}
+
+// src0 `compare` src1 on their first components (the validator asks for replicate
+// swizzles), by the rule of ir/flow_rules.h.
+bool compared(const Step& s, const Invocation& inv) {
+  const float a = fetch(s.src[0], inv)[0], b = fetch(s.src[1], inv)[0];
+  const auto c = static_cast<flow::Comparison>(s.compare);
+  return inv.prog->flush ? flow::compare(num::FloatArith<num::kFlush>{}, c, a, b)
+                         : flow::compare(num::FloatArith<num::Denormals::Keep>{}, c, a, b);
+}
+
+void exec_if_compare(const Step& s, Invocation& inv) {
+  if (!compared(s, inv)) inv.pc = s.target;
+}
+void exec_if_predicate(const Step& s, Invocation& inv) {
+  if (!predicate(s, inv)) inv.pc = s.target;
+}
+void exec_callnz_predicate(const Step& s, Invocation& inv) {
+  if (predicate(s, inv)) call_to(s, inv);
+}
+// break: out of the innermost loop or rep (target: past its end), as the end of its count.
+void exec_break(const Step& s, Invocation& inv) {
+  if (inv.loop_depth == 0) return;
+  pop_frame(inv);
+  inv.pc = s.target;
+}
+void exec_break_compare(const Step& s, Invocation& inv) {
+  if (compared(s, inv)) exec_break(s, inv);
+}
+void exec_breakp(const Step& s, Invocation& inv) {
+  if (predicate(s, inv)) exec_break(s, inv);
+}
+
 // ps_1_4 phase: the alpha of every r# is lost across the marker; tierlift defines it to
 // read as 0 afterwards (NUMERICS.md "phase alpha").
 void exec_phase(const Step& s, Invocation& inv) {
@@ -121,8 +170,46 @@ constexpr OpcodeTable<ExecFn> kFlow{kFlowRows};
 
 } // namespace
 
-ExecFn flow_exec(Opcode op) {
-  return kFlow[op];
+ExecFn flow_exec(const ir::Instruction& ins) {
+  if (flow::comparison_of(ins.op))
+    return ir::op_info(ins.op).cls == ir::OpClass::Flow
+               ? (ins.op >= Opcode::IfGt ? exec_if_compare : exec_break_compare)
+               : nullptr;
+  const bool on_p0 = std::any_of(ins.src.begin(), ins.src.end(), [](const ir::SrcOperand& o) {
+    return o.file == ir::RegFile::Predicate;
+  });
+  switch (ins.op) {
+  case Opcode::If: return on_p0 ? exec_if_predicate : exec_if;
+  case Opcode::CallNz: return on_p0 ? exec_callnz_predicate : exec_callnz;
+  case Opcode::Break: return exec_break;
+  case Opcode::BreakP: return exec_breakp;
+  default: return kFlow[ins.op];
+  }
+}
+
+// setp_comp p0.mask, src0, src1: each written component of p0 is src0 `compare` src1 in
+// that component.
+void exec_setp(const Step& s, Invocation& inv) {
+  const Vec4 a = fetch(s.src[0], inv), b = fetch(s.src[1], inv);
+  const auto c = static_cast<flow::Comparison>(s.compare);
+  for (int i = 0; i < 4; ++i) {
+    if (!(s.dst.mask & (1 << i))) continue;
+    inv.p0[i] = inv.prog->flush
+                    ? flow::compare(num::FloatArith<num::kFlush>{}, c, a[i], b[i])
+                    : flow::compare(num::FloatArith<num::Denormals::Keep>{}, c, a[i], b[i]);
+  }
+}
+
+// "(p0.swz) op" / "(!p0.swz) op": destination component i is written when p0's component
+// swz[i] holds (does not, under !): the instruction runs with its write mask narrowed.
+void exec_predicated(const Step& s, Invocation& inv) {
+  uint8_t mask = 0;
+  for (int i = 0; i < 4; ++i)
+    if (inv.p0[s.pred_swz[i]] != s.pred_not) mask |= static_cast<uint8_t>(1u << i);
+  Step narrowed = s;
+  narrowed.dst.mask &= mask;
+  narrowed.exec = s.inner;
+  s.inner(narrowed, inv);
 }
 
 } // namespace tierlift::cpu::vm

@@ -21,7 +21,9 @@ inline constexpr int kTempBase = 0, kTempCount = 32;
 inline constexpr int kInputBase = 32, kInputCount = 16;
 inline constexpr int kTexBase = 48, kTexCount = 8;
 inline constexpr int kOutBase = 56, kOutCount = 16;
-inline constexpr int kSlotCount = kOutBase + kOutCount;
+// ps_3_0 vPos and vFace (RegFile::Misc), filled from the pixel's PixelInput.
+inline constexpr int kMiscBase = kOutBase + kOutCount, kMiscCount = 2;
+inline constexpr int kSlotCount = kMiscBase + kMiscCount;
 // Output slots (relative to kOutBase). Vertex: oPos, oFog, oPts, oD0-1, oT0-7.
 // Pixel: oC0-3, oDepth.
 inline constexpr int kOutPos = 0, kOutFog = 1, kOutPts = 2, kOutD0 = 3, kOutT0 = 5;
@@ -29,9 +31,8 @@ inline constexpr int kOutC0 = 0, kOutDepth = 4;
 
 inline constexpr int kMaxLoopDepth = 16;
 inline constexpr int kMaxCallDepth = 32;
-// A broken program cannot hang: the total number of backward jumps (loop and rep
-// iterations) per invocation is bounded. 255 × 255 nested iterations fit.
-inline constexpr uint32_t kMaxBackwardJumps = 1u << 16;
+// A program cannot hang: loop and rep iterations per invocation are budgeted by
+// ir::flow::kIterationBudget (ir/flow_rules.h), the rule the generated SPIR-V follows too.
 
 struct Invocation;
 struct Step;
@@ -79,9 +80,15 @@ struct Step {
   uint8_t rows = 0; // matrix macros: rows fetched after src0
   DstDesc dst;
   int32_t target = -1; // flow: jump target (pc)
-  int32_t aux = 0;     // flow: i#/b# index; texture: stage / pad row; bem: stage
-  bool negate = false; // callnz !b#
-  int8_t pad_row = 0;  // texm3x2pad/texm3x3pad: 0 = u', 1 = v'
+  int32_t aux = 0;     // flow: i#/b# index or p0 component; texture: stage / pad row
+  bool negate = false; // callnz !b#, if !p0.x
+  uint8_t compare = 0; // if_comp / break_comp / setp_comp: ir::flow::Comparison
+  // A predicated instruction ("(p0.x) add", "(!p0) mov"): exec is exec_predicated, which
+  // narrows the write mask to the components whose predicate holds and runs `inner`.
+  ExecFn inner = nullptr;
+  uint8_t pred_swz[4] = {0, 1, 2, 3};
+  bool pred_not = false;
+  int8_t pad_row = 0;                            // texm3x2pad/texm3x3pad: 0 = u', 1 = v'
   std::optional<std::array<int32_t, 4>> int_def; // defi for loop/rep
   std::optional<bool> bool_def;                  // defb for if/callnz
   const ir::Instruction* ins = nullptr;
@@ -126,7 +133,8 @@ struct Invocation {
   uint32_t out_written = 0;
   int32_t pc = 0;
   bool stop = false;
-  uint32_t backward_jumps = 0;
+  uint32_t iterations = 0; // loop units spent (ir::flow::kIterationBudget)
+  bool p0[4] = {false, false, false, false};
   int loop_depth = 0, call_depth = 0;
   LoopFrame loops[kMaxLoopDepth];
   int32_t calls[kMaxCallDepth];
@@ -179,8 +187,12 @@ void exec_arith_pair(const Step& s, Invocation& inv);
 // vm_texture.cpp
 ExecFn texture_exec(ir::Opcode op, bool flush_denormals);
 
-// vm_flow.cpp
-ExecFn flow_exec(ir::Opcode op);
+// vm_flow.cpp: the flow-control executor of `ins` (its operands pick the form: if b# or
+// if p0, callnz with b# or p0), nullptr when there is none.
+ExecFn flow_exec(const ir::Instruction& ins);
+// setp_comp and the wrapper of predicated instructions (vm_flow.cpp).
+void exec_setp(const Step& s, Invocation& inv);
+void exec_predicated(const Step& s, Invocation& inv);
 
 // The store's per-component rule (shift, ps_1_x range clamp, _sat, fixed-point quantise), in
 // that order, under denormal mode D (d.flush picks it per program); shared by store_general

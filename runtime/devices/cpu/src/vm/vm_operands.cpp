@@ -29,6 +29,7 @@ int flat_slot(RegFile file, uint32_t index, ir::ShaderStage stage) {
   case RegFile::TexCrdOut: return vertex ? in(kOutBase + kOutT0, 8) : -1;
   case RegFile::ColorOut: return vertex ? -1 : in(kOutBase + kOutC0, 4);
   case RegFile::DepthOut: return vertex ? -1 : in(kOutBase + kOutDepth, 1);
+  case RegFile::Misc: return vertex ? -1 : in(kMiscBase, kMiscCount);
   default: return -1;
   }
 }

@@ -7,9 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "tierlift/ir/flow_rules.h"
 #include "tierlift/ir/numerics.h"
 #include "tierlift/ir/passes.h"
 #include "tierlift/ir/semantics.h"
+#include "tierlift/ir/sm3_interface.h"
 #include "vm_internal.h"
 
 namespace tierlift::cpu::vm {
@@ -89,12 +91,24 @@ void prepare_texture(Step& s, const ir::Instruction& ins, const Prepared& p) {
 void prepare_flow(Step& s, const ir::Instruction& ins,
                   const std::vector<std::optional<std::array<int32_t, 4>>>& ints,
                   const std::vector<std::optional<bool>>& bools) {
-  s.exec = flow_exec(ins.op);
+  s.exec = flow_exec(ins);
   if (!s.exec) broken(ins, "no interpreter function");
   auto operand = [&](size_t k) -> const ir::SrcOperand& {
     if (ins.src.size() <= k) broken(ins, "missing operand");
     return ins.src[k];
   };
+  if (const auto c = ir::flow::comparison_of(ins.op)) {
+    operand(1);
+    s.compare = static_cast<uint8_t>(*c);
+    return;
+  }
+  // if p0.x, callnz l#, !p0.y, breakp p0.z: the component and its negation.
+  for (const ir::SrcOperand& o : ins.src)
+    if (o.file == RegFile::Predicate) {
+      s.aux = ir::swizzle_component(o.swizzle, 0);
+      s.negate = o.mod == ir::SrcMod::Not;
+      return;
+    }
   switch (ins.op) {
   case Opcode::Loop:
   case Opcode::Rep: {
@@ -117,9 +131,19 @@ void prepare_flow(Step& s, const ir::Instruction& ins,
   }
 }
 
-// Matches if/else/endif, loop/endloop, rep/endrep; resolves call targets to labels.
+bool opens_if(Opcode op) {
+  return op == Opcode::If || (op >= Opcode::IfGt && op <= Opcode::IfLe);
+}
+bool is_break(Opcode op) {
+  return op == Opcode::Break || op == Opcode::BreakP ||
+         (op >= Opcode::BreakGt && op <= Opcode::BreakLe);
+}
+
+// Matches if/else/endif, loop/endloop, rep/endrep, each break with its innermost loop;
+// resolves call targets to labels.
 void match_flow(Prepared& p) {
   std::vector<int32_t> open;
+  std::vector<std::vector<int32_t>> breaks; // per open loop or rep: its breaks' pcs
   std::vector<int32_t> label_pc(32, -1);
   int depth = 0, max_depth = 0;
   auto& code = p.program.code;
@@ -128,20 +152,30 @@ void match_flow(Prepared& p) {
     auto top_is = [&](std::initializer_list<Opcode> ops) {
       return !open.empty() && std::find(ops.begin(), ops.end(), code[open.back()].op) != ops.end();
     };
+    auto top_is_if = [&] { return !open.empty() && opens_if(code[open.back()].op); };
+    if (opens_if(ins.op)) {
+      open.push_back(pc);
+      continue;
+    }
+    if (is_break(ins.op)) {
+      if (breaks.empty()) broken(ins, "break outside a loop");
+      breaks.back().push_back(pc);
+      continue;
+    }
     switch (ins.op) {
-    case Opcode::If: open.push_back(pc); break;
     case Opcode::Loop:
     case Opcode::Rep:
       open.push_back(pc);
+      breaks.emplace_back();
       max_depth = std::max(max_depth, ++depth);
       break;
     case Opcode::Else:
-      if (!top_is({Opcode::If})) broken(ins, "else without if");
+      if (!top_is_if()) broken(ins, "else without if");
       p.steps[open.back()].target = pc + 1; // a false condition runs the else block
       open.back() = pc;
       break;
     case Opcode::EndIf:
-      if (!top_is({Opcode::If, Opcode::Else})) broken(ins, "endif without if");
+      if (!top_is_if() && !top_is({Opcode::Else})) broken(ins, "endif without if");
       p.steps[open.back()].target = pc + 1;
       open.pop_back();
       break;
@@ -151,6 +185,8 @@ void match_flow(Prepared& p) {
       if (!top_is({want})) broken(ins, "unmatched end of loop");
       p.steps[open.back()].target = pc + 1; // a zero count skips the body
       p.steps[pc].target = open.back() + 1; // the body starts after loop/rep
+      for (const int32_t b : breaks.back()) p.steps[b].target = pc + 1;
+      breaks.pop_back();
       open.pop_back();
       --depth;
       break;
@@ -182,7 +218,8 @@ Prepared prepare(const ir::Program& program, const ir::Conventions& conv) {
   if (ir::Status s = ir::check_executable(program, "the interpreter"); !s)
     throw std::invalid_argument(s.message());
   Prepared p;
-  p.program = program;
+  // Shader model 3's o#/v# become the 2.0 registers of their semantics (sm3_interface.h).
+  p.program = ir::link_by_semantic(program);
   p.conv = conv;
   const ir::Profile prof = program.profile;
   p.ps1x = ir::is_ps1x(prof);
@@ -208,11 +245,26 @@ Prepared prepare(const ir::Program& program, const ir::Conventions& conv) {
     const ir::OpInfo& info = ir::op_info(ins.op);
     s.nsrc = static_cast<uint8_t>(std::min<size_t>(ins.src.size(), 4));
     for (int k = 0; k < s.nsrc; ++k) s.src[k] = decode_src(ins.src[k], p);
+    const auto comparison = ir::flow::comparison_of(ins.op);
     switch (info.cls) {
-    case OpClass::Arith: prepare_arith(s, ins, p); break;
+    case OpClass::Arith:
+      if (comparison) { // setp_comp p0.mask, src0, src1
+        s.exec = exec_setp;
+        s.compare = static_cast<uint8_t>(*comparison);
+        s.dst.mask = ins.dst ? ins.dst->mask & 0xF : 0;
+        break;
+      }
+      prepare_arith(s, ins, p);
+      break;
     case OpClass::Texture: prepare_texture(s, ins, p); break;
     case OpClass::Flow: prepare_flow(s, ins, ints, bools); break;
     case OpClass::Decl: broken(ins, "declaration among the instructions");
+    }
+    if (ins.pred) {
+      s.inner = s.exec;
+      s.exec = exec_predicated;
+      for (int c = 0; c < 4; ++c) s.pred_swz[c] = ir::swizzle_component(ins.pred->swizzle, c);
+      s.pred_not = ins.pred->mod == ir::SrcMod::Not;
     }
     // Pad rows count up within a run of texm3x2pad/texm3x3pad.
     const bool pad = ir::is_texm_pad(ins.op);

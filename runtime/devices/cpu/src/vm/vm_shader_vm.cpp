@@ -80,6 +80,9 @@ PixelOutput pixel(const vm::Prepared& p, const PixelInput& in, const ConstantBan
   // registers that texture instructions fill.
   if (!p.ps11_13)
     for (int i = 0; i < vm::kTexCount; ++i) inv.reg[vm::kTexBase + i] = in.tex[i];
+  // ps_3_0 vPos (z = w = 0) and vFace (all four components).
+  inv.reg[vm::kMiscBase + ir::kMiscPosition] = {in.pos_x, in.pos_y, 0.0f, 0.0f};
+  inv.reg[vm::kMiscBase + ir::kMiscFace] = {in.face, in.face, in.face, in.face};
   if (trace)
     vm::run_traced(p, inv, *trace);
   else

@@ -45,6 +45,11 @@ struct PixelInput {
   std::array<Vec4, 2> color{}; // v0, v1 in [0,1]
   std::array<Vec4, 8> tex{};   // TC(0..7), interpolated texture coordinates
   float depth = 0;             // interpolated z (for texdepth / texm3x2depth defaults)
+  // ps_3_0 vPos: the pixel's integer coordinates (x, y), pixel centres at integers as in
+  // Direct3D 9 (NUMERICS.md "vPos"); vFace: +1 for a front face (clockwise on screen, the
+  // Direct3D 9 default), -1 for a back face (NUMERICS.md "vFace").
+  float pos_x = 0, pos_y = 0;
+  float face = 1;
 };
 
 } // namespace tierlift::pass

@@ -1,0 +1,36 @@
+// Shader model 3 links its stages by semantic: a vs_3_0 writes o# registers declared
+// dcl_texcoord1 o3, a ps_3_0 reads v# registers declared dcl_color0 v5. The interpreter and
+// the code generator run the 2.0 interface (oPos, oFog, oPts, oD0-1, oT0-7 out of the vertex
+// stage; colours v0-1 and coordinates t0-7 into the pixel stage, matched by number), so
+// before running a 3.0 program they rename each o#/v# to the 2.0 register of the same
+// semantic. Pairs then link as Direct3D links them, by (usage, index): vs_3_0 with ps_3_0,
+// vs_2_0 with ps_3_0 and vs_3_0 with ps_2_0 alike (docs/spirv-mapping.md).
+#pragma once
+
+#include <optional>
+#include <utility>
+
+#include "tierlift/ir/diagnostic.h"
+#include "tierlift/ir/program.h"
+
+namespace tierlift::ir {
+
+// The 2.0 register of a declared semantic: position0 → oPos, psize0 → oPts, fog0 → oFog,
+// colorN (N < 2) → oD N / v N, texcoordN (N < 8) → oT N / t N. nullopt for any other
+// semantic (normal, tangent, texcoord8, ...), which the 2.0 interface has no place for.
+std::optional<std::pair<RegFile, uint32_t>> semantic_register(ShaderStage stage, DeclUsage usage,
+                                                              uint8_t usage_index);
+
+// Errors (rule "not-supported", at the declaration) for what the renaming cannot carry: a
+// semantic without a 2.0 register, two declarations on one register. Adds nothing for a
+// program of another profile. (o#/v# addressed relatively are refused by
+// ir::check_executable, as every relative operand but c#.)
+void check_semantic_interface(const Program& program, std::string_view backend,
+                              DiagnosticSink& sink);
+
+// The program with every vs_3_0 o# and ps_3_0 v# (declarations, destinations, sources)
+// renamed to its semantic_register. Programs of other profiles come back unchanged. Call
+// only on a program check_semantic_interface accepts.
+Program link_by_semantic(const Program& program);
+
+} // namespace tierlift::ir

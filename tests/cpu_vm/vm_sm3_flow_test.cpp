@@ -1,0 +1,165 @@
+// Shader models 2.x and 3.0 on the interpreter: dynamic flow control (if_comp, if p0,
+// break, break_comp, breakp, callnz p0), loops with aL in ps_3_0, setp and predicated
+// writes, sincos's one-source form, vPos/vFace, and registers linked by semantic. Every
+// expected value is worked out by hand in the comment beside it. The same listings run on
+// lavapipe in tests/vulkan/diff_sm3_test.cpp.
+#include "tierlift/ir/flow_rules.h"
+#include "vm_test_util.h"
+
+using namespace vmtest;
+
+namespace {
+
+// ps_3_0 with c0..c3 copied to r0..r3; `body` leaves its result in r4 (→ oC0).
+Vec4 ps30(const std::string& body, const ConstantBank& c, const std::string& head = "") {
+  std::string text = "ps_3_0\n" + head + "mov r0, c0\nmov r1, c1\nmov r2, c2\nmov r3, c3\n" + body +
+                     "mov oC0, r4\n";
+  ShaderVM vm(parse(text), {});
+  static const ConstTextures none;
+  return vm.run_pixel(PixelInput{}, c, none).color[0];
+}
+
+} // namespace
+
+TEST(VmSm3Flow, LoopSumsConstantsThroughAl) {
+  // i0 = (4, 1, 2): aL = 1, 3, 5, 7 → r4 = c1 + c3 + c5 + c7 = 1 + 10 + 100 + 1000 = 1111.
+  const ConstantBank c = splats(10, {{1, 1}, {3, 10}, {5, 100}, {7, 1000}, {9, 10000}});
+  const Vec4 r =
+      ps30("mov r4, c0\nloop aL, i0\nadd r4, r4, c[aL]\nendloop\n", c, "defi i0, 4, 1, 2, 0\n");
+  EXPECT_VEC4(r, 1111, 1111, 1111, 1111);
+}
+
+TEST(VmSm3Flow, NestedLoopsReadTheInnerAl) {
+  // Outer i0 = (2, 0, 1): aL = 0, 1. Inner i1 = (3, 4, 1): aL = 4, 5, 6, restored to the
+  // outer aL after each inner loop. Each outer pass adds c[aL] (c0 = 0, c1 = 1000) and
+  // the inner c[aL] = c4 + c5 + c6 = 1 + 10 + 100: 2 · 111 + 0 + 1000 = 1222.
+  const ConstantBank c = splats(8, {{1, 1000}, {4, 1}, {5, 10}, {6, 100}});
+  const Vec4 r = ps30("mov r4, c0\nloop aL, i0\nloop aL, i1\nadd r4, r4, c[aL]\nendloop\n"
+                      "add r4, r4, c[aL]\nendloop\n",
+                      c, "defi i0, 2, 0, 1, 0\ndefi i1, 3, 4, 1, 0\n");
+  EXPECT_VEC4(r, 1222, 1222, 1222, 1222);
+}
+
+TEST(VmSm3Flow, BreakCompLeavesTheLoop) {
+  // rep 10: r4 += 1 while r4 < 3.5: r4 = 1, 2, 3, 4, then break_ge 4 ≥ 3.5 → r4 = 4.
+  ConstantBank c = bank({{0, 0, 0, 0}, {1, 1, 1, 1}, {3.5f, 3.5f, 3.5f, 3.5f}});
+  c.i[0] = {10, 0, 0, 0};
+  const Vec4 r = ps30("mov r4, c0\nrep i0\nadd r4, r4, r1\nbreak_ge r4.x, r2.x\nendrep\n", c);
+  EXPECT_VEC4(r, 4, 4, 4, 4);
+}
+
+TEST(VmSm3Flow, BreakInsideIfAndBreakp) {
+  // loop aL = 0..9 adds c[aL] until c[aL].x == 0 (c7 = 0): c0..c2 = 5 sum to 15, aL = 3
+  // breaks. A second loop (aL = 0 again) adds c0 = 5 and is left by breakp after its first
+  // iteration (p0.x: 0 < 5): r4 = 20.
+  const ConstantBank c = splats(8, {{0, 5}, {1, 5}, {2, 5}, {3, 0}, {4, 7}});
+  const Vec4 r = ps30("mov r4, c7\nmov r6, c7\nloop aL, i0\nmov r5, c[aL]\n"
+                      "if_eq r5.x, r6.x\nbreak\nendif\nadd r4, r4, r5\nendloop\n"
+                      "setp_lt p0.x, r6.x, r0.x\nloop aL, i0\nadd r4, r4, c[aL]\nbreakp p0.x\n"
+                      "endloop\n",
+                      c, "defi i0, 10, 0, 1, 0\n");
+  EXPECT_VEC4(r, 20, 20, 20, 20);
+}
+
+TEST(VmSm3Flow, DynamicIfElse) {
+  // if_gt c0.x (2) > c1.x (1): r4 = c2 (7) else r4 = c3 (9); if_lt the same → the else.
+  const ConstantBank c = bank({{2, 2, 2, 2}, {1, 1, 1, 1}, {7, 7, 7, 7}, {9, 9, 9, 9}});
+  EXPECT_VEC4(ps30("if_gt r0.x, r1.x\nmov r4, r2\nelse\nmov r4, r3\nendif\n", c), 7, 7, 7, 7);
+  EXPECT_VEC4(ps30("if_lt r0.x, r1.x\nmov r4, r2\nelse\nmov r4, r3\nendif\n", c), 9, 9, 9, 9);
+}
+
+TEST(VmSm3Flow, PredicatedWritesPerComponent) {
+  // setp_gt p0, c0 = (1, -1, 2, -2), c7 = 0 → p0 = (T, F, T, F).
+  // (p0) mov r4, c2 (all 5) over r4 = 0: (5, 0, 5, 0); (!p0.y) add r4, r4, c1 (1) with
+  // p0.y = F replicated: every component written: (6, 1, 6, 1).
+  const ConstantBank c = bank({{1, -1, 2, -2}, {1, 1, 1, 1}, {5, 5, 5, 5}, {0, 0, 0, 0}});
+  EXPECT_VEC4(ps30("mov r4, r3\nsetp_gt p0, r0, r3\n(p0) mov r4, r2\n", c), 5, 0, 5, 0);
+  EXPECT_VEC4(ps30("mov r4, r3\nsetp_gt p0, r0, r3\n(p0) mov r4, r2\n(!p0.y) add r4, r4, r1\n", c),
+              6, 1, 6, 1);
+}
+
+TEST(VmSm3Flow, ComparisonsWithNan) {
+  // NaN makes gt/ge/lt/le/eq false and ne true (ir/flow_rules.h).
+  const float n = nan_f();
+  const ConstantBank c = bank({{n, n, n, n}, {1, 1, 1, 1}, {0, 0, 0, 0}, {0, 0, 0, 0}});
+  const char* ops[] = {"gt", "eq", "ge", "lt", "ne", "le"};
+  for (int k = 0; k < 6; ++k) {
+    const std::string body =
+        std::string("mov r4, r2\nsetp_") + ops[k] + " p0, r0, r1\n(p0) mov r4, r1\n";
+    const float want = k == 4 ? 1.0f : 0.0f;
+    SCOPED_TRACE(ops[k]);
+    EXPECT_VEC4(ps30(body, c), want, want, want, want);
+  }
+}
+
+TEST(VmSm3Flow, CallnzOnThePredicate) {
+  // p0 = (T, F, ., .): callnz l0, p0.x runs (r4 += 1), callnz l0, !p0.x does not,
+  // callnz l0, !p0.y runs: r4 = 2.
+  const ConstantBank c = bank({{1, -1, 0, 0}, {1, 1, 1, 1}, {0, 0, 0, 0}, {0, 0, 0, 0}});
+  ShaderVM vm(parse("ps_3_0\nmov r0, c0\nmov r1, c1\nmov r4, c2\nsetp_gt p0.xy, r0, r4\n"
+                    "callnz l0, p0.x\n"
+                    "callnz l0, !p0.x\ncallnz l0, !p0.y\nmov oC0, r4\nret\n"
+                    "label l0\nadd r4, r4, r1\nret\n"),
+              {});
+  EXPECT_VEC4(run_ps(vm, {}, nullptr, c).color[0], 2, 2, 2, 2);
+}
+
+TEST(VmSm3Flow, SincosOneSource) {
+  // sincos r4.xy, c0.x (0): (cos 0, sin 0) = (1, 0); z, w keep r4's (3, 4).
+  const ConstantBank c = bank({{0, 0, 0, 0}, {1, 2, 3, 4}, {0, 0, 0, 0}, {0, 0, 0, 0}});
+  EXPECT_VEC4(ps30("mov r4, r1\nsincos r4.xy, r0.x\n", c), 1, 0, 3, 4);
+}
+
+TEST(VmSm3Flow, IterationBudgetEndsEveryLoop) {
+  // Three nested rep 255 (invalid: past the nesting limit, so unvalidated) would run 16.6
+  // million iterations. The budget (ir/flow_rules.h: 2 units to reach a loop, 1 per
+  // completed iteration, at most 65000) ends them: reaching the outer and the middle loop
+  // spends 4; each middle iteration spends 2 + 255 (its inner loop) + 1 = 258, so after 251
+  // of them 4 + 251 · 258 = 64762. The 252nd reaches its inner loop at 64764 and runs
+  // iterations while the units stay ≤ 65000: 1 + 236 of them. Adds: 251 · 255 + 237 =
+  // 64242; then every loop leaves at its test and the code after the loops runs.
+  static_assert(tierlift::ir::flow::kIterationBudget == 65000);
+  static_assert(tierlift::ir::flow::kEntryCost == 2);
+  ConstantBank c = bank({{0, 0, 0, 0}, {1, 1, 1, 1}});
+  c.i[0] = {255, 0, 0, 0};
+  ShaderVM vm(parse("ps_3_0\nmov r4, c0\nrep i0\nrep i0\nrep i0\nadd r4, r4, c1\nendrep\nendrep\n"
+                    "endrep\nmov oC0, r4\n",
+                    false),
+              {});
+  EXPECT_EQ(run_ps(vm, {}, nullptr, c).color[0][0], 64242.0f);
+}
+
+TEST(VmSm3Flow, VposAndVface) {
+  // vPos reads the pixel's integer coordinates (z = w = 0), vFace the face's sign.
+  ShaderVM vm(parse("ps_3_0\ndcl vPos.xy\ndcl vFace\nmov r0, c0\nmov r0.xy, vPos\n"
+                    "mov r0.z, vFace\nmov oC0, r0\n"),
+              {});
+  PixelInput in;
+  in.pos_x = 5;
+  in.pos_y = 7;
+  in.face = -1;
+  EXPECT_VEC4(run_ps(vm, in).color[0], 5, 7, -1, 0);
+}
+
+TEST(VmSm3Flow, InputsLinkBySemantic) {
+  // dcl_texcoord2 v0 reads TC2, dcl_color1 v1 reads the second colour (saturated).
+  ShaderVM vm(parse("ps_3_0\ndcl_texcoord2 v0\ndcl_color1 v1\nmov r0, v0\nadd oC0, r0, v1\n"), {});
+  PixelInput in;
+  in.tex[2] = {1, 2, 3, 4};
+  in.color[1] = {0.5f, 2, 0.25f, -1};
+  EXPECT_VEC4(run_ps(vm, in).color[0], 1.5f, 3, 3.25f, 4);
+}
+
+TEST(VmSm3Flow, OutputsLinkBySemantic) {
+  // vs_3_0: dcl_position o3 is oPos, dcl_texcoord5 o0 is oT5, dcl_color0 o1 is oD0.
+  ShaderVM vm(parse("vs_3_0\ndcl_position v0\ndcl_position o3\ndcl_texcoord5 o0\n"
+                    "dcl_color0 o1\nmov o3, v0\nmov o0, c0\nmov o1, c1\n"),
+              {});
+  VertexInput in;
+  in.v[0] = {1, 2, 3, 1};
+  const VertexOutput o = run_vs(vm, in, bank({{4, 5, 6, 7}, {0.5f, 0.5f, 0.5f, 1}}));
+  EXPECT_VEC4(o.pos, 1, 2, 3, 1);
+  EXPECT_VEC4(o.tex[5], 4, 5, 6, 7);
+  EXPECT_VEC4(o.color[0], 0.5f, 0.5f, 0.5f, 1);
+  EXPECT_EQ(o.tex_written, 1u << 5);
+}

@@ -1,0 +1,186 @@
+// Differential tests, shader models 2.x and 3.0: dynamic flow control per pixel (if_comp,
+// break, break_comp, breakp, loops with aL-indexed constants, nested loops, subroutines
+// called on p0, texkill inside flow), setp and predicated writes, sincos's one-source form,
+// vs_3_0 loops, over random texture and vertex inputs with special values, on the CPU device
+// and lavapipe; and vPos / vFace against their closed forms on both devices. Each listing
+// links a vs_3_0 and a ps_3_0 by semantic (o1 texcoord0 → v0 texcoord0).
+#include <set>
+
+#include "diff_harness.h"
+#include "tierlift/ir/opcodes.h"
+
+namespace tierlift::vulkan::test {
+namespace {
+
+struct Sm3Case {
+  const char* name;
+  // Reads r0, r1, r2 (s0, s1, s2 at this pixel), c0..c15, i0..i3; writes r4 (zero first).
+  const char* body;
+  const char* profile = "ps_3_0";
+};
+
+// clang-format off
+const Sm3Case kSm3Cases[] = {
+    {"loop_sum_al", "loop aL, i0\nmad r4, r0, c[aL], r4\nendloop"},
+    {"loop_nested_al", "loop aL, i0\nadd r4, r4, c[aL]\nloop aL, i1\nmad r4, r4, c[aL], r0\nendloop\nendloop"},
+    {"rep_break_comp", "rep i2\nadd r4, r4, r1\nbreak_gt r4.x, r2.x\nendrep"},
+    {"rep_break_in_if", "rep i2\nadd r4, r4, r0\nif_lt r4.y, r1.y\nbreak\nendif\nmul r4, r4, c3\nendrep"},
+    {"loop_breakp", "setp_ge p0, r0, r1\nloop aL, i0\nadd r4, r4, c[aL]\nbreakp !p0.z\nendloop"},
+    {"if_comp_else", "if_ge r0.x, r1.x\nadd r4, r0, r2\nelse\nmul r4, r1, r2\nendif"},
+    {"if_comp_nested", "if_ne r0.z, r1.z\nif_le r0.w, r2.w\nmov r4, r1\nelse\nmov r4, r2\nendif\nelse\nmov r4, r0\nendif"},
+    {"if_eq_nan", "if_eq r0.x, r0.x\nmov r4, c1\nelse\nmov r4, c2\nendif"},
+    {"if_predicate", "setp_lt p0, r0, r1\nif p0.y\nmov r4, r2\nendif\nif !p0.w\nadd r4, r4, r0\nendif"},
+    {"setp_predicated", "setp_gt p0, r0, r1\n(p0) mov r4, r2\n(!p0.y) add r4, r4, r0"},
+    {"setp_all", "setp_eq p0.x, r0, r1\nsetp_ne p0.y, r0, r1\nsetp_le p0.z, r0, r1\nsetp_lt p0.w, r0, r1\n(p0) mov r4, c1\n(!p0) mov r4, c2"},
+    {"predicated_setp", "setp_ge p0, r0, c0\n(p0.x) setp_lt p0.yz, r1, r2\n(p0) mov r4, r1"},
+    {"callnz_predicate", "setp_gt p0, r0, r1\ncallnz l0, p0.x\ncallnz l1, !p0.y", "ps_3_0"},
+    {"sincos_one_source", "frc r5.x, r0.x\nsincos r4.xy, r5.x"},
+    {"texkill_in_if", "if_lt r0.x, r1.x\ntexkill r2\nendif\nmov r4, r2"},
+    {"loop_budget_rep", "rep i3\nrep i3\nrep i3\nadd r4, r4, c1\nendrep\nendrep\nendrep"},
+    {"ps2x_break_predicate", "rep i2\nadd r4, r4, r1\nsetp_gt p0.x, r4.x, r2.x\nbreakp p0.x\nendrep\n(p0.x) mul r4, r4, r0", "ps_2_x"},
+};
+// clang-format on
+
+std::string ps_text(const Sm3Case& c) {
+  const bool sm3 = std::string(c.profile) == "ps_3_0";
+  std::string t = std::string(c.profile) +
+                  "\n"
+                  "defi i0, 4, 2, 3, 0\n" // aL = 2, 5, 8, 11
+                  "defi i1, 3, 1, 2, 0\n" // aL = 1, 3, 5
+                  "defi i2, 6, 0, 0, 0\n" +
+                  (sm3 ? "dcl_texcoord0 v0\n" : "dcl t0\n") + "dcl_2d s0\ndcl_2d s1\ndcl_2d s2\n";
+  const char* uv = sm3 ? "v0" : "t0";
+  t += fmt::format("texld r0, {0}, s0\ntexld r1, {0}, s1\ntexld r2, {0}, s2\nmov r4, c0\n", uv);
+  t += std::string(c.body) + "\nmov oC0, r4\n";
+  if (std::string(c.name) == "callnz_predicate")
+    t += "ret\nlabel l0\nadd r4, r4, r2\nret\nlabel l1\nmul r4, r4, r1\nret\n";
+  return t;
+}
+
+// vs_3_0 → ps_3_0 by semantic; ps_2_x reads t0, so the vertex shader writes texcoord0 too.
+const char* kQuadVs3 = "vs_3_0\ndcl_position v0\ndcl_texcoord v3\ndcl_position o0\n"
+                       "dcl_texcoord0 o1\nmov o0, v0\nmov o1, v3\n";
+
+FamilyMax g_sm3("ps_3_0/ps_2_x flow");
+
+class Sm3Diff : public VulkanTest, public ::testing::WithParamInterface<Sm3Case> {};
+
+TEST_P(Sm3Diff, CpuAndVulkanAgree) {
+  const Sm3Case& c = GetParam();
+  for (uint64_t seed : {1, 2}) {
+    DiffSetup s;
+    s.seed = seed;
+    add_random_textures(s, 3, {});
+    s.ps_c = random_constants(seed * 100, 16, {-2, 2, 0.2f});
+    DiffResult r = run_diff_with(*dev, kQuadVs3, ps_text(c), s, [&](cpu::Pass& p) {
+      p.ps_constants.i[3] = {255, 0, 0, 0}; // 255³ iterations: the budget ends them
+    });
+    expect_agree(r, fmt::format("{} seed {}", c.name, seed), g_sm3);
+    // Flow and predication only choose among fp32 operations both devices run alike: the
+    // same values exactly (sincos's cos and sin are the device's, within the target).
+    if (std::string(c.name) != "sincos_one_source")
+      EXPECT_EQ(r.diff.max_scaled, 0.0) << c.name << " seed " << seed << ": " << r.diff.first_bad;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Flow, Sm3Diff, ::testing::ValuesIn(kSm3Cases),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+// Every flow and predication row of 3.0 that runs has a case above.
+TEST(Sm3DiffCoverage, EveryDynamicFlowOpcodeHasACase) {
+  std::set<std::string> covered;
+  for (const Sm3Case& c : kSm3Cases) add_mnemonics(covered, c.body, " ");
+  for (const char* m : {"break", "break_gt", "breakp", "if_ge", "if_ne", "if_le", "if_lt", "if_eq",
+                        "setp_gt", "setp_eq", "setp_ne", "setp_le", "setp_lt", "setp_ge", "callnz",
+                        "loop", "rep", "sincos", "texkill"})
+    EXPECT_TRUE(covered.count(m)) << m;
+}
+
+// The case table's hand-checked anchor: loop_sum_al with s0 = 1 everywhere is
+// c2 + c5 + c8 + c11 (+ c0, r4's start) on both devices.
+TEST_F(VulkanTest, Sm3LoopSumMatchesTheClosedForm) {
+  DiffSetup s;
+  auto one = std::make_shared<img::Image>(kDiffW, kDiffH);
+  std::fill(one->rgba.begin(), one->rgba.end(), 1.0f);
+  s.textures = {one, one, one};
+  s.ps_c.assign(16, cpu::Vec4{0, 0, 0, 0});
+  for (int k = 0; k < 16; ++k) s.ps_c[static_cast<size_t>(k)] = {float(k), 0, 0, 1};
+  DiffResult r = run_diff(*dev, kQuadVs3, ps_text(kSm3Cases[0]), s);
+  ASSERT_TRUE(r.ok);
+  for (const img::Image* im : {&r.cpu, &r.vk})
+    for (size_t p = 0; p < im->rgba.size() / 4; ++p) {
+      ASSERT_EQ(im->rgba[p * 4 + 0], 0.0f + 2 + 5 + 8 + 11) << p;
+      ASSERT_EQ(im->rgba[p * 4 + 3], 1.0f + 4) << p;
+    }
+}
+
+// vs_3_0 flow per vertex: a loop with aL-indexed constants and a break_comp, written to a
+// texcoord by semantic, seen flat by a ps_2_0.
+TEST_F(VulkanTest, Vs3LoopAndBreakAgree) {
+  const std::string vs = "vs_3_0\ndefi i0, 5, 1, 2, 0\n"
+                         "dcl_position v0\ndcl_texcoord0 v1\ndcl_texcoord1 v2\n"
+                         "dcl_position o0\ndcl_texcoord0 o1\n"
+                         "mov o0, v0\nmov r3, v1\nloop aL, i0\nmad r3, r3, c[aL], v2\n"
+                         "break_lt r3.x, c0.x\nendloop\nmov o1, r3\n";
+  for (uint64_t seed : {1, 2}) {
+    DiffSetup s;
+    s.seed = seed;
+    s.per_pixel_vertices = true;
+    s.vertex_range = {-2, 2, 0.1f};
+    s.vs_c = random_constants(seed * 100, 16, {-2, 2, 0.1f});
+    DiffResult r = run_diff(*dev, vs, "ps_2_0\ndcl t0\nmov oC0, t0\n", s);
+    expect_agree(r, fmt::format("vs_3_0 loop seed {}", seed), g_sm3);
+  }
+}
+
+// vPos: pixel (x, y) reads (x, y, 0, 0) on both devices, with D3D9 pixel centres and with
+// modern ones alike (NUMERICS.md "vPos": the pixel's integer coordinates, not x + 0.5).
+TEST_F(VulkanTest, VposIsThePixelsIntegerCoordinates) {
+  for (ir::PixelCenter centre : {ir::PixelCenter::D3D9, ir::PixelCenter::Modern}) {
+    DiffResult r = run_diff_with(
+        *dev, kQuadVs3, "ps_3_0\ndcl vPos.xy\nmov r0, c0\nmov r0.xy, vPos\nmov oC0, r0\n",
+        DiffSetup{}, [&](cpu::Pass& p) { p.conventions.pixel_center = centre; });
+    ASSERT_TRUE(r.ok);
+    for (const img::Image* im : {&r.cpu, &r.vk})
+      for (uint32_t y = 0; y < kDiffH; ++y)
+        for (uint32_t x = 0; x < kDiffW; ++x) {
+          const float* px = im->rgba.data() + 4 * (size_t{y} * kDiffW + x);
+          ASSERT_EQ(px[0], float(x + 0)) << (im == &r.cpu ? "cpu" : "vulkan") << " " << x;
+          ASSERT_EQ(px[1], float(y + 0)) << (im == &r.cpu ? "cpu" : "vulkan") << " " << y;
+          ASSERT_EQ(px[2], 0.0f);
+          ASSERT_EQ(px[3], 0.0f);
+        }
+  }
+}
+
+// vFace: +1 on a triangle clockwise on screen (Direct3D 9's front face), −1 on one
+// counter-clockwise, on both devices. The left half of the target is one triangle pair
+// wound clockwise, the right half the same pair wound the other way.
+TEST_F(VulkanTest, VfaceIsTheSignOfTheWinding) {
+  DiffResult r = run_diff_with(
+      *dev, "vs_3_0\ndcl_position v0\ndcl_position o0\nmov o0, v0\n",
+      "ps_3_0\ndcl vFace\nmov oC0, vFace\n", DiffSetup{}, [&](cpu::Pass& p) {
+        p.vertices.assign(8, cpu::VertexInput{});
+        // Clip space: y up. Left half x in [-1, 0], right half [0, 1].
+        const float xs[2][2] = {{-1, 0}, {0, 1}};
+        for (int h = 0; h < 2; ++h) {
+          const float x0 = xs[h][0], x1 = xs[h][1];
+          const cpu::Vec4 tl{x0, 1, 0, 1}, tr{x1, 1, 0, 1}, bl{x0, -1, 0, 1}, br{x1, -1, 0, 1};
+          for (int k = 0; k < 4; ++k)
+            p.vertices[static_cast<size_t>(4 * h + k)].v[0] = std::array{tl, tr, br, bl}[k];
+        }
+        // tl → tr → br is clockwise on screen; the right half lists it backwards.
+        p.triangles = {{0, 1, 2}, {0, 2, 3}, {4, 6, 5}, {4, 7, 6}};
+      });
+  ASSERT_TRUE(r.ok);
+  for (const img::Image* im : {&r.cpu, &r.vk})
+    for (uint32_t y = 0; y < kDiffH; ++y)
+      for (uint32_t x = 0; x < kDiffW; ++x) {
+        const float want = x < kDiffW / 2 ? 1.0f : -1.0f;
+        ASSERT_EQ(im->rgba[4 * (size_t{y} * kDiffW + x)], want)
+            << (im == &r.cpu ? "cpu" : "vulkan") << " pixel " << x << "," << y;
+      }
+}
+
+} // namespace
+} // namespace tierlift::vulkan::test
