@@ -57,7 +57,7 @@ std::string frame(effects::PassDevice& dev, const effects::GlowPlan& plan,
                   const effects::ImageMap& inputs, img::Image& out) {
   if (ir::Status s = dev.begin_run(plan.graph, inputs); !s) return s.message();
   for (const effects::PassDesc& p : plan.graph.passes)
-    if (auto s = dev.run_pass(p); !s) return p.name + ": " + s.message();
+    if (auto s = dev.draw(p); !s) return p.name + ": " + s.message();
   ir::Result<img::Image> read = dev.read_texture(std::string(effects::kFinalTexture));
   if (!read) return read.message();
   out = std::move(*read); // a frame's copy, as the devices' readback costs

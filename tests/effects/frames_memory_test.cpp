@@ -36,9 +36,9 @@ EffectGraph accumulate_graph(uint32_t w, uint32_t h) {
   p.vs = vs ? *vs : nullptr;
   p.ps = ps ? *ps : nullptr;
   // Point reads at texel centres: offset ½ texel (c0), scale 1 (c4).
-  p.vs_constants.assign(8, cpu::Vec4{0, 0, 0, 0});
-  p.vs_constants[0] = {0.5f / float(w), 0.5f / float(h), 0, 0};
-  p.vs_constants[4] = {1, 1, 0, 0};
+  p.vs_constants.f.assign(8, cpu::Vec4{0, 0, 0, 0});
+  p.vs_constants.f[0] = {0.5f / float(w), 0.5f / float(h), 0, 0};
+  p.vs_constants.f[4] = {1, 1, 0, 0};
   cpu::SamplerState s;
   s.address_u = s.address_v = cpu::AddressMode::Clamp;
   p.textures = {{0, "scene", s}};

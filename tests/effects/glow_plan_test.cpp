@@ -45,16 +45,16 @@ TEST(GlowPlan, BlurOffsetsCarryTheHalfTexel) {
   GlowPlan plan = plan_for(2);
   const PassDesc& h0 = plan.graph.passes[2];
   EXPECT_EQ(h0.blend, pass::BlendMode::Replace);
-  EXPECT_FLOAT_EQ(h0.vs_constants[0][0], -11.5f / 64); // tap −12 + ½ on a 64-wide texture
-  EXPECT_FLOAT_EQ(h0.vs_constants[0][1], 0.5f / 32);
-  EXPECT_FLOAT_EQ(h0.vs_constants[7][0], -4.5f / 64);
+  EXPECT_FLOAT_EQ(h0.vs_constants.f[0][0], -11.5f / 64); // tap −12 + ½ on a 64-wide texture
+  EXPECT_FLOAT_EQ(h0.vs_constants.f[0][1], 0.5f / 32);
+  EXPECT_FLOAT_EQ(h0.vs_constants.f[7][0], -4.5f / 64);
   const PassDesc& h3 = plan.graph.passes[5];
   EXPECT_EQ(h3.blend, pass::BlendMode::OneOne);
-  EXPECT_FLOAT_EQ(h3.vs_constants[0][0], 12.5f / 64); // the 25th tap, then padding
-  for (int k = 1; k < 8; ++k) EXPECT_EQ(h3.ps_constants[k][0], 0.0f);
+  EXPECT_FLOAT_EQ(h3.vs_constants.f[0][0], 12.5f / 64); // the 25th tap, then padding
+  for (int k = 1; k < 8; ++k) EXPECT_EQ(h3.ps_constants.f[k][0], 0.0f);
   const PassDesc& v0 = plan.graph.passes[6];
-  EXPECT_FLOAT_EQ(v0.vs_constants[0][0], 0.5f / 64);
-  EXPECT_FLOAT_EQ(v0.vs_constants[0][1], -11.5f / 32);
+  EXPECT_FLOAT_EQ(v0.vs_constants.f[0][0], 0.5f / 64);
+  EXPECT_FLOAT_EQ(v0.vs_constants.f[0][1], -11.5f / 32);
   EXPECT_EQ(v0.textures[0].texture, kBlurHTexture);
   EXPECT_EQ(v0.target, kGlowTexture);
   // Every tap on a texel centre: point filtering (bilinear there is the texel itself).
@@ -66,9 +66,9 @@ TEST(GlowPlan, BlurOffsetsCarryTheHalfTexel) {
 
 TEST(GlowPlan, WithoutHalfTexelOffsetsAreWholeTexels) {
   GlowPlan plan = plan_for(2, false);
-  EXPECT_FLOAT_EQ(plan.graph.passes[2].vs_constants[0][0], -12.0f / 64);
-  EXPECT_EQ(plan.graph.passes[2].vs_constants[0][1], 0.0f);
-  EXPECT_FLOAT_EQ(plan.graph.passes[6].vs_constants[0][1], -12.0f / 32);
+  EXPECT_FLOAT_EQ(plan.graph.passes[2].vs_constants.f[0][0], -12.0f / 64);
+  EXPECT_EQ(plan.graph.passes[2].vs_constants.f[0][1], 0.0f);
+  EXPECT_FLOAT_EQ(plan.graph.passes[6].vs_constants.f[0][1], -12.0f / 32);
   // Taps on texel corners, read bilinearly: the article's failure case, as on D3D9.
   for (size_t i = 2; i < 10; ++i)
     EXPECT_EQ(plan.graph.passes[i].textures.at(0).sampler.filter, pass::Filter::Linear)
@@ -167,19 +167,19 @@ TEST(GlowPlanDx8, BlurConstantsFollowTheArticlesRule) {
   const float hu0[4] = {-2.5f / 23, -1.5f / 23, -0.5f / 23, 0.5f / 23};
   const float hu1[4] = {1.5f / 23, 2.5f / 23, 3.5f / 23, 0.5f / 23};
   const double w0[4] = {kE45, kE2, kE05, 1}, w1[4] = {kE05, kE2, kE45, 0};
-  ASSERT_EQ(h0.vs_constants.size(), 4u);
-  ASSERT_EQ(h0.ps_constants.size(), 4u);
+  ASSERT_EQ(h0.vs_constants.f.size(), 4u);
+  ASSERT_EQ(h0.ps_constants.f.size(), 4u);
   for (int k = 0; k < 4; ++k) {
-    EXPECT_FLOAT_EQ(h0.vs_constants[k][0], hu0[k]) << k;
-    EXPECT_FLOAT_EQ(h0.vs_constants[k][1], 0.5f / 14) << k;
-    EXPECT_FLOAT_EQ(h1.vs_constants[k][0], hu1[k]) << k;
-    EXPECT_FLOAT_EQ(v0.vs_constants[k][0], 0.5f / 23) << k;
-    EXPECT_FLOAT_EQ(v0.vs_constants[k][1], hu0[k] * 23 / 14) << k;
+    EXPECT_FLOAT_EQ(h0.vs_constants.f[k][0], hu0[k]) << k;
+    EXPECT_FLOAT_EQ(h0.vs_constants.f[k][1], 0.5f / 14) << k;
+    EXPECT_FLOAT_EQ(h1.vs_constants.f[k][0], hu1[k]) << k;
+    EXPECT_FLOAT_EQ(v0.vs_constants.f[k][0], 0.5f / 23) << k;
+    EXPECT_FLOAT_EQ(v0.vs_constants.f[k][1], hu0[k] * 23 / 14) << k;
     // Listing 4: c_k = the tap's weight in every channel (0 for padding).
     for (int c = 0; c < 4; ++c) {
-      EXPECT_NEAR(h0.ps_constants[k][c], w0[k] / kNorm, 1e-7) << k;
-      EXPECT_NEAR(h1.ps_constants[k][c], w1[k] / kNorm, 1e-7) << k;
-      EXPECT_EQ(v1.ps_constants[k][c], h1.ps_constants[k][c]) << k;
+      EXPECT_NEAR(h0.ps_constants.f[k][c], w0[k] / kNorm, 1e-7) << k;
+      EXPECT_NEAR(h1.ps_constants.f[k][c], w1[k] / kNorm, 1e-7) << k;
+      EXPECT_EQ(v1.ps_constants.f[k][c], h1.ps_constants.f[k][c]) << k;
     }
   }
   // The first pass of an axis replaces, the others add (ONE/ONE).
@@ -207,10 +207,10 @@ TEST(GlowPlanDx8, WithoutHalfTexelOffsetsAreWholeTexels) {
   PlanResult plan_built = build_glow_dx8(p);
   ASSERT_TRUE(plan_built) << plan_built.message();
   GlowPlan& plan = *plan_built;
-  EXPECT_FLOAT_EQ(plan.graph.passes[2].vs_constants[0][0], -3.0f / 23);
-  EXPECT_EQ(plan.graph.passes[2].vs_constants[0][1], 0.0f);
-  EXPECT_EQ(plan.graph.passes[2].vs_constants[3][0], 0.0f);
-  EXPECT_FLOAT_EQ(plan.graph.passes[4].vs_constants[0][1], -3.0f / 14);
+  EXPECT_FLOAT_EQ(plan.graph.passes[2].vs_constants.f[0][0], -3.0f / 23);
+  EXPECT_EQ(plan.graph.passes[2].vs_constants.f[0][1], 0.0f);
+  EXPECT_EQ(plan.graph.passes[2].vs_constants.f[3][0], 0.0f);
+  EXPECT_FLOAT_EQ(plan.graph.passes[4].vs_constants.f[0][1], -3.0f / 14);
   // Taps on texel corners: bilinear on all four stages, as on D3D8/9 hardware.
   for (size_t i = 2; i < 6; ++i)
     for (const TextureBind& t : plan.graph.passes[i].textures)
@@ -232,8 +232,8 @@ TEST(GlowPlanDx8, HelperPassesAreD3D8Listings) {
   EXPECT_EQ(plan.graph.passes[2].ps->profile, ir::Profile::ps_1_3); // Listing 4
   EXPECT_EQ(ds.analytic, AnalyticForm::Linear);
   // Extract: one point read at texel centres of the 45 × 27 scene.
-  EXPECT_FLOAT_EQ(ex.vs_constants[0][0], 0.5f / 45);
-  EXPECT_FLOAT_EQ(ex.vs_constants[4][1], 1.0f);
+  EXPECT_FLOAT_EQ(ex.vs_constants.f[0][0], 0.5f / 45);
+  EXPECT_FLOAT_EQ(ex.vs_constants.f[4][1], 1.0f);
   ASSERT_EQ(ex.textures.size(), 1u);
   EXPECT_EQ(ex.textures[0].sampler.filter, pass::Filter::Point);
   // Downsample by 2 into 23 × 14, one pass: point reads at the four texel centres of each
@@ -243,11 +243,11 @@ TEST(GlowPlanDx8, HelperPassesAreD3D8Listings) {
   const float xs[4] = {0.5f / 45, 1.5f / 45, 0.5f / 45, 1.5f / 45};
   const float ys[4] = {0.5f / 27, 0.5f / 27, 1.5f / 27, 1.5f / 27};
   for (int k = 0; k < 4; ++k) {
-    EXPECT_FLOAT_EQ(ds.vs_constants[k][0], xs[k]) << k;
-    EXPECT_FLOAT_EQ(ds.vs_constants[k][1], ys[k]) << k;
-    EXPECT_FLOAT_EQ(ds.vs_constants[k + 4][0], 46.0f / 45) << k;
-    EXPECT_FLOAT_EQ(ds.vs_constants[k + 4][1], 28.0f / 27) << k;
-    EXPECT_EQ(ds.ps_constants[k][0], 0.25f) << k;
+    EXPECT_FLOAT_EQ(ds.vs_constants.f[k][0], xs[k]) << k;
+    EXPECT_FLOAT_EQ(ds.vs_constants.f[k][1], ys[k]) << k;
+    EXPECT_FLOAT_EQ(ds.vs_constants.f[k + 4][0], 46.0f / 45) << k;
+    EXPECT_FLOAT_EQ(ds.vs_constants.f[k + 4][1], 28.0f / 27) << k;
+    EXPECT_EQ(ds.ps_constants.f[k][0], 0.25f) << k;
   }
   EXPECT_EQ(ds.blend, pass::BlendMode::Replace);
   ASSERT_EQ(ds.textures.size(), 4u);
@@ -255,9 +255,9 @@ TEST(GlowPlanDx8, HelperPassesAreD3D8Listings) {
   EXPECT_EQ(ds.textures[3].texture, kSourcesTexture);
   EXPECT_EQ(ds.textures[3].sampler.filter, pass::Filter::Point);
   // Composite: scene at texel centres; glow at (i + ½)/2 texels of a 46 × 28 cover.
-  EXPECT_FLOAT_EQ(co.vs_constants[1][0], 0.5f / 46);
-  EXPECT_FLOAT_EQ(co.vs_constants[5][0], 45.0f / 46);
-  EXPECT_FLOAT_EQ(co.vs_constants[5][1], 27.0f / 28);
+  EXPECT_FLOAT_EQ(co.vs_constants.f[1][0], 0.5f / 46);
+  EXPECT_FLOAT_EQ(co.vs_constants.f[5][0], 45.0f / 46);
+  EXPECT_FLOAT_EQ(co.vs_constants.f[5][1], 27.0f / 28);
   ASSERT_EQ(co.textures.size(), 2u);
   EXPECT_EQ(co.textures[1].stage, 1u);
   EXPECT_EQ(co.textures[1].texture, kGlowTexture);
@@ -266,7 +266,7 @@ TEST(GlowPlanDx8, HelperPassesAreD3D8Listings) {
 // ---- intensity and bad parameters (both tiers) -----------------------------------------
 
 float composite_c0(const GlowPlan& plan) {
-  return plan.graph.passes.back().ps_constants.at(0)[0];
+  return plan.graph.passes.back().ps_constants.f.at(0)[0];
 }
 
 TEST(GlowIntensity, Dx9PutsIntensityInC0) {

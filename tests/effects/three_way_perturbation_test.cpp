@@ -26,7 +26,7 @@ using test_scenes::Scene;
 GlowPlan perturb_blur_weights(GlowPlan plan, float factor) {
   for (PassDesc& d : plan.graph.passes)
     if (d.name.rfind("blur_", 0) == 0)
-      for (auto& c : d.ps_constants)
+      for (auto& c : d.ps_constants.f)
         for (float& x : c) x *= factor;
   return plan;
 }

@@ -240,7 +240,7 @@ void check_half_texel_rule(Tier tier, bool half_texel) {
     ASSERT_EQ(d.textures[0].sampler.address_v, cpu::AddressMode::Clamp);
     const img::Image& source = run.images.at(d.textures[0].texture);
     ir::Result<analytic::TapExtraction> ex =
-        analytic::extract_taps(*d.vs, d.vs_constants, *d.ps, d.ps_constants);
+        analytic::extract_taps(*d.vs, d.vs_constants.f, *d.ps, d.ps_constants.f);
     ASSERT_TRUE(ex) << ex.message();
     ASSERT_EQ(ex->taps.size(), per_pass);
     // The intended taps are the profile's first taps along the axis (padding: weight 0).

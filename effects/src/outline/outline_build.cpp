@@ -83,7 +83,7 @@ PlanResult build_outline(const GlowParams& glow, const OutlineParams& o) {
   object.analytic = AnalyticForm::Coverage;
   object.vs = object_vs;
   object.ps = object_ps;
-  object.ps_constants = {vec(o.color), vec(o.glow_color)};
+  object.ps_constants.f = {vec(o.color), vec(o.glow_color)};
   object.target = std::string(kColorTexture);
   object.more_targets = {std::string(kMaskTexture)};
   object.stencil = std::string(kStencilTexture);
@@ -116,10 +116,10 @@ PlanResult build_outline(const GlowParams& glow, const OutlineParams& o) {
   if (!composite) return plan_failure("the glow graph has no composite pass");
   PassDesc base = *composite;
   base.name = "base";
-  base.ps_constants = {pass::Vec4{1, 1, 1, 0}};
+  base.ps_constants.f = {pass::Vec4{1, 1, 1, 0}};
   // t1 reads the full-size colour texture at pixel centres: offset ½ texel, scale 1.
-  base.vs_constants[1] = {static_cast<float>(0.5 / w), static_cast<float>(0.5 / h), 0, 0};
-  base.vs_constants[5] = {1, 1, 0, 0};
+  base.vs_constants.f[1] = {static_cast<float>(0.5 / w), static_cast<float>(0.5 / h), 0, 0};
+  base.vs_constants.f[5] = {1, 1, 0, 0};
   for (TextureBind& b : base.textures)
     if (b.stage == 1) {
       b.texture = std::string(kColorTexture);
@@ -129,7 +129,7 @@ PlanResult build_outline(const GlowParams& glow, const OutlineParams& o) {
   outline.name = "outline";
   outline.ps = add_ps;
   const auto s = static_cast<float>(glow.intensity);
-  outline.ps_constants = {pass::Vec4{s, s, s, 0}};
+  outline.ps_constants.f = {pass::Vec4{s, s, s, 0}};
   std::erase_if(outline.textures, [](const TextureBind& b) { return b.stage != 1; });
   outline.blend = pass::BlendMode::OneOne;
   outline.stencil = std::string(kStencilTexture);
