@@ -161,7 +161,7 @@ nlohmann::json summary_json(const effects::Scene& scene, const effects::GlowPlan
   nlohmann::json j = {
       {"scene",
        {{"file", scene.file}, {"image", scene.image}, {"width", p.width}, {"height", p.height}}},
-      {"effect", scene.effect},
+      {"effect", effects::effect_name(scene.effect)},
       {"tier", effects::tier_name(p.tier)},
       {"format", img::format_name(p.format)},
       {"downsample", p.downsample},
@@ -178,8 +178,8 @@ nlohmann::json summary_json(const effects::Scene& scene, const effects::GlowPlan
       {"blur_passes_per_axis", plan.blur_passes_per_axis},
       {"passes", plan.graph.passes.size()},
       {"warnings", scene.warnings},
-      {"effect", scene.effect}};
-  if (scene.effect == "radial-beams")
+      {"effect", effects::effect_name(scene.effect)}};
+  if (scene.effect == effects::EffectKind::RadialBeams)
     j["radial"] = {{"centre", scene.radial.centre},       {"steps", scene.radial.steps},
                    {"step", scene.radial.step},           {"strength", scene.radial.strength},
                    {"amplitude", scene.radial.amplitude}, {"rate", scene.radial.rate},
@@ -229,7 +229,7 @@ int run(const GlowFlags& f) {
   const effects::GlowParams& params = scene->params;
   const std::string where = scene->file.empty() ? "tierlift glow" : scene->file;
 
-  const bool radial = scene->effect == "radial-beams";
+  const bool radial = scene->effect == effects::EffectKind::RadialBeams;
   // The radial star moves through the frames --frames runs (per-frame vertex constants).
   if (radial && f.frames > 0) scene->radial.frames = f.frames;
   const bool scene_moves = effects::scene_animated(*scene);
@@ -375,7 +375,7 @@ int run(const GlowFlags& f) {
                  animated ? fmt::format("frames {}..{}", scene->radial.frame,
                                         scene->radial.frame + f.frames - 1)
                           : fmt::format("frame {}", scene->radial.frame));
-    else if (scene->effect == "glsl-blur")
+    else if (scene->effect == effects::EffectKind::GlslBlur)
       fmt::print("glsl-blur: {}x{} {}, {} taps per axis, {} GLSL passes (glslang → SPIR-V on "
                  "vulkan; their ps_2_0 twins on cpu)\n",
                  params.width, params.height, img::format_name(params.format), plan.taps.size(),

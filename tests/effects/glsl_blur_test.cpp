@@ -165,7 +165,7 @@ TEST(GlslBlur, SceneNamesTheEffect) {
   ir::Result<Scene> s =
       load_scene_file(std::string(TIERLIFT_SOURCE_DIR) + "/listings/scenes/glsl-blur.json");
   ASSERT_TRUE(s) << s.message();
-  EXPECT_EQ(s->effect, "glsl-blur");
+  EXPECT_EQ(s->effect, EffectKind::GlslBlur);
   EXPECT_EQ(s->params.width, kSize);
   ASSERT_EQ(s->warnings.size(), 1u);
   EXPECT_NE(s->warnings[0].find("sum to 0.98"), std::string::npos);

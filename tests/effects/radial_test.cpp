@@ -314,7 +314,7 @@ TEST(RadialScene, ReadsEveryField) {
                                        "s.json", "");
   ASSERT_TRUE(load) << load.message();
   const Scene& s = *load;
-  EXPECT_EQ(s.effect, "radial-beams");
+  EXPECT_EQ(s.effect, EffectKind::RadialBeams);
   EXPECT_EQ(s.params.tier, Tier::Dx8);
   EXPECT_EQ(s.radial.centre[1], 0.75);
   EXPECT_EQ(s.radial.steps, 12u);

@@ -9,6 +9,8 @@
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
+#include <string_view>
+#include <utility>
 
 #include "listing_files.h"
 #include "scene_error_case.h"
@@ -166,6 +168,33 @@ TEST(Scene, TheSchemaFileListsTheKeysTheLoaderAccepts) {
   EXPECT_EQ(keys_of(schema["properties"]["outline"]["properties"]), keys_of(scene_outline_keys()));
   EXPECT_EQ(values_of(schema["properties"]["effect"]["enum"]), keys_of(scene_effects()));
   EXPECT_EQ(keys_of(schema["properties"]["glsl"]["properties"]), keys_of(scene_glsl_keys()));
+}
+
+// The effect registry (effect_kinds): each kind once, named as the scene files name it, with
+// the key of its own object; a scene's "effect" string selects the kind.
+TEST(Scene, EachEffectKindIsRegisteredOnceWithItsNameAndObject) {
+  const std::pair<EffectKind, std::pair<std::string_view, std::string_view>> expected[] = {
+      {EffectKind::Glow, {"glow", ""}},
+      {EffectKind::RadialBeams, {"radial-beams", "radial"}},
+      {EffectKind::StencilOutline, {"stencil-outline", "outline"}},
+      {EffectKind::GlslBlur, {"glsl-blur", "glsl"}}};
+  ASSERT_EQ(effect_kinds().size(), std::size(expected));
+  for (const auto& [kind, names] : expected) {
+    const EffectInfo& info = effect_info(kind);
+    EXPECT_EQ(info.kind, kind);
+    EXPECT_EQ(info.name, names.first);
+    EXPECT_EQ(info.object, names.second);
+    EXPECT_EQ(parse_effect_kind(names.first), kind);
+  }
+  EXPECT_EQ(parse_effect_kind("bloom"), std::nullopt);
+  EXPECT_EQ(parse_effect_kind("Glow"), std::nullopt); // names are exact
+  ir::Result<Scene> outline =
+      parse_scene(R"({"effect": "stencil-outline", "size": [8, 8]})", "s.json", "");
+  ASSERT_TRUE(outline) << outline.message();
+  EXPECT_EQ(outline->effect, EffectKind::StencilOutline);
+  ir::Result<Scene> plain = parse_scene(R"({"size": [8, 8]})", "s.json", "");
+  ASSERT_TRUE(plain) << plain.message();
+  EXPECT_EQ(plain->effect, EffectKind::Glow); // the default
 }
 
 } // namespace
