@@ -42,7 +42,7 @@ const img::Image& scene(uint32_t w, uint32_t h) {
 
 effects::PlanResult make_plan(uint32_t w, uint32_t h, int taps, effects::Tier tier,
                               img::Format format) {
-  effects::GlowParams p;
+  effects::EffectParams p;
   p.tier = tier;
   p.width = w;
   p.height = h;
@@ -53,7 +53,7 @@ effects::PlanResult make_plan(uint32_t w, uint32_t h, int taps, effects::Tier ti
   return effects::build_glow(p);
 }
 
-std::string frame(effects::PassDevice& dev, const effects::GlowPlan& plan,
+std::string frame(effects::PassDevice& dev, const effects::EffectPlan& plan,
                   const effects::ImageMap& inputs, img::Image& out) {
   if (ir::Status s = dev.begin_run(plan.graph, inputs); !s) return s.message();
   for (const effects::PassDesc& p : plan.graph.passes)

@@ -11,7 +11,7 @@ namespace tierlift::bench {
 
 effects::PlanResult glow_plan(effects::Tier tier, img::Format format, uint32_t width,
                               uint32_t height, unsigned taps) {
-  effects::GlowParams p;
+  effects::EffectParams p;
   p.tier = tier;
   p.width = width;
   p.height = height;

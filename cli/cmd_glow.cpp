@@ -47,7 +47,7 @@ std::optional<effects::Scene> scene_from_flags(const GlowFlags& f, Report& repor
     *exit_code = io ? kExitUsage : kExitInvalid;
     return std::nullopt;
   }
-  effects::GlowParams& p = load->params;
+  effects::EffectParams& p = load->params;
   if (!f.tier.empty()) p.tier = *effects::parse_tier(f.tier); // CLI11 checked the name
   if (!f.weight_rounding.empty())
     p.weight_rounding = *effects::parse_weight_rounding(f.weight_rounding); // checked too
@@ -86,9 +86,9 @@ effects::PassProgress progress_printer(const std::string& way, bool quiet) {
   };
 }
 
-nlohmann::json summary_json(const effects::Scene& scene, const effects::GlowPlan& plan,
+nlohmann::json summary_json(const effects::Scene& scene, const effects::EffectPlan& plan,
                             const std::vector<effects::WayRun>& ways) {
-  const effects::GlowParams& p = scene.params;
+  const effects::EffectParams& p = scene.params;
   nlohmann::json j = {
       {"scene",
        {{"file", scene.file}, {"image", scene.image}, {"width", p.width}, {"height", p.height}}},
@@ -193,8 +193,8 @@ nlohmann::json result_json(const effects::SceneRun& r, const GlowFlags& f,
 
 // The first line of the text output: which effect, at which size and settings.
 void print_heading(const effects::SceneRun& r, const GlowFlags& f) {
-  const effects::GlowParams& params = r.scene.params;
-  const effects::GlowPlan& plan = r.plan;
+  const effects::EffectParams& params = r.scene.params;
+  const effects::EffectPlan& plan = r.plan;
   const effects::RadialParams& radial = r.scene.radial;
   switch (r.scene.effect) {
   case effects::EffectKind::RadialBeams:

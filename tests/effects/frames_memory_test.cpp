@@ -82,20 +82,20 @@ TEST_F(FramesVulkan, TexturesCarryIntoTheNextFrame) {
 
 // The glow's every texture is first written by a replacing pass: frame N is frame 1.
 TEST_F(FramesVulkan, GlowFramesRepeatTheSingleRun) {
-  GlowParams p;
+  EffectParams p;
   p.width = 96;
   p.height = 48;
   p.downsample = 2;
   p.format = img::Format::RGBA8;
   const PlanResult plan_built = build_glow(p);
   ASSERT_TRUE(plan_built) << plan_built.message();
-  const GlowPlan& plan = *plan_built;
+  const EffectPlan& plan = *plan_built;
   const img::Image scene = make_default_scene(p.width, p.height, p.format);
   CpuPassDevice cpu(2);
-  const GlowRun once = run_glow(plan, scene, cpu);
+  const EffectRun once = run_effect(plan, scene, cpu);
   ASSERT_TRUE(once.run.ok()) << once.run.message();
   auto vk = make_vulkan_pass_device(*dev);
-  const GlowFrames frames = run_glow_frames(plan, scene, *vk, 4);
+  const EffectFrames frames = run_effect_frames(plan, scene, *vk, 4);
   ASSERT_TRUE(frames.run.ok()) << frames.run.message();
   const std::string final_name(kFinalTexture);
   EXPECT_EQ(frames.images.at(final_name).rgba, once.images.at(final_name).rgba);

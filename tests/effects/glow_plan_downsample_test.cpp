@@ -16,13 +16,13 @@ namespace {
 
 using plan_test::pass_names;
 
-GlowPlan plan_for(unsigned n, Tier tier = Tier::Dx9, uint32_t w = 128, uint32_t h = 64) {
-  GlowParams p = plan_test::sized(n, w, h);
+EffectPlan plan_for(unsigned n, Tier tier = Tier::Dx9, uint32_t w = 128, uint32_t h = 64) {
+  EffectParams p = plan_test::sized(n, w, h);
   p.tier = tier;
   return plan_test::expect_built(build_glow(p));
 }
 
-std::vector<const PassDesc*> downsample_passes(const GlowPlan& plan) {
+std::vector<const PassDesc*> downsample_passes(const EffectPlan& plan) {
   std::vector<const PassDesc*> v;
   for (const PassDesc& d : plan.graph.passes)
     if (d.name.rfind("downsample.", 0) == 0) v.push_back(&d);
@@ -35,7 +35,7 @@ std::vector<const PassDesc*> downsample_passes(const GlowPlan& plan) {
 // c(k+4)·i·W/gw + ck·W, which must be N·i + (texel centre of the block: a + ½). Over all
 // passes, every texel (a, b) of the N×N block is read exactly once with weight 1/N², and
 // the padding reads weigh 0. `stages`: how many stages the sources are bound to.
-void expect_box_average(const GlowPlan& plan, unsigned n, uint32_t w, uint32_t h, size_t stages) {
+void expect_box_average(const EffectPlan& plan, unsigned n, uint32_t w, uint32_t h, size_t stages) {
   const std::vector<const PassDesc*> ds = downsample_passes(plan);
   ASSERT_EQ(ds.size(), (n * n + 3) / 4) << n;
   const double su = double(n) * plan.glow_width / w, sv = double(n) * plan.glow_height / h;
@@ -77,9 +77,9 @@ void expect_box_average(const GlowPlan& plan, unsigned n, uint32_t w, uint32_t h
   for (unsigned t = 0; t < n * n; ++t) EXPECT_EQ(hits[t], 1) << "texel " << t % n << "," << t / n;
 }
 
-TEST(GlowPlan, DownsampleTwo) {
+TEST(EffectPlan, DownsampleTwo) {
   // σ 4 texels → R = 12, 25 taps, 4 passes per axis; one downsample pass of four reads.
-  GlowPlan plan = plan_for(2);
+  EffectPlan plan = plan_for(2);
   EXPECT_EQ(plan.taps.size(), 25u);
   EXPECT_EQ(plan.blur_passes_per_axis, 4u);
   std::vector<std::string> want{"extract",  "downsample.0", "blur_h.0", "blur_h.1",
@@ -108,9 +108,9 @@ TEST(GlowPlan, DownsampleTwo) {
   expect_box_average(plan, 2, 128, 64, 1);
 }
 
-TEST(GlowPlan, DownsampleFour) {
+TEST(EffectPlan, DownsampleFour) {
   // σ 2 texels → R = 6, 13 taps, 2 passes per axis; 16 reads of weight 1/16 in 4 passes.
-  GlowPlan plan = plan_for(4);
+  EffectPlan plan = plan_for(4);
   EXPECT_EQ(plan.taps.size(), 13u);
   EXPECT_EQ(plan.graph.passes.size(), 10u); // extract, 4 downsample, 2 + 2 blur, composite
   EXPECT_EQ(plan.glow_width, 32u);
@@ -131,8 +131,8 @@ TEST(GlowPlan, DownsampleFour) {
   expect_box_average(plan, 4, 128, 64, 1);
 }
 
-TEST(GlowPlan, DownsampleThreeRoundsUpAndScales) {
-  GlowPlan plan = plan_for(3);
+TEST(EffectPlan, DownsampleThreeRoundsUpAndScales) {
+  EffectPlan plan = plan_for(3);
   EXPECT_EQ(plan.glow_width, 43u); // ceil(128 / 3)
   EXPECT_EQ(plan.glow_height, 22u);
   // Nine reads, four a pass: 4 + 4 + 1, the last pass padded with three reads of weight 0.
@@ -154,7 +154,7 @@ TEST(GlowPlan, DownsampleThreeRoundsUpAndScales) {
 }
 
 TEST(GlowPlanDx8, DownsampleFourUsesFourPassesOfFourReads) {
-  GlowPlan plan = plan_for(4, Tier::Dx8);
+  EffectPlan plan = plan_for(4, Tier::Dx8);
   ASSERT_FALSE(plan.graph.passes.empty());
   // Pass i reads row i of the 4 × 4 block, t0..t3 on stages 0..3, weight 1/16 each.
   for (int i = 0; i < 4; ++i) {
@@ -174,7 +174,7 @@ TEST(GlowPlanDx8, DownsampleTwoAndThreeAreBoxAverages) {
   // One stage per read (t0..t3 read stages 0..3), both on odd sizes.
   for (unsigned n : {2u, 3u}) {
     SCOPED_TRACE(n);
-    GlowPlan plan = plan_for(n, Tier::Dx8, 45, 27);
+    EffectPlan plan = plan_for(n, Tier::Dx8, 45, 27);
     ASSERT_FALSE(plan.graph.passes.empty());
     expect_box_average(plan, n, 45, 27, 4);
   }

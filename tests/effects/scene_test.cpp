@@ -42,7 +42,7 @@ TEST(Scene, EveryShippedSceneLoadsAndBuilds) {
 TEST(Scene, DefaultJsonSaysWhatTheBuiltInDefaultIs) {
   ir::Result<Scene> s = load_scene_file((kScenes / "default.json").string());
   ASSERT_TRUE(s) << s.message();
-  const GlowParams &a = s->params, &b = default_scene().params;
+  const EffectParams &a = s->params, &b = default_scene().params;
   EXPECT_EQ(s->image, "builtin:neon");
   EXPECT_EQ(a.width, 1280u);
   EXPECT_EQ(a.height, 720u);
@@ -65,7 +65,7 @@ TEST(Scene, FieldsAreRead) {
     "format": "rgba8", "half_texel": false, "intensity": 0.5, "taps": 5,
     "profile": {"gaussians": [{"sigma": 2, "weight": 1}]}}})");
   ASSERT_TRUE(s) << s.message();
-  const GlowParams& p = s->params;
+  const EffectParams& p = s->params;
   EXPECT_EQ(p.width, 64u);
   EXPECT_EQ(p.height, 48u);
   EXPECT_EQ(p.tier, Tier::Dx8);

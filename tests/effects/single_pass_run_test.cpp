@@ -1,10 +1,12 @@
-// run_single_pass (single_pass.h): `tierlift run`'s graph of one pass on the ways asked for.
+// run_single_pass (single_pass.h): `tierlift run`'s graph of one pass on the ways asked for;
+// make_pass (run_graph.h): the draw a device is handed for a pass of a graph.
 // The pass here has no listings: D3D9's fixed function passes its constant colour (oD0) to
 // every pixel, so the expected image is that colour everywhere, known before the run.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 
+#include "tierlift/effects/run_graph.h"
 #include "tierlift/effects/single_pass.h"
 #include "tierlift/ir/result_diagnostics.h"
 
@@ -55,6 +57,37 @@ TEST(SinglePassRun, FailuresNameTheirRule) {
   unsetenv("TIERLIFT_MEMORY_LIMIT");
   ASSERT_FALSE(too_big);
   EXPECT_TRUE(ir::failed_with(too_big, "memory")) << too_big.message();
+}
+
+// The draw a pass description asks of a device: its banks (c#, i#, b#) and each bound stage's
+// sampler state as given, and no image, however many stages are bound — the device that owns
+// the textures binds its own (no copy, no placeholder).
+TEST(MakePass, CarriesBanksAndSamplerStatesButBindsNoImage) {
+  PassDesc d;
+  d.name = "p";
+  d.constant_inputs = pass::PixelInput{};
+  d.target = "t";
+  d.ps_constants.f = {{1, 2, 3, 4}};
+  d.ps_constants.i[3] = {5, 6, 7, 8};
+  d.vs_constants.b[2] = true;
+  pass::SamplerState linear;
+  linear.filter = pass::Filter::Linear;
+  linear.address_u = pass::AddressMode::Clamp;
+  d.textures = {{2, "a", linear, {}}, {5, "a", {}, {}}};
+  ir::Result<pass::Pass> p = make_pass(d, ir::Conventions{});
+  ASSERT_TRUE(p) << p.message();
+  EXPECT_EQ(p->ps_constants.f.at(0)[3], 4.0f);
+  EXPECT_EQ(p->ps_constants.i[3][1], 6);
+  EXPECT_TRUE(p->vs_constants.b[2]);
+  EXPECT_EQ(p->textures[2].sampler.filter, pass::Filter::Linear);
+  EXPECT_EQ(p->textures[2].sampler.address_u, pass::AddressMode::Clamp);
+  EXPECT_EQ(p->textures[5].sampler.filter, pass::Filter::Point);
+  for (const pass::TextureBinding& b : p->textures) EXPECT_EQ(b.image, nullptr);
+
+  d.textures = {{pass::kMaxSamplers, "a", {}, {}}}; // s16: past the last stage
+  ir::Result<pass::Pass> past = make_pass(d, ir::Conventions{});
+  ASSERT_FALSE(past);
+  EXPECT_TRUE(ir::failed_with(past, "graph")) << past.message();
 }
 
 } // namespace

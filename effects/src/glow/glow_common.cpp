@@ -21,7 +21,7 @@ struct Listings {
   ProgramPtr fogged; // the fogged extract (only with fog)
 };
 
-ir::Result<Listings> load_listings(const GlowParams& p, const TierListingPaths& paths) {
+ir::Result<Listings> load_listings(const EffectParams& p, const TierListingPaths& paths) {
   Listings l;
   const std::pair<ProgramPtr*, std::string_view> wanted[] = {
       {&l.helper_vs, paths.helper_vs},      {&l.extract, paths.extract_ps},
@@ -89,7 +89,7 @@ std::vector<std::vector<pass::Vec4>> ramp_table(const Keyframes& ramp, double fa
 
 class Builder {
 public:
-  Builder(const GlowParams& p, const TierRecipe& r, const Listings& l, uint32_t gw, uint32_t gh)
+  Builder(const EffectParams& p, const TierRecipe& r, const Listings& l, uint32_t gw, uint32_t gh)
       : p_(p), r_(r), l_(l), gw_(gw), gh_(gh) {}
 
   // The glow sources: rgb × alpha of the scene, or of the glow render when the scene has one
@@ -282,13 +282,13 @@ private:
     bind_reads(d, stage, texture, sampler(filter), reads, r_.one_stage_per_read);
   }
 
-  const GlowParams& p_;
+  const EffectParams& p_;
   const TierRecipe& r_;
   const Listings& l_;
   uint32_t gw_, gh_;
 };
 
-std::string check_params(const GlowParams& p, const TierRecipe& r) {
+std::string check_params(const EffectParams& p, const TierRecipe& r) {
   if (p.downsample < 1 || p.downsample > 4)
     return fmt::format("downsample {}: expected 1..4", p.downsample);
   if (p.width == 0 || p.height == 0 || p.width > img::kMaxDimension ||
@@ -320,7 +320,7 @@ std::string check_params(const GlowParams& p, const TierRecipe& r) {
 
 } // namespace
 
-TierRecipe ps1x_recipe(const GlowParams& params) {
+TierRecipe ps1x_recipe(const EffectParams& params) {
   const bool above_one = params.intensity_ramp.max(params.intensity) > 1;
   const bool gain_above_one = params.afterimage_gain_ramp.max(params.afterimage_gain) > 1;
   const std::string_view plain = "glow/composite_add_ps13.psh",
@@ -340,8 +340,8 @@ TierRecipe ps1x_recipe(const GlowParams& params) {
   return r;
 }
 
-PlanResult build_glow_graph(const GlowParams& p, const TierRecipe& r) {
-  GlowPlan plan;
+PlanResult build_glow_graph(const EffectParams& p, const TierRecipe& r) {
+  EffectPlan plan;
   if (std::string e = check_params(p, r); !e.empty()) return plan_failure(std::move(e));
   ir::Result<std::vector<BlurTap>> taps = sample_blur_profile(p.profile, p.downsample);
   if (!taps) return plan_failure(taps.message());

@@ -34,8 +34,8 @@ struct Axis {
 
 } // namespace
 
-PlanResult build_glsl_blur(const GlowParams& params, const GlslBlurParams& g) {
-  GlowPlan plan;
+PlanResult build_glsl_blur(const EffectParams& params, const GlslBlurParams& g) {
+  EffectPlan plan;
   const uint32_t w = params.width, h = params.height;
   if (w == 0 || h == 0 || w > img::kMaxDimension || h > img::kMaxDimension)
     return plan_failure(

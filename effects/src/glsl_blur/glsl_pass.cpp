@@ -42,7 +42,7 @@ ListingResult assemble(std::string text, const std::string& name) {
 
 PlanResult build_glsl_pass(const glsl::FragmentShader& shader, uint32_t width, uint32_t height,
                            img::Format format, pass::Filter filter) {
-  GlowPlan plan;
+  EffectPlan plan;
   if (width == 0 || height == 0 || width > img::kMaxDimension || height > img::kMaxDimension)
     return plan_failure(
         fmt::format("size {}x{}: expected 1..{} each", width, height, img::kMaxDimension));

@@ -12,7 +12,7 @@
 namespace tierlift::effects {
 namespace {
 
-std::string check_outline(const GlowParams& g, const OutlineParams& o) {
+std::string check_outline(const EffectParams& g, const OutlineParams& o) {
   if (g.tier != Tier::Dx9)
     return fmt::format("tier {}: the stencil outline needs tier dx9 (two render targets are a "
                        "ps_2_0 feature)",
@@ -52,11 +52,11 @@ std::vector<std::array<double, 2>> outline_polygon(const OutlineParams& o) {
   return corners;
 }
 
-PlanResult build_outline(const GlowParams& glow, const OutlineParams& o) {
+PlanResult build_outline(const EffectParams& glow, const OutlineParams& o) {
   if (std::string e = check_outline(glow, o); !e.empty()) return plan_failure(std::move(e));
   PlanResult built = build_glow(glow);
   if (!built) return built;
-  GlowPlan plan = std::move(*built);
+  EffectPlan plan = std::move(*built);
   EffectGraph& g = plan.graph;
   std::shared_ptr<const ir::Program> object_vs, object_ps, add_ps;
   const std::pair<std::shared_ptr<const ir::Program>*, std::string_view> wanted[] = {

@@ -175,7 +175,7 @@ struct Box {
 // a block and one texel more per downsample, the taps' reach plus 2 texels per blur axis:
 // bilinear neighbours and the half-texel shift); every sampler must clamp (a wrapping one
 // would read the far side).
-void limit_to_sources(const GlowPlan& plan, const Box& sources, PrunedGraph& r) {
+void limit_to_sources(const EffectPlan& plan, const Box& sources, PrunedGraph& r) {
   // (the reasons below read "drawn only in …": r.limited)
   for (const PassDesc& p : r.graph.passes)
     for (const TextureBind& t : p.textures)
@@ -238,7 +238,7 @@ void limit_to_sources(const GlowPlan& plan, const Box& sources, PrunedGraph& r) 
 
 } // namespace
 
-PrunedGraph prune_glow(const GlowPlan& plan, const img::Image& scene) {
+PrunedGraph prune_glow(const EffectPlan& plan, const img::Image& scene) {
   PrunedGraph r;
   r.graph = plan.graph;
   r.passes_before = plan.graph.passes.size();

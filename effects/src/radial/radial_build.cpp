@@ -52,7 +52,7 @@ pass::Vec4 splat(double w) {
   return {f, f, f, f};
 }
 
-std::string check(const GlowParams& g, const RadialParams& r, const TierListings& t) {
+std::string check(const EffectParams& g, const RadialParams& r, const TierListings& t) {
   if (g.width == 0 || g.height == 0 || g.width > img::kMaxDimension ||
       g.height > img::kMaxDimension)
     return fmt::format("scene size {}x{}: expected 1..{}", g.width, g.height, img::kMaxDimension);
@@ -107,8 +107,8 @@ std::array<std::array<double, 2>, 4> star_offsets(const RadialParams& r, unsigne
   return out;
 }
 
-PlanResult build_radial(const GlowParams& g, const RadialParams& r) {
-  GlowPlan plan;
+PlanResult build_radial(const EffectParams& g, const RadialParams& r) {
+  EffectPlan plan;
   const TierListings t = tier_listings(g.tier);
   if (std::string e = check(g, r, t); !e.empty()) return plan_failure(std::move(e));
   ProgramPtr star_vs, star_ps, zoom_vs, zoom_ps, composite_ps;

@@ -76,7 +76,7 @@ bool Animation::all_within() const {
                      [](const FramePairAgreement& p) { return p.frames_within == p.frames; });
 }
 
-std::string run_animation(const GlowPlan& plan, const img::Image& scene,
+std::string run_animation(const EffectPlan& plan, const img::Image& scene,
                           const std::vector<std::string>& devices, const DeviceMaker& make,
                           unsigned frames, io::OutputFolder* folder, const SceneAt& scene_at,
                           const std::function<FrameProgress(const std::string&)>& progress,
@@ -112,8 +112,8 @@ std::string run_animation(const GlowPlan& plan, const img::Image& scene,
       mine.push_back(now);
       return ir::ok_status();
     };
-    GlowFrames run = run_glow_frames(plan, scene, *device, frames, {final_name}, sink, scene_at,
-                                     progress ? progress(devices[d]) : nullptr);
+    EffectFrames run = run_effect_frames(plan, scene, *device, frames, {final_name}, sink, scene_at,
+                                         progress ? progress(devices[d]) : nullptr);
     if (!run.run.ok()) return run.run.message();
     out.times.push_back({devices[d], run.run.value()});
     kept.push_back(std::move(mine));

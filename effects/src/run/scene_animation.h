@@ -19,7 +19,7 @@ using DeviceMaker = std::function<std::unique_ptr<PassDevice>(const std::string&
 // first device's frames into `folder` when there is one (frame-0001.png …, and a contact
 // strip frames-strip.png; committed by the caller, with the other images). Empty string on
 // success, else why.
-std::string run_animation(const GlowPlan& plan, const img::Image& scene,
+std::string run_animation(const EffectPlan& plan, const img::Image& scene,
                           const std::vector<std::string>& devices, const DeviceMaker& make,
                           unsigned frames, io::OutputFolder* folder, const SceneAt& scene_at,
                           const std::function<FrameProgress(const std::string&)>& progress,

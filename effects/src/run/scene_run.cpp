@@ -33,7 +33,7 @@ ir::Failure failure(std::vector<ir::Diagnostic> warnings, std::string rule, std:
 
 // The run's peak (plan_memory) against what the machine has: empty when it fits, else why
 // not and what would fit.
-std::string memory_refusal(const GlowPlan& plan, const std::vector<std::string>& names,
+std::string memory_refusal(const EffectPlan& plan, const std::vector<std::string>& names,
                            unsigned frames, const std::string& where, uint64_t* planned) {
   const uint64_t available = available_memory();
   // The scene as loaded stays beside the run, and the program (kProgramBytes); frames run
@@ -64,7 +64,7 @@ std::string memory_refusal(const GlowPlan& plan, const std::vector<std::string>&
 
 // The effect's warnings after the caller's overrides, then the scene's own (the image's),
 // each once.
-std::vector<std::string> scene_warnings(const Scene& scene, const GlowPlan& plan, bool moves,
+std::vector<std::string> scene_warnings(const Scene& scene, const EffectPlan& plan, bool moves,
                                         unsigned frames) {
   std::vector<std::string> warnings = effect_warnings(scene);
   for (const std::string& w : afterimage_warnings(scene.params, plan.taps)) warnings.push_back(w);
@@ -83,7 +83,7 @@ std::vector<std::string> scene_warnings(const Scene& scene, const GlowPlan& plan
 // Frames on a still scene: each device again, fresh, setup apart from N steady-state frames;
 // the last frame must be the image the compared run made (every texture of a still scene is
 // first written by a replacing pass, so each frame repeats the first).
-std::string run_still_frames(const GlowPlan& plan, const img::Image& image,
+std::string run_still_frames(const EffectPlan& plan, const img::Image& image,
                              const std::vector<WayRun>& ways, const DeviceMaker& make,
                              const SceneRunOptions& o, double vk_create_ms,
                              std::vector<FrameReport>& out) {
@@ -91,8 +91,8 @@ std::string run_still_frames(const GlowPlan& plan, const img::Image& image,
   for (const WayRun& way : ways) {
     std::unique_ptr<PassDevice> device = make(way.name);
     if (!device) return fmt::format("{}: no device", way.name);
-    GlowFrames run = run_glow_frames(plan, image, *device, o.frames, {}, {}, {},
-                                     o.frame_progress ? o.frame_progress(way.name) : nullptr);
+    EffectFrames run = run_effect_frames(plan, image, *device, o.frames, {}, {}, {},
+                                         o.frame_progress ? o.frame_progress(way.name) : nullptr);
     if (!run.run.ok()) return run.run.message();
     if (way.name == "vulkan") run.run->setup_ms += vk_create_ms; // the device is setup too
     auto a = run.images.find(final_name);
@@ -105,13 +105,13 @@ std::string run_still_frames(const GlowPlan& plan, const img::Image& image,
 }
 
 // The compared run: every way once, pass images kept when there is a pair to compare.
-std::string run_ways(const GlowPlan& plan, const img::Image& image, const DeviceMaker& make,
+std::string run_ways(const EffectPlan& plan, const img::Image& image, const DeviceMaker& make,
                      const SceneRunOptions& o, SceneRun& out) {
   const bool keep = out.selected.ways.size() > 1;
   for (const std::string& name : out.selected.ways) {
     std::unique_ptr<PassDevice> device = make(name);
-    out.ways.push_back({name, run_glow(plan, image, *device, keep,
-                                       o.pass_progress ? o.pass_progress(name) : nullptr)});
+    out.ways.push_back({name, run_effect(plan, image, *device, keep,
+                                         o.pass_progress ? o.pass_progress(name) : nullptr)});
     if (!out.ways.back().glow.run.ok()) return out.ways.back().glow.run.message();
   }
   return {};

@@ -47,10 +47,10 @@ inline std::string_view effect_name(EffectKind kind) {
 std::optional<EffectKind> parse_effect_kind(std::string_view name);
 
 struct Scene {
-  std::string file;  // the JSON file it came from ("" for the built-in default or --image)
-  std::string image; // "builtin:neon" (make_default_scene) or a resolved PNG path
-  GlowParams params; // width/height = the image's size; tier, downsample, format, half_texel,
-                     // profile, intensity, listing_files
+  std::string file;    // the JSON file it came from ("" for the built-in default or --image)
+  std::string image;   // "builtin:neon" (make_default_scene) or a resolved PNG path
+  EffectParams params; // width/height = the image's size; tier, downsample, format, half_texel,
+                       // profile, intensity, listing_files
   // Which effect runs: Glow ("glow"), the default; RadialBeams ("radial-beams", its
   // parameters in `radial`; tier, format and listings from `params`); StencilOutline
   // ("stencil-outline", `outline`; the glow parameters serve it: size, blur profile,
@@ -65,7 +65,7 @@ struct Scene {
 };
 
 // The scene changes from frame to frame: the glow's after-image, keyframes or motion
-// (GlowParams::animated), or a radial-beams star that moves. `--frames N` then runs and
+// (EffectParams::animated), or a radial-beams star that moves. `--frames N` then runs and
 // compares N different frames.
 bool scene_animated(const Scene& scene);
 
@@ -91,7 +91,7 @@ ir::Result<Scene> load_scene_file(const std::string& path);
 ir::Result<Scene> parse_scene(std::string_view json_text, const std::string& file_name,
                               const std::string& base_dir);
 
-// builtin:neon at 1280×720 with the default glow parameters (GlowParams{}).
+// builtin:neon at 1280×720 with the default glow parameters (EffectParams{}).
 Scene default_scene();
 
 // `--image`: a PNG with alpha (alpha marks what glows) and the default glow parameters at
@@ -118,7 +118,7 @@ std::vector<std::string> scene_input_files(const Scene& scene);
 // Weights that do not sum to one: "profile weights sum to 0.98: the glow is 3.96 % darker
 // than its sources (0.9604 after both axes)" — the blur runs on x, then on y, so the
 // glow's brightness is scaled by the square of the sum.
-std::vector<std::string> glow_warnings(const GlowParams& params);
+std::vector<std::string> glow_warnings(const EffectParams& params);
 
 // The keys a scene may have at the top level, in "glow" and in "glow/profile" — the loader
 // rejects every other key; the schema file lists the same ones (a test keeps them equal).

@@ -29,7 +29,7 @@ namespace tierlift::effects {
 // One way of computing the scene ("cpu", "vulkan", "analytic") and its run.
 struct WayRun {
   std::string name;
-  GlowRun glow;
+  EffectRun glow;
 };
 
 // The agreement of two ways, `a` and `b` naming them.
@@ -79,7 +79,7 @@ struct SceneRunOptions {
 
 struct SceneRun {
   Scene scene;           // as run: its warnings all of the run's, a radial star's frame count set
-  GlowPlan plan;         // the graph as run (pruned unless the options or a moving scene forbid it)
+  EffectPlan plan;       // the graph as run (pruned unless the options or a moving scene forbid it)
   PrunedGraph pruned;    // what pruning left out (also when it was not applied)
   bool moves = false;    // the scene changes from frame to frame (scene_animated)
   bool animated = false; // moves, and frames > 0: `animation` holds the frames
