@@ -42,7 +42,7 @@ const img::Image& scene(uint32_t w, uint32_t h) {
 
 effects::PlanResult make_plan(uint32_t w, uint32_t h, int taps, effects::Tier tier,
                               img::Format format) {
-  effects::GlowParams p;
+  effects::EffectParams p;
   p.tier = tier;
   p.width = w;
   p.height = h;
@@ -53,11 +53,11 @@ effects::PlanResult make_plan(uint32_t w, uint32_t h, int taps, effects::Tier ti
   return effects::build_glow(p);
 }
 
-std::string frame(effects::PassDevice& dev, const effects::GlowPlan& plan,
+std::string frame(effects::PassDevice& dev, const effects::EffectPlan& plan,
                   const effects::ImageMap& inputs, img::Image& out) {
   if (ir::Status s = dev.begin_run(plan.graph, inputs); !s) return s.message();
   for (const effects::PassDesc& p : plan.graph.passes)
-    if (auto s = dev.run_pass(p); !s) return p.name + ": " + s.message();
+    if (auto s = dev.draw(p); !s) return p.name + ": " + s.message();
   ir::Result<img::Image> read = dev.read_texture(std::string(effects::kFinalTexture));
   if (!read) return read.message();
   out = std::move(*read); // a frame's copy, as the devices' readback costs

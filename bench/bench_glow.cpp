@@ -178,7 +178,7 @@ void BM_Glow_VulkanVsGlsl(benchmark::State& state, effects::Tier tier, img::Form
   const effects::ImageMap inputs{{std::string(effects::kSceneTexture), input}};
   auto our_frame = [&]() -> std::string {
     for (const effects::PassDesc& p : plan->graph.passes)
-      if (auto s = ours->run_pass(p); !s) return s.message();
+      if (auto s = ours->draw(p); !s) return s.message();
     return ours->finish().message();
   };
   if (peer && (error = ours->begin_run(plan->graph, inputs).message()).empty())
@@ -226,7 +226,7 @@ void BM_Glow_InterpreterVsOpenCV(benchmark::State& state, effects::Tier tier, im
   const effects::ImageMap inputs{{std::string(effects::kSceneTexture), input}};
   auto frame = [&]() -> std::string {
     for (const effects::PassDesc& p : plan->graph.passes)
-      if (auto s = dev.run_pass(p); !s) return p.name + ": " + s.message();
+      if (auto s = dev.draw(p); !s) return p.name + ": " + s.message();
     return dev.finish().message();
   };
   bench::OpenCvGlow peer(float_plan->taps, kDownsample);

@@ -11,7 +11,7 @@ namespace tierlift::bench {
 
 effects::PlanResult glow_plan(effects::Tier tier, img::Format format, uint32_t width,
                               uint32_t height, unsigned taps) {
-  effects::GlowParams p;
+  effects::EffectParams p;
   p.tier = tier;
   p.width = width;
   p.height = height;
@@ -44,7 +44,7 @@ bool run_device_frames(benchmark::State& state, effects::PassDevice& device,
   if (ir::Status s = device.begin_run(plan->graph, inputs); !s) return fail(s.message());
   auto frame = [&] {
     for (const effects::PassDesc& p : plan->graph.passes)
-      if (auto s = device.run_pass(p); !s) return fail(p.name + ": " + s.message());
+      if (auto s = device.draw(p); !s) return fail(p.name + ": " + s.message());
     if (ir::Status s = device.finish(); !s) return fail(s.message());
     return true;
   };

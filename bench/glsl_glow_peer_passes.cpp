@@ -60,23 +60,23 @@ struct Uniforms {
 int fill_uniforms(const effects::PassDesc& p, const std::string& kind, Uniforms& u) {
   int coords = 0;
   if (kind == "blur") {
-    coords = int(std::min<size_t>(p.vs_constants.size(), 8));
+    coords = int(std::min<size_t>(p.vs_constants.f.size(), 8));
     for (int k = 0; k < coords; ++k) {
       u.coord[k][0] = u.coord[k][1] = 1;
-      u.coord[k][2] = p.vs_constants[k][0];
-      u.coord[k][3] = p.vs_constants[k][1];
+      u.coord[k][2] = p.vs_constants.f[k][0];
+      u.coord[k][3] = p.vs_constants.f[k][1];
     }
   } else {
     coords = kind == "extract" ? 1 : kind == "composite" ? 2 : 4;
     for (int k = 0; k < coords; ++k) {
-      u.coord[k][0] = p.vs_constants[4 + k][0];
-      u.coord[k][1] = p.vs_constants[4 + k][1];
-      u.coord[k][2] = p.vs_constants[k][0];
-      u.coord[k][3] = p.vs_constants[k][1];
+      u.coord[k][0] = p.vs_constants.f[4 + k][0];
+      u.coord[k][1] = p.vs_constants.f[4 + k][1];
+      u.coord[k][2] = p.vs_constants.f[k][0];
+      u.coord[k][3] = p.vs_constants.f[k][1];
     }
   }
-  for (size_t k = 0; k < p.ps_constants.size() && k < 8; ++k)
-    for (int c = 0; c < 4; ++c) u.weight[k][c] = p.ps_constants[k][c];
+  for (size_t k = 0; k < p.ps_constants.f.size() && k < 8; ++k)
+    for (int c = 0; c < 4; ++c) u.weight[k][c] = p.ps_constants.f[k][c];
   if (kind == "extract" || kind == "composite") return coords;
   // A read weighted 0 adds exactly 0: a chain written by hand does not make it (the lift
   // leaves it out too, ir::zero_constant_products). The glow's last blur pass of an axis

@@ -88,7 +88,7 @@ int run(const Flags& f) {
   if (!f.json) fmt::print("{}", interface_text(shader));
 
   std::optional<img::Image> image;
-  std::optional<effects::GlowPlan> plan;
+  std::optional<effects::EffectPlan> plan;
   if (!f.output.empty()) {
     img::ImageResult loaded = load_image(f, (*size)[0], (*size)[1]);
     if (!loaded) {

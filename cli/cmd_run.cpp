@@ -23,12 +23,10 @@
 #include "run_trace.h"
 #include "tierlift/effects/backends.h"
 #include "tierlift/effects/device.h"
-#include "tierlift/effects/memory_plan.h"
 #include "tierlift/effects/run_graph.h"
 #include "tierlift/effects/single_pass.h"
 #include "tierlift/image/compare.h"
 #include "tierlift/ir/ps1x_range.h"
-#include "vulkan_device.h"
 
 namespace tierlift::cli {
 namespace {
@@ -122,10 +120,13 @@ std::vector<std::string> input_files(const RunFlags& f, const pass::RunRequest& 
 // A failed run as `tierlift run` has always worded a draw the device refused: the device's
 // own words (run_graph hands them on as notes after its summary), under rule "draw" on the
 // CPU and as "vulkan: …" on Vulkan; the run's summary when there are none. The graph's one
-// pass is the whole draw, so a device's "pass 'run': " adds nothing and is left out.
-void report_failure(const std::vector<ir::Diagnostic>& diagnostics, const std::string& device,
-                    Report& report) {
+// pass is the whole draw, so a device's "pass 'run': " adds nothing and is left out. The
+// failing device is the subject of run_single_pass's error.
+void report_failure(const std::vector<ir::Diagnostic>& diagnostics, Report& report) {
   const std::string pass_prefix = fmt::format("pass '{}': ", effects::kSinglePass);
+  std::string device;
+  for (const ir::Diagnostic& d : diagnostics)
+    if (d.severity == ir::Severity::Error) device = d.subject;
   bool cause = false;
   for (const ir::Diagnostic& d : diagnostics) {
     if (d.severity != ir::Severity::Note) continue; // only the device's cause is a note
@@ -142,34 +143,32 @@ void report_failure(const std::vector<ir::Diagnostic>& diagnostics, const std::s
     if (d.severity == ir::Severity::Error) report.error(d.rule, d.message);
 }
 
-DeviceRun run_on(effects::PassDevice& device, const effects::EffectGraph& graph,
-                 const pass::RunRequest& req, Report& report) {
+// run_single_pass's warnings and failure, in the order they arose; the exit code of the
+// failure (a device that cannot be had: usage), kExitOk without one.
+int report_single_pass(const ir::Result<effects::SinglePassRun>& ran, Report& report) {
+  for (const ir::Diagnostic& d : ran.diagnostics())
+    if (d.severity == ir::Severity::Warning) report.warning(d.rule, d.message);
+  if (ran) return kExitOk;
+  std::vector<ir::Diagnostic> failure;
+  for (const ir::Diagnostic& d : ran.diagnostics())
+    if (d.severity != ir::Severity::Warning) failure.push_back(d);
+  for (const ir::Diagnostic& d : failure)
+    if (d.severity == ir::Severity::Error &&
+        (d.rule == "memory" || d.rule == "device" || d.rule == "agreement")) {
+      report.error(d.rule, d.message);
+      return d.rule == "device" ? kExitUsage : kExitInvalid;
+    }
+  report_failure(failure, report);
+  return kExitInvalid;
+}
+
+// One device's draw as the run's output shows it: the image, its probes, what it took.
+DeviceRun shown_run(const effects::SinglePassDraw& draw, const pass::RunRequest& req) {
   DeviceRun out;
-  effects::ImageMap images;
-  std::optional<ir::Result<effects::GraphRun>> run;
-  try { // a 16384² float target is 4 GiB: running out of memory is an error, not a crash
-    // Whether the host can hold the image that comes back, asked first (allocated, never
-    // touched; an explicit operator new, which no compiler may leave out): a host out of
-    // memory is this error on every device, as it always was, not a device's refusal.
-    ::operator delete(::operator new (size_t{req.width} * req.height * 4 * sizeof(float)));
-    run.emplace(effects::run_graph(graph, device, images));
-  } catch (const std::bad_alloc&) {
-    report.error("memory", fmt::format("not enough memory for a {}x{} target and its textures",
-                                       req.width, req.height));
-    return out;
-  }
-  if (!*run) {
-    report_failure(run->diagnostics(), device.name(), report);
-    return out;
-  }
-  const effects::PassRecord& pass = (*run)->passes.front();
-  for (const ir::Diagnostic& d : pass.warnings) report.warning(d.rule, d.message);
-  out.report = pass.report;
-  out.report.setup_ms = (*run)->setup_ms; // textures, uploads, pipelines
-  out.report.draw_ms = pass.ms;           // the pass, to the end of its work on the device
-  out.image = std::move(images.at(std::string(effects::kSinglePassTarget)));
-  out.probes = pass::read_probes(out.image, req.probes);
   out.ok = true;
+  out.image = draw.image;
+  out.probes = pass::read_probes(out.image, req.probes);
+  out.report = draw.report;
   return out;
 }
 
@@ -192,6 +191,177 @@ nlohmann::json result_json(const RunFlags& f, const pass::RunRequest& r, const D
            {{"setup", run.report.setup_ms}, {"draw", run.report.draw_ms}, {"write", write_ms}}}};
 }
 
+// What the flags ask for before any file is read: the request (every flag but --const),
+// the ways, the trace. Every flag is checked here; --const may name a constant of a token
+// stream's CTAB, so it is read once the listings are loaded (resolve_constants).
+struct RunPlan {
+  pass::RunRequest req;
+  effects::BackendChoice backends;
+  bool cpu = false, vulkan = false; // the ways asked for
+  std::optional<PixelTraceRequest> trace;
+};
+
+// The plan, or nullopt after reporting a usage error (exit 2).
+std::optional<RunPlan> plan_from_flags(const RunFlags& f, Report& report) {
+  RunPlan plan;
+  try {
+    plan.req = build_request(f);
+  } catch (const UsageError& e) {
+    report.error("usage", e.message);
+    return std::nullopt;
+  }
+  ir::Result<effects::BackendChoice> backends =
+      effects::parse_backends(f.backend, {"cpu", "vulkan"});
+  if (!backends) {
+    report.error("usage", backends.message());
+    return std::nullopt;
+  }
+  plan.backends = std::move(backends).value();
+  auto wants = [&](const char* way) {
+    return std::find(plan.backends.ways.begin(), plan.backends.ways.end(), way) !=
+           plan.backends.ways.end();
+  };
+  plan.cpu = wants("cpu");
+  plan.vulkan = wants("vulkan");
+  ir::Result<std::optional<PixelTraceRequest>> traced =
+      trace_request(f.trace, !f.ps.empty(), plan.req, plan.cpu, plan.vulkan, f.gpu);
+  if (!traced) {
+    report.error("usage", traced.message());
+    return std::nullopt;
+  }
+  plan.trace = *traced;
+  return plan;
+}
+
+// -o: never one of the run's inputs, one image for "-", the Vulkan image's name free too.
+// False after reporting why not.
+bool outputs_ok(const RunFlags& f, const RunPlan& plan, Report& report) {
+  if (f.output.empty()) return true;
+  const std::vector<std::string> inputs = input_files(f, plan.req);
+  std::string why = check_output(f.output, inputs, f.fe.json).message();
+  if (why.empty() && f.output == "-" && plan.cpu && plan.vulkan)
+    why = "-o - takes one image; --backend both writes two (give -o a file)";
+  if (why.empty() && plan.cpu && plan.vulkan)
+    why = output_conflict(vulkan_output(f.output), inputs).message();
+  if (why.empty()) return true;
+  report.error(f.output == "-" ? "usage" : "io", why, f.output);
+  return false;
+}
+
+struct Listings {
+  std::optional<LoadedListing> vs, ps; // each keeps its own SourceManager
+};
+
+// The listings read, checked and their diagnostics reported; kExitOk, or the exit code after
+// reporting why not.
+int load_listings(const RunFlags& f, const RunPlan& plan, Listings& out, Report& report) {
+  for (auto [path, slot] : {std::pair{&f.vs, &out.vs}, std::pair{&f.ps, &out.ps}}) {
+    if (path->empty()) continue;
+    ir::Result<LoadedListing> loaded = load_listing(*path, f.fe);
+    if (!loaded) {
+      report.error("io", loaded.message(), *path);
+      return kExitUsage;
+    }
+    *slot = std::move(loaded).value();
+  }
+  bool listings_ok = true;
+  for (auto* l : {&out.vs, &out.ps}) {
+    if (!*l) continue;
+    if ((*l)->program && !check_executable(**l, plan.cpu ? "the interpreter" : "SPIR-V"))
+      listings_ok = false;
+    report.diagnostics((*l)->diags, (*l)->sources);
+    listings_ok = listings_ok && (*l)->program && !(*l)->diags.has_errors();
+  }
+  if (!listings_ok) return kExitInvalid;
+  for (const std::string& o :
+       {f.output, plan.cpu && plan.vulkan && !f.output.empty() ? vulkan_output(f.output) : ""})
+    for (auto* l : {&out.vs, &out.ps})
+      if (ir::Status refused = *l ? refuse_included(o, **l) : ir::ok_status(); !refused) {
+        report.error("io", refused.message(), o);
+        return kExitUsage;
+      }
+  return kExitOk;
+}
+
+// --const, names in a token stream's CTAB resolved to the registers they cover, and the
+// listings' programs into the request. False after reporting a usage error.
+bool complete_request(const RunFlags& f, const Listings& l, pass::RunRequest& req, Report& report) {
+  auto table = [](const std::optional<LoadedListing>& listing) {
+    return listing && listing->constants ? &*listing->constants : nullptr;
+  };
+  ir::Result<std::vector<pass::ConstSetting>> consts =
+      parse_const_assignments(f.consts, table(l.vs), table(l.ps));
+  if (!consts) {
+    report.error("usage", consts.message());
+    return false;
+  }
+  req.constants = std::move(*consts);
+  if (l.vs) req.vs = std::make_shared<const ir::Program>(*l.vs->program);
+  if (l.ps) req.ps = std::make_shared<const ir::Program>(*l.ps->program);
+  return true;
+}
+
+// The one pass both devices draw (listings, constants and textures read once), its
+// diagnostics reported; nullopt with `exit_code` set when it cannot be made.
+std::optional<pass::Pass> prepare(const pass::RunRequest& req, const Listings& l, Report& report,
+                                  double& prepare_ms, int& exit_code) {
+  const auto t0 = std::chrono::steady_clock::now();
+  pass::RunDiagnostics diags;
+  std::optional<pass::Pass> prepared;
+  ir::Result<pass::Pass> made = pass::prepare_pass(req);
+  pass::add_by_listing(diags, made.diagnostics());
+  if (made) prepared = std::move(made).value();
+  prepare_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  if (l.vs) report.diagnostics(diags.vs, l.vs->sources);
+  if (l.ps) report.diagnostics(diags.ps, l.ps->sources);
+  print_other(diags.other, report);
+  exit_code = kExitInvalid;
+  for (const auto& e : diags.other.all())
+    if (e.severity == ir::Severity::Error && pass::is_usage_rule(e.rule)) exit_code = kExitUsage;
+  return prepared;
+}
+
+// The image(s) to -o (the Vulkan one beside the CPU one with two ways); the time it took, or
+// nullopt after reporting an I/O error.
+std::optional<double> write_outputs(const RunFlags& f, const DeviceRun& shown, const DeviceRun* vk,
+                                    Report& report) {
+  if (f.output.empty()) return 0.0;
+  auto t0 = std::chrono::steady_clock::now();
+  std::vector<std::pair<std::string, const img::Image*>> files{{f.output, &shown.image}};
+  if (vk) files.emplace_back(vulkan_output(f.output), &vk->image);
+  for (const auto& [path, image] : files) {
+    std::string warning;
+    std::string err = write_run_output(path, *image, &warning, f.keep_alpha);
+    if (!warning.empty()) report.warning("clamped", warning, path);
+    if (!err.empty()) {
+      report.error("io", err, path);
+      return std::nullopt;
+    }
+  }
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+nlohmann::json run_json(const RunFlags& f, const pass::RunRequest& req,
+                        const effects::SinglePassRun& r, const DeviceRun& shown,
+                        const DeviceRun& vk, double write_ms) {
+  nlohmann::json j = result_json(f, req, shown, write_ms);
+  j["backend"] = f.backend;
+  j["backends"] = {{"ran", r.selected.ways}, {"note", r.selected.note}};
+  j["inputs"] = input_sources_json(req);
+  if (!r.vulkan_device.empty()) j["vulkan_device"] = r.vulkan_device;
+  if (r.agreement) {
+    j["agreement"] = {{"max_abs", r.agreement->max_abs},
+                      {"rmse", r.agreement->rmse},
+                      {"identical_share", r.agreement->identical_share},
+                      {"within_targets", r.verdict->pass},
+                      {"summary", r.verdict->summary}};
+    j["timing_ms"]["vulkan_setup"] = vk.report.setup_ms;
+    j["timing_ms"]["vulkan_draw"] = vk.report.draw_ms;
+  }
+  return j;
+}
+
 int run(const RunFlags& f) {
   Report report("run", f.fe.json);
   // Without listings the quad shows its pixel inputs (--input); with none of the three
@@ -200,109 +370,18 @@ int run(const RunFlags& f) {
     report.error("usage", "nothing to draw: give --vs, --ps or --input (tierlift run --help)");
     return report.finish(kExitUsage);
   }
-  // Every flag but --const is checked before any file is read; --const may name a constant
-  // of a token stream's CTAB, so it is read once the listings are loaded.
-  pass::RunRequest req;
-  try {
-    req = build_request(f);
-  } catch (const UsageError& e) {
-    report.error("usage", e.message);
-    return report.finish(kExitUsage);
-  }
-  const ir::Result<effects::BackendChoice> backends =
-      effects::parse_backends(f.backend, {"cpu", "vulkan"});
-  if (!backends) {
-    report.error("usage", backends.message());
-    return report.finish(kExitUsage);
-  }
-  auto wants = [&](const char* way) {
-    return std::find(backends->ways.begin(), backends->ways.end(), way) != backends->ways.end();
-  };
-  const bool want_cpu = wants("cpu");
-  bool want_vulkan = wants("vulkan");
-  ir::Result<std::optional<PixelTraceRequest>> traced =
-      trace_request(f.trace, !f.ps.empty(), req, want_cpu, want_vulkan, f.gpu);
-  if (!traced) {
-    report.error("usage", traced.message());
-    return report.finish(kExitUsage);
-  }
-  std::optional<PixelTraceRequest> trace = *traced;
-  if (!f.output.empty()) {
-    std::string why = check_output(f.output, input_files(f, req), f.fe.json).message();
-    if (why.empty() && f.output == "-" && want_cpu && want_vulkan)
-      why = "-o - takes one image; --backend both writes two (give -o a file)";
-    if (why.empty() && want_cpu && want_vulkan)
-      why = output_conflict(vulkan_output(f.output), input_files(f, req)).message();
-    if (!why.empty()) {
-      report.error(f.output == "-" ? "usage" : "io", why, f.output);
-      return report.finish(kExitUsage);
-    }
-  }
-  // Each listing keeps its own SourceManager, so its diagnostics quote the right file.
-  std::optional<LoadedListing> vs, ps;
-  for (auto [path, slot] : {std::pair{&f.vs, &vs}, std::pair{&f.ps, &ps}}) {
-    if (path->empty()) continue;
-    ir::Result<LoadedListing> loaded = load_listing(*path, f.fe);
-    if (!loaded) {
-      report.error("io", loaded.message(), *path);
-      return report.finish(kExitUsage);
-    }
-    *slot = std::move(loaded).value();
-  }
-  bool listings_ok = true;
-  for (auto* l : {&vs, &ps}) {
-    if (!*l) continue;
-    if ((*l)->program && !check_executable(**l, want_cpu ? "the interpreter" : "SPIR-V"))
-      listings_ok = false;
-    report.diagnostics((*l)->diags, (*l)->sources);
-    listings_ok = listings_ok && (*l)->program && !(*l)->diags.has_errors();
-  }
-  if (!listings_ok) return report.finish(kExitInvalid);
-  for (const std::string& out :
-       {f.output, want_cpu && want_vulkan && !f.output.empty() ? vulkan_output(f.output) : ""})
-    for (auto* l : {&vs, &ps})
-      if (ir::Status refused = *l ? refuse_included(out, **l) : ir::ok_status(); !refused) {
-        report.error("io", refused.message(), out);
-        return report.finish(kExitUsage);
-      }
-  // Constants named by a token stream's CTAB become the registers they cover.
-  auto table = [](const std::optional<LoadedListing>& l) {
-    return l && l->constants ? &*l->constants : nullptr;
-  };
-  ir::Result<std::vector<pass::ConstSetting>> consts =
-      parse_const_assignments(f.consts, table(vs), table(ps));
-  if (!consts) {
-    report.error("usage", consts.message());
-    return report.finish(kExitUsage);
-  }
-  req.constants = std::move(*consts);
-  if (vs) req.vs = std::make_shared<const ir::Program>(*vs->program);
-  if (ps) req.ps = std::make_shared<const ir::Program>(*ps->program);
+  std::optional<RunPlan> plan = plan_from_flags(f, report);
+  if (!plan || !outputs_ok(f, *plan, report)) return report.finish(kExitUsage);
+  pass::RunRequest& req = plan->req;
+  Listings listings;
+  if (int code = load_listings(f, *plan, listings, report); code != kExitOk)
+    return report.finish(code);
+  if (!complete_request(f, listings, req, report)) return report.finish(kExitUsage);
   report_input_sources(req, report);
-
-  auto print_run_diagnostics = [&](const pass::RunDiagnostics& d) {
-    if (vs) report.diagnostics(d.vs, vs->sources);
-    if (ps) report.diagnostics(d.ps, ps->sources);
-    print_other(d.other, report);
-  };
-  auto failure_code = [](const pass::RunDiagnostics& d) {
-    for (const auto& e : d.other.all())
-      if (e.severity == ir::Severity::Error && pass::is_usage_rule(e.rule)) return kExitUsage;
-    return kExitInvalid;
-  };
-
-  // The one pass both devices draw: listings, constants and textures are read once here.
-  const auto t_prepare = std::chrono::steady_clock::now();
-  pass::RunDiagnostics diags;
-  std::optional<pass::Pass> prepared;
-  ir::Result<pass::Pass> made = pass::prepare_pass(req);
-  pass::add_by_listing(diags, made.diagnostics());
-  if (made) prepared = std::move(made).value();
-  const double prepare_ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_prepare)
-          .count();
-  print_run_diagnostics(diags);
-  if (!prepared) return report.finish(failure_code(diags));
+  double prepare_ms = 0;
+  int exit_code = kExitOk;
+  std::optional<pass::Pass> prepared = prepare(req, listings, report, prepare_ms, exit_code);
+  if (!prepared) return report.finish(exit_code);
   // The same graph of one pass on each device asked for, through the one device interface.
   ir::Result<effects::EffectGraph> graph =
       effects::single_pass_graph(*prepared, req.width, req.height, req.format);
@@ -310,99 +389,29 @@ int run(const RunFlags& f) {
     report.error("graph", graph.message());
     return report.finish(kExitInvalid);
   }
-  if (!trace) prepared.reset(); // the graph shares the textures; only a trace needs the pass
-  // Memory known before anything is allocated (effects::plan_memory), as glow plans it.
-  if (std::string why = effects::memory_refusal(
-          effects::plan_memory(*graph, backends->ways, false, effects::kProgramBytes),
-          effects::available_memory(),
-          fmt::format("the {}x{} {} target on {}", req.width, req.height,
-                      img::format_name(req.format), fmt::join(backends->ways, " + ")));
-      !why.empty()) {
-    report.error("memory", why + "; a smaller --size or --format, or one backend, needs less");
-    return report.finish(kExitInvalid);
-  }
-  // "all" leaves Vulkan out, with a note, where the machine has none (effects::select_ways).
+  if (!plan->trace) prepared.reset(); // the graph shares the textures; only a trace needs it
   vulkan::DeviceOptions vk_options;
   vk_options.gpu_filter = f.gpu;
-  const ir::Result<effects::SelectedWays> selected = effects::select_ways(*backends, vk_options);
-  if (!selected) {
-    report.error("device", selected.message());
-    return report.finish(kExitUsage);
-  }
-  if (!selected->note.empty()) report.warning("backend", selected->note);
-  want_vulkan = selected->vulkan != nullptr;
-  if (trace) trace->vulkan = want_vulkan; // "all" may have left Vulkan out
-  DeviceRun out, vk;
-  std::string vk_name;
-  if (want_cpu) {
-    effects::CpuPassDevice device(req.threads);
-    out = run_on(device, *graph, req, report);
-    out.report.setup_ms += prepare_ms;
-    if (!out.ok) return report.finish(kExitInvalid);
-  }
-  if (want_vulkan) {
-    vulkan::Device* device = selected->vulkan;
-    vk_name = device->name();
-    std::unique_ptr<effects::PassDevice> pass_device = effects::make_vulkan_pass_device(*device);
-    vk = run_on(*pass_device, *graph, req, report);
-    if (!vk.ok) return report.finish(kExitInvalid);
-  }
+  ir::Result<effects::SinglePassRun> ran =
+      effects::run_single_pass(*graph, plan->backends, vk_options, req.threads);
+  if (int code = report_single_pass(ran, report); code != kExitOk) return report.finish(code);
+  const effects::SinglePassRun& r = *ran;
+  if (plan->trace) plan->trace->vulkan = r.selected.vulkan != nullptr; // "all" may leave it out
   // What the run reports as its image and probes: the CPU device's, else the Vulkan one's.
-  const DeviceRun& shown = want_cpu ? out : vk;
-
-  // --backend both: the two devices must agree at docs/design.md's targets for the format.
-  std::optional<img::Comparison> agreement;
-  std::optional<img::Verdict> verdict;
-  if (want_cpu && want_vulkan) {
-    ir::Result<img::Comparison> compared = img::compare(out.image, vk.image);
-    if (!compared) {
-      report.error("agreement", compared.message());
-      return report.finish(kExitInvalid);
-    }
-    agreement = *compared;
-    verdict = img::judge(*agreement, req.format);
-  }
-
-  double write_ms = 0;
-  if (!f.output.empty()) {
-    auto t0 = std::chrono::steady_clock::now();
-    std::vector<std::pair<std::string, const img::Image*>> files{{f.output, &shown.image}};
-    if (want_cpu && want_vulkan) files.emplace_back(vulkan_output(f.output), &vk.image);
-    for (const auto& [path, image] : files) {
-      std::string warning;
-      std::string err = write_run_output(path, *image, &warning, f.keep_alpha);
-      if (!warning.empty()) report.warning("clamped", warning, path);
-      if (!err.empty()) {
-        report.error("io", err, path);
-        return report.finish(kExitUsage);
-      }
-    }
-    write_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  }
-  if (report.json()) {
-    nlohmann::json& j = report.result();
-    j = result_json(f, req, shown, write_ms);
-    j["backend"] = f.backend;
-    j["backends"] = {{"ran", selected->ways}, {"note", selected->note}};
-    j["inputs"] = input_sources_json(req);
-    if (want_vulkan) j["vulkan_device"] = vk_name;
-    if (agreement) {
-      j["agreement"] = {{"max_abs", agreement->max_abs},
-                        {"rmse", agreement->rmse},
-                        {"identical_share", agreement->identical_share},
-                        {"within_targets", verdict->pass},
-                        {"summary", verdict->summary}};
-      j["timing_ms"]["vulkan_setup"] = vk.report.setup_ms;
-      j["timing_ms"]["vulkan_draw"] = vk.report.draw_ms;
-    }
-  } else {
-    print_text_result(shown, vk, vk_name, agreement, verdict);
-  }
-  if (trace)
-    if (int code = print_pixel_trace(*prepared, *trace, report)) return report.finish(code);
-  if (verdict && !verdict->pass) {
-    report.error("agreement", verdict->summary);
+  DeviceRun shown = shown_run(r.draws.front(), req), vk;
+  if (r.draws.front().device == "cpu") shown.report.setup_ms += prepare_ms;
+  if (r.draws.back().device == "vulkan") vk = shown_run(r.draws.back(), req);
+  const bool both = r.draws.size() == 2;
+  const std::optional<double> write_ms = write_outputs(f, shown, both ? &vk : nullptr, report);
+  if (!write_ms) return report.finish(kExitUsage);
+  if (report.json())
+    report.result() = run_json(f, req, r, shown, vk, *write_ms);
+  else
+    print_text_result(shown, vk, r.vulkan_device, r.agreement, r.verdict);
+  if (plan->trace)
+    if (int code = print_pixel_trace(*prepared, *plan->trace, report)) return report.finish(code);
+  if (r.verdict && !r.verdict->pass) {
+    report.error("agreement", r.verdict->summary);
     return report.finish(kExitInvalid);
   }
   return report.finish(kExitOk);

@@ -11,28 +11,12 @@
 
 namespace tierlift::cli {
 
-ir::Result<std::vector<PairAgreement>> compare_ways(const std::vector<GlowWay>& ways) {
-  std::vector<PairAgreement> pairs;
-  for (size_t i = 0; i < ways.size(); ++i)
-    for (size_t j = i + 1; j < ways.size(); ++j) {
-      ir::Result<effects::RunAgreement> compared =
-          effects::compare_runs(*ways[i].glow.run, ways[i].glow.images, *ways[j].glow.run,
-                                ways[j].glow.images, std::string(effects::kFinalTexture));
-      if (!compared)
-        return ir::fail(
-            ways[i].name + " vs " + ways[j].name, "agreement",
-            fmt::format("{} vs {}: {}", ways[i].name, ways[j].name, compared.message()));
-      pairs.push_back({ways[i].name, ways[j].name, std::move(*compared)});
-    }
-  return pairs;
-}
-
-void print_agreement_table(const std::vector<PairAgreement>& pairs) {
+void print_agreement_table(const std::vector<effects::PairAgreement>& pairs) {
   if (pairs.empty()) return;
   constexpr int kCell = 28; // "  max abs     rmse   ident."
   std::string head = fmt::format("{:<12} {:<13}", "", "");
   std::string cols = fmt::format("{:<12} {:<13}", "pass", "target");
-  for (const PairAgreement& p : pairs) {
+  for (const effects::PairAgreement& p : pairs) {
     head += fmt::format(" {:^{}}", fmt::format("{} · {}", p.a, p.b), kCell);
     cols += fmt::format(" {:>9} {:>9} {:>8}", "max abs", "rmse", "ident.");
   }
@@ -41,7 +25,7 @@ void print_agreement_table(const std::vector<PairAgreement>& pairs) {
   for (size_t r = 0; r < rows; ++r) {
     const effects::PassAgreement& first = pairs.front().agreement.passes[r];
     std::string line = fmt::format("{:<12} {:<13}", first.pass, first.target);
-    for (const PairAgreement& p : pairs) {
+    for (const effects::PairAgreement& p : pairs) {
       const effects::PassAgreement& row = p.agreement.passes[r];
       const img::Comparison& c = row.comparison;
       line += fmt::format(" {:>9.2g} {:>9.2g} {:>7.3f}%{}", c.max_abs_all, c.rmse_all,
@@ -52,7 +36,7 @@ void print_agreement_table(const std::vector<PairAgreement>& pairs) {
   }
   uint64_t midpoints = 0;
   double most = 0;
-  for (const PairAgreement& p : pairs)
+  for (const effects::PairAgreement& p : pairs)
     for (const effects::PassAgreement& row : p.agreement.passes) {
       midpoints += row.midpoint_pixels;
       most = std::max(most, row.midpoint_share);
@@ -64,9 +48,9 @@ void print_agreement_table(const std::vector<PairAgreement>& pairs) {
                midpoints, 100.0 * most);
 }
 
-nlohmann::json agreement_json(const std::vector<PairAgreement>& pairs) {
+nlohmann::json agreement_json(const std::vector<effects::PairAgreement>& pairs) {
   nlohmann::json out = nlohmann::json::array();
-  for (const PairAgreement& p : pairs) {
+  for (const effects::PairAgreement& p : pairs) {
     nlohmann::json rows = nlohmann::json::array();
     for (const effects::PassAgreement& row : p.agreement.passes)
       rows.push_back({{"pass", row.pass},
@@ -85,7 +69,7 @@ nlohmann::json agreement_json(const std::vector<PairAgreement>& pairs) {
   return out;
 }
 
-std::string write_glow_images(io::OutputFolder& out, const std::vector<GlowWay>& ways,
+std::string write_glow_images(io::OutputFolder& out, const std::vector<effects::WayRun>& ways,
                               bool float_targets) {
   struct File {
     std::string name;
@@ -93,7 +77,7 @@ std::string write_glow_images(io::OutputFolder& out, const std::vector<GlowWay>&
     bool pfm;
   };
   std::vector<File> files;
-  for (const GlowWay& way : ways)
+  for (const effects::WayRun& way : ways)
     for (std::string_view tex :
          {effects::kSceneTexture, effects::kGlowTexture, effects::kFinalTexture}) {
       const auto it = way.glow.images.find(tex);
@@ -122,20 +106,20 @@ std::string write_glow_images(io::OutputFolder& out, const std::vector<GlowWay>&
   return {};
 }
 
-void print_frames_table(const std::vector<FrameReport>& frames) {
+void print_frames_table(const std::vector<effects::FrameReport>& frames) {
   if (frames.empty()) return;
   fmt::print("frames: setup once, then {} steady-state frame(s) per device\n",
              frames.front().times.frame_ms.size());
   fmt::print("{:<10} {:>10} {:>10} {:>10} {:>10}\n", "device", "setup ms", "median ms", "min ms",
              "max ms");
-  for (const FrameReport& r : frames)
+  for (const effects::FrameReport& r : frames)
     fmt::print("{:<10} {:>10.1f} {:>10.2f} {:>10.2f} {:>10.2f}\n", r.device, r.times.setup_ms,
                r.times.median_ms(), r.times.min_ms(), r.times.max_ms());
 }
 
-nlohmann::json frames_json(const std::vector<FrameReport>& frames) {
+nlohmann::json frames_json(const std::vector<effects::FrameReport>& frames) {
   nlohmann::json j = nlohmann::json::object();
-  for (const FrameReport& r : frames)
+  for (const effects::FrameReport& r : frames)
     j[r.device] = {{"setup_ms", r.times.setup_ms},
                    {"median_ms", r.times.median_ms()},
                    {"min_ms", r.times.min_ms()},

@@ -1,5 +1,6 @@
-// What `tierlift glow` prints and writes once the ways have run: the agreement table (per
-// pass and for the frame, every pair of ways), its JSON form, and the image files.
+// What `tierlift glow` prints and writes once the scene has run (effects::run_scene): the
+// agreement table (per pass and for the frame, every pair of ways), its JSON form, and the
+// image files.
 #pragma once
 
 #include <string>
@@ -7,51 +8,29 @@
 
 #include <nlohmann/json.hpp>
 
-#include "tierlift/effects/agreement.h"
-#include "tierlift/effects/glow_run.h"
 #include "tierlift/effects/prune.h"
+#include "tierlift/effects/scene_run.h"
 #include "tierlift/io/output_folder.h"
 #include "tierlift/ir/result.h"
 
 namespace tierlift::cli {
 
-// One way of computing the glow ("cpu", "vulkan", "analytic") and its run.
-struct GlowWay {
-  std::string name;
-  effects::GlowRun glow;
-};
-
-// The agreement of two ways, `a` and `b` naming them.
-struct PairAgreement {
-  std::string a, b;
-  effects::RunAgreement agreement;
-};
-
-// Every pair of `ways` in order (cpu·vulkan, cpu·analytic, vulkan·analytic); fails (rule
-// "agreement") when both runs have passes but cannot be compared.
-ir::Result<std::vector<PairAgreement>> compare_ways(const std::vector<GlowWay>& ways);
-
 // The table: one row per pass and one for the frame; for each pair max abs, RMSE and the
 // share of identical pixels, a '!' after a pair beyond docs/design.md's targets.
-void print_agreement_table(const std::vector<PairAgreement>& pairs);
-nlohmann::json agreement_json(const std::vector<PairAgreement>& pairs);
+void print_agreement_table(const std::vector<effects::PairAgreement>& pairs);
+nlohmann::json agreement_json(const std::vector<effects::PairAgreement>& pairs);
 
-// `--frames N`: one device's setup and steady-state frames (effects::run_frames).
-struct FrameReport {
-  std::string device;
-  effects::FrameTimes times;
-};
 // "frames: setup, then N frames each" and one row per device: setup, median, min, max ms.
-void print_frames_table(const std::vector<FrameReport>& frames);
+void print_frames_table(const std::vector<effects::FrameReport>& frames);
 // {"<device>": {"setup_ms", "median_ms", "min_ms", "max_ms", "n"}}
-nlohmann::json frames_json(const std::vector<FrameReport>& frames);
+nlohmann::json frames_json(const std::vector<effects::FrameReport>& frames);
 
 // Writes {scene,glow,final}-<way>.png for each way into `out` (opaque copies: the scene's
 // alpha is the glow mask, and viewers would show the ground as transparent), plus .pfm of
 // each when the target format is a float format. Empty string on success. The folder
 // refuses a name that is one of the run's inputs before anything is written; nothing
 // reaches DIR before out.commit().
-std::string write_glow_images(io::OutputFolder& out, const std::vector<GlowWay>& ways,
+std::string write_glow_images(io::OutputFolder& out, const std::vector<effects::WayRun>& ways,
                               bool float_targets);
 
 // What pruning left out, limited to a box and kept: `glow --explain` prints it (`varies`: the

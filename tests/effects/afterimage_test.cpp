@@ -1,4 +1,4 @@
-// After-image feedback and ramped parameters over frames (glow.h, run_glow_frames), on the
+// After-image feedback and ramped parameters over frames (glow.h, run_effect_frames), on the
 // CPU and Vulkan devices, against closed forms computed here in double:
 //   Sources: s_N = x·(1 − g^N)/(1 − g) → x/(1 − g)
 //   Glow:    y_∞ = B(I − gB)⁻¹x, B the separable blur with clamp-to-edge addressing, solved
@@ -68,8 +68,8 @@ std::vector<double> blur(const std::vector<double>& in, const std::vector<BlurTa
   return pass(pass(in, false), true);
 }
 
-GlowParams params(Afterimage mode, double g, img::Format format) {
-  GlowParams p;
+EffectParams params(Afterimage mode, double g, img::Format format) {
+  EffectParams p;
   p.width = kW;
   p.height = kH;
   p.downsample = 1;
@@ -81,14 +81,14 @@ GlowParams params(Afterimage mode, double g, img::Format format) {
 }
 
 // Runs `frames` frames and returns `texture` after the last one.
-img::Image last_frame(PassDevice& device, const GlowPlan& plan, const img::Image& scene,
+img::Image last_frame(PassDevice& device, const EffectPlan& plan, const img::Image& scene,
                       unsigned frames, const std::string& texture) {
   img::Image last;
-  const GlowFrames run = run_glow_frames(plan, scene, device, frames, {texture},
-                                         [&](unsigned f, const ImageMap& images) {
-                                           if (f + 1 == frames) last = images.at(texture);
-                                           return ir::ok_status();
-                                         });
+  const EffectFrames run = run_effect_frames(plan, scene, device, frames, {texture},
+                                             [&](unsigned f, const ImageMap& images) {
+                                               if (f + 1 == frames) last = images.at(texture);
+                                               return ir::ok_status();
+                                             });
   EXPECT_TRUE(run.run.ok()) << run.run.message();
   return last;
 }
@@ -111,7 +111,7 @@ void sources_series(PassDevice& device) {
   const img::Image scene = test_scene(img::Format::RGBA32F);
   const PlanResult plan_built = build_glow(params(Afterimage::Sources, g, img::Format::RGBA32F));
   ASSERT_TRUE(plan_built) << plan_built.message();
-  const GlowPlan& plan = *plan_built;
+  const EffectPlan& plan = *plan_built;
   const img::Image fed = last_frame(device, plan, scene, n, std::string(kFedTexture));
   std::vector<double> want = sources(scene);
   for (double& v : want) v *= (1 - std::pow(g, n)) / (1 - g);
@@ -125,7 +125,7 @@ void glow_steady_state(PassDevice& device) {
   const img::Image scene = test_scene(img::Format::RGBA32F);
   const PlanResult plan_built = build_glow(params(Afterimage::Glow, g, img::Format::RGBA32F));
   ASSERT_TRUE(plan_built) << plan_built.message();
-  const GlowPlan& plan = *plan_built;
+  const EffectPlan& plan = *plan_built;
   // y = B(I − gB)⁻¹x: z = (I − gB)⁻¹x by z ← x + g·B z until it stops changing.
   const std::vector<double> x = sources(scene);
   std::vector<double> z = x;
@@ -142,11 +142,11 @@ void glow_steady_state(PassDevice& device) {
 void rgba8_stall(PassDevice& device, Tier tier) {
   const double g = 0.8;
   const img::Image scene = test_scene(img::Format::RGBA8);
-  GlowParams p = params(Afterimage::Sources, g, img::Format::RGBA8);
+  EffectParams p = params(Afterimage::Sources, g, img::Format::RGBA8);
   p.tier = tier;
   const PlanResult plan_built = build_glow(p);
   ASSERT_TRUE(plan_built) << plan_built.message();
-  const GlowPlan& plan = *plan_built;
+  const EffectPlan& plan = *plan_built;
   const img::Image fed = last_frame(device, plan, scene, 40, std::string(kFedTexture));
   int checked = 0;
   for (uint32_t y = 0; y < kH; ++y)
@@ -168,16 +168,16 @@ void rgba8_stall(PassDevice& device, Tier tier) {
 // 0, 0.5, 1, 1.5, 2 over frames 1..5 (and the glow the same every frame).
 void ramped_intensity(PassDevice& device) {
   const img::Image scene = test_scene(img::Format::RGBA32F);
-  GlowParams p = params(Afterimage::Off, 0, img::Format::RGBA32F);
+  EffectParams p = params(Afterimage::Off, 0, img::Format::RGBA32F);
   p.intensity_ramp.points = {{1, 0.0}, {5, 2.0}};
   p.intensity = 0;
   const PlanResult plan_built = build_glow(p);
   ASSERT_TRUE(plan_built) << plan_built.message();
-  const GlowPlan& plan = *plan_built;
+  const EffectPlan& plan = *plan_built;
   const double want[] = {0, 0.5, 1, 1.5, 2};
   unsigned seen = 0;
   const std::string final_name(kFinalTexture), glow_name(kGlowTexture);
-  const GlowFrames run = run_glow_frames(
+  const EffectFrames run = run_effect_frames(
       plan, scene, device, 7, {final_name, glow_name}, [&](unsigned f, const ImageMap& images) {
         const img::Image& fin = images.at(final_name);
         const img::Image& glow = images.at(glow_name);
@@ -250,10 +250,10 @@ TEST(Afterimage, Rgba8StallLevelMatchesASearch) {
 }
 
 TEST(Afterimage, WarningsNameRunawayAndStall) {
-  GlowParams p = params(Afterimage::Glow, 1.5, img::Format::RGBA8);
+  EffectParams p = params(Afterimage::Glow, 1.5, img::Format::RGBA8);
   PlanResult plan_built = build_glow(p);
   ASSERT_TRUE(plan_built) << plan_built.message();
-  GlowPlan& plan = *plan_built;
+  EffectPlan& plan = *plan_built;
   std::vector<std::string> w = afterimage_warnings(p, plan.taps);
   ASSERT_EQ(w.size(), 1u);
   EXPECT_NE(w[0].find("runs away (to a white screen)"), std::string::npos) << w[0];

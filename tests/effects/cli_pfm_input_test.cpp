@@ -30,7 +30,7 @@ protected:
         .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
     return path;
   }
-  Image run_glow(const fs::path& input, const std::string& out_name) {
+  Image run_effect(const fs::path& input, const std::string& out_name) {
     std::string out, err;
     const fs::path o = dir / out_name;
     EXPECT_EQ(
@@ -49,8 +49,8 @@ protected:
 // three ways (the agreement above includes the double-precision analytic model): the glow is
 // linear in its sources, with nothing clamped to 1 on the way.
 TEST_F(CliPfmInput, HdrTexelGivesAProportionalGlow) {
-  const Image unit = run_glow(one_texel("unit.pfm", 1.0f), "unit");
-  const Image hdr = run_glow(one_texel("hdr.pfm", 6e4f), "hdr");
+  const Image unit = run_effect(one_texel("unit.pfm", 1.0f), "unit");
+  const Image hdr = run_effect(one_texel("hdr.pfm", 6e4f), "hdr");
   ASSERT_EQ(unit.rgba.size(), hdr.rgba.size());
   ASSERT_FALSE(unit.rgba.empty());
   double peak = 0;

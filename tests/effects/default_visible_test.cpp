@@ -22,16 +22,16 @@ constexpr int kRingFrom = 8, kRingTo = 24;
 
 // The share of the ring around the lights whose final frame differs from the scene by more
 // than 8/255 in some channel.
-double visible_share(const GlowParams& p) {
+double visible_share(const EffectParams& p) {
   const img::Image scene = make_default_scene(p.width, p.height);
   PlanResult plan_built = build_glow(p);
   if (!plan_built) {
     ADD_FAILURE() << plan_built.message();
     return 0;
   }
-  GlowPlan& plan = *plan_built;
+  EffectPlan& plan = *plan_built;
   CpuPassDevice cpu;
-  GlowRun run = run_glow(plan, scene, cpu);
+  EffectRun run = run_effect(plan, scene, cpu);
   EXPECT_TRUE(run.run.ok()) << run.run.message();
   const img::Image& fin = run.images.at(std::string(kFinalTexture));
   const int w = int(p.width), h = int(p.height);
@@ -65,7 +65,7 @@ double visible_share(const GlowParams& p) {
 }
 
 TEST(DefaultGlow, IsVisibleAroundTheLights) {
-  const GlowParams p; // the defaults: 1280×720, dx9, σ 16 px, downsample 4, intensity 3
+  const EffectParams p; // the defaults: 1280×720, dx9, σ 16 px, downsample 4, intensity 3
   const double share = visible_share(p);
   std::printf("[default glow] %.1f %% of the ring around the lights changes by > 8/255\n",
               100 * share);
@@ -73,7 +73,7 @@ TEST(DefaultGlow, IsVisibleAroundTheLights) {
 }
 
 TEST(DefaultGlow, TheOldDefaultWasNot) {
-  GlowParams p;
+  EffectParams p;
   p.profile.terms = {{8.0, 0.7}, {1.5, 0.3}};
   p.downsample = 2;
   p.intensity = 1;

@@ -177,7 +177,7 @@ std::vector<double> expected_glow(const img::Image& scene, const std::vector<Blu
 TEST(Dx7Glow, InterpreterEqualsTheConvolutionWithTheQuantisedWeights) {
   for (WeightRounding r : {WeightRounding::Plain, WeightRounding::ErrorCarry}) {
     SCOPED_TRACE(std::string(weight_rounding_name(r)));
-    GlowParams p;
+    EffectParams p;
     p.tier = Tier::Dx7;
     p.downsample = 1;
     p.weight_rounding = r;
@@ -186,12 +186,12 @@ TEST(Dx7Glow, InterpreterEqualsTheConvolutionWithTheQuantisedWeights) {
         test_scenes::make_scene(test_scenes::Scene::RandomAlpha, p.width, p.height);
     PlanResult plan_built = build_glow(p);
     ASSERT_TRUE(plan_built) << plan_built.message();
-    GlowPlan& plan = *plan_built;
+    EffectPlan& plan = *plan_built;
     ASSERT_EQ(plan.weight_bytes.size(), plan.taps.size());
     EXPECT_EQ(plan.blur_passes_per_axis, (plan.taps.size() + 1) / 2);
     EXPECT_FALSE(plan.quantization.empty());
     CpuPassDevice cpu(2);
-    GlowRun run = run_glow(plan, scene, cpu, false);
+    EffectRun run = run_effect(plan, scene, cpu, false);
     ASSERT_TRUE(run.run.ok()) << run.run.message();
     const img::Image& glow = run.images.at(std::string(kGlowTexture));
     const std::vector<double> want = expected_glow(scene, plan.taps, plan.weight_bytes);
@@ -204,7 +204,7 @@ TEST(Dx7Glow, InterpreterEqualsTheConvolutionWithTheQuantisedWeights) {
 }
 
 TEST(Dx7Glow, PlainRoundingOfTheDx7SceneKernelIsDarker) {
-  GlowParams p;
+  EffectParams p;
   p.tier = Tier::Dx7;
   p.downsample = 2;
   p.profile.terms = {{24, 0.8}, {3, 0.2}}; // listings/scenes/dx7*.json
@@ -213,7 +213,7 @@ TEST(Dx7Glow, PlainRoundingOfTheDx7SceneKernelIsDarker) {
   p.weight_rounding = WeightRounding::ErrorCarry;
   const PlanResult carry_built = build_glow(p);
   ASSERT_TRUE(plain_built && carry_built);
-  const GlowPlan &plain = *plain_built, &carry = *carry_built;
+  const EffectPlan &plain = *plain_built, &carry = *carry_built;
   unsigned sp = 0, sc = 0;
   for (uint8_t b : plain.weight_bytes) sp += b;
   for (uint8_t b : carry.weight_bytes) sc += b;
@@ -231,7 +231,7 @@ TEST(Dx7Glow, ABadStageStateFileNamedByTheSceneIsAPositionedError) {
                f);
     std::fclose(f);
   }
-  GlowParams p;
+  EffectParams p;
   p.tier = Tier::Dx7;
   p.listing_files[std::string(kDx7BlurStates)] = path;
   const PlanResult plan = build_glow(p);

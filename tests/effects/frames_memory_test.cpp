@@ -36,9 +36,9 @@ EffectGraph accumulate_graph(uint32_t w, uint32_t h) {
   p.vs = vs ? *vs : nullptr;
   p.ps = ps ? *ps : nullptr;
   // Point reads at texel centres: offset ½ texel (c0), scale 1 (c4).
-  p.vs_constants.assign(8, cpu::Vec4{0, 0, 0, 0});
-  p.vs_constants[0] = {0.5f / float(w), 0.5f / float(h), 0, 0};
-  p.vs_constants[4] = {1, 1, 0, 0};
+  p.vs_constants.f.assign(8, cpu::Vec4{0, 0, 0, 0});
+  p.vs_constants.f[0] = {0.5f / float(w), 0.5f / float(h), 0, 0};
+  p.vs_constants.f[4] = {1, 1, 0, 0};
   cpu::SamplerState s;
   s.address_u = s.address_v = cpu::AddressMode::Clamp;
   p.textures = {{0, "scene", s}};
@@ -82,20 +82,20 @@ TEST_F(FramesVulkan, TexturesCarryIntoTheNextFrame) {
 
 // The glow's every texture is first written by a replacing pass: frame N is frame 1.
 TEST_F(FramesVulkan, GlowFramesRepeatTheSingleRun) {
-  GlowParams p;
+  EffectParams p;
   p.width = 96;
   p.height = 48;
   p.downsample = 2;
   p.format = img::Format::RGBA8;
   const PlanResult plan_built = build_glow(p);
   ASSERT_TRUE(plan_built) << plan_built.message();
-  const GlowPlan& plan = *plan_built;
+  const EffectPlan& plan = *plan_built;
   const img::Image scene = make_default_scene(p.width, p.height, p.format);
   CpuPassDevice cpu(2);
-  const GlowRun once = run_glow(plan, scene, cpu);
+  const EffectRun once = run_effect(plan, scene, cpu);
   ASSERT_TRUE(once.run.ok()) << once.run.message();
   auto vk = make_vulkan_pass_device(*dev);
-  const GlowFrames frames = run_glow_frames(plan, scene, *vk, 4);
+  const EffectFrames frames = run_effect_frames(plan, scene, *vk, 4);
   ASSERT_TRUE(frames.run.ok()) << frames.run.message();
   const std::string final_name(kFinalTexture);
   EXPECT_EQ(frames.images.at(final_name).rgba, once.images.at(final_name).rgba);

@@ -1,4 +1,4 @@
-// The rendering context in scenes: "glow_image" and "glow"/"fog" are read into GlowParams,
+// The rendering context in scenes: "glow_image" and "glow"/"fog" are read into EffectParams,
 // every bad value is a positioned diagnostic at its field (caret under the column), and the
 // two shipped scenes (glow-fog.json, glow-context.json) agree three ways on tiers dx9 and
 // dx8 at docs/design.md's targets, as does a glow image fogged toward a colour in RGBA8.
@@ -100,7 +100,7 @@ TEST_P(GlowContextShipped, EveryPairAgreesOnEveryPass) {
   s->params.tier = GetParam().tier;
   const PlanResult plan_built = build_scene_effect(*s);
   ASSERT_TRUE(plan_built) << plan_built.message();
-  const GlowPlan& plan = *plan_built;
+  const EffectPlan& plan = *plan_built;
   img::ImageResult scene = load_scene_image(*s);
   ASSERT_TRUE(scene) << scene.message();
   test_ways::ThreeDevices devices(*dev);

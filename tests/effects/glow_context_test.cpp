@@ -28,8 +28,8 @@ constexpr std::array<double, kW> kDepth{0.0, 0.2, 0.35, 0.5, 0.65, 0.8, 0.9, 1.0
 constexpr std::array<double, 3> kFog{0.1, 0.2, 0.3};
 
 // One tap of weight 1 at full resolution: glow = sources, texel for texel.
-GlowParams one_tap(Tier tier) {
-  GlowParams p;
+EffectParams one_tap(Tier tier) {
+  EffectParams p;
   p.tier = tier;
   p.width = kW, p.height = kH;
   p.downsample = 1;
@@ -51,28 +51,28 @@ img::Image source_image() {
 }
 
 struct Ways {
-  GlowPlan plan;
-  std::vector<std::pair<std::string, GlowRun>> runs;
+  EffectPlan plan;
+  std::vector<std::pair<std::string, EffectRun>> runs;
 };
 
 class GlowContext3 : public vulkan::test::VulkanTest, public ::testing::WithParamInterface<Tier> {
 protected:
   // p's plan on the three ways over `scene`; nothing (the failure recorded) when p does not
   // build.
-  std::optional<Ways> run_all(const GlowParams& p, const img::Image& scene) {
+  std::optional<Ways> run_all(const EffectParams& p, const img::Image& scene) {
     PlanResult plan_built = build_glow(p);
     if (!plan_built) {
       ADD_FAILURE() << plan_built.message();
       return std::nullopt;
     }
     Ways w{std::move(*plan_built), {}};
-    const GlowPlan& plan = w.plan;
+    const EffectPlan& plan = w.plan;
     CpuPassDevice cpu_dev(1);
     AnalyticPassDevice analytic;
     auto vk = make_vulkan_pass_device(*dev);
-    w.runs.emplace_back("cpu", run_glow(plan, scene, cpu_dev));
-    w.runs.emplace_back("vulkan", run_glow(plan, scene, *vk));
-    w.runs.emplace_back("analytic", run_glow(plan, scene, analytic));
+    w.runs.emplace_back("cpu", run_effect(plan, scene, cpu_dev));
+    w.runs.emplace_back("vulkan", run_effect(plan, scene, *vk));
+    w.runs.emplace_back("analytic", run_effect(plan, scene, analytic));
     for (const auto& [name, r] : w.runs) EXPECT_TRUE(r.run.ok()) << name << ": " << r.run.message();
     EXPECT_TRUE(dev->messages().empty()) << dev->messages().front();
     return w;
@@ -112,7 +112,7 @@ void expect_glow(const Ways& w, const img::Image& scene, Tier tier, const Expect
 }
 
 TEST_P(GlowContext3, FogFadesEachSourceByTheLinearFogFraction) {
-  GlowParams p = one_tap(GetParam());
+  EffectParams p = one_tap(GetParam());
   p.context.fog.on = true;
   p.context.fog.start = kStart, p.context.fog.end = kEnd;
   p.context.fog.color = kFog;
@@ -142,7 +142,7 @@ TEST_P(GlowContext3, FogFadesEachSourceByTheLinearFogFraction) {
 }
 
 TEST_P(GlowContext3, BuiltInFloorFogsTheTopRows) {
-  GlowParams p = one_tap(GetParam());
+  EffectParams p = one_tap(GetParam());
   p.context.fog.on = true;
   p.context.fog.start = 0.25, p.context.fog.end = 0.75; // black fog
   const img::Image scene = source_image();
@@ -157,7 +157,7 @@ TEST_P(GlowContext3, BuiltInFloorFogsTheTopRows) {
 }
 
 TEST_P(GlowContext3, GlowImageGlowsWhereTheSceneAlphaIsZero) {
-  GlowParams p = one_tap(GetParam());
+  EffectParams p = one_tap(GetParam());
   img::Image scene = source_image();
   for (size_t i = 3; i < scene.rgba.size(); i += 4) scene.rgba[i] = 0; // nothing glows here
   auto glow = std::make_shared<img::Image>(kW, kH); // zero: no glow but at two texels
@@ -184,11 +184,11 @@ INSTANTIATE_TEST_SUITE_P(Tiers, GlowContext3, ::testing::Values(Tier::Dx9, Tier:
                          });
 
 TEST(GlowContext, MemoryPlanCountsTheCarriedInputs) {
-  GlowParams plain = one_tap(Tier::Dx9), fogged = plain;
+  EffectParams plain = one_tap(Tier::Dx9), fogged = plain;
   fogged.context.fog.on = true;
   const PlanResult a_built = build_glow(plain), b_built = build_glow(fogged);
   ASSERT_TRUE(a_built && b_built) << a_built.message() << b_built.message();
-  const GlowPlan &a = *a_built, &b = *b_built;
+  const EffectPlan &a = *a_built, &b = *b_built;
   const uint64_t texture = uint64_t{kW} * kH * 16; // one RGBA32F texture of the scene's size
   // The depth texture three times: the image the graph carries, the device's own and the
   // one the run hands back (the largest pass, extract or composite, reads three textures
@@ -206,7 +206,7 @@ TEST(GlowContext, FogConstantsAndTheirPs1xLimit) {
   EXPECT_EQ(fog_ps1x_limit(fog), "");
   fog.start = 0.7; // 0.1 deep: a slope of 2.5 per unit after _x4 does not fit
   EXPECT_NE(fog_ps1x_limit(fog).find("end − start >= 0.25"), std::string::npos);
-  GlowParams p;
+  EffectParams p;
   p.tier = Tier::Dx8;
   p.context.fog = fog;
   p.context.fog.on = true;

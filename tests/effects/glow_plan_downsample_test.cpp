@@ -16,13 +16,13 @@ namespace {
 
 using plan_test::pass_names;
 
-GlowPlan plan_for(unsigned n, Tier tier = Tier::Dx9, uint32_t w = 128, uint32_t h = 64) {
-  GlowParams p = plan_test::sized(n, w, h);
+EffectPlan plan_for(unsigned n, Tier tier = Tier::Dx9, uint32_t w = 128, uint32_t h = 64) {
+  EffectParams p = plan_test::sized(n, w, h);
   p.tier = tier;
   return plan_test::expect_built(build_glow(p));
 }
 
-std::vector<const PassDesc*> downsample_passes(const GlowPlan& plan) {
+std::vector<const PassDesc*> downsample_passes(const EffectPlan& plan) {
   std::vector<const PassDesc*> v;
   for (const PassDesc& d : plan.graph.passes)
     if (d.name.rfind("downsample.", 0) == 0) v.push_back(&d);
@@ -35,7 +35,7 @@ std::vector<const PassDesc*> downsample_passes(const GlowPlan& plan) {
 // c(k+4)·i·W/gw + ck·W, which must be N·i + (texel centre of the block: a + ½). Over all
 // passes, every texel (a, b) of the N×N block is read exactly once with weight 1/N², and
 // the padding reads weigh 0. `stages`: how many stages the sources are bound to.
-void expect_box_average(const GlowPlan& plan, unsigned n, uint32_t w, uint32_t h, size_t stages) {
+void expect_box_average(const EffectPlan& plan, unsigned n, uint32_t w, uint32_t h, size_t stages) {
   const std::vector<const PassDesc*> ds = downsample_passes(plan);
   ASSERT_EQ(ds.size(), (n * n + 3) / 4) << n;
   const double su = double(n) * plan.glow_width / w, sv = double(n) * plan.glow_height / h;
@@ -46,8 +46,8 @@ void expect_box_average(const GlowPlan& plan, unsigned n, uint32_t w, uint32_t h
     EXPECT_EQ(d.name, "downsample." + std::to_string(i));
     EXPECT_EQ(d.target, kSmallTexture);
     EXPECT_EQ(d.blend, i == 0 ? pass::BlendMode::Replace : pass::BlendMode::OneOne);
-    ASSERT_EQ(d.vs_constants.size(), 8u);
-    ASSERT_EQ(d.ps_constants.size(), 4u);
+    ASSERT_EQ(d.vs_constants.f.size(), 8u);
+    ASSERT_EQ(d.ps_constants.f.size(), 4u);
     ASSERT_EQ(d.textures.size(), stages);
     for (size_t t = 0; t < stages; ++t) {
       EXPECT_EQ(d.textures[t].stage, uint32_t(t));
@@ -55,14 +55,14 @@ void expect_box_average(const GlowPlan& plan, unsigned n, uint32_t w, uint32_t h
       EXPECT_EQ(d.textures[t].sampler.filter, pass::Filter::Point);
     }
     for (size_t k = 0; k < 4; ++k) {
-      const float weight = d.ps_constants[k][0];
-      for (int c = 1; c < 4; ++c) EXPECT_EQ(d.ps_constants[k][c], weight) << k;
+      const float weight = d.ps_constants.f[k][0];
+      for (int c = 1; c < 4; ++c) EXPECT_EQ(d.ps_constants.f[k][c], weight) << k;
       if (weight == 0) continue; // padding: adds exactly 0 wherever it reads
       EXPECT_FLOAT_EQ(weight, 1.0f / float(n * n)) << k;
-      EXPECT_FLOAT_EQ(d.vs_constants[k + 4][0], float(su)) << k;
-      EXPECT_FLOAT_EQ(d.vs_constants[k + 4][1], float(sv)) << k;
+      EXPECT_FLOAT_EQ(d.vs_constants.f[k + 4][0], float(su)) << k;
+      EXPECT_FLOAT_EQ(d.vs_constants.f[k + 4][1], float(sv)) << k;
       // The position within the block, in texels: a texel centre a + ½ (to fp32 precision).
-      const double px = double(d.vs_constants[k][0]) * w, py = double(d.vs_constants[k][1]) * h;
+      const double px = double(d.vs_constants.f[k][0]) * w, py = double(d.vs_constants.f[k][1]) * h;
       const double ax = px - 0.5, ay = py - 0.5;
       EXPECT_NEAR(ax, std::round(ax), 1e-4) << k;
       EXPECT_NEAR(ay, std::round(ay), 1e-4) << k;
@@ -70,16 +70,16 @@ void expect_box_average(const GlowPlan& plan, unsigned n, uint32_t w, uint32_t h
       ASSERT_TRUE(a >= 0 && a < long(n) && b >= 0 && b < long(n)) << a << "," << b;
       ++hits[size_t(b) * n + size_t(a)];
       // Pixel 3 of the small target reads texel 3N + a: the scale maps uv 3/gw to 3N/W.
-      const double at3 = double(d.vs_constants[k + 4][0]) * 3.0 / plan.glow_width * w + px;
+      const double at3 = double(d.vs_constants.f[k + 4][0]) * 3.0 / plan.glow_width * w + px;
       EXPECT_EQ(long(std::floor(at3)), long(3 * n) + a) << k;
     }
   }
   for (unsigned t = 0; t < n * n; ++t) EXPECT_EQ(hits[t], 1) << "texel " << t % n << "," << t / n;
 }
 
-TEST(GlowPlan, DownsampleTwo) {
+TEST(EffectPlan, DownsampleTwo) {
   // σ 4 texels → R = 12, 25 taps, 4 passes per axis; one downsample pass of four reads.
-  GlowPlan plan = plan_for(2);
+  EffectPlan plan = plan_for(2);
   EXPECT_EQ(plan.taps.size(), 25u);
   EXPECT_EQ(plan.blur_passes_per_axis, 4u);
   std::vector<std::string> want{"extract",  "downsample.0", "blur_h.0", "blur_h.1",
@@ -96,11 +96,11 @@ TEST(GlowPlan, DownsampleTwo) {
   const float xs[4] = {0.5f / 128, 1.5f / 128, 0.5f / 128, 1.5f / 128};
   const float ys[4] = {0.5f / 64, 0.5f / 64, 1.5f / 64, 1.5f / 64};
   for (int k = 0; k < 4; ++k) {
-    EXPECT_FLOAT_EQ(ds.vs_constants[k][0], xs[k]) << k;
-    EXPECT_FLOAT_EQ(ds.vs_constants[k][1], ys[k]) << k;
-    EXPECT_EQ(ds.vs_constants[k + 4][0], 1.0f) << k;
-    EXPECT_EQ(ds.vs_constants[k + 4][1], 1.0f) << k;
-    EXPECT_EQ(ds.ps_constants[k][0], 0.25f) << k;
+    EXPECT_FLOAT_EQ(ds.vs_constants.f[k][0], xs[k]) << k;
+    EXPECT_FLOAT_EQ(ds.vs_constants.f[k][1], ys[k]) << k;
+    EXPECT_EQ(ds.vs_constants.f[k + 4][0], 1.0f) << k;
+    EXPECT_EQ(ds.vs_constants.f[k + 4][1], 1.0f) << k;
+    EXPECT_EQ(ds.ps_constants.f[k][0], 0.25f) << k;
   }
   EXPECT_EQ(ds.blend, pass::BlendMode::Replace);
   ASSERT_EQ(ds.textures.size(), 1u); // ps_2_0: every read through s0
@@ -108,9 +108,9 @@ TEST(GlowPlan, DownsampleTwo) {
   expect_box_average(plan, 2, 128, 64, 1);
 }
 
-TEST(GlowPlan, DownsampleFour) {
+TEST(EffectPlan, DownsampleFour) {
   // σ 2 texels → R = 6, 13 taps, 2 passes per axis; 16 reads of weight 1/16 in 4 passes.
-  GlowPlan plan = plan_for(4);
+  EffectPlan plan = plan_for(4);
   EXPECT_EQ(plan.taps.size(), 13u);
   EXPECT_EQ(plan.graph.passes.size(), 10u); // extract, 4 downsample, 2 + 2 blur, composite
   EXPECT_EQ(plan.glow_width, 32u);
@@ -121,18 +121,18 @@ TEST(GlowPlan, DownsampleFour) {
     EXPECT_EQ(ds.name, "downsample." + std::to_string(i));
     EXPECT_EQ(ds.blend, i == 0 ? pass::BlendMode::Replace : pass::BlendMode::OneOne) << i;
     for (int k = 0; k < 4; ++k) {
-      EXPECT_FLOAT_EQ(ds.vs_constants[k][0], (k + 0.5f) / 128) << i << " " << k;
-      EXPECT_FLOAT_EQ(ds.vs_constants[k][1], (i + 0.5f) / 64) << i << " " << k;
-      EXPECT_EQ(ds.vs_constants[k + 4][0], 1.0f); // 4·32/128
-      EXPECT_EQ(ds.ps_constants[k][2], 0.0625f) << i << " " << k;
+      EXPECT_FLOAT_EQ(ds.vs_constants.f[k][0], (k + 0.5f) / 128) << i << " " << k;
+      EXPECT_FLOAT_EQ(ds.vs_constants.f[k][1], (i + 0.5f) / 64) << i << " " << k;
+      EXPECT_EQ(ds.vs_constants.f[k + 4][0], 1.0f); // 4·32/128
+      EXPECT_EQ(ds.ps_constants.f[k][2], 0.0625f) << i << " " << k;
     }
   }
   EXPECT_EQ(plan.graph.passes[5].name, "blur_h.0");
   expect_box_average(plan, 4, 128, 64, 1);
 }
 
-TEST(GlowPlan, DownsampleThreeRoundsUpAndScales) {
-  GlowPlan plan = plan_for(3);
+TEST(EffectPlan, DownsampleThreeRoundsUpAndScales) {
+  EffectPlan plan = plan_for(3);
   EXPECT_EQ(plan.glow_width, 43u); // ceil(128 / 3)
   EXPECT_EQ(plan.glow_height, 22u);
   // Nine reads, four a pass: 4 + 4 + 1, the last pass padded with three reads of weight 0.
@@ -140,21 +140,21 @@ TEST(GlowPlan, DownsampleThreeRoundsUpAndScales) {
   EXPECT_EQ(std::vector<std::string>(names.begin() + 1, names.begin() + 5),
             (std::vector<std::string>{"downsample.0", "downsample.1", "downsample.2", "blur_h.0"}));
   const PassDesc &d0 = plan.graph.passes[1], &d2 = plan.graph.passes[3];
-  EXPECT_FLOAT_EQ(d0.vs_constants[4][0], 129.0f / 128); // 3·43/128
-  EXPECT_FLOAT_EQ(d0.vs_constants[4][1], 66.0f / 64);   // 3·22/64
-  EXPECT_FLOAT_EQ(d0.vs_constants[2][0], 2.5f / 128);   // read 2: texel (2, 0)
-  EXPECT_FLOAT_EQ(d0.vs_constants[3][0], 0.5f / 128);   // read 3: texel (0, 1)
-  EXPECT_FLOAT_EQ(d0.vs_constants[3][1], 1.5f / 64);
-  EXPECT_FLOAT_EQ(d0.ps_constants[0][0], 1.0f / 9);
-  EXPECT_FLOAT_EQ(d2.vs_constants[0][0], 2.5f / 128); // read 8: texel (2, 2)
-  EXPECT_FLOAT_EQ(d2.vs_constants[0][1], 2.5f / 64);
-  EXPECT_FLOAT_EQ(d2.ps_constants[0][0], 1.0f / 9);
-  for (int k = 1; k < 4; ++k) EXPECT_EQ(d2.ps_constants[k][0], 0.0f) << k;
+  EXPECT_FLOAT_EQ(d0.vs_constants.f[4][0], 129.0f / 128); // 3·43/128
+  EXPECT_FLOAT_EQ(d0.vs_constants.f[4][1], 66.0f / 64);   // 3·22/64
+  EXPECT_FLOAT_EQ(d0.vs_constants.f[2][0], 2.5f / 128);   // read 2: texel (2, 0)
+  EXPECT_FLOAT_EQ(d0.vs_constants.f[3][0], 0.5f / 128);   // read 3: texel (0, 1)
+  EXPECT_FLOAT_EQ(d0.vs_constants.f[3][1], 1.5f / 64);
+  EXPECT_FLOAT_EQ(d0.ps_constants.f[0][0], 1.0f / 9);
+  EXPECT_FLOAT_EQ(d2.vs_constants.f[0][0], 2.5f / 128); // read 8: texel (2, 2)
+  EXPECT_FLOAT_EQ(d2.vs_constants.f[0][1], 2.5f / 64);
+  EXPECT_FLOAT_EQ(d2.ps_constants.f[0][0], 1.0f / 9);
+  for (int k = 1; k < 4; ++k) EXPECT_EQ(d2.ps_constants.f[k][0], 0.0f) << k;
   expect_box_average(plan, 3, 128, 64, 1);
 }
 
 TEST(GlowPlanDx8, DownsampleFourUsesFourPassesOfFourReads) {
-  GlowPlan plan = plan_for(4, Tier::Dx8);
+  EffectPlan plan = plan_for(4, Tier::Dx8);
   ASSERT_FALSE(plan.graph.passes.empty());
   // Pass i reads row i of the 4 × 4 block, t0..t3 on stages 0..3, weight 1/16 each.
   for (int i = 0; i < 4; ++i) {
@@ -162,9 +162,9 @@ TEST(GlowPlanDx8, DownsampleFourUsesFourPassesOfFourReads) {
     EXPECT_EQ(ds.name, "downsample." + std::to_string(i));
     EXPECT_TRUE(ir::is_ps11_13(ds.ps->profile)) << i;
     for (int k = 0; k < 4; ++k) {
-      EXPECT_FLOAT_EQ(ds.vs_constants[k][0], (k + 0.5f) / 128) << i << " " << k;
-      EXPECT_FLOAT_EQ(ds.vs_constants[k][1], (i + 0.5f) / 64) << i << " " << k;
-      EXPECT_EQ(ds.ps_constants[k][0], 0.0625f) << i << " " << k;
+      EXPECT_FLOAT_EQ(ds.vs_constants.f[k][0], (k + 0.5f) / 128) << i << " " << k;
+      EXPECT_FLOAT_EQ(ds.vs_constants.f[k][1], (i + 0.5f) / 64) << i << " " << k;
+      EXPECT_EQ(ds.ps_constants.f[k][0], 0.0625f) << i << " " << k;
     }
   }
   expect_box_average(plan, 4, 128, 64, 4);
@@ -174,7 +174,7 @@ TEST(GlowPlanDx8, DownsampleTwoAndThreeAreBoxAverages) {
   // One stage per read (t0..t3 read stages 0..3), both on odd sizes.
   for (unsigned n : {2u, 3u}) {
     SCOPED_TRACE(n);
-    GlowPlan plan = plan_for(n, Tier::Dx8, 45, 27);
+    EffectPlan plan = plan_for(n, Tier::Dx8, 45, 27);
     ASSERT_FALSE(plan.graph.passes.empty());
     expect_box_average(plan, n, 45, 27, 4);
   }

@@ -19,8 +19,8 @@ inline BlurProfile two_gaussians() {
   return p;
 }
 
-inline GlowParams sized(unsigned downsample, uint32_t w, uint32_t h) {
-  GlowParams p;
+inline EffectParams sized(unsigned downsample, uint32_t w, uint32_t h) {
+  EffectParams p;
   p.width = w;
   p.height = h;
   p.downsample = downsample;
@@ -29,7 +29,7 @@ inline GlowParams sized(unsigned downsample, uint32_t w, uint32_t h) {
 }
 
 // The plan, or (a failure recorded) an empty one.
-inline GlowPlan expect_built(PlanResult plan) {
+inline EffectPlan expect_built(PlanResult plan) {
   if (!plan) {
     ADD_FAILURE() << plan.message();
     return {};
@@ -37,7 +37,7 @@ inline GlowPlan expect_built(PlanResult plan) {
   return std::move(*plan);
 }
 
-inline std::vector<std::string> pass_names(const GlowPlan& plan) {
+inline std::vector<std::string> pass_names(const EffectPlan& plan) {
   std::vector<std::string> v;
   for (const PassDesc& d : plan.graph.passes) v.push_back(d.name);
   return v;

@@ -21,15 +21,15 @@ BlurProfile one_gaussian(double sigma, double weight) {
 
 using plan_test::pass_names;
 
-GlowPlan plan_for(unsigned n, bool half = true, uint32_t w = 128, uint32_t h = 64) {
-  GlowParams p = plan_test::sized(n, w, h);
+EffectPlan plan_for(unsigned n, bool half = true, uint32_t w = 128, uint32_t h = 64) {
+  EffectParams p = plan_test::sized(n, w, h);
   p.half_texel = half;
   return plan_test::expect_built(build_glow_dx9(p));
 }
 
-TEST(GlowPlan, DownsampleOne) {
+TEST(EffectPlan, DownsampleOne) {
   // σ 8 px → R = 24, 49 taps, 7 passes per axis; no downsample pass.
-  GlowPlan plan = plan_for(1);
+  EffectPlan plan = plan_for(1);
   EXPECT_EQ(plan.taps.size(), 49u);
   EXPECT_EQ(plan.blur_passes_per_axis, 7u);
   EXPECT_EQ(plan.graph.passes.size(), 16u);
@@ -41,20 +41,20 @@ TEST(GlowPlan, DownsampleOne) {
 
 // Every downsample pass of a plan: point reads of the sources into the small target, four
 // a pass, the first replacing and the others adding (ONE/ONE).
-TEST(GlowPlan, BlurOffsetsCarryTheHalfTexel) {
-  GlowPlan plan = plan_for(2);
+TEST(EffectPlan, BlurOffsetsCarryTheHalfTexel) {
+  EffectPlan plan = plan_for(2);
   const PassDesc& h0 = plan.graph.passes[2];
   EXPECT_EQ(h0.blend, pass::BlendMode::Replace);
-  EXPECT_FLOAT_EQ(h0.vs_constants[0][0], -11.5f / 64); // tap −12 + ½ on a 64-wide texture
-  EXPECT_FLOAT_EQ(h0.vs_constants[0][1], 0.5f / 32);
-  EXPECT_FLOAT_EQ(h0.vs_constants[7][0], -4.5f / 64);
+  EXPECT_FLOAT_EQ(h0.vs_constants.f[0][0], -11.5f / 64); // tap −12 + ½ on a 64-wide texture
+  EXPECT_FLOAT_EQ(h0.vs_constants.f[0][1], 0.5f / 32);
+  EXPECT_FLOAT_EQ(h0.vs_constants.f[7][0], -4.5f / 64);
   const PassDesc& h3 = plan.graph.passes[5];
   EXPECT_EQ(h3.blend, pass::BlendMode::OneOne);
-  EXPECT_FLOAT_EQ(h3.vs_constants[0][0], 12.5f / 64); // the 25th tap, then padding
-  for (int k = 1; k < 8; ++k) EXPECT_EQ(h3.ps_constants[k][0], 0.0f);
+  EXPECT_FLOAT_EQ(h3.vs_constants.f[0][0], 12.5f / 64); // the 25th tap, then padding
+  for (int k = 1; k < 8; ++k) EXPECT_EQ(h3.ps_constants.f[k][0], 0.0f);
   const PassDesc& v0 = plan.graph.passes[6];
-  EXPECT_FLOAT_EQ(v0.vs_constants[0][0], 0.5f / 64);
-  EXPECT_FLOAT_EQ(v0.vs_constants[0][1], -11.5f / 32);
+  EXPECT_FLOAT_EQ(v0.vs_constants.f[0][0], 0.5f / 64);
+  EXPECT_FLOAT_EQ(v0.vs_constants.f[0][1], -11.5f / 32);
   EXPECT_EQ(v0.textures[0].texture, kBlurHTexture);
   EXPECT_EQ(v0.target, kGlowTexture);
   // Every tap on a texel centre: point filtering (bilinear there is the texel itself).
@@ -64,11 +64,11 @@ TEST(GlowPlan, BlurOffsetsCarryTheHalfTexel) {
   }
 }
 
-TEST(GlowPlan, WithoutHalfTexelOffsetsAreWholeTexels) {
-  GlowPlan plan = plan_for(2, false);
-  EXPECT_FLOAT_EQ(plan.graph.passes[2].vs_constants[0][0], -12.0f / 64);
-  EXPECT_EQ(plan.graph.passes[2].vs_constants[0][1], 0.0f);
-  EXPECT_FLOAT_EQ(plan.graph.passes[6].vs_constants[0][1], -12.0f / 32);
+TEST(EffectPlan, WithoutHalfTexelOffsetsAreWholeTexels) {
+  EffectPlan plan = plan_for(2, false);
+  EXPECT_FLOAT_EQ(plan.graph.passes[2].vs_constants.f[0][0], -12.0f / 64);
+  EXPECT_EQ(plan.graph.passes[2].vs_constants.f[0][1], 0.0f);
+  EXPECT_FLOAT_EQ(plan.graph.passes[6].vs_constants.f[0][1], -12.0f / 32);
   // Taps on texel corners, read bilinearly: the article's failure case, as on D3D9.
   for (size_t i = 2; i < 10; ++i)
     EXPECT_EQ(plan.graph.passes[i].textures.at(0).sampler.filter, pass::Filter::Linear)
@@ -77,8 +77,8 @@ TEST(GlowPlan, WithoutHalfTexelOffsetsAreWholeTexels) {
   EXPECT_EQ(plan.graph.passes[1].textures.at(0).sampler.filter, pass::Filter::Point);
 }
 
-TEST(GlowPlan, TapsAreSymmetricNormalisedAndUseThePrintedListings) {
-  GlowPlan plan = plan_for(2);
+TEST(EffectPlan, TapsAreSymmetricNormalisedAndUseThePrintedListings) {
+  EffectPlan plan = plan_for(2);
   double sum = 0;
   for (size_t i = 0; i < plan.taps.size(); ++i) {
     sum += plan.taps[i].weight;
@@ -109,15 +109,15 @@ TEST(BlurProfile, BadProfilesAreErrors) {
   EXPECT_FALSE(sample_blur_profile(one_gaussian(1.0, 0.0), 1));
   EXPECT_FALSE(sample_blur_profile(one_gaussian(NAN, 1.0), 1));
   EXPECT_FALSE(sample_blur_profile(one_gaussian(5000.0, 1.0), 1));
-  GlowParams p;
+  EffectParams p;
   p.downsample = 5;
   EXPECT_FALSE(build_glow_dx9(p));
 }
 
 // ---- tier dx8 --------------------------------------------------------------------------
 
-GlowParams dx8_params(unsigned n, uint32_t w = 128, uint32_t h = 64) {
-  GlowParams p = plan_test::sized(n, w, h);
+EffectParams dx8_params(unsigned n, uint32_t w = 128, uint32_t h = 64) {
+  EffectParams p = plan_test::sized(n, w, h);
   p.tier = Tier::Dx8;
   return p;
 }
@@ -136,11 +136,11 @@ TEST(GlowPlanDx8, PassCountsAreCeilOfTapsOverFour) {
   for (const Want& c : {Want{1, 13, 0}, Want{2, 7, 1}, Want{4, 4, 4}}) {
     PlanResult plan_built = build_glow(dx8_params(c.n));
     ASSERT_TRUE(plan_built) << plan_built.message();
-    GlowPlan& plan = *plan_built;
+    EffectPlan& plan = *plan_built;
     EXPECT_EQ(plan.blur_passes_per_axis, c.per_axis) << c.n;
     EXPECT_EQ(plan.graph.passes.size(), 2 * c.per_axis + 2 + c.downsample_passes) << c.n;
   }
-  const GlowPlan plan = plan_test::expect_built(build_glow(dx8_params(2)));
+  const EffectPlan plan = plan_test::expect_built(build_glow(dx8_params(2)));
   std::vector<std::string> want{"extract", "downsample.0"};
   for (const char* axis : {"blur_h", "blur_v"})
     for (int i = 0; i < 7; ++i) want.push_back(std::string(axis) + "." + std::to_string(i));
@@ -149,11 +149,11 @@ TEST(GlowPlanDx8, PassCountsAreCeilOfTapsOverFour) {
 }
 
 TEST(GlowPlanDx8, BlurConstantsFollowTheArticlesRule) {
-  GlowParams p = dx8_params(2, 45, 27); // glow 23 × 14
+  EffectParams p = dx8_params(2, 45, 27); // glow 23 × 14
   p.profile = one_gaussian(2.0, 1.0);
   PlanResult plan_built = build_glow_dx8(p);
   ASSERT_TRUE(plan_built) << plan_built.message();
-  GlowPlan& plan = *plan_built;
+  EffectPlan& plan = *plan_built;
   ASSERT_EQ(plan.taps.size(), 7u);
   EXPECT_EQ(plan.glow_width, 23u);
   EXPECT_EQ(plan.glow_height, 14u);
@@ -167,19 +167,19 @@ TEST(GlowPlanDx8, BlurConstantsFollowTheArticlesRule) {
   const float hu0[4] = {-2.5f / 23, -1.5f / 23, -0.5f / 23, 0.5f / 23};
   const float hu1[4] = {1.5f / 23, 2.5f / 23, 3.5f / 23, 0.5f / 23};
   const double w0[4] = {kE45, kE2, kE05, 1}, w1[4] = {kE05, kE2, kE45, 0};
-  ASSERT_EQ(h0.vs_constants.size(), 4u);
-  ASSERT_EQ(h0.ps_constants.size(), 4u);
+  ASSERT_EQ(h0.vs_constants.f.size(), 4u);
+  ASSERT_EQ(h0.ps_constants.f.size(), 4u);
   for (int k = 0; k < 4; ++k) {
-    EXPECT_FLOAT_EQ(h0.vs_constants[k][0], hu0[k]) << k;
-    EXPECT_FLOAT_EQ(h0.vs_constants[k][1], 0.5f / 14) << k;
-    EXPECT_FLOAT_EQ(h1.vs_constants[k][0], hu1[k]) << k;
-    EXPECT_FLOAT_EQ(v0.vs_constants[k][0], 0.5f / 23) << k;
-    EXPECT_FLOAT_EQ(v0.vs_constants[k][1], hu0[k] * 23 / 14) << k;
+    EXPECT_FLOAT_EQ(h0.vs_constants.f[k][0], hu0[k]) << k;
+    EXPECT_FLOAT_EQ(h0.vs_constants.f[k][1], 0.5f / 14) << k;
+    EXPECT_FLOAT_EQ(h1.vs_constants.f[k][0], hu1[k]) << k;
+    EXPECT_FLOAT_EQ(v0.vs_constants.f[k][0], 0.5f / 23) << k;
+    EXPECT_FLOAT_EQ(v0.vs_constants.f[k][1], hu0[k] * 23 / 14) << k;
     // Listing 4: c_k = the tap's weight in every channel (0 for padding).
     for (int c = 0; c < 4; ++c) {
-      EXPECT_NEAR(h0.ps_constants[k][c], w0[k] / kNorm, 1e-7) << k;
-      EXPECT_NEAR(h1.ps_constants[k][c], w1[k] / kNorm, 1e-7) << k;
-      EXPECT_EQ(v1.ps_constants[k][c], h1.ps_constants[k][c]) << k;
+      EXPECT_NEAR(h0.ps_constants.f[k][c], w0[k] / kNorm, 1e-7) << k;
+      EXPECT_NEAR(h1.ps_constants.f[k][c], w1[k] / kNorm, 1e-7) << k;
+      EXPECT_EQ(v1.ps_constants.f[k][c], h1.ps_constants.f[k][c]) << k;
     }
   }
   // The first pass of an axis replaces, the others add (ONE/ONE).
@@ -201,16 +201,16 @@ TEST(GlowPlanDx8, BlurConstantsFollowTheArticlesRule) {
 }
 
 TEST(GlowPlanDx8, WithoutHalfTexelOffsetsAreWholeTexels) {
-  GlowParams p = dx8_params(2, 45, 27);
+  EffectParams p = dx8_params(2, 45, 27);
   p.profile = one_gaussian(2.0, 1.0);
   p.half_texel = false;
   PlanResult plan_built = build_glow_dx8(p);
   ASSERT_TRUE(plan_built) << plan_built.message();
-  GlowPlan& plan = *plan_built;
-  EXPECT_FLOAT_EQ(plan.graph.passes[2].vs_constants[0][0], -3.0f / 23);
-  EXPECT_EQ(plan.graph.passes[2].vs_constants[0][1], 0.0f);
-  EXPECT_EQ(plan.graph.passes[2].vs_constants[3][0], 0.0f);
-  EXPECT_FLOAT_EQ(plan.graph.passes[4].vs_constants[0][1], -3.0f / 14);
+  EffectPlan& plan = *plan_built;
+  EXPECT_FLOAT_EQ(plan.graph.passes[2].vs_constants.f[0][0], -3.0f / 23);
+  EXPECT_EQ(plan.graph.passes[2].vs_constants.f[0][1], 0.0f);
+  EXPECT_EQ(plan.graph.passes[2].vs_constants.f[3][0], 0.0f);
+  EXPECT_FLOAT_EQ(plan.graph.passes[4].vs_constants.f[0][1], -3.0f / 14);
   // Taps on texel corners: bilinear on all four stages, as on D3D8/9 hardware.
   for (size_t i = 2; i < 6; ++i)
     for (const TextureBind& t : plan.graph.passes[i].textures)
@@ -220,7 +220,7 @@ TEST(GlowPlanDx8, WithoutHalfTexelOffsetsAreWholeTexels) {
 TEST(GlowPlanDx8, HelperPassesAreD3D8Listings) {
   PlanResult plan_built = build_glow_dx8(dx8_params(2, 45, 27));
   ASSERT_TRUE(plan_built) << plan_built.message();
-  GlowPlan& plan = *plan_built;
+  EffectPlan& plan = *plan_built;
   for (const PassDesc& d : plan.graph.passes) {
     EXPECT_EQ(d.vs->profile, ir::Profile::vs_1_1) << d.name;
     EXPECT_TRUE(ir::is_ps11_13(d.ps->profile)) << d.name;
@@ -232,8 +232,8 @@ TEST(GlowPlanDx8, HelperPassesAreD3D8Listings) {
   EXPECT_EQ(plan.graph.passes[2].ps->profile, ir::Profile::ps_1_3); // Listing 4
   EXPECT_EQ(ds.analytic, AnalyticForm::Linear);
   // Extract: one point read at texel centres of the 45 × 27 scene.
-  EXPECT_FLOAT_EQ(ex.vs_constants[0][0], 0.5f / 45);
-  EXPECT_FLOAT_EQ(ex.vs_constants[4][1], 1.0f);
+  EXPECT_FLOAT_EQ(ex.vs_constants.f[0][0], 0.5f / 45);
+  EXPECT_FLOAT_EQ(ex.vs_constants.f[4][1], 1.0f);
   ASSERT_EQ(ex.textures.size(), 1u);
   EXPECT_EQ(ex.textures[0].sampler.filter, pass::Filter::Point);
   // Downsample by 2 into 23 × 14, one pass: point reads at the four texel centres of each
@@ -243,11 +243,11 @@ TEST(GlowPlanDx8, HelperPassesAreD3D8Listings) {
   const float xs[4] = {0.5f / 45, 1.5f / 45, 0.5f / 45, 1.5f / 45};
   const float ys[4] = {0.5f / 27, 0.5f / 27, 1.5f / 27, 1.5f / 27};
   for (int k = 0; k < 4; ++k) {
-    EXPECT_FLOAT_EQ(ds.vs_constants[k][0], xs[k]) << k;
-    EXPECT_FLOAT_EQ(ds.vs_constants[k][1], ys[k]) << k;
-    EXPECT_FLOAT_EQ(ds.vs_constants[k + 4][0], 46.0f / 45) << k;
-    EXPECT_FLOAT_EQ(ds.vs_constants[k + 4][1], 28.0f / 27) << k;
-    EXPECT_EQ(ds.ps_constants[k][0], 0.25f) << k;
+    EXPECT_FLOAT_EQ(ds.vs_constants.f[k][0], xs[k]) << k;
+    EXPECT_FLOAT_EQ(ds.vs_constants.f[k][1], ys[k]) << k;
+    EXPECT_FLOAT_EQ(ds.vs_constants.f[k + 4][0], 46.0f / 45) << k;
+    EXPECT_FLOAT_EQ(ds.vs_constants.f[k + 4][1], 28.0f / 27) << k;
+    EXPECT_EQ(ds.ps_constants.f[k][0], 0.25f) << k;
   }
   EXPECT_EQ(ds.blend, pass::BlendMode::Replace);
   ASSERT_EQ(ds.textures.size(), 4u);
@@ -255,9 +255,9 @@ TEST(GlowPlanDx8, HelperPassesAreD3D8Listings) {
   EXPECT_EQ(ds.textures[3].texture, kSourcesTexture);
   EXPECT_EQ(ds.textures[3].sampler.filter, pass::Filter::Point);
   // Composite: scene at texel centres; glow at (i + ½)/2 texels of a 46 × 28 cover.
-  EXPECT_FLOAT_EQ(co.vs_constants[1][0], 0.5f / 46);
-  EXPECT_FLOAT_EQ(co.vs_constants[5][0], 45.0f / 46);
-  EXPECT_FLOAT_EQ(co.vs_constants[5][1], 27.0f / 28);
+  EXPECT_FLOAT_EQ(co.vs_constants.f[1][0], 0.5f / 46);
+  EXPECT_FLOAT_EQ(co.vs_constants.f[5][0], 45.0f / 46);
+  EXPECT_FLOAT_EQ(co.vs_constants.f[5][1], 27.0f / 28);
   ASSERT_EQ(co.textures.size(), 2u);
   EXPECT_EQ(co.textures[1].stage, 1u);
   EXPECT_EQ(co.textures[1].texture, kGlowTexture);
@@ -265,31 +265,31 @@ TEST(GlowPlanDx8, HelperPassesAreD3D8Listings) {
 
 // ---- intensity and bad parameters (both tiers) -----------------------------------------
 
-float composite_c0(const GlowPlan& plan) {
-  return plan.graph.passes.back().ps_constants.at(0)[0];
+float composite_c0(const EffectPlan& plan) {
+  return plan.graph.passes.back().ps_constants.f.at(0)[0];
 }
 
 TEST(GlowIntensity, Dx9PutsIntensityInC0) {
-  GlowParams p;
+  EffectParams p;
   p.width = 45;
   p.height = 27;
   for (double intensity : {0.0, 1.0, 2.5, 17.0}) {
     p.intensity = intensity;
     PlanResult plan_built = build_glow_dx9(p);
     ASSERT_TRUE(plan_built) << plan_built.message();
-    GlowPlan& plan = *plan_built;
+    EffectPlan& plan = *plan_built;
     EXPECT_EQ(composite_c0(plan), float(intensity));
     EXPECT_EQ(plan.graph.passes.back().ps->profile, ir::Profile::ps_2_0);
   }
 }
 
 TEST(GlowIntensity, Dx8UpToOneInC0AboveOneAQuarterWithX4) {
-  GlowParams p = dx8_params(2, 45, 27);
+  EffectParams p = dx8_params(2, 45, 27);
   for (double intensity : {0.0, 0.5, 1.0}) {
     p.intensity = intensity;
     PlanResult plan_built = build_glow_dx8(p);
     ASSERT_TRUE(plan_built) << plan_built.message();
-    GlowPlan& plan = *plan_built;
+    EffectPlan& plan = *plan_built;
     EXPECT_EQ(composite_c0(plan), float(intensity));
     EXPECT_EQ(plan.graph.passes.back().ps->code.size(), 4u); // tex, tex, mad, +mov
   }
@@ -297,7 +297,7 @@ TEST(GlowIntensity, Dx8UpToOneInC0AboveOneAQuarterWithX4) {
     p.intensity = intensity;
     PlanResult plan_built = build_glow_dx8(p);
     ASSERT_TRUE(plan_built) << plan_built.message();
-    GlowPlan& plan = *plan_built;
+    EffectPlan& plan = *plan_built;
     EXPECT_EQ(composite_c0(plan), float(intensity / 4));
     const ir::Instruction& mul = plan.graph.passes.back().ps->code.at(2);
     EXPECT_EQ(mul.op, ir::Opcode::Mul);
@@ -308,14 +308,14 @@ TEST(GlowIntensity, Dx8UpToOneInC0AboveOneAQuarterWithX4) {
 TEST(GlowIntensity, BadValuesAreErrorsNamingIntensity) {
   for (Tier tier : {Tier::Dx9, Tier::Dx8})
     for (double bad : {-0.5, double(NAN), double(INFINITY)}) {
-      GlowParams p = dx8_params(2, 45, 27);
+      EffectParams p = dx8_params(2, 45, 27);
       p.tier = tier;
       p.intensity = bad;
       const PlanResult plan = build_glow(p);
       EXPECT_FALSE(plan) << tier_name(tier) << " " << bad;
       EXPECT_EQ(plan.message().rfind("intensity ", 0), 0u) << plan.message();
     }
-  GlowParams p = dx8_params(2, 45, 27);
+  EffectParams p = dx8_params(2, 45, 27);
   p.intensity = 4.5;
   const PlanResult plan = build_glow(p);
   EXPECT_FALSE(plan);
@@ -332,7 +332,7 @@ TEST(GlowPlanDx8, BadParametersNameTheField) {
   }
   const PlanResult zero = build_glow_dx8(dx8_params(2, 0, 27));
   EXPECT_EQ(zero.message().rfind("scene size 0x27", 0), 0u) << zero.message();
-  GlowParams p = dx8_params(2);
+  EffectParams p = dx8_params(2);
   p.profile = one_gaussian(-1.0, 1.0);
   EXPECT_NE(build_glow_dx8(p).message().find("sigma -1"), std::string::npos);
   p = dx8_params(2);
@@ -342,11 +342,11 @@ TEST(GlowPlanDx8, BadParametersNameTheField) {
 
 TEST(GlowPlanDx8, TapWeightsAboveOneAreClampedWithAWarning) {
   // σ = 0.1 px, weight 2: R = ceil(0.3) = 1, the centre tap ≈ 2 (the others ≈ 2·e^−50).
-  GlowParams p = dx8_params(1, 45, 27);
+  EffectParams p = dx8_params(1, 45, 27);
   p.profile = one_gaussian(0.1, 2.0);
   PlanResult plan_built = build_glow_dx8(p);
   ASSERT_TRUE(plan_built) << plan_built.message();
-  GlowPlan& plan = *plan_built;
+  EffectPlan& plan = *plan_built;
   ASSERT_EQ(plan.warnings.size(), 1u);
   EXPECT_NE(plan.warnings[0].find("1 tap weight(s) above 1 (up to 2)"), std::string::npos)
       << plan.warnings[0];

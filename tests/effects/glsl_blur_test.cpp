@@ -22,8 +22,8 @@ namespace {
 constexpr double kW[9] = {0.05, 0.09, 0.12, 0.15, 0.16, 0.15, 0.12, 0.09, 0.05};
 constexpr uint32_t kSize = 512; // blurSize 1/512: one texel per step
 
-GlowParams params_512() {
-  GlowParams p;
+EffectParams params_512() {
+  EffectParams p;
   p.width = p.height = kSize;
   p.format = img::Format::RGBA32F;
   return p;
@@ -54,7 +54,7 @@ void expect_impulse_response(PassDevice& device, uint32_t x0, uint32_t y0, doubl
                              const std::string& way) {
   PlanResult plan_built = build_glsl_blur(params_512(), GlslBlurParams{});
   ASSERT_TRUE(plan_built) << plan_built.message();
-  GlowRun r = run_glow(*plan_built, impulse(x0, y0), device);
+  EffectRun r = run_effect(*plan_built, impulse(x0, y0), device);
   ASSERT_TRUE(r.run.ok()) << way << ": " << r.run.message();
   const img::Image& out = r.images.at("final");
   double worst = 0;
@@ -71,7 +71,7 @@ void expect_impulse_response(PassDevice& device, uint32_t x0, uint32_t y0, doubl
 TEST(GlslBlur, GraphHasTwoGlslPassesWithTwinsAndKernels) {
   PlanResult plan_built = build_glsl_blur(params_512(), GlslBlurParams{});
   ASSERT_TRUE(plan_built) << plan_built.message();
-  GlowPlan& plan = *plan_built;
+  EffectPlan& plan = *plan_built;
   ASSERT_EQ(plan.graph.passes.size(), 2u);
   for (const PassDesc& p : plan.graph.passes) {
     EXPECT_TRUE(p.glsl_spirv && !p.glsl_spirv->empty()) << p.name;
@@ -115,20 +115,20 @@ TEST_F(GlslBlurVulkan, GlslImpulseResponseOnLavapipe) {
 TEST_F(GlslBlurVulkan, GlslTwinAndKernelAgreeWithin1e5) {
   PlanResult plan_built = build_glsl_blur(params_512(), GlslBlurParams{});
   ASSERT_TRUE(plan_built) << plan_built.message();
-  GlowPlan& plan = *plan_built;
-  GlowPlan twin_plan = plan;
+  EffectPlan& plan = *plan_built;
+  EffectPlan twin_plan = plan;
   for (PassDesc& p : twin_plan.graph.passes) p.glsl_spirv.reset(); // ps_2_0 through codegen
   const img::Image scene = random_scene();
   auto vk = make_vulkan_pass_device(*dev);
   CpuPassDevice cpu(2);
   auto analytic = make_analytic_pass_device();
-  GlowRun glsl_vk = run_glow(plan, scene, *vk, true);
-  GlowRun twin_vk = run_glow(twin_plan, scene, *vk, true);
-  GlowRun twin_cpu = run_glow(plan, scene, cpu, true);
-  GlowRun math = run_glow(plan, scene, *analytic, true);
-  for (const GlowRun* r : {&glsl_vk, &twin_vk, &twin_cpu, &math})
+  EffectRun glsl_vk = run_effect(plan, scene, *vk, true);
+  EffectRun twin_vk = run_effect(twin_plan, scene, *vk, true);
+  EffectRun twin_cpu = run_effect(plan, scene, cpu, true);
+  EffectRun math = run_effect(plan, scene, *analytic, true);
+  for (const EffectRun* r : {&glsl_vk, &twin_vk, &twin_cpu, &math})
     ASSERT_TRUE(r->run.ok()) << r->run.message();
-  const std::pair<const GlowRun*, const char*> others[] = {
+  const std::pair<const EffectRun*, const char*> others[] = {
       {&twin_vk, "ps_2_0 twin on vulkan"}, {&twin_cpu, "ps_2_0 twin on cpu"}, {&math, "analytic"}};
   for (const auto& [other, label] : others) {
     ir::Result<RunAgreement> a_compared =
@@ -165,13 +165,13 @@ TEST(GlslBlur, SceneNamesTheEffect) {
   ir::Result<Scene> s =
       load_scene_file(std::string(TIERLIFT_SOURCE_DIR) + "/listings/scenes/glsl-blur.json");
   ASSERT_TRUE(s) << s.message();
-  EXPECT_EQ(s->effect, "glsl-blur");
+  EXPECT_EQ(s->effect, EffectKind::GlslBlur);
   EXPECT_EQ(s->params.width, kSize);
   ASSERT_EQ(s->warnings.size(), 1u);
   EXPECT_NE(s->warnings[0].find("sum to 0.98"), std::string::npos);
   PlanResult plan_built = build_scene_effect(*s);
   ASSERT_TRUE(plan_built) << plan_built.message();
-  GlowPlan& plan = *plan_built;
+  EffectPlan& plan = *plan_built;
   EXPECT_EQ(plan.graph.passes.size(), 2u);
 }
 

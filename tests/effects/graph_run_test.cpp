@@ -11,8 +11,8 @@
 namespace tierlift::effects {
 namespace {
 
-GlowPlan small_plan(unsigned n, img::Format f, BlurProfile profile = default_blur_profile()) {
-  GlowParams p;
+EffectPlan small_plan(unsigned n, img::Format f, BlurProfile profile = default_blur_profile()) {
+  EffectParams p;
   p.width = 128;
   p.height = 64;
   p.downsample = n;
@@ -27,7 +27,7 @@ GlowPlan small_plan(unsigned n, img::Format f, BlurProfile profile = default_blu
 }
 
 TEST(Graph, ChecksNamesAndTargets) {
-  GlowPlan plan = small_plan(2, img::Format::RGBA32F);
+  EffectPlan plan = small_plan(2, img::Format::RGBA32F);
   EXPECT_TRUE(check_graph(plan.graph).ok()) << check_graph(plan.graph).message();
   EffectGraph g = plan.graph;
   g.passes[0].textures[0].texture = "nowhere";
@@ -44,13 +44,13 @@ TEST(Graph, ChecksNamesAndTargets) {
 }
 
 TEST(Graph, MissingOrWrongSizedInputIsAnError) {
-  GlowPlan plan = small_plan(2, img::Format::RGBA32F);
+  EffectPlan plan = small_plan(2, img::Format::RGBA32F);
   CpuPassDevice dev(2);
   ImageMap images;
   ir::Result<GraphRun> r = run_graph(plan.graph, dev, images);
   EXPECT_FALSE(r.ok());
   EXPECT_NE(r.message().find("'scene' was not given"), std::string::npos) << r.message();
-  GlowRun g = run_glow(plan, img::Image(10, 10), dev);
+  EffectRun g = run_effect(plan, img::Image(10, 10), dev);
   EXPECT_FALSE(g.run.ok());
   EXPECT_NE(g.run.message().find("expects 128x64"), std::string::npos) << g.run.message();
 }
@@ -73,7 +73,7 @@ TEST(GlowCpu, NothingGlowsGivesTheSceneBack) {
     img::Image scene = make_default_scene(128, 64, f);
     for (size_t i = 3; i < scene.rgba.size(); i += 4) scene.rgba[i] = 0.0f;
     CpuPassDevice dev(2);
-    GlowRun g = run_glow(small_plan(2, f), scene, dev);
+    EffectRun g = run_effect(small_plan(2, f), scene, dev);
     ASSERT_TRUE(g.run.ok()) << g.run.message();
     EXPECT_EQ(g.images.at(std::string(kFinalTexture)).rgba, scene.rgba);
     for (float v : g.images.at(std::string(kGlowTexture)).rgba) ASSERT_EQ(v, 0.0f);
@@ -88,7 +88,7 @@ TEST(GlowCpu, OneTexelGlowsAsTheOuterProductOfTheTaps) {
   for (size_t i = 0; i < scene.rgba.size(); i += 4) scene.rgba[i + 3] = 0.0f;
   float* lit = scene.at(12, 7);
   lit[0] = 1.0f, lit[1] = 0.5f, lit[2] = 0.25f, lit[3] = 0.5f;
-  GlowParams p;
+  EffectParams p;
   p.width = 32;
   p.height = 16;
   p.downsample = 1;
@@ -96,10 +96,10 @@ TEST(GlowCpu, OneTexelGlowsAsTheOuterProductOfTheTaps) {
   p.profile = BlurProfile{{{1.0, 1.0}}, std::nullopt, 0};
   PlanResult plan_built = build_glow_dx9(p);
   ASSERT_TRUE(plan_built) << plan_built.message();
-  GlowPlan& plan = *plan_built;
+  EffectPlan& plan = *plan_built;
   ASSERT_EQ(plan.taps.size(), 7u);
   CpuPassDevice dev(2);
-  GlowRun g = run_glow(plan, scene, dev);
+  EffectRun g = run_effect(plan, scene, dev);
   ASSERT_TRUE(g.run.ok()) << g.run.message();
   const img::Image& glow = g.images.at(std::string(kGlowTexture));
   const img::Image& final_frame = g.images.at(std::string(kFinalTexture));

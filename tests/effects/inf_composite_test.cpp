@@ -43,7 +43,7 @@ bool expect_nan(uint32_t x, uint32_t y) {
 }
 
 TEST_F(InfComposite, OneInfTexelAgreesThreeWaysAsTheFilterUnitComputes) {
-  GlowParams p;
+  EffectParams p;
   p.width = p.height = kSize;
   p.downsample = 1;
   p.format = img::Format::RGBA32F;

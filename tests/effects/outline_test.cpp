@@ -22,8 +22,8 @@ constexpr uint32_t kW = 64, kH = 48;
 constexpr double kSigma = 1.5;
 constexpr int kRadius = 5; // ceil(3 · 1.5): the profile's taps reach ±5 texels
 
-GlowParams params() {
-  GlowParams p;
+EffectParams params() {
+  EffectParams p;
   p.width = kW;
   p.height = kH;
   p.downsample = 1;
@@ -81,7 +81,7 @@ OutlineResult run_on(PassDevice& device) {
     ADD_FAILURE() << plan_built.message();
     return {};
   }
-  GlowRun r = run_glow(*plan_built, img::Image(kW, kH), device);
+  EffectRun r = run_effect(*plan_built, img::Image(kW, kH), device);
   EXPECT_TRUE(r.run.ok()) << r.run.message();
   return {r.images[std::string(kFinalTexture)], r.images[std::string(kStencilTexture)]};
 }
@@ -167,14 +167,14 @@ TEST(Outline, AnalyticModelAgreesWithTheCpuDevice) {
 TEST(Outline, StencilStateOutOfRangeIsRefusedByTheGraph) {
   PlanResult plan_built = build_outline(params(), object());
   ASSERT_TRUE(plan_built) << plan_built.message();
-  GlowPlan& plan = *plan_built;
+  EffectPlan& plan = *plan_built;
   plan.graph.passes[0].depth_stencil.stencil_ref = 256;
   EXPECT_NE(check_graph(plan.graph).message().find("0..255"), std::string::npos)
       << check_graph(plan.graph).message();
   OutlineParams o = object();
   o.stencil_ref = 0;
   EXPECT_NE(build_outline(params(), o).message().find("stencil_ref 0"), std::string::npos);
-  GlowParams dx8 = params();
+  EffectParams dx8 = params();
   dx8.tier = Tier::Dx8;
   EXPECT_NE(build_outline(dx8, object()).message().find("tier dx8"), std::string::npos);
 }

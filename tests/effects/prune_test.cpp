@@ -25,18 +25,18 @@ struct Outcome {
 };
 
 // Runs the whole and the pruned plan on the CPU device and compares glow and final.
-Outcome expect_same(const GlowParams& p, const img::Image& scene, const std::string& what) {
+Outcome expect_same(const EffectParams& p, const img::Image& scene, const std::string& what) {
   const PlanResult plan_built = build_glow(p);
   if (!plan_built) {
     ADD_FAILURE() << what << ": " << plan_built.message();
     return {};
   }
-  const GlowPlan& plan = *plan_built;
+  const EffectPlan& plan = *plan_built;
   const PrunedGraph pruned = prune_glow(plan, scene);
-  GlowPlan lean = plan;
+  EffectPlan lean = plan;
   lean.graph = pruned.graph;
   CpuPassDevice a, b;
-  const GlowRun whole = run_glow(plan, scene, a), part = run_glow(lean, scene, b);
+  const EffectRun whole = run_effect(plan, scene, a), part = run_effect(lean, scene, b);
   EXPECT_TRUE(whole.run.ok() && part.run.ok()) << whole.run.message() << part.run.message();
   if (!whole.run.ok() || !part.run.ok()) return {};
   for (const char* tex : {"glow", "final"}) {
@@ -52,8 +52,8 @@ Outcome expect_same(const GlowParams& p, const img::Image& scene, const std::str
   return {pruned.left_out.size()};
 }
 
-GlowParams params(uint32_t w, uint32_t h, Tier t, img::Format f, unsigned ds) {
-  GlowParams p;
+EffectParams params(uint32_t w, uint32_t h, Tier t, img::Format f, unsigned ds) {
+  EffectParams p;
   p.width = w, p.height = h, p.tier = t, p.format = f, p.downsample = ds;
   return p;
 }
@@ -108,9 +108,9 @@ TEST(Prune, CornerSourcesLimitTheBlurToACorner) {
   img::Image s = make_default_scene(96, 64);
   for (size_t i = 3; i < s.rgba.size(); i += 4) s.rgba[i] = 0;
   s.at(1, 1)[3] = 1;
-  GlowParams p = params(96, 64, Tier::Dx9, img::Format::RGBA32F, 2);
+  EffectParams p = params(96, 64, Tier::Dx9, img::Format::RGBA32F, 2);
   p.profile.terms = {{1.5, 1.0}}; // a kernel reach of 2 texels: the corner stays small
-  const GlowPlan plan = plan_test::expect_built(build_glow(p));
+  const EffectPlan plan = plan_test::expect_built(build_glow(p));
   const PrunedGraph g = prune_glow(plan, s);
   EXPECT_TRUE(g.left_out.empty());
   ASSERT_EQ(g.limited.size(), 4u);
@@ -141,7 +141,7 @@ TEST(Prune, SingleSourcePixelsUnchanged) {
     for (Tier t : all_tiers())
       for (img::Format f : kFormats)
         for (unsigned ds : {1u, 2u, 3u, 4u}) {
-          GlowParams p = params(w, h, t, f, ds);
+          EffectParams p = params(w, h, t, f, ds);
           p.half_texel = (x + ds) % 2 == 0;
           expect_same(p, s, fmt::format("pixel ({}, {})", x, y));
         }
@@ -159,20 +159,20 @@ TEST_F(PruneDevices, LimitedPassesGiveTheSameFrameOnVulkanAndAnalytic) {
     for (uint32_t x = 80; x < 90; ++x) s.at(x, y)[3] = 1, s.at(x, y)[1] = 0.7f;
   for (Tier t : all_tiers())
     for (img::Format f : kFormats) {
-      const GlowParams p = params(96, 64, t, f, 2);
+      const EffectParams p = params(96, 64, t, f, 2);
       const PlanResult plan_built = build_glow(p);
       ASSERT_TRUE(plan_built) << plan_built.message();
-      const GlowPlan& plan = *plan_built;
+      const EffectPlan& plan = *plan_built;
       const PrunedGraph pruned = prune_glow(plan, s);
       ASSERT_EQ(pruned.limited.size(), 4u) << tier_name(t);
-      GlowPlan lean = plan;
+      EffectPlan lean = plan;
       lean.graph = pruned.graph;
       auto vk_whole = make_vulkan_pass_device(*dev), vk_lean = make_vulkan_pass_device(*dev);
       auto an_whole = make_analytic_pass_device(), an_lean = make_analytic_pass_device();
       const std::pair<PassDevice*, PassDevice*> pairs[] = {{vk_whole.get(), vk_lean.get()},
                                                            {an_whole.get(), an_lean.get()}};
       for (const auto& [a, b] : pairs) {
-        const GlowRun whole = run_glow(plan, s, *a), part = run_glow(lean, s, *b);
+        const EffectRun whole = run_effect(plan, s, *a), part = run_effect(lean, s, *b);
         ASSERT_TRUE(whole.run.ok() && part.run.ok()) << whole.run.message() << part.run.message();
         for (const char* tex : {"glow", "final"}) {
           const std::vector<float>& x = whole.images.at(tex).rgba;
@@ -193,7 +193,7 @@ TEST(Prune, NoSourcesRunsNoBlur) {
   for (size_t i = 3; i < s.rgba.size(); i += 4) s.rgba[i] = 0;
   for (Tier t : all_tiers())
     for (img::Format f : kFormats) {
-      const GlowParams p = params(64, 48, t, f, 2);
+      const EffectParams p = params(64, 48, t, f, 2);
       const PrunedGraph g = prune_glow(plan_test::expect_built(build_glow(p)), s);
       ASSERT_EQ(g.graph.passes.size(), 1u);
       EXPECT_EQ(g.graph.passes[0].name, "composite");
@@ -204,7 +204,7 @@ TEST(Prune, NoSourcesRunsNoBlur) {
 TEST(Prune, NonFiniteScenesAndUnreadPasses) {
   img::Image s = make_default_scene(32, 16);
   s.at(3, 3)[0] = NAN;
-  const GlowPlan plan =
+  const EffectPlan plan =
       plan_test::expect_built(build_glow(params(32, 16, Tier::Dx9, img::Format::RGBA8, 2)));
   EXPECT_TRUE(prune_glow(plan, s).left_out.empty());
   // A pass whose target nothing reads: left out by the generic rule.

@@ -55,8 +55,8 @@ RadialParams still_params() {
   return r;
 }
 
-GlowParams glow_params(Tier tier, img::Format format = img::Format::RGBA32F) {
-  GlowParams g;
+EffectParams glow_params(Tier tier, img::Format format = img::Format::RGBA32F) {
+  EffectParams g;
   g.tier = tier;
   g.width = kW;
   g.height = kH;
@@ -102,12 +102,12 @@ TEST_P(RadialWays, SingleBrightPixelMatchesTheClosedForm) {
   const RadialParams r = still_params();
   PlanResult plan_built = build_radial(glow_params(GetParam()), r);
   ASSERT_TRUE(plan_built) << plan_built.message();
-  GlowPlan& plan = *plan_built;
+  EffectPlan& plan = *plan_built;
   ThreeDevices ways(*dev);
   const img::Image scene = single_pixel();
   double worst = 0, peak = 0;
   for (PassDevice* d : ways.all()) {
-    GlowRun run = run_glow(plan, scene, *d, false);
+    EffectRun run = run_effect(plan, scene, *d, false);
     ASSERT_TRUE(run.run.ok()) << run.run.message();
     const img::Image& beams = run.images.at(std::string(kGlowTexture));
     const img::Image& fin = run.images.at(std::string(kFinalTexture));
@@ -143,7 +143,7 @@ TEST_P(RadialWays, ThreeWaysAgreeOnEveryPassWithTheStarMoving) {
     r.frame = 17;
     PlanResult plan_built = build_radial(glow_params(GetParam(), f), r);
     ASSERT_TRUE(plan_built) << plan_built.message();
-    GlowPlan& plan = *plan_built;
+    EffectPlan& plan = *plan_built;
     ThreeDevices devices(*dev);
     const test_ways::NamedRuns ways = test_ways::run_three_ways(plan, random_scene(7), devices);
     for (auto& [name, w] : ways) ASSERT_TRUE(w.run.ok()) << name << ": " << w.run.message();
@@ -167,10 +167,10 @@ TEST_P(RadialWays, ThreeWaysAgreeOnEveryPassWithTheStarMoving) {
 // form), the frames differ from each other, and the devices agree frame by frame.
 TEST_P(RadialWays, FramesAnimateTheStarAsTheStillFramesDo) {
   const RadialParams r = moving_params();
-  const GlowParams g = glow_params(GetParam());
+  const EffectParams g = glow_params(GetParam());
   PlanResult moving_built = build_radial(g, r);
   ASSERT_TRUE(moving_built) << moving_built.message();
-  GlowPlan& moving = *moving_built;
+  EffectPlan& moving = *moving_built;
   ASSERT_EQ(moving.graph.passes.front().vs_constants_per_frame.size(), kFrames);
   const img::Image scene = random_scene(3);
   ThreeDevices ways(*dev);
@@ -185,8 +185,8 @@ TEST_P(RadialWays, FramesAnimateTheStarAsTheStillFramesDo) {
       still.frames = 1;
       PlanResult plan_built = build_radial(g, still);
       ASSERT_TRUE(plan_built) << plan_built.message();
-      GlowPlan& plan = *plan_built;
-      GlowRun one = run_glow(plan, scene, *d, false);
+      EffectPlan& plan = *plan_built;
+      EffectRun one = run_effect(plan, scene, *d, false);
       ASSERT_TRUE(one.run.ok()) << one.run.message();
       EXPECT_EQ(frames[f].rgba, one.images.at(std::string(kStarTexture)).rgba)
           << d->name() << " frame " << f;
@@ -215,7 +215,7 @@ TEST_P(RadialWays, AnimatedStarMatchesTheClosedFormEachFrame) {
   constexpr double kPh[4] = {0.0, 1.3, 2.6, 4.1};
   PlanResult plan_built = build_radial(glow_params(GetParam()), moving_params());
   ASSERT_TRUE(plan_built) << plan_built.message();
-  GlowPlan& plan = *plan_built;
+  EffectPlan& plan = *plan_built;
   img::Image ramp(kW, kH);
   for (uint32_t y = 0; y < kH; ++y)
     for (uint32_t x = 0; x < kW; ++x) {
@@ -314,7 +314,7 @@ TEST(RadialScene, ReadsEveryField) {
                                        "s.json", "");
   ASSERT_TRUE(load) << load.message();
   const Scene& s = *load;
-  EXPECT_EQ(s.effect, "radial-beams");
+  EXPECT_EQ(s.effect, EffectKind::RadialBeams);
   EXPECT_EQ(s.params.tier, Tier::Dx8);
   EXPECT_EQ(s.radial.centre[1], 0.75);
   EXPECT_EQ(s.radial.steps, 12u);

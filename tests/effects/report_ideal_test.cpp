@@ -134,7 +134,7 @@ TEST(ReportIdeal, SweepErrorsEqualAnIndependentComputation) {
     CpuPassDevice cpu;
     const PlanResult plan = build_glow(scene.params);
     ASSERT_TRUE(plan) << plan.message();
-    const GlowRun run = run_glow(*plan, image, cpu);
+    const EffectRun run = run_effect(*plan, image, cpu);
     ASSERT_TRUE(run.run.ok()) << run.run.message();
     const RgbImage ideal = direct_ideal(image, scene.params.profile);
     const img::Image& glow = run.images.at("glow");

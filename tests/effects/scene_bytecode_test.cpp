@@ -64,7 +64,7 @@ TEST(SceneBytecode, Ps1xMaxPresets) {
   EXPECT_EQ(n->params.ps1x_max, 4.0f);
   PlanResult plan_built = build_glow(r->params);
   ASSERT_TRUE(plan_built) << plan_built.message();
-  GlowPlan& plan = *plan_built;
+  EffectPlan& plan = *plan_built;
   EXPECT_EQ(plan.graph.conventions.ps1x_max_value, 8.0f);
   ir::Result<Scene> bad = load("0.5");
   EXPECT_FALSE(bad);

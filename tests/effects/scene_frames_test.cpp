@@ -1,5 +1,5 @@
 // The frame-to-frame fields of a scene's "glow" (ramped numbers, the after-image): read into
-// GlowParams, and every bad value named by JSON pointer at its line:col (counted by hand).
+// EffectParams, and every bad value named by JSON pointer at its line:col (counted by hand).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -19,7 +19,7 @@ TEST(SceneFrames, RampsAndAfterimageAreRead) {
   ir::Result<Scene> s = parse(R"({"glow": {"intensity": {"keyframes": [[1, 0.5], [9, 2]]},
     "weight_scale": 0.9, "afterimage": {"mode": "glow", "gain": {"keyframes": [[4, 0.25]]}}}})");
   ASSERT_TRUE(s) << s.message();
-  const GlowParams& p = s->params;
+  const EffectParams& p = s->params;
   ASSERT_EQ(p.intensity_ramp.points.size(), 2u);
   EXPECT_EQ(p.intensity_ramp.points[1], (std::pair<unsigned, double>{9, 2.0}));
   EXPECT_EQ(p.intensity, 0.5); // the first keyframe's value

@@ -9,6 +9,8 @@
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
+#include <string_view>
+#include <utility>
 
 #include "listing_files.h"
 #include "scene_error_case.h"
@@ -40,7 +42,7 @@ TEST(Scene, EveryShippedSceneLoadsAndBuilds) {
 TEST(Scene, DefaultJsonSaysWhatTheBuiltInDefaultIs) {
   ir::Result<Scene> s = load_scene_file((kScenes / "default.json").string());
   ASSERT_TRUE(s) << s.message();
-  const GlowParams &a = s->params, &b = default_scene().params;
+  const EffectParams &a = s->params, &b = default_scene().params;
   EXPECT_EQ(s->image, "builtin:neon");
   EXPECT_EQ(a.width, 1280u);
   EXPECT_EQ(a.height, 720u);
@@ -63,7 +65,7 @@ TEST(Scene, FieldsAreRead) {
     "format": "rgba8", "half_texel": false, "intensity": 0.5, "taps": 5,
     "profile": {"gaussians": [{"sigma": 2, "weight": 1}]}}})");
   ASSERT_TRUE(s) << s.message();
-  const GlowParams& p = s->params;
+  const EffectParams& p = s->params;
   EXPECT_EQ(p.width, 64u);
   EXPECT_EQ(p.height, 48u);
   EXPECT_EQ(p.tier, Tier::Dx8);
@@ -169,6 +171,33 @@ TEST(Scene, TheSchemaFileListsTheKeysTheLoaderAccepts) {
   EXPECT_EQ(keys_of(schema["properties"]["outline"]["properties"]), keys_of(scene_outline_keys()));
   EXPECT_EQ(values_of(schema["properties"]["effect"]["enum"]), keys_of(scene_effects()));
   EXPECT_EQ(keys_of(schema["properties"]["glsl"]["properties"]), keys_of(scene_glsl_keys()));
+}
+
+// The effect registry (effect_kinds): each kind once, named as the scene files name it, with
+// the key of its own object; a scene's "effect" string selects the kind.
+TEST(Scene, EachEffectKindIsRegisteredOnceWithItsNameAndObject) {
+  const std::pair<EffectKind, std::pair<std::string_view, std::string_view>> expected[] = {
+      {EffectKind::Glow, {"glow", ""}},
+      {EffectKind::RadialBeams, {"radial-beams", "radial"}},
+      {EffectKind::StencilOutline, {"stencil-outline", "outline"}},
+      {EffectKind::GlslBlur, {"glsl-blur", "glsl"}}};
+  ASSERT_EQ(effect_kinds().size(), std::size(expected));
+  for (const auto& [kind, names] : expected) {
+    const EffectInfo& info = effect_info(kind);
+    EXPECT_EQ(info.kind, kind);
+    EXPECT_EQ(info.name, names.first);
+    EXPECT_EQ(info.object, names.second);
+    EXPECT_EQ(parse_effect_kind(names.first), kind);
+  }
+  EXPECT_EQ(parse_effect_kind("bloom"), std::nullopt);
+  EXPECT_EQ(parse_effect_kind("Glow"), std::nullopt); // names are exact
+  ir::Result<Scene> outline =
+      parse_scene(R"({"effect": "stencil-outline", "size": [8, 8]})", "s.json", "");
+  ASSERT_TRUE(outline) << outline.message();
+  EXPECT_EQ(outline->effect, EffectKind::StencilOutline);
+  ir::Result<Scene> plain = parse_scene(R"({"size": [8, 8]})", "s.json", "");
+  ASSERT_TRUE(plain) << plain.message();
+  EXPECT_EQ(plain->effect, EffectKind::Glow); // the default
 }
 
 } // namespace

@@ -261,7 +261,7 @@ TEST(SinglePassGraph, RunFailureKeepsTheDevicesOwnWords) {
   public:
     std::string name() const override { return "refusing"; }
     ir::Status begin_run(const EffectGraph&, const ImageMap&) override { return ir::ok_status(); }
-    ir::Result<pass::DrawReport> run_pass(const PassDesc&) override {
+    ir::Result<pass::DrawReport> draw(const PassDesc&) override {
       return device_error("no such thing");
     }
     ir::Result<img::Image> read_texture(const std::string&) override { return img::Image(); }

@@ -217,7 +217,7 @@ bool mentions(const std::vector<std::string>& lines, const std::string& what) {
 }
 
 TEST(StressWarnings, GlowWarnsOfTheRgba8Regimes) {
-  effects::GlowParams p; // the default scene: 4 blur passes an axis, intensity 1, rgba32f
+  effects::EffectParams p; // the default scene: 4 blur passes an axis, intensity 1, rgba32f
   EXPECT_FALSE(mentions(effects::glow_warnings(p), "rgba8"));
   p.format = img::Format::RGBA8;
   EXPECT_FALSE(mentions(effects::glow_warnings(p), "rgba8")) << "4 passes, intensity 1";

@@ -23,10 +23,10 @@ using test_scenes::make_scene;
 using test_scenes::Scene;
 
 // Every blur pass's pixel constants (its weights) scaled by `factor`.
-GlowPlan perturb_blur_weights(GlowPlan plan, float factor) {
+EffectPlan perturb_blur_weights(EffectPlan plan, float factor) {
   for (PassDesc& d : plan.graph.passes)
     if (d.name.rfind("blur_", 0) == 0)
-      for (auto& c : d.ps_constants)
+      for (auto& c : d.ps_constants.f)
         for (float& x : c) x *= factor;
   return plan;
 }
@@ -37,7 +37,7 @@ void check_format(img::Format format) {
     for (unsigned n : {1u, 2u, 4u})
       for (bool half : {true, false})
         for (Scene s : {Scene::RandomBinaryAlpha, Scene::RandomAlpha, Scene::Default}) {
-          GlowParams p;
+          EffectParams p;
           p.tier = tier;
           p.downsample = n;
           p.format = format;
@@ -46,16 +46,16 @@ void check_format(img::Format format) {
           const img::Image scene = make_scene(s, p.width, p.height);
           const PlanResult plan_built = build_glow(p);
           ASSERT_TRUE(plan_built) << plan_built.message();
-          const GlowPlan& plan = *plan_built;
+          const EffectPlan& plan = *plan_built;
           const std::string name = std::string(tier_name(tier)) + " ds" + std::to_string(n) +
                                    (half ? " half" : " nohalf") + " scene " +
                                    std::to_string(int(s));
           AnalyticPassDevice analytic;
-          GlowRun model = run_glow(plan, scene, analytic, true);
+          EffectRun model = run_effect(plan, scene, analytic, true);
           ASSERT_TRUE(model.run.ok()) << model.run.message();
           for (float factor : {1.0f, 1.001f}) {
             CpuPassDevice cpu_dev(2);
-            GlowRun run = run_glow(perturb_blur_weights(plan, factor), scene, cpu_dev, true);
+            EffectRun run = run_effect(perturb_blur_weights(plan, factor), scene, cpu_dev, true);
             ASSERT_TRUE(run.run.ok()) << run.run.message();
             ir::Result<RunAgreement> agree_compared = compare_runs(
                 *run.run, run.images, *model.run, model.images, std::string(kFinalTexture));

@@ -21,7 +21,7 @@ namespace {
 constexpr int kScenes = 64; // about 0.2 s each here: bounded for CI
 
 struct RandomScene {
-  GlowParams params;
+  EffectParams params;
   img::Image image;
   std::string description;
 };
@@ -32,7 +32,7 @@ RandomScene draw_scene(std::mt19937& rng) {
   };
   auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<>(lo, hi)(rng); };
   RandomScene s;
-  GlowParams& p = s.params;
+  EffectParams& p = s.params;
   p.tier = pick(0, 1) ? Tier::Dx9 : Tier::Dx8;
   p.downsample = unsigned(pick(1, 4));
   const img::Format formats[] = {img::Format::RGBA8, img::Format::RGBA16F, img::Format::RGBA32F};
@@ -82,18 +82,18 @@ TEST_F(ThreeWayProperty, EveryLegalRandomSceneAgreesThreeWays) {
     SCOPED_TRACE(s.description);
     PlanResult plan_built = build_glow(s.params);
     ASSERT_TRUE(plan_built) << plan_built.message();
-    GlowPlan& plan = *plan_built; // every drawn scene is legal
+    EffectPlan& plan = *plan_built; // every drawn scene is legal
     CpuPassDevice cpu_dev(2);
     AnalyticPassDevice analytic;
     auto vk_dev = make_vulkan_pass_device(*dev);
     struct Way {
       const char* name;
-      GlowRun run;
+      EffectRun run;
     };
     std::vector<Way> ways;
-    ways.push_back({"cpu", run_glow(plan, s.image, cpu_dev, true)});
-    ways.push_back({"vulkan", run_glow(plan, s.image, *vk_dev, true)});
-    ways.push_back({"analytic", run_glow(plan, s.image, analytic, true)});
+    ways.push_back({"cpu", run_effect(plan, s.image, cpu_dev, true)});
+    ways.push_back({"vulkan", run_effect(plan, s.image, *vk_dev, true)});
+    ways.push_back({"analytic", run_effect(plan, s.image, analytic, true)});
     for (const Way& w : ways) ASSERT_TRUE(w.run.run.ok()) << w.name << ": " << w.run.run.message();
     for (size_t a = 0; a < ways.size(); ++a)
       for (size_t b = a + 1; b < ways.size(); ++b) {

@@ -33,7 +33,7 @@ img::Image random_scene(uint32_t w, uint32_t h, uint32_t seed) {
 TEST(ThreeWayRgba8, DownsampleStoresTheInterpretersBytesAtExactMidpoints) {
   for (unsigned n : {2u, 3u, 4u}) {
     SCOPED_TRACE(n);
-    GlowParams p;
+    EffectParams p;
     p.downsample = n;
     p.format = img::Format::RGBA8;
     p.width = 50;
@@ -41,10 +41,11 @@ TEST(ThreeWayRgba8, DownsampleStoresTheInterpretersBytesAtExactMidpoints) {
     const img::Image scene = random_scene(p.width, p.height, 1122);
     PlanResult plan_built = build_glow(p);
     ASSERT_TRUE(plan_built) << plan_built.message();
-    GlowPlan& plan = *plan_built;
+    EffectPlan& plan = *plan_built;
     CpuPassDevice cpu_dev(2);
     AnalyticPassDevice analytic;
-    GlowRun a = run_glow(plan, scene, cpu_dev, true), b = run_glow(plan, scene, analytic, true);
+    EffectRun a = run_effect(plan, scene, cpu_dev, true),
+              b = run_effect(plan, scene, analytic, true);
     ASSERT_TRUE(a.run.ok() && b.run.ok()) << a.run.message() << b.run.message();
     ASSERT_EQ(a.run->passes[0].result.rgba, b.run->passes[0].result.rgba) << "extract";
     const img::Image& src = b.run->passes[0].result; // the glow sources, 8-bit
@@ -128,7 +129,7 @@ TEST(ThreeWaySameInputs, Rgba8ReplacingPassesAgreeAlone) {
       for (uint32_t seed : {1u, 2u, 3u}) {
         SCOPED_TRACE(std::string(tier_name(tier)) + " N " + std::to_string(n) + " seed " +
                      std::to_string(seed));
-        GlowParams p;
+        EffectParams p;
         p.tier = tier;
         p.downsample = n;
         p.format = img::Format::RGBA8;
@@ -136,10 +137,10 @@ TEST(ThreeWaySameInputs, Rgba8ReplacingPassesAgreeAlone) {
         p.height = 31;
         PlanResult plan_built = build_glow(p);
         ASSERT_TRUE(plan_built) << plan_built.message();
-        GlowPlan& plan = *plan_built;
+        EffectPlan& plan = *plan_built;
         CpuPassDevice cpu_dev(2);
         // The interpreter's images after every pass: the inputs each pass gets.
-        GlowRun whole = run_glow(plan, random_scene(p.width, p.height, seed), cpu_dev, true);
+        EffectRun whole = run_effect(plan, random_scene(p.width, p.height, seed), cpu_dev, true);
         ASSERT_TRUE(whole.run.ok()) << whole.run.message();
         ImageMap state{{std::string(kSceneTexture), whole.images.at(std::string(kSceneTexture))}};
         uint64_t midpoint_pixels = 0, differing = 0;

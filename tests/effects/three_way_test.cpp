@@ -73,7 +73,7 @@ public:
 
 struct Way {
   std::string name;
-  GlowRun run;
+  EffectRun run;
 };
 
 // RGBA8 and RGBA16F and the analytic device: averaging 8-bit texels with weights 1/4 or 1/16
@@ -110,7 +110,7 @@ class ThreeWay : public vulkan::test::VulkanTest, public ::testing::WithParamInt
 
 TEST_P(ThreeWay, EveryPairAgreesOnEveryPass) {
   const Case c = GetParam();
-  GlowParams p;
+  EffectParams p;
   p.tier = c.tier;
   p.downsample = c.downsample;
   p.format = c.format;
@@ -119,15 +119,15 @@ TEST_P(ThreeWay, EveryPairAgreesOnEveryPass) {
   const img::Image scene = make_scene(c.scene, p.width, p.height);
   PlanResult plan_built = build_glow(p);
   ASSERT_TRUE(plan_built) << plan_built.message();
-  GlowPlan& plan = *plan_built;
+  EffectPlan& plan = *plan_built;
 
   CpuPassDevice cpu_dev(2);
   AnalyticPassDevice analytic;
   auto vk_dev = make_vulkan_pass_device(*dev);
   std::vector<Way> ways;
-  ways.push_back({"cpu", run_glow(plan, scene, cpu_dev, true)});
-  ways.push_back({"vulkan", run_glow(plan, scene, *vk_dev, true)});
-  ways.push_back({"analytic", run_glow(plan, scene, analytic, true)});
+  ways.push_back({"cpu", run_effect(plan, scene, cpu_dev, true)});
+  ways.push_back({"vulkan", run_effect(plan, scene, *vk_dev, true)});
+  ways.push_back({"analytic", run_effect(plan, scene, analytic, true)});
   for (const Way& w : ways) ASSERT_TRUE(w.run.run.ok()) << w.name << ": " << w.run.run.message();
   EXPECT_TRUE(dev->messages().empty()) << dev->messages().front();
   expect_agreement(ways, plan.graph.passes.size(), c.format);
@@ -165,14 +165,14 @@ class ThreeWayFullSize : public vulkan::test::VulkanTest,
 
 TEST_P(ThreeWayFullSize, DefaultSceneEveryPairAgrees) {
   const FullSize c = GetParam();
-  GlowParams p; // 1280×720
+  EffectParams p; // 1280×720
   p.tier = c.tier;
   p.downsample = c.downsample;
   p.format = c.format;
   p.subtexel_bits = 0;
   PlanResult plan_built = build_glow(p);
   ASSERT_TRUE(plan_built) << plan_built.message();
-  GlowPlan& plan = *plan_built;
+  EffectPlan& plan = *plan_built;
   const img::Image scene = make_default_scene(p.width, p.height);
   CpuPassDevice cpu_dev(2);
   AnalyticPassDevice analytic;
@@ -182,7 +182,7 @@ TEST_P(ThreeWayFullSize, DefaultSceneEveryPairAgrees) {
                               {"vulkan", vk_dev.get()},
                               {"analytic", &analytic}}) {
     auto t0 = std::chrono::steady_clock::now();
-    ways.push_back({name, run_glow(plan, scene, *device, true)});
+    ways.push_back({name, run_effect(plan, scene, *device, true)});
     std::printf(
         "[three-way] 1280x720 %s ds%u %s on %s: %.0f ms\n", std::string(tier_name(c.tier)).c_str(),
         c.downsample, std::string(img::format_name(c.format)).c_str(), name,
@@ -208,7 +208,7 @@ INSTANTIATE_TEST_SUITE_P(Glow, ThreeWayFullSize,
 // The half-texel rule on the analytic blur passes (the first pass of each axis, which
 // replaces its target, so it holds that pass's taps alone), both ways, for each tier.
 void check_half_texel_rule(Tier tier, bool half_texel) {
-  GlowParams p;
+  EffectParams p;
   p.tier = tier;
   p.downsample = 2;
   p.format = img::Format::RGBA32F;
@@ -219,9 +219,9 @@ void check_half_texel_rule(Tier tier, bool half_texel) {
   const img::Image scene = make_scene(Scene::RandomAlpha, p.width, p.height);
   PlanResult plan_built = build_glow(p);
   ASSERT_TRUE(plan_built) << plan_built.message();
-  GlowPlan& plan = *plan_built;
+  EffectPlan& plan = *plan_built;
   AnalyticPassDevice analytic;
-  GlowRun run = run_glow(plan, scene, analytic, true);
+  EffectRun run = run_effect(plan, scene, analytic, true);
   ASSERT_TRUE(run.run.ok()) << run.run.message();
   const unsigned per_pass = tier == Tier::Dx9 ? kTapsPerBlurPassDx9 : kTapsPerBlurPassDx8;
   for (const char* name : {"blur_h.0", "blur_v.0"}) {
@@ -240,7 +240,7 @@ void check_half_texel_rule(Tier tier, bool half_texel) {
     ASSERT_EQ(d.textures[0].sampler.address_v, cpu::AddressMode::Clamp);
     const img::Image& source = run.images.at(d.textures[0].texture);
     ir::Result<analytic::TapExtraction> ex =
-        analytic::extract_taps(*d.vs, d.vs_constants, *d.ps, d.ps_constants);
+        analytic::extract_taps(*d.vs, d.vs_constants.f, *d.ps, d.ps_constants.f);
     ASSERT_TRUE(ex) << ex.message();
     ASSERT_EQ(ex->taps.size(), per_pass);
     // The intended taps are the profile's first taps along the axis (padding: weight 0).
@@ -297,32 +297,32 @@ TEST(ThreeWayHalfTexel, Dx8WithoutHalfTexelBlurShiftsAsTheCornerModelSays) {
 
 // A pass the model cannot take is an error naming the pass and the instruction.
 TEST(ThreeWayAnalytic, UnmodelledPassesAreErrors) {
-  GlowParams p;
+  EffectParams p;
   const img::Image scene = make_scene(Scene::RandomAlpha, p.width, p.height);
   PlanResult plan_built = build_glow(p);
   ASSERT_TRUE(plan_built) << plan_built.message();
-  GlowPlan& plan = *plan_built;
+  EffectPlan& plan = *plan_built;
   ListingResult product = builtin_listing("glow/extract_sources.psh"); // rgb × alpha
   ASSERT_TRUE(product) << product.message();
-  GlowPlan bad = plan;
+  EffectPlan bad = plan;
   bad.graph.passes.back().ps = *product; // the composite, still declared Linear
   AnalyticPassDevice analytic;
-  GlowRun r = run_glow(bad, scene, analytic);
+  EffectRun r = run_effect(bad, scene, analytic);
   EXPECT_FALSE(r.run.ok());
   EXPECT_NE(r.run.message().find("pass 'composite'"), std::string::npos) << r.run.message();
   EXPECT_NE(r.run.message().find("line 7:1"), std::string::npos) << r.run.message();
   EXPECT_NE(r.run.message().find("product of two samples"), std::string::npos) << r.run.message();
   bad = plan;
   bad.graph.passes.back().blend = cpu::BlendMode::SrcAlphaOne;
-  r = run_glow(bad, scene, analytic);
+  r = run_effect(bad, scene, analytic);
   EXPECT_NE(r.run.message().find("Replace and ONE/ONE"), std::string::npos) << r.run.message();
   bad = plan;
   bad.graph.passes[0].analytic = AnalyticForm::MaskByAlpha;
   bad.graph.passes.back().analytic = AnalyticForm::MaskByAlpha; // reads two textures
-  r = run_glow(bad, scene, analytic);
+  r = run_effect(bad, scene, analytic);
   EXPECT_NE(r.run.message().find("2 different reads"), std::string::npos) << r.run.message();
   // And the plan itself runs, with no notes for ps_2_0 passes.
-  r = run_glow(plan, scene, analytic);
+  r = run_effect(plan, scene, analytic);
   EXPECT_TRUE(r.run.ok()) << r.run.message();
   EXPECT_TRUE(analytic.notes().empty()) << analytic.notes().front();
 }

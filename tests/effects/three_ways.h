@@ -26,14 +26,15 @@ struct ThreeDevices {
   std::array<PassDevice*, 3> all() { return {&cpu, vk.get(), &analytic}; }
 };
 
-using NamedRuns = std::vector<std::pair<std::string, GlowRun>>;
+using NamedRuns = std::vector<std::pair<std::string, EffectRun>>;
 
 // The plan run once on each way, every pass's images kept for compare_pairs.
-inline NamedRuns run_three_ways(const GlowPlan& plan, const img::Image& scene, ThreeDevices& ways) {
+inline NamedRuns run_three_ways(const EffectPlan& plan, const img::Image& scene,
+                                ThreeDevices& ways) {
   NamedRuns runs;
-  runs.emplace_back("cpu", run_glow(plan, scene, ways.cpu, true));
-  runs.emplace_back("vulkan", run_glow(plan, scene, *ways.vk, true));
-  runs.emplace_back("analytic", run_glow(plan, scene, ways.analytic, true));
+  runs.emplace_back("cpu", run_effect(plan, scene, ways.cpu, true));
+  runs.emplace_back("vulkan", run_effect(plan, scene, *ways.vk, true));
+  runs.emplace_back("analytic", run_effect(plan, scene, ways.analytic, true));
   return runs;
 }
 

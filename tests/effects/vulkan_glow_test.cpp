@@ -50,7 +50,7 @@ using GlowVulkanDevice = vulkan::test::VulkanTest;
 
 TEST_P(GlowVulkan, EveryPassAgrees) {
   const Case c = GetParam();
-  GlowParams p;
+  EffectParams p;
   p.tier = c.tier;
   p.width = c.width;
   p.height = c.height;
@@ -61,13 +61,13 @@ TEST_P(GlowVulkan, EveryPassAgrees) {
   p.subtexel_bits = 0; // lavapipe weights float textures exactly (see cmd_glow.cpp)
   PlanResult plan_built = build_glow(p);
   ASSERT_TRUE(plan_built) << plan_built.message();
-  GlowPlan& plan = *plan_built;
+  EffectPlan& plan = *plan_built;
   const img::Image scene = c.random_scene ? random_scene(c.width, c.height, c.format)
                                           : make_default_scene(c.width, c.height, c.format);
   CpuPassDevice cpu_dev(2);
   auto vk_dev = make_vulkan_pass_device(*dev);
-  GlowRun a = run_glow(plan, scene, cpu_dev, true);
-  GlowRun b = run_glow(plan, scene, *vk_dev, true);
+  EffectRun a = run_effect(plan, scene, cpu_dev, true);
+  EffectRun b = run_effect(plan, scene, *vk_dev, true);
   ASSERT_TRUE(a.run.ok()) << a.run.message();
   ASSERT_TRUE(b.run.ok()) << b.run.message();
   ir::Result<RunAgreement> agree_compared =
@@ -145,19 +145,19 @@ double bilinear(const img::Image& im, double gx, double gy, int c) {
 // does, so every pass and the final frame agree bit for bit, ties included. The test counts
 // the ties (by exact math in double) to show they are there to be rounded.
 TEST_F(GlowVulkanDevice, CompositeAgreesExactlyOnRoundingTies) {
-  GlowParams p;
+  EffectParams p;
   p.width = 128;
   p.height = 64;
   p.downsample = 2;
   p.format = img::Format::RGBA8;
   PlanResult plan_built = build_glow_dx9(p);
   ASSERT_TRUE(plan_built) << plan_built.message();
-  GlowPlan& plan = *plan_built;
+  EffectPlan& plan = *plan_built;
   const img::Image scene = make_default_scene(128, 64, p.format);
   CpuPassDevice cpu_dev(2);
   auto vk_dev = make_vulkan_pass_device(*dev);
-  GlowRun a = run_glow(plan, scene, cpu_dev, true);
-  GlowRun b = run_glow(plan, scene, *vk_dev, true);
+  EffectRun a = run_effect(plan, scene, cpu_dev, true);
+  EffectRun b = run_effect(plan, scene, *vk_dev, true);
   ASSERT_TRUE(a.run.ok() && b.run.ok()) << a.run.message() << b.run.message();
   ASSERT_EQ(a.run->passes.size(), b.run->passes.size());
   for (size_t i = 0; i < a.run->passes.size(); ++i)
@@ -185,17 +185,17 @@ TEST_F(GlowVulkanDevice, CompositeAgreesExactlyOnRoundingTies) {
 // With alpha 0 everywhere the Vulkan device too must return the scene exactly.
 TEST_F(GlowVulkanDevice, NothingGlowsGivesTheSceneBack) {
   for (img::Format f : {img::Format::RGBA32F, img::Format::RGBA8}) {
-    GlowParams p;
+    EffectParams p;
     p.width = 128;
     p.height = 64;
     p.format = f;
     PlanResult plan_built = build_glow_dx9(p);
     ASSERT_TRUE(plan_built) << plan_built.message();
-    GlowPlan& plan = *plan_built;
+    EffectPlan& plan = *plan_built;
     img::Image scene = make_default_scene(128, 64, f);
     for (size_t i = 3; i < scene.rgba.size(); i += 4) scene.rgba[i] = 0.0f;
     auto vk_dev = make_vulkan_pass_device(*dev);
-    GlowRun g = run_glow(plan, scene, *vk_dev);
+    EffectRun g = run_effect(plan, scene, *vk_dev);
     ASSERT_TRUE(g.run.ok()) << g.run.message();
     EXPECT_EQ(g.images.at(std::string(kFinalTexture)).rgba, scene.rgba);
   }

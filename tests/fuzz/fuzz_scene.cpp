@@ -20,7 +20,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (r.message().empty() || r.message().find("error: ") == std::string::npos) std::abort();
     return 0;
   }
-  const effects::GlowParams& p = r->params;
+  const effects::EffectParams& p = r->params;
   if (p.width == 0 || p.height == 0 || p.downsample < 1 || p.downsample > 4) std::abort();
   return 0;
 }

@@ -22,7 +22,7 @@ ir::Status AnalyticPassDevice::begin_run(const EffectGraph& graph, const ImageMa
   return ir::ok_status();
 }
 
-ir::Result<pass::DrawReport> AnalyticPassDevice::run_pass(const PassDesc& pass) {
+ir::Result<pass::DrawReport> AnalyticPassDevice::draw(const PassDesc& pass) {
   if (!graph_) return device_error("no run was begun");
   if (std::string e = detail::run_analytic_pass(pass, *graph_, images_, midpoints_, &notes_);
       !e.empty())

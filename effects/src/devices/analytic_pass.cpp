@@ -159,11 +159,9 @@ std::string run_analytic_pass(const PassDesc& pass, const EffectGraph& graph, Im
   if (!pass.vs || !pass.ps)
     return fmt::format("pass '{}': needs a vertex and a pixel listing", pass.name);
   // The model reads taps off straight-line listings; i# and b# only steer flow control.
-  const PassDesc plain;
-  if (pass.vs_int_constants != plain.vs_int_constants ||
-      pass.ps_int_constants != plain.ps_int_constants ||
-      pass.vs_bool_constants != plain.vs_bool_constants ||
-      pass.ps_bool_constants != plain.ps_bool_constants)
+  const pass::ConstantBank plain;
+  if (pass.vs_constants.i != plain.i || pass.ps_constants.i != plain.i ||
+      pass.vs_constants.b != plain.b || pass.ps_constants.b != plain.b)
     return fmt::format("pass '{}': the analytic model takes no integer or boolean constants",
                        pass.name);
   if (pass.analytic == AnalyticForm::Coverage) {
@@ -210,7 +208,7 @@ std::string run_analytic_pass(const PassDesc& pass, const EffectGraph& graph, Im
     result.emplace(analytic::linear_pass(taps, in, &pass_notes));
   } else if (pass.analytic == AnalyticForm::Linear) {
     ir::Result<analytic::TapExtraction> ex =
-        analytic::extract_taps(*pass.vs, pass.vs_constants, *pass.ps, pass.ps_constants);
+        analytic::extract_taps(*pass.vs, pass.vs_constants.f, *pass.ps, pass.ps_constants.f);
     if (!ex)
       return fmt::format("cannot model pass '{}' as a weighted sum of reads: {}", pass.name,
                          ex.message());
@@ -218,7 +216,7 @@ std::string run_analytic_pass(const PassDesc& pass, const EffectGraph& graph, Im
     result.emplace(analytic::linear_pass(ex->taps, in, &pass_notes));
   } else if (pass.analytic == AnalyticForm::MaskByAlphaFogged) {
     ir::Result<std::vector<analytic::Tap>> ex =
-        analytic::extract_reads(*pass.vs, pass.vs_constants, *pass.ps);
+        analytic::extract_reads(*pass.vs, pass.vs_constants.f, *pass.ps);
     if (!ex)
       return fmt::format("cannot model pass '{}' as fogged glow sources: {}", pass.name,
                          ex.message());
@@ -227,10 +225,10 @@ std::string run_analytic_pass(const PassDesc& pass, const EffectGraph& graph, Im
                          "{} different reads (expected the sources, then the depth)",
                          pass.name, ex->size());
     result.emplace(analytic::fogged_mask_pass(
-        (*ex)[0], (*ex)[1], analytic::fog_form(*pass.ps, pass.ps_constants), in, &pass_notes));
+        (*ex)[0], (*ex)[1], analytic::fog_form(*pass.ps, pass.ps_constants.f), in, &pass_notes));
   } else {
     ir::Result<std::vector<analytic::Tap>> ex =
-        analytic::extract_reads(*pass.vs, pass.vs_constants, *pass.ps);
+        analytic::extract_reads(*pass.vs, pass.vs_constants.f, *pass.ps);
     if (!ex)
       return fmt::format("cannot model pass '{}' as rgb × alpha of one read: {}", pass.name,
                          ex.message());

@@ -93,8 +93,8 @@ std::string constant_outputs(const PassDesc& pass, std::array<pass::Vec4, 4>& ou
         found = true;
       }
     if (!found) {
-      if (s.index < pass.ps_constants.size())
-        out[d.index] = pass.ps_constants[s.index];
+      if (s.index < pass.ps_constants.f.size())
+        out[d.index] = pass.ps_constants.f[s.index];
       else
         out[d.index] = {0, 0, 0, 0}; // an unset constant reads zero (D3D9's reset state)
     }

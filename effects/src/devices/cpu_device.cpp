@@ -31,13 +31,11 @@ ir::Status CpuPassDevice::begin_run(const EffectGraph& graph, const ImageMap& in
   graph_ = &graph;
   ImageMap kept;
   kept.swap(images_);
-  placeholders_.clear();
   stale_.clear();
   stencils_.clear();
   for (const TextureDesc& t : graph.textures) {
     if (t.stencil) {
       stencils_[t.name].assign(size_t{t.width} * t.height, 0);
-      placeholders_.emplace(t.name, img::Image());
       continue;
     }
     auto in = inputs.find(t.name);
@@ -55,8 +53,6 @@ ir::Status CpuPassDevice::begin_run(const EffectGraph& graph, const ImageMap& in
     } else {
       reset_image(im, t.width, t.height, t.format, nullptr);
     }
-    // make_pass wants an image per bound texture; run_pass binds the real one by reference.
-    placeholders_.emplace(t.name, img::Image());
   }
   return ir::ok_status();
 }
@@ -69,9 +65,9 @@ void CpuPassDevice::settle(const std::string& name) {
   if (im != images_.end()) std::fill(im->second.rgba.begin(), im->second.rgba.end(), 0.0f);
 }
 
-ir::Result<pass::DrawReport> CpuPassDevice::run_pass(const PassDesc& desc) {
+ir::Result<pass::DrawReport> CpuPassDevice::draw(const PassDesc& desc) {
   if (!graph_) return device_error("no run was begun");
-  ir::Result<pass::Pass> pass = make_pass(desc, placeholders_, graph_->conventions);
+  ir::Result<pass::Pass> pass = make_pass(desc, graph_->conventions);
   if (!pass) return std::move(pass).failure();
   pass->executor = executor_;
   // A GLSL pass: the interpreter runs D3D9 listings only, so it runs the pass's ps_2_0 twin
@@ -96,8 +92,8 @@ ir::Result<pass::DrawReport> CpuPassDevice::run_pass(const PassDesc& desc) {
   }
   for (const TextureBind& b : desc.textures) {
     settle(b.texture);
-    auto tex = images_.find(b.texture); // make_pass checked the name and the stage already
-    if (tex == images_.end() || b.stage >= pass::kMaxSamplers)
+    auto tex = images_.find(b.texture); // make_pass checked the stage already
+    if (tex == images_.end())
       return device_error(
           fmt::format("pass '{}': texture '{}' has no image", desc.name, b.texture));
     // Not owned: the image outlives the draw, and check_graph refuses a pass that reads its

@@ -27,7 +27,6 @@ public:
   ir::Status begin_run(const EffectGraph& graph, const ImageMap& inputs) override {
     graph_ = nullptr;
     ids_.clear();
-    placeholders_.clear();
     textures_.clear();
     for (const TextureDesc& t : graph.textures) {
       ir::Result<vulkan::TextureId> id = t.stencil ? textures_.create_stencil(t.width, t.height)
@@ -41,8 +40,6 @@ public:
             fmt::format("texture '{}': {}", t.name, id ? uploaded.message() : id.message()));
       }
       ids_[t.name] = *id;
-      // make_pass wants an image per bound texture; the draw samples the resident one.
-      placeholders_.emplace(t.name, img::Image());
     }
     graph_ = &graph;
     for (const PassDesc& desc : graph.passes) {
@@ -60,12 +57,12 @@ public:
     return textures_.set_batching(true);
   }
 
-  ir::Result<pass::DrawReport> run_pass(const PassDesc& desc) override {
+  ir::Result<pass::DrawReport> draw(const PassDesc& desc) override {
     if (!graph_) return device_error("no run was begun");
-    Draw draw;
-    if (std::string e = make_draw(desc, draw); !e.empty()) return device_error(std::move(e));
+    Draw made;
+    if (std::string e = make_draw(desc, made); !e.empty()) return device_error(std::move(e));
     // No pixel counters on the GPU: the report holds the times only.
-    return textures_.draw(draw.pass, draw.stages, draw.targets);
+    return textures_.draw(made.pass, made.stages, made.targets);
   }
 
   ir::Status finish() override { return textures_.flush(); }
@@ -92,7 +89,7 @@ private:
   };
 
   std::string make_draw(const PassDesc& desc, Draw& out) const {
-    ir::Result<pass::Pass> pass = make_pass(desc, placeholders_, graph_->conventions);
+    ir::Result<pass::Pass> pass = make_pass(desc, graph_->conventions);
     if (!pass) return pass.message();
     auto target = ids_.find(desc.target);
     if (target == ids_.end()) return fmt::format("no texture '{}'", desc.target);
@@ -110,7 +107,7 @@ private:
       out.targets.stencil = s->second;
     }
     for (const TextureBind& b : desc.textures) {
-      auto it = ids_.find(b.texture); // make_pass checked the name and the stage already
+      auto it = ids_.find(b.texture); // make_pass checked the stage already
       if (it == ids_.end() || b.stage >= out.stages.size())
         return fmt::format("pass '{}': texture '{}' has no image", desc.name, b.texture);
       out.stages[b.stage] = it->second;
@@ -124,14 +121,12 @@ private:
     graph_ = nullptr;
     textures_.clear();
     ids_.clear();
-    placeholders_.clear();
   }
 
   vulkan::Device& device_;
   vulkan::TextureSet textures_;
   const EffectGraph* graph_ = nullptr;
   std::map<std::string, vulkan::TextureId, std::less<>> ids_;
-  ImageMap placeholders_;
 };
 
 } // namespace

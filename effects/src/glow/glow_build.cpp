@@ -32,7 +32,7 @@ std::vector<Tier> all_tiers() {
   return tiers;
 }
 
-PlanResult build_glow(const GlowParams& params) {
+PlanResult build_glow(const EffectParams& params) {
   switch (params.tier) {
   case Tier::Dx8: return build_glow_dx8(params);
   case Tier::Dx7: return build_glow_dx7(params);

@@ -21,7 +21,7 @@ struct Listings {
   ProgramPtr fogged; // the fogged extract (only with fog)
 };
 
-ir::Result<Listings> load_listings(const GlowParams& p, const TierListingPaths& paths) {
+ir::Result<Listings> load_listings(const EffectParams& p, const TierListingPaths& paths) {
   Listings l;
   const std::pair<ProgramPtr*, std::string_view> wanted[] = {
       {&l.helper_vs, paths.helper_vs},      {&l.extract, paths.extract_ps},
@@ -89,7 +89,7 @@ std::vector<std::vector<pass::Vec4>> ramp_table(const Keyframes& ramp, double fa
 
 class Builder {
 public:
-  Builder(const GlowParams& p, const TierRecipe& r, const Listings& l, uint32_t gw, uint32_t gh)
+  Builder(const EffectParams& p, const TierRecipe& r, const Listings& l, uint32_t gw, uint32_t gh)
       : p_(p), r_(r), l_(l), gw_(gw), gh_(gh) {}
 
   // The glow sources: rgb × alpha of the scene, or of the glow render when the scene has one
@@ -103,13 +103,13 @@ public:
     d.analytic = fog ? AnalyticForm::MaskByAlphaFogged : AnalyticForm::MaskByAlpha;
     // Point reads at texel centres: offset ½ texel, scale 1 (both reads: same size).
     const Coord centre{0.5 / p_.width, 0.5 / p_.height};
-    d.vs_constants = helper_vs_constants({centre, centre});
+    d.vs_constants.f = helper_vs_constants({centre, centre});
     bind(d, 0, c.glow_image ? kGlowImageTexture : kSceneTexture, pass::Filter::Point, 1);
     if (fog) {
       bind(d, 1, kDepthTexture, pass::Filter::Point, 1);
       // A ps.1.x listing scales its fog factor by 4 (_x4): its constants clamp to [-1, 1].
       for (const auto& k : fog_constants(c.fog, ir::is_ps1x(l_.fogged->profile) ? 4 : 1))
-        d.ps_constants.push_back(k);
+        d.ps_constants.f.push_back(k);
     }
     return d;
   }
@@ -138,11 +138,11 @@ public:
       std::vector<Coord> coords;
       for (size_t k = first; k < std::min(reads.size(), first + kPerPass); ++k) {
         coords.push_back(reads[k].first);
-        d.ps_constants.push_back(splat(reads[k].second));
+        d.ps_constants.f.push_back(splat(reads[k].second));
       }
-      d.vs_constants = helper_vs_constants(coords);
+      d.vs_constants.f = helper_vs_constants(coords);
       // Reads beyond those needed have weight 0 and read texel (0, 0): they add exactly 0.
-      d.ps_constants.resize(kPerPass, pass::Vec4{0, 0, 0, 0});
+      d.ps_constants.f.resize(kPerPass, pass::Vec4{0, 0, 0, 0});
       bind(d, 0, kSourcesTexture, pass::Filter::Point, kPerPass);
       d.blend = first == 0 ? pass::BlendMode::Replace : pass::BlendMode::OneOne;
       out.push_back(std::move(d));
@@ -166,8 +166,8 @@ public:
         const double off = t < taps.size() ? taps[t].offset : 0.0;
         const double w = t < taps.size() ? taps[t].weight : 0.0;
         const double du = vertical ? h : off + h, dv = vertical ? off + h : h;
-        d.vs_constants.push_back({float(du / gw_), float(dv / gh_), 0, 0});
-        d.ps_constants.push_back(splat(w * p_.weight_scale));
+        d.vs_constants.f.push_back({float(du / gw_), float(dv / gh_), 0, 0});
+        d.ps_constants.f.push_back(splat(w * p_.weight_scale));
       }
       // A ramped weight scale: every weight of the pass times the frame's scale.
       for (double scale : ramp_values(p_.weight_scale_ramp)) {
@@ -213,16 +213,16 @@ public:
     for (size_t i = 0; i < count; ++i) {
       PassDesc d = listing_pass(fmt::format("{}.{}", vertical ? "blur_v" : "blur_h", i),
                                 r_.stage_blur->vs, r_.stage_blur->ps, target);
-      d.vs_constants.assign(tss::kSpecularConstant + 1, pass::Vec4{0, 0, 0, 0});
+      d.vs_constants.f.assign(tss::kSpecularConstant + 1, pass::Vec4{0, 0, 0, 0});
       for (size_t k = 0; k < 2; ++k) {
         const size_t t = 2 * i + k;
         const double off = t < taps.size() ? taps[t].offset : 0.0;
         const double du = vertical ? h : off + h, dv = vertical ? off + h : h;
-        d.vs_constants[k] = {float(du / gw_), float(dv / gh_), 0, 0};
+        d.vs_constants.f[k] = {float(du / gw_), float(dv / gh_), 0, 0};
       }
-      d.vs_constants[tss::kDiffuseConstant] = diffuse(bytes, i);
+      d.vs_constants.f[tss::kDiffuseConstant] = diffuse(bytes, i);
       for (const std::vector<uint8_t>& b : frame_bytes) {
-        d.vs_constants_per_frame.push_back(d.vs_constants);
+        d.vs_constants_per_frame.push_back(d.vs_constants.f);
         d.vs_constants_per_frame.back()[tss::kDiffuseConstant] = diffuse(b, i);
       }
       bind(d, 0, source, p_.half_texel ? pass::Filter::Point : pass::Filter::Linear,
@@ -236,13 +236,13 @@ public:
     PassDesc d = listing_pass("composite", l_.helper_vs, l_.composite, kFinalTexture);
     // Full-resolution pixel i lies at (i + ½)/n glow texels: u = v·W/(n·gw) + ½/(n·gw).
     const double nw = double(p_.downsample) * gw_, nh = double(p_.downsample) * gh_;
-    d.vs_constants = helper_vs_constants(
+    d.vs_constants.f = helper_vs_constants(
         {{0.5 / p_.width, 0.5 / p_.height}, {0.5 / nw, 0.5 / nh, p_.width / nw, p_.height / nh}});
     // check_params keeps intensity finite and within the tier's limit (≤ FLT_MAX).
     const auto s = static_cast<float>(p_.intensity / r_.composite_divisor);
-    d.ps_constants = {pass::Vec4{s, s, s, 0}};
+    d.ps_constants.f = {pass::Vec4{s, s, s, 0}};
     d.ps_constants_per_frame =
-        ramp_table(p_.intensity_ramp, 1 / r_.composite_divisor, d.ps_constants, 0);
+        ramp_table(p_.intensity_ramp, 1 / r_.composite_divisor, d.ps_constants.f, 0);
     // Scene on stage / sampler 0, glow on 1, in both tiers (t0/s0 and t1/s1).
     bind(d, 0, kSceneTexture, pass::Filter::Point, 1);
     bind(d, 1, kGlowTexture, pass::Filter::Linear, 1);
@@ -253,11 +253,11 @@ public:
   // saved fed texture or last frame's glow), point reads at the glow's texel centres.
   PassDesc afterimage_mix(std::string_view x, std::string_view previous) const {
     PassDesc d = listing_pass("afterimage", l_.helper_vs, l_.mix, kFedTexture);
-    d.vs_constants = helper_vs_constants({{0.5 / gw_, 0.5 / gh_}, {0.5 / gw_, 0.5 / gh_}});
+    d.vs_constants.f = helper_vs_constants({{0.5 / gw_, 0.5 / gh_}, {0.5 / gw_, 0.5 / gh_}});
     const auto g = static_cast<float>(p_.afterimage_gain / r_.mix_divisor);
-    d.ps_constants = {pass::Vec4{g, g, g, 0}};
+    d.ps_constants.f = {pass::Vec4{g, g, g, 0}};
     d.ps_constants_per_frame =
-        ramp_table(p_.afterimage_gain_ramp, 1 / r_.mix_divisor, d.ps_constants, 0);
+        ramp_table(p_.afterimage_gain_ramp, 1 / r_.mix_divisor, d.ps_constants.f, 0);
     bind(d, 0, x, pass::Filter::Point, 1);
     bind(d, 1, previous, pass::Filter::Point, 1);
     return d;
@@ -267,8 +267,8 @@ public:
   // c0 = 0 (t0 + 0·t1 = t0 exactly), since a pass may not read its own target.
   PassDesc afterimage_save() const {
     PassDesc d = listing_pass("afterimage_save", l_.helper_vs, l_.mix, kSavedTexture);
-    d.vs_constants = helper_vs_constants({{0.5 / gw_, 0.5 / gh_}, {0.5 / gw_, 0.5 / gh_}});
-    d.ps_constants = {pass::Vec4{0, 0, 0, 0}};
+    d.vs_constants.f = helper_vs_constants({{0.5 / gw_, 0.5 / gh_}, {0.5 / gw_, 0.5 / gh_}});
+    d.ps_constants.f = {pass::Vec4{0, 0, 0, 0}};
     bind(d, 0, kFedTexture, pass::Filter::Point, 1);
     bind(d, 1, kFedTexture, pass::Filter::Point, 1);
     return d;
@@ -282,13 +282,13 @@ private:
     bind_reads(d, stage, texture, sampler(filter), reads, r_.one_stage_per_read);
   }
 
-  const GlowParams& p_;
+  const EffectParams& p_;
   const TierRecipe& r_;
   const Listings& l_;
   uint32_t gw_, gh_;
 };
 
-std::string check_params(const GlowParams& p, const TierRecipe& r) {
+std::string check_params(const EffectParams& p, const TierRecipe& r) {
   if (p.downsample < 1 || p.downsample > 4)
     return fmt::format("downsample {}: expected 1..4", p.downsample);
   if (!img::valid_size(p.width, p.height))
@@ -319,7 +319,7 @@ std::string check_params(const GlowParams& p, const TierRecipe& r) {
 
 } // namespace
 
-TierRecipe ps1x_recipe(const GlowParams& params) {
+TierRecipe ps1x_recipe(const EffectParams& params) {
   const bool above_one = params.intensity_ramp.max(params.intensity) > 1;
   const bool gain_above_one = params.afterimage_gain_ramp.max(params.afterimage_gain) > 1;
   const std::string_view plain = "glow/composite_add_ps13.psh",
@@ -339,8 +339,8 @@ TierRecipe ps1x_recipe(const GlowParams& params) {
   return r;
 }
 
-PlanResult build_glow_graph(const GlowParams& p, const TierRecipe& r) {
-  GlowPlan plan;
+PlanResult build_glow_graph(const EffectParams& p, const TierRecipe& r) {
+  EffectPlan plan;
   if (std::string e = check_params(p, r); !e.empty()) return plan_failure(std::move(e));
   ir::Result<std::vector<BlurTap>> taps = sample_blur_profile(p.profile, p.downsample);
   if (!taps) return plan_failure(taps.message());

@@ -56,12 +56,12 @@ struct TierRecipe {
 // intensity (and after-image gain) above 1 reached as c0 = value / 4 times the listing's
 // _x4 (exact: a power of two), up to 4. The tier fills in its name, the blur listings, its
 // taps per blur pass and the reason for the limit.
-TierRecipe ps1x_recipe(const GlowParams& params);
+TierRecipe ps1x_recipe(const EffectParams& params);
 
 // Checks the parameters every tier shares (downsample, size, intensity ≥ 0 and finite,
 // intensity ≤ recipe.max_intensity), loads the listings, samples the profile and builds
 // the graph. Errors name the parameter (or the listing) at fault.
-PlanResult build_glow_graph(const GlowParams& params, const TierRecipe& recipe);
+PlanResult build_glow_graph(const EffectParams& params, const TierRecipe& recipe);
 
 // A ramped parameter's value for frames 1..ramp.span() (glow_frames.cpp); empty when the
 // parameter does not ramp.

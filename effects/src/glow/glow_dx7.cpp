@@ -12,7 +12,7 @@
 namespace tierlift::effects {
 namespace {
 
-ir::Result<std::shared_ptr<const tss::Lowered>> blur_states(const GlowParams& p) {
+ir::Result<std::shared_ptr<const tss::Lowered>> blur_states(const EffectParams& p) {
   std::string text, name;
   if (auto it = p.listing_files.find(kDx7BlurStates); it != p.listing_files.end()) {
     ir::Result<std::string> read = io::read_bounded(it->second, io::kListingCap);
@@ -47,7 +47,7 @@ ir::Result<std::shared_ptr<const tss::Lowered>> blur_states(const GlowParams& p)
 
 } // namespace
 
-PlanResult build_glow_dx7(const GlowParams& params) {
+PlanResult build_glow_dx7(const EffectParams& params) {
   ir::Result<std::shared_ptr<const tss::Lowered>> blur = blur_states(params);
   if (!blur) return plan_failure(blur.message());
   std::shared_ptr<const tss::Lowered> states = std::move(blur).value();
@@ -62,7 +62,7 @@ PlanResult build_glow_dx7(const GlowParams& params) {
   r.rounding = params.weight_rounding;
   // Direct3D 7 saturates each stage's result to [0, 1]: the ps.1.x clamp at 1 is that for
   // the blur's non-negative values (glow.h).
-  GlowParams p = params;
+  EffectParams p = params;
   p.ps1x_max = 1;
   return detail::build_glow_graph(p, r);
 }

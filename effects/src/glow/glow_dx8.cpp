@@ -5,7 +5,7 @@
 
 namespace tierlift::effects {
 
-PlanResult build_glow_dx8(const GlowParams& params) {
+PlanResult build_glow_dx8(const EffectParams& params) {
   // A ps.1.x constant clamps to [-1, 1], so intensity ≤ 1 goes into c0 as it is; above 1
   // the composite takes c0 = intensity / 4 and scales the product back with _x4 (exact: a
   // power of two), which reaches 4 (ps1x_recipe).

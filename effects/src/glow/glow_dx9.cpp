@@ -6,7 +6,7 @@
 
 namespace tierlift::effects {
 
-PlanResult build_glow_dx9(const GlowParams& params) {
+PlanResult build_glow_dx9(const EffectParams& params) {
   detail::TierRecipe r;
   r.tier = "dx9";
   r.listings = {"glow/quad4_coords.vsh",

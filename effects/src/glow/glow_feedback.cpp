@@ -9,7 +9,7 @@
 
 namespace tierlift::effects {
 
-double afterimage_loop_gain(const GlowParams& p, const std::vector<BlurTap>& taps) {
+double afterimage_loop_gain(const EffectParams& p, const std::vector<BlurTap>& taps) {
   if (p.afterimage == Afterimage::Off) return 0;
   const double g = p.afterimage_gain_ramp.max(p.afterimage_gain);
   if (p.afterimage == Afterimage::Sources) return g;
@@ -31,7 +31,7 @@ int rgba8_stall_level(double k) {
   return l > 255 ? 255 : l;
 }
 
-std::vector<std::string> afterimage_warnings(const GlowParams& p,
+std::vector<std::string> afterimage_warnings(const EffectParams& p,
                                              const std::vector<BlurTap>& taps) {
   std::vector<std::string> out;
   if (p.afterimage == Afterimage::Off) return out;

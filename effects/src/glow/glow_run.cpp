@@ -3,18 +3,18 @@
 #include <fmt/format.h>
 
 namespace tierlift::effects {
-GlowRun run_glow(const GlowPlan& plan, const img::Image& scene, PassDevice& device,
-                 bool keep_pass_images, const PassProgress& progress) {
+EffectRun run_effect(const EffectPlan& plan, const img::Image& scene, PassDevice& device,
+                     bool keep_pass_images, const PassProgress& progress) {
   ImageMap images;
   images.emplace(std::string(kSceneTexture), scene);
   ir::Result<GraphRun> run = run_graph(plan.graph, device, images, keep_pass_images, progress);
-  return GlowRun{std::move(run), std::move(images)};
+  return EffectRun{std::move(run), std::move(images)};
 }
 
-GlowFrames run_glow_frames(const GlowPlan& plan, const img::Image& scene, PassDevice& device,
-                           unsigned frames, const std::vector<std::string>& read_back,
-                           const GlowFrameSink& sink, const SceneAt& scene_at,
-                           const FrameProgress& progress) {
+EffectFrames run_effect_frames(const EffectPlan& plan, const img::Image& scene, PassDevice& device,
+                               unsigned frames, const std::vector<std::string>& read_back,
+                               const EffectFrameSink& sink, const SceneAt& scene_at,
+                               const FrameProgress& progress) {
   ImageMap images;
   images.emplace(std::string(kSceneTexture), scene);
   FrameSink frame_sink;
@@ -40,7 +40,7 @@ GlowFrames run_glow_frames(const GlowPlan& plan, const img::Image& scene, PassDe
     };
   ir::Result<FrameTimes> run =
       run_frames(plan.graph, device, images, frames, frame_sink, inputs_at, progress);
-  return GlowFrames{std::move(run), std::move(images)};
+  return EffectFrames{std::move(run), std::move(images)};
 }
 
 } // namespace tierlift::effects

@@ -34,8 +34,8 @@ struct Axis {
 
 } // namespace
 
-PlanResult build_glsl_blur(const GlowParams& params, const GlslBlurParams& g) {
-  GlowPlan plan;
+PlanResult build_glsl_blur(const EffectParams& params, const GlslBlurParams& g) {
+  EffectPlan plan;
   const uint32_t w = params.width, h = params.height;
   if (!img::valid_size(w, h))
     return plan_failure(
@@ -76,14 +76,14 @@ PlanResult build_glsl_blur(const GlowParams& params, const GlslBlurParams& g) {
     p.vs = *vs;
     p.ps = *twin;
     // oT0 = uv · c4 + c0: the quad uv plus half a texel, so vTexCoord (t0) is a texel centre.
-    p.vs_constants = {{float(0.5 / w), float(0.5 / h), 0, 0},
-                      {},
-                      {},
-                      {},
-                      {1, 1, 1, 1},
-                      {1, 1, 1, 1},
-                      {1, 1, 1, 1},
-                      {1, 1, 1, 1}};
+    p.vs_constants.f = {{float(0.5 / w), float(0.5 / h), 0, 0},
+                        {},
+                        {},
+                        {},
+                        {1, 1, 1, 1},
+                        {1, 1, 1, 1},
+                        {1, 1, 1, 1},
+                        {1, 1, 1, 1}};
     pass::SamplerState sampler;
     sampler.filter = pass::Filter::Point;
     sampler.address_u = sampler.address_v = pass::AddressMode::Clamp;

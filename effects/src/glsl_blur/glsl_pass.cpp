@@ -42,7 +42,7 @@ ListingResult assemble(std::string text, const std::string& name) {
 
 PlanResult build_glsl_pass(const glsl::FragmentShader& shader, uint32_t width, uint32_t height,
                            img::Format format, pass::Filter filter) {
-  GlowPlan plan;
+  EffectPlan plan;
   if (!img::valid_size(width, height))
     return plan_failure(
         fmt::format("size {}x{}: expected 1..{} each", width, height, img::kMaxDimension));
@@ -64,7 +64,7 @@ PlanResult build_glsl_pass(const glsl::FragmentShader& shader, uint32_t width, u
   p.ps = *twin;
   // oTk = uv · c(k+4) + ck: the quad uv plus half a texel, for k = 0..3.
   const pass::Vec4 half{float(0.5 / width), float(0.5 / height), 0, 0}, one{1, 1, 1, 1};
-  p.vs_constants = {half, half, half, half, one, one, one, one};
+  p.vs_constants.f = {half, half, half, half, one, one, one, one};
   pass::SamplerState sampler;
   sampler.filter = filter;
   sampler.address_u = sampler.address_v = pass::AddressMode::Clamp;

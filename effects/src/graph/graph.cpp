@@ -18,10 +18,10 @@ PassDesc PassDesc::at_frame(unsigned frame) const {
   d.vs_constants_per_frame.clear();
   d.ps_constants_per_frame.clear();
   if (!vs_constants_per_frame.empty())
-    d.vs_constants =
+    d.vs_constants.f =
         vs_constants_per_frame[std::min<size_t>(frame, vs_constants_per_frame.size() - 1)];
   if (!ps_constants_per_frame.empty())
-    d.ps_constants =
+    d.ps_constants.f =
         ps_constants_per_frame[std::min<size_t>(frame, ps_constants_per_frame.size() - 1)];
   return d;
 }

@@ -32,19 +32,14 @@ std::string prepare_input(const TextureDesc& t, ImageMap& images) {
 
 } // namespace
 
-ir::Result<pass::Pass> make_pass(const PassDesc& desc, const ImageMap& images,
-                                 const ir::Conventions& conventions) {
+ir::Result<pass::Pass> make_pass(const PassDesc& desc, const ir::Conventions& conventions) {
   if (!desc.vs && !desc.constant_inputs)
     return ir::fail(desc.name, "graph", fmt::format("pass '{}': no vertex listing", desc.name));
   pass::Pass pass;
   pass.vertex_program = desc.vs;
   pass.pixel_program = desc.ps;
-  pass.vs_constants.f = desc.vs_constants;
-  pass.ps_constants.f = desc.ps_constants;
-  pass.vs_constants.i = desc.vs_int_constants;
-  pass.ps_constants.i = desc.ps_int_constants;
-  pass.vs_constants.b = desc.vs_bool_constants;
-  pass.ps_constants.b = desc.ps_bool_constants;
+  pass.vs_constants = desc.vs_constants;
+  pass.ps_constants = desc.ps_constants;
   if (!desc.vs) {
     pass.constant_inputs = *desc.constant_inputs; // the quad, no vertices
   } else if (desc.vertices.empty()) {
@@ -57,12 +52,12 @@ ir::Result<pass::Pass> make_pass(const PassDesc& desc, const ImageMap& images,
   pass.depth_stencil = desc.depth_stencil;
   pass.scissor = desc.scissor;
   for (const TextureBind& b : desc.textures) {
-    auto it = images.find(b.texture);
-    if (it == images.end() || b.stage >= pass::kMaxSamplers)
+    if (b.stage >= pass::kMaxSamplers)
       return ir::fail(desc.name, "graph",
-                      fmt::format("pass '{}': texture '{}' has no image", desc.name, b.texture));
+                      fmt::format("pass '{}': texture '{}' is bound to stage {} (at most {})",
+                                  desc.name, b.texture, b.stage, pass::kMaxSamplers - 1));
+    // The image stays with the device that owns the texture: it binds it (by reference).
     pass::TextureBinding& binding = pass.textures[b.stage];
-    binding.image = std::make_shared<const img::Image>(it->second);
     binding.sampler = b.sampler;
     binding.stage = b.stage_state;
   }
@@ -172,7 +167,7 @@ ir::Result<GraphRun> run_graph(const EffectGraph& graph, PassDevice& device, Ima
     const crash::Stage stage(
         "pass", fmt::format("while running pass '{}' on {}", desc.name, device.name()));
     auto t0 = std::chrono::steady_clock::now();
-    ir::Result<pass::DrawReport> drawn = device.run_pass(desc.at_frame(0));
+    ir::Result<pass::DrawReport> drawn = device.draw(desc.at_frame(0));
     // The pass's own time, not the time it was queued.
     ir::Status done = drawn ? device.finish() : ir::Status(drawn.failure());
     if (!done)
@@ -224,7 +219,7 @@ ir::Result<FrameTimes> run_frames(const EffectGraph& graph, PassDevice& device, 
       if (std::string e = replace_inputs(graph, device, f, inputs_at); !e.empty())
         return frame_error(f, e);
     for (const PassDesc& desc : graph.passes)
-      if (ir::Result<pass::DrawReport> drawn = device.run_pass(desc.at_frame(f)); !drawn)
+      if (ir::Result<pass::DrawReport> drawn = device.draw(desc.at_frame(f)); !drawn)
         return run_error(fmt::format("frame {}, pass '{}' on {}: {}", f + 1, desc.name,
                                      device.name(), drawn.message()),
                          drawn.diagnostics());

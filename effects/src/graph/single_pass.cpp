@@ -1,4 +1,6 @@
-// pass::Pass → a graph of one pass: the inverse of make_pass for what `tierlift run` draws.
+// pass::Pass → a graph of one pass, for what `tierlift run` draws: the banks, geometry and
+// states carried over as they are; the bound images become the graph's input textures, which
+// the device then owns for the run and binds back by reference (make_pass binds none).
 #include "tierlift/effects/single_pass.h"
 
 #include <map>
@@ -41,12 +43,8 @@ ir::Result<EffectGraph> single_pass_graph(const pass::Pass& pass, uint32_t width
   desc.target = std::string(kSinglePassTarget);
   desc.vs = pass.vertex_program;
   desc.ps = pass.pixel_program;
-  desc.vs_constants = pass.vs_constants.f;
-  desc.ps_constants = pass.ps_constants.f;
-  desc.vs_int_constants = pass.vs_constants.i;
-  desc.ps_int_constants = pass.ps_constants.i;
-  desc.vs_bool_constants = pass.vs_constants.b;
-  desc.ps_bool_constants = pass.ps_constants.b;
+  desc.vs_constants = pass.vs_constants;
+  desc.ps_constants = pass.ps_constants;
   if (pass.vertex_program) {
     desc.vertices = pass.vertices;
     desc.triangles = pass.triangles;

@@ -12,7 +12,7 @@
 namespace tierlift::effects {
 namespace {
 
-std::string check_outline(const GlowParams& g, const OutlineParams& o) {
+std::string check_outline(const EffectParams& g, const OutlineParams& o) {
   if (g.tier != Tier::Dx9)
     return fmt::format("tier {}: the stencil outline needs tier dx9 (two render targets are a "
                        "ps_2_0 feature)",
@@ -52,11 +52,11 @@ std::vector<std::array<double, 2>> outline_polygon(const OutlineParams& o) {
   return corners;
 }
 
-PlanResult build_outline(const GlowParams& glow, const OutlineParams& o) {
+PlanResult build_outline(const EffectParams& glow, const OutlineParams& o) {
   if (std::string e = check_outline(glow, o); !e.empty()) return plan_failure(std::move(e));
   PlanResult built = build_glow(glow);
   if (!built) return built;
-  GlowPlan plan = std::move(*built);
+  EffectPlan plan = std::move(*built);
   EffectGraph& g = plan.graph;
   std::shared_ptr<const ir::Program> object_vs, object_ps, add_ps;
   const std::pair<std::shared_ptr<const ir::Program>*, std::string_view> wanted[] = {
@@ -83,7 +83,7 @@ PlanResult build_outline(const GlowParams& glow, const OutlineParams& o) {
   object.analytic = AnalyticForm::Coverage;
   object.vs = object_vs;
   object.ps = object_ps;
-  object.ps_constants = {vec(o.color), vec(o.glow_color)};
+  object.ps_constants.f = {vec(o.color), vec(o.glow_color)};
   object.target = std::string(kColorTexture);
   object.more_targets = {std::string(kMaskTexture)};
   object.stencil = std::string(kStencilTexture);
@@ -116,10 +116,10 @@ PlanResult build_outline(const GlowParams& glow, const OutlineParams& o) {
   if (!composite) return plan_failure("the glow graph has no composite pass");
   PassDesc base = *composite;
   base.name = "base";
-  base.ps_constants = {pass::Vec4{1, 1, 1, 0}};
+  base.ps_constants.f = {pass::Vec4{1, 1, 1, 0}};
   // t1 reads the full-size colour texture at pixel centres: offset ½ texel, scale 1.
-  base.vs_constants[1] = {static_cast<float>(0.5 / w), static_cast<float>(0.5 / h), 0, 0};
-  base.vs_constants[5] = {1, 1, 0, 0};
+  base.vs_constants.f[1] = {static_cast<float>(0.5 / w), static_cast<float>(0.5 / h), 0, 0};
+  base.vs_constants.f[5] = {1, 1, 0, 0};
   for (TextureBind& b : base.textures)
     if (b.stage == 1) {
       b.texture = std::string(kColorTexture);
@@ -129,7 +129,7 @@ PlanResult build_outline(const GlowParams& glow, const OutlineParams& o) {
   outline.name = "outline";
   outline.ps = add_ps;
   const auto s = static_cast<float>(glow.intensity);
-  outline.ps_constants = {pass::Vec4{s, s, s, 0}};
+  outline.ps_constants.f = {pass::Vec4{s, s, s, 0}};
   std::erase_if(outline.textures, [](const TextureBind& b) { return b.stage != 1; });
   outline.blend = pass::BlendMode::OneOne;
   outline.stencil = std::string(kStencilTexture);

@@ -20,7 +20,7 @@ constexpr double kBelowHalfStep = 0.5 / 255 * 0.99;
 
 double weight_sum(const PassDesc& p) {
   double s = 0;
-  for (const pass::Vec4& c : p.ps_constants)
+  for (const pass::Vec4& c : p.ps_constants.f)
     s += std::max({std::abs(double(c[0])), std::abs(double(c[1])), std::abs(double(c[2])),
                    std::abs(double(c[3]))});
   return s;
@@ -79,7 +79,7 @@ void explain_float_taps(const EffectGraph& graph, img::Format format, double bou
   double smallest = INFINITY;
   for (const PassDesc& p : graph.passes)
     if (is_blur(p, "blur_h") || is_blur(p, "blur_v"))
-      for (const pass::Vec4& c : p.ps_constants)
+      for (const pass::Vec4& c : p.ps_constants.f)
         for (float w : c)
           if (w != 0) smallest = std::min(smallest, std::abs(double(w)));
   if (!std::isfinite(smallest)) return; // no weights in constants (tier dx7's vertex colours)
@@ -175,7 +175,7 @@ struct Box {
 // a block and one texel more per downsample, the taps' reach plus 2 texels per blur axis:
 // bilinear neighbours and the half-texel shift); every sampler must clamp (a wrapping one
 // would read the far side).
-void limit_to_sources(const GlowPlan& plan, const Box& sources, PrunedGraph& r) {
+void limit_to_sources(const EffectPlan& plan, const Box& sources, PrunedGraph& r) {
   // (the reasons below read "drawn only in …": r.limited)
   for (const PassDesc& p : r.graph.passes)
     for (const TextureBind& t : p.textures)
@@ -238,7 +238,7 @@ void limit_to_sources(const GlowPlan& plan, const Box& sources, PrunedGraph& r) 
 
 } // namespace
 
-PrunedGraph prune_glow(const GlowPlan& plan, const img::Image& scene) {
+PrunedGraph prune_glow(const EffectPlan& plan, const img::Image& scene) {
   PrunedGraph r;
   r.graph = plan.graph;
   r.passes_before = plan.graph.passes.size();

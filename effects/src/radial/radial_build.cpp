@@ -52,7 +52,7 @@ pass::Vec4 splat(double w) {
   return {f, f, f, f};
 }
 
-std::string check(const GlowParams& g, const RadialParams& r, const TierListings& t) {
+std::string check(const EffectParams& g, const RadialParams& r, const TierListings& t) {
   if (!img::valid_size(g.width, g.height))
     return fmt::format("scene size {}x{}: expected 1..{}", g.width, g.height, img::kMaxDimension);
   for (double c : r.centre)
@@ -106,8 +106,8 @@ std::array<std::array<double, 2>, 4> star_offsets(const RadialParams& r, unsigne
   return out;
 }
 
-PlanResult build_radial(const GlowParams& g, const RadialParams& r) {
-  GlowPlan plan;
+PlanResult build_radial(const EffectParams& g, const RadialParams& r) {
+  EffectPlan plan;
   const TierListings t = tier_listings(g.tier);
   if (std::string e = check(g, r, t); !e.empty()) return plan_failure(std::move(e));
   ProgramPtr star_vs, star_ps, zoom_vs, zoom_ps, composite_ps;
@@ -137,10 +137,10 @@ PlanResult build_radial(const GlowParams& g, const RadialParams& r) {
     std::vector<pass::Vec4> offsets;
     for (const auto& o : star_offsets(r, r.frame + f, g.width, g.height))
       offsets.push_back({float(o[0]), float(o[1]), 0, 0});
-    if (f == 0) star.vs_constants = offsets;
+    if (f == 0) star.vs_constants.f = offsets;
     if (frames > 1) star.vs_constants_per_frame.push_back(std::move(offsets));
   }
-  star.ps_constants = {splat(0.25)};
+  star.ps_constants.f = {splat(0.25)};
   bind_reads(star, 0, kSceneTexture, sampler(pass::Filter::Linear, pass::AddressMode::Wrap), 4,
              t.one_stage_per_read);
   graph.passes.push_back(std::move(star));
@@ -157,10 +157,10 @@ PlanResult build_radial(const GlowParams& g, const RadialParams& r) {
       const RadialCopy c = i < copies.size() ? copies[i] : RadialCopy{0, {0, 0}, 0};
       offsets.push_back({float(c.offset[0]), float(c.offset[1]), 0, 0});
       scales.push_back({float(c.scale), float(c.scale), 0, 0});
-      d.ps_constants.push_back(splat(c.weight));
+      d.ps_constants.f.push_back(splat(c.weight));
     }
-    d.vs_constants = offsets;
-    d.vs_constants.insert(d.vs_constants.end(), scales.begin(), scales.end());
+    d.vs_constants.f = offsets;
+    d.vs_constants.f.insert(d.vs_constants.f.end(), scales.begin(), scales.end());
     bind_reads(d, 0, kStarTexture, sampler(pass::Filter::Linear, pass::AddressMode::Clamp),
                t.per_pass, t.one_stage_per_read);
     d.blend = p == 0 ? pass::BlendMode::Replace : pass::BlendMode::OneOne;
@@ -175,9 +175,9 @@ PlanResult build_radial(const GlowParams& g, const RadialParams& r) {
     c[k] = {float(0.5 / g.width), float(0.5 / g.height), 0, 0};
     c[t.per_pass + k] = {1, 1, 0, 0};
   }
-  comp.vs_constants = c;
+  comp.vs_constants.f = c;
   const auto s = static_cast<float>(r.strength);
-  comp.ps_constants = {pass::Vec4{s, s, s, 0}};
+  comp.ps_constants.f = {pass::Vec4{s, s, s, 0}};
   bind_reads(comp, 0, kStarTexture, sampler(pass::Filter::Point, pass::AddressMode::Clamp), 1,
              false);
   bind_reads(comp, 1, kGlowTexture, sampler(pass::Filter::Point, pass::AddressMode::Clamp), 1,

@@ -38,8 +38,8 @@ std::unique_ptr<PassDevice> make_device(const std::string& name, vulkan::Device*
   return nullptr;
 }
 
-GlowParams params_for(const GlowParams& scene, const SweepConfig& c) {
-  GlowParams p = scene;
+EffectParams params_for(const EffectParams& scene, const SweepConfig& c) {
+  EffectParams p = scene;
   p.tier = c.tier;
   p.downsample = c.downsample;
   p.format = c.format;
@@ -50,20 +50,20 @@ GlowParams params_for(const GlowParams& scene, const SweepConfig& c) {
 
 struct Way {
   std::string name;
-  GlowRun glow;
+  EffectRun glow;
 };
 
 // Runs one configuration; a device failure returns its message (the sweep stops).
 std::string run_config(ConfigResult& out, const Scene& scene, const img::Image& image,
                        const SweepSettings& s, vulkan::Device* vk, const RgbImage& ideal_glow_img,
                        const RgbImage& ideal_final_img) {
-  const GlowParams params = params_for(scene.params, out.config);
+  const EffectParams params = params_for(scene.params, out.config);
   const PlanResult built = build_glow(params);
   if (!built) {
     out.skipped = built.message();
     return {};
   }
-  const GlowPlan& plan = *built;
+  const EffectPlan& plan = *built;
   out.taps = unsigned(plan.taps.size());
   out.passes = unsigned(plan.graph.passes.size());
   out.glow_width = plan.glow_width;
@@ -73,7 +73,7 @@ std::string run_config(ConfigResult& out, const Scene& scene, const img::Image& 
   for (const char* name : {"cpu", "vulkan", "analytic"}) {
     std::unique_ptr<PassDevice> device = make_device(name, vk);
     if (!device) continue;
-    ways.push_back({name, run_glow(plan, image, *device, /*keep_pass_images=*/true)});
+    ways.push_back({name, run_effect(plan, image, *device, /*keep_pass_images=*/true)});
     if (!ways.back().glow.run.ok())
       return fmt::format("{}, {}: {}", config_label(out.config), name,
                          ways.back().glow.run.message());
@@ -112,7 +112,7 @@ std::string run_config(ConfigResult& out, const Scene& scene, const img::Image& 
   for (const std::string& name : s.timed) {
     std::unique_ptr<PassDevice> device = make_device(name, vk);
     if (!device) continue;
-    GlowFrames f = run_glow_frames(plan, image, *device, std::max(1u, s.frames));
+    EffectFrames f = run_effect_frames(plan, image, *device, std::max(1u, s.frames));
     if (!f.run.ok())
       return fmt::format("{}, {} (frames): {}", config_label(out.config), name, f.run.message());
     out.times.push_back({name, f.run->setup_ms, f.run->median_ms(), f.run->min_ms(),
@@ -126,10 +126,10 @@ std::string run_config(ConfigResult& out, const Scene& scene, const img::Image& 
   out.pruned_limited = pruned.limited.size();
   out.pruned_frame_ms = out.frame_ms();
   if (pruned.changed() && !clock.empty()) {
-    GlowPlan lean = plan;
+    EffectPlan lean = plan;
     lean.graph = pruned.graph;
     std::unique_ptr<PassDevice> device = make_device(clock, vk);
-    GlowFrames f = run_glow_frames(lean, image, *device, std::max(1u, s.frames));
+    EffectFrames f = run_effect_frames(lean, image, *device, std::max(1u, s.frames));
     if (!f.run.ok())
       return fmt::format("{}, {} (pruned): {}", config_label(out.config), clock, f.run.message());
     out.pruned_frame_ms = f.run->median_ms();
@@ -177,7 +177,7 @@ SweepSettings quick_sweep() {
   return s;
 }
 
-std::vector<SweepConfig> sweep_configs(const SweepSettings& s, const GlowParams& scene) {
+std::vector<SweepConfig> sweep_configs(const SweepSettings& s, const EffectParams& scene) {
   std::vector<SweepConfig> out;
   if (s.tiers.empty() || s.downsamples.empty() || s.taps.empty() || s.formats.empty() ||
       s.half_texels.empty())

@@ -34,7 +34,7 @@ std::string file_error(const std::string& path, const std::string& message) {
 
 } // namespace
 
-std::vector<std::string> glow_warnings(const GlowParams& params) {
+std::vector<std::string> glow_warnings(const EffectParams& params) {
   std::vector<std::string> out;
   const double sum = profile_weight_sum(params.profile);
   // One axis scales the glow by the sum, the second axis by the sum again.
@@ -142,7 +142,7 @@ img::ImageResult load_scene_image(const Scene& scene, unsigned frame) {
   auto fail = [&](std::string message) -> img::ImageResult {
     return ir::fail(scene.image, "scene", std::move(message));
   };
-  const GlowParams& p = scene.params;
+  const EffectParams& p = scene.params;
   if (!img::valid_size(p.width, p.height))
     return fail(fmt::format("{}: the scene size {}x{} is outside 1..{}", scene.image, p.width,
                             p.height, img::kMaxDimension));

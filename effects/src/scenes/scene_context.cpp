@@ -18,7 +18,7 @@ constexpr NumberRange kFogChannel{0, 1};
 // `*file` is set to the path read (an input no output may replace).
 std::shared_ptr<const img::Image> read_scene_sized(const Json& v, const std::string& at,
                                                    FieldChecker& c, const std::string& base_dir,
-                                                   const GlowParams& p, std::string* file) {
+                                                   const EffectParams& p, std::string* file) {
   std::optional<std::string> name = c.string(v, at);
   if (!name) return nullptr;
   if (name->empty()) {
@@ -57,7 +57,7 @@ void read_glow_image(const Json& v, FieldChecker& c, const std::string& base_dir
 }
 
 void read_fog(const Json& v, const std::string& at, FieldChecker& c, const std::string& base_dir,
-              GlowParams& p) {
+              EffectParams& p) {
   if (!c.object(v, at, kFogKeys, std::span(kFogKeys).first(2))) return;
   GlowFog fog;
   fog.on = true;

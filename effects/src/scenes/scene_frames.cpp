@@ -58,7 +58,7 @@ void read_ramped(const Json& v, const std::string& at, FieldChecker& c, NumberRa
   if (auto x = c.number(v, at, range)) constant = *x;
 }
 
-void read_afterimage(const Json& v, const std::string& at, FieldChecker& c, GlowParams& p) {
+void read_afterimage(const Json& v, const std::string& at, FieldChecker& c, EffectParams& p) {
   if (!c.object(v, at, kAfterimageKeys, std::span<const std::string_view>(kAfterimageKeys, 1)))
     return;
   const Json* mode_json = member(v, "mode");
@@ -77,7 +77,7 @@ void read_afterimage(const Json& v, const std::string& at, FieldChecker& c, Glow
                 p.afterimage_gain_ramp);
 }
 
-void read_motion(const Json& v, const std::string& at, FieldChecker& c, GlowParams& p) {
+void read_motion(const Json& v, const std::string& at, FieldChecker& c, EffectParams& p) {
   if (!c.object(v, at, kMotionKeys, kMotionKeys)) return;
   if (const Json* radius = member(v, "radius"))
     if (auto r = c.number(*radius, at + "/radius", NumberRange{0, 0.5})) p.motion.radius = *r;

@@ -73,7 +73,7 @@ void read_profile(const Json& v, const std::string& at, FieldChecker& c, BlurPro
 }
 
 void read_listings(const Json& v, const std::string& at, const std::string& base_dir,
-                   FieldChecker& c, GlowParams& p) {
+                   FieldChecker& c, EffectParams& p) {
   if (!v.is_object()) {
     c.error(at, fmt::format("{} is not an object; expected {{\"<built-in listing>\": \"<file>\"}}",
                             FieldChecker::shown(v)));
@@ -101,7 +101,7 @@ void read_listings(const Json& v, const std::string& at, const std::string& base
 }
 
 // "ps1x_max": a preset name ("geforce3", "radeon8500", "d3d9", "max") or a number >= 1.
-void read_ps1x_max(const Json& v, const std::string& at, FieldChecker& c, GlowParams& p) {
+void read_ps1x_max(const Json& v, const std::string& at, FieldChecker& c, EffectParams& p) {
   std::string text;
   if (v.is_string()) {
     text = v.get<std::string>();
@@ -126,7 +126,7 @@ std::span<const std::string_view> scene_profile_keys() {
   return kProfileKeys;
 }
 
-void read_glow(const Json& g, FieldChecker& c, const std::string& base_dir, GlowParams& p) {
+void read_glow(const Json& g, FieldChecker& c, const std::string& base_dir, EffectParams& p) {
   const std::string at = "/glow";
   if (!c.object(g, at, kGlowKeys)) return;
   if (const Json* v = member(g, "tier"))

@@ -36,7 +36,7 @@ std::vector<std::string> scene_input_files(const Scene& scene) {
   std::vector<std::string> out;
   add(out, scene.file);
   add(out, scene.image);
-  const GlowParams& p = scene.params;
+  const EffectParams& p = scene.params;
   add(out, p.context.glow_image_file);
   add(out, p.context.fog.depth_file);
   for (const auto& [builtin, file] : p.listing_files) {

@@ -114,11 +114,13 @@ void read_scene(const Json& j, const std::string& base_dir, FieldChecker& c, Sce
   if (s.params.motion.on() && glow_image)
     c.error("/glow/motion", "moves the lights of the scene image; the glow image would not follow");
   // Only the glow's own extract draws the rendering context.
-  if (s.effect != "glow" && glow_image)
-    c.error("/glow_image", fmt::format("applies to effect \"glow\" only, not \"{}\"", s.effect),
+  if (s.effect != EffectKind::Glow && glow_image)
+    c.error("/glow_image",
+            fmt::format("applies to effect \"glow\" only, not \"{}\"", effect_name(s.effect)),
             true);
-  if (s.effect != "glow" && glow && member(*glow, "fog"))
-    c.error("/glow/fog", fmt::format("applies to effect \"glow\" only, not \"{}\"", s.effect),
+  if (s.effect != EffectKind::Glow && glow && member(*glow, "fog"))
+    c.error("/glow/fog",
+            fmt::format("applies to effect \"glow\" only, not \"{}\"", effect_name(s.effect)),
             true);
   std::vector<std::string> context_warns = std::move(s.warnings);
   s.warnings = effect_warnings(s);

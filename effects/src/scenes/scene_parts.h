@@ -16,11 +16,11 @@ namespace tierlift::effects {
 
 // "/glow": every field into `params` (what is absent keeps its default).
 void read_glow(const Json& glow, FieldChecker& check, const std::string& base_dir,
-               GlowParams& params);
+               EffectParams& params);
 
 // "/radial": every field into `radial` (what is absent keeps its default); its "tier" goes
 // to glow.tier, which also decides the strength's limit (ps.1.x constants).
-void read_radial(const Json& radial, FieldChecker& check, GlowParams& glow, RadialParams& out);
+void read_radial(const Json& radial, FieldChecker& check, EffectParams& glow, RadialParams& out);
 // "/outline": the polygon, its two colours and the stencil reference.
 void read_outline(const Json& outline, FieldChecker& check, OutlineParams& out);
 // "/effect" and that effect's own object ("/radial", "/outline", "/glsl"); an effect's object
@@ -36,17 +36,17 @@ void read_ramped(const Json& v, const std::string& pointer, FieldChecker& check,
                  double& constant, Keyframes& ramp);
 // "/glow/afterimage": {"mode": "sources" | "glow" | "off", "gain": ramped 0..4}.
 void read_afterimage(const Json& v, const std::string& pointer, FieldChecker& check,
-                     GlowParams& params);
+                     EffectParams& params);
 
 // "/glow/motion": {"radius": 0..0.5 scene heights, "period": 1..100000 frames}, both needed.
 void read_motion(const Json& v, const std::string& pointer, FieldChecker& check,
-                 GlowParams& params);
+                 EffectParams& params);
 
 // "/glow_image" and "/glow/fog" (scene_context.cpp): the glow render and the glow fog, their
 // images read and checked against the scene's size (params.width/height, known by then).
 void read_glow_image(const Json& v, FieldChecker& check, const std::string& base_dir, Scene& out);
 void read_fog(const Json& v, const std::string& pointer, FieldChecker& check,
-              const std::string& base_dir, GlowParams& params);
+              const std::string& base_dir, EffectParams& params);
 
 // `path` as seen from `base_dir` ("" = the working directory); absolute paths stay.
 std::string resolve_path(const std::string& base_dir, const std::string& path);

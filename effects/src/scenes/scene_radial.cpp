@@ -23,7 +23,7 @@ std::span<const std::string_view> scene_radial_keys() {
   return kRadialKeys;
 }
 
-void read_radial(const Json& v, FieldChecker& c, GlowParams& glow, RadialParams& r) {
+void read_radial(const Json& v, FieldChecker& c, EffectParams& glow, RadialParams& r) {
   const std::string at = "/radial";
   if (!c.object(v, at, kRadialKeys)) return;
   if (const Json* t = member(v, "tier"))

@@ -54,7 +54,7 @@ std::vector<WayImages> run_on_ways(const PlanResult& plan, const img::Image& sce
       out.push_back({way, {}, plan.message()});
       continue;
     }
-    GlowRun run = run_glow(*plan, scene, *device);
+    EffectRun run = run_effect(*plan, scene, *device);
     out.push_back({way, std::move(run.images), run.run.ok() ? "" : run.run.message()});
   }
   return out;
@@ -75,9 +75,9 @@ img::Image uniform_scene(uint32_t w, uint32_t h, float v, float a) {
   return s;
 }
 
-GlowParams small_params(uint32_t w, uint32_t h, unsigned downsample, img::Format format,
-                        double sigma, unsigned max_taps) {
-  GlowParams p;
+EffectParams small_params(uint32_t w, uint32_t h, unsigned downsample, img::Format format,
+                          double sigma, unsigned max_taps) {
+  EffectParams p;
   p.width = w;
   p.height = h;
   p.downsample = downsample;
@@ -101,20 +101,20 @@ double texel_red(const WayImages& w, std::string_view texture, uint32_t x, uint3
   return it->second.at(x, y)[0];
 }
 
-const GlowPlan& shape(const PlanResult& plan) {
-  static const GlowPlan kNone;
+const EffectPlan& shape(const PlanResult& plan) {
+  static const EffectPlan kNone;
   return plan ? *plan : kNone;
 }
 
-void set_blur_weights(GlowPlan& plan, const std::vector<double>& weights) {
+void set_blur_weights(EffectPlan& plan, const std::vector<double>& weights) {
   for (PassDesc& d : plan.graph.passes) {
     if (!d.name.starts_with("blur_")) continue;
     const size_t index = std::stoul(d.name.substr(d.name.find('.') + 1));
-    const size_t per = d.ps_constants.size();
+    const size_t per = d.ps_constants.f.size();
     for (size_t k = 0; k < per; ++k) {
       const size_t t = index * per + k;
       const float w = t < weights.size() && t < plan.taps.size() ? float(weights[t]) : 0.0f;
-      d.ps_constants[k] = {w, w, w, w};
+      d.ps_constants.f[k] = {w, w, w, w};
     }
   }
 }

@@ -33,8 +33,8 @@ double device_store(img::Format f, double v);
 img::Image uniform_scene(uint32_t w, uint32_t h, float v, float a);
 
 // Glow parameters for a small scene: tier dx9, one Gaussian (σ, weight 1), half texel on.
-GlowParams small_params(uint32_t w, uint32_t h, unsigned downsample, img::Format format,
-                        double sigma, unsigned max_taps = 0);
+EffectParams small_params(uint32_t w, uint32_t h, unsigned downsample, img::Format format,
+                          double sigma, unsigned max_taps = 0);
 
 // The first error among the ways ("" when none), for StressRow::error.
 std::string first_error(const std::vector<WayImages>& ways);
@@ -45,10 +45,10 @@ double texel_red(const WayImages& w, std::string_view texture, uint32_t x, uint3
 // Replaces the blur weights of every blur pass with `weights` (one per tap, in the plan's
 // tap order; padding taps keep weight 0): what a device that stores its weights otherwise
 // (8-bit constants, a printed kernel) runs.
-void set_blur_weights(GlowPlan& plan, const std::vector<double>& weights);
+void set_blur_weights(EffectPlan& plan, const std::vector<double>& weights);
 // The plan, or an empty one (no taps, size 0) when it failed: a row still describes what
 // was asked, and says why it did not run (its error).
-const GlowPlan& shape(const PlanResult& plan);
+const EffectPlan& shape(const PlanResult& plan);
 
 // The stress cases: an id and what runs it (rows not yet judged).
 struct StressCase {

@@ -19,7 +19,7 @@ using img::Format;
 // and where (the masks must be equal on every way).
 std::vector<StressRow> non_finite(const StressOptions& o) {
   constexpr uint32_t w = 27, h = 9;
-  GlowParams p = small_params(w, h, 1, Format::RGBA32F, 1.0);
+  EffectParams p = small_params(w, h, 1, Format::RGBA32F, 1.0);
   const PlanResult plan = build_glow(p);
   img::Image scene = uniform_scene(w, h, 0, 0);
   const float kinds[3] = {std::numeric_limits<float>::quiet_NaN(),
@@ -69,7 +69,7 @@ std::vector<StressRow> non_finite(const StressOptions& o) {
 // and a row above, (2R+2)² = 64 texels of the final frame. Masks equal on every way.
 StressRow infinite_composite(const StressOptions& o) {
   constexpr uint32_t n = 16;
-  GlowParams p = small_params(n, n, 1, Format::RGBA32F, 1.0);
+  EffectParams p = small_params(n, n, 1, Format::RGBA32F, 1.0);
   const PlanResult plan = build_glow(p);
   img::Image scene = uniform_scene(n, n, 0, 1);
   float* t = scene.at(8, 8);
@@ -105,7 +105,7 @@ StressRow infinite_composite(const StressOptions& o) {
 // 2^-24; as fp32 it is a normal number, so no device flushes it.
 StressRow denormal(const StressOptions& o, Format f) {
   const float v = f == Format::RGBA32F ? 1e-39f : 1e-5f;
-  GlowParams p = small_params(3, 3, 1, f, 1.0, 1);
+  EffectParams p = small_params(3, 3, 1, f, 1.0, 1);
   const PlanResult plan = build_glow(p);
   img::Image scene = uniform_scene(3, 3, 0, 0);
   float* t = scene.at(1, 1);

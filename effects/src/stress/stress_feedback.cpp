@@ -55,8 +55,8 @@ FeedbackGraph feedback_graph(Format f, double g) {
     PassDesc d = listing_pass(std::move(name), *vs, *ps, to);
     const float w = float(weight);
     for (unsigned k = 0; k < kTapsPerBlurPassDx9; ++k) {
-      d.vs_constants.push_back({0.5f, 0.5f, 0, 0}); // the one texel's centre
-      d.ps_constants.push_back(k == 0 ? pass::Vec4{w, w, w, w} : pass::Vec4{0, 0, 0, 0});
+      d.vs_constants.f.push_back({0.5f, 0.5f, 0, 0}); // the one texel's centre
+      d.ps_constants.f.push_back(k == 0 ? pass::Vec4{w, w, w, w} : pass::Vec4{0, 0, 0, 0});
     }
     pass::SamplerState s;
     s.filter = pass::Filter::Point;
@@ -98,7 +98,7 @@ WayFeedback run_way(PassDevice& device, const EffectGraph& graph, Format f, doub
   if (ir::Status begun = device.begin_run(graph, inputs); !begun) return fail(begun.message());
   auto frame = [&](bool source) -> std::string {
     for (size_t i = 0; i < (source ? 3u : 2u); ++i)
-      if (auto drawn = device.run_pass(graph.passes[i]); !drawn) return drawn.message();
+      if (auto drawn = device.draw(graph.passes[i]); !drawn) return drawn.message();
     return device.finish().message();
   };
   auto read = [&](double& v) -> std::string {

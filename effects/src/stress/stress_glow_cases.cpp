@@ -72,7 +72,7 @@ std::vector<StressRow> hdr(Format f, double v) {
 
 std::vector<StressRow> run_hdr(const StressOptions& o, Format f, double v) {
   std::vector<StressRow> rows = hdr(f, v);
-  GlowParams p = small_params(9, 9, 1, f, 1.0);
+  EffectParams p = small_params(9, 9, 1, f, 1.0);
   const PlanResult plan = build_glow(p);
   img::Image scene = uniform_scene(9, 9, 0, 0);
   float* c = scene.at(4, 4);
@@ -114,7 +114,7 @@ std::vector<StressRow> run_hdr(const StressOptions& o, Format f, double v) {
 // σ → 0: σ = 0.01 gives taps (0, 1, 0) (e^-5000 is 0 in double): the glow is its sources,
 // bit for bit, on a scene with a different value in every texel.
 std::vector<StressRow> sigma_tiny(const StressOptions& o) {
-  GlowParams p = small_params(6, 5, 1, Format::RGBA32F, 0.01);
+  EffectParams p = small_params(6, 5, 1, Format::RGBA32F, 0.01);
   const PlanResult plan = build_glow(p);
   img::Image scene(6, 5, Format::RGBA32F);
   for (uint32_t y = 0; y < 5; ++y)
@@ -147,7 +147,7 @@ std::vector<StressRow> sigma_tiny(const StressOptions& o) {
 // Drift bound: each store moves by at most half a step, so |glow − v| ≤ 2·P·step/2.
 std::vector<StressRow> sigma_limit(const StressOptions& o, Format f) {
   constexpr double v = 0.25;
-  GlowParams p = small_params(4, 4, 1, f, 4096, kMaxBlurTaps);
+  EffectParams p = small_params(4, 4, 1, f, 4096, kMaxBlurTaps);
   const PlanResult plan = build_glow(p);
   StressRow row;
   row.id = fmt::format("sigma.limit.{}", fmt_name(f));
@@ -192,7 +192,7 @@ std::vector<StressRow> downsample_sizes(const StressOptions& o) {
   std::vector<StressRow> rows;
   auto one = [&](std::string id, uint32_t w, uint32_t h, unsigned n, const img::Image& scene,
                  uint32_t gx, uint32_t gy, double expected, std::string bound) {
-    GlowParams p = small_params(w, h, n, Format::RGBA32F, 1.0, 1);
+    EffectParams p = small_params(w, h, n, Format::RGBA32F, 1.0, 1);
     const PlanResult plan = build_glow(p);
     StressRow row;
     row.id = std::move(id);
@@ -230,7 +230,7 @@ std::vector<StressRow> downsample_sizes(const StressOptions& o) {
 // Intensity 1000 on a uniform 0.25 scene (the glow is 0.25·(Σw)² = 0.25): RGBA8 saturates
 // every pixel to 1; RGBA16F holds 0.25 + 250 = 250.25 (a half float: 250.25 = 1001·2^-2).
 std::vector<StressRow> intensity(const StressOptions& o, Format f) {
-  GlowParams p = small_params(4, 4, 1, f, 1.0);
+  EffectParams p = small_params(4, 4, 1, f, 1.0);
   p.intensity = 1000;
   const PlanResult plan = build_glow(p);
   StressRow row;
@@ -260,7 +260,7 @@ std::vector<StressRow> intensity(const StressOptions& o, Format f) {
 // (S = the sum of the weights the passes hold) instead of 1.
 StressRow weights_row(const StressOptions& o, std::string id, std::string quantity,
                       const std::vector<double>& weights, std::string bound) {
-  GlowParams p = small_params(4, 4, 1, Format::RGBA32F, 2.0, unsigned(weights.size()));
+  EffectParams p = small_params(4, 4, 1, Format::RGBA32F, 2.0, unsigned(weights.size()));
   PlanResult plan = build_glow(p);
   if (plan) set_blur_weights(*plan, weights);
   double s = 0;

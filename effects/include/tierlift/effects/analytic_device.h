@@ -29,7 +29,7 @@ class AnalyticPassDevice final : public PassDevice {
 public:
   std::string name() const override { return "analytic"; }
   ir::Status begin_run(const EffectGraph& graph, const ImageMap& inputs) override;
-  ir::Result<pass::DrawReport> run_pass(const PassDesc& pass) override;
+  ir::Result<pass::DrawReport> draw(const PassDesc& pass) override;
   ir::Status update_input(const std::string& name, const img::Image& image) override;
   ir::Result<img::Image> read_texture(const std::string& name) override;
   // The assumptions the model made in this run, one line each, "pass 'name': …" (e.g. the

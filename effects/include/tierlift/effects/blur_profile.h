@@ -42,7 +42,7 @@ struct BlurProfile {
   unsigned max_taps = 0; // 0: no limit; else odd: at most this many taps per axis
 };
 
-// One Gaussian, σ = 16 px (weight 1): with intensity 3 at downsample 4 (GlowParams) a halo a
+// One Gaussian, σ = 16 px (weight 1): with intensity 3 at downsample 4 (EffectParams) a halo a
 // person sees around the built-in scene's lights (the old σ 8 + σ 1.5 at intensity 1 hardly
 // showed).
 BlurProfile default_blur_profile();

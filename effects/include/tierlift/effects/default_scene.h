@@ -15,7 +15,7 @@ inline constexpr uint32_t kDefaultSceneWidth = 1280, kDefaultSceneHeight = 720;
 // Strip thickness max(1, h/60); light radius max(1, h/90).
 // Ground: (10, 10, 16)/255; panel: (90, 90, 100)/255; glowing colours have a channel of 1.
 // `light_orbit` (pixels) and `angle` (radians) move the three round lights on circles of
-// that radius, a third of a turn apart (GlowParams::motion); 0: where they always are.
+// that radius, a third of a turn apart (EffectParams::motion); 0: where they always are.
 img::Image make_default_scene(uint32_t width = kDefaultSceneWidth,
                               uint32_t height = kDefaultSceneHeight,
                               img::Format format = img::Format::RGBA32F, double light_orbit = 0,

@@ -39,12 +39,13 @@ public:
   // library below passed on (vulkan::TextureSet's, cpu::draw's); run_graph adds the pass and
   // the device to the message.
   virtual ir::Status begin_run(const EffectGraph& graph, const ImageMap& inputs) = 0;
-  // Runs one pass of that graph: it samples the textures it binds and renders into its
+  // Draws one pass of that graph (named `draw`, not "run": an IR pass is a transform, a
+  // graph's pass is a draw): it samples the textures it binds and renders into its
   // target with its blend mode; the target's format is the store rule. The report holds what
   // the device counts (the CPU device: pixels shaded and killed; the others leave them 0); a
   // success may carry warnings (the CPU device: "nothing-drawn" when no triangle reached
   // the screen).
-  virtual ir::Result<pass::DrawReport> run_pass(const PassDesc& pass) = 0;
+  virtual ir::Result<pass::DrawReport> draw(const PassDesc& pass) = 0;
   // Waits until every pass run so far is done (a device may queue passes: Vulkan records a
   // frame's passes into one command buffer).
   virtual ir::Status finish() { return ir::ok_status(); }
@@ -81,7 +82,7 @@ public:
       : threads_(threads), executor_(executor) {}
   std::string name() const override { return "cpu"; }
   ir::Status begin_run(const EffectGraph& graph, const ImageMap& inputs) override;
-  ir::Result<pass::DrawReport> run_pass(const PassDesc& pass) override;
+  ir::Result<pass::DrawReport> draw(const PassDesc& pass) override;
   ir::Status update_input(const std::string& name, const img::Image& image) override;
   ir::Result<img::Image> read_texture(const std::string& name) override;
 
@@ -90,7 +91,6 @@ private:
   cpu::Executor executor_;
   const EffectGraph* graph_ = nullptr;
   ImageMap images_;
-  ImageMap placeholders_; // an empty image per texture name, for make_pass
   std::map<std::string, std::vector<uint8_t>, std::less<>> stencils_; // TextureDesc::stencil
   // Textures whose reused buffers still hold the run before's pixels where this run means
   // zeros: zeroed on first read, or by the draw of a pass that does not overwrite them all

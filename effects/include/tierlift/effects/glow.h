@@ -128,7 +128,10 @@ struct Motion {
   bool on() const { return period > 0 && radius > 0; }
 };
 
-struct GlowParams {
+// What every effect reads from a scene (size, tier, format, blur profile, intensity,
+// listings; radial beams, the stencil outline and the GLSL blur take these too) and what only
+// the glow reads (downsample, after-image, context, fog). Named for every effect, not the glow.
+struct EffectParams {
   Tier tier = Tier::Dx9;
   uint32_t width = 1280, height = 720; // the scene
   unsigned downsample = 4;             // 1..4
@@ -166,7 +169,9 @@ struct GlowParams {
   }
 };
 
-struct GlowPlan {
+// An effect's graph and what the run reports about how it was built (every effect builder
+// returns one; the glow fills all of it).
+struct EffectPlan {
   EffectGraph graph;
   std::vector<BlurTap> taps; // one axis, the same for x and y
   // Tier dx7: the bytes the weights became (taps' order), and what that costs in brightness
@@ -181,7 +186,7 @@ struct GlowPlan {
 
 // A plan, or why there is none: one error (rule kPlanRule) naming the parameter at fault or
 // the listing.
-using PlanResult = ir::Result<GlowPlan>;
+using PlanResult = ir::Result<EffectPlan>;
 inline constexpr std::string_view kPlanRule = "glow";
 inline ir::Failure plan_failure(std::string message) {
   return ir::fail("glow", std::string(kPlanRule), std::move(message));
@@ -190,20 +195,20 @@ inline ir::Failure plan_failure(std::string message) {
 // The graph for one scene size and parameter set, for params.tier. Texture "scene" is its
 // input. Every error names the parameter at fault ("downsample 9: expected 1..4",
 // "intensity 4.5: tier dx8 reaches at most 4 (…)", "scene size 0x27: …"), or the listing.
-PlanResult build_glow(const GlowParams& params);
-PlanResult build_glow_dx9(const GlowParams& params);
-PlanResult build_glow_dx8(const GlowParams& params);
-PlanResult build_glow_dx7(const GlowParams& params);
+PlanResult build_glow(const EffectParams& params);
+PlanResult build_glow_dx9(const EffectParams& params);
+PlanResult build_glow_dx8(const EffectParams& params);
+PlanResult build_glow_dx7(const EffectParams& params);
 
 // The after-image's loop gain: g (Sources), or g·S² (Glow: S = the tap sum of one axis
 // times the weight scale), with g and the scale at their largest over the frames. 0: off.
-double afterimage_loop_gain(const GlowParams& params, const std::vector<BlurTap>& taps);
+double afterimage_loop_gain(const EffectParams& params, const std::vector<BlurTap>& taps);
 // The RGBA8 stall of a loop that multiplies a level L (in steps of 1/255) by k each frame:
 // the largest L with round(k·L) = L, i.e. L·(1 − k) < ½, so a fading trail stops there;
 // 0 when none (k ≤ ½) or k outside (0, 1).
 int rgba8_stall_level(double k);
 // Runaway (loop gain ≥ 1) and, in rgba8, the stall, each naming the fix; empty otherwise.
-std::vector<std::string> afterimage_warnings(const GlowParams& params,
+std::vector<std::string> afterimage_warnings(const EffectParams& params,
                                              const std::vector<BlurTap>& taps);
 
 // The per-axis read positions that average N texels (position in texels from the start of

@@ -46,7 +46,7 @@ struct GlslBlurParams {
 // horizontal result, "final" the blur. A GLSL file that does not compile gives glslang's
 // messages positioned in it (file:line:col, source line, caret) in `error`; so does a twin
 // listing. Also refused: a GLSL pass sampling a stage its twin does not bind.
-PlanResult build_glsl_blur(const GlowParams& params, const GlslBlurParams& glsl);
+PlanResult build_glsl_blur(const EffectParams& params, const GlslBlurParams& glsl);
 
 // "kernel weights sum to 0.98: the blur is 3.96 % darker than its source (0.9604 after
 // both axes)", as glow_warnings says it of a glow profile; empty when they sum to 1.

@@ -76,11 +76,10 @@ struct PassDesc {
   // either: without `vs` the pass has constant_inputs instead, without `ps` D3D9's fixed
   // function passes oD0 to the target (one target, no stencil: what the devices draw so).
   std::shared_ptr<const ir::Program> vs, ps;
-  std::vector<pass::Vec4> vs_constants, ps_constants; // c0, c1, …
-  // i# and b# of each stage (pass::ConstantBank), for listings with flow control; zeros and
-  // false unless set. The analytic device refuses a pass that sets any.
-  std::array<std::array<int32_t, 4>, 16> vs_int_constants{}, ps_int_constants{};
-  std::array<bool, 16> vs_bool_constants{}, ps_bool_constants{};
+  // Each stage's constants as the devices take them (pass::Pass holds the same banks): c#
+  // in `f` (c0, c1, …), and i# and b#, for listings with flow control, zeros and false unless
+  // set. The analytic device refuses a pass that sets any i# or b#.
+  pass::ConstantBank vs_constants, ps_constants;
   // Only without `vs`: the full-screen quad with these pixel inputs (v#, t#) at every pixel,
   // exactly as given (pass::Pass::constant_inputs); no `vertices` then.
   std::optional<pass::PixelInput> constant_inputs;
@@ -111,7 +110,7 @@ struct PassDesc {
   std::vector<KernelTap> kernel;
 
   // Per-frame constants (ramped parameters: run_frames). Frame f (from 0) uses entry
-  // min(f, size − 1) in place of vs_constants / ps_constants; empty: the same every frame.
+  // min(f, size − 1) in place of vs_constants.f / ps_constants.f; empty: the same every frame.
   // The devices never see these tables: the runner hands them at_frame(f), an ordinary pass,
   // so every device honours them the same way.
   std::vector<std::vector<pass::Vec4>> vs_constants_per_frame, ps_constants_per_frame;

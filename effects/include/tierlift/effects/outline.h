@@ -42,6 +42,6 @@ std::vector<std::array<double, 2>> outline_polygon(const OutlineParams& o);
 // The graph (tier dx9 only: MRT is ps_2_0). glow.width/height are the scene's size; the
 // glow's downsample, profile, format, intensity and listing options apply. Errors name the
 // parameter at fault.
-PlanResult build_outline(const GlowParams& glow, const OutlineParams& outline);
+PlanResult build_outline(const EffectParams& glow, const OutlineParams& outline);
 
 } // namespace tierlift::effects

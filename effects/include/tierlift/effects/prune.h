@@ -51,7 +51,7 @@ struct PrunedGraph {
 };
 
 // `scene` is the scene image the plan runs over (before it is stored in the plan's format).
-PrunedGraph prune_glow(const GlowPlan& plan, const img::Image& scene);
+PrunedGraph prune_glow(const EffectPlan& plan, const img::Image& scene);
 
 // The generic rule alone: passes whose target nothing after them reads and that is not
 // `frame`, left out (used by prune_glow; for any graph).

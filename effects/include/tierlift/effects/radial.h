@@ -55,6 +55,6 @@ std::array<std::array<double, 2>, 4> star_offsets(const RadialParams& r, unsigne
 
 // The graph for glow's tier, size and format (`glow`: the other glow fields are unused) and
 // the radial parameters. Errors name the parameter at fault.
-PlanResult build_radial(const GlowParams& glow, const RadialParams& radial);
+PlanResult build_radial(const EffectParams& glow, const RadialParams& radial);
 
 } // namespace tierlift::effects

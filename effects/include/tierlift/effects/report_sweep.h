@@ -53,7 +53,7 @@ SweepSettings quick_sweep();
 // The configurations the settings name, the scene's own first (added when the lists leave
 // it out), without repeats (two radius fractions giving the same tap count are one point).
 // Empty when a list is empty.
-std::vector<SweepConfig> sweep_configs(const SweepSettings& s, const GlowParams& scene);
+std::vector<SweepConfig> sweep_configs(const SweepSettings& s, const EffectParams& scene);
 
 struct DeviceTime {
   std::string device;

@@ -16,7 +16,7 @@ namespace tierlift::effects {
 struct PassRecord {
   std::string pass, target;
   img::Image result;              // the target after this pass (only when keep_pass_images)
-  double ms = 0;                  // run_pass only (a readback for keep_pass_images is not counted)
+  double ms = 0;                  // draw only (a readback for keep_pass_images is not counted)
   std::vector<uint8_t> midpoints; // the device's rounding-midpoint mask of `result`, if any
   // With keep_pass_images, what else the pass wrote: its targets beyond oC0 and its stencil
   // buffer (read as the device's read_texture gives it), compared like `result`.
@@ -26,7 +26,7 @@ struct PassRecord {
     std::vector<uint8_t> midpoints;
   };
   std::vector<Extra> more;
-  pass::DrawReport report;              // what the device's run_pass said (its counters)
+  pass::DrawReport report;              // what the device's draw said (its counters)
   std::vector<ir::Diagnostic> warnings; // and the warnings it gave with it
 };
 
@@ -38,13 +38,15 @@ struct GraphRun {
   std::map<std::string, std::vector<uint8_t>, std::less<>> midpoints;
 };
 
-// The pass::Pass a pass description becomes: its vertices, else the full-screen quad
+// The draw a pass description asks of a device: its vertices, else the full-screen quad
 // (pass::set_full_screen_quad_uv: the vertex listing's position input gets the corners, every
 // dcl_texcoord input the quad uv (0,0) top-left … (1,1) bottom-right; without a vertex listing
-// the quad with the constant inputs), constants, bound textures from `images`, blend,
-// conventions. Textures not in `images` are an error (rule "graph").
-ir::Result<pass::Pass> make_pass(const PassDesc& desc, const ImageMap& images,
-                                 const ir::Conventions& conventions);
+// the quad with the constant inputs), its constant banks, blend, targets, conventions, and
+// each bound stage's sampler and texture-stage state. No image is bound (every
+// TextureBinding::image is null): the device that owns the graph's textures binds its own
+// by reference (CpuPassDevice) or samples its resident copy (the Vulkan device), so nothing
+// is copied. A stage past pass::kMaxSamplers is an error (rule "graph").
+ir::Result<pass::Pass> make_pass(const PassDesc& desc, const ir::Conventions& conventions);
 
 // The rule of run_graph's and run_frames' failures (a graph the device could not run): one
 // error whose message names the pass (and frame) that failed and the device, followed, when

@@ -8,6 +8,7 @@
 // No exception escapes on bad input.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
@@ -25,15 +26,36 @@ namespace tierlift::effects {
 
 inline constexpr std::string_view kBuiltinNeon = "builtin:neon";
 
+// The effects a scene may run: a closed set, so every dispatch on it is a switch the
+// compiler checks for a missing case. Their names and the scene key of each one's own
+// parameters are in one registry (effect_kinds(), scene_effect.cpp).
+enum class EffectKind : uint8_t { Glow, RadialBeams, StencilOutline, GlslBlur };
+
+struct EffectInfo {
+  EffectKind kind;
+  std::string_view name;   // the scene's "effect" value, e.g. "radial-beams"
+  std::string_view object; // the key of its own parameters ("radial"); empty: none
+};
+
+// Every effect, in the order the schema and the messages list them.
+std::span<const EffectInfo> effect_kinds();
+// The registry's entry of `kind`, its name, and the kind named `name` (none: not an effect).
+const EffectInfo& effect_info(EffectKind kind);
+inline std::string_view effect_name(EffectKind kind) {
+  return effect_info(kind).name;
+}
+std::optional<EffectKind> parse_effect_kind(std::string_view name);
+
 struct Scene {
-  std::string file;  // the JSON file it came from ("" for the built-in default or --image)
-  std::string image; // "builtin:neon" (make_default_scene) or a resolved PNG path
-  GlowParams params; // width/height = the image's size; tier, downsample, format, half_texel,
-                     // profile, intensity, listing_files
-  // Which effect runs (scene_effects()): "glow", the default; "radial-beams" (its parameters
-  // in `radial`; tier, format and listings from `params`); "stencil-outline" (`outline`; the
-  // glow parameters serve it: size, blur profile, intensity, format); "glsl-blur" (`glsl`).
-  std::string effect = "glow";
+  std::string file;    // the JSON file it came from ("" for the built-in default or --image)
+  std::string image;   // "builtin:neon" (make_default_scene) or a resolved PNG path
+  EffectParams params; // width/height = the image's size; tier, downsample, format, half_texel,
+                       // profile, intensity, listing_files
+  // Which effect runs: Glow ("glow"), the default; RadialBeams ("radial-beams", its
+  // parameters in `radial`; tier, format and listings from `params`); StencilOutline
+  // ("stencil-outline", `outline`; the glow parameters serve it: size, blur profile,
+  // intensity, format); GlslBlur ("glsl-blur", `glsl`).
+  EffectKind effect = EffectKind::Glow;
   RadialParams radial;   // "radial": {…} for "radial-beams"
   OutlineParams outline; // "outline": {…} for "stencil-outline"
   GlslBlurParams glsl;   // "glsl": {…} for "glsl-blur" (paths relative to the scene's folder)
@@ -43,7 +65,7 @@ struct Scene {
 };
 
 // The scene changes from frame to frame: the glow's after-image, keyframes or motion
-// (GlowParams::animated), or a radial-beams star that moves. `--frames N` then runs and
+// (EffectParams::animated), or a radial-beams star that moves. `--frames N` then runs and
 // compares N different frames.
 bool scene_animated(const Scene& scene);
 
@@ -69,7 +91,7 @@ ir::Result<Scene> load_scene_file(const std::string& path);
 ir::Result<Scene> parse_scene(std::string_view json_text, const std::string& file_name,
                               const std::string& base_dir);
 
-// builtin:neon at 1280×720 with the default glow parameters (GlowParams{}).
+// builtin:neon at 1280×720 with the default glow parameters (EffectParams{}).
 Scene default_scene();
 
 // `--image`: a PNG with alpha (alpha marks what glows) and the default glow parameters at
@@ -96,7 +118,7 @@ std::vector<std::string> scene_input_files(const Scene& scene);
 // Weights that do not sum to one: "profile weights sum to 0.98: the glow is 3.96 % darker
 // than its sources (0.9604 after both axes)" — the blur runs on x, then on y, so the
 // glow's brightness is scaled by the square of the sum.
-std::vector<std::string> glow_warnings(const GlowParams& params);
+std::vector<std::string> glow_warnings(const EffectParams& params);
 
 // The keys a scene may have at the top level, in "glow" and in "glow/profile" — the loader
 // rejects every other key; the schema file lists the same ones (a test keeps them equal).
@@ -107,7 +129,7 @@ std::span<const std::string_view> scene_fog_keys();     // "glow/fog"
 std::span<const std::string_view> scene_radial_keys();  // "radial"
 std::span<const std::string_view> scene_outline_keys(); // "outline"
 std::span<const std::string_view> scene_glsl_keys();    // "glsl"
-// The values "effect" may take (scene_effect.cpp: the one list).
+// The values "effect" may take: the names of effect_kinds(), in its order.
 std::span<const std::string_view> scene_effects();
 
 } // namespace tierlift::effects

@@ -9,12 +9,19 @@
 //   ImageMap images;
 //   ir::Result<GraphRun> run = run_graph(*graph, cpu, images);
 //   const img::Image& image = images.at(std::string(kSinglePassTarget));
+//
+// or, on every way `--backend` names, compared: run_single_pass (below).
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <string_view>
+#include <vector>
 
+#include "tierlift/effects/backends.h"
 #include "tierlift/effects/graph.h"
+#include "tierlift/image/compare.h"
 #include "tierlift/image/image.h"
 #include "tierlift/ir/result.h"
 #include "tierlift/pass/pass.h"
@@ -37,5 +44,36 @@ inline constexpr std::string_view kSinglePassTarget = "target"; // the texture i
 // scalar executor (a CPU device's own choice: CpuPassDevice).
 ir::Result<EffectGraph> single_pass_graph(const pass::Pass& pass, uint32_t width, uint32_t height,
                                           img::Format format);
+
+// One device's draw of a graph of one pass: the target, and what the draw took (setup_ms:
+// textures, uploads, pipelines; draw_ms: the pass to the end of its work on the device).
+struct SinglePassDraw {
+  std::string device; // "cpu", "vulkan"
+  img::Image image;
+  pass::DrawReport report;
+};
+
+struct SinglePassRun {
+  std::vector<SinglePassDraw> draws; // one per way that ran, cpu before vulkan
+  std::string vulkan_device;         // its name when vulkan ran
+  SelectedWays selected;
+  // With two ways: how far apart their images are, judged at docs/design.md's targets for
+  // the target's format.
+  std::optional<img::Comparison> agreement;
+  std::optional<img::Verdict> verdict;
+};
+
+// `graph` (single_pass_graph's) on each way `backends` asks for, then compared. The memory the
+// run needs is planned first (plan_memory) and a run that cannot fit is refused before
+// anything is allocated. Failures, each after the warnings so far:
+//   "memory": the plan exceeds the memory available, or the host cannot hold the target;
+//   "device": a Vulkan device asked for cannot be had;
+//   "agreement": the two images cannot be compared;
+//   a device's own failure as run_graph gives it (rule kRunRule, its cause as notes), the
+//   error's subject naming the device ("cpu", "vulkan").
+// Warnings, in the order they arose: "backend" (Vulkan left out under "all"), then each
+// device's own (a draw that reached no pixel).
+ir::Result<SinglePassRun> run_single_pass(const EffectGraph& graph, const BackendChoice& backends,
+                                          const vulkan::DeviceOptions& vulkan, unsigned threads);
 
 } // namespace tierlift::effects

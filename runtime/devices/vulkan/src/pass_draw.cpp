@@ -198,21 +198,12 @@ void read_trace(const PreparedDraw& p, ShaderTrace& out) {
 
 } // namespace
 
-std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawTextures& textures,
-                         PreparedDraw& out) {
-  if (!textures.target) return "no render target";
-  Resident& target = *textures.target;
-  out.target = &target;
-  out.more_targets = textures.more_targets;
-  out.stencil = textures.stencil;
-  if (pass.vertex_program && pass.vertex_program->stage() != ir::ShaderStage::Vertex)
-    return "the vertex program is not a vertex shader";
-  if (pass.pixel_program && pass.pixel_program->stage() != ir::ShaderStage::Pixel)
-    return "the pixel program is not a pixel shader";
-  if (ir::Status s = pass::check_supported(pass, kCapabilities, "vulkan"); !s) return s.message();
-  if (std::string e = check_targets(pass, textures); !e.empty()) return e;
+namespace {
 
-  // Programs → SPIR-V.
+// The programs as SPIR-V, compiled for the pass's constants and the device's read paths.
+std::string compile_programs(const Device::Impl& d, const pass::Pass& pass,
+                             const DrawTextures& textures,
+                             std::optional<codegen::CompiledPair>& out) {
   auto vs_prog = pass.vertex_program ? pass.vertex_program : passthrough_vertex_program();
   auto ps_prog = pass.pixel_program ? pass.pixel_program : passthrough_pixel_program();
   // Products with a ±0 constant factor read nothing else (ir::zero_constant_products), so
@@ -242,28 +233,28 @@ std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawText
     co.stage_point_clamped[s] = pass::point_clamped(pass.textures[s].sampler);
   }
   ir::DiagnosticSink diags;
-  auto pair = codegen::compile_pair(*vs_prog, *ps_prog, co, diags);
-  if (!pair) return join_diagnostics(diags);
-  if (!pair->vs.samplers.empty()) return "vertex-stage texture sampling is not supported";
-  if (std::string e = check_color_outputs(pass, pair->ps); !e.empty()) return e;
+  out = codegen::compile_pair(*vs_prog, *ps_prog, co, diags);
+  if (!out) return join_diagnostics(diags);
+  if (!out->vs.samplers.empty()) return "vertex-stage texture sampling is not supported";
+  return check_color_outputs(pass, out->ps);
+}
 
-  Geometry geo;
-  if (std::string e = build_geometry(pass, geo); !e.empty()) return e;
-
-  Cleanup& cleanup = out.objects;
-  std::string err;
-  // The textures the pixel program samples: resident ones, else host images for this draw.
-  SampledImages images{};
+// The textures the pixel program samples: resident ones, else the pass's host images (or the
+// unbound texture) uploaded for this draw.
+std::string bind_sampled(Device::Impl& d, const pass::Pass& pass, const DrawTextures& textures,
+                         const codegen::CompiledPair& pair, PreparedDraw& out,
+                         SampledImages& images) {
   img::Image unbound(1, 1);
   unbound.rgba = {0, 0, 0, 1}; // an unbound stage reads (0, 0, 0, 1), as in D3D9
-  for (const auto& si : pair->ps.samplers) {
+  for (const auto& si : pair.ps.samplers) {
     const uint32_t s = si.stage % pass::kMaxSamplers;
     Resident*& r = out.sampled[s];
     if (r) continue;
     r = textures.stages[s];
-    bool own = r && r == &target;
+    bool own = r && r == textures.target;
     for (const Resident* m : textures.more_targets) own = own || (r && r == m);
     if (own) return fmt::format("s{}: a pass cannot sample its own render target", si.stage);
+    std::string err;
     if (!r) {
       const img::Image& im = pass.textures[s].image ? *pass.textures[s].image : unbound;
       err = host_texture(d, si.stage, im, out, r);
@@ -273,12 +264,15 @@ std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawText
     if (!err.empty()) return err;
     images[s] = si.fetch_unorm8 ? &r->stored.image : &r->sampled();
   }
+  return {};
+}
 
-  // Vertex and index buffers.
-  err = create_buffer(d, cleanup, geo.vertices.size() * kVertexStride,
-                      VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, out.vertices);
+// The vertex and index buffers, filled.
+std::string upload_geometry(Device::Impl& d, const Geometry& geo, PreparedDraw& out) {
+  std::string err = create_buffer(d, out.objects, geo.vertices.size() * kVertexStride,
+                                  VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, out.vertices);
   if (err.empty())
-    err = create_buffer(d, cleanup, geo.indices.size() * 4, VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+    err = create_buffer(d, out.objects, geo.indices.size() * 4, VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
                         out.indices);
   if (!err.empty()) return err;
   if (!geo.vertices.empty())
@@ -286,21 +280,18 @@ std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawText
   if (!geo.indices.empty())
     std::memcpy(out.indices.mapped, geo.indices.data(), geo.indices.size() * 4);
   out.index_count = static_cast<uint32_t>(geo.indices.size());
+  return {};
+}
 
-  // Descriptor set 0 and the pipeline layout.
-  Bindings bound;
-  if (ir::Status s = create_bindings(d, cleanup, *pair, pass, images, bound); !s)
-    return s.message();
-  out.layout = bound.layout;
-  out.set = bound.set;
-  out.trace = bound.trace;
-  out.trace_info = pair->ps.trace;
-
-  // Render pass, framebuffer, pipeline.
+// The render pass over the targets (and the stencil buffer), its framebuffer and the
+// pipeline.
+std::string create_render_objects(Device::Impl& d, const pass::Pass& pass,
+                                  const DrawTextures& textures, const codegen::CompiledPair& pair,
+                                  VkPipelineLayout layout, PreparedDraw& out) {
   std::vector<VkFormat> formats;
   std::vector<const Image2D*> attachments;
   for (uint32_t i = 0; i < pass.color_targets; ++i) {
-    const Resident& t = i == 0 ? target : *textures.more_targets[i - 1];
+    const Resident& t = i == 0 ? *textures.target : *textures.more_targets[i - 1];
     const VkFormat rt_format = t.stored.image.format;
     VkFormatProperties rt_props;
     vkGetPhysicalDeviceFormatProperties(d.physical, rt_format, &rt_props);
@@ -313,32 +304,34 @@ std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawText
     attachments.push_back(&t.stored.image);
   }
   if (textures.stencil) attachments.push_back(&textures.stencil->stored.image);
-  err = create_render_pass(d, cleanup, formats,
-                           textures.stencil ? textures.stencil->stored.image.format
-                                            : VK_FORMAT_UNDEFINED,
-                           out.render_pass);
+  std::string err = create_render_pass(d, out.objects, formats,
+                                       textures.stencil ? textures.stencil->stored.image.format
+                                                        : VK_FORMAT_UNDEFINED,
+                                       out.render_pass);
   if (err.empty())
-    err = create_framebuffer(d, cleanup, out.render_pass, attachments, out.framebuffer);
+    err = create_framebuffer(d, out.objects, out.render_pass, attachments, out.framebuffer);
+  if (!err.empty()) return err;
   PipelineDesc pd;
-  pd.vs = &pair->vs;
-  pd.ps = &pair->ps;
+  pd.vs = &pair.vs;
+  pd.ps = &pair.ps;
   // A GLSL pass draws its own SPIR-V; the twin's module gave the interface (samplers,
-  // constant block) the descriptors above follow, and glslang names its entry point "main"
-  // as codegen does.
-  const std::vector<uint32_t>& ps_words = pass.pixel_spirv ? *pass.pixel_spirv : pair->ps.words;
-  pd.ps_words = ps_words;
+  // constant block) the descriptors follow, and glslang names its entry point "main" as
+  // codegen does.
+  pd.ps_words = pass.pixel_spirv ? *pass.pixel_spirv : pair.ps.words;
   pd.blend = pass.blend;
   pd.color_targets = pass.color_targets;
   pd.stencil_attachment = textures.stencil != nullptr;
   pd.depth_stencil = pass.depth_stencil;
   pd.render_pass = out.render_pass;
-  pd.layout = bound.layout;
+  pd.layout = layout;
   pd.vertex_stride = kVertexStride;
-  if (err.empty()) err = create_pipeline(d, cleanup, pd, out.pipeline);
-  if (!err.empty()) return err;
+  return create_pipeline(d, out.objects, pd, out.pipeline);
+}
 
-  // Viewport (D3D9 centres: +0.5 pixel) and scissor (the D3D9 viewport within the target,
-  // and within the pass's scissor rectangle when it has one).
+// Viewport (D3D9 centres: +0.5 pixel) and scissor (the D3D9 viewport within the target, and
+// within the pass's scissor rectangle when it has one); whether anything is left to draw.
+void place_viewport(const pass::Pass& pass, const Resident& target, bool has_triangles,
+                    PreparedDraw& out) {
   const pass::Viewport& v = pass.viewport;
   const uint32_t vw = v.width ? v.width : target.width, vh = v.height ? v.height : target.height;
   const float shift = pass.conventions.pixel_center == ir::PixelCenter::D3D9 ? 0.5f : 0.0f;
@@ -357,11 +350,46 @@ std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawText
     sx1 = std::min<int64_t>(sx1, pass.scissor->x1);
     sy1 = std::min<int64_t>(sy1, pass.scissor->y1);
   }
-  out.visible = sx1 > sx0 && sy1 > sy0 && !geo.indices.empty();
+  out.visible = sx1 > sx0 && sy1 > sy0 && has_triangles;
   out.scissor = {
       {static_cast<int32_t>(out.visible ? sx0 : 0), static_cast<int32_t>(out.visible ? sy0 : 0)},
       {static_cast<uint32_t>(out.visible ? sx1 - sx0 : 1),
        static_cast<uint32_t>(out.visible ? sy1 - sy0 : 1)}};
+}
+
+} // namespace
+
+std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawTextures& textures,
+                         PreparedDraw& out) {
+  if (!textures.target) return "no render target";
+  out.target = textures.target;
+  out.more_targets = textures.more_targets;
+  out.stencil = textures.stencil;
+  if (pass.vertex_program && pass.vertex_program->stage() != ir::ShaderStage::Vertex)
+    return "the vertex program is not a vertex shader";
+  if (pass.pixel_program && pass.pixel_program->stage() != ir::ShaderStage::Pixel)
+    return "the pixel program is not a pixel shader";
+  if (ir::Status s = pass::check_supported(pass, kCapabilities, "vulkan"); !s) return s.message();
+  if (std::string e = check_targets(pass, textures); !e.empty()) return e;
+  std::optional<codegen::CompiledPair> pair;
+  if (std::string e = compile_programs(d, pass, textures, pair); !e.empty()) return e;
+  Geometry geo;
+  if (std::string e = build_geometry(pass, geo); !e.empty()) return e;
+  SampledImages images{};
+  if (std::string e = bind_sampled(d, pass, textures, *pair, out, images); !e.empty()) return e;
+  if (std::string e = upload_geometry(d, geo, out); !e.empty()) return e;
+  // Descriptor set 0 and the pipeline layout.
+  Bindings bound;
+  if (ir::Status s = create_bindings(d, out.objects, *pair, pass, images, bound); !s)
+    return s.message();
+  out.layout = bound.layout;
+  out.set = bound.set;
+  out.trace = bound.trace;
+  out.trace_info = pair->ps.trace;
+  if (std::string e = create_render_objects(d, pass, textures, *pair, bound.layout, out);
+      !e.empty())
+    return e;
+  place_viewport(pass, *textures.target, !geo.indices.empty(), out);
   return {};
 }
 

@@ -172,7 +172,7 @@ struct Pass {
   std::shared_ptr<const std::vector<uint32_t>> pixel_spirv;
 };
 
-// What a draw took, for the report (effects::PassDevice::run_pass returns it); counters a
+// What a draw took, for the report (effects::PassDevice::draw returns it); counters a
 // device does not keep stay 0.
 struct DrawReport {
   double setup_ms = 0; // programs, pipelines, uploads

@@ -1,0 +1,94 @@
+// run_single_pass (single_pass.h): `tierlift run`'s graph of one pass on the ways asked for;
+// make_pass (run_graph.h): the draw a device is handed for a pass of a graph.
+// The pass here has no listings: D3D9's fixed function passes its constant colour (oD0) to
+// every pixel, so the expected image is that colour everywhere, known before the run.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+#include "tierlift/effects/run_graph.h"
+#include "tierlift/effects/single_pass.h"
+#include "tierlift/ir/result_diagnostics.h"
+
+namespace tierlift::effects {
+namespace {
+
+constexpr pass::Vec4 kColour{0.25f, 0.5f, 0.75f, 1.0f};
+
+EffectGraph constant_colour_graph(uint32_t w, uint32_t h) {
+  pass::Pass p;
+  p.constant_inputs.color[0] = kColour;
+  ir::Result<EffectGraph> g = single_pass_graph(p, w, h, img::Format::RGBA32F);
+  EXPECT_TRUE(g) << g.message();
+  return g ? *g : EffectGraph{};
+}
+
+BackendChoice ways(const char* text) {
+  ir::Result<BackendChoice> b = parse_backends(text, {"cpu", "vulkan"});
+  EXPECT_TRUE(b) << b.message();
+  return b ? *b : BackendChoice{};
+}
+
+TEST(SinglePassRun, TheCpuDrawsTheConstantColourEverywhere) {
+  ir::Result<SinglePassRun> run = run_single_pass(constant_colour_graph(5, 3), ways("cpu"), {}, 1);
+  ASSERT_TRUE(run) << run.message();
+  ASSERT_EQ(run->draws.size(), 1u);
+  const SinglePassDraw& d = run->draws[0];
+  EXPECT_EQ(d.device, "cpu");
+  ASSERT_EQ(d.image.width, 5u);
+  ASSERT_EQ(d.image.height, 3u);
+  for (size_t i = 0; i < d.image.rgba.size(); ++i) ASSERT_EQ(d.image.rgba[i], kColour[i % 4]) << i;
+  EXPECT_EQ(d.report.pixels_shaded, 15u);
+  EXPECT_FALSE(run->agreement); // one way: nothing to compare
+  EXPECT_TRUE(run->vulkan_device.empty());
+}
+
+TEST(SinglePassRun, FailuresNameTheirRule) {
+  vulkan::DeviceOptions nowhere;
+  nowhere.gpu_filter = "no device is called this";
+  ir::Result<SinglePassRun> no_device =
+      run_single_pass(constant_colour_graph(4, 4), ways("vulkan"), nowhere, 1);
+  ASSERT_FALSE(no_device);
+  EXPECT_TRUE(ir::failed_with(no_device, "device")) << no_device.message();
+
+  ASSERT_EQ(setenv("TIERLIFT_MEMORY_LIMIT", "1048576", 1), 0); // 1 MiB: below the program
+  ir::Result<SinglePassRun> too_big =
+      run_single_pass(constant_colour_graph(4, 4), ways("cpu"), {}, 1);
+  unsetenv("TIERLIFT_MEMORY_LIMIT");
+  ASSERT_FALSE(too_big);
+  EXPECT_TRUE(ir::failed_with(too_big, "memory")) << too_big.message();
+}
+
+// The draw a pass description asks of a device: its banks (c#, i#, b#) and each bound stage's
+// sampler state as given, and no image, however many stages are bound — the device that owns
+// the textures binds its own (no copy, no placeholder).
+TEST(MakePass, CarriesBanksAndSamplerStatesButBindsNoImage) {
+  PassDesc d;
+  d.name = "p";
+  d.constant_inputs = pass::PixelInput{};
+  d.target = "t";
+  d.ps_constants.f = {{1, 2, 3, 4}};
+  d.ps_constants.i[3] = {5, 6, 7, 8};
+  d.vs_constants.b[2] = true;
+  pass::SamplerState linear;
+  linear.filter = pass::Filter::Linear;
+  linear.address_u = pass::AddressMode::Clamp;
+  d.textures = {{2, "a", linear, {}}, {5, "a", {}, {}}};
+  ir::Result<pass::Pass> p = make_pass(d, ir::Conventions{});
+  ASSERT_TRUE(p) << p.message();
+  EXPECT_EQ(p->ps_constants.f.at(0)[3], 4.0f);
+  EXPECT_EQ(p->ps_constants.i[3][1], 6);
+  EXPECT_TRUE(p->vs_constants.b[2]);
+  EXPECT_EQ(p->textures[2].sampler.filter, pass::Filter::Linear);
+  EXPECT_EQ(p->textures[2].sampler.address_u, pass::AddressMode::Clamp);
+  EXPECT_EQ(p->textures[5].sampler.filter, pass::Filter::Point);
+  for (const pass::TextureBinding& b : p->textures) EXPECT_EQ(b.image, nullptr);
+
+  d.textures = {{pass::kMaxSamplers, "a", {}, {}}}; // s16: past the last stage
+  ir::Result<pass::Pass> past = make_pass(d, ir::Conventions{});
+  ASSERT_FALSE(past);
+  EXPECT_TRUE(ir::failed_with(past, "graph")) << past.message();
+}
+
+} // namespace
+} // namespace tierlift::effects
