@@ -213,10 +213,12 @@ StageResult differential_run(const ir::Program& program, const std::string& id,
     }
     img::Verdict v = img::judge(*c, req.format);
     if (v.pass) continue;
-    // NUMERICS.md rule 38: pixels whose program samples at a non-finite coordinate are
-    // undefined in Direct3D 9 and not compared. Every pixel of this run has the same inputs,
-    // so the rule takes the whole image of this input set or none of it.
-    if (std::string read = non_finite_read(*made); !read.empty()) {
+    // NUMERICS.md rule 38: pixels whose program samples at a non-finite coordinate, or takes
+    // sincos outside [−π, π], are undefined in Direct3D 9 and not compared. Every pixel of this run
+    // has the same inputs, so the rule takes the whole image of this input set or none of it.
+    std::string read = non_finite_read(*made);
+    if (read.empty()) read = sincos_out_of_range(*made);
+    if (!read.empty()) {
       s.message += fmt::format("{}input set {} not compared: undefined in D3D9 ({})",
                                s.message.empty() ? "" : "; ", set, read);
       continue;

@@ -3,12 +3,16 @@
 // device's own sampler and notes the first whose coordinate is not finite.
 #include "tierlift/corpus/undefined_reads.h"
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
+#include <vector>
 
 #include <fmt/format.h>
 
 #include "tierlift/cpu/shader_vm.h"
 #include "tierlift/cpu/texture.h"
+#include "tierlift/ir/profile.h"
 
 namespace tierlift::corpus {
 namespace {
@@ -67,6 +71,121 @@ std::string non_finite_read(const pass::Pass& pass) {
   const WatchedTextures watched(bound, *pass.pixel_program);
   vm->run_pixel(in, pass.ps_constants, watched);
   return watched.first();
+}
+
+namespace {
+
+bool written_or_read(const ir::Program& p, ir::RegFile file, uint32_t index) {
+  for (const ir::Instruction& ins : p.code) {
+    if (ins.dst && ins.dst->file == file && ins.dst->index == index) return true;
+    for (const ir::SrcOperand& s : ins.src)
+      if (s.file == file && s.index == index) return true;
+  }
+  return false;
+}
+
+// A temporary the program never names, from the top; nullopt when all are used.
+std::optional<uint32_t> spare_temp(const ir::Program& p, uint32_t below) {
+  for (uint32_t r = ir::limits(p.profile).temps; r-- > 0;)
+    if (r < below && !written_or_read(p, ir::RegFile::Temp, r)) return r;
+  return std::nullopt;
+}
+
+ir::DstOperand dst_x(ir::RegFile file, uint32_t index) {
+  return ir::DstOperand{file, index, 0x1, {}};
+}
+ir::SrcOperand temp_x(uint32_t index) {
+  ir::SrcOperand s;
+  s.file = ir::RegFile::Temp;
+  s.index = index;
+  s.swizzle = 0x00; // .xxxx
+  return s;
+}
+
+// The copy: before each sincos (subroutines too), |its argument| (the fourth swizzle slot, as
+// sincos reads a scalar) into rT.x and max(rA.x, rT.x) into rA.x (temporaries start at 0 in
+// the VM); where the main program ends, rA.x into `out`.
+std::optional<ir::Program> sincos_probe(const ir::Program& p, ir::DstOperand out) {
+  bool any = false;
+  for (const ir::Instruction& ins : p.code) any |= ins.op == ir::Opcode::SinCos && !ins.src.empty();
+  if (!any || written_or_read(p, out.file, out.index)) return std::nullopt;
+  const std::optional<uint32_t> acc = spare_temp(p, 256);
+  const std::optional<uint32_t> arg = acc ? spare_temp(p, *acc) : std::nullopt;
+  if (!acc || !arg) return std::nullopt;
+  // Where the main program ends: its `ret` before the first subroutine label, else the end.
+  size_t main_end = p.code.size();
+  for (size_t i = 0; i < p.code.size() && p.code[i].op != ir::Opcode::Label; ++i)
+    if (p.code[i].op == ir::Opcode::Ret) {
+      main_end = i;
+      break;
+    }
+  ir::Instruction mov;
+  mov.op = ir::Opcode::Mov;
+  mov.dst = out;
+  mov.src.push_back(temp_x(*acc));
+  ir::Program q = p;
+  q.code.clear();
+  uint32_t last_seq = 0;
+  for (size_t i = 0; i < p.code.size(); ++i) {
+    const ir::Instruction& ins = p.code[i];
+    if (i == main_end) {
+      mov.seq = ins.seq;
+      q.code.push_back(mov);
+    }
+    last_seq = std::max(last_seq, ins.seq);
+    if (ins.op == ir::Opcode::SinCos && !ins.src.empty()) {
+      ir::Instruction a;
+      a.op = ir::Opcode::Abs;
+      a.dst = dst_x(ir::RegFile::Temp, *arg);
+      ir::SrcOperand x = ins.src[0];
+      x.swizzle = static_cast<uint8_t>(((x.swizzle >> 6) & 3) * 0x55);
+      a.src.push_back(x);
+      a.seq = ins.seq;
+      ir::Instruction m;
+      m.op = ir::Opcode::Max;
+      m.dst = dst_x(ir::RegFile::Temp, *acc);
+      m.src = {temp_x(*acc), temp_x(*arg)};
+      m.seq = ins.seq;
+      q.code.push_back(std::move(a));
+      q.code.push_back(std::move(m));
+    }
+    q.code.push_back(ins);
+  }
+  if (main_end == p.code.size()) {
+    mov.seq = last_seq + 1;
+    q.code.push_back(std::move(mov));
+  }
+  return q;
+}
+
+} // namespace
+
+std::string sincos_out_of_range(const pass::Pass& pass) {
+  const bool pixel = pass.pixel_program && !pass.vertex_program && pass.transformed.empty();
+  const bool vertex = pass.vertex_program && !pass.pixel_program;
+  if (!pixel && !vertex) return "";
+  const ir::Program& p = pixel ? *pass.pixel_program : *pass.vertex_program;
+  const std::optional<ir::Program> probe =
+      sincos_probe(p, pixel ? dst_x(ir::RegFile::ColorOut, 3) : dst_x(ir::RegFile::TexCrdOut, 7));
+  if (!probe) return "";
+  ir::Result<cpu::ShaderVM> vm = cpu::ShaderVM::create(*probe, pass.conventions);
+  if (!vm) return "";
+  std::vector<float> largest;
+  if (pixel) {
+    pass::PixelInput in = pass.constant_inputs;
+    for (auto& colour : in.color)
+      for (float& v : colour) v = v > 0 ? (v < 1 ? v : 1) : 0;
+    const cpu::BoundTextures bound(pass.textures, pass.conventions.subtexel_bits,
+                                   pass.conventions.rounding == ir::Rounding::Llvmpipe);
+    largest.push_back(vm->run_pixel(in, pass.ps_constants, bound).color[3][0]);
+  } else {
+    for (const pass::VertexInput& v : pass.vertices)
+      largest.push_back(vm->run_vertex(v, pass.vs_constants).tex[7][0]);
+  }
+  constexpr float kPi = 3.14159274f; // fl32(π): the bound an fp32 argument can meet
+  for (float a : largest)
+    if (!(a <= kPi)) return "sincos of " + show(a);
+  return "";
 }
 
 } // namespace tierlift::corpus

@@ -2,6 +2,7 @@
 // pixel program that samples at a non-finite coordinate, and nothing else.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <memory>
 #include <string>
 
@@ -50,6 +51,36 @@ TEST(UndefinedReads, InterpolatedInputsAreNotJudged) {
   EXPECT_EQ(non_finite_read(p), "");
 }
 
+// sincos outside [−π, π]: the largest |argument| is named, in a pixel program (at its
+// constant inputs) and in a vertex program (at each vertex, a subroutine after main's ret).
+pass::Pass sincos_pixel_pass(float x) {
+  pass::Pass p;
+  p.pixel_program = program("ps_2_0\ndef c6, -1.5500992e-06, -2.170139e-05, 0.0026041667, "
+                            "0.00026041668\ndef c7, -0.020833334, -0.125, 1, 0.5\n"
+                            "mov r0, c6\nmov r1, c1\nsincos r0.xy, r1.y, c6, c7\nmov oC0, r0\n");
+  p.ps_constants.f = {{0, 0, 0, 0}, {0, x, 0, 0}};
+  return p;
+}
+
+TEST(UndefinedReads, SincosOutsideMinusPiToPiIsNamed) {
+  EXPECT_EQ(sincos_out_of_range(sincos_pixel_pass(3.0f)), "");
+  EXPECT_EQ(sincos_out_of_range(sincos_pixel_pass(-3.14159274f)), ""); // fl32(π): in range
+  EXPECT_EQ(sincos_out_of_range(sincos_pixel_pass(4.0f)), "sincos of 4");
+  EXPECT_EQ(sincos_out_of_range(sincos_pixel_pass(-1e30f)), "sincos of 1e+30");
+  EXPECT_EQ(sincos_out_of_range(sincos_pixel_pass(std::nanf(""))), "sincos of nan");
+
+  pass::Pass v;
+  v.vertex_program = program("vs_2_0\ndcl_position v0\ndcl_normal v1\n"
+                             "def c6, -1.5500992e-06, -2.170139e-05, 0.0026041667, 0.00026041668\n"
+                             "def c7, -0.020833334, -0.125, 1, 0.5\ncall l0\nmov oPos, v0\n"
+                             "mov oD0, r5\nret\nlabel l0\nmov r5, c0\n"
+                             "sincos r5.xy, v1.x, c6, c7\nret\n");
+  v.vertices.resize(3);
+  EXPECT_EQ(sincos_out_of_range(v), "");
+  v.vertices[1].v[1] = {65504.0f, 0, 0, 0};
+  EXPECT_EQ(sincos_out_of_range(v), "sincos of 65504");
+}
+
 vulkan::Device* lavapipe() {
   ir::Result<vulkan::Device*> d = vulkan::process_device({});
   return d ? *d : nullptr;
@@ -86,6 +117,26 @@ TEST(UndefinedReads, DifferentialStageLeavesTheUndefinedSetsOut) {
   const CaseResult f = run_listing("generated/ps_2_0/seed1/00020", "x.psh", finite, o);
   EXPECT_EQ(f.stages.back().verdict, Verdict::Pass) << f.stages.back().message;
   EXPECT_EQ(f.stages.back().message, "");
+}
+
+// Generated case 00044 of `tierlift test --generate 200 --profile vs_2_0 --seed 3`, reduced:
+// input sets 1 and 2 give v1.x = 1e30, whose cosine the interpreter (std::cos) and lavapipe
+// (its polynomial) do not agree on; Direct3D 9 defines sincos on [−π, π] only.
+TEST(UndefinedReads, DifferentialStageLeavesSincosOutOfRangeOut) {
+  vulkan::Device* device = lavapipe();
+  if (!device) GTEST_SKIP() << "no Vulkan device";
+  StageOptions o;
+  o.device = device;
+  o.seed = 3;
+  const CaseResult r = run_listing("generated/vs_2_0/seed3/00044@8cb7c74a2f28b6e1", "x.vsh",
+                                   "vs_2_0\ndcl_position v0\ndcl_normal v1\nmov r5, c0\n"
+                                   "sincos r5.x, v1.x, c0, c1\nmov oPos, c0\nmov oD0, r5\n",
+                                   o);
+  ASSERT_EQ(r.stages.back().stage, kStageDiff);
+  EXPECT_EQ(r.stages.back().verdict, Verdict::Pass) << r.stages.back().message;
+  EXPECT_NE(r.stages.back().message.find("not compared: undefined in D3D9 (sincos of 1e+30)"),
+            std::string::npos)
+      << r.stages.back().message;
 }
 
 } // namespace

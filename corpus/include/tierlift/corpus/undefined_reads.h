@@ -16,4 +16,12 @@ namespace tierlift::corpus {
 // rule then excludes nothing).
 std::string non_finite_read(const pass::Pass& pass);
 
+// The second case of the rule: `sincos` of an argument outside [−π, π] (Direct3D 9 defines it
+// there only). The interpreter runs a copy of the pass's one program (a pixel program at its
+// constant inputs, or a vertex program at each of its vertices) that also records the largest
+// |argument| of every sincos it runs, in a temporary and an output the program leaves unused.
+// Returns "sincos of 3.40282347e+38" (the largest, NaN shown as nan), or "" when every
+// argument is in range or the copy cannot be made (no spare temporary or output, subroutines).
+std::string sincos_out_of_range(const pass::Pass& pass);
+
 } // namespace tierlift::corpus
