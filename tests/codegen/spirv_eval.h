@@ -208,6 +208,7 @@ private:
       case Op::OpIEqual: icmp([](int32_t x, int32_t y) { return x == y; }); break;
       case Op::OpINotEqual: icmp([](int32_t x, int32_t y) { return x != y; }); break;
       case Op::OpSLessThan: icmp([](int32_t x, int32_t y) { return x < y; }); break;
+      case Op::OpSLessThanEqual: icmp([](int32_t x, int32_t y) { return x <= y; }); break;
       case Op::OpSGreaterThan: icmp([](int32_t x, int32_t y) { return x > y; }); break;
       case Op::OpSGreaterThanEqual: icmp([](int32_t x, int32_t y) { return x >= y; }); break;
       case Op::OpBitcast: val_[a[1]] = val_.at(a[2]); break;

@@ -157,3 +157,25 @@ TEST(LaterProfiles, WhatDoesNotRunYetIsRefusedWithAPosition) {
   EXPECT_EQ(s.diagnostics()[0].loc.line, 5u);
   EXPECT_NE(s.diagnostics()[0].message.find("the semantic normal0"), std::string::npos);
 }
+
+// vs_3_0 may address v# and o# with aL; the devices do not run that yet (only c#).
+TEST(LaterProfiles, RelativeInputsAndOutputsAreRefusedAtTheOperand) {
+  Program p;
+  p.profile = Profile::vs_3_0;
+  Instruction mov;
+  mov.op = Opcode::Mov;
+  mov.dst = DstOperand{RegFile::Temp, 0, kFullMask, {1, 2, 5, 2}};
+  SrcOperand v;
+  v.file = RegFile::Input;
+  v.index = 1;
+  v.rel = RelAddr{RegFile::Loop, 0, {1, 2, 9, 2}};
+  v.loc = {1, 2, 9, 7};
+  mov.src.push_back(v);
+  p.code.push_back(mov);
+  Status s = check_executable(p, "SPIR-V");
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.diagnostics()[0].loc.col, 9u);
+  EXPECT_NE(s.diagnostics()[0].message.find("v1 addressed relatively"), std::string::npos);
+  p.code[0].src[0].file = RegFile::Const; // c[aL + 1] runs
+  EXPECT_TRUE(check_executable(p, "SPIR-V").ok());
+}
