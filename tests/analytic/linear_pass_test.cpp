@@ -178,6 +178,7 @@ TEST(LinearPass, Ps1xClampsSamplesAndTheSum) {
   ASSERT_TRUE(plain) << plain.message();
   EXPECT_EQ(plain->at(0, 0)[0], 1.3125f);
   in.ps1x_clamp = true;
+  in.model.conventions.ps1x_max_value = 1.0f; // geforce3's range, the clamps shown above
   std::vector<std::string> notes;
   auto clamped = analytic::linear_pass(taps, in, &notes);
   ASSERT_TRUE(clamped) << clamped.message();
@@ -211,6 +212,7 @@ TEST(LinearPass, MaskByAlpha) {
   // ps_1_x: a sample of 2 clamps to 1 first: (2, 2, 2, 0.5) → (0.5, 0.5, 0.5, 0.5).
   src.rgba = {2.0f, 2.0f, 2.0f, 0.5f, 0, 0, 0, 0};
   in.ps1x_clamp = true;
+  in.model.conventions.ps1x_max_value = 1.0f; // geforce3's range
   auto c = analytic::mask_by_alpha_pass(tap(0, 0.25, 0.5, 0.0), in);
   ASSERT_TRUE(c) << c.message();
   EXPECT_EQ(c->at(0, 0)[0], 0.5f);
