@@ -41,16 +41,13 @@ void register_assemble_command(CLI::App& app) {
       report.error("io", out.message(), opts->output);
       return report.finish(kExitUsage);
     }
-    ir::Result<LoadedListing> loaded = load_listing(opts->file, opts->fe);
+    std::string failed;
+    ir::Result<LoadedListing> loaded = load_writing_to(opts->file, opts->fe, opts->output, failed);
     if (!loaded) {
-      report.error("io", loaded.message(), opts->file);
+      report.error("io", loaded.message(), failed);
       return report.finish(kExitUsage);
     }
     LoadedListing& l = *loaded;
-    if (ir::Status out = refuse_included(opts->output, l); !out) {
-      report.error("io", out.message(), opts->output);
-      return report.finish(kExitUsage);
-    }
     // The checked form: a field the token stream cannot carry is an error, not truncated.
     std::optional<std::vector<uint32_t>> tokens;
     if (l.program) tokens = as::assemble(*l.program, l.diags);

@@ -49,16 +49,13 @@ void register_fmt_command(CLI::App& app) {
       report.error("io", out.message(), opts->output);
       return report.finish(kExitUsage);
     }
-    ir::Result<LoadedListing> loaded = load_listing(opts->file, opts->fe);
+    std::string failed;
+    ir::Result<LoadedListing> loaded = load_writing_to(opts->file, opts->fe, opts->output, failed);
     if (!loaded) {
-      report.error("io", loaded.message(), opts->file);
+      report.error("io", loaded.message(), failed);
       return report.finish(kExitUsage);
     }
     LoadedListing& l = *loaded;
-    if (ir::Status out = refuse_included(opts->output, l); !out) {
-      report.error("io", out.message(), opts->output);
-      return report.finish(kExitUsage);
-    }
     report.diagnostics(l.diags, l.sources);
     if (!l.program) return report.finish(kExitInvalid);
     // The program has no directives and no macros left: printing it would drop them.

@@ -80,6 +80,18 @@ ir::Status refuse_included(const std::string& output, const LoadedListing& listi
   return ir::ok_status();
 }
 
+ir::Result<LoadedListing> load_writing_to(const std::string& path, const FrontEndOptions& options,
+                                          const std::string& output, std::string& failed_path) {
+  failed_path = path;
+  ir::Result<LoadedListing> loaded = load_listing(path, options);
+  if (!loaded) return loaded;
+  if (ir::Status refused = refuse_included(output, *loaded); !refused) {
+    failed_path = output;
+    return refused.failure();
+  }
+  return loaded;
+}
+
 ir::Status check_output(const std::string& output, const std::vector<std::string>& inputs,
                         bool json) {
   if (json && output == "-")

@@ -66,6 +66,10 @@ ir::Status output_conflict(const std::string& output, const std::vector<std::str
 // After loading: OK when `output` is none of the files `listing` #included (directly or
 // through another include); the refusal names both. Nothing has been written yet.
 ir::Status refuse_included(const std::string& output, const LoadedListing& listing);
+// The listing a command writes `output` from: load_listing, then refuse_included. On a
+// failure `failed_path` names the file it is about (the listing, or the output).
+ir::Result<LoadedListing> load_writing_to(const std::string& path, const FrontEndOptions& options,
+                                          const std::string& output, std::string& failed_path);
 // output_conflict, and also refuses "-o -" together with --json (both want standard
 // output).
 ir::Status check_output(const std::string& output, const std::vector<std::string>& inputs,

@@ -115,37 +115,39 @@ SignalsBlocked::~SignalsBlocked() {
   ::pthread_sigmask(SIG_SETMASK, &old_, nullptr);
 }
 
-int create_registered_temp(const std::string& pattern, int* fd, int* err) {
+namespace {
+
+// A free slot named from `pattern`, made into a file or folder by `make` (which fills in the
+// X's) and registered with the handlers, all with signals held: a handler never sees a slot
+// half made. -1 with *err set when there is no slot or `make` fails.
+template <class Make>
+int create_registered(const std::string& pattern, int folder, int* err, Make make) {
   install_handlers_once();
   std::lock_guard lock(g_mutex);
   SignalsBlocked blocked;
   int i = free_slot(pattern, err);
   if (i < 0) return -1;
   Slot& s = g_slots[i];
-  *fd = ::mkostemp(s.name, O_CLOEXEC);
-  if (*fd < 0) {
+  if (!make(s.name)) {
     *err = errno;
     return -1;
   }
-  s.folder = 0;
+  s.folder = folder;
   s.active = 1;
   return i;
 }
 
+} // namespace
+
+int create_registered_temp(const std::string& pattern, int* fd, int* err) {
+  return create_registered(pattern, 0, err, [fd](char* name) {
+    *fd = ::mkostemp(name, O_CLOEXEC);
+    return *fd >= 0;
+  });
+}
+
 int create_registered_temp_dir(const std::string& pattern, int* err) {
-  install_handlers_once();
-  std::lock_guard lock(g_mutex);
-  SignalsBlocked blocked;
-  int i = free_slot(pattern, err);
-  if (i < 0) return -1;
-  Slot& s = g_slots[i];
-  if (!::mkdtemp(s.name)) {
-    *err = errno;
-    return -1;
-  }
-  s.folder = 1;
-  s.active = 1;
-  return i;
+  return create_registered(pattern, 1, err, [](char* name) { return ::mkdtemp(name) != nullptr; });
 }
 
 std::string registered_temp_name(int slot) {
