@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "../vulkan/vk_test_util.h"
 #include "tierlift/effects/scene.h"
 #include "tierlift/effects/scene_run.h"
 #include "tierlift/image/image.h"
@@ -101,6 +102,10 @@ TEST(SceneRun, AMovingSceneWarnsWithoutFramesAndIsComparedFrameByFrameWithThem) 
 // The failures carry their rule: a Vulkan device asked for by a filter nothing matches
 // ("device"), a memory budget below the scene's peak ("memory").
 TEST(SceneRun, FailuresNameTheirRule) {
+  // The refused run creates and destroys a Vulkan instance; a device the program keeps
+  // (vk_test_util.h) keeps lavapipe loaded, so LeakSanitizer can still name the driver's
+  // lifetime allocations (tests/lsan.supp) instead of an "<unknown module>".
+  (void)vulkan::test::program_device({});
   SceneRunOptions o;
   ir::Result<BackendChoice> vk = parse_backends("vulkan", {"cpu", "vulkan", "analytic"});
   ASSERT_TRUE(vk) << vk.message();
