@@ -105,6 +105,66 @@ void open_if(Ctx& c, std::vector<Block>& stack, const ir::Instruction& ins, bool
   stack.push_back({Opcode::If, &ins, false, dynamic});
 }
 
+// loop / rep: its nesting depth (1 in vs_2_0, the caps' static depth later) and counter.
+void open_loop(Ctx& c, std::vector<Block>& stack, const ir::Instruction& ins, bool later) {
+  int depth = 1;
+  for (const Block& b : stack) depth += b.op != Opcode::If;
+  const int allowed = later ? c.caps.static_depth : 1;
+  if (depth > allowed)
+    c.error(ins.loc, "flow",
+            fmt::format("{} allows loop/rep nesting depth {}; this {} is at depth {}", c.pname(),
+                        allowed, mnemonic(ins), depth));
+  check_counter(c, ins);
+  stack.push_back({ins.op, &ins});
+}
+
+// endif / endloop / endrep closes the innermost block, which must be of its kind.
+void close_block(Ctx& c, std::vector<Block>& stack, const ir::Instruction& ins) {
+  const Opcode want = ins.op == Opcode::EndIf     ? Opcode::If
+                      : ins.op == Opcode::EndLoop ? Opcode::Loop
+                                                  : Opcode::Rep;
+  if (!stack.empty() && stack.back().op == want) {
+    stack.pop_back();
+    return;
+  }
+  const std::string open =
+      stack.empty() ? std::string("no block is open")
+                    : fmt::format("the innermost open block is {} at line {}",
+                                  mnemonic(*stack.back().open), stack.back().open->loc.line);
+  c.error(ins.loc, "flow", fmt::format("{} does not match: {}", mnemonic(ins), open));
+}
+
+// A label starts a subroutine: right after a ret, outside every block, defined once.
+void check_label(Ctx& c, size_t i, const std::vector<Block>& stack,
+                 std::map<uint32_t, size_t>& labels) {
+  const auto& code = c.prog.code;
+  const ir::Instruction& ins = code[i];
+  if (i == 0 || code[i - 1].op != Opcode::Ret)
+    c.error(ins.loc, "flow", "label must directly follow a ret");
+  if (!stack.empty()) c.error(ins.loc, "flow", "label inside an open if/loop/rep block");
+  if (!ins.src.empty() && ins.src[0].file == RegFile::Label &&
+      !labels.insert({ins.src[0].index, i}).second)
+    c.error(ins.src[0].loc, "flow", fmt::format("label l{} is defined twice", ins.src[0].index));
+}
+
+// Every call names a defined label; vs_2_0 calls forward only.
+void check_call_targets(Ctx& c, const std::vector<size_t>& calls,
+                        const std::map<uint32_t, size_t>& labels, bool later) {
+  const auto& code = c.prog.code;
+  for (size_t i : calls) {
+    const ir::Instruction& call = code[i];
+    if (call.src.empty() || call.src[0].file != RegFile::Label) continue;
+    auto it = labels.find(call.src[0].index);
+    if (it == labels.end())
+      c.error(call.src[0].loc, "flow", fmt::format("label l{} is not defined", call.src[0].index));
+    else if (it->second < i && !later)
+      c.error(call.src[0].loc, "flow",
+              fmt::format("vs_2_0 only allows forward calls: label l{} is at line {}, before "
+                          "this call",
+                          call.src[0].index, code[it->second].loc.line));
+  }
+}
+
 } // namespace
 
 void check_flow(Ctx& c) {
@@ -154,18 +214,7 @@ void check_flow(Ctx& c) {
       open_if(c, stack, ins, !ins.src.empty() && ins.src[0].file == RegFile::Predicate);
       break;
     case Opcode::Loop:
-    case Opcode::Rep: {
-      int depth = 1;
-      for (const Block& b : stack) depth += b.op != Opcode::If;
-      const int allowed = later ? c.caps.static_depth : 1;
-      if (depth > allowed)
-        c.error(ins.loc, "flow",
-                fmt::format("{} allows loop/rep nesting depth {}; this {} is at depth {}",
-                            c.pname(), allowed, mnemonic(ins), depth));
-      check_counter(c, ins);
-      stack.push_back({ins.op, &ins});
-      break;
-    }
+    case Opcode::Rep: open_loop(c, stack, ins, later); break;
     case Opcode::Else:
       if (stack.empty() || stack.back().op != Opcode::If || stack.back().has_else)
         c.error(ins.loc, "flow", "else without a matching if");
@@ -174,21 +223,7 @@ void check_flow(Ctx& c) {
       break;
     case Opcode::EndIf:
     case Opcode::EndLoop:
-    case Opcode::EndRep: {
-      Opcode want = ins.op == Opcode::EndIf     ? Opcode::If
-                    : ins.op == Opcode::EndLoop ? Opcode::Loop
-                                                : Opcode::Rep;
-      if (stack.empty() || stack.back().op != want) {
-        std::string open =
-            stack.empty() ? std::string("no block is open")
-                          : fmt::format("the innermost open block is {} at line {}",
-                                        mnemonic(*stack.back().open), stack.back().open->loc.line);
-        c.error(ins.loc, "flow", fmt::format("{} does not match: {}", mnemonic(ins), open));
-      } else {
-        stack.pop_back();
-      }
-      break;
-    }
+    case Opcode::EndRep: close_block(c, stack, ins); break;
     case Opcode::Call:
     case Opcode::CallNz:
       if (later && c.caps.static_depth == 0)
@@ -201,13 +236,7 @@ void check_flow(Ctx& c) {
       calls.push_back(i);
       break;
     case Opcode::Label:
-      if (i == 0 || code[i - 1].op != Opcode::Ret)
-        c.error(ins.loc, "flow", "label must directly follow a ret");
-      if (!stack.empty()) c.error(ins.loc, "flow", "label inside an open if/loop/rep block");
-      if (!ins.src.empty() && ins.src[0].file == RegFile::Label &&
-          !labels.insert({ins.src[0].index, i}).second)
-        c.error(ins.src[0].loc, "flow",
-                fmt::format("label l{} is defined twice", ins.src[0].index));
+      check_label(c, i, stack, labels);
       in_sub = true;
       break;
     case Opcode::Ret:
@@ -226,18 +255,7 @@ void check_flow(Ctx& c) {
                                                : "endrep"));
   if (in_sub && code.back().op != Opcode::Ret)
     c.error(code.back().loc, "flow", "a subroutine must end with ret");
-  for (size_t i : calls) {
-    const ir::Instruction& call = code[i];
-    if (call.src.empty() || call.src[0].file != RegFile::Label) continue;
-    auto it = labels.find(call.src[0].index);
-    if (it == labels.end())
-      c.error(call.src[0].loc, "flow", fmt::format("label l{} is not defined", call.src[0].index));
-    else if (it->second < i && !later)
-      c.error(call.src[0].loc, "flow",
-              fmt::format("vs_2_0 only allows forward calls: label l{} is at line {}, before "
-                          "this call",
-                          call.src[0].index, code[it->second].loc.line));
-  }
+  check_call_targets(c, calls, labels, later);
 }
 
 } // namespace tierlift::as::detail

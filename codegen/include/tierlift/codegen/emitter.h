@@ -205,6 +205,19 @@ public:
   Id iterations_var();
   Id iterations_var_ = 0;
   FlowFrame* innermost_loop();
+  // The constructs of emit_flow, one an opening or closing instruction.
+  void branch_if_open(Id target);
+  Id bool_operand(const ir::SrcOperand& s); // b#, or !b#
+  void begin_loop(FlowFrame::Kind kind, uint32_t int_reg);
+  bool end_loop(const ir::Instruction& ins, FlowFrame::Kind kind);
+  void open_if(Id cond);
+  bool else_branch(const ir::Instruction& ins);
+  bool end_if(const ir::Instruction& ins);
+  bool leave_loop(const ir::Instruction& ins, Id cond); // cond 0: always
+  void call_if(const ir::Instruction& ins);             // callnz
+  void clear_phase_alpha();
+  void end_routine_or_block(); // ret
+  bool begin_subroutine(const ir::Instruction& ins);
 
   // ---- shader models 2.x and 3.0 (emit_predication.cpp) ----
   // x `c` y by ir::flow::compare, at width n (1: bool, 4: bvec4).
