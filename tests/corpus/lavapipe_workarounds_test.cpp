@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "skip_policy.h"
 #include "tierlift/corpus/stages.h"
 #include "tierlift/vulkan/device.h"
 #include "tierlift/vulkan/process_device.h"
@@ -21,7 +22,7 @@ vulkan::Device* lavapipe() {
 // GLSL FAbs was the emitted form (codegen SpirvArith::abs now clears the sign bit).
 TEST(LavapipeWorkarounds, AbsOfAConstantVectorHoldingNan) {
   vulkan::Device* device = lavapipe();
-  if (!device) GTEST_SKIP() << "no Vulkan device";
+  if (!device) TIERLIFT_SKIP_UNLESS_REQUIRED(::tierlift::test::kRequireVulkan, "no Vulkan device");
   StageOptions o;
   o.device = device;
   for (const char* text : {"ps_2_0\ndef c2, inf, -inf, 0x7fc00000, 0.5\nabs r7, c2\nmov oC0, r7\n",

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "loaded_listing.h"
+#include "skip_policy.h"
 #include "tierlift/corpus/stages.h"
 #include "tierlift/corpus/undefined_reads.h"
 #include "tierlift/vulkan/device.h"
@@ -101,7 +102,7 @@ mov oC0, r4
 
 TEST(UndefinedReads, DifferentialStageLeavesTheUndefinedSetsOut) {
   vulkan::Device* device = lavapipe();
-  if (!device) GTEST_SKIP() << "no Vulkan device";
+  if (!device) TIERLIFT_SKIP_UNLESS_REQUIRED(::tierlift::test::kRequireVulkan, "no Vulkan device");
   StageOptions o;
   o.device = device;
   const CaseResult r = run_listing("generated/ps_2_0/seed1/00020", "x.psh", kDivideByFoldedZero, o);
@@ -124,7 +125,7 @@ TEST(UndefinedReads, DifferentialStageLeavesTheUndefinedSetsOut) {
 // (its polynomial) do not agree on; Direct3D 9 defines sincos on [−π, π] only.
 TEST(UndefinedReads, DifferentialStageLeavesSincosOutOfRangeOut) {
   vulkan::Device* device = lavapipe();
-  if (!device) GTEST_SKIP() << "no Vulkan device";
+  if (!device) TIERLIFT_SKIP_UNLESS_REQUIRED(::tierlift::test::kRequireVulkan, "no Vulkan device");
   StageOptions o;
   o.device = device;
   o.seed = 3;

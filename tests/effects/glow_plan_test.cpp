@@ -175,7 +175,8 @@ TEST(GlowPlanDx8, BlurConstantsFollowTheArticlesRule) {
     EXPECT_FLOAT_EQ(h1.vs_constants.f[k][0], hu1[k]) << k;
     EXPECT_FLOAT_EQ(v0.vs_constants.f[k][0], 0.5f / 23) << k;
     EXPECT_FLOAT_EQ(v0.vs_constants.f[k][1], hu0[k] * 23 / 14) << k;
-    // Listing 4: c_k = the tap's weight in every channel (0 for padding).
+    // Listing 4: c_k = the tap's weight in every channel (0 for padding). The plan stores
+    // each weight as a float: |fl32(x) − x| ≤ 2⁻²⁴·x ≤ 6e-8 for x ≤ 1, inside 1e-7.
     for (int c = 0; c < 4; ++c) {
       EXPECT_NEAR(h0.ps_constants.f[k][c], w0[k] / kNorm, 1e-7) << k;
       EXPECT_NEAR(h1.ps_constants.f[k][c], w1[k] / kNorm, 1e-7) << k;
