@@ -136,18 +136,28 @@ TEST(LaterProfiles, Ps2xCapsPresets) {
       << errors_b;
 }
 
+// The diagnostics of `text` validated as ps_2_x under the caps of fxc's target `preset`.
+ir::DiagnosticSink validate_ps2x_under(const std::string& text, const char* preset, bool& ok) {
+  ir::DiagnosticSink diags;
+  auto parsed = tierlift::as::parse_text(text, "t.asm");
+  EXPECT_TRUE(parsed.program.has_value());
+  ok = false;
+  if (!parsed.program) return diags;
+  tierlift::as::ValidateOptions o;
+  o.caps = ir::caps_preset(preset)->second;
+  ok = tierlift::as::validate(*parsed.program, ir::Profile::ps_2_x, diags, o);
+  return diags;
+}
+
 // ps_2_a has no flow control (the D3DX reference lists none among its capabilities): rep and
 // if_comp are refused under it, and taken under the default 2.x caps.
 TEST(LaterProfiles, Ps2aHasNoFlowControl) {
   const std::string text = "ps_2_x\ndefi i0, 2, 0, 0, 0\nmov r0, c0\nrep i0\nadd r0, r0, c1\n"
                            "endrep\nif_gt r0.x, c2.x\nmov r0, c3\nendif\nmov oC0, r0\n";
   EXPECT_TRUE(is_clean(text));
-  auto parsed = tierlift::as::parse_text(text, "t.asm");
-  ASSERT_TRUE(parsed.program.has_value());
-  tierlift::as::ValidateOptions o;
-  o.caps = ir::caps_preset("ps_2_a")->second;
-  ir::DiagnosticSink diags;
-  EXPECT_FALSE(tierlift::as::validate(*parsed.program, ir::Profile::ps_2_x, diags, o));
+  bool ok = true;
+  const ir::DiagnosticSink diags = validate_ps2x_under(text, "ps_2_a", ok);
+  EXPECT_FALSE(ok);
   std::string lines;
   for (const ir::Diagnostic& d : diags.all())
     if (d.severity == ir::Severity::Error)
@@ -159,12 +169,9 @@ TEST(LaterProfiles, Ps2aHasNoFlowControl) {
 TEST(LaterProfiles, Ps2xTempsFollowTheCaps) {
   const std::string text = "ps_2_x\nmov r22, c0\nmov oC0, r22\n";
   EXPECT_TRUE(is_clean(text));
-  auto parsed = tierlift::as::parse_text(text, "t.asm");
-  ASSERT_TRUE(parsed.program.has_value());
-  tierlift::as::ValidateOptions o;
-  o.caps = ir::caps_preset("ps_2_a")->second;
-  ir::DiagnosticSink diags;
-  EXPECT_FALSE(tierlift::as::validate(*parsed.program, ir::Profile::ps_2_x, diags, o));
+  bool ok = true;
+  const ir::DiagnosticSink diags = validate_ps2x_under(text, "ps_2_a", ok);
+  EXPECT_FALSE(ok);
   ASSERT_FALSE(diags.all().empty());
   EXPECT_EQ(diags.all()[0].rule, "register-range");
   EXPECT_EQ(diags.all()[0].loc.line, 2u);

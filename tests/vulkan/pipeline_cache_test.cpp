@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <vector>
 
 #include "resident_fixture.h"
@@ -59,6 +60,22 @@ protected:
       for (const auto& e : fs::directory_iterator(dir / "tierlift")) out.push_back(e.path());
     return out;
   }
+  // A device of the test's own device, one draw, the cache saved: the one file it wrote.
+  // `d` stays empty when create_device skipped or failed.
+  std::optional<fs::path> draw_and_save(std::unique_ptr<Device>& d) {
+    create_device(d);
+    if (!d) return std::nullopt;
+    draw_once(*d);
+    d->save_pipeline_cache();
+    const std::vector<fs::path> saved_files = files();
+    EXPECT_EQ(saved_files.size(), 1u);
+    if (saved_files.size() != 1) return std::nullopt;
+    return saved_files[0];
+  }
+  static std::string contents(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  }
   // A device of the test's own (the cache belongs to the device), its driver kept loaded so
   // that the driver's lifetime allocations stay attributable (lsan.supp). As for the shared
   // devices, only a machine without any Vulkan device may skip, and not under
@@ -80,15 +97,10 @@ protected:
 
 TEST_F(PipelineCacheFile, SavedWithTheSpecsHeader) {
   std::unique_ptr<Device> d;
-  create_device(d);
-  if (!d) return; // skipped or failed in create_device
-  draw_once(*d);
-  d->save_pipeline_cache();
-  const std::vector<fs::path> saved_files = files();
-  ASSERT_EQ(saved_files.size(), 1u);
-  EXPECT_EQ(saved_files[0].extension(), ".bin");
-  std::ifstream in(saved_files[0], std::ios::binary);
-  std::vector<char> data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::optional<fs::path> saved_file = draw_and_save(d);
+  if (!saved_file) return; // skipped, or failed above
+  EXPECT_EQ(saved_file->extension(), ".bin");
+  const std::string data = contents(*saved_file);
   ASSERT_GE(data.size(), 32u);
   uint32_t header_size = 0, version = 0;
   std::memcpy(&header_size, data.data(), 4);
@@ -107,21 +119,13 @@ TEST_F(PipelineCacheFile, SavedWithTheSpecsHeader) {
 // every run.
 TEST_F(PipelineCacheFile, UnchangedDataIsNotWrittenAgain) {
   std::unique_ptr<Device> d;
-  create_device(d);
-  if (!d) return; // skipped or failed in create_device
-  draw_once(*d);
-  d->save_pipeline_cache();
-  const std::vector<fs::path> saved_files = files();
-  ASSERT_EQ(saved_files.size(), 1u);
-  std::ifstream in(saved_files[0], std::ios::binary);
-  const std::vector<char> first((std::istreambuf_iterator<char>(in)),
-                                std::istreambuf_iterator<char>());
-  in.close();
-  std::ofstream(saved_files[0], std::ios::binary | std::ios::trunc) << "marker";
+  const std::optional<fs::path> saved_file = draw_and_save(d);
+  if (!saved_file) return; // skipped, or failed above
+  const std::string first = contents(*saved_file);
+  std::ofstream(*saved_file, std::ios::binary | std::ios::trunc) << "marker";
   draw_once(*d); // a new pipeline: the cache is dirty again
   d->save_pipeline_cache();
-  std::ifstream again(saved_files[0], std::ios::binary);
-  const std::string now((std::istreambuf_iterator<char>(again)), std::istreambuf_iterator<char>());
+  const std::string now = contents(*saved_file);
   if (first.size() == 32) // lavapipe: the header only, the same bytes as before
     EXPECT_EQ(now, "marker");
   else // a driver whose cache grew writes the new data
