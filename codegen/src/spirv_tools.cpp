@@ -1,4 +1,7 @@
 // SPIRV-Tools in-process: validation (Vulkan 1.1 rules), disassembly and optimisation.
+#include <map>
+#include <mutex>
+
 #include <spirv-tools/libspirv.hpp>
 #include <spirv-tools/optimizer.hpp>
 
@@ -20,14 +23,53 @@ struct MessageCollector {
   }
 };
 
+// Modules spirv-val passed, by a hash of their words (each compared whole before it counts):
+// validation depends on the words alone, and the same module comes back often (the
+// pass-through stage of every `tierlift test` case, a reduced program tried again). Bounded:
+// emptied when full.
+class ValidModules {
+public:
+  bool contains(const std::vector<uint32_t>& words) {
+    std::lock_guard lock(mutex_);
+    auto [first, last] = modules_.equal_range(hash(words));
+    for (auto it = first; it != last; ++it)
+      if (it->second == words) return true;
+    return false;
+  }
+  void add(const std::vector<uint32_t>& words) {
+    std::lock_guard lock(mutex_);
+    if (modules_.size() >= kMaxModules) modules_.clear();
+    modules_.emplace(hash(words), words);
+  }
+
+private:
+  static constexpr size_t kMaxModules = 64;
+  static uint64_t hash(const std::vector<uint32_t>& words) {
+    uint64_t h = 0xcbf29ce484222325ull; // FNV-1a over the words
+    for (uint32_t w : words) h = (h ^ w) * 0x100000001b3ull;
+    return h;
+  }
+  std::mutex mutex_;
+  std::multimap<uint64_t, std::vector<uint32_t>> modules_;
+};
+
+ValidModules& valid_modules() {
+  static ValidModules modules;
+  return modules;
+}
+
 } // namespace
 
 ir::Status validate(const std::vector<uint32_t>& words) {
+  if (valid_modules().contains(words)) return ir::ok_status();
   spvtools::SpirvTools tools(kEnv);
   MessageCollector messages;
   tools.SetMessageConsumer(messages.consumer());
   spvtools::ValidatorOptions options;
-  if (tools.Validate(words.data(), words.size(), options)) return ir::ok_status();
+  if (tools.Validate(words.data(), words.size(), options)) {
+    valid_modules().add(words);
+    return ir::ok_status();
+  }
   return ir::fail("spirv-val", "spirv", messages.text.empty() ? "spirv-val failed" : messages.text);
 }
 

@@ -116,8 +116,11 @@ ir::Program with_quad_position(const ir::Program& p) {
   return q;
 }
 
-pass::RunRequest request(const ir::Program& program, const StageOptions& o, Rng& rng,
-                         unsigned set) {
+// `drawn`: the program as every set draws it (one object, so the Vulkan device compiles it
+// once: effects::VulkanPassOptions::reuse_programs).
+pass::RunRequest request(const ir::Program& program,
+                         const std::shared_ptr<const ir::Program>& drawn, const StageOptions& o,
+                         Rng& rng, unsigned set) {
   pass::RunRequest r;
   const ir::ProfileLimits& lim = ir::limits(program.profile);
   r.width = r.height = o.size;
@@ -135,7 +138,7 @@ pass::RunRequest request(const ir::Program& program, const StageOptions& o, Rng&
     r.constants.push_back(
         {pass::StageMask::Both, ir::RegFile::ConstBool, i, {}, {}, rng.below(2) == 1});
   if (program.stage() == ir::ShaderStage::Vertex) {
-    r.vs = std::make_shared<const ir::Program>(with_quad_position(program));
+    r.vs = drawn;
     const uint32_t position = pass::position_input(program);
     const std::vector<uint32_t> uv = pass::texcoord_inputs(program);
     for (uint32_t v = 0; v < lim.inputs; ++v) {
@@ -144,7 +147,7 @@ pass::RunRequest request(const ir::Program& program, const StageOptions& o, Rng&
       r.attrs.push_back({ir::RegFile::Input, v, vec(rng, set), is_uv});
     }
   } else {
-    r.ps = std::make_shared<const ir::Program>(program);
+    r.ps = drawn;
     // ps_3_0 reads its v# by semantic (ir/sm3_interface.h): color0-1 are the colour inputs,
     // texcoord0-7 the coordinates, as in ps_2_0.
     const bool sm3 = ir::is_sm3(program.profile);
@@ -185,9 +188,14 @@ StageResult differential_run(const ir::Program& program, const std::string& id,
   StageResult s{std::string(kStageDiff), Verdict::Pass, {}, 0};
   Rng rng{o.seed ^ fnv1a64(id)};
   effects::CpuPassDevice cpu(1);
-  std::unique_ptr<effects::PassDevice> vk = effects::make_vulkan_pass_device(*o.device);
+  // One compile and one pipeline for all K sets: their constants go through the uniform
+  // block (the images are those a pipeline per set would draw).
+  std::unique_ptr<effects::PassDevice> vk =
+      effects::make_vulkan_pass_device(*o.device, {.reuse_programs = true});
+  const auto drawn = std::make_shared<const ir::Program>(
+      program.stage() == ir::ShaderStage::Vertex ? with_quad_position(program) : program);
   for (unsigned set = 0; set < o.input_sets; ++set) {
-    const pass::RunRequest req = request(program, o, rng, set);
+    const pass::RunRequest req = request(program, drawn, o, rng, set);
     ir::Result<pass::Pass> made = pass::prepare_pass(req);
     ir::Result<effects::EffectGraph> graph =
         made ? effects::single_pass_graph(*made, req.width, req.height, req.format)

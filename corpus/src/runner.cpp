@@ -33,6 +33,11 @@ struct Worker {
   Clock::time_point started;
 };
 
+const std::vector<std::string>& workers_environment() {
+  static const std::vector<std::string> env = worker_environment(environ);
+  return env;
+}
+
 bool spawn(Worker& w, const std::vector<std::string>& argv, int log_fd) {
   int in[2], out[2];
   if (::pipe2(in, O_CLOEXEC) != 0) return false;
@@ -44,12 +49,15 @@ bool spawn(Worker& w, const std::vector<std::string>& argv, int log_fd) {
   std::vector<char*> args;
   for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
+  std::vector<char*> env;
+  for (const std::string& e : workers_environment()) env.push_back(const_cast<char*>(e.c_str()));
+  env.push_back(nullptr);
   const pid_t pid = ::fork();
   if (pid == 0) {
     ::dup2(in[0], 0);
     ::dup2(out[1], 1);
     if (log_fd >= 0) ::dup2(log_fd, 2);
-    ::execv(args[0], args.data());
+    ::execve(args[0], args.data(), env.data());
     ::_exit(127);
   }
   ::close(in[0]);
@@ -301,6 +309,17 @@ ir::Result<std::vector<CaseResult>> run_corpus(const std::vector<Case>& cases,
   if (ir::Status s = write_reports(options.out_dir, results, options.expectations); !s)
     return s.failure();
   return results;
+}
+
+std::vector<std::string> worker_environment(char* const* parent) {
+  std::vector<std::string> out;
+  bool chosen = false;
+  for (char* const* e = parent; e && *e; ++e) {
+    out.emplace_back(*e);
+    chosen = chosen || out.back().starts_with("LP_NUM_THREADS=");
+  }
+  if (!chosen) out.emplace_back("LP_NUM_THREADS=0");
+  return out;
 }
 
 } // namespace tierlift::corpus

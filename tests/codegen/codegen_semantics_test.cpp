@@ -257,6 +257,19 @@ TEST(CodegenSemantics, ValidatorRejectsBrokenWords) {
   EXPECT_FALSE(dis.message().empty());
 }
 
+// validate() remembers the modules it passed: a module one word away from one it passed
+// is still validated (and refused), not taken for it.
+TEST(CodegenSemantics, ValidatorRemembersOnlyTheModulesItPassed) {
+  const std::optional<codegen::ShaderModule> m = build("ps_2_0\nmov oC0, c0\n");
+  ASSERT_TRUE(m);
+  EXPECT_TRUE(codegen::validate(m->words));
+  EXPECT_TRUE(codegen::validate(m->words)); // again: the same answer
+  std::vector<uint32_t> broken = m->words;
+  broken[3] = 1; // the id bound below every id the module uses
+  EXPECT_FALSE(codegen::validate(broken));
+  EXPECT_FALSE(codegen::validate(broken)); // a refusal is not remembered as a pass
+}
+
 TEST(CodegenSemantics, BrokenFlowIsADiagnosticNotACrash) {
   ir::Program p;
   p.profile = ir::Profile::vs_2_0;

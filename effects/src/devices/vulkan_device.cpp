@@ -21,7 +21,10 @@ namespace {
 
 class VulkanPassDevice final : public PassDevice {
 public:
-  explicit VulkanPassDevice(vulkan::Device& device) : device_(device), textures_(device) {}
+  VulkanPassDevice(vulkan::Device& device, bool reuse_programs)
+      : device_(device), textures_(device) {
+    textures_.set_reuse_programs(reuse_programs);
+  }
   std::string name() const override { return "vulkan"; }
 
   ir::Status begin_run(const EffectGraph& graph, const ImageMap& inputs) override {
@@ -132,7 +135,12 @@ private:
 } // namespace
 
 std::unique_ptr<PassDevice> make_vulkan_pass_device(vulkan::Device& device) {
-  return std::make_unique<VulkanPassDevice>(device);
+  return std::make_unique<VulkanPassDevice>(device, false);
+}
+
+std::unique_ptr<PassDevice> make_vulkan_pass_device(vulkan::Device& device,
+                                                    const VulkanPassOptions& options) {
+  return std::make_unique<VulkanPassDevice>(device, options.reuse_programs);
 }
 
 } // namespace tierlift::effects

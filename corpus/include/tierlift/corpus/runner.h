@@ -53,6 +53,14 @@ ir::Result<std::vector<CaseResult>> run_corpus(const std::vector<Case>& cases,
 using Reducer =
     std::function<std::string(const std::string&, const std::function<bool(const std::string&)>&)>;
 
+// The environment a worker starts with: `parent` (a null-terminated list of NAME=VALUE), with
+// lavapipe's rasteriser threads off (LP_NUM_THREADS=0: a draw is rasterised on the thread
+// that submits it) unless `parent` sets LP_NUM_THREADS. The workers are the parallelism, one
+// per core; a case's target is one small tile, so rasteriser threads would only add a
+// hand-over and a wake-up per draw, and where there is one core per worker they take time
+// from the other worker.
+std::vector<std::string> worker_environment(char* const* parent);
+
 // The worker's loop: cases from `in`, results to `out`, until end of input. The device is
 // made by `make_device` on the first case that reaches the draw (null: the draw is skipped).
 // Test hooks (environment): TIERLIFT_TEST_CRASH_ON / TIERLIFT_TEST_HANG_ON, a substring of an

@@ -102,4 +102,14 @@ private:
 // Wraps a device the caller owns (and keeps alive). tierlift_vulkan is always built.
 std::unique_ptr<PassDevice> make_vulkan_pass_device(vulkan::Device& device);
 
+struct VulkanPassOptions {
+  // vulkan::TextureSet::set_reuse_programs for every run of the device: one compile and one
+  // pipeline per program, whatever constants the runs bind (the images do not change). For a
+  // caller that draws one program on many sets of constants; the glow leaves it off (its
+  // modules are specialised for the constants each pass binds).
+  bool reuse_programs = false;
+};
+std::unique_ptr<PassDevice> make_vulkan_pass_device(vulkan::Device& device,
+                                                    const VulkanPassOptions& options);
+
 } // namespace tierlift::effects

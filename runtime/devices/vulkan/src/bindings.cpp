@@ -97,22 +97,12 @@ ir::Status add_trace_buffer(Device::Impl& d, Cleanup& cleanup, const codegen::Co
 
 // The descriptor set layout, the pipeline layout over it, a pool and the set.
 ir::Status create_set(Device::Impl& d, Cleanup& cleanup, const Resources& res, Bindings& out) {
-  VkDescriptorSetLayoutCreateInfo dli{};
-  dli.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
-  dli.bindingCount = static_cast<uint32_t>(res.layout.size());
-  dli.pBindings = res.layout.data();
   VkDescriptorSetLayout dsl = VK_NULL_HANDLE;
-  VkResult r = vkCreateDescriptorSetLayout(d.device, &dli, nullptr, &dsl);
-  if (r != VK_SUCCESS) return binding_failure(vk_error("vkCreateDescriptorSetLayout", r));
+  if (std::string err = create_pipeline_layout(d, cleanup, res.layout, out.layout, &dsl);
+      !err.empty())
+    return binding_failure(std::move(err));
   VkDevice dev = d.device;
-  cleanup.destroy_later(dev, dsl, vkDestroyDescriptorSetLayout);
-  VkPipelineLayoutCreateInfo pli{};
-  pli.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
-  pli.setLayoutCount = 1;
-  pli.pSetLayouts = &dsl;
-  if ((r = vkCreatePipelineLayout(dev, &pli, nullptr, &out.layout)) != VK_SUCCESS)
-    return binding_failure(vk_error("vkCreatePipelineLayout", r));
-  cleanup.destroy_later(dev, out.layout, vkDestroyPipelineLayout);
+  VkResult r = VK_SUCCESS;
   VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2},
                                    {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 16},
                                    {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}};
@@ -170,6 +160,28 @@ void write_set(Device::Impl& d, const codegen::CompiledPair& pair, const Resourc
 
 } // namespace
 
+std::string create_pipeline_layout(Device::Impl& d, Cleanup& cleanup,
+                                   const std::vector<VkDescriptorSetLayoutBinding>& bindings,
+                                   VkPipelineLayout& out, VkDescriptorSetLayout* set_layout) {
+  VkDescriptorSetLayoutCreateInfo dli{};
+  dli.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
+  dli.bindingCount = static_cast<uint32_t>(bindings.size());
+  dli.pBindings = bindings.data();
+  VkDescriptorSetLayout dsl = VK_NULL_HANDLE;
+  VkResult r = vkCreateDescriptorSetLayout(d.device, &dli, nullptr, &dsl);
+  if (r != VK_SUCCESS) return vk_error("vkCreateDescriptorSetLayout", r);
+  cleanup.destroy_later(d.device, dsl, vkDestroyDescriptorSetLayout);
+  VkPipelineLayoutCreateInfo pli{};
+  pli.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
+  pli.setLayoutCount = 1;
+  pli.pSetLayouts = &dsl;
+  if ((r = vkCreatePipelineLayout(d.device, &pli, nullptr, &out)) != VK_SUCCESS)
+    return vk_error("vkCreatePipelineLayout", r);
+  cleanup.destroy_later(d.device, out, vkDestroyPipelineLayout);
+  if (set_layout) *set_layout = dsl;
+  return {};
+}
+
 ir::Status create_bindings(Device::Impl& d, Cleanup& cleanup, const codegen::CompiledPair& pair,
                            const pass::Pass& pass, const SampledImages& images, Bindings& out) {
   Resources res; // descriptor bindings: uniform blocks, then combined image samplers
@@ -178,6 +190,7 @@ ir::Status create_bindings(Device::Impl& d, Cleanup& cleanup, const codegen::Com
   if (ir::Status s = add_trace_buffer(d, cleanup, pair, res, out); !s) return s;
   if (ir::Status s = create_set(d, cleanup, res, out); !s) return s;
   write_set(d, pair, res, out);
+  out.layout_bindings = std::move(res.layout);
   return ir::ok_status();
 }
 

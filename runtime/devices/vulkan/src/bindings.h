@@ -21,7 +21,17 @@ struct Bindings {
   VkPipelineLayout layout = VK_NULL_HANDLE;
   VkDescriptorSet set = VK_NULL_HANDLE;
   Buffer trace; // pair.ps.trace: the storage buffer it records into, zeroed
+  // What the set layout was made from (a pipeline made with another layout from the same
+  // bindings is compatible with this one: program_reuse.h).
+  std::vector<VkDescriptorSetLayoutBinding> layout_bindings;
 };
+
+// A descriptor set layout of `bindings` and the pipeline layout over it (set 0), both
+// registered with `cleanup`; `set_layout` (if given) receives the former. Empty on success.
+std::string create_pipeline_layout(Device::Impl& d, Cleanup& cleanup,
+                                   const std::vector<VkDescriptorSetLayoutBinding>& bindings,
+                                   VkPipelineLayout& out,
+                                   VkDescriptorSetLayout* set_layout = nullptr);
 
 // Every object is registered with `cleanup`; a failure is one error of rule kDrawRule.
 // Samplers come from pass.textures[stage].sampler, images from `images`.

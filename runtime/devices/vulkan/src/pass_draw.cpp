@@ -11,6 +11,7 @@
 
 #include "bindings.h"
 #include "pipeline.h"
+#include "program_reuse.h"
 #include "synthetic_programs.h"
 #include "tierlift/ir/device_pipeline.h"
 
@@ -210,15 +211,20 @@ std::string compile_programs(const Device::Impl& d, const pass::Pass& pass,
   // the code generator's pruning drops the texture reads and varyings that only fed them.
   // The draw is prepared (and cached, draw_cache.h) for these constants. Not for a GLSL pass:
   // its own SPIR-V needs the interface of the whole twin.
-  if (!pass.pixel_spirv) { // the device pipeline (ir/device_pipeline.h); the emitter prunes
+  // Reused programs (program_reuse.h) serve every set of constants: not specialised.
+  const bool for_these_constants = !textures.reuse || textures.trace;
+  if (!pass.pixel_spirv && for_these_constants) { // the device pipeline (ir/device_pipeline.h);
+    // the emitter prunes
     auto p = ir::prepare_for_device(*ps_prog, pass.ps_constants.f, {.drop_dead = false});
     if (!p) return p.message();
     if (p->specialised) ps_prog = std::make_shared<const ir::Program>(std::move(*p->specialised));
   }
   codegen::CodegenOptions co;
   co.conventions = pass.conventions;
-  co.known_vs_constants = pass.vs_constants.f; // the draw is cached under them
-  co.known_ps_constants = pass.ps_constants.f;
+  if (for_these_constants) {
+    co.known_vs_constants = pass.vs_constants.f; // the draw is cached under them
+    co.known_ps_constants = pass.ps_constants.f;
+  }
   co.point_sampling_floors = d.point_sampling_floors;
   if (textures.trace) {
     if (!d.fragment_stores)
@@ -232,9 +238,19 @@ std::string compile_programs(const Device::Impl& d, const pass::Pass& pass,
     co.stage_fetch_unorm8[s] = fetches_in_place(d, textures.stages[s], pass.textures[s].sampler);
     co.stage_point_clamped[s] = pass::point_clamped(pass.textures[s].sampler);
   }
-  ir::DiagnosticSink diags;
-  out = codegen::compile_pair(*vs_prog, *ps_prog, co, diags);
-  if (!out) return join_diagnostics(diags);
+  // The device's pass-through programs are new objects each time: keyed as null.
+  const std::optional<std::string> key =
+      textures.reuse && !pass.pixel_spirv
+          ? compile_key(pass.vertex_program.get(), pass.pixel_program.get(), co)
+          : std::nullopt;
+  if (key)
+    if (const codegen::CompiledPair* kept = textures.reuse->find_compiled(*key)) out = *kept;
+  if (!out) {
+    ir::DiagnosticSink diags;
+    out = codegen::compile_pair(*vs_prog, *ps_prog, co, diags);
+    if (!out) return join_diagnostics(diags);
+    if (key) textures.reuse->keep_compiled(*key, pass.vertex_program, pass.pixel_program, *out);
+  }
   if (!out->vs.samplers.empty()) return "vertex-stage texture sampling is not supported";
   return check_color_outputs(pass, out->ps);
 }
@@ -287,7 +303,9 @@ std::string upload_geometry(Device::Impl& d, const Geometry& geo, PreparedDraw& 
 // pipeline.
 std::string create_render_objects(Device::Impl& d, const pass::Pass& pass,
                                   const DrawTextures& textures, const codegen::CompiledPair& pair,
-                                  VkPipelineLayout layout, PreparedDraw& out) {
+                                  VkPipelineLayout layout,
+                                  const std::vector<VkDescriptorSetLayoutBinding>& layout_bindings,
+                                  PreparedDraw& out) {
   std::vector<VkFormat> formats;
   std::vector<const Image2D*> attachments;
   for (uint32_t i = 0; i < pass.color_targets; ++i) {
@@ -325,6 +343,11 @@ std::string create_render_objects(Device::Impl& d, const pass::Pass& pass,
   pd.render_pass = out.render_pass;
   pd.layout = layout;
   pd.vertex_stride = kVertexStride;
+  if (textures.reuse && !textures.trace)
+    return textures.reuse->pipeline(d, pd, formats,
+                                    textures.stencil ? textures.stencil->stored.image.format
+                                                     : VK_FORMAT_UNDEFINED,
+                                    layout_bindings, out.pipeline);
   return create_pipeline(d, out.objects, pd, out.pipeline);
 }
 
@@ -386,7 +409,8 @@ std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawText
   out.set = bound.set;
   out.trace = bound.trace;
   out.trace_info = pair->ps.trace;
-  if (std::string e = create_render_objects(d, pass, textures, *pair, bound.layout, out);
+  if (std::string e =
+          create_render_objects(d, pass, textures, *pair, bound.layout, bound.layout_bindings, out);
       !e.empty())
     return e;
   place_viewport(pass, *textures.target, !geo.indices.empty(), out);

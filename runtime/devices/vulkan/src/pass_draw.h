@@ -20,6 +20,8 @@
 
 namespace tierlift::vulkan {
 
+class ProgramReuse;
+
 struct DrawTextures {
   // The texture each sampler stage reads. nullptr: the pass's own host image for that stage
   // (pass.textures[s].image, uploaded as R32G32B32A32_SFLOAT for this draw only), or the
@@ -38,6 +40,9 @@ struct DrawTextures {
   // which draw_pass reads into trace_out. Such a draw is never cached.
   const codegen::TracePixel* trace = nullptr;
   ShaderTrace* trace_out = nullptr;
+  // Set (TextureSet::set_reuse_programs): the programs are compiled for any constants and
+  // the compiled modules and pipeline are found again there (program_reuse.h).
+  ProgramReuse* reuse = nullptr;
 };
 
 // Everything one draw of one pass needs, owned by `objects` (destroyed with the entry).

@@ -13,6 +13,7 @@ namespace tierlift::vulkan {
 namespace {
 // What pipeline_creation_ms (device.h) reports: every device's pipeline creations.
 std::atomic<int64_t> g_pipeline_creation_ns{0};
+std::atomic<long> g_pipeline_creations{0};
 
 VkSamplerAddressMode address_mode(pass::AddressMode m) {
   switch (m) {
@@ -282,10 +283,15 @@ std::string create_pipeline(Device::Impl& d, Cleanup& cleanup, const PipelineDes
   g_pipeline_creation_ns +=
       std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - t0)
           .count();
+  ++g_pipeline_creations;
   if (r != VK_SUCCESS) return vk_error("vkCreateGraphicsPipelines", r);
   d.pipeline_cache_dirty = true;
   cleanup.destroy_later(d.device, out, vkDestroyPipeline);
   return {};
+}
+
+long pipeline_creations() {
+  return g_pipeline_creations.load();
 }
 
 double pipeline_creation_ms() {

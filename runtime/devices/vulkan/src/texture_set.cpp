@@ -8,6 +8,7 @@
 
 #include "draw_cache.h"
 #include "pass_draw.h"
+#include "program_reuse.h"
 #include "tierlift/ir/result.h"
 
 namespace tierlift::vulkan {
@@ -20,6 +21,8 @@ struct TextureSet::State {
 
   Device::Impl& d;
   std::map<uint32_t, std::unique_ptr<Resident>> textures;
+  // set_reuse_programs: kept across clear(); destroyed after the draws that use its pipelines.
+  std::unique_ptr<ProgramReuse> reuse;
   DrawCache draws;                          // destroyed before the textures it refers to
   VkCommandBuffer pending = VK_NULL_HANDLE; // batched draws not yet submitted
   bool batching = false;
@@ -153,6 +156,7 @@ namespace {
 // The textures of a draw by id; an error names the unknown one.
 std::string resolve(TextureSet::State& s, const StageTextures& stages, const RenderTargets& targets,
                     DrawTextures& out) {
+  out.reuse = s.reuse.get();
   out.target = s.find(targets.color[0]);
   if (!out.target) return "render target: " + unknown(targets.color[0]);
   for (uint32_t i = 1; i < targets.color.size(); ++i) {
@@ -262,6 +266,17 @@ ir::Status TextureSet::set_batching(bool on) {
   std::string err = state_->flush();
   state_->batching = on;
   return status_of(std::move(err));
+}
+
+void TextureSet::set_reuse_programs(bool on) {
+  if (on == (state_->reuse != nullptr)) return;
+  (void)state_->flush();
+  state_->draws.clear(); // made the other way
+  state_->reuse = on ? std::make_unique<ProgramReuse>() : nullptr;
+}
+
+size_t TextureSet::reused_pipelines() const {
+  return state_->reuse ? state_->reuse->pipeline_count() : 0;
 }
 
 ir::Status TextureSet::flush() {

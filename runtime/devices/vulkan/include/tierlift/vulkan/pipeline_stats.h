@@ -7,5 +7,7 @@ namespace tierlift::vulkan {
 // Time spent inside vkCreateGraphicsPipelines by every device of this process so far, in
 // milliseconds.
 double pipeline_creation_ms();
+// The number of vkCreateGraphicsPipelines calls behind that time.
+long pipeline_creations();
 
 } // namespace tierlift::vulkan

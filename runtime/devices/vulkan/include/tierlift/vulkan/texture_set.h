@@ -121,6 +121,14 @@ public:
   // Batching on: draw() records; off: draw() submits and waits (flushing first). A draw's
   // DrawReport::draw_ms is then the recording time; the work is timed by flush().
   ir::Status set_batching(bool on);
+  // Program reuse on: each program pair is compiled (and validated) once for any constants,
+  // which reach it through the uniform block only (no specialisation for the constants of a
+  // draw), and one pipeline serves every draw of it, across clear() too, until the set is
+  // destroyed or reuse is turned off. For a caller that draws the same programs on many sets
+  // of constants (`tierlift test`'s differential run); the images are the same either way.
+  void set_reuse_programs(bool on);
+  // The pipelines program reuse holds (0 when it is off).
+  size_t reused_pipelines() const;
   // Submits what batched draws recorded and waits for it.
   ir::Status flush();
   // Frees one texture (unknown ids are ignored) or all of them (after a flush).
