@@ -3,6 +3,7 @@
 // processes; and the floor it is held against, measured in the same run: the time lavapipe
 // itself spends in vkCreateGraphicsPipelines for the pipelines of the same cases
 // (vulkan::pipeline_creation_ms). bench/run.sh prints the ratios.
+#include <cstdlib>
 #include <filesystem>
 #include <unistd.h>
 
@@ -29,9 +30,10 @@ const std::vector<corpus::Case>& cases() {
 }
 
 // In process: the stages alone, no worker, no pipes. The full lift also reports the floor.
-void BM_Corpus_InProcess(benchmark::State& state, bool check_only) {
+void BM_Corpus_InProcess(benchmark::State& state, bool check_only, bool per_set = false) {
   corpus::StageOptions o;
   o.check_only = check_only;
+  o.one_pipeline_per_case = !per_set;
   if (!check_only) {
     ir::Result<vulkan::Device*> d = vulkan::process_device({});
     if (!d) {
@@ -88,6 +90,12 @@ BENCHMARK_CAPTURE(BM_Corpus_InProcess, FullLift, false)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->Iterations(2);
+// The same with a module and pipeline per input set (the differential run before
+// StageOptions::one_pipeline_per_case), for the ratio in the same run.
+BENCHMARK_CAPTURE(BM_Corpus_InProcess, FullLiftPipelinePerSet, false, true)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(2);
 BENCHMARK_CAPTURE(BM_Corpus_Workers, CheckOnly, true)
     ->Arg(1)
     ->Arg(2)
@@ -100,4 +108,13 @@ BENCHMARK_CAPTURE(BM_Corpus_Workers, FullLift, false)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->Iterations(1);
-BENCHMARK_MAIN();
+// In process as in a worker (corpus::worker_environment): lavapipe rasterises on the calling
+// thread unless LP_NUM_THREADS says otherwise.
+int main(int argc, char** argv) {
+  ::setenv("LP_NUM_THREADS", "0", 0);
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -174,6 +174,7 @@ std::optional<ShaderModule> Emitter::run() {
     m.samplers.push_back(
         {kDescriptorSet, kFirstSamplerBinding + stage, stage, sampler_type(stage), fetches(stage)});
   m.spec_constants = spec_info_;
+  m.block_defs.assign(block_defs_.begin(), block_defs_.end());
   m.writes_depth = writes_depth_;
   m.uses_kill = uses_kill_;
   if (tracing())

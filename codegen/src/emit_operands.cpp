@@ -61,9 +61,22 @@ Id Emitter::load_const(uint32_t index, const std::optional<ir::RelAddr>& rel) {
     auto c = [&](int i) { return flush ? ir::numerics::flush_denormal(d.f(i)) : d.f(i); };
     return vec4_const(c(0), c(1), c(2), c(3));
   };
+  // CodegenOptions::non_finite_defs_in_block: such a def is read from its slot in the block.
+  auto in_block = [&](uint32_t slot, const ir::ConstDef& d) {
+    if (!opt.non_finite_defs_in_block || slot >= relative_limit()) return false;
+    bool non_finite = false;
+    for (int i = 0; i < 4; ++i) non_finite = non_finite || !std::isfinite(d.f(i));
+    if (non_finite)
+      block_defs_[slot] = {flush ? ir::numerics::flush_denormal(d.f(0)) : d.f(0),
+                           flush ? ir::numerics::flush_denormal(d.f(1)) : d.f(1),
+                           flush ? ir::numerics::flush_denormal(d.f(2)) : d.f(2),
+                           flush ? ir::numerics::flush_denormal(d.f(3)) : d.f(3)};
+    return non_finite;
+  };
   const Id ptr_vec4 = b.type_pointer(SC::Uniform, t_vec4);
   if (!rel) {
-    if (const ir::ConstDef* d = defs_.find(RegFile::Const, index)) return def_value(*d);
+    const ir::ConstDef* def = defs_.find(RegFile::Const, index);
+    if (def && !in_block(index, *def)) return def_value(*def);
     // Far beyond any device's constant count (bad input the validator would reject): read
     // 0 rather than declare a gigantic block, as the interpreter's missing registers do.
     if (index >= 65536) return vec4_const(0, 0, 0, 0);
@@ -71,7 +84,8 @@ Id Emitter::load_const(uint32_t index, const std::optional<ir::RelAddr>& rel) {
     // CodegenOptions::known_*_constants: the value this register will hold, if known.
     const auto& known =
         prog.stage() == ir::ShaderStage::Vertex ? opt.known_vs_constants : opt.known_ps_constants;
-    const std::array<float, 4>* k = known && index < known->size() ? &(*known)[index] : nullptr;
+    const std::array<float, 4>* k =
+        known && !def && index < known->size() ? &(*known)[index] : nullptr;
     Id value;
     if (k && replicated(*k)) {
       // x stands for all four components.
@@ -111,6 +125,7 @@ Id Emitter::load_const(uint32_t index, const std::optional<ir::RelAddr>& rel) {
       b.op(Op::OpAccessChain, ptr_vec4, {uniform_var_, b.const_uint(kMemberFloat), safe});
   Id value = b.op(Op::OpLoad, t_vec4, {chain});
   for (const auto& [k, d] : defs_.floats) {
+    if (in_block(k, d)) continue; // the block holds it at k
     const Id hit = b.op(Op::OpIEqual, t_bool, {idx, b.const_int(static_cast<int32_t>(k))});
     value = b.op(Op::OpSelect, t_vec4, {bsplat(hit), def_value(d), value});
   }

@@ -191,7 +191,7 @@ StageResult differential_run(const ir::Program& program, const std::string& id,
   // One compile and one pipeline for all K sets: their constants go through the uniform
   // block (the images are those a pipeline per set would draw).
   std::unique_ptr<effects::PassDevice> vk =
-      effects::make_vulkan_pass_device(*o.device, {.reuse_programs = true});
+      effects::make_vulkan_pass_device(*o.device, {.reuse_programs = o.one_pipeline_per_case});
   const auto drawn = std::make_shared<const ir::Program>(
       program.stage() == ir::ShaderStage::Vertex ? with_quad_position(program) : program);
   for (unsigned set = 0; set < o.input_sets; ++set) {

@@ -236,6 +236,7 @@ public:
   std::vector<InterfaceVar> interface_;
   std::vector<Id> interface_ids_;
   std::set<uint32_t> consts_read_;
+  std::map<uint32_t, std::array<float, 4>> block_defs_; // ShaderModule::block_defs
   bool const_relative_ = false;
   Id uniform_var_ = 0, uniform_block_ = 0; // created in begin_module, sized at the end
   Id spec_max_value_ = 0;

@@ -21,6 +21,10 @@ struct StageOptions {
   uint64_t seed = 1;       // of the generated inputs (with the case id: per case)
   uint32_t size = 8;       // the target is size × size pixels, RGBA32F
   bool check_only = false; // parse and validate only (no round trip, SPIR-V or draw)
+  // The Vulkan side compiles the case once for all K sets, its constants in the uniform block
+  // (effects::VulkanPassOptions::reuse_programs). false: a module and pipeline per set,
+  // specialised for its constants, as before (bench/corpus_bench.cpp measures both).
+  bool one_pipeline_per_case = true;
   // The Vulkan device of the differential run; null: the stage is skipped ("no device").
   vulkan::Device* device = nullptr;
 };

@@ -17,6 +17,9 @@ std::vector<uint32_t> pack_uniforms(const codegen::ShaderModule& module,
   };
   for (uint32_t c = 0; c < u.float_count && c < bank.f.size(); ++c)
     for (uint32_t k = 0; k < 4; ++k) put(u.float_at(c, k), std::bit_cast<uint32_t>(bank.f[c][k]));
+  for (const auto& [c, v] : module.block_defs) // a def wins over the bound constant
+    if (c < u.float_count)
+      for (uint32_t k = 0; k < 4; ++k) put(u.float_at(c, k), std::bit_cast<uint32_t>(v[k]));
   if (u.int_offset) {
     for (uint32_t n = 0; n < codegen::UniformBlockInfo::kIntRegisters; ++n)
       for (uint32_t k = 0; k < 4; ++k) put(u.int_at(n, k), static_cast<uint32_t>(bank.i[n][k]));
