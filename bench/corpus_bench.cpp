@@ -42,20 +42,23 @@ void BM_Corpus_InProcess(benchmark::State& state, bool check_only, bool per_set 
     }
     o.device = *d;
   }
-  double floor_ms = 0;
+  double floor_ms = 0, floor_cpu_ms = 0;
   long pipelines = 0;
   size_t n = 0;
   for (auto _ : state) {
     const double before = vulkan::pipeline_creation_ms();
     const long made_before = vulkan::pipeline_creations();
+    const double cpu_before = vulkan::pipeline_creation_cpu_ms();
     for (const corpus::Case& c : cases()) benchmark::DoNotOptimize(corpus::run_case(c, o));
     floor_ms += vulkan::pipeline_creation_ms() - before;
     pipelines += vulkan::pipeline_creations() - made_before;
+    floor_cpu_ms += vulkan::pipeline_creation_cpu_ms() - cpu_before;
     n += cases().size();
   }
   state.SetItemsProcessed(static_cast<int64_t>(n));
   state.counters["cases"] = static_cast<double>(cases().size());
   state.counters["floor_ms_per_case"] = n ? floor_ms / static_cast<double>(n) : 0;
+  state.counters["floor_cpu_ms_per_case"] = n ? floor_cpu_ms / static_cast<double>(n) : 0;
   state.counters["pipelines_per_case"] =
       n ? static_cast<double>(pipelines) / static_cast<double>(n) : 0;
 }

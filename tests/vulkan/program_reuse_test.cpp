@@ -25,9 +25,9 @@ TEST_F(ResidentTest, ReuseDrawsEveryConstantSetWithOnePipeline) {
       {{{1.5f, 2, -1, 0.5f}, {2, 0.25f, 3, 4}}, {3, 0.5f, -3, 2}},
       // Zero factors: +0 whatever the other one is (inf, NaN, −3: not −0).
       {{{0, 0, -0.0f, 0}, {inf, nan, -3, 5}}, {0, 0, 0, 0}},
-      // A replicated c0 (the specialisation a per-set pipeline would take): 1·−0 = −0,
-      // 1·7 = 7, 1·1e30 = 1e30, 1·−inf = −inf.
-      {{{1, 1, 1, 1}, {-0.0f, 7, 1e30f, -inf}}, {-0.0f, 7, 1e30f, -inf}},
+      // A replicated c0 (the specialisation a per-set pipeline would take): 1·−0 = +0 (a ±0
+      // factor), 1·7 = 7, 1·1e30 = 1e30, 1·−inf = −inf.
+      {{{1, 1, 1, 1}, {-0.0f, 7, 1e30f, -inf}}, {0, 7, 1e30f, -inf}},
   };
   TextureSet set(*dev);
   set.set_reuse_programs(true);

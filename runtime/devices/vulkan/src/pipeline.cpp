@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <ctime>
 
 #include <fmt/format.h>
 
@@ -14,6 +15,13 @@ namespace {
 // What pipeline_creation_ms (device.h) reports: every device's pipeline creations.
 std::atomic<int64_t> g_pipeline_creation_ns{0};
 std::atomic<long> g_pipeline_creations{0};
+std::atomic<int64_t> g_pipeline_creation_cpu_ns{0};
+
+int64_t thread_cpu_ns() {
+  timespec t{};
+  ::clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return int64_t{t.tv_sec} * 1000000000 + t.tv_nsec;
+}
 
 VkSamplerAddressMode address_mode(pass::AddressMode m) {
   switch (m) {
@@ -279,15 +287,21 @@ std::string create_pipeline(Device::Impl& d, Cleanup& cleanup, const PipelineDes
   ci.layout = desc.layout;
   ci.renderPass = desc.render_pass;
   const auto t0 = std::chrono::steady_clock::now();
+  const int64_t cpu0 = thread_cpu_ns();
   VkResult r = vkCreateGraphicsPipelines(d.device, pipeline_cache(d), 1, &ci, nullptr, &out);
   g_pipeline_creation_ns +=
       std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - t0)
           .count();
   ++g_pipeline_creations;
+  g_pipeline_creation_cpu_ns += thread_cpu_ns() - cpu0;
   if (r != VK_SUCCESS) return vk_error("vkCreateGraphicsPipelines", r);
   d.pipeline_cache_dirty = true;
   cleanup.destroy_later(d.device, out, vkDestroyPipeline);
   return {};
+}
+
+double pipeline_creation_cpu_ms() {
+  return static_cast<double>(g_pipeline_creation_cpu_ns.load()) / 1e6;
 }
 
 long pipeline_creations() {

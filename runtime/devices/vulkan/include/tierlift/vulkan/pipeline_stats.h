@@ -7,6 +7,9 @@ namespace tierlift::vulkan {
 // Time spent inside vkCreateGraphicsPipelines by every device of this process so far, in
 // milliseconds.
 double pipeline_creation_ms();
+// The same in CPU time of the calling threads (lavapipe compiles on the calling thread): the
+// figure a machine shared with other work changes least.
+double pipeline_creation_cpu_ms();
 // The number of vkCreateGraphicsPipelines calls behind that time.
 long pipeline_creations();
 
