@@ -212,9 +212,9 @@ std::string compile_programs(const Device::Impl& d, const pass::Pass& pass,
   // The draw is prepared (and cached, draw_cache.h) for these constants. Not for a GLSL pass:
   // its own SPIR-V needs the interface of the whole twin.
   // Reused programs (program_reuse.h) serve every set of constants: not specialised.
+  // Otherwise the device pipeline (ir/device_pipeline.h); the emitter prunes.
   const bool for_these_constants = !textures.reuse || textures.trace;
-  if (!pass.pixel_spirv && for_these_constants) { // the device pipeline (ir/device_pipeline.h);
-    // the emitter prunes
+  if (!pass.pixel_spirv && for_these_constants) {
     auto p = ir::prepare_for_device(*ps_prog, pass.ps_constants.f, {.drop_dead = false});
     if (!p) return p.message();
     if (p->specialised) ps_prog = std::make_shared<const ir::Program>(std::move(*p->specialised));
