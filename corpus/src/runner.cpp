@@ -33,11 +33,6 @@ struct Worker {
   Clock::time_point started;
 };
 
-const std::vector<std::string>& workers_environment() {
-  static const std::vector<std::string> env = worker_environment(environ);
-  return env;
-}
-
 bool spawn(Worker& w, const std::vector<std::string>& argv, int log_fd) {
   int in[2], out[2];
   if (::pipe2(in, O_CLOEXEC) != 0) return false;
@@ -49,8 +44,10 @@ bool spawn(Worker& w, const std::vector<std::string>& argv, int log_fd) {
   std::vector<char*> args;
   for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
+  // Taken at each start: a caller may change its environment between runs.
+  const std::vector<std::string> environment = worker_environment(environ);
   std::vector<char*> env;
-  for (const std::string& e : workers_environment()) env.push_back(const_cast<char*>(e.c_str()));
+  for (const std::string& e : environment) env.push_back(const_cast<char*>(e.c_str()));
   env.push_back(nullptr);
   const pid_t pid = ::fork();
   if (pid == 0) {
