@@ -245,6 +245,7 @@ Prepared prepare(const ir::Program& program, const ir::Conventions& conv) {
     const ir::OpInfo& info = ir::op_info(ins.op);
     s.nsrc = static_cast<uint8_t>(std::min<size_t>(ins.src.size(), 4));
     for (int k = 0; k < s.nsrc; ++k) s.src[k] = decode_src(ins.src[k], p);
+    s.gradient = ins.op == Opcode::Dsx || ins.op == Opcode::Dsy;
     const auto comparison = ir::flow::comparison_of(ins.op);
     switch (info.cls) {
     case OpClass::Arith:

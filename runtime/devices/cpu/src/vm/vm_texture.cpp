@@ -47,7 +47,9 @@ Vec4 splat(float x) {
 
 void discard(Invocation& inv) {
   if (inv.pout) inv.pout->discarded = true;
-  inv.stop = true; // nothing a discarded pixel computes afterwards is visible
+  // Nothing a discarded pixel computes afterwards is visible, except in a quad: there it runs on
+  // as a helper lane, whose values its neighbours' dsx/dsy still read (NUMERICS.md rule F9).
+  if (!inv.in_quad) inv.stop = true;
 }
 
 void set_depth(Invocation& inv, float z) {
