@@ -112,9 +112,9 @@ TEST(CorpusStages, InvalidListingFailsValidateAndSkipsTheRest) {
   EXPECT_EQ(r.failed_stage(), "validate");
 }
 
-TEST(CorpusStages, ShaderModel3RunsAndExplicitGradientsAreUnsupportedNotAFailure) {
+TEST(CorpusStages, ShaderModel3RunsAndAPredicatedTexkillIsUnsupportedNotAFailure) {
   // The front end takes both; SPIR-V runs the first (the differential run follows when a
-  // device is given), not yet the explicit gradients (texldd) of the second.
+  // device is given), not yet the predicated texkill of the second.
   CaseResult r = run_listing("c", "c.psh", "ps_3_0\nmov oC0, c0\n", no_device());
   EXPECT_EQ(stage_verdict(r, kStageParse), Verdict::Pass);
   EXPECT_EQ(stage_verdict(r, kStageValidate), Verdict::Pass);

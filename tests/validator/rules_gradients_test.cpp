@@ -22,10 +22,9 @@ size_t gradient_warnings(const std::string& text) {
 const char* kHead = "ps_3_0\ndefi i0, 3, 0, 0, 0\ndefb b0, true\ndcl_texcoord0 v0\n";
 
 TEST(GradientRules, DsxInsideIfCompWarns) {
-  const std::string text = std::string(kHead) +
-                           "if_lt v0.x, c0.x\n" // line 5
-                           "  dsx r0, v0\n"     // line 6
-                           "endif\nmov oC0, r0\n";
+  const std::string text = std::string(kHead) + "if_lt v0.x, c0.x\n" // line 5
+                                                "  dsx r0, v0\n"     // line 6
+                                                "endif\nmov oC0, r0\n";
   EXPECT_TRUE(only_warns(text, "gradient-in-divergent-flow", 6, 3, {"dsx", "if_lt", "line 5"}));
   EXPECT_EQ(gradient_warnings(text), 1u);
 }
@@ -49,12 +48,11 @@ TEST(GradientRules, LoopsAPixelCanLeaveByItselfWarn) {
 }
 
 TEST(GradientRules, FlowOnConstantsAndPlainCodeAreQuiet) {
-  const std::string text = std::string(kHead) +
-                           "dsx r0, v0\n"
-                           "if b0\ndsy r1, v0\nendif\n"
-                           "rep i0\ndsx r2, r0\nadd r0, r0, r2\nendrep\n"
-                           "if_lt v0.x, c0.x\nmov r0, c1\nendif\n"
-                           "dsy r3, r0\nadd oC0, r3, r1\n";
+  const std::string text = std::string(kHead) + "dsx r0, v0\n"
+                                                "if b0\ndsy r1, v0\nendif\n"
+                                                "rep i0\ndsx r2, r0\nadd r0, r0, r2\nendrep\n"
+                                                "if_lt v0.x, c0.x\nmov r0, c1\nendif\n"
+                                                "dsy r3, r0\nadd oC0, r3, r1\n";
   EXPECT_EQ(gradient_warnings(text), 0u);
 }
 

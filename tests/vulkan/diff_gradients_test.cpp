@@ -5,6 +5,7 @@
 // from helper pixels (rule F9); and the two devices bit-identical on gradients of texture
 // values, with source modifiers, in loops and in flow that differs across a quad.
 #include "diff_harness.h"
+#include "tierlift/codegen/codegen.h"
 
 namespace tierlift::vulkan::test {
 namespace {
@@ -62,11 +63,63 @@ TEST_F(VulkanTest, DsxDsyOfVposMatchTheClosedForm) {
                 << (im == &r.cpu ? "cpu" : "vulkan") << " pixel " << x << "," << y << " ."
                 << "xyzw"[c] << (triangle ? " (cut triangle)" : "");
         }
-    if (triangle) EXPECT_GT(covered, 40);
+    if (triangle) {
+      EXPECT_GT(covered, 40);
+    }
   }
 }
 
-// The texcoord ramp u = x_clip, v = y_clip steps by 2/16 per pixel in x and −2/16 in y, and
+// The measurement behind rule F8: on lavapipe, OpDPdx/OpDPdy (which Vulkan lets a device make
+// coarse or fine) and even OpDPdxCoarse/OpDPdyCoarse give the fine differences: the closed
+// form of the fine ones holds on the quads' second row and column, where a coarse difference
+// would give (2·x0 + 1)·y0 and x0². The module is the code generator's with its Fine opcodes
+// rewritten.
+std::vector<uint32_t> with_derivative_ops(std::vector<uint32_t> words, uint32_t dx, uint32_t dy) {
+  for (size_t i = 5; i < words.size();) {
+    const uint32_t count = words[i] >> 16, op = words[i] & 0xFFFFu;
+    if (count == 0) break;
+    if (op == 210 /* OpDPdxFine */) words[i] = (count << 16) | dx;
+    if (op == 211 /* OpDPdyFine */) words[i] = (count << 16) | dy;
+    i += count;
+  }
+  return words;
+}
+
+TEST_F(VulkanTest, LavapipeDerivativesAreFineWhateverTheVariant) {
+  struct Variant {
+    uint32_t dx, dy;
+    const char* name;
+  };
+  for (const Variant v :
+       {Variant{207, 208, "OpDPdx/OpDPdy"}, Variant{213, 214, "OpDPdxCoarse/OpDPdyCoarse"}}) {
+    cpu::Pass pass;
+    pass.vertex_program = parse_listing(kVs, "q.vsh");
+    pass.pixel_program = parse_listing(kVposQuadratic, "q.psh");
+    ASSERT_TRUE(pass.vertex_program && pass.pixel_program);
+    set_geometry(pass, DiffSetup{});
+    pass.conventions.pixel_center = ir::PixelCenter::Modern;
+    codegen::CodegenOptions co;
+    co.conventions = pass.conventions;
+    ir::DiagnosticSink diags;
+    auto pair = codegen::compile_pair(*pass.vertex_program, *pass.pixel_program, co, diags);
+    ASSERT_TRUE(pair);
+    pass.pixel_spirv = std::make_shared<const std::vector<uint32_t>>(
+        with_derivative_ops(pair->ps.words, v.dx, v.dy));
+    img::Image out(kDiffW, kDiffH, img::Format::RGBA32F);
+    ir::Result<pass::DrawReport> r = dev->draw(pass, out);
+    ASSERT_TRUE(r.ok()) << r.message();
+    for (uint32_t y = 0; y < kDiffH; ++y)
+      for (uint32_t x = 0; x < kDiffW; ++x) {
+        const float* px = out.rgba.data() + 4 * (size_t{y} * kDiffW + x);
+        const cpu::Vec4 want = quadratic_closed_form(x, y);
+        ASSERT_EQ(px[0], want[0]) << v.name << " " << x << "," << y;
+        ASSERT_EQ(px[1], want[1]) << v.name << " " << x << "," << y;
+      }
+  }
+}
+
+// The texcoord ramp u = x_clip, v = y_clip (the full-screen quad given the triangle's texcoord)
+// steps by 2/16 per pixel in x and −2/16 in y, and
 // u² by (u_right² − u_left²) on the pixel's row: within float rounding of the interpolation on
 // both devices, at the cut triangle's edges too.
 TEST_F(VulkanTest, DsxDsyOfInterpolatedRampAndSquareMatchTheClosedForm) {
@@ -77,6 +130,7 @@ TEST_F(VulkanTest, DsxDsyOfInterpolatedRampAndSquareMatchTheClosedForm) {
   for (bool triangle : {false, true}) {
     DiffResult r = run_diff_with(*dev, kVs, ps, DiffSetup{}, [&](cpu::Pass& p) {
       if (triangle) cut_triangle(p);
+      for (cpu::VertexInput& v : p.vertices) v.v[3] = {v.v[0][0], v.v[0][1], 0, 1};
     });
     ASSERT_TRUE(r.ok);
     EXPECT_EQ(r.diff.max_scaled, 0.0) << r.diff.first_bad;
@@ -115,9 +169,11 @@ const GradientCase kGradientCases[] = {
     {"dsx_predicated", "setp_gt p0, r0, r1\nmov r4, c2\n(p0) dsx r4, r2"},
     {"dsy_in_static_loop", "mov r4, r0\nrep i0\ndsy r5, r4\nmad r4, r5, c3, r4\nendrep"},
     // Flow that differs across the quad: the source was written before the branch, so every
-    // lane holds it there (NUMERICS.md rule F8); the validator warns.
+    // lane holds it there (NUMERICS.md rule F8); the validator warns. After a texkill the
+    // discarded lanes run on as helpers and their r5 enters their neighbours' dsx (rule F9).
     {"dsx_in_divergent_if", "mov r4, c4\nif_lt r0.x, r1.x\ndsx r4, r2\nelse\ndsy r4, r2\nendif"},
-    {"dsx_after_texkill", "mov r5, r0\nif_lt r0.x, c5.x\ntexkill -r1\nendif\ndsx r4, r5"},
+    {"dsx_after_texkill", "mov r6, -r1\nif_lt r0.x, c5.x\ntexkill r6\nendif\nmul r5, r0, r2\ndsx r4, r5"},
+    {"texldd_level0", "dsx r5, v0\ndsy r6, v0\ntexldd r4, v0, s1, r5, r6\nadd r4, r4, r0"},
 };
 // clang-format on
 
@@ -153,6 +209,27 @@ TEST_P(GradientDiff, CpuAndVulkanAgreeBitForBit) {
 
 INSTANTIATE_TEST_SUITE_P(Quads, GradientDiff, ::testing::ValuesIn(kGradientCases),
                          [](const auto& info) { return std::string(info.param.name); });
+
+// NUMERICS.md rule F10: texldd reads level 0 whatever its gradients, on both devices and under
+// both filters: texldd − texld is 0 at every pixel, with gradients from zero to far beyond the
+// texture (a level far down the chain once textures have levels).
+TEST_F(VulkanTest, TexlddReadsLevelZeroWhateverTheGradients) {
+  const char* ps = "ps_3_0\ndcl_texcoord0 v0\ndcl_2d s0\n"
+                   "texld r0, v0, s0\ntexldd r1, v0, s0, c0, c1\nadd oC0, r1, -r0\n";
+  for (cpu::Filter filter : {cpu::Filter::Point, cpu::Filter::Linear})
+    for (float g : {0.0f, 1.0f / kDiffW, 40.0f}) {
+      DiffSetup s;
+      add_random_textures(s, 1, {0, 1, 0}); // finite texels: texld − texld is 0
+      s.filter = filter;
+      s.ps_c = {{g, 0, 0, 0}, {0, g, 0, 0}};
+      DiffResult r = run_diff(*dev, kVs, ps, s);
+      ASSERT_TRUE(r.ok);
+      for (const img::Image* im : {&r.cpu, &r.vk})
+        for (size_t k = 0; k < im->rgba.size(); ++k)
+          ASSERT_EQ(im->rgba[k], 0.0f)
+              << (im == &r.cpu ? "cpu" : "vulkan") << " value " << k << " gradient " << g;
+    }
+}
 
 } // namespace
 } // namespace tierlift::vulkan::test

@@ -100,9 +100,6 @@ namespace {
 // What the interpreter and the code generator do not run yet in 2.x and 3.0, or nullptr.
 const char* not_yet(const Instruction& ins) {
   switch (ins.op) {
-  case Opcode::TexLdD:
-    return "explicit gradients choose a level of detail, and textures have no "
-           "mipmaps yet";
   case Opcode::TexLdL: return "explicit levels of detail need mipmapped textures";
   default: break;
   }

@@ -158,6 +158,10 @@ Prepared prepare(const ir::Program& program, const ir::Conventions& conv);
 void run(const Prepared& p, Invocation& inv);
 // run, recording each instruction's destination after it ran (InstructionTrace).
 void run_traced(const Prepared& p, Invocation& inv, InstructionTrace& trace);
+// run_traced's parts: the trace sized to the program and emptied; step `at`'s record after
+// it ran (both halves of a co-issued pair).
+void start_trace(const Prepared& p, InstructionTrace& trace);
+void record_step(const Prepared& p, const Invocation& inv, int32_t at, InstructionTrace& trace);
 
 // vm_operands.cpp. fetch/store take a fast inline path for the common plain operands
 // (the VM runs per pixel) and fall back to the general functions otherwise.
@@ -188,7 +192,9 @@ template <class Fn> struct OpcodeTable {
 
 // vm_quad.cpp: the four invocations of a 2x2 quad (TL, TR, BL, BR) run to the end, each by
 // itself between gradient steps and all together at each one (NUMERICS.md rule F8).
-void run_quad(const Prepared& p, Invocation* const (&lanes)[4]);
+// `trace`: lane `traced`'s record of every step it ran (run_traced's), when not null.
+void run_quad(const Prepared& p, Invocation* const (&lanes)[4], InstructionTrace* trace = nullptr,
+              int traced = 0);
 
 // vm_arith.cpp: the per-opcode compute table and the arithmetic executors.
 ComputeFn arith_compute(ir::Opcode op, bool flush_denormals);

@@ -10,22 +10,28 @@
 namespace tierlift::cpu::vm {
 namespace {
 
-// Runs inv until it ends or its next step is a gradient; true in the second case.
-bool run_to_gradient(const Prepared& p, Invocation& inv) {
+// Runs inv until it ends or its next step is a gradient; true in the second case. `trace`:
+// the steps it runs recorded there, when not null.
+bool run_to_gradient(const Prepared& p, Invocation& inv, InstructionTrace* trace) {
   const Step* steps = p.steps.data();
   const auto n = static_cast<int32_t>(p.steps.size());
   while (inv.pc < n && !inv.stop) {
-    const Step& s = steps[inv.pc];
+    const int32_t at = inv.pc;
+    const Step& s = steps[at];
     if (s.gradient) return true;
     ++inv.pc;
     s.exec(s, inv);
+    if (trace) record_step(p, inv, at, *trace);
   }
   return false;
 }
 
 } // namespace
 
-void run_quad(const Prepared& p, Invocation* const (&lanes)[4]) {
+void run_quad(const Prepared& p, Invocation* const (&lanes)[4], InstructionTrace* trace,
+              int traced) {
+  if (trace) start_trace(p, *trace);
+  auto trace_of = [&](int l) { return l == traced ? trace : nullptr; };
   for (int l = 0; l < 4; ++l) {
     lanes[l]->lane = static_cast<uint8_t>(l);
     lanes[l]->in_quad = true;
@@ -33,7 +39,7 @@ void run_quad(const Prepared& p, Invocation* const (&lanes)[4]) {
   for (;;) {
     bool waiting[4];
     bool any = false;
-    for (int l = 0; l < 4; ++l) any |= waiting[l] = run_to_gradient(p, *lanes[l]);
+    for (int l = 0; l < 4; ++l) any |= waiting[l] = run_to_gradient(p, *lanes[l], trace_of(l));
     if (!any) return;
     // Every source is read before any lane writes (dsx r0, r0 in all four lanes).
     Vec4 quad[4][4];
@@ -45,10 +51,12 @@ void run_quad(const Prepared& p, Invocation* const (&lanes)[4]) {
     for (int l = 0; l < 4; ++l) {
       if (!waiting[l]) continue;
       Invocation& inv = *lanes[l];
-      const Step& s = p.steps[static_cast<size_t>(inv.pc++)];
+      const int32_t at = inv.pc++;
+      const Step& s = p.steps[static_cast<size_t>(at)];
       inv.quad = quad[l];
       s.exec(s, inv);
       inv.quad = nullptr;
+      if (InstructionTrace* t = trace_of(l)) record_step(p, inv, at, *t);
     }
   }
 }

@@ -125,16 +125,31 @@ bool ShaderVM::needs_quad() const {
   return std::any_of(steps.begin(), steps.end(), [](const vm::Step& s) { return s.gradient; });
 }
 
-void ShaderVM::run_quad(const std::array<PixelInput, 4>& in, const ConstantBank& constants,
-                        const TextureUnit& textures, std::array<PixelOutput, 4>& out) const {
-  const vm::Prepared& p = impl_->p;
+namespace {
+
+void quad(const vm::Prepared& p, const std::array<PixelInput, 4>& in, const ConstantBank& constants,
+          const TextureUnit& textures, std::array<PixelOutput, 4>& out, InstructionTrace* trace,
+          int traced) {
   vm::Invocation inv[4];
   for (size_t l = 0; l < 4; ++l) {
     out[l] = PixelOutput{};
     begin_pixel(inv[l], p, in[l], constants, textures, out[l]);
   }
-  vm::run_quad(p, {&inv[0], &inv[1], &inv[2], &inv[3]});
+  vm::run_quad(p, {&inv[0], &inv[1], &inv[2], &inv[3]}, trace, traced);
   for (size_t l = 0; l < 4; ++l) end_pixel(inv[l], p, out[l]);
+}
+
+} // namespace
+
+void ShaderVM::run_quad(const std::array<PixelInput, 4>& in, const ConstantBank& constants,
+                        const TextureUnit& textures, std::array<PixelOutput, 4>& out) const {
+  quad(impl_->p, in, constants, textures, out, nullptr, 0);
+}
+
+void ShaderVM::run_quad(const std::array<PixelInput, 4>& in, const ConstantBank& constants,
+                        const TextureUnit& textures, std::array<PixelOutput, 4>& out,
+                        InstructionTrace& trace, int traced) const {
+  quad(impl_->p, in, constants, textures, out, &trace, traced);
 }
 
 } // namespace tierlift::cpu

@@ -103,6 +103,10 @@ public:
   // in all four lanes (vm::Invocation::quad), from which d/dx and d/dy of any value follow.
   void run_quad(const std::array<PixelInput, 4>& in, const ConstantBank& constants,
                 const TextureUnit& textures, std::array<PixelOutput, 4>& out) const;
+  // The same, recording lane `traced`'s instructions into `trace` (as run_pixel's trace).
+  void run_quad(const std::array<PixelInput, 4>& in, const ConstantBank& constants,
+                const TextureUnit& textures, std::array<PixelOutput, 4>& out,
+                InstructionTrace& trace, int traced) const;
 
 private:
   struct Impl;
