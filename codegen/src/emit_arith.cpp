@@ -76,6 +76,13 @@ Id Emitter::arith_per_component(const ir::Instruction& ins, uint8_t mask) {
   case Opcode::Frc: return rule::frc(v4, src(0));
   case Opcode::Sgn: return rule::sgn(v4, src(0));
   case Opcode::Abs: return v4.abs(src(0));
+  case Opcode::Dsx:
+  case Opcode::Dsy: {
+    // NUMERICS.md rule F8: fine differences inside the 2x2 quad (lavapipe's OpDPdx is fine too,
+    // but only the Fine forms promise it). Vulkan supports DerivativeControl everywhere.
+    b.capability(spv::Capability::DerivativeControl);
+    return b.op(ins.op == Opcode::Dsx ? Op::OpDPdxFine : Op::OpDPdyFine, t_vec4, {src(0)});
+  }
   case Opcode::Cnd: {
     const Id c = src(0), a = src(1), d = src(2);
     return rule::cnd(v4, c, a, d);

@@ -110,19 +110,26 @@ Id Emitter::fetch_unorm8(Id si, Id uv) {
   return fmul(sum, splat(f(0x1p-24f)));
 }
 
-Id Emitter::sample(uint32_t stage, Id coord, std::optional<Id> bias) {
+Id Emitter::sample(uint32_t stage, Id coord, std::optional<Id> bias,
+                   std::optional<std::pair<Id, Id>> grad) {
   const Id var = sampler_var(stage);
   const ir::SamplerType type = sampler_type(stage);
   const Id image = b.type_image(t_float, dim_of(type));
   const Id si = b.op(Op::OpLoad, b.type_sampled_image(image), {var});
-  Id c = type == ir::SamplerType::Tex2D
-             ? b.op(Op::OpVectorShuffle, t_vec2, {coord, coord, 0, 1})
-             : b.op(Op::OpVectorShuffle, t_vec3, {coord, coord, 0, 1, 2});
+  auto coords = [&](Id v) {
+    return type == ir::SamplerType::Tex2D ? b.op(Op::OpVectorShuffle, t_vec2, {v, v, 0, 1})
+                                          : b.op(Op::OpVectorShuffle, t_vec3, {v, v, 0, 1, 2});
+  };
+  Id c = coords(coord);
   // A bias changes nothing there: one mip level, POINT both ways.
   if (fetches(stage)) return fetch_unorm8(si, c);
   // A POINT/CLAMP read at the clamped coordinate: the same texel, and no u·N that
   // overflows the device's conversion to an index (CodegenOptions::stage_point_clamped).
   if (type == ir::SamplerType::Tex2D && opt.stage_point_clamped[stage & 15]) c = clamp_uv01(c);
+  if (grad) // one level, minLod = maxLod = 0: level 0 whatever the gradients (rule F10)
+    return b.op(Op::OpImageSampleExplicitLod, t_vec4,
+                {si, c, static_cast<uint32_t>(spv::ImageOperandsMask::Grad), coords(grad->first),
+                 coords(grad->second)});
   if (bias)
     return b.op(Op::OpImageSampleImplicitLod, t_vec4,
                 {si, c, static_cast<uint32_t>(spv::ImageOperandsMask::Bias), *bias});
@@ -200,9 +207,13 @@ bool Emitter::emit_texture(const ir::Instruction& ins, std::optional<PendingStor
   case Opcode::TexLd14: return result(sample(m, load_src(ins.src[0])));
   case Opcode::TexLd:
   case Opcode::TexLdP:
-  case Opcode::TexLdB: {
+  case Opcode::TexLdB:
+  case Opcode::TexLdD: {
     const uint32_t s = ins.src[1].index;
     Id c = load_src(ins.src[0]);
+    if (ins.op == Opcode::TexLdD)
+      return result(
+          sample(s, c, std::nullopt, std::pair{load_src(ins.src[2]), load_src(ins.src[3])}));
     if (ins.op == Opcode::TexLdP) return result(sample(s, fdiv(c, splat(comp(c, 3)))));
     if (ins.op == Opcode::TexLdB) return result(sample(s, c, comp(c, 3)));
     return result(sample(s, c));

@@ -60,12 +60,15 @@ TEST(CliLaterProfiles, SpirvAndRunTakeThemAndRefuseGradientsWithAPosition) {
   EXPECT_EQ(run.exit_code, 0) << run.err;
   EXPECT_TRUE(std::filesystem::exists(s.file("out.png")));
   EXPECT_EQ(run_cli("spirv " + s.file("v.vsh", kVs30) + " -o " + s.file("v.spv")).exit_code, 0);
-  // Gradients do not run yet: refused at the instruction, nothing written.
-  const std::string grad = s.file("g.psh", "ps_3_0\ndcl_texcoord0 v0\ndsx r0, v0\nmov oC0, r0\n");
+  // A predicated texkill does not run yet: refused at the instruction, nothing written.
+  const std::string grad = s.file(
+      "g.psh", "ps_3_0\ndcl_texcoord0 v0\nsetp_gt p0, v0, c0\n(p0) texkill v0\nmov oC0, v0\n");
   auto g = run_cli("run --ps " + grad + " --backend cpu -o " + s.file("g.png"));
   EXPECT_EQ(g.exit_code, 1);
-  EXPECT_NE(g.err.find("g.psh:3:1: error: not supported yet by the interpreter: dsx in ps_3_0"),
-            std::string::npos)
+  EXPECT_NE(
+      g.err.find(
+          "g.psh:4:6: error: not supported yet by the interpreter: predicated texkill in ps_3_0"),
+      std::string::npos)
       << g.err;
   EXPECT_FALSE(std::filesystem::exists(s.file("g.png")));
 }

@@ -112,16 +112,17 @@ TEST(CorpusStages, InvalidListingFailsValidateAndSkipsTheRest) {
   EXPECT_EQ(r.failed_stage(), "validate");
 }
 
-TEST(CorpusStages, ShaderModel3RunsAndGradientsAreUnsupportedNotAFailure) {
+TEST(CorpusStages, ShaderModel3RunsAndAPredicatedTexkillIsUnsupportedNotAFailure) {
   // The front end takes both; SPIR-V runs the first (the differential run follows when a
-  // device is given), not yet the gradient of the second.
+  // device is given), not yet the predicated texkill of the second.
   CaseResult r = run_listing("c", "c.psh", "ps_3_0\nmov oC0, c0\n", no_device());
   EXPECT_EQ(stage_verdict(r, kStageParse), Verdict::Pass);
   EXPECT_EQ(stage_verdict(r, kStageValidate), Verdict::Pass);
   EXPECT_EQ(stage_verdict(r, kStageRoundTrip), Verdict::Pass);
   EXPECT_EQ(stage_verdict(r, kStageSpirv), Verdict::Pass);
-  CaseResult g =
-      run_listing("g", "g.psh", "ps_3_0\ndcl_texcoord0 v0\ndsx r0, v0\nmov oC0, r0\n", no_device());
+  CaseResult g = run_listing(
+      "g", "g.psh", "ps_3_0\ndcl_texcoord0 v0\ndcl_2d s0\ntexldd r0, v0, s0, v0, v0\nmov oC0, r0\n",
+      no_device());
   EXPECT_EQ(stage_verdict(g, kStageValidate), Verdict::Pass);
   EXPECT_EQ(stage_verdict(g, kStageSpirv), Verdict::Unsupported);
   EXPECT_EQ(g.verdict, Verdict::Unsupported);

@@ -222,3 +222,43 @@ TEST(PixelTraceTable, ValuesPrintSoThatDifferentBitsShow) {
 
 } // namespace
 } // namespace tierlift::effects
+
+namespace tierlift::effects {
+namespace {
+
+// A pixel program with gradients is traced in its 2x2 quad, as the draw shades it (NUMERICS.md
+// rule F8): at pixel (3, 1) of x²y of vPos, dsx = (2·2 + 1)·1 = 5 (the quad's columns are 2
+// and 3) and dsy = 3² = 9, on both columns, where a pixel traced alone would read 0.
+TEST_F(PixelTraceVulkan, GradientsAreTracedInTheirQuad) {
+  pass::RunRequest r;
+  r.vs = parse_listing(kVs, "uv.vsh");
+  r.ps = parse_listing("ps_3_0\ndcl vPos.xy\nmul r0, vPos.x, vPos.x\nmul r0, r0, vPos.y\n"
+                       "dsx r1, r0\ndsy r2, r0\nadd oC0, r1, r2\n",
+                       "g.psh");
+  r.width = kW;
+  r.height = kH;
+  r.format = img::Format::RGBA32F;
+  r.attrs.push_back({ir::RegFile::Input, 3, {0, 0, 0, 1}, true});
+  ir::Result<pass::Pass> p = pass::prepare_pass(r);
+  ASSERT_TRUE(p) << p.message();
+  ir::Result<cpu::PixelTrace> cpu = cpu::trace_pixel(*p, kW, kH, 3, 1);
+  ASSERT_TRUE(cpu) << cpu.message();
+  ir::Result<vulkan::ShaderTrace> vk =
+      trace_on_vulkan(*dev, *p, kW, kH, img::Format::RGBA32F, 3, 1);
+  ASSERT_TRUE(vk) << vk.message();
+  const PixelTraceTable t = make_trace_table(*p->pixel_program, 3, 1, &*cpu, &*vk);
+  ASSERT_EQ(t.rows.size(), 5u);
+  for (const auto& cell : {t.rows[2].interpreter, t.rows[2].vulkan}) {
+    ASSERT_TRUE(cell);
+    EXPECT_EQ(cell->value, (Vec{5, 5, 5, 5}));
+  }
+  for (const auto& cell : {t.rows[3].interpreter, t.rows[3].vulkan}) {
+    ASSERT_TRUE(cell);
+    EXPECT_EQ(cell->value, (Vec{9, 9, 9, 9}));
+  }
+  EXPECT_FALSE(t.first_difference);
+  EXPECT_EQ(cpu->output.color[0][0], 14.0f);
+}
+
+} // namespace
+} // namespace tierlift::effects

@@ -121,7 +121,7 @@ TEST(LaterProfiles, CapsPresets) {
 
 TEST(LaterProfiles, WhatDoesNotRunYetIsRefusedWithAPosition) {
   // 2.x and 3.0 run on both devices (mov, setp, ...), except what each error names: here
-  // dsx (gradients) and a semantic the 2.0 interface has no register for.
+  // a predicated texkill and a semantic the 2.0 interface has no register for.
   Program p;
   p.profile = Profile::ps_3_0;
   p.version_loc = {1, 1, 1, 6};
@@ -134,17 +134,26 @@ TEST(LaterProfiles, WhatDoesNotRunYetIsRefusedWithAPosition) {
   setp.loc = {1, 3, 5, 7};
   p.code.push_back(setp);
   EXPECT_TRUE(check_executable(p, "the interpreter").ok());
-  Instruction dsx;
-  dsx.op = Opcode::Dsx;
-  dsx.loc = {1, 4, 2, 5};
-  p.code.push_back(dsx);
+  for (Opcode runs : {Opcode::Dsx, Opcode::Dsy, Opcode::TexLdD}) { // 2x2 quads, rules F8-F10
+    Instruction gradient;
+    gradient.op = runs;
+    p.code.push_back(gradient);
+    EXPECT_TRUE(check_executable(p, "SPIR-V").ok());
+    p.code.pop_back();
+  }
+  Instruction kill;
+  kill.op = Opcode::TexKill;
+  kill.pred.emplace();
+  kill.loc = {1, 4, 2, 5};
+  p.code.push_back(kill);
   Status s = check_executable(p, "SPIR-V");
   ASSERT_FALSE(s.ok());
   ASSERT_EQ(s.diagnostics().size(), 1u);
   EXPECT_EQ(s.diagnostics()[0].loc.line, 4u);
   EXPECT_EQ(s.diagnostics()[0].loc.col, 2u);
-  EXPECT_NE(s.diagnostics()[0].message.find("not supported yet by SPIR-V: dsx in ps_3_0"),
-            std::string::npos);
+  EXPECT_NE(
+      s.diagnostics()[0].message.find("not supported yet by SPIR-V: predicated texkill in ps_3_0"),
+      std::string::npos);
   p.code.pop_back();
   Declaration normal;
   normal.reg.file = RegFile::Input;

@@ -87,5 +87,6 @@ void check_coissue(Ctx& c);      // rules_coissue.cpp
 void check_flow(Ctx& c);         // rules_flow.cpp
 void check_call_nesting(Ctx& c); // rules_calls.cpp (2.x and 3.0)
 void check_later(Ctx& c);        // rules_later.cpp (2.x and 3.0: predicates, setp, o#, ...)
+void check_gradients(Ctx& c);    // rules_gradients.cpp (dsx/dsy in flow that may diverge)
 
 } // namespace tierlift::as::detail

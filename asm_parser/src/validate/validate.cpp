@@ -53,6 +53,7 @@ bool validate(const ir::Program& program, ir::Profile target, ir::DiagnosticSink
   detail::check_dataflow(c);
   detail::check_outputs(c);
   detail::check_later(c);
+  detail::check_gradients(c);
   std::vector<ir::Diagnostic> found = local.all();
   std::stable_sort(found.begin(), found.end(),
                    [](const ir::Diagnostic& a, const ir::Diagnostic& b) {

@@ -100,9 +100,6 @@ namespace {
 // What the interpreter and the code generator do not run yet in 2.x and 3.0, or nullptr.
 const char* not_yet(const Instruction& ins) {
   switch (ins.op) {
-  case Opcode::Dsx:
-  case Opcode::Dsy:
-  case Opcode::TexLdD: return "gradients need 2x2 quads, which neither device shades yet";
   case Opcode::TexLdL: return "explicit levels of detail need mipmapped textures";
   default: break;
   }

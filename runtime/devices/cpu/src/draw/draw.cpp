@@ -47,16 +47,7 @@ void shade_pixel(const RasterJob& job, const PixelInput& in, int64_t x, int64_t 
       return;
     }
   }
-  const pass::DepthStencilState& ds = job.pass.depth_stencil;
-  if (ds.stencil_test) {
-    uint8_t& s =
-        job.targets.stencil[static_cast<size_t>(y) * job.target.width + static_cast<size_t>(x)];
-    const bool passed = pass::stencil_test(ds, s);
-    s = pass::stencil_update(passed ? ds.stencil_pass : ds.stencil_fail, ds, s);
-    if (!passed) return;
-  }
-  for (uint32_t i = 0; i < job.pass.color_targets; ++i)
-    store_pixel(job, *job.targets.color[i], out.color[i], x, y);
+  detail::store_shaded(job, out, x, y);
 }
 
 void raster_rows(const RasterJob& job, int64_t y0, int64_t y1, WorkerStats& stats) {
@@ -83,6 +74,23 @@ void raster_rows(const RasterJob& job, int64_t y0, int64_t y1, WorkerStats& stat
     }
   }
 }
+
+} // namespace
+
+void detail::store_shaded(const RasterJob& job, const PixelOutput& out, int64_t x, int64_t y) {
+  const pass::DepthStencilState& ds = job.pass.depth_stencil;
+  if (ds.stencil_test) {
+    uint8_t& s =
+        job.targets.stencil[static_cast<size_t>(y) * job.target.width + static_cast<size_t>(x)];
+    const bool passed = pass::stencil_test(ds, s);
+    s = pass::stencil_update(passed ? ds.stencil_pass : ds.stencil_fail, ds, s);
+    if (!passed) return;
+  }
+  for (uint32_t i = 0; i < job.pass.color_targets; ++i)
+    store_pixel(job, *job.targets.color[i], out.color[i], x, y);
+}
+
+namespace {
 
 std::string check_targets(const Pass& pass, const DrawTargets& targets) {
   if (pass.color_targets == 0 || pass.color_targets > targets.color.size())
@@ -217,7 +225,11 @@ ir::Result<DrawStats> draw(const Pass& pass, const DrawTargets& targets, unsigne
                 BoundTextures(pass.textures, pass.conventions.subtexel_bits,
                               pass.conventions.rounding == ir::Rounding::Llvmpipe),
                 targets};
-  const int64_t bands = (scissor.y1 - scissor.y0 + kBandRows - 1) / kBandRows;
+  // A program that reads its neighbours is shaded by 2x2 quads (raster_quads), which lie on
+  // even rows: its bands start on one, so that no quad straddles two bands.
+  const bool quads = job.ps && !job.block && job.ps->needs_quad();
+  const int64_t band0 = quads ? scissor.y0 & ~int64_t{1} : scissor.y0;
+  const int64_t bands = (scissor.y1 - band0 + kBandRows - 1) / kBandRows;
   unsigned workers = threads ? threads : std::max(1u, std::thread::hardware_concurrency());
   workers = static_cast<unsigned>(std::min<int64_t>({workers, bands, kMaxWorkers}));
   // Each worker's block state is allocated here, before any pixel is written: once the
@@ -238,10 +250,12 @@ ir::Result<DrawStats> draw(const Pass& pass, const DrawTargets& targets, unsigne
     try {
       detail::BlockWorker* bw = block_workers[index].get();
       for (int64_t b = next++; b < bands; b = next++) {
-        int64_t y0 = scissor.y0 + b * kBandRows;
+        int64_t y0 = band0 + b * kBandRows;
         const int64_t y1 = std::min(scissor.y1, y0 + kBandRows);
         if (bw)
           detail::raster_rows_block(job, y0, y1, *bw, ws);
+        else if (quads)
+          detail::raster_quads(job, y0, y1, ws);
         else
           raster_rows(job, y0, y1, ws);
       }

@@ -161,6 +161,14 @@ bool covers(const std::vector<Triangle>& triangles, const PixelRect& rect, int64
 void raster_rows_block(const RasterJob& job, int64_t y0, int64_t y1, BlockWorker& w,
                        WorkerStats& stats);
 
+// A shaded pixel's stencil test and stores into every colour target (draw.cpp).
+void store_shaded(const RasterJob& job, const PixelOutput& out, int64_t x, int64_t y);
+
+// Rows [y0, y1) (y0 even) of every triangle, in primitive order, by 2x2 quads aligned on even
+// coordinates through job.ps->run_quad: the lanes outside the triangle (helper pixels) run
+// with the inputs interpolated at their own centres and are never stored (raster_quads.cpp).
+void raster_quads(const RasterJob& job, int64_t y0, int64_t y1, WorkerStats& stats);
+
 // blend_and_store for lanes 0..n−1 of a block of n consecutive pixels on one row (`row`: the
 // target's row, lane l's pixel x0 + l at row + 4·(x0 + l)), discarded lanes left alone;
 // RGBA32F targets take an inlined loop.

@@ -182,6 +182,26 @@ VM_OP(op_bem) {
        num::rule::bump_offset(a, s[0][1], m[1], s[1][0], m[3], s[1][1]), 0.0f, 0.0f};
 }
 
+// dsx/dsy (NUMERICS.md rule F8): fine differences inside the 2x2 quad, right minus left on
+// the lane's own row, bottom minus top in its own column, as lavapipe's OpDPdxFine/OpDPdyFine.
+// Alone (no quad) the pixel is its own neighbour.
+VM_OP(op_dsx) {
+  if (!inv.quad) {
+    d = each(s[0], s[0], num::legacy_sub<D>);
+    return;
+  }
+  const int row = inv.lane & 2;
+  d = each(inv.quad[row + 1], inv.quad[row], num::legacy_sub<D>);
+}
+VM_OP(op_dsy) {
+  if (!inv.quad) {
+    d = each(s[0], s[0], num::legacy_sub<D>);
+    return;
+  }
+  const int column = inv.lane & 1;
+  d = each(inv.quad[column + 2], inv.quad[column], num::legacy_sub<D>);
+}
+
 #undef VM_OP
 
 // Mova computes a mov: the conversion happens at the store (DstKind::AddrRound).
@@ -199,7 +219,8 @@ template <Denormals D> constexpr OpcodeTable<ComputeFn> compute_table() {
       {Opcode::Crs, op_crs<D>},   {Opcode::Sgn, op_sgn<D>},       {Opcode::Abs, op_abs<D>},
       {Opcode::Nrm, op_nrm<D>},   {Opcode::SinCos, op_sincos<D>}, {Opcode::Expp, op_expp<D>},
       {Opcode::Logp, op_logp<D>}, {Opcode::Cnd, op_cnd<D>},       {Opcode::Cmp, op_cmp<D>},
-      {Opcode::Bem, op_bem<D>},   {Opcode::Dp2Add, op_dp2add<D>}, {Opcode::SinCos3, op_sincos<D>}};
+      {Opcode::Bem, op_bem<D>},   {Opcode::Dp2Add, op_dp2add<D>}, {Opcode::SinCos3, op_sincos<D>},
+      {Opcode::Dsx, op_dsx<D>},   {Opcode::Dsy, op_dsy<D>}};
   return OpcodeTable<ComputeFn>(rows);
 }
 constexpr OpcodeTable<ComputeFn> kComputeKeep = compute_table<Denormals::Keep>();

@@ -300,6 +300,7 @@ std::unique_ptr<PixelBlockVM> PixelBlockVM::create(const ir::Program& program,
     const ir::Opcode op = st.ins->op;
     std::optional<BlockOp> bop = block_op(op, ir::op_info(op).cls);
     if (!bop || st.rows) return nullptr;
+    if (st.gradient) return nullptr; // dsx/dsy read the 2x2 quad: ShaderVM::run_quad
     // Predication and setp (2.x, 3.0) run per pixel only.
     if (st.ins->pred || st.exec == vm::exec_setp) return nullptr;
     b.op = *bop;

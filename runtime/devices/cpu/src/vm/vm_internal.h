@@ -88,7 +88,8 @@ struct Step {
   ExecFn inner = nullptr;
   uint8_t pred_swz[4] = {0, 1, 2, 3};
   bool pred_not = false;
-  int8_t pad_row = 0;                            // texm3x2pad/texm3x3pad: 0 = u', 1 = v'
+  int8_t pad_row = 0;    // texm3x2pad/texm3x3pad: 0 = u', 1 = v'
+  bool gradient = false; // dsx/dsy: a quad runs its lanes up to this step together (vm_quad.cpp)
   std::optional<std::array<int32_t, 4>> int_def; // defi for loop/rep
   std::optional<bool> bool_def;                  // defb for if/callnz
   const ir::Instruction* ins = nullptr;
@@ -144,6 +145,12 @@ struct Invocation {
   const TextureUnit* tex = nullptr;
   const PixelInput* pin = nullptr;
   PixelOutput* pout = nullptr;
+  // Quads (vm_quad.cpp): this lane's place (0 top-left, 1 top-right, 2 bottom-left,
+  // 3 bottom-right) and, while a gradient step runs, its source operand as read in each of the
+  // four lanes. Without a quad (nullptr) every neighbour is the pixel itself.
+  uint8_t lane = 0;
+  bool in_quad = false; // texkill turns the lane into a helper instead of ending it
+  const Vec4* quad = nullptr;
 };
 
 // vm_program.cpp
@@ -151,6 +158,10 @@ Prepared prepare(const ir::Program& program, const ir::Conventions& conv);
 void run(const Prepared& p, Invocation& inv);
 // run, recording each instruction's destination after it ran (InstructionTrace).
 void run_traced(const Prepared& p, Invocation& inv, InstructionTrace& trace);
+// run_traced's parts: the trace sized to the program and emptied; step `at`'s record after
+// it ran (both halves of a co-issued pair).
+void start_trace(const Prepared& p, InstructionTrace& trace);
+void record_step(const Prepared& p, const Invocation& inv, int32_t at, InstructionTrace& trace);
 
 // vm_operands.cpp. fetch/store take a fast inline path for the common plain operands
 // (the VM runs per pixel) and fall back to the general functions otherwise.
@@ -178,6 +189,12 @@ template <class Fn> struct OpcodeTable {
     return i < fn.size() ? fn[i] : nullptr;
   }
 };
+
+// vm_quad.cpp: the four invocations of a 2x2 quad (TL, TR, BL, BR) run to the end, each by
+// itself between gradient steps and all together at each one (NUMERICS.md rule F8).
+// `trace`: lane `traced`'s record of every step it ran (run_traced's), when not null.
+void run_quad(const Prepared& p, Invocation* const (&lanes)[4], InstructionTrace* trace = nullptr,
+              int traced = 0);
 
 // vm_arith.cpp: the per-opcode compute table and the arithmetic executors.
 ComputeFn arith_compute(ir::Opcode op, bool flush_denormals);

@@ -82,7 +82,8 @@ void prepare_texture(Step& s, const ir::Instruction& ins, const Prepared& p) {
     return;
   }
   s.dst = decode_dst(*ins.dst, ins.mods, p);
-  if (ins.op == Opcode::TexLd || ins.op == Opcode::TexLdP || ins.op == Opcode::TexLdB) {
+  if (ins.op == Opcode::TexLd || ins.op == Opcode::TexLdP || ins.op == Opcode::TexLdB ||
+      ins.op == Opcode::TexLdD) {
     if (ins.src.size() < 2) broken(ins, "missing sampler");
     s.aux = static_cast<int32_t>(ins.src[1].index);
   }
@@ -245,6 +246,7 @@ Prepared prepare(const ir::Program& program, const ir::Conventions& conv) {
     const ir::OpInfo& info = ir::op_info(ins.op);
     s.nsrc = static_cast<uint8_t>(std::min<size_t>(ins.src.size(), 4));
     for (int k = 0; k < s.nsrc; ++k) s.src[k] = decode_src(ins.src[k], p);
+    s.gradient = ins.op == Opcode::Dsx || ins.op == Opcode::Dsy;
     const auto comparison = ir::flow::comparison_of(ins.op);
     switch (info.cls) {
     case OpClass::Arith:
@@ -319,17 +321,26 @@ void record(const Prepared& p, const Invocation& inv, int32_t at, InstructionTra
 
 } // namespace
 
-void run_traced(const Prepared& p, Invocation& inv, InstructionTrace& trace) {
+void start_trace(const Prepared& p, InstructionTrace& trace) {
   trace.value.assign(p.steps.size(), Vec4{0, 0, 0, 0});
   trace.hits.assign(p.steps.size(), 0);
+}
+
+void record_step(const Prepared& p, const Invocation& inv, int32_t at, InstructionTrace& trace) {
+  record(p, inv, at, trace);
+  if (p.steps[static_cast<size_t>(at)].exec == exec_arith_pair)
+    record(p, inv, at + 1, trace); // it ran the second half too
+}
+
+void run_traced(const Prepared& p, Invocation& inv, InstructionTrace& trace) {
+  start_trace(p, trace);
   const Step* steps = p.steps.data();
   const auto n = static_cast<int32_t>(p.steps.size());
   while (inv.pc < n && !inv.stop) {
     const int32_t at = inv.pc;
     const Step& s = steps[inv.pc++];
     s.exec(s, inv);
-    record(p, inv, at, trace);
-    if (s.exec == exec_arith_pair) record(p, inv, at + 1, trace); // it ran the second half too
+    record_step(p, inv, at, trace);
   }
 }
 

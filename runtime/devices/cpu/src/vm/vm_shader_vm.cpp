@@ -62,11 +62,9 @@ VertexOutput ShaderVM::run_vertex(const VertexInput& in, const ConstantBank& con
 
 namespace {
 
-PixelOutput pixel(const vm::Prepared& p, const PixelInput& in, const ConstantBank& constants,
-                  const TextureUnit& textures, InstructionTrace* trace) {
-  vm::Invocation inv;
+void begin_pixel(vm::Invocation& inv, const vm::Prepared& p, const PixelInput& in,
+                 const ConstantBank& constants, const TextureUnit& textures, PixelOutput& out) {
   begin(inv, p, constants);
-  PixelOutput out;
   inv.tex = &textures;
   inv.pin = &in;
   inv.pout = &out;
@@ -83,11 +81,9 @@ PixelOutput pixel(const vm::Prepared& p, const PixelInput& in, const ConstantBan
   // ps_3_0 vPos (z = w = 0) and vFace (all four components).
   inv.reg[vm::kMiscBase + ir::kMiscPosition] = {in.pos_x, in.pos_y, 0.0f, 0.0f};
   inv.reg[vm::kMiscBase + ir::kMiscFace] = {in.face, in.face, in.face, in.face};
-  if (trace)
-    vm::run_traced(p, inv, *trace);
-  else
-    vm::run(p, inv);
+}
 
+void end_pixel(const vm::Invocation& inv, const vm::Prepared& p, PixelOutput& out) {
   const Vec4* o = inv.reg + vm::kOutBase;
   if (p.ps1x) {
     out.color[0] = inv.reg[vm::kTempBase]; // r0 is the colour
@@ -97,6 +93,18 @@ PixelOutput pixel(const vm::Prepared& p, const PixelInput& in, const ConstantBan
     out.color_written = static_cast<uint8_t>(inv.out_written & 0xF);
     if (inv.out_written & (1u << vm::kOutDepth)) out.depth = o[vm::kOutDepth][0];
   }
+}
+
+PixelOutput pixel(const vm::Prepared& p, const PixelInput& in, const ConstantBank& constants,
+                  const TextureUnit& textures, InstructionTrace* trace) {
+  vm::Invocation inv;
+  PixelOutput out;
+  begin_pixel(inv, p, in, constants, textures, out);
+  if (trace)
+    vm::run_traced(p, inv, *trace);
+  else
+    vm::run(p, inv);
+  end_pixel(inv, p, out);
   return out;
 }
 
@@ -110,6 +118,38 @@ PixelOutput ShaderVM::run_pixel(const PixelInput& in, const ConstantBank& consta
 PixelOutput ShaderVM::run_pixel(const PixelInput& in, const ConstantBank& constants,
                                 const TextureUnit& textures, InstructionTrace& trace) const {
   return pixel(impl_->p, in, constants, textures, &trace);
+}
+
+bool ShaderVM::needs_quad() const {
+  const auto& steps = impl_->p.steps;
+  return std::any_of(steps.begin(), steps.end(), [](const vm::Step& s) { return s.gradient; });
+}
+
+namespace {
+
+void quad(const vm::Prepared& p, const std::array<PixelInput, 4>& in, const ConstantBank& constants,
+          const TextureUnit& textures, std::array<PixelOutput, 4>& out, InstructionTrace* trace,
+          int traced) {
+  vm::Invocation inv[4];
+  for (size_t l = 0; l < 4; ++l) {
+    out[l] = PixelOutput{};
+    begin_pixel(inv[l], p, in[l], constants, textures, out[l]);
+  }
+  vm::run_quad(p, {&inv[0], &inv[1], &inv[2], &inv[3]}, trace, traced);
+  for (size_t l = 0; l < 4; ++l) end_pixel(inv[l], p, out[l]);
+}
+
+} // namespace
+
+void ShaderVM::run_quad(const std::array<PixelInput, 4>& in, const ConstantBank& constants,
+                        const TextureUnit& textures, std::array<PixelOutput, 4>& out) const {
+  quad(impl_->p, in, constants, textures, out, nullptr, 0);
+}
+
+void ShaderVM::run_quad(const std::array<PixelInput, 4>& in, const ConstantBank& constants,
+                        const TextureUnit& textures, std::array<PixelOutput, 4>& out,
+                        InstructionTrace& trace, int traced) const {
+  quad(impl_->p, in, constants, textures, out, &trace, traced);
 }
 
 } // namespace tierlift::cpu

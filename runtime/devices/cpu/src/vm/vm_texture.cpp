@@ -47,7 +47,9 @@ Vec4 splat(float x) {
 
 void discard(Invocation& inv) {
   if (inv.pout) inv.pout->discarded = true;
-  inv.stop = true; // nothing a discarded pixel computes afterwards is visible
+  // Nothing a discarded pixel computes afterwards is visible, except in a quad: there it runs on
+  // as a helper lane, whose values its neighbours' dsx/dsy still read (NUMERICS.md rule F9).
+  if (!inv.in_quad) inv.stop = true;
 }
 
 void set_depth(Invocation& inv, float z) {
@@ -209,6 +211,13 @@ template <Denormals D> void ex_texldp(const Step& s, Invocation& inv) {
   store(s.dst, sample(inv, s.aux, {div(c[0], w), div(c[1], w), div(c[2], w), 1.0f}), inv);
 }
 
+// texldd dst, coord, s#, ddx, ddy: the gradients choose a level of detail, and a texture has
+// one level so far: level 0, as texld (NUMERICS.md rule F10). s.src[2] and s.src[3] are the
+// gradients the level-of-detail computation will read.
+template <Denormals D> void ex_texldd(const Step& s, Invocation& inv) {
+  store(s.dst, sample(inv, s.aux, fetch(s.src[0], inv)), inv);
+}
+
 template <Denormals D> void ex_texldb(const Step& s, Invocation& inv) {
   Vec4 c = fetch(s.src[0], inv);
   store(s.dst, sample(inv, s.aux, c, c[3]), inv);
@@ -242,7 +251,8 @@ template <Denormals D> constexpr OpcodeTable<ExecFn> texture_table() {
                                             {Opcode::TexDepth, ex_texdepth<D>},
                                             {Opcode::TexLd, ex_texld<D>},
                                             {Opcode::TexLdP, ex_texldp<D>},
-                                            {Opcode::TexLdB, ex_texldb<D>}};
+                                            {Opcode::TexLdB, ex_texldb<D>},
+                                            {Opcode::TexLdD, ex_texldd<D>}};
   return OpcodeTable<ExecFn>(rows);
 }
 constexpr OpcodeTable<ExecFn> kTextureKeep = texture_table<Denormals::Keep>();

@@ -91,6 +91,23 @@ public:
   PixelOutput run_pixel(const PixelInput& in, const ConstantBank& constants,
                         const TextureUnit& textures, InstructionTrace& trace) const;
 
+  // Whether the program reads its neighbours (dsx, dsy), so that a draw shades it by quads.
+  // run_pixel still runs such a program, the pixel standing in for its own neighbours (every
+  // gradient is then x − x: 0, or NaN for an infinity or NaN).
+  bool needs_quad() const;
+  // The four pixels of a 2x2 quad, in[0] top-left, in[1] top-right, in[2] bottom-left,
+  // in[3] bottom-right, with their gradients taken across the quad (NUMERICS.md rules F8, F9).
+  // Every lane runs to its end, helper pixels (outside the primitive) and discarded ones
+  // included; the caller stores only the covered lanes that were not discarded.
+  // The gradient interface for the texture unit: each dsx/dsy step sees its source operand
+  // in all four lanes (vm::Invocation::quad), from which d/dx and d/dy of any value follow.
+  void run_quad(const std::array<PixelInput, 4>& in, const ConstantBank& constants,
+                const TextureUnit& textures, std::array<PixelOutput, 4>& out) const;
+  // The same, recording lane `traced`'s instructions into `trace` (as run_pixel's trace).
+  void run_quad(const std::array<PixelInput, 4>& in, const ConstantBank& constants,
+                const TextureUnit& textures, std::array<PixelOutput, 4>& out,
+                InstructionTrace& trace, int traced) const;
+
 private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
