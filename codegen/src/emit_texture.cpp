@@ -110,7 +110,7 @@ Id Emitter::fetch_unorm8(Id si, Id uv) {
   return fmul(sum, splat(f(0x1p-24f)));
 }
 
-Id Emitter::sample(uint32_t stage, Id coord, std::optional<Id> bias) {
+Id Emitter::sample(uint32_t stage, Id coord, std::optional<Id> bias, std::optional<Id> lod) {
   const Id var = sampler_var(stage);
   const ir::SamplerType type = sampler_type(stage);
   const Id image = b.type_image(t_float, dim_of(type));
@@ -123,6 +123,9 @@ Id Emitter::sample(uint32_t stage, Id coord, std::optional<Id> bias) {
   // A POINT/CLAMP read at the clamped coordinate: the same texel, and no u·N that
   // overflows the device's conversion to an index (CodegenOptions::stage_point_clamped).
   if (type == ir::SamplerType::Tex2D && opt.stage_point_clamped[stage & 15]) c = clamp_uv01(c);
+  if (lod)
+    return b.op(Op::OpImageSampleExplicitLod, t_vec4,
+                {si, c, static_cast<uint32_t>(spv::ImageOperandsMask::Lod), *lod});
   if (bias)
     return b.op(Op::OpImageSampleImplicitLod, t_vec4,
                 {si, c, static_cast<uint32_t>(spv::ImageOperandsMask::Bias), *bias});
@@ -200,11 +203,13 @@ bool Emitter::emit_texture(const ir::Instruction& ins, std::optional<PendingStor
   case Opcode::TexLd14: return result(sample(m, load_src(ins.src[0])));
   case Opcode::TexLd:
   case Opcode::TexLdP:
-  case Opcode::TexLdB: {
+  case Opcode::TexLdB:
+  case Opcode::TexLdL: {
     const uint32_t s = ins.src[1].index;
     Id c = load_src(ins.src[0]);
     if (ins.op == Opcode::TexLdP) return result(sample(s, fdiv(c, splat(comp(c, 3)))));
     if (ins.op == Opcode::TexLdB) return result(sample(s, c, comp(c, 3)));
+    if (ins.op == Opcode::TexLdL) return result(sample(s, c, std::nullopt, comp(c, 3)));
     return result(sample(s, c));
   }
   case Opcode::TexCoord: {
