@@ -317,8 +317,8 @@ void register_glow_command(CLI::App& app) {
       ->excludes(scene);
   sub->add_option("--tier", f->tier,
                   "dx9 (Listings 1 + 2) | dx8 (Listings 3 + 4) | dx7 (two fixed-function "
-                  "texture stages, 8-bit weights)")
-      ->check(CLI::IsMember({"dx9", "dx8", "dx7"}));
+                  "texture stages, 8-bit weights) | dx9c (ps_3_0 blur: one loop of texldl)")
+      ->check(CLI::IsMember({"dx9", "dx8", "dx7", "dx9c"}));
   sub->add_option("--weight-rounding", f->weight_rounding,
                   "Tier dx7: how blur weights become 8-bit vertex colours: plain | error-carry "
                   "(default: the scene's, error-carry when it names none)")

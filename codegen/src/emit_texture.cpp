@@ -110,7 +110,7 @@ Id Emitter::fetch_unorm8(Id si, Id uv) {
   return fmul(sum, splat(f(0x1p-24f)));
 }
 
-Id Emitter::sample(uint32_t stage, Id coord, std::optional<Id> bias,
+Id Emitter::sample(uint32_t stage, Id coord, std::optional<Id> bias, std::optional<Id> lod,
                    std::optional<std::pair<Id, Id>> grad) {
   const Id var = sampler_var(stage);
   const ir::SamplerType type = sampler_type(stage);
@@ -130,6 +130,9 @@ Id Emitter::sample(uint32_t stage, Id coord, std::optional<Id> bias,
     return b.op(Op::OpImageSampleExplicitLod, t_vec4,
                 {si, c, static_cast<uint32_t>(spv::ImageOperandsMask::Grad), coords(grad->first),
                  coords(grad->second)});
+  if (lod)
+    return b.op(Op::OpImageSampleExplicitLod, t_vec4,
+                {si, c, static_cast<uint32_t>(spv::ImageOperandsMask::Lod), *lod});
   if (bias)
     return b.op(Op::OpImageSampleImplicitLod, t_vec4,
                 {si, c, static_cast<uint32_t>(spv::ImageOperandsMask::Bias), *bias});
@@ -208,14 +211,16 @@ bool Emitter::emit_texture(const ir::Instruction& ins, std::optional<PendingStor
   case Opcode::TexLd:
   case Opcode::TexLdP:
   case Opcode::TexLdB:
-  case Opcode::TexLdD: {
+  case Opcode::TexLdD:
+  case Opcode::TexLdL: {
     const uint32_t s = ins.src[1].index;
     Id c = load_src(ins.src[0]);
     if (ins.op == Opcode::TexLdD)
-      return result(
-          sample(s, c, std::nullopt, std::pair{load_src(ins.src[2]), load_src(ins.src[3])}));
+      return result(sample(s, c, std::nullopt, std::nullopt,
+                           std::pair{load_src(ins.src[2]), load_src(ins.src[3])}));
     if (ins.op == Opcode::TexLdP) return result(sample(s, fdiv(c, splat(comp(c, 3)))));
     if (ins.op == Opcode::TexLdB) return result(sample(s, c, comp(c, 3)));
+    if (ins.op == Opcode::TexLdL) return result(sample(s, c, std::nullopt, comp(c, 3)));
     return result(sample(s, c));
   }
   case Opcode::TexCoord: {

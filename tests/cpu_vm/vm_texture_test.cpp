@@ -188,6 +188,17 @@ TEST(VmTexture, Ps20TexldTexldpTexldb) {
   EXPECT_EQ(tex.last_bias, 2.0f);
 }
 
+// texldl samples at xyzw as given; its lod (.w) is no bias: every texture has one level,
+// which any lod selects (NUMERICS.md, texldl).
+TEST(VmTexture, Ps30TexldlSamplesTheCoordinateWithoutBias) {
+  EchoTextures tex;
+  PixelInput in = coords({{0.5f, 0.25f, 1, 3}});
+  auto out = run("ps_3_0\ndcl_texcoord0 v0\ndcl_2d s1\ntexldl r0, v0, s1\nmov oC0, r0\n", in, tex);
+  EXPECT_VEC4(out.color[0], 0.5f, 0.25f, 1, 3);
+  EXPECT_EQ(tex.last_stage, 1);
+  EXPECT_EQ(tex.last_bias, 0.0f);
+}
+
 TEST(VmTexture, Ps1xTextureResultsClampToRange) {
   // ps_1_1 with max 1: a sample of (2, −3, 0.5, 1) lands in t0 as (1, −1, 0.5, 1).
   ConstTextures tex;

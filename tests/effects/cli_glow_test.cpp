@@ -62,7 +62,7 @@ TEST_F(CliGlow, MissingSceneFileIsAnErrorAndWritesNothing) {
 TEST_F(CliGlow, SceneFileThreeWaysBothTiers) {
   const fs::path scene = dir / "small.json";
   std::ofstream(scene) << R"({"size": [96, 54], "glow": {"downsample": 2, "format": "rgba8"}})";
-  for (const char* tier : {"dx9", "dx8"}) {
+  for (const char* tier : {"dx9", "dx8", "dx9c"}) {
     const fs::path log = dir / "log.txt", out = dir / tier;
     const int code = run_cli("glow -q --tier " + std::string(tier) + " --scene " + scene.string() +
                                  " -o " + out.string(),

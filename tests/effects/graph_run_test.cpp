@@ -83,7 +83,7 @@ TEST(GlowCpu, NothingGlowsGivesTheSceneBack) {
 // One glowing texel, no downsampling, σ = 1: the glow is w_i·w_j·colour·alpha around it
 // (the separable convolution), and the final frame is scene + glow where the glow texel
 // is read at a texel centre (n = 1: exactly).
-TEST(GlowCpu, OneTexelGlowsAsTheOuterProductOfTheTaps) {
+void one_texel_glows_as_the_outer_product(Tier tier) {
   img::Image scene(32, 16);
   for (size_t i = 0; i < scene.rgba.size(); i += 4) scene.rgba[i + 3] = 0.0f;
   float* lit = scene.at(12, 7);
@@ -94,7 +94,8 @@ TEST(GlowCpu, OneTexelGlowsAsTheOuterProductOfTheTaps) {
   p.downsample = 1;
   p.intensity = 1; // final = scene + glow
   p.profile = BlurProfile{{{1.0, 1.0}}, std::nullopt, 0};
-  PlanResult plan_built = build_glow_dx9(p);
+  p.tier = tier;
+  PlanResult plan_built = build_glow(p);
   ASSERT_TRUE(plan_built) << plan_built.message();
   EffectPlan& plan = *plan_built;
   ASSERT_EQ(plan.taps.size(), 7u);
@@ -113,6 +114,14 @@ TEST(GlowCpu, OneTexelGlowsAsTheOuterProductOfTheTaps) {
         ASSERT_NEAR(glow.at(x, y)[c], want, 1e-6) << x << "," << y << " c" << c;
         ASSERT_NEAR(final_frame.at(x, y)[c], scene.at(x, y)[c] + want, 1e-6);
       }
+}
+
+TEST(GlowCpu, OneTexelGlowsAsTheOuterProductOfTheTaps) {
+  one_texel_glows_as_the_outer_product(Tier::Dx9);
+}
+// Tier dx9c: the same blur as one ps_3_0 loop of texldl reads per axis.
+TEST(GlowCpu, Dx9cOneTexelGlowsAsTheOuterProductOfTheTaps) {
+  one_texel_glows_as_the_outer_product(Tier::Dx9c);
 }
 
 } // namespace

@@ -138,7 +138,7 @@ TEST_P(ThreeWay, EveryPairAgreesOnEveryPass) {
 
 std::vector<Case> all_cases() {
   std::vector<Case> out;
-  for (Tier t : {Tier::Dx9, Tier::Dx8, Tier::Dx7})
+  for (Tier t : {Tier::Dx9, Tier::Dx8, Tier::Dx7, Tier::Dx9c})
     for (unsigned n : {1u, 2u, 4u})
       for (img::Format f : {img::Format::RGBA8, img::Format::RGBA16F, img::Format::RGBA32F})
         for (bool half : {true, false})
@@ -198,12 +198,26 @@ INSTANTIATE_TEST_SUITE_P(Glow, ThreeWayFullSize,
                          // dx9 ds4 and dx8 ds2 pass as well, left out for time).
                          ::testing::Values(FullSize{Tier::Dx9, 4, img::Format::RGBA32F},
                                            FullSize{Tier::Dx9, 2, img::Format::RGBA8},
-                                           FullSize{Tier::Dx8, 4, img::Format::RGBA8}),
+                                           FullSize{Tier::Dx8, 4, img::Format::RGBA8},
+                                           FullSize{Tier::Dx9c, 4, img::Format::RGBA16F}),
                          [](const ::testing::TestParamInfo<FullSize>& info) {
                            return std::string(tier_name(info.param.tier)) + "_ds" +
                                   std::to_string(info.param.downsample) + "_" +
                                   std::string(img::format_name(info.param.format));
                          });
+
+// Tier dx9c states its blur kernel (the loop's constants): its taps as the model takes them.
+analytic::TapExtraction kernel_taps(const PassDesc& d) {
+  analytic::TapExtraction ex;
+  for (const KernelTap& k : d.kernel) {
+    analytic::Tap t;
+    t.sampler = k.stage;
+    t.offset = k.offset;
+    t.weight = k.weight;
+    ex.taps.push_back(t);
+  }
+  return ex;
+}
 
 // The half-texel rule on the analytic blur passes (the first pass of each axis, which
 // replaces its target, so it holds that pass's taps alone), both ways, for each tier.
@@ -223,7 +237,9 @@ void check_half_texel_rule(Tier tier, bool half_texel) {
   AnalyticPassDevice analytic;
   EffectRun run = run_effect(plan, scene, analytic, true);
   ASSERT_TRUE(run.run.ok()) << run.run.message();
-  const unsigned per_pass = tier == Tier::Dx9 ? kTapsPerBlurPassDx9 : kTapsPerBlurPassDx8;
+  const unsigned per_pass = tier == Tier::Dx9    ? kTapsPerBlurPassDx9
+                            : tier == Tier::Dx9c ? kTapsPerBlurPassDx9c
+                                                 : kTapsPerBlurPassDx8;
   for (const char* name : {"blur_h.0", "blur_v.0"}) {
     SCOPED_TRACE(name);
     const bool vertical = name[5] == 'v';
@@ -240,9 +256,13 @@ void check_half_texel_rule(Tier tier, bool half_texel) {
     ASSERT_EQ(d.textures[0].sampler.address_v, cpu::AddressMode::Clamp);
     const img::Image& source = run.images.at(d.textures[0].texture);
     ir::Result<analytic::TapExtraction> ex =
-        analytic::extract_taps(*d.vs, d.vs_constants.f, *d.ps, d.ps_constants.f);
+        tier == Tier::Dx9c
+            ? ir::Result<analytic::TapExtraction>(kernel_taps(d))
+            : analytic::extract_taps(*d.vs, d.vs_constants.f, *d.ps, d.ps_constants.f);
     ASSERT_TRUE(ex) << ex.message();
-    ASSERT_EQ(ex->taps.size(), per_pass);
+    // dx9c loops over the pass's taps only (no padding).
+    ASSERT_EQ(ex->taps.size(),
+              tier == Tier::Dx9c ? std::min<size_t>(per_pass, plan.taps.size()) : per_pass);
     // The intended taps are the profile's first taps along the axis (padding: weight 0).
     const auto texel_taps =
         tierlift::test::intended_texel_taps(ex->taps, source.width, source.height);
@@ -293,6 +313,13 @@ TEST(ThreeWayHalfTexel, Dx8WithHalfTexelBlurIsThePlainConvolution) {
 }
 TEST(ThreeWayHalfTexel, Dx8WithoutHalfTexelBlurShiftsAsTheCornerModelSays) {
   check_half_texel_rule(Tier::Dx8, false);
+}
+
+TEST(ThreeWayHalfTexel, Dx9cWithHalfTexelBlurIsThePlainConvolution) {
+  check_half_texel_rule(Tier::Dx9c, true);
+}
+TEST(ThreeWayHalfTexel, Dx9cWithoutHalfTexelBlurShiftsAsTheCornerModelSays) {
+  check_half_texel_rule(Tier::Dx9c, false);
 }
 
 // A pass the model cannot take is an error naming the pass and the instruction.

@@ -188,3 +188,21 @@ TEST(LaterProfiles, RelativeInputsAndOutputsAreRefusedAtTheOperand) {
   p.code[0].src[0].file = RegFile::Const; // c[aL + 1] runs
   EXPECT_TRUE(check_executable(p, "SPIR-V").ok());
 }
+
+// texldl runs in ps_3_0 (every texture has one level); vs_3_0's vertex texture fetch has no
+// vertex sampler stages to read yet and is refused at the instruction.
+TEST(LaterProfiles, TexldlRunsInPixelShadersOnly) {
+  Program p;
+  p.profile = Profile::ps_3_0;
+  Instruction texldl;
+  texldl.op = Opcode::TexLdL;
+  texldl.loc = {1, 3, 1, 6};
+  p.code.push_back(texldl);
+  EXPECT_TRUE(check_executable(p, "SPIR-V").ok());
+  p.profile = Profile::vs_3_0;
+  Status s = check_executable(p, "the interpreter");
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.diagnostics()[0].loc.line, 3u);
+  EXPECT_NE(s.diagnostics()[0].message.find("texldl in vs_3_0 (vertex texture fetch"),
+            std::string::npos);
+}

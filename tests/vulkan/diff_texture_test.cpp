@@ -29,6 +29,11 @@ const TexCase kTexCases[] = {
     {"texldb", kVs20, "ps_2_0\ndcl t0\ndcl_2d s0\ntexldb r0, t0, s0\nmul r0, r0, t0.x\nmov oC0, r0\n"},
     {"texkill", kVs20, "ps_2_0\ndcl t0\ndcl_2d s0\ndcl_2d s1\ntexld r1, t0, s1\ntexkill r1\n"
                        "texld r0, t0, s0\nmov oC0, r0\n"},
+    // ps_3_0 texldl: lod w = 1 (from the vertex stage), then lod 8·u − 4 ∈ [−10, 10] per pixel:
+    // one mip level, so every lod reads level 0 with the stage's filter.
+    {"texldl", kVs20, "ps_3_0\ndcl_texcoord0 v0\ndcl_2d s0\ntexldl r0, v0, s0\nmov oC0, r0\n"},
+    {"texldl_lod", kVs20, "ps_3_0\ndef c1, 8, -4, 0, 0\ndcl_texcoord0 v0\ndcl_2d s0\nmov r1, v0\n"
+                          "mad r1.w, v0.x, c1.x, c1.y\ntexldl r0, r1, s0\nmov oC0, r0\n"},
     {"tex", kVs11, "ps.1.1\ntex t0\nmov r0, t0\n"},
     {"tex_projected", kVs11, "ps.1.1\ntex t0\nmov r0, t0\n", true},
     {"texcoord", kVs11, "ps.1.1\ntexcoord t0\nmov r0, t0\n"},

@@ -158,10 +158,12 @@ std::string run_analytic_pass(const PassDesc& pass, const EffectGraph& graph, Im
                               MidpointMasks& midpoints, std::vector<std::string>* notes) {
   if (!pass.vs || !pass.ps)
     return fmt::format("pass '{}': needs a vertex and a pixel listing", pass.name);
-  // The model reads taps off straight-line listings; i# and b# only steer flow control.
+  // The model reads taps off straight-line listings; i# and b# only steer flow control. A
+  // Kernel pass states its taps, so its listing's flow control is the devices' concern.
   const pass::ConstantBank plain;
-  if (pass.vs_constants.i != plain.i || pass.ps_constants.i != plain.i ||
-      pass.vs_constants.b != plain.b || pass.ps_constants.b != plain.b)
+  const bool flow_constants = pass.vs_constants.i != plain.i || pass.ps_constants.i != plain.i ||
+                              pass.vs_constants.b != plain.b || pass.ps_constants.b != plain.b;
+  if (pass.analytic != AnalyticForm::Kernel && flow_constants)
     return fmt::format("pass '{}': the analytic model takes no integer or boolean constants",
                        pass.name);
   if (pass.analytic == AnalyticForm::Coverage) {
@@ -195,14 +197,19 @@ std::string run_analytic_pass(const PassDesc& pass, const EffectGraph& graph, Im
   std::vector<std::string> pass_notes;
   std::optional<img::ImageResult> result;
   if (pass.analytic == AnalyticForm::Kernel) {
-    // A GLSL pass: the model cannot read GLSL, so it takes the kernel the pass states (taps
-    // at the sample point plus an offset), interpolating the coordinate in double.
+    // A GLSL pass or a loop (tier dx9c): the model cannot read them, so it takes the kernel
+    // the pass states (taps at the sample point plus an offset), interpolating the coordinate
+    // in double, or as the devices do when the offset is added in the pixel stage.
     std::vector<analytic::Tap> taps;
     for (const KernelTap& k : pass.kernel) {
       analytic::Tap t;
       t.sampler = k.stage;
       t.offset = k.offset;
       t.weight = k.weight;
+      if (k.pixel_add) {
+        t.corners = {{{0, 0}, {1, 0}, {0, 1}, {1, 1}}}; // the quad uv, passed on unchanged
+        t.pixel_add = {{static_cast<float>(k.offset[0]), static_cast<float>(k.offset[1])}};
+      }
       taps.push_back(t);
     }
     result.emplace(analytic::linear_pass(taps, in, &pass_notes));

@@ -154,6 +154,7 @@ public:
   void blur(const std::vector<BlurTap>& taps, bool vertical, std::string_view source,
             std::string_view target, std::vector<PassDesc>& out) const {
     if (r_.stage_blur) return blur_stages(taps, vertical, source, target, out);
+    if (r_.loop_blur) return blur_loop(taps, vertical, source, target, out);
     const double h = p_.half_texel ? 0.5 : 0.0;
     const unsigned per = r_.taps_per_blur_pass;
     const size_t count = (taps.size() + per - 1) / per;
@@ -179,6 +180,39 @@ public:
         d.ps_constants_per_frame.push_back(std::move(c));
       }
       bind(d, 0, source, p_.half_texel ? pass::Filter::Point : pass::Filter::Linear, per);
+      d.blend = i == 0 ? pass::BlendMode::Replace : pass::BlendMode::OneOne;
+      out.push_back(std::move(d));
+    }
+  }
+
+  // Tier dx9c: pass i loops over taps i·per … (at most per of them, no padding): tap k of the
+  // pass has its uv offset in ps c(2k+1) and its weight in c(2k+2), i0 = (n, 1, 2, 0). The
+  // analytic model takes the same kernel as stated, with the offsets and weights the
+  // devices see (the float constants), since it cannot read a loop.
+  void blur_loop(const std::vector<BlurTap>& taps, bool vertical, std::string_view source,
+                 std::string_view target, std::vector<PassDesc>& out) const {
+    const double h = p_.half_texel ? 0.5 : 0.0;
+    const size_t per = r_.taps_per_blur_pass;
+    for (size_t first = 0, i = 0; first < taps.size(); first += per, ++i) {
+      PassDesc d = listing_pass(fmt::format("{}.{}", vertical ? "blur_v" : "blur_h", i), l_.blur_vs,
+                                l_.blur_ps, target);
+      const size_t n = std::min(per, taps.size() - first);
+      d.ps_constants.f.push_back({0, 0, 0, 0}); // c0: the listing's def
+      d.analytic = AnalyticForm::Kernel;
+      for (size_t t = first; t < first + n; ++t) {
+        const double du = vertical ? h : taps[t].offset + h, dv = vertical ? taps[t].offset + h : h;
+        const pass::Vec4 offset{float(du / gw_), float(dv / gh_), 0, 0};
+        const pass::Vec4 weight = splat(taps[t].weight * p_.weight_scale);
+        d.ps_constants.f.push_back(offset);
+        d.ps_constants.f.push_back(weight);
+        KernelTap k;
+        k.pixel_add = true;
+        k.offset = {offset[0], offset[1]};
+        k.weight = {weight[0], weight[1], weight[2], weight[3]};
+        d.kernel.push_back(k);
+      }
+      d.ps_constants.i[0] = {static_cast<int32_t>(n), 1, 2, 0};
+      bind(d, 0, source, p_.half_texel ? pass::Filter::Point : pass::Filter::Linear, 1);
       d.blend = i == 0 ? pass::BlendMode::Replace : pass::BlendMode::OneOne;
       out.push_back(std::move(d));
     }
@@ -306,6 +340,10 @@ std::string check_params(const EffectParams& p, const TierRecipe& r) {
   if (!std::isfinite(p.weight_scale) || p.weight_scale < 0)
     return fmt::format("weight scale {}: expected a finite value >= 0", p.weight_scale);
   if (r.taps_per_blur_pass == 0) return fmt::format("tier {}: no taps per blur pass", r.tier);
+  if (r.loop_blur && !p.weight_scale_ramp.empty())
+    return fmt::format("weight scale ramp: tier {} states its blur kernel to the analytic model "
+                       "once, so its weights cannot ramp; use tier dx9",
+                       r.tier);
   const GlowFog& fog = p.context.fog;
   if (fog.on && !(std::isfinite(fog.start) && std::isfinite(fog.end) && fog.start < fog.end))
     return fmt::format("fog start {} and end {}: expected finite values, start < end", fog.start,

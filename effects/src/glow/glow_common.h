@@ -48,6 +48,10 @@ struct TierRecipe {
   // quad: offsets in vs c0/c1, the weights as the D3DCOLOR in vs c8: rgb the first, alpha
   // the second) instead of listings.blur_vs/blur_ps, which are then not loaded.
   std::shared_ptr<const tss::Lowered> stage_blur;
+  // Tier dx9c: listings.blur_ps is ONE loop over a pass's taps (i0 = (taps, 1, 2, 0), tap k's
+  // offset in ps c(2k+1), its weight in c(2k+2)), and the analytic model takes the kernel
+  // the pass states (AnalyticForm::Kernel) instead of reading the listing.
+  bool loop_blur = false;
   WeightRounding rounding = WeightRounding::ErrorCarry;
 };
 

@@ -78,10 +78,16 @@ void explain_float_taps(const EffectGraph& graph, img::Format format, double bou
   const double threshold = half ? std::ldexp(1.0, -25) : std::ldexp(1.0, -126);
   double smallest = INFINITY;
   for (const PassDesc& p : graph.passes)
-    if (is_blur(p, "blur_h") || is_blur(p, "blur_v"))
+    if (is_blur(p, "blur_h") || is_blur(p, "blur_v")) {
+      // A stated kernel (tier dx9c) keeps offsets beside the weights in its constants.
+      for (const KernelTap& k : p.kernel)
+        for (double w : k.weight)
+          if (w != 0) smallest = std::min(smallest, std::abs(w));
+      if (p.analytic == AnalyticForm::Kernel) continue;
       for (const pass::Vec4& c : p.ps_constants.f)
         for (float w : c)
           if (w != 0) smallest = std::min(smallest, std::abs(double(w)));
+    }
   if (!std::isfinite(smallest)) return; // no weights in constants (tier dx7's vertex colours)
   const double adds = smallest * bound;
   r.kept.push_back(
@@ -289,8 +295,9 @@ PrunedGraph prune_glow(const EffectPlan& plan, const img::Image& scene) {
                  (!p.ps || p.ps->profile != ir::Profile::ps_2_0);
         }))
       r.kept.push_back({"every blur pass", "its pixel listing is ps.1.x (tiers dx8, dx7), whose "
-                                           "registers round on their own: the half-step bound "
-                                           "is proven for ps_2_0 arithmetic only"});
+                                           "registers round on their own, or ps_3_0 (tier "
+                                           "dx9c): the half-step bound is proven for ps_2_0 "
+                                           "arithmetic only"});
   } else {
     explain_float_taps(r.graph, plan.graph.textures.front().format, most, r);
   }

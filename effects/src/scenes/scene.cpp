@@ -62,9 +62,10 @@ std::vector<std::string> glow_warnings(const EffectParams& params) {
     const ir::Result<std::vector<BlurTap>> sampled =
         sample_blur_profile(params.profile, params.downsample);
     const size_t taps = sampled ? sampled->size() : 0;
-    const unsigned per = params.tier == Tier::Dx8   ? kTapsPerBlurPassDx8
-                         : params.tier == Tier::Dx7 ? kTapsPerBlurPassDx7
-                                                    : kTapsPerBlurPassDx9;
+    const unsigned per = params.tier == Tier::Dx8    ? kTapsPerBlurPassDx8
+                         : params.tier == Tier::Dx7  ? kTapsPerBlurPassDx7
+                         : params.tier == Tier::Dx9c ? kTapsPerBlurPassDx9c
+                                                     : kTapsPerBlurPassDx9;
     const size_t passes = (taps + per - 1) / per;
     if (passes > 4)
       out.push_back(fmt::format("rgba8 with {} blur passes per axis: each ONE/ONE pass rounds "

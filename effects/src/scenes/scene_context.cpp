@@ -75,7 +75,7 @@ void read_fog(const Json& v, const std::string& at, FieldChecker& c, const std::
     fog.depth = read_scene_sized(*d, at + "/depth", c, base_dir, p, &fog.depth_file);
   if (c.failed()) return;
   // Tiers dx8 and dx7 draw the fog in ps.1.1: its constants must fit [-1, 1].
-  if (p.tier != Tier::Dx9)
+  if (p.tier == Tier::Dx8 || p.tier == Tier::Dx7)
     if (std::string why = fog_ps1x_limit(fog); !why.empty())
       c.error(at + "/end", fmt::format("tier {}: {}", tier_name(p.tier), why));
   p.context.fog = std::move(fog);

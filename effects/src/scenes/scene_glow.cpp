@@ -134,8 +134,9 @@ void read_glow(const Json& g, FieldChecker& c, const std::string& base_dir, Effe
       if (auto tier = parse_tier(*name))
         p.tier = *tier;
       else
-        c.error(at + "/tier", fmt::format("{} is not a tier; expected \"dx9\", \"dx8\" or \"dx7\"",
-                                          FieldChecker::shown(*v)));
+        c.error(at + "/tier",
+                fmt::format("{} is not a tier; expected \"dx9\", \"dx8\", \"dx7\" or \"dx9c\"",
+                            FieldChecker::shown(*v)));
     }
   if (const Json* v = member(g, "downsample"))
     if (auto n = c.integer(*v, at + "/downsample", 1, 4)) p.downsample = unsigned(*n);
@@ -150,7 +151,7 @@ void read_glow(const Json& g, FieldChecker& c, const std::string& base_dir, Effe
     }
   if (const Json* v = member(g, "intensity")) {
     // A ps.1.x constant holds at most 1; the dx8 composite reaches 4 with _x4 (glow.h).
-    const bool dx8 = p.tier != Tier::Dx9; // dx8 and dx7
+    const bool dx8 = p.tier == Tier::Dx8 || p.tier == Tier::Dx7;
     if (dx8 && v->is_number() && v->get<double>() > 4 && v->get<double>() <= kIntensity.hi)
       c.error(at + "/intensity", fmt::format("{} is outside 0..4, the range of tier {}",
                                              FieldChecker::shown(*v), tier_name(p.tier)));

@@ -28,7 +28,7 @@ void read_radial(const Json& v, FieldChecker& c, EffectParams& glow, RadialParam
   if (!c.object(v, at, kRadialKeys)) return;
   if (const Json* t = member(v, "tier"))
     if (auto name = c.string(*t, at + "/tier")) {
-      if (auto tier = parse_tier(*name); tier && *tier != Tier::Dx7) // listings: dx9, dx8
+      if (auto tier = parse_tier(*name); tier && (*tier == Tier::Dx9 || *tier == Tier::Dx8))
         glow.tier = *tier;
       else
         c.error(at + "/tier",

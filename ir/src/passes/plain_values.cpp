@@ -82,7 +82,8 @@ int sampled_stage(const Instruction& ins) {
   case Opcode::TexLd14: return ins.dst ? static_cast<int>(ins.dst->index) : -1;
   case Opcode::TexLd:
   case Opcode::TexLdP:
-  case Opcode::TexLdB: return ins.src.size() >= 2 ? static_cast<int>(ins.src[1].index) : -1;
+  case Opcode::TexLdB:
+  case Opcode::TexLdL: return ins.src.size() >= 2 ? static_cast<int>(ins.src[1].index) : -1;
   default: return -1;
   }
 }

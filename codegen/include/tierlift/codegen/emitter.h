@@ -176,8 +176,11 @@ public:
   // Texture support (emit_texture.cpp).
   Id sampler_var(uint32_t stage);
   ir::SamplerType sampler_type(uint32_t stage) const;
-  // `grad`: texldd's gradients (vec4 d/dx, d/dy of the coordinates), as explicit Grad operands.
+  // `bias`: texldb's lod bias (implicit lod plus bias); `lod`: texldl's explicit lod
+  // (OpImageSampleExplicitLod); `grad`: texldd's gradients (vec4 d/dx, d/dy of the
+  // coordinates), as explicit Grad operands. At most one of them.
   Id sample(uint32_t stage, Id coord_vec4, std::optional<Id> bias = std::nullopt,
+            std::optional<Id> lod = std::nullopt,
             std::optional<std::pair<Id, Id>> grad = std::nullopt);
   bool fetches(uint32_t stage) const;               // CodegenOptions::stage_fetch_unorm8 applies
   Id fetch_unorm8(Id sampled_image, Id coord_vec2); // the texel's k/255.0f

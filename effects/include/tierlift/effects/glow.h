@@ -38,6 +38,15 @@
 //   extract / downsample / composite  the dx8 tier's ps.1.x helper listings
 //   ps.1.x registers clamp to [-1, 1] (MaxPixelShaderValue 1 whatever the scene says), which
 //   is Direct3D 7's per-stage saturation for the non-negative values of the blur.
+// Tier dx9c (shader model 3 blur, glow_dx9c.cpp):
+//   extract / downsample / composite  the dx9 tier's vs.2.0 + ps.2.0 helper listings
+//   blur        glow/blur_loop_vs30.vsh + glow/blur_loop_ps30.psh: up to 64 taps a pass in
+//               ONE `loop aL, i0` (i0 = (taps, 1, 2, 0)), each tap read by texldl at LOD 0
+//               from uv + c[aL] and weighted by c[aL + 1] (ps c(2k+1) = offset of tap k,
+//               c(2k+2) = its weight); every read through sampler s0. The analytic model
+//               takes the pass's kernel as stated (AnalyticForm::Kernel: the same offsets
+//               and weights, as floats), since it reads straight-line listings only. A ramped
+//               weight scale is refused (the stated kernel has one set of weights).
 // Blur constants follow the article's rule: tap k of a texture W wide has the offset
 // (k + ½)/W, the half texel added on the CPU (`half_texel`; without it the taps land on texel
 // corners and bilinear filtering averages the neighbours, as on D3D9 hardware); padding taps
@@ -81,14 +90,17 @@ inline constexpr std::string_view kSavedTexture = "afterimage_saved";
 inline constexpr unsigned kTapsPerBlurPassDx9 = 8; // Listing 1's eight oT#
 inline constexpr unsigned kTapsPerBlurPassDx8 = 4; // Listing 3's four oT#
 inline constexpr unsigned kTapsPerBlurPassDx7 = 2; // two texture stages
+// dx9c: one loop over the taps; 64 taps use c1..c128 (two constants a tap) of ps_3_0's 224.
+inline constexpr unsigned kTapsPerBlurPassDx9c = 64;
 // The built-in stage states of a dx7 blur quad (a scene's "listings" may replace it).
 inline constexpr std::string_view kDx7BlurStates = "dx7/blur_pair.tss";
 
 // dx9: vs.2.0 + ps.2.0, Listings 1 + 2, 8 taps a pass. dx8: vs.1.1 + ps.1.3, Listings 3 + 4,
 // 4 taps a pass, every helper pass in vs.1.1 / ps.1.x as well (see the top of this file).
 // dx7: two fixed-function texture stages, 2 taps a quad, 8-bit weights (see above).
-enum class Tier { Dx9, Dx8, Dx7 };
-std::string_view tier_name(Tier tier);                 // "dx9", "dx8", "dx7"
+// dx9c: dx9's helper passes with a vs_3_0 + ps_3_0 blur, one loop of texldl (see above).
+enum class Tier { Dx9, Dx8, Dx7, Dx9c };
+std::string_view tier_name(Tier tier);                 // "dx9", "dx8", "dx7", "dx9c"
 std::optional<Tier> parse_tier(std::string_view name); // nullopt for anything else
 // Every tier, in declaration order: the enum's values from 0 on for as long as tier_name and
 // parse_tier round-trip them, so a tier added to the enum, tier_name and parse_tier joins
@@ -199,6 +211,7 @@ PlanResult build_glow(const EffectParams& params);
 PlanResult build_glow_dx9(const EffectParams& params);
 PlanResult build_glow_dx8(const EffectParams& params);
 PlanResult build_glow_dx7(const EffectParams& params);
+PlanResult build_glow_dx9c(const EffectParams& params);
 
 // The after-image's loop gain: g (Sources), or g·S² (Glow: S = the tap sum of one axis
 // times the weight scale), with g and the scale at their largest over the frames. 0: off.

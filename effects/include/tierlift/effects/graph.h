@@ -67,6 +67,10 @@ struct KernelTap {
   uint32_t stage = 0;
   std::array<double, 2> offset{};
   std::array<double, 4> weight{};
+  // The pixel listing adds `offset` (fp32 values) to the quad uv it receives unchanged, in
+  // one fp32 add per axis (tier dx9c): the model then computes the coordinate as the devices
+  // do. False: the GLSL pass's coordinate, interpolated in double.
+  bool pixel_add = false;
 };
 
 struct PassDesc {

@@ -118,12 +118,21 @@ public:
     const Tap& t = taps_[k];
     const StageTexture* st = t.sampler < kMaxStages ? s_.stage[t.sampler] : nullptr;
     if (!st) return {0, 0, 0, 1};
-    const auto uv = coords_[k]->at(i, j);
+    const auto uv = fp32_coord(k, i, j);
     auto v =
         sample_fp32(*st->image, uv[0], uv[1], st->sampler, in_.model.conventions.subtexel_bits);
     if (in_.ps1x_clamp)
       for (float& c : v) c = clamp_fp32(c);
     return v;
+  }
+
+  // Tap k's coordinate as the devices compute it: the fp32 interpolation, plus the pixel
+  // listing's fp32 add when the tap has one.
+  std::array<float, 2> fp32_coord(size_t k, uint32_t i, uint32_t j) const {
+    const auto uv = coords_[k]->at(i, j);
+    const auto& add = taps_[k].pixel_add;
+    if (!add) return {uv[0], uv[1]};
+    return {uv[0] + (*add)[0], uv[1] + (*add)[1]};
   }
 
   float clamp_fp32(float v) const {
@@ -138,7 +147,7 @@ private:
                 uint32_t j, Rgba* texel_max = nullptr) const {
     const int bits = in_.model.conventions.subtexel_bits;
     if (coords_[k]) {
-      const auto uv = coords_[k]->at(i, j);
+      const auto uv = fp32_coord(k, i, j);
       return sample_at_float(image, uv[0], uv[1], sampler, bits, texel_max);
     }
     const Tap& t = taps_[k];

@@ -5,10 +5,13 @@
 
 #include "linear_forms.h"
 #include "tierlift/ir/opcodes.h"
+#include "tierlift/ir/sm3_interface.h"
 
 namespace tierlift::analytic {
 
-ir::Status check_position_passthrough(const ir::Program& vs) {
+ir::Status check_position_passthrough(const ir::Program& listing) {
+  // A vs_3_0 writes its position to the o# declared dcl_position: seen as oPos here.
+  const ir::Program vs = ir::link_by_semantic(listing);
   uint32_t position = 0; // D3D8-style listings without declarations feed v0
   for (const ir::Declaration& d : vs.decls)
     if (d.reg.file == ir::RegFile::Input && d.usage == ir::DeclUsage::Position) {

@@ -83,7 +83,7 @@ void prepare_texture(Step& s, const ir::Instruction& ins, const Prepared& p) {
   }
   s.dst = decode_dst(*ins.dst, ins.mods, p);
   if (ins.op == Opcode::TexLd || ins.op == Opcode::TexLdP || ins.op == Opcode::TexLdB ||
-      ins.op == Opcode::TexLdD) {
+      ins.op == Opcode::TexLdD || ins.op == Opcode::TexLdL) {
     if (ins.src.size() < 2) broken(ins, "missing sampler");
     s.aux = static_cast<int32_t>(ins.src[1].index);
   }

@@ -223,6 +223,13 @@ template <Denormals D> void ex_texldb(const Step& s, Invocation& inv) {
   store(s.dst, sample(inv, s.aux, c, c[3]), inv);
 }
 
+// texldl: the level of detail is src.w. Every texture the devices bind has one mip level, and
+// D3D9 clamps the level to [MAXMIPLEVEL, levels − 1] = [0, 0], so any lod (NaN included)
+// reads level 0 with the stage's filter, as texld does (NUMERICS.md, texldl).
+template <Denormals D> void ex_texldl(const Step& s, Invocation& inv) {
+  store(s.dst, sample(inv, s.aux, fetch(s.src[0], inv)), inv);
+}
+
 } // namespace
 
 namespace {
@@ -252,7 +259,8 @@ template <Denormals D> constexpr OpcodeTable<ExecFn> texture_table() {
                                             {Opcode::TexLd, ex_texld<D>},
                                             {Opcode::TexLdP, ex_texldp<D>},
                                             {Opcode::TexLdB, ex_texldb<D>},
-                                            {Opcode::TexLdD, ex_texldd<D>}};
+                                            {Opcode::TexLdD, ex_texldd<D>},
+                                            {Opcode::TexLdL, ex_texldl<D>}};
   return OpcodeTable<ExecFn>(rows);
 }
 constexpr OpcodeTable<ExecFn> kTextureKeep = texture_table<Denormals::Keep>();

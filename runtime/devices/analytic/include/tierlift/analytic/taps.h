@@ -32,6 +32,9 @@ struct Tap {
   // one rounding per instruction. Set by extract_taps / extract_reads; with them the model
   // interpolates the coordinate as the devices do (quad_coords.h) instead of in double.
   std::optional<std::array<std::array<float, 2>, 4>> corners;
+  // With corners: an fp32 (u, v) the pixel listing adds to the interpolated coordinate, one
+  // fp32 add per axis (tier dx9c's `add r1.xy, v0, c[aL]`); `offset` is then the same value.
+  std::optional<std::array<float, 2>> pixel_add;
 };
 
 struct TapExtraction {
