@@ -103,6 +103,44 @@ std::string host_texture(Device::Impl& d, uint32_t stage, const img::Image& im, 
   return {};
 }
 
+// A cube or volume texture of the pass (or the unbound one of that type, reading (0, 0, 0, 1)
+// as in D3D9), uploaded now: it belongs to the draw. Resident textures are 2D, so a cube or
+// volume sampler reads the pass's host layers.
+std::string host_layered_texture(Device::Impl& d, const codegen::SamplerInfo& si,
+                                 const pass::TextureBinding& b, PreparedDraw& out, Resident*& r) {
+  const pass::TextureShape want =
+      si.type == ir::SamplerType::Cube ? pass::TextureShape::Cube : pass::TextureShape::Volume;
+  std::vector<std::shared_ptr<const img::Image>> layers = b.layers;
+  if (!b.image) {
+    auto texel = std::make_shared<img::Image>(1, 1);
+    texel->rgba = {0, 0, 0, 1};
+    layers.assign(want == pass::TextureShape::Cube ? 6 : 1, texel);
+  } else if (b.shape != want) {
+    return fmt::format("s{}: a {} sampler needs a {} texture", si.stage,
+                       want == pass::TextureShape::Cube ? "cube" : "volume",
+                       want == pass::TextureShape::Cube ? "cube" : "volume");
+  }
+  const img::Image& first = *layers[0];
+  std::unique_ptr<Resident> t;
+  Cleanup staging_objects;
+  Buffer staging;
+  const size_t floats = first.rgba.size();
+  std::string err = create_layered_resident(d, first.width, first.height, want,
+                                            static_cast<uint32_t>(layers.size()), t);
+  if (err.empty())
+    err = create_buffer(d, staging_objects, floats * layers.size() * 4,
+                        VK_BUFFER_USAGE_TRANSFER_SRC_BIT, staging);
+  if (!err.empty()) return err;
+  for (size_t k = 0; k < layers.size(); ++k)
+    std::memcpy(static_cast<float*>(staging.mapped) + k * floats, layers[k]->rgba.data(),
+                floats * 4);
+  err = submit_and_wait(d, [&](VkCommandBuffer cb) { record_upload(cb, *t, staging.buffer); });
+  if (!err.empty()) return err;
+  r = t.get();
+  out.host_textures.push_back(std::move(t));
+  return {};
+}
+
 // Whether a stage's reads fetch the stored RGBA8 bytes in place instead of sampling a float
 // shadow (codegen::CodegenOptions::stage_fetch_unorm8): a resident RGBA8 colour texture read
 // with POINT filtering and CLAMP addressing on both axes. The fetch reproduces point
@@ -228,6 +266,11 @@ std::string compile_programs(const Device::Impl& d, const pass::Pass& pass,
   }
   co.unorm8_decode = d.unorm8_decode;
   for (uint32_t s = 0; s < pass::kMaxSamplers; ++s) {
+    // ps_1_x declares no sampler types: the bound texture's shape is the stage's type.
+    const pass::TextureShape shape = pass.textures[s].shape;
+    co.stage_texture_type[s] = shape == pass::TextureShape::Cube     ? ir::SamplerType::Cube
+                               : shape == pass::TextureShape::Volume ? ir::SamplerType::Volume
+                                                                     : ir::SamplerType::Unknown;
     co.stage_projected[s] = pass.textures[s].stage.projected;
     co.stage_fetch_unorm8[s] = fetches_in_place(d, textures.stages[s], pass.textures[s].sampler);
     co.stage_point_clamped[s] = pass::point_clamped(pass.textures[s].sampler);
@@ -255,7 +298,12 @@ std::string bind_sampled(Device::Impl& d, const pass::Pass& pass, const DrawText
     for (const Resident* m : textures.more_targets) own = own || (r && r == m);
     if (own) return fmt::format("s{}: a pass cannot sample its own render target", si.stage);
     std::string err;
-    if (!r) {
+    if (si.type == ir::SamplerType::Cube || si.type == ir::SamplerType::Volume) {
+      if (r) return fmt::format("s{}: a cube or volume sampler cannot read a 2D texture", si.stage);
+      err = host_layered_texture(d, si, pass.textures[s], out, r);
+    } else if (pass.textures[s].shape != pass::TextureShape::Tex2D) {
+      err = fmt::format("s{}: a 2D sampler cannot read a cube or volume texture", si.stage);
+    } else if (!r) {
       const img::Image& im = pass.textures[s].image ? *pass.textures[s].image : unbound;
       err = host_texture(d, si.stage, im, out, r);
     }
