@@ -212,6 +212,11 @@ StageResult differential_run(const ir::Program& program, const std::string& id,
   for (unsigned set = 0; set < o.input_sets; ++set) {
     const pass::RunRequest req = request(program, o, rng, set);
     ir::Result<pass::Pass> made = pass::prepare_pass(req);
+    // Cubes are read with POINT filtering on every set: lavapipe filters LINEAR reads across
+    // face edges (seamless), which the interpreter does not model (NUMERICS.md rule T4).
+    if (made)
+      for (pass::TextureBinding& b : made->textures)
+        if (b.shape == pass::TextureShape::Cube) b.sampler.filter = pass::Filter::Point;
     ir::Result<effects::EffectGraph> graph =
         made ? effects::single_pass_graph(*made, req.width, req.height, req.format)
              : ir::Result<effects::EffectGraph>(made.failure());

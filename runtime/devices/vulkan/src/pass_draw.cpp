@@ -105,20 +105,23 @@ std::string host_texture(Device::Impl& d, uint32_t stage, const img::Image& im, 
 
 // A cube or volume texture of the pass (or the unbound one of that type, reading (0, 0, 0, 1)
 // as in D3D9), uploaded now: it belongs to the draw. Resident textures are 2D, so a cube or
-// volume sampler reads the pass's host layers.
+// volume sampler reads the binding's host layers (in an effect graph the device binds images
+// by texture id, and the layers ride with the binding, effects::TextureBind). `bound` says
+// whether the stage has a texture at all (a resident one, or the pass's image).
 std::string host_layered_texture(Device::Impl& d, const codegen::SamplerInfo& si,
-                                 const pass::TextureBinding& b, PreparedDraw& out, Resident*& r) {
+                                 const pass::TextureBinding& b, bool bound, PreparedDraw& out,
+                                 Resident*& r) {
   const pass::TextureShape want =
       si.type == ir::SamplerType::Cube ? pass::TextureShape::Cube : pass::TextureShape::Volume;
   std::vector<std::shared_ptr<const img::Image>> layers = b.layers;
-  if (!b.image) {
+  if (bound && (b.shape != want || layers.empty())) {
+    const char* name = want == pass::TextureShape::Cube ? "cube" : "volume";
+    return fmt::format("s{}: a {} sampler needs a {} texture", si.stage, name, name);
+  }
+  if (!bound) {
     auto texel = std::make_shared<img::Image>(1, 1);
     texel->rgba = {0, 0, 0, 1};
     layers.assign(want == pass::TextureShape::Cube ? 6 : 1, texel);
-  } else if (b.shape != want) {
-    return fmt::format("s{}: a {} sampler needs a {} texture", si.stage,
-                       want == pass::TextureShape::Cube ? "cube" : "volume",
-                       want == pass::TextureShape::Cube ? "cube" : "volume");
   }
   const img::Image& first = *layers[0];
   std::unique_ptr<Resident> t;
@@ -299,8 +302,11 @@ std::string bind_sampled(Device::Impl& d, const pass::Pass& pass, const DrawText
     if (own) return fmt::format("s{}: a pass cannot sample its own render target", si.stage);
     std::string err;
     if (si.type == ir::SamplerType::Cube || si.type == ir::SamplerType::Volume) {
-      if (r) return fmt::format("s{}: a cube or volume sampler cannot read a 2D texture", si.stage);
-      err = host_layered_texture(d, si, pass.textures[s], out, r);
+      // The binding's layers, uploaded with the draw (a resident texture is 2D: in an effect
+      // graph it holds the first layer only, effects::TextureBind).
+      const bool bound = r || pass.textures[s].image || !pass.textures[s].layers.empty();
+      r = nullptr;
+      err = host_layered_texture(d, si, pass.textures[s], bound, out, r);
     } else if (pass.textures[s].shape != pass::TextureShape::Tex2D) {
       err = fmt::format("s{}: a 2D sampler cannot read a cube or volume texture", si.stage);
     } else if (!r) {

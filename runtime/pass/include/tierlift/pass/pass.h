@@ -67,7 +67,7 @@ struct TextureBinding {
   SamplerState sampler;
   StageState stage;
   TextureShape shape = TextureShape::Tex2D;
-  std::vector<std::shared_ptr<const img::Image>> layers; // Cube and Volume only
+  std::vector<std::shared_ptr<const img::Image>> layers = {}; // Cube and Volume only
 };
 
 // A cube or volume binding from its layers (checked: a cube has six square faces of one
