@@ -113,7 +113,8 @@ std::string vulkan_output(const std::string& output) {
 // The files the run reads, which no output may replace.
 std::vector<std::string> input_files(const RunFlags& f, const pass::RunRequest& r) {
   std::vector<std::string> inputs{f.vs, f.ps};
-  for (const pass::TextureSetting& t : r.textures) inputs.push_back(t.source);
+  for (const pass::TextureSetting& t : r.textures)
+    for (const std::string& s : pass::layered_sources(t.source).sources) inputs.push_back(s);
   return inputs;
 }
 
@@ -438,7 +439,8 @@ void register_run_command(CLI::App& app) {
                   "named in a token stream's CTAB (no prefix: both stages)");
   sub->add_option("--input", f->inputs, "Pixel-stage input v#|t#=x,y,z,w (without --vs)");
   sub->add_option("--attr", f->attrs, "Vertex input vN=x,y,z,w or vN=quad-uv (with --vs)");
-  sub->add_option("--texture", f->textures, "sN=FILE.png|FILE.pfm|builtin:NAME[:WxH]");
+  sub->add_option("--texture", f->textures,
+                  "sN=FILE.png|FILE.pfm|builtin:NAME[:WxH]|cube:F0,..,F5|volume:S0,..");
   sub->add_option("--bump-matrix", f->bumps,
                   "STAGE=m00,m01,m10,m11: texbem/texbeml's bump matrix of texture stage STAGE "
                   "(default 0: no offset)");

@@ -60,16 +60,39 @@ pass::Vec4 coordinate(Rng& rng) {
   return {c(), c(), c(), 1.0f};
 }
 
-std::vector<uint32_t> sampled_stages(const ir::Program& p) {
-  std::vector<uint32_t> out;
+// The stages a pixel program samples and the texture type each reads: ps_2_0 and later
+// declare it (dcl_2d, dcl_cube, dcl_volume); ps_1_x reads a cube with texm3x3tex,
+// texm3x3spec and texm3x3vspec (D3D9's texture-address instructions for environment maps),
+// a 2D texture otherwise.
+std::vector<std::pair<uint32_t, ir::SamplerType>> sampled_stages(const ir::Program& p) {
+  std::vector<std::pair<uint32_t, ir::SamplerType>> out;
   if (ir::is_sm2_or_later(p.profile)) { // ps_2_0, ps_2_x, ps_3_0 declare their samplers
     for (const ir::Declaration& d : p.decls)
-      if (d.reg.file == ir::RegFile::Sampler && d.sampler_type == ir::SamplerType::Tex2D)
-        out.push_back(d.reg.index);
+      if (d.reg.file == ir::RegFile::Sampler &&
+          (d.sampler_type == ir::SamplerType::Tex2D || d.sampler_type == ir::SamplerType::Cube ||
+           d.sampler_type == ir::SamplerType::Volume))
+        out.emplace_back(d.reg.index, d.sampler_type);
   } else if (ir::is_pixel(p.profile)) {
-    for (uint32_t s = 0; s < ir::limits(p.profile).samplers; ++s) out.push_back(s);
+    for (uint32_t s = 0; s < ir::limits(p.profile).samplers; ++s)
+      out.emplace_back(s, ir::SamplerType::Tex2D);
+    for (const ir::Instruction& ins : p.code)
+      if ((ins.op == ir::Opcode::TexM3x3Tex || ins.op == ir::Opcode::TexM3x3Spec ||
+           ins.op == ir::Opcode::TexM3x3VSpec) &&
+          ins.dst && ins.dst->index < out.size())
+        out[ins.dst->index].second = ir::SamplerType::Cube;
   }
   return out;
+}
+
+// A generated texture of the type: one 8×8 noise image, or six (a cube) or four slices (a
+// volume) of them, each with its own seed (pass::layered_sources' syntax).
+std::string texture_source(Rng& rng, ir::SamplerType type) {
+  auto noise = [&] { return fmt::format("builtin:noise:8x8:{}", rng.below(1000) + 1); };
+  if (type == ir::SamplerType::Tex2D) return noise();
+  const bool cube = type == ir::SamplerType::Cube;
+  std::string s = cube ? "cube:" : "volume:";
+  for (int k = 0; k < (cube ? 6 : 4); ++k) s += (k ? "," : "") + noise();
+  return s;
 }
 
 // A vertex shader's oPos usually comes from constants (a world-view-projection matrix): with
@@ -155,8 +178,8 @@ pass::RunRequest request(const ir::Program& program,
       r.inputs.push_back({ir::RegFile::Input, v, vec(rng, set), false});
     for (uint32_t t = 0; t < (sm3 ? 8u : lim.texcoords); ++t)
       r.inputs.push_back({ir::RegFile::Texture, t, coordinate(rng), false});
-    for (uint32_t s : sampled_stages(program))
-      r.textures.emplace_back(s, fmt::format("builtin:noise:8x8:{}", rng.below(1000) + 1));
+    for (const auto& [s, type] : sampled_stages(program))
+      r.textures.emplace_back(s, texture_source(rng, type));
   }
   r.filter = set % 2 == 0 ? pass::Filter::Point : pass::Filter::Linear;
   r.address = pass::AddressMode::Clamp;
@@ -197,6 +220,11 @@ StageResult differential_run(const ir::Program& program, const std::string& id,
   for (unsigned set = 0; set < o.input_sets; ++set) {
     const pass::RunRequest req = request(program, drawn, o, rng, set);
     ir::Result<pass::Pass> made = pass::prepare_pass(req);
+    // Cubes are read with POINT filtering on every set: lavapipe filters LINEAR reads across
+    // face edges (seamless), which the interpreter does not model (NUMERICS.md rule T4).
+    if (made)
+      for (pass::TextureBinding& b : made->textures)
+        if (b.shape == pass::TextureShape::Cube) b.sampler.filter = pass::Filter::Point;
     ir::Result<effects::EffectGraph> graph =
         made ? effects::single_pass_graph(*made, req.width, req.height, req.format)
              : ir::Result<effects::EffectGraph>(made.failure());

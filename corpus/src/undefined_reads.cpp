@@ -27,6 +27,15 @@ int addressed_components(const ir::Program& p, uint32_t stage) {
   return 2;
 }
 
+// Whether stage s is declared dcl_cube (ps_2_0 and later).
+bool is_cube(const ir::Program& p, uint32_t stage) {
+  for (const ir::Declaration& d : p.decls)
+    if (d.reg.file == ir::RegFile::Sampler && d.reg.index == stage &&
+        d.sampler_type == ir::SamplerType::Cube)
+      return true;
+  return false;
+}
+
 // A coordinate component as the message shows it: NaN without its sign bit's "-".
 std::string show(float v) {
   return std::isnan(v) ? "nan" : fmt::format("{}", v);
@@ -41,7 +50,11 @@ public:
       const int n = addressed_components(program_, stage);
       bool finite = true;
       for (int c = 0; c < n; ++c) finite = finite && std::isfinite(coord[c]);
-      if (!finite)
+      // A cube read in direction (0, 0, 0) has no major axis (its face coordinates are 0/0):
+      // Direct3D 9 leaves it undefined as well (NUMERICS.md rule 38).
+      const bool zero_direction =
+          is_cube(program_, stage) && coord[0] == 0 && coord[1] == 0 && coord[2] == 0;
+      if (!finite || zero_direction)
         first_ = n == 3 ? fmt::format("s{} at ({}, {}, {})", stage, show(coord[0]), show(coord[1]),
                                       show(coord[2]))
                         : fmt::format("s{} at ({}, {})", stage, show(coord[0]), show(coord[1]));

@@ -37,6 +37,22 @@ TEST(UndefinedReads, NonFiniteCoordinateIsNamed) {
   EXPECT_EQ(non_finite_read(projected_pass(0.0f, 0.0f)), "s0 at (nan, inf)");
 }
 
+// A cube read in direction (0, 0, 0) has no face (NUMERICS.md rule T7); any other finite
+// direction, −0 components included, is defined.
+TEST(UndefinedReads, ZeroCubeDirectionIsNamed) {
+  auto cube_pass = [&](pass::Vec4 dir) {
+    pass::Pass p;
+    p.pixel_program = program("ps_2_0\ndcl t0\ndcl_cube s0\ntexld r0, t0, s0\nmov oC0, r0\n");
+    p.constant_inputs.tex[0] = dir;
+    std::vector<std::shared_ptr<const img::Image>> faces(6, std::make_shared<img::Image>(2, 2));
+    p.textures[0] = *pass::layered_binding(pass::TextureShape::Cube, faces);
+    return p;
+  };
+  EXPECT_EQ(non_finite_read(cube_pass({0, -0.0f, 0, 1})), "s0 at (0, -0, 0)");
+  EXPECT_EQ(non_finite_read(cube_pass({0, 0, 1e-30f, 1})), "");
+  EXPECT_EQ(non_finite_read(cube_pass({-0.0f, 2, 0, 0})), "");
+}
+
 TEST(UndefinedReads, FiniteCoordinatesAndNoReadsAreDefined) {
   EXPECT_EQ(non_finite_read(projected_pass(0.5f, 2.0f)), "");
   EXPECT_EQ(non_finite_read(projected_pass(1e30f, 1e-30f)), "s0 at (inf, 2.5e+29)");

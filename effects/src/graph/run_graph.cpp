@@ -60,6 +60,8 @@ ir::Result<pass::Pass> make_pass(const PassDesc& desc, const ir::Conventions& co
     pass::TextureBinding& binding = pass.textures[b.stage];
     binding.sampler = b.sampler;
     binding.stage = b.stage_state;
+    binding.shape = b.shape;
+    binding.layers = b.layers;
   }
   pass.blend = desc.blend;
   pass.conventions = conventions;

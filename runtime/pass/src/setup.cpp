@@ -70,12 +70,30 @@ bool build_constants(const ir::Program& program, const std::vector<ConstSetting>
 
 void set_sampler(const RunRequest& req, TextureBinding& b) {
   b.sampler.filter = req.filter;
-  b.sampler.address_u = b.sampler.address_v = req.address;
+  b.sampler.address_u = b.sampler.address_v = b.sampler.address_w = req.address;
 }
 
 bool bind_textures(const RunRequest& req, Pass& pass, RunDiagnostics& diags) {
   std::map<std::string, std::shared_ptr<const img::Image>> loaded; // one load per source
   bool ok = true;
+  // The image of one source, loaded once; null after reporting why it could not be.
+  auto load = [&](uint32_t sampler, const std::string& source) {
+    auto it = loaded.find(source);
+    if (it != loaded.end()) return it->second;
+    img::ImageResult r = img::load_texture(source);
+    if (!r) {
+      // Could not be read at all (missing, a folder, over the cap): an I/O error.
+      bool missing = !img::is_builtin_spec(source) && img::is_io_error(r);
+      const std::string_view rule = img::is_builtin_spec(source) ? kRuleTextureSpec
+                                    : missing                    ? kRuleTextureMissing
+                                                                 : std::string_view("texture");
+      diags.other.error({}, std::string(rule),
+                        fmt::format("--texture s{}: {}", sampler, r.message()));
+      return std::shared_ptr<const img::Image>();
+    }
+    return loaded.emplace(source, std::make_shared<const img::Image>(std::move(r).value()))
+        .first->second;
+  };
   for (const TextureSetting& t : req.textures) {
     if (t.sampler >= kMaxSamplers) {
       diags.other.error({}, "texture",
@@ -83,29 +101,35 @@ bool bind_textures(const RunRequest& req, Pass& pass, RunDiagnostics& diags) {
       ok = false;
       continue;
     }
+    TextureBinding& b = pass.textures[t.sampler];
     if (t.image) {
-      pass.textures[t.sampler].image = t.image;
-      set_sampler(req, pass.textures[t.sampler]);
+      b.image = t.image;
+      set_sampler(req, b);
       continue;
     }
-    auto it = loaded.find(t.source);
-    if (it == loaded.end()) {
-      img::ImageResult r = img::load_texture(t.source);
-      if (!r) {
-        // Could not be read at all (missing, a folder, over the cap): an I/O error.
-        bool missing = !img::is_builtin_spec(t.source) && img::is_io_error(r);
-        const std::string_view rule = img::is_builtin_spec(t.source) ? kRuleTextureSpec
-                                      : missing                      ? kRuleTextureMissing
-                                                                     : std::string_view("texture");
-        diags.other.error({}, std::string(rule),
-                          fmt::format("--texture s{}: {}", t.sampler, r.message()));
+    const auto [shape, sources] = layered_sources(t.source);
+    std::vector<std::shared_ptr<const img::Image>> layers;
+    for (const std::string& src : sources) layers.push_back(load(t.sampler, src));
+    bool all = true;
+    for (const auto& l : layers) all = all && l;
+    if (!all) {
+      ok = false;
+      continue;
+    }
+    if (shape == TextureShape::Tex2D) {
+      b.image = layers[0];
+    } else {
+      ir::Result<TextureBinding> lb = layered_binding(shape, std::move(layers));
+      if (!lb) {
+        diags.other.error({}, "texture", fmt::format("--texture s{}: {}", t.sampler, lb.message()));
         ok = false;
         continue;
       }
-      it = loaded.emplace(t.source, std::make_shared<const img::Image>(std::move(r).value())).first;
+      b.shape = shape;
+      b.image = lb->image;
+      b.layers = lb->layers;
     }
-    pass.textures[t.sampler].image = it->second;
-    set_sampler(req, pass.textures[t.sampler]);
+    set_sampler(req, b);
   }
   std::vector<detail::RegRead> used;
   if (req.ps) used = detail::sampler_reads(*req.ps);
@@ -298,6 +322,27 @@ std::vector<ProbeValue> read_probes(const img::Image& image,
     out.push_back({p.x, p.y, {px[0], px[1], px[2], px[3]}});
   }
   return out;
+}
+
+// "cube:F0,…,F5" or "volume:S0,…": the shape and its layers' sources; Tex2D otherwise.
+LayeredSources layered_sources(const std::string& source) {
+  TextureShape shape = TextureShape::Tex2D;
+  std::string rest;
+  if (source.rfind("cube:", 0) == 0) {
+    shape = TextureShape::Cube;
+    rest = source.substr(5);
+  } else if (source.rfind("volume:", 0) == 0) {
+    shape = TextureShape::Volume;
+    rest = source.substr(7);
+  } else {
+    return {shape, {source}};
+  }
+  std::vector<std::string> parts;
+  size_t from = 0;
+  for (size_t comma; (comma = rest.find(',', from)) != std::string::npos; from = comma + 1)
+    parts.push_back(rest.substr(from, comma - from));
+  parts.push_back(rest.substr(from));
+  return {shape, parts};
 }
 
 } // namespace tierlift::pass

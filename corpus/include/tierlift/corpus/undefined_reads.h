@@ -1,6 +1,7 @@
 // NUMERICS.md rule 38: pixels the differential stage does not compare because Direct3D 9
 // leaves their value undefined: the pixel program samples a texture at a coordinate that is
-// not finite (±inf or NaN in a component the sampler addresses, after texldp's divide).
+// not finite (±inf or NaN in a component the sampler addresses, after texldp's divide), or a
+// dcl_cube sampler in direction (0, 0, 0) (NUMERICS.md rule T7).
 #pragma once
 
 #include <string>

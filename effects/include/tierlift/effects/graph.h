@@ -43,6 +43,11 @@ struct TextureBind {
   std::string texture;
   pass::SamplerState sampler;
   pass::StageState stage_state = {}; // texbem's bump matrix, projection (ps_1_x)
+  // A cube or volume texture rides with the binding as host layers (pass::TextureBinding's
+  // shape and layers); `texture` then names its first layer. Devices upload the layers with
+  // the draw: graph textures are 2D.
+  pass::TextureShape shape = pass::TextureShape::Tex2D;
+  std::vector<std::shared_ptr<const img::Image>> layers = {};
 };
 
 // What the analytic device computes for a pass. Linear: the pixel is a weighted sum of

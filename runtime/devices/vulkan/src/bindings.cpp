@@ -60,9 +60,6 @@ ir::Status add_textures(Device::Impl& d, Cleanup& cleanup, const codegen::Compil
   VkFormatProperties tex_props;
   vkGetPhysicalDeviceFormatProperties(d.physical, VK_FORMAT_R32G32B32A32_SFLOAT, &tex_props);
   for (const auto& si : pair.ps.samplers) {
-    if (si.type != ir::SamplerType::Tex2D)
-      return binding_failure(
-          fmt::format("s{}: only 2D textures are supported on the Vulkan device", si.stage));
     const uint32_t stage = si.stage % pass::kMaxSamplers;
     const pass::TextureBinding& tb = pass.textures[stage];
     if (!images[stage]) return binding_failure(fmt::format("s{}: no texture to sample", si.stage));

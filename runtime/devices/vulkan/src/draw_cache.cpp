@@ -64,7 +64,8 @@ std::optional<std::string> draw_key(const pass::Pass& pass, const DrawTextures& 
   k.put(ds.stencil_write_mask);
   for (uint32_t s = 0; s < pass::kMaxSamplers; ++s) {
     const pass::TextureBinding& b = pass.textures[s];
-    if (!textures.stages[s] && b.image) return std::nullopt; // host pixels: not cached
+    if (!textures.stages[s] && b.image) return std::nullopt;       // host pixels: not cached
+    if (b.shape != pass::TextureShape::Tex2D) return std::nullopt; // host layers: not either
     k.put(textures.stages[s]);
     k.put(b.sampler.filter);
     k.put(b.sampler.address_u);

@@ -104,6 +104,47 @@ std::string host_texture(Device::Impl& d, uint32_t stage, const img::Image& im, 
   return {};
 }
 
+// A cube or volume texture of the pass (or the unbound one of that type, reading (0, 0, 0, 1)
+// as in D3D9), uploaded now: it belongs to the draw. Resident textures are 2D, so a cube or
+// volume sampler reads the binding's host layers (in an effect graph the device binds images
+// by texture id, and the layers ride with the binding, effects::TextureBind). `bound` says
+// whether the stage has a texture at all (a resident one, or the pass's image).
+std::string host_layered_texture(Device::Impl& d, const codegen::SamplerInfo& si,
+                                 const pass::TextureBinding& b, bool bound, PreparedDraw& out,
+                                 Resident*& r) {
+  const pass::TextureShape want =
+      si.type == ir::SamplerType::Cube ? pass::TextureShape::Cube : pass::TextureShape::Volume;
+  std::vector<std::shared_ptr<const img::Image>> layers = b.layers;
+  if (bound && (b.shape != want || layers.empty())) {
+    const char* name = want == pass::TextureShape::Cube ? "cube" : "volume";
+    return fmt::format("s{}: a {} sampler needs a {} texture", si.stage, name, name);
+  }
+  if (!bound) {
+    auto texel = std::make_shared<img::Image>(1, 1);
+    texel->rgba = {0, 0, 0, 1};
+    layers.assign(want == pass::TextureShape::Cube ? 6 : 1, texel);
+  }
+  const img::Image& first = *layers[0];
+  std::unique_ptr<Resident> t;
+  Cleanup staging_objects;
+  Buffer staging;
+  const size_t floats = first.rgba.size();
+  std::string err = create_layered_resident(d, first.width, first.height, want,
+                                            static_cast<uint32_t>(layers.size()), t);
+  if (err.empty())
+    err = create_buffer(d, staging_objects, floats * layers.size() * 4,
+                        VK_BUFFER_USAGE_TRANSFER_SRC_BIT, staging);
+  if (!err.empty()) return err;
+  for (size_t k = 0; k < layers.size(); ++k)
+    std::memcpy(static_cast<float*>(staging.mapped) + k * floats, layers[k]->rgba.data(),
+                floats * 4);
+  err = submit_and_wait(d, [&](VkCommandBuffer cb) { record_upload(cb, *t, staging.buffer); });
+  if (!err.empty()) return err;
+  r = t.get();
+  out.host_textures.push_back(std::move(t));
+  return {};
+}
+
 // Whether a stage's reads fetch the stored RGBA8 bytes in place instead of sampling a float
 // shadow (codegen::CodegenOptions::stage_fetch_unorm8): a resident RGBA8 colour texture read
 // with POINT filtering and CLAMP addressing on both axes. The fetch reproduces point
@@ -236,6 +277,11 @@ std::string compile_programs(const Device::Impl& d, const pass::Pass& pass,
   }
   co.unorm8_decode = d.unorm8_decode;
   for (uint32_t s = 0; s < pass::kMaxSamplers; ++s) {
+    // ps_1_x declares no sampler types: the bound texture's shape is the stage's type.
+    const pass::TextureShape shape = pass.textures[s].shape;
+    co.stage_texture_type[s] = shape == pass::TextureShape::Cube     ? ir::SamplerType::Cube
+                               : shape == pass::TextureShape::Volume ? ir::SamplerType::Volume
+                                                                     : ir::SamplerType::Unknown;
     co.stage_projected[s] = pass.textures[s].stage.projected;
     co.stage_fetch_unorm8[s] = fetches_in_place(d, textures.stages[s], pass.textures[s].sampler);
     co.stage_point_clamped[s] = pass::point_clamped(pass.textures[s].sampler);
@@ -273,7 +319,15 @@ std::string bind_sampled(Device::Impl& d, const pass::Pass& pass, const DrawText
     for (const Resident* m : textures.more_targets) own = own || (r && r == m);
     if (own) return fmt::format("s{}: a pass cannot sample its own render target", si.stage);
     std::string err;
-    if (!r) {
+    if (si.type == ir::SamplerType::Cube || si.type == ir::SamplerType::Volume) {
+      // The binding's layers, uploaded with the draw (a resident texture is 2D: in an effect
+      // graph it holds the first layer only, effects::TextureBind).
+      const bool bound = r || pass.textures[s].image || !pass.textures[s].layers.empty();
+      r = nullptr;
+      err = host_layered_texture(d, si, pass.textures[s], bound, out, r);
+    } else if (pass.textures[s].shape != pass::TextureShape::Tex2D) {
+      err = fmt::format("s{}: a 2D sampler cannot read a cube or volume texture", si.stage);
+    } else if (!r) {
       const img::Image& im = pass.textures[s].image ? *pass.textures[s].image : unbound;
       err = host_texture(d, si.stage, im, out, r);
     }

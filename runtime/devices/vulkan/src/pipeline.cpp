@@ -178,9 +178,10 @@ std::string create_sampler(Device::Impl& d, Cleanup& cleanup, const pass::Sample
   ci.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
   ci.addressModeU = address_mode(s.address_u);
   ci.addressModeV = address_mode(s.address_v);
-  ci.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  ci.addressModeW = address_mode(s.address_w); // volumes only; 2D and cube views ignore it
   if (ci.addressModeU == VK_SAMPLER_ADDRESS_MODE_MAX_ENUM ||
-      ci.addressModeV == VK_SAMPLER_ADDRESS_MODE_MAX_ENUM)
+      ci.addressModeV == VK_SAMPLER_ADDRESS_MODE_MAX_ENUM ||
+      ci.addressModeW == VK_SAMPLER_ADDRESS_MODE_MAX_ENUM)
     return "the Vulkan device does not support the MirrorOnce address mode";
   const pass::Vec4& b = s.border_color;
   if (b == pass::Vec4{0, 0, 0, 0})

@@ -65,7 +65,7 @@ bool read_only(VkImageLayout layout) {
 void clear_if_new(VkCommandBuffer cb, Resident& r) {
   if (r.stored.layout != VK_IMAGE_LAYOUT_UNDEFINED) return;
   transition(cb, r.stored, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
-  const VkImageSubresourceRange range{r.stored.image.aspect, 0, 1, 0, 1};
+  const VkImageSubresourceRange range{r.stored.image.aspect, 0, 1, 0, VK_REMAINING_ARRAY_LAYERS};
   if (r.stencil) {
     const VkClearDepthStencilValue zero{1.0f, 0};
     vkCmdClearDepthStencilImage(cb, r.stored.image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
@@ -82,8 +82,10 @@ VkBufferImageCopy whole_image(const Resident& r) {
   VkBufferImageCopy copy{};
   const VkImageAspectFlags aspect = r.stencil ? VkImageAspectFlags{VK_IMAGE_ASPECT_STENCIL_BIT}
                                               : VkImageAspectFlags{VK_IMAGE_ASPECT_COLOR_BIT};
-  copy.imageSubresource = {aspect, 0, 0, 1};
-  copy.imageExtent = {r.width, r.height, 1};
+  // A cube's six faces and a volume's slices lie one after the other in the buffer.
+  const Image2D& im = r.stored.image;
+  copy.imageSubresource = {aspect, 0, 0, im.shape == pass::TextureShape::Cube ? 6u : 1u};
+  copy.imageExtent = {r.width, r.height, im.shape == pass::TextureShape::Volume ? im.layers : 1u};
   return copy;
 }
 
@@ -103,6 +105,21 @@ std::string create_resident(Device::Impl& d, uint32_t width, uint32_t height, im
   // RGBA8 is also read in place: a point read fetches the stored bytes (record_as_fetched).
   if (r->samples_stored() || format == img::Format::RGBA8) usage |= VK_IMAGE_USAGE_SAMPLED_BIT;
   if (std::string err = create_image(d, r->objects, width, height, vf, usage, r->stored.image);
+      !err.empty())
+    return err;
+  out = std::move(r);
+  return {};
+}
+
+std::string create_layered_resident(Device::Impl& d, uint32_t width, uint32_t height,
+                                    pass::TextureShape shape, uint32_t layers,
+                                    std::unique_ptr<Resident>& out) {
+  auto r = std::make_unique<Resident>();
+  r->width = width;
+  r->height = height;
+  const VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  if (std::string err = create_layered_image(d, r->objects, width, height, shape, layers,
+                                             kSampledFormat, usage, r->stored.image);
       !err.empty())
     return err;
   out = std::move(r);

@@ -107,13 +107,23 @@ std::string create_buffer(Device::Impl& d, Cleanup& cleanup, VkDeviceSize size,
 
 std::string create_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint32_t height,
                          VkFormat format, VkImageUsageFlags usage, Image2D& out) {
+  return create_layered_image(d, cleanup, width, height, pass::TextureShape::Tex2D, 1, format,
+                              usage, out);
+}
+
+std::string create_layered_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint32_t height,
+                                 pass::TextureShape shape, uint32_t layers, VkFormat format,
+                                 VkImageUsageFlags usage, Image2D& out) {
+  using pass::TextureShape;
+  const bool cube = shape == TextureShape::Cube, volume = shape == TextureShape::Volume;
   VkImageCreateInfo ii{};
   ii.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
-  ii.imageType = VK_IMAGE_TYPE_2D;
+  ii.flags = cube ? VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT : 0;
+  ii.imageType = volume ? VK_IMAGE_TYPE_3D : VK_IMAGE_TYPE_2D;
   ii.format = format;
-  ii.extent = {width, height, 1};
+  ii.extent = {width, height, volume ? layers : 1};
   ii.mipLevels = 1;
-  ii.arrayLayers = 1;
+  ii.arrayLayers = cube ? 6 : 1;
   ii.samples = VK_SAMPLE_COUNT_1_BIT;
   ii.tiling = VK_IMAGE_TILING_OPTIMAL;
   ii.usage = usage;
@@ -121,7 +131,8 @@ std::string create_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint
   ii.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
   const std::string what = image_words(width, height, format);
   VkResult r = vkCreateImage(d.device, &ii, nullptr, &out.image);
-  if (r != VK_SUCCESS) return allocation_failed(r, what, image_bytes(width, height, format));
+  if (r != VK_SUCCESS)
+    return allocation_failed(r, what, image_bytes(width, height, format) * (cube ? 6 : layers));
   VkDevice dev = d.device;
   VkImage img = out.image;
   VkMemoryRequirements req;
@@ -138,16 +149,20 @@ std::string create_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint
   VkImageViewCreateInfo vi{};
   vi.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
   vi.image = img;
-  vi.viewType = VK_IMAGE_VIEW_TYPE_2D;
+  vi.viewType = cube     ? VK_IMAGE_VIEW_TYPE_CUBE
+                : volume ? VK_IMAGE_VIEW_TYPE_3D
+                         : VK_IMAGE_VIEW_TYPE_2D;
   vi.format = format;
   const VkImageAspectFlags aspect = format_aspects(format);
-  vi.subresourceRange = {aspect, 0, 1, 0, 1};
+  vi.subresourceRange = {aspect, 0, 1, 0, cube ? 6u : 1u};
   if ((r = vkCreateImageView(dev, &vi, nullptr, &out.view)) != VK_SUCCESS)
     return vk_error("vkCreateImageView", r);
   cleanup.destroy_later(dev, out.view, vkDestroyImageView);
   out.format = format;
   out.width = width;
   out.height = height;
+  out.shape = shape;
+  out.layers = cube ? 6 : volume ? layers : 1;
   out.aspect = aspect;
   return {};
 }
@@ -232,7 +247,7 @@ void image_barrier(VkCommandBuffer cb, VkImage image, VkImageLayout from, VkImag
   b.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   b.image = image;
-  b.subresourceRange = {aspect, 0, 1, 0, 1};
+  b.subresourceRange = {aspect, 0, 1, 0, VK_REMAINING_ARRAY_LAYERS}; // a cube's six faces too
   vkCmdPipelineBarrier(cb, src_stage, dst_stage, 0, 0, nullptr, 0, nullptr, 1, &b);
 }
 

@@ -12,6 +12,7 @@
 #include <vulkan/vulkan.h>
 
 #include "tierlift/codegen/unorm8_decode.h"
+#include "tierlift/pass/pass.h"
 #include "tierlift/vulkan/device.h"
 
 namespace tierlift::vulkan {
@@ -103,6 +104,10 @@ struct Image2D {
   VkImageView view = VK_NULL_HANDLE;
   VkFormat format = VK_FORMAT_UNDEFINED;
   uint32_t width = 0, height = 0;
+  // A cube (six array layers, a cube view) or a volume (depth `layers`, a 3D view) for a
+  // sampled cube or volume texture (pass::TextureShape); 2D otherwise, with one layer.
+  pass::TextureShape shape = pass::TextureShape::Tex2D;
+  uint32_t layers = 1;
   // COLOR, or for a stencil buffer STENCIL (with DEPTH when the format has both: barriers and
   // attachment views then name both aspects).
   VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;
@@ -111,6 +116,10 @@ struct Image2D {
 VkImageAspectFlags format_aspects(VkFormat format);
 std::string create_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint32_t height,
                          VkFormat format, VkImageUsageFlags usage, Image2D& out);
+// The same for a cube (`layers` = 6) or volume (`layers` slices) texture.
+std::string create_layered_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint32_t height,
+                                 pass::TextureShape shape, uint32_t layers, VkFormat format,
+                                 VkImageUsageFlags usage, Image2D& out);
 
 // Records commands into a fresh primary command buffer, submits it and waits for it.
 std::string submit_and_wait(Device::Impl& d, const std::function<void(VkCommandBuffer)>& record);

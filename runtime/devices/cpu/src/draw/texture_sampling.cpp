@@ -47,6 +47,9 @@ Vec4 BoundTextures::sample(uint32_t stage, const Vec4& coord, float lod_bias) co
   (void)lod_bias; // one mip level: the bias has nothing to select
   if (stage >= kMaxSamplers || !bindings_[stage].image) return {0, 0, 0, 1};
   const TextureBinding& b = bindings_[stage];
+  if (b.shape == pass::TextureShape::Cube) return sample_cube(b, coord, llvmpipe_, subtexel_bits_);
+  if (b.shape == pass::TextureShape::Volume)
+    return sample_volume(b, coord, llvmpipe_, subtexel_bits_);
   return llvmpipe_
              ? sample_texture_llvmpipe(*b.image, b.sampler, coord[0], coord[1], subtexel_bits_)
              : sample_texture(*b.image, b.sampler, coord[0], coord[1], subtexel_bits_);

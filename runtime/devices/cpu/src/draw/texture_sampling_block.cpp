@@ -326,8 +326,9 @@ bool unaddressable_lane(const TextureBinding& b, const float* const coord[4], in
 void BoundTextures::sample_block(uint32_t stage, const float* const coord[4], const float* bias,
                                  int n, Lanes out[4]) const {
   if (stage >= kMaxSamplers || !bindings_[stage].image || bindings_[stage].image->width == 0 ||
-      bindings_[stage].image->height == 0) {
-    TextureUnit::sample_block(stage, coord, bias, n, out); // the rare cases, lane by lane
+      bindings_[stage].image->height == 0 ||
+      bindings_[stage].shape != pass::TextureShape::Tex2D) { // cubes and volumes: per lane
+    TextureUnit::sample_block(stage, coord, bias, n, out);   // the rare cases, lane by lane
     return;
   }
   const TextureBinding& b = bindings_[stage];

@@ -37,6 +37,7 @@ struct SamplerState {
   Filter filter = Filter::Point;
   AddressMode address_u = AddressMode::Wrap;
   AddressMode address_v = AddressMode::Wrap;
+  AddressMode address_w = AddressMode::Wrap; // D3DSAMP_ADDRESSW: volume textures' third axis
   Vec4 border_color{0, 0, 0, 0};
 };
 
@@ -49,13 +50,30 @@ inline bool point_clamped(const SamplerState& s) {
          s.address_v == AddressMode::Clamp;
 }
 
+// The kind of texture a stage holds (D3DRTYPE_TEXTURE, _CUBETEXTURE, _VOLUMETEXTURE).
+enum class TextureShape : uint8_t { Tex2D, Cube, Volume };
+
+// The face order of a cube texture: D3DCUBEMAP_FACE_POSITIVE_X … NEGATIVE_Z, which is also
+// Vulkan's array-layer order of a cube view (NUMERICS.md, cube maps).
+enum class CubeFace : uint8_t { PosX, NegX, PosY, NegY, PosZ, NegZ };
+
 // What one sampler stage holds: a texture (shared, so one image can be bound to several
 // stages as Listing 4 does), the sampler state, and the ps_1_x texture-stage state.
+// A cube or volume texture holds its images in `layers` (a cube: the six faces in CubeFace
+// order, all square and of one size; a volume: its slices from w = 0 up, all of one size),
+// and `image` is layers[0], so that "is a texture bound" reads the same for every shape.
 struct TextureBinding {
   std::shared_ptr<const img::Image> image; // null: unbound, reads (0, 0, 0, 1)
   SamplerState sampler;
   StageState stage;
+  TextureShape shape = TextureShape::Tex2D;
+  std::vector<std::shared_ptr<const img::Image>> layers = {}; // Cube and Volume only
 };
+
+// A cube or volume binding from its layers (checked: a cube has six square faces of one
+// size, a volume at least one slice, all of one size); an error says what is wrong.
+ir::Result<TextureBinding> layered_binding(TextureShape shape,
+                                           std::vector<std::shared_ptr<const img::Image>> layers);
 
 inline constexpr uint32_t kMaxSamplers = 16;
 

@@ -74,6 +74,15 @@ struct TextureSetting {
   std::shared_ptr<const img::Image> image; // when set: this image, `source` only names it
 };
 
+// A TextureSetting's source names a cube or volume texture by its layers' sources:
+// "cube:+X,−X,+Y,−Y,+Z,−Z" (six files or builtin specs, D3D9's face order) or
+// "volume:S0,S1,…" (the slices from w = 0 up). Any other source is one 2D texture.
+struct LayeredSources {
+  TextureShape shape = TextureShape::Tex2D;
+  std::vector<std::string> sources; // one for a 2D texture
+};
+LayeredSources layered_sources(const std::string& source);
+
 // texbem/texbeml's 2×2 bump-environment matrix of texture stage `stage` (D3DTSS_BUMPENVMAT00,
 // 01, 10, 11): u' = u + M00·du + M10·dv, v' = v + M01·du + M11·dv. Stages not given keep 0
 // (texbem then samples at the unbumped coordinate, as a D3D9 device does by default).

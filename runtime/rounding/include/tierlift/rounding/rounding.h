@@ -165,4 +165,29 @@ inline float lerp(float alpha, float v0, float v1) {
   return flush(std::fma(alpha, flush(v1 - v0), v0));
 }
 
+// ---- Cube maps (NUMERICS.md, cube maps) ------------------------------------------------
+
+// Where a direction (x, y, z) reads a cube texture: the face (0..5 in D3D9's order +X, −X,
+// +Y, −Y, +Z, −Z, which is Vulkan's layer order) and the face coordinates (s, t) in [0, 1].
+// The major axis is the component of largest magnitude; on a tie |z| wins over |x| and |y|,
+// and |y| over |x| (neither Direct3D 9 nor Vulkan fixes ties; this is lavapipe's choice,
+// measured). The face is the positive one unless that component is < 0 (−0 picks +).
+// Per face (sc, tc, ma), as Direct3D 9 and Vulkan both tabulate them:
+//   +X (−z, −y, x)   −X (z, −y, x)   +Y (x, z, y)   −Y (x, −z, y)   +Z (x, −y, z)   −Z (−x, −y, z)
+// and s = (sc/|ma| + 1)/2, t = (tc/|ma| + 1)/2.
+struct CubeCoord {
+  uint32_t face = 0;
+  float s = 0, t = 0;
+};
+// The face and (sc, tc, |ma|) of the table above, shared by both rules below.
+struct CubeAxes {
+  uint32_t face = 0;
+  float sc = 0, tc = 0, ma = 0; // ma = |major component|
+};
+CubeAxes cube_axes(float x, float y, float z);
+// Exact: s and t computed in double from the float components, rounded once to float.
+CubeCoord cube_coord_exact(float x, float y, float z);
+// lavapipe: h = fl32(0.5/|ma|), s = fl32(fl32(sc·h) + 0.5), t likewise (measured bit-exact).
+CubeCoord cube_coord_llvmpipe(float x, float y, float z);
+
 } // namespace tierlift::rounding

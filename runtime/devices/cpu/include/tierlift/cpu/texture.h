@@ -40,6 +40,13 @@ Vec4 sample_texture(const img::Image& image, const SamplerState& sampler, float 
 Vec4 sample_texture_llvmpipe(const img::Image& image, const SamplerState& sampler, float u, float v,
                              int subtexel_bits);
 
+// A cube read (coord = direction x, y, z; rounding::cube_coord_* picks the face and (s, t),
+// the face is read with edge clamping) and a volume read (u, v, w: point, or trilinear as the
+// lerp of two slices' bilinear reads, ADDRESSW on w). llvmpipe: the rules of
+// sample_texture_llvmpipe, else sample_texture's (texture_sampling_layered.cpp).
+Vec4 sample_cube(const TextureBinding& b, const Vec4& coord, bool llvmpipe, int subtexel_bits);
+Vec4 sample_volume(const TextureBinding& b, const Vec4& coord, bool llvmpipe, int subtexel_bits);
+
 // The TextureUnit the pixel stage of a draw sees: sample(stage, …) reads bindings[stage].
 class BoundTextures final : public TextureUnit {
 public:
