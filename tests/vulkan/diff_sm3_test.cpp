@@ -158,9 +158,11 @@ TEST_F(VulkanTest, VposIsThePixelsIntegerCoordinates) {
 // vFace: +1 on a triangle clockwise on screen (Direct3D 9's front face), −1 on one
 // counter-clockwise, on both devices. The left half of the target is one triangle pair
 // wound clockwise, the right half the same pair wound the other way.
-TEST_F(VulkanTest, VfaceIsTheSignOfTheWinding) {
-  DiffResult r = run_diff_with(
-      *dev, "vs_3_0\ndcl_position v0\ndcl_position o0\nmov o0, v0\n",
+// Left half clockwise, right half counter-clockwise on screen; vFace on both devices with
+// `front` as the pass's front face.
+DiffResult draw_both_windings(vulkan::Device& dev, pass::FrontFace front) {
+  return run_diff_with(
+      dev, "vs_3_0\ndcl_position v0\ndcl_position o0\nmov o0, v0\n",
       "ps_3_0\ndcl vFace\nmov oC0, vFace\n", DiffSetup{}, [&](cpu::Pass& p) {
         p.vertices.assign(8, cpu::VertexInput{});
         // Clip space: y up. Left half x in [-1, 0], right half [0, 1].
@@ -173,15 +175,31 @@ TEST_F(VulkanTest, VfaceIsTheSignOfTheWinding) {
         }
         // tl → tr → br is clockwise on screen; the right half lists it backwards.
         p.triangles = {{0, 1, 2}, {0, 2, 3}, {4, 6, 5}, {4, 7, 6}};
+        p.front_face = front;
       });
-  ASSERT_TRUE(r.ok);
+}
+
+void expect_face_signs(const DiffResult& r, float left) {
   for (const img::Image* im : {&r.cpu, &r.vk})
     for (uint32_t y = 0; y < kDiffH; ++y)
       for (uint32_t x = 0; x < kDiffW; ++x) {
-        const float want = x < kDiffW / 2 ? 1.0f : -1.0f;
+        const float want = x < kDiffW / 2 ? left : -left;
         ASSERT_EQ(im->rgba[4 * (size_t{y} * kDiffW + x)], want)
             << (im == &r.cpu ? "cpu" : "vulkan") << " pixel " << x << "," << y;
       }
+}
+
+TEST_F(VulkanTest, VfaceIsTheSignOfTheWinding) {
+  DiffResult r = draw_both_windings(*dev, pass::FrontFace::Clockwise);
+  ASSERT_TRUE(r.ok);
+  expect_face_signs(r, 1.0f);
+}
+
+// Pass::front_face (`tierlift run --front-face ccw`): the counter-clockwise half is the front.
+TEST_F(VulkanTest, VfaceFollowsTheFrontFaceSetting) {
+  DiffResult r = draw_both_windings(*dev, pass::FrontFace::CounterClockwise);
+  ASSERT_TRUE(r.ok);
+  expect_face_signs(r, -1.0f);
 }
 
 // NUMERICS.md F6: normal0 and tangent0 have no 2.0 register; each stage carries them in the
@@ -224,6 +242,23 @@ TEST_F(VulkanTest, ExtraSemanticsLinkAcrossStages) {
                      "normal0"),
               std::string::npos)
         << m;
+}
+
+// NUMERICS.md F8: without multisampling `_centroid` samples where a plain input does, the
+// pixel centre (a covered pixel's one sample), on both devices: the interpolated texcoord is
+// the same image bit for bit with and without it.
+TEST_F(VulkanTest, CentroidWithOneSampleIsThePixelCentre) {
+  const std::string vs = "vs_3_0\ndcl_position v0\ndcl_texcoord v3\ndcl_position o0\n"
+                         "dcl_texcoord0 o1\nmov o0, v0\nmov o1, v3\n";
+  DiffResult plain = run_diff(*dev, vs, "ps_3_0\ndcl_texcoord0 v0\nmov oC0, v0\n", DiffSetup{});
+  DiffResult centroid =
+      run_diff(*dev, vs, "ps_3_0\ndcl_texcoord0_centroid v0\nmov oC0, v0\n", DiffSetup{});
+  ASSERT_TRUE(plain.ok && centroid.ok);
+  EXPECT_EQ(centroid.diff.max_scaled, 0.0) << centroid.diff.first_bad;
+  EXPECT_EQ(centroid.cpu.rgba, plain.cpu.rgba);
+  EXPECT_EQ(centroid.vk.rgba, plain.vk.rgba);
+  // The quad-uv at pixel (3, 0): the harness samples at pixel centres (x + ½) / W.
+  EXPECT_NEAR(centroid.cpu.rgba[4 * 3], 3.5f / kDiffW, 1e-6f);
 }
 
 } // namespace

@@ -62,6 +62,7 @@ ir::Result<pass::Pass> make_pass(const PassDesc& desc, const ir::Conventions& co
     binding.stage = b.stage_state;
   }
   pass.blend = desc.blend;
+  pass.front_face = desc.front_face;
   pass.conventions = conventions;
   pass.pixel_spirv = desc.glsl_spirv;
   return pass;
