@@ -33,7 +33,7 @@ namespace {
 
 struct RunFlags {
   std::string vs, ps, size = "256x256", format = "rgba32f", filter = "point", address = "wrap";
-  std::string pixel_center = "d3d9", output;
+  std::string pixel_center = "d3d9", front_face = "cw", output;
   std::vector<std::string> consts, inputs, attrs, textures, probes, bumps;
   int subtexel_bits = 0;
   std::string ps1x_max{ir::kDefaultPs1xPreset};
@@ -84,6 +84,10 @@ pass::RunRequest build_request(const RunFlags& f) {
   r.conventions.pixel_center =
       need(parse_pixel_center(f.pixel_center),
            fmt::format("--pixel-center '{}': expected d3d9 or modern", f.pixel_center));
+  if (f.front_face != "cw" && f.front_face != "ccw")
+    throw UsageError{fmt::format("--front-face '{}': expected cw or ccw", f.front_face)};
+  r.front_face =
+      f.front_face == "cw" ? pass::FrontFace::Clockwise : pass::FrontFace::CounterClockwise;
   if (f.subtexel_bits < 0 || f.subtexel_bits > 24)
     throw UsageError{fmt::format("--subtexel-bits {}: expected 0 (exact) .. 24", f.subtexel_bits)};
   r.conventions.subtexel_bits = f.subtexel_bits;
@@ -448,6 +452,10 @@ void register_run_command(CLI::App& app) {
   sub->add_option("--address", f->address, "clamp | wrap | mirror | border (all samplers)")
       ->capture_default_str();
   sub->add_option("--pixel-center", f->pixel_center, "d3d9 | modern")->capture_default_str();
+  sub->add_option("--front-face", f->front_face,
+                  "cw | ccw: the on-screen winding ps_3_0's vFace calls front (+1); the "
+                  "full-screen quad is clockwise")
+      ->capture_default_str();
   sub->add_option("--subtexel-bits", f->subtexel_bits, "Bilinear fraction bits (0 = exact)")
       ->capture_default_str();
   sub->add_option("--ps1x-max", f->ps1x_max,

@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
+
+#include <nlohmann/json.hpp>
 
 #include "cli_test_util.h"
 #include "temp_dir.h"
@@ -24,6 +27,12 @@ constexpr const char* kPs30 = "ps_3_0\n"
                               "setp_gt p0, r0, c0\n"
                               "(p0) mul r0, r0, c1\n"
                               "mov oC0, r0\n";
+
+// With --json the device error is a diagnostic on standard output.
+bool no_vulkan(const tierlift::test::CliResult& r) {
+  return r.exit_code == 2 && (r.err.find("mesa-vulkan-drivers") != std::string::npos ||
+                              r.out.find("mesa-vulkan-drivers") != std::string::npos);
+}
 
 constexpr const char* kVs30 = "vs_3_0\n"
                               "dcl_position v0\n"
@@ -83,4 +92,25 @@ TEST(CliLaterProfiles, ProfilePresetsOfFxc) {
   EXPECT_NE(b.err.find("b.psh:3:1: error: dsx is a gradient instruction"), std::string::npos)
       << b.err;
   EXPECT_EQ(run_cli("check --profile ps_2_c " + ps).exit_code, 2);
+}
+
+// --front-face: the full-screen quad is wound clockwise, so vFace is +1 by default (Direct3D
+// 9's front face) and −1 with --front-face ccw, on both devices; anything else is a usage
+// error.
+TEST(CliLaterProfiles, FrontFaceFlagDecidesVface) {
+  Scratch s;
+  const std::string ps = s.file("f.psh", "ps_3_0\ndcl vFace\nmov oC0, vFace\n");
+  for (const char* backend : {"cpu", "vulkan"})
+    for (const auto& [flag, want] : {std::pair{"", 1.0}, std::pair{" --front-face cw", 1.0},
+                                     std::pair{" --front-face ccw", -1.0}}) {
+      auto r = run_cli("run --ps " + ps + " --size 2x2 --format rgba32f --probe 1,1 --json" + flag +
+                       " --backend " + backend);
+      if (no_vulkan(r)) break;
+      ASSERT_EQ(r.exit_code, 0) << backend << flag << r.err;
+      auto j = nlohmann::json::parse(r.out);
+      EXPECT_EQ(j["result"]["probes"][0]["rgba"][0], want) << backend << flag;
+    }
+  auto bad = run_cli("run --ps " + ps + " --size 2x2 --front-face up");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--front-face 'up': expected cw or ccw"), std::string::npos) << bad.err;
 }

@@ -7,6 +7,7 @@
 #include "tierlift/ir/passes.h"
 #include "tierlift/ir/profile.h"
 #include "tierlift/ir/registers.h"
+#include "tierlift/ir/sm3_interface.h"
 
 using namespace tierlift::ir;
 
@@ -121,7 +122,7 @@ TEST(LaterProfiles, CapsPresets) {
 
 TEST(LaterProfiles, WhatDoesNotRunYetIsRefusedWithAPosition) {
   // 2.x and 3.0 run on both devices (mov, setp, ...), except what each error names: here
-  // a predicated texkill and a semantic the 2.0 interface has no register for.
+  // a predicated texkill and fog0 read by a pixel program (a vertex output only: NUMERICS.md F6).
   Program p;
   p.profile = Profile::ps_3_0;
   p.version_loc = {1, 1, 1, 6};
@@ -155,16 +156,96 @@ TEST(LaterProfiles, WhatDoesNotRunYetIsRefusedWithAPosition) {
       s.diagnostics()[0].message.find("not supported yet by SPIR-V: predicated texkill in ps_3_0"),
       std::string::npos);
   p.code.pop_back();
-  Declaration normal;
-  normal.reg.file = RegFile::Input;
-  normal.reg.index = 2;
-  normal.usage = DeclUsage::Normal;
-  normal.loc = {1, 5, 1, 4};
-  p.decls.push_back(normal);
+  Declaration fog;
+  fog.reg.file = RegFile::Input;
+  fog.reg.index = 2;
+  fog.usage = DeclUsage::Fog;
+  fog.loc = {1, 5, 1, 4};
+  p.decls.push_back(fog);
   s = check_executable(p, "the interpreter");
   ASSERT_FALSE(s.ok());
   EXPECT_EQ(s.diagnostics()[0].loc.line, 5u);
-  EXPECT_NE(s.diagnostics()[0].message.find("the semantic normal0"), std::string::npos);
+  EXPECT_NE(s.diagnostics()[0].message.find("the semantic fog0 in a pixel program"),
+            std::string::npos);
+}
+
+Declaration linked(RegFile file, uint32_t index, DeclUsage usage, uint8_t usage_index,
+                   uint32_t line) {
+  Declaration d;
+  d.reg.file = file;
+  d.reg.index = index;
+  d.usage = usage;
+  d.usage_index = usage_index;
+  d.loc = {1, line, 1, 4};
+  return d;
+}
+
+Program ps30(std::vector<Declaration> decls) {
+  Program p;
+  p.profile = Profile::ps_3_0;
+  p.decls = std::move(decls);
+  return p;
+}
+
+// NUMERICS.md F6: semantics the 2.0 interface has no register for take the texcoord slots the
+// program leaves free, t7 down, in (usage, index) order whatever the register numbers.
+TEST(LaterProfiles, ExtraSemanticsTakeTheFreeTexcoordSlotsFromTheTop) {
+  const Program p = ps30({linked(RegFile::Input, 0, DeclUsage::Tangent, 0, 2),
+                          linked(RegFile::Input, 1, DeclUsage::TexCoord, 7, 3),
+                          linked(RegFile::Input, 2, DeclUsage::Normal, 0, 4),
+                          linked(RegFile::Input, 3, DeclUsage::Normal, 1, 5)});
+  ASSERT_TRUE(check_executable(p, "SPIR-V").ok());
+  const Program l = link_by_semantic(p);
+  // normal0 < normal1 < tangent0 (usage codes 3, 3, 6); texcoord7 keeps t7.
+  EXPECT_EQ(l.decls[0].reg.file, RegFile::Texture);
+  EXPECT_EQ(l.decls[0].reg.index, 4u); // tangent0
+  EXPECT_EQ(l.decls[1].reg.index, 7u); // texcoord7
+  EXPECT_EQ(l.decls[2].reg.index, 6u); // normal0
+  EXPECT_EQ(l.decls[3].reg.index, 5u); // normal1
+}
+
+TEST(LaterProfiles, ExtraSemanticsBeyondTheFreeSlotsAreRefused) {
+  std::vector<Declaration> d;
+  for (uint8_t t = 0; t < 7; ++t) d.push_back(linked(RegFile::Input, t, DeclUsage::TexCoord, t, 2));
+  d.push_back(linked(RegFile::Input, 7, DeclUsage::Normal, 0, 3));   // takes t7
+  d.push_back(linked(RegFile::Input, 8, DeclUsage::Binormal, 0, 4)); // nothing left
+  const Status s = check_executable(ps30(d), "SPIR-V");
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.diagnostics()[0].loc.line, 4u);
+  EXPECT_NE(s.diagnostics()[0].message.find("the semantic binormal0"), std::string::npos);
+}
+
+// A pair links where both stages place their extra semantics alike; where they do not, the
+// pair is refused rather than reading one semantic as another.
+TEST(LaterProfiles, PairsWhoseExtraSemanticsLandApartAreRefused) {
+  Program vs;
+  vs.profile = Profile::vs_3_0;
+  vs.decls = {linked(RegFile::Output, 0, DeclUsage::Position, 0, 2),
+              linked(RegFile::Output, 1, DeclUsage::Normal, 0, 3),
+              linked(RegFile::Output, 2, DeclUsage::Tangent, 0, 4)};
+  const Program both = ps30({linked(RegFile::Input, 3, DeclUsage::Tangent, 0, 2),
+                             linked(RegFile::Input, 5, DeclUsage::Normal, 0, 3)});
+  EXPECT_TRUE(check_semantic_pair(vs, both).ok());
+  // Tangent alone goes to t7 in the pixel program, where the vertex program puts normal0.
+  const Program tangent_only = ps30({linked(RegFile::Input, 0, DeclUsage::Tangent, 0, 2)});
+  const Status s = check_semantic_pair(vs, tangent_only);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("reads tangent0 from texcoord slot t7, where the vertex program "
+                             "puts normal0"),
+            std::string::npos)
+      << s.message();
+  // A vs_2_0 that writes oT7 cannot feed a ps_3_0 normal0 (which sits in t7).
+  Program vs20;
+  vs20.profile = Profile::vs_2_0;
+  Instruction mov;
+  mov.op = Opcode::Mov;
+  mov.dst = DstOperand{RegFile::TexCrdOut, 7, kFullMask, {1, 2, 5, 3}};
+  vs20.code.push_back(mov);
+  EXPECT_FALSE(
+      check_semantic_pair(vs20, ps30({linked(RegFile::Input, 0, DeclUsage::Normal, 0, 2)})).ok());
+  vs20.code[0].dst->index = 6;
+  EXPECT_TRUE(
+      check_semantic_pair(vs20, ps30({linked(RegFile::Input, 0, DeclUsage::Normal, 0, 2)})).ok());
 }
 
 // vs_3_0 may address v# and o# with aL; the devices do not run that yet (only c#).

@@ -135,6 +135,14 @@ const RuleCase kCases[] = {
      15,
      {"source 2 of texld must be a sampler s#, not t1"},
      "ps_2_0\ndcl t0\ndcl_2d s1\ntexld r0, t0, s1\nmov oC0, r0\n"},
+    // ps_3_0 takes a colour output as texld's destination (fxc writes it: tests/corpus/bgfx).
+    {"TexldIntoColourOutputOnlyInPs30",
+     "ps_2_0\ndcl t0\ndcl_2d s0\ntexld oC0, t0, s0\n",
+     "operand-kind",
+     4,
+     7,
+     {"the destination of texld must be a temporary r#, not oC0"},
+     "ps_3_0\ndcl_texcoord v0\ndcl_2d s0\ntexld oC0, v0, s0\n"},
 };
 
 TIERLIFT_RULE_SUITE(InstructionRules, kCases);

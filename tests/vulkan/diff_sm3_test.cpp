@@ -3,7 +3,8 @@
 // called on p0, texkill inside flow), setp and predicated writes, sincos's one-source form,
 // vs_3_0 loops, over random texture and vertex inputs with special values, on the CPU device
 // and lavapipe; and vPos / vFace against their closed forms on both devices. Each listing
-// links a vs_3_0 and a ps_3_0 by semantic (o1 texcoord0 → v0 texcoord0).
+// links a vs_3_0 and a ps_3_0 by semantic (o1 texcoord0 → v0 texcoord0); normal0 and
+// tangent0, which the 2.0 interface has no register for, link through free texcoord slots.
 #include <set>
 
 #include "diff_harness.h"
@@ -157,9 +158,11 @@ TEST_F(VulkanTest, VposIsThePixelsIntegerCoordinates) {
 // vFace: +1 on a triangle clockwise on screen (Direct3D 9's front face), −1 on one
 // counter-clockwise, on both devices. The left half of the target is one triangle pair
 // wound clockwise, the right half the same pair wound the other way.
-TEST_F(VulkanTest, VfaceIsTheSignOfTheWinding) {
-  DiffResult r = run_diff_with(
-      *dev, "vs_3_0\ndcl_position v0\ndcl_position o0\nmov o0, v0\n",
+// Left half clockwise, right half counter-clockwise on screen; vFace on both devices with
+// `front` as the pass's front face.
+DiffResult draw_both_windings(vulkan::Device& dev, pass::FrontFace front) {
+  return run_diff_with(
+      dev, "vs_3_0\ndcl_position v0\ndcl_position o0\nmov o0, v0\n",
       "ps_3_0\ndcl vFace\nmov oC0, vFace\n", DiffSetup{}, [&](cpu::Pass& p) {
         p.vertices.assign(8, cpu::VertexInput{});
         // Clip space: y up. Left half x in [-1, 0], right half [0, 1].
@@ -172,15 +175,90 @@ TEST_F(VulkanTest, VfaceIsTheSignOfTheWinding) {
         }
         // tl → tr → br is clockwise on screen; the right half lists it backwards.
         p.triangles = {{0, 1, 2}, {0, 2, 3}, {4, 6, 5}, {4, 7, 6}};
+        p.front_face = front;
       });
-  ASSERT_TRUE(r.ok);
+}
+
+void expect_face_signs(const DiffResult& r, float left) {
   for (const img::Image* im : {&r.cpu, &r.vk})
     for (uint32_t y = 0; y < kDiffH; ++y)
       for (uint32_t x = 0; x < kDiffW; ++x) {
-        const float want = x < kDiffW / 2 ? 1.0f : -1.0f;
+        const float want = x < kDiffW / 2 ? left : -left;
         ASSERT_EQ(im->rgba[4 * (size_t{y} * kDiffW + x)], want)
             << (im == &r.cpu ? "cpu" : "vulkan") << " pixel " << x << "," << y;
       }
+}
+
+TEST_F(VulkanTest, VfaceIsTheSignOfTheWinding) {
+  DiffResult r = draw_both_windings(*dev, pass::FrontFace::Clockwise);
+  ASSERT_TRUE(r.ok);
+  expect_face_signs(r, 1.0f);
+}
+
+// Pass::front_face (`tierlift run --front-face ccw`): the counter-clockwise half is the front.
+TEST_F(VulkanTest, VfaceFollowsTheFrontFaceSetting) {
+  DiffResult r = draw_both_windings(*dev, pass::FrontFace::CounterClockwise);
+  ASSERT_TRUE(r.ok);
+  expect_face_signs(r, -1.0f);
+}
+
+// NUMERICS.md F6: normal0 and tangent0 have no 2.0 register; each stage carries them in the
+// texcoord slots it leaves free (t7 is texcoord7's here, so normal0 → t6, tangent0 → t5),
+// whatever o#/v# the two programs chose. Flat values, so the closed form is the constants.
+TEST_F(VulkanTest, ExtraSemanticsLinkAcrossStages) {
+  const std::string vs = "vs_3_0\ndef c0, 0.25, 0, 0, 1\ndef c1, 0, 0.75, 0, 0\n"
+                         "def c2, 0, 0, 0.5, 0\ndcl_position v0\ndcl_position o0\n"
+                         "dcl_normal o1\ndcl_texcoord7 o2\ndcl_tangent o3\n"
+                         "mov o0, v0\nmov o1, c0\nmov o2, c2\nmov o3, c1\n";
+  const std::string ps = "ps_3_0\ndcl_tangent v2\ndcl_texcoord7 v4\ndcl_normal v7\n"
+                         "mov r0, v7\nmov r0.y, v2.y\nmov r0.z, v4.z\nmov oC0, r0\n";
+  DiffResult r = run_diff(*dev, vs, ps, DiffSetup{});
+  ASSERT_TRUE(r.ok);
+  EXPECT_EQ(r.diff.max_scaled, 0.0) << r.diff.first_bad;
+  for (const img::Image* im : {&r.cpu, &r.vk})
+    for (size_t p = 0; p < im->rgba.size() / 4; ++p) {
+      ASSERT_NEAR(im->rgba[p * 4 + 0], 0.25f, 1e-6f) << p;
+      ASSERT_NEAR(im->rgba[p * 4 + 1], 0.75f, 1e-6f) << p;
+      ASSERT_NEAR(im->rgba[p * 4 + 2], 0.5f, 1e-6f) << p;
+      ASSERT_NEAR(im->rgba[p * 4 + 3], 1.0f, 1e-6f) << p;
+    }
+  // Without tangent0 in the vertex program, the pixel program's tangent0 (t5 there) would
+  // read nothing while normal0 sits in t6 on both sides: a pair both devices refuse
+  // when its slots disagree (here the vertex program puts normal0 where ps reads tangent0).
+  cpu::Pass pass;
+  pass.vertex_program = parse_listing("vs_3_0\ndcl_position v0\ndcl_position o0\n"
+                                      "dcl_normal o1\nmov o0, v0\nmov o1, v0\n",
+                                      "n.vsh");
+  pass.pixel_program = parse_listing("ps_3_0\ndcl_tangent v0\nmov oC0, v0\n", "t.psh");
+  ASSERT_TRUE(pass.vertex_program && pass.pixel_program);
+  cpu::set_full_screen_quad(pass, 0);
+  img::Image cpu_out(kDiffW, kDiffH), vk_out(kDiffW, kDiffH);
+  ir::Result<cpu::DrawStats> st = cpu::draw(pass, cpu_out, 1);
+  ir::Result<pass::DrawReport> vk = dev->draw(pass, vk_out);
+  ASSERT_FALSE(st.ok());
+  ASSERT_FALSE(vk.ok());
+  for (const std::string& m : {st.message(), vk.message()})
+    EXPECT_NE(m.find("reads tangent0 from texcoord slot t7, where the vertex program puts "
+                     "normal0"),
+              std::string::npos)
+        << m;
+}
+
+// NUMERICS.md F8: without multisampling `_centroid` samples where a plain input does, the
+// pixel centre (a covered pixel's one sample), on both devices: the interpolated texcoord is
+// the same image bit for bit with and without it.
+TEST_F(VulkanTest, CentroidWithOneSampleIsThePixelCentre) {
+  const std::string vs = "vs_3_0\ndcl_position v0\ndcl_texcoord v3\ndcl_position o0\n"
+                         "dcl_texcoord0 o1\nmov o0, v0\nmov o1, v3\n";
+  DiffResult plain = run_diff(*dev, vs, "ps_3_0\ndcl_texcoord0 v0\nmov oC0, v0\n", DiffSetup{});
+  DiffResult centroid =
+      run_diff(*dev, vs, "ps_3_0\ndcl_texcoord0_centroid v0\nmov oC0, v0\n", DiffSetup{});
+  ASSERT_TRUE(plain.ok && centroid.ok);
+  EXPECT_EQ(centroid.diff.max_scaled, 0.0) << centroid.diff.first_bad;
+  EXPECT_EQ(centroid.cpu.rgba, plain.cpu.rgba);
+  EXPECT_EQ(centroid.vk.rgba, plain.vk.rgba);
+  // The quad-uv at pixel (3, 0): the harness samples at pixel centres (x + ½) / W.
+  EXPECT_NEAR(centroid.cpu.rgba[4 * 3], 3.5f / kDiffW, 1e-6f);
 }
 
 } // namespace

@@ -139,7 +139,9 @@ void check_texture(Ctx& c, const ir::Instruction& ins) {
       c.error(d.loc, "operand-kind", "texdepth works on r5 only");
     return;
   }
-  need_temp_dst(c, ins);
+  // ps_3_0 may sample straight into a colour output: fxc writes `texld oC0, v0, s0` for a
+  // plain copy, and Direct3D 9 runs it (tests/corpus/bgfx). Earlier models take r# only.
+  if (!(c.ps30() && ins.dst && ins.dst->file == RegFile::ColorOut)) need_temp_dst(c, ins);
   if (c.sm3()) {
     // 3.0 texture coordinates come from r#, v# or c#.
     const RegFile f = ins.src.empty() ? RegFile::Temp : ins.src[0].file;

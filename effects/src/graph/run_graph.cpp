@@ -64,6 +64,7 @@ ir::Result<pass::Pass> make_pass(const PassDesc& desc, const ir::Conventions& co
     binding.layers = b.layers;
   }
   pass.blend = desc.blend;
+  pass.front_face = desc.front_face;
   pass.conventions = conventions;
   pass.pixel_spirv = desc.glsl_spirv;
   return pass;

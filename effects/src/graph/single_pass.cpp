@@ -53,6 +53,7 @@ ir::Result<EffectGraph> single_pass_graph(const pass::Pass& pass, uint32_t width
   }
   desc.scissor = pass.scissor;
   desc.blend = pass.blend;
+  desc.front_face = pass.front_face;
   // One input texture per image, however many stages bind it (Listing 4 binds one four
   // times): one upload on Vulkan, one copy on the CPU.
   std::map<const img::Image*, std::string> names;

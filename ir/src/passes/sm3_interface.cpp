@@ -2,12 +2,16 @@
 // sm3_interface.h for why the backends want it).
 #include "tierlift/ir/sm3_interface.h"
 
+#include <algorithm>
 #include <map>
+#include <vector>
 
 #include <fmt/format.h>
 
 namespace tierlift::ir {
 namespace {
+
+constexpr int kSlots = 8; // texture-coordinate slots of the 2.0 interface: oT0-7 / t0-7
 
 // The file a 3.0 program declares its linked registers in: o# (vs_3_0), v# (ps_3_0).
 std::optional<RegFile> linked_file(Profile p) {
@@ -25,13 +29,85 @@ std::string usage_text(DeclUsage u, uint8_t index) {
 }
 
 using Renames = std::map<uint32_t, std::pair<RegFile, uint32_t>>;
+using Semantic = std::pair<DeclUsage, uint8_t>;
+
+// A semantic the 2.0 interface has no register for in either stage (normal, tangent,
+// binormal, blendweight, texcoord8, color2, ...): carried in a free texture-coordinate slot.
+// position0, psize0 and fog0 have a vertex register but no pixel one, so a pixel program
+// that reads them stays refused rather than taking a slot the vertex stage never fills.
+bool is_extra(DeclUsage usage, uint8_t usage_index) {
+  return !semantic_register(ShaderStage::Vertex, usage, usage_index);
+}
+
+struct Placement {
+  std::map<Semantic, uint32_t> slot; // extra semantic -> texture-coordinate slot
+  std::vector<const Declaration*> unplaced;
+};
+
+// The extra semantics of `file`, in (usage, index) order, take the slots t7, t6, ... that no
+// texcoordN declaration of the same program names. The order depends on the set of
+// semantics only (not on register numbers or declaration order), so a vertex and a pixel
+// program that carry the same extra semantics and texcoords place them alike.
+Placement place_extras(const Program& program, RegFile file) {
+  std::map<Semantic, const Declaration*> extras;
+  uint32_t taken = 0; // bit n: texcoordN is declared
+  for (const Declaration& d : program.decls) {
+    if (d.reg.file != file) continue;
+    if (d.usage == DeclUsage::TexCoord && d.usage_index < kSlots) taken |= 1u << d.usage_index;
+    if (is_extra(d.usage, d.usage_index)) extras.emplace(Semantic{d.usage, d.usage_index}, &d);
+  }
+  Placement out;
+  int next = kSlots - 1;
+  for (const auto& [semantic, decl] : extras) {
+    while (next >= 0 && (taken & (1u << next))) --next;
+    if (next < 0) {
+      out.unplaced.push_back(decl);
+      continue;
+    }
+    out.slot.emplace(semantic, static_cast<uint32_t>(next--));
+  }
+  return out;
+}
 
 Renames renames(const Program& program, RegFile file) {
+  const Placement placed = place_extras(program, file);
+  const RegFile slot_file =
+      program.stage() == ShaderStage::Vertex ? RegFile::TexCrdOut : RegFile::Texture;
   Renames out;
-  for (const Declaration& d : program.decls)
-    if (d.reg.file == file)
-      if (auto r = semantic_register(program.stage(), d.usage, d.usage_index))
-        out.emplace(d.reg.index, *r);
+  for (const Declaration& d : program.decls) {
+    if (d.reg.file != file) continue;
+    if (auto r = semantic_register(program.stage(), d.usage, d.usage_index))
+      out.emplace(d.reg.index, *r);
+    else if (auto it = placed.slot.find({d.usage, d.usage_index}); it != placed.slot.end())
+      out.emplace(d.reg.index, std::pair{slot_file, it->second});
+  }
+  return out;
+}
+
+// Slot -> the semantic that fills it, for one stage as it runs: a 3.0 program by its
+// declarations, an earlier one by the oT#/t# registers its code names (texcoordN at N).
+std::map<uint32_t, Semantic> slot_semantics(const Program& program) {
+  std::map<uint32_t, Semantic> out;
+  const std::optional<RegFile> file = linked_file(program.profile);
+  if (file) {
+    const Placement placed = place_extras(program, *file);
+    for (const auto& [semantic, slot] : placed.slot) out.emplace(slot, semantic);
+    for (const Declaration& d : program.decls)
+      if (d.reg.file == *file && d.usage == DeclUsage::TexCoord && d.usage_index < kSlots)
+        out.emplace(d.usage_index, Semantic{DeclUsage::TexCoord, d.usage_index});
+    return out;
+  }
+  const RegFile slot_file =
+      program.stage() == ShaderStage::Vertex ? RegFile::TexCrdOut : RegFile::Texture;
+  auto add = [&](RegFile f, uint32_t index) {
+    if (f == slot_file && index < kSlots)
+      out.emplace(index, Semantic{DeclUsage::TexCoord, static_cast<uint8_t>(index)});
+  };
+  for (const Declaration& d : program.decls) add(d.reg.file, d.reg.index);
+  for (const Instruction& ins : program.code) {
+    if (ins.dst) add(ins.dst->file, ins.dst->index);
+    for (const SrcOperand& src : ins.src) add(src.file, src.index);
+  }
   return out;
 }
 
@@ -70,17 +146,48 @@ void check_semantic_interface(const Program& program, std::string_view backend,
   std::map<uint32_t, const Declaration*> seen;
   for (const Declaration& d : program.decls) {
     if (d.reg.file != *file) continue;
-    if (!semantic_register(program.stage(), d.usage, d.usage_index))
+    if (!semantic_register(program.stage(), d.usage, d.usage_index) &&
+        !is_extra(d.usage, d.usage_index))
       sink.error(d.loc, "not-supported",
-                 fmt::format("not supported yet by {}: the semantic {} ({} links position0, "
-                             "psize0, fog0, color0-1 and texcoord0-7)",
-                             backend, usage_text(d.usage, d.usage_index), backend));
+                 fmt::format("not supported yet by {}: the semantic {} in a pixel program (it "
+                             "is a vertex-stage output only)",
+                             backend, usage_text(d.usage, d.usage_index)));
     if (!seen.emplace(d.reg.index, &d).second)
       sink.error(d.loc, "not-supported",
                  fmt::format("not supported yet by {}: two semantics in {} (one semantic per "
                              "register)",
                              backend, register_name(d.reg.file, d.reg.index)));
   }
+  for (const Declaration* d : place_extras(program, *file).unplaced)
+    sink.error(d->loc, "not-supported",
+               fmt::format("not supported yet by {}: the semantic {} (semantics beyond position0, "
+                           "psize0, fog0, color0-1 and texcoord0-7 ride in the texcoord slots the "
+                           "program leaves free, and none is left)",
+                           backend, usage_text(d->usage, d->usage_index)));
+}
+
+Status check_semantic_pair(const Program& vertex, const Program& pixel) {
+  if (!linked_file(vertex.profile) && !linked_file(pixel.profile)) return ok_status();
+  const std::map<uint32_t, Semantic> vs = slot_semantics(vertex);
+  const std::map<uint32_t, Semantic> ps = slot_semantics(pixel);
+  for (const auto& [slot, semantic] : ps) {
+    const auto there = vs.find(slot);
+    const auto elsewhere = std::find_if(vs.begin(), vs.end(), [&](const auto& e) {
+      return e.second == semantic && e.first != slot;
+    });
+    if ((there == vs.end() || there->second == semantic) && elsewhere == vs.end()) continue;
+    const std::string what = usage_text(semantic.first, semantic.second);
+    const std::string vs_has =
+        there != vs.end() && there->second != semantic
+            ? usage_text(there->second.first, there->second.second)
+            : fmt::format("nothing ({} is in t{} there)", what, elsewhere->first);
+    return fail(std::string(), "not-supported",
+                fmt::format("not supported yet: the pixel program reads {} from texcoord slot "
+                            "t{}, where the vertex program puts {} (the two stages carry "
+                            "different semantics beyond the 2.0 interface)",
+                            what, slot, vs_has));
+  }
+  return ok_status();
 }
 
 Program link_by_semantic(const Program& program) {

@@ -3,6 +3,8 @@
 
 #include <fmt/format.h>
 
+#include "tierlift/ir/sm3_interface.h"
+
 namespace tierlift::pass {
 
 ir::Status check_supported(const Pass& pass, const Capabilities& caps, std::string_view device) {
@@ -26,6 +28,12 @@ ir::Status check_supported(const Pass& pass, const Capabilities& caps, std::stri
   if (!pass.fixed_stages.empty() && pass.pixel_program)
     return ir::fail(std::string(device), "pass",
                     "fixed-function texture stages and a pixel program exclude each other");
+  // Both devices run each stage on the 2.0 interface; a pair whose semantics would land in
+  // different slots there cannot link (ir::check_semantic_pair).
+  if (pass.vertex_program && pass.pixel_program)
+    if (ir::Status s = ir::check_semantic_pair(*pass.vertex_program, *pass.pixel_program); !s)
+      return ir::fail(std::string(device), "unsupported",
+                      fmt::format("the {} device cannot draw this pair: {}", device, s.message()));
   return ir::ok_status();
 }
 

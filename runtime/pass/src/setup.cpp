@@ -260,6 +260,7 @@ std::optional<Pass> prepare(const RunRequest& req, RunDiagnostics& diags) {
   pass.vertex_program = req.vs;
   pass.pixel_program = req.ps;
   pass.conventions = req.conventions;
+  pass.front_face = req.front_face;
   if (req.vs) ok = build_constants(*req.vs, req.constants, pass.vs_constants, diags.vs) && ok;
   if (req.ps) ok = build_constants(*req.ps, req.constants, pass.ps_constants, diags.ps) && ok;
   ok = bind_textures(req, pass, diags) && ok;

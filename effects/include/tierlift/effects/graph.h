@@ -95,6 +95,7 @@ struct PassDesc {
   std::vector<TextureBind> textures;
   std::string target;
   pass::BlendMode blend = pass::BlendMode::Replace;
+  pass::FrontFace front_face = pass::FrontFace::Clockwise; // the winding vFace calls front
   // Render targets 1..3 (oC1..oC3) beside `target` (oC0); empty: one target. D3D9 MRT: every
   // target has the target's size; the blend mode applies to each.
   std::vector<std::string> more_targets;

@@ -4,7 +4,10 @@
 // stage; colours v0-1 and coordinates t0-7 into the pixel stage, matched by number), so
 // before running a 3.0 program they rename each o#/v# to the 2.0 register of the same
 // semantic. Pairs then link as Direct3D links them, by (usage, index): vs_3_0 with ps_3_0,
-// vs_2_0 with ps_3_0 and vs_3_0 with ps_2_0 alike (docs/spirv-mapping.md).
+// vs_2_0 with ps_3_0 and vs_3_0 with ps_2_0 alike (docs/spirv-mapping.md). A semantic the
+// 2.0 interface has no register for (normal0, tangent0, texcoord9, color2, ...) rides in a
+// texture-coordinate slot the program leaves free: the extra semantics in (usage, index)
+// order take t7, t6, ... skipping the program's own texcoordN (NUMERICS.md F6).
 #pragma once
 
 #include <optional>
@@ -12,6 +15,7 @@
 
 #include "tierlift/ir/diagnostic.h"
 #include "tierlift/ir/program.h"
+#include "tierlift/ir/result.h"
 
 namespace tierlift::ir {
 
@@ -22,15 +26,22 @@ std::optional<std::pair<RegFile, uint32_t>> semantic_register(ShaderStage stage,
                                                               uint8_t usage_index);
 
 // Errors (rule "not-supported", at the declaration) for what the renaming cannot carry: a
-// semantic without a 2.0 register, two declarations on one register. Adds nothing for a
+// pixel program's position0/psize0/fog0 (vertex outputs only), an extra semantic with no
+// free slot left, two declarations on one register. Adds nothing for a
 // program of another profile. (o#/v# addressed relatively are refused by
 // ir::check_executable, as every relative operand but c#.)
 void check_semantic_interface(const Program& program, std::string_view backend,
                               DiagnosticSink& sink);
 
+// A vertex and a pixel program link only where each slot the pixel program reads carries
+// the same semantic out of the vertex program (or nothing), and no semantic sits in a
+// different slot there: both hold when the two carry the same extra semantics. Refuses
+// ("not-supported") a pair whose extra semantics would land in different slots.
+Status check_semantic_pair(const Program& vertex, const Program& pixel);
+
 // The program with every vs_3_0 o# and ps_3_0 v# (declarations, destinations, sources)
-// renamed to its semantic_register. Programs of other profiles come back unchanged. Call
-// only on a program check_semantic_interface accepts.
+// renamed to its semantic_register or, for an extra semantic, its texcoord slot. Programs of other
+// profiles come back unchanged. Call only on a program check_semantic_interface accepts.
 Program link_by_semantic(const Program& program);
 
 } // namespace tierlift::ir

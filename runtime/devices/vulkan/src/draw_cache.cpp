@@ -92,6 +92,7 @@ std::optional<std::string> draw_key(const pass::Pass& pass, const DrawTextures& 
   k.put(pass.viewport.min_z);
   k.put(pass.viewport.max_z);
   k.put(pass.blend);
+  k.put(pass.front_face);
   k.put(pass.scissor.has_value());
   if (pass.scissor) {
     k.put(pass.scissor->x0);

@@ -393,6 +393,7 @@ std::string create_render_objects(Device::Impl& d, const pass::Pass& pass,
   // codegen does.
   pd.ps_words = pass.pixel_spirv ? *pass.pixel_spirv : pair.ps.words;
   pd.blend = pass.blend;
+  pd.front_face = pass.front_face;
   pd.color_targets = pass.color_targets;
   pd.stencil_attachment = textures.stencil != nullptr;
   pd.depth_stencil = pass.depth_stencil;

@@ -238,7 +238,8 @@ std::string create_pipeline(Device::Impl& d, Cleanup& cleanup, const PipelineDes
   rs.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO;
   rs.polygonMode = VK_POLYGON_MODE_FILL;
   rs.cullMode = VK_CULL_MODE_NONE; // D3DCULL_NONE, as the CPU device
-  rs.frontFace = VK_FRONT_FACE_CLOCKWISE;
+  rs.frontFace = desc.front_face == pass::FrontFace::Clockwise ? VK_FRONT_FACE_CLOCKWISE
+                                                               : VK_FRONT_FACE_COUNTER_CLOCKWISE;
   rs.lineWidth = 1.0f;
   VkPipelineMultisampleStateCreateInfo ms{};
   ms.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;

@@ -29,8 +29,9 @@ std::string create_sampler(Device::Impl& d, Cleanup& cleanup, const pass::Sample
 struct PipelineDesc {
   const codegen::ShaderModule* vs = nullptr;
   const codegen::ShaderModule* ps = nullptr;
-  std::vector<uint32_t> ps_words;                   // possibly rewritten (flat varyings)
-  pass::BlendMode blend = pass::BlendMode::Replace; // every target blends alike, as in D3D9
+  std::vector<uint32_t> ps_words;                          // possibly rewritten (flat varyings)
+  pass::BlendMode blend = pass::BlendMode::Replace;        // every target blends alike, as in D3D9
+  pass::FrontFace front_face = pass::FrontFace::Clockwise; // which winding vFace calls front
   // Colour attachments; the pixel stage writes each (prepare_draw checks), so all blend
   // attachment states are identical and the independentBlend feature is not needed.
   uint32_t color_targets = 1;

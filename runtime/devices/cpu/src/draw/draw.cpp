@@ -316,6 +316,9 @@ std::string detail::setup_pass(const Pass& pass, const ShaderVM* vs, const Viewp
     detail::setup_triangle({&outs[t[0]], &outs[t[1]], &outs[t[2]]}, vp, scissor, pass.conventions,
                            setup);
   }
+  // setup_triangle calls the clockwise winding front; a counter-clockwise front swaps them.
+  if (pass.front_face == tierlift::pass::FrontFace::CounterClockwise)
+    for (Triangle& t : setup) t.front = !t.front;
   return {};
 }
 

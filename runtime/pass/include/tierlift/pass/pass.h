@@ -151,6 +151,12 @@ inline constexpr std::array<std::array<uint32_t, 3>, 2> kQuadTriangles{
 // always the per-pixel ShaderVM (the reference). Both give the same image, bit for bit.
 enum class Executor : uint8_t { Auto, Scalar };
 
+// Which on-screen winding is the front face, the one ps_3_0's vFace reads as +1 (NUMERICS.md
+// F5). Clockwise is Direct3D 9's (D3DCULL_CCW, the default cull mode, culls the other one);
+// CounterClockwise is for a scene drawn mirrored (a flipped viewport or reflected geometry).
+// Nothing is culled either way.
+enum class FrontFace : uint8_t { Clockwise, CounterClockwise };
+
 // One pass. Which vertex stage runs:
 //   * vertex_program set: it runs once per entry of `vertices` (its inputs v#);
 //   * no vertex program, `transformed` not empty: those are the vertex outputs, as with
@@ -173,6 +179,7 @@ struct Pass {
   Viewport viewport;
   std::optional<ScissorRect> scissor; // none: the scissor test is off
   BlendMode blend = BlendMode::Replace;
+  FrontFace front_face = FrontFace::Clockwise;
   ir::Conventions conventions;
   Executor executor = Executor::Auto;
 

@@ -115,6 +115,7 @@ struct RunRequest {
   Filter filter = Filter::Point;
   AddressMode address = AddressMode::Wrap;
   ir::Conventions conventions;
+  FrontFace front_face = FrontFace::Clockwise; // the winding vFace calls front
   std::vector<ProbePoint> probes;
   unsigned threads = 0; // CPU device: 0 = every core
 };

@@ -1,0 +1,108 @@
+// tests/corpus/bgfx: 175 real vs_3_0/ps_3_0 shaders (fxc outputs shipped by bgfx; the folder's
+// README says where from and under which licence). Each runs through the whole lift as
+// `tierlift test tests/corpus/bgfx` runs it (parse, validate, round trip, SPIR-V, and the
+// interpreter against Vulkan on generated inputs), and must pass, except the shaders listed
+// below with the reason each does not yet. A listed shader that starts to pass is fine (the
+// reason went away); one that fails for another reason, or an unlisted one that fails, is a
+// regression. So is a pass count below the one measured when the folder was added.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "skip_policy.h"
+#include "tierlift/corpus/cases.h"
+#include "tierlift/corpus/stages.h"
+#include "tierlift/vulkan/process_device.h"
+
+namespace tierlift::corpus {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kBgfx = fs::path(TIERLIFT_SOURCE_DIR) / "tests" / "corpus" / "bgfx";
+
+// file -> what its first stage that does not pass says (a part of it).
+const std::map<std::string, std::string> kExceptions = {
+    // Gradients (dsx/dsy) need 2x2 quads on both devices.
+    {"fs_bokeh_forward.bin", "dsy in ps_3_0"},
+    {"fs_bunnylod.bin", "dsy in ps_3_0"},
+    {"fs_denoise_gbuffer.bin", "dsy in ps_3_0"},
+    {"fs_sss_gbuffer.bin", "dsy in ps_3_0"},
+    {"fs_vt_mip.bin", "dsx in ps_3_0"},
+    {"fs_vt_unlit.bin", "dsx in ps_3_0"},
+    {"fs_wf_mesh.bin", "dsy in ps_3_0"},
+    {"fs_wf_wireframe.bin", "dsy in ps_3_0"},
+    // texldl needs mipmapped textures.
+    {"fs_bokeh_dof_second_pass.bin", "texldl in ps_3_0"},
+    {"fs_bokeh_dof_single_pass.bin", "texldl in ps_3_0"},
+    {"fs_ibl_mesh.bin", "texldl in ps_3_0"},
+    {"fs_ibl_skybox.bin", "texldl in ps_3_0"},
+    {"fs_screen_space_shadows.bin", "texldl in ps_3_0"},
+    {"vs_rsm_lbuffer.bin", "texldl in vs_3_0"},
+    {"vs_terrain_height_texture.bin", "texldl in vs_3_0"},
+    // Cube and volume samplers: the Vulkan device draws 2D textures only.
+    {"fs_hdr_mesh.bin", "only 2D textures are supported"},
+    {"fs_hdr_skybox.bin", "only 2D textures are supported"},
+    {"fs_update.bin", "only 2D textures are supported"},
+    {"fs_update_3d.bin", "only 2D textures are supported"},
+    // A ps_3_0 that reads fog0: the 2.0 interface has it as the vertex stage's scalar oFog
+    // only (NUMERICS.md F6).
+    {"fs_shadowmaps_packdepth_linear.bin", "the semantic fog0 in a pixel program"},
+    {"fs_shadowmaps_packdepth_vsm_linear.bin", "the semantic fog0 in a pixel program"},
+    {"fs_shadowvolume_svside.bin", "the semantic fog0 in a pixel program"},
+    {"fs_shadowvolume_svsidetex.bin", "the semantic fog0 in a pixel program"},
+    // More than the 512 instruction slots every ps_3_0 device has (Direct3D 9 lets a device
+    // offer more, up to 32768, as a cap; the validator holds to the guaranteed 512).
+    {"fs_raymarching.bin", "ps_3_0 allows 512 instruction slots"},
+    {"fs_shadowmaps_color_lighting_pcf_csm.bin", "ps_3_0 allows 512 instruction slots"},
+    {"fs_shadowmaps_color_lighting_pcf_linear_csm.bin", "ps_3_0 allows 512 instruction slots"},
+    // A hash noise, frc(sin(x) * 43758.547): the devices' sines agree within the target but
+    // not to the bit, and the multiplication by 4.4e4 before frc makes that 1e-4 or more.
+    {"fs_sky_landscape.bin", "DISAGREE"},
+};
+
+constexpr size_t kFiles = 175;
+constexpr size_t kMeasuredPasses = 148; // when the folder was added
+
+// The message of the first stage that did not pass, with the stage's name.
+std::string first_problem(const CaseResult& r) {
+  for (const StageResult& s : r.stages)
+    if (s.verdict != Verdict::Pass && s.verdict != Verdict::Skip) return s.stage + ": " + s.message;
+  return "";
+}
+
+TEST(BgfxCorpus, EveryShaderRunsOnBothDevicesAndAgreesButTheListedOnes) {
+  ir::Result<vulkan::Device*> device = vulkan::process_device({});
+  if (!device) TIERLIFT_SKIP_UNLESS_REQUIRED(::tierlift::test::kRequireVulkan, "no Vulkan device");
+  ir::Result<std::vector<Case>> cases = discover({kBgfx.string()});
+  ASSERT_TRUE(cases) << cases.message();
+  ASSERT_EQ(cases->size(), kFiles);
+  StageOptions options; // `tierlift test`'s defaults: 3 input sets, seed 1, 8 x 8
+  options.device = *device;
+  size_t passes = 0;
+  for (const Case& c : *cases) {
+    const std::string file = fs::path(c.path).filename().string();
+    const CaseResult r = run_case(c, options);
+    if (r.verdict == Verdict::Pass) {
+      ++passes;
+      continue;
+    }
+    const auto listed = kExceptions.find(file);
+    if (listed == kExceptions.end()) {
+      ADD_FAILURE() << file << " does not pass: " << first_problem(r);
+      continue;
+    }
+    EXPECT_NE(first_problem(r).find(listed->second), std::string::npos)
+        << file << " fails for another reason than \"" << listed->second
+        << "\": " << first_problem(r);
+  }
+  std::printf("[bgfx-corpus] %zu of %zu shaders run on both devices and agree\n", passes,
+              cases->size());
+  EXPECT_GE(passes, kMeasuredPasses);
+}
+
+} // namespace
+} // namespace tierlift::corpus
