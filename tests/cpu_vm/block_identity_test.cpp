@@ -157,6 +157,7 @@ std::vector<ir::Conventions> conventions_modes() {
 
 struct FolderResult {
   int taken = 0, refused = 0;
+  std::vector<std::string> refused_names;
 };
 
 void run_folder(const fs::path& dir, FolderResult& r) {
@@ -175,18 +176,20 @@ void run_folder(const fs::path& dir, FolderResult& r) {
     for (const ir::Conventions& conv : conventions_modes())
       taken = compare(*parsed.program, conv, 24, seed++, e.path().filename().string()) || taken;
     (taken ? r.taken : r.refused)++;
+    if (!taken) r.refused_names.push_back(e.path().filename().string());
   }
 }
 
 } // namespace
 
 // The glow's and the article's pixel listings must all take the block path (that is where
-// the speed comes from), and agree.
+// the speed comes from), and agree. The one exception is tier dx9c's blur, a ps_3_0 loop:
+// flow control runs on the per-pixel VM.
 TEST(BlockIdentity, ListingsInTheRepository) {
   FolderResult r;
   run_folder(fs::path(TIERLIFT_SOURCE_DIR) / "listings" / "glow", r);
   run_folder(fs::path(TIERLIFT_SOURCE_DIR) / "listings" / "gpugems21", r);
-  EXPECT_EQ(r.refused, 0);
+  EXPECT_EQ(r.refused_names, std::vector<std::string>{"blur_loop_ps30.psh"});
   EXPECT_GE(r.taken, 9);
 }
 

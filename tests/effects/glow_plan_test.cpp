@@ -366,3 +366,48 @@ TEST(GlowTier, NamesRoundTrip) {
 
 } // namespace
 } // namespace tierlift::effects
+
+namespace tierlift::effects {
+namespace {
+
+// Tier dx9c: one loop per blur pass, i0 = (taps, 1, 2, 0), tap k's offset in c(2k+1) and its
+// weight in c(2k+2), the kernel stated to the analytic model with the same floats; a ramped
+// weight scale is refused (the stated kernel has one set of weights).
+TEST(EffectPlan, Dx9cLoopsOverItsTapsWithOffsetsAndWeightsInConstants) {
+  EffectParams p;
+  p.tier = Tier::Dx9c;
+  p.width = 64;
+  p.height = 32;
+  p.downsample = 1;
+  p.profile = BlurProfile{{{1.0, 1.0}}, std::nullopt, 0}; // σ 1: taps −3..3
+  PlanResult plan = build_glow(p);
+  ASSERT_TRUE(plan) << plan.message();
+  ASSERT_EQ(plan->taps.size(), 7u);
+  EXPECT_EQ(plan->blur_passes_per_axis, 1u);
+  const PassDesc* h = nullptr;
+  for (const PassDesc& d : plan->graph.passes)
+    if (d.name == "blur_h.0") h = &d;
+  ASSERT_NE(h, nullptr);
+  EXPECT_EQ(h->ps->profile, ir::Profile::ps_3_0);
+  EXPECT_EQ(h->analytic, AnalyticForm::Kernel);
+  EXPECT_EQ(h->ps_constants.i[0], (std::array<int32_t, 4>{7, 1, 2, 0}));
+  ASSERT_EQ(h->ps_constants.f.size(), 15u); // c0, then 7 × (offset, weight)
+  ASSERT_EQ(h->kernel.size(), 7u);
+  for (size_t k = 0; k < 7; ++k) {
+    // Tap k: offset (offset_k + ½)/64 along x, ½/32 along y (the half texel).
+    const float du = float((plan->taps[k].offset + 0.5) / 64), dv = float(0.5 / 32);
+    EXPECT_EQ(h->ps_constants.f[2 * k + 1][0], du) << k;
+    EXPECT_EQ(h->ps_constants.f[2 * k + 1][1], dv) << k;
+    EXPECT_EQ(h->ps_constants.f[2 * k + 2][0], float(plan->taps[k].weight)) << k;
+    EXPECT_EQ(h->kernel[k].offset[0], double(du)) << k;
+    EXPECT_EQ(h->kernel[k].weight[0], double(float(plan->taps[k].weight))) << k;
+  }
+  p.weight_scale_ramp.points = {{1, 1.0}, {10, 2.0}};
+  PlanResult ramped = build_glow(p);
+  ASSERT_FALSE(ramped);
+  EXPECT_NE(ramped.message().find("weight scale ramp: tier dx9c"), std::string::npos)
+      << ramped.message();
+}
+
+} // namespace
+} // namespace tierlift::effects
