@@ -14,10 +14,6 @@ namespace tierlift::vulkan {
 
 namespace {
 
-ir::Failure binding_failure(std::string message) {
-  return ir::fail("vulkan", std::string(kDrawRule), std::move(message));
-}
-
 // What descriptor set 0 holds: the uniform buffers, the sampled textures, the trace buffer.
 struct Resources {
   struct Ubo {
@@ -43,9 +39,9 @@ ir::Status add_uniform_blocks(Device::Impl& d, Cleanup& cleanup, const codegen::
     if (m->uniforms.size_bytes == 0) continue;
     std::vector<uint32_t> words = pack_uniforms(*m, *bank, pass);
     Resources::Ubo u{{}, m->uniforms.binding};
-    std::string err =
+    ir::Status err =
         create_buffer(d, cleanup, words.size() * 4, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, u.buf);
-    if (!err.empty()) return binding_failure(std::move(err));
+    if (!err) return std::move(err).failure();
     std::memcpy(u.buf.mapped, words.data(), words.size() * 4);
     res.layout.push_back(
         {u.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VkShaderStageFlags(stage), nullptr});
@@ -61,19 +57,19 @@ ir::Status add_textures(Device::Impl& d, Cleanup& cleanup, const codegen::Compil
   vkGetPhysicalDeviceFormatProperties(d.physical, VK_FORMAT_R32G32B32A32_SFLOAT, &tex_props);
   for (const auto& si : pair.ps.samplers) {
     if (si.type != ir::SamplerType::Tex2D)
-      return binding_failure(
+      return draw_failure(
           fmt::format("s{}: only 2D textures are supported on the Vulkan device", si.stage));
     const uint32_t stage = si.stage % pass::kMaxSamplers;
     const pass::TextureBinding& tb = pass.textures[stage];
-    if (!images[stage]) return binding_failure(fmt::format("s{}: no texture to sample", si.stage));
+    if (!images[stage]) return draw_failure(fmt::format("s{}: no texture to sample", si.stage));
     if (tb.sampler.filter == pass::Filter::Linear &&
         !(tex_props.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT))
-      return binding_failure("the Vulkan device cannot filter RGBA32F textures linearly");
+      return draw_failure("the Vulkan device cannot filter RGBA32F textures linearly");
     Resources::Texture t;
     t.binding = si.binding;
     t.view = images[stage]->view;
-    if (std::string err = create_sampler(d, cleanup, tb.sampler, t.sampler); !err.empty())
-      return binding_failure(std::move(err));
+    if (ir::Status err = create_sampler(d, cleanup, tb.sampler, t.sampler); !err)
+      return std::move(err).failure();
     res.layout.push_back({t.binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
                           VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
     res.textures.push_back(t);
@@ -87,8 +83,8 @@ ir::Status add_trace_buffer(Device::Impl& d, Cleanup& cleanup, const codegen::Co
   const std::optional<codegen::TraceInfo>& trace = pair.ps.trace;
   if (!trace) return ir::ok_status();
   const VkDeviceSize bytes = VkDeviceSize{trace->entries} * codegen::kTraceEntryBytes;
-  std::string err = create_buffer(d, cleanup, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, out.trace);
-  if (!err.empty()) return binding_failure(std::move(err));
+  ir::Status err = create_buffer(d, cleanup, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, out.trace);
+  if (!err) return std::move(err).failure();
   std::memset(out.trace.mapped, 0, out.trace.size);
   res.layout.push_back({trace->binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
                         VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
@@ -103,7 +99,7 @@ ir::Status create_set(Device::Impl& d, Cleanup& cleanup, const Resources& res, B
   dli.pBindings = res.layout.data();
   VkDescriptorSetLayout dsl = VK_NULL_HANDLE;
   VkResult r = vkCreateDescriptorSetLayout(d.device, &dli, nullptr, &dsl);
-  if (r != VK_SUCCESS) return binding_failure(vk_error("vkCreateDescriptorSetLayout", r));
+  if (r != VK_SUCCESS) return draw_failure(vk_error("vkCreateDescriptorSetLayout", r));
   VkDevice dev = d.device;
   cleanup.destroy_later(dev, dsl, vkDestroyDescriptorSetLayout);
   VkPipelineLayoutCreateInfo pli{};
@@ -111,7 +107,7 @@ ir::Status create_set(Device::Impl& d, Cleanup& cleanup, const Resources& res, B
   pli.setLayoutCount = 1;
   pli.pSetLayouts = &dsl;
   if ((r = vkCreatePipelineLayout(dev, &pli, nullptr, &out.layout)) != VK_SUCCESS)
-    return binding_failure(vk_error("vkCreatePipelineLayout", r));
+    return draw_failure(vk_error("vkCreatePipelineLayout", r));
   cleanup.destroy_later(dev, out.layout, vkDestroyPipelineLayout);
   VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2},
                                    {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 16},
@@ -123,7 +119,7 @@ ir::Status create_set(Device::Impl& d, Cleanup& cleanup, const Resources& res, B
   dpi.pPoolSizes = sizes;
   VkDescriptorPool dpool = VK_NULL_HANDLE;
   if ((r = vkCreateDescriptorPool(dev, &dpi, nullptr, &dpool)) != VK_SUCCESS)
-    return binding_failure(vk_error("vkCreateDescriptorPool", r));
+    return draw_failure(vk_error("vkCreateDescriptorPool", r));
   cleanup.destroy_later(dev, dpool, vkDestroyDescriptorPool);
   VkDescriptorSetAllocateInfo dsa{};
   dsa.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
@@ -131,7 +127,7 @@ ir::Status create_set(Device::Impl& d, Cleanup& cleanup, const Resources& res, B
   dsa.descriptorSetCount = 1;
   dsa.pSetLayouts = &dsl;
   if ((r = vkAllocateDescriptorSets(dev, &dsa, &out.set)) != VK_SUCCESS)
-    return binding_failure(vk_error("vkAllocateDescriptorSets", r));
+    return draw_failure(vk_error("vkAllocateDescriptorSets", r));
   return ir::ok_status();
 }
 
