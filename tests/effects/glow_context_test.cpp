@@ -190,11 +190,11 @@ TEST(GlowContext, MemoryPlanCountsTheCarriedInputs) {
   ASSERT_TRUE(a_built && b_built) << a_built.message() << b_built.message();
   const EffectPlan &a = *a_built, &b = *b_built;
   const uint64_t texture = uint64_t{kW} * kH * 16; // one RGBA32F texture of the scene's size
-  // The depth texture three times: the image the graph carries, the device's own and the
-  // one the run hands back (the largest pass, extract or composite, reads three textures
-  // either way, so the transient peak is the same).
+  // The depth texture four times: the image the graph carries, the device's own, the one
+  // the run hands back, and begin_run's copy of the inputs (scene and depth), which is the
+  // CPU device's largest transient (a pass draws in place and copies nothing).
   EXPECT_EQ(plan_memory(b.graph, {"cpu"}, false, 0).peak,
-            plan_memory(a.graph, {"cpu"}, false, 0).peak + 3 * texture);
+            plan_memory(a.graph, {"cpu"}, false, 0).peak + 4 * texture);
 }
 
 TEST(GlowContext, FogConstantsAndTheirPs1xLimit) {
