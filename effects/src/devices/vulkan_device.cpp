@@ -13,7 +13,9 @@
 #include <fmt/format.h>
 
 #include "tierlift/effects/run_graph.h"
+#include "tierlift/effects/vulkan_device.h"
 #include "tierlift/vulkan/device.h"
+#include "tierlift/vulkan/process_device.h"
 #include "tierlift/vulkan/texture_set.h"
 
 namespace tierlift::effects {
@@ -133,6 +135,16 @@ private:
 
 std::unique_ptr<PassDevice> make_vulkan_pass_device(vulkan::Device& device) {
   return std::make_unique<VulkanPassDevice>(device);
+}
+
+ir::Result<vulkan::Device*> vulkan_device(const std::string& gpu) {
+  vulkan::DeviceOptions options;
+  options.gpu_filter = gpu;
+  return vulkan::process_device(options);
+}
+
+std::string vulkan_device_name(const vulkan::Device& device) {
+  return device.name();
 }
 
 } // namespace tierlift::effects
