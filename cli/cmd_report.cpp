@@ -12,10 +12,10 @@
 #include "cmd_stress.h"
 #include "commands.h"
 #include "report.h"
-#include "tierlift/effects/report_files.h"
-#include "tierlift/effects/report_sweep.h"
-#include "tierlift/effects/scene.h"
-#include "tierlift/effects/vulkan_device.h"
+#include "tierlift/effects/graph/vulkan_device.h"
+#include "tierlift/effects/report/report_files.h"
+#include "tierlift/effects/report/report_sweep.h"
+#include "tierlift/effects/scenes/scene.h"
 #include "tierlift/io/output_folder.h"
 
 namespace tierlift::cli {

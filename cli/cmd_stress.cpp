@@ -16,9 +16,9 @@
 #include "commands.h"
 #include "front_end.h"
 #include "report.h"
-#include "tierlift/effects/analytic_device.h"
-#include "tierlift/effects/stress.h"
-#include "tierlift/effects/vulkan_device.h"
+#include "tierlift/effects/graph/analytic_device.h"
+#include "tierlift/effects/graph/vulkan_device.h"
+#include "tierlift/effects/report/stress.h"
 #include "tierlift/io/output_folder.h"
 
 namespace tierlift::cli {

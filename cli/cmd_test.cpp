@@ -15,7 +15,7 @@
 #include "tierlift/corpus/report.h"
 #include "tierlift/corpus/runner.h"
 #include "tierlift/corpus/shard.h"
-#include "tierlift/effects/vulkan_device.h"
+#include "tierlift/effects/graph/vulkan_device.h"
 #include "tierlift/generate/generate.h"
 #include "tierlift/io/output_file.h"
 

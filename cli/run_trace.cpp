@@ -7,8 +7,8 @@
 
 #include "commands.h"
 #include "run_flags.h"
-#include "tierlift/effects/pixel_trace.h"
-#include "tierlift/effects/vulkan_device.h"
+#include "tierlift/effects/graph/pixel_trace.h"
+#include "tierlift/effects/graph/vulkan_device.h"
 
 namespace tierlift::cli {
 namespace {

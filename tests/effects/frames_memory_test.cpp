@@ -3,10 +3,10 @@
 #include <gtest/gtest.h>
 
 #include "../vulkan/vk_test_util.h"
-#include "tierlift/effects/builtin_listing.h"
-#include "tierlift/effects/default_scene.h"
-#include "tierlift/effects/glow_run.h"
-#include "tierlift/effects/memory_plan.h"
+#include "tierlift/effects/glow/builtin_listing.h"
+#include "tierlift/effects/glow/glow_run.h"
+#include "tierlift/effects/graph/memory_plan.h"
+#include "tierlift/effects/scenes/default_scene.h"
 
 namespace tierlift::effects {
 namespace {

@@ -12,11 +12,11 @@
 #include <optional>
 
 #include "../vulkan/vk_test_util.h"
-#include "tierlift/effects/agreement.h"
-#include "tierlift/effects/analytic_device.h"
-#include "tierlift/effects/glow_run.h"
-#include "tierlift/effects/memory_plan.h"
-#include "tierlift/effects/prune.h"
+#include "tierlift/effects/glow/glow_run.h"
+#include "tierlift/effects/glow/prune.h"
+#include "tierlift/effects/graph/agreement.h"
+#include "tierlift/effects/graph/analytic_device.h"
+#include "tierlift/effects/graph/memory_plan.h"
 
 namespace tierlift::effects {
 namespace {

@@ -8,12 +8,12 @@
 // the set keeps them), so a pass costs its commands only; passes are recorded into one
 // command buffer, with barriers between them, that finish() or a read submits: one submit
 // per frame instead of a submit and a wait per pass.
-#include "tierlift/effects/device.h"
+#include "tierlift/effects/graph/device.h"
 
 #include <fmt/format.h>
 
-#include "tierlift/effects/run_graph.h"
-#include "tierlift/effects/vulkan_device.h"
+#include "tierlift/effects/graph/run_graph.h"
+#include "tierlift/effects/graph/vulkan_device.h"
 #include "tierlift/vulkan/device.h"
 #include "tierlift/vulkan/process_device.h"
 #include "tierlift/vulkan/texture_set.h"

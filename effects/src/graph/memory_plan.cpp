@@ -1,5 +1,5 @@
 // The memory planner (memory_plan.h).
-#include "tierlift/effects/memory_plan.h"
+#include "tierlift/effects/graph/memory_plan.h"
 
 #include <sys/resource.h>
 

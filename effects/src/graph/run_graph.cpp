@@ -1,4 +1,4 @@
-#include "tierlift/effects/run_graph.h"
+#include "tierlift/effects/graph/run_graph.h"
 
 #include <algorithm>
 #include <chrono>

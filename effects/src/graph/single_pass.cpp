@@ -1,7 +1,7 @@
 // pass::Pass → a graph of one pass, for what `tierlift run` draws: the banks, geometry and
 // states carried over as they are; the bound images become the graph's input textures, which
 // the device then owns for the run and binds back by reference (make_pass binds none).
-#include "tierlift/effects/single_pass.h"
+#include "tierlift/effects/graph/single_pass.h"
 
 #include <map>
 

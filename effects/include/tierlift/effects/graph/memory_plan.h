@@ -27,7 +27,7 @@
 #include <string>
 #include <vector>
 
-#include "tierlift/effects/graph.h"
+#include "tierlift/effects/graph/graph.h"
 #include "tierlift/ir/result.h"
 
 namespace tierlift::effects {
