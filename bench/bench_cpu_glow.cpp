@@ -18,9 +18,9 @@
 #include <utility>
 
 #include "opencv_glow.h"
-#include "tierlift/effects/default_scene.h"
-#include "tierlift/effects/device.h"
-#include "tierlift/effects/glow.h"
+#include "tierlift/effects/glow/glow.h"
+#include "tierlift/effects/graph/device.h"
+#include "tierlift/effects/scenes/default_scene.h"
 
 using namespace tierlift;
 

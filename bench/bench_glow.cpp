@@ -37,7 +37,7 @@
 #include "glow_frames.h"
 #include "glsl_glow_peer.h"
 #include "opencv_glow.h"
-#include "tierlift/effects/glow.h"
+#include "tierlift/effects/glow/glow.h"
 #include "tierlift/image/compare.h"
 
 using namespace tierlift;

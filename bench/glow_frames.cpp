@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "tierlift/effects/default_scene.h"
+#include "tierlift/effects/scenes/default_scene.h"
 
 namespace tierlift::bench {
 

@@ -15,8 +15,8 @@
 #include <memory>
 #include <string>
 
-#include "tierlift/effects/device.h"
-#include "tierlift/effects/glow.h"
+#include "tierlift/effects/glow/glow.h"
+#include "tierlift/effects/graph/device.h"
 #include "tierlift/image/image.h"
 #include "tierlift/vulkan/device.h"
 

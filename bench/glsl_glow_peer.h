@@ -11,7 +11,7 @@
 #include <memory>
 #include <string>
 
-#include "tierlift/effects/graph.h"
+#include "tierlift/effects/graph/graph.h"
 #include "tierlift/image/image.h"
 
 namespace tierlift::bench {

@@ -8,7 +8,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "tierlift/effects/blur_profile.h"
+#include "tierlift/effects/glow/blur_profile.h"
 #include "tierlift/image/image.h"
 
 namespace tierlift::bench {

@@ -16,11 +16,11 @@
 #include "glow_report.h"
 #include "progress_line.h"
 #include "report.h"
-#include "tierlift/effects/backends.h"
-#include "tierlift/effects/memory_plan.h"
-#include "tierlift/effects/prune.h"
-#include "tierlift/effects/scene.h"
-#include "tierlift/effects/scene_run.h"
+#include "tierlift/effects/glow/prune.h"
+#include "tierlift/effects/graph/backends.h"
+#include "tierlift/effects/graph/memory_plan.h"
+#include "tierlift/effects/scenes/scene.h"
+#include "tierlift/effects/scenes/scene_run.h"
 #include "tierlift/ir/ps1x_range.h"
 
 namespace tierlift::cli {

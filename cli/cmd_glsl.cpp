@@ -8,11 +8,12 @@
 #include "front_end.h"
 #include "report.h"
 #include "run_output.h"
-#include "tierlift/effects/default_scene.h"
-#include "tierlift/effects/glsl_pass.h"
-#include "tierlift/effects/run_graph.h"
+#include "tierlift/effects/glow/glsl_pass.h"
+#include "tierlift/effects/graph/run_graph.h"
+#include "tierlift/effects/graph/vulkan_device.h"
+#include "tierlift/effects/scenes/default_scene.h"
 #include "tierlift/image/io.h"
-#include "vulkan_device.h"
+#include "tierlift/ir/result_diagnostics.h"
 
 namespace tierlift::cli {
 namespace {
@@ -118,9 +119,12 @@ int run(const Flags& f) {
   }
   if (f.output.empty()) return report.finish(kExitOk);
 
-  vulkan::Device* device = vulkan_device(f.gpu, report);
-  if (!device) return report.finish(kExitUsage);
-  std::unique_ptr<effects::PassDevice> vk = effects::make_vulkan_pass_device(*device);
+  const ir::Result<vulkan::Device*> device = effects::vulkan_device(f.gpu);
+  if (!device) {
+    report.error("device", device.message());
+    return report.finish(kExitUsage);
+  }
+  std::unique_ptr<effects::PassDevice> vk = effects::make_vulkan_pass_device(**device);
   effects::ImageMap images;
   images.emplace(std::string(effects::kSceneTexture), std::move(*image));
   const ir::Result<effects::GraphRun> run = effects::run_graph(plan->graph, *vk, images);
@@ -136,11 +140,11 @@ int run(const Flags& f) {
   }
   if (!warning.empty()) report.warning("output", warning, f.output);
   result["output"] = f.output;
-  result["device"] = device->name();
+  result["device"] = effects::vulkan_device_name(**device);
   result["ms"] = run->total_ms;
   if (!f.json)
     fmt::print("wrote {} ({}x{}, {}, drawn on {} in {:.1f} ms)\n", f.output, out.width, out.height,
-               img::format_name(out.format), device->name(), run->total_ms);
+               img::format_name(out.format), effects::vulkan_device_name(**device), run->total_ms);
   return report.finish(kExitOk);
 }
 

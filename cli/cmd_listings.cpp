@@ -7,7 +7,7 @@
 #include "tierlift/asm/parser.h"
 #include "tierlift/asm/printer.h"
 #include "tierlift/asm/validator.h"
-#include "tierlift/effects/stage_states.h"
+#include "tierlift/effects/glow/stage_states.h"
 #include "tierlift/ir/profile.h"
 #include "tierlift/listings/embedded.h"
 

@@ -12,11 +12,11 @@
 #include "cmd_stress.h"
 #include "commands.h"
 #include "report.h"
-#include "tierlift/effects/report_files.h"
-#include "tierlift/effects/report_sweep.h"
-#include "tierlift/effects/scene.h"
+#include "tierlift/effects/graph/vulkan_device.h"
+#include "tierlift/effects/report/report_files.h"
+#include "tierlift/effects/report/report_sweep.h"
+#include "tierlift/effects/scenes/scene.h"
 #include "tierlift/io/output_folder.h"
-#include "vulkan_device.h"
 
 namespace tierlift::cli {
 namespace {
@@ -157,8 +157,12 @@ int run(const ReportFlags& f) {
   // The process's device, kept until exit as in `tierlift glow` and `tierlift run`.
   vulkan::Device* vk = nullptr;
   if (!f.no_vulkan) {
-    vk = vulkan_device(f.gpu, report);
-    if (!vk) return report.finish(kExitUsage);
+    const ir::Result<vulkan::Device*> device = effects::vulkan_device(f.gpu);
+    if (!device) {
+      report.error("device", device.message());
+      return report.finish(kExitUsage);
+    }
+    vk = *device;
   }
   if (f.no_vulkan) std::erase(s.timed, std::string("vulkan"));
   const bool tty = isatty(STDERR_FILENO) != 0;
@@ -181,7 +185,7 @@ int run(const ReportFlags& f) {
   info.width = scene.params.width;
   info.height = scene.params.height;
   info.intensity = scene.params.intensity;
-  if (vk) info.vulkan_device = vk->name();
+  if (vk) info.vulkan_device = effects::vulkan_device_name(*vk);
   std::vector<std::string> written;
   if (out_dir) {
     ir::Result<std::vector<std::string>> files = effects::write_report(*out_dir, r, s, info);

@@ -16,10 +16,10 @@
 #include "commands.h"
 #include "front_end.h"
 #include "report.h"
-#include "tierlift/effects/analytic_device.h"
-#include "tierlift/effects/stress.h"
+#include "tierlift/effects/graph/analytic_device.h"
+#include "tierlift/effects/graph/vulkan_device.h"
+#include "tierlift/effects/report/stress.h"
 #include "tierlift/io/output_folder.h"
-#include "vulkan_device.h"
 
 namespace tierlift::cli {
 namespace {
@@ -73,8 +73,12 @@ int run_stress(const StressFlags& f) {
     }
   }
   // The process's device, kept until exit as in `tierlift glow` (tests/lsan.supp).
-  vulkan::Device* vk = vulkan_device(f.gpu, report);
-  if (!vk) return report.finish(kExitUsage);
+  const ir::Result<vulkan::Device*> device = effects::vulkan_device(f.gpu);
+  if (!device) {
+    report.error("device", device.message());
+    return report.finish(kExitUsage);
+  }
+  vulkan::Device* vk = *device;
   effects::StressOptions o;
   o.make_device = [vk](const std::string& way) -> std::unique_ptr<effects::PassDevice> {
     if (way == "cpu") return std::make_unique<effects::CpuPassDevice>();
@@ -105,12 +109,12 @@ int run_stress(const StressFlags& f) {
   const nlohmann::json j = {{"rows", rows_json(rows)},
                             {"all_pass", all_pass},
                             {"seconds", seconds},
-                            {"vulkan_device", vk->name()}};
+                            {"vulkan_device", effects::vulkan_device_name(*vk)}};
   std::vector<std::string> written;
   if (out_dir) {
     const std::string md =
-        fmt::format("# tierlift report --stress\n\nVulkan device: {}; {:.1f} s\n\n{}", vk->name(),
-                    seconds, effects::stress_table(rows, true));
+        fmt::format("# tierlift report --stress\n\nVulkan device: {}; {:.1f} s\n\n{}",
+                    effects::vulkan_device_name(*vk), seconds, effects::stress_table(rows, true));
     for (const auto& [name, text] :
          {std::pair<std::string, std::string>{"stress.json", j.dump(2) + "\n"},
           {"stress.md", md}}) {
@@ -133,7 +137,8 @@ int run_stress(const StressFlags& f) {
     report.result()["written"] = written;
   } else {
     fmt::print("{}", effects::stress_table(rows, false));
-    fmt::print("{:.1f} s on cpu, vulkan ({}) and analytic\n", seconds, vk->name());
+    fmt::print("{:.1f} s on cpu, vulkan ({}) and analytic\n", seconds,
+               effects::vulkan_device_name(*vk));
     for (const std::string& w : written) fmt::print("wrote {}\n", w);
   }
   if (!all_pass) report.error("stress", "a stress row is not PASS (see its verdict)");

@@ -15,9 +15,9 @@
 #include "tierlift/corpus/report.h"
 #include "tierlift/corpus/runner.h"
 #include "tierlift/corpus/shard.h"
+#include "tierlift/effects/graph/vulkan_device.h"
 #include "tierlift/generate/generate.h"
 #include "tierlift/io/output_file.h"
-#include "tierlift/vulkan/process_device.h"
 
 namespace tierlift::cli {
 namespace {
@@ -80,9 +80,7 @@ int run_worker(const TestFlags& f) {
   std::FILE* out = ::fdopen(protocol, "w");
   if (!out) return kExitUsage;
   auto make_device = [gpu = f.gpu]() -> vulkan::Device* {
-    vulkan::DeviceOptions o;
-    o.gpu_filter = gpu;
-    ir::Result<vulkan::Device*> d = vulkan::process_device(o);
+    ir::Result<vulkan::Device*> d = effects::vulkan_device(gpu);
     if (!d) std::fprintf(stderr, "tierlift test --worker: %s\n", d.message().c_str());
     return d ? *d : nullptr;
   };

@@ -4,7 +4,7 @@
 
 #include "commands.h"
 #include "report.h"
-#include "tierlift/effects/memory_plan.h"
+#include "tierlift/effects/graph/memory_plan.h"
 
 namespace tierlift::cli {
 namespace {

@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "glow_report.h"
-#include "tierlift/effects/scene_run.h"
+#include "tierlift/effects/scenes/scene_run.h"
 
 namespace tierlift::cli {
 

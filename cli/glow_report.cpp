@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "tierlift/effects/glow.h"
+#include "tierlift/effects/glow/glow.h"
 #include "tierlift/image/io.h"
 #include "tierlift/io/output_file.h"
 

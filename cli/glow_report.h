@@ -8,8 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "tierlift/effects/prune.h"
-#include "tierlift/effects/scene_run.h"
+#include "tierlift/effects/glow/prune.h"
+#include "tierlift/effects/scenes/scene_run.h"
 #include "tierlift/io/output_folder.h"
 #include "tierlift/ir/result.h"
 

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "tierlift/effects/run_graph.h"
+#include "tierlift/effects/graph/run_graph.h"
 
 namespace tierlift::cli {
 

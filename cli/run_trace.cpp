@@ -7,8 +7,8 @@
 
 #include "commands.h"
 #include "run_flags.h"
-#include "tierlift/effects/pixel_trace.h"
-#include "vulkan_device.h"
+#include "tierlift/effects/graph/pixel_trace.h"
+#include "tierlift/effects/graph/vulkan_device.h"
 
 namespace tierlift::cli {
 namespace {
@@ -85,8 +85,12 @@ int print_pixel_trace(const pass::Pass& pass, const PixelTraceRequest& req, Repo
     interpreter = std::move(traced).value();
   }
   if (req.vulkan) {
-    vulkan::Device* device = vulkan_device(req.gpu, report);
-    if (!device) return kExitUsage;
+    const ir::Result<vulkan::Device*> found = effects::vulkan_device(req.gpu);
+    if (!found) {
+      report.error("device", found.message());
+      return kExitUsage;
+    }
+    vulkan::Device* device = *found;
     ir::Result<vulkan::ShaderTrace> traced =
         effects::trace_on_vulkan(*device, pass, req.width, req.height, req.format, req.x, req.y);
     if (!traced) {

@@ -7,9 +7,9 @@
 
 #include "tierlift/corpus/cases.h"
 #include "tierlift/corpus/undefined_reads.h"
-#include "tierlift/effects/device.h"
-#include "tierlift/effects/run_graph.h"
-#include "tierlift/effects/single_pass.h"
+#include "tierlift/effects/graph/device.h"
+#include "tierlift/effects/graph/run_graph.h"
+#include "tierlift/effects/graph/single_pass.h"
 #include "tierlift/image/compare.h"
 #include "tierlift/ir/profile.h"
 #include "tierlift/pass/setup.h"

@@ -11,7 +11,7 @@
 #include <functional>
 
 #include "../vulkan/vk_test_util.h"
-#include "tierlift/effects/glow_run.h"
+#include "tierlift/effects/glow/glow_run.h"
 
 namespace tierlift::effects {
 namespace {

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "tierlift/effects/agreement.h"
+#include "tierlift/effects/graph/agreement.h"
 
 namespace tierlift::effects {
 namespace {

@@ -1,7 +1,7 @@
 // --backend words and lists (effects/backends.h): what each text asks for, in run order.
 #include <gtest/gtest.h>
 
-#include "tierlift/effects/backends.h"
+#include "tierlift/effects/graph/backends.h"
 
 namespace tierlift::effects {
 namespace {

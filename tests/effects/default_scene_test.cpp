@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "tierlift/effects/default_scene.h"
+#include "tierlift/effects/scenes/default_scene.h"
 
 namespace tierlift::effects {
 namespace {

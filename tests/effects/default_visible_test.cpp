@@ -10,8 +10,8 @@
 #include <cmath>
 #include <vector>
 
-#include "tierlift/effects/default_scene.h"
-#include "tierlift/effects/glow_run.h"
+#include "tierlift/effects/glow/glow_run.h"
+#include "tierlift/effects/scenes/default_scene.h"
 
 namespace tierlift::effects {
 namespace {

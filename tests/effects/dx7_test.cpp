@@ -10,11 +10,11 @@
 #include <random>
 
 #include "three_way_scenes.h"
-#include "tierlift/effects/analytic_device.h"
-#include "tierlift/effects/glow_run.h"
-#include "tierlift/effects/scene.h"
-#include "tierlift/effects/stage_states.h"
-#include "tierlift/effects/weight_quantize.h"
+#include "tierlift/effects/glow/glow_run.h"
+#include "tierlift/effects/glow/stage_states.h"
+#include "tierlift/effects/glow/weight_quantize.h"
+#include "tierlift/effects/graph/analytic_device.h"
+#include "tierlift/effects/scenes/scene.h"
 #include "tierlift/ir/opcodes.h"
 #include "tierlift/listings/embedded.h"
 

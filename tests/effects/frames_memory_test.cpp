@@ -3,10 +3,10 @@
 #include <gtest/gtest.h>
 
 #include "../vulkan/vk_test_util.h"
-#include "tierlift/effects/builtin_listing.h"
-#include "tierlift/effects/default_scene.h"
-#include "tierlift/effects/glow_run.h"
-#include "tierlift/effects/memory_plan.h"
+#include "tierlift/effects/glow/builtin_listing.h"
+#include "tierlift/effects/glow/glow_run.h"
+#include "tierlift/effects/graph/memory_plan.h"
+#include "tierlift/effects/scenes/default_scene.h"
 
 namespace tierlift::effects {
 namespace {
@@ -120,16 +120,18 @@ TEST(MemoryPlan, HandComputedBytesPerDevice) {
   // Host copies: scene 8 px·16 = 128, a 128, b 2·16 = 32: 288 for "every texture".
   const MemoryPlan m = plan_memory(g, {"cpu", "vulkan", "analytic"}, false, 1000);
   ASSERT_EQ(m.devices.size(), 3u);
-  // cpu: images back 288 + its own 288; during p2: b 32 + a twice 256 = 288.
+  // cpu: images back 288 + its own 288; a pass draws in place and binds by reference, so
+  // the transient is one read's copy of the largest texture (scene or a: 128), no more than
+  // begin_run's copy of the input scene (128).
   EXPECT_EQ(m.devices[0].kept, 576u);
-  EXPECT_EQ(m.devices[0].transient, 288u);
+  EXPECT_EQ(m.devices[0].transient, 128u);
   // vulkan: 288 + stored 32 + 32 + 32 + two sampled RGBA8 (16 + 20 B/px · 8 px each = 288).
   EXPECT_EQ(m.devices[1].kept, 288u + 96u + 2 * 288u);
   EXPECT_EQ(m.devices[1].transient, 32u + 128u); // staging of a + its host image
   // analytic: 288 + 288 + masks of the RGBA8 textures 8 + 8; during p1 a 128 + scene 128.
   EXPECT_EQ(m.devices[2].kept, 592u);
   EXPECT_EQ(m.devices[2].transient, 256u);
-  EXPECT_EQ(m.peak, 1000u + 576u + 960u + 592u + 288u);
+  EXPECT_EQ(m.peak, 1000u + 576u + 960u + 592u + 256u); // the analytic transient is largest
   // Per-pass images kept: one host image of each pass's target more, per device.
   const MemoryPlan keep = plan_memory(g, {"cpu"}, true);
   EXPECT_EQ(keep.devices[0].kept, 576u + 128u + 32u);

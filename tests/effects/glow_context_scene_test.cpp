@@ -9,10 +9,10 @@
 #include "../vulkan/vk_test_util.h"
 #include "scene_error_case.h"
 #include "three_ways.h"
-#include "tierlift/effects/agreement.h"
-#include "tierlift/effects/analytic_device.h"
-#include "tierlift/effects/glow_run.h"
-#include "tierlift/effects/scene.h"
+#include "tierlift/effects/glow/glow_run.h"
+#include "tierlift/effects/graph/agreement.h"
+#include "tierlift/effects/graph/analytic_device.h"
+#include "tierlift/effects/scenes/scene.h"
 
 namespace tierlift::effects {
 namespace {

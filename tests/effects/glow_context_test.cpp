@@ -12,11 +12,11 @@
 #include <optional>
 
 #include "../vulkan/vk_test_util.h"
-#include "tierlift/effects/agreement.h"
-#include "tierlift/effects/analytic_device.h"
-#include "tierlift/effects/glow_run.h"
-#include "tierlift/effects/memory_plan.h"
-#include "tierlift/effects/prune.h"
+#include "tierlift/effects/glow/glow_run.h"
+#include "tierlift/effects/glow/prune.h"
+#include "tierlift/effects/graph/agreement.h"
+#include "tierlift/effects/graph/analytic_device.h"
+#include "tierlift/effects/graph/memory_plan.h"
 
 namespace tierlift::effects {
 namespace {
@@ -190,11 +190,11 @@ TEST(GlowContext, MemoryPlanCountsTheCarriedInputs) {
   ASSERT_TRUE(a_built && b_built) << a_built.message() << b_built.message();
   const EffectPlan &a = *a_built, &b = *b_built;
   const uint64_t texture = uint64_t{kW} * kH * 16; // one RGBA32F texture of the scene's size
-  // The depth texture three times: the image the graph carries, the device's own and the
-  // one the run hands back (the largest pass, extract or composite, reads three textures
-  // either way, so the transient peak is the same).
+  // The depth texture four times: the image the graph carries, the device's own, the one
+  // the run hands back, and begin_run's copy of the inputs (scene and depth), which is the
+  // CPU device's largest transient (a pass draws in place and copies nothing).
   EXPECT_EQ(plan_memory(b.graph, {"cpu"}, false, 0).peak,
-            plan_memory(a.graph, {"cpu"}, false, 0).peak + 3 * texture);
+            plan_memory(a.graph, {"cpu"}, false, 0).peak + 4 * texture);
 }
 
 TEST(GlowContext, FogConstantsAndTheirPs1xLimit) {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "tierlift/effects/glow.h"
+#include "tierlift/effects/glow/glow.h"
 
 namespace tierlift::effects::plan_test {
 

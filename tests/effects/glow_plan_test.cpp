@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "glow_plan_helpers.h"
-#include "tierlift/effects/glow.h"
+#include "tierlift/effects/glow/glow.h"
 #include "tierlift/pass/pass.h"
 
 namespace tierlift::effects {

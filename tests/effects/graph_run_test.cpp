@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include "tierlift/effects/builtin_listing.h"
-#include "tierlift/effects/default_scene.h"
-#include "tierlift/effects/glow_run.h"
+#include "tierlift/effects/glow/builtin_listing.h"
+#include "tierlift/effects/glow/glow_run.h"
+#include "tierlift/effects/scenes/default_scene.h"
 
 namespace tierlift::effects {
 namespace {

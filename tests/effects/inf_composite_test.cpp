@@ -16,7 +16,7 @@
 
 #include "../vulkan/vk_test_util.h"
 #include "three_ways.h"
-#include "tierlift/effects/glow.h"
+#include "tierlift/effects/glow/glow.h"
 
 namespace tierlift::effects {
 namespace {

@@ -8,10 +8,10 @@
 #include <cmath>
 #include <numbers>
 
-#include "tierlift/effects/analytic_device.h"
-#include "tierlift/effects/glow_run.h"
-#include "tierlift/effects/outline.h"
-#include "tierlift/effects/scene.h"
+#include "tierlift/effects/glow/glow_run.h"
+#include "tierlift/effects/glow/outline.h"
+#include "tierlift/effects/graph/analytic_device.h"
+#include "tierlift/effects/scenes/scene.h"
 
 #include "../vulkan/vk_test_util.h"
 

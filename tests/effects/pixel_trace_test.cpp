@@ -9,7 +9,7 @@
 #include <limits>
 
 #include "../vulkan/vk_test_util.h"
-#include "tierlift/effects/pixel_trace.h"
+#include "tierlift/effects/graph/pixel_trace.h"
 #include "tierlift/pass/setup.h"
 
 namespace tierlift::effects {

@@ -10,10 +10,10 @@
 #include <fmt/format.h>
 
 #include "glow_plan_helpers.h"
-#include "tierlift/effects/analytic_device.h"
-#include "tierlift/effects/default_scene.h"
-#include "tierlift/effects/glow_run.h"
-#include "tierlift/effects/prune.h"
+#include "tierlift/effects/glow/glow_run.h"
+#include "tierlift/effects/glow/prune.h"
+#include "tierlift/effects/graph/analytic_device.h"
+#include "tierlift/effects/scenes/default_scene.h"
 
 #include "../vulkan/vk_test_util.h"
 

@@ -11,11 +11,11 @@
 #include "../vulkan/vk_test_util.h"
 #include "three_way_scenes.h"
 #include "three_ways.h"
-#include "tierlift/effects/agreement.h"
-#include "tierlift/effects/analytic_device.h"
-#include "tierlift/effects/glow_run.h"
-#include "tierlift/effects/radial.h"
-#include "tierlift/effects/scene.h"
+#include "tierlift/effects/glow/glow_run.h"
+#include "tierlift/effects/glow/radial.h"
+#include "tierlift/effects/graph/agreement.h"
+#include "tierlift/effects/graph/analytic_device.h"
+#include "tierlift/effects/scenes/scene.h"
 
 namespace tierlift::effects {
 namespace {

@@ -8,10 +8,10 @@
 #include <cmath>
 #include <numbers>
 
-#include "tierlift/effects/glow_run.h"
-#include "tierlift/effects/ideal_glow.h"
-#include "tierlift/effects/report_sweep.h"
-#include "tierlift/effects/scene.h"
+#include "tierlift/effects/glow/glow_run.h"
+#include "tierlift/effects/report/ideal_glow.h"
+#include "tierlift/effects/report/report_sweep.h"
+#include "tierlift/effects/scenes/scene.h"
 
 namespace tierlift::effects {
 namespace {

@@ -9,8 +9,8 @@
 #include "listing_files.h"
 #include "tierlift/asm/bytecode.h"
 #include "tierlift/asm/parser.h"
-#include "tierlift/effects/builtin_listing.h"
-#include "tierlift/effects/scene.h"
+#include "tierlift/effects/glow/builtin_listing.h"
+#include "tierlift/effects/scenes/scene.h"
 
 namespace tierlift::effects {
 namespace {

@@ -10,7 +10,7 @@
 #include <ostream>
 #include <string>
 
-#include "tierlift/effects/scene.h"
+#include "tierlift/effects/scenes/scene.h"
 
 namespace tierlift::effects {
 

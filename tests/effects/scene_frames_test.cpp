@@ -6,7 +6,7 @@
 #include <string>
 
 #include "scene_error_case.h"
-#include "tierlift/effects/scene.h"
+#include "tierlift/effects/scenes/scene.h"
 
 namespace tierlift::effects {
 namespace {

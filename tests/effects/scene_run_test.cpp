@@ -8,8 +8,8 @@
 #include <string>
 
 #include "../vulkan/vk_test_util.h"
-#include "tierlift/effects/scene.h"
-#include "tierlift/effects/scene_run.h"
+#include "tierlift/effects/scenes/scene.h"
+#include "tierlift/effects/scenes/scene_run.h"
 #include "tierlift/image/image.h"
 #include "tierlift/ir/result_diagnostics.h"
 

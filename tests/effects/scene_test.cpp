@@ -14,7 +14,7 @@
 
 #include "listing_files.h"
 #include "scene_error_case.h"
-#include "tierlift/effects/scene.h"
+#include "tierlift/effects/scenes/scene.h"
 
 namespace tierlift::effects {
 namespace {

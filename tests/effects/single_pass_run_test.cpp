@@ -7,8 +7,8 @@
 #include <cstdlib>
 
 #include "../vulkan/vk_test_util.h"
-#include "tierlift/effects/run_graph.h"
-#include "tierlift/effects/single_pass.h"
+#include "tierlift/effects/graph/run_graph.h"
+#include "tierlift/effects/graph/single_pass.h"
 #include "tierlift/ir/result_diagnostics.h"
 
 namespace tierlift::effects {

@@ -8,9 +8,9 @@
 #include <cstring>
 
 #include "../vulkan/vk_test_util.h"
-#include "tierlift/effects/analytic_device.h"
-#include "tierlift/effects/run_graph.h"
-#include "tierlift/effects/single_pass.h"
+#include "tierlift/effects/graph/analytic_device.h"
+#include "tierlift/effects/graph/run_graph.h"
+#include "tierlift/effects/graph/single_pass.h"
 #include "tierlift/pass/setup.h"
 
 namespace tierlift::effects {

@@ -1,4 +1,4 @@
-// The stress catalogue (tierlift/effects/stress.h): each case checked here against closed
+// The stress catalogue (tierlift/effects/report/stress.h): each case checked here against closed
 // forms computed in the test (not read from the row), on the three ways; the verdict can fail.
 #include <gtest/gtest.h>
 
@@ -6,9 +6,9 @@
 #include <limits>
 
 #include "../vulkan/vk_test_util.h"
-#include "tierlift/effects/analytic_device.h"
-#include "tierlift/effects/scene.h"
-#include "tierlift/effects/stress.h"
+#include "tierlift/effects/graph/analytic_device.h"
+#include "tierlift/effects/report/stress.h"
+#include "tierlift/effects/scenes/scene.h"
 
 namespace {
 

@@ -11,9 +11,9 @@
 #include <sstream>
 
 #include "../vulkan/vk_test_util.h"
-#include "tierlift/effects/agreement.h"
-#include "tierlift/effects/analytic_device.h"
-#include "tierlift/effects/glow_run.h"
+#include "tierlift/effects/glow/glow_run.h"
+#include "tierlift/effects/graph/agreement.h"
+#include "tierlift/effects/graph/analytic_device.h"
 
 namespace tierlift::effects {
 namespace {

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <random>
 
-#include "tierlift/effects/default_scene.h"
+#include "tierlift/effects/scenes/default_scene.h"
 #include "tierlift/image/image.h"
 
 namespace tierlift::effects::test_scenes {

@@ -18,11 +18,11 @@
 #include "three_way_scenes.h"
 #include "tierlift/analytic/blur_model.h"
 #include "tierlift/analytic/taps.h"
-#include "tierlift/effects/agreement.h"
-#include "tierlift/effects/analytic_device.h"
-#include "tierlift/effects/builtin_listing.h"
-#include "tierlift/effects/default_scene.h"
-#include "tierlift/effects/glow_run.h"
+#include "tierlift/effects/glow/builtin_listing.h"
+#include "tierlift/effects/glow/glow_run.h"
+#include "tierlift/effects/graph/agreement.h"
+#include "tierlift/effects/graph/analytic_device.h"
+#include "tierlift/effects/scenes/default_scene.h"
 
 namespace tierlift::effects {
 namespace {

@@ -12,9 +12,9 @@
 #include <utility>
 #include <vector>
 
-#include "tierlift/effects/agreement.h"
-#include "tierlift/effects/analytic_device.h"
-#include "tierlift/effects/glow_run.h"
+#include "tierlift/effects/glow/glow_run.h"
+#include "tierlift/effects/graph/agreement.h"
+#include "tierlift/effects/graph/analytic_device.h"
 
 namespace tierlift::effects::test_ways {
 

@@ -9,9 +9,9 @@
 #include <fmt/format.h>
 
 #include "../vulkan/vk_test_util.h"
-#include "tierlift/effects/agreement.h"
-#include "tierlift/effects/default_scene.h"
-#include "tierlift/effects/glow_run.h"
+#include "tierlift/effects/glow/glow_run.h"
+#include "tierlift/effects/graph/agreement.h"
+#include "tierlift/effects/scenes/default_scene.h"
 
 namespace tierlift::effects {
 namespace {

@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-#include "tierlift/effects/scene.h"
+#include "tierlift/effects/scenes/scene.h"
 
 using namespace tierlift;
 

@@ -1,6 +1,6 @@
 // The analytic device (analytic_device.h): the graph's textures in host memory, each pass
 // computed as math by run_analytic_pass.
-#include "tierlift/effects/analytic_device.h"
+#include "tierlift/effects/graph/analytic_device.h"
 
 #include <fmt/format.h>
 

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "tierlift/analytic/blur_model.h"
-#include "tierlift/effects/device.h"
-#include "tierlift/effects/graph.h"
+#include "tierlift/effects/graph/device.h"
+#include "tierlift/effects/graph/graph.h"
 
 namespace tierlift::effects::detail {
 

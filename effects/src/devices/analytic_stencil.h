@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "tierlift/effects/device.h"
-#include "tierlift/effects/graph.h"
+#include "tierlift/effects/graph/device.h"
+#include "tierlift/effects/graph/graph.h"
 
 namespace tierlift::effects::detail {
 

@@ -6,8 +6,8 @@
 #include <fmt/format.h>
 
 #include "tierlift/cpu/draw.h"
-#include "tierlift/effects/device.h"
-#include "tierlift/effects/run_graph.h"
+#include "tierlift/effects/graph/device.h"
+#include "tierlift/effects/graph/run_graph.h"
 
 namespace tierlift::effects {
 namespace {

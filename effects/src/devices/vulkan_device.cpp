@@ -8,12 +8,14 @@
 // the set keeps them), so a pass costs its commands only; passes are recorded into one
 // command buffer, with barriers between them, that finish() or a read submits: one submit
 // per frame instead of a submit and a wait per pass.
-#include "tierlift/effects/device.h"
+#include "tierlift/effects/graph/device.h"
 
 #include <fmt/format.h>
 
-#include "tierlift/effects/run_graph.h"
+#include "tierlift/effects/graph/run_graph.h"
+#include "tierlift/effects/graph/vulkan_device.h"
 #include "tierlift/vulkan/device.h"
+#include "tierlift/vulkan/process_device.h"
 #include "tierlift/vulkan/texture_set.h"
 
 namespace tierlift::effects {
@@ -141,6 +143,16 @@ std::unique_ptr<PassDevice> make_vulkan_pass_device(vulkan::Device& device) {
 std::unique_ptr<PassDevice> make_vulkan_pass_device(vulkan::Device& device,
                                                     const VulkanPassOptions& options) {
   return std::make_unique<VulkanPassDevice>(device, options.reuse_programs);
+}
+
+ir::Result<vulkan::Device*> vulkan_device(const std::string& gpu) {
+  vulkan::DeviceOptions options;
+  options.gpu_filter = gpu;
+  return vulkan::process_device(options);
+}
+
+std::string vulkan_device_name(const vulkan::Device& device) {
+  return device.name();
 }
 
 } // namespace tierlift::effects

@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 
 #include "tierlift/asm/load.h"
-#include "tierlift/effects/stage_states.h"
+#include "tierlift/effects/glow/stage_states.h"
 #include "tierlift/ir/result_diagnostics.h"
 
 namespace tierlift::effects::tss {

@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "tierlift/effects/stage_states.h"
+#include "tierlift/effects/glow/stage_states.h"
 
 namespace tierlift::effects::tss {
 namespace {

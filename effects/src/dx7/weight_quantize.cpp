@@ -1,5 +1,5 @@
 // 8-bit blur weights, plain or with Tron 2.0's error carry (weight_quantize.h).
-#include "tierlift/effects/weight_quantize.h"
+#include "tierlift/effects/glow/weight_quantize.h"
 
 #include <algorithm>
 #include <cmath>

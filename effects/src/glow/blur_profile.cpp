@@ -1,4 +1,4 @@
-#include "tierlift/effects/blur_profile.h"
+#include "tierlift/effects/glow/blur_profile.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "tierlift/effects/builtin_listing.h"
+#include "tierlift/effects/glow/builtin_listing.h"
 
 #include <fmt/format.h>
 

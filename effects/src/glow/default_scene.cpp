@@ -1,4 +1,4 @@
-#include "tierlift/effects/default_scene.h"
+#include "tierlift/effects/scenes/default_scene.h"
 
 #include <algorithm>
 #include <array>

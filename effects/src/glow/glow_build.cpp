@@ -1,7 +1,7 @@
 // The tier switch of the glow generators (glow.h).
 #include <fmt/format.h>
 
-#include "tierlift/effects/glow.h"
+#include "tierlift/effects/glow/glow.h"
 
 namespace tierlift::effects {
 

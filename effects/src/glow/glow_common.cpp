@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "tierlift/effects/builtin_listing.h"
+#include "tierlift/effects/glow/builtin_listing.h"
 
 namespace tierlift::effects::detail {
 namespace {

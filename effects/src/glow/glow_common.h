@@ -11,8 +11,8 @@
 #include <string_view>
 #include <vector>
 
-#include "tierlift/effects/glow.h"
-#include "tierlift/effects/stage_states.h"
+#include "tierlift/effects/glow/glow.h"
+#include "tierlift/effects/glow/stage_states.h"
 
 namespace tierlift::effects::detail {
 

@@ -1,5 +1,5 @@
 // The glow render and the glow fog's inputs and constants (glow_context.h).
-#include "tierlift/effects/glow_context.h"
+#include "tierlift/effects/glow/glow_context.h"
 
 #include <cmath>
 

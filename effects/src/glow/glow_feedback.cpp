@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "tierlift/effects/glow.h"
+#include "tierlift/effects/glow/glow.h"
 
 namespace tierlift::effects {
 

@@ -1,4 +1,4 @@
-#include "tierlift/effects/glow_run.h"
+#include "tierlift/effects/glow/glow_run.h"
 
 #include <fmt/format.h>
 

@@ -1,6 +1,6 @@
 // The seed's GLSL blur as a graph (glsl_blur.h): GLSL compiled by glslang for Vulkan, the
 // ps_2_0 twin for the interpreter, the kernel for the analytic model.
-#include "tierlift/effects/glsl_blur.h"
+#include "tierlift/effects/glow/glsl_blur.h"
 
 #include <cmath>
 

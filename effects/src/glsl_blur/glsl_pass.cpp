@@ -1,9 +1,9 @@
 // A user's GLSL fragment shader as a one-pass graph (glsl_pass.h).
-#include "tierlift/effects/glsl_pass.h"
+#include "tierlift/effects/glow/glsl_pass.h"
 
 #include <fmt/format.h>
 
-#include "tierlift/effects/builtin_listing.h"
+#include "tierlift/effects/glow/builtin_listing.h"
 
 #include "tierlift/asm/load.h"
 #include "tierlift/ir/result_diagnostics.h"

@@ -1,4 +1,4 @@
-#include "tierlift/effects/agreement.h"
+#include "tierlift/effects/graph/agreement.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // --backend: words and lists (backends.h).
-#include "tierlift/effects/backends.h"
+#include "tierlift/effects/graph/backends.h"
 
 #include <algorithm>
 #include <fmt/format.h>

@@ -1,4 +1,4 @@
-#include "tierlift/effects/graph.h"
+#include "tierlift/effects/graph/graph.h"
 
 #include <algorithm>
 #include <set>

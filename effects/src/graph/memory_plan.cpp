@@ -1,5 +1,5 @@
 // The memory planner (memory_plan.h).
-#include "tierlift/effects/memory_plan.h"
+#include "tierlift/effects/graph/memory_plan.h"
 
 #include <sys/resource.h>
 
@@ -84,12 +84,11 @@ DeviceMemory plan_device(const EffectGraph& g, const std::string& device, bool k
       m.transient = std::max(m.transient, during);
     }
   } else { // cpu
+    // Its own image of every texture. A pass draws into its target in place and binds the
+    // textures it samples by reference (CpuPassDevice::draw), so a draw copies nothing; what
+    // is made beside the kept images is a read's copy, before it replaces the kept one.
     for (const TextureDesc& t : g.textures) m.kept += host(&t);
-    for (const PassDesc& p : g.passes) {
-      uint64_t during = host(g.find_texture(p.target));
-      for (const TextureBind& b : p.textures) during += host(g.find_texture(b.texture));
-      m.transient = std::max(m.transient, during);
-    }
+    m.transient = largest;
   }
   // begin_run's copy of the inputs.
   uint64_t inputs = 0;

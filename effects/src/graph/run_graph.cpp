@@ -1,4 +1,4 @@
-#include "tierlift/effects/run_graph.h"
+#include "tierlift/effects/graph/run_graph.h"
 
 #include <algorithm>
 #include <chrono>
@@ -14,20 +14,30 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// The run's error; `cause`, a device's refusal, follows it as notes (kRunRule).
+ir::Failure run_error(std::string message, const std::vector<ir::Diagnostic>& cause = {}) {
+  ir::Failure out = ir::fail("graph", std::string(kRunRule), std::move(message));
+  for (ir::Diagnostic d : cause) {
+    d.severity = ir::Severity::Note;
+    out.diagnostics.push_back(std::move(d));
+  }
+  return out;
+}
+
 // An input as the graph declares it: right size, stored in the declared format.
-std::string prepare_input(const TextureDesc& t, ImageMap& images) {
+ir::Status prepare_input(const TextureDesc& t, ImageMap& images) {
   auto it = images.find(t.name);
   if (it == images.end() && t.contents) it = images.emplace(t.name, *t.contents).first;
-  if (it == images.end()) return fmt::format("input texture '{}' was not given", t.name);
+  if (it == images.end()) return run_error(fmt::format("input texture '{}' was not given", t.name));
   img::Image& im = it->second;
   if (im.width != t.width || im.height != t.height)
-    return fmt::format("input texture '{}' is {}x{}, the graph expects {}x{}", t.name, im.width,
-                       im.height, t.width, t.height);
+    return run_error(fmt::format("input texture '{}' is {}x{}, the graph expects {}x{}", t.name,
+                                 im.width, im.height, t.width, t.height));
   if (im.format != t.format) {
     im.format = t.format;
     img::quantize_in_place(im);
   }
-  return {};
+  return ir::ok_status();
 }
 
 } // namespace
@@ -72,22 +82,12 @@ ir::Result<pass::Pass> make_pass(const PassDesc& desc, const ir::Conventions& co
 
 namespace {
 
-// The run's error; `cause`, a device's refusal, follows it as notes (kRunRule).
-ir::Failure run_error(std::string message, const std::vector<ir::Diagnostic>& cause = {}) {
-  ir::Failure out = ir::fail("graph", std::string(kRunRule), std::move(message));
-  for (ir::Diagnostic d : cause) {
-    d.severity = ir::Severity::Note;
-    out.diagnostics.push_back(std::move(d));
-  }
-  return out;
-}
-
 // check_graph, the inputs at their declared size and format, begin_run.
 ir::Status begin_graph(const EffectGraph& graph, PassDevice& device, ImageMap& images) {
   if (ir::Status checked = check_graph(graph); !checked) return run_error(checked.message());
   for (const TextureDesc& t : graph.textures)
     if (t.input)
-      if (std::string e = prepare_input(t, images); !e.empty()) return run_error(e);
+      if (ir::Status e = prepare_input(t, images); !e) return e;
   ImageMap inputs;
   for (const TextureDesc& t : graph.textures)
     if (t.input) inputs.emplace(t.name, images.find(t.name)->second);
@@ -97,56 +97,57 @@ ir::Status begin_graph(const EffectGraph& graph, PassDevice& device, ImageMap& i
 }
 
 // Every texture back into `images` (a failure leaves the map as it was given).
-std::string read_all(const EffectGraph& graph, PassDevice& device, ImageMap& images) {
+ir::Status read_all(const EffectGraph& graph, PassDevice& device, ImageMap& images) {
   ImageMap out;
   for (const TextureDesc& t : graph.textures) {
     ir::Result<img::Image> image = device.read_texture(t.name);
     if (!image)
-      return fmt::format("{}: reading '{}' back: {}", device.name(), t.name, image.message());
+      return run_error(
+          fmt::format("{}: reading '{}' back: {}", device.name(), t.name, image.message()));
     out[t.name] = std::move(*image);
   }
   for (auto& [name, image] : out) images[name] = std::move(image);
-  return {};
+  return ir::ok_status();
 }
 
 // The inputs that change before frame f, at their declared size and format.
-std::string replace_inputs(const EffectGraph& graph, PassDevice& device, unsigned f,
-                           const FrameInputs& inputs_at) {
+ir::Status replace_inputs(const EffectGraph& graph, PassDevice& device, unsigned f,
+                          const FrameInputs& inputs_at) {
   ImageMap changed;
-  if (ir::Status given = inputs_at(f, changed); !given) return given.message();
+  if (ir::Status given = inputs_at(f, changed); !given) return run_error(given.message());
   for (auto& [name, image] : changed) {
     const TextureDesc* t = graph.find_texture(name);
-    if (!t || !t->input) return fmt::format("'{}' is not an input texture", name);
-    if (std::string e = prepare_input(*t, changed); !e.empty()) return e;
+    if (!t || !t->input) return run_error(fmt::format("'{}' is not an input texture", name));
+    if (ir::Status e = prepare_input(*t, changed); !e) return e;
     if (ir::Status replaced = device.update_input(name, image); !replaced)
-      return replaced.message();
+      return run_error(replaced.message());
   }
-  return {};
+  return ir::ok_status();
 }
 
 // A pass's target (and, when asked, its further targets and stencil) read back after it.
-std::string record_pass(const PassDesc& desc, PassDevice& device, bool keep_pass_images,
-                        PassRecord& rec) {
-  if (!keep_pass_images) return {};
-  auto read = [&](const std::string& name, img::Image& out) -> std::string {
+ir::Status record_pass(const PassDesc& desc, PassDevice& device, bool keep_pass_images,
+                       PassRecord& rec) {
+  if (!keep_pass_images) return ir::ok_status();
+  auto read = [&](const std::string& name, img::Image& out) -> ir::Status {
     ir::Result<img::Image> image = device.read_texture(name);
     if (!image)
-      return fmt::format("pass '{}' on {}: reading '{}' back: {}", desc.name, device.name(), name,
-                         image.message());
+      return run_error(fmt::format("pass '{}' on {}: reading '{}' back: {}", desc.name,
+                                   device.name(), name, image.message()));
     out = std::move(*image);
-    return {};
+    return ir::ok_status();
   };
-  if (std::string e = read(desc.target, rec.result); !e.empty()) return e;
+  if (ir::Status e = read(desc.target, rec.result); !e) return e;
   device.rounding_midpoints(desc.target, rec.midpoints);
   std::vector<std::string> extra = desc.more_targets;
   if (!desc.stencil.empty() && desc.depth_stencil.stencil_test) extra.push_back(desc.stencil);
   for (const std::string& name : extra) {
     PassRecord::Extra x{name, {}, {}};
-    if (std::string e = read(name, x.result); !e.empty()) return e;
+    if (ir::Status e = read(name, x.result); !e) return e;
     device.rounding_midpoints(name, x.midpoints);
     rec.more.push_back(std::move(x));
   }
-  return {};
+  return ir::ok_status();
 }
 
 } // namespace
@@ -177,12 +178,11 @@ ir::Result<GraphRun> run_graph(const EffectGraph& graph, PassDevice& device, Ima
       return run_error(fmt::format("pass '{}' on {}: {}", desc.name, device.name(), done.message()),
                        done.diagnostics());
     PassRecord rec{desc.name, desc.target, {}, ms_since(t0), {}, {}, *drawn, drawn.diagnostics()};
-    if (std::string e = record_pass(desc, device, keep_pass_images, rec); !e.empty())
-      return run_error(e);
+    if (ir::Status e = record_pass(desc, device, keep_pass_images, rec); !e) return e.failure();
     run.passes.push_back(std::move(rec));
   }
   // Every texture back into the map (a failed run leaves the map as it was given).
-  if (std::string e = read_all(graph, device, images); !e.empty()) return run_error(e);
+  if (ir::Status e = read_all(graph, device, images); !e) return e.failure();
   for (const TextureDesc& t : graph.textures)
     if (std::vector<uint8_t> mask; device.rounding_midpoints(t.name, mask))
       run.midpoints[t.name] = std::move(mask);
@@ -219,8 +219,8 @@ ir::Result<FrameTimes> run_frames(const EffectGraph& graph, PassDevice& device, 
   for (unsigned f = 0; f < frames; ++f) {
     auto t = std::chrono::steady_clock::now();
     if (inputs_at && f > 0)
-      if (std::string e = replace_inputs(graph, device, f, inputs_at); !e.empty())
-        return frame_error(f, e);
+      if (ir::Status e = replace_inputs(graph, device, f, inputs_at); !e)
+        return frame_error(f, e.message());
     for (const PassDesc& desc : graph.passes)
       if (ir::Result<pass::DrawReport> drawn = device.draw(desc.at_frame(f)); !drawn)
         return run_error(fmt::format("frame {}, pass '{}' on {}: {}", f + 1, desc.name,
@@ -233,7 +233,7 @@ ir::Result<FrameTimes> run_frames(const EffectGraph& graph, PassDevice& device, 
       if (ir::Status taken = sink(f, device); !taken) return frame_error(f, taken.message());
     if (progress) progress(f + 1, frames);
   }
-  if (std::string e = read_all(graph, device, images); !e.empty()) return run_error(e);
+  if (ir::Status e = read_all(graph, device, images); !e) return e.failure();
   return times;
 }
 

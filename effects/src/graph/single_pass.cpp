@@ -1,7 +1,7 @@
 // pass::Pass → a graph of one pass, for what `tierlift run` draws: the banks, geometry and
 // states carried over as they are; the bound images become the graph's input textures, which
 // the device then owns for the run and binds back by reference (make_pass binds none).
-#include "tierlift/effects/single_pass.h"
+#include "tierlift/effects/graph/single_pass.h"
 
 #include <map>
 
@@ -19,7 +19,6 @@ bool default_viewport(const pass::Viewport& v) {
 // rather than dropped, so a device never draws a different pass than the one asked for.
 std::string unsupported(const pass::Pass& pass) {
   if (!pass.transformed.empty()) return "pre-transformed vertices";
-  if (!pass.fixed_stages.empty()) return "fixed-function texture stages";
   if (!default_viewport(pass.viewport)) return "a viewport other than the whole target";
   if (pass.color_targets != 1) return fmt::format("{} colour targets", pass.color_targets);
   if (pass.depth_stencil.enabled()) return "a depth/stencil state";

@@ -2,7 +2,7 @@
 // pass. The glow builds the blur exactly as it does for the glow effect; this file adds the
 // object pass in front, points the glow's extract at the object's mask, and splits the
 // composite into a full-screen base and a stencil-tested outline pass.
-#include "tierlift/effects/outline.h"
+#include "tierlift/effects/glow/outline.h"
 
 #include <cmath>
 #include <numbers>

@@ -1,5 +1,5 @@
 // The glow plan pruned for one scene (prune.h).
-#include "tierlift/effects/prune.h"
+#include "tierlift/effects/glow/prune.h"
 
 #include <algorithm>
 #include <cmath>

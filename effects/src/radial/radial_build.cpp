@@ -5,8 +5,8 @@
 
 #include <fmt/format.h>
 
-#include "tierlift/effects/builtin_listing.h"
-#include "tierlift/effects/radial.h"
+#include "tierlift/effects/glow/builtin_listing.h"
+#include "tierlift/effects/glow/radial.h"
 
 namespace tierlift::effects {
 namespace {

@@ -1,4 +1,4 @@
-#include "tierlift/effects/ideal_glow.h"
+#include "tierlift/effects/report/ideal_glow.h"
 
 #include <algorithm>
 #include <cmath>

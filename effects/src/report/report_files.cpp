@@ -1,6 +1,6 @@
 // The report's files (report_files.h): JSON, CSV and Markdown text, the gnuplot plot, and
 // moving them into place.
-#include "tierlift/effects/report_files.h"
+#include "tierlift/effects/report/report_files.h"
 
 #include <algorithm>
 #include <cerrno>

@@ -1,5 +1,5 @@
 // The report's sweep (report_sweep.h): configurations, their runs, the Pareto front.
-#include "tierlift/effects/report_sweep.h"
+#include "tierlift/effects/report/report_sweep.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,10 +7,10 @@
 
 #include <fmt/format.h>
 
-#include "tierlift/effects/agreement.h"
-#include "tierlift/effects/analytic_device.h"
-#include "tierlift/effects/glow_run.h"
-#include "tierlift/effects/prune.h"
+#include "tierlift/effects/glow/glow_run.h"
+#include "tierlift/effects/glow/prune.h"
+#include "tierlift/effects/graph/agreement.h"
+#include "tierlift/effects/graph/analytic_device.h"
 
 namespace tierlift::effects {
 namespace {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "tierlift/effects/scene_run.h"
+#include "tierlift/effects/scenes/scene_run.h"
 
 namespace tierlift::effects {
 

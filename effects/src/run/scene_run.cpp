@@ -1,6 +1,6 @@
 // run_scene: a scene from its effect's graph to the agreement of every pair of ways (see
 // scene_run.h). Each step is a function of its own; run_scene only orders them.
-#include "tierlift/effects/scene_run.h"
+#include "tierlift/effects/scenes/scene_run.h"
 
 #include <algorithm>
 #include <chrono>
@@ -10,8 +10,8 @@
 #include <fmt/ranges.h>
 
 #include "scene_animation.h"
-#include "tierlift/effects/analytic_device.h"
-#include "tierlift/effects/memory_plan.h"
+#include "tierlift/effects/graph/analytic_device.h"
+#include "tierlift/effects/graph/memory_plan.h"
 
 namespace tierlift::effects {
 namespace {

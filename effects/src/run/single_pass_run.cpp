@@ -7,10 +7,10 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "tierlift/effects/device.h"
-#include "tierlift/effects/memory_plan.h"
-#include "tierlift/effects/run_graph.h"
-#include "tierlift/effects/single_pass.h"
+#include "tierlift/effects/graph/device.h"
+#include "tierlift/effects/graph/memory_plan.h"
+#include "tierlift/effects/graph/run_graph.h"
+#include "tierlift/effects/graph/single_pass.h"
 
 namespace tierlift::effects {
 namespace {

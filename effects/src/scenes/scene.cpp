@@ -2,7 +2,7 @@
 // warnings a set of glow parameters deserves.
 #include <glm/gtc/constants.hpp>
 
-#include "tierlift/effects/scene.h"
+#include "tierlift/effects/scenes/scene.h"
 
 #include <cctype>
 #include <cmath>
@@ -11,7 +11,7 @@
 #include <fmt/format.h>
 
 #include "scene_parts.h"
-#include "tierlift/effects/default_scene.h"
+#include "tierlift/effects/scenes/default_scene.h"
 #include "tierlift/io/bounded_read.h"
 
 namespace tierlift::effects {

@@ -5,8 +5,8 @@
 #include <fmt/format.h>
 
 #include "scene_parts.h"
-#include "tierlift/effects/blur_profile.h"
-#include "tierlift/effects/scene.h"
+#include "tierlift/effects/glow/blur_profile.h"
+#include "tierlift/effects/scenes/scene.h"
 #include "tierlift/listings/embedded.h"
 
 namespace tierlift::effects {

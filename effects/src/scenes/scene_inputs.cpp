@@ -4,7 +4,7 @@
 
 #include "tierlift/asm/load.h"
 #include "tierlift/asm/preprocessor.h"
-#include "tierlift/effects/scene.h"
+#include "tierlift/effects/scenes/scene.h"
 #include "tierlift/io/bounded_read.h"
 
 namespace tierlift::effects {

@@ -8,8 +8,8 @@
 #include <fmt/ranges.h>
 
 #include "scene_parts.h"
-#include "tierlift/effects/default_scene.h"
-#include "tierlift/effects/scene.h"
+#include "tierlift/effects/scenes/default_scene.h"
+#include "tierlift/effects/scenes/scene.h"
 #include "tierlift/image/io.h"
 
 namespace tierlift::effects {

@@ -6,10 +6,10 @@
 #include <vector>
 
 #include "scene_check.h"
-#include "tierlift/effects/glow.h"
-#include "tierlift/effects/glsl_blur.h"
-#include "tierlift/effects/radial.h"
-#include "tierlift/effects/scene.h"
+#include "tierlift/effects/glow/glow.h"
+#include "tierlift/effects/glow/glsl_blur.h"
+#include "tierlift/effects/glow/radial.h"
+#include "tierlift/effects/scenes/scene.h"
 #include "tierlift/image/image.h"
 
 namespace tierlift::effects {

@@ -4,7 +4,7 @@
 #include <fmt/format.h>
 
 #include "scene_parts.h"
-#include "tierlift/effects/scene.h"
+#include "tierlift/effects/scenes/scene.h"
 
 namespace tierlift::effects {
 namespace {

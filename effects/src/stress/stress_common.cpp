@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "tierlift/effects/glow_run.h"
+#include "tierlift/effects/glow/glow_run.h"
 #include "tierlift/rounding/rounding.h"
 
 namespace tierlift::effects {

@@ -7,8 +7,8 @@
 #include <utility>
 #include <vector>
 
-#include "tierlift/effects/glow.h"
-#include "tierlift/effects/stress.h"
+#include "tierlift/effects/glow/glow.h"
+#include "tierlift/effects/report/stress.h"
 
 namespace tierlift::effects::stress {
 

@@ -17,7 +17,7 @@
 #include <fmt/format.h>
 
 #include "stress_common.h"
-#include "tierlift/effects/builtin_listing.h"
+#include "tierlift/effects/glow/builtin_listing.h"
 
 namespace tierlift::effects::stress {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "tierlift/effects/stress.h"
+#include "tierlift/effects/report/stress.h"
 
 namespace tierlift::effects {
 

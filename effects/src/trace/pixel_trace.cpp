@@ -1,6 +1,6 @@
 // One pixel followed on both devices (pixel_trace.h): the Vulkan column's draw, the table
 // that puts the interpreter's record beside the instrumented module's, and its text.
-#include "tierlift/effects/pixel_trace.h"
+#include "tierlift/effects/graph/pixel_trace.h"
 
 #include <bit>
 #include <cmath>

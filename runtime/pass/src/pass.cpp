@@ -18,16 +18,11 @@ ir::Status check_supported(const Pass& pass, const Capabilities& caps, std::stri
                               caps.max_color_targets));
   if (pass.depth_stencil.enabled() && !caps.depth_stencil)
     return refuse("with a depth/stencil buffer");
-  if (!pass.fixed_stages.empty() && !caps.fixed_function)
-    return refuse("fixed-function texture stages");
   if (pass.pixel_spirv && !caps.spirv_pixel_stage)
     return refuse("a pixel stage given as SPIR-V (GLSL)");
   if (pass.pixel_spirv && !pass.pixel_program)
     return ir::fail(std::string(device), "pass",
                     "a SPIR-V pixel stage needs its ps_2_0 twin (the interface it follows)");
-  if (!pass.fixed_stages.empty() && pass.pixel_program)
-    return ir::fail(std::string(device), "pass",
-                    "fixed-function texture stages and a pixel program exclude each other");
   // Both devices run each stage on the 2.0 interface; a pair whose semantics would land in
   // different slots there cannot link (ir::check_semantic_pair).
   if (pass.vertex_program && pass.pixel_program)

@@ -1,9 +1,9 @@
 // The error style of tierlift's library interfaces: a function that can fail returns Result<T>
 // (a value, or the diagnostics that say why there is none) or Status (Result of nothing).
 // Located diagnostics carry a SourceLoc; others (an unreadable file, no device) name a subject.
-// The CLI renders them and turns them into exit codes; no library prints. Not yet everywhere
-// inside: several Vulkan-internal helpers still return a message string, and ShaderVM keeps a
-// throwing constructor for the VM's unit tests (ShaderVM::create is the Result form).
+// The CLI renders them and turns them into exit codes; no library prints. Inside too (Vulkan
+// helpers, graph runner) but for one: vm::prepare throws std::invalid_argument, which
+// ShaderVM::create turns into a Result (the VM's unit tests use the throwing constructor).
 #pragma once
 
 #include <cassert>

@@ -14,10 +14,6 @@ namespace tierlift::vulkan {
 
 namespace {
 
-ir::Failure binding_failure(std::string message) {
-  return ir::fail("vulkan", std::string(kDrawRule), std::move(message));
-}
-
 // What descriptor set 0 holds: the uniform buffers, the sampled textures, the trace buffer.
 struct Resources {
   struct Ubo {
@@ -43,9 +39,9 @@ ir::Status add_uniform_blocks(Device::Impl& d, Cleanup& cleanup, const codegen::
     if (m->uniforms.size_bytes == 0) continue;
     std::vector<uint32_t> words = pack_uniforms(*m, *bank, pass);
     Resources::Ubo u{{}, m->uniforms.binding};
-    std::string err =
+    ir::Status err =
         create_buffer(d, cleanup, words.size() * 4, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, u.buf);
-    if (!err.empty()) return binding_failure(std::move(err));
+    if (!err) return std::move(err).failure();
     std::memcpy(u.buf.mapped, words.data(), words.size() * 4);
     res.layout.push_back(
         {u.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VkShaderStageFlags(stage), nullptr});
@@ -62,15 +58,15 @@ ir::Status add_textures(Device::Impl& d, Cleanup& cleanup, const codegen::Compil
   for (const auto& si : pair.ps.samplers) {
     const uint32_t stage = si.stage % pass::kMaxSamplers;
     const pass::TextureBinding& tb = pass.textures[stage];
-    if (!images[stage]) return binding_failure(fmt::format("s{}: no texture to sample", si.stage));
+    if (!images[stage]) return draw_failure(fmt::format("s{}: no texture to sample", si.stage));
     if (tb.sampler.filter == pass::Filter::Linear &&
         !(tex_props.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT))
-      return binding_failure("the Vulkan device cannot filter RGBA32F textures linearly");
+      return draw_failure("the Vulkan device cannot filter RGBA32F textures linearly");
     Resources::Texture t;
     t.binding = si.binding;
     t.view = images[stage]->view;
-    if (std::string err = create_sampler(d, cleanup, tb.sampler, t.sampler); !err.empty())
-      return binding_failure(std::move(err));
+    if (ir::Status err = create_sampler(d, cleanup, tb.sampler, t.sampler); !err)
+      return std::move(err).failure();
     res.layout.push_back({t.binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
                           VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
     res.textures.push_back(t);
@@ -84,8 +80,8 @@ ir::Status add_trace_buffer(Device::Impl& d, Cleanup& cleanup, const codegen::Co
   const std::optional<codegen::TraceInfo>& trace = pair.ps.trace;
   if (!trace) return ir::ok_status();
   const VkDeviceSize bytes = VkDeviceSize{trace->entries} * codegen::kTraceEntryBytes;
-  std::string err = create_buffer(d, cleanup, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, out.trace);
-  if (!err.empty()) return binding_failure(std::move(err));
+  ir::Status err = create_buffer(d, cleanup, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, out.trace);
+  if (!err) return std::move(err).failure();
   std::memset(out.trace.mapped, 0, out.trace.size);
   res.layout.push_back({trace->binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
                         VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
@@ -95,9 +91,8 @@ ir::Status add_trace_buffer(Device::Impl& d, Cleanup& cleanup, const codegen::Co
 // The descriptor set layout, the pipeline layout over it, a pool and the set.
 ir::Status create_set(Device::Impl& d, Cleanup& cleanup, const Resources& res, Bindings& out) {
   VkDescriptorSetLayout dsl = VK_NULL_HANDLE;
-  if (std::string err = create_pipeline_layout(d, cleanup, res.layout, out.layout, &dsl);
-      !err.empty())
-    return binding_failure(std::move(err));
+  if (ir::Status err = create_pipeline_layout(d, cleanup, res.layout, out.layout, &dsl); !err)
+    return err;
   VkDevice dev = d.device;
   VkResult r = VK_SUCCESS;
   VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2},
@@ -110,7 +105,7 @@ ir::Status create_set(Device::Impl& d, Cleanup& cleanup, const Resources& res, B
   dpi.pPoolSizes = sizes;
   VkDescriptorPool dpool = VK_NULL_HANDLE;
   if ((r = vkCreateDescriptorPool(dev, &dpi, nullptr, &dpool)) != VK_SUCCESS)
-    return binding_failure(vk_error("vkCreateDescriptorPool", r));
+    return draw_failure(vk_error("vkCreateDescriptorPool", r));
   cleanup.destroy_later(dev, dpool, vkDestroyDescriptorPool);
   VkDescriptorSetAllocateInfo dsa{};
   dsa.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
@@ -118,7 +113,7 @@ ir::Status create_set(Device::Impl& d, Cleanup& cleanup, const Resources& res, B
   dsa.descriptorSetCount = 1;
   dsa.pSetLayouts = &dsl;
   if ((r = vkAllocateDescriptorSets(dev, &dsa, &out.set)) != VK_SUCCESS)
-    return binding_failure(vk_error("vkAllocateDescriptorSets", r));
+    return draw_failure(vk_error("vkAllocateDescriptorSets", r));
   return ir::ok_status();
 }
 
@@ -157,26 +152,26 @@ void write_set(Device::Impl& d, const codegen::CompiledPair& pair, const Resourc
 
 } // namespace
 
-std::string create_pipeline_layout(Device::Impl& d, Cleanup& cleanup,
-                                   const std::vector<VkDescriptorSetLayoutBinding>& bindings,
-                                   VkPipelineLayout& out, VkDescriptorSetLayout* set_layout) {
+ir::Status create_pipeline_layout(Device::Impl& d, Cleanup& cleanup,
+                                  const std::vector<VkDescriptorSetLayoutBinding>& bindings,
+                                  VkPipelineLayout& out, VkDescriptorSetLayout* set_layout) {
   VkDescriptorSetLayoutCreateInfo dli{};
   dli.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
   dli.bindingCount = static_cast<uint32_t>(bindings.size());
   dli.pBindings = bindings.data();
   VkDescriptorSetLayout dsl = VK_NULL_HANDLE;
   VkResult r = vkCreateDescriptorSetLayout(d.device, &dli, nullptr, &dsl);
-  if (r != VK_SUCCESS) return vk_error("vkCreateDescriptorSetLayout", r);
+  if (r != VK_SUCCESS) return draw_failure(vk_error("vkCreateDescriptorSetLayout", r));
   cleanup.destroy_later(d.device, dsl, vkDestroyDescriptorSetLayout);
   VkPipelineLayoutCreateInfo pli{};
   pli.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
   pli.setLayoutCount = 1;
   pli.pSetLayouts = &dsl;
   if ((r = vkCreatePipelineLayout(d.device, &pli, nullptr, &out)) != VK_SUCCESS)
-    return vk_error("vkCreatePipelineLayout", r);
+    return draw_failure(vk_error("vkCreatePipelineLayout", r));
   cleanup.destroy_later(d.device, out, vkDestroyPipelineLayout);
   if (set_layout) *set_layout = dsl;
-  return {};
+  return ir::ok_status();
 }
 
 ir::Status create_bindings(Device::Impl& d, Cleanup& cleanup, const codegen::CompiledPair& pair,

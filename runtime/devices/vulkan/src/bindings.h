@@ -28,7 +28,7 @@ struct Bindings {
 
 // A descriptor set layout of `bindings` and the pipeline layout over it (set 0), both
 // registered with `cleanup`; `set_layout` (if given) receives the former. Empty on success.
-std::string create_pipeline_layout(Device::Impl& d, Cleanup& cleanup,
+ir::Status create_pipeline_layout(Device::Impl& d, Cleanup& cleanup,
                                    const std::vector<VkDescriptorSetLayoutBinding>& bindings,
                                    VkPipelineLayout& out,
                                    VkDescriptorSetLayout* set_layout = nullptr);

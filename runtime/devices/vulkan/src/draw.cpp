@@ -13,9 +13,9 @@ ir::Result<pass::DrawReport> Device::draw(const pass::Pass& pass, img::Image& ta
     return draw_failure("render target pixel buffer does not match its size");
   const auto t0 = std::chrono::steady_clock::now();
   std::unique_ptr<Resident> rt;
-  if (std::string err = create_resident(*impl_, target.width, target.height, target.format, rt);
-      !err.empty())
-    return draw_failure(std::move(err));
+  if (ir::Status err = create_resident(*impl_, target.width, target.height, target.format, rt);
+      !err)
+    return std::move(err).failure();
   const double create_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   DrawTextures textures;

@@ -38,7 +38,7 @@ struct Geometry {
 
 // The vertex stream of the pass (see device.h): the pass's own vertices with a vertex
 // program, otherwise the inputs of the pass-through vertex program.
-std::string build_geometry(const pass::Pass& pass, Geometry& g) {
+ir::Status build_geometry(const pass::Pass& pass, Geometry& g) {
   auto from_output = [](const pass::VertexOutput& o) {
     std::array<pass::Vec4, 16> v;
     v.fill({0, 0, 0, 1});
@@ -68,10 +68,11 @@ std::string build_geometry(const pass::Pass& pass, Geometry& g) {
   for (const auto& t : tris)
     for (uint32_t i : t) {
       if (i >= g.vertices.size())
-        return fmt::format("triangle index {} out of range ({} vertices)", i, g.vertices.size());
+        return draw_failure(
+            fmt::format("triangle index {} out of range ({} vertices)", i, g.vertices.size()));
       g.indices.push_back(i);
     }
-  return {};
+  return ir::ok_status();
 }
 
 std::string join_diagnostics(const ir::DiagnosticSink& diags) {
@@ -83,25 +84,25 @@ std::string join_diagnostics(const ir::DiagnosticSink& diags) {
 
 // A host image of a stage without a resident texture, as the old per-pass path did
 // (R32G32B32A32_SFLOAT, the floats as given), uploaded now: it belongs to the draw.
-std::string host_texture(Device::Impl& d, uint32_t stage, const img::Image& im, PreparedDraw& out,
-                         Resident*& r) {
+ir::Status host_texture(Device::Impl& d, uint32_t stage, const img::Image& im, PreparedDraw& out,
+                        Resident*& r) {
   if (im.width == 0 || im.height == 0 || im.width > img::kMaxDimension ||
       im.height > img::kMaxDimension || im.rgba.size() != size_t{im.width} * im.height * 4)
-    return fmt::format("s{}: texture has no pixels", stage);
+    return draw_failure(fmt::format("s{}: texture has no pixels", stage));
   std::unique_ptr<Resident> t;
   Cleanup staging_objects;
   Buffer staging;
-  std::string err = create_resident(d, im.width, im.height, img::Format::RGBA32F, t);
-  if (err.empty())
+  ir::Status err = create_resident(d, im.width, im.height, img::Format::RGBA32F, t);
+  if (err)
     err = create_buffer(d, staging_objects, im.rgba.size() * 4, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                         staging);
-  if (!err.empty()) return err;
+  if (!err) return err;
   std::memcpy(staging.mapped, im.rgba.data(), im.rgba.size() * 4);
   err = submit_and_wait(d, [&](VkCommandBuffer cb) { record_upload(cb, *t, staging.buffer); });
-  if (!err.empty()) return err;
+  if (!err) return err;
   r = t.get();
   out.host_textures.push_back(std::move(t));
-  return {};
+  return ir::ok_status();
 }
 
 // A cube or volume texture of the pass (or the unbound one of that type, reading (0, 0, 0, 1)
@@ -109,15 +110,15 @@ std::string host_texture(Device::Impl& d, uint32_t stage, const img::Image& im, 
 // volume sampler reads the binding's host layers (in an effect graph the device binds images
 // by texture id, and the layers ride with the binding, effects::TextureBind). `bound` says
 // whether the stage has a texture at all (a resident one, or the pass's image).
-std::string host_layered_texture(Device::Impl& d, const codegen::SamplerInfo& si,
-                                 const pass::TextureBinding& b, bool bound, PreparedDraw& out,
-                                 Resident*& r) {
+ir::Status host_layered_texture(Device::Impl& d, const codegen::SamplerInfo& si,
+                                const pass::TextureBinding& b, bool bound, PreparedDraw& out,
+                                Resident*& r) {
   const pass::TextureShape want =
       si.type == ir::SamplerType::Cube ? pass::TextureShape::Cube : pass::TextureShape::Volume;
   std::vector<std::shared_ptr<const img::Image>> layers = b.layers;
   if (bound && (b.shape != want || layers.empty())) {
     const char* name = want == pass::TextureShape::Cube ? "cube" : "volume";
-    return fmt::format("s{}: a {} sampler needs a {} texture", si.stage, name, name);
+    return draw_failure(fmt::format("s{}: a {} sampler needs a {} texture", si.stage, name, name));
   }
   if (!bound) {
     auto texel = std::make_shared<img::Image>(1, 1);
@@ -129,20 +130,20 @@ std::string host_layered_texture(Device::Impl& d, const codegen::SamplerInfo& si
   Cleanup staging_objects;
   Buffer staging;
   const size_t floats = first.rgba.size();
-  std::string err = create_layered_resident(d, first.width, first.height, want,
-                                            static_cast<uint32_t>(layers.size()), t);
-  if (err.empty())
+  ir::Status err = create_layered_resident(d, first.width, first.height, want,
+                                           static_cast<uint32_t>(layers.size()), t);
+  if (err)
     err = create_buffer(d, staging_objects, floats * layers.size() * 4,
                         VK_BUFFER_USAGE_TRANSFER_SRC_BIT, staging);
-  if (!err.empty()) return err;
+  if (!err) return err;
   for (size_t k = 0; k < layers.size(); ++k)
     std::memcpy(static_cast<float*>(staging.mapped) + k * floats, layers[k]->rgba.data(),
                 floats * 4);
   err = submit_and_wait(d, [&](VkCommandBuffer cb) { record_upload(cb, *t, staging.buffer); });
-  if (!err.empty()) return err;
+  if (!err) return err;
   r = t.get();
   out.host_textures.push_back(std::move(t));
-  return {};
+  return ir::ok_status();
 }
 
 // Whether a stage's reads fetch the stored RGBA8 bytes in place instead of sampling a float
@@ -173,55 +174,58 @@ struct LayoutSnapshot {
 // Every oC# below pass.color_targets must be an output of the pixel stage: Vulkan leaves an
 // attachment without a fragment output undefined (D3D9's validator already requires oC0..
 // oC(n-1) to be written when oCn is; here the pass may name more targets than it writes).
-std::string check_color_outputs(const pass::Pass& pass, const codegen::ShaderModule& ps) {
+ir::Status check_color_outputs(const pass::Pass& pass, const codegen::ShaderModule& ps) {
   for (uint32_t i = 1; i < pass.color_targets; ++i) {
     bool written = false;
     for (const auto& iv : ps.interface)
       written = written || (iv.kind == codegen::InterfaceKind::Output && iv.location == i);
     if (!written)
-      return fmt::format("the pass draws into {} render targets, but its pixel program does not "
-                         "write oC{}",
-                         pass.color_targets, i);
+      return draw_failure(
+          fmt::format("the pass draws into {} render targets, but its pixel program does not "
+                      "write oC{}",
+                      pass.color_targets, i));
   }
-  return {};
+  return ir::ok_status();
 }
 
 // The targets beyond oC0 and the stencil buffer: bound as the pass asks, each the size of
 // oC0, none of them twice.
-std::string check_targets(const pass::Pass& pass, const DrawTextures& t) {
+ir::Status check_targets(const pass::Pass& pass, const DrawTextures& t) {
   const Resident& first = *t.target;
   std::vector<const Resident*> seen{&first};
   for (uint32_t i = 1; i < 4; ++i) {
     const Resident* r = t.more_targets[i - 1];
     if (i >= pass.color_targets) {
       if (r)
-        return fmt::format("render target {} is bound, but the pass draws into {}", i,
-                           pass.color_targets);
+        return draw_failure(fmt::format("render target {} is bound, but the pass draws into {}", i,
+                                        pass.color_targets));
       continue;
     }
-    if (!r) return fmt::format("render target {} (oC{}) is not bound", i, i);
-    if (r->stencil) return fmt::format("render target {} is a stencil buffer", i);
+    if (!r) return draw_failure(fmt::format("render target {} (oC{}) is not bound", i, i));
+    if (r->stencil) return draw_failure(fmt::format("render target {} is a stencil buffer", i));
     if (r->width != first.width || r->height != first.height)
-      return fmt::format("render target {} is {}x{}, render target 0 is {}x{}: every target of "
-                         "a pass has one size",
-                         i, r->width, r->height, first.width, first.height);
+      return draw_failure(
+          fmt::format("render target {} is {}x{}, render target 0 is {}x{}: every target of "
+                      "a pass has one size",
+                      i, r->width, r->height, first.width, first.height));
     for (const Resident* s : seen)
-      if (s == r) return fmt::format("render target {} is bound twice", i);
+      if (s == r) return draw_failure(fmt::format("render target {} is bound twice", i));
     seen.push_back(r);
   }
   const pass::DepthStencilState& ds = pass.depth_stencil;
   if (ds.depth_test || ds.depth_write)
-    return "the vulkan device has a stencil buffer but no depth buffer";
+    return draw_failure("the vulkan device has a stencil buffer but no depth buffer");
   if (ds.stencil_test && !t.stencil)
-    return "the pass has a stencil test but no stencil buffer is bound";
+    return draw_failure("the pass has a stencil test but no stencil buffer is bound");
   if (t.stencil) {
-    if (!t.stencil->stencil) return "the stencil buffer is a colour texture";
+    if (!t.stencil->stencil) return draw_failure("the stencil buffer is a colour texture");
     if (t.stencil->width != first.width || t.stencil->height != first.height)
-      return fmt::format("the stencil buffer is {}x{}, the render target {}x{}", t.stencil->width,
-                         t.stencil->height, first.width, first.height);
+      return draw_failure(fmt::format("the stencil buffer is {}x{}, the render target {}x{}",
+                                      t.stencil->width, t.stencil->height, first.width,
+                                      first.height));
   }
-  if (first.stencil) return "render target 0 is a stencil buffer";
-  return {};
+  if (first.stencil) return draw_failure("render target 0 is a stencil buffer");
+  return ir::ok_status();
 }
 
 // The traced module's record (codegen::TracePixel's layout) out of its storage buffer.
@@ -243,9 +247,9 @@ void read_trace(const PreparedDraw& p, ShaderTrace& out) {
 namespace {
 
 // The programs as SPIR-V, compiled for the pass's constants and the device's read paths.
-std::string compile_programs(const Device::Impl& d, const pass::Pass& pass,
-                             const DrawTextures& textures,
-                             std::optional<codegen::CompiledPair>& out) {
+ir::Status compile_programs(const Device::Impl& d, const pass::Pass& pass,
+                            const DrawTextures& textures,
+                            std::optional<codegen::CompiledPair>& out) {
   auto vs_prog = pass.vertex_program ? pass.vertex_program : passthrough_vertex_program();
   auto ps_prog = pass.pixel_program ? pass.pixel_program : passthrough_pixel_program();
   // Products with a ±0 constant factor read nothing else (ir::zero_constant_products), so
@@ -257,7 +261,7 @@ std::string compile_programs(const Device::Impl& d, const pass::Pass& pass,
   const bool for_these_constants = !textures.reuse || textures.trace;
   if (!pass.pixel_spirv && for_these_constants) {
     auto p = ir::prepare_for_device(*ps_prog, pass.ps_constants.f, {.drop_dead = false});
-    if (!p) return p.message();
+    if (!p) return draw_failure(p.message());
     if (p->specialised) ps_prog = std::make_shared<const ir::Program>(std::move(*p->specialised));
   }
   codegen::CodegenOptions co;
@@ -271,8 +275,8 @@ std::string compile_programs(const Device::Impl& d, const pass::Pass& pass,
   co.point_sampling_floors = d.point_sampling_floors;
   if (textures.trace) {
     if (!d.fragment_stores)
-      return "the Vulkan device cannot write a buffer from a pixel shader "
-             "(fragmentStoresAndAtomics), which tracing a pixel needs";
+      return draw_failure("the Vulkan device cannot write a buffer from a pixel shader "
+                          "(fragmentStoresAndAtomics), which tracing a pixel needs");
     co.trace = *textures.trace;
   }
   co.unorm8_decode = d.unorm8_decode;
@@ -296,18 +300,19 @@ std::string compile_programs(const Device::Impl& d, const pass::Pass& pass,
   if (!out) {
     ir::DiagnosticSink diags;
     out = codegen::compile_pair(*vs_prog, *ps_prog, co, diags);
-    if (!out) return join_diagnostics(diags);
+    if (!out) return draw_failure(join_diagnostics(diags));
     if (key) textures.reuse->keep_compiled(*key, pass.vertex_program, pass.pixel_program, *out);
   }
-  if (!out->vs.samplers.empty()) return "vertex-stage texture sampling is not supported";
+  if (!out->vs.samplers.empty())
+    return draw_failure("vertex-stage texture sampling is not supported");
   return check_color_outputs(pass, out->ps);
 }
 
 // The textures the pixel program samples: resident ones, else the pass's host images (or the
 // unbound texture) uploaded for this draw.
-std::string bind_sampled(Device::Impl& d, const pass::Pass& pass, const DrawTextures& textures,
-                         const codegen::CompiledPair& pair, PreparedDraw& out,
-                         SampledImages& images) {
+ir::Status bind_sampled(Device::Impl& d, const pass::Pass& pass, const DrawTextures& textures,
+                        const codegen::CompiledPair& pair, PreparedDraw& out,
+                        SampledImages& images) {
   img::Image unbound(1, 1);
   unbound.rgba = {0, 0, 0, 1}; // an unbound stage reads (0, 0, 0, 1), as in D3D9
   for (const auto& si : pair.ps.samplers) {
@@ -317,8 +322,9 @@ std::string bind_sampled(Device::Impl& d, const pass::Pass& pass, const DrawText
     r = textures.stages[s];
     bool own = r && r == textures.target;
     for (const Resident* m : textures.more_targets) own = own || (r && r == m);
-    if (own) return fmt::format("s{}: a pass cannot sample its own render target", si.stage);
-    std::string err;
+    if (own)
+      return draw_failure(fmt::format("s{}: a pass cannot sample its own render target", si.stage));
+    ir::Status err = ir::ok_status();
     if (si.type == ir::SamplerType::Cube || si.type == ir::SamplerType::Volume) {
       // The binding's layers, uploaded with the draw (a resident texture is 2D: in an effect
       // graph it holds the first layer only, effects::TextureBind).
@@ -326,38 +332,38 @@ std::string bind_sampled(Device::Impl& d, const pass::Pass& pass, const DrawText
       r = nullptr;
       err = host_layered_texture(d, si, pass.textures[s], bound, out, r);
     } else if (pass.textures[s].shape != pass::TextureShape::Tex2D) {
-      err = fmt::format("s{}: a 2D sampler cannot read a cube or volume texture", si.stage);
+      err = draw_failure(fmt::format("s{}: a 2D sampler cannot read a cube or volume texture", si.stage));
     } else if (!r) {
       const img::Image& im = pass.textures[s].image ? *pass.textures[s].image : unbound;
       err = host_texture(d, si.stage, im, out, r);
     }
     out.fetched[s] = si.fetch_unorm8;
-    if (err.empty() && !si.fetch_unorm8) err = ensure_shadow(d, *r);
-    if (!err.empty()) return err;
+    if (err && !si.fetch_unorm8) err = ensure_shadow(d, *r);
+    if (!err) return err;
     images[s] = si.fetch_unorm8 ? &r->stored.image : &r->sampled();
   }
-  return {};
+  return ir::ok_status();
 }
 
 // The vertex and index buffers, filled.
-std::string upload_geometry(Device::Impl& d, const Geometry& geo, PreparedDraw& out) {
-  std::string err = create_buffer(d, out.objects, geo.vertices.size() * kVertexStride,
-                                  VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, out.vertices);
-  if (err.empty())
+ir::Status upload_geometry(Device::Impl& d, const Geometry& geo, PreparedDraw& out) {
+  ir::Status err = create_buffer(d, out.objects, geo.vertices.size() * kVertexStride,
+                                 VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, out.vertices);
+  if (err)
     err = create_buffer(d, out.objects, geo.indices.size() * 4, VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
                         out.indices);
-  if (!err.empty()) return err;
+  if (!err) return err;
   if (!geo.vertices.empty())
     std::memcpy(out.vertices.mapped, geo.vertices.data(), geo.vertices.size() * kVertexStride);
   if (!geo.indices.empty())
     std::memcpy(out.indices.mapped, geo.indices.data(), geo.indices.size() * 4);
   out.index_count = static_cast<uint32_t>(geo.indices.size());
-  return {};
+  return ir::ok_status();
 }
 
 // The render pass over the targets (and the stencil buffer), its framebuffer and the
 // pipeline.
-std::string create_render_objects(Device::Impl& d, const pass::Pass& pass,
+ir::Status create_render_objects(Device::Impl& d, const pass::Pass& pass,
                                   const DrawTextures& textures, const codegen::CompiledPair& pair,
                                   VkPipelineLayout layout,
                                   const std::vector<VkDescriptorSetLayoutBinding>& layout_bindings,
@@ -372,19 +378,18 @@ std::string create_render_objects(Device::Impl& d, const pass::Pass& pass,
     if (!(rt_props.optimalTilingFeatures & VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT) ||
         (pass.blend != pass::BlendMode::Replace &&
          !(rt_props.optimalTilingFeatures & VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT)))
-      return fmt::format("the Vulkan device cannot render (and blend) to {}",
-                         img::format_name(t.format));
+      return draw_failure(fmt::format("the Vulkan device cannot render (and blend) to {}",
+                                      img::format_name(t.format)));
     formats.push_back(rt_format);
     attachments.push_back(&t.stored.image);
   }
   if (textures.stencil) attachments.push_back(&textures.stencil->stored.image);
-  std::string err = create_render_pass(d, out.objects, formats,
-                                       textures.stencil ? textures.stencil->stored.image.format
-                                                        : VK_FORMAT_UNDEFINED,
-                                       out.render_pass);
-  if (err.empty())
-    err = create_framebuffer(d, out.objects, out.render_pass, attachments, out.framebuffer);
-  if (!err.empty()) return err;
+  ir::Status err = create_render_pass(d, out.objects, formats,
+                                      textures.stencil ? textures.stencil->stored.image.format
+                                                       : VK_FORMAT_UNDEFINED,
+                                      out.render_pass);
+  if (err) err = create_framebuffer(d, out.objects, out.render_pass, attachments, out.framebuffer);
+  if (!err) return err;
   PipelineDesc pd;
   pd.vs = &pair.vs;
   pd.ps = &pair.ps;
@@ -439,39 +444,40 @@ void place_viewport(const pass::Pass& pass, const Resident& target, bool has_tri
 
 } // namespace
 
-std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawTextures& textures,
-                         PreparedDraw& out) {
-  if (!textures.target) return "no render target";
+ir::Status prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawTextures& textures,
+                        PreparedDraw& out) {
+  if (!textures.target) return draw_failure("no render target");
   out.target = textures.target;
   out.more_targets = textures.more_targets;
   out.stencil = textures.stencil;
   if (pass.vertex_program && pass.vertex_program->stage() != ir::ShaderStage::Vertex)
-    return "the vertex program is not a vertex shader";
+    return draw_failure("the vertex program is not a vertex shader");
   if (pass.pixel_program && pass.pixel_program->stage() != ir::ShaderStage::Pixel)
-    return "the pixel program is not a pixel shader";
-  if (ir::Status s = pass::check_supported(pass, kCapabilities, "vulkan"); !s) return s.message();
-  if (std::string e = check_targets(pass, textures); !e.empty()) return e;
+    return draw_failure("the pixel program is not a pixel shader");
+  if (ir::Status s = pass::check_supported(pass, kCapabilities, "vulkan"); !s)
+    return draw_failure(s.message());
+  if (ir::Status e = check_targets(pass, textures); !e) return e;
   std::optional<codegen::CompiledPair> pair;
-  if (std::string e = compile_programs(d, pass, textures, pair); !e.empty()) return e;
+  if (ir::Status e = compile_programs(d, pass, textures, pair); !e) return e;
   Geometry geo;
-  if (std::string e = build_geometry(pass, geo); !e.empty()) return e;
+  if (ir::Status e = build_geometry(pass, geo); !e) return e;
   SampledImages images{};
-  if (std::string e = bind_sampled(d, pass, textures, *pair, out, images); !e.empty()) return e;
-  if (std::string e = upload_geometry(d, geo, out); !e.empty()) return e;
+  if (ir::Status e = bind_sampled(d, pass, textures, *pair, out, images); !e) return e;
+  if (ir::Status e = upload_geometry(d, geo, out); !e) return e;
   // Descriptor set 0 and the pipeline layout.
   Bindings bound;
   if (ir::Status s = create_bindings(d, out.objects, *pair, pass, images, bound); !s)
-    return s.message();
+    return draw_failure(s.message());
   out.layout = bound.layout;
   out.set = bound.set;
   out.trace = bound.trace;
   out.trace_info = pair->ps.trace;
-  if (std::string e =
-          create_render_objects(d, pass, textures, *pair, bound.layout, bound.layout_bindings, out);
-      !e.empty())
+  if (ir::Status e = create_render_objects(d, pass, textures, *pair, bound.layout,
+                                           bound.layout_bindings, out);
+      !e)
     return e;
   place_viewport(pass, *textures.target, !geo.indices.empty(), out);
-  return {};
+  return ir::ok_status();
 }
 
 void record_draw(VkCommandBuffer cb, const Device::Impl& d, PreparedDraw& p) {
@@ -503,7 +509,7 @@ void record_draw(VkCommandBuffer cb, const Device::Impl& d, PreparedDraw& p) {
   vkCmdEndRenderPass(cb);
 }
 
-std::string submit_draw(Device::Impl& d, PreparedDraw& draw) {
+ir::Status submit_draw(Device::Impl& d, PreparedDraw& draw) {
   LayoutSnapshot snapshot;
   snapshot.save(*draw.target);
   for (Resident* r : draw.more_targets)
@@ -511,8 +517,8 @@ std::string submit_draw(Device::Impl& d, PreparedDraw& draw) {
   if (draw.stencil) snapshot.save(*draw.stencil);
   for (Resident* r : draw.sampled)
     if (r) snapshot.save(*r);
-  std::string err = submit_and_wait(d, [&](VkCommandBuffer cb) { record_draw(cb, d, draw); });
-  if (!err.empty()) snapshot.restore();
+  ir::Status err = submit_and_wait(d, [&](VkCommandBuffer cb) { record_draw(cb, d, draw); });
+  if (!err) snapshot.restore();
   return err;
 }
 
@@ -521,8 +527,7 @@ ir::Result<pass::DrawReport> draw_pass(Device::Impl& d, const pass::Pass& pass,
   pass::DrawReport res;
   const auto t0 = Clock::now();
   PreparedDraw prepared;
-  if (std::string e = prepare_draw(d, pass, textures, prepared); !e.empty())
-    return draw_failure(std::move(e));
+  if (ir::Status e = prepare_draw(d, pass, textures, prepared); !e) return std::move(e).failure();
   Resident& target = *textures.target;
 
   // The staging buffer of a host target: its contents go up, the result comes back.
@@ -531,10 +536,10 @@ ir::Result<pass::DrawReport> draw_pass(Device::Impl& d, const pass::Pass& pass,
   if (textures.host_target) {
     const VkDeviceSize rt_bytes =
         VkDeviceSize{target.width} * target.height * bytes_per_pixel(target.format);
-    std::string err = create_buffer(
+    ir::Status err = create_buffer(
         d, cleanup, rt_bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
         rt_staging);
-    if (!err.empty()) return draw_failure(std::move(err));
+    if (!err) return std::move(err).failure();
     pack_pixels(*textures.host_target, rt_staging.mapped);
   }
   res.setup_ms = ms_since(t0);
@@ -547,7 +552,7 @@ ir::Result<pass::DrawReport> draw_pass(Device::Impl& d, const pass::Pass& pass,
   for (Resident* r : prepared.sampled)
     if (r) snapshot.save(*r);
   const auto t1 = Clock::now();
-  std::string err = submit_and_wait(d, [&](VkCommandBuffer cb) {
+  ir::Status err = submit_and_wait(d, [&](VkCommandBuffer cb) {
     if (textures.host_target) record_upload(cb, target, rt_staging.buffer);
     record_draw(cb, d, prepared);
     if (prepared.trace.buffer) { // the pixel stage's record made visible to the host
@@ -560,9 +565,9 @@ ir::Result<pass::DrawReport> draw_pass(Device::Impl& d, const pass::Pass& pass,
     }
     if (textures.host_target) record_readback(cb, target, rt_staging.buffer);
   });
-  if (!err.empty()) {
+  if (!err) {
     snapshot.restore();
-    return draw_failure(std::move(err));
+    return std::move(err).failure();
   }
   res.draw_ms = ms_since(t1);
   if (textures.host_target) unpack_pixels(rt_staging.mapped, *textures.host_target);

@@ -71,9 +71,9 @@ struct PreparedDraw {
 };
 
 // Creates what drawing `pass` into textures.target needs (host_target is ignored here).
-// Empty string on success; on failure `out` holds nothing that outlives it.
-std::string prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawTextures& textures,
-                         PreparedDraw& out);
+// On failure (draw_failure) `out` holds nothing that outlives it.
+ir::Status prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawTextures& textures,
+                        PreparedDraw& out);
 
 // Records the draw: sampled textures made current and readable, the targets made the colour
 // attachments (and the stencil buffer the depth/stencil one), the render pass with the draw.
@@ -82,12 +82,7 @@ void record_draw(VkCommandBuffer cb, const Device::Impl& d, PreparedDraw& draw);
 
 // Records `draw` alone, submits it and waits. On failure the textures' tracked layouts are
 // restored (nothing changed on the device).
-std::string submit_draw(Device::Impl& d, PreparedDraw& draw);
-
-// A failed draw or TextureSet call: `message` about "vulkan", rule kDrawRule (device.h).
-inline ir::Failure draw_failure(std::string message) {
-  return ir::fail("vulkan", std::string(kDrawRule), std::move(message));
-}
+ir::Status submit_draw(Device::Impl& d, PreparedDraw& draw);
 
 // Draws `pass` into textures.target now (prepare, submit, wait); the report holds setup_ms
 // and draw_ms. On failure (draw_failure) nothing was submitted that changes any texture, and

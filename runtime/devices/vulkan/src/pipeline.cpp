@@ -86,23 +86,23 @@ VkPipelineDepthStencilStateCreateInfo depth_stencil_state(const pass::DepthStenc
   return out;
 }
 
-std::string shader_module(Device::Impl& d, Cleanup& cleanup, const std::vector<uint32_t>& words,
-                          VkShaderModule& out) {
+ir::Status shader_module(Device::Impl& d, Cleanup& cleanup, const std::vector<uint32_t>& words,
+                         VkShaderModule& out) {
   VkShaderModuleCreateInfo ci{};
   ci.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
   ci.codeSize = words.size() * sizeof(uint32_t);
   ci.pCode = words.data();
   VkResult r = vkCreateShaderModule(d.device, &ci, nullptr, &out);
-  if (r != VK_SUCCESS) return vk_error("vkCreateShaderModule", r);
+  if (r != VK_SUCCESS) return draw_failure(vk_error("vkCreateShaderModule", r));
   cleanup.destroy_later(d.device, out, vkDestroyShaderModule);
-  return {};
+  return ir::ok_status();
 }
 
 } // namespace
 
-std::string create_render_pass(Device::Impl& d, Cleanup& cleanup,
-                               const std::vector<VkFormat>& colors, VkFormat stencil,
-                               VkRenderPass& out) {
+ir::Status create_render_pass(Device::Impl& d, Cleanup& cleanup,
+                              const std::vector<VkFormat>& colors, VkFormat stencil,
+                              VkRenderPass& out) {
   std::vector<VkAttachmentDescription> atts;
   std::vector<VkAttachmentReference> refs;
   for (VkFormat format : colors) {
@@ -146,13 +146,13 @@ std::string create_render_pass(Device::Impl& d, Cleanup& cleanup,
   ci.subpassCount = 1;
   ci.pSubpasses = &sub;
   VkResult r = vkCreateRenderPass(d.device, &ci, nullptr, &out);
-  if (r != VK_SUCCESS) return vk_error("vkCreateRenderPass", r);
+  if (r != VK_SUCCESS) return draw_failure(vk_error("vkCreateRenderPass", r));
   cleanup.destroy_later(d.device, out, vkDestroyRenderPass);
-  return {};
+  return ir::ok_status();
 }
 
-std::string create_framebuffer(Device::Impl& d, Cleanup& cleanup, VkRenderPass rp,
-                               const std::vector<const Image2D*>& attachments, VkFramebuffer& out) {
+ir::Status create_framebuffer(Device::Impl& d, Cleanup& cleanup, VkRenderPass rp,
+                              const std::vector<const Image2D*>& attachments, VkFramebuffer& out) {
   std::vector<VkImageView> views;
   for (const Image2D* a : attachments) views.push_back(a->view);
   VkFramebufferCreateInfo ci{};
@@ -164,13 +164,13 @@ std::string create_framebuffer(Device::Impl& d, Cleanup& cleanup, VkRenderPass r
   ci.height = attachments.front()->height;
   ci.layers = 1;
   VkResult r = vkCreateFramebuffer(d.device, &ci, nullptr, &out);
-  if (r != VK_SUCCESS) return vk_error("vkCreateFramebuffer", r);
+  if (r != VK_SUCCESS) return draw_failure(vk_error("vkCreateFramebuffer", r));
   cleanup.destroy_later(d.device, out, vkDestroyFramebuffer);
-  return {};
+  return ir::ok_status();
 }
 
-std::string create_sampler(Device::Impl& d, Cleanup& cleanup, const pass::SamplerState& s,
-                           VkSampler& out) {
+ir::Status create_sampler(Device::Impl& d, Cleanup& cleanup, const pass::SamplerState& s,
+                          VkSampler& out) {
   VkSamplerCreateInfo ci{};
   ci.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
   VkFilter f = s.filter == pass::Filter::Linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
@@ -182,7 +182,7 @@ std::string create_sampler(Device::Impl& d, Cleanup& cleanup, const pass::Sample
   if (ci.addressModeU == VK_SAMPLER_ADDRESS_MODE_MAX_ENUM ||
       ci.addressModeV == VK_SAMPLER_ADDRESS_MODE_MAX_ENUM ||
       ci.addressModeW == VK_SAMPLER_ADDRESS_MODE_MAX_ENUM)
-    return "the Vulkan device does not support the MirrorOnce address mode";
+    return draw_failure("the Vulkan device does not support the MirrorOnce address mode");
   const pass::Vec4& b = s.border_color;
   if (b == pass::Vec4{0, 0, 0, 0})
     ci.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
@@ -191,22 +191,23 @@ std::string create_sampler(Device::Impl& d, Cleanup& cleanup, const pass::Sample
   else if (b == pass::Vec4{1, 1, 1, 1})
     ci.borderColor = VK_BORDER_COLOR_FLOAT_OPAQUE_WHITE;
   else
-    return fmt::format("the Vulkan device supports border colours (0,0,0,0), (0,0,0,1) and "
-                       "(1,1,1,1) only, not ({},{},{},{})",
-                       b[0], b[1], b[2], b[3]);
+    return draw_failure(
+        fmt::format("the Vulkan device supports border colours (0,0,0,0), (0,0,0,1) and "
+                    "(1,1,1,1) only, not ({},{},{},{})",
+                    b[0], b[1], b[2], b[3]));
   ci.minLod = ci.maxLod = 0.0f;
   VkResult r = vkCreateSampler(d.device, &ci, nullptr, &out);
-  if (r != VK_SUCCESS) return vk_error("vkCreateSampler", r);
+  if (r != VK_SUCCESS) return draw_failure(vk_error("vkCreateSampler", r));
   cleanup.destroy_later(d.device, out, vkDestroySampler);
-  return {};
+  return ir::ok_status();
 }
 
-std::string create_pipeline(Device::Impl& d, Cleanup& cleanup, const PipelineDesc& desc,
-                            VkPipeline& out) {
+ir::Status create_pipeline(Device::Impl& d, Cleanup& cleanup, const PipelineDesc& desc,
+                           VkPipeline& out) {
   VkShaderModule vsm = VK_NULL_HANDLE, psm = VK_NULL_HANDLE;
-  std::string err = shader_module(d, cleanup, desc.vs->words, vsm);
-  if (err.empty()) err = shader_module(d, cleanup, desc.ps_words, psm);
-  if (!err.empty()) return err;
+  ir::Status err = shader_module(d, cleanup, desc.vs->words, vsm);
+  if (err) err = shader_module(d, cleanup, desc.ps_words, psm);
+  if (!err) return err;
   VkPipelineShaderStageCreateInfo stages[2]{};
   stages[0].sType = stages[1].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
   stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
@@ -296,10 +297,10 @@ std::string create_pipeline(Device::Impl& d, Cleanup& cleanup, const PipelineDes
           .count();
   ++g_pipeline_creations;
   g_pipeline_creation_cpu_ns += thread_cpu_ns() - cpu0;
-  if (r != VK_SUCCESS) return vk_error("vkCreateGraphicsPipelines", r);
+  if (r != VK_SUCCESS) return draw_failure(vk_error("vkCreateGraphicsPipelines", r));
   d.pipeline_cache_dirty = true;
   cleanup.destroy_later(d.device, out, vkDestroyPipeline);
-  return {};
+  return ir::ok_status();
 }
 
 double pipeline_creation_cpu_ms() {

@@ -15,16 +15,16 @@ namespace tierlift::vulkan {
 // COLOR_ATTACHMENT_OPTIMAL, loaded (blending reads the stored destination) and stored; and,
 // with a stencil format (not VK_FORMAT_UNDEFINED), a depth/stencil attachment after them in
 // DEPTH_STENCIL_ATTACHMENT_OPTIMAL, its stencil loaded and stored.
-std::string create_render_pass(Device::Impl& d, Cleanup& cleanup,
-                               const std::vector<VkFormat>& colors, VkFormat stencil,
-                               VkRenderPass& out);
+ir::Status create_render_pass(Device::Impl& d, Cleanup& cleanup,
+                              const std::vector<VkFormat>& colors, VkFormat stencil,
+                              VkRenderPass& out);
 // `attachments`: the colour targets in order, then the stencil buffer if the pass has one.
-std::string create_framebuffer(Device::Impl& d, Cleanup& cleanup, VkRenderPass rp,
-                               const std::vector<const Image2D*>& attachments, VkFramebuffer& out);
+ir::Status create_framebuffer(Device::Impl& d, Cleanup& cleanup, VkRenderPass rp,
+                              const std::vector<const Image2D*>& attachments, VkFramebuffer& out);
 // D3D9 sampler state → VkSampler (one level). Errors for MirrorOnce and border colours other
 // than transparent black, opaque black and opaque white.
-std::string create_sampler(Device::Impl& d, Cleanup& cleanup, const pass::SamplerState& s,
-                           VkSampler& out);
+ir::Status create_sampler(Device::Impl& d, Cleanup& cleanup, const pass::SamplerState& s,
+                          VkSampler& out);
 
 struct PipelineDesc {
   const codegen::ShaderModule* vs = nullptr;
@@ -42,7 +42,7 @@ struct PipelineDesc {
   VkPipelineLayout layout = VK_NULL_HANDLE;
   uint32_t vertex_stride = 0; // bytes per vertex; input vN at offset 16·N
 };
-std::string create_pipeline(Device::Impl& d, Cleanup& cleanup, const PipelineDesc& desc,
-                            VkPipeline& out);
+ir::Status create_pipeline(Device::Impl& d, Cleanup& cleanup, const PipelineDesc& desc,
+                           VkPipeline& out);
 
 } // namespace tierlift::vulkan

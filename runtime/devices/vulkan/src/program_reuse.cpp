@@ -74,7 +74,7 @@ void ProgramReuse::keep_compiled(const std::string& key, std::shared_ptr<const i
   compiled_[key] = Compiled{std::move(vs), std::move(ps), pair};
 }
 
-std::string ProgramReuse::pipeline(Device::Impl& d, const PipelineDesc& desc,
+ir::Status ProgramReuse::pipeline(Device::Impl& d, const PipelineDesc& desc,
                                    const std::vector<VkFormat>& color_formats,
                                    VkFormat stencil_format,
                                    const std::vector<VkDescriptorSetLayoutBinding>& bindings,
@@ -83,6 +83,7 @@ std::string ProgramReuse::pipeline(Device::Impl& d, const PipelineDesc& desc,
   k.put(desc.vs->words);
   k.put(desc.ps_words);
   k.put(desc.blend);
+  k.put(desc.front_face);
   k.put(desc.color_targets);
   k.put(desc.stencil_attachment);
   const pass::DepthStencilState& ds = desc.depth_stencil;
@@ -111,18 +112,18 @@ std::string ProgramReuse::pipeline(Device::Impl& d, const PipelineDesc& desc,
   const std::string key = k.take();
   if (auto it = pipelines_.find(key); it != pipelines_.end()) {
     out = it->second->pipeline;
-    return {};
+    return ir::ok_status();
   }
   auto made = std::make_unique<Pipeline>();
   PipelineDesc own = desc;
-  std::string err =
+  ir::Status err =
       create_render_pass(d, made->objects, color_formats, stencil_format, own.render_pass);
-  if (err.empty()) err = create_pipeline_layout(d, made->objects, bindings, own.layout);
-  if (err.empty()) err = create_pipeline(d, made->objects, own, made->pipeline);
-  if (!err.empty()) return err;
+  if (err) err = create_pipeline_layout(d, made->objects, bindings, own.layout);
+  if (err) err = create_pipeline(d, made->objects, own, made->pipeline);
+  if (!err) return err;
   out = made->pipeline;
   pipelines_.emplace(key, std::move(made));
-  return {};
+  return ir::ok_status();
 }
 
 } // namespace tierlift::vulkan

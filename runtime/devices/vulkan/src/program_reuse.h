@@ -38,7 +38,7 @@ public:
   // the draw has): the one made for the same modules, state, attachments and descriptor
   // bindings before, else one made now with a render pass and layout of the cache's own, which
   // are compatible with the draw's (Vulkan's render pass and pipeline layout compatibility).
-  std::string pipeline(Device::Impl& d, const PipelineDesc& desc,
+  ir::Status pipeline(Device::Impl& d, const PipelineDesc& desc,
                        const std::vector<VkFormat>& color_formats, VkFormat stencil_format,
                        const std::vector<VkDescriptorSetLayoutBinding>& bindings, VkPipeline& out);
 

@@ -93,8 +93,8 @@ VkBufferImageCopy whole_image(const Resident& r) {
 
 Resident::~Resident() = default;
 
-std::string create_resident(Device::Impl& d, uint32_t width, uint32_t height, img::Format format,
-                            std::unique_ptr<Resident>& out) {
+ir::Status create_resident(Device::Impl& d, uint32_t width, uint32_t height, img::Format format,
+                           std::unique_ptr<Resident>& out) {
   auto r = std::make_unique<Resident>();
   r->width = width;
   r->height = height;
@@ -104,29 +104,28 @@ std::string create_resident(Device::Impl& d, uint32_t width, uint32_t height, im
                             VK_IMAGE_USAGE_TRANSFER_DST_BIT;
   // RGBA8 is also read in place: a point read fetches the stored bytes (record_as_fetched).
   if (r->samples_stored() || format == img::Format::RGBA8) usage |= VK_IMAGE_USAGE_SAMPLED_BIT;
-  if (std::string err = create_image(d, r->objects, width, height, vf, usage, r->stored.image);
-      !err.empty())
+  if (ir::Status err = create_image(d, r->objects, width, height, vf, usage, r->stored.image); !err)
     return err;
   out = std::move(r);
-  return {};
+  return ir::ok_status();
 }
 
-std::string create_layered_resident(Device::Impl& d, uint32_t width, uint32_t height,
+ir::Status create_layered_resident(Device::Impl& d, uint32_t width, uint32_t height,
                                     pass::TextureShape shape, uint32_t layers,
                                     std::unique_ptr<Resident>& out) {
   auto r = std::make_unique<Resident>();
   r->width = width;
   r->height = height;
   const VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-  if (std::string err = create_layered_image(d, r->objects, width, height, shape, layers,
-                                             kSampledFormat, usage, r->stored.image);
-      !err.empty())
+  if (ir::Status err = create_layered_image(d, r->objects, width, height, shape, layers,
+                                            kSampledFormat, usage, r->stored.image);
+      !err)
     return err;
   out = std::move(r);
-  return {};
+  return ir::ok_status();
 }
 
-std::string create_stencil_resident(Device::Impl& d, uint32_t width, uint32_t height,
+ir::Status create_stencil_resident(Device::Impl& d, uint32_t width, uint32_t height,
                                     std::unique_ptr<Resident>& out) {
   constexpr VkFormat kCandidates[] = {VK_FORMAT_S8_UINT, VK_FORMAT_D24_UNORM_S8_UINT,
                                       VK_FORMAT_D32_SFLOAT_S8_UINT};
@@ -143,23 +142,23 @@ std::string create_stencil_resident(Device::Impl& d, uint32_t width, uint32_t he
     }
   }
   if (chosen == VK_FORMAT_UNDEFINED)
-    return "the Vulkan device has no stencil format it can render to and copy";
+    return draw_failure("the Vulkan device has no stencil format it can render to and copy");
   auto r = std::make_unique<Resident>();
   r->width = width;
   r->height = height;
   r->stencil = true;
   const VkImageUsageFlags usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
                                   VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-  if (std::string err = create_image(d, r->objects, width, height, chosen, usage, r->stored.image);
-      !err.empty())
+  if (ir::Status err = create_image(d, r->objects, width, height, chosen, usage, r->stored.image);
+      !err)
     return err;
   out = std::move(r);
-  return {};
+  return ir::ok_status();
 }
 
-std::string ensure_shadow(Device::Impl& d, Resident& r) {
-  if (r.stencil) return "a stencil buffer cannot be sampled";
-  if (r.samples_stored() || r.shadow) return {};
+ir::Status ensure_shadow(Device::Impl& d, Resident& r) {
+  if (r.stencil) return draw_failure("a stencil buffer cannot be sampled");
+  if (r.samples_stored() || r.shadow) return ir::ok_status();
   const bool unorm8 = r.format == img::Format::RGBA8;
   VkFormatProperties src, dst;
   vkGetPhysicalDeviceFormatProperties(d.physical, vk_format(r.format), &src);
@@ -167,26 +166,28 @@ std::string ensure_shadow(Device::Impl& d, Resident& r) {
   const bool can = unorm8 || ((src.optimalTilingFeatures & VK_FORMAT_FEATURE_BLIT_SRC_BIT) &&
                               (dst.optimalTilingFeatures & VK_FORMAT_FEATURE_BLIT_DST_BIT));
   if (!can)
-    return fmt::format("the Vulkan device cannot convert {} textures to RGBA32F for sampling",
-                       img::format_name(r.format));
+    return draw_failure(
+        fmt::format("the Vulkan device cannot convert {} textures to RGBA32F for sampling",
+                    img::format_name(r.format)));
   std::unique_ptr<Resident> shadow;
   std::unique_ptr<PreparedDraw> draw;
-  std::string err = create_resident(d, r.width, r.height, img::Format::RGBA32F, shadow);
-  if (err.empty() && unorm8 && d.unorm8_in_place) {
+  ir::Status err = create_resident(d, r.width, r.height, img::Format::RGBA32F, shadow);
+  if (err && unorm8 && d.unorm8_in_place) {
     draw = std::make_unique<PreparedDraw>();
     DrawTextures textures;
     textures.stages[0] = &r;
     textures.target = shadow.get();
     err = prepare_draw(d, texel_copy_pass(r.width, r.height), textures, *draw);
-    if (err.empty() && !draw->fetched[0]) err = "the RGBA8 shadow's draw does not read in place";
-  } else if (err.empty() && unorm8) {
+    if (err && !draw->fetched[0])
+      err = draw_failure("the RGBA8 shadow's draw does not read in place");
+  } else if (err && unorm8) {
     err = create_unorm8_scratch(d, r.objects, r.width, r.height, r.unorm8);
   }
-  if (!err.empty()) return err;
+  if (!err) return err;
   // Only once complete: a failed call leaves no half-made shadow.
   r.shadow = std::move(shadow);
   r.to_shadow = std::move(draw);
-  return {};
+  return ir::ok_status();
 }
 
 void transition(VkCommandBuffer cb, TrackedImage& t, VkImageLayout to) {

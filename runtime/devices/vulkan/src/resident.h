@@ -70,20 +70,20 @@ struct Resident {
 // A texture of `width` × `height` in `format` (sizes already checked by the caller). Its
 // contents are zero until written: a texture whose stored layout is still UNDEFINED is
 // cleared by the first command that uses it.
-std::string create_resident(Device::Impl& d, uint32_t width, uint32_t height, img::Format format,
+ir::Status create_resident(Device::Impl& d, uint32_t width, uint32_t height, img::Format format,
                             std::unique_ptr<Resident>& out);
 // A cube or volume texture to sample (RGBA32F, `layers` faces or slices of `width` ×
 // `height`), filled by record_upload from the layers one after the other; never a target.
-std::string create_layered_resident(Device::Impl& d, uint32_t width, uint32_t height,
+ir::Status create_layered_resident(Device::Impl& d, uint32_t width, uint32_t height,
                                     pass::TextureShape shape, uint32_t layers,
                                     std::unique_ptr<Resident>& out);
 // An 8-bit stencil buffer of `width` × `height`, all zero: VK_FORMAT_S8_UINT where the
 // device can render to it and copy it, else the first of D24_UNORM_S8_UINT and
 // D32_SFLOAT_S8_UINT that it can (the depth aspect is never tested or written).
-std::string create_stencil_resident(Device::Impl& d, uint32_t width, uint32_t height,
-                                    std::unique_ptr<Resident>& out);
+ir::Status create_stencil_resident(Device::Impl& d, uint32_t width, uint32_t height,
+                                   std::unique_ptr<Resident>& out);
 // Creates the float shadow if the texture needs one and has none (before recording).
-std::string ensure_shadow(Device::Impl& d, Resident& r);
+ir::Status ensure_shadow(Device::Impl& d, Resident& r);
 
 // Layout change with the stages and accesses both layouts imply. Read-only to the same
 // read-only layout records nothing (no hazard); every other pair records a barrier, so a

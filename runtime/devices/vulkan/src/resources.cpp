@@ -44,20 +44,20 @@ std::string format_words(VkFormat f) {
   }
 }
 
-// Empty on success, else why, in words (`what` names the object the memory is for).
-std::string allocate(Device::Impl& d, Cleanup& cleanup, const VkMemoryRequirements& req,
-                     VkMemoryPropertyFlags flags, VkDeviceMemory& out, const std::string& what) {
+// The memory, or why not in words (`what` names the object the memory is for).
+ir::Status allocate(Device::Impl& d, Cleanup& cleanup, const VkMemoryRequirements& req,
+                    VkMemoryPropertyFlags flags, VkDeviceMemory& out, const std::string& what) {
   uint32_t type = find_memory(d, req.memoryTypeBits, flags);
   if (type == UINT32_MAX) type = find_memory(d, req.memoryTypeBits, 0);
-  if (type == UINT32_MAX) return "no suitable Vulkan memory type";
+  if (type == UINT32_MAX) return draw_failure("no suitable Vulkan memory type");
   VkMemoryAllocateInfo ai{};
   ai.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
   ai.allocationSize = req.size;
   ai.memoryTypeIndex = type;
   VkResult r = vkAllocateMemory(d.device, &ai, nullptr, &out);
-  if (r != VK_SUCCESS) return allocation_failed(r, what, req.size);
+  if (r != VK_SUCCESS) return draw_failure(allocation_failed(r, what, req.size));
   cleanup.destroy_later(d.device, out, vkFreeMemory);
-  return {};
+  return ir::ok_status();
 }
 
 } // namespace
@@ -74,8 +74,8 @@ uint64_t image_bytes(uint32_t width, uint32_t height, VkFormat format) {
   return uint64_t{width} * height * bytes_per_texel(format);
 }
 
-std::string create_buffer(Device::Impl& d, Cleanup& cleanup, VkDeviceSize size,
-                          VkBufferUsageFlags usage, Buffer& out) {
+ir::Status create_buffer(Device::Impl& d, Cleanup& cleanup, VkDeviceSize size,
+                         VkBufferUsageFlags usage, Buffer& out) {
   VkBufferCreateInfo bi{};
   bi.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
   bi.size = size == 0 ? 16 : size;
@@ -83,35 +83,35 @@ std::string create_buffer(Device::Impl& d, Cleanup& cleanup, VkDeviceSize size,
   bi.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
   const std::string what = "a host buffer";
   VkResult r = vkCreateBuffer(d.device, &bi, nullptr, &out.buffer);
-  if (r != VK_SUCCESS) return allocation_failed(r, what, bi.size);
+  if (r != VK_SUCCESS) return draw_failure(allocation_failed(r, what, bi.size));
   VkDevice dev = d.device;
   VkBuffer buf = out.buffer;
   VkMemoryRequirements req;
   vkGetBufferMemoryRequirements(dev, buf, &req);
   // Memory is freed after the buffer is destroyed (cleanup runs in reverse order).
-  std::string err = allocate(
+  ir::Status err = allocate(
       d, cleanup, req, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
       out.memory, what);
-  if (!err.empty()) {
+  if (!err) {
     vkDestroyBuffer(dev, buf, nullptr);
     return err;
   }
   cleanup.destroy_later(dev, buf, vkDestroyBuffer);
   if ((r = vkBindBufferMemory(dev, buf, out.memory, 0)) != VK_SUCCESS)
-    return vk_error("vkBindBufferMemory", r);
+    return draw_failure(vk_error("vkBindBufferMemory", r));
   if ((r = vkMapMemory(dev, out.memory, 0, VK_WHOLE_SIZE, 0, &out.mapped)) != VK_SUCCESS)
-    return vk_error("vkMapMemory", r);
+    return draw_failure(vk_error("vkMapMemory", r));
   out.size = bi.size;
-  return {};
+  return ir::ok_status();
 }
 
-std::string create_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint32_t height,
+ir::Status create_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint32_t height,
                          VkFormat format, VkImageUsageFlags usage, Image2D& out) {
   return create_layered_image(d, cleanup, width, height, pass::TextureShape::Tex2D, 1, format,
                               usage, out);
 }
 
-std::string create_layered_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint32_t height,
+ir::Status create_layered_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint32_t height,
                                  pass::TextureShape shape, uint32_t layers, VkFormat format,
                                  VkImageUsageFlags usage, Image2D& out) {
   using pass::TextureShape;
@@ -132,20 +132,20 @@ std::string create_layered_image(Device::Impl& d, Cleanup& cleanup, uint32_t wid
   const std::string what = image_words(width, height, format);
   VkResult r = vkCreateImage(d.device, &ii, nullptr, &out.image);
   if (r != VK_SUCCESS)
-    return allocation_failed(r, what, image_bytes(width, height, format) * (cube ? 6 : layers));
+    return draw_failure(
+        allocation_failed(r, what, image_bytes(width, height, format) * (cube ? 6 : layers)));
   VkDevice dev = d.device;
   VkImage img = out.image;
   VkMemoryRequirements req;
   vkGetImageMemoryRequirements(dev, img, &req);
-  std::string err =
-      allocate(d, cleanup, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, out.memory, what);
-  if (!err.empty()) {
+  ir::Status err = allocate(d, cleanup, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, out.memory, what);
+  if (!err) {
     vkDestroyImage(dev, img, nullptr);
     return err;
   }
   cleanup.destroy_later(dev, img, vkDestroyImage);
   if ((r = vkBindImageMemory(dev, img, out.memory, 0)) != VK_SUCCESS)
-    return vk_error("vkBindImageMemory", r);
+    return draw_failure(vk_error("vkBindImageMemory", r));
   VkImageViewCreateInfo vi{};
   vi.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
   vi.image = img;
@@ -156,7 +156,7 @@ std::string create_layered_image(Device::Impl& d, Cleanup& cleanup, uint32_t wid
   const VkImageAspectFlags aspect = format_aspects(format);
   vi.subresourceRange = {aspect, 0, 1, 0, cube ? 6u : 1u};
   if ((r = vkCreateImageView(dev, &vi, nullptr, &out.view)) != VK_SUCCESS)
-    return vk_error("vkCreateImageView", r);
+    return draw_failure(vk_error("vkCreateImageView", r));
   cleanup.destroy_later(dev, out.view, vkDestroyImageView);
   out.format = format;
   out.width = width;
@@ -164,7 +164,7 @@ std::string create_layered_image(Device::Impl& d, Cleanup& cleanup, uint32_t wid
   out.shape = shape;
   out.layers = cube ? 6 : volume ? layers : 1;
   out.aspect = aspect;
-  return {};
+  return ir::ok_status();
 }
 
 VkImageAspectFlags format_aspects(VkFormat format) {
@@ -180,7 +180,7 @@ VkImageAspectFlags format_aspects(VkFormat format) {
   }
 }
 
-std::string begin_commands(Device::Impl& d, VkCommandBuffer& cb) {
+ir::Status begin_commands(Device::Impl& d, VkCommandBuffer& cb) {
   VkCommandBufferAllocateInfo ai{};
   ai.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
   ai.commandPool = d.pool;
@@ -190,7 +190,7 @@ std::string begin_commands(Device::Impl& d, VkCommandBuffer& cb) {
   VkResult r = vkAllocateCommandBuffers(d.device, &ai, &cb);
   if (r != VK_SUCCESS) {
     cb = VK_NULL_HANDLE;
-    return vk_error("vkAllocateCommandBuffers", r);
+    return draw_failure(vk_error("vkAllocateCommandBuffers", r));
   }
   VkCommandBufferBeginInfo bi{};
   bi.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
@@ -198,38 +198,38 @@ std::string begin_commands(Device::Impl& d, VkCommandBuffer& cb) {
   if ((r = vkBeginCommandBuffer(cb, &bi)) != VK_SUCCESS) {
     vkFreeCommandBuffers(d.device, d.pool, 1, &cb);
     cb = VK_NULL_HANDLE;
-    return vk_error("vkBeginCommandBuffer", r);
+    return draw_failure(vk_error("vkBeginCommandBuffer", r));
   }
-  return {};
+  return ir::ok_status();
 }
 
-std::string submit_commands(Device::Impl& d, VkCommandBuffer& cb) {
+ir::Status submit_commands(Device::Impl& d, VkCommandBuffer& cb) {
   Cleanup cleanup;
   VkCommandBuffer owned = cb;
   cb = VK_NULL_HANDLE;
   cleanup.add([&] { vkFreeCommandBuffers(d.device, d.pool, 1, &owned); });
   VkResult r = vkEndCommandBuffer(owned);
-  if (r != VK_SUCCESS) return vk_error("vkEndCommandBuffer", r);
+  if (r != VK_SUCCESS) return draw_failure(vk_error("vkEndCommandBuffer", r));
   VkFenceCreateInfo fi{};
   fi.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
   VkFence fence = VK_NULL_HANDLE;
   if ((r = vkCreateFence(d.device, &fi, nullptr, &fence)) != VK_SUCCESS)
-    return vk_error("vkCreateFence", r);
+    return draw_failure(vk_error("vkCreateFence", r));
   cleanup.add([&] { vkDestroyFence(d.device, fence, nullptr); });
   VkSubmitInfo si{};
   si.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
   si.commandBufferCount = 1;
   si.pCommandBuffers = &owned;
   if ((r = vkQueueSubmit(d.queue, 1, &si, fence)) != VK_SUCCESS)
-    return vk_error("vkQueueSubmit", r);
+    return draw_failure(vk_error("vkQueueSubmit", r));
   if ((r = vkWaitForFences(d.device, 1, &fence, VK_TRUE, UINT64_MAX)) != VK_SUCCESS)
-    return vk_error("vkWaitForFences", r);
-  return {};
+    return draw_failure(vk_error("vkWaitForFences", r));
+  return ir::ok_status();
 }
 
-std::string submit_and_wait(Device::Impl& d, const std::function<void(VkCommandBuffer)>& record) {
+ir::Status submit_and_wait(Device::Impl& d, const std::function<void(VkCommandBuffer)>& record) {
   VkCommandBuffer cb = VK_NULL_HANDLE;
-  if (std::string err = begin_commands(d, cb); !err.empty()) return err;
+  if (ir::Status err = begin_commands(d, cb); !err) return err;
   record(cb);
   return submit_commands(d, cb);
 }

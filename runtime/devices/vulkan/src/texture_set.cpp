@@ -32,8 +32,8 @@ struct TextureSet::State {
     auto it = textures.find(static_cast<uint32_t>(id));
     return it == textures.end() ? nullptr : it->second.get();
   }
-  std::string flush() {
-    return pending == VK_NULL_HANDLE ? std::string() : submit_commands(d, pending);
+  ir::Status flush() {
+    return pending == VK_NULL_HANDLE ? ir::ok_status() : submit_commands(d, pending);
   }
 };
 
@@ -47,12 +47,6 @@ double ms_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
 }
 
-// The status of an internal step that reports an error string (empty: success).
-ir::Status status_of(std::string error) {
-  if (error.empty()) return ir::ok_status();
-  return draw_failure(std::move(error));
-}
-
 } // namespace
 
 TextureSet::TextureSet(Device& device)
@@ -64,8 +58,8 @@ ir::Result<TextureId> TextureSet::create(uint32_t width, uint32_t height, img::F
     return draw_failure(fmt::format("texture size {}x{}: each side must be 1..{}", width, height,
                                     img::kMaxDimension));
   std::unique_ptr<Resident> r;
-  if (std::string err = create_resident(*device_.impl_, width, height, format, r); !err.empty())
-    return draw_failure(std::move(err));
+  if (ir::Status err = create_resident(*device_.impl_, width, height, format, r); !err)
+    return std::move(err).failure();
   const uint32_t id = state_->next_id++;
   state_->textures.emplace(id, std::move(r));
   return static_cast<TextureId>(id);
@@ -76,8 +70,8 @@ ir::Result<TextureId> TextureSet::create_stencil(uint32_t width, uint32_t height
     return draw_failure(fmt::format("stencil buffer size {}x{}: each side must be 1..{}", width,
                                     height, img::kMaxDimension));
   std::unique_ptr<Resident> r;
-  if (std::string err = create_stencil_resident(*device_.impl_, width, height, r); !err.empty())
-    return draw_failure(std::move(err));
+  if (ir::Status err = create_stencil_resident(*device_.impl_, width, height, r); !err)
+    return std::move(err).failure();
   const uint32_t id = state_->next_id++;
   state_->textures.emplace(id, std::move(r));
   return static_cast<TextureId>(id);
@@ -95,14 +89,14 @@ ir::Status TextureSet::upload(TextureId id, const img::Image& image) {
     return draw_failure(fmt::format("upload of a {}x{} image into the {}x{} texture {}",
                                     image.width, image.height, r->width, r->height,
                                     static_cast<uint32_t>(id)));
-  if (std::string err = state_->flush(); !err.empty()) return draw_failure(std::move(err));
+  if (ir::Status err = state_->flush(); !err) return std::move(err).failure();
   Device::Impl& d = *device_.impl_;
   Cleanup cleanup;
   Buffer staging;
   const VkDeviceSize bytes = VkDeviceSize{r->width} * r->height * bytes_per_pixel(r->format);
-  if (std::string err = create_buffer(d, cleanup, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, staging);
-      !err.empty())
-    return draw_failure(std::move(err));
+  if (ir::Status err = create_buffer(d, cleanup, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, staging);
+      !err)
+    return std::move(err).failure();
   if (image.format == r->format) {
     pack_pixels(image, staging.mapped);
   } else {
@@ -112,33 +106,33 @@ ir::Status TextureSet::upload(TextureId id, const img::Image& image) {
   }
   const TrackedImage before = r->stored;
   const bool shadow_current = r->shadow_current;
-  std::string err =
+  ir::Status err =
       submit_and_wait(d, [&](VkCommandBuffer cb) { record_upload(cb, *r, staging.buffer); });
-  if (!err.empty()) {
+  if (!err) {
     r->stored = before;
     r->shadow_current = shadow_current;
   }
-  return status_of(std::move(err));
+  return err;
 }
 
 ir::Result<img::Image> TextureSet::read(TextureId id) {
   Resident* r = state_->find(id);
   if (!r) return draw_failure(unknown(id));
-  if (std::string err = state_->flush(); !err.empty()) return draw_failure(std::move(err));
+  if (ir::Status err = state_->flush(); !err) return std::move(err).failure();
   Device::Impl& d = *device_.impl_;
   Cleanup cleanup;
   Buffer staging;
   const VkDeviceSize bytes =
       VkDeviceSize{r->width} * r->height * (r->stencil ? 1 : bytes_per_pixel(r->format));
-  if (std::string err = create_buffer(d, cleanup, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, staging);
-      !err.empty())
-    return draw_failure(std::move(err));
+  if (ir::Status err = create_buffer(d, cleanup, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, staging);
+      !err)
+    return std::move(err).failure();
   const TrackedImage before = r->stored;
-  std::string err =
+  ir::Status err =
       submit_and_wait(d, [&](VkCommandBuffer cb) { record_readback(cb, *r, staging.buffer); });
-  if (!err.empty()) {
+  if (!err) {
     r->stored = before;
-    return draw_failure(std::move(err));
+    return std::move(err).failure();
   }
   if (r->stencil) { // as the CPU device reads its stencil buffer: the value in red
     img::Image image(r->width, r->height, img::Format::RGBA32F);
@@ -154,27 +148,27 @@ ir::Result<img::Image> TextureSet::read(TextureId id) {
 namespace {
 
 // The textures of a draw by id; an error names the unknown one.
-std::string resolve(TextureSet::State& s, const StageTextures& stages, const RenderTargets& targets,
-                    DrawTextures& out) {
+ir::Status resolve(TextureSet::State& s, const StageTextures& stages, const RenderTargets& targets,
+                   DrawTextures& out) {
   out.reuse = s.reuse.get();
   out.target = s.find(targets.color[0]);
-  if (!out.target) return "render target: " + unknown(targets.color[0]);
+  if (!out.target) return draw_failure("render target: " + unknown(targets.color[0]));
   for (uint32_t i = 1; i < targets.color.size(); ++i) {
     if (targets.color[i] == TextureId::None) continue;
     out.more_targets[i - 1] = s.find(targets.color[i]);
     if (!out.more_targets[i - 1])
-      return fmt::format("render target {}: {}", i, unknown(targets.color[i]));
+      return draw_failure(fmt::format("render target {}: {}", i, unknown(targets.color[i])));
   }
   if (targets.stencil != TextureId::None) {
     out.stencil = s.find(targets.stencil);
-    if (!out.stencil) return "stencil buffer: " + unknown(targets.stencil);
+    if (!out.stencil) return draw_failure("stencil buffer: " + unknown(targets.stencil));
   }
   for (uint32_t k = 0; k < pass::kMaxSamplers; ++k) {
     if (stages[k] == TextureId::None) continue;
     out.stages[k] = s.find(stages[k]);
-    if (!out.stages[k]) return fmt::format("s{}: {}", k, unknown(stages[k]));
+    if (!out.stages[k]) return draw_failure(fmt::format("s{}: {}", k, unknown(stages[k])));
   }
-  return {};
+  return ir::ok_status();
 }
 
 // The cached draw of `pass`, made now if there is none (a draw_failure when it cannot be
@@ -185,8 +179,7 @@ ir::Result<PreparedDraw*> cached_draw(TextureSet::State& s, const pass::Pass& pa
   if (!key) return static_cast<PreparedDraw*>(nullptr);
   if (PreparedDraw* p = s.draws.find(*key)) return p;
   auto entry = std::make_unique<CachedDraw>();
-  if (std::string e = prepare_draw(s.d, pass, t, entry->draw); !e.empty())
-    return draw_failure(std::move(e));
+  if (ir::Status e = prepare_draw(s.d, pass, t, entry->draw); !e) return std::move(e).failure();
   return &s.draws.insert(*key, pass, std::move(entry));
 }
 
@@ -202,8 +195,7 @@ ir::Status TextureSet::prepare(const pass::Pass& pass, const StageTextures& stag
 ir::Status TextureSet::prepare(const pass::Pass& pass, const StageTextures& stages,
                                const RenderTargets& targets) {
   DrawTextures textures;
-  if (std::string e = resolve(*state_, stages, targets, textures); !e.empty())
-    return draw_failure(std::move(e));
+  if (ir::Status e = resolve(*state_, stages, targets, textures); !e) return std::move(e).failure();
   ir::Result<PreparedDraw*> cached = cached_draw(*state_, pass, textures);
   if (!cached) return std::move(cached).failure();
   return ir::ok_status();
@@ -219,14 +211,13 @@ ir::Result<pass::DrawReport> TextureSet::draw(const pass::Pass& pass, const Stag
 ir::Result<pass::DrawReport> TextureSet::draw(const pass::Pass& pass, const StageTextures& stages,
                                               const RenderTargets& targets) {
   DrawTextures textures;
-  if (std::string e = resolve(*state_, stages, targets, textures); !e.empty())
-    return draw_failure(std::move(e));
+  if (ir::Status e = resolve(*state_, stages, targets, textures); !e) return std::move(e).failure();
   const auto t0 = std::chrono::steady_clock::now();
   ir::Result<PreparedDraw*> cached = cached_draw(*state_, pass, textures);
   if (!cached) return std::move(cached).failure();
   PreparedDraw* p = *cached;
   if (!p) { // not cached: made, drawn and destroyed now
-    if (std::string e = state_->flush(); !e.empty()) return draw_failure(std::move(e));
+    if (ir::Status e = state_->flush(); !e) return std::move(e).failure();
     return draw_pass(*device_.impl_, pass, textures);
   }
   pass::DrawReport res;
@@ -235,11 +226,10 @@ ir::Result<pass::DrawReport> TextureSet::draw(const pass::Pass& pass, const Stag
   Device::Impl& d = *device_.impl_;
   if (state_->batching) {
     if (state_->pending == VK_NULL_HANDLE)
-      if (std::string e = begin_commands(d, state_->pending); !e.empty())
-        return draw_failure(std::move(e));
+      if (ir::Status e = begin_commands(d, state_->pending); !e) return std::move(e).failure();
     record_draw(state_->pending, d, *p);
   } else {
-    if (std::string e = submit_draw(d, *p); !e.empty()) return draw_failure(std::move(e));
+    if (ir::Status e = submit_draw(d, *p); !e) return std::move(e).failure();
   }
   res.draw_ms = ms_since(t1);
   return res;
@@ -250,9 +240,8 @@ ir::Result<ShaderTrace> TextureSet::draw_traced(const pass::Pass& pass, const St
   RenderTargets targets;
   targets.color[0] = target;
   DrawTextures textures;
-  if (std::string e = resolve(*state_, stages, targets, textures); !e.empty())
-    return draw_failure(std::move(e));
-  if (std::string e = state_->flush(); !e.empty()) return draw_failure(std::move(e));
+  if (ir::Status e = resolve(*state_, stages, targets, textures); !e) return std::move(e).failure();
+  if (ir::Status e = state_->flush(); !e) return std::move(e).failure();
   const codegen::TracePixel pixel{x, y, codegen::kTraceBinding};
   ShaderTrace out;
   textures.trace = &pixel;
@@ -263,9 +252,9 @@ ir::Result<ShaderTrace> TextureSet::draw_traced(const pass::Pass& pass, const St
 }
 
 ir::Status TextureSet::set_batching(bool on) {
-  std::string err = state_->flush();
+  ir::Status err = state_->flush();
   state_->batching = on;
-  return status_of(std::move(err));
+  return err;
 }
 
 void TextureSet::set_reuse_programs(bool on) {
@@ -280,7 +269,7 @@ size_t TextureSet::reused_pipelines() const {
 }
 
 ir::Status TextureSet::flush() {
-  return status_of(state_->flush());
+  return state_->flush();
 }
 
 void TextureSet::destroy(TextureId id) {

@@ -129,8 +129,8 @@ std::vector<uint32_t> unorm8_to_float_spirv() {
   return b.finish();
 }
 
-std::string ensure_unorm8_converter(Device::Impl& d) {
-  if (d.unorm8) return {};
+ir::Status ensure_unorm8_converter(Device::Impl& d) {
+  if (d.unorm8) return ir::ok_status();
   auto c = std::make_unique<Unorm8Converter>();
   VkDevice dev = d.device;
   VkResult r;
@@ -142,7 +142,7 @@ std::string ensure_unorm8_converter(Device::Impl& d) {
   dli.bindingCount = 2;
   dli.pBindings = bindings;
   if ((r = vkCreateDescriptorSetLayout(dev, &dli, nullptr, &c->set_layout)) != VK_SUCCESS)
-    return vk_error("vkCreateDescriptorSetLayout", r);
+    return draw_failure(vk_error("vkCreateDescriptorSetLayout", r));
   VkDescriptorSetLayout dsl = c->set_layout;
   c->objects.add([dev, dsl] { vkDestroyDescriptorSetLayout(dev, dsl, nullptr); });
   const VkPushConstantRange size_range{VK_SHADER_STAGE_COMPUTE_BIT, 0, 8};
@@ -153,7 +153,7 @@ std::string ensure_unorm8_converter(Device::Impl& d) {
   pli.pushConstantRangeCount = 1;
   pli.pPushConstantRanges = &size_range;
   if ((r = vkCreatePipelineLayout(dev, &pli, nullptr, &c->layout)) != VK_SUCCESS)
-    return vk_error("vkCreatePipelineLayout", r);
+    return draw_failure(vk_error("vkCreatePipelineLayout", r));
   VkPipelineLayout layout = c->layout;
   c->objects.add([dev, layout] { vkDestroyPipelineLayout(dev, layout, nullptr); });
 
@@ -164,7 +164,7 @@ std::string ensure_unorm8_converter(Device::Impl& d) {
   smi.pCode = words.data();
   VkShaderModule module = VK_NULL_HANDLE;
   if ((r = vkCreateShaderModule(dev, &smi, nullptr, &module)) != VK_SUCCESS)
-    return vk_error("vkCreateShaderModule", r);
+    return draw_failure(vk_error("vkCreateShaderModule", r));
   VkComputePipelineCreateInfo cpi{};
   cpi.sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO;
   cpi.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
@@ -174,25 +174,25 @@ std::string ensure_unorm8_converter(Device::Impl& d) {
   cpi.layout = layout;
   r = vkCreateComputePipelines(dev, VK_NULL_HANDLE, 1, &cpi, nullptr, &c->pipeline);
   vkDestroyShaderModule(dev, module, nullptr); // the pipeline keeps what it needs
-  if (r != VK_SUCCESS) return vk_error("vkCreateComputePipelines", r);
+  if (r != VK_SUCCESS) return draw_failure(vk_error("vkCreateComputePipelines", r));
   VkPipeline pipeline = c->pipeline;
   c->objects.add([dev, pipeline] { vkDestroyPipeline(dev, pipeline, nullptr); });
   d.unorm8 = std::move(c);
-  return {};
+  return ir::ok_status();
 }
 
-std::string create_unorm8_scratch(Device::Impl& d, Cleanup& cleanup, uint32_t width,
-                                  uint32_t height, Unorm8Scratch& out) {
-  if (std::string err = ensure_unorm8_converter(d); !err.empty()) return err;
+ir::Status create_unorm8_scratch(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint32_t height,
+                                 Unorm8Scratch& out) {
+  if (ir::Status err = ensure_unorm8_converter(d); !err) return err;
   const VkDeviceSize texels = VkDeviceSize{width} * height;
-  std::string err = create_buffer(
+  ir::Status err = create_buffer(
       d, cleanup, texels * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
       out.bytes);
-  if (err.empty())
+  if (err)
     err = create_buffer(d, cleanup, texels * 16,
                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                         out.floats);
-  if (!err.empty()) return err;
+  if (!err) return err;
   VkDevice dev = d.device;
   const VkDescriptorPoolSize sizes[1] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2}};
   VkDescriptorPoolCreateInfo dpi{};
@@ -202,7 +202,7 @@ std::string create_unorm8_scratch(Device::Impl& d, Cleanup& cleanup, uint32_t wi
   dpi.pPoolSizes = sizes;
   VkDescriptorPool pool = VK_NULL_HANDLE;
   VkResult r = vkCreateDescriptorPool(dev, &dpi, nullptr, &pool);
-  if (r != VK_SUCCESS) return vk_error("vkCreateDescriptorPool", r);
+  if (r != VK_SUCCESS) return draw_failure(vk_error("vkCreateDescriptorPool", r));
   cleanup.destroy_later(dev, pool, vkDestroyDescriptorPool);
   VkDescriptorSetAllocateInfo dsa{};
   dsa.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
@@ -210,7 +210,7 @@ std::string create_unorm8_scratch(Device::Impl& d, Cleanup& cleanup, uint32_t wi
   dsa.descriptorSetCount = 1;
   dsa.pSetLayouts = &d.unorm8->set_layout;
   if ((r = vkAllocateDescriptorSets(dev, &dsa, &out.set)) != VK_SUCCESS)
-    return vk_error("vkAllocateDescriptorSets", r);
+    return draw_failure(vk_error("vkAllocateDescriptorSets", r));
   const VkDescriptorBufferInfo infos[2] = {{out.bytes.buffer, 0, VK_WHOLE_SIZE},
                                            {out.floats.buffer, 0, VK_WHOLE_SIZE}};
   VkWriteDescriptorSet writes[2]{};
@@ -223,7 +223,7 @@ std::string create_unorm8_scratch(Device::Impl& d, Cleanup& cleanup, uint32_t wi
     writes[k].pBufferInfo = &infos[k];
   }
   vkUpdateDescriptorSets(dev, 2, writes, 0, nullptr);
-  return {};
+  return ir::ok_status();
 }
 
 void record_unorm8_to_float(VkCommandBuffer cb, const Device::Impl& d, const Unorm8Scratch& s,

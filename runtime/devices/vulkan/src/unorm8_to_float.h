@@ -43,10 +43,10 @@ struct Unorm8Scratch {
 std::vector<uint32_t> unorm8_to_float_spirv();
 
 // Creates d.unorm8 if it does not exist yet.
-std::string ensure_unorm8_converter(Device::Impl& d);
+ir::Status ensure_unorm8_converter(Device::Impl& d);
 // Scratch for a `width` × `height` texture; objects go to `cleanup` (the texture's).
-std::string create_unorm8_scratch(Device::Impl& d, Cleanup& cleanup, uint32_t width,
-                                  uint32_t height, Unorm8Scratch& out);
+ir::Status create_unorm8_scratch(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint32_t height,
+                                 Unorm8Scratch& out);
 // Records: stored (already TRANSFER_SRC_OPTIMAL) → bytes → dispatch → floats → shadow
 // (already TRANSFER_DST_OPTIMAL). The caller makes the shadow readable afterwards.
 void record_unorm8_to_float(VkCommandBuffer cb, const Device::Impl& d, const Unorm8Scratch& s,

@@ -17,6 +17,12 @@
 
 namespace tierlift::vulkan {
 
+// Every failure inside the draw layer (a draw, a TextureSet call, the resources they create):
+// `message` about "vulkan", rule kDrawRule (device.h). Device creation has its own rules.
+inline ir::Failure draw_failure(std::string message) {
+  return ir::fail("vulkan", std::string(kDrawRule), std::move(message));
+}
+
 // A VkResult in words: "out of device memory" (never the bare number).
 std::string vk_result_words(VkResult r);
 // "out of host memory in vkCreateImage"
@@ -94,9 +100,9 @@ struct Buffer {
   VkDeviceSize size = 0;
   void* mapped = nullptr;
 };
-// Empty string on success; the buffer is registered with `cleanup`.
-std::string create_buffer(Device::Impl& d, Cleanup& cleanup, VkDeviceSize size,
-                          VkBufferUsageFlags usage, Buffer& out);
+// The buffer is registered with `cleanup`.
+ir::Status create_buffer(Device::Impl& d, Cleanup& cleanup, VkDeviceSize size,
+                         VkBufferUsageFlags usage, Buffer& out);
 
 struct Image2D {
   VkImage image = VK_NULL_HANDLE;
@@ -114,20 +120,20 @@ struct Image2D {
 };
 // The aspects of `format`: COLOR, DEPTH, STENCIL or DEPTH|STENCIL.
 VkImageAspectFlags format_aspects(VkFormat format);
-std::string create_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint32_t height,
+ir::Status create_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint32_t height,
                          VkFormat format, VkImageUsageFlags usage, Image2D& out);
 // The same for a cube (`layers` = 6) or volume (`layers` slices) texture.
-std::string create_layered_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint32_t height,
+ir::Status create_layered_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint32_t height,
                                  pass::TextureShape shape, uint32_t layers, VkFormat format,
                                  VkImageUsageFlags usage, Image2D& out);
 
 // Records commands into a fresh primary command buffer, submits it and waits for it.
-std::string submit_and_wait(Device::Impl& d, const std::function<void(VkCommandBuffer)>& record);
+ir::Status submit_and_wait(Device::Impl& d, const std::function<void(VkCommandBuffer)>& record);
 // The same in two halves, for a command buffer recorded over several calls (TextureSet's
 // batch: one submit for a whole frame). submit_commands ends, submits, waits for and frees
 // `cb`, which is VK_NULL_HANDLE afterwards (also on failure).
-std::string begin_commands(Device::Impl& d, VkCommandBuffer& cb);
-std::string submit_commands(Device::Impl& d, VkCommandBuffer& cb);
+ir::Status begin_commands(Device::Impl& d, VkCommandBuffer& cb);
+ir::Status submit_commands(Device::Impl& d, VkCommandBuffer& cb);
 
 // Layout transition of a whole colour image (one level, one layer).
 void image_barrier(VkCommandBuffer cb, VkImage image, VkImageLayout from, VkImageLayout to,

@@ -124,16 +124,6 @@ struct DepthStencilState {
   bool enabled() const { return depth_test || depth_write || stencil_test; }
 };
 
-// D3DTSS_COLOROP / ALPHAOP and their arguments for one fixed-function texture stage (the
-// dx7 tier: passes without a pixel program). Only the operations named here are described.
-enum class StageOp : uint8_t { Disable, SelectArg1, SelectArg2, Modulate, Add, Subtract };
-enum class StageArg : uint8_t { Current, Diffuse, Texture, TFactor };
-struct FixedStage {
-  StageOp color_op = StageOp::Disable, alpha_op = StageOp::Disable;
-  StageArg color_arg1 = StageArg::Texture, color_arg2 = StageArg::Current;
-  StageArg alpha_arg1 = StageArg::Texture, alpha_arg2 = StageArg::Current;
-};
-
 // Corners of the full-screen quad in clip space, in the order top-left, top-right,
 // bottom-left, bottom-right: (−1, 1), (1, 1), (−1, −1), (1, −1), z = 0, w = 1.
 inline constexpr std::array<Vec4, 4> kQuadCorners{Vec4{-1, 1, 0, 1}, Vec4{1, 1, 0, 1},
@@ -186,8 +176,6 @@ struct Pass {
   // Output merger beyond one colour target (D3D9 MRT: oC0..oC3 into as many targets).
   uint32_t color_targets = 1;
   DepthStencilState depth_stencil;
-  // Fixed-function texture stages, for passes without a pixel program; empty: none.
-  std::vector<FixedStage> fixed_stages;
   // A pixel stage given as SPIR-V (a GLSL pass compiled by tierlift/glsl) that a device
   // draws instead of pixel_program's translation. pixel_program is then the pass's ps_2_0
   // twin: the same computation in D3D9 assembly, whose interface the SPIR-V follows (t# at
@@ -209,7 +197,6 @@ struct DrawReport {
 struct Capabilities {
   uint32_t max_color_targets = 1;
   bool depth_stencil = false;
-  bool fixed_function = false;
   bool spirv_pixel_stage = false; // Pass::pixel_spirv
 };
 

@@ -87,7 +87,7 @@ using pass::Viewport;
 // What the CPU device draws beyond one colour target with programmable stages: up to four
 // render targets (oC0..oC3) and a stencil buffer (no depth buffer: a pass that asks for a
 // depth test or depth writes is refused).
-inline constexpr pass::Capabilities kCapabilities{4, true, false};
+inline constexpr pass::Capabilities kCapabilities{.max_color_targets = 4, .depth_stencil = true};
 
 // The rule of a failed draw.
 inline constexpr std::string_view kDrawRule = "draw";

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "tierlift/effects/run_graph.h"
+#include "tierlift/effects/graph/run_graph.h"
 #include "tierlift/image/compare.h"
 
 namespace tierlift::effects {

@@ -15,10 +15,10 @@
 #include <string_view>
 #include <vector>
 
-#include "tierlift/effects/glow.h"
-#include "tierlift/effects/glsl_blur.h"
-#include "tierlift/effects/outline.h"
-#include "tierlift/effects/radial.h"
+#include "tierlift/effects/glow/glow.h"
+#include "tierlift/effects/glow/glsl_blur.h"
+#include "tierlift/effects/glow/outline.h"
+#include "tierlift/effects/glow/radial.h"
 #include "tierlift/image/io.h"
 #include "tierlift/ir/result_diagnostics.h"
 

@@ -16,7 +16,7 @@
 #include <array>
 #include <vector>
 
-#include "tierlift/effects/glow.h"
+#include "tierlift/effects/glow/glow.h"
 
 namespace tierlift::effects {
 

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "tierlift/cpu/draw.h"
-#include "tierlift/effects/graph.h"
+#include "tierlift/effects/graph/graph.h"
 #include "tierlift/image/image.h"
 #include "tierlift/ir/result.h"
 

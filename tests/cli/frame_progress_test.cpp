@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "cli_fixture.h"
-#include "tierlift/effects/device.h"
-#include "tierlift/effects/run_graph.h"
-#include "tierlift/effects/single_pass.h"
+#include "tierlift/effects/graph/device.h"
+#include "tierlift/effects/graph/run_graph.h"
+#include "tierlift/effects/graph/single_pass.h"
 #include "tierlift/pass/setup.h"
 
 namespace tierlift::effects {

@@ -28,7 +28,7 @@
 #include <string>
 #include <vector>
 
-#include "tierlift/effects/glow.h"
+#include "tierlift/effects/glow/glow.h"
 #include "tierlift/image/image.h"
 
 namespace tierlift::effects {

@@ -13,7 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "tierlift/effects/report_sweep.h"
+#include "tierlift/effects/report/report_sweep.h"
 #include "tierlift/io/output_folder.h"
 
 namespace tierlift::effects {

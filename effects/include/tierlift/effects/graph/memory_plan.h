@@ -6,10 +6,10 @@
 // img::Image: four floats a pixel, whatever the format):
 //   * every device: the run's copy of every texture handed back at the end (run_graph's
 //     images), and with per-pass images kept (the agreement table) one image per pass;
-//   * cpu: its own copy of every texture, plus during a pass the target and each bound
-//     texture once more (a bound, not a measure: the device binds its own images by
-//     reference, and the margin is kept so that the plan never shrinks under a scene it
-//     admitted before);
+//   * cpu: its own copy of every texture; a pass draws into its target in place and binds
+//     what it samples by reference (nothing copied), so beside them only a read's copy of
+//     one texture (the largest), made before it replaces the kept one, or begin_run's copy
+//     of the inputs when that is larger;
 //   * vulkan (lavapipe: device memory is host memory): every texture in its own format,
 //     plus the float copy (16 B/px) of an RGBA16F texture that a pass samples and of an
 //     RGBA8 texture that a pass samples other than by a point read with edge clamping (such
@@ -27,7 +27,7 @@
 #include <string>
 #include <vector>
 
-#include "tierlift/effects/graph.h"
+#include "tierlift/effects/graph/graph.h"
 #include "tierlift/ir/result.h"
 
 namespace tierlift::effects {

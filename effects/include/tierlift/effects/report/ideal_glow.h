@@ -16,7 +16,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "tierlift/effects/blur_profile.h"
+#include "tierlift/effects/glow/blur_profile.h"
 #include "tierlift/image/image.h"
 
 namespace tierlift::effects {

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "tierlift/effects/device.h"
+#include "tierlift/effects/graph/device.h"
 #include "tierlift/ir/result.h"
 
 namespace tierlift::effects {

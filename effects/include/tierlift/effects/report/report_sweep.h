@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "tierlift/effects/glow.h"
-#include "tierlift/effects/ideal_glow.h"
-#include "tierlift/effects/run_graph.h"
-#include "tierlift/effects/scene.h"
+#include "tierlift/effects/glow/glow.h"
+#include "tierlift/effects/graph/run_graph.h"
+#include "tierlift/effects/report/ideal_glow.h"
+#include "tierlift/effects/scenes/scene.h"
 
 namespace tierlift::vulkan {
 class Device;

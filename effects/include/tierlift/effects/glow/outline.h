@@ -17,7 +17,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "tierlift/effects/glow.h"
+#include "tierlift/effects/glow/glow.h"
 
 namespace tierlift::effects {
 

@@ -11,7 +11,7 @@
 
 #include "cli_fixture.h"
 #include "skip_policy.h"
-#include "tierlift/effects/glsl_blur.h"
+#include "tierlift/effects/glow/glsl_blur.h"
 #include "tierlift/image/io.h"
 
 namespace {

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "tierlift/effects/device.h"
-#include "tierlift/effects/graph.h"
+#include "tierlift/effects/graph/device.h"
+#include "tierlift/effects/graph/graph.h"
 #include "tierlift/ir/result.h"
 
 namespace tierlift::effects {

@@ -19,8 +19,8 @@
 #include <string_view>
 #include <vector>
 
-#include "tierlift/effects/backends.h"
-#include "tierlift/effects/graph.h"
+#include "tierlift/effects/graph/backends.h"
+#include "tierlift/effects/graph/graph.h"
 #include "tierlift/image/compare.h"
 #include "tierlift/image/image.h"
 #include "tierlift/ir/result.h"

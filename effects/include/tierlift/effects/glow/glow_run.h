@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "tierlift/effects/glow.h"
-#include "tierlift/effects/run_graph.h"
+#include "tierlift/effects/glow/glow.h"
+#include "tierlift/effects/graph/run_graph.h"
 #include "tierlift/image/io.h"
 
 namespace tierlift::effects {

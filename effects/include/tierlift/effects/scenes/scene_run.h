@@ -16,11 +16,11 @@
 #include <string>
 #include <vector>
 
-#include "tierlift/effects/agreement.h"
-#include "tierlift/effects/backends.h"
-#include "tierlift/effects/glow_run.h"
-#include "tierlift/effects/prune.h"
-#include "tierlift/effects/scene.h"
+#include "tierlift/effects/glow/glow_run.h"
+#include "tierlift/effects/glow/prune.h"
+#include "tierlift/effects/graph/agreement.h"
+#include "tierlift/effects/graph/backends.h"
+#include "tierlift/effects/scenes/scene.h"
 #include "tierlift/io/output_folder.h"
 #include "tierlift/ir/result.h"
 

@@ -67,11 +67,11 @@
 #include <utility>
 #include <vector>
 
-#include "tierlift/effects/blur_profile.h"
-#include "tierlift/effects/builtin_listing.h"
-#include "tierlift/effects/glow_context.h"
-#include "tierlift/effects/graph.h"
-#include "tierlift/effects/weight_quantize.h"
+#include "tierlift/effects/glow/blur_profile.h"
+#include "tierlift/effects/glow/builtin_listing.h"
+#include "tierlift/effects/glow/glow_context.h"
+#include "tierlift/effects/glow/weight_quantize.h"
+#include "tierlift/effects/graph/graph.h"
 #include "tierlift/ir/ps1x_range.h"
 
 namespace tierlift::effects {

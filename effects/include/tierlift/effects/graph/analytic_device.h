@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "tierlift/effects/device.h"
+#include "tierlift/effects/graph/device.h"
 
 namespace tierlift::effects {
 

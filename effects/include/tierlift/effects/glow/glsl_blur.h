@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "tierlift/effects/glow.h"
+#include "tierlift/effects/glow/glow.h"
 
 namespace tierlift::effects {
 

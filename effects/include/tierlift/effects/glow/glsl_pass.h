@@ -10,7 +10,7 @@
 // GLSL samples.
 #pragma once
 
-#include "tierlift/effects/glow.h"
+#include "tierlift/effects/glow/glow.h"
 #include "tierlift/glsl/glsl.h"
 
 namespace tierlift::effects {
