@@ -121,7 +121,7 @@ TEST(CorpusStages, ShaderModel3RunsAndAPredicatedTexkillIsUnsupportedNotAFailure
   EXPECT_EQ(stage_verdict(r, kStageRoundTrip), Verdict::Pass);
   EXPECT_EQ(stage_verdict(r, kStageSpirv), Verdict::Pass);
   CaseResult g = run_listing(
-      "g", "g.psh", "ps_3_0\ndcl_texcoord0 v0\ndcl_2d s0\ntexldd r0, v0, s0, v0, v0\nmov oC0, r0\n",
+      "g", "g.psh", "ps_3_0\ndcl_texcoord0 v0\nsetp_gt p0, v0, c0\n(p0) texkill v0\nmov oC0, v0\n",
       no_device());
   EXPECT_EQ(stage_verdict(g, kStageValidate), Verdict::Pass);
   EXPECT_EQ(stage_verdict(g, kStageSpirv), Verdict::Unsupported);
