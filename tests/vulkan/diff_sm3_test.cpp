@@ -244,7 +244,7 @@ TEST_F(VulkanTest, ExtraSemanticsLinkAcrossStages) {
         << m;
 }
 
-// NUMERICS.md F8: without multisampling `_centroid` samples where a plain input does, the
+// NUMERICS.md F12: without multisampling `_centroid` samples where a plain input does, the
 // pixel centre (a covered pixel's one sample), on both devices: the interpolated texcoord is
 // the same image bit for bit with and without it.
 TEST_F(VulkanTest, CentroidWithOneSampleIsThePixelCentre) {
