@@ -29,9 +29,9 @@ struct Bindings {
 // A descriptor set layout of `bindings` and the pipeline layout over it (set 0), both
 // registered with `cleanup`; `set_layout` (if given) receives the former. Empty on success.
 ir::Status create_pipeline_layout(Device::Impl& d, Cleanup& cleanup,
-                                   const std::vector<VkDescriptorSetLayoutBinding>& bindings,
-                                   VkPipelineLayout& out,
-                                   VkDescriptorSetLayout* set_layout = nullptr);
+                                  const std::vector<VkDescriptorSetLayoutBinding>& bindings,
+                                  VkPipelineLayout& out,
+                                  VkDescriptorSetLayout* set_layout = nullptr);
 
 // Every object is registered with `cleanup`; a failure is one error of rule kDrawRule.
 // Samplers come from pass.textures[stage].sampler, images from `images`.

@@ -332,7 +332,8 @@ ir::Status bind_sampled(Device::Impl& d, const pass::Pass& pass, const DrawTextu
       r = nullptr;
       err = host_layered_texture(d, si, pass.textures[s], bound, out, r);
     } else if (pass.textures[s].shape != pass::TextureShape::Tex2D) {
-      err = draw_failure(fmt::format("s{}: a 2D sampler cannot read a cube or volume texture", si.stage));
+      err = draw_failure(
+          fmt::format("s{}: a 2D sampler cannot read a cube or volume texture", si.stage));
     } else if (!r) {
       const img::Image& im = pass.textures[s].image ? *pass.textures[s].image : unbound;
       err = host_texture(d, si.stage, im, out, r);
@@ -364,10 +365,10 @@ ir::Status upload_geometry(Device::Impl& d, const Geometry& geo, PreparedDraw& o
 // The render pass over the targets (and the stencil buffer), its framebuffer and the
 // pipeline.
 ir::Status create_render_objects(Device::Impl& d, const pass::Pass& pass,
-                                  const DrawTextures& textures, const codegen::CompiledPair& pair,
-                                  VkPipelineLayout layout,
-                                  const std::vector<VkDescriptorSetLayoutBinding>& layout_bindings,
-                                  PreparedDraw& out) {
+                                 const DrawTextures& textures, const codegen::CompiledPair& pair,
+                                 VkPipelineLayout layout,
+                                 const std::vector<VkDescriptorSetLayoutBinding>& layout_bindings,
+                                 PreparedDraw& out) {
   std::vector<VkFormat> formats;
   std::vector<const Image2D*> attachments;
   for (uint32_t i = 0; i < pass.color_targets; ++i) {
@@ -472,8 +473,8 @@ ir::Status prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawTextu
   out.set = bound.set;
   out.trace = bound.trace;
   out.trace_info = pair->ps.trace;
-  if (ir::Status e = create_render_objects(d, pass, textures, *pair, bound.layout,
-                                           bound.layout_bindings, out);
+  if (ir::Status e =
+          create_render_objects(d, pass, textures, *pair, bound.layout, bound.layout_bindings, out);
       !e)
     return e;
   place_viewport(pass, *textures.target, !geo.indices.empty(), out);

@@ -75,10 +75,10 @@ void ProgramReuse::keep_compiled(const std::string& key, std::shared_ptr<const i
 }
 
 ir::Status ProgramReuse::pipeline(Device::Impl& d, const PipelineDesc& desc,
-                                   const std::vector<VkFormat>& color_formats,
-                                   VkFormat stencil_format,
-                                   const std::vector<VkDescriptorSetLayoutBinding>& bindings,
-                                   VkPipeline& out) {
+                                  const std::vector<VkFormat>& color_formats,
+                                  VkFormat stencil_format,
+                                  const std::vector<VkDescriptorSetLayoutBinding>& bindings,
+                                  VkPipeline& out) {
   KeyBytes k;
   k.put(desc.vs->words);
   k.put(desc.ps_words);

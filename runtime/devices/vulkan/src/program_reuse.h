@@ -39,8 +39,8 @@ public:
   // bindings before, else one made now with a render pass and layout of the cache's own, which
   // are compatible with the draw's (Vulkan's render pass and pipeline layout compatibility).
   ir::Status pipeline(Device::Impl& d, const PipelineDesc& desc,
-                       const std::vector<VkFormat>& color_formats, VkFormat stencil_format,
-                       const std::vector<VkDescriptorSetLayoutBinding>& bindings, VkPipeline& out);
+                      const std::vector<VkFormat>& color_formats, VkFormat stencil_format,
+                      const std::vector<VkDescriptorSetLayoutBinding>& bindings, VkPipeline& out);
 
   size_t compiled_count() const { return compiled_.size(); }
   size_t pipeline_count() const { return pipelines_.size(); }

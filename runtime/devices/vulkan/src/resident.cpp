@@ -111,8 +111,8 @@ ir::Status create_resident(Device::Impl& d, uint32_t width, uint32_t height, img
 }
 
 ir::Status create_layered_resident(Device::Impl& d, uint32_t width, uint32_t height,
-                                    pass::TextureShape shape, uint32_t layers,
-                                    std::unique_ptr<Resident>& out) {
+                                   pass::TextureShape shape, uint32_t layers,
+                                   std::unique_ptr<Resident>& out) {
   auto r = std::make_unique<Resident>();
   r->width = width;
   r->height = height;
@@ -126,7 +126,7 @@ ir::Status create_layered_resident(Device::Impl& d, uint32_t width, uint32_t hei
 }
 
 ir::Status create_stencil_resident(Device::Impl& d, uint32_t width, uint32_t height,
-                                    std::unique_ptr<Resident>& out) {
+                                   std::unique_ptr<Resident>& out) {
   constexpr VkFormat kCandidates[] = {VK_FORMAT_S8_UINT, VK_FORMAT_D24_UNORM_S8_UINT,
                                       VK_FORMAT_D32_SFLOAT_S8_UINT};
   constexpr VkFormatFeatureFlags kNeeds = VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT |

@@ -71,12 +71,12 @@ struct Resident {
 // contents are zero until written: a texture whose stored layout is still UNDEFINED is
 // cleared by the first command that uses it.
 ir::Status create_resident(Device::Impl& d, uint32_t width, uint32_t height, img::Format format,
-                            std::unique_ptr<Resident>& out);
+                           std::unique_ptr<Resident>& out);
 // A cube or volume texture to sample (RGBA32F, `layers` faces or slices of `width` ×
 // `height`), filled by record_upload from the layers one after the other; never a target.
 ir::Status create_layered_resident(Device::Impl& d, uint32_t width, uint32_t height,
-                                    pass::TextureShape shape, uint32_t layers,
-                                    std::unique_ptr<Resident>& out);
+                                   pass::TextureShape shape, uint32_t layers,
+                                   std::unique_ptr<Resident>& out);
 // An 8-bit stencil buffer of `width` × `height`, all zero: VK_FORMAT_S8_UINT where the
 // device can render to it and copy it, else the first of D24_UNORM_S8_UINT and
 // D32_SFLOAT_S8_UINT that it can (the depth aspect is never tested or written).

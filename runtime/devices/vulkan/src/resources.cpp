@@ -106,14 +106,14 @@ ir::Status create_buffer(Device::Impl& d, Cleanup& cleanup, VkDeviceSize size,
 }
 
 ir::Status create_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint32_t height,
-                         VkFormat format, VkImageUsageFlags usage, Image2D& out) {
+                        VkFormat format, VkImageUsageFlags usage, Image2D& out) {
   return create_layered_image(d, cleanup, width, height, pass::TextureShape::Tex2D, 1, format,
                               usage, out);
 }
 
 ir::Status create_layered_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint32_t height,
-                                 pass::TextureShape shape, uint32_t layers, VkFormat format,
-                                 VkImageUsageFlags usage, Image2D& out) {
+                                pass::TextureShape shape, uint32_t layers, VkFormat format,
+                                VkImageUsageFlags usage, Image2D& out) {
   using pass::TextureShape;
   const bool cube = shape == TextureShape::Cube, volume = shape == TextureShape::Volume;
   VkImageCreateInfo ii{};

@@ -121,11 +121,11 @@ struct Image2D {
 // The aspects of `format`: COLOR, DEPTH, STENCIL or DEPTH|STENCIL.
 VkImageAspectFlags format_aspects(VkFormat format);
 ir::Status create_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint32_t height,
-                         VkFormat format, VkImageUsageFlags usage, Image2D& out);
+                        VkFormat format, VkImageUsageFlags usage, Image2D& out);
 // The same for a cube (`layers` = 6) or volume (`layers` slices) texture.
 ir::Status create_layered_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint32_t height,
-                                 pass::TextureShape shape, uint32_t layers, VkFormat format,
-                                 VkImageUsageFlags usage, Image2D& out);
+                                pass::TextureShape shape, uint32_t layers, VkFormat format,
+                                VkImageUsageFlags usage, Image2D& out);
 
 // Records commands into a fresh primary command buffer, submits it and waits for it.
 ir::Status submit_and_wait(Device::Impl& d, const std::function<void(VkCommandBuffer)>& record);
