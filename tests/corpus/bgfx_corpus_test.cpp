@@ -54,11 +54,6 @@ const std::map<std::string, std::string> kExceptions = {
     {"fs_shadowmaps_packdepth_vsm_linear.bin", "the semantic fog0 in a pixel program"},
     {"fs_shadowvolume_svside.bin", "the semantic fog0 in a pixel program"},
     {"fs_shadowvolume_svsidetex.bin", "the semantic fog0 in a pixel program"},
-    // More than the 512 instruction slots every ps_3_0 device has (Direct3D 9 lets a device
-    // offer more, up to 32768, as a cap; the validator holds to the guaranteed 512).
-    {"fs_raymarching.bin", "ps_3_0 allows 512 instruction slots"},
-    {"fs_shadowmaps_color_lighting_pcf_csm.bin", "ps_3_0 allows 512 instruction slots"},
-    {"fs_shadowmaps_color_lighting_pcf_linear_csm.bin", "ps_3_0 allows 512 instruction slots"},
     // A hash noise, frc(sin(x) * 43758.547): the devices' sines agree within the target but
     // not to the bit, and the multiplication by 4.4e4 before frc makes that 1e-4 or more.
     {"fs_sky_landscape.bin", "DISAGREE"},

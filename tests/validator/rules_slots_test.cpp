@@ -3,6 +3,7 @@
 
 using tierlift::vtest::has_error;
 using tierlift::vtest::is_clean;
+using tierlift::vtest::only_warns;
 using tierlift::vtest::repeat;
 
 namespace {
@@ -81,6 +82,22 @@ TEST(SlotRules, Ps12CmpAndDp4Counts) {
   EXPECT_TRUE(is_clean("ps_1_3\n" + repeat("dp4 r0, c0, c1", 4)));
   EXPECT_TRUE(has_error("ps_1_3\n" + repeat("dp4 r0, c0, c1", 5), "slot-limit", 6, 1,
                         {"ps_1_3 allows 4 dp4 instructions; this is the 5th"}));
+}
+
+TEST(SlotRules, ShaderModel3PastTheGuaranteedSlotsWarnsUpToTheLargestCap) {
+  // Every 3.0 device has 512 instruction slots; a device may offer up to 32768 (fxc compiles
+  // such programs). ps_3_0: line 1 the version, then one mov a line: slot k on line k + 1.
+  const std::string ps = "ps_3_0\n";
+  EXPECT_TRUE(is_clean(ps + repeat("mov r0, c0", 512) + "mov oC0, r0\n"));
+  EXPECT_TRUE(only_warns(ps + repeat("mov r0, c0", 513) + "mov oC0, r0\n", "slot-limit", 514, 1,
+                         {"ps_3_0 guarantees 512 instruction slots", "reaches slot 513",
+                          "MaxPixelShader30InstructionSlots"}));
+  EXPECT_TRUE(
+      has_error(ps + repeat("mov r0, c0", 32768) + "mov oC0, r0\n", "slot-limit", 32770, 1,
+                {"ps_3_0 allows 32768 instruction slots; this instruction is the 32769th"}));
+  const std::string vs = "vs_3_0\ndcl_position o0\n";
+  EXPECT_TRUE(only_warns(vs + repeat("mov o0, c0", 513), "slot-limit", 515, 1,
+                         {"vs_3_0 guarantees 512", "MaxVertexShader30InstructionSlots"}));
 }
 
 } // namespace

@@ -6,17 +6,34 @@
 namespace tierlift::as::detail {
 namespace {
 
+// Shader model 3.0: every device has 512 instruction slots, and Direct3D 9 lets a device
+// offer more through MaxVertexShader30InstructionSlots / MaxPixelShader30InstructionSlots,
+// up to 32768 (fxc compiles such programs). Past 512 a program is legal but not portable:
+// a warning (an error under --strict); past 32768 it is an error.
+constexpr int kSm3GuaranteedSlots = 512;
+constexpr int kSm3MostSlots = 32768;
+
 struct Counter {
   const char* what; // "instruction", "texture", "arithmetic"
   int limit;
+  int guaranteed = 0; // > 0: the slots every device has, below `limit` (shader model 3.0)
   int used = 0;
   bool reported = false;
+  bool warned = false;
 
   // Adds `cost` slots of `ins`; reports the first instruction that crosses the limit.
   void add(Ctx& c, const ir::Instruction& ins, int cost, const std::string& scope) {
     if (cost <= 0) return;
     int first = used + 1;
     used += cost;
+    if (guaranteed > 0 && used > guaranteed && !warned && used <= limit) {
+      warned = true;
+      c.warning(ins.loc, "slot-limit",
+                fmt::format("{} guarantees {} {} slots and this instruction reaches slot {}: the "
+                            "program runs only on a device that offers more (its "
+                            "Max{}Shader30InstructionSlots cap, at most {})",
+                            c.pname(), guaranteed, what, used, c.vs() ? "Vertex" : "Pixel", limit));
+    }
     if (used <= limit || reported || limit <= 0) return;
     reported = true;
     std::string which = cost == 1
@@ -27,14 +44,20 @@ struct Counter {
   }
 };
 
+// The instruction-slot counter of the target (shader model 3.0: guaranteed and most slots).
+Counter instruction_counter(const Ctx& c) {
+  if (c.sm3()) return Counter{"instruction", kSm3MostSlots, kSm3GuaranteedSlots};
+  return Counter{"instruction", c.lim.max_slots};
+}
+
 void check_vertex(Ctx& c) {
-  Counter total{"instruction", c.lim.max_slots};
+  Counter total = instruction_counter(c);
   for (const ir::Instruction& ins : c.prog.code) total.add(c, ins, slot_cost(ins, c.target), "");
 }
 
 void check_pixel(Ctx& c) {
   Counter tex{"texture", c.lim.max_tex_slots}, arith{"arithmetic", c.lim.max_arith_slots};
-  Counter total{"instruction", c.lim.max_slots};
+  Counter total = instruction_counter(c);
   int phase = 1;
   bool has_phase = false;
   for (const ir::Instruction& ins : c.prog.code) has_phase |= ins.op == ir::Opcode::Phase;
