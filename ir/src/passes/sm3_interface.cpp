@@ -170,7 +170,11 @@ Status check_semantic_pair(const Program& vertex, const Program& pixel) {
   if (!linked_file(vertex.profile) && !linked_file(pixel.profile)) return ok_status();
   const std::map<uint32_t, Semantic> vs = slot_semantics(vertex);
   const std::map<uint32_t, Semantic> ps = slot_semantics(pixel);
-  for (const auto& [slot, semantic] : ps) {
+  for (const auto& entry : ps) {
+    // Named copies, not structured bindings: a lambda cannot capture those before C++20's
+    // P1091 fix, which clang 15 (the fuzz build's compiler) does not have.
+    const uint32_t slot = entry.first;
+    const Semantic semantic = entry.second;
     const auto there = vs.find(slot);
     const auto elsewhere = std::find_if(vs.begin(), vs.end(), [&](const auto& e) {
       return e.second == semantic && e.first != slot;
