@@ -1,0 +1,116 @@
+// The textures a draw's pixel program samples: resident ones, or the pass's host images,
+// cube and volume layers (or the unbound texture) uploaded for this draw (sampled_textures.h).
+#include "sampled_textures.h"
+
+#include <cstring>
+
+#include <fmt/format.h>
+
+namespace tierlift::vulkan {
+namespace {
+
+// A host image of a stage without a resident texture, as the old per-pass path did
+// (R32G32B32A32_SFLOAT, the floats as given), uploaded now: it belongs to the draw.
+ir::Status host_texture(Device::Impl& d, uint32_t stage, const img::Image& im, PreparedDraw& out,
+                        Resident*& r) {
+  if (im.width == 0 || im.height == 0 || im.width > img::kMaxDimension ||
+      im.height > img::kMaxDimension || im.rgba.size() != size_t{im.width} * im.height * 4)
+    return draw_failure(fmt::format("s{}: texture has no pixels", stage));
+  std::unique_ptr<Resident> t;
+  Cleanup staging_objects;
+  Buffer staging;
+  ir::Status err = create_resident(d, im.width, im.height, img::Format::RGBA32F, t);
+  if (err)
+    err = create_buffer(d, staging_objects, im.rgba.size() * 4, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                        staging);
+  if (!err) return err;
+  std::memcpy(staging.mapped, im.rgba.data(), im.rgba.size() * 4);
+  err = submit_and_wait(d, [&](VkCommandBuffer cb) { record_upload(cb, *t, staging.buffer); });
+  if (!err) return err;
+  r = t.get();
+  out.host_textures.push_back(std::move(t));
+  return ir::ok_status();
+}
+
+// A cube or volume texture of the pass (or the unbound one of that type, reading (0, 0, 0, 1)
+// as in D3D9), uploaded now: it belongs to the draw. Resident textures are 2D, so a cube or
+// volume sampler reads the binding's host layers (in an effect graph the device binds images
+// by texture id, and the layers ride with the binding, effects::TextureBind). `bound` says
+// whether the stage has a texture at all (a resident one, or the pass's image).
+ir::Status host_layered_texture(Device::Impl& d, const codegen::SamplerInfo& si,
+                                const pass::TextureBinding& b, bool bound, PreparedDraw& out,
+                                Resident*& r) {
+  const pass::TextureShape want =
+      si.type == ir::SamplerType::Cube ? pass::TextureShape::Cube : pass::TextureShape::Volume;
+  std::vector<std::shared_ptr<const img::Image>> layers = b.layers;
+  if (bound && (b.shape != want || layers.empty())) {
+    const char* name = want == pass::TextureShape::Cube ? "cube" : "volume";
+    return draw_failure(fmt::format("s{}: a {} sampler needs a {} texture", si.stage, name, name));
+  }
+  if (!bound) {
+    auto texel = std::make_shared<img::Image>(1, 1);
+    texel->rgba = {0, 0, 0, 1};
+    layers.assign(want == pass::TextureShape::Cube ? 6 : 1, texel);
+  }
+  const img::Image& first = *layers[0];
+  std::unique_ptr<Resident> t;
+  Cleanup staging_objects;
+  Buffer staging;
+  const size_t floats = first.rgba.size();
+  ir::Status err = create_layered_resident(d, first.width, first.height, want,
+                                           static_cast<uint32_t>(layers.size()), t);
+  if (err)
+    err = create_buffer(d, staging_objects, floats * layers.size() * 4,
+                        VK_BUFFER_USAGE_TRANSFER_SRC_BIT, staging);
+  if (!err) return err;
+  for (size_t k = 0; k < layers.size(); ++k)
+    std::memcpy(static_cast<float*>(staging.mapped) + k * floats, layers[k]->rgba.data(),
+                floats * 4);
+  err = submit_and_wait(d, [&](VkCommandBuffer cb) { record_upload(cb, *t, staging.buffer); });
+  if (!err) return err;
+  r = t.get();
+  out.host_textures.push_back(std::move(t));
+  return ir::ok_status();
+}
+
+} // namespace
+
+// The textures the pixel program samples: resident ones, else the pass's host images (or the
+// unbound texture) uploaded for this draw.
+ir::Status bind_sampled(Device::Impl& d, const pass::Pass& pass, const DrawTextures& textures,
+                        const codegen::CompiledPair& pair, PreparedDraw& out,
+                        SampledImages& images) {
+  img::Image unbound(1, 1);
+  unbound.rgba = {0, 0, 0, 1}; // an unbound stage reads (0, 0, 0, 1), as in D3D9
+  for (const auto& si : pair.ps.samplers) {
+    const uint32_t s = si.stage % pass::kMaxSamplers;
+    Resident*& r = out.sampled[s];
+    if (r) continue;
+    r = textures.stages[s];
+    bool own = r && r == textures.target;
+    for (const Resident* m : textures.more_targets) own = own || (r && r == m);
+    if (own)
+      return draw_failure(fmt::format("s{}: a pass cannot sample its own render target", si.stage));
+    ir::Status err = ir::ok_status();
+    if (si.type == ir::SamplerType::Cube || si.type == ir::SamplerType::Volume) {
+      // The binding's layers, uploaded with the draw (a resident texture is 2D: in an effect
+      // graph it holds the first layer only, effects::TextureBind).
+      const bool bound = r || pass.textures[s].image || !pass.textures[s].layers.empty();
+      r = nullptr;
+      err = host_layered_texture(d, si, pass.textures[s], bound, out, r);
+    } else if (pass.textures[s].shape != pass::TextureShape::Tex2D) {
+      err = draw_failure(
+          fmt::format("s{}: a 2D sampler cannot read a cube or volume texture", si.stage));
+    } else if (!r) {
+      const img::Image& im = pass.textures[s].image ? *pass.textures[s].image : unbound;
+      err = host_texture(d, si.stage, im, out, r);
+    }
+    out.fetched[s] = si.fetch_unorm8;
+    if (err && !si.fetch_unorm8) err = ensure_shadow(d, *r);
+    if (!err) return err;
+    images[s] = si.fetch_unorm8 ? &r->stored.image : &r->sampled();
+  }
+  return ir::ok_status();
+}
+
+} // namespace tierlift::vulkan
