@@ -20,6 +20,7 @@
 #include "report.h"
 #include "run_flags.h"
 #include "run_output.h"
+#include "run_request.h"
 #include "run_trace.h"
 #include "tierlift/effects/graph/backends.h"
 #include "tierlift/effects/graph/device.h"
@@ -30,92 +31,6 @@
 
 namespace tierlift::cli {
 namespace {
-
-struct RunFlags {
-  std::string vs, ps, size = "256x256", format = "rgba32f", filter = "point", address = "wrap";
-  std::string pixel_center = "d3d9", front_face = "cw", output;
-  std::vector<std::string> consts, inputs, attrs, textures, probes, bumps;
-  int subtexel_bits = 0;
-  std::string ps1x_max{ir::kDefaultPs1xPreset};
-  unsigned threads = 0;
-  std::string backend = "cpu", gpu;
-  bool keep_alpha = false; // PNG: the shader's alpha as stored, not opaque
-  std::string trace;       // --trace X,Y (run_trace.h)
-  FrontEndOptions fe;      // -D, -I, --profile, --strict, --skip-validation, --json
-};
-
-// A usage problem: reported under rule "usage", exit 2.
-ir::Failure usage_error(std::string message) {
-  return ir::fail("run", "usage", std::move(message));
-}
-
-// Sets `out` from a parsed flag value; false, with the first usage error kept in `error`.
-template <class T, class U>
-bool take(ir::Result<T> value, U& out, std::optional<ir::Failure>& error) {
-  if (!value) {
-    if (!error) error = std::move(value).failure();
-    return false;
-  }
-  out = std::move(value).value();
-  return true;
-}
-template <class T, class U>
-bool take(std::optional<T> value, std::string message, U& out, std::optional<ir::Failure>& error) {
-  if (value) return take(ir::Result<T>(std::move(*value)), out, error);
-  if (!error) error = usage_error(std::move(message));
-  return false;
-}
-
-// The --input, --attr, --texture, --bump and --probe settings into `r` (the size known).
-void read_settings(const RunFlags& f, pass::RunRequest& r, std::optional<ir::Failure>& error) {
-  for (const auto& s : f.inputs) take(parse_input_setting(s), r.inputs.emplace_back(), error);
-  for (const auto& s : f.attrs) take(parse_attr_setting(s), r.attrs.emplace_back(), error);
-  for (const auto& s : f.textures) take(parse_texture_setting(s), r.textures.emplace_back(), error);
-  for (const auto& s : f.bumps) take(parse_bump_setting(s), r.bump_matrices.emplace_back(), error);
-  for (const auto& s : f.probes) {
-    pass::ProbePoint& p = r.probes.emplace_back();
-    if (take(parse_probe(s), p, error) && (p.x >= r.width || p.y >= r.height) && !error)
-      error = usage_error(fmt::format("--probe {}: outside the {}x{} image", s, r.width, r.height));
-  }
-}
-
-// Every flag but --const (read once the listings' constant tables are known); the first
-// flag in error, in the order below, is the one reported.
-ir::Result<pass::RunRequest> build_request(const RunFlags& f) {
-  pass::RunRequest r;
-  std::optional<ir::Failure> error;
-  std::array<uint32_t, 2> size{};
-  if (take(parse_size(f.size), size, error)) {
-    r.width = size[0];
-    r.height = size[1];
-  }
-  take(img::parse_format(f.format),
-       fmt::format("--format '{}': expected rgba8, rgba16f or rgba32f", f.format), r.format, error);
-  if (!error) read_settings(f, r, error);
-  take(parse_filter(f.filter), fmt::format("--filter '{}': expected point or linear", f.filter),
-       r.filter, error);
-  take(parse_address(f.address),
-       fmt::format("--address '{}': expected clamp, wrap, mirror or border", f.address), r.address,
-       error);
-  take(parse_pixel_center(f.pixel_center),
-       fmt::format("--pixel-center '{}': expected d3d9 or modern", f.pixel_center),
-       r.conventions.pixel_center, error);
-  if ((f.front_face != "cw" && f.front_face != "ccw") && !error)
-    error = usage_error(fmt::format("--front-face '{}': expected cw or ccw", f.front_face));
-  r.front_face =
-      f.front_face == "ccw" ? pass::FrontFace::CounterClockwise : pass::FrontFace::Clockwise;
-  if ((f.subtexel_bits < 0 || f.subtexel_bits > 24) && !error)
-    error =
-        usage_error(fmt::format("--subtexel-bits {}: expected 0 (exact) .. 24", f.subtexel_bits));
-  r.conventions.subtexel_bits = f.subtexel_bits;
-  const ir::Result<float> ps1x_max = ir::parse_ps1x_max(f.ps1x_max);
-  if (!ps1x_max && !error) error = usage_error("--ps1x-max " + ps1x_max.message());
-  if (error) return std::move(*error);
-  r.conventions.ps1x_max_value = *ps1x_max;
-  r.threads = f.threads;
-  r.texcoords_from_quad = true; // a t# --input does not set is the quad's uv, as in glow
-  return r;
-}
 
 void print_other(const ir::DiagnosticSink& sink, Report& report) {
   for (const ir::Diagnostic& d : sink.all()) {
