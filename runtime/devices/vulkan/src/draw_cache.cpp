@@ -1,42 +1,13 @@
 // The prepared-draw cache of TextureSet (draw_cache.h).
 #include "draw_cache.h"
 
-#include <cstring>
-#include <type_traits>
+#include "key_bytes.h"
 
 namespace tierlift::vulkan {
-namespace {
-
-// Appends values as raw bytes; floats by their bits (so −0 and NaN payloads stay distinct).
-class KeyWriter {
-public:
-  template <typename T> void put(const T& v) {
-    static_assert(std::is_arithmetic_v<T> || std::is_enum_v<T> || std::is_pointer_v<T>);
-    char bytes[sizeof(T)];
-    std::memcpy(bytes, &v, sizeof(T));
-    key_.append(bytes, sizeof(T));
-  }
-  void put(const pass::Vec4& v) {
-    for (float f : v) put(f);
-  }
-  void put(const pass::ConstantBank& bank) {
-    put(bank.f.size());
-    for (const pass::Vec4& v : bank.f) put(v);
-    for (const auto& i : bank.i)
-      for (int32_t x : i) put(x);
-    for (bool b : bank.b) put(b);
-  }
-  std::string take() { return std::move(key_); }
-
-private:
-  std::string key_;
-};
-
-} // namespace
 
 std::optional<std::string> draw_key(const pass::Pass& pass, const DrawTextures& textures) {
   if (!pass.vertex_program || !textures.target) return std::nullopt;
-  KeyWriter k;
+  KeyBytes k;
   k.put(pass.vertex_program.get());
   k.put(pass.pixel_program.get());
   k.put(pass.pixel_spirv.get());
@@ -50,18 +21,7 @@ std::optional<std::string> draw_key(const pass::Pass& pass, const DrawTextures& 
   for (const Resident* m : textures.more_targets) k.put(m);
   k.put(textures.stencil);
   k.put(pass.color_targets);
-  const pass::DepthStencilState& ds = pass.depth_stencil;
-  k.put(ds.depth_test);
-  k.put(ds.depth_write);
-  k.put(ds.depth_func);
-  k.put(ds.stencil_test);
-  k.put(ds.stencil_func);
-  k.put(ds.stencil_fail);
-  k.put(ds.stencil_depth_fail);
-  k.put(ds.stencil_pass);
-  k.put(ds.stencil_ref);
-  k.put(ds.stencil_read_mask);
-  k.put(ds.stencil_write_mask);
+  k.put(pass.depth_stencil);
   for (uint32_t s = 0; s < pass::kMaxSamplers; ++s) {
     const pass::TextureBinding& b = pass.textures[s];
     if (!textures.stages[s] && b.image) return std::nullopt;       // host pixels: not cached

@@ -1,38 +1,11 @@
 // The compiled programs and pipelines a TextureSet reuses across draws (program_reuse.h).
 #include "program_reuse.h"
 
-#include <cstring>
-#include <type_traits>
-
 #include "bindings.h"
+#include "key_bytes.h"
 #include "pipeline.h"
 
 namespace tierlift::vulkan {
-namespace {
-
-// Raw bytes of plain values, appended (floats by their bits).
-class KeyBytes {
-public:
-  template <typename T> void put(const T& v) {
-    static_assert(std::is_trivially_copyable_v<T>);
-    char bytes[sizeof(T)];
-    std::memcpy(bytes, &v, sizeof(T));
-    key_.append(bytes, sizeof(T));
-  }
-  template <typename T, size_t N> void put(const std::array<T, N>& a) {
-    for (const T& v : a) put(v);
-  }
-  void put(const std::vector<uint32_t>& words) {
-    put(words.size());
-    key_.append(reinterpret_cast<const char*>(words.data()), words.size() * sizeof(uint32_t));
-  }
-  std::string take() { return std::move(key_); }
-
-private:
-  std::string key_;
-};
-
-} // namespace
 
 std::optional<std::string> compile_key(const ir::Program* vs, const ir::Program* ps,
                                        const codegen::CodegenOptions& o) {
@@ -86,18 +59,7 @@ ir::Status ProgramReuse::pipeline(Device::Impl& d, const PipelineDesc& desc,
   k.put(desc.front_face);
   k.put(desc.color_targets);
   k.put(desc.stencil_attachment);
-  const pass::DepthStencilState& ds = desc.depth_stencil;
-  k.put(ds.depth_test);
-  k.put(ds.depth_write);
-  k.put(ds.depth_func);
-  k.put(ds.stencil_test);
-  k.put(ds.stencil_func);
-  k.put(ds.stencil_fail);
-  k.put(ds.stencil_depth_fail);
-  k.put(ds.stencil_pass);
-  k.put(ds.stencil_ref);
-  k.put(ds.stencil_read_mask);
-  k.put(ds.stencil_write_mask);
+  k.put(desc.depth_stencil);
   k.put(desc.vertex_stride);
   k.put(color_formats.size());
   for (VkFormat f : color_formats) k.put(f);
