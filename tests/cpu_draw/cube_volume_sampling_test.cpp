@@ -53,6 +53,10 @@ TEST(CubeRule, FacesAndCoordinatesFromTheTable) {
     EXPECT_EQ(l.face, c.face) << what;
     EXPECT_EQ(e.s, static_cast<float>(c.s)) << what; // rounded once from the exact value
     EXPECT_EQ(e.t, static_cast<float>(c.t)) << what;
+    // Bound of lavapipe's rule s = fl(fl(sc·h) + ½), h = fl(½/|ma|), against the exact s:
+    // h's rounding moves sc·h (|sc·h| ≤ ½) by ≤ ½·2⁻²⁴ = 2⁻²⁵, the product's rounding by
+    // ≤ 2⁻²⁶ (half an ulp below ½), the sum's by ≤ 2⁻²⁵ (half an ulp below 1): in all
+    // ≤ 5·2⁻²⁶ ≈ 7.5e-8 ≤ 1e-7.
     EXPECT_NEAR(l.s, c.s, 1e-7) << what;
     EXPECT_NEAR(l.t, c.t, 1e-7) << what;
   }

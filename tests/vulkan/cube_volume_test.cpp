@@ -125,6 +125,10 @@ TEST_F(CubeVolume, FaceCoordinatesAtKnownPoints) {
     const std::string what = fmt::format("direction ({}, {}, {})", c.dir[0], c.dir[1], c.dir[2]);
     for (const cpu::Vec4& v : {r.cpu, r.vk}) {
       EXPECT_EQ(v[2], c.face) << what;
+      // Bound: both devices take s by lavapipe's rule, ≤ 7.5e-8 from the exact s (CubeRule's
+      // bound), ×16 = 1.2e-6; the read returns fl(16·s) − ½ (NUMERICS.md T3), rounded once
+      // near 5..11 (≤ 2⁻²¹ ≈ 4.8e-7); the float literal c.s is ≤ 2⁻²⁶ from its decimal, ×16 =
+      // 2.4e-7, and 16·c.s − ½ in float rounds once more (≤ 4.8e-7): in all ≤ 2.4e-6 ≤ 1e-5.
       EXPECT_NEAR(v[0], 16 * c.s - 0.5f, 1e-5) << what;
       EXPECT_NEAR(v[1], 16 * c.t - 0.5f, 1e-5) << what;
     }
@@ -279,7 +283,11 @@ TEST_F(CubeVolume, RandomVolumeReadsBitIdentical) {
       ASSERT_TRUE(r.ok);
       const std::string what = fmt::format("filter {} mode {}", int(filter), int(mode));
       // MIRROR's bilinear weights are not lavapipe's bit for bit, in 2D as on w (a known gap
-      // of the 2D rule, NUMERICS.md rule 36): the harness's tolerance there.
+      // of the 2D rule, NUMERICS.md rule 36): the harness's tolerance there. Bound: a weight
+      // differs by at most one rounding of the texel coordinate, |u·N| < 16 here (u in
+      // [−0.75, 1.75], N ≤ 8), so ≤ 2⁻²⁰ ≈ 9.5e-7; each of the three lerps (u, v, w) of values
+      // in [0, 1] moves by at most that, plus one float rounding each (≤ 2⁻²⁴): in all
+      // ≤ 3·(2⁻²⁰ + 2⁻²⁴) ≈ 3.0e-6 ≤ 1e-5 (measured: one ulp, 55 of 1,024 values).
       if (mode == cpu::AddressMode::Mirror && filter == cpu::Filter::Linear)
         expect_agree(r, what);
       else
