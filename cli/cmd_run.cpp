@@ -105,8 +105,17 @@ DeviceRun shown_run(const effects::SinglePassDraw& draw, const pass::RunRequest&
   DeviceRun out;
   out.ok = true;
   out.image = draw.image;
+  out.more_images = draw.more_images;
   out.probes = pass::read_probes(out.image, req.probes);
   out.report = draw.report;
+  return out;
+}
+
+// --output1..3 as given: [oC1's file or null, …] up to the last render target asked for.
+nlohmann::json more_outputs_json(const RunFlags& f) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const std::string& o : f.more_outputs)
+    if (!o.empty()) out.push_back(o);
   return out;
 }
 
@@ -123,6 +132,7 @@ nlohmann::json result_json(const RunFlags& f, const pass::RunRequest& r, const D
             {"value", r.conventions.ps1x_max_value}}},
           {"probes", probes},
           {"output", f.output.empty() ? nlohmann::json() : nlohmann::json(f.output)},
+          {"more_outputs", more_outputs_json(f)},
           {"pixels_shaded", run.report.pixels_shaded},
           {"pixels_killed", run.report.pixels_killed},
           {"timing_ms",
@@ -171,19 +181,46 @@ std::optional<RunPlan> plan_from_flags(const RunFlags& f, Report& report) {
   return plan;
 }
 
-// -o: never one of the run's inputs, one image for "-", the Vulkan image's name free too.
-// False after reporting why not.
+// Every image file the run writes, in order: -o (oC0) and --output1..3 (oC1..oC3), each
+// followed by its Vulkan twin when both devices run (out.png → out-vulkan.png).
+std::vector<std::string> output_files(const RunFlags& f, const RunPlan& plan) {
+  std::vector<std::string> files;
+  for (const std::string* o :
+       {&f.output, &f.more_outputs[0], &f.more_outputs[1], &f.more_outputs[2]}) {
+    if (o->empty()) continue;
+    files.push_back(*o);
+    if (plan.cpu && plan.vulkan && *o != "-") files.push_back(vulkan_output(*o));
+  }
+  return files;
+}
+
+// -o and --output1..3: never one of the run's inputs nor one another, one image for "-"
+// (-o only), the Vulkan images' names free too. False after reporting why not.
 bool outputs_ok(const RunFlags& f, const RunPlan& plan, Report& report) {
-  if (f.output.empty()) return true;
   const std::vector<std::string> inputs = input_files(f, plan.req);
-  std::string why = check_output(f.output, inputs, f.fe.json).message();
-  if (why.empty() && f.output == "-" && plan.cpu && plan.vulkan)
-    why = "-o - takes one image; --backend both writes two (give -o a file)";
-  if (why.empty() && plan.cpu && plan.vulkan)
-    why = output_conflict(vulkan_output(f.output), inputs).message();
-  if (why.empty()) return true;
-  report.error(f.output == "-" ? "usage" : "io", why, f.output);
-  return false;
+  if (!f.output.empty()) {
+    std::string why = check_output(f.output, inputs, f.fe.json).message();
+    if (why.empty() && f.output == "-" && plan.cpu && plan.vulkan)
+      why = "-o - takes one image; --backend both writes two (give -o a file)";
+    if (!why.empty()) {
+      report.error(f.output == "-" ? "usage" : "io", why, f.output);
+      return false;
+    }
+  }
+  std::vector<std::string> earlier;
+  for (const std::string& o : output_files(f, plan)) {
+    if (o == "-" && o == f.output) continue; // checked above
+    std::string why = o == "-" ? "--output1..3 - : standard output takes -o's image only"
+                               : output_conflict(o, inputs).message();
+    if (why.empty() && std::find(earlier.begin(), earlier.end(), o) != earlier.end())
+      why = fmt::format("{}: two of the run's images would be written there", o);
+    if (!why.empty()) {
+      report.error(o == "-" ? "usage" : "io", why, o);
+      return false;
+    }
+    earlier.push_back(o);
+  }
+  return true;
 }
 
 struct Listings {
@@ -211,8 +248,7 @@ int load_listings(const RunFlags& f, const RunPlan& plan, Listings& out, Report&
     listings_ok = listings_ok && (*l)->program && !(*l)->diags.has_errors();
   }
   if (!listings_ok) return kExitInvalid;
-  for (const std::string& o :
-       {f.output, plan.cpu && plan.vulkan && !f.output.empty() ? vulkan_output(f.output) : ""})
+  for (const std::string& o : output_files(f, plan))
     for (auto* l : {&out.vs, &out.ps})
       if (ir::Status refused = *l ? refuse_included(o, **l) : ir::ok_status(); !refused) {
         report.error("io", refused.message(), o);
@@ -260,14 +296,25 @@ std::optional<pass::Pass> prepare(const pass::RunRequest& req, const Listings& l
   return prepared;
 }
 
-// The image(s) to -o (the Vulkan one beside the CPU one with two ways); the time it took, or
-// nullopt after reporting an I/O error.
+// The image(s) to -o and --output1..3 (the Vulkan one beside the CPU one with two ways),
+// each file written whole or not at all; the time it took, or nullopt after reporting an I/O
+// error.
 std::optional<double> write_outputs(const RunFlags& f, const DeviceRun& shown, const DeviceRun* vk,
                                     Report& report) {
-  if (f.output.empty()) return 0.0;
   auto t0 = std::chrono::steady_clock::now();
-  std::vector<std::pair<std::string, const img::Image*>> files{{f.output, &shown.image}};
-  if (vk) files.emplace_back(vulkan_output(f.output), &vk->image);
+  std::vector<std::pair<std::string, const img::Image*>> files;
+  auto add = [&](const std::string& path, const DeviceRun& run, size_t target) {
+    if (path.empty()) return;
+    const img::Image* image =
+        target == 0 ? &run.image
+                    : (target <= run.more_images.size() ? &run.more_images[target - 1] : nullptr);
+    if (image) files.emplace_back(path, image);
+  };
+  for (size_t t = 0; t <= f.more_outputs.size(); ++t) {
+    const std::string& path = t == 0 ? f.output : f.more_outputs[t - 1];
+    add(path, shown, t);
+    if (vk && !path.empty()) add(vulkan_output(path), *vk, t);
+  }
   for (const auto& [path, image] : files) {
     std::string warning;
     std::string err = write_run_output(path, *image, &warning, f.keep_alpha);
@@ -294,6 +341,14 @@ nlohmann::json run_json(const RunFlags& f, const pass::RunRequest& req,
                       {"identical_share", r.agreement->identical_share},
                       {"within_targets", r.verdict->pass},
                       {"summary", r.verdict->summary}};
+    nlohmann::json more = nlohmann::json::array();
+    for (size_t i = 0; i < r.more_agreement.size(); ++i)
+      more.push_back({{"target", i + 1},
+                      {"max_abs", r.more_agreement[i].max_abs},
+                      {"identical_share", r.more_agreement[i].identical_share},
+                      {"within_targets", r.more_verdicts[i].pass},
+                      {"summary", r.more_verdicts[i].summary}});
+    if (!more.empty()) j["agreement"]["more_targets"] = more;
     j["timing_ms"]["vulkan_setup"] = vk.report.setup_ms;
     j["timing_ms"]["vulkan_draw"] = vk.report.draw_ms;
   }
@@ -346,12 +401,24 @@ int run(const RunFlags& f) {
     report.result() = run_json(f, req, r, shown, vk, *write_ms);
   else
     print_text_result(shown, vk, r.vulkan_device, r.agreement, r.verdict);
+  for (size_t i = 0; i < r.more_agreement.size() && !report.json(); ++i)
+    fmt::print("oC{}: cpu vs vulkan: max abs per channel {:.3g} {:.3g} {:.3g} {:.3g}, identical "
+               "pixels {:.2f} %: {}\n",
+               i + 1, r.more_agreement[i].max_abs[0], r.more_agreement[i].max_abs[1],
+               r.more_agreement[i].max_abs[2], r.more_agreement[i].max_abs[3],
+               r.more_agreement[i].identical_share * 100.0,
+               r.more_verdicts[i].pass ? "within targets" : "BEYOND TARGETS");
   if (plan->trace)
     if (int code = print_pixel_trace(*prepared, *plan->trace, report)) return report.finish(code);
   if (r.verdict && !r.verdict->pass) {
     report.error("agreement", r.verdict->summary);
     return report.finish(kExitInvalid);
   }
+  for (size_t i = 0; i < r.more_verdicts.size(); ++i)
+    if (!r.more_verdicts[i].pass) {
+      report.error("agreement", fmt::format("oC{}: {}", i + 1, r.more_verdicts[i].summary));
+      return report.finish(kExitInvalid);
+    }
   return report.finish(kExitOk);
 }
 
@@ -399,6 +466,12 @@ void register_run_command(CLI::App& app) {
                 "PNG: keep the shader's alpha (default: opaque, so viewers show the colour)");
   sub->add_option("-o,--output", f->output,
                   "Write the image (.png, or .pfm for float RGB; '-': PNG on standard output)");
+  for (size_t i = 0; i < f->more_outputs.size(); ++i)
+    sub->add_option(fmt::format("--output{}", i + 1), f->more_outputs[i],
+                    fmt::format("Draw oC{} into a further render target (D3D9 MRT) of the "
+                                "same size and format and write it (.png or .pfm); the lower "
+                                "--outputN are needed too",
+                                i + 1));
   add_front_end_options(sub, f->fe, true);
   sub->add_option("--threads", f->threads, "Worker threads (0 = every core)")
       ->capture_default_str();

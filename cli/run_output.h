@@ -20,6 +20,7 @@ struct DeviceRun {
   img::Image image;
   std::vector<pass::ProbeValue> probes;
   pass::DrawReport report;
+  std::vector<img::Image> more_images; // oC1..oC3 of a run with --output1..3
 };
 
 // The run's text output: each probe's value, and with two devices the agreement line.

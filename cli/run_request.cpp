@@ -77,6 +77,15 @@ ir::Result<pass::RunRequest> build_request(const RunFlags& f) {
   r.conventions.subtexel_bits = f.subtexel_bits;
   const ir::Result<float> ps1x_max = ir::parse_ps1x_max(f.ps1x_max);
   if (!ps1x_max && !error) error = usage_error("--ps1x-max " + ps1x_max.message());
+  // --outputN draws oCN into a further render target, so oC1..oC(N−1) must be asked for too.
+  for (size_t i = 0; i < f.more_outputs.size(); ++i) {
+    if (f.more_outputs[i].empty()) continue;
+    if (r.color_targets != i + 1 && !error)
+      error = usage_error(fmt::format("--output{} needs --output{} too (render targets are drawn "
+                                      "in order, oC1 first)",
+                                      i + 1, r.color_targets));
+    r.color_targets = static_cast<uint32_t>(i + 2);
+  }
   if (error) return std::move(*error);
   r.conventions.ps1x_max_value = *ps1x_max;
   r.threads = f.threads;

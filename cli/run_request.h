@@ -2,6 +2,7 @@
 // but --const, which is read once the listings' constant tables are known (cmd_run.cpp).
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -23,11 +24,13 @@ struct RunFlags {
   bool keep_alpha = false; // PNG: the shader's alpha as stored, not opaque
   std::string trace;       // --trace X,Y (run_trace.h)
   FrontEndOptions fe;      // -D, -I, --profile, --strict, --skip-validation, --json
+  // --output1..--output3: the images of oC1..oC3 (D3D9 MRT); empty: not asked for.
+  std::array<std::string, 3> more_outputs;
 };
 
 // The request, or the first flag in error (rule "usage", exit 2), in the order the flags are
 // read: size, format, the settings, filter, address, pixel centre, front face, sub-texel
-// bits, ps1x max.
+// bits, ps1x max, the render targets (--output1..3: one more target each, given in order).
 ir::Result<pass::RunRequest> build_request(const RunFlags& f);
 
 } // namespace tierlift::cli

@@ -183,13 +183,31 @@ TEST(SinglePassGraph, NothingDrawnIsAWarningOfThePass) {
 TEST(SinglePassGraph, RefusesWhatAPassDescCannotCarry) {
   const pass::RunRequest r = blur_request(img::Format::RGBA32F);
   pass::Pass mrt = prepare(r);
-  mrt.color_targets = 2;
+  mrt.color_targets = 5; // D3D9 has four
   pass::Pass transformed = prepare(r);
   transformed.transformed.resize(3);
   for (const pass::Pass* p : {&mrt, &transformed}) {
     ir::Result<EffectGraph> g = single_pass_graph(*p, 4, 4, img::Format::RGBA32F);
     ASSERT_FALSE(g);
     EXPECT_EQ(g.diagnostics()[0].rule, "graph");
+  }
+}
+
+// A pass with n colour targets (MRT, `run --output1..3`) gets n − 1 more targets of the
+// target's size and format, named target1 …, drawn into by the one pass.
+TEST(SinglePassGraph, CarriesFurtherColourTargets) {
+  const pass::RunRequest r = blur_request(img::Format::RGBA32F);
+  pass::Pass mrt = prepare(r);
+  mrt.color_targets = 3;
+  ir::Result<EffectGraph> g = single_pass_graph(mrt, 4, 2, img::Format::RGBA16F);
+  ASSERT_TRUE(g) << g.message();
+  ASSERT_EQ(g->passes[0].more_targets, (std::vector<std::string>{"target1", "target2"}));
+  for (const char* name : {"target1", "target2"}) {
+    const TextureDesc* t = g->find_texture(name);
+    ASSERT_NE(t, nullptr) << name;
+    EXPECT_EQ(t->width, 4u);
+    EXPECT_EQ(t->height, 2u);
+    EXPECT_EQ(t->format, img::Format::RGBA16F);
   }
 }
 

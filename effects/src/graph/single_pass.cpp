@@ -20,7 +20,8 @@ bool default_viewport(const pass::Viewport& v) {
 std::string unsupported(const pass::Pass& pass) {
   if (!pass.transformed.empty()) return "pre-transformed vertices";
   if (!default_viewport(pass.viewport)) return "a viewport other than the whole target";
-  if (pass.color_targets != 1) return fmt::format("{} colour targets", pass.color_targets);
+  if (pass.color_targets < 1 || pass.color_targets > 4)
+    return fmt::format("{} colour targets", pass.color_targets);
   if (pass.depth_stencil.enabled()) return "a depth/stencil state";
   if (pass.pixel_spirv) return "a SPIR-V pixel stage";
   if (pass.executor != pass::Executor::Auto) return "the scalar executor";
@@ -29,6 +30,11 @@ std::string unsupported(const pass::Pass& pass) {
 }
 
 } // namespace
+
+std::string single_pass_target(uint32_t index) {
+  return index == 0 ? std::string(kSinglePassTarget)
+                    : fmt::format("{}{}", kSinglePassTarget, index);
+}
 
 ir::Result<EffectGraph> single_pass_graph(const pass::Pass& pass, uint32_t width, uint32_t height,
                                           img::Format format) {
@@ -72,12 +78,16 @@ ir::Result<EffectGraph> single_pass_graph(const pass::Pass& pass, uint32_t width
     }
     desc.textures.push_back({s, it->second, b.sampler, b.stage, b.shape, b.layers});
   }
-  TextureDesc target;
-  target.name = desc.target;
-  target.width = width;
-  target.height = height;
-  target.format = format;
-  graph.textures.push_back(std::move(target));
+  // oC0 into kSinglePassTarget, oC1..oC3 (MRT) into targets of the same size and format.
+  for (uint32_t i = 0; i < pass.color_targets; ++i) {
+    TextureDesc target;
+    target.name = single_pass_target(i);
+    target.width = width;
+    target.height = height;
+    target.format = format;
+    graph.textures.push_back(std::move(target));
+    if (i > 0) desc.more_targets.push_back(single_pass_target(i));
+  }
   graph.passes.push_back(std::move(desc));
   return graph;
 }

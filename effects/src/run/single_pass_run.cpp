@@ -3,6 +3,7 @@
 #include <memory>
 #include <new>
 #include <optional>
+#include <tuple>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -51,10 +52,15 @@ std::optional<SinglePassDraw> draw_on(PassDevice& device, const EffectGraph& gra
   }
   const PassRecord& pass = (*run)->passes.front();
   for (const ir::Diagnostic& d : pass.warnings) told.push_back(d);
-  SinglePassDraw out{device.name(), std::move(images.at(std::string(kSinglePassTarget))),
-                     pass.report};
+  SinglePassDraw out{
+      device.name(), std::move(images.at(std::string(kSinglePassTarget))), pass.report, {}};
   out.report.setup_ms = (*run)->setup_ms; // textures, uploads, pipelines
   out.report.draw_ms = pass.ms;           // the pass, to the end of its work on the device
+  for (uint32_t i = 1;; ++i) {            // oC1..: the graph's further targets, in order
+    auto more = images.find(single_pass_target(i));
+    if (more == images.end()) break;
+    out.more_images.push_back(std::move(more->second));
+  }
   return out;
 }
 
@@ -103,6 +109,16 @@ ir::Result<SinglePassRun> run_single_pass(const EffectGraph& graph, const Backen
     }
     out.agreement = *compared;
     out.verdict = img::judge(*out.agreement, t.format);
+    const auto& [a, b] = std::tie(out.draws[0], out.draws[1]);
+    for (size_t i = 0; i < a.more_images.size() && i < b.more_images.size(); ++i) {
+      ir::Result<img::Comparison> more = img::compare(a.more_images[i], b.more_images[i]);
+      if (!more) {
+        told.push_back(error("agreement", more.message()));
+        return failed(std::move(told));
+      }
+      out.more_agreement.push_back(*more);
+      out.more_verdicts.push_back(img::judge(*more, t.format));
+    }
   }
   ir::Result<SinglePassRun> result(std::move(out));
   for (ir::Diagnostic& d : told) result.add(std::move(d));

@@ -238,6 +238,30 @@ bool check_constant_ranges(const RunRequest& req, RunDiagnostics& diags) {
   return ok;
 }
 
+// Each render target beyond oC0 needs a pixel program that writes its oC#: Vulkan leaves an
+// attachment without a fragment output undefined, and D3D9 writes nothing defined either.
+bool check_color_targets(const RunRequest& req, RunDiagnostics& diags) {
+  if (req.color_targets < 1 || req.color_targets > 4) {
+    diags.other.error({}, "targets",
+                      fmt::format("{} render targets: D3D9 has 1 to 4", req.color_targets));
+    return false;
+  }
+  for (uint32_t i = 1; i < req.color_targets; ++i) {
+    bool written = false;
+    if (req.ps)
+      for (const ir::Instruction& in : req.ps->code)
+        written =
+            written || (in.dst && in.dst->file == ir::RegFile::ColorOut && in.dst->index == i);
+    if (!written) {
+      diags.other.error({}, "targets",
+                        fmt::format("render target {} is asked for, but {} writes no oC{}", i,
+                                    req.ps ? "the pixel listing" : "a pass without one", i));
+      return false;
+    }
+  }
+  return true;
+}
+
 // prepare_pass's work: its checks report into the sink of the listing they point into.
 std::optional<Pass> prepare(const RunRequest& req, RunDiagnostics& diags) {
   if (!img::valid_size(req.width, req.height)) {
@@ -256,11 +280,14 @@ std::optional<Pass> prepare(const RunRequest& req, RunDiagnostics& diags) {
     diags.ps.error(req.ps->version_loc, "stage", "--ps expects a pixel listing (ps_1_1 .. ps_2_0)");
     ok = false;
   }
-  if (!ok || !check_indices(req, diags) || !check_constant_ranges(req, diags)) return std::nullopt;
+  if (!ok || !check_indices(req, diags) || !check_constant_ranges(req, diags) ||
+      !check_color_targets(req, diags))
+    return std::nullopt;
   pass.vertex_program = req.vs;
   pass.pixel_program = req.ps;
   pass.conventions = req.conventions;
   pass.front_face = req.front_face;
+  pass.color_targets = req.color_targets;
   if (req.vs) ok = build_constants(*req.vs, req.constants, pass.vs_constants, diags.vs) && ok;
   if (req.ps) ok = build_constants(*req.ps, req.constants, pass.ps_constants, diags.ps) && ok;
   ok = bind_textures(req, pass, diags) && ok;

@@ -40,8 +40,10 @@ inline constexpr std::string_view kSinglePassTarget = "target"; // the texture i
 // and triangles, or constant pixel inputs without a vertex listing), scissor, blend and
 // conventions. What a PassDesc does not describe is refused (rule "graph"): pre-transformed
 // vertices, fixed-function stages, a viewport other than the whole target, texture-stage
-// state, more than one colour target, a depth/stencil state, a SPIR-V pixel stage, the
-// scalar executor (a CPU device's own choice: CpuPassDevice).
+// state, a depth/stencil state, a SPIR-V pixel stage, the scalar executor (a CPU device's own
+// choice: CpuPassDevice). A pass with pass.color_targets = n > 1 (D3D9 MRT) draws oC1..oC(n−1)
+// into n − 1 more targets of the same size and format, named single_pass_target(1..n−1).
+std::string single_pass_target(uint32_t index); // 0: kSinglePassTarget; i: "target<i>"
 ir::Result<EffectGraph> single_pass_graph(const pass::Pass& pass, uint32_t width, uint32_t height,
                                           img::Format format);
 
@@ -51,6 +53,7 @@ struct SinglePassDraw {
   std::string device; // "cpu", "vulkan"
   img::Image image;
   pass::DrawReport report;
+  std::vector<img::Image> more_images; // oC1..oC(n−1) of a pass with n colour targets
 };
 
 struct SinglePassRun {
@@ -61,6 +64,9 @@ struct SinglePassRun {
   // the target's format.
   std::optional<img::Comparison> agreement;
   std::optional<img::Verdict> verdict;
+  // The same for oC1..oC(n−1) of a pass with n colour targets, one entry per target.
+  std::vector<img::Comparison> more_agreement;
+  std::vector<img::Verdict> more_verdicts;
 };
 
 // `graph` (single_pass_graph's) on each way `backends` asks for, then compared. The memory the

@@ -118,6 +118,8 @@ struct RunRequest {
   FrontFace front_face = FrontFace::Clockwise; // the winding vFace calls front
   std::vector<ProbePoint> probes;
   unsigned threads = 0; // CPU device: 0 = every core
+  // Render targets oC0..oC(n−1) (D3D9 MRT, 1..4), all of the request's size and format.
+  uint32_t color_targets = 1;
 };
 
 // Problems, kept apart by where their positions point: into the vertex listing's
