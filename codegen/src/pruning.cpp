@@ -143,8 +143,9 @@ std::optional<CompiledPair> compile_pair(const ir::Program& vs_listing,
         ir::add_all(diags, s.diagnostics());
         return std::nullopt;
       }
-  // Shader model 3 links by semantic: from here on both stages speak the 2.0 interface.
-  const ir::Program vs_linked = ir::link_by_semantic(vs_listing);
+  // Shader model 3 links by semantic: from here on both stages speak the 2.0 interface
+  // (a vs_2_0's oFog moved to where a ps_3_0 reads fog0 first).
+  const ir::Program vs_linked = ir::link_by_semantic(ir::feed_fog(vs_listing, ps_listing));
   const ir::Program ps_linked = ir::link_by_semantic(ps_listing);
   return compile_linked_pair(vs_linked, ps_linked, options, diags);
 }

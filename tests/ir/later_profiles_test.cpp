@@ -156,16 +156,22 @@ TEST(LaterProfiles, WhatDoesNotRunYetIsRefusedWithAPosition) {
       s.diagnostics()[0].message.find("not supported yet by SPIR-V: predicated texkill in ps_3_0"),
       std::string::npos);
   p.code.pop_back();
-  Declaration fog;
+  Declaration fog; // fog0 runs (an extra semantic, NUMERICS.md F6); psize0 is vertex-only
   fog.reg.file = RegFile::Input;
   fog.reg.index = 2;
   fog.usage = DeclUsage::Fog;
   fog.loc = {1, 5, 1, 4};
   p.decls.push_back(fog);
+  EXPECT_TRUE(check_executable(p, "the interpreter").ok());
+  Declaration psize = fog;
+  psize.reg.index = 3;
+  psize.usage = DeclUsage::PSize;
+  psize.loc = {1, 6, 1, 4};
+  p.decls.push_back(psize);
   s = check_executable(p, "the interpreter");
   ASSERT_FALSE(s.ok());
-  EXPECT_EQ(s.diagnostics()[0].loc.line, 5u);
-  EXPECT_NE(s.diagnostics()[0].message.find("the semantic fog0 in a pixel program"),
+  EXPECT_EQ(s.diagnostics()[0].loc.line, 6u);
+  EXPECT_NE(s.diagnostics()[0].message.find("the semantic psize0 in a pixel program"),
             std::string::npos);
 }
 
@@ -246,6 +252,44 @@ TEST(LaterProfiles, PairsWhoseExtraSemanticsLandApartAreRefused) {
   vs20.code[0].dst->index = 6;
   EXPECT_TRUE(
       check_semantic_pair(vs20, ps30({linked(RegFile::Input, 0, DeclUsage::Normal, 0, 2)})).ok());
+}
+
+// NUMERICS.md F6: fog0 rides in a free texcoord slot in both 3.0 stages (t6 here: t7 is
+// texcoord7's), and a vs_2_0's scalar oFog is moved into that slot, saturated.
+TEST(LaterProfiles, Fog0IsAnExtraSemanticAndAVs20FeedsItsOFog) {
+  const Program ps = ps30({linked(RegFile::Input, 2, DeclUsage::Fog, 0, 2),
+                           linked(RegFile::Input, 5, DeclUsage::TexCoord, 7, 3)});
+  ASSERT_TRUE(check_executable(ps, "SPIR-V").ok());
+  ASSERT_EQ(fog_slot(ps), std::optional<uint32_t>(6));
+  const Program l = link_by_semantic(ps);
+  EXPECT_EQ(l.decls[0].reg.file, RegFile::Texture);
+  EXPECT_EQ(l.decls[0].reg.index, 6u);
+  Program vs30;
+  vs30.profile = Profile::vs_3_0;
+  vs30.decls = {linked(RegFile::Output, 0, DeclUsage::Position, 0, 2),
+                linked(RegFile::Output, 4, DeclUsage::Fog, 0, 3),
+                linked(RegFile::Output, 1, DeclUsage::TexCoord, 7, 4)};
+  EXPECT_TRUE(check_semantic_pair(vs30, ps).ok());
+  const Program lv = link_by_semantic(vs30);
+  EXPECT_EQ(lv.decls[1].reg.file, RegFile::TexCrdOut);
+  EXPECT_EQ(lv.decls[1].reg.index, 6u);
+  EXPECT_EQ(feed_fog(vs30, ps).decls[1].reg.file, RegFile::Output); // 3.0: unchanged
+  Program vs20;
+  vs20.profile = Profile::vs_2_0;
+  Instruction mov;
+  mov.op = Opcode::Mov;
+  mov.dst = DstOperand{RegFile::RastOut, kRastFog, 0x1, {1, 2, 5, 4}};
+  vs20.code.push_back(mov);
+  EXPECT_TRUE(check_semantic_pair(vs20, ps).ok());
+  const Program fed = feed_fog(vs20, ps);
+  EXPECT_EQ(fed.code[0].dst->file, RegFile::TexCrdOut);
+  EXPECT_EQ(fed.code[0].dst->index, 6u);
+  EXPECT_EQ(fed.code[0].dst->mask, 0x1);
+  EXPECT_TRUE(fed.code[0].mods.sat);
+  // Without fog0 in the pixel program, oFog stays.
+  const Program no_fog = ps30({linked(RegFile::Input, 5, DeclUsage::TexCoord, 7, 3)});
+  EXPECT_FALSE(fog_slot(no_fog).has_value());
+  EXPECT_EQ(feed_fog(vs20, no_fog).code[0].dst->file, RegFile::RastOut);
 }
 
 // vs_3_0 may address v# and o# with aL; the devices do not run that yet (only c#).

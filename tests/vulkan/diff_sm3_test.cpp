@@ -244,6 +244,43 @@ TEST_F(VulkanTest, ExtraSemanticsLinkAcrossStages) {
         << m;
 }
 
+// NUMERICS.md F6: fog0 is a vector semantic in shader model 3, carried like any extra
+// semantic in a free texcoord slot and not clamped (bgfx's shadow volume shaders pass ±1 and
+// ±2 through it). Flat values, so the closed form is the constants.
+TEST_F(VulkanTest, Fog0LinksBySemanticUnclamped) {
+  const std::string vs = "vs_3_0\ndef c0, -1.5, 2.5, 7, 9\ndcl_position v0\ndcl_position o0\n"
+                         "dcl_fog o1.xy\nmov o0, v0\nmov o1.xy, c0\n";
+  const std::string ps = "ps_3_0\ndef c0, 0, 0, 0.5, 1\ndcl_fog v3.xy\nmov r0, c0\n"
+                         "mov r0.xy, v3\nmov oC0, r0\n";
+  DiffResult r = run_diff(*dev, vs, ps, DiffSetup{});
+  ASSERT_TRUE(r.ok);
+  EXPECT_EQ(r.diff.max_scaled, 0.0) << r.diff.first_bad;
+  for (const img::Image* im : {&r.cpu, &r.vk})
+    for (size_t p = 0; p < im->rgba.size() / 4; ++p) {
+      ASSERT_EQ(im->rgba[p * 4 + 0], -1.5f) << p;
+      ASSERT_EQ(im->rgba[p * 4 + 1], 2.5f) << p;
+      ASSERT_EQ(im->rgba[p * 4 + 2], 0.5f) << p;
+    }
+}
+
+// NUMERICS.md F6: a vs_2_0 before a ps_3_0 that reads fog0: the pixel program reads
+// (saturate(oFog), 0, 0, 0), as Direct3D 9 hands a 2.0 stage's fog to a 3.0 one.
+TEST_F(VulkanTest, Fog0ReadsTheScalarOfAVs20) {
+  const std::string ps = "ps_3_0\ndcl_fog v0\nmov oC0, v0\n";
+  for (const auto& [fog, want] : {std::pair{0.375f, 0.375f}, {1.75f, 1.0f}, {-2.0f, 0.0f}}) {
+    const std::string vs = "vs_2_0\ndef c0, " + std::to_string(fog) +
+                           ", 5, 6, 7\ndcl_position v0\nmov oPos, v0\nmov oFog, c0.x\n";
+    DiffResult r = run_diff(*dev, vs, ps, DiffSetup{});
+    ASSERT_TRUE(r.ok) << fog;
+    EXPECT_EQ(r.diff.max_scaled, 0.0) << r.diff.first_bad;
+    for (const img::Image* im : {&r.cpu, &r.vk})
+      for (size_t p = 0; p < im->rgba.size() / 4; ++p) {
+        ASSERT_EQ(im->rgba[p * 4 + 0], want) << fog << " pixel " << p;
+        for (int c = 1; c < 4; ++c) ASSERT_EQ(im->rgba[p * 4 + c], 0.0f) << fog << " pixel " << p;
+      }
+  }
+}
+
 // NUMERICS.md F12: without multisampling `_centroid` samples where a plain input does, the
 // pixel centre (a covered pixel's one sample), on both devices: the interpolated texcoord is
 // the same image bit for bit with and without it.

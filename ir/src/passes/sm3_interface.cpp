@@ -3,6 +3,7 @@
 #include "tierlift/ir/sm3_interface.h"
 
 #include <algorithm>
+#include <bit>
 #include <map>
 #include <vector>
 
@@ -32,9 +33,11 @@ using Renames = std::map<uint32_t, std::pair<RegFile, uint32_t>>;
 using Semantic = std::pair<DeclUsage, uint8_t>;
 
 // A semantic the 2.0 interface has no register for in either stage (normal, tangent,
-// binormal, blendweight, texcoord8, color2, ...): carried in a free texture-coordinate slot.
-// position0, psize0 and fog0 have a vertex register but no pixel one, so a pixel program
-// that reads them stays refused rather than taking a slot the vertex stage never fills.
+// binormal, blendweight, texcoord8, color2, fog0, ...): carried in a free texture-coordinate
+// slot. fog0 is one: shader model 3 makes it a vector like any other (a vs_3_0 may write
+// o1.xy as fog, unclamped), not the scalar oFog. position0 and psize0 have a vertex register
+// but no pixel one, so a pixel program that reads them stays refused rather than taking a
+// slot the vertex stage never fills.
 bool is_extra(DeclUsage usage, uint8_t usage_index) {
   return !semantic_register(ShaderStage::Vertex, usage, usage_index);
 }
@@ -123,9 +126,6 @@ std::optional<std::pair<RegFile, uint32_t>> semantic_register(ShaderStage stage,
   case DeclUsage::PSize:
     if (vertex && usage_index == 0) return std::pair{RegFile::RastOut, kRastPts};
     break;
-  case DeclUsage::Fog:
-    if (vertex && usage_index == 0) return std::pair{RegFile::RastOut, kRastFog};
-    break;
   case DeclUsage::Color:
     if (usage_index < 2)
       return std::pair{vertex ? RegFile::AttrOut : RegFile::Input, uint32_t{usage_index}};
@@ -161,7 +161,7 @@ void check_semantic_interface(const Program& program, std::string_view backend,
   for (const Declaration* d : place_extras(program, *file).unplaced)
     sink.error(d->loc, "not-supported",
                fmt::format("not supported yet by {}: the semantic {} (semantics beyond position0, "
-                           "psize0, fog0, color0-1 and texcoord0-7 ride in the texcoord slots the "
+                           "psize0, color0-1 and texcoord0-7 ride in the texcoord slots the "
                            "program leaves free, and none is left)",
                            backend, usage_text(d->usage, d->usage_index)));
 }
@@ -207,6 +207,35 @@ Program link_by_semantic(const Program& program) {
   for (Instruction& ins : out.code) {
     if (ins.dst) rename(ins.dst->file, ins.dst->index);
     for (SrcOperand& s : ins.src) rename(s.file, s.index);
+  }
+  return out;
+}
+
+std::optional<uint32_t> fog_slot(const Program& pixel) {
+  if (pixel.profile != Profile::ps_3_0) return std::nullopt;
+  const Placement placed = place_extras(pixel, RegFile::Input);
+  const auto it = placed.slot.find(Semantic{DeclUsage::Fog, 0});
+  if (it == placed.slot.end()) return std::nullopt;
+  return it->second;
+}
+
+Program feed_fog(const Program& vertex, const Program& pixel) {
+  const std::optional<uint32_t> slot = fog_slot(pixel);
+  if (!slot || vertex.stage() != ShaderStage::Vertex || linked_file(vertex.profile)) return vertex;
+  Program out = vertex;
+  for (Instruction& ins : out.code) {
+    if (!ins.dst || ins.dst->file != RegFile::RastOut || ins.dst->index != kRastFog) continue;
+    // Fog is the lowest component written (`mov oFog, r0.x` writes all four, `oFog.y` one);
+    // it goes to .x, the others stay 0. A component-wise source reads that component there.
+    const int c = std::countr_zero(static_cast<unsigned>(ins.dst->mask | 0x10)) & 3;
+    for (SrcOperand& src : ins.src)
+      src.swizzle =
+          make_swizzle(swizzle_component(src.swizzle, c), swizzle_component(src.swizzle, 1),
+                       swizzle_component(src.swizzle, 2), swizzle_component(src.swizzle, 3));
+    ins.dst->file = RegFile::TexCrdOut;
+    ins.dst->index = *slot;
+    ins.dst->mask = 0x1;
+    ins.mods.sat = true; // oFog leaves the vertex stage saturated (NUMERICS.md F6)
   }
   return out;
 }

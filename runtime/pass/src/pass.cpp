@@ -32,6 +32,12 @@ ir::Status check_supported(const Pass& pass, const Capabilities& caps, std::stri
   return ir::ok_status();
 }
 
+std::optional<ir::Program> fed_vertex_program(const Pass& pass) {
+  if (!pass.vertex_program || !pass.pixel_program || !ir::fog_slot(*pass.pixel_program))
+    return std::nullopt;
+  return ir::feed_fog(*pass.vertex_program, *pass.pixel_program);
+}
+
 uint32_t position_input(const ir::Program& vertex_program) {
   for (const ir::Declaration& d : vertex_program.decls)
     if (d.reg.file == ir::RegFile::Input && d.usage == ir::DeclUsage::Position &&

@@ -7,7 +7,9 @@
 // vs_2_0 with ps_3_0 and vs_3_0 with ps_2_0 alike (docs/spirv-mapping.md). A semantic the
 // 2.0 interface has no register for (normal0, tangent0, texcoord9, color2, ...) rides in a
 // texture-coordinate slot the program leaves free: the extra semantics in (usage, index)
-// order take t7, t6, ... skipping the program's own texcoordN (NUMERICS.md F6).
+// order take t7, t6, ... skipping the program's own texcoordN (NUMERICS.md F6). fog0 is
+// such a semantic in shader model 3 (a vector, unclamped); a vertex program before 3.0
+// writes the scalar oFog, which feed_fog moves into the slot a ps_3_0 reads fog0 from.
 #pragma once
 
 #include <optional>
@@ -19,14 +21,14 @@
 
 namespace tierlift::ir {
 
-// The 2.0 register of a declared semantic: position0 → oPos, psize0 → oPts, fog0 → oFog,
-// colorN (N < 2) → oD N / v N, texcoordN (N < 8) → oT N / t N. nullopt for any other
-// semantic (normal, tangent, texcoord8, ...), which the 2.0 interface has no place for.
+// The 2.0 register of a declared semantic: position0 → oPos, psize0 → oPts, colorN (N < 2)
+// → oD N / v N, texcoordN (N < 8) → oT N / t N. nullopt for any other semantic (fog0,
+// normal, tangent, texcoord8, ...), which then rides in a free texcoord slot.
 std::optional<std::pair<RegFile, uint32_t>> semantic_register(ShaderStage stage, DeclUsage usage,
                                                               uint8_t usage_index);
 
 // Errors (rule "not-supported", at the declaration) for what the renaming cannot carry: a
-// pixel program's position0/psize0/fog0 (vertex outputs only), an extra semantic with no
+// pixel program's position0/psize0 (vertex outputs only), an extra semantic with no
 // free slot left, two declarations on one register. Adds nothing for a
 // program of another profile. (o#/v# addressed relatively are refused by
 // ir::check_executable, as every relative operand but c#.)
@@ -43,5 +45,16 @@ Status check_semantic_pair(const Program& vertex, const Program& pixel);
 // renamed to its semantic_register or, for an extra semantic, its texcoord slot. Programs of other
 // profiles come back unchanged. Call only on a program check_semantic_interface accepts.
 Program link_by_semantic(const Program& program);
+
+// The texcoord slot a ps_3_0 reads fog0 from (where link_by_semantic puts it); nullopt when
+// it declares no fog0 or is of another profile.
+std::optional<uint32_t> fog_slot(const Program& pixel);
+
+// Direct3D 9 pairs a vertex program before 3.0 with a ps_3_0 that reads fog0: the pixel
+// program sees (oFog, 0, 0, 0). The vertex program comes back with its oFog writes moved to
+// the pixel program's fog0 slot (saturated, as oFog leaves the stage; the other components
+// stay 0, every register's start value). Any other pair comes back unchanged. Both devices
+// run the vertex program through this before linking the pair.
+Program feed_fog(const Program& vertex, const Program& pixel);
 
 } // namespace tierlift::ir

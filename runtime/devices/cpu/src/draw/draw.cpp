@@ -181,8 +181,10 @@ ir::Result<DrawStats> draw(const Pass& pass, const DrawTargets& targets, unsigne
     return draw_failure(std::move(why));
 
   PassPrograms vms;
-  for (const auto& [program, vm] : {std::pair{pass.vertex_program.get(), &vms.vs},
-                                    std::pair{pass.pixel_program.get(), &vms.ps}}) {
+  const std::optional<ir::Program> fed = pass::fed_vertex_program(pass);
+  const ir::Program* vertex_program = fed ? &*fed : pass.vertex_program.get();
+  for (const auto& [program, vm] :
+       {std::pair{vertex_program, &vms.vs}, std::pair{pass.pixel_program.get(), &vms.ps}}) {
     if (!program) continue;
     ir::Result<ShaderVM> made = ShaderVM::create(*program, pass.conventions);
     if (!made) return draw_failure("the shader VM refused the program: " + made.message());

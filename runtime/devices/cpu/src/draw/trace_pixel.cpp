@@ -41,7 +41,9 @@ ir::Result<PixelTrace> trace_pixel(const Pass& pass, uint32_t width, uint32_t he
         fmt::format("pixel {},{} lies outside the {}x{} target", x, y, width, height));
   std::optional<ShaderVM> vs;
   if (pass.vertex_program) {
-    ir::Result<ShaderVM> made = ShaderVM::create(*pass.vertex_program, pass.conventions);
+    const std::optional<ir::Program> fed = pass::fed_vertex_program(pass);
+    ir::Result<ShaderVM> made =
+        ShaderVM::create(fed ? *fed : *pass.vertex_program, pass.conventions);
     if (!made) return trace_failure("the shader VM refused the program: " + made.message());
     vs.emplace(std::move(*made));
   }

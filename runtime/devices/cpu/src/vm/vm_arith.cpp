@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "tierlift/ir/numerics.h"
+#include "tierlift/rounding/rounding.h"
 #include "vm_internal.h"
 
 namespace tierlift::cpu::vm {
@@ -136,10 +137,14 @@ VM_OP(op_nrm) {
 }
 
 // sincos (both forms: 2.0's constants are not read): d.x = cos, d.y = sin; the mask was
-// limited to .xy at preparation.
+// limited to .xy at preparation. Flushing denormals is Rounding::Llvmpipe, whose sine and
+// cosine are lavapipe's polynomial; Exact's are the correctly rounded ones (rule 39).
 VM_OP(op_sincos) {
-  float a = sc(s[0]);
-  d = {num::legacy_cos<D>(a), num::legacy_sin<D>(a), 0.0f, 0.0f};
+  const float a = sc(s[0]);
+  if constexpr (D == Denormals::Keep)
+    d = {rounding::cos_exact(a), rounding::sin_exact(a), 0.0f, 0.0f};
+  else
+    d = {rounding::cos_llvmpipe(a), rounding::sin_llvmpipe(a), 0.0f, 0.0f};
 }
 
 VM_OP(op_dp2add) {

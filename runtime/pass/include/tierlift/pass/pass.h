@@ -204,6 +204,11 @@ struct Capabilities {
 // device with `caps` that it cannot do; ok otherwise.
 ir::Status check_supported(const Pass& pass, const Capabilities& caps, std::string_view device);
 
+// The vertex program as the pass's pixel program reads it: a vs_1_x/2_x's oFog moved to the
+// slot a ps_3_0 reads fog0 from (ir::feed_fog, NUMERICS.md F6). nullopt when the pass's own
+// vertex program serves unchanged (or there is none).
+std::optional<ir::Program> fed_vertex_program(const Pass& pass);
+
 // The quad's vertex inputs, one rule for every caller (tierlift run, the effect graph, the
 // devices' tests). D3D9 feeds the position to the input declared dcl_position with usage
 // index 0 (v0 when the listing declares no position, D3D8 style); the quad's uv goes to

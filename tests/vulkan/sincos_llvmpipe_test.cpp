@@ -1,0 +1,109 @@
+// NUMERICS.md rule 39, measured: lavapipe's sine and cosine (GLSL.std.450 Sin and Cos, which
+// `sincos` becomes) against rounding::sin_llvmpipe / cos_llvmpipe, bit for bit, over 102,400
+// arguments: the sincos range [−π, π], the octant boundaries k·π/4 and their neighbours,
+// arguments up to 1e4 and log-spread magnitudes up to FLT_MAX (where the reduction's octant
+// overflows int32), denormals, ±0, ±inf and NaN. The CPU device under Rounding::Llvmpipe
+// must store the same bits; under Rounding::Exact it must not (the sweep reaches the cases
+// where the two sines part).
+#include <bit>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "tierlift/rounding/rounding.h"
+#include "vk_test_util.h"
+
+namespace tierlift::vulkan::test {
+namespace {
+
+constexpr uint32_t kW = 320, kH = 320; // one argument per pixel
+
+std::vector<float> arguments() {
+  std::vector<float> a;
+  const float inf = std::numeric_limits<float>::infinity();
+  for (float v : {0.0f, -0.0f, 1e-40f, -1e-40f, std::numeric_limits<float>::min(), inf, -inf,
+                  std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::max(),
+                  -std::numeric_limits<float>::max(), 1e30f, -1e30f, 65504.0f, 2.0e9f, 3.0e9f})
+    a.push_back(v);
+  for (int k = -64; k <= 64; ++k) { // octant boundaries and the floats around them
+    float b = static_cast<float>(k * std::numbers::pi / 4);
+    for (int s = 0; s < 4; ++s) {
+      a.push_back(b);
+      a.push_back(-b);
+      b = std::nextafter(b, inf);
+    }
+  }
+  uint64_t state = 39;
+  auto unit = [&] { return static_cast<double>(img::unit_float24(img::splitmix64(state))); };
+  const size_t n = size_t{kW} * kH;
+  while (a.size() < n / 2) a.push_back(static_cast<float>((2 * unit() - 1) * std::numbers::pi));
+  while (a.size() < 3 * n / 4) a.push_back(static_cast<float>((2 * unit() - 1) * 1e4));
+  while (a.size() < n) { // |a| from 2^-30 to 2^127, both signs
+    const double m = std::exp2(-30 + 157 * unit());
+    a.push_back(static_cast<float>(unit() < 0.5 ? -m : m));
+  }
+  return a;
+}
+
+bool same_bits(float x, float y) {
+  return std::bit_cast<uint32_t>(x) == std::bit_cast<uint32_t>(y) || (x != x && y != y);
+}
+
+TEST_F(VulkanTest, SincosMatchesTheLlvmpipeModelBitForBit) {
+  if (dev->name().find("llvmpipe") == std::string::npos)
+    GTEST_SKIP() << "the rule models lavapipe; device is " << dev->name();
+  const std::vector<float> args = arguments();
+  auto tex = std::make_shared<img::Image>(kW, kH, img::Format::RGBA32F);
+  for (size_t i = 0; i < args.size(); ++i) tex->rgba[4 * i] = args[i];
+  cpu::Pass pass;
+  pass.vertex_program = parse_listing("vs_3_0\ndcl_position v0\ndcl_texcoord v3\n"
+                                      "dcl_position o0\ndcl_texcoord o1\nmov o0, v0\nmov o1, v3\n",
+                                      "sincos.vsh");
+  pass.pixel_program =
+      parse_listing("ps_3_0\ndef c0, 0, 0, 0, 1\ndcl_texcoord v0\ndcl_2d s0\ntexld r0, v0, s0\n"
+                    "mov r1, c0\nsincos r1.xy, r0.x\nmov r1.z, r0.x\nmov oC0, r1\n",
+                    "sincos.psh");
+  ASSERT_TRUE(pass.vertex_program && pass.pixel_program);
+  pass.textures[0].image = tex;
+  pass.textures[0].sampler.filter = cpu::Filter::Point;
+  pass.textures[0].sampler.address_u = pass.textures[0].sampler.address_v = cpu::AddressMode::Clamp;
+  cpu::set_full_screen_quad(pass, 0);
+  for (size_t k = 0; k < pass.vertices.size(); ++k) pass.vertices[k].v[3] = cpu::kQuadUV[k];
+  pass.conventions.pixel_center = ir::PixelCenter::Modern; // pixel i reads texel i
+  img::Image vk(kW, kH, img::Format::RGBA32F), cpu_llvmpipe = vk, cpu_exact = vk;
+  ir::Result<pass::DrawReport> r = dev->draw(pass, vk);
+  ASSERT_TRUE(r.ok()) << r.message();
+  ASSERT_TRUE(cpu::draw(pass, cpu_llvmpipe, 2).ok());
+  cpu::Pass exact = pass;
+  exact.conventions.rounding = ir::Rounding::Exact;
+  ASSERT_TRUE(cpu::draw(exact, cpu_exact, 2).ok());
+
+  size_t model_off = 0, cpu_off = 0, exact_off = 0;
+  for (size_t i = 0; i < args.size(); ++i) {
+    const float* px = &vk.rgba[4 * i];
+    ASSERT_TRUE(same_bits(px[2], args[i])) << "pixel " << i << " read another texel";
+    const float want_cos = rounding::cos_llvmpipe(args[i]);
+    const float want_sin = rounding::sin_llvmpipe(args[i]);
+    if (!same_bits(px[0], want_cos) || !same_bits(px[1], want_sin)) {
+      if (model_off++ < 8)
+        ADD_FAILURE() << fmt::format("sincos({:a}): lavapipe ({:a}, {:a}), model ({:a}, {:a})",
+                                     args[i], px[0], px[1], want_cos, want_sin);
+    }
+    for (int c = 0; c < 2; ++c) {
+      cpu_off += !same_bits(cpu_llvmpipe.rgba[4 * i + c], px[c]);
+      exact_off += !same_bits(cpu_exact.rgba[4 * i + c], px[c]);
+    }
+  }
+  EXPECT_EQ(model_off, 0u);
+  EXPECT_EQ(cpu_off, 0u);
+  EXPECT_GT(exact_off, 1000u);
+  std::printf("[vk-agreement] sincos over %zu arguments: the llvmpipe model and the CPU device "
+              "match lavapipe in every bit; the exact rule differs in %zu of %zu values\n",
+              args.size(), exact_off, 2 * args.size());
+}
+
+} // namespace
+} // namespace tierlift::vulkan::test
