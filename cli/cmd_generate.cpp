@@ -29,15 +29,9 @@ std::string file_name(const GenerateOpts& o, ir::Profile p, std::size_t index) {
 
 int run_generate(const GenerateOpts& o) {
   Report report("generate", o.json);
-  const std::optional<ir::Profile> profile = ir::parse_profile(o.profile);
+  const ir::Result<ir::Profile> profile = gen::generated_profile(o.profile);
   if (!profile) {
-    report.error("usage", fmt::format("unknown profile '{}'", o.profile));
-    return report.finish(kExitUsage);
-  }
-  if (!gen::generates(*profile)) {
-    report.error("usage", fmt::format("the generator does not write {} programs (it writes "
-                                      "vs_1_1, vs_2_0, ps_1_1 ... ps_1_4, ps_2_0)",
-                                      o.profile));
+    report.error("usage", profile.message());
     return report.finish(kExitUsage);
   }
   std::error_code ec;
@@ -49,7 +43,12 @@ int run_generate(const GenerateOpts& o) {
   gen::Coverage coverage;
   nlohmann::json files = nlohmann::json::array();
   for (std::size_t i = o.first; i < o.first + o.count; ++i) {
-    const std::string text = gen::generate_listing(o.profile, o.seed, i);
+    ir::Result<std::string> listing = gen::generate_listing(o.profile, o.seed, i);
+    if (!listing) { // not expected: the profile was checked above
+      report.error("usage", listing.message());
+      return report.finish(kExitUsage);
+    }
+    const std::string& text = *listing;
     const std::string path = (std::filesystem::path(o.output) / file_name(o, *profile, i)).string();
     if (std::string error = write_output(path, text); !error.empty()) {
       report.error("io", error, path);

@@ -124,11 +124,9 @@ ir::Result<std::vector<corpus::Case>> gather(const TestFlags& f) {
       for (size_t i = 0; i < f.generate; ++i) {
         corpus::Case c;
         c.generated = true;
-        try {
-          c.text = gen::generate_listing(profile, f.seed, i, options);
-        } catch (const std::invalid_argument& e) {
-          return ir::fail("--profile", "usage", e.what());
-        }
+        ir::Result<std::string> text = gen::generate_listing(profile, f.seed, i, options);
+        if (!text) return std::move(text).failure();
+        c.text = std::move(*text);
         c.gen_profile = profile;
         c.gen_seed = f.seed;
         c.gen_index = i;

@@ -7,6 +7,8 @@
 // call/callnz → OpFunctionCall. ps_1_4 phase needs no code.
 #include <algorithm>
 
+#include <fmt/format.h>
+
 #include "tierlift/codegen/emitter.h"
 
 namespace tierlift::codegen {
@@ -169,7 +171,9 @@ bool Emitter::end_if(const ir::Instruction& ins) {
 bool Emitter::leave_loop(const ir::Instruction& ins, Id cond) {
   FlowFrame* loop = innermost_loop();
   if (!loop) {
-    error(ins.loc, "'" + std::string(ir::op_info(ins.op).mnemonic) + "' outside a loop");
+    // fmt::format, not "'" + std::string(…): GCC 12 -O3 reports a false -Wrestrict in the
+    // inlined concatenation (GCC bug 105651), which fails a Release build under -Werror.
+    error(ins.loc, fmt::format("'{}' outside a loop", ir::op_info(ins.op).mnemonic));
     return false;
   }
   const Id out = loop->merge;

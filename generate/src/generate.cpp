@@ -1,5 +1,4 @@
 // generate_listing: the profile's sections in order, then the printed program.
-#include <stdexcept>
 #include <string>
 
 #include "builder.h"
@@ -21,15 +20,23 @@ bool generates(ir::Profile p) {
   }
 }
 
-std::string generate_listing(std::string_view profile_name, std::uint64_t seed, std::size_t index,
-                             const GenerateOptions& options) {
-  const std::optional<ir::Profile> profile = ir::parse_profile(profile_name);
-  if (!profile) throw std::invalid_argument("unknown profile '" + std::string(profile_name) + "'");
+ir::Result<ir::Profile> generated_profile(std::string_view name) {
+  const std::optional<ir::Profile> profile = ir::parse_profile(name);
+  if (!profile)
+    return ir::fail("--profile", "usage", "unknown profile '" + std::string(name) + "'");
   // The profiles whose shapes (output rules, declarations) the builder knows: listings of
   // ps_2_x or vs_3_0 from it would not validate (no oC0 write, no dcl of oPos).
   if (!generates(*profile))
-    throw std::invalid_argument("the generator does not write " + std::string(profile_name) +
-                                " programs (it writes vs_1_1, vs_2_0, ps_1_1 ... ps_1_4, ps_2_0)");
+    return ir::fail("--profile", "usage",
+                    "the generator does not write " + std::string(name) +
+                        " programs (it writes vs_1_1, vs_2_0, ps_1_1 ... ps_1_4, ps_2_0)");
+  return *profile;
+}
+
+ir::Result<std::string> generate_listing(std::string_view profile_name, std::uint64_t seed,
+                                         std::size_t index, const GenerateOptions& options) {
+  const ir::Result<ir::Profile> profile = generated_profile(profile_name);
+  if (!profile) return profile.failure();
   // One stream per (profile, seed, index): listing k does not depend on listings before it.
   detail::Rng mix(seed ^ (0x9E3779B97F4A7C15ull * (index + 1)) ^
                   (std::uint64_t(ir::profile_index(*profile)) << 56));
@@ -62,7 +69,8 @@ std::string generate_listing(std::string_view profile_name, std::uint64_t seed, 
   return as::print_program(b.finish());
 }
 
-std::string generate_listing(std::string_view profile, std::uint64_t seed, std::size_t index) {
+ir::Result<std::string> generate_listing(std::string_view profile, std::uint64_t seed,
+                                         std::size_t index) {
   return generate_listing(profile, seed, index, GenerateOptions{});
 }
 

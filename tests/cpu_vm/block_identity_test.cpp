@@ -106,7 +106,7 @@ bool compare(const ir::Program& program, const ir::Conventions& conv, int rounds
   for (int i = 0; i < 32; ++i) bank.f.push_back(rnd.vec());
   std::unique_ptr<PixelBlockVM> block = PixelBlockVM::create(program, conv, bank);
   if (!block) return false;
-  ShaderVM vm(program, conv);
+  ShaderVM vm = vm_of(program, conv);
   MixTextures mix;
   DenormalTextures tiny;
   const TextureUnit& tex = denormals ? static_cast<const TextureUnit&>(tiny) : mix;

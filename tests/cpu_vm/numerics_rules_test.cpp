@@ -371,7 +371,7 @@ TEST(Numerics, PhaseAlphaReadsZero) {
   auto prog = parse("ps_1_4\ndef c0, 0.25, 0.5, 0.75, 1\nmov r1, c0\nphase\nmov r0.rgb, r1\n");
   ASSERT_EQ(prog.code.size(), 3u);
   prog.code[2].dst->mask = 0xF;
-  ShaderVM vm(prog, {});
+  ShaderVM vm = vm_of(prog, {});
   EXPECT_VEC4(run_ps(vm).color[0], 0.25f, 0.5f, 0.75f, 0.0f);
 }
 

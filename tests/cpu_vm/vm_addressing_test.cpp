@@ -18,23 +18,23 @@ TEST(VmAddressing, RelativeReadSeesListingDefs) {
   // def c6 overrides the API value; c[a0.x + 4] with a0.x = 2 reads the def.
   ConstantBank c = bank({{2, 0, 0, 0}});
   c.f.resize(8, Vec4{9, 9, 9, 9});
-  ShaderVM vm(parse("vs_1_1\ndef c6, 0.5, 0.25, 0.125, 1\ndcl_position v0\nmov oPos, v0\n"
-                    "mov r0, c0\nmov a0.x, r0.x\nmov oT0, c[a0.x + 4]\n"),
-              {});
+  ShaderVM vm = vm_of(parse("vs_1_1\ndef c6, 0.5, 0.25, 0.125, 1\ndcl_position v0\nmov oPos, v0\n"
+                            "mov r0, c0\nmov a0.x, r0.x\nmov oT0, c[a0.x + 4]\n"),
+                      {});
   EXPECT_VEC4(vm.run_vertex({}, c).tex[0], 0.5f, 0.25f, 0.125f, 1);
 }
 
 TEST(VmAddressing, MissingApiConstantsReadZero) {
   // c7 is beyond the bank's size → (0, 0, 0, 0).
-  ShaderVM vm(parse("vs_1_1\ndcl_position v0\nmov oPos, v0\nmov oT0, c7\n"), {});
+  ShaderVM vm = vm_of(parse("vs_1_1\ndcl_position v0\nmov oPos, v0\nmov oT0, c7\n"), {});
   EXPECT_VEC4(vm.run_vertex({}, bank({{1, 1, 1, 1}})).tex[0], 0, 0, 0, 0);
 }
 
 TEST(VmAddressing, VertexOutputsAndWrittenMasks) {
   // oPos = v0, oD1 = c0, oT0/oT1 written, oFog = c0.y, oPts = c0.z.
-  ShaderVM vm(parse("vs_1_1\ndcl_position v0\ndcl_texcoord v1\nmov oPos, v0\nmov oD1, c0\n"
-                    "mov oT0, v1\nmov oT1, c0\nmov oFog, c0.y\nmov oPts, c0.z\n"),
-              {});
+  ShaderVM vm = vm_of(parse("vs_1_1\ndcl_position v0\ndcl_texcoord v1\nmov oPos, v0\nmov oD1, c0\n"
+                            "mov oT0, v1\nmov oT1, c0\nmov oFog, c0.y\nmov oPts, c0.z\n"),
+                      {});
   VertexInput in;
   in.v[0] = {1, 2, 3, 1};
   in.v[1] = {0.5f, 0.25f, 0, 1};
@@ -50,13 +50,14 @@ TEST(VmAddressing, VertexOutputsAndWrittenMasks) {
 
 TEST(VmAddressing, MissingStreamComponentsReadZeroZeroZeroOne) {
   // VertexInput defaults every v# to (0, 0, 0, 1).
-  ShaderVM vm(parse("vs_1_1\ndcl_position v0\ndcl_normal v3\nmov oPos, v0\nmov oT0, v3\n"), {});
+  ShaderVM vm =
+      vm_of(parse("vs_1_1\ndcl_position v0\ndcl_normal v3\nmov oPos, v0\nmov oT0, v3\n"), {});
   EXPECT_VEC4(vm.run_vertex({}, {}).tex[0], 0, 0, 0, 1);
 }
 
 TEST(VmAddressing, LastDefWins) {
-  ShaderVM vm(parse("vs_1_1\ndef c0, 1, 1, 1, 1\ndef c0, 2, 2, 2, 2\ndcl_position v0\n"
-                    "mov oPos, v0\nmov oT0, c0\n"),
-              {});
+  ShaderVM vm = vm_of(parse("vs_1_1\ndef c0, 1, 1, 1, 1\ndef c0, 2, 2, 2, 2\ndcl_position v0\n"
+                            "mov oPos, v0\nmov oT0, c0\n"),
+                      {});
   EXPECT_VEC4(vm.run_vertex({}, bank({{5, 5, 5, 5}})).tex[0], 2, 2, 2, 2);
 }

@@ -55,7 +55,7 @@ TEST(VmArith, ScalarReadsFourthSwizzleSlot) {
   auto prog = parse("vs_2_0\ndcl_position v0\nmov oPos, v0\nrcp oT0, c0.x\n");
   ASSERT_EQ(prog.code.size(), 2u);
   prog.code[1].src[0].swizzle = tierlift::ir::kIdentitySwizzle;
-  ShaderVM vm(prog, {});
+  ShaderVM vm = vm_of(prog, {});
   EXPECT_EQ(vm.run_vertex({}, bank({{2, 4, 8, 16}})).tex[0][0], 0.0625f);
 }
 
@@ -118,7 +118,7 @@ TEST(VmArith, MatrixMacroReadsBeforeWrite) {
   ASSERT_EQ(prog.code.size(), 5u);
   prog.code[3].dst->index = 0;
   prog.code[4].src[0].index = 0;
-  ShaderVM vm(prog, {});
+  ShaderVM vm = vm_of(prog, {});
   auto c = bank({{1, 2, 3, 4}, {}, {}, {}, {1, 0, 0, 0}, {0, 2, 0, 0}, {1, 1, 1, 0}});
   EXPECT_VEC4(vm.run_vertex({}, c).tex[0], 1, 4, 6, 4);
 }
@@ -159,7 +159,7 @@ TEST(VmArith, SinCos) {
                    "dcl_position v0\nmov oPos, v0\nmov r0, c0\nmov r2, c2\n" + body;
   // docs/d3d9-rules.md §5.1 requires two different c# for sincos; the validator currently
   // reports them as a read-port violation, so this listing skips it (see the report).
-  ShaderVM vm(parse(prog_text, false), {});
+  ShaderVM vm = vm_of(parse(prog_text, false), {});
   auto o = vm.run_vertex({}, bank({{1.5707963f, 0, 0, 0}, {}, {10, 20, 30, 40}}));
   EXPECT_NEAR(o.tex[0][0], 0.0f, 1e-6);
   EXPECT_NEAR(o.tex[0][1], 1.0f, 1e-6);

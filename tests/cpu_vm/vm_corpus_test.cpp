@@ -1,5 +1,5 @@
 // Every listing of the shared corpus and of listings/ that parses and validates must also
-// prepare (no std::invalid_argument) and run once on neutral inputs without crashing.
+// prepare (ShaderVM::create succeeds) and run once on neutral inputs without crashing.
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -24,7 +24,7 @@ void run_folder(const fs::path& dir, int& ran) {
     tierlift::ir::DiagnosticSink d;
     if (!tierlift::as::validate(*r.program, d)) continue;
     SCOPED_TRACE(e.path().string());
-    ShaderVM vm(*r.program, {});
+    ShaderVM vm = vm_of(*r.program, {});
     ConstantBank c;
     c.f.assign(256, Vec4{0.5f, 0.5f, 0.5f, 0.5f});
     if (r.program->stage() == tierlift::ir::ShaderStage::Vertex) {

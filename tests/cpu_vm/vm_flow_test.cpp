@@ -8,7 +8,7 @@ namespace {
 const char* kHead = "vs_2_0\ndcl_position v0\nmov oPos, v0\n";
 
 VertexOutput run(const std::string& body, const ConstantBank& c) {
-  ShaderVM vm(parse(std::string(kHead) + body), {});
+  ShaderVM vm = vm_of(parse(std::string(kHead) + body), {});
   return vm.run_vertex({}, c);
 }
 } // namespace
@@ -17,10 +17,11 @@ TEST(VmFlow, LoopStepsAl) {
   // defi i0 = (3, 2, 2, 0): aL = 2, 4, 6 → r4 = c0 + c2 + c4 + c6 = 0 + 1 + 10 + 100 = 111
   // (c8 = 1000 must not be read).
   const ConstantBank c = splats(10, {{2, 1}, {4, 10}, {6, 100}, {8, 1000}});
-  ShaderVM vm(parse(std::string("vs_2_0\ndefi i0, 3, 2, 2, 0\ndcl_position v0\nmov oPos, v0\n"
-                                "mov r4, c0\nloop aL, i0\nadd r4, r4, c[aL]\nendloop\n"
-                                "mov oT0, r4\n")),
-              {});
+  ShaderVM vm =
+      vm_of(parse(std::string("vs_2_0\ndefi i0, 3, 2, 2, 0\ndcl_position v0\nmov oPos, v0\n"
+                              "mov r4, c0\nloop aL, i0\nadd r4, r4, c[aL]\nendloop\n"
+                              "mov oT0, r4\n")),
+            {});
   EXPECT_VEC4(vm.run_vertex({}, c).tex[0], 111, 111, 111, 111);
 }
 
@@ -73,9 +74,9 @@ TEST(VmFlow, IfWithoutElseAndDefb) {
   // defb b2 = false overrides the API value true: the block is skipped → r4 stays c0 = 1.
   ConstantBank c = bank({{1, 1, 1, 1}, {5, 5, 5, 5}});
   c.b[2] = true;
-  ShaderVM vm(parse("vs_2_0\ndefb b2, false\ndcl_position v0\nmov oPos, v0\nmov r4, c0\n"
-                    "if b2\nmov r4, c1\nendif\nmov oT0, r4\n"),
-              {});
+  ShaderVM vm = vm_of(parse("vs_2_0\ndefb b2, false\ndcl_position v0\nmov oPos, v0\nmov r4, c0\n"
+                            "if b2\nmov r4, c1\nendif\nmov oT0, r4\n"),
+                      {});
   EXPECT_EQ(vm.run_vertex({}, c).tex[0][0], 1.0f);
 }
 
@@ -107,7 +108,10 @@ TEST(VmFlow, UnmatchedFlowIsRejectedAtConstruction) {
   auto prog = parse(std::string(kHead) + "rep i0\nmov oT0, c0\nendrep\n");
   ASSERT_EQ(prog.code.size(), 4u);
   prog.code.erase(prog.code.begin() + 1); // drop the rep: endrep is unmatched
-  EXPECT_THROW(ShaderVM(prog, {}), std::invalid_argument);
+  const tierlift::ir::Result<ShaderVM> vm = ShaderVM::create(prog, {});
+  ASSERT_FALSE(vm);
+  EXPECT_EQ(vm.diagnostics().front().rule, "vm");
+  EXPECT_NE(vm.message().find("unmatched end of loop"), std::string::npos) << vm.message();
 }
 
 TEST(VmFlow, BrokenProgramCannotHang) {
@@ -117,10 +121,11 @@ TEST(VmFlow, BrokenProgramCannotHang) {
   // out), and oT0 is written after the loops.
   ConstantBank c = bank({{0, 0, 0, 0}, {1, 1, 1, 1}});
   c.i[0] = {255, 0, 0, 0};
-  ShaderVM vm(parse(std::string(kHead) + "mov r4, c0\nrep i0\nrep i0\nrep i0\nadd r4, r4, c1\n"
-                                         "endrep\nendrep\nendrep\nmov oT0, r4\n",
-                    false),
-              {});
+  ShaderVM vm =
+      vm_of(parse(std::string(kHead) + "mov r4, c0\nrep i0\nrep i0\nrep i0\nadd r4, r4, c1\n"
+                                       "endrep\nendrep\nendrep\nmov oT0, r4\n",
+                  false),
+            {});
   auto o = vm.run_vertex({}, c);
   EXPECT_EQ(o.tex[0][0], 64242.0f);
 }

@@ -20,7 +20,7 @@ std::string read_listing(const char* name) {
 
 TEST(VmListings, Listing3OffsetsTheTexcoord) {
   // oTi = v3 + ci: v3 = (0.5, 0.5, 0, 1); c0..c3 = (±1/64, 0) offsets.
-  ShaderVM vm(parse(read_listing("listing3_blur4_coords.vsh")), {});
+  ShaderVM vm = vm_of(parse(read_listing("listing3_blur4_coords.vsh")), {});
   VertexInput in;
   in.v[0] = {-1, 1, 0, 1};
   in.v[3] = {0.5f, 0.5f, 0, 1};
@@ -39,7 +39,7 @@ TEST(VmListings, Listing4WeightedSumClampsWeights) {
   // ps.1.3: r0 = Σ ti·ci with ti = TCi (echo). Weights c = 0.25 each; TCi.x = 0.5, 0.25,
   // 1, 0.75 → r0.x = 0.25·(0.5 + 0.25 + 1 + 0.75) = 0.625. A weight of 2 reads as 1
   // (constant clamp): with c0 = 2 → 0.5·1 + 0.25·(0.25 + 1 + 0.75) = 1.0.
-  ShaderVM vm(parse(read_listing("listing4_blur4_weighted_sum.psh")), {});
+  ShaderVM vm = vm_of(parse(read_listing("listing4_blur4_weighted_sum.psh")), {});
   EchoTextures tex;
   PixelInput in = coords({{0.5f, 0, 0, 0}, {0.25f, 0, 0, 0}, {1, 0, 0, 0}, {0.75f, 0, 0, 0}});
   Vec4 q{0.25f, 0.25f, 0.25f, 0.25f};
@@ -49,7 +49,7 @@ TEST(VmListings, Listing4WeightedSumClampsWeights) {
 
 TEST(VmListings, Listing2EightTapSum) {
   // ps.2.0: oC0 = Σ texld(ti)·ci; TCi.x = i/8, ci = 0.125 → Σ i/64 = 28/64 = 0.4375.
-  ShaderVM vm(parse(read_listing("listing2_blur8_weighted_sum.psh")), {});
+  ShaderVM vm = vm_of(parse(read_listing("listing2_blur8_weighted_sum.psh")), {});
   EchoTextures tex;
   PixelInput in;
   ConstantBank c;
@@ -67,7 +67,7 @@ TEST(VmListings, ConcurrentRunsAgree) {
   // The run methods are const and keep their state on the stack: two threads running the
   // same VM on different pixels get what a single thread gets. Pixel i: TCk.x = i/1024,
   // weights 0.125 → oC0.x = 8 · 0.125 · i/1024 = i/1024.
-  ShaderVM vm(parse(read_listing("listing2_blur8_weighted_sum.psh")), {});
+  ShaderVM vm = vm_of(parse(read_listing("listing2_blur8_weighted_sum.psh")), {});
   ConstantBank c;
   c.f.assign(8, Vec4{0.125f, 0.125f, 0.125f, 0.125f});
   auto work = [&](int first, std::vector<float>& out) {

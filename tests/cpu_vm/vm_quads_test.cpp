@@ -18,7 +18,7 @@ std::array<PixelInput, 4> lanes() {
 }
 
 std::array<PixelOutput, 4> run_quad(const std::string& text, const ConstantBank& c = {}) {
-  ShaderVM vm(parse(text), {});
+  ShaderVM vm = vm_of(parse(text), {});
   EXPECT_TRUE(vm.needs_quad());
   static const ConstTextures none;
   std::array<PixelOutput, 4> out;
@@ -71,13 +71,13 @@ TEST(VmQuads, KilledLaneStaysANeighbour) {
 }
 
 TEST(VmQuads, APixelAloneIsItsOwnNeighbour) {
-  ShaderVM vm(parse("ps_3_0\ndcl_texcoord0 v0\ndsx r0, v0\nmov oC0, r0\n"), {});
+  ShaderVM vm = vm_of(parse("ps_3_0\ndcl_texcoord0 v0\ndsx r0, v0\nmov oC0, r0\n"), {});
   static const ConstTextures none;
   const Vec4 r = vm.run_pixel(coords({{5, inf_f(), -2, 0}}), {}, none).color[0];
   EXPECT_EQ(r[0], 0.0f);
   EXPECT_TRUE(std::isnan(r[1])); // ∞ − ∞
   EXPECT_EQ(r[2], 0.0f);
-  EXPECT_FALSE(ShaderVM(parse("ps_3_0\nmov oC0, c0\n"), {}).needs_quad());
+  EXPECT_FALSE(vm_of(parse("ps_3_0\nmov oC0, c0\n"), {}).needs_quad());
 }
 
 TEST(VmQuads, TexlddReadsLevelZero) {
@@ -85,9 +85,9 @@ TEST(VmQuads, TexlddReadsLevelZero) {
   // the gradients (here large ones, a far level once textures have levels) do not move it.
   EchoTextures tex;
   tex.last_bias = 7;
-  ShaderVM vm(parse("ps_3_0\ndcl_texcoord0 v0\ndcl_2d s3\ntexldd r0, v0, s3, c0, c1\n"
-                    "mov oC0, r0\n"),
-              {});
+  ShaderVM vm = vm_of(parse("ps_3_0\ndcl_texcoord0 v0\ndcl_2d s3\ntexldd r0, v0, s3, c0, c1\n"
+                            "mov oC0, r0\n"),
+                      {});
   const PixelOutput out =
       vm.run_pixel(coords({{0.25f, 0.5f, 0.75f, 1}}), bank({{64, 64, 0, 0}, {-64, 64, 0, 0}}), tex);
   EXPECT_VEC4(out.color[0], 0.25f, 0.5f, 0.75f, 1);

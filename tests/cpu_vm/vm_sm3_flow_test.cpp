@@ -14,7 +14,7 @@ namespace {
 Vec4 ps30(const std::string& body, const ConstantBank& c, const std::string& head = "") {
   std::string text = "ps_3_0\n" + head + "mov r0, c0\nmov r1, c1\nmov r2, c2\nmov r3, c3\n" + body +
                      "mov oC0, r4\n";
-  ShaderVM vm(parse(text), {});
+  ShaderVM vm = vm_of(parse(text), {});
   static const ConstTextures none;
   return vm.run_pixel(PixelInput{}, c, none).color[0];
 }
@@ -96,11 +96,11 @@ TEST(VmSm3Flow, CallnzOnThePredicate) {
   // p0 = (T, F, ., .): callnz l0, p0.x runs (r4 += 1), callnz l0, !p0.x does not,
   // callnz l0, !p0.y runs: r4 = 2.
   const ConstantBank c = bank({{1, -1, 0, 0}, {1, 1, 1, 1}, {0, 0, 0, 0}, {0, 0, 0, 0}});
-  ShaderVM vm(parse("ps_3_0\nmov r0, c0\nmov r1, c1\nmov r4, c2\nsetp_gt p0.xy, r0, r4\n"
-                    "callnz l0, p0.x\n"
-                    "callnz l0, !p0.x\ncallnz l0, !p0.y\nmov oC0, r4\nret\n"
-                    "label l0\nadd r4, r4, r1\nret\n"),
-              {});
+  ShaderVM vm = vm_of(parse("ps_3_0\nmov r0, c0\nmov r1, c1\nmov r4, c2\nsetp_gt p0.xy, r0, r4\n"
+                            "callnz l0, p0.x\n"
+                            "callnz l0, !p0.x\ncallnz l0, !p0.y\nmov oC0, r4\nret\n"
+                            "label l0\nadd r4, r4, r1\nret\n"),
+                      {});
   EXPECT_VEC4(run_ps(vm, {}, nullptr, c).color[0], 2, 2, 2, 2);
 }
 
@@ -122,18 +122,19 @@ TEST(VmSm3Flow, IterationBudgetEndsEveryLoop) {
   static_assert(tierlift::ir::flow::kEntryCost == 2);
   ConstantBank c = bank({{0, 0, 0, 0}, {1, 1, 1, 1}});
   c.i[0] = {255, 0, 0, 0};
-  ShaderVM vm(parse("ps_3_0\nmov r4, c0\nrep i0\nrep i0\nrep i0\nadd r4, r4, c1\nendrep\nendrep\n"
-                    "endrep\nmov oC0, r4\n",
-                    false),
-              {});
+  ShaderVM vm =
+      vm_of(parse("ps_3_0\nmov r4, c0\nrep i0\nrep i0\nrep i0\nadd r4, r4, c1\nendrep\nendrep\n"
+                  "endrep\nmov oC0, r4\n",
+                  false),
+            {});
   EXPECT_EQ(run_ps(vm, {}, nullptr, c).color[0][0], 64242.0f);
 }
 
 TEST(VmSm3Flow, VposAndVface) {
   // vPos reads the pixel's integer coordinates (z = w = 0), vFace the face's sign.
-  ShaderVM vm(parse("ps_3_0\ndcl vPos.xy\ndcl vFace\nmov r0, c0\nmov r0.xy, vPos\n"
-                    "mov r0.z, vFace\nmov oC0, r0\n"),
-              {});
+  ShaderVM vm = vm_of(parse("ps_3_0\ndcl vPos.xy\ndcl vFace\nmov r0, c0\nmov r0.xy, vPos\n"
+                            "mov r0.z, vFace\nmov oC0, r0\n"),
+                      {});
   PixelInput in;
   in.pos_x = 5;
   in.pos_y = 7;
@@ -143,7 +144,8 @@ TEST(VmSm3Flow, VposAndVface) {
 
 TEST(VmSm3Flow, InputsLinkBySemantic) {
   // dcl_texcoord2 v0 reads TC2, dcl_color1 v1 reads the second colour (saturated).
-  ShaderVM vm(parse("ps_3_0\ndcl_texcoord2 v0\ndcl_color1 v1\nmov r0, v0\nadd oC0, r0, v1\n"), {});
+  ShaderVM vm =
+      vm_of(parse("ps_3_0\ndcl_texcoord2 v0\ndcl_color1 v1\nmov r0, v0\nadd oC0, r0, v1\n"), {});
   PixelInput in;
   in.tex[2] = {1, 2, 3, 4};
   in.color[1] = {0.5f, 2, 0.25f, -1};
@@ -152,9 +154,9 @@ TEST(VmSm3Flow, InputsLinkBySemantic) {
 
 TEST(VmSm3Flow, OutputsLinkBySemantic) {
   // vs_3_0: dcl_position o3 is oPos, dcl_texcoord5 o0 is oT5, dcl_color0 o1 is oD0.
-  ShaderVM vm(parse("vs_3_0\ndcl_position v0\ndcl_position o3\ndcl_texcoord5 o0\n"
-                    "dcl_color0 o1\nmov o3, v0\nmov o0, c0\nmov o1, c1\n"),
-              {});
+  ShaderVM vm = vm_of(parse("vs_3_0\ndcl_position v0\ndcl_position o3\ndcl_texcoord5 o0\n"
+                            "dcl_color0 o1\nmov o3, v0\nmov o0, c0\nmov o1, c1\n"),
+                      {});
   VertexInput in;
   in.v[0] = {1, 2, 3, 1};
   const VertexOutput o = run_vs(vm, in, bank({{4, 5, 6, 7}, {0.5f, 0.5f, 0.5f, 1}}));

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <initializer_list>
 #include <limits>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -55,8 +56,16 @@ inline tierlift::ir::Conventions geforce3() {
   return c;
 }
 
+// The VM for `program`. One the VM refuses is the calling test's failure: thrown (test code
+// only; the library returns the refusal), so gtest reports the VM's reason and stops the test.
+inline ShaderVM vm_of(const tierlift::ir::Program& program, const tierlift::ir::Conventions& conv) {
+  tierlift::ir::Result<ShaderVM> made = ShaderVM::create(program, conv);
+  if (!made) throw std::runtime_error("the VM refuses the program: " + made.message());
+  return std::move(*made);
+}
+
 inline ShaderVM make_vm(const std::string& text, tierlift::ir::Conventions conv = geforce3()) {
-  return ShaderVM(parse(text), conv);
+  return vm_of(parse(text), conv);
 }
 
 // Fake texture unit: returns the coordinate itself (+ 100·stage in w when asked), so
@@ -132,7 +141,7 @@ inline VertexOutput vs(const char* profile, const std::string& body, const Const
                      "\ndcl_position v0\nmov oPos, v0\nmov r0, c0\nmov r1, c1\n"
                      "mov r2, c2\nmov r3, c3\n" +
                      body;
-  ShaderVM vm(parse(text), conv);
+  ShaderVM vm = vm_of(parse(text), conv);
   return vm.run_vertex(VertexInput{}, c);
 }
 inline VertexOutput vs20(const std::string& body, const ConstantBank& c) {
@@ -147,7 +156,7 @@ inline VertexOutput vs11(const std::string& body, const ConstantBank& c) {
 inline Vec4 ps20(const std::string& body, const ConstantBank& c) {
   std::string text =
       "ps_2_0\nmov r0, c0\nmov r1, c1\nmov r2, c2\nmov r3, c3\n" + body + "mov oC0, r4\n";
-  ShaderVM vm(parse(text), {});
+  ShaderVM vm = vm_of(parse(text), {});
   static const ConstTextures none;
   return vm.run_pixel(PixelInput{}, c, none).color[0];
 }

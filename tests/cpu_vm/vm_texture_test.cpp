@@ -12,7 +12,7 @@ tierlift::ir::Conventions max8() {
 }
 PixelOutput run(const std::string& text, const PixelInput& in, const EchoTextures& tex,
                 tierlift::ir::Conventions conv = max8()) {
-  ShaderVM vm(parse(text), conv);
+  ShaderVM vm = vm_of(parse(text), conv);
   return vm.run_pixel(in, {}, tex);
 }
 } // namespace
@@ -203,6 +203,6 @@ TEST(VmTexture, Ps1xTextureResultsClampToRange) {
   // ps_1_1 with max 1: a sample of (2, −3, 0.5, 1) lands in t0 as (1, −1, 0.5, 1).
   ConstTextures tex;
   tex.value = {2, -3, 0.5f, 1};
-  ShaderVM vm(parse("ps_1_1\ntex t0\nmov r0, t0\n"), geforce3());
+  ShaderVM vm = vm_of(parse("ps_1_1\ntex t0\nmov r0, t0\n"), geforce3());
   EXPECT_VEC4(vm.run_pixel({}, {}, tex).color[0], 1, -1, 0.5f, 1);
 }

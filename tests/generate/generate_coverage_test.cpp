@@ -49,7 +49,7 @@ std::string missing(const std::set<std::string>& want,
 TEST_P(GeneratedCoverage, EveryModifierFileAndMaskAppears) {
   const Expected& e = GetParam();
   Coverage c;
-  for (std::size_t i = 0; i < 400; ++i) c.add(generate_listing(e.profile, 7, i));
+  for (std::size_t i = 0; i < 400; ++i) c.add(generate_listing(e.profile, 7, i).value());
   EXPECT_EQ(c.invalid, 0u);
   EXPECT_EQ(missing(e.source_modifiers, c.source_modifiers), "");
   EXPECT_EQ(missing(e.instruction_modifiers, c.instruction_modifiers), "");

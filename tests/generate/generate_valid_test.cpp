@@ -35,7 +35,7 @@ TEST_P(GeneratedListings, ThousandsOfSeedsValidate) {
   constexpr std::size_t kSeeds = test::scaled_count(2000, 150);
   std::size_t valid = 0;
   for (std::size_t i = 0; i < kSeeds; ++i) {
-    const std::string text = generate_listing(GetParam(), 1, i);
+    const std::string text = generate_listing(GetParam(), 1, i).value();
     std::string why;
     if (valid_program(text, why))
       ++valid;
@@ -54,7 +54,7 @@ TEST_P(GeneratedListings, EveryLegalOpcodeAppears) {
   constexpr std::size_t kListings = 400;
   for (std::size_t i = 0; i < kListings; ++i) {
     std::string why;
-    auto prog = valid_program(generate_listing(GetParam(), 7, i), why);
+    auto prog = valid_program(generate_listing(GetParam(), 7, i).value(), why);
     ASSERT_TRUE(prog) << why;
     for (const ir::Instruction& ins : prog->code) ++seen[ins.op];
   }
@@ -76,7 +76,7 @@ TEST_P(GeneratedListings, EveryLegalOpcodeAppears) {
 // stream cannot hold, is why the generator puts no modifier on nop).
 TEST_P(GeneratedListings, TokenStreamRoundTrips) {
   for (std::size_t i = 0; i < test::scaled_count(300, 60); ++i) {
-    const std::string text = generate_listing(GetParam(), 2, i);
+    const std::string text = generate_listing(GetParam(), 2, i).value();
     std::string why;
     auto prog = valid_program(text, why);
     ASSERT_TRUE(prog) << why;
@@ -90,24 +90,35 @@ TEST_P(GeneratedListings, TokenStreamRoundTrips) {
 }
 
 TEST_P(GeneratedListings, DeterministicInSeedAndIndex) {
-  EXPECT_EQ(generate_listing(GetParam(), 3, 11), generate_listing(GetParam(), 3, 11));
-  EXPECT_NE(generate_listing(GetParam(), 3, 11), generate_listing(GetParam(), 3, 12));
-  EXPECT_NE(generate_listing(GetParam(), 3, 11), generate_listing(GetParam(), 4, 11));
+  EXPECT_EQ(generate_listing(GetParam(), 3, 11).value(),
+            generate_listing(GetParam(), 3, 11).value());
+  EXPECT_NE(generate_listing(GetParam(), 3, 11).value(),
+            generate_listing(GetParam(), 3, 12).value());
+  EXPECT_NE(generate_listing(GetParam(), 3, 11).value(),
+            generate_listing(GetParam(), 4, 11).value());
 }
 
 INSTANTIATE_TEST_SUITE_P(Profiles, GeneratedListings, ::testing::ValuesIn(kProfiles),
                          [](const auto& info) { return std::string(info.param); });
 
-TEST(GenerateListing, UnknownProfileThrows) {
-  EXPECT_THROW(generate_listing("ps_9_9", 1, 0), std::invalid_argument);
+TEST(GenerateListing, UnknownProfileFails) {
+  const ir::Result<std::string> text = generate_listing("ps_9_9", 1, 0);
+  ASSERT_FALSE(text);
+  EXPECT_EQ(text.message(), "unknown profile 'ps_9_9'");
+  EXPECT_EQ(text.diagnostics().front().rule, "usage");
 }
 
 // Profiles the front end knows but the builder has no shapes for are refused, not written as
 // listings that fail validation (every one of 200 ps_2_x and vs_3_0 listings did).
-TEST(GenerateListing, ProfilesItDoesNotWriteThrow) {
-  for (const char* p : {"ps_2_x", "vs_2_x", "ps_3_0", "vs_3_0"})
-    EXPECT_THROW(generate_listing(p, 1, 0), std::invalid_argument) << p;
-  for (const char* p : kProfiles) EXPECT_NO_THROW(generate_listing(p, 1, 0)) << p;
+TEST(GenerateListing, ProfilesItDoesNotWriteFail) {
+  for (const char* p : {"ps_2_x", "vs_2_x", "ps_3_0", "vs_3_0"}) {
+    const ir::Result<std::string> text = generate_listing(p, 1, 0);
+    ASSERT_FALSE(text) << p;
+    EXPECT_EQ(text.message(),
+              "the generator does not write " + std::string(p) +
+                  " programs (it writes vs_1_1, vs_2_0, ps_1_1 ... ps_1_4, ps_2_0)");
+  }
+  for (const char* p : kProfiles) EXPECT_TRUE(generate_listing(p, 1, 0)) << p;
 }
 
 } // namespace

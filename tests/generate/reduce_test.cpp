@@ -39,7 +39,7 @@ std::vector<std::string> lines_of(const std::string& text) {
 // The first generated listing of `profile` (seed 5) the synthetic predicate holds for.
 std::string failing_listing(const char* profile) {
   for (std::size_t i = 0; i < 500; ++i)
-    if (std::string t = generate_listing(profile, 5, i); fails(t)) return t;
+    if (std::string t = generate_listing(profile, 5, i).value(); fails(t)) return t;
   return {};
 }
 

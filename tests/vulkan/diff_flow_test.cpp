@@ -103,7 +103,9 @@ TEST(FlowDiffCoverage, EveryCaseChangesTheResult) {
   for (const FlowCase& c : kFlowCases) {
     auto prog = parse_listing(flow_text(c), c.name);
     ASSERT_TRUE(prog) << c.name;
-    cpu::ShaderVM vm(*prog, {});
+    ir::Result<cpu::ShaderVM> made = cpu::ShaderVM::create(*prog, {});
+    ASSERT_TRUE(made) << c.name << ": " << made.message();
+    const cpu::ShaderVM& vm = *made;
     cpu::VertexOutput o = vm.run_vertex(in, k);
     const bool zero_count = std::string(c.name).find("zero") != std::string::npos;
     const cpu::Vec4 unchanged = zero_count ? in.v[2 + (c.name[0] == 'r')] : in.v[1];

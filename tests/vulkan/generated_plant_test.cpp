@@ -73,7 +73,7 @@ using GeneratedPlant = VulkanTest;
 TEST_F(GeneratedPlant, WithoutThePlantEveryGeneratedListingAgrees) {
   std::size_t agree = 0;
   for (std::size_t i = 0; i < kListings; ++i) {
-    const std::string ps = gen::generate_listing("ps_2_0", 1, i, harness_options());
+    const std::string ps = gen::generate_listing("ps_2_0", 1, i, harness_options()).value();
     const std::string why = disagreement(*dev, ps);
     if (why.empty())
       ++agree;
@@ -91,7 +91,7 @@ TEST_F(GeneratedPlant, ThePlantIsFoundAndReducedToAFewStatements) {
   {
     Plant plant;
     for (std::size_t i = 0; i < kListings && !found; ++i) {
-      ps = gen::generate_listing("ps_2_0", 1, i, harness_options());
+      ps = gen::generate_listing("ps_2_0", 1, i, harness_options()).value();
       why = disagreement(*dev, ps);
       if (!why.empty()) found = i;
     }

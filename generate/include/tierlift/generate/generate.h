@@ -17,6 +17,7 @@
 #include <string_view>
 
 #include "tierlift/ir/profile.h"
+#include "tierlift/ir/result.h"
 
 namespace tierlift::gen {
 
@@ -32,13 +33,18 @@ struct GenerateOptions {
 };
 
 // A valid random listing (assembly text) of `profile` ("ps_2_0", "vs_1_1", ...),
-// deterministic in (profile, seed, index, options). Throws std::invalid_argument for a
-// profile the front end does not know and for one the generator does not write (generates).
-std::string generate_listing(std::string_view profile, std::uint64_t seed, std::size_t index,
-                             const GenerateOptions& options);
+// deterministic in (profile, seed, index, options). Fails (rule "usage", subject
+// "--profile") for a profile the front end does not know and for one the generator does not
+// write (generates).
+ir::Result<std::string> generate_listing(std::string_view profile, std::uint64_t seed,
+                                         std::size_t index, const GenerateOptions& options);
 // The profiles it writes: vs_1_1, vs_2_0, ps_1_1 ... ps_1_4, ps_2_0 (not 2_x, not 3_0).
 bool generates(ir::Profile profile);
-std::string generate_listing(std::string_view profile, std::uint64_t seed, std::size_t index);
+// The profile named `name` when the generator writes it; else why not (generate_listing's
+// failures).
+ir::Result<ir::Profile> generated_profile(std::string_view name);
+ir::Result<std::string> generate_listing(std::string_view profile, std::uint64_t seed,
+                                         std::size_t index);
 
 // What a set of listings exercises, counted by name: the figures `tierlift generate` prints
 // and the coverage tests check.

@@ -1,9 +1,9 @@
 // The error style of tierlift's library interfaces: a function that can fail returns Result<T>
 // (a value, or the diagnostics that say why there is none) or Status (Result of nothing).
 // Located diagnostics carry a SourceLoc; others (an unreadable file, no device) name a subject.
-// The CLI renders them and turns them into exit codes; no library prints. Inside too (Vulkan
-// helpers, graph runner) but for one: vm::prepare throws std::invalid_argument, which
-// ShaderVM::create turns into a Result (the VM's unit tests use the throwing constructor).
+// The CLI renders them and turns them into exit codes; no library prints, and none throws
+// to say an input is bad: the VM's preparation and the listing generator return their
+// refusals as Results too.
 #pragma once
 
 #include <cassert>

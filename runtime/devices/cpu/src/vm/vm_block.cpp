@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <stdexcept>
 
 #include "tierlift/cpu/cpu_features.h"
 #include "tierlift/cpu/pixel_block.h"

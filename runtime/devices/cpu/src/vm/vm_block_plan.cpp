@@ -2,7 +2,6 @@
 // takes, which constants are folded once per draw, and which register components start at
 // zero. Programs it does not take run on the per-pixel VM.
 #include <algorithm>
-#include <stdexcept>
 
 #include "tierlift/ir/device_pipeline.h"
 #include "tierlift/ir/numerics.h"
@@ -284,11 +283,9 @@ std::unique_ptr<PixelBlockVM> PixelBlockVM::create(const ir::Program& program,
   ir::Result<ir::DeviceProgram> prepared = ir::prepare_for_device(program, constants.f);
   if (!prepared) return nullptr;
   const ir::Program& run = prepared->specialised ? *prepared->specialised : program;
-  try {
-    im->p = vm::prepare(run, conventions);
-  } catch (const std::invalid_argument&) {
-    return nullptr;
-  }
+  ir::Result<vm::Prepared> steps = vm::prepare(run, conventions);
+  if (!steps) return nullptr;
+  im->p = std::move(*steps);
   const vm::Prepared& p = im->p;
   const size_t n = p.steps.size();
   im->steps.resize(n);

@@ -154,7 +154,8 @@ struct Invocation {
 };
 
 // vm_program.cpp
-Prepared prepare(const ir::Program& program, const ir::Conventions& conv);
+// The program's steps, or why the VM cannot run it (rule kVmRule, subject "cpu").
+ir::Result<Prepared> prepare(const ir::Program& program, const ir::Conventions& conv);
 void run(const Prepared& p, Invocation& inv);
 // run, recording each instruction's destination after it ran (InstructionTrace).
 void run_traced(const Prepared& p, Invocation& inv, InstructionTrace& trace);
@@ -172,7 +173,9 @@ void store_general(const DstDesc& d, const Vec4& value, Invocation& inv);
 // the per-pixel and the block executor, instantiated for both modes in vm_operands.cpp.
 template <ir::numerics::Denormals D> Vec4 modify_src(const SrcDesc& s, Vec4 v);
 SrcDesc decode_src(const ir::SrcOperand& op, const Prepared& p);
-DstDesc decode_dst(const ir::DstOperand& op, const ir::InstrMods& mods, const Prepared& p);
+// A destination the profile cannot write fails (rule kVmRule).
+ir::Result<DstDesc> decode_dst(const ir::DstOperand& op, const ir::InstrMods& mods,
+                               const Prepared& p);
 int flat_slot(ir::RegFile file, uint32_t index, ir::ShaderStage stage); // -1: not a slot
 Vec4 constant_value(int32_t index, const Invocation& inv);
 

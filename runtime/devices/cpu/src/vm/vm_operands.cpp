@@ -1,7 +1,6 @@
 // Operand fetch and store in the order of docs/d3d9-rules.md §7: fetch (ps_1_x constant clamp,
 // relative addressing), pre-swizzle _dz/_dw, swizzle, post-swizzle modifiers with negate
 // last; store: shift, ps_1_x range clamp, _sat, fixed-point quantise, write mask.
-#include <stdexcept>
 #include <string>
 
 #include "tierlift/ir/numerics.h"
@@ -65,7 +64,8 @@ SrcDesc decode_src(const ir::SrcOperand& op, const Prepared& p) {
   return s;
 }
 
-DstDesc decode_dst(const ir::DstOperand& op, const ir::InstrMods& mods, const Prepared& p) {
+ir::Result<DstDesc> decode_dst(const ir::DstOperand& op, const ir::InstrMods& mods,
+                               const Prepared& p) {
   DstDesc d;
   d.mask = op.mask & 0xF;
   d.sat = mods.sat;
@@ -77,8 +77,9 @@ DstDesc decode_dst(const ir::DstOperand& op, const ir::InstrMods& mods, const Pr
   }
   int slot = flat_slot(op.file, op.index, p.program.stage());
   if (slot < 0)
-    throw std::invalid_argument("destination " + ir::register_name(op.file, op.index) +
-                                " is not writable in this profile");
+    return ir::fail("cpu", std::string(kVmRule),
+                    "destination " + ir::register_name(op.file, op.index) +
+                        " is not writable in this profile");
   d.kind = DstKind::Slot;
   d.slot = static_cast<uint16_t>(slot);
   if (slot >= kOutBase) d.out_bit = static_cast<uint16_t>(1u << (slot - kOutBase));

@@ -3,7 +3,6 @@
 // program per pixel does no decoding and no allocation.
 #include <algorithm>
 #include <bit>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -22,9 +21,15 @@ using ir::RegFile;
 
 namespace {
 
-[[noreturn]] void broken(const ir::Instruction& ins, const std::string& what) {
-  throw std::invalid_argument("line " + std::to_string(ins.loc.line) + ": " +
-                              std::string(ir::op_info(ins.op).mnemonic) + ": " + what);
+// Why the VM cannot run a program: the rule and subject of every ShaderVM::create failure.
+ir::Failure refuse(std::string message) {
+  return ir::fail("cpu", std::string(kVmRule), std::move(message));
+}
+
+// A program broken past validation at `ins` (unmatched flow control, a missing operand).
+ir::Failure broken(const ir::Instruction& ins, const std::string& what) {
+  return refuse("line " + std::to_string(ins.loc.line) + ": " +
+                std::string(ir::op_info(ins.op).mnemonic) + ": " + what);
 }
 
 void collect_defs(Prepared& p, std::vector<std::optional<std::array<int32_t, 4>>>& ints,
@@ -51,25 +56,28 @@ void collect_defs(Prepared& p, std::vector<std::optional<std::array<int32_t, 4>>
     if (index < 16) bools[index] = d.b();
 }
 
-void prepare_arith(Step& s, const ir::Instruction& ins, const Prepared& p) {
+ir::Status prepare_arith(Step& s, const ir::Instruction& ins, const Prepared& p) {
   s.compute = arith_compute(ins.op, p.flush);
-  if (!s.compute) broken(ins, "no interpreter function");
+  if (!s.compute) return broken(ins, "no interpreter function");
   s.exec = exec_arith;
   s.rows = ir::op_semantics(ins.op).matrix_rows;
   if (ins.op == Opcode::Bem && ins.dst) s.aux = static_cast<int32_t>(ins.dst->index);
   if (ins.dst) {
-    s.dst = decode_dst(*ins.dst, ins.mods, p);
+    ir::Result<DstDesc> dst = decode_dst(*ins.dst, ins.mods, p);
+    if (!dst) return refuse(dst.message());
+    s.dst = *dst;
     // Writes outside what the opcode produces are dropped, as DXVK and wined3d do.
     s.dst.mask &= ir::op_writes(ins.op, p.program.profile);
   } else if (ins.op != Opcode::Nop) {
-    broken(ins, "missing destination");
+    return broken(ins, "missing destination");
   }
+  return ir::ok_status();
 }
 
-void prepare_texture(Step& s, const ir::Instruction& ins, const Prepared& p) {
+ir::Status prepare_texture(Step& s, const ir::Instruction& ins, const Prepared& p) {
   s.exec = texture_exec(ins.op, p.flush);
-  if (!s.exec) broken(ins, "no interpreter function");
-  if (!ins.dst) broken(ins, "missing register operand");
+  if (!s.exec) return broken(ins, "no interpreter function");
+  if (!ins.dst) return broken(ins, "missing register operand");
   s.aux = static_cast<int32_t>(ins.dst->index); // texture stage m = destination number
   if (ins.op == Opcode::TexKill || ins.op == Opcode::TexDepth) {
     // The operand is read, not written: texkill tests it, texdepth divides r5.r by r5.g.
@@ -79,57 +87,65 @@ void prepare_texture(Step& s, const ir::Instruction& ins, const Prepared& p) {
     s.src[0] = decode_src(src, p);
     s.nsrc = 1;
     s.dst.kind = DstKind::None;
-    return;
+    return ir::ok_status();
   }
-  s.dst = decode_dst(*ins.dst, ins.mods, p);
+  ir::Result<DstDesc> dst = decode_dst(*ins.dst, ins.mods, p);
+  if (!dst) return refuse(dst.message());
+  s.dst = *dst;
   if (ins.op == Opcode::TexLd || ins.op == Opcode::TexLdP || ins.op == Opcode::TexLdB ||
       ins.op == Opcode::TexLdD || ins.op == Opcode::TexLdL) {
-    if (ins.src.size() < 2) broken(ins, "missing sampler");
+    if (ins.src.size() < 2) return broken(ins, "missing sampler");
     s.aux = static_cast<int32_t>(ins.src[1].index);
   }
+  return ir::ok_status();
 }
 
-void prepare_flow(Step& s, const ir::Instruction& ins,
-                  const std::vector<std::optional<std::array<int32_t, 4>>>& ints,
-                  const std::vector<std::optional<bool>>& bools) {
+// The index of flow operand k, an i# or b# register (`kind` "integer" or "boolean") below 16.
+ir::Result<uint32_t> constant_index(const ir::Instruction& ins, size_t k, const char* kind) {
+  if (k >= ins.src.size()) return broken(ins, "missing operand");
+  if (ins.src[k].index >= 16) return broken(ins, std::string(kind) + " constant out of range");
+  return ins.src[k].index;
+}
+
+ir::Status prepare_flow(Step& s, const ir::Instruction& ins,
+                        const std::vector<std::optional<std::array<int32_t, 4>>>& ints,
+                        const std::vector<std::optional<bool>>& bools) {
   s.exec = flow_exec(ins);
-  if (!s.exec) broken(ins, "no interpreter function");
-  auto operand = [&](size_t k) -> const ir::SrcOperand& {
-    if (ins.src.size() <= k) broken(ins, "missing operand");
-    return ins.src[k];
-  };
+  if (!s.exec) return broken(ins, "no interpreter function");
   if (const auto c = ir::flow::comparison_of(ins.op)) {
-    operand(1);
+    if (ins.src.size() < 2) return broken(ins, "missing operand");
     s.compare = static_cast<uint8_t>(*c);
-    return;
+    return ir::ok_status();
   }
   // if p0.x, callnz l#, !p0.y, breakp p0.z: the component and its negation.
   for (const ir::SrcOperand& o : ins.src)
     if (o.file == RegFile::Predicate) {
       s.aux = ir::swizzle_component(o.swizzle, 0);
       s.negate = o.mod == ir::SrcMod::Not;
-      return;
+      return ir::ok_status();
     }
   switch (ins.op) {
   case Opcode::Loop:
   case Opcode::Rep: {
-    const ir::SrcOperand& i = operand(ins.op == Opcode::Loop ? 1 : 0);
-    if (i.index >= 16) broken(ins, "integer constant out of range");
-    s.aux = static_cast<int32_t>(i.index);
-    s.int_def = ints[i.index];
+    const ir::Result<uint32_t> i = constant_index(ins, ins.op == Opcode::Loop ? 1 : 0, "integer");
+    if (!i) return i.failure();
+    s.aux = static_cast<int32_t>(*i);
+    s.int_def = ints[*i];
     break;
   }
   case Opcode::If:
   case Opcode::CallNz: {
-    const ir::SrcOperand& b = operand(ins.op == Opcode::If ? 0 : 1);
-    if (b.index >= 16) broken(ins, "boolean constant out of range");
-    s.aux = static_cast<int32_t>(b.index);
-    s.bool_def = bools[b.index];
-    s.negate = b.mod == ir::SrcMod::Not;
+    const size_t k = ins.op == Opcode::If ? 0 : 1;
+    const ir::Result<uint32_t> b = constant_index(ins, k, "boolean");
+    if (!b) return b.failure();
+    s.aux = static_cast<int32_t>(*b);
+    s.bool_def = bools[*b];
+    s.negate = ins.src[k].mod == ir::SrcMod::Not;
     break;
   }
   default: break;
   }
+  return ir::ok_status();
 }
 
 bool opens_if(Opcode op) {
@@ -142,7 +158,7 @@ bool is_break(Opcode op) {
 
 // Matches if/else/endif, loop/endloop, rep/endrep, each break with its innermost loop;
 // resolves call targets to labels.
-void match_flow(Prepared& p) {
+ir::Status match_flow(Prepared& p) {
   std::vector<int32_t> open;
   std::vector<std::vector<int32_t>> breaks; // per open loop or rep: its breaks' pcs
   std::vector<int32_t> label_pc(32, -1);
@@ -159,7 +175,7 @@ void match_flow(Prepared& p) {
       continue;
     }
     if (is_break(ins.op)) {
-      if (breaks.empty()) broken(ins, "break outside a loop");
+      if (breaks.empty()) return broken(ins, "break outside a loop");
       breaks.back().push_back(pc);
       continue;
     }
@@ -171,19 +187,19 @@ void match_flow(Prepared& p) {
       max_depth = std::max(max_depth, ++depth);
       break;
     case Opcode::Else:
-      if (!top_is_if()) broken(ins, "else without if");
+      if (!top_is_if()) return broken(ins, "else without if");
       p.steps[open.back()].target = pc + 1; // a false condition runs the else block
       open.back() = pc;
       break;
     case Opcode::EndIf:
-      if (!top_is_if() && !top_is({Opcode::Else})) broken(ins, "endif without if");
+      if (!top_is_if() && !top_is({Opcode::Else})) return broken(ins, "endif without if");
       p.steps[open.back()].target = pc + 1;
       open.pop_back();
       break;
     case Opcode::EndLoop:
     case Opcode::EndRep: {
       Opcode want = ins.op == Opcode::EndLoop ? Opcode::Loop : Opcode::Rep;
-      if (!top_is({want})) broken(ins, "unmatched end of loop");
+      if (!top_is({want})) return broken(ins, "unmatched end of loop");
       p.steps[open.back()].target = pc + 1; // a zero count skips the body
       p.steps[pc].target = open.back() + 1; // the body starts after loop/rep
       for (const int32_t b : breaks.back()) p.steps[b].target = pc + 1;
@@ -193,31 +209,53 @@ void match_flow(Prepared& p) {
       break;
     }
     case Opcode::Label:
-      if (ins.src.empty() || ins.src[0].index >= label_pc.size()) broken(ins, "bad label");
+      if (ins.src.empty() || ins.src[0].index >= label_pc.size()) return broken(ins, "bad label");
       label_pc[ins.src[0].index] = pc;
       break;
     default: break;
     }
   }
-  if (!open.empty()) broken(code[open.back()], "block is never closed");
-  if (max_depth > kMaxLoopDepth) broken(code.front(), "loops nest too deeply");
+  if (!open.empty()) return broken(code[open.back()], "block is never closed");
+  if (max_depth > kMaxLoopDepth) return broken(code.front(), "loops nest too deeply");
   for (int32_t pc = 0; pc < static_cast<int32_t>(code.size()); ++pc) {
     const ir::Instruction& ins = code[pc];
     if (ins.op != Opcode::Call && ins.op != Opcode::CallNz) continue;
     uint32_t l = ins.src.empty() ? 9999 : ins.src[0].index;
-    if (l >= label_pc.size() || label_pc[l] < 0) broken(ins, "call to a missing label");
+    if (l >= label_pc.size() || label_pc[l] < 0) return broken(ins, "call to a missing label");
     p.steps[pc].target = label_pc[l] + 1;
   }
+  return ir::ok_status();
+}
+
+// The executor of `ins` by its class (arithmetic, texture, flow).
+ir::Status prepare_class(Step& s, const ir::Instruction& ins, const Prepared& p,
+                         const std::vector<std::optional<std::array<int32_t, 4>>>& ints,
+                         const std::vector<std::optional<bool>>& bools) {
+  const auto comparison = ir::flow::comparison_of(ins.op);
+  switch (ir::op_info(ins.op).cls) {
+  case OpClass::Arith:
+    if (comparison) { // setp_comp p0.mask, src0, src1
+      s.exec = exec_setp;
+      s.compare = static_cast<uint8_t>(*comparison);
+      s.dst.mask = ins.dst ? ins.dst->mask & 0xF : 0;
+      return ir::ok_status();
+    }
+    return prepare_arith(s, ins, p);
+  case OpClass::Texture: return prepare_texture(s, ins, p);
+  case OpClass::Flow: return prepare_flow(s, ins, ints, bools);
+  case OpClass::Decl: return broken(ins, "declaration among the instructions");
+  }
+  return ir::ok_status();
 }
 
 } // namespace
 
-Prepared prepare(const ir::Program& program, const ir::Conventions& conv) {
+ir::Result<Prepared> prepare(const ir::Program& program, const ir::Conventions& conv) {
   // The structural checks every backend runs first (ir/passes.h); the interpreter refuses
-  // a program it cannot run as it refuses any other: std::invalid_argument.
-  if (ir::Status s = ir::validate_ir(program); !s) throw std::invalid_argument(s.message());
+  // a program it cannot run as it refuses any other (rule kVmRule).
+  if (ir::Status s = ir::validate_ir(program); !s) return refuse(s.message());
   if (ir::Status s = ir::check_executable(program, "the interpreter"); !s)
-    throw std::invalid_argument(s.message());
+    return refuse(s.message());
   Prepared p;
   // Shader model 3's o#/v# become the 2.0 registers of their semantics (sm3_interface.h).
   p.program = ir::link_by_semantic(program);
@@ -243,25 +281,10 @@ Prepared prepare(const ir::Program& program, const ir::Conventions& conv) {
     const ir::Instruction& ins = code[i];
     Step& s = p.steps[i];
     s.ins = &ins;
-    const ir::OpInfo& info = ir::op_info(ins.op);
     s.nsrc = static_cast<uint8_t>(std::min<size_t>(ins.src.size(), 4));
     for (int k = 0; k < s.nsrc; ++k) s.src[k] = decode_src(ins.src[k], p);
     s.gradient = ins.op == Opcode::Dsx || ins.op == Opcode::Dsy;
-    const auto comparison = ir::flow::comparison_of(ins.op);
-    switch (info.cls) {
-    case OpClass::Arith:
-      if (comparison) { // setp_comp p0.mask, src0, src1
-        s.exec = exec_setp;
-        s.compare = static_cast<uint8_t>(*comparison);
-        s.dst.mask = ins.dst ? ins.dst->mask & 0xF : 0;
-        break;
-      }
-      prepare_arith(s, ins, p);
-      break;
-    case OpClass::Texture: prepare_texture(s, ins, p); break;
-    case OpClass::Flow: prepare_flow(s, ins, ints, bools); break;
-    case OpClass::Decl: broken(ins, "declaration among the instructions");
-    }
+    if (ir::Status made = prepare_class(s, ins, p, ints, bools); !made) return made.failure();
     if (ins.pred) {
       s.inner = s.exec;
       s.exec = exec_predicated;
@@ -283,7 +306,7 @@ Prepared prepare(const ir::Program& program, const ir::Conventions& conv) {
   for (size_t i = 0; i + 1 < code.size(); ++i)
     if (code[i + 1].coissue && p.steps[i].exec == exec_arith && p.steps[i + 1].exec == exec_arith)
       p.steps[i].exec = exec_arith_pair;
-  match_flow(p);
+  if (ir::Status matched = match_flow(p); !matched) return matched.failure();
   return p;
 }
 

@@ -11,15 +11,13 @@ struct ShaderVM::Impl {
   vm::Prepared p;
 };
 
-ShaderVM::ShaderVM(const ir::Program& program, const ir::Conventions& conventions)
-    : impl_(std::make_unique<Impl>(Impl{vm::prepare(program, conventions)})) {}
+ShaderVM::ShaderVM(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+
 ir::Result<ShaderVM> ShaderVM::create(const ir::Program& program,
                                       const ir::Conventions& conventions) {
-  try {
-    return ShaderVM(program, conventions);
-  } catch (const std::invalid_argument& e) { // vm::prepare's one way of refusing a program
-    return ir::fail("cpu", std::string(kVmRule), e.what());
-  }
+  ir::Result<vm::Prepared> prepared = vm::prepare(program, conventions);
+  if (!prepared) return std::move(prepared).failure();
+  return ShaderVM(std::make_unique<Impl>(Impl{std::move(*prepared)}));
 }
 
 ShaderVM::~ShaderVM() = default;

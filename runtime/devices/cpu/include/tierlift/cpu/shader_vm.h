@@ -74,9 +74,6 @@ public:
   // the library's callers use; nothing fails later, while running.
   static ir::Result<ShaderVM> create(const ir::Program& program,
                                      const ir::Conventions& conventions);
-  // The same, throwing std::invalid_argument instead (the form the VM's own unit tests take,
-  // where a refused program is the test's failure).
-  ShaderVM(const ir::Program& program, const ir::Conventions& conventions);
   ~ShaderVM();
   ShaderVM(ShaderVM&&) noexcept;
   ShaderVM& operator=(ShaderVM&&) noexcept;
@@ -110,6 +107,7 @@ public:
 
 private:
   struct Impl;
+  explicit ShaderVM(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
 };
 
