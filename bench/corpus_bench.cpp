@@ -12,7 +12,6 @@
 #include "tierlift/corpus/cases.h"
 #include "tierlift/corpus/runner.h"
 #include "tierlift/corpus/stages.h"
-#include "tierlift/generate/generate.h"
 #include "tierlift/vulkan/pipeline_stats.h"
 #include "tierlift/vulkan/process_device.h"
 
@@ -33,20 +32,7 @@ const std::vector<corpus::Case>& cases() {
 // `tierlift test --generate 200 --profile ps_2_0 --seed 1`'s cases, as the command makes them
 // (2D samplers, one colour output: what the differential run binds).
 const std::vector<corpus::Case>& generated_cases() {
-  static const std::vector<corpus::Case> all = [] {
-    gen::GenerateOptions options;
-    options.only_2d_samplers = true;
-    options.extra_outputs = false;
-    std::vector<corpus::Case> out;
-    for (size_t i = 0; i < 200; ++i) {
-      corpus::Case c;
-      c.generated = true;
-      c.text = gen::generate_listing("ps_2_0", 1, i, options);
-      c.id = corpus::case_id("generated/ps_2_0/seed1/" + std::to_string(i), c.text);
-      out.push_back(std::move(c));
-    }
-    return out;
-  }();
+  static const std::vector<corpus::Case> all = corpus::generated_cases("ps_2_0", 1, 200);
   return all;
 }
 
