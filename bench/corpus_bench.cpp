@@ -29,8 +29,17 @@ const std::vector<corpus::Case>& cases() {
   return all;
 }
 
+// `tierlift test --generate 200 --profile ps_2_0 --seed 1`'s cases, as the command makes them
+// (2D samplers, one colour output: what the differential run binds).
+const std::vector<corpus::Case>& generated_cases() {
+  static const std::vector<corpus::Case> all = *corpus::generated_cases("ps_2_0", 1, 200);
+  return all;
+}
+
 // In process: the stages alone, no worker, no pipes. The full lift also reports the floor.
-void BM_Corpus_InProcess(benchmark::State& state, bool check_only, bool per_set = false) {
+void BM_Corpus_InProcess(benchmark::State& state, bool check_only, bool per_set = false,
+                         bool generated = false) {
+  const std::vector<corpus::Case>& run = generated ? generated_cases() : cases();
   corpus::StageOptions o;
   o.check_only = check_only;
   o.one_pipeline_per_case = !per_set;
@@ -49,14 +58,14 @@ void BM_Corpus_InProcess(benchmark::State& state, bool check_only, bool per_set 
     const double before = vulkan::pipeline_creation_ms();
     const long made_before = vulkan::pipeline_creations();
     const double cpu_before = vulkan::pipeline_creation_cpu_ms();
-    for (const corpus::Case& c : cases()) benchmark::DoNotOptimize(corpus::run_case(c, o));
+    for (const corpus::Case& c : run) benchmark::DoNotOptimize(corpus::run_case(c, o));
     floor_ms += vulkan::pipeline_creation_ms() - before;
     pipelines += vulkan::pipeline_creations() - made_before;
     floor_cpu_ms += vulkan::pipeline_creation_cpu_ms() - cpu_before;
-    n += cases().size();
+    n += run.size();
   }
   state.SetItemsProcessed(static_cast<int64_t>(n));
-  state.counters["cases"] = static_cast<double>(cases().size());
+  state.counters["cases"] = static_cast<double>(run.size());
   state.counters["floor_ms_per_case"] = n ? floor_ms / static_cast<double>(n) : 0;
   state.counters["floor_cpu_ms_per_case"] = n ? floor_cpu_ms / static_cast<double>(n) : 0;
   state.counters["pipelines_per_case"] =
@@ -90,6 +99,12 @@ BENCHMARK_CAPTURE(BM_Corpus_InProcess, CheckOnly, true)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK_CAPTURE(BM_Corpus_InProcess, FullLift, false)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(2);
+// The same on 200 generated ps_2_0 programs (`tierlift test --generate 200 --profile ps_2_0
+// --seed 1`).
+BENCHMARK_CAPTURE(BM_Corpus_InProcess, FullLiftGenerated, false, false, true)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->Iterations(2);

@@ -116,24 +116,12 @@ ir::Result<std::vector<corpus::Case>> gather(const TestFlags& f) {
     cases = std::move(*found);
   }
   if (f.generate > 0) {
-    // The differential run binds 2D textures and one render target: generate for that.
-    gen::GenerateOptions options;
-    options.only_2d_samplers = true;
-    options.extra_outputs = false;
-    for (const std::string& profile : f.profiles)
-      for (size_t i = 0; i < f.generate; ++i) {
-        corpus::Case c;
-        c.generated = true;
-        ir::Result<std::string> text = gen::generate_listing(profile, f.seed, i, options);
-        if (!text) return std::move(text).failure();
-        c.text = std::move(*text);
-        c.gen_profile = profile;
-        c.gen_seed = f.seed;
-        c.gen_index = i;
-        c.id =
-            corpus::case_id(fmt::format("generated/{}/seed{}/{:05}", profile, f.seed, i), c.text);
-        cases.push_back(std::move(c));
-      }
+    for (const std::string& profile : f.profiles) {
+      ir::Result<std::vector<corpus::Case>> made =
+          corpus::generated_cases(profile, f.seed, f.generate);
+      if (!made) return std::move(made).failure();
+      std::move(made->begin(), made->end(), std::back_inserter(cases));
+    }
   }
   if (!f.only.empty())
     std::erase_if(cases, [&](const corpus::Case& c) {

@@ -5,6 +5,7 @@
 
 #include <cerrno>
 #include <chrono>
+#include <climits>
 #include <csignal>
 #include <cstring>
 #include <deque>
@@ -25,12 +26,20 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// Cases a worker holds at once: the one it runs and the next, written before the answer to
+// the first comes back, so the worker starts it as soon as it has answered instead of
+// waiting for the coordinator to wake, read, record and write (on a busy machine that wait
+// is a scheduling delay per case).
+constexpr size_t kCasesInFlight = 2;
+
 struct Worker {
   pid_t pid = -1;
   int to = -1, from = -1;
   std::string buffer;
-  std::optional<size_t> job; // index into the case list
-  Clock::time_point started;
+  // Indices into the case list, written and not yet answered, in order: the worker answers
+  // them in this order, so the front one is running (a death or a timeout is its verdict).
+  std::deque<size_t> jobs;
+  Clock::time_point started; // when the front case started: written, or the answer before it
 };
 
 bool spawn(Worker& w, const std::vector<std::string>& argv, int log_fd) {
@@ -155,25 +164,29 @@ public:
 private:
   ir::Status drain(std::deque<size_t>& pending, unsigned attempt) {
     attempt_ = attempt;
+    pending_ = &pending;
     const unsigned jobs = std::max(1u, std::min<unsigned>(o_.jobs, pending.size()));
     workers_.resize(std::max<size_t>(workers_.size(), jobs));
     for (;;) {
       size_t busy = 0;
       for (size_t k = 0; k < jobs; ++k) {
         Worker& w = workers_[k];
-        if (!w.job && !pending.empty()) {
+        while (w.jobs.size() < kCasesInFlight && !pending.empty()) {
+          const std::string line = case_json(cases_[pending.front()]).dump() + "\n";
+          // A case written ahead must fit the pipe's buffer: a busy (or hung) worker reads
+          // nothing, and a longer write would block the coordinator and its timeouts.
+          if (!w.jobs.empty() && line.size() > PIPE_BUF) break;
           if (w.pid < 0 && !spawn(w, o_.worker_argv, log_))
             return ir::fail("worker", "io", "cannot start a worker process");
-          w.job = pending.front();
+          if (w.jobs.empty()) w.started = Clock::now();
+          w.jobs.push_back(pending.front());
           pending.pop_front();
-          w.started = Clock::now();
-          w.buffer.clear();
-          if (!write_all(w.to, case_json(cases_[*w.job]).dump() + "\n")) {
+          if (!write_all(w.to, line)) {
             finish_dead(w, reap(w, true));
-            continue;
+            break;
           }
         }
-        if (w.job) ++busy;
+        if (!w.jobs.empty()) ++busy;
       }
       if (busy == 0 && pending.empty()) return ir::ok_status();
       wait_for(jobs);
@@ -187,7 +200,7 @@ private:
     const auto now = Clock::now();
     for (size_t k = 0; k < jobs; ++k) {
       Worker& w = workers_[k];
-      if (!w.job) continue;
+      if (w.jobs.empty()) continue;
       fds.push_back({w.from, POLLIN, 0});
       which.push_back(k);
       const double left_ms =
@@ -201,14 +214,15 @@ private:
     }
     for (size_t k = 0; k < jobs; ++k) {
       Worker& w = workers_[k];
-      if (!w.job) continue;
+      if (w.jobs.empty()) continue;
       if (std::chrono::duration<double>(Clock::now() - w.started).count() <= o_.timeout_s) continue;
       reap(w, true);
       CaseResult r =
           lost(w, Verdict::Timeout,
                fmt::format("no answer within --timeout {} s; worker killed", o_.timeout_s));
-      record(cases_[*w.job], r);
-      w.job.reset();
+      record(cases_[w.jobs.front()], r);
+      w.jobs.pop_front();
+      give_back(w);
     }
     progress();
   }
@@ -222,32 +236,43 @@ private:
       return;
     }
     w.buffer.append(chunk, static_cast<size_t>(n));
-    const size_t nl = w.buffer.find('\n');
-    if (nl == std::string::npos) return;
-    std::optional<CaseResult> r =
-        from_json(nlohmann::json::parse(w.buffer.substr(0, nl), nullptr, false));
-    w.buffer.erase(0, nl + 1);
-    if (!r) {
-      finish_dead(w, reap(w, true));
-      return;
+    // Every whole line: one read may bring the answers to both cases in flight.
+    size_t nl;
+    while (!w.jobs.empty() && (nl = w.buffer.find('\n')) != std::string::npos) {
+      std::optional<CaseResult> r =
+          from_json(nlohmann::json::parse(w.buffer.substr(0, nl), nullptr, false));
+      w.buffer.erase(0, nl + 1);
+      if (!r) {
+        finish_dead(w, reap(w, true));
+        return;
+      }
+      record(cases_[w.jobs.front()], *r);
+      w.jobs.pop_front();
+      w.started = Clock::now(); // the next case, if any, starts now
     }
-    record(cases_[*w.job], *r);
-    w.job.reset();
   }
 
   CaseResult lost(const Worker& w, Verdict v, std::string note) {
     CaseResult r;
-    r.id = cases_[*w.job].id;
+    r.id = cases_[w.jobs.front()].id;
     r.verdict = v;
     r.note = std::move(note);
     r.ms = std::chrono::duration<double, std::milli>(Clock::now() - w.started).count();
     return r;
   }
 
+  // The front case of a worker that died is its verdict; the cases written after it go back
+  // to the head of the queue, in order, for the worker started next.
   void finish_dead(Worker& w, int status) {
-    if (!w.job) return;
-    record(cases_[*w.job], lost(w, Verdict::Crash, death(status)));
-    w.job.reset();
+    if (w.jobs.empty()) return;
+    record(cases_[w.jobs.front()], lost(w, Verdict::Crash, death(status)));
+    w.jobs.pop_front();
+    give_back(w);
+  }
+  void give_back(Worker& w) {
+    pending_->insert(pending_->begin(), w.jobs.begin(), w.jobs.end());
+    w.jobs.clear();
+    w.buffer.clear();
   }
 
   void record(const Case& c, CaseResult r) {
@@ -287,6 +312,7 @@ private:
   const std::vector<Case>& cases_;
   const RunOptions& o_;
   std::vector<Worker> workers_;
+  std::deque<size_t>* pending_ = nullptr; // drain's queue: where a dead worker's cases go back
   std::vector<size_t> rerun_;
   std::string jsonl_path_;
   int jsonl_ = -1, log_ = -1;

@@ -270,6 +270,31 @@ TEST(CodegenSemantics, ValidatorRemembersOnlyTheModulesItPassed) {
   EXPECT_FALSE(codegen::validate(broken)); // a refusal is not remembered as a pass
 }
 
+// validate() checks a module without spirv-val's friendly names and a refused one again with
+// them: the message of a refusal names its ids as spirv-dis does (%void, not a bare number).
+TEST(CodegenSemantics, ValidatorMessagesKeepFriendlyNames) {
+  const std::optional<codegen::ShaderModule> m = build("ps_2_0\nmov oC0, c0\n");
+  ASSERT_TRUE(m);
+  // The void type's id (OpTypeVoid: opcode 19, two words) becomes the result type of the
+  // module's first OpLoad (opcode 61, four words: type, result, pointer).
+  uint32_t void_id = 0;
+  std::vector<uint32_t> broken = m->words;
+  for (size_t i = 5; i < broken.size(); i += broken[i] >> 16) {
+    const uint32_t op = broken[i] & 0xffffu;
+    if (op == 19) void_id = broken[i + 1];
+    if (op == 61 && void_id) {
+      broken[i + 1] = void_id;
+      break;
+    }
+    ASSERT_GT(broken[i] >> 16, 0u);
+  }
+  ASSERT_NE(void_id, 0u);
+  const ir::Status valid = codegen::validate(broken);
+  ASSERT_FALSE(valid);
+  EXPECT_NE(valid.message().find(std::to_string(void_id) + "[%void]"), std::string::npos)
+      << valid.message();
+}
+
 TEST(CodegenSemantics, BrokenFlowIsADiagnosticNotACrash) {
   ir::Program p;
   p.profile = ir::Profile::vs_2_0;

@@ -45,6 +45,14 @@ ir::Result<std::vector<Case>> discover(const std::vector<std::string>& roots);
 // Whether `bytes` (a file found in a folder) holds a listing (see discover).
 bool looks_like_listing(std::string_view bytes);
 
+// `count` generated programs of `profile` (gen::generate_listing, seeded by `seed` and each
+// index, with the options the differential run binds: 2D samplers, one colour output), ids
+// "generated/<profile>/seed<seed>/<index, 5 digits>@<hash>", in index order; made on
+// `threads` threads (0: one a core), the same cases on any number. A profile the generator
+// does not write fails as generate_listing does.
+ir::Result<std::vector<Case>> generated_cases(const std::string& profile, uint64_t seed,
+                                              size_t count, unsigned threads = 0);
+
 // --shard I/N: the case belongs to shard `index` of `count` (by fnv1a64 of the id).
 bool in_shard(const Case& c, size_t index, size_t count);
 

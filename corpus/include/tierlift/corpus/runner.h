@@ -5,7 +5,11 @@
 //
 // Protocol, one JSON object per line: the coordinator writes a case to the worker's standard
 // input ({"id", "path"} or {"id", "text", "generated": {...}}); the worker answers with the
-// case's results.jsonl line on its standard output. End of input: the worker exits.
+// case's results.jsonl line on its standard output, the cases in the order written. The
+// coordinator writes the next case (at most one, of at most PIPE_BUF bytes) before the answer
+// to the running one arrives, so a worker never waits for it between cases; a worker that
+// dies or hangs costs the case it was running, and the one written ahead of it goes to the
+// worker started next. End of input: the worker exits.
 //
 // Every result is appended to DIR/results.jsonl (and flushed) as it arrives, so a run killed
 // whole keeps what it finished, and `resume` continues from there.
