@@ -60,23 +60,23 @@ struct Uniforms {
 int fill_uniforms(const effects::PassDesc& p, const std::string& kind, Uniforms& u) {
   int coords = 0;
   if (kind == "blur") {
-    coords = int(std::min<size_t>(p.vs_constants.f.size(), 8));
+    coords = int(std::min<size_t>(p.draw.vs_constants.f.size(), 8));
     for (int k = 0; k < coords; ++k) {
       u.coord[k][0] = u.coord[k][1] = 1;
-      u.coord[k][2] = p.vs_constants.f[k][0];
-      u.coord[k][3] = p.vs_constants.f[k][1];
+      u.coord[k][2] = p.draw.vs_constants.f[k][0];
+      u.coord[k][3] = p.draw.vs_constants.f[k][1];
     }
   } else {
     coords = kind == "extract" ? 1 : kind == "composite" ? 2 : 4;
     for (int k = 0; k < coords; ++k) {
-      u.coord[k][0] = p.vs_constants.f[4 + k][0];
-      u.coord[k][1] = p.vs_constants.f[4 + k][1];
-      u.coord[k][2] = p.vs_constants.f[k][0];
-      u.coord[k][3] = p.vs_constants.f[k][1];
+      u.coord[k][0] = p.draw.vs_constants.f[4 + k][0];
+      u.coord[k][1] = p.draw.vs_constants.f[4 + k][1];
+      u.coord[k][2] = p.draw.vs_constants.f[k][0];
+      u.coord[k][3] = p.draw.vs_constants.f[k][1];
     }
   }
-  for (size_t k = 0; k < p.ps_constants.f.size() && k < 8; ++k)
-    for (int c = 0; c < 4; ++c) u.weight[k][c] = p.ps_constants.f[k][c];
+  for (size_t k = 0; k < p.draw.ps_constants.f.size() && k < 8; ++k)
+    for (int c = 0; c < 4; ++c) u.weight[k][c] = p.draw.ps_constants.f[k][c];
   if (kind == "extract" || kind == "composite") return coords;
   // A read weighted 0 adds exactly 0: a chain written by hand does not make it (the lift
   // leaves it out too, ir::zero_constant_products). The glow's last blur pass of an axis
@@ -99,14 +99,15 @@ void GlslGlowPeer::Impl::create_pass(const effects::EffectGraph& g, const effect
   Pass pass;
   const std::string kind = kind_of(p.name);
   pass.target = &textures.at(p.target);
-  pass.replace = p.blend == pass::BlendMode::Replace;
+  pass.replace = p.draw.blend == pass::BlendMode::Replace;
   VkSampler samplers[2] = {point, point};
   for (const effects::TextureBind& b : p.textures) {
     // Stage 0 (ps_1_x binds the same texture on stages 0..3) and, for the composite, 1.
     const int slot = kind == "composite" && b.stage == 1 ? 1 : b.stage == 0 ? 0 : -1;
     if (slot < 0) continue;
     (slot ? pass.s1 : pass.s0) = &textures.at(b.texture);
-    samplers[slot] = b.sampler.filter == pass::Filter::Linear ? linear : point;
+    samplers[slot] =
+        p.draw.textures[b.stage].sampler.filter == pass::Filter::Linear ? linear : point;
   }
   if (!pass.s0) throw PeerError{"pass " + p.name + ": no texture on stage 0"};
   if (!pass.s1) pass.s1 = pass.s0;

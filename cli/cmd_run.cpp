@@ -376,13 +376,16 @@ int run(const RunFlags& f) {
   std::optional<pass::Pass> prepared = prepare(req, listings, report, prepare_ms, exit_code);
   if (!prepared) return report.finish(exit_code);
   // The same graph of one pass on each device asked for, through the one device interface.
+  // The draw moves into the graph (its images shared, not copied); only a trace keeps it.
+  std::optional<pass::Pass> traced;
+  if (plan->trace) traced = *prepared;
   ir::Result<effects::EffectGraph> graph =
-      effects::single_pass_graph(*prepared, req.width, req.height, req.format);
+      effects::single_pass_graph(std::move(*prepared), req.width, req.height, req.format);
+  prepared.reset();
   if (!graph) {
     report.error("graph", graph.message());
     return report.finish(kExitInvalid);
   }
-  if (!plan->trace) prepared.reset(); // the graph shares the textures; only a trace needs it
   vulkan::DeviceOptions vk_options;
   vk_options.gpu_filter = f.gpu;
   ir::Result<effects::SinglePassRun> ran =
@@ -409,7 +412,7 @@ int run(const RunFlags& f) {
                r.more_agreement[i].identical_share * 100.0,
                r.more_verdicts[i].pass ? "within targets" : "BEYOND TARGETS");
   if (plan->trace)
-    if (int code = print_pixel_trace(*prepared, *plan->trace, report)) return report.finish(code);
+    if (int code = print_pixel_trace(*traced, *plan->trace, report)) return report.finish(code);
   if (r.verdict && !r.verdict->pass) {
     report.error("agreement", r.verdict->summary);
     return report.finish(kExitInvalid);

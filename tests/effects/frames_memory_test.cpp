@@ -33,17 +33,17 @@ EffectGraph accumulate_graph(uint32_t w, uint32_t h) {
   ListingResult ps = builtin_listing("glow/extract_sources.psh");
   EXPECT_TRUE(vs) << vs.message();
   EXPECT_TRUE(ps) << ps.message();
-  p.vs = vs ? *vs : nullptr;
-  p.ps = ps ? *ps : nullptr;
+  p.draw.vertex_program = vs ? *vs : nullptr;
+  p.draw.pixel_program = ps ? *ps : nullptr;
   // Point reads at texel centres: offset ½ texel (c0), scale 1 (c4).
-  p.vs_constants.f.assign(8, cpu::Vec4{0, 0, 0, 0});
-  p.vs_constants.f[0] = {0.5f / float(w), 0.5f / float(h), 0, 0};
-  p.vs_constants.f[4] = {1, 1, 0, 0};
+  p.draw.vs_constants.f.assign(8, cpu::Vec4{0, 0, 0, 0});
+  p.draw.vs_constants.f[0] = {0.5f / float(w), 0.5f / float(h), 0, 0};
+  p.draw.vs_constants.f[4] = {1, 1, 0, 0};
   cpu::SamplerState s;
   s.address_u = s.address_v = cpu::AddressMode::Clamp;
-  p.textures = {{0, "scene", s}};
+  bind_reads(p, 0, "scene", s, 1, false);
   p.target = "acc";
-  p.blend = cpu::BlendMode::OneOne;
+  p.draw.blend = cpu::BlendMode::OneOne;
   g.passes = {p};
   return g;
 }
@@ -112,10 +112,10 @@ TEST(MemoryPlan, HandComputedBytesPerDevice) {
   PassDesc p1, p2;
   p1.name = "p1";
   p1.target = "a";
-  p1.textures = {{0, "scene", {}}};
+  p1.textures = {{0, "scene"}};
   p2.name = "p2";
   p2.target = "b";
-  p2.textures = {{0, "a", {}}, {1, "a", {}}};
+  p2.textures = {{0, "a"}, {1, "a"}};
   g.passes = {p1, p2};
   // Host copies: scene 8 px·16 = 128, a 128, b 2·16 = 32: 288 for "every texture".
   const MemoryPlan m = plan_memory(g, {"cpu", "vulkan", "analytic"}, false, 1000);
@@ -140,10 +140,10 @@ TEST(MemoryPlan, HandComputedBytesPerDevice) {
   // `a` keeps its copy while one of its two reads still wraps.
   pass::SamplerState clamped;
   clamped.address_u = clamped.address_v = pass::AddressMode::Clamp;
-  g.passes[0].textures[0].sampler = clamped;
-  g.passes[1].textures[0].sampler = clamped;
+  g.passes[0].draw.textures[0].sampler = clamped;
+  g.passes[1].draw.textures[0].sampler = clamped;
   EXPECT_EQ(plan_memory(g, {"vulkan"}, false).devices[0].kept, 288u + 96u + 288u);
-  g.passes[1].textures[1].sampler = clamped;
+  g.passes[1].draw.textures[1].sampler = clamped;
   EXPECT_EQ(plan_memory(g, {"vulkan"}, false).devices[0].kept, 288u + 96u);
 }
 

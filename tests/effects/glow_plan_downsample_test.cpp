@@ -45,24 +45,25 @@ void expect_box_average(const EffectPlan& plan, unsigned n, uint32_t w, uint32_t
     SCOPED_TRACE(d.name);
     EXPECT_EQ(d.name, "downsample." + std::to_string(i));
     EXPECT_EQ(d.target, kSmallTexture);
-    EXPECT_EQ(d.blend, i == 0 ? pass::BlendMode::Replace : pass::BlendMode::OneOne);
-    ASSERT_EQ(d.vs_constants.f.size(), 8u);
-    ASSERT_EQ(d.ps_constants.f.size(), 4u);
+    EXPECT_EQ(d.draw.blend, i == 0 ? pass::BlendMode::Replace : pass::BlendMode::OneOne);
+    ASSERT_EQ(d.draw.vs_constants.f.size(), 8u);
+    ASSERT_EQ(d.draw.ps_constants.f.size(), 4u);
     ASSERT_EQ(d.textures.size(), stages);
     for (size_t t = 0; t < stages; ++t) {
       EXPECT_EQ(d.textures[t].stage, uint32_t(t));
       EXPECT_EQ(d.textures[t].texture, kSourcesTexture);
-      EXPECT_EQ(d.textures[t].sampler.filter, pass::Filter::Point);
+      EXPECT_EQ(d.binding(d.textures[t]).sampler.filter, pass::Filter::Point);
     }
     for (size_t k = 0; k < 4; ++k) {
-      const float weight = d.ps_constants.f[k][0];
-      for (int c = 1; c < 4; ++c) EXPECT_EQ(d.ps_constants.f[k][c], weight) << k;
+      const float weight = d.draw.ps_constants.f[k][0];
+      for (int c = 1; c < 4; ++c) EXPECT_EQ(d.draw.ps_constants.f[k][c], weight) << k;
       if (weight == 0) continue; // padding: adds exactly 0 wherever it reads
       EXPECT_FLOAT_EQ(weight, 1.0f / float(n * n)) << k;
-      EXPECT_FLOAT_EQ(d.vs_constants.f[k + 4][0], float(su)) << k;
-      EXPECT_FLOAT_EQ(d.vs_constants.f[k + 4][1], float(sv)) << k;
+      EXPECT_FLOAT_EQ(d.draw.vs_constants.f[k + 4][0], float(su)) << k;
+      EXPECT_FLOAT_EQ(d.draw.vs_constants.f[k + 4][1], float(sv)) << k;
       // The position within the block, in texels: a texel centre a + ½ (to fp32 precision).
-      const double px = double(d.vs_constants.f[k][0]) * w, py = double(d.vs_constants.f[k][1]) * h;
+      const double px = double(d.draw.vs_constants.f[k][0]) * w,
+                   py = double(d.draw.vs_constants.f[k][1]) * h;
       const double ax = px - 0.5, ay = py - 0.5;
       EXPECT_NEAR(ax, std::round(ax), 1e-4) << k;
       EXPECT_NEAR(ay, std::round(ay), 1e-4) << k;
@@ -70,7 +71,7 @@ void expect_box_average(const EffectPlan& plan, unsigned n, uint32_t w, uint32_t
       ASSERT_TRUE(a >= 0 && a < long(n) && b >= 0 && b < long(n)) << a << "," << b;
       ++hits[size_t(b) * n + size_t(a)];
       // Pixel 3 of the small target reads texel 3N + a: the scale maps uv 3/gw to 3N/W.
-      const double at3 = double(d.vs_constants.f[k + 4][0]) * 3.0 / plan.glow_width * w + px;
+      const double at3 = double(d.draw.vs_constants.f[k + 4][0]) * 3.0 / plan.glow_width * w + px;
       EXPECT_EQ(long(std::floor(at3)), long(3 * n) + a) << k;
     }
   }
@@ -96,15 +97,15 @@ TEST(EffectPlan, DownsampleTwo) {
   const float xs[4] = {0.5f / 128, 1.5f / 128, 0.5f / 128, 1.5f / 128};
   const float ys[4] = {0.5f / 64, 0.5f / 64, 1.5f / 64, 1.5f / 64};
   for (int k = 0; k < 4; ++k) {
-    EXPECT_FLOAT_EQ(ds.vs_constants.f[k][0], xs[k]) << k;
-    EXPECT_FLOAT_EQ(ds.vs_constants.f[k][1], ys[k]) << k;
-    EXPECT_EQ(ds.vs_constants.f[k + 4][0], 1.0f) << k;
-    EXPECT_EQ(ds.vs_constants.f[k + 4][1], 1.0f) << k;
-    EXPECT_EQ(ds.ps_constants.f[k][0], 0.25f) << k;
+    EXPECT_FLOAT_EQ(ds.draw.vs_constants.f[k][0], xs[k]) << k;
+    EXPECT_FLOAT_EQ(ds.draw.vs_constants.f[k][1], ys[k]) << k;
+    EXPECT_EQ(ds.draw.vs_constants.f[k + 4][0], 1.0f) << k;
+    EXPECT_EQ(ds.draw.vs_constants.f[k + 4][1], 1.0f) << k;
+    EXPECT_EQ(ds.draw.ps_constants.f[k][0], 0.25f) << k;
   }
-  EXPECT_EQ(ds.blend, pass::BlendMode::Replace);
+  EXPECT_EQ(ds.draw.blend, pass::BlendMode::Replace);
   ASSERT_EQ(ds.textures.size(), 1u); // ps_2_0: every read through s0
-  EXPECT_EQ(ds.textures[0].sampler.filter, pass::Filter::Point);
+  EXPECT_EQ(ds.binding(ds.textures[0]).sampler.filter, pass::Filter::Point);
   expect_box_average(plan, 2, 128, 64, 1);
 }
 
@@ -119,12 +120,12 @@ TEST(EffectPlan, DownsampleFour) {
   for (int i = 0; i < 4; ++i) {
     const PassDesc& ds = plan.graph.passes[1 + i];
     EXPECT_EQ(ds.name, "downsample." + std::to_string(i));
-    EXPECT_EQ(ds.blend, i == 0 ? pass::BlendMode::Replace : pass::BlendMode::OneOne) << i;
+    EXPECT_EQ(ds.draw.blend, i == 0 ? pass::BlendMode::Replace : pass::BlendMode::OneOne) << i;
     for (int k = 0; k < 4; ++k) {
-      EXPECT_FLOAT_EQ(ds.vs_constants.f[k][0], (k + 0.5f) / 128) << i << " " << k;
-      EXPECT_FLOAT_EQ(ds.vs_constants.f[k][1], (i + 0.5f) / 64) << i << " " << k;
-      EXPECT_EQ(ds.vs_constants.f[k + 4][0], 1.0f); // 4·32/128
-      EXPECT_EQ(ds.ps_constants.f[k][2], 0.0625f) << i << " " << k;
+      EXPECT_FLOAT_EQ(ds.draw.vs_constants.f[k][0], (k + 0.5f) / 128) << i << " " << k;
+      EXPECT_FLOAT_EQ(ds.draw.vs_constants.f[k][1], (i + 0.5f) / 64) << i << " " << k;
+      EXPECT_EQ(ds.draw.vs_constants.f[k + 4][0], 1.0f); // 4·32/128
+      EXPECT_EQ(ds.draw.ps_constants.f[k][2], 0.0625f) << i << " " << k;
     }
   }
   EXPECT_EQ(plan.graph.passes[5].name, "blur_h.0");
@@ -140,16 +141,16 @@ TEST(EffectPlan, DownsampleThreeRoundsUpAndScales) {
   EXPECT_EQ(std::vector<std::string>(names.begin() + 1, names.begin() + 5),
             (std::vector<std::string>{"downsample.0", "downsample.1", "downsample.2", "blur_h.0"}));
   const PassDesc &d0 = plan.graph.passes[1], &d2 = plan.graph.passes[3];
-  EXPECT_FLOAT_EQ(d0.vs_constants.f[4][0], 129.0f / 128); // 3·43/128
-  EXPECT_FLOAT_EQ(d0.vs_constants.f[4][1], 66.0f / 64);   // 3·22/64
-  EXPECT_FLOAT_EQ(d0.vs_constants.f[2][0], 2.5f / 128);   // read 2: texel (2, 0)
-  EXPECT_FLOAT_EQ(d0.vs_constants.f[3][0], 0.5f / 128);   // read 3: texel (0, 1)
-  EXPECT_FLOAT_EQ(d0.vs_constants.f[3][1], 1.5f / 64);
-  EXPECT_FLOAT_EQ(d0.ps_constants.f[0][0], 1.0f / 9);
-  EXPECT_FLOAT_EQ(d2.vs_constants.f[0][0], 2.5f / 128); // read 8: texel (2, 2)
-  EXPECT_FLOAT_EQ(d2.vs_constants.f[0][1], 2.5f / 64);
-  EXPECT_FLOAT_EQ(d2.ps_constants.f[0][0], 1.0f / 9);
-  for (int k = 1; k < 4; ++k) EXPECT_EQ(d2.ps_constants.f[k][0], 0.0f) << k;
+  EXPECT_FLOAT_EQ(d0.draw.vs_constants.f[4][0], 129.0f / 128); // 3·43/128
+  EXPECT_FLOAT_EQ(d0.draw.vs_constants.f[4][1], 66.0f / 64);   // 3·22/64
+  EXPECT_FLOAT_EQ(d0.draw.vs_constants.f[2][0], 2.5f / 128);   // read 2: texel (2, 0)
+  EXPECT_FLOAT_EQ(d0.draw.vs_constants.f[3][0], 0.5f / 128);   // read 3: texel (0, 1)
+  EXPECT_FLOAT_EQ(d0.draw.vs_constants.f[3][1], 1.5f / 64);
+  EXPECT_FLOAT_EQ(d0.draw.ps_constants.f[0][0], 1.0f / 9);
+  EXPECT_FLOAT_EQ(d2.draw.vs_constants.f[0][0], 2.5f / 128); // read 8: texel (2, 2)
+  EXPECT_FLOAT_EQ(d2.draw.vs_constants.f[0][1], 2.5f / 64);
+  EXPECT_FLOAT_EQ(d2.draw.ps_constants.f[0][0], 1.0f / 9);
+  for (int k = 1; k < 4; ++k) EXPECT_EQ(d2.draw.ps_constants.f[k][0], 0.0f) << k;
   expect_box_average(plan, 3, 128, 64, 1);
 }
 
@@ -160,11 +161,11 @@ TEST(GlowPlanDx8, DownsampleFourUsesFourPassesOfFourReads) {
   for (int i = 0; i < 4; ++i) {
     const PassDesc& ds = plan.graph.passes[1 + i];
     EXPECT_EQ(ds.name, "downsample." + std::to_string(i));
-    EXPECT_TRUE(ir::is_ps11_13(ds.ps->profile)) << i;
+    EXPECT_TRUE(ir::is_ps11_13(ds.draw.pixel_program->profile)) << i;
     for (int k = 0; k < 4; ++k) {
-      EXPECT_FLOAT_EQ(ds.vs_constants.f[k][0], (k + 0.5f) / 128) << i << " " << k;
-      EXPECT_FLOAT_EQ(ds.vs_constants.f[k][1], (i + 0.5f) / 64) << i << " " << k;
-      EXPECT_EQ(ds.ps_constants.f[k][0], 0.0625f) << i << " " << k;
+      EXPECT_FLOAT_EQ(ds.draw.vs_constants.f[k][0], (k + 0.5f) / 128) << i << " " << k;
+      EXPECT_FLOAT_EQ(ds.draw.vs_constants.f[k][1], (i + 0.5f) / 64) << i << " " << k;
+      EXPECT_EQ(ds.draw.ps_constants.f[k][0], 0.0625f) << i << " " << k;
     }
   }
   expect_box_average(plan, 4, 128, 64, 4);

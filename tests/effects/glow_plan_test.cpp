@@ -44,37 +44,39 @@ TEST(EffectPlan, DownsampleOne) {
 TEST(EffectPlan, BlurOffsetsCarryTheHalfTexel) {
   EffectPlan plan = plan_for(2);
   const PassDesc& h0 = plan.graph.passes[2];
-  EXPECT_EQ(h0.blend, pass::BlendMode::Replace);
-  EXPECT_FLOAT_EQ(h0.vs_constants.f[0][0], -11.5f / 64); // tap −12 + ½ on a 64-wide texture
-  EXPECT_FLOAT_EQ(h0.vs_constants.f[0][1], 0.5f / 32);
-  EXPECT_FLOAT_EQ(h0.vs_constants.f[7][0], -4.5f / 64);
+  EXPECT_EQ(h0.draw.blend, pass::BlendMode::Replace);
+  EXPECT_FLOAT_EQ(h0.draw.vs_constants.f[0][0], -11.5f / 64); // tap −12 + ½ on a 64-wide texture
+  EXPECT_FLOAT_EQ(h0.draw.vs_constants.f[0][1], 0.5f / 32);
+  EXPECT_FLOAT_EQ(h0.draw.vs_constants.f[7][0], -4.5f / 64);
   const PassDesc& h3 = plan.graph.passes[5];
-  EXPECT_EQ(h3.blend, pass::BlendMode::OneOne);
-  EXPECT_FLOAT_EQ(h3.vs_constants.f[0][0], 12.5f / 64); // the 25th tap, then padding
-  for (int k = 1; k < 8; ++k) EXPECT_EQ(h3.ps_constants.f[k][0], 0.0f);
+  EXPECT_EQ(h3.draw.blend, pass::BlendMode::OneOne);
+  EXPECT_FLOAT_EQ(h3.draw.vs_constants.f[0][0], 12.5f / 64); // the 25th tap, then padding
+  for (int k = 1; k < 8; ++k) EXPECT_EQ(h3.draw.ps_constants.f[k][0], 0.0f);
   const PassDesc& v0 = plan.graph.passes[6];
-  EXPECT_FLOAT_EQ(v0.vs_constants.f[0][0], 0.5f / 64);
-  EXPECT_FLOAT_EQ(v0.vs_constants.f[0][1], -11.5f / 32);
+  EXPECT_FLOAT_EQ(v0.draw.vs_constants.f[0][0], 0.5f / 64);
+  EXPECT_FLOAT_EQ(v0.draw.vs_constants.f[0][1], -11.5f / 32);
   EXPECT_EQ(v0.textures[0].texture, kBlurHTexture);
   EXPECT_EQ(v0.target, kGlowTexture);
   // Every tap on a texel centre: point filtering (bilinear there is the texel itself).
   for (const PassDesc* d : {&h0, &h3, &v0}) {
     ASSERT_EQ(d->textures.size(), 1u);
-    EXPECT_EQ(d->textures[0].sampler.filter, pass::Filter::Point) << d->name;
+    EXPECT_EQ(d->binding(d->textures[0]).sampler.filter, pass::Filter::Point) << d->name;
   }
 }
 
 TEST(EffectPlan, WithoutHalfTexelOffsetsAreWholeTexels) {
   EffectPlan plan = plan_for(2, false);
-  EXPECT_FLOAT_EQ(plan.graph.passes[2].vs_constants.f[0][0], -12.0f / 64);
-  EXPECT_EQ(plan.graph.passes[2].vs_constants.f[0][1], 0.0f);
-  EXPECT_FLOAT_EQ(plan.graph.passes[6].vs_constants.f[0][1], -12.0f / 32);
+  EXPECT_FLOAT_EQ(plan.graph.passes[2].draw.vs_constants.f[0][0], -12.0f / 64);
+  EXPECT_EQ(plan.graph.passes[2].draw.vs_constants.f[0][1], 0.0f);
+  EXPECT_FLOAT_EQ(plan.graph.passes[6].draw.vs_constants.f[0][1], -12.0f / 32);
   // Taps on texel corners, read bilinearly: the article's failure case, as on D3D9.
   for (size_t i = 2; i < 10; ++i)
-    EXPECT_EQ(plan.graph.passes[i].textures.at(0).sampler.filter, pass::Filter::Linear)
+    EXPECT_EQ(plan.graph.passes[i].binding(plan.graph.passes[i].textures.at(0)).sampler.filter,
+              pass::Filter::Linear)
         << plan.graph.passes[i].name;
   // The helper passes read where they mean to, half texel or not: point reads.
-  EXPECT_EQ(plan.graph.passes[1].textures.at(0).sampler.filter, pass::Filter::Point);
+  EXPECT_EQ(plan.graph.passes[1].binding(plan.graph.passes[1].textures.at(0)).sampler.filter,
+            pass::Filter::Point);
 }
 
 TEST(EffectPlan, TapsAreSymmetricNormalisedAndUseThePrintedListings) {
@@ -87,8 +89,8 @@ TEST(EffectPlan, TapsAreSymmetricNormalisedAndUseThePrintedListings) {
   }
   EXPECT_NEAR(sum, 1.0, 1e-12);
   // Listing 1 is vs_2_0 with eight oT#; Listing 2 is ps_2_0.
-  EXPECT_EQ(plan.graph.passes[2].vs->profile, ir::Profile::vs_2_0);
-  EXPECT_EQ(plan.graph.passes[2].ps->profile, ir::Profile::ps_2_0);
+  EXPECT_EQ(plan.graph.passes[2].draw.vertex_program->profile, ir::Profile::vs_2_0);
+  EXPECT_EQ(plan.graph.passes[2].draw.pixel_program->profile, ir::Profile::ps_2_0);
 }
 
 TEST(BlurProfile, SingleGaussianByHand) {
@@ -167,35 +169,35 @@ TEST(GlowPlanDx8, BlurConstantsFollowTheArticlesRule) {
   const float hu0[4] = {-2.5f / 23, -1.5f / 23, -0.5f / 23, 0.5f / 23};
   const float hu1[4] = {1.5f / 23, 2.5f / 23, 3.5f / 23, 0.5f / 23};
   const double w0[4] = {kE45, kE2, kE05, 1}, w1[4] = {kE05, kE2, kE45, 0};
-  ASSERT_EQ(h0.vs_constants.f.size(), 4u);
-  ASSERT_EQ(h0.ps_constants.f.size(), 4u);
+  ASSERT_EQ(h0.draw.vs_constants.f.size(), 4u);
+  ASSERT_EQ(h0.draw.ps_constants.f.size(), 4u);
   for (int k = 0; k < 4; ++k) {
-    EXPECT_FLOAT_EQ(h0.vs_constants.f[k][0], hu0[k]) << k;
-    EXPECT_FLOAT_EQ(h0.vs_constants.f[k][1], 0.5f / 14) << k;
-    EXPECT_FLOAT_EQ(h1.vs_constants.f[k][0], hu1[k]) << k;
-    EXPECT_FLOAT_EQ(v0.vs_constants.f[k][0], 0.5f / 23) << k;
-    EXPECT_FLOAT_EQ(v0.vs_constants.f[k][1], hu0[k] * 23 / 14) << k;
+    EXPECT_FLOAT_EQ(h0.draw.vs_constants.f[k][0], hu0[k]) << k;
+    EXPECT_FLOAT_EQ(h0.draw.vs_constants.f[k][1], 0.5f / 14) << k;
+    EXPECT_FLOAT_EQ(h1.draw.vs_constants.f[k][0], hu1[k]) << k;
+    EXPECT_FLOAT_EQ(v0.draw.vs_constants.f[k][0], 0.5f / 23) << k;
+    EXPECT_FLOAT_EQ(v0.draw.vs_constants.f[k][1], hu0[k] * 23 / 14) << k;
     // Listing 4: c_k = the tap's weight in every channel (0 for padding). The plan stores
     // each weight as a float: |fl32(x) − x| ≤ 2⁻²⁴·x ≤ 6e-8 for x ≤ 1, inside 1e-7.
     for (int c = 0; c < 4; ++c) {
-      EXPECT_NEAR(h0.ps_constants.f[k][c], w0[k] / kNorm, 1e-7) << k;
-      EXPECT_NEAR(h1.ps_constants.f[k][c], w1[k] / kNorm, 1e-7) << k;
-      EXPECT_EQ(v1.ps_constants.f[k][c], h1.ps_constants.f[k][c]) << k;
+      EXPECT_NEAR(h0.draw.ps_constants.f[k][c], w0[k] / kNorm, 1e-7) << k;
+      EXPECT_NEAR(h1.draw.ps_constants.f[k][c], w1[k] / kNorm, 1e-7) << k;
+      EXPECT_EQ(v1.draw.ps_constants.f[k][c], h1.draw.ps_constants.f[k][c]) << k;
     }
   }
   // The first pass of an axis replaces, the others add (ONE/ONE).
-  EXPECT_EQ(h0.blend, pass::BlendMode::Replace);
-  EXPECT_EQ(h1.blend, pass::BlendMode::OneOne);
-  EXPECT_EQ(v0.blend, pass::BlendMode::Replace);
-  EXPECT_EQ(v1.blend, pass::BlendMode::OneOne);
+  EXPECT_EQ(h0.draw.blend, pass::BlendMode::Replace);
+  EXPECT_EQ(h1.draw.blend, pass::BlendMode::OneOne);
+  EXPECT_EQ(v0.draw.blend, pass::BlendMode::Replace);
+  EXPECT_EQ(v1.draw.blend, pass::BlendMode::OneOne);
   // tex t0..t3 read texture stages 0..3: the source is bound to all four; with the half
   // texel every tap is on a texel centre, so point filtering.
   ASSERT_EQ(h0.textures.size(), 4u);
   for (uint32_t k = 0; k < 4; ++k) {
     EXPECT_EQ(h0.textures[k].stage, k);
     EXPECT_EQ(h0.textures[k].texture, kSmallTexture);
-    EXPECT_EQ(h0.textures[k].sampler.filter, pass::Filter::Point);
-    EXPECT_EQ(v1.textures[k].sampler.filter, pass::Filter::Point);
+    EXPECT_EQ(h0.binding(h0.textures[k]).sampler.filter, pass::Filter::Point);
+    EXPECT_EQ(v1.binding(v1.textures[k]).sampler.filter, pass::Filter::Point);
     EXPECT_EQ(v0.textures[k].texture, kBlurHTexture);
   }
   EXPECT_EQ(v1.target, kGlowTexture);
@@ -208,14 +210,15 @@ TEST(GlowPlanDx8, WithoutHalfTexelOffsetsAreWholeTexels) {
   PlanResult plan_built = build_glow_dx8(p);
   ASSERT_TRUE(plan_built) << plan_built.message();
   EffectPlan& plan = *plan_built;
-  EXPECT_FLOAT_EQ(plan.graph.passes[2].vs_constants.f[0][0], -3.0f / 23);
-  EXPECT_EQ(plan.graph.passes[2].vs_constants.f[0][1], 0.0f);
-  EXPECT_EQ(plan.graph.passes[2].vs_constants.f[3][0], 0.0f);
-  EXPECT_FLOAT_EQ(plan.graph.passes[4].vs_constants.f[0][1], -3.0f / 14);
+  EXPECT_FLOAT_EQ(plan.graph.passes[2].draw.vs_constants.f[0][0], -3.0f / 23);
+  EXPECT_EQ(plan.graph.passes[2].draw.vs_constants.f[0][1], 0.0f);
+  EXPECT_EQ(plan.graph.passes[2].draw.vs_constants.f[3][0], 0.0f);
+  EXPECT_FLOAT_EQ(plan.graph.passes[4].draw.vs_constants.f[0][1], -3.0f / 14);
   // Taps on texel corners: bilinear on all four stages, as on D3D8/9 hardware.
   for (size_t i = 2; i < 6; ++i)
     for (const TextureBind& t : plan.graph.passes[i].textures)
-      EXPECT_EQ(t.sampler.filter, pass::Filter::Linear) << plan.graph.passes[i].name;
+      EXPECT_EQ(plan.graph.passes[i].binding(t).sampler.filter, pass::Filter::Linear)
+          << plan.graph.passes[i].name;
 }
 
 TEST(GlowPlanDx8, HelperPassesAreD3D8Listings) {
@@ -223,20 +226,20 @@ TEST(GlowPlanDx8, HelperPassesAreD3D8Listings) {
   ASSERT_TRUE(plan_built) << plan_built.message();
   EffectPlan& plan = *plan_built;
   for (const PassDesc& d : plan.graph.passes) {
-    EXPECT_EQ(d.vs->profile, ir::Profile::vs_1_1) << d.name;
-    EXPECT_TRUE(ir::is_ps11_13(d.ps->profile)) << d.name;
+    EXPECT_EQ(d.draw.vertex_program->profile, ir::Profile::vs_1_1) << d.name;
+    EXPECT_TRUE(ir::is_ps11_13(d.draw.pixel_program->profile)) << d.name;
   }
   const PassDesc &ex = plan.graph.passes[0], &ds = plan.graph.passes[1];
   const PassDesc& co = plan.graph.passes.back();
   EXPECT_EQ(ex.analytic, AnalyticForm::MaskByAlpha);
-  EXPECT_EQ(ex.ps->profile, ir::Profile::ps_1_1);
-  EXPECT_EQ(plan.graph.passes[2].ps->profile, ir::Profile::ps_1_3); // Listing 4
+  EXPECT_EQ(ex.draw.pixel_program->profile, ir::Profile::ps_1_1);
+  EXPECT_EQ(plan.graph.passes[2].draw.pixel_program->profile, ir::Profile::ps_1_3); // Listing 4
   EXPECT_EQ(ds.analytic, AnalyticForm::Linear);
   // Extract: one point read at texel centres of the 45 × 27 scene.
-  EXPECT_FLOAT_EQ(ex.vs_constants.f[0][0], 0.5f / 45);
-  EXPECT_FLOAT_EQ(ex.vs_constants.f[4][1], 1.0f);
+  EXPECT_FLOAT_EQ(ex.draw.vs_constants.f[0][0], 0.5f / 45);
+  EXPECT_FLOAT_EQ(ex.draw.vs_constants.f[4][1], 1.0f);
   ASSERT_EQ(ex.textures.size(), 1u);
-  EXPECT_EQ(ex.textures[0].sampler.filter, pass::Filter::Point);
+  EXPECT_EQ(ex.binding(ex.textures[0]).sampler.filter, pass::Filter::Point);
   // Downsample by 2 into 23 × 14, one pass: point reads at the four texel centres of each
   // 2 × 2 block, weight ¼ each, the quad uv scaled by 2·23/45 and 2·14/27. Four stages bound.
   EXPECT_EQ(ds.name, "downsample.0");
@@ -244,21 +247,21 @@ TEST(GlowPlanDx8, HelperPassesAreD3D8Listings) {
   const float xs[4] = {0.5f / 45, 1.5f / 45, 0.5f / 45, 1.5f / 45};
   const float ys[4] = {0.5f / 27, 0.5f / 27, 1.5f / 27, 1.5f / 27};
   for (int k = 0; k < 4; ++k) {
-    EXPECT_FLOAT_EQ(ds.vs_constants.f[k][0], xs[k]) << k;
-    EXPECT_FLOAT_EQ(ds.vs_constants.f[k][1], ys[k]) << k;
-    EXPECT_FLOAT_EQ(ds.vs_constants.f[k + 4][0], 46.0f / 45) << k;
-    EXPECT_FLOAT_EQ(ds.vs_constants.f[k + 4][1], 28.0f / 27) << k;
-    EXPECT_EQ(ds.ps_constants.f[k][0], 0.25f) << k;
+    EXPECT_FLOAT_EQ(ds.draw.vs_constants.f[k][0], xs[k]) << k;
+    EXPECT_FLOAT_EQ(ds.draw.vs_constants.f[k][1], ys[k]) << k;
+    EXPECT_FLOAT_EQ(ds.draw.vs_constants.f[k + 4][0], 46.0f / 45) << k;
+    EXPECT_FLOAT_EQ(ds.draw.vs_constants.f[k + 4][1], 28.0f / 27) << k;
+    EXPECT_EQ(ds.draw.ps_constants.f[k][0], 0.25f) << k;
   }
-  EXPECT_EQ(ds.blend, pass::BlendMode::Replace);
+  EXPECT_EQ(ds.draw.blend, pass::BlendMode::Replace);
   ASSERT_EQ(ds.textures.size(), 4u);
   EXPECT_EQ(ds.textures[3].stage, 3u);
   EXPECT_EQ(ds.textures[3].texture, kSourcesTexture);
-  EXPECT_EQ(ds.textures[3].sampler.filter, pass::Filter::Point);
+  EXPECT_EQ(ds.binding(ds.textures[3]).sampler.filter, pass::Filter::Point);
   // Composite: scene at texel centres; glow at (i + ½)/2 texels of a 46 × 28 cover.
-  EXPECT_FLOAT_EQ(co.vs_constants.f[1][0], 0.5f / 46);
-  EXPECT_FLOAT_EQ(co.vs_constants.f[5][0], 45.0f / 46);
-  EXPECT_FLOAT_EQ(co.vs_constants.f[5][1], 27.0f / 28);
+  EXPECT_FLOAT_EQ(co.draw.vs_constants.f[1][0], 0.5f / 46);
+  EXPECT_FLOAT_EQ(co.draw.vs_constants.f[5][0], 45.0f / 46);
+  EXPECT_FLOAT_EQ(co.draw.vs_constants.f[5][1], 27.0f / 28);
   ASSERT_EQ(co.textures.size(), 2u);
   EXPECT_EQ(co.textures[1].stage, 1u);
   EXPECT_EQ(co.textures[1].texture, kGlowTexture);
@@ -267,7 +270,7 @@ TEST(GlowPlanDx8, HelperPassesAreD3D8Listings) {
 // ---- intensity and bad parameters (both tiers) -----------------------------------------
 
 float composite_c0(const EffectPlan& plan) {
-  return plan.graph.passes.back().ps_constants.f.at(0)[0];
+  return plan.graph.passes.back().draw.ps_constants.f.at(0)[0];
 }
 
 TEST(GlowIntensity, Dx9PutsIntensityInC0) {
@@ -280,7 +283,7 @@ TEST(GlowIntensity, Dx9PutsIntensityInC0) {
     ASSERT_TRUE(plan_built) << plan_built.message();
     EffectPlan& plan = *plan_built;
     EXPECT_EQ(composite_c0(plan), float(intensity));
-    EXPECT_EQ(plan.graph.passes.back().ps->profile, ir::Profile::ps_2_0);
+    EXPECT_EQ(plan.graph.passes.back().draw.pixel_program->profile, ir::Profile::ps_2_0);
   }
 }
 
@@ -292,7 +295,7 @@ TEST(GlowIntensity, Dx8UpToOneInC0AboveOneAQuarterWithX4) {
     ASSERT_TRUE(plan_built) << plan_built.message();
     EffectPlan& plan = *plan_built;
     EXPECT_EQ(composite_c0(plan), float(intensity));
-    EXPECT_EQ(plan.graph.passes.back().ps->code.size(), 4u); // tex, tex, mad, +mov
+    EXPECT_EQ(plan.graph.passes.back().draw.pixel_program->code.size(), 4u); // tex, tex, mad, +mov
   }
   for (double intensity : {1.5, 4.0}) {
     p.intensity = intensity;
@@ -300,7 +303,7 @@ TEST(GlowIntensity, Dx8UpToOneInC0AboveOneAQuarterWithX4) {
     ASSERT_TRUE(plan_built) << plan_built.message();
     EffectPlan& plan = *plan_built;
     EXPECT_EQ(composite_c0(plan), float(intensity / 4));
-    const ir::Instruction& mul = plan.graph.passes.back().ps->code.at(2);
+    const ir::Instruction& mul = plan.graph.passes.back().draw.pixel_program->code.at(2);
     EXPECT_EQ(mul.op, ir::Opcode::Mul);
     EXPECT_EQ(mul.mods.shift, 2); // _x4
   }
@@ -388,17 +391,17 @@ TEST(EffectPlan, Dx9cLoopsOverItsTapsWithOffsetsAndWeightsInConstants) {
   for (const PassDesc& d : plan->graph.passes)
     if (d.name == "blur_h.0") h = &d;
   ASSERT_NE(h, nullptr);
-  EXPECT_EQ(h->ps->profile, ir::Profile::ps_3_0);
+  EXPECT_EQ(h->draw.pixel_program->profile, ir::Profile::ps_3_0);
   EXPECT_EQ(h->analytic, AnalyticForm::Kernel);
-  EXPECT_EQ(h->ps_constants.i[0], (std::array<int32_t, 4>{7, 1, 2, 0}));
-  ASSERT_EQ(h->ps_constants.f.size(), 15u); // c0, then 7 × (offset, weight)
+  EXPECT_EQ(h->draw.ps_constants.i[0], (std::array<int32_t, 4>{7, 1, 2, 0}));
+  ASSERT_EQ(h->draw.ps_constants.f.size(), 15u); // c0, then 7 × (offset, weight)
   ASSERT_EQ(h->kernel.size(), 7u);
   for (size_t k = 0; k < 7; ++k) {
     // Tap k: offset (offset_k + ½)/64 along x, ½/32 along y (the half texel).
     const float du = float((plan->taps[k].offset + 0.5) / 64), dv = float(0.5 / 32);
-    EXPECT_EQ(h->ps_constants.f[2 * k + 1][0], du) << k;
-    EXPECT_EQ(h->ps_constants.f[2 * k + 1][1], dv) << k;
-    EXPECT_EQ(h->ps_constants.f[2 * k + 2][0], float(plan->taps[k].weight)) << k;
+    EXPECT_EQ(h->draw.ps_constants.f[2 * k + 1][0], du) << k;
+    EXPECT_EQ(h->draw.ps_constants.f[2 * k + 1][1], dv) << k;
+    EXPECT_EQ(h->draw.ps_constants.f[2 * k + 2][0], float(plan->taps[k].weight)) << k;
     EXPECT_EQ(h->kernel[k].offset[0], double(du)) << k;
     EXPECT_EQ(h->kernel[k].weight[0], double(float(plan->taps[k].weight))) << k;
   }

@@ -74,8 +74,8 @@ TEST(GlslBlur, GraphHasTwoGlslPassesWithTwinsAndKernels) {
   EffectPlan& plan = *plan_built;
   ASSERT_EQ(plan.graph.passes.size(), 2u);
   for (const PassDesc& p : plan.graph.passes) {
-    EXPECT_TRUE(p.glsl_spirv && !p.glsl_spirv->empty()) << p.name;
-    EXPECT_EQ(p.ps->profile, ir::Profile::ps_2_0) << p.name;
+    EXPECT_TRUE(p.draw.pixel_spirv && !p.draw.pixel_spirv->empty()) << p.name;
+    EXPECT_EQ(p.draw.pixel_program->profile, ir::Profile::ps_2_0) << p.name;
     ASSERT_EQ(p.kernel.size(), 9u);
     double sum = 0;
     for (const KernelTap& t : p.kernel) sum += t.weight[0];
@@ -117,7 +117,7 @@ TEST_F(GlslBlurVulkan, GlslTwinAndKernelAgreeWithin1e5) {
   ASSERT_TRUE(plan_built) << plan_built.message();
   EffectPlan& plan = *plan_built;
   EffectPlan twin_plan = plan;
-  for (PassDesc& p : twin_plan.graph.passes) p.glsl_spirv.reset(); // ps_2_0 through codegen
+  for (PassDesc& p : twin_plan.graph.passes) p.draw.pixel_spirv.reset(); // ps_2_0 through codegen
   const img::Image scene = random_scene();
   auto vk = make_vulkan_pass_device(*dev);
   CpuPassDevice cpu(2);

@@ -168,7 +168,7 @@ TEST(Outline, StencilStateOutOfRangeIsRefusedByTheGraph) {
   PlanResult plan_built = build_outline(params(), object());
   ASSERT_TRUE(plan_built) << plan_built.message();
   EffectPlan& plan = *plan_built;
-  plan.graph.passes[0].depth_stencil.stencil_ref = 256;
+  plan.graph.passes[0].draw.depth_stencil.stencil_ref = 256;
   EXPECT_NE(check_graph(plan.graph).message().find("0..255"), std::string::npos)
       << check_graph(plan.graph).message();
   OutlineParams o = object();

@@ -116,14 +116,15 @@ TEST(Prune, CornerSourcesLimitTheBlurToACorner) {
   ASSERT_EQ(g.limited.size(), 4u);
   for (const PassDesc& p : g.graph.passes) {
     if (p.name == "composite") {
-      EXPECT_FALSE(p.scissor) << p.name; // the frame is drawn whole
+      EXPECT_FALSE(p.draw.scissor) << p.name; // the frame is drawn whole
       continue;
     }
-    ASSERT_TRUE(p.scissor) << p.name;
+    ASSERT_TRUE(p.draw.scissor) << p.name;
     const TextureDesc* t = g.graph.find_texture(p.target);
-    const int64_t area = int64_t(p.scissor->x1 - p.scissor->x0) * (p.scissor->y1 - p.scissor->y0);
-    EXPECT_EQ(p.scissor->x0, 0);
-    EXPECT_EQ(p.scissor->y0, 0);
+    const int64_t area = int64_t(p.draw.scissor->x1 - p.draw.scissor->x0) *
+                         (p.draw.scissor->y1 - p.draw.scissor->y0);
+    EXPECT_EQ(p.draw.scissor->x0, 0);
+    EXPECT_EQ(p.draw.scissor->y0, 0);
     EXPECT_LT(area * 2, int64_t(t->width) * t->height) << p.name; // under half of it
   }
 }

@@ -1,5 +1,5 @@
 // run_single_pass (single_pass.h): `tierlift run`'s graph of one pass on the ways asked for;
-// make_pass (run_graph.h): the draw a device is handed for a pass of a graph.
+// graph_draw (run_graph.h): the draw a device is handed for a pass of a graph.
 // The pass here has no listings: D3D9's fixed function passes its constant colour (oD0) to
 // every pixel, so the expected image is that colour everywhere, known before the run.
 #include <gtest/gtest.h>
@@ -7,6 +7,7 @@
 #include <cstdlib>
 
 #include "../vulkan/vk_test_util.h"
+#include "tierlift/effects/glow/builtin_listing.h"
 #include "tierlift/effects/graph/run_graph.h"
 #include "tierlift/effects/graph/single_pass.h"
 #include "tierlift/ir/result_diagnostics.h"
@@ -64,35 +65,51 @@ TEST(SinglePassRun, FailuresNameTheirRule) {
   EXPECT_TRUE(ir::failed_with(too_big, "memory")) << too_big.message();
 }
 
-// The draw a pass description asks of a device: its banks (c#, i#, b#) and each bound stage's
-// sampler state as given, and no image, however many stages are bound — the device that owns
-// the textures binds its own (no copy, no placeholder).
-TEST(MakePass, CarriesBanksAndSamplerStatesButBindsNoImage) {
+// The draw a device is handed for a pass of a graph is the pass's own draw — banks (c#, i#,
+// b#) and each stage's sampler state as given — with what the graph decides put in (its
+// conventions, one colour target per named target) and no image, however many stages are
+// bound: the device that owns the textures binds its own (no copy, no placeholder).
+TEST(GraphDraw, IsThePassesDrawWithWhatTheGraphDecides) {
   PassDesc d;
   d.name = "p";
-  d.constant_inputs = pass::PixelInput{};
   d.target = "t";
-  d.ps_constants.f = {{1, 2, 3, 4}};
-  d.ps_constants.i[3] = {5, 6, 7, 8};
-  d.vs_constants.b[2] = true;
+  d.more_targets = {"u", "v"};
+  d.draw.ps_constants.f = {{1, 2, 3, 4}};
+  d.draw.ps_constants.i[3] = {5, 6, 7, 8};
+  d.draw.vs_constants.b[2] = true;
   pass::SamplerState linear;
   linear.filter = pass::Filter::Linear;
   linear.address_u = pass::AddressMode::Clamp;
-  d.textures = {{2, "a", linear, {}}, {5, "a", {}, {}}};
-  ir::Result<pass::Pass> p = make_pass(d, ir::Conventions{});
-  ASSERT_TRUE(p) << p.message();
-  EXPECT_EQ(p->ps_constants.f.at(0)[3], 4.0f);
-  EXPECT_EQ(p->ps_constants.i[3][1], 6);
-  EXPECT_TRUE(p->vs_constants.b[2]);
-  EXPECT_EQ(p->textures[2].sampler.filter, pass::Filter::Linear);
-  EXPECT_EQ(p->textures[2].sampler.address_u, pass::AddressMode::Clamp);
-  EXPECT_EQ(p->textures[5].sampler.filter, pass::Filter::Point);
-  for (const pass::TextureBinding& b : p->textures) EXPECT_EQ(b.image, nullptr);
+  bind_reads(d, 2, "a", linear, 1, false);
+  d.textures.push_back({5, "a"});
+  ir::Conventions conventions;
+  conventions.subtexel_bits = 4;
+  const pass::Pass p = graph_draw(d, conventions);
+  EXPECT_EQ(p.ps_constants.f.at(0)[3], 4.0f);
+  EXPECT_EQ(p.ps_constants.i[3][1], 6);
+  EXPECT_TRUE(p.vs_constants.b[2]);
+  EXPECT_EQ(p.textures[2].sampler.filter, pass::Filter::Linear);
+  EXPECT_EQ(p.textures[2].sampler.address_u, pass::AddressMode::Clamp);
+  EXPECT_EQ(p.textures[5].sampler.filter, pass::Filter::Point);
+  for (const pass::TextureBinding& b : p.textures) EXPECT_EQ(b.image, nullptr);
+  EXPECT_EQ(p.color_targets, 3u);
+  EXPECT_EQ(p.conventions.subtexel_bits, 4);
+  EXPECT_TRUE(p.vertices.empty()); // no vertex listing: the quad with constant inputs
+}
 
-  d.textures = {{pass::kMaxSamplers, "a", {}, {}}}; // s16: past the last stage
-  ir::Result<pass::Pass> past = make_pass(d, ir::Conventions{});
-  ASSERT_FALSE(past);
-  EXPECT_TRUE(ir::failed_with(past, "graph")) << past.message();
+// A vertex listing without vertices draws the full-screen quad: the corners (−1, 1) … (1, −1)
+// at its dcl_position input (v0), the uv (0, 0) … (1, 1) at its dcl_texcoord input (v3).
+TEST(GraphDraw, AVertexListingWithoutVerticesDrawsTheQuad) {
+  ListingResult vs = builtin_listing("glow/quad4_coords.vsh");
+  ASSERT_TRUE(vs) << vs.message();
+  PassDesc d;
+  d.draw.vertex_program = *vs;
+  const pass::Pass p = graph_draw(d, {});
+  ASSERT_EQ(p.vertices.size(), 4u);
+  EXPECT_EQ(p.vertices[0].v[0], (pass::Vec4{-1, 1, 0, 1}));
+  EXPECT_EQ(p.vertices[3].v[0], (pass::Vec4{1, -1, 0, 1}));
+  EXPECT_EQ(p.vertices[3].v[3], (pass::Vec4{1, 1, 0, 1}));
+  ASSERT_EQ(p.triangles.size(), 2u);
 }
 
 } // namespace

@@ -119,7 +119,11 @@ TEST(SinglePassGraph, OneTexturePerImageAndTheRequestsTarget) {
   EXPECT_EQ(target->format, img::Format::RGBA8);
   ASSERT_EQ(g->passes.size(), 1u);
   EXPECT_EQ(g->passes[0].textures.size(), 4u);
-  EXPECT_EQ(g->passes[0].vertices.size(), 4u); // the quad's corners with --attr's uv
+  EXPECT_EQ(g->passes[0].draw.vertices.size(), 4u); // the quad's corners with --attr's uv
+  // The pass is the draw itself, moved in: the same listings; its images left it for the
+  // graph's textures, which the device binds by name.
+  EXPECT_EQ(g->passes[0].draw.pixel_program.get(), p.pixel_program.get());
+  for (const pass::TextureBinding& b : g->passes[0].draw.textures) EXPECT_EQ(b.image, nullptr);
   EXPECT_TRUE(check_graph(*g));
 }
 
@@ -211,7 +215,7 @@ TEST(SinglePassGraph, CarriesFurtherColourTargets) {
   }
 }
 
-// Texture-stage state (texbem's bump matrix, `run --bump-matrix`) travels with the binding.
+// Texture-stage state (texbem's bump matrix, `run --bump-matrix`) stays with the draw's stage.
 TEST(SinglePassGraph, CarriesTextureStageState) {
   const pass::RunRequest r = blur_request(img::Format::RGBA32F);
   pass::Pass stage = prepare(r);
@@ -223,8 +227,9 @@ TEST(SinglePassGraph, CarriesTextureStageState) {
   for (const TextureBind& b : g->passes[0].textures) {
     if (b.stage != 1) continue;
     found = true;
-    EXPECT_TRUE(b.stage_state.projected);
-    EXPECT_EQ(b.stage_state.bumpenv_mat, (std::array<float, 4>{0.5f, -0.25f, 0.125f, 2.0f}));
+    EXPECT_TRUE(g->passes[0].binding(b).stage.projected);
+    EXPECT_EQ(g->passes[0].binding(b).stage.bumpenv_mat,
+              (std::array<float, 4>{0.5f, -0.25f, 0.125f, 2.0f}));
   }
   EXPECT_TRUE(found);
 }
@@ -243,11 +248,13 @@ TEST(SinglePassGraph, ListingLessFormsInTheGraphRules) {
     ASSERT_FALSE(s) << why;
     EXPECT_NE(s.message().find(why), std::string::npos) << s.message();
   };
-  refused([](PassDesc& p) { p.constant_inputs.reset(); }, "needs a vertex listing");
-  refused([](PassDesc& p) { p.vertices.resize(3); }, "vertices without a vertex listing");
-  refused([&](PassDesc& p) { p.vs = gpugems_listing("listing3_blur4_coords.vsh"); },
-          "constant pixel inputs replace the vertex listing");
+  refused([](PassDesc& p) { p.draw.vertices.resize(3); }, "vertices without a vertex listing");
   refused([](PassDesc& p) { p.more_targets = {"target2"}; }, "need a pixel listing");
+  // What the graph decides itself, or no graph device draws.
+  refused([](PassDesc& p) { p.draw.transformed.resize(3); }, "pre-transformed vertices");
+  refused([](PassDesc& p) { p.draw.viewport.width = 2; }, "a viewport other than");
+  refused([](PassDesc& p) { p.draw.color_targets = 2; }, "2 colour targets counted");
+  refused([](PassDesc& p) { p.draw.executor = pass::Executor::Scalar; }, "the scalar executor");
 }
 
 TEST(SinglePassGraph, AnalyticDeviceRefusesWhatItDoesNotModel) {
@@ -265,7 +272,7 @@ TEST(SinglePassGraph, AnalyticDeviceRefusesWhatItDoesNotModel) {
   ir::Result<EffectGraph> fg =
       single_pass_graph(prepare(flow), flow.width, flow.height, flow.format);
   ASSERT_TRUE(fg);
-  fg->passes[0].ps = gpugems_listing("listing4_blur4_weighted_sum.psh");
+  fg->passes[0].draw.pixel_program = gpugems_listing("listing4_blur4_weighted_sum.psh");
   ir::Result<GraphRun> frun = run_graph(*fg, *analytic, images);
   ASSERT_FALSE(frun);
   EXPECT_NE(frun.message().find("no integer or boolean constants"), std::string::npos)

@@ -26,7 +26,7 @@ using test_scenes::Scene;
 EffectPlan perturb_blur_weights(EffectPlan plan, float factor) {
   for (PassDesc& d : plan.graph.passes)
     if (d.name.rfind("blur_", 0) == 0)
-      for (auto& c : d.ps_constants.f)
+      for (auto& c : d.draw.ps_constants.f)
         for (float& x : c) x *= factor;
   return plan;
 }

@@ -146,7 +146,7 @@ TEST(ThreeWaySameInputs, Rgba8ReplacingPassesAgreeAlone) {
         uint64_t midpoint_pixels = 0, differing = 0;
         for (size_t i = 0; i < plan.graph.passes.size(); ++i) {
           const PassDesc& d = plan.graph.passes[i];
-          if (d.blend == cpu::BlendMode::Replace) {
+          if (d.draw.blend == cpu::BlendMode::Replace) {
             const EffectGraph one = one_pass_graph(plan.graph, d);
             ImageMap ia = state, ib = state;
             CpuPassDevice c1(2);

@@ -247,18 +247,19 @@ void check_half_texel_rule(Tier tier, bool half_texel) {
     while (index < plan.graph.passes.size() && plan.graph.passes[index].name != name) ++index;
     ASSERT_LT(index, plan.graph.passes.size());
     const PassDesc& d = plan.graph.passes[index];
-    ASSERT_EQ(d.blend, cpu::BlendMode::Replace);
+    ASSERT_EQ(d.draw.blend, cpu::BlendMode::Replace);
     ASSERT_FALSE(d.textures.empty());
     // With the half texel every tap sits on a texel centre and the pass reads by point
     // (bilinear there is the texel itself); without it, bilinear at texel corners.
-    ASSERT_EQ(d.textures[0].sampler.filter, half_texel ? cpu::Filter::Point : cpu::Filter::Linear);
-    ASSERT_EQ(d.textures[0].sampler.address_u, cpu::AddressMode::Clamp);
-    ASSERT_EQ(d.textures[0].sampler.address_v, cpu::AddressMode::Clamp);
+    const pass::SamplerState& s = d.draw.textures[d.textures[0].stage].sampler;
+    ASSERT_EQ(s.filter, half_texel ? cpu::Filter::Point : cpu::Filter::Linear);
+    ASSERT_EQ(s.address_u, cpu::AddressMode::Clamp);
+    ASSERT_EQ(s.address_v, cpu::AddressMode::Clamp);
     const img::Image& source = run.images.at(d.textures[0].texture);
     ir::Result<analytic::TapExtraction> ex =
-        tier == Tier::Dx9c
-            ? ir::Result<analytic::TapExtraction>(kernel_taps(d))
-            : analytic::extract_taps(*d.vs, d.vs_constants.f, *d.ps, d.ps_constants.f);
+        tier == Tier::Dx9c ? ir::Result<analytic::TapExtraction>(kernel_taps(d))
+                           : analytic::extract_taps(*d.draw.vertex_program, d.draw.vs_constants.f,
+                                                    *d.draw.pixel_program, d.draw.ps_constants.f);
     ASSERT_TRUE(ex) << ex.message();
     // dx9c loops over the pass's taps only (no padding).
     ASSERT_EQ(ex->taps.size(),
@@ -332,7 +333,7 @@ TEST(ThreeWayAnalytic, UnmodelledPassesAreErrors) {
   ListingResult product = builtin_listing("glow/extract_sources.psh"); // rgb × alpha
   ASSERT_TRUE(product) << product.message();
   EffectPlan bad = plan;
-  bad.graph.passes.back().ps = *product; // the composite, still declared Linear
+  bad.graph.passes.back().draw.pixel_program = *product; // the composite, still declared Linear
   AnalyticPassDevice analytic;
   EffectRun r = run_effect(bad, scene, analytic);
   EXPECT_FALSE(r.run.ok());
@@ -340,7 +341,7 @@ TEST(ThreeWayAnalytic, UnmodelledPassesAreErrors) {
   EXPECT_NE(r.run.message().find("line 7:1"), std::string::npos) << r.run.message();
   EXPECT_NE(r.run.message().find("product of two samples"), std::string::npos) << r.run.message();
   bad = plan;
-  bad.graph.passes.back().blend = cpu::BlendMode::SrcAlphaOne;
+  bad.graph.passes.back().draw.blend = cpu::BlendMode::SrcAlphaOne;
   r = run_effect(bad, scene, analytic);
   EXPECT_NE(r.run.message().find("Replace and ONE/ONE"), std::string::npos) << r.run.message();
   bad = plan;

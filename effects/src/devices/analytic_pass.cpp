@@ -21,9 +21,10 @@ std::string prepare(const PassDesc& pass, const EffectGraph& graph, const ImageM
   if (!target) return fmt::format("pass '{}': unknown target '{}'", pass.name, pass.target);
   for (const TextureBind& b : pass.textures) {
     auto it = images.find(b.texture);
-    if (it == images.end())
+    if (it == images.end() || b.stage >= pass::kMaxSamplers)
       return fmt::format("pass '{}': texture '{}' has no image", pass.name, b.texture);
-    in.textures.push_back({b.stage, &it->second, sampler_model(b.sampler)});
+    in.textures.push_back(
+        {b.stage, &it->second, sampler_model(pass.draw.textures[b.stage].sampler)});
   }
   in.model.conventions = graph.conventions;
   // RGBA8 midpoints: the graph's devices round them as lavapipe does (to even) under
@@ -35,7 +36,7 @@ std::string prepare(const PassDesc& pass, const EffectGraph& graph, const ImageM
   in.model.target_width = target->width;
   in.model.target_height = target->height;
   in.model.target_format = target->format;
-  switch (pass.blend) {
+  switch (pass.draw.blend) {
   case pass::BlendMode::Replace: in.blend = analytic::Blend::Replace; break;
   case pass::BlendMode::OneOne: in.blend = analytic::Blend::OneOne; break;
   default:
@@ -46,11 +47,11 @@ std::string prepare(const PassDesc& pass, const EffectGraph& graph, const ImageM
   if (dst == images.end())
     return fmt::format("pass '{}': target '{}' has no image", pass.name, pass.target);
   in.destination = &dst->second;
-  in.ps1x_clamp = ir::is_ps1x(pass.ps->profile);
+  in.ps1x_clamp = ir::is_ps1x(pass.draw.pixel_program->profile);
   if (in.ps1x_clamp && graph.conventions.ps1x_fixed_bits != 0)
     return fmt::format("pass '{}': ps_1_x fixed-point emulation ({} bits) is not modelled",
                        pass.name, graph.conventions.ps1x_fixed_bits);
-  if (ir::Status quad = analytic::check_position_passthrough(*pass.vs); !quad)
+  if (ir::Status quad = analytic::check_position_passthrough(*pass.draw.vertex_program); !quad)
     return fmt::format("cannot model pass '{}' (a full-screen quad): vertex listing: {}", pass.name,
                        quad.message());
   return "";
@@ -61,7 +62,7 @@ std::string prepare(const PassDesc& pass, const EffectGraph& graph, const ImageM
 // their value. Replace blending only.
 std::string run_object_pass(const PassDesc& pass, const EffectGraph& graph, ImageMap& images,
                             MidpointMasks& midpoints) {
-  if (pass.blend != pass::BlendMode::Replace)
+  if (pass.draw.blend != pass::BlendMode::Replace)
     return fmt::format("pass '{}': the analytic object pass knows Replace blending only",
                        pass.name);
   const TextureDesc* target = graph.find_texture(pass.target);
@@ -156,18 +157,19 @@ analytic::SamplerModel sampler_model(const pass::SamplerState& s) {
 
 std::string run_analytic_pass(const PassDesc& pass, const EffectGraph& graph, ImageMap& images,
                               MidpointMasks& midpoints, std::vector<std::string>* notes) {
-  if (!pass.vs || !pass.ps)
+  if (!pass.draw.vertex_program || !pass.draw.pixel_program)
     return fmt::format("pass '{}': needs a vertex and a pixel listing", pass.name);
   // The model reads taps off straight-line listings; i# and b# only steer flow control. A
   // Kernel pass states its taps, so its listing's flow control is the devices' concern.
   const pass::ConstantBank plain;
-  const bool flow_constants = pass.vs_constants.i != plain.i || pass.ps_constants.i != plain.i ||
-                              pass.vs_constants.b != plain.b || pass.ps_constants.b != plain.b;
+  const bool flow_constants =
+      pass.draw.vs_constants.i != plain.i || pass.draw.ps_constants.i != plain.i ||
+      pass.draw.vs_constants.b != plain.b || pass.draw.ps_constants.b != plain.b;
   if (pass.analytic != AnalyticForm::Kernel && flow_constants)
     return fmt::format("pass '{}': the analytic model takes no integer or boolean constants",
                        pass.name);
   if (pass.analytic == AnalyticForm::Coverage) {
-    if (pass.scissor)
+    if (pass.draw.scissor)
       return fmt::format("pass '{}': the analytic object pass has no scissor rectangle", pass.name);
     return run_object_pass(pass, graph, images, midpoints);
   }
@@ -175,7 +177,7 @@ std::string run_analytic_pass(const PassDesc& pass, const EffectGraph& graph, Im
     return fmt::format("pass '{}': the analytic model writes several render targets only in an "
                        "object pass (constant outputs)",
                        pass.name);
-  if (!pass.vertices.empty() && pass.stencil.empty())
+  if (!pass.draw.vertices.empty() && pass.stencil.empty())
     return fmt::format("pass '{}': the analytic model reads taps off a full-screen quad; a "
                        "pass with its own triangles must be an object pass",
                        pass.name);
@@ -215,15 +217,16 @@ std::string run_analytic_pass(const PassDesc& pass, const EffectGraph& graph, Im
     result.emplace(analytic::linear_pass(taps, in, &pass_notes));
   } else if (pass.analytic == AnalyticForm::Linear) {
     ir::Result<analytic::TapExtraction> ex =
-        analytic::extract_taps(*pass.vs, pass.vs_constants.f, *pass.ps, pass.ps_constants.f);
+        analytic::extract_taps(*pass.draw.vertex_program, pass.draw.vs_constants.f,
+                               *pass.draw.pixel_program, pass.draw.ps_constants.f);
     if (!ex)
       return fmt::format("cannot model pass '{}' as a weighted sum of reads: {}", pass.name,
                          ex.message());
     pass_notes = ex->notes;
     result.emplace(analytic::linear_pass(ex->taps, in, &pass_notes));
   } else if (pass.analytic == AnalyticForm::MaskByAlphaFogged) {
-    ir::Result<std::vector<analytic::Tap>> ex =
-        analytic::extract_reads(*pass.vs, pass.vs_constants.f, *pass.ps);
+    ir::Result<std::vector<analytic::Tap>> ex = analytic::extract_reads(
+        *pass.draw.vertex_program, pass.draw.vs_constants.f, *pass.draw.pixel_program);
     if (!ex)
       return fmt::format("cannot model pass '{}' as fogged glow sources: {}", pass.name,
                          ex.message());
@@ -232,10 +235,11 @@ std::string run_analytic_pass(const PassDesc& pass, const EffectGraph& graph, Im
                          "{} different reads (expected the sources, then the depth)",
                          pass.name, ex->size());
     result.emplace(analytic::fogged_mask_pass(
-        (*ex)[0], (*ex)[1], analytic::fog_form(*pass.ps, pass.ps_constants.f), in, &pass_notes));
+        (*ex)[0], (*ex)[1], analytic::fog_form(*pass.draw.pixel_program, pass.draw.ps_constants.f),
+        in, &pass_notes));
   } else {
-    ir::Result<std::vector<analytic::Tap>> ex =
-        analytic::extract_reads(*pass.vs, pass.vs_constants.f, *pass.ps);
+    ir::Result<std::vector<analytic::Tap>> ex = analytic::extract_reads(
+        *pass.draw.vertex_program, pass.draw.vs_constants.f, *pass.draw.pixel_program);
     if (!ex)
       return fmt::format("cannot model pass '{}' as rgb × alpha of one read: {}", pass.name,
                          ex.message());
@@ -248,7 +252,7 @@ std::string run_analytic_pass(const PassDesc& pass, const EffectGraph& graph, Im
   if (!*result) return fmt::format("pass '{}': {}", pass.name, result->message());
   img::Image image = std::move(*result).value();
   if (!pass.stencil.empty()) {
-    if (!pass.vertices.empty())
+    if (!pass.draw.vertices.empty())
       return fmt::format("pass '{}': a stencil-tested pass with its own triangles is modelled "
                          "only as an object pass",
                          pass.name);
@@ -258,8 +262,8 @@ std::string run_analytic_pass(const PassDesc& pass, const EffectGraph& graph, Im
         !e.empty())
       return e;
   }
-  if (pass.scissor)
-    keep_outside_scissor(*pass.scissor, images[pass.target], image, midpoints, pass.target,
+  if (pass.draw.scissor)
+    keep_outside_scissor(*pass.draw.scissor, images[pass.target], image, midpoints, pass.target,
                          in.slack ? &mask : nullptr);
   images[pass.target] = std::move(image);
   if (in.slack) midpoints[pass.target] = std::move(mask);

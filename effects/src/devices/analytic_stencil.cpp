@@ -13,28 +13,28 @@ namespace tierlift::effects::detail {
 
 std::string coverage(const PassDesc& pass, const ir::Conventions& conventions, uint32_t w,
                      uint32_t h, std::vector<uint8_t>& covered) {
-  if (pass.vertices.empty()) {
+  if (pass.draw.vertices.empty()) {
     covered.assign(size_t{w} * h, 1);
     return {};
   }
   covered.assign(size_t{w} * h, 0);
-  if (ir::Status quad = analytic::check_position_passthrough(*pass.vs); !quad)
+  if (ir::Status quad = analytic::check_position_passthrough(*pass.draw.vertex_program); !quad)
     return fmt::format("cannot model pass '{}': vertex listing: {}", pass.name, quad.message());
-  const uint32_t reg = pass::position_input(*pass.vs);
+  const uint32_t reg = pass::position_input(*pass.draw.vertex_program);
   if (reg >= 16) return fmt::format("pass '{}': position input v{} out of range", pass.name, reg);
   // Screen positions: x_s = (x/w + 1)·W/2, y_s = (1 − y/w)·H/2 (docs/design.md), snapped to
   // 1/256 pixel as D3D9 and Vulkan rasterisers with 8 sub-pixel bits place vertices. The
   // snapped values have few bits, so the edge functions below are exact in double.
   auto snap = [](double v) { return std::nearbyint(v * 256.0) / 256.0; };
   std::vector<std::array<double, 2>> screen;
-  for (const pass::VertexInput& v : pass.vertices) {
+  for (const pass::VertexInput& v : pass.draw.vertices) {
     const pass::Vec4& p = v.v[reg];
     if (p[3] != 1.0f || p[2] < 0.0f || p[2] > 1.0f)
       return fmt::format("cannot model pass '{}': vertices must have w = 1 and 0 ≤ z ≤ 1",
                          pass.name);
     screen.push_back({snap((double{p[0]} + 1.0) * w / 2.0), snap((1.0 - double{p[1]}) * h / 2.0)});
   }
-  std::vector<std::array<uint32_t, 3>> tris = pass.triangles;
+  std::vector<std::array<uint32_t, 3>> tris = pass.draw.triangles;
   if (tris.empty())
     for (uint32_t i = 0; i + 2 < screen.size(); i += 3) tris.push_back({i, i + 1, i + 2});
   const double offset = conventions.pixel_center == ir::PixelCenter::Modern ? 0.5 : 0.0;
@@ -78,7 +78,7 @@ std::string constant_outputs(const PassDesc& pass, std::array<pass::Vec4, 4>& ou
                        "`mov oC#, c#` is modelled",
                        pass.name, in.loc.line);
   };
-  for (const ir::Instruction& in : pass.ps->code) {
+  for (const ir::Instruction& in : pass.draw.pixel_program->code) {
     if (in.op != ir::Opcode::Mov || !in.dst || in.src.size() != 1) return refuse(in);
     const ir::DstOperand& d = *in.dst;
     const ir::SrcOperand& s = in.src[0];
@@ -87,14 +87,14 @@ std::string constant_outputs(const PassDesc& pass, std::array<pass::Vec4, 4>& ou
         s.mod != ir::SrcMod::None || in.mods.sat || in.mods.shift != 0)
       return refuse(in);
     bool found = false;
-    for (const ir::ConstDef& def : pass.ps->defs)
+    for (const ir::ConstDef& def : pass.draw.pixel_program->defs)
       if (def.file == ir::RegFile::Const && def.index == s.index) {
         for (int c = 0; c < 4; ++c) out[d.index][size_t(c)] = def.f(c);
         found = true;
       }
     if (!found) {
-      if (s.index < pass.ps_constants.f.size())
-        out[d.index] = pass.ps_constants.f[s.index];
+      if (s.index < pass.draw.ps_constants.f.size())
+        out[d.index] = pass.draw.ps_constants.f[s.index];
       else
         out[d.index] = {0, 0, 0, 0}; // an unset constant reads zero (D3D9's reset state)
     }
@@ -104,7 +104,7 @@ std::string constant_outputs(const PassDesc& pass, std::array<pass::Vec4, 4>& ou
 }
 
 void apply_stencil(const PassDesc& pass, img::Image& stencil, std::vector<uint8_t>& covered) {
-  const pass::DepthStencilState& ds = pass.depth_stencil;
+  const pass::DepthStencilState& ds = pass.draw.depth_stencil;
   if (!ds.stencil_test) return;
   for (size_t i = 0; i < covered.size(); ++i) {
     if (!covered[i]) continue;

@@ -67,13 +67,12 @@ void CpuPassDevice::settle(const std::string& name) {
 
 ir::Result<pass::DrawReport> CpuPassDevice::draw(const PassDesc& desc) {
   if (!graph_) return device_error("no run was begun");
-  ir::Result<pass::Pass> pass = make_pass(desc, graph_->conventions);
-  if (!pass) return std::move(pass).failure();
-  pass->executor = executor_;
+  pass::Pass pass = graph_draw(desc, graph_->conventions);
+  pass.executor = executor_;
   // A GLSL pass: the interpreter runs D3D9 listings only, so it runs the pass's ps_2_0 twin
-  // (PassDesc::glsl_spirv; docs/glsl.md). The GLSL and the twin are compared on the Vulkan
-  // device, where both run, so the twin standing in here is checked, not assumed.
-  pass->pixel_spirv.reset();
+  // (PassDesc::draw's pixel_program; docs/glsl.md). The GLSL and the twin are compared on the
+  // Vulkan device, where both run, so the twin standing in here is checked, not assumed.
+  pass.pixel_spirv.reset();
   auto it = images_.find(desc.target);
   if (it == images_.end()) return device_error(fmt::format("no texture '{}'", desc.target));
   cpu::DrawTargets targets;
@@ -92,13 +91,13 @@ ir::Result<pass::DrawReport> CpuPassDevice::draw(const PassDesc& desc) {
   }
   for (const TextureBind& b : desc.textures) {
     settle(b.texture);
-    auto tex = images_.find(b.texture); // make_pass checked the stage already
-    if (tex == images_.end())
+    auto tex = images_.find(b.texture);
+    if (tex == images_.end() || b.stage >= pass::kMaxSamplers)
       return device_error(
           fmt::format("pass '{}': texture '{}' has no image", desc.name, b.texture));
     // Not owned: the image outlives the draw, and check_graph refuses a pass that reads its
     // own target, so no texture is written while it is sampled.
-    pass->textures[b.stage].image =
+    pass.textures[b.stage].image =
         std::shared_ptr<const img::Image>(std::shared_ptr<void>(), &tex->second);
   }
   // In place: cpu::draw fails only before it writes a pixel, so a failed draw leaves the
@@ -112,7 +111,7 @@ ir::Result<pass::DrawReport> CpuPassDevice::draw(const PassDesc& desc) {
     for (const std::string& m : desc.more_targets) settle(m);
   }
   const auto t0 = std::chrono::steady_clock::now();
-  ir::Result<cpu::DrawStats> s = cpu::draw(*pass, targets, threads_);
+  ir::Result<cpu::DrawStats> s = cpu::draw(pass, targets, threads_);
   pass::DrawReport report;
   report.draw_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();

@@ -94,8 +94,6 @@ private:
   };
 
   std::string make_draw(const PassDesc& desc, Draw& out) const {
-    ir::Result<pass::Pass> pass = make_pass(desc, graph_->conventions);
-    if (!pass) return pass.message();
     auto target = ids_.find(desc.target);
     if (target == ids_.end()) return fmt::format("no texture '{}'", desc.target);
     if (desc.more_targets.size() + 1 > out.targets.color.size())
@@ -112,12 +110,12 @@ private:
       out.targets.stencil = s->second;
     }
     for (const TextureBind& b : desc.textures) {
-      auto it = ids_.find(b.texture); // make_pass checked the stage already
+      auto it = ids_.find(b.texture);
       if (it == ids_.end() || b.stage >= out.stages.size())
         return fmt::format("pass '{}': texture '{}' has no image", desc.name, b.texture);
       out.stages[b.stage] = it->second;
     }
-    out.pass = std::move(*pass);
+    out.pass = graph_draw(desc, graph_->conventions);
     out.targets.color[0] = target->second;
     return {};
   }

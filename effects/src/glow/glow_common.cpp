@@ -103,13 +103,13 @@ public:
     d.analytic = fog ? AnalyticForm::MaskByAlphaFogged : AnalyticForm::MaskByAlpha;
     // Point reads at texel centres: offset ½ texel, scale 1 (both reads: same size).
     const Coord centre{0.5 / p_.width, 0.5 / p_.height};
-    d.vs_constants.f = helper_vs_constants({centre, centre});
+    d.draw.vs_constants.f = helper_vs_constants({centre, centre});
     bind(d, 0, c.glow_image ? kGlowImageTexture : kSceneTexture, pass::Filter::Point, 1);
     if (fog) {
       bind(d, 1, kDepthTexture, pass::Filter::Point, 1);
       // A ps.1.x listing scales its fog factor by 4 (_x4): its constants clamp to [-1, 1].
       for (const auto& k : fog_constants(c.fog, ir::is_ps1x(l_.fogged->profile) ? 4 : 1))
-        d.ps_constants.f.push_back(k);
+        d.draw.ps_constants.f.push_back(k);
     }
     return d;
   }
@@ -138,13 +138,13 @@ public:
       std::vector<Coord> coords;
       for (size_t k = first; k < std::min(reads.size(), first + kPerPass); ++k) {
         coords.push_back(reads[k].first);
-        d.ps_constants.f.push_back(splat(reads[k].second));
+        d.draw.ps_constants.f.push_back(splat(reads[k].second));
       }
-      d.vs_constants.f = helper_vs_constants(coords);
+      d.draw.vs_constants.f = helper_vs_constants(coords);
       // Reads beyond those needed have weight 0 and read texel (0, 0): they add exactly 0.
-      d.ps_constants.f.resize(kPerPass, pass::Vec4{0, 0, 0, 0});
+      d.draw.ps_constants.f.resize(kPerPass, pass::Vec4{0, 0, 0, 0});
       bind(d, 0, kSourcesTexture, pass::Filter::Point, kPerPass);
-      d.blend = first == 0 ? pass::BlendMode::Replace : pass::BlendMode::OneOne;
+      d.draw.blend = first == 0 ? pass::BlendMode::Replace : pass::BlendMode::OneOne;
       out.push_back(std::move(d));
     }
   }
@@ -167,8 +167,8 @@ public:
         const double off = t < taps.size() ? taps[t].offset : 0.0;
         const double w = t < taps.size() ? taps[t].weight : 0.0;
         const double du = vertical ? h : off + h, dv = vertical ? off + h : h;
-        d.vs_constants.f.push_back({float(du / gw_), float(dv / gh_), 0, 0});
-        d.ps_constants.f.push_back(splat(w * p_.weight_scale));
+        d.draw.vs_constants.f.push_back({float(du / gw_), float(dv / gh_), 0, 0});
+        d.draw.ps_constants.f.push_back(splat(w * p_.weight_scale));
       }
       // A ramped weight scale: every weight of the pass times the frame's scale.
       for (double scale : ramp_values(p_.weight_scale_ramp)) {
@@ -180,7 +180,7 @@ public:
         d.ps_constants_per_frame.push_back(std::move(c));
       }
       bind(d, 0, source, p_.half_texel ? pass::Filter::Point : pass::Filter::Linear, per);
-      d.blend = i == 0 ? pass::BlendMode::Replace : pass::BlendMode::OneOne;
+      d.draw.blend = i == 0 ? pass::BlendMode::Replace : pass::BlendMode::OneOne;
       out.push_back(std::move(d));
     }
   }
@@ -197,23 +197,23 @@ public:
       PassDesc d = listing_pass(fmt::format("{}.{}", vertical ? "blur_v" : "blur_h", i), l_.blur_vs,
                                 l_.blur_ps, target);
       const size_t n = std::min(per, taps.size() - first);
-      d.ps_constants.f.push_back({0, 0, 0, 0}); // c0: the listing's def
+      d.draw.ps_constants.f.push_back({0, 0, 0, 0}); // c0: the listing's def
       d.analytic = AnalyticForm::Kernel;
       for (size_t t = first; t < first + n; ++t) {
         const double du = vertical ? h : taps[t].offset + h, dv = vertical ? taps[t].offset + h : h;
         const pass::Vec4 offset{float(du / gw_), float(dv / gh_), 0, 0};
         const pass::Vec4 weight = splat(taps[t].weight * p_.weight_scale);
-        d.ps_constants.f.push_back(offset);
-        d.ps_constants.f.push_back(weight);
+        d.draw.ps_constants.f.push_back(offset);
+        d.draw.ps_constants.f.push_back(weight);
         KernelTap k;
         k.pixel_add = true;
         k.offset = {offset[0], offset[1]};
         k.weight = {weight[0], weight[1], weight[2], weight[3]};
         d.kernel.push_back(k);
       }
-      d.ps_constants.i[0] = {static_cast<int32_t>(n), 1, 2, 0};
+      d.draw.ps_constants.i[0] = {static_cast<int32_t>(n), 1, 2, 0};
       bind(d, 0, source, p_.half_texel ? pass::Filter::Point : pass::Filter::Linear, 1);
-      d.blend = i == 0 ? pass::BlendMode::Replace : pass::BlendMode::OneOne;
+      d.draw.blend = i == 0 ? pass::BlendMode::Replace : pass::BlendMode::OneOne;
       out.push_back(std::move(d));
     }
   }
@@ -247,21 +247,21 @@ public:
     for (size_t i = 0; i < count; ++i) {
       PassDesc d = listing_pass(fmt::format("{}.{}", vertical ? "blur_v" : "blur_h", i),
                                 r_.stage_blur->vs, r_.stage_blur->ps, target);
-      d.vs_constants.f.assign(tss::kSpecularConstant + 1, pass::Vec4{0, 0, 0, 0});
+      d.draw.vs_constants.f.assign(tss::kSpecularConstant + 1, pass::Vec4{0, 0, 0, 0});
       for (size_t k = 0; k < 2; ++k) {
         const size_t t = 2 * i + k;
         const double off = t < taps.size() ? taps[t].offset : 0.0;
         const double du = vertical ? h : off + h, dv = vertical ? off + h : h;
-        d.vs_constants.f[k] = {float(du / gw_), float(dv / gh_), 0, 0};
+        d.draw.vs_constants.f[k] = {float(du / gw_), float(dv / gh_), 0, 0};
       }
-      d.vs_constants.f[tss::kDiffuseConstant] = diffuse(bytes, i);
+      d.draw.vs_constants.f[tss::kDiffuseConstant] = diffuse(bytes, i);
       for (const std::vector<uint8_t>& b : frame_bytes) {
-        d.vs_constants_per_frame.push_back(d.vs_constants.f);
+        d.vs_constants_per_frame.push_back(d.draw.vs_constants.f);
         d.vs_constants_per_frame.back()[tss::kDiffuseConstant] = diffuse(b, i);
       }
       bind(d, 0, source, p_.half_texel ? pass::Filter::Point : pass::Filter::Linear,
            r_.stage_blur->texture_stages);
-      d.blend = i == 0 ? pass::BlendMode::Replace : pass::BlendMode::OneOne;
+      d.draw.blend = i == 0 ? pass::BlendMode::Replace : pass::BlendMode::OneOne;
       out.push_back(std::move(d));
     }
   }
@@ -270,13 +270,13 @@ public:
     PassDesc d = listing_pass("composite", l_.helper_vs, l_.composite, kFinalTexture);
     // Full-resolution pixel i lies at (i + ½)/n glow texels: u = v·W/(n·gw) + ½/(n·gw).
     const double nw = double(p_.downsample) * gw_, nh = double(p_.downsample) * gh_;
-    d.vs_constants.f = helper_vs_constants(
+    d.draw.vs_constants.f = helper_vs_constants(
         {{0.5 / p_.width, 0.5 / p_.height}, {0.5 / nw, 0.5 / nh, p_.width / nw, p_.height / nh}});
     // check_params keeps intensity finite and within the tier's limit (≤ FLT_MAX).
     const auto s = static_cast<float>(p_.intensity / r_.composite_divisor);
-    d.ps_constants.f = {pass::Vec4{s, s, s, 0}};
+    d.draw.ps_constants.f = {pass::Vec4{s, s, s, 0}};
     d.ps_constants_per_frame =
-        ramp_table(p_.intensity_ramp, 1 / r_.composite_divisor, d.ps_constants.f, 0);
+        ramp_table(p_.intensity_ramp, 1 / r_.composite_divisor, d.draw.ps_constants.f, 0);
     // Scene on stage / sampler 0, glow on 1, in both tiers (t0/s0 and t1/s1).
     bind(d, 0, kSceneTexture, pass::Filter::Point, 1);
     bind(d, 1, kGlowTexture, pass::Filter::Linear, 1);
@@ -287,11 +287,11 @@ public:
   // saved fed texture or last frame's glow), point reads at the glow's texel centres.
   PassDesc afterimage_mix(std::string_view x, std::string_view previous) const {
     PassDesc d = listing_pass("afterimage", l_.helper_vs, l_.mix, kFedTexture);
-    d.vs_constants.f = helper_vs_constants({{0.5 / gw_, 0.5 / gh_}, {0.5 / gw_, 0.5 / gh_}});
+    d.draw.vs_constants.f = helper_vs_constants({{0.5 / gw_, 0.5 / gh_}, {0.5 / gw_, 0.5 / gh_}});
     const auto g = static_cast<float>(p_.afterimage_gain / r_.mix_divisor);
-    d.ps_constants.f = {pass::Vec4{g, g, g, 0}};
+    d.draw.ps_constants.f = {pass::Vec4{g, g, g, 0}};
     d.ps_constants_per_frame =
-        ramp_table(p_.afterimage_gain_ramp, 1 / r_.mix_divisor, d.ps_constants.f, 0);
+        ramp_table(p_.afterimage_gain_ramp, 1 / r_.mix_divisor, d.draw.ps_constants.f, 0);
     bind(d, 0, x, pass::Filter::Point, 1);
     bind(d, 1, previous, pass::Filter::Point, 1);
     return d;
@@ -301,8 +301,8 @@ public:
   // c0 = 0 (t0 + 0·t1 = t0 exactly), since a pass may not read its own target.
   PassDesc afterimage_save() const {
     PassDesc d = listing_pass("afterimage_save", l_.helper_vs, l_.mix, kSavedTexture);
-    d.vs_constants.f = helper_vs_constants({{0.5 / gw_, 0.5 / gh_}, {0.5 / gw_, 0.5 / gh_}});
-    d.ps_constants.f = {pass::Vec4{0, 0, 0, 0}};
+    d.draw.vs_constants.f = helper_vs_constants({{0.5 / gw_, 0.5 / gh_}, {0.5 / gw_, 0.5 / gh_}});
+    d.draw.ps_constants.f = {pass::Vec4{0, 0, 0, 0}};
     bind(d, 0, kFedTexture, pass::Filter::Point, 1);
     bind(d, 1, kFedTexture, pass::Filter::Point, 1);
     return d;

@@ -73,23 +73,23 @@ PlanResult build_glsl_blur(const EffectParams& params, const GlslBlurParams& g) 
                         shader->file, s.name, s.stage));
     PassDesc p;
     p.name = a.name;
-    p.vs = *vs;
-    p.ps = *twin;
+    p.draw.vertex_program = *vs;
+    p.draw.pixel_program = *twin;
     // oT0 = uv · c4 + c0: the quad uv plus half a texel, so vTexCoord (t0) is a texel centre.
-    p.vs_constants.f = {{float(0.5 / w), float(0.5 / h), 0, 0},
-                        {},
-                        {},
-                        {},
-                        {1, 1, 1, 1},
-                        {1, 1, 1, 1},
-                        {1, 1, 1, 1},
-                        {1, 1, 1, 1}};
+    p.draw.vs_constants.f = {{float(0.5 / w), float(0.5 / h), 0, 0},
+                             {},
+                             {},
+                             {},
+                             {1, 1, 1, 1},
+                             {1, 1, 1, 1},
+                             {1, 1, 1, 1},
+                             {1, 1, 1, 1}};
     pass::SamplerState sampler;
     sampler.filter = pass::Filter::Point;
     sampler.address_u = sampler.address_v = pass::AddressMode::Clamp;
-    p.textures = {{0, a.source, sampler}};
+    bind_reads(p, 0, a.source, sampler, 1, false);
     p.target = a.target;
-    p.glsl_spirv = std::make_shared<const std::vector<uint32_t>>(std::move(shader->spirv));
+    p.draw.pixel_spirv = std::make_shared<const std::vector<uint32_t>>(std::move(shader->spirv));
     p.glsl_file = shader->file;
     p.analytic = AnalyticForm::Kernel;
     for (int k = -n; k <= n; ++k) {

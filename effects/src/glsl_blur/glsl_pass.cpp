@@ -60,18 +60,18 @@ PlanResult build_glsl_pass(const glsl::FragmentShader& shader, uint32_t width, u
   g.textures.push_back({std::string(kFinalTexture), width, height, format, false});
   PassDesc p;
   p.name = "glsl";
-  p.vs = *vs;
-  p.ps = *twin;
+  p.draw.vertex_program = *vs;
+  p.draw.pixel_program = *twin;
   // oTk = uv · c(k+4) + ck: the quad uv plus half a texel, for k = 0..3.
   const pass::Vec4 half{float(0.5 / width), float(0.5 / height), 0, 0}, one{1, 1, 1, 1};
-  p.vs_constants.f = {half, half, half, half, one, one, one, one};
+  p.draw.vs_constants.f = {half, half, half, half, one, one, one, one};
   pass::SamplerState sampler;
   sampler.filter = filter;
   sampler.address_u = sampler.address_v = pass::AddressMode::Clamp;
   for (const glsl::Sampler& s : shader.samplers)
-    p.textures.push_back({s.stage, std::string(kSceneTexture), sampler});
+    bind_reads(p, s.stage, kSceneTexture, sampler, 1, false);
   p.target = std::string(kFinalTexture);
-  p.glsl_spirv = std::make_shared<const std::vector<uint32_t>>(shader.spirv);
+  p.draw.pixel_spirv = std::make_shared<const std::vector<uint32_t>>(shader.spirv);
   p.glsl_file = shader.file;
   g.passes.push_back(std::move(p));
   plan.glow_width = width;

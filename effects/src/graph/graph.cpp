@@ -18,10 +18,10 @@ PassDesc PassDesc::at_frame(unsigned frame) const {
   d.vs_constants_per_frame.clear();
   d.ps_constants_per_frame.clear();
   if (!vs_constants_per_frame.empty())
-    d.vs_constants.f =
+    d.draw.vs_constants.f =
         vs_constants_per_frame[std::min<size_t>(frame, vs_constants_per_frame.size() - 1)];
   if (!ps_constants_per_frame.empty())
-    d.ps_constants.f =
+    d.draw.ps_constants.f =
         ps_constants_per_frame[std::min<size_t>(frame, ps_constants_per_frame.size() - 1)];
   return d;
 }
@@ -57,7 +57,7 @@ std::string check_outputs(const EffectGraph& g, const PassDesc& p, const Texture
       return fmt::format("pass '{}': target '{}' is {}x{}, '{}' is {}x{} (one size per pass)",
                          p.name, name, t->width, t->height, p.target, target.width, target.height);
   }
-  const pass::DepthStencilState& ds = p.depth_stencil;
+  const pass::DepthStencilState& ds = p.draw.depth_stencil;
   if (ds.depth_test || ds.depth_write)
     return fmt::format("pass '{}': no device has a depth buffer (stencil only)", p.name);
   if (p.stencil.empty()) {
@@ -76,12 +76,12 @@ std::string check_outputs(const EffectGraph& g, const PassDesc& p, const Texture
       return fmt::format("pass '{}': stencil reference {} is outside the 8-bit buffer's 0..255",
                          p.name, ds.stencil_ref);
   }
-  for (const auto& t : p.triangles)
+  for (const auto& t : p.draw.triangles)
     for (uint32_t i : t)
-      if (i >= p.vertices.size())
+      if (i >= p.draw.vertices.size())
         return fmt::format("pass '{}': triangle index {} past the {} vertices", p.name, i,
-                           p.vertices.size());
-  if (!p.triangles.empty() && p.vertices.empty())
+                           p.draw.vertices.size());
+  if (!p.draw.triangles.empty() && p.draw.vertices.empty())
     return fmt::format("pass '{}': triangles without vertices", p.name);
   return {};
 }
@@ -90,22 +90,38 @@ std::string check_outputs(const EffectGraph& g, const PassDesc& p, const Texture
 // (single_pass.h) — constant pixel inputs in place of the vertex listing, D3D9's oD0
 // pass-through in place of the pixel listing — each only where both devices draw it.
 std::string check_listings(const PassDesc& p) {
-  if (!p.vs && !p.constant_inputs)
-    return fmt::format("pass '{}': needs a vertex listing (or constant pixel inputs)", p.name);
-  if (p.vs && p.constant_inputs)
-    return fmt::format("pass '{}': constant pixel inputs replace the vertex listing", p.name);
-  if (p.constant_inputs && !p.vertices.empty())
+  const pass::Pass& d = p.draw;
+  if (!d.vertex_program && !d.vertices.empty())
     return fmt::format("pass '{}': vertices without a vertex listing", p.name);
-  if (p.glsl_spirv && (!p.vs || !p.ps))
+  if (d.pixel_spirv && (!d.vertex_program || !d.pixel_program))
     return fmt::format("pass '{}': a GLSL pass needs a vertex listing and its ps_2_0 twin", p.name);
-  if (!p.ps && (!p.more_targets.empty() || !p.stencil.empty()))
+  if (!d.pixel_program && (!p.more_targets.empty() || !p.stencil.empty()))
     return fmt::format("pass '{}': several targets or a stencil need a pixel listing", p.name);
+  return {};
+}
+
+// The draw state the graph decides itself (graph_draw: the colour targets come from the
+// named targets, the executor is the CPU device's) or no graph device draws.
+std::string check_draw_state(const PassDesc& p) {
+  const pass::Pass& d = p.draw;
+  const pass::Viewport& v = d.viewport;
+  if (!d.transformed.empty())
+    return fmt::format("pass '{}': pre-transformed vertices (a graph pass has none)", p.name);
+  if (v.x != 0 || v.y != 0 || v.width != 0 || v.height != 0 || v.min_z != 0.0f || v.max_z != 1.0f)
+    return fmt::format("pass '{}': a viewport other than the whole target", p.name);
+  if (d.color_targets != 1)
+    return fmt::format("pass '{}': {} colour targets counted (a graph pass names them: "
+                       "more_targets)",
+                       p.name, d.color_targets);
+  if (d.executor != pass::Executor::Auto)
+    return fmt::format("pass '{}': the scalar executor (the CPU device's own choice)", p.name);
   return {};
 }
 
 std::string check_pass(const EffectGraph& g, const PassDesc& p) {
   if (std::string e = check_listings(p); !e.empty()) return e;
-  if (p.glsl_spirv && p.ps->profile != ir::Profile::ps_2_0)
+  if (std::string e = check_draw_state(p); !e.empty()) return e;
+  if (p.draw.pixel_spirv && p.draw.pixel_program->profile != ir::Profile::ps_2_0)
     return fmt::format("pass '{}': a GLSL pass's twin must be a ps_2_0 listing", p.name);
   if ((p.analytic == AnalyticForm::Kernel) != !p.kernel.empty())
     return fmt::format("pass '{}': the analytic form Kernel and a kernel go together", p.name);
@@ -145,8 +161,8 @@ PassDesc listing_pass(std::string name, std::shared_ptr<const ir::Program> vs,
                       std::shared_ptr<const ir::Program> ps, std::string_view target) {
   PassDesc d;
   d.name = std::move(name);
-  d.vs = std::move(vs);
-  d.ps = std::move(ps);
+  d.draw.vertex_program = std::move(vs);
+  d.draw.pixel_program = std::move(ps);
   d.target = std::string(target);
   return d;
 }
@@ -154,7 +170,10 @@ PassDesc listing_pass(std::string name, std::shared_ptr<const ir::Program> vs,
 void bind_reads(PassDesc& d, uint32_t stage, std::string_view texture, const pass::SamplerState& s,
                 unsigned reads, bool one_stage_per_read) {
   const unsigned stages = one_stage_per_read ? reads : 1;
-  for (unsigned k = 0; k < stages; ++k) d.textures.push_back({stage + k, std::string(texture), s});
+  for (unsigned k = 0; k < stages; ++k) {
+    d.textures.push_back({stage + k, std::string(texture)});
+    if (stage + k < pass::kMaxSamplers) d.draw.textures[stage + k].sampler = s;
+  }
 }
 
 ir::Status check_graph(const EffectGraph& graph) {

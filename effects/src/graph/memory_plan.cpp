@@ -53,7 +53,8 @@ DeviceMemory plan_device(const EffectGraph& g, const std::string& device, bool k
   for (const PassDesc& p : g.passes)
     for (const TextureBind& b : p.textures) {
       sampled.insert(b.texture);
-      if (!pass::point_clamped(b.sampler)) copied.insert(b.texture);
+      if (b.stage >= pass::kMaxSamplers || !pass::point_clamped(p.draw.textures[b.stage].sampler))
+        copied.insert(b.texture);
     }
 
   if (device == "vulkan") {

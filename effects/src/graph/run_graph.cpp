@@ -42,42 +42,12 @@ ir::Status prepare_input(const TextureDesc& t, ImageMap& images) {
 
 } // namespace
 
-ir::Result<pass::Pass> make_pass(const PassDesc& desc, const ir::Conventions& conventions) {
-  if (!desc.vs && !desc.constant_inputs)
-    return ir::fail(desc.name, "graph", fmt::format("pass '{}': no vertex listing", desc.name));
-  pass::Pass pass;
-  pass.vertex_program = desc.vs;
-  pass.pixel_program = desc.ps;
-  pass.vs_constants = desc.vs_constants;
-  pass.ps_constants = desc.ps_constants;
-  if (!desc.vs) {
-    pass.constant_inputs = *desc.constant_inputs; // the quad, no vertices
-  } else if (desc.vertices.empty()) {
-    pass::set_full_screen_quad_uv(pass);
-  } else {
-    pass.vertices = desc.vertices;
-    pass.triangles = desc.triangles;
-  }
-  pass.color_targets = static_cast<uint32_t>(1 + desc.more_targets.size());
-  pass.depth_stencil = desc.depth_stencil;
-  pass.scissor = desc.scissor;
-  for (const TextureBind& b : desc.textures) {
-    if (b.stage >= pass::kMaxSamplers)
-      return ir::fail(desc.name, "graph",
-                      fmt::format("pass '{}': texture '{}' is bound to stage {} (at most {})",
-                                  desc.name, b.texture, b.stage, pass::kMaxSamplers - 1));
-    // The image stays with the device that owns the texture: it binds it (by reference).
-    pass::TextureBinding& binding = pass.textures[b.stage];
-    binding.sampler = b.sampler;
-    binding.stage = b.stage_state;
-    binding.shape = b.shape;
-    binding.layers = b.layers;
-  }
-  pass.blend = desc.blend;
-  pass.front_face = desc.front_face;
-  pass.conventions = conventions;
-  pass.pixel_spirv = desc.glsl_spirv;
-  return pass;
+pass::Pass graph_draw(const PassDesc& desc, const ir::Conventions& conventions) {
+  pass::Pass draw = desc.draw;
+  if (draw.vertex_program && draw.vertices.empty()) pass::set_full_screen_quad_uv(draw);
+  draw.color_targets = static_cast<uint32_t>(1 + desc.more_targets.size());
+  draw.conventions = conventions;
+  return draw;
 }
 
 namespace {
@@ -140,7 +110,7 @@ ir::Status record_pass(const PassDesc& desc, PassDevice& device, bool keep_pass_
   if (ir::Status e = read(desc.target, rec.result); !e) return e;
   device.rounding_midpoints(desc.target, rec.midpoints);
   std::vector<std::string> extra = desc.more_targets;
-  if (!desc.stencil.empty() && desc.depth_stencil.stencil_test) extra.push_back(desc.stencil);
+  if (!desc.stencil.empty() && desc.draw.depth_stencil.stencil_test) extra.push_back(desc.stencil);
   for (const std::string& name : extra) {
     PassRecord::Extra x{name, {}, {}};
     if (ir::Status e = read(name, x.result); !e) return e;

@@ -81,26 +81,26 @@ PlanResult build_outline(const EffectParams& glow, const OutlineParams& o) {
   PassDesc object;
   object.name = "object";
   object.analytic = AnalyticForm::Coverage;
-  object.vs = object_vs;
-  object.ps = object_ps;
-  object.ps_constants.f = {vec(o.color), vec(o.glow_color)};
+  object.draw.vertex_program = object_vs;
+  object.draw.pixel_program = object_ps;
+  object.draw.ps_constants.f = {vec(o.color), vec(o.glow_color)};
   object.target = std::string(kColorTexture);
   object.more_targets = {std::string(kMaskTexture)};
   object.stencil = std::string(kStencilTexture);
-  object.depth_stencil.stencil_test = true;
-  object.depth_stencil.stencil_func = pass::CompareFunc::Always;
-  object.depth_stencil.stencil_pass = pass::StencilOp::Replace;
-  object.depth_stencil.stencil_ref = o.stencil_ref;
+  object.draw.depth_stencil.stencil_test = true;
+  object.draw.depth_stencil.stencil_func = pass::CompareFunc::Always;
+  object.draw.depth_stencil.stencil_pass = pass::StencilOp::Replace;
+  object.draw.depth_stencil.stencil_ref = o.stencil_ref;
   auto clip = [&](double x, double y) {
     pass::VertexInput v;
     v.v[0] = {static_cast<float>(2.0 * x / w - 1.0), static_cast<float>(1.0 - 2.0 * y / h), 0.0f,
               1.0f};
     return v;
   };
-  object.vertices.push_back(clip(o.center_x, o.center_y));
-  for (const auto& c : outline_polygon(o)) object.vertices.push_back(clip(c[0], c[1]));
+  object.draw.vertices.push_back(clip(o.center_x, o.center_y));
+  for (const auto& c : outline_polygon(o)) object.draw.vertices.push_back(clip(c[0], c[1]));
   for (uint32_t k = 0; k < o.sides; ++k)
-    object.triangles.push_back({0, 1 + k, 1 + (k + 1) % o.sides});
+    object.draw.triangles.push_back({0, 1 + k, 1 + (k + 1) % o.sides});
 
   // The glow's passes read the mask where they read the scene; its composite becomes the
   // base (scene + colour) and a stencil-tested pass adds the glow.
@@ -116,26 +116,26 @@ PlanResult build_outline(const EffectParams& glow, const OutlineParams& o) {
   if (!composite) return plan_failure("the glow graph has no composite pass");
   PassDesc base = *composite;
   base.name = "base";
-  base.ps_constants.f = {pass::Vec4{1, 1, 1, 0}};
+  base.draw.ps_constants.f = {pass::Vec4{1, 1, 1, 0}};
   // t1 reads the full-size colour texture at pixel centres: offset ½ texel, scale 1.
-  base.vs_constants.f[1] = {static_cast<float>(0.5 / w), static_cast<float>(0.5 / h), 0, 0};
-  base.vs_constants.f[5] = {1, 1, 0, 0};
+  base.draw.vs_constants.f[1] = {static_cast<float>(0.5 / w), static_cast<float>(0.5 / h), 0, 0};
+  base.draw.vs_constants.f[5] = {1, 1, 0, 0};
   for (TextureBind& b : base.textures)
     if (b.stage == 1) {
       b.texture = std::string(kColorTexture);
-      b.sampler.filter = pass::Filter::Point;
+      base.draw.textures[1].sampler.filter = pass::Filter::Point;
     }
   PassDesc outline = *composite;
   outline.name = "outline";
-  outline.ps = add_ps;
+  outline.draw.pixel_program = add_ps;
   const auto s = static_cast<float>(glow.intensity);
-  outline.ps_constants.f = {pass::Vec4{s, s, s, 0}};
+  outline.draw.ps_constants.f = {pass::Vec4{s, s, s, 0}};
   std::erase_if(outline.textures, [](const TextureBind& b) { return b.stage != 1; });
-  outline.blend = pass::BlendMode::OneOne;
+  outline.draw.blend = pass::BlendMode::OneOne;
   outline.stencil = std::string(kStencilTexture);
-  outline.depth_stencil.stencil_test = true;
-  outline.depth_stencil.stencil_func = pass::CompareFunc::Equal;
-  outline.depth_stencil.stencil_ref = 0;
+  outline.draw.depth_stencil.stencil_test = true;
+  outline.draw.depth_stencil.stencil_func = pass::CompareFunc::Equal;
+  outline.draw.depth_stencil.stencil_ref = 0;
   passes.push_back(std::move(base));
   passes.push_back(std::move(outline));
   g.passes = std::move(passes);

@@ -20,7 +20,7 @@ constexpr double kBelowHalfStep = 0.5 / 255 * 0.99;
 
 double weight_sum(const PassDesc& p) {
   double s = 0;
-  for (const pass::Vec4& c : p.ps_constants.f)
+  for (const pass::Vec4& c : p.draw.ps_constants.f)
     s += std::max({std::abs(double(c[0])), std::abs(double(c[1])), std::abs(double(c[2])),
                    std::abs(double(c[3]))});
   return s;
@@ -44,12 +44,12 @@ double prune_axis(std::vector<PassDesc>& passes, std::string_view axis, double i
     total += s;
     // ps_1_x pixel listings keep their own register precision (the tier dx8 passes): the
     // bound of a rounded store holds for ps_2_0 arithmetic only, so those passes all stay.
-    if (!p.ps || p.ps->profile != ir::Profile::ps_2_0) {
+    if (!p.draw.pixel_program || p.draw.pixel_program->profile != ir::Profile::ps_2_0) {
       ++kept;
       result.push_back(std::move(p));
       continue;
     }
-    const bool first_of_axis = p.blend == pass::BlendMode::Replace;
+    const bool first_of_axis = p.draw.blend == pass::BlendMode::Replace;
     if (s * input_bound < kBelowHalfStep) {
       out.push_back({p.name, fmt::format("its taps sum to {:.3g} and its input is at most {:.3g} "
                                          "in this scene: every value it adds is below half an "
@@ -59,7 +59,7 @@ double prune_axis(std::vector<PassDesc>& passes, std::string_view axis, double i
       continue;
     }
     // The first pass kept after a dropped first one replaces, as the first did.
-    if (first_dropped && kept == 0) p.blend = pass::BlendMode::Replace;
+    if (first_dropped && kept == 0) p.draw.blend = pass::BlendMode::Replace;
     ++kept;
     result.push_back(std::move(p));
   }
@@ -84,7 +84,7 @@ void explain_float_taps(const EffectGraph& graph, img::Format format, double bou
         for (double w : k.weight)
           if (w != 0) smallest = std::min(smallest, std::abs(w));
       if (p.analytic == AnalyticForm::Kernel) continue;
-      for (const pass::Vec4& c : p.ps_constants.f)
+      for (const pass::Vec4& c : p.draw.ps_constants.f)
         for (float w : c)
           if (w != 0) smallest = std::min(smallest, std::abs(double(w)));
     }
@@ -185,8 +185,10 @@ void limit_to_sources(const EffectPlan& plan, const Box& sources, PrunedGraph& r
   // (the reasons below read "drawn only in …": r.limited)
   for (const PassDesc& p : r.graph.passes)
     for (const TextureBind& t : p.textures)
-      if (p.target != kFinalTexture && (t.sampler.address_u != pass::AddressMode::Clamp ||
-                                        t.sampler.address_v != pass::AddressMode::Clamp))
+      if (p.target != kFinalTexture &&
+          (t.stage >= pass::kMaxSamplers ||
+           p.draw.textures[t.stage].sampler.address_u != pass::AddressMode::Clamp ||
+           p.draw.textures[t.stage].sampler.address_v != pass::AddressMode::Clamp))
         return;
   const TextureDesc* scene = r.graph.find_texture(kSceneTexture);
   if (!scene || plan.glow_width == 0 || plan.downsample == 0) return;
@@ -225,8 +227,8 @@ void limit_to_sources(const EffectPlan& plan, const Box& sources, PrunedGraph& r
     bool any = false;
     for (PassDesc& p : r.graph.passes)
       if (p.target == rule.target) {
-        p.scissor = pass::ScissorRect{int32_t(rule.box.x0), int32_t(rule.box.y0),
-                                      int32_t(rule.box.x1), int32_t(rule.box.y1)};
+        p.draw.scissor = pass::ScissorRect{int32_t(rule.box.x0), int32_t(rule.box.y0),
+                                           int32_t(rule.box.x1), int32_t(rule.box.y1)};
         any = true;
       }
     if (!any) continue;
@@ -292,7 +294,7 @@ PrunedGraph prune_glow(const EffectPlan& plan, const img::Image& scene) {
     prune_axis(passes, "blur_v", std::min(horizontal, 1.0), r.left_out);
     if (std::any_of(passes.begin(), passes.end(), [](const PassDesc& p) {
           return (is_blur(p, "blur_h") || is_blur(p, "blur_v")) &&
-                 (!p.ps || p.ps->profile != ir::Profile::ps_2_0);
+                 (!p.draw.pixel_program || p.draw.pixel_program->profile != ir::Profile::ps_2_0);
         }))
       r.kept.push_back({"every blur pass", "its pixel listing is ps.1.x (tiers dx8, dx7), whose "
                                            "registers round on their own, or ps_3_0 (tier "

@@ -137,10 +137,10 @@ PlanResult build_radial(const EffectParams& g, const RadialParams& r) {
     std::vector<pass::Vec4> offsets;
     for (const auto& o : star_offsets(r, r.frame + f, g.width, g.height))
       offsets.push_back({float(o[0]), float(o[1]), 0, 0});
-    if (f == 0) star.vs_constants.f = offsets;
+    if (f == 0) star.draw.vs_constants.f = offsets;
     if (frames > 1) star.vs_constants_per_frame.push_back(std::move(offsets));
   }
-  star.ps_constants.f = {splat(0.25)};
+  star.draw.ps_constants.f = {splat(0.25)};
   bind_reads(star, 0, kSceneTexture, sampler(pass::Filter::Linear, pass::AddressMode::Wrap), 4,
              t.one_stage_per_read);
   graph.passes.push_back(std::move(star));
@@ -157,13 +157,13 @@ PlanResult build_radial(const EffectParams& g, const RadialParams& r) {
       const RadialCopy c = i < copies.size() ? copies[i] : RadialCopy{0, {0, 0}, 0};
       offsets.push_back({float(c.offset[0]), float(c.offset[1]), 0, 0});
       scales.push_back({float(c.scale), float(c.scale), 0, 0});
-      d.ps_constants.f.push_back(splat(c.weight));
+      d.draw.ps_constants.f.push_back(splat(c.weight));
     }
-    d.vs_constants.f = offsets;
-    d.vs_constants.f.insert(d.vs_constants.f.end(), scales.begin(), scales.end());
+    d.draw.vs_constants.f = offsets;
+    d.draw.vs_constants.f.insert(d.draw.vs_constants.f.end(), scales.begin(), scales.end());
     bind_reads(d, 0, kStarTexture, sampler(pass::Filter::Linear, pass::AddressMode::Clamp),
                t.per_pass, t.one_stage_per_read);
-    d.blend = p == 0 ? pass::BlendMode::Replace : pass::BlendMode::OneOne;
+    d.draw.blend = p == 0 ? pass::BlendMode::Replace : pass::BlendMode::OneOne;
     graph.passes.push_back(std::move(d));
   }
   plan.blur_passes_per_axis = unsigned(passes);
@@ -175,9 +175,9 @@ PlanResult build_radial(const EffectParams& g, const RadialParams& r) {
     c[k] = {float(0.5 / g.width), float(0.5 / g.height), 0, 0};
     c[t.per_pass + k] = {1, 1, 0, 0};
   }
-  comp.vs_constants.f = c;
+  comp.draw.vs_constants.f = c;
   const auto s = static_cast<float>(r.strength);
-  comp.ps_constants.f = {pass::Vec4{s, s, s, 0}};
+  comp.draw.ps_constants.f = {pass::Vec4{s, s, s, 0}};
   bind_reads(comp, 0, kStarTexture, sampler(pass::Filter::Point, pass::AddressMode::Clamp), 1,
              false);
   bind_reads(comp, 1, kGlowTexture, sampler(pass::Filter::Point, pass::AddressMode::Clamp), 1,

@@ -110,11 +110,11 @@ void set_blur_weights(EffectPlan& plan, const std::vector<double>& weights) {
   for (PassDesc& d : plan.graph.passes) {
     if (!d.name.starts_with("blur_")) continue;
     const size_t index = std::stoul(d.name.substr(d.name.find('.') + 1));
-    const size_t per = d.ps_constants.f.size();
+    const size_t per = d.draw.ps_constants.f.size();
     for (size_t k = 0; k < per; ++k) {
       const size_t t = index * per + k;
       const float w = t < weights.size() && t < plan.taps.size() ? float(weights[t]) : 0.0f;
-      d.ps_constants.f[k] = {w, w, w, w};
+      d.draw.ps_constants.f[k] = {w, w, w, w};
     }
   }
 }

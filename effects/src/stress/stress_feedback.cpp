@@ -55,14 +55,14 @@ FeedbackGraph feedback_graph(Format f, double g) {
     PassDesc d = listing_pass(std::move(name), *vs, *ps, to);
     const float w = float(weight);
     for (unsigned k = 0; k < kTapsPerBlurPassDx9; ++k) {
-      d.vs_constants.f.push_back({0.5f, 0.5f, 0, 0}); // the one texel's centre
-      d.ps_constants.f.push_back(k == 0 ? pass::Vec4{w, w, w, w} : pass::Vec4{0, 0, 0, 0});
+      d.draw.vs_constants.f.push_back({0.5f, 0.5f, 0, 0}); // the one texel's centre
+      d.draw.ps_constants.f.push_back(k == 0 ? pass::Vec4{w, w, w, w} : pass::Vec4{0, 0, 0, 0});
     }
     pass::SamplerState s;
     s.filter = pass::Filter::Point;
     s.address_u = s.address_v = pass::AddressMode::Clamp;
-    d.textures.push_back({0, std::move(from), s});
-    d.blend = blend;
+    bind_reads(d, 0, from, s, 1, false);
+    d.draw.blend = blend;
     gr.passes.push_back(std::move(d));
   };
   pass("decay", "acc", "tmp", g, pass::BlendMode::Replace);

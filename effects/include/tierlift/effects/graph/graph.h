@@ -1,8 +1,8 @@
-// An effect graph: named textures and an ordered list of full-screen passes over them.
-// Each pass is a legacy vertex + pixel listing (ir::Program) with its constants, the
-// textures it samples (by name, with sampler state), the texture it renders into and the
-// blend mode. A device runs the passes in order (run_graph.h); images live in a map
-// between passes. The graph says nothing about which device runs it.
+// An effect graph: named textures and an ordered list of passes over them. Each pass is a
+// draw as every device takes it (pass::Pass: the legacy vertex + pixel listings with their
+// constant banks, sampler state, geometry, blend) plus what the graph adds: the textures it
+// samples and the ones it renders into, by name. A device runs the passes in order (run_graph.h);
+// images live in a map between passes. The graph says nothing about which device runs it.
 #pragma once
 
 #include <array>
@@ -38,16 +38,14 @@ struct TextureDesc {
   std::shared_ptr<const img::Image> contents{};
 };
 
+// A graph texture bound to a sampler stage of a pass's draw, by name. Everything else about
+// the stage is the draw's own (PassDesc::draw.textures[stage]: the sampler state, the ps_1_x
+// texture-stage state, a cube's or volume's shape and host layers, `texture` then naming the
+// first layer): the device that owns the texture puts its image there when it draws, so a
+// description holds no image.
 struct TextureBind {
   uint32_t stage = 0; // sampler stage s# (ps_2_0) / texture stage (ps_1_x)
   std::string texture;
-  pass::SamplerState sampler;
-  pass::StageState stage_state = {}; // texbem's bump matrix, projection (ps_1_x)
-  // A cube or volume texture rides with the binding as host layers (pass::TextureBinding's
-  // shape and layers); `texture` then names its first layer. Devices upload the layers with
-  // the draw: graph textures are 2D.
-  pass::TextureShape shape = pass::TextureShape::Tex2D;
-  std::vector<std::shared_ptr<const img::Image>> layers = {};
 };
 
 // What the analytic device computes for a pass. Linear: the pixel is a weighted sum of
@@ -80,53 +78,49 @@ struct KernelTap {
 
 struct PassDesc {
   std::string name; // unique, e.g. "blur_h.1"
+  // The draw itself, as every device takes it (pass::Pass): the listings and their constant
+  // banks (c#, i#, b#; the analytic device refuses a pass that sets any i# or b#), each
+  // sampler stage's state, the geometry, the blend, scissor, stencil state and front face,
+  // and for a GLSL pass its fragment SPIR-V (pixel_spirv; docs/glsl.md: pixel_program is then
+  // the pass's ps_2_0 twin, which the CPU device runs in the GLSL's place — the interpreter
+  // has no GLSL — and the analytic device evaluates `kernel` instead).
+  // An effect's pass has both listings; `tierlift run` (single_pass.h) may leave out either:
+  // without a vertex listing the full-screen quad with draw.constant_inputs at every pixel (no
+  // vertices then), without a pixel listing D3D9's fixed function passes oD0 to the target
+  // (one target, no stencil: what the devices draw so). With a vertex listing and no vertices:
+  // the full-screen quad (graph_draw, run_graph.h).
+  // What the graph decides stays out of it and the device fills it in when it draws
+  // (graph_draw): the images (bound by name: `textures`), the number of colour targets
+  // (`more_targets`), the conventions (EffectGraph::conventions).
+  pass::Pass draw;
   AnalyticForm analytic = AnalyticForm::Linear;
-  // The listings. An effect's pass has both; `tierlift run` (single_pass.h) may leave out
-  // either: without `vs` the pass has constant_inputs instead, without `ps` D3D9's fixed
-  // function passes oD0 to the target (one target, no stencil: what the devices draw so).
-  std::shared_ptr<const ir::Program> vs, ps;
-  // Each stage's constants as the devices take them (pass::Pass holds the same banks): c#
-  // in `f` (c0, c1, …), and i# and b#, for listings with flow control, zeros and false unless
-  // set. The analytic device refuses a pass that sets any i# or b#.
-  pass::ConstantBank vs_constants, ps_constants;
-  // Only without `vs`: the full-screen quad with these pixel inputs (v#, t#) at every pixel,
-  // exactly as given (pass::Pass::constant_inputs); no `vertices` then.
-  std::optional<pass::PixelInput> constant_inputs;
   std::vector<TextureBind> textures;
   std::string target;
-  pass::BlendMode blend = pass::BlendMode::Replace;
-  pass::FrontFace front_face = pass::FrontFace::Clockwise; // the winding vFace calls front
   // Render targets 1..3 (oC1..oC3) beside `target` (oC0); empty: one target. D3D9 MRT: every
   // target has the target's size; the blend mode applies to each.
   std::vector<std::string> more_targets;
-  // A stencil texture (TextureDesc::stencil) and the D3D9 stencil state; no stencil test
-  // when `stencil` is empty (depth_stencil must then be disabled). No depth buffer.
+  // A stencil texture (TextureDesc::stencil) for draw.depth_stencil; no stencil test when
+  // `stencil` is empty (the state must then be disabled). No depth buffer.
   std::string stencil;
-  pass::DepthStencilState depth_stencil;
-  // D3D9's scissor rectangle (pass::ScissorRect); none: the whole target. Pruning sets it
-  // where a pass provably writes zeros outside it (prune.h).
-  std::optional<pass::ScissorRect> scissor;
-  // The geometry: vertex inputs (v#, as the vertex listing declares them) and triangles
-  // indexing them (empty: consecutive triples). No vertices: the full-screen quad.
-  std::vector<pass::VertexInput> vertices;
-  std::vector<std::array<uint32_t, 3>> triangles;
-  // A GLSL pass (tierlift/glsl; docs/glsl.md): the fragment SPIR-V the Vulkan device draws,
-  // and the GLSL file it came from. `ps` is then the pass's ps_2_0 twin (the same blur in
-  // D3D9 assembly), whose interface the SPIR-V follows; the CPU device runs the twin in the
-  // GLSL's place (the interpreter has no GLSL), and the analytic device evaluates `kernel`
-  // (analytic = Kernel). Null: an ordinary pass.
-  std::shared_ptr<const std::vector<uint32_t>> glsl_spirv;
+  // A GLSL pass's source file (draw.pixel_spirv holds what it compiled to), and the reads the
+  // analytic device evaluates for it (analytic = Kernel).
   std::string glsl_file;
   std::vector<KernelTap> kernel;
 
   // Per-frame constants (ramped parameters: run_frames). Frame f (from 0) uses entry
-  // min(f, size − 1) in place of vs_constants.f / ps_constants.f; empty: the same every frame.
-  // The devices never see these tables: the runner hands them at_frame(f), an ordinary pass,
-  // so every device honours them the same way.
+  // min(f, size − 1) in place of draw.vs_constants.f / draw.ps_constants.f; empty: the same
+  // every frame. The devices never see these tables: the runner hands them at_frame(f), an
+  // ordinary pass, so every device honours them the same way.
   std::vector<std::vector<pass::Vec4>> vs_constants_per_frame, ps_constants_per_frame;
 
   // This pass as frame `frame` (from 0) runs it: the per-frame constants put in place.
   PassDesc at_frame(unsigned frame) const;
+  // The draw's own state of the stage `b` (one of `textures`) binds: its sampler state,
+  // texture-stage state and shape (std::out_of_range past pass::kMaxSamplers, which
+  // check_graph refuses).
+  const pass::TextureBinding& binding(const TextureBind& b) const {
+    return draw.textures.at(b.stage);
+  }
 };
 
 // A pass named `name` drawing `vs` + `ps` into `target`, everything else at its default:
@@ -134,9 +128,9 @@ struct PassDesc {
 PassDesc listing_pass(std::string name, std::shared_ptr<const ir::Program> vs,
                       std::shared_ptr<const ir::Program> ps, std::string_view target);
 
-// Binds `texture` (sampler state `s`) for a pixel listing that reads it `reads` times from
-// `stage` on: once on that sampler when one s# serves every read (ps_2_0's texld tK, sN), or
-// on stages stage .. stage + reads − 1 when each read samples its own stage
+// Binds `texture` (sampler state `s`, set on each stage of d.draw) for a pixel listing that reads
+// it `reads` times from `stage` on: once on that sampler when one s# serves every read (ps_2_0's
+// texld tK, sN), or on stages stage .. stage + reads − 1 when each read samples its own stage
 // (`one_stage_per_read`: ps_1_x, where tex tN reads stage N).
 void bind_reads(PassDesc& d, uint32_t stage, std::string_view texture, const pass::SamplerState& s,
                 unsigned reads, bool one_stage_per_read);
@@ -150,9 +144,10 @@ struct EffectGraph {
 };
 
 // Fails (rule "graph", subject "graph") with the first problem of a malformed graph: duplicate or
-// unknown texture or pass names, a pass without a vertex listing and without constant inputs
-// (or with both, or with constant inputs and vertices), a pass without a pixel listing that has
-// more than one target, a stencil or GLSL, a pass that reads its own target,
+// unknown texture or pass names, vertices without a vertex listing, a pass without a pixel
+// listing that has more than one target, a stencil or GLSL, a pass that reads its own target,
+// a draw with what the graph decides itself or no graph device draws (pre-transformed
+// vertices, a viewport, a count of colour targets, the scalar executor),
 // sizes of 0 or above img::kMaxDimension, a sampler stage bound twice, an input used as a
 // target, a target or stencil named twice in a pass, more than 4 targets or targets of
 // different sizes, a stencil texture used as a colour texture (or the reverse), a stencil

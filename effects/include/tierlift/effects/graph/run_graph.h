@@ -38,15 +38,14 @@ struct GraphRun {
   std::map<std::string, std::vector<uint8_t>, std::less<>> midpoints;
 };
 
-// The draw a pass description asks of a device: its vertices, else the full-screen quad
-// (pass::set_full_screen_quad_uv: the vertex listing's position input gets the corners, every
-// dcl_texcoord input the quad uv (0,0) top-left … (1,1) bottom-right; without a vertex listing
-// the quad with the constant inputs), its constant banks, blend, targets, conventions, and
-// each bound stage's sampler and texture-stage state. No image is bound (every
-// TextureBinding::image is null): the device that owns the graph's textures binds its own
-// by reference (CpuPassDevice) or samples its resident copy (the Vulkan device), so nothing
-// is copied. A stage past pass::kMaxSamplers is an error (rule "graph").
-ir::Result<pass::Pass> make_pass(const PassDesc& desc, const ir::Conventions& conventions);
+// The draw a device makes of a pass: desc.draw as it is, with what the graph decides put in
+// — the graph's conventions, one colour target per named target, and for a vertex listing
+// without vertices the full-screen quad (pass::set_full_screen_quad_uv: the position input
+// gets the corners, every dcl_texcoord input the quad uv (0,0) top-left … (1,1)
+// bottom-right). No image is bound: the device that owns the graph's textures binds its own
+// into the stages `desc.textures` names, by reference (CpuPassDevice) or as its resident
+// copy (the Vulkan device), so nothing is copied.
+pass::Pass graph_draw(const PassDesc& desc, const ir::Conventions& conventions);
 
 // The rule of run_graph's and run_frames' failures (a graph the device could not run): one
 // error whose message names the pass (and frame) that failed and the device, followed, when

@@ -32,19 +32,20 @@ inline constexpr std::string_view kSinglePass = "run";          // the pass's na
 inline constexpr std::string_view kSinglePassTarget = "target"; // the texture it renders into
 
 // `pass` drawn into a new width × height target of `format` (zeros before the draw), as a
-// graph of one pass. Every image the pass binds is an input texture the graph carries
+// graph of one pass. The pass becomes the graph pass's draw as it is (PassDesc::draw: its
+// listings, either may be absent, constant banks, geometry, stage states, scissor, blend);
+// only its bound images leave it: each is an input texture the graph carries
 // (TextureDesc::contents, shared, not copied) at its own size and in its own format, so
 // run_graph hands it to the device unchanged; it is named s# after the first sampler stage
-// that binds it (an image bound to several stages is one texture). The pass keeps its
-// listings (either may be absent), its constant banks (c#, i#, b#), its geometry (vertices
-// and triangles, or constant pixel inputs without a vertex listing), scissor, blend and
-// conventions. What a PassDesc does not describe is refused (rule "graph"): pre-transformed
-// vertices, fixed-function stages, a viewport other than the whole target, texture-stage
-// state, a depth/stencil state, a SPIR-V pixel stage, the scalar executor (a CPU device's own
-// choice: CpuPassDevice). A pass with pass.color_targets = n > 1 (D3D9 MRT) draws oC1..oC(n−1)
-// into n − 1 more targets of the same size and format, named single_pass_target(1..n−1).
+// that binds it (an image bound to several stages is one texture) and bound by that name.
+// The graph's conventions are the pass's. A pass with pass.color_targets = n > 1 (D3D9 MRT)
+// draws oC1..oC(n−1) into n − 1 more targets of the same size and format, named
+// single_pass_target(1..n−1). Refused (rule "graph"): a depth/stencil state, a SPIR-V pixel
+// stage (`tierlift run` asks for neither), more than four colour targets, and whatever
+// check_graph refuses (pre-transformed vertices, a viewport other than the whole target, the
+// scalar executor: a CPU device's own choice, CpuPassDevice).
 std::string single_pass_target(uint32_t index); // 0: kSinglePassTarget; i: "target<i>"
-ir::Result<EffectGraph> single_pass_graph(const pass::Pass& pass, uint32_t width, uint32_t height,
+ir::Result<EffectGraph> single_pass_graph(pass::Pass pass, uint32_t width, uint32_t height,
                                           img::Format format);
 
 // One device's draw of a graph of one pass: the target, and what the draw took (setup_ms:

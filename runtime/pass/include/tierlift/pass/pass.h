@@ -2,9 +2,10 @@
 // sampler stages with their sampler and texture-stage state, the geometry, the viewport, the
 // blend and the output-merger state, the conventions. The CPU interpreter (cpu::draw), the
 // Vulkan device (vulkan::Device::draw) and the analytic model all consume this type; none of
-// them defines its own. The effect graph builds one per pass (effects/run_graph.h); `tierlift
-// run` builds one from its flags (setup.h) and draws it as a graph of one pass
-// (effects/single_pass.h), so every device is reached through effects::PassDevice.
+// them defines its own. Each pass of an effect graph holds one (effects::PassDesc::draw, its
+// images bound by the device that owns them); `tierlift run` builds one from its flags
+// (setup.h) and moves it into a graph of one pass (effects/single_pass.h), so every device is
+// reached through effects::PassDevice.
 //
 // Room for what comes next is made here as state, not as implementations: several render
 // targets, a depth/stencil buffer with D3D9's stencil state, fixed-function texture stages.
