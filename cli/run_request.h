@@ -23,11 +23,16 @@ struct RunFlags {
   bool keep_alpha = false; // PNG: the shader's alpha as stored, not opaque
   std::string trace;       // --trace X,Y (run_trace.h)
   FrontEndOptions fe;      // -D, -I, --profile, --strict, --skip-validation, --json
+  // Mip chains and the sampler's mip state (all samplers): --mips auto|N, --mip-filter
+  // none|point|linear, --lod-bias F, --max-mip-level N.
+  std::string mips = "1", mip_filter = "none";
+  float lod_bias = 0.0f;
+  int max_mip_level = 0;
 };
 
 // The request, or the first flag in error (rule "usage", exit 2), in the order the flags are
 // read: size, format, the settings, filter, address, pixel centre, front face, sub-texel
-// bits, ps1x max.
+// bits, ps1x max, mips, mip filter, max mip level.
 ir::Result<pass::RunRequest> build_request(const RunFlags& f);
 
 } // namespace tierlift::cli

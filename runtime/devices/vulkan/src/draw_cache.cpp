@@ -31,6 +31,10 @@ std::optional<std::string> draw_key(const pass::Pass& pass, const DrawTextures& 
     k.put(b.sampler.address_u);
     k.put(b.sampler.address_v);
     k.put(b.sampler.border_color);
+    k.put(b.sampler.mip.filter);
+    k.put(b.sampler.mip.lod_bias);
+    k.put(b.sampler.mip.max_mip_level);
+    k.put(b.levels.size());
     for (float m : b.stage.bumpenv_mat) k.put(m);
     k.put(b.stage.bumpenv_lscale);
     k.put(b.stage.bumpenv_loffset);
