@@ -72,6 +72,7 @@ ir::Result<pass::Pass> make_pass(const PassDesc& desc, const ir::Conventions& co
     binding.stage = b.stage_state;
     binding.shape = b.shape;
     binding.layers = b.layers;
+    binding.levels = b.levels;
   }
   pass.blend = desc.blend;
   pass.front_face = desc.front_face;

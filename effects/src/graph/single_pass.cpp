@@ -70,7 +70,7 @@ ir::Result<EffectGraph> single_pass_graph(const pass::Pass& pass, uint32_t width
       t.contents = b.image;
       graph.textures.push_back(std::move(t));
     }
-    desc.textures.push_back({s, it->second, b.sampler, b.stage, b.shape, b.layers});
+    desc.textures.push_back({s, it->second, b.sampler, b.stage, b.shape, b.layers, b.levels});
   }
   TextureDesc target;
   target.name = desc.target;

@@ -26,6 +26,7 @@ std::optional<std::string> draw_key(const pass::Pass& pass, const DrawTextures& 
     const pass::TextureBinding& b = pass.textures[s];
     if (!textures.stages[s] && b.image) return std::nullopt;       // host pixels: not cached
     if (b.shape != pass::TextureShape::Tex2D) return std::nullopt; // host layers: not either
+    if (b.levels.size() > 1) return std::nullopt;                  // nor host mip levels
     k.put(textures.stages[s]);
     k.put(b.sampler.filter);
     k.put(b.sampler.address_u);

@@ -48,6 +48,9 @@ struct TextureBind {
   // the draw: graph textures are 2D.
   pass::TextureShape shape = pass::TextureShape::Tex2D;
   std::vector<std::shared_ptr<const img::Image>> layers = {};
+  // A 2D texture's mip chain rides the same way (pass::TextureBinding::levels, level 0
+  // first); `texture` names level 0.
+  std::vector<std::shared_ptr<const img::Image>> levels = {};
 };
 
 // What the analytic device computes for a pass. Linear: the pixel is a weighted sum of
