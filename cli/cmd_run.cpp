@@ -447,7 +447,19 @@ void register_run_command(CLI::App& app) {
   sub->add_option("--input", f->inputs, "Pixel-stage input v#|t#=x,y,z,w (without --vs)");
   sub->add_option("--attr", f->attrs, "Vertex input vN=x,y,z,w or vN=quad-uv (with --vs)");
   sub->add_option("--texture", f->textures,
-                  "sN=FILE.png|FILE.pfm|builtin:NAME[:WxH]|cube:F0,..,F5|volume:S0,..");
+                  "sN=FILE.png|FILE.pfm|builtin:NAME[:WxH]|cube:F0,..,F5|volume:S0,..|"
+                  "mips:L0,L1,.. (a 2D texture's levels)");
+  sub->add_option("--mips", f->mips,
+                  "auto | N: give every one-image 2D texture a mip chain of N levels (auto: the "
+                  "full chain), each a 2x2 box of the previous")
+      ->capture_default_str();
+  sub->add_option("--mip-filter", f->mip_filter, "none | point | linear (all samplers)")
+      ->capture_default_str();
+  sub->add_option("--lod-bias", f->lod_bias, "MIPMAPLODBIAS: added to every lod (all samplers)")
+      ->capture_default_str();
+  sub->add_option("--max-mip-level", f->max_mip_level,
+                  "MAXMIPLEVEL: the most detailed level a read may take (all samplers)")
+      ->capture_default_str();
   sub->add_option("--bump-matrix", f->bumps,
                   "STAGE=m00,m01,m10,m11: texbem/texbeml's bump matrix of texture stage STAGE "
                   "(default 0: no offset)");

@@ -1,6 +1,8 @@
 // `tierlift run`'s flags into a pass::RunRequest (run_request.h).
 #include "run_request.h"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "run_flags.h"
@@ -88,6 +90,22 @@ ir::Result<pass::RunRequest> build_request(const RunFlags& f) {
   }
   if (error) return std::move(*error);
   r.conventions.ps1x_max_value = *ps1x_max;
+  if (f.mips == "auto") {
+    r.generated_levels = 0;
+  } else {
+    const std::optional<uint32_t> n = parse_level_count(f.mips);
+    if (!n) return usage_error(fmt::format("--mips '{}': expected auto or 1..32 levels", f.mips));
+    r.generated_levels = *n;
+  }
+  const std::optional<pass::MipFilter> mf = parse_mip_filter(f.mip_filter);
+  if (!mf)
+    return usage_error(
+        fmt::format("--mip-filter '{}': expected none, point or linear", f.mip_filter));
+  if (f.max_mip_level < 0 || f.max_mip_level > 31)
+    return usage_error(fmt::format("--max-mip-level {}: expected 0..31", f.max_mip_level));
+  if (!std::isfinite(f.lod_bias))
+    return usage_error(fmt::format("--lod-bias {}: expected a finite number", f.lod_bias));
+  r.mip = {*mf, f.lod_bias, static_cast<uint32_t>(f.max_mip_level)};
   r.threads = f.threads;
   r.texcoords_from_quad = true; // a t# --input does not set is the quad's uv, as in glow
   return r;

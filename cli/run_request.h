@@ -26,11 +26,17 @@ struct RunFlags {
   FrontEndOptions fe;      // -D, -I, --profile, --strict, --skip-validation, --json
   // --output1..--output3: the images of oC1..oC3 (D3D9 MRT); empty: not asked for.
   std::array<std::string, 3> more_outputs;
+  // Mip chains and the sampler's mip state (all samplers): --mips auto|N, --mip-filter
+  // none|point|linear, --lod-bias F, --max-mip-level N.
+  std::string mips = "1", mip_filter = "none";
+  float lod_bias = 0.0f;
+  int max_mip_level = 0;
 };
 
 // The request, or the first flag in error (rule "usage", exit 2), in the order the flags are
 // read: size, format, the settings, filter, address, pixel centre, front face, sub-texel
-// bits, ps1x max, the render targets (--output1..3: one more target each, given in order).
+// bits, ps1x max, the render targets (--output1..3: one more target each, given in order),
+// mips, mip filter, max mip level.
 ir::Result<pass::RunRequest> build_request(const RunFlags& f);
 
 } // namespace tierlift::cli

@@ -384,6 +384,24 @@ std::optional<Filter> parse_filter(std::string_view text) {
   return std::nullopt;
 }
 
+std::optional<pass::MipFilter> parse_mip_filter(std::string_view text) {
+  if (text == "none") return pass::MipFilter::None;
+  if (text == "point") return pass::MipFilter::Point;
+  if (text == "linear") return pass::MipFilter::Linear;
+  return std::nullopt;
+}
+
+std::optional<uint32_t> parse_level_count(std::string_view text) {
+  uint32_t n = 0;
+  if (text.empty() || text.size() > 2) return std::nullopt;
+  for (char c : text) {
+    if (c < '0' || c > '9') return std::nullopt;
+    n = n * 10 + static_cast<uint32_t>(c - '0');
+  }
+  if (n < 1 || n > 32) return std::nullopt;
+  return n;
+}
+
 std::optional<AddressMode> parse_address(std::string_view text) {
   if (text == "clamp") return AddressMode::Clamp;
   if (text == "wrap") return AddressMode::Wrap;

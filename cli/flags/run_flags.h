@@ -60,5 +60,7 @@ ir::Result<std::array<uint32_t, 2>> parse_size(std::string_view text);
 std::optional<Filter> parse_filter(std::string_view text);       // point|linear
 std::optional<AddressMode> parse_address(std::string_view text); // clamp|wrap|mirror|border
 std::optional<ir::PixelCenter> parse_pixel_center(std::string_view text); // d3d9|modern
+std::optional<pass::MipFilter> parse_mip_filter(std::string_view text);   // none|point|linear
+std::optional<uint32_t> parse_level_count(std::string_view text);         // 1..32
 
 } // namespace tierlift::cli

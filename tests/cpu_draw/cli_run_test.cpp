@@ -97,4 +97,28 @@ TEST_F(CliRun, JsonSummary) {
   EXPECT_NE(r.out.find("\"timing_ms\""), std::string::npos);
 }
 
+// --mips, --mip-filter, --max-mip-level and "mips:" levels (docs/command-line.md). texldl at
+// (½, ½) with lod 0 reads: the 16×16 checker's level 0 texel (8, 8) = 1; its generated
+// level 4 (1×1, the box average of two white and two black 8×8 blocks) = 0.5 under MIPFILTER
+// NONE with MAXMIPLEVEL 4; a given level 1 (an 8×8 ramp, texel 4 = 4.5/8) under POINT with
+// MAXMIPLEVEL 1, which clamps the lod from below.
+TEST_F(CliRun, MipChainsAndMipState) {
+  const fs::path ps = dir_ / "lod.psh";
+  std::ofstream(ps)
+      << "ps_3_0\ndcl_2d s0\ndef c0, 0.5, 0.5, 0, 0\nmov r1, c0\ntexldl r0, r1, s0\nmov oC0, r0\n";
+  const std::string base = "--ps " + ps.string() + " --size 2x2 --format rgba32f --probe 0,0 ";
+  const std::string checker = " --texture s0=builtin:checker:16x16";
+  EXPECT_EQ(run_cli(base + checker).out, "0,0: 1 1 1 1\n");
+  EXPECT_EQ(run_cli(base + checker + " --mips auto --max-mip-level 4").out, "0,0: 0.5 0.5 0.5 1\n");
+  EXPECT_EQ(run_cli(base + checker + " --mips 3 --max-mip-level 4").out, "0,0: 1 1 1 1\n");
+  const std::string given = " --texture s0=mips:builtin:checker:16x16,builtin:ramp:8x8";
+  EXPECT_EQ(run_cli(base + given + " --mip-filter point --max-mip-level 1").out,
+            "0,0: 0.5625 0.5625 0.5625 1\n");
+  // A level of the wrong size is refused; so are bad flag values (usage errors, exit 2).
+  EXPECT_NE(run_cli(base + " --texture s0=mips:builtin:checker:16x16,builtin:ramp:4x4").code, 0);
+  EXPECT_EQ(run_cli(base + checker + " --mips 0").code, 2);
+  EXPECT_EQ(run_cli(base + checker + " --mip-filter cubic").code, 2);
+  EXPECT_EQ(run_cli(base + checker + " --max-mip-level 40").code, 2);
+}
+
 } // namespace

@@ -6,7 +6,10 @@
 #include <cmath>
 #include <limits>
 
+#include "tierlift/image/image.h"
+#include "tierlift/pass/mip_chain.h"
 #include "tierlift/pass/mip_lod.h"
+#include "tierlift/rounding/rounding.h"
 
 namespace {
 
@@ -98,6 +101,101 @@ TEST(MipLod, LinearMipBlendIsTheFractionTowardTheCoarserLevel) {
   const float f = 1.0f / 3.0f;
   EXPECT_EQ(mip_blend_exact(f, 0.1f, 0.7f),
             static_cast<float>((1.0 - double(f)) * double(0.1f) + double(f) * double(0.7f)));
+}
+
+} // namespace
+
+// ---- Mip chains (mip_chain.h, NUMERICS.md M6) and lavapipe's level rule (M1-M2) ----------
+
+namespace {
+
+using tierlift::pass::LodInput;
+using tierlift::pass::select_levels;
+
+// A 5×3 image whose texel (i, j) is i + 10·j in every channel.
+std::shared_ptr<const tierlift::img::Image> ramp_5x3() {
+  auto im = std::make_shared<tierlift::img::Image>(5, 3);
+  for (uint32_t j = 0; j < 3; ++j)
+    for (uint32_t i = 0; i < 5; ++i)
+      for (int c = 0; c < 4; ++c) im->at(i, j)[c] = float(i + 10 * j);
+  return im;
+}
+
+TEST(MipChain, BoxFilterDropsTheOddRowAndColumn) {
+  using tierlift::pass::generate_mips;
+  EXPECT_EQ(tierlift::pass::full_chain_length(5, 3), 3u); // 5×3, 2×1, 1×1
+  EXPECT_EQ(tierlift::pass::full_chain_length(64, 64), 7u);
+  EXPECT_EQ(tierlift::pass::full_chain_length(1, 1), 1u);
+  const auto levels = generate_mips(ramp_5x3(), 0);
+  ASSERT_EQ(levels.size(), 3u);
+  ASSERT_EQ(levels[1]->width, 2u);
+  ASSERT_EQ(levels[1]->height, 1u);
+  // Texels (0..1, 0..1) and (2..3, 0..1); column 4 and row 2 are dropped.
+  EXPECT_EQ(levels[1]->at(0, 0)[0], (0.0f + 1 + 10 + 11) / 4);
+  EXPECT_EQ(levels[1]->at(1, 0)[0], (2.0f + 3 + 12 + 13) / 4);
+  // 2×1 → 1×1: the single row is read twice.
+  ASSERT_EQ(levels[2]->width, 1u);
+  EXPECT_EQ(levels[2]->at(0, 0)[3], (5.5f + 7.5f) / 2);
+  EXPECT_EQ(generate_mips(ramp_5x3(), 2).size(), 2u);
+  EXPECT_EQ(generate_mips(ramp_5x3(), 9).size(), 3u); // at most the full chain
+}
+
+TEST(MipChain, BindingChecksEachLevelsSize) {
+  using tierlift::pass::mipmapped_binding;
+  auto base = ramp_5x3();
+  auto good = std::make_shared<tierlift::img::Image>(2, 1);
+  auto bad = std::make_shared<tierlift::img::Image>(3, 1);
+  auto ok = mipmapped_binding({base, good});
+  ASSERT_TRUE(ok.ok()) << ok.message();
+  EXPECT_EQ(ok->levels.size(), 2u);
+  EXPECT_EQ(ok->image, base);
+  auto wrong = mipmapped_binding({base, bad});
+  ASSERT_FALSE(wrong.ok());
+  EXPECT_NE(wrong.message().find("level 1 must be 2x1"), std::string::npos) << wrong.message();
+  auto one = std::make_shared<tierlift::img::Image>(1, 1);
+  EXPECT_FALSE(mipmapped_binding({base, good, one, one}).ok());  // 4 levels > 3
+  EXPECT_TRUE(mipmapped_binding({base}).value().levels.empty()); // one level: the image alone
+}
+
+TEST(MipLod, LlvmpipeFastLog2AndNearestLevel) {
+  using namespace tierlift::rounding;
+  EXPECT_EQ(fast_log2_llvmpipe(1.0f), 0.0f);
+  EXPECT_EQ(fast_log2_llvmpipe(16.0f), 4.0f);
+  EXPECT_EQ(fast_log2_llvmpipe(36.0f), 5.125f); // 1.125·2^5: (5 − 1) + 1.125
+  EXPECT_EQ(fast_log2_llvmpipe(0.0f), -127.0f);
+  EXPECT_EQ(lod_from_rho_llvmpipe(6.0f), 2.5625f);
+  EXPECT_EQ(nearest_level_llvmpipe(0.5f), 0);
+  EXPECT_EQ(nearest_level_llvmpipe(1.5f), 2);
+  EXPECT_EQ(nearest_level_llvmpipe(2.5f), 2);
+  EXPECT_EQ(nearest_level_llvmpipe(2.51f), 3);
+  EXPECT_EQ(nearest_level_from_rho_llvmpipe(5.6f), 2); // log2 5.6 = 2.49
+  EXPECT_EQ(nearest_level_from_rho_llvmpipe(5.7f), 3); // 2.51
+  // ρ = max of the axes' larger gradient times their size, not the vector's length.
+  EXPECT_EQ(mip_rho_llvmpipe(3.0f / 64, 4.0f / 64, 0, 0, 64, 64), 4.0f);
+}
+
+TEST(MipLod, SelectLevelsExactAndLlvmpipe) {
+  LodInput in;
+  in.dudx = 6.0f / 64;
+  in.dvdy = 6.0f / 64; // ρ = 6 texels on a 64×64 level 0
+  const MipState linear = state(MipFilter::Linear);
+  const LevelChoice lp = select_levels(in, linear, 7, 64, 64, true);
+  expect_levels(lp, 2, 3, 0.5625f); // ½·fast_log2(36) = 2.5625
+  const LevelChoice ex = select_levels(in, linear, 7, 64, 64, false);
+  EXPECT_EQ(ex.fine, 2u);
+  EXPECT_FLOAT_EQ(ex.fraction, float(std::log2(6.0) - 2));
+  // Explicit lod, MIPMAPLODBIAS, MAXMIPLEVEL from below, the last level's end.
+  LodInput l;
+  l.explicit_lod = true;
+  l.lod = 0.25f;
+  expect_levels(select_levels(l, state(MipFilter::Linear, 0.5f), 7, 64, 64, true), 0, 1, 0.75f);
+  expect_levels(select_levels(l, state(MipFilter::Linear, 0, 3), 7, 64, 64, true), 3, 4, 0.0f);
+  l.lod = 9.0f;
+  expect_levels(select_levels(l, linear, 7, 64, 64, true), 6, 6, 0.0f);
+  // NONE: MAXMIPLEVEL whatever the lod; POINT: ties to even.
+  expect_levels(select_levels(l, state(MipFilter::None, 0, 4), 7, 64, 64, true), 4, 4, 0.0f);
+  l.lod = 2.5f;
+  expect_levels(select_levels(l, state(MipFilter::Point), 7, 64, 64, true), 2, 2, 0.0f);
 }
 
 } // namespace

@@ -56,4 +56,21 @@ TEST(GradientRules, FlowOnConstantsAndPlainCodeAreQuiet) {
   EXPECT_EQ(gradient_warnings(text), 0u);
 }
 
+// texld, texldp and texldb take their level of detail from the coordinate's gradients across
+// the quad (NUMERICS.md M5): inside divergent flow they warn as dsx does; texldl and texldd,
+// given their lod or gradients, do not, nor does texld outside such flow.
+TEST(GradientRules, ImplicitLodReadsInDivergentFlowWarn) {
+  const std::string head = std::string(kHead) + "dcl_2d s0\n";
+  for (const char* read : {"texld r0, v0, s0\n", "texldp r0, v0, s0\n", "texldb r0, v0, s0\n"}) {
+    const std::string text = head + "if_lt v0.x, c0.x\n" + read + "endif\nmov oC0, r0\n";
+    EXPECT_EQ(gradient_warnings(text), 1u) << text;
+    EXPECT_TRUE(only_warns(text, "gradient-in-divergent-flow", 7, 1, {"if_lt", "level of detail"}))
+        << text;
+  }
+  const std::string quiet = head + "texld r1, v0, s0\nif_lt v0.x, c0.x\n"
+                                   "texldl r0, v0, s0\ntexldd r2, v0, s0, c1, c2\n"
+                                   "add r0, r0, r2\nendif\nadd oC0, r0, r1\n";
+  EXPECT_EQ(gradient_warnings(quiet), 0u);
+}
+
 } // namespace

@@ -4,7 +4,10 @@
 // its neighbour, those values are undefined in Direct3D 9 and in Vulkan (NUMERICS.md rule F8).
 // Flow that differs per pixel: if_comp and if p0 blocks, and loops or reps that a pixel can
 // leave by itself (break_comp, breakp, or a break inside such an if). Flow on constants (if b#,
-// loop i#, rep i#, call, callnz b#) is the same for every pixel of a draw.
+// loop i#, rep i#, call, callnz b#) is the same for every pixel of a draw. texld, texldp and
+// texldb take gradients too: their implicit level of detail comes from the coordinate's
+// differences across the quad (NUMERICS.md M5), so they warn alike; texldl and texldd, whose
+// lod or gradients are given, do not.
 #include <vector>
 
 #include "context.h"
@@ -29,6 +32,10 @@ bool closes_loop(Opcode op) {
 }
 bool opens_if(const ir::Instruction& ins) {
   return ins.op == Opcode::If || dynamic_if(ins);
+}
+// A read whose level of detail comes from its coordinate's gradients.
+bool implicit_lod(Opcode op) {
+  return op == Opcode::TexLd || op == Opcode::TexLdP || op == Opcode::TexLdB;
 }
 
 // For every loop or rep (by its index in code): whether a pixel can leave it by itself.
@@ -72,16 +79,24 @@ void check_gradients(Ctx& c) {
       open.push_back(i);
     } else if ((ins.op == Opcode::EndIf || closes_loop(ins.op)) && !open.empty()) {
       open.pop_back();
-    } else if (ins.op == Opcode::Dsx || ins.op == Opcode::Dsy) {
+    } else if (ins.op == Opcode::Dsx || ins.op == Opcode::Dsy || implicit_lod(ins.op)) {
       for (auto it = open.rbegin(); it != open.rend(); ++it) {
         const ir::Instruction& block = code[*it];
         if (!(opens_loop(block.op) ? divergent[*it] : dynamic_if(block))) continue;
+        const char* where = opens_loop(block.op) ? "loop" : "branch";
+        const std::string advice =
+            implicit_lod(ins.op)
+                ? fmt::format("its level of detail (a mip chain's level) is then undefined on a "
+                              "GPU; sample before the {}, or give the lod (texldl) or the "
+                              "gradients (texldd)",
+                              where)
+                : fmt::format("the neighbours' values it takes are then undefined on a GPU; take "
+                              "the gradient before the {}",
+                              where);
         c.warning(ins.loc, "gradient-in-divergent-flow",
                   fmt::format("{} inside the {} of line {}, whose flow may differ between the "
-                              "pixels of a 2x2 quad: the neighbours' values it takes are then "
-                              "undefined on a GPU; take the gradient before the {}",
-                              mnemonic(ins), mnemonic(block), block.loc.line,
-                              opens_loop(block.op) ? "loop" : "branch"));
+                              "pixels of a 2x2 quad: {}",
+                              mnemonic(ins), mnemonic(block), block.loc.line, advice));
         break;
       }
     }

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include "tierlift/ir/profile.h"
 #include "tierlift/ir/sm3_interface.h"
 
 namespace tierlift::pass {
@@ -23,6 +24,14 @@ ir::Status check_supported(const Pass& pass, const Capabilities& caps, std::stri
   if (pass.pixel_spirv && !pass.pixel_program)
     return ir::fail(std::string(device), "pass",
                     "a SPIR-V pixel stage needs its ps_2_0 twin (the interface it follows)");
+  // ps_1_x reads take no lod on the interpreter (no quads for its texture-address
+  // instructions): a mip chain read by lod is refused there (NUMERICS.md M5).
+  if (pass.pixel_program && !ir::is_sm2_or_later(pass.pixel_program->profile))
+    for (uint32_t s = 0; s < kMaxSamplers; ++s)
+      if (reads_by_lod(pass.textures[s]))
+        return refuse(fmt::format("s{}'s mip chain with MIPFILTER POINT or LINEAR under a ps_1_x "
+                                  "pixel shader",
+                                  s));
   // Both devices run each stage on the 2.0 interface; a pair whose semantics would land in
   // different slots there cannot link (ir::check_semantic_pair).
   if (pass.vertex_program && pass.pixel_program)
@@ -36,6 +45,12 @@ std::optional<ir::Program> fed_vertex_program(const Pass& pass) {
   if (!pass.vertex_program || !pass.pixel_program || !ir::fog_slot(*pass.pixel_program))
     return std::nullopt;
   return ir::feed_fog(*pass.vertex_program, *pass.pixel_program);
+}
+
+bool reads_mips_by_lod(const Pass& pass) {
+  for (const TextureBinding& b : pass.textures)
+    if (reads_by_lod(b)) return true;
+  return false;
 }
 
 uint32_t position_input(const ir::Program& vertex_program) {

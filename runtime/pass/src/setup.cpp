@@ -11,6 +11,7 @@
 #include "tierlift/ir/passes.h"
 #include "tierlift/ir/profile.h"
 #include "tierlift/pass/input_sources.h"
+#include "tierlift/pass/mip_chain.h"
 
 namespace tierlift::pass {
 namespace {
@@ -71,6 +72,23 @@ bool build_constants(const ir::Program& program, const std::vector<ConstSetting>
 void set_sampler(const RunRequest& req, TextureBinding& b) {
   b.sampler.filter = req.filter;
   b.sampler.address_u = b.sampler.address_v = b.sampler.address_w = req.address;
+  b.sampler.mip = req.mip;
+}
+
+// A 2D texture's levels: `levels` as given ("mips:"), or generated from its one image when
+// the request asks for a chain; an error names the stage.
+bool bind_2d(const RunRequest& req, const TextureSetting& t, bool given,
+             std::vector<std::shared_ptr<const img::Image>> levels, TextureBinding& b,
+             RunDiagnostics& diags) {
+  if (!given && req.generated_levels != 1) levels = generate_mips(levels[0], req.generated_levels);
+  ir::Result<TextureBinding> mb = mipmapped_binding(std::move(levels));
+  if (!mb) {
+    diags.other.error({}, "texture", fmt::format("--texture s{}: {}", t.sampler, mb.message()));
+    return false;
+  }
+  b.image = mb->image;
+  b.levels = mb->levels;
+  return true;
 }
 
 bool bind_textures(const RunRequest& req, Pass& pass, RunDiagnostics& diags) {
@@ -103,11 +121,11 @@ bool bind_textures(const RunRequest& req, Pass& pass, RunDiagnostics& diags) {
     }
     TextureBinding& b = pass.textures[t.sampler];
     if (t.image) {
-      b.image = t.image;
+      ok = bind_2d(req, t, false, {t.image}, b, diags) && ok;
       set_sampler(req, b);
       continue;
     }
-    const auto [shape, sources] = layered_sources(t.source);
+    const auto [shape, sources, given_levels] = layered_sources(t.source);
     std::vector<std::shared_ptr<const img::Image>> layers;
     for (const std::string& src : sources) layers.push_back(load(t.sampler, src));
     bool all = true;
@@ -117,7 +135,10 @@ bool bind_textures(const RunRequest& req, Pass& pass, RunDiagnostics& diags) {
       continue;
     }
     if (shape == TextureShape::Tex2D) {
-      b.image = layers[0];
+      if (!bind_2d(req, t, given_levels, std::move(layers), b, diags)) {
+        ok = false;
+        continue;
+      }
     } else {
       ir::Result<TextureBinding> lb = layered_binding(shape, std::move(layers));
       if (!lb) {
@@ -362,6 +383,8 @@ LayeredSources layered_sources(const std::string& source) {
   } else if (source.rfind("volume:", 0) == 0) {
     shape = TextureShape::Volume;
     rest = source.substr(7);
+  } else if (source.rfind("mips:", 0) == 0) {
+    rest = source.substr(5);
   } else {
     return {shape, {source}};
   }
@@ -370,7 +393,7 @@ LayeredSources layered_sources(const std::string& source) {
   for (size_t comma; (comma = rest.find(',', from)) != std::string::npos; from = comma + 1)
     parts.push_back(rest.substr(from, comma - from));
   parts.push_back(rest.substr(from));
-  return {shape, parts};
+  return {shape, parts, source.rfind("mips:", 0) == 0};
 }
 
 } // namespace tierlift::pass

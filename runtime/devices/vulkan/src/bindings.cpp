@@ -65,7 +65,8 @@ ir::Status add_textures(Device::Impl& d, Cleanup& cleanup, const codegen::Compil
     Resources::Texture t;
     t.binding = si.binding;
     t.view = images[stage]->view;
-    if (ir::Status err = create_sampler(d, cleanup, tb.sampler, t.sampler); !err)
+    if (ir::Status err = create_sampler(d, cleanup, tb.sampler, images[stage]->levels, t.sampler);
+        !err)
       return std::move(err).failure();
     res.layout.push_back({t.binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
                           VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});

@@ -26,11 +26,16 @@ std::optional<std::string> draw_key(const pass::Pass& pass, const DrawTextures& 
     const pass::TextureBinding& b = pass.textures[s];
     if (!textures.stages[s] && b.image) return std::nullopt;       // host pixels: not cached
     if (b.shape != pass::TextureShape::Tex2D) return std::nullopt; // host layers: not either
+    if (b.levels.size() > 1) return std::nullopt;                  // nor host mip levels
     k.put(textures.stages[s]);
     k.put(b.sampler.filter);
     k.put(b.sampler.address_u);
     k.put(b.sampler.address_v);
     k.put(b.sampler.border_color);
+    k.put(b.sampler.mip.filter);
+    k.put(b.sampler.mip.lod_bias);
+    k.put(b.sampler.mip.max_mip_level);
+    k.put(b.levels.size());
     for (float m : b.stage.bumpenv_mat) k.put(m);
     k.put(b.stage.bumpenv_lscale);
     k.put(b.stage.bumpenv_loffset);

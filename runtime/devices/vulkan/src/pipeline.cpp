@@ -4,6 +4,7 @@
 
 #include "pipeline_cache.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <ctime>
@@ -169,8 +170,27 @@ ir::Status create_framebuffer(Device::Impl& d, Cleanup& cleanup, VkRenderPass rp
   return ir::ok_status();
 }
 
+namespace {
+
+// D3D9's mip state as Vulkan's (NUMERICS.md M2): MAXMIPLEVEL m (clamped to the last level)
+// is minLod, the lod never goes below it; MIPFILTER NONE reads level m alone (minLod = maxLod
+// = m, so no lod is computed); POINT and LINEAR are the NEAREST and LINEAR mipmap modes up to
+// the last level; MIPMAPLODBIAS is mipLodBias. One level: minLod = maxLod = 0 whatever the
+// state (level 0, as before mip chains).
+void set_mip_state(const pass::MipState& mip, uint32_t levels, VkSamplerCreateInfo& ci) {
+  const uint32_t last = levels == 0 ? 0 : levels - 1;
+  const float m = static_cast<float>(std::min(mip.max_mip_level, last));
+  ci.mipmapMode = mip.filter == pass::MipFilter::Linear ? VK_SAMPLER_MIPMAP_MODE_LINEAR
+                                                        : VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  ci.minLod = m;
+  ci.maxLod = mip.filter == pass::MipFilter::None ? m : static_cast<float>(last);
+  ci.mipLodBias = last == 0 ? 0.0f : mip.lod_bias;
+}
+
+} // namespace
+
 ir::Status create_sampler(Device::Impl& d, Cleanup& cleanup, const pass::SamplerState& s,
-                          VkSampler& out) {
+                          uint32_t levels, VkSampler& out) {
   VkSamplerCreateInfo ci{};
   ci.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
   VkFilter f = s.filter == pass::Filter::Linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
@@ -195,7 +215,7 @@ ir::Status create_sampler(Device::Impl& d, Cleanup& cleanup, const pass::Sampler
         fmt::format("the Vulkan device supports border colours (0,0,0,0), (0,0,0,1) and "
                     "(1,1,1,1) only, not ({},{},{},{})",
                     b[0], b[1], b[2], b[3]));
-  ci.minLod = ci.maxLod = 0.0f;
+  set_mip_state(s.mip, levels, ci);
   VkResult r = vkCreateSampler(d.device, &ci, nullptr, &out);
   if (r != VK_SUCCESS) return draw_failure(vk_error("vkCreateSampler", r));
   cleanup.destroy_later(d.device, out, vkDestroySampler);

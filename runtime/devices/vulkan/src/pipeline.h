@@ -24,7 +24,7 @@ ir::Status create_framebuffer(Device::Impl& d, Cleanup& cleanup, VkRenderPass rp
 // D3D9 sampler state → VkSampler (one level). Errors for MirrorOnce and border colours other
 // than transparent black, opaque black and opaque white.
 ir::Status create_sampler(Device::Impl& d, Cleanup& cleanup, const pass::SamplerState& s,
-                          VkSampler& out);
+                          uint32_t levels, VkSampler& out);
 
 struct PipelineDesc {
   const codegen::ShaderModule* vs = nullptr;

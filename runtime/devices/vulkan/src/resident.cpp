@@ -1,6 +1,9 @@
 // Resident textures: creation, the float shadow, and the recorded moves between uses.
 #include "resident.h"
 
+#include <algorithm>
+#include <vector>
+
 #include <fmt/format.h>
 
 #include "pass_draw.h"
@@ -65,7 +68,8 @@ bool read_only(VkImageLayout layout) {
 void clear_if_new(VkCommandBuffer cb, Resident& r) {
   if (r.stored.layout != VK_IMAGE_LAYOUT_UNDEFINED) return;
   transition(cb, r.stored, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
-  const VkImageSubresourceRange range{r.stored.image.aspect, 0, 1, 0, VK_REMAINING_ARRAY_LAYERS};
+  const VkImageSubresourceRange range{r.stored.image.aspect, 0, VK_REMAINING_MIP_LEVELS, 0,
+                                      VK_REMAINING_ARRAY_LAYERS};
   if (r.stencil) {
     const VkClearDepthStencilValue zero{1.0f, 0};
     vkCmdClearDepthStencilImage(cb, r.stored.image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
@@ -119,6 +123,20 @@ ir::Status create_layered_resident(Device::Impl& d, uint32_t width, uint32_t hei
   const VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
   if (ir::Status err = create_layered_image(d, r->objects, width, height, shape, layers,
                                             kSampledFormat, usage, r->stored.image);
+      !err)
+    return err;
+  out = std::move(r);
+  return ir::ok_status();
+}
+
+ir::Status create_mip_resident(Device::Impl& d, uint32_t width, uint32_t height, uint32_t levels,
+                               std::unique_ptr<Resident>& out) {
+  auto r = std::make_unique<Resident>();
+  r->width = width;
+  r->height = height;
+  const VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  if (ir::Status err = create_layered_image(d, r->objects, width, height, pass::TextureShape::Tex2D,
+                                            1, kSampledFormat, usage, r->stored.image, levels);
       !err)
     return err;
   out = std::move(r);
@@ -200,9 +218,19 @@ void transition(VkCommandBuffer cb, TrackedImage& t, VkImageLayout to) {
 
 void record_upload(VkCommandBuffer cb, Resident& r, VkBuffer staging) {
   transition(cb, r.stored, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
-  const VkBufferImageCopy copy = whole_image(r);
-  vkCmdCopyBufferToImage(cb, staging, r.stored.image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
-                         &copy);
+  // A mip chain's levels lie one after the other in the buffer, level 0 first (RGBA32F).
+  std::vector<VkBufferImageCopy> copies(r.stored.image.levels, whole_image(r));
+  VkDeviceSize offset = 0;
+  for (uint32_t k = 0; k < copies.size(); ++k) {
+    const uint32_t w = std::max(1u, r.width >> k), h = std::max(1u, r.height >> k);
+    copies[k].bufferOffset = offset;
+    copies[k].imageSubresource.mipLevel = k;
+    copies[k].imageExtent.width = w;
+    copies[k].imageExtent.height = h;
+    offset += VkDeviceSize{w} * h * 16;
+  }
+  vkCmdCopyBufferToImage(cb, staging, r.stored.image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                         static_cast<uint32_t>(copies.size()), copies.data());
   r.shadow_current = false;
 }
 

@@ -77,6 +77,11 @@ ir::Status create_resident(Device::Impl& d, uint32_t width, uint32_t height, img
 ir::Status create_layered_resident(Device::Impl& d, uint32_t width, uint32_t height,
                                    pass::TextureShape shape, uint32_t layers,
                                    std::unique_ptr<Resident>& out);
+// A 2D texture to sample with a mip chain (RGBA32F, `levels` levels from `width` × `height`,
+// each max(1, previous / 2)), filled by record_upload from the levels one after the other,
+// level 0 first; never a target.
+ir::Status create_mip_resident(Device::Impl& d, uint32_t width, uint32_t height, uint32_t levels,
+                               std::unique_ptr<Resident>& out);
 // An 8-bit stencil buffer of `width` × `height`, all zero: VK_FORMAT_S8_UINT where the
 // device can render to it and copy it, else the first of D24_UNORM_S8_UINT and
 // D32_SFLOAT_S8_UINT that it can (the depth aspect is never tested or written).

@@ -113,7 +113,7 @@ ir::Status create_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint3
 
 ir::Status create_layered_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint32_t height,
                                 pass::TextureShape shape, uint32_t layers, VkFormat format,
-                                VkImageUsageFlags usage, Image2D& out) {
+                                VkImageUsageFlags usage, Image2D& out, uint32_t levels) {
   using pass::TextureShape;
   const bool cube = shape == TextureShape::Cube, volume = shape == TextureShape::Volume;
   VkImageCreateInfo ii{};
@@ -122,7 +122,7 @@ ir::Status create_layered_image(Device::Impl& d, Cleanup& cleanup, uint32_t widt
   ii.imageType = volume ? VK_IMAGE_TYPE_3D : VK_IMAGE_TYPE_2D;
   ii.format = format;
   ii.extent = {width, height, volume ? layers : 1};
-  ii.mipLevels = 1;
+  ii.mipLevels = levels;
   ii.arrayLayers = cube ? 6 : 1;
   ii.samples = VK_SAMPLE_COUNT_1_BIT;
   ii.tiling = VK_IMAGE_TILING_OPTIMAL;
@@ -154,7 +154,7 @@ ir::Status create_layered_image(Device::Impl& d, Cleanup& cleanup, uint32_t widt
                          : VK_IMAGE_VIEW_TYPE_2D;
   vi.format = format;
   const VkImageAspectFlags aspect = format_aspects(format);
-  vi.subresourceRange = {aspect, 0, 1, 0, cube ? 6u : 1u};
+  vi.subresourceRange = {aspect, 0, levels, 0, cube ? 6u : 1u};
   if ((r = vkCreateImageView(dev, &vi, nullptr, &out.view)) != VK_SUCCESS)
     return draw_failure(vk_error("vkCreateImageView", r));
   cleanup.destroy_later(dev, out.view, vkDestroyImageView);
@@ -164,6 +164,7 @@ ir::Status create_layered_image(Device::Impl& d, Cleanup& cleanup, uint32_t widt
   out.shape = shape;
   out.layers = cube ? 6 : volume ? layers : 1;
   out.aspect = aspect;
+  out.levels = levels;
   return ir::ok_status();
 }
 
@@ -247,7 +248,8 @@ void image_barrier(VkCommandBuffer cb, VkImage image, VkImageLayout from, VkImag
   b.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   b.image = image;
-  b.subresourceRange = {aspect, 0, 1, 0, VK_REMAINING_ARRAY_LAYERS}; // a cube's six faces too
+  // A cube's six faces and a mip chain's levels too.
+  b.subresourceRange = {aspect, 0, VK_REMAINING_MIP_LEVELS, 0, VK_REMAINING_ARRAY_LAYERS};
   vkCmdPipelineBarrier(cb, src_stage, dst_stage, 0, 0, nullptr, 0, nullptr, 1, &b);
 }
 

@@ -75,6 +75,35 @@ ir::Status host_layered_texture(Device::Impl& d, const codegen::SamplerInfo& si,
 
 } // namespace
 
+// A 2D binding's mip chain (pass::TextureBinding::levels, RGBA32F, level 0 first), uploaded
+// now: it belongs to the draw. Resident textures have one level, so a stage with levels
+// reads the binding's host levels.
+ir::Status host_mip_texture(Device::Impl& d, const pass::TextureBinding& b, PreparedDraw& out,
+                            Resident*& r) {
+  const img::Image& base = *b.levels[0];
+  size_t floats = 0;
+  for (const auto& level : b.levels) floats += level->rgba.size();
+  std::unique_ptr<Resident> t;
+  Cleanup staging_objects;
+  Buffer staging;
+  ir::Status err =
+      create_mip_resident(d, base.width, base.height, static_cast<uint32_t>(b.levels.size()), t);
+  if (err)
+    err = create_buffer(d, staging_objects, floats * 4, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, staging);
+  if (!err) return err;
+  size_t at = 0;
+  for (const auto& level : b.levels) {
+    std::memcpy(static_cast<float*>(staging.mapped) + at, level->rgba.data(),
+                level->rgba.size() * 4);
+    at += level->rgba.size();
+  }
+  err = submit_and_wait(d, [&](VkCommandBuffer cb) { record_upload(cb, *t, staging.buffer); });
+  if (!err) return err;
+  r = t.get();
+  out.host_textures.push_back(std::move(t));
+  return ir::ok_status();
+}
+
 // The textures the pixel program samples: resident ones, else the pass's host images (or the
 // unbound texture) uploaded for this draw.
 ir::Status bind_sampled(Device::Impl& d, const pass::Pass& pass, const DrawTextures& textures,
@@ -101,6 +130,9 @@ ir::Status bind_sampled(Device::Impl& d, const pass::Pass& pass, const DrawTextu
     } else if (pass.textures[s].shape != pass::TextureShape::Tex2D) {
       err = draw_failure(
           fmt::format("s{}: a 2D sampler cannot read a cube or volume texture", si.stage));
+    } else if (pass.textures[s].levels.size() > 1) {
+      r = nullptr; // the binding's levels, uploaded with the draw
+      err = host_mip_texture(d, pass.textures[s], out, r);
     } else if (!r) {
       const img::Image& im = pass.textures[s].image ? *pass.textures[s].image : unbound;
       err = host_texture(d, si.stage, im, out, r);

@@ -117,15 +117,17 @@ struct Image2D {
   // COLOR, or for a stencil buffer STENCIL (with DEPTH when the format has both: barriers and
   // attachment views then name both aspects).
   VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;
+  uint32_t levels = 1; // mip levels (a 2D texture with a mip chain), all in the view
 };
 // The aspects of `format`: COLOR, DEPTH, STENCIL or DEPTH|STENCIL.
 VkImageAspectFlags format_aspects(VkFormat format);
 ir::Status create_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint32_t height,
                         VkFormat format, VkImageUsageFlags usage, Image2D& out);
-// The same for a cube (`layers` = 6) or volume (`layers` slices) texture.
+// The same for a cube (`layers` = 6) or volume (`layers` slices) texture, or a 2D texture of
+// `levels` mip levels (each max(1, previous / 2), all in the view).
 ir::Status create_layered_image(Device::Impl& d, Cleanup& cleanup, uint32_t width, uint32_t height,
                                 pass::TextureShape shape, uint32_t layers, VkFormat format,
-                                VkImageUsageFlags usage, Image2D& out);
+                                VkImageUsageFlags usage, Image2D& out, uint32_t levels = 1);
 
 // Records commands into a fresh primary command buffer, submits it and waits for it.
 ir::Status submit_and_wait(Device::Impl& d, const std::function<void(VkCommandBuffer)>& record);

@@ -190,9 +190,12 @@ ir::Result<DrawStats> draw(const Pass& pass, const DrawTargets& targets, unsigne
     if (!made) return draw_failure("the shader VM refused the program: " + made.message());
     vm->emplace(std::move(*made));
   }
+  // A mip chain read by lod: the reads meet in 2x2 quads, which the block executor has not.
+  const bool lod_quads = tierlift::pass::reads_mips_by_lod(pass);
+  if (lod_quads && vms.ps) vms.ps->enable_lod_quads();
   std::unique_ptr<PixelBlockVM> block; // null: the per-pixel VM runs the pixel stage
   try { // out of memory while planning the block executor: an error, not a crash
-    if (pass.pixel_program && pass.executor == Executor::Auto && !per_pixel_only)
+    if (pass.pixel_program && pass.executor == Executor::Auto && !per_pixel_only && !lod_quads)
       block = PixelBlockVM::create(*pass.pixel_program, pass.conventions, pass.ps_constants,
                                    /*coords_2d=*/true); // BoundTextures reads u, v only
   } catch (const std::exception& e) {

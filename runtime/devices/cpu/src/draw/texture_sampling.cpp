@@ -44,9 +44,14 @@ Vec4 sample_texture(const img::Image& image, const SamplerState& sampler, float 
 }
 
 Vec4 BoundTextures::sample(uint32_t stage, const Vec4& coord, float lod_bias) const {
-  (void)lod_bias; // one mip level: the bias has nothing to select
   if (stage >= kMaxSamplers || !bindings_[stage].image) return {0, 0, 0, 1};
   const TextureBinding& b = bindings_[stage];
+  if (b.levels.size() > 1) { // a mip chain read without a quad: zero gradients
+    pass::LodInput in;
+    in.has_bias = lod_bias != 0.0f;
+    in.bias = lod_bias;
+    return sample_lod(stage, coord, in);
+  }
   if (b.shape == pass::TextureShape::Cube) return sample_cube(b, coord, llvmpipe_, subtexel_bits_);
   if (b.shape == pass::TextureShape::Volume)
     return sample_volume(b, coord, llvmpipe_, subtexel_bits_);

@@ -327,7 +327,8 @@ void BoundTextures::sample_block(uint32_t stage, const float* const coord[4], co
                                  int n, Lanes out[4]) const {
   if (stage >= kMaxSamplers || !bindings_[stage].image || bindings_[stage].image->width == 0 ||
       bindings_[stage].image->height == 0 ||
-      bindings_[stage].shape != pass::TextureShape::Tex2D) { // cubes and volumes: per lane
+      bindings_[stage].shape != pass::TextureShape::Tex2D || // cubes and volumes: per lane
+      bindings_[stage].levels.size() > 1) {                  // mip chains: sample() picks the level
     TextureUnit::sample_block(stage, coord, bias, n, out);   // the rare cases, lane by lane
     return;
   }

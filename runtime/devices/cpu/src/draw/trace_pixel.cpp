@@ -49,6 +49,7 @@ ir::Result<PixelTrace> trace_pixel(const Pass& pass, uint32_t width, uint32_t he
   }
   ir::Result<ShaderVM> ps = ShaderVM::create(*pass.pixel_program, pass.conventions);
   if (!ps) return trace_failure("the shader VM refused the program: " + ps.message());
+  if (tierlift::pass::reads_mips_by_lod(pass)) ps->enable_lod_quads();
 
   Viewport vp = pass.viewport;
   if (vp.width == 0) vp.width = width;

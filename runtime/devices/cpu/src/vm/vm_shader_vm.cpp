@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "tierlift/ir/numerics.h"
+#include "tierlift/ir/profile.h"
 #include "vm_internal.h"
 
 namespace tierlift::cpu {
@@ -121,6 +122,17 @@ PixelOutput ShaderVM::run_pixel(const PixelInput& in, const ConstantBank& consta
 bool ShaderVM::needs_quad() const {
   const auto& steps = impl_->p.steps;
   return std::any_of(steps.begin(), steps.end(), [](const vm::Step& s) { return s.gradient; });
+}
+
+void ShaderVM::enable_lod_quads() {
+  if (!ir::is_sm2_or_later(impl_->p.program.profile) ||
+      impl_->p.program.stage() != ir::ShaderStage::Pixel)
+    return;
+  for (vm::Step& s : impl_->p.steps) {
+    const ir::Opcode op = s.ins ? s.ins->op : ir::Opcode::Nop;
+    if (op == ir::Opcode::TexLd || op == ir::Opcode::TexLdP || op == ir::Opcode::TexLdB)
+      s.gradient = true;
+  }
 }
 
 namespace {

@@ -199,35 +199,79 @@ template <Denormals D> void ex_texdepth(const Step& s, Invocation& inv) {
 
 // --- ps_2_0 ----------------------------------------------------------------------------
 
-template <Denormals D> void ex_texld(const Step& s, Invocation& inv) {
-  store(s.dst, sample(inv, s.aux, fetch(s.src[0], inv)), inv);
-}
+// --- ps_2_0+ reads with a level of detail (NUMERICS.md M4, M5) ------------------------
+//
+// At a quad step (ShaderVM::enable_lod_quads: a stage holds a mip chain read by lod) texld,
+// texldp and texldb take the gradients of their coordinate across the quad as lavapipe does:
+// the differences top-right − top-left and bottom-left − top-left, one pair for the whole
+// quad. texldb's bias, texldl's lod and texldd's gradients are each pixel's own (measured:
+// lavapipe evaluates those per pixel). Alone (no quad) the pixel is its own neighbour: zero
+// gradients. A stage of one level ignores all of it.
 
-// texldp: xyz / w; the coordinate handed on has w = 1.
-template <Denormals D> void ex_texldp(const Step& s, Invocation& inv) {
-  Vec4 c = fetch(s.src[0], inv);
-  float w = c[3];
+template <Denormals D> Vec4 projected_coord(const Vec4& c) {
   auto div = num::legacy_div<D>;
-  store(s.dst, sample(inv, s.aux, {div(c[0], w), div(c[1], w), div(c[2], w), 1.0f}), inv);
+  const float w = c[3];
+  return {div(c[0], w), div(c[1], w), div(c[2], w), 1.0f};
 }
 
-// texldd dst, coord, s#, ddx, ddy: the gradients choose a level of detail, and a texture has
-// one level so far: level 0, as texld (NUMERICS.md rule F10). s.src[2] and s.src[3] are the
-// gradients the level-of-detail computation will read.
+// The coarse gradients of the quad's coordinates `lane[0..3]` (already projected for texldp).
+template <Denormals D> void quad_gradients(const Vec4* lane, pass::LodInput& in) {
+  auto sub = num::legacy_sub<D>;
+  in.dudx = sub(lane[1][0], lane[0][0]);
+  in.dvdx = sub(lane[1][1], lane[0][1]);
+  in.dudy = sub(lane[2][0], lane[0][0]);
+  in.dvdy = sub(lane[2][1], lane[0][1]);
+}
+
+Vec4 sample_lod(const Invocation& inv, int32_t stage, const Vec4& coord, const pass::LodInput& in) {
+  if (!inv.tex || stage < 0) return {0, 0, 0, 1}; // unbound: opaque black (§10.6)
+  return inv.tex->sample_lod(static_cast<uint32_t>(stage), coord, in);
+}
+
+template <Denormals D> void ex_texld(const Step& s, Invocation& inv) {
+  const Vec4 c = fetch(s.src[0], inv);
+  pass::LodInput in;
+  if (inv.quad) quad_gradients<D>(inv.quad, in);
+  store(s.dst, sample_lod(inv, s.aux, c, in), inv);
+}
+
+// texldp: xyz / w; the coordinate handed on has w = 1 (the gradients are the projected ones).
+template <Denormals D> void ex_texldp(const Step& s, Invocation& inv) {
+  const Vec4 c = projected_coord<D>(fetch(s.src[0], inv));
+  pass::LodInput in;
+  if (inv.quad) {
+    const Vec4 lanes[4] = {projected_coord<D>(inv.quad[0]), projected_coord<D>(inv.quad[1]),
+                           projected_coord<D>(inv.quad[2]), projected_coord<D>(inv.quad[3])};
+    quad_gradients<D>(lanes, in);
+  }
+  store(s.dst, sample_lod(inv, s.aux, c, in), inv);
+}
+
+// texldd dst, coord, s#, ddx, ddy: the gradients given choose the level (rule F10).
 template <Denormals D> void ex_texldd(const Step& s, Invocation& inv) {
-  store(s.dst, sample(inv, s.aux, fetch(s.src[0], inv)), inv);
+  const Vec4 ddx = fetch(s.src[2], inv), ddy = fetch(s.src[3], inv);
+  pass::LodInput in;
+  in.dudx = ddx[0], in.dvdx = ddx[1], in.dudy = ddy[0], in.dvdy = ddy[1];
+  store(s.dst, sample_lod(inv, s.aux, fetch(s.src[0], inv), in), inv);
 }
 
+// texldb: the lod of the quad's gradients plus src.w.
 template <Denormals D> void ex_texldb(const Step& s, Invocation& inv) {
-  Vec4 c = fetch(s.src[0], inv);
-  store(s.dst, sample(inv, s.aux, c, c[3]), inv);
+  const Vec4 c = fetch(s.src[0], inv);
+  pass::LodInput in;
+  in.has_bias = true;
+  in.bias = c[3];
+  if (inv.quad) quad_gradients<D>(inv.quad, in);
+  store(s.dst, sample_lod(inv, s.aux, c, in), inv);
 }
 
-// texldl: the level of detail is src.w. Every texture the devices bind has one mip level, and
-// D3D9 clamps the level to [MAXMIPLEVEL, levels − 1] = [0, 0], so any lod (NaN included)
-// reads level 0 with the stage's filter, as texld does (NUMERICS.md, texldl).
+// texldl: the level of detail is src.w, no bias (rule F11).
 template <Denormals D> void ex_texldl(const Step& s, Invocation& inv) {
-  store(s.dst, sample(inv, s.aux, fetch(s.src[0], inv)), inv);
+  const Vec4 c = fetch(s.src[0], inv);
+  pass::LodInput in;
+  in.explicit_lod = true;
+  in.lod = c[3];
+  store(s.dst, sample_lod(inv, s.aux, c, in), inv);
 }
 
 } // namespace

@@ -49,4 +49,21 @@ LevelChoice choose_levels(float lod, float texldb_bias, const MipState& state, u
 // M3, the mip blend, exact: (1 − f)·fine + f·coarse in double, rounded once to float.
 float mip_blend_exact(float fraction, float fine, float coarse);
 
+// What one read hands the level rule (M4): the gradients of (u, v) across its 2x2 quad
+// (texld, texldp, texldb: the quad's coarse differences, M5; texldd: given), or an explicit
+// lod (texldl), and texldb's bias.
+struct LodInput {
+  bool explicit_lod = false;
+  float lod = 0.0f;                                         // explicit_lod
+  float dudx = 0.0f, dvdx = 0.0f, dudy = 0.0f, dvdy = 0.0f; // !explicit_lod
+  bool has_bias = false;                                    // texldb
+  float bias = 0.0f;
+};
+
+// The levels a read of a `levels`-level texture whose level 0 is w×h takes: the exact rules
+// (lod_from_gradients, choose_levels) or, `llvmpipe`, lavapipe's (rounding.h: ρ, λ, the
+// nearest level, the clamps as its sampler applies them; NUMERICS.md M1-M2).
+LevelChoice select_levels(const LodInput& in, const MipState& state, uint32_t levels,
+                          uint32_t width, uint32_t height, bool llvmpipe);
+
 } // namespace tierlift::pass

@@ -26,6 +26,7 @@
 #include "tierlift/ir/program.h"
 #include "tierlift/ir/result.h"
 #include "tierlift/pass/addressing.h"
+#include "tierlift/pass/mip_lod.h"
 #include "tierlift/pass/registers.h"
 
 namespace tierlift::pass {
@@ -40,6 +41,8 @@ struct SamplerState {
   AddressMode address_v = AddressMode::Wrap;
   AddressMode address_w = AddressMode::Wrap; // D3DSAMP_ADDRESSW: volume textures' third axis
   Vec4 border_color{0, 0, 0, 0};
+  // MIPFILTER, MIPMAPLODBIAS, MAXMIPLEVEL (mip_lod.h): which levels of a mip chain a read takes.
+  MipState mip;
 };
 
 // POINT filtering with CLAMP addressing on both axes: each read takes one texel, and never
@@ -47,8 +50,10 @@ struct SamplerState {
 // bytes, without a float copy (codegen::CodegenOptions::stage_fetch_unorm8), and the memory
 // plan (effects/memory_plan.h) counts no copy for it.
 inline bool point_clamped(const SamplerState& s) {
+  // MIPFILTER POINT or LINEAR: the read takes a level by the lod, which the clamped
+  // coordinate's gradients would change.
   return s.filter == Filter::Point && s.address_u == AddressMode::Clamp &&
-         s.address_v == AddressMode::Clamp;
+         s.address_v == AddressMode::Clamp && s.mip.filter == MipFilter::None;
 }
 
 // The kind of texture a stage holds (D3DRTYPE_TEXTURE, _CUBETEXTURE, _VOLUMETEXTURE).
@@ -69,6 +74,9 @@ struct TextureBinding {
   StageState stage;
   TextureShape shape = TextureShape::Tex2D;
   std::vector<std::shared_ptr<const img::Image>> layers = {}; // Cube and Volume only
+  // A 2D texture's mip chain, level 0 (= image) first, each level max(1, floor(previous / 2))
+  // on each side (mip_chain.h checks and generates them); empty: one level, `image`.
+  std::vector<std::shared_ptr<const img::Image>> levels = {};
 };
 
 // A cube or volume binding from its layers (checked: a cube has six square faces of one
@@ -76,7 +84,17 @@ struct TextureBinding {
 ir::Result<TextureBinding> layered_binding(TextureShape shape,
                                            std::vector<std::shared_ptr<const img::Image>> layers);
 
+// Whether a read of `b` takes its level by a level of detail: a mip chain of more than one
+// level with MIPFILTER POINT or LINEAR (NONE reads level MAXMIPLEVEL, no lod needed).
+inline bool reads_by_lod(const TextureBinding& b) {
+  return b.levels.size() > 1 && b.sampler.mip.filter != MipFilter::None;
+}
+
 inline constexpr uint32_t kMaxSamplers = 16;
+
+struct Pass;
+// Whether any sampler stage of `pass` holds a mip chain read by lod (reads_by_lod).
+bool reads_mips_by_lod(const Pass& pass);
 
 enum class BlendMode : uint8_t {
   Replace,             // dst = src

@@ -76,10 +76,13 @@ struct TextureSetting {
 
 // A TextureSetting's source names a cube or volume texture by its layers' sources:
 // "cube:+X,−X,+Y,−Y,+Z,−Z" (six files or builtin specs, D3D9's face order) or
-// "volume:S0,S1,…" (the slices from w = 0 up). Any other source is one 2D texture.
+// "volume:S0,S1,…" (the slices from w = 0 up), or a 2D texture's mip chain by its levels'
+// sources, "mips:L0,L1,…" (level 0 first, each level half the previous, mip_chain.h). Any
+// other source is one 2D texture.
 struct LayeredSources {
   TextureShape shape = TextureShape::Tex2D;
   std::vector<std::string> sources; // one for a 2D texture
+  bool mip_levels = false;          // "mips:": `sources` are the levels of one 2D texture
 };
 LayeredSources layered_sources(const std::string& source);
 
@@ -115,6 +118,11 @@ struct RunRequest {
   Filter filter = Filter::Point;
   AddressMode address = AddressMode::Wrap;
   ir::Conventions conventions;
+  // Mip chains: every 2D texture given as one image gets `generated_levels` levels made by
+  // pass::generate_mips (0: the full chain; 1: none, the default), and every stage takes
+  // `mip` (MIPFILTER, MIPMAPLODBIAS, MAXMIPLEVEL), as `filter` and `address`.
+  uint32_t generated_levels = 1;
+  MipState mip;
   FrontFace front_face = FrontFace::Clockwise; // the winding vFace calls front
   std::vector<ProbePoint> probes;
   unsigned threads = 0; // CPU device: 0 = every core

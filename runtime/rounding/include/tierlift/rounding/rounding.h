@@ -211,5 +211,41 @@ float cos_exact(float a);
 // |a|·4/π ≥ 2^31 the octant is INT32_MIN's and the result is no sine at all.
 float sin_llvmpipe(float a);
 float cos_llvmpipe(float a);
+// ---- Mip levels (NUMERICS.md, mip levels and LOD, M1-M3) --------------------------------
+//
+// lavapipe's level of detail, written from its sampler's steps (Mesa gallivm) and checked
+// by measurement. The exact rules beside them are pass::lod_from_gradients, choose_levels
+// and mip_blend_exact (tierlift/pass/mip_lod.h); pass::select_levels picks one or the other.
+
+// ρ of one quad: max(max(|du/dx|, |du/dy|)·W, max(|dv/dx|, |dv/dy|)·H) in float: the larger
+// axis-aligned footprint, not the length of the gradient vectors (lavapipe's default
+// approximation). Flushed as every float step (rule 13).
+inline float mip_rho_llvmpipe(float dudx, float dvdx, float dudy, float dvdy, uint32_t width,
+                              uint32_t height) {
+  auto larger = [](float a, float b) { return a > b ? a : b; };
+  const float s = flush(larger(std::fabs(flush(dudx)), std::fabs(flush(dudy))) * float(width));
+  const float t = flush(larger(std::fabs(flush(dvdx)), std::fabs(flush(dvdy))) * float(height));
+  return larger(s, t);
+}
+
+// log2 by its piecewise-linear approximation: x = m·2^e with m in [1, 2) gives (e − 1) + m,
+// exact at powers of two (then e), linear between them; one float add. 0 gives −127.
+float fast_log2_llvmpipe(float x);
+
+// λ from ρ: ½·fast_log2(fl32(ρ·ρ)), the square's log halved (both steps in float).
+inline float lod_from_rho_llvmpipe(float rho) {
+  return 0.5f * fast_log2_llvmpipe(flush(rho * rho));
+}
+
+// The nearest level of λ (MIPFILTER POINT): round to nearest, ties to even (the vector
+// conversion's default rounding), so λ = 0.5 takes level 0 and 1.5 level 2.
+int32_t nearest_level_llvmpipe(float lod);
+
+// The nearest level straight from ρ, when nothing is added to λ and nothing clamps it
+// (POINT, no bias of either kind, minLod 0): floor(log2(fl32(ρ·√2))) read off the exponent.
+int32_t nearest_level_from_rho_llvmpipe(float rho);
+
+// The mip blend (MIPFILTER LINEAR) is rounding::lerp(fraction, fine, coarse) above, the same
+// step as the bilinear lerp, after the fine level's and the coarse level's bilinear reads.
 
 } // namespace tierlift::rounding

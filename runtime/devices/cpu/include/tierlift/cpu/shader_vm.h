@@ -12,6 +12,7 @@
 #include "tierlift/ir/conventions.h"
 #include "tierlift/ir/program.h"
 #include "tierlift/ir/result.h"
+#include "tierlift/pass/mip_lod.h"
 #include "tierlift/pass/registers.h"
 
 namespace tierlift::cpu {
@@ -37,6 +38,12 @@ class TextureUnit {
 public:
   virtual ~TextureUnit() = default;
   virtual Vec4 sample(uint32_t stage, const Vec4& coord, float lod_bias) const = 0;
+  // A ps_2_0+ read whose level a level of detail chooses (texld, texldp, texldb, texldl,
+  // texldd): `lod` says how (NUMERICS.md M4, M5). This default ignores it, as a texture of
+  // one level may.
+  virtual Vec4 sample_lod(uint32_t stage, const Vec4& coord, const pass::LodInput& lod) const {
+    return sample(stage, coord, lod.bias);
+  }
   virtual StageState stage_state(uint32_t stage) const {
     (void)stage;
     return {};
@@ -92,6 +99,11 @@ public:
   // run_pixel still runs such a program, the pixel standing in for its own neighbours (every
   // gradient is then x − x: 0, or NaN for an infinity or NaN).
   bool needs_quad() const;
+  // Makes the ps_2_0+ texture reads whose lod comes from the coordinate's gradients (texld,
+  // texldp, texldb) quad steps, as dsx/dsy: the four lanes meet there, and the read takes
+  // the quad's differences from its top-left lane (NUMERICS.md M5). A draw calls it when a
+  // stage holds a mip chain read by lod (pass::reads_by_lod).
+  void enable_lod_quads();
   // The four pixels of a 2x2 quad, in[0] top-left, in[1] top-right, in[2] bottom-left,
   // in[3] bottom-right, with their gradients taken across the quad (NUMERICS.md rules F8, F9).
   // Every lane runs to its end, helper pixels (outside the primitive) and discarded ones

@@ -53,7 +53,11 @@ public:
   BoundTextures(const std::array<TextureBinding, kMaxSamplers>& bindings, int subtexel_bits,
                 bool llvmpipe = false)
       : bindings_(bindings), subtexel_bits_(subtexel_bits), llvmpipe_(llvmpipe) {}
+  // A stage with a mip chain (TextureBinding::levels) reads the levels pass::select_levels
+  // picks (the exact rules, or lavapipe's when `llvmpipe`) and blends them (NUMERICS.md M3);
+  // sample() reads it as from a quad of zero gradients (texture_sampling_mip.cpp).
   Vec4 sample(uint32_t stage, const Vec4& coord, float lod_bias) const override;
+  Vec4 sample_lod(uint32_t stage, const Vec4& coord, const pass::LodInput& lod) const override;
   StageState stage_state(uint32_t stage) const override;
   // The same samples without a virtual call per lane (texture_sampling_block.cpp).
   void sample_block(uint32_t stage, const float* const coord[4], const float* bias, int n,
