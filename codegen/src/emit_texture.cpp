@@ -238,6 +238,9 @@ bool Emitter::emit_texture(const ir::Instruction& ins, std::optional<PendingStor
       // SM2 tests all four components (Wine; the docs say three, docs/d3d9-rules.md §5.7).
       if (!ir::is_ps1x(prog.profile)) n = 4;
     }
+    // A predicated texkill tests component i only where p0's component i holds (rule F3):
+    // the others are tested as 0, which kills nothing.
+    if (ins.pred) v = b.op(Op::OpSelect, t_vec4, {predicate_mask(*ins.pred), v, splat(f(0.0f))});
     kill_if_any_negative(v, n);
     return true;
   }

@@ -69,15 +69,15 @@ TEST(CliLaterProfiles, SpirvAndRunTakeThemAndRefuseGradientsWithAPosition) {
   EXPECT_EQ(run.exit_code, 0) << run.err;
   EXPECT_TRUE(std::filesystem::exists(s.file("out.png")));
   EXPECT_EQ(run_cli("spirv " + s.file("v.vsh", kVs30) + " -o " + s.file("v.spv")).exit_code, 0);
-  // A predicated texkill does not run yet: refused at the instruction, nothing written.
-  const std::string grad = s.file(
-      "g.psh", "ps_3_0\ndcl_texcoord0 v0\nsetp_gt p0, v0, c0\n(p0) texkill v0\nmov oC0, v0\n");
-  auto g = run_cli("run --ps " + grad + " --backend cpu -o " + s.file("g.png"));
+  // An input addressed relatively does not run yet: refused at the operand, nothing written.
+  const std::string rel =
+      s.file("g.psh", "ps_3_0\ndcl_texcoord0 v0\ndcl_texcoord1 v1\ndefi i0, 2, 0, 1, 0\n"
+                      "mov r0, c0\nloop aL, i0\nadd r0, r0, v0[aL]\nendloop\nmov oC0, r0\n");
+  auto g = run_cli("run --ps " + rel + " --backend cpu -o " + s.file("g.png"));
   EXPECT_EQ(g.exit_code, 1);
-  EXPECT_NE(
-      g.err.find(
-          "g.psh:4:6: error: not supported yet by the interpreter: predicated texkill in ps_3_0"),
-      std::string::npos)
+  EXPECT_NE(g.err.find("g.psh:7:13: error: not supported yet by the interpreter: v0 addressed "
+                       "relatively (only c# is)"),
+            std::string::npos)
       << g.err;
   EXPECT_FALSE(std::filesystem::exists(s.file("g.png")));
 }

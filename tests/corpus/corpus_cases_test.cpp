@@ -112,17 +112,18 @@ TEST(CorpusStages, InvalidListingFailsValidateAndSkipsTheRest) {
   EXPECT_EQ(r.failed_stage(), "validate");
 }
 
-TEST(CorpusStages, ShaderModel3RunsAndAPredicatedTexkillIsUnsupportedNotAFailure) {
+TEST(CorpusStages, ShaderModel3RunsAndARelativeInputIsUnsupportedNotAFailure) {
   // The front end takes both; SPIR-V runs the first (the differential run follows when a
-  // device is given), not yet the predicated texkill of the second.
+  // device is given), not yet the v0[aL] of the second.
   CaseResult r = run_listing("c", "c.psh", "ps_3_0\nmov oC0, c0\n", no_device());
   EXPECT_EQ(stage_verdict(r, kStageParse), Verdict::Pass);
   EXPECT_EQ(stage_verdict(r, kStageValidate), Verdict::Pass);
   EXPECT_EQ(stage_verdict(r, kStageRoundTrip), Verdict::Pass);
   EXPECT_EQ(stage_verdict(r, kStageSpirv), Verdict::Pass);
-  CaseResult g = run_listing(
-      "g", "g.psh", "ps_3_0\ndcl_texcoord0 v0\nsetp_gt p0, v0, c0\n(p0) texkill v0\nmov oC0, v0\n",
-      no_device());
+  CaseResult g = run_listing("g", "g.psh",
+                             "ps_3_0\ndcl_texcoord0 v0\ndcl_texcoord1 v1\ndefi i0, 2, 0, 1, 0\n"
+                             "mov r0, c0\nloop aL, i0\nadd r0, r0, v0[aL]\nendloop\nmov oC0, r0\n",
+                             no_device());
   EXPECT_EQ(stage_verdict(g, kStageValidate), Verdict::Pass);
   EXPECT_EQ(stage_verdict(g, kStageSpirv), Verdict::Unsupported);
   EXPECT_EQ(g.verdict, Verdict::Unsupported);

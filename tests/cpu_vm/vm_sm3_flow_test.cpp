@@ -165,3 +165,26 @@ TEST(VmSm3Flow, OutputsLinkBySemantic) {
   EXPECT_VEC4(o.color[0], 0.5f, 0.5f, 0.5f, 1);
   EXPECT_EQ(o.tex_written, 1u << 5);
 }
+
+TEST(VmSm3Flow, PredicatedTexkillTestsTheComponentsWhosePredicateHolds) {
+  // r0 = (−1, 2, −3, 4); p0 = c1 > 0 per component. (p0) texkill r0 tests component i only
+  // where p0.i holds (NUMERICS.md F3): it kills when p0.x or p0.z holds, not for p0 = (f, t,
+  // f, t); (!p0.y) texkill r0 tests all four when p0.y fails, none when it holds.
+  const std::string kill = "ps_3_0\nmov r0, c0\nsetp_gt p0, c1, c2\n(p0) texkill r0\nmov oC0, r0\n";
+  const std::string not_y = "ps_3_0\nmov r0, c0\nsetp_gt p0, c1, c2\n(!p0.y) texkill r0\n"
+                            "mov oC0, r0\n";
+  const Vec4 r0{-1, 2, -3, 4}, zero{0, 0, 0, 0};
+  struct Case {
+    const std::string* text;
+    Vec4 p; // c1: > 0 sets p0's component
+    bool discarded;
+  };
+  const Case cases[] = {{&kill, {1, 0, 0, 0}, true},  {&kill, {0, 0, 1, 0}, true},
+                        {&kill, {0, 1, 0, 1}, false}, {&kill, {0, 0, 0, 0}, false},
+                        {&not_y, {0, 0, 0, 0}, true}, {&not_y, {1, 1, 1, 1}, false}};
+  for (const Case& c : cases) {
+    ShaderVM vm(parse(*c.text), {});
+    EXPECT_EQ(run_ps(vm, {}, nullptr, bank({r0, c.p, zero})).discarded, c.discarded)
+        << *c.text << " p " << c.p[0] << c.p[1] << c.p[2] << c.p[3];
+  }
+}

@@ -122,7 +122,7 @@ TEST(LaterProfiles, CapsPresets) {
 
 TEST(LaterProfiles, WhatDoesNotRunYetIsRefusedWithAPosition) {
   // 2.x and 3.0 run on both devices (mov, setp, ...), except what each error names: here
-  // a predicated texkill and fog0 read by a pixel program (a vertex output only: NUMERICS.md F6).
+  // a predicated break and psize0 read by a pixel program (a vertex output only: NUMERICS.md F6).
   Program p;
   p.profile = Profile::ps_3_0;
   p.version_loc = {1, 1, 1, 6};
@@ -142,19 +142,22 @@ TEST(LaterProfiles, WhatDoesNotRunYetIsRefusedWithAPosition) {
     EXPECT_TRUE(check_executable(p, "SPIR-V").ok());
     p.code.pop_back();
   }
-  Instruction kill;
+  Instruction kill; // a predicated texkill runs (NUMERICS.md F3); a predicated break does not
   kill.op = Opcode::TexKill;
   kill.pred.emplace();
   kill.loc = {1, 4, 2, 5};
   p.code.push_back(kill);
+  EXPECT_TRUE(check_executable(p, "SPIR-V").ok());
+  p.code.back().op = Opcode::Break;
   Status s = check_executable(p, "SPIR-V");
   ASSERT_FALSE(s.ok());
   ASSERT_EQ(s.diagnostics().size(), 1u);
   EXPECT_EQ(s.diagnostics()[0].loc.line, 4u);
   EXPECT_EQ(s.diagnostics()[0].loc.col, 2u);
   EXPECT_NE(
-      s.diagnostics()[0].message.find("not supported yet by SPIR-V: predicated texkill in ps_3_0"),
-      std::string::npos);
+      s.diagnostics()[0].message.find("not supported yet by SPIR-V: predicated break in ps_3_0"),
+      std::string::npos)
+      << s.diagnostics()[0].message;
   p.code.pop_back();
   Declaration fog; // fog0 runs (an extra semantic, NUMERICS.md F6); psize0 is vertex-only
   fog.reg.file = RegFile::Input;

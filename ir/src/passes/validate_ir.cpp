@@ -108,8 +108,7 @@ const char* not_yet(const Instruction& ins, ShaderStage stage) {
     break;
   default: break;
   }
-  if (ins.pred && (op_info(ins.op).cls == OpClass::Flow || ins.op == Opcode::TexKill))
-    return "a predicate on flow control or texkill";
+  if (ins.pred && op_info(ins.op).cls == OpClass::Flow) return "a predicate on flow control";
   return nullptr;
 }
 

@@ -73,12 +73,15 @@ template <Denormals D> void ex_texcoord(const Step& s, Invocation& inv) {
 }
 
 // texkill: ps_1_1–1_3 test TC(m).xyz; ps_1_4 the register's xyz; ps_2_0 all four.
+// A predicated texkill ("(p0) texkill r0") tests component i only where p0's component i
+// holds, as a predicated write writes it (NUMERICS.md F3): exec_predicated narrows the mask,
+// which is 0xF otherwise.
 template <Denormals D> void ex_texkill(const Step& s, Invocation& inv) {
   const Prepared& p = *inv.prog;
   Vec4 v = p.ps11_13 ? tc(inv, s.aux) : fetch(s.src[0], inv);
   int n = p.ps1x ? 3 : 4;
   for (int i = 0; i < n; ++i)
-    if (num::dz<D>(v[i]) < 0.0f) return discard(inv);
+    if ((s.dst.mask >> i & 1) && num::dz<D>(v[i]) < 0.0f) return discard(inv);
 }
 
 // texbem/texbeml: offset TC(m) by stage m's 2×2 matrix times t(n).rg, then sample.
