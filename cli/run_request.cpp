@@ -89,6 +89,8 @@ ir::Result<pass::RunRequest> build_request(const RunFlags& f) {
   if (error) return std::move(*error);
   r.conventions.ps1x_max_value = *ps1x_max;
   r.threads = f.threads;
+  r.srgb_texture = f.srgb_texture;
+  r.srgb_write = f.srgb_write;
   r.texcoords_from_quad = true; // a t# --input does not set is the quad's uv, as in glow
   return r;
 }

@@ -26,6 +26,7 @@ struct RunFlags {
   FrontEndOptions fe;      // -D, -I, --profile, --strict, --skip-validation, --json
   // --output1..--output3: the images of oC1..oC3 (D3D9 MRT); empty: not asked for.
   std::array<std::string, 3> more_outputs;
+  bool srgb_texture = false, srgb_write = false; // --srgb-texture, --srgb-write
 };
 
 // The request, or the first flag in error (rule "usage", exit 2), in the order the flags are

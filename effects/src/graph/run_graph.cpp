@@ -75,6 +75,7 @@ ir::Result<pass::Pass> make_pass(const PassDesc& desc, const ir::Conventions& co
   }
   pass.blend = desc.blend;
   pass.front_face = desc.front_face;
+  pass.srgb_write = desc.srgb_write;
   pass.conventions = conventions;
   pass.pixel_spirv = desc.glsl_spirv;
   return pass;

@@ -4,8 +4,11 @@
 #include "tierlift/effects/graph/single_pass.h"
 
 #include <map>
+#include <utility>
 
 #include <fmt/format.h>
+
+#include "tierlift/pass/srgb.h"
 
 namespace tierlift::effects {
 namespace {
@@ -59,13 +62,18 @@ ir::Result<EffectGraph> single_pass_graph(const pass::Pass& pass, uint32_t width
   desc.scissor = pass.scissor;
   desc.blend = pass.blend;
   desc.front_face = pass.front_face;
+  desc.srgb_write = pass.srgb_write;
   // One input texture per image, however many stages bind it (Listing 4 binds one four
   // times): one upload on Vulkan, one copy on the CPU.
-  std::map<const img::Image*, std::string> names;
+  // An sRGB stage (SRGBTEXTURE) gets its image decoded once here, before filtering, as every
+  // device would decode it (pass/srgb.h): one more input texture, read as a plain one.
+  std::map<std::pair<const img::Image*, bool>, std::string> names;
   for (uint32_t s = 0; s < pass::kMaxSamplers; ++s) {
-    const pass::TextureBinding& b = pass.textures[s];
+    const pass::TextureBinding& b = pass::srgb_resolved(pass.textures[s]);
     if (!b.image) continue;
-    auto [it, added] = names.emplace(b.image.get(), fmt::format("s{}", s));
+    auto [it, added] =
+        names.emplace(std::pair{pass.textures[s].image.get(), pass.textures[s].sampler.srgb},
+                      fmt::format("s{}", s));
     if (added) {
       TextureDesc t;
       t.name = it->second;

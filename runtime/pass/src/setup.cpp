@@ -71,6 +71,7 @@ bool build_constants(const ir::Program& program, const std::vector<ConstSetting>
 void set_sampler(const RunRequest& req, TextureBinding& b) {
   b.sampler.filter = req.filter;
   b.sampler.address_u = b.sampler.address_v = b.sampler.address_w = req.address;
+  b.sampler.srgb = req.srgb_texture;
 }
 
 bool bind_textures(const RunRequest& req, Pass& pass, RunDiagnostics& diags) {
@@ -288,6 +289,7 @@ std::optional<Pass> prepare(const RunRequest& req, RunDiagnostics& diags) {
   pass.conventions = req.conventions;
   pass.front_face = req.front_face;
   pass.color_targets = req.color_targets;
+  pass.srgb_write = req.srgb_write;
   if (req.vs) ok = build_constants(*req.vs, req.constants, pass.vs_constants, diags.vs) && ok;
   if (req.ps) ok = build_constants(*req.ps, req.constants, pass.ps_constants, diags.ps) && ok;
   ok = bind_textures(req, pass, diags) && ok;

@@ -127,6 +127,9 @@ struct PassDesc {
 
   // This pass as frame `frame` (from 0) runs it: the per-frame constants put in place.
   PassDesc at_frame(unsigned frame) const;
+
+  // D3DRS_SRGBWRITEENABLE (pass::Pass::srgb_write): colour encoded to sRGB on RGBA8 targets.
+  bool srgb_write = false;
 };
 
 // A pass named `name` drawing `vs` + `ps` into `target`, everything else at its default:
