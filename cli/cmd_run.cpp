@@ -466,6 +466,12 @@ void register_run_command(CLI::App& app) {
   sub->add_option("--filter", f->filter, "point | linear (all samplers)")->capture_default_str();
   sub->add_option("--address", f->address, "clamp | wrap | mirror | border (all samplers)")
       ->capture_default_str();
+  sub->add_flag("--srgb-texture", f->srgb_texture,
+                "SRGBTEXTURE on every sampler: RGBA8 textures' colour decoded from sRGB to "
+                "linear before filtering");
+  sub->add_flag("--srgb-write", f->srgb_write,
+                "SRGBWRITEENABLE: colour encoded from linear to sRGB before blending and the "
+                "store, on an rgba8 target");
   sub->add_option("--pixel-center", f->pixel_center, "d3d9 | modern")->capture_default_str();
   sub->add_option("--front-face", f->front_face,
                   "cw | ccw: the on-screen winding ps_3_0's vFace calls front (+1); the "

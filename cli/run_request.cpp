@@ -107,6 +107,8 @@ ir::Result<pass::RunRequest> build_request(const RunFlags& f) {
     return usage_error(fmt::format("--lod-bias {}: expected a finite number", f.lod_bias));
   r.mip = {*mf, f.lod_bias, static_cast<uint32_t>(f.max_mip_level)};
   r.threads = f.threads;
+  r.srgb_texture = f.srgb_texture;
+  r.srgb_write = f.srgb_write;
   r.texcoords_from_quad = true; // a t# --input does not set is the quad's uv, as in glow
   return r;
 }

@@ -31,6 +31,7 @@ struct RunFlags {
   std::string mips = "1", mip_filter = "none";
   float lod_bias = 0.0f;
   int max_mip_level = 0;
+  bool srgb_texture = false, srgb_write = false; // --srgb-texture, --srgb-write
 };
 
 // The request, or the first flag in error (rule "usage", exit 2), in the order the flags are

@@ -105,7 +105,8 @@ void Emitter::emit_entry() {
   } else {
     if (ir::is_ps1x(prog.profile)) {
       const Id var = output_var(make_iv(InterfaceKind::Output, RegFile::Temp, 0, 0, 4), t_vec4);
-      b.op_void(Op::OpStore, {var, load(RegFile::Temp, 0)});
+      const Id r0 = load(RegFile::Temp, 0);
+      b.op_void(Op::OpStore, {var, opt.srgb_write[0] ? srgb_encode(r0) : r0});
     } else {
       std::vector<uint32_t> colors;
       for (const auto& [key, var] : regs_)
@@ -113,7 +114,9 @@ void Emitter::emit_entry() {
       for (uint32_t n : colors) {
         const Id var =
             output_var(make_iv(InterfaceKind::Output, RegFile::ColorOut, n, n, 4), t_vec4);
-        b.op_void(Op::OpStore, {var, load(RegFile::ColorOut, n)});
+        const Id color = load(RegFile::ColorOut, n);
+        const bool srgb = n < opt.srgb_write.size() && opt.srgb_write[n];
+        b.op_void(Op::OpStore, {var, srgb ? srgb_encode(color) : color});
       }
     }
     if (writes_depth_) {

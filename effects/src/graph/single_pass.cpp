@@ -4,8 +4,11 @@
 #include "tierlift/effects/graph/single_pass.h"
 
 #include <map>
+#include <utility>
 
 #include <fmt/format.h>
+
+#include "tierlift/pass/srgb.h"
 
 namespace tierlift::effects {
 namespace {
@@ -41,11 +44,16 @@ ir::Result<EffectGraph> single_pass_graph(pass::Pass pass, uint32_t width, uint3
   // One input texture per image, however many stages bind it (Listing 4 binds one four
   // times): one upload on Vulkan, one copy on the CPU. The stage keeps its state in the draw;
   // its image leaves it for the graph, and the device binds it back by name.
-  std::map<const img::Image*, std::string> names;
+  // An sRGB stage (SRGBTEXTURE) gets its image decoded once here, before filtering, as every
+  // device would decode it (pass/srgb.h): one more input texture, read as a plain one.
+  std::map<std::pair<const img::Image*, bool>, std::string> names;
   for (uint32_t s = 0; s < pass::kMaxSamplers; ++s) {
-    std::shared_ptr<const img::Image> image = std::move(pass.textures[s].image);
-    if (!image) continue;
-    auto [it, added] = names.emplace(image.get(), fmt::format("s{}", s));
+    pass::TextureBinding& b = pass.textures[s];
+    if (!b.image) continue;
+    auto [it, added] =
+        names.emplace(std::pair{b.image.get(), b.sampler.srgb}, fmt::format("s{}", s));
+    if (b.sampler.srgb) b = pass::srgb_resolved(b);
+    std::shared_ptr<const img::Image> image = std::move(b.image);
     if (added) {
       TextureDesc t;
       t.name = it->second;

@@ -73,6 +73,7 @@ void set_sampler(const RunRequest& req, TextureBinding& b) {
   b.sampler.filter = req.filter;
   b.sampler.address_u = b.sampler.address_v = b.sampler.address_w = req.address;
   b.sampler.mip = req.mip;
+  b.sampler.srgb = req.srgb_texture;
 }
 
 // A 2D texture's levels: `levels` as given ("mips:"), or generated from its one image when
@@ -309,6 +310,7 @@ std::optional<Pass> prepare(const RunRequest& req, RunDiagnostics& diags) {
   pass.conventions = req.conventions;
   pass.front_face = req.front_face;
   pass.color_targets = req.color_targets;
+  pass.srgb_write = req.srgb_write;
   if (req.vs) ok = build_constants(*req.vs, req.constants, pass.vs_constants, diags.vs) && ok;
   if (req.ps) ok = build_constants(*req.ps, req.constants, pass.ps_constants, diags.ps) && ok;
   ok = bind_textures(req, pass, diags) && ok;

@@ -121,6 +121,11 @@ struct CodegenOptions {
   std::optional<TracePixel> trace;
   // Entry point name.
   std::string entry_point = "main";
+  // Pixel stage: per colour output location (oC0..oC3; ps_1_x's r0 is location 0), encode R,
+  // G, B from linear to sRGB before the output is written (D3DRS_SRGBWRITEENABLE on an RGBA8
+  // target; NUMERICS.md S3): the byte rounding::srgb_encode_byte finds by the same eight-step
+  // binary search over rounding::srgb_encode_thresholds, times rounding::kSrgbByteScale.
+  std::array<bool, 4> srgb_write{};
 };
 
 enum class InterfaceKind {

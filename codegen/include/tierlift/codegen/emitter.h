@@ -235,6 +235,11 @@ public:
   Id misc_input(uint32_t index); // vPos, vFace
   Id p0_var_ = 0, frag_coord_var_ = 0, front_facing_var_ = 0;
 
+  // D3DRS_SRGBWRITEENABLE (emit_srgb.cpp): a colour output's R, G, B encoded to sRGB
+  // (CodegenOptions::srgb_write), from a Private table of the thresholds made once.
+  Id srgb_encode(Id color_vec4);
+  Id srgb_table_ = 0;
+
   // Interface and resources (emit_module.cpp).
   std::map<std::pair<ir::RegFile, uint32_t>, Id> regs_, inputs_;
   std::map<uint32_t, Id> samplers_;

@@ -36,6 +36,7 @@ std::optional<std::string> draw_key(const pass::Pass& pass, const DrawTextures& 
     k.put(b.sampler.mip.lod_bias);
     k.put(b.sampler.mip.max_mip_level);
     k.put(b.levels.size());
+    k.put(b.sampler.srgb);
     for (float m : b.stage.bumpenv_mat) k.put(m);
     k.put(b.stage.bumpenv_lscale);
     k.put(b.stage.bumpenv_loffset);
@@ -58,6 +59,7 @@ std::optional<std::string> draw_key(const pass::Pass& pass, const DrawTextures& 
   k.put(pass.viewport.max_z);
   k.put(pass.blend);
   k.put(pass.front_face);
+  k.put(pass.srgb_write);
   k.put(pass.scissor.has_value());
   if (pass.scissor) {
     k.put(pass.scissor->x0);

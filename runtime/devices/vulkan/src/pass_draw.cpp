@@ -227,6 +227,11 @@ ir::Status compile_programs(const Device::Impl& d, const pass::Pass& pass,
     co.stage_fetch_unorm8[s] = fetches_in_place(d, textures.stages[s], pass.textures[s].sampler);
     co.stage_point_clamped[s] = pass::point_clamped(pass.textures[s].sampler);
   }
+  // D3DRS_SRGBWRITEENABLE: the module encodes the outputs of RGBA8 targets (NUMERICS.md S3).
+  for (uint32_t i = 0; i < pass.color_targets && i < co.srgb_write.size(); ++i) {
+    const Resident* t = i == 0 ? textures.target : textures.more_targets[i - 1];
+    co.srgb_write[i] = pass.srgb_write && t && t->format == img::Format::RGBA8;
+  }
   // The device's pass-through programs are new objects each time: keyed as null.
   const std::optional<std::string> key =
       textures.reuse && !pass.pixel_spirv

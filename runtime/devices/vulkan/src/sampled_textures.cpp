@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "tierlift/pass/srgb.h"
+
 namespace tierlift::vulkan {
 namespace {
 
@@ -121,20 +123,29 @@ ir::Status bind_sampled(Device::Impl& d, const pass::Pass& pass, const DrawTextu
     if (own)
       return draw_failure(fmt::format("s{}: a pass cannot sample its own render target", si.stage));
     ir::Status err = ir::ok_status();
+    // An sRGB stage reads its texels decoded before filtering (NUMERICS.md S1, S2), which
+    // this device does on the host (pass/srgb.h): a texture that lives on the device only
+    // (one an earlier pass rendered) has no host image to decode.
+    const pass::TextureBinding binding = pass::srgb_resolved(pass.textures[s]);
+    if (r && pass.textures[s].sampler.srgb)
+      return draw_failure(fmt::format("s{}: an sRGB read (SRGBTEXTURE) of a texture the device "
+                                      "rendered is not supported: only images given to the "
+                                      "pass are decoded",
+                                      si.stage));
     if (si.type == ir::SamplerType::Cube || si.type == ir::SamplerType::Volume) {
       // The binding's layers, uploaded with the draw (a resident texture is 2D: in an effect
       // graph it holds the first layer only, effects::TextureBind).
-      const bool bound = r || pass.textures[s].image || !pass.textures[s].layers.empty();
+      const bool bound = r || binding.image || !binding.layers.empty();
       r = nullptr;
-      err = host_layered_texture(d, si, pass.textures[s], bound, out, r);
-    } else if (pass.textures[s].shape != pass::TextureShape::Tex2D) {
+      err = host_layered_texture(d, si, binding, bound, out, r);
+    } else if (binding.shape != pass::TextureShape::Tex2D) {
       err = draw_failure(
           fmt::format("s{}: a 2D sampler cannot read a cube or volume texture", si.stage));
     } else if (pass.textures[s].levels.size() > 1) {
       r = nullptr; // the binding's levels, uploaded with the draw
       err = host_mip_texture(d, pass.textures[s], out, r);
     } else if (!r) {
-      const img::Image& im = pass.textures[s].image ? *pass.textures[s].image : unbound;
+      const img::Image& im = binding.image ? *binding.image : unbound;
       err = host_texture(d, si.stage, im, out, r);
     }
     out.fetched[s] = si.fetch_unorm8;

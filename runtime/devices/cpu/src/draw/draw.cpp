@@ -9,7 +9,9 @@
 #include <thread>
 
 #include "raster.h"
+#include "tierlift/pass/srgb.h"
 #include "tierlift/pass/stencil.h"
+#include "tierlift/rounding/rounding.h"
 #include "worker_pool.h"
 
 namespace tierlift::cpu {
@@ -27,9 +29,13 @@ struct PassPrograms {
   std::optional<ShaderVM> vs, ps;
 };
 
-void store_pixel(const RasterJob& job, img::Image& target, const Vec4& color, int64_t x,
+void store_pixel(const RasterJob& job, img::Image& target, const Vec4& shaded, int64_t x,
                  int64_t y) {
   float* px = target.at(static_cast<uint32_t>(x), static_cast<uint32_t>(y));
+  // D3DRS_SRGBWRITEENABLE: R, G, B encoded before the blender (NUMERICS.md S3).
+  Vec4 color = shaded;
+  if (job.pass.srgb_write && target.format == img::Format::RGBA8)
+    for (int c = 0; c < 3; ++c) color[c] = rounding::srgb_encoded(color[c]);
   Vec4 stored = blend_and_store(job.pass.blend, target.format, color, {px[0], px[1], px[2], px[3]},
                                 job.pass.conventions.rounding);
   std::copy(stored.begin(), stored.end(), px);
@@ -167,13 +173,21 @@ ir::Result<DrawStats> draw(const Pass& pass, img::Image& target, unsigned thread
 }
 
 ir::Result<DrawStats> draw(const Pass& pass, const DrawTargets& targets, unsigned threads) {
+  // sRGB stages read their texels decoded before filtering (NUMERICS.md S1, S2): the pass
+  // drawn with those images decoded once.
+  if (pass::reads_srgb(pass)) {
+    Pass decoded = pass;
+    for (pass::TextureBinding& b : decoded.textures) b = pass::srgb_resolved(b);
+    return draw(decoded, targets, threads);
+  }
   DrawStats stats;
   if (std::string why = targets.color[0] ? check_targets(pass, targets) : "no render target";
       !why.empty())
     return draw_failure(std::move(why));
   img::Image& target = *targets.color[0];
-  // The block executor stores oC0 into one target and knows no stencil.
-  const bool per_pixel_only = pass.color_targets > 1 || pass.depth_stencil.stencil_test;
+  // The block executor stores oC0 into one target and knows no stencil and no sRGB write.
+  const bool per_pixel_only =
+      pass.color_targets > 1 || pass.depth_stencil.stencil_test || pass.srgb_write;
   Viewport vp = pass.viewport;
   if (vp.width == 0) vp.width = target.width;
   if (vp.height == 0) vp.height = target.height;

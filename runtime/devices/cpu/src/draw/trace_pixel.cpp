@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "raster.h"
+#include "tierlift/pass/srgb.h"
 
 namespace tierlift::cpu {
 namespace {
@@ -87,7 +88,9 @@ ir::Result<PixelTrace> trace_pixel(const Pass& pass, uint32_t width, uint32_t he
     detail::set_position_and_face(in, *last, qx, qy);
     return in;
   };
-  const BoundTextures textures(pass.textures, pass.conventions.subtexel_bits,
+  std::array<pass::TextureBinding, pass::kMaxSamplers> bindings = pass.textures;
+  for (pass::TextureBinding& b : bindings) b = pass::srgb_resolved(b); // as draw reads them
+  const BoundTextures textures(bindings, pass.conventions.subtexel_bits,
                                pass.conventions.rounding == ir::Rounding::Llvmpipe);
   out.covered = true;
   if (!ps->needs_quad()) {

@@ -43,6 +43,9 @@ struct SamplerState {
   Vec4 border_color{0, 0, 0, 0};
   // MIPFILTER, MIPMAPLODBIAS, MAXMIPLEVEL (mip_lod.h): which levels of a mip chain a read takes.
   MipState mip;
+  // D3DSAMP_SRGBTEXTURE: an RGBA8 texture's R, G, B are decoded from sRGB to linear before
+  // filtering (pass/srgb.h; NUMERICS.md S1, S2). Off by default, as in D3D9.
+  bool srgb = false;
 };
 
 // POINT filtering with CLAMP addressing on both axes: each read takes one texel, and never
@@ -202,6 +205,9 @@ struct Pass {
   // run SPIR-V refuses the pass (check_supported); it never draws the twin in its place
   // silently — the effect layer decides that (effects::CpuPassDevice, documented there).
   std::shared_ptr<const std::vector<uint32_t>> pixel_spirv;
+  // D3DRS_SRGBWRITEENABLE: each colour output is encoded from linear to sRGB before blending
+  // and the store, on RGBA8 targets (NUMERICS.md S3); float targets take it unchanged.
+  bool srgb_write = false;
 };
 
 // What a draw took, for the report (effects::PassDevice::draw returns it); counters a

@@ -128,6 +128,8 @@ struct RunRequest {
   unsigned threads = 0; // CPU device: 0 = every core
   // Render targets oC0..oC(n−1) (D3D9 MRT, 1..4), all of the request's size and format.
   uint32_t color_targets = 1;
+  // D3DSAMP_SRGBTEXTURE on every sampler stage, D3DRS_SRGBWRITEENABLE (NUMERICS.md, sRGB).
+  bool srgb_texture = false, srgb_write = false;
 };
 
 // Problems, kept apart by where their positions point: into the vertex listing's

@@ -23,6 +23,8 @@
 //   sin, cos (sincos)         Cody-Waite reduction by π/4 and a        sin/cos in double,
 //                             degree 7/8 polynomial in float with      rounded once
 //                             FMAs (sin_llvmpipe, cos_llvmpipe)        (sin_exact, cos_exact)
+//   sRGB decode / encode      the exact rule on both devices: neither  IEC 61966-2-1 in double
+//                             uses a Vulkan sRGB format (srgb_*)       (srgb_decode_levels, …)
 //
 // The analytic model (runtime/devices/analytic) keeps its own copies on purpose: an oracle
 // that shared this code with the devices would agree with them by construction.
@@ -247,5 +249,28 @@ int32_t nearest_level_from_rho_llvmpipe(float rho);
 
 // The mip blend (MIPFILTER LINEAR) is rounding::lerp(fraction, fine, coarse) above, the same
 // step as the bilinear lerp, after the fine level's and the coarse level's bilinear reads.
+// ---- sRGB reads and writes (NUMERICS.md, sRGB) ----------------------------------------
+
+// IEC 61966-2-1's transfer functions in double: decode c ≤ 0.04045 → c/12.92, else
+// ((c + 0.055)/1.055)^2.4; encode l ≤ 0.0031308 → 12.92·l, else 1.055·l^(1/2.4) − 0.055.
+double srgb_to_linear_exact(double c);
+double linear_to_srgb_exact(double l);
+
+// D3DSAMP_SRGBTEXTURE: the float byte k of an 8-bit texel decodes to, srgb_to_linear_exact(k/255)
+// rounded once to float. Both devices read an sRGB stage through this table (before
+// filtering); neither uses a driver's own sRGB formats, so the rule is one for every device.
+const std::array<float, 256>& srgb_decode_levels();
+
+// D3DRS_SRGBWRITEENABLE: the byte a linear value encodes to, the nearest byte to
+// 255·linear_to_srgb_exact(l), found as the count of thresholds at or below l: entry k (1..255)
+// is the least float whose encode rounds to k or more (entry 0 is −inf and never compared).
+// NaN and l below entry 1 give 0, l ≥ entry 255 (1 included) gives 255. The CPU device and the
+// SPIR-V both take it by the same eight-step binary search over the table (srgb_encode_byte).
+const std::array<float, 256>& srgb_encode_thresholds();
+uint8_t srgb_encode_byte(float linear);
+// The colour the blender and the RGBA8 store then take: fl32(byte · kSrgbByteScale), which both
+// store rules (unorm8_llvmpipe, unorm8_nearest) turn back into the byte.
+inline constexpr float kSrgbByteScale = 1.0f / 255.0f;
+float srgb_encoded(float linear);
 
 } // namespace tierlift::rounding
