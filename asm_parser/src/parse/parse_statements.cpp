@@ -273,14 +273,18 @@ bool Parser::def_comma(std::optional<ir::SourceLoc>& missing) {
   return true;
 }
 
+// An optional leading "-" or "+" of a def value, taken; whether it was "-".
+bool Parser::take_sign() {
+  if (!at_punct("-") && !at_punct("+")) return false;
+  const bool neg = cur().text == "-";
+  advance();
+  return neg;
+}
+
 // [+|-] number | inf | nan, read exactly as strtof reads it. "0x…" is an extension of ours:
 // the raw bit pattern, so that the printer can write any NaN back losslessly.
 bool Parser::float_value(uint32_t& raw) {
-  bool neg = false;
-  if (at_punct("-") || at_punct("+")) {
-    neg = cur().text == "-";
-    advance();
-  }
+  const bool neg = take_sign();
   const Token& t = cur();
   std::string text = lower(t.text);
   if (t.kind == TokKind::Ident && (text == "inf" || text == "nan")) {
@@ -314,11 +318,7 @@ bool Parser::float_value(uint32_t& raw) {
 }
 
 bool Parser::int_value(uint32_t& raw) {
-  bool neg = false;
-  if (at_punct("-") || at_punct("+")) {
-    neg = cur().text == "-";
-    advance();
-  }
+  const bool neg = take_sign();
   const Token& t = cur();
   std::string text = lower(t.text);
   int base = 10;

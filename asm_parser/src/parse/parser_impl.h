@@ -74,6 +74,7 @@ private:
   bool instr_mods(const Token& mn, std::string_view mods, ir::InstrMods& out);
   bool declaration(const Token& mn, std::string_view parts);
   bool definition(const Token& mn, ir::Opcode op);
+  bool take_sign();
   bool float_value(uint32_t& raw);
   bool int_value(uint32_t& raw);
   bool bool_value(uint32_t& raw);

@@ -87,11 +87,36 @@ EffectParams small_params(uint32_t w, uint32_t h, unsigned downsample, img::Form
   return p;
 }
 
+StressRow stress_row(std::string id, std::string regime, std::string format, std::string quantity) {
+  StressRow row;
+  row.id = std::move(id);
+  row.regime = std::move(regime);
+  row.format = std::move(format);
+  row.quantity = std::move(quantity);
+  return row;
+}
+
 std::string first_error(const std::vector<WayImages>& ways) {
   if (ways.empty()) return "no way could run (no device)";
   for (const WayImages& w : ways)
     if (!w.error.empty()) return fmt::format("{}: {}", w.way, w.error);
   return {};
+}
+
+void measure_masks(StressRow& row, const std::vector<WayImages>& ways, std::string_view texture,
+                   const std::function<bool(float)>& hit) {
+  row.error = first_error(ways);
+  for (const WayImages& wi : ways) {
+    if (!wi.error.empty()) continue;
+    const img::Image& im = wi.images.at(std::string(texture));
+    StressMeasure m{wi.way, 0, {}};
+    for (size_t i = 0; i < im.rgba.size(); i += 4) {
+      const bool is_hit = hit(im.rgba[i]);
+      m.mask.push_back(is_hit ? 1 : 0);
+      m.value += is_hit;
+    }
+    row.measured.push_back(std::move(m));
+  }
 }
 
 double texel_red(const WayImages& w, std::string_view texture, uint32_t x, uint32_t y) {

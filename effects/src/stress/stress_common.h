@@ -36,8 +36,17 @@ img::Image uniform_scene(uint32_t w, uint32_t h, float v, float a);
 EffectParams small_params(uint32_t w, uint32_t h, unsigned downsample, img::Format format,
                           double sigma, unsigned max_taps = 0);
 
+// A row not yet measured: what it is (its id, regime, format and quantity in words); each
+// case sets its expected value, bound and measures after.
+StressRow stress_row(std::string id, std::string regime, std::string format, std::string quantity);
+
 // The first error among the ways ("" when none), for StressRow::error.
 std::string first_error(const std::vector<WayImages>& ways);
+
+// Sets row.error to the first error among the ways and measures, for each way that ran, the
+// mask of the texels of `texture` whose red channel `hit` holds (its value: how many).
+void measure_masks(StressRow& row, const std::vector<WayImages>& ways, std::string_view texture,
+                   const std::function<bool(float)>& hit);
 
 // Texel (x, y)'s red channel of `texture` in a way's images (NaN when missing).
 double texel_red(const WayImages& w, std::string_view texture, uint32_t x, uint32_t y);

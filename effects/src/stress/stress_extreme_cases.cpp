@@ -37,25 +37,12 @@ std::vector<StressRow> non_finite(const StressOptions& o) {
     auto is_kind = [&](float v) {
       return k == 0 ? std::isnan(v) : k == 1 ? v == kinds[1] : v == kinds[2];
     };
-    StressRow row;
-    row.id = fmt::format("non-finite.{}", names[k]);
-    row.regime = "non-finite";
-    row.format = "rgba32f";
-    row.quantity = fmt::format("glow texels holding {} (one {} source texel)", names[k], names[k]);
+    StressRow row =
+        stress_row(fmt::format("non-finite.{}", names[k]), "non-finite", "rgba32f",
+                   fmt::format("glow texels holding {} (one {} source texel)", names[k], names[k]));
     row.expected = 49;
     row.bound = "(2R+1)² = 7² with R = 3: the kernel's footprint (0 × special = 0)";
-    row.error = first_error(ways);
-    for (const WayImages& wi : ways) {
-      if (!wi.error.empty()) continue;
-      const img::Image& g = wi.images.at(std::string(kGlowTexture));
-      StressMeasure m{wi.way, 0, {}};
-      for (size_t i = 0; i < g.rgba.size(); i += 4) {
-        const bool hit = is_kind(g.rgba[i]);
-        m.mask.push_back(hit ? 1 : 0);
-        m.value += hit;
-      }
-      row.measured.push_back(std::move(m));
-    }
+    measure_masks(row, ways, kGlowTexture, is_kind);
     rows.push_back(std::move(row));
   }
   return rows;
@@ -74,26 +61,13 @@ StressRow infinite_composite(const StressOptions& o) {
   img::Image scene = uniform_scene(n, n, 0, 1);
   float* t = scene.at(8, 8);
   t[0] = t[1] = t[2] = std::numeric_limits<float>::infinity();
-  StressRow row;
-  row.id = "non-finite.composite";
-  row.regime = "non-finite";
-  row.format = "rgba32f";
-  row.quantity = "final texels holding nan (one +inf scene texel, through the composite)";
+  StressRow row =
+      stress_row("non-finite.composite", "non-finite", "rgba32f",
+                 "final texels holding nan (one +inf scene texel, through the composite)");
   row.expected = 64;
   row.bound = "(2R+2)² = 8²: the filter unit's lerp meets +inf at weight 0 (rule 36)";
   const std::vector<WayImages> ways = run_on_ways(plan, scene, o);
-  row.error = first_error(ways);
-  for (const WayImages& wi : ways) {
-    if (!wi.error.empty()) continue;
-    const img::Image& f = wi.images.at(std::string(kFinalTexture));
-    StressMeasure m{wi.way, 0, {}};
-    for (size_t i = 0; i < f.rgba.size(); i += 4) {
-      const bool hit = std::isnan(f.rgba[i]);
-      m.mask.push_back(hit ? 1 : 0);
-      m.value += hit;
-    }
-    row.measured.push_back(std::move(m));
-  }
+  measure_masks(row, ways, kFinalTexture, [](float v) { return std::isnan(v); });
   return row;
 }
 
@@ -111,11 +85,9 @@ StressRow denormal(const StressOptions& o, Format f) {
   float* t = scene.at(1, 1);
   t[0] = t[1] = t[2] = v;
   t[3] = 1;
-  StressRow row;
-  row.id = fmt::format("denormal.{}", img::format_name(f));
-  row.regime = "denormal";
-  row.format = std::string(img::format_name(f));
-  row.quantity = fmt::format("glow of a {:g} source (one tap of weight 1)", v);
+  StressRow row = stress_row(fmt::format("denormal.{}", img::format_name(f)), "denormal",
+                             std::string(img::format_name(f)),
+                             fmt::format("glow of a {:g} source (one tap of weight 1)", v));
   row.has_ideal = true;
   row.ideal = v;
   // The half store of 1e-5: round(1e-5 · 2^24) · 2^-24 = 168 · 2^-24.

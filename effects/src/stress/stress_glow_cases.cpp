@@ -42,13 +42,11 @@ std::vector<double> gauss_taps(double sigma, int r) {
 // the blur_v store w0 times that (every other tap reads 0 there).
 std::vector<StressRow> hdr(Format f, double v) {
   const double w0 = gauss_taps(1.0, 3)[3];
-  StressRow row;
-  row.id = v > 65504 ? fmt_name(f) == "rgba16f" ? std::string("hdr.overflow.rgba16f")
-                                                : fmt::format("hdr.{:g}.{}", v, fmt_name(f))
-                     : fmt::format("hdr.6e4.{}", fmt_name(f));
-  row.regime = "hdr";
-  row.format = fmt_name(f);
-  row.quantity = fmt::format("glow at the source (source {:g})", v);
+  std::string id = v > 65504 ? fmt_name(f) == "rgba16f" ? std::string("hdr.overflow.rgba16f")
+                                                        : fmt::format("hdr.{:g}.{}", v, fmt_name(f))
+                             : fmt::format("hdr.6e4.{}", fmt_name(f));
+  StressRow row = stress_row(std::move(id), "hdr", fmt_name(f),
+                             fmt::format("glow at the source (source {:g})", v));
   row.has_ideal = true;
   row.ideal = v * w0 * w0;
   if (f == Format::RGBA16F && v > 65504) {
@@ -123,11 +121,8 @@ std::vector<StressRow> sigma_tiny(const StressOptions& o) {
       t[0] = t[1] = t[2] = float(x * 5 + y + 1) / 37.0f;
       t[3] = (x + y) % 2 ? 1.0f : 0.5f;
     }
-  StressRow row;
-  row.id = "sigma.tiny";
-  row.regime = "sigma";
-  row.format = "rgba32f";
-  row.quantity = "max |glow − sources| (σ 0.01: taps 0, 1, 0)";
+  StressRow row =
+      stress_row("sigma.tiny", "sigma", "rgba32f", "max |glow − sources| (σ 0.01: taps 0, 1, 0)");
   row.expected = 0;
   row.bound = "one tap of weight 1: exact";
   return {measured_row(row, run_on_ways(plan, scene, o), [](const WayImages& w) {
@@ -149,11 +144,8 @@ std::vector<StressRow> sigma_limit(const StressOptions& o, Format f) {
   constexpr double v = 0.25;
   EffectParams p = small_params(4, 4, 1, f, 4096, kMaxBlurTaps);
   const PlanResult plan = build_glow(p);
-  StressRow row;
-  row.id = fmt::format("sigma.limit.{}", fmt_name(f));
-  row.regime = "sigma";
-  row.format = fmt_name(f);
-  row.quantity = "glow of a uniform 0.25 (σ 4096, 2049 taps, 257 passes an axis)";
+  StressRow row = stress_row(fmt::format("sigma.limit.{}", fmt_name(f)), "sigma", fmt_name(f),
+                             "glow of a uniform 0.25 (σ 4096, 2049 taps, 257 passes an axis)");
   row.has_ideal = true;
   row.ideal = v;
   // The recurrence over the plan's own float weights, eight a pass.
@@ -194,12 +186,9 @@ std::vector<StressRow> downsample_sizes(const StressOptions& o) {
                  uint32_t gx, uint32_t gy, double expected, std::string bound) {
     EffectParams p = small_params(w, h, n, Format::RGBA32F, 1.0, 1);
     const PlanResult plan = build_glow(p);
-    StressRow row;
-    row.id = std::move(id);
-    row.regime = "downsample";
-    row.format = "rgba32f";
-    row.quantity = fmt::format("glow({},{}) of {}x{} at 1/{} (glow {}x{})", gx, gy, w, h, n,
-                               shape(plan).glow_width, shape(plan).glow_height);
+    StressRow row = stress_row(std::move(id), "downsample", "rgba32f",
+                               fmt::format("glow({},{}) of {}x{} at 1/{} (glow {}x{})", gx, gy, w,
+                                           h, n, shape(plan).glow_width, shape(plan).glow_height));
     row.expected = expected;
     row.tolerance = 1e-6; // N² fp32 products of weight 1/N² and their ONE/ONE sums
     row.bound = std::move(bound);
@@ -233,11 +222,8 @@ std::vector<StressRow> intensity(const StressOptions& o, Format f) {
   EffectParams p = small_params(4, 4, 1, f, 1.0);
   p.intensity = 1000;
   const PlanResult plan = build_glow(p);
-  StressRow row;
-  row.id = fmt::format("intensity.1000.{}", fmt_name(f));
-  row.regime = "saturation";
-  row.format = fmt_name(f);
-  row.quantity = "smallest final value (scene 0.25, intensity 1000)";
+  StressRow row = stress_row(fmt::format("intensity.1000.{}", fmt_name(f)), "saturation",
+                             fmt_name(f), "smallest final value (scene 0.25, intensity 1000)");
   row.has_ideal = true;
   row.ideal = 250.25;
   row.expected = f == Format::RGBA8 ? 1.0 : 250.25;
@@ -265,11 +251,7 @@ StressRow weights_row(const StressOptions& o, std::string id, std::string quanti
   if (plan) set_blur_weights(*plan, weights);
   double s = 0;
   for (double w : weights) s += double(float(w));
-  StressRow row;
-  row.id = std::move(id);
-  row.regime = "weights";
-  row.format = "rgba32f";
-  row.quantity = std::move(quantity);
+  StressRow row = stress_row(std::move(id), "weights", "rgba32f", std::move(quantity));
   row.has_ideal = true;
   row.ideal = 1;
   row.expected = s * s;
