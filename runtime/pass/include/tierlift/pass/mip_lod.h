@@ -1,10 +1,9 @@
 // Level-of-detail selection and the mip blend of Direct3D 9 sampler state, written once as
-// numeric rules (NUMERICS.md "Mip levels and LOD", M1-M3) for the devices to call when
-// textures carry mip chains. Today every texture has one level, so the devices need none of
-// it yet (texldl reads level 0: NUMERICS.md F11); the rules are here, tested on their own,
-// so that mip chains and implicit LOD (2x2 quads give the gradients) can be wired to them.
-// These are the exact model; lavapipe's arithmetic beside it is still to be measured (a
-// device with mip levels is needed for that).
+// numeric rules (NUMERICS.md "Mip levels and LOD", M1-M5) for the devices to call when
+// textures carry mip chains (pass::TextureBinding::levels). These are the exact model;
+// lavapipe's arithmetic beside it, measured, is in tierlift/rounding/rounding.h, and
+// select_levels picks one or the other. The CPU device's only caller is
+// BoundTextures::sample_lod; the Vulkan device hands the same state to its sampler.
 #pragma once
 
 #include <cstdint>
