@@ -7,6 +7,14 @@
 
 #include "draw_helpers.h"
 
+namespace tierlift::ir {
+// How a pixel centre prints in test listings (GetParam of QuadCoverage): found by argument-
+// dependent lookup, so it lives in the enum's namespace.
+static void PrintTo(PixelCenter c, std::ostream* os) {
+  *os << (c == PixelCenter::D3D9 ? "D3D9 centres" : "modern centres");
+}
+} // namespace tierlift::ir
+
 namespace tierlift::cpu {
 namespace {
 
@@ -43,6 +51,10 @@ template <class Inside> void expect_once_where(const img::Image& im, Inside insi
       EXPECT_EQ(im.at(x, y)[0], inside(x, y) ? 1.0f : 0.0f) << x << "," << y;
 }
 
+const char* centre_name(ir::PixelCenter c) {
+  return c == ir::PixelCenter::D3D9 ? "D3D9" : "Modern";
+}
+
 class QuadCoverage : public ::testing::TestWithParam<std::tuple<int, int, ir::PixelCenter>> {};
 
 TEST_P(QuadCoverage, EveryPixelExactlyOnce) {
@@ -61,7 +73,12 @@ TEST_P(QuadCoverage, EveryPixelExactlyOnce) {
 INSTANTIATE_TEST_SUITE_P(
     OddSizes, QuadCoverage,
     ::testing::Combine(::testing::Values(1, 7, 16, 33), ::testing::Values(1, 5, 3),
-                       ::testing::Values(ir::PixelCenter::D3D9, ir::PixelCenter::Modern)));
+                       ::testing::Values(ir::PixelCenter::D3D9, ir::PixelCenter::Modern)),
+    [](const ::testing::TestParamInfo<QuadCoverage::ParamType>& info) { // "7x5_D3D9"
+      // std::get, not a structured binding: its commas would split the macro's arguments.
+      return std::to_string(std::get<0>(info.param)) + "x" +
+             std::to_string(std::get<1>(info.param)) + "_" + centre_name(std::get<2>(info.param));
+    });
 
 // The quad from a vertex list (the same two triangles, interpolated path) also covers
 // every pixel exactly once: the shared diagonal goes through pixel centres on square

@@ -116,6 +116,12 @@ TEST_P(GlowContextShipped, EveryPairAgreesOnEveryPass) {
       });
 }
 
+// How a case prints in test listings (GetParam): the scene and the tier.
+void PrintTo(const Shipped& c, std::ostream* os) {
+  *os << (std::string_view(c.file).starts_with("{") ? "both (inline scene)" : c.file) << " "
+      << tier_name(c.tier);
+}
+
 INSTANTIATE_TEST_SUITE_P(Scenes, GlowContextShipped,
                          ::testing::Values(Shipped{"glow-fog.json", Tier::Dx9},
                                            Shipped{"glow-fog.json", Tier::Dx8},

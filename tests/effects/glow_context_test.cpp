@@ -19,6 +19,13 @@
 #include "tierlift/effects/graph/memory_plan.h"
 
 namespace tierlift::effects {
+
+// How a tier prints in test listings (GetParam): its name, not its bytes. In the enum's own
+// namespace, where argument-dependent lookup finds it; static, one copy per test file.
+[[maybe_unused]] static void PrintTo(Tier t, std::ostream* os) {
+  *os << tier_name(t);
+}
+
 namespace {
 
 constexpr uint32_t kW = 8, kH = 3;

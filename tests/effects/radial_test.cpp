@@ -18,6 +18,13 @@
 #include "tierlift/effects/scenes/scene.h"
 
 namespace tierlift::effects {
+
+// How a tier prints in test listings (GetParam): its name, not its bytes. In the enum's own
+// namespace, where argument-dependent lookup finds it; static, one copy per test file.
+[[maybe_unused]] static void PrintTo(Tier t, std::ostream* os) {
+  *os << tier_name(t);
+}
+
 namespace {
 
 using test_ways::ThreeDevices;

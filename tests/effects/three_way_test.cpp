@@ -38,6 +38,13 @@ struct Case {
   Scene scene;
 };
 
+// How a case prints in test listings (GetParam): "dx9 ds2 rgba8 half-texel Random50x31".
+void PrintTo(const Case& c, std::ostream* os) {
+  const char* scene[] = {"Random37x23", "Random50x31", "Default96x54"};
+  *os << tier_name(c.tier) << " ds" << c.downsample << " " << img::format_name(c.format)
+      << (c.half_texel ? " half-texel " : " no-offset ") << scene[int(c.scene)];
+}
+
 std::string case_name(const ::testing::TestParamInfo<Case>& info) {
   const Case& c = info.param;
   const char* scene[] = {"Random37x23", "Random50x31", "Default96x54"};
@@ -191,6 +198,11 @@ TEST_P(ThreeWayFullSize, DefaultSceneEveryPairAgrees) {
   }
   EXPECT_TRUE(dev->messages().empty()) << dev->messages().front();
   expect_agreement(ways, plan.graph.passes.size(), p.format);
+}
+
+// How a case prints in test listings (GetParam): "dx9 ds4 rgba32f".
+void PrintTo(const FullSize& c, std::ostream* os) {
+  *os << tier_name(c.tier) << " ds" << c.downsample << " " << img::format_name(c.format);
 }
 
 INSTANTIATE_TEST_SUITE_P(Glow, ThreeWayFullSize,

@@ -59,6 +59,13 @@ TEST_P(GeneratedCoverage, EveryModifierFileAndMaskAppears) {
   std::printf("[generate] %s coverage:\n%s", e.profile, c.summary().c_str());
 }
 
+// How a case prints in test listings (GetParam): the profile and the sizes of its sets.
+void PrintTo(const Expected& e, std::ostream* os) {
+  *os << e.profile << ": " << e.source_modifiers.size() << " source modifiers, "
+      << e.instruction_modifiers.size() << " instruction modifiers, " << e.register_files.size()
+      << " register files, " << e.write_masks << " write masks";
+}
+
 INSTANTIATE_TEST_SUITE_P(Profiles, GeneratedCoverage, ::testing::ValuesIn(kExpected),
                          [](const auto& info) { return std::string(info.param.profile); });
 

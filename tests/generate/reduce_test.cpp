@@ -82,6 +82,11 @@ const Case kCases[] = {
     {"ps_1_4",
      {"ps_1_4", R"([a-z0-9]+ r\d, c0(, c0)*)", R"(mad r\d, (c0|-r\d), (c0|-r\d), (c0|-r\d))"}},
 };
+// How a case prints in test listings (GetParam): the profile and how many lines must remain.
+void PrintTo(const Case& c, std::ostream* os) {
+  *os << c.profile << ", reduced to " << c.lines.size() << " lines";
+}
+
 INSTANTIATE_TEST_SUITE_P(Profiles, ReduceNegatedMad, ::testing::ValuesIn(kCases),
                          [](const auto& info) { return std::string(info.param.profile); });
 

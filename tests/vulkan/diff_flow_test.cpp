@@ -86,6 +86,11 @@ TEST_P(FlowDiff, CpuAndVulkanAgree) {
   }
 }
 
+// How a case prints in test listings (GetParam): its name and listing, not its bytes.
+void PrintTo(const FlowCase& c, std::ostream* os) {
+  *os << c.name << ": " << one_line(c.body) << (*c.subs ? "; " : "") << one_line(c.subs);
+}
+
 INSTANTIATE_TEST_SUITE_P(Flow, FlowDiff, ::testing::ValuesIn(kFlowCases),
                          [](const auto& info) { return std::string(info.param.name); });
 

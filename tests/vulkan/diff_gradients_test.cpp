@@ -207,6 +207,11 @@ TEST_P(GradientDiff, CpuAndVulkanAgreeBitForBit) {
     }
 }
 
+// How a case prints in test listings (GetParam): its name and listing, not its bytes.
+void PrintTo(const GradientCase& c, std::ostream* os) {
+  *os << c.name << ": " << one_line(c.body);
+}
+
 INSTANTIATE_TEST_SUITE_P(Quads, GradientDiff, ::testing::ValuesIn(kGradientCases),
                          [](const auto& info) { return std::string(info.param.name); });
 

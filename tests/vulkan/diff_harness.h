@@ -25,6 +25,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
@@ -33,6 +34,20 @@
 #include "vk_test_util.h"
 
 namespace tierlift::vulkan::test {
+
+// A listing on one line ("mov r3, r0; add r3, r3, r1"): how a difference test's case prints
+// in test listings (its PrintTo), where a newline would end the entry.
+inline std::string one_line(std::string_view text) {
+  std::string out;
+  for (const char c : text) {
+    if (c != '\n')
+      out += c;
+    else if (!out.empty() && out.back() != ' ')
+      out += "; ";
+  }
+  while (!out.empty() && (out.back() == ' ' || out.back() == ';')) out.pop_back();
+  return out;
+}
 
 inline constexpr uint32_t kDiffW = 16, kDiffH = 16;
 

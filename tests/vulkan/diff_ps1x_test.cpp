@@ -84,6 +84,11 @@ TEST_P(Ps1xDiff, CpuAndVulkanAgree) {
   }
 }
 
+// How a case prints in test listings (GetParam): its name and listing, not its bytes.
+void PrintTo(const Ps1xCase& c, std::ostream* os) {
+  *os << c.name << " (" << c.profile << "): " << one_line(c.body);
+}
+
 INSTANTIATE_TEST_SUITE_P(Modifiers, Ps1xDiff, ::testing::ValuesIn(kPs1xCases),
                          [](const auto& info) { return std::string(info.param.name); });
 

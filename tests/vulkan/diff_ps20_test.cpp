@@ -91,6 +91,11 @@ TEST_P(Ps20Diff, CpuAndVulkanAgree) {
   }
 }
 
+// How a case prints in test listings (GetParam): its name and listing, not its bytes.
+void PrintTo(const OpCase& c, std::ostream* os) {
+  *os << c.name << ": " << one_line(c.body);
+}
+
 INSTANTIATE_TEST_SUITE_P(Ops, Ps20Diff, ::testing::ValuesIn(kPs20Cases),
                          [](const auto& info) { return std::string(info.param.name); });
 

@@ -84,6 +84,11 @@ TEST_P(Sm3Diff, CpuAndVulkanAgree) {
   }
 }
 
+// How a case prints in test listings (GetParam): its name and listing, not its bytes.
+void PrintTo(const Sm3Case& c, std::ostream* os) {
+  *os << c.name << " (" << c.profile << "): " << one_line(c.body);
+}
+
 INSTANTIATE_TEST_SUITE_P(Flow, Sm3Diff, ::testing::ValuesIn(kSm3Cases),
                          [](const auto& info) { return std::string(info.param.name); });
 

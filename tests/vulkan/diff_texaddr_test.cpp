@@ -94,6 +94,11 @@ TEST_P(AddrDiff, CpuAndVulkanAgree) {
   }
 }
 
+// How a case prints in test listings (GetParam): its name and listing, not its bytes.
+void PrintTo(const AddrCase& c, std::ostream* os) {
+  *os << c.name << ": " << one_line(c.ps);
+}
+
 INSTANTIATE_TEST_SUITE_P(TexAddr, AddrDiff, ::testing::ValuesIn(kAddrCases),
                          [](const auto& info) { return std::string(info.param.name); });
 

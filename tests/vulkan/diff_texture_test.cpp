@@ -71,6 +71,11 @@ TEST_P(TexDiff, CpuAndVulkanAgree) {
     }
 }
 
+// How a case prints in test listings (GetParam): its name and listing, not its bytes.
+void PrintTo(const TexCase& c, std::ostream* os) {
+  *os << c.name << (c.projected ? " (projected)" : "") << ": " << one_line(c.ps);
+}
+
 INSTANTIATE_TEST_SUITE_P(Ops, TexDiff, ::testing::ValuesIn(kTexCases),
                          [](const auto& info) { return std::string(info.param.name); });
 

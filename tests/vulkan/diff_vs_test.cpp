@@ -106,6 +106,12 @@ TEST_P(VsDiff, CpuAndVulkanAgree) {
   }
 }
 
+// How a case prints in test listings (GetParam): its name and listing, not its bytes.
+void PrintTo(const VsCase& c, std::ostream* os) {
+  *os << c.name << (c.vs11 ? " vs_1_1" : "") << (c.vs20 ? " vs_2_0" : "") << ": "
+      << one_line(c.body);
+}
+
 INSTANTIATE_TEST_SUITE_P(Ops, VsDiff, ::testing::ValuesIn(kVsCases),
                          [](const auto& info) { return std::string(info.param.name); });
 

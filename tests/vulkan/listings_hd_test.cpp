@@ -63,6 +63,14 @@ TEST_P(ListingsHd, MeetTheAgreementTargets) {
   EXPECT_GT(t.vk.at(c.w / 2, c.h / 2)[0], 0.0f); // something was drawn
 }
 
+// How a case prints in test listings (GetParam): "1280x720, half-texel offset, D3D9
+// centres, rgba32f".
+void PrintTo(const HdCase& c, std::ostream* os) {
+  *os << c.w << "x" << c.h << (c.half != 0 ? ", half-texel offset, " : ", no offset, ")
+      << (c.centre == ir::PixelCenter::D3D9 ? "D3D9" : "modern") << " centres, "
+      << img::format_name(c.format);
+}
+
 INSTANTIATE_TEST_SUITE_P(
     Slow720p, ListingsHd,
     ::testing::Values(HdCase{1280, 720, 0.5, img::Format::RGBA32F, ir::PixelCenter::D3D9},

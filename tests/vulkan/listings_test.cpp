@@ -75,6 +75,12 @@ TEST_P(ListingAgreement, CpuAndVulkanAgree) {
   EXPECT_NEAR(t.vk.at(W / 2, H / 2)[3], 1.0f, 1.0 / 255);
 }
 
+// How a case prints in test listings (GetParam): "8 taps, half-texel offset, rgba32f".
+void PrintTo(const Case& c, std::ostream* os) {
+  *os << c.taps << " taps, " << (c.half != 0 ? "half-texel offset, " : "no offset, ")
+      << img::format_name(c.format);
+}
+
 INSTANTIATE_TEST_SUITE_P(
     Listings, ListingAgreement,
     ::testing::Values(Case{8, 0.5, img::Format::RGBA32F}, Case{8, 0.0, img::Format::RGBA32F},
