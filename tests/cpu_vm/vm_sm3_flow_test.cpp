@@ -183,7 +183,7 @@ TEST(VmSm3Flow, PredicatedTexkillTestsTheComponentsWhosePredicateHolds) {
                         {&kill, {0, 1, 0, 1}, false}, {&kill, {0, 0, 0, 0}, false},
                         {&not_y, {0, 0, 0, 0}, true}, {&not_y, {1, 1, 1, 1}, false}};
   for (const Case& c : cases) {
-    ShaderVM vm(parse(*c.text), {});
+    ShaderVM vm = vm_of(parse(*c.text), {});
     EXPECT_EQ(run_ps(vm, {}, nullptr, bank({r0, c.p, zero})).discarded, c.discarded)
         << *c.text << " p " << c.p[0] << c.p[1] << c.p[2] << c.p[3];
   }
