@@ -4,6 +4,8 @@ file(GLOB_RECURSE _files
   ${ROOT}/ir/*.cpp ${ROOT}/ir/*.h ${ROOT}/asm_parser/*.cpp ${ROOT}/asm_parser/*.h
   ${ROOT}/codegen/*.cpp ${ROOT}/codegen/*.h ${ROOT}/runtime/*.cpp ${ROOT}/runtime/*.h ${ROOT}/effects/*.cpp ${ROOT}/effects/*.h
   ${ROOT}/listings/*.cpp ${ROOT}/listings/*.h ${ROOT}/cli/*.cpp ${ROOT}/cli/*.h
+  ${ROOT}/io/*.cpp ${ROOT}/io/*.h ${ROOT}/corpus/*.cpp ${ROOT}/corpus/*.h
+  ${ROOT}/generate/*.cpp ${ROOT}/generate/*.h ${ROOT}/glsl/*.cpp ${ROOT}/glsl/*.h
   ${ROOT}/tests/*.cpp ${ROOT}/tests/*.h ${ROOT}/bench/*.cpp ${ROOT}/bench/*.h)
 execute_process(COMMAND ${CLANG_FORMAT} --dry-run --Werror ${_files}
   RESULT_VARIABLE _rc ERROR_VARIABLE _err)
