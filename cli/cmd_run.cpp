@@ -18,6 +18,7 @@
 #include "commands.h"
 #include "front_end.h"
 #include "report.h"
+#include "run_files.h"
 #include "run_flags.h"
 #include "run_output.h"
 #include "run_request.h"
@@ -39,20 +40,6 @@ void print_other(const ir::DiagnosticSink& sink, Report& report) {
     else
       report.warning(d.rule, d.message);
   }
-}
-
-// --backend both writes the Vulkan image beside the CPU one: out.png → out-vulkan.png.
-std::string vulkan_output(const std::string& output) {
-  std::filesystem::path p(output);
-  return (p.parent_path() / (p.stem().string() + "-vulkan")).string() + p.extension().string();
-}
-
-// The files the run reads, which no output may replace.
-std::vector<std::string> input_files(const RunFlags& f, const pass::RunRequest& r) {
-  std::vector<std::string> inputs{f.vs, f.ps};
-  for (const pass::TextureSetting& t : r.textures)
-    for (const std::string& s : pass::layered_sources(t.source).sources) inputs.push_back(s);
-  return inputs;
 }
 
 // A failed run as `tierlift run` has always worded a draw the device refused: the device's
@@ -181,48 +168,6 @@ std::optional<RunPlan> plan_from_flags(const RunFlags& f, Report& report) {
   return plan;
 }
 
-// Every image file the run writes, in order: -o (oC0) and --output1..3 (oC1..oC3), each
-// followed by its Vulkan twin when both devices run (out.png → out-vulkan.png).
-std::vector<std::string> output_files(const RunFlags& f, const RunPlan& plan) {
-  std::vector<std::string> files;
-  for (const std::string* o :
-       {&f.output, &f.more_outputs[0], &f.more_outputs[1], &f.more_outputs[2]}) {
-    if (o->empty()) continue;
-    files.push_back(*o);
-    if (plan.cpu && plan.vulkan && *o != "-") files.push_back(vulkan_output(*o));
-  }
-  return files;
-}
-
-// -o and --output1..3: never one of the run's inputs nor one another, one image for "-"
-// (-o only), the Vulkan images' names free too. False after reporting why not.
-bool outputs_ok(const RunFlags& f, const RunPlan& plan, Report& report) {
-  const std::vector<std::string> inputs = input_files(f, plan.req);
-  if (!f.output.empty()) {
-    std::string why = check_output(f.output, inputs, f.fe.json).message();
-    if (why.empty() && f.output == "-" && plan.cpu && plan.vulkan)
-      why = "-o - takes one image; --backend both writes two (give -o a file)";
-    if (!why.empty()) {
-      report.error(f.output == "-" ? "usage" : "io", why, f.output);
-      return false;
-    }
-  }
-  std::vector<std::string> earlier;
-  for (const std::string& o : output_files(f, plan)) {
-    if (o == "-" && o == f.output) continue; // checked above
-    std::string why = o == "-" ? "--output1..3 - : standard output takes -o's image only"
-                               : output_conflict(o, inputs).message();
-    if (why.empty() && std::find(earlier.begin(), earlier.end(), o) != earlier.end())
-      why = fmt::format("{}: two of the run's images would be written there", o);
-    if (!why.empty()) {
-      report.error(o == "-" ? "usage" : "io", why, o);
-      return false;
-    }
-    earlier.push_back(o);
-  }
-  return true;
-}
-
 struct Listings {
   std::optional<LoadedListing> vs, ps; // each keeps its own SourceManager
 };
@@ -248,7 +193,7 @@ int load_listings(const RunFlags& f, const RunPlan& plan, Listings& out, Report&
     listings_ok = listings_ok && (*l)->program && !(*l)->diags.has_errors();
   }
   if (!listings_ok) return kExitInvalid;
-  for (const std::string& o : output_files(f, plan))
+  for (const std::string& o : output_files(f, plan.cpu && plan.vulkan))
     for (auto* l : {&out.vs, &out.ps})
       if (ir::Status refused = *l ? refuse_included(o, **l) : ir::ok_status(); !refused) {
         report.error("io", refused.message(), o);
@@ -364,7 +309,8 @@ int run(const RunFlags& f) {
     return report.finish(kExitUsage);
   }
   std::optional<RunPlan> plan = plan_from_flags(f, report);
-  if (!plan || !outputs_ok(f, *plan, report)) return report.finish(kExitUsage);
+  if (!plan || !outputs_ok(f, plan->req, plan->cpu && plan->vulkan, report))
+    return report.finish(kExitUsage);
   pass::RunRequest& req = plan->req;
   Listings listings;
   if (int code = load_listings(f, *plan, listings, report); code != kExitOk)
