@@ -172,14 +172,10 @@ ir::Result<DrawStats> draw(const Pass& pass, img::Image& target, unsigned thread
   return draw(pass, targets, threads);
 }
 
-ir::Result<DrawStats> draw(const Pass& pass, const DrawTargets& targets, unsigned threads) {
-  // sRGB stages read their texels decoded before filtering (NUMERICS.md S1, S2): the pass
-  // drawn with those images decoded once.
-  if (pass::reads_srgb(pass)) {
-    Pass decoded = pass;
-    for (pass::TextureBinding& b : decoded.textures) b = pass::srgb_resolved(b);
-    return draw(decoded, targets, threads);
-  }
+namespace {
+
+// The draw of a pass whose textures read as they are stored (no sRGB stage left).
+ir::Result<DrawStats> draw_linear(const Pass& pass, const DrawTargets& targets, unsigned threads) {
   DrawStats stats;
   if (std::string why = targets.color[0] ? check_targets(pass, targets) : "no render target";
       !why.empty())
@@ -295,6 +291,17 @@ ir::Result<DrawStats> draw(const Pass& pass, const DrawTargets& targets, unsigne
   }
   if (!failure.empty()) return draw_failure("draw failed: " + failure);
   return stats;
+}
+
+} // namespace
+
+ir::Result<DrawStats> draw(const Pass& pass, const DrawTargets& targets, unsigned threads) {
+  if (!pass::reads_srgb(pass)) return draw_linear(pass, targets, threads);
+  // sRGB stages read their texels decoded before filtering (NUMERICS.md S1, S2): the pass
+  // drawn with those images decoded once.
+  Pass decoded = pass;
+  for (pass::TextureBinding& b : decoded.textures) b = pass::srgb_resolved(b);
+  return draw_linear(decoded, targets, threads);
 }
 
 // The vertex stage and setup of a pass, shared with trace_pixel (raster.h).
