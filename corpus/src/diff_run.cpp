@@ -225,9 +225,9 @@ StageResult differential_run(const ir::Program& program, const std::string& id,
   for (unsigned set = 0; set < o.input_sets; ++set) {
     const pass::RunRequest req = request(program, drawn, o, rng, set);
     ir::Result<pass::Pass> made = pass::prepare_pass(req);
-    // Cubes are read with POINT filtering on every set: lavapipe filters LINEAR reads across
-    // face edges (seamless), which the interpreter does not model (NUMERICS.md rule T4).
-    if (made)
+    // A Vulkan device that filters cube maps across face edges refuses LINEAR cube reads
+    // (NUMERICS.md rule T4): there cubes are read with POINT filtering on every set.
+    if (made && !o.device->cube_faces_filtered_alone())
       for (pass::TextureBinding& b : made->textures)
         if (b.shape == pass::TextureShape::Cube) b.sampler.filter = pass::Filter::Point;
     ir::Result<effects::EffectGraph> graph =

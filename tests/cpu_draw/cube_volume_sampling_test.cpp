@@ -102,6 +102,33 @@ TEST(CubeSampling, FaceEdgesClampWhateverTheAddressMode) {
   EXPECT_EQ(sample_cube(cube, {1, 0, 1, 0}, false, 0)[0], 1.0f);
 }
 
+// Direct3D 9 filters each face on its own (NUMERICS.md T4): at every corner of every face, an
+// eighth of a texel inside both edges, a linear read's taps beyond the edges are the face's
+// own edge texels, so a cube whose faces are the constants k reads k there under every address
+// mode and both roundings (a tap from a neighbouring face would mix in its constant). The
+// direction is T1's table inverted with the major axis ±1: sc, tc = ±15/16, s, t = 1/32 or 31/32.
+TEST(CubeSampling, CornersOfEveryFaceReadOnlyThatFace) {
+  std::vector<std::shared_ptr<const img::Image>> faces;
+  for (int k = 0; k < 6; ++k) faces.push_back(constant(4, {float(k), 0, 0, 1}));
+  pass::TextureBinding cube = *pass::layered_binding(TextureShape::Cube, faces);
+  cube.sampler.filter = Filter::Linear;
+  const float e = 15.0f / 16;
+  for (AddressMode mode : {AddressMode::Wrap, AddressMode::Mirror, AddressMode::Clamp,
+                           AddressMode::Border, AddressMode::MirrorOnce}) {
+    cube.sampler.address_u = cube.sampler.address_v = mode;
+    cube.sampler.border_color = {10, 10, 10, 10};
+    for (float sc : {-e, e})
+      for (float tc : {-e, e}) {
+        const Vec4 dirs[6] = {{1, -tc, -sc, 0}, {-1, -tc, sc, 0}, {sc, 1, tc, 0},
+                              {sc, -1, -tc, 0}, {sc, -tc, 1, 0},  {-sc, -tc, -1, 0}};
+        for (int k = 0; k < 6; ++k)
+          for (bool llvmpipe : {false, true})
+            EXPECT_EQ(sample_cube(cube, dirs[k], llvmpipe, 0)[0], float(k))
+                << "face " << k << " sc " << sc << " tc " << tc << " mode " << int(mode);
+      }
+  }
+}
+
 pass::TextureBinding slices(AddressMode mode, Filter filter) {
   std::vector<std::shared_ptr<const img::Image>> s;
   for (int k = 0; k < 4; ++k) s.push_back(constant(2, {float(k), 0, 0, 1}));

@@ -3,6 +3,8 @@
 // on the CPU device; and random directions and volume coordinates read bit-identically by
 // the interpreter (Rounding::Llvmpipe) and lavapipe, through ps_2_0 dcl_cube / dcl_volume and
 // ps_1_1 texm3x3tex.
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 
 #include "diff_harness.h"
@@ -78,6 +80,11 @@ OneRead read_direction(vulkan::Device& dev, const pass::TextureBinding& cube, cp
 
 class CubeVolume : public VulkanTest {};
 
+// The agreement tests' LINEAR cube reads need a device that filters each face on its own.
+#define SKIP_WITHOUT_PER_FACE_CUBES()                                                              \
+  if (!dev->cube_faces_filtered_alone())                                                           \
+  GTEST_SKIP() << dev->name() << " filters cube maps across face edges (NUMERICS.md T4)"
+
 // The major axis picks the face, in D3D9's order +X, −X, +Y, −Y, +Z, −Z; on ties z wins over
 // x and y, and y over x (lavapipe's choice, measured here; the CPU device's rule).
 TEST_F(CubeVolume, FaceSelectionIncludingTies) {
@@ -108,6 +115,7 @@ TEST_F(CubeVolume, FaceSelectionIncludingTies) {
 // t = (−0.2 + 1)/2 = 0.4; on a 16-texel face a linear read returns 16·s − ½ = 5.1 and
 // 16·t − ½ = 5.9 (to float rounding); the other faces' orientation the same way.
 TEST_F(CubeVolume, FaceCoordinatesAtKnownPoints) {
+  SKIP_WITHOUT_PER_FACE_CUBES();
   pass::TextureBinding cube = coordinate_cube(16);
   cube.sampler.filter = cpu::Filter::Linear;
   struct Case {
@@ -137,18 +145,16 @@ TEST_F(CubeVolume, FaceCoordinatesAtKnownPoints) {
 }
 
 // 256 directions per draw from a direction texture (point-read at texel centres); the cube
-// read at each. Point: any direction, ties included. Linear: directions whose face
-// coordinates stay a texel inside the face edges (lavapipe filters across edges there,
-// NUMERICS.md). Bit-identical under Rounding::Llvmpipe.
-std::shared_ptr<const img::Image> directions(uint64_t seed, bool away_from_edges) {
+// read at each: any direction, exact ties of two or three components included, so linear reads
+// reach the face edges and corners too (each face filtered on its own on both devices,
+// NUMERICS.md T4). Bit-identical under Rounding::Llvmpipe.
+std::shared_ptr<const img::Image> directions(uint64_t seed) {
   Rng rng(seed);
   auto im = std::make_shared<img::Image>(kDiffW, kDiffH);
   for (size_t p = 0; p < im->rgba.size(); p += 4) {
     float d[3] = {rng.range(-1, 1), rng.range(-1, 1), rng.range(-1, 1)};
     const int major = int(img::splitmix64(rng.state) % 3);
-    if (away_from_edges) { // the major axis at least 1.5× the others: |sc/ma| ≤ 2/3
-      d[major] = (d[major] < 0 ? -1.0f : 1.0f) * rng.range(1.5f, 3.0f);
-    } else if (p % 16 == 0) { // an exact tie of two or three components
+    if (p % 16 == 0) { // an exact tie of two or three components
       d[(major + 1) % 3] = (p % 32 == 0 ? -1 : 1) * d[major];
       if (p % 64 == 0) d[(major + 2) % 3] = d[major];
     }
@@ -159,14 +165,22 @@ std::shared_ptr<const img::Image> directions(uint64_t seed, bool away_from_edges
   return im;
 }
 
+// lavapipe offers VK_EXT_non_seamless_cube_map (Mesa 22.3 on): the device enables it, so the
+// skips above never hide a test there.
+TEST_F(CubeVolume, LavapipeFiltersEachFaceAlone) {
+  if (!dev->name().starts_with("llvmpipe")) GTEST_SKIP() << "not lavapipe: " << dev->name();
+  EXPECT_TRUE(dev->cube_faces_filtered_alone());
+}
+
 TEST_F(CubeVolume, RandomDirectionsBitIdentical) {
+  SKIP_WITHOUT_PER_FACE_CUBES();
   const char* ps = "ps_2_0\ndcl t0\ndcl_2d s0\ndcl_cube s1\ntexld r1, t0, s0\n"
                    "texld r0, r1, s1\nmov oC0, r0\n";
   const char* vs = "vs_2_0\ndcl_position v0\ndcl_texcoord v3\nmov oPos, v0\nmov oT0, v3\n";
   for (cpu::Filter filter : {cpu::Filter::Point, cpu::Filter::Linear})
     for (uint64_t seed = 1; seed <= 4; ++seed) {
       DiffSetup s;
-      s.textures.push_back(directions(seed, filter == cpu::Filter::Linear));
+      s.textures.push_back(directions(seed));
       DiffResult r = run_diff_with(*dev, vs, ps, s, [&](cpu::Pass& p) {
         p.textures[1] = coordinate_cube(16);
         p.textures[1].sampler.filter = filter;
@@ -176,6 +190,102 @@ TEST_F(CubeVolume, RandomDirectionsBitIdentical) {
       EXPECT_TRUE(same_bits(r.cpu, r.vk))
           << "filter " << int(filter) << " seed " << seed << ": " << first_difference(r.cpu, r.vk);
     }
+}
+
+// Reads near every edge and corner of every face of a 4-texel coordinate cube: face
+// coordinates s·4 and t·4 each an eighth, a quarter or half a texel inside either edge
+// (36 points a face, 216 in all), under every address mode (MIRRORONCE and a border colour
+// Vulkan has no name for included: a cube ignores them). The direction is the face table of T1
+// inverted with the major axis ±1, so sc = 2s − 1 and tc = 2t − 1 exactly and both roundings of T3
+// give s and t exactly.
+constexpr uint32_t kEdgeFace = 4;
+const float kEdgeTexels[] = {0.125f, 0.25f, 0.5f, 3.5f, 3.75f, 3.875f}; // s·4 or t·4
+
+cpu::Vec4 direction_on_face(int face, float s, float t) {
+  const float sc = 2 * s - 1, tc = 2 * t - 1;
+  switch (face) {
+  case 0: return {1, -tc, -sc, 0};   // +X: sc = −z, tc = −y
+  case 1: return {-1, -tc, sc, 0};   // −X: sc = z, tc = −y
+  case 2: return {sc, 1, tc, 0};     // +Y: sc = x, tc = z
+  case 3: return {sc, -1, -tc, 0};   // −Y: sc = x, tc = −z
+  case 4: return {sc, -tc, 1, 0};    // +Z: sc = x, tc = −y
+  default: return {-sc, -tc, -1, 0}; // −Z: sc = −x, tc = −y
+  }
+}
+
+struct EdgeRead {
+  int face = 0;
+  float sn = 2, tn = 2; // s·4, t·4 (the face centre for pixels beyond the 216 reads)
+};
+
+std::vector<EdgeRead> edge_reads() {
+  std::vector<EdgeRead> reads(size_t{kDiffW} * kDiffH); // the rest read face 0's centre
+  size_t i = 0;
+  for (int face = 0; face < 6; ++face)
+    for (float sn : kEdgeTexels)
+      for (float tn : kEdgeTexels) reads[i++] = {face, sn, tn};
+  return reads;
+}
+
+std::shared_ptr<const img::Image> edge_directions(const std::vector<EdgeRead>& reads) {
+  auto im = std::make_shared<img::Image>(kDiffW, kDiffH);
+  for (size_t p = 0; p < reads.size(); ++p) {
+    const EdgeRead& e = reads[p];
+    const cpu::Vec4 d = direction_on_face(e.face, e.sn / kEdgeFace, e.tn / kEdgeFace);
+    for (int k = 0; k < 3; ++k) im->rgba[4 * p + k] = d[k];
+    im->rgba[4 * p + 3] = 1;
+  }
+  return im;
+}
+
+// Texel (i, j) of face k holds (i, j, k, 1), so the expected read is worked by hand per axis:
+// POINT takes texel floor(x·4); LINEAR, clamped within the face, returns x·4 − ½ clamped to
+// [0, 3] (a tap beyond the edge is the edge texel, so lerp(α, 0, 0) = 0 and lerp(α, 3, 3) = 3).
+// A read filtered across the edge would mix in the adjacent face's texels (and its k).
+float expected_axis(cpu::Filter filter, float xn) {
+  if (filter == cpu::Filter::Point) return std::floor(xn);
+  return std::clamp(xn - 0.5f, 0.0f, float(kEdgeFace - 1));
+}
+
+TEST_F(CubeVolume, EdgesAndCornersReadEachFaceClampedOnBothDevices) {
+  SKIP_WITHOUT_PER_FACE_CUBES();
+  const char* ps = "ps_2_0\ndcl t0\ndcl_2d s0\ndcl_cube s1\ntexld r1, t0, s0\n"
+                   "texld r0, r1, s1\nmov oC0, r0\n";
+  const char* vs = "vs_2_0\ndcl_position v0\ndcl_texcoord v3\nmov oPos, v0\nmov oT0, v3\n";
+  const std::vector<EdgeRead> reads = edge_reads();
+  using M = cpu::AddressMode;
+  using MF = pass::MipFilter;
+  for (cpu::Filter filter : {cpu::Filter::Point, cpu::Filter::Linear})
+    for (M mode : {M::Wrap, M::Mirror, M::Clamp, M::Border, M::MirrorOnce})
+      for (MF mip : {MF::None, MF::Point, MF::Linear}) { // a cube has one level: level 0 always
+        DiffSetup s;
+        s.textures.push_back(edge_directions(reads));
+        DiffResult r = run_diff_with(*dev, vs, ps, s, [&](cpu::Pass& p) {
+          p.textures[1] = coordinate_cube(kEdgeFace);
+          pass::SamplerState& ss = p.textures[1].sampler;
+          ss.filter = filter;
+          ss.address_u = ss.address_v = ss.address_w = mode; // ignored on a cube (T4)
+          ss.border_color = {0.5f, 0.25f, 2, 3}; // ignored too: no Vulkan border colour needed
+          ss.mip.filter = mip;
+          p.conventions.subtexel_bits = 0;
+        });
+        ASSERT_TRUE(r.ok);
+        const std::string what =
+            fmt::format("filter {} mode {} mip {}", int(filter), int(mode), int(mip));
+        EXPECT_TRUE(same_bits(r.cpu, r.vk)) << what << ": " << first_difference(r.cpu, r.vk);
+        int wrong = 0;
+        for (size_t p = 0; p < reads.size() && wrong < 8; ++p) {
+          const EdgeRead& e = reads[p];
+          const float want[4] = {expected_axis(filter, e.sn), expected_axis(filter, e.tn),
+                                 float(e.face), 1};
+          for (const img::Image* im : {&r.cpu, &r.vk})
+            for (int k = 0; k < 4; ++k)
+              if (im->rgba[4 * p + k] != want[k] && ++wrong <= 8)
+                ADD_FAILURE() << what << (im == &r.cpu ? " cpu" : " vulkan") << ": face " << e.face
+                              << " s·4 " << e.sn << " t·4 " << e.tn << " channel " << k << ": "
+                              << im->rgba[4 * p + k] << ", want " << want[k];
+        }
+      }
 }
 
 // ps_1_1's texm3x3tex reads a cube (the stage's bound texture says so): the normal from
@@ -306,6 +416,45 @@ TEST_F(CubeVolume, MismatchedShapeIsRefused) {
   ASSERT_FALSE(r.ok());
   EXPECT_NE(r.message().find("a cube sampler needs a cube texture"), std::string::npos)
       << r.message();
+}
+
+// A device that filters cube maps across face edges, as a Vulkan device without
+// VK_EXT_non_seamless_cube_map does (DeviceOptions::per_face_cubes off on lavapipe): a LINEAR
+// cube read is refused in words, never drawn differently; a POINT read (clamped within the
+// face either way) still draws, bit-identical to the CPU device.
+class CubesAcrossEdges : public VulkanTest {
+protected:
+  const ir::Result<vulkan::Device*>& acquire_device() override {
+    static const ir::Result<vulkan::Device*> across = [] {
+      vulkan::DeviceOptions o;
+      o.per_face_cubes = false;
+      return program_device(o);
+    }();
+    return across;
+  }
+};
+
+TEST_F(CubesAcrossEdges, LinearCubeReadIsRefusedPointReadDraws) {
+  EXPECT_FALSE(dev->cube_faces_filtered_alone());
+  pass::TextureBinding cube = coordinate_cube(kEdgeFace);
+  cube.sampler.filter = cpu::Filter::Linear;
+  cpu::Pass p;
+  p.pixel_program =
+      parse_listing("ps_2_0\ndcl_cube s0\nmov r1, c0\ntexld r0, r1, s0\nmov oC0, r0\n", "e.psh");
+  p.ps_constants.f = {direction_on_face(4, 0.03125f, 0.5f)}; // +Z, an eighth of a texel in
+  p.textures[0] = cube;
+  img::Image b(1, 1);
+  ir::Result<pass::DrawReport> refused = dev->draw(p, b);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.message().find("s0: a LINEAR cube read is refused"), std::string::npos)
+      << refused.message();
+  EXPECT_NE(refused.message().find("VK_EXT_non_seamless_cube_map"), std::string::npos);
+  p.textures[0].sampler.filter = cpu::Filter::Point;
+  ir::Result<pass::DrawReport> drawn = dev->draw(p, b);
+  ASSERT_TRUE(drawn.ok()) << drawn.message();
+  EXPECT_EQ(b.rgba[0], 0); // texel floor(0.125) = 0
+  EXPECT_EQ(b.rgba[1], 2); // texel floor(2) = 2
+  EXPECT_EQ(b.rgba[2], 4); // face +Z
 }
 
 } // namespace

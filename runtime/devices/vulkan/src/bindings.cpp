@@ -62,10 +62,18 @@ ir::Status add_textures(Device::Impl& d, Cleanup& cleanup, const codegen::Compil
     if (tb.sampler.filter == pass::Filter::Linear &&
         !(tex_props.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT))
       return draw_failure("the Vulkan device cannot filter RGBA32F textures linearly");
+    const pass::TextureShape shape = images[stage]->shape;
+    if (shape == pass::TextureShape::Cube && tb.sampler.filter == pass::Filter::Linear &&
+        !d.cube_faces_alone)
+      return draw_failure(fmt::format(
+          "s{}: a LINEAR cube read is refused: {} filters cube maps across face edges (it lacks "
+          "VK_EXT_non_seamless_cube_map), Direct3D 9 and the CPU device each face on its own",
+          si.stage, d.props.deviceName));
     Resources::Texture t;
     t.binding = si.binding;
     t.view = images[stage]->view;
-    if (ir::Status err = create_sampler(d, cleanup, tb.sampler, images[stage]->levels, t.sampler);
+    if (ir::Status err =
+            create_sampler(d, cleanup, tb.sampler, images[stage]->levels, shape, t.sampler);
         !err)
       return std::move(err).failure();
     res.layout.push_back({t.binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,

@@ -57,6 +57,29 @@ bool has_layer(const char* name) {
   });
 }
 
+// Whether the physical device offers VK_EXT_non_seamless_cube_map and its nonSeamlessCubeMap
+// feature: samplers that filter each cube face on its own, as Direct3D 9 does.
+bool offers_non_seamless_cubes(VkPhysicalDevice pd) {
+  uint32_t n = 0;
+  if (vkEnumerateDeviceExtensionProperties(pd, nullptr, &n, nullptr) != VK_SUCCESS) return false;
+  std::vector<VkExtensionProperties> extensions(n);
+  if (vkEnumerateDeviceExtensionProperties(pd, nullptr, &n, extensions.data()) != VK_SUCCESS)
+    return false;
+  extensions.resize(n);
+  const bool listed =
+      std::any_of(extensions.begin(), extensions.end(), [](const VkExtensionProperties& e) {
+        return std::strcmp(e.extensionName, VK_EXT_NON_SEAMLESS_CUBE_MAP_EXTENSION_NAME) == 0;
+      });
+  if (!listed) return false;
+  VkPhysicalDeviceNonSeamlessCubeMapFeaturesEXT feature{};
+  feature.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_NON_SEAMLESS_CUBE_MAP_FEATURES_EXT;
+  VkPhysicalDeviceFeatures2 features{};
+  features.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
+  features.pNext = &feature;
+  vkGetPhysicalDeviceFeatures2(pd, &features); // core in Vulkan 1.1, which tierlift requires
+  return feature.nonSeamlessCubeMap == VK_TRUE;
+}
+
 std::string lower(std::string s) {
   for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return s;
@@ -222,7 +245,7 @@ ir::Status choose_physical_device(Device::Impl& impl, const DeviceOptions& optio
 }
 
 // The logical device with one graphics queue, and its command pool.
-ir::Status create_logical_device(Device::Impl& impl) {
+ir::Status create_logical_device(Device::Impl& impl, const DeviceOptions& options) {
   uint32_t qcount = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(impl.physical, &qcount, nullptr);
   std::vector<VkQueueFamilyProperties> families(qcount);
@@ -257,6 +280,18 @@ ir::Status create_logical_device(Device::Impl& impl) {
   wanted.fragmentStoresAndAtomics = supported.fragmentStoresAndAtomics;
   impl.fragment_stores = supported.fragmentStoresAndAtomics == VK_TRUE;
   dci.pEnabledFeatures = &wanted;
+  // Direct3D 9 filters each cube face on its own (NUMERICS.md T4); Vulkan filters across face
+  // edges unless this extension is enabled and the sampler asks (pipeline.cpp).
+  const char* non_seamless = VK_EXT_NON_SEAMLESS_CUBE_MAP_EXTENSION_NAME;
+  VkPhysicalDeviceNonSeamlessCubeMapFeaturesEXT cube_feature{};
+  cube_feature.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_NON_SEAMLESS_CUBE_MAP_FEATURES_EXT;
+  cube_feature.nonSeamlessCubeMap = VK_TRUE;
+  impl.cube_faces_alone = options.per_face_cubes && offers_non_seamless_cubes(impl.physical);
+  if (impl.cube_faces_alone) {
+    dci.enabledExtensionCount = 1;
+    dci.ppEnabledExtensionNames = &non_seamless;
+    dci.pNext = &cube_feature;
+  }
   VkResult r = vkCreateDevice(impl.physical, &dci, nullptr, &impl.device);
   if (r != VK_SUCCESS) {
     impl.device = VK_NULL_HANDLE;
@@ -284,7 +319,7 @@ ir::Result<std::unique_ptr<Device>> Device::create(const DeviceOptions& options)
   auto impl = std::make_unique<Impl>();
   if (ir::Status s = create_instance(*impl, options); !s) return s.failure();
   if (ir::Status s = choose_physical_device(*impl, options); !s) return s.failure();
-  if (ir::Status s = create_logical_device(*impl); !s) return s.failure();
+  if (ir::Status s = create_logical_device(*impl, options); !s) return s.failure();
   impl->on_destroyed = options.on_destroyed; // a device that was never made has nothing to report
   std::unique_ptr<Device> device(new Device(std::move(impl)));
   // Read every RGBA8 level once, undecoded, and keep the cheapest decode that is exact for
@@ -309,6 +344,10 @@ uint32_t Device::subtexel_bits() const {
 }
 std::string Device::unorm8_reads() const {
   return impl_->unorm8_in_place ? codegen::unorm8_decode_name(impl_->unorm8_decode) : "float copy";
+}
+
+bool Device::cube_faces_filtered_alone() const {
+  return impl_->cube_faces_alone;
 }
 
 std::vector<std::string> Device::messages() const {

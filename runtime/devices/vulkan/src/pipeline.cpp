@@ -187,18 +187,11 @@ void set_mip_state(const pass::MipState& mip, uint32_t levels, VkSamplerCreateIn
   ci.mipLodBias = last == 0 ? 0.0f : mip.lod_bias;
 }
 
-} // namespace
-
-ir::Status create_sampler(Device::Impl& d, Cleanup& cleanup, const pass::SamplerState& s,
-                          uint32_t levels, VkSampler& out) {
-  VkSamplerCreateInfo ci{};
-  ci.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
-  VkFilter f = s.filter == pass::Filter::Linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
-  ci.magFilter = ci.minFilter = f;
-  ci.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+// ADDRESSU/V/W and the border colour of a 2D or volume sampler.
+ir::Status set_address_modes(const pass::SamplerState& s, VkSamplerCreateInfo& ci) {
   ci.addressModeU = address_mode(s.address_u);
   ci.addressModeV = address_mode(s.address_v);
-  ci.addressModeW = address_mode(s.address_w); // volumes only; 2D and cube views ignore it
+  ci.addressModeW = address_mode(s.address_w); // volumes only; 2D views ignore it
   if (ci.addressModeU == VK_SAMPLER_ADDRESS_MODE_MAX_ENUM ||
       ci.addressModeV == VK_SAMPLER_ADDRESS_MODE_MAX_ENUM ||
       ci.addressModeW == VK_SAMPLER_ADDRESS_MODE_MAX_ENUM)
@@ -215,7 +208,29 @@ ir::Status create_sampler(Device::Impl& d, Cleanup& cleanup, const pass::Sampler
         fmt::format("the Vulkan device supports border colours (0,0,0,0), (0,0,0,1) and "
                     "(1,1,1,1) only, not ({},{},{},{})",
                     b[0], b[1], b[2], b[3]));
+  return ir::ok_status();
+}
+
+} // namespace
+
+ir::Status create_sampler(Device::Impl& d, Cleanup& cleanup, const pass::SamplerState& s,
+                          uint32_t levels, pass::TextureShape shape, VkSampler& out) {
+  VkSamplerCreateInfo ci{};
+  ci.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
+  VkFilter f = s.filter == pass::Filter::Linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
+  ci.magFilter = ci.minFilter = f;
+  ci.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
   set_mip_state(s.mip, levels, ci);
+  if (shape == pass::TextureShape::Cube) {
+    // Direct3D 9 ignores ADDRESSU/V (and so the border colour) on a cube and filters each face
+    // on its own (NUMERICS.md T4). A non-seamless cube sampler wraps by its address modes, so
+    // they are edge clamping, as the CPU device reads a face.
+    ci.addressModeU = ci.addressModeV = ci.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    ci.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
+    if (d.cube_faces_alone) ci.flags |= VK_SAMPLER_CREATE_NON_SEAMLESS_CUBE_MAP_BIT_EXT;
+  } else if (ir::Status err = set_address_modes(s, ci); !err) {
+    return err;
+  }
   VkResult r = vkCreateSampler(d.device, &ci, nullptr, &out);
   if (r != VK_SUCCESS) return draw_failure(vk_error("vkCreateSampler", r));
   cleanup.destroy_later(d.device, out, vkDestroySampler);

@@ -21,10 +21,12 @@ ir::Status create_render_pass(Device::Impl& d, Cleanup& cleanup,
 // `attachments`: the colour targets in order, then the stencil buffer if the pass has one.
 ir::Status create_framebuffer(Device::Impl& d, Cleanup& cleanup, VkRenderPass rp,
                               const std::vector<const Image2D*>& attachments, VkFramebuffer& out);
-// D3D9 sampler state → VkSampler (one level). Errors for MirrorOnce and border colours other
-// than transparent black, opaque black and opaque white.
+// D3D9 sampler state → VkSampler (`levels` mip levels) for an image of `shape`. Errors for
+// MirrorOnce and border colours other than transparent black, opaque black and opaque white.
+// A cube's sampler clamps at the face edges whatever ADDRESSU/V say, and filters each face on
+// its own where the device allows (Device::Impl::cube_faces_alone; NUMERICS.md T4).
 ir::Status create_sampler(Device::Impl& d, Cleanup& cleanup, const pass::SamplerState& s,
-                          uint32_t levels, VkSampler& out);
+                          uint32_t levels, pass::TextureShape shape, VkSampler& out);
 
 struct PipelineDesc {
   const codegen::ShaderModule* vs = nullptr;

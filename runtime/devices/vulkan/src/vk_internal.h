@@ -57,6 +57,9 @@ struct Device::Impl {
   // VkPhysicalDeviceFeatures::fragmentStoresAndAtomics, enabled where the device has it: a
   // traced pixel module (codegen::TracePixel) writes a storage buffer.
   bool fragment_stores = false;
+  // VK_EXT_non_seamless_cube_map enabled (DeviceOptions::per_face_cubes and the device offers
+  // it): cube samplers filter each face on its own. false: a LINEAR cube read is refused.
+  bool cube_faces_alone = false;
 
   std::unique_ptr<Unorm8Converter> unorm8; // created on first use
   // pipeline_cache.h: created on first use, saved when pipelines were added.

@@ -9,8 +9,8 @@
 namespace tierlift::cpu {
 namespace {
 
-// The face's sampler: Direct3D 9 and Vulkan both ignore ADDRESSU/V on a cube and clamp within
-// the face (Vulkan's seamless filtering across edges is the documented exception, NUMERICS.md).
+// The face's sampler: Direct3D 9 ignores ADDRESSU/V on a cube and filters each face on its own,
+// clamped at its edges (NUMERICS.md T4; the Vulkan device asks the same of its cube samplers).
 SamplerState face_sampler(const SamplerState& s) {
   SamplerState f = s;
   f.address_u = f.address_v = AddressMode::Clamp;

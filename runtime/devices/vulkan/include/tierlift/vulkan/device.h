@@ -21,7 +21,9 @@
 //   * Textures: each bound stage's img::Image uploaded as R32G32B32A32_SFLOAT; unbound
 //     stages get a 1×1 (0, 0, 0, 1) texture. Samplers: point/linear, wrap/mirror/clamp/
 //     border with D3D9's transparent black border (opaque black/white also map; any other
-//     border colour or MirrorOnce is an error). One mip level, unnormalised LOD 0.
+//     border colour or MirrorOnce is an error). One mip level, unnormalised LOD 0. Cube
+//     samplers filter each face on its own (VK_EXT_non_seamless_cube_map, clamped at the
+//     edges; cube_faces_filtered_alone()).
 //   * Constants: codegen::pack_uniforms with the pass's ConstantBanks and bump-env states.
 // Nothing throws: every failure is returned as an ir::Result whose error is about "vulkan"
 // (rule kDrawRule for a draw).
@@ -76,6 +78,12 @@ struct DeviceOptions {
   // a compute shader, as on a device where no decode is exact (unorm8_reads() "float copy";
   // tests cover it on lavapipe).
   bool unorm8_in_place = true;
+  // Filter each cube face on its own, clamped at its edges, as Direct3D 9 and the CPU device do
+  // (NUMERICS.md T4), through VK_EXT_non_seamless_cube_map where the device offers it. A device
+  // without it (or false here) filters across face edges, as Vulkan does by default, so a
+  // LINEAR cube read would differ near the edges: such a draw is refused in words, and POINT
+  // cube reads (clamped within the face either way) still draw. false: tests of the refusal.
+  bool per_face_cubes = true;
   // Called once when the device is destroyed, after vkDestroyDevice and vkDestroyInstance,
   // with every message not cleared before. With `validation` these include the layer's
   // report of Vulkan objects created and never destroyed (it checks at both calls); tests
@@ -109,6 +117,9 @@ public:
   // is), "two multiplies" (lavapipe), "round and rebuild", or "float copy" (no decode is
   // exact here: such textures are read through their exact RGBA32F copy).
   std::string unorm8_reads() const;
+  // Whether cube samplers filter each face on its own (VK_EXT_non_seamless_cube_map enabled,
+  // DeviceOptions::per_face_cubes). false: LINEAR cube reads are refused (NUMERICS.md T4).
+  bool cube_faces_filtered_alone() const;
 
   // Draws `pass` into `target`: its format selects the attachment format, its current
   // pixels are the destination blending reads; on success it holds the stored result and
