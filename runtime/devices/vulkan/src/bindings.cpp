@@ -66,8 +66,9 @@ ir::Status add_textures(Device::Impl& d, Cleanup& cleanup, const codegen::Compil
     if (shape == pass::TextureShape::Cube && tb.sampler.filter == pass::Filter::Linear &&
         !d.cube_faces_alone)
       return draw_failure(fmt::format(
-          "s{}: a LINEAR cube read is refused: {} filters cube maps across face edges (it lacks "
-          "VK_EXT_non_seamless_cube_map), Direct3D 9 and the CPU device each face on its own",
+          "s{}: a LINEAR cube read is refused: {} filters cube maps across face edges here "
+          "(VK_EXT_non_seamless_cube_map not offered or not enabled), while Direct3D 9 and the "
+          "CPU device filter each face on its own",
           si.stage, d.props.deviceName));
     Resources::Texture t;
     t.binding = si.binding;
