@@ -15,6 +15,7 @@
 #include "tierlift/codegen/emitter.h"
 #include "tierlift/ir/numerics.h"
 #include "tierlift/ir/profile.h"
+#include "tierlift/ir/sm3_interface.h"
 #include "tierlift/ir/source_modifiers.h"
 
 namespace tierlift::codegen {
@@ -108,13 +109,7 @@ Id Emitter::load_const(uint32_t index, const std::optional<ir::RelAddr>& rel) {
     return value;
   }
   const_relative_ = true;
-  Id offset;
-  if (rel->file == RegFile::Loop) {
-    offset = b.op(Op::OpLoad, t_int, {loop_var()});
-  } else {
-    const Id a0 = b.op(Op::OpLoad, t_ivec4, {register_var(RegFile::Addr, 0)});
-    offset = b.op(Op::OpCompositeExtract, t_int, {a0, static_cast<uint32_t>(rel->component & 3)});
-  }
+  const Id offset = relative_offset(*rel);
   const auto limit = static_cast<int32_t>(relative_limit());
   const Id idx = b.op(Op::OpIAdd, t_int, {b.const_int(static_cast<int32_t>(index)), offset});
   const Id ge0 = b.op(Op::OpSGreaterThanEqual, t_bool, {idx, b.const_int(0)});
@@ -131,6 +126,30 @@ Id Emitter::load_const(uint32_t index, const std::optional<ir::RelAddr>& rel) {
   }
   // SPIR-V 1.3 selects need a condition as wide as the result.
   return b.op(Op::OpSelect, t_vec4, {bsplat(in_range), value, vec4_const(0, 0, 0, 0)});
+}
+
+Id Emitter::relative_offset(const ir::RelAddr& rel) {
+  if (rel.file == RegFile::Loop) return b.op(Op::OpLoad, t_int, {loop_var()});
+  const Id a0 = b.op(Op::OpLoad, t_ivec4, {register_var(RegFile::Addr, 0)});
+  return b.op(Op::OpCompositeExtract, t_int, {a0, static_cast<uint32_t>(rel.component & 3)});
+}
+
+// v[aL + n] in a vs_3_0/ps_3_0: the declared inputs by v# number (plan.relative_inputs),
+// each read as a plain read of its linked register would read it, chosen by the index; an
+// index outside the table or on an undeclared v# reads (0, 0, 0, 0) (NUMERICS.md F13). A
+// select chain rather than a Private array: a program declares at most 16 inputs.
+Id Emitter::load_relative_input(uint32_t index, const ir::RelAddr& rel) {
+  const Id idx =
+      b.op(Op::OpIAdd, t_int, {b.const_int(static_cast<int32_t>(index)), relative_offset(rel)});
+  Id value = vec4_const(0, 0, 0, 0);
+  for (size_t k = 0; k < plan.relative_inputs.size(); ++k) {
+    const auto& link = plan.relative_inputs[k];
+    if (!link) continue;
+    const Id hit = b.op(Op::OpIEqual, t_bool, {idx, b.const_int(static_cast<int32_t>(k))});
+    const Id v = load_register(link->first, link->second, std::nullopt);
+    value = b.op(Op::OpSelect, t_vec4, {bsplat(hit), v, value});
+  }
+  return value;
 }
 
 uint32_t Emitter::relative_limit() const {
@@ -171,9 +190,13 @@ Id Emitter::load_register(RegFile file, uint32_t index, const std::optional<ir::
   switch (file) {
   case RegFile::Const: return load_const(index, rel);
   case RegFile::Input: {
+    if (rel) return load_relative_input(index, *rel);
     const Id v = b.op(Op::OpLoad, t_vec4, {input_var(file, index)});
-    // Pixel colour inputs are saturated on input in every pixel profile (NUMERICS.md 26).
-    return prog.stage() == ir::ShaderStage::Pixel ? rule::saturate(arith(4), v) : v;
+    // Pixel colour inputs are saturated on input before ps_3_0 (NUMERICS.md 26); a ps_3_0
+    // colour is a float register (F6).
+    const bool saturated =
+        prog.stage() == ir::ShaderStage::Pixel && ir::saturates_colors(prog.profile);
+    return saturated ? rule::saturate(arith(4), v) : v;
   }
   case RegFile::Texture:
     // ps_1_1…1_3: t# are read/write registers filled by texture instructions; later

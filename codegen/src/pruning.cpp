@@ -32,6 +32,8 @@ std::string describe(const ir::Instruction& ins) {
 
 void note_unread(const ir::Program& prog, const std::vector<bool>& dead, ir::ShaderStage stage,
                  std::vector<PrunedItem>& out) {
+  // v[aL + n] may read any declared input: none is reported unread.
+  const bool inputs_relative = ir::reads_inputs_relatively(prog);
   std::set<Reg> read_live, read_dead;
   bool relative = false;
   for (size_t i = 0; i < prog.code.size(); ++i) {
@@ -45,7 +47,7 @@ void note_unread(const ir::Program& prog, const std::vector<bool>& dead, ir::Sha
                      "its result is never used", prog.code[i].loc});
   for (const ir::Declaration& d : prog.decls) {
     const RegFile f = d.reg.file;
-    if (f != RegFile::Input && f != RegFile::Texture) continue;
+    if ((f != RegFile::Input && f != RegFile::Texture) || inputs_relative) continue;
     Reg key{f, d.reg.index};
     bool used =
         read_live.count(key) > 0 || read_live.count({f, ir::kTexCoordKey + d.reg.index}) > 0;
@@ -74,16 +76,27 @@ bool prunable(const ir::Program& p) {
 }
 
 // compile_pair after the checks, on programs linked by semantic.
+// `*_links`: ir::relative_input_links of each program before linking.
 std::optional<CompiledPair> compile_linked_pair(const ir::Program& vs, const ir::Program& ps,
+                                                ir::RelativeLinks vs_links,
+                                                ir::RelativeLinks ps_links,
                                                 const CodegenOptions& options,
                                                 ir::DiagnosticSink& diags) {
   CompiledPair pair;
   EmitPlan ps_plan;
   ps_plan.skip = prunable(ps) ? ir::dead_instructions(ps, ir::pixel_live_out(ps))
                               : std::vector<bool>(ps.code.size(), false);
-  const std::set<Reg> wanted = ir::live_inputs(ps, ps_plan.skip);
+  std::set<Reg> wanted = ir::live_inputs(ps, ps_plan.skip);
+  // v[aL + n] may read any input the pixel program declares.
+  if (ir::reads_inputs_relatively(ps))
+    for (const auto& link : ps_links)
+      if (link)
+        wanted.insert(
+            {link->first == RegFile::Input ? RegFile::AttrOut : RegFile::TexCrdOut, link->second});
+  ps_plan.relative_inputs = std::move(ps_links);
 
   EmitPlan vs_plan;
+  vs_plan.relative_inputs = std::move(vs_links);
   vs_plan.vs_outputs = wanted;
   std::set<Reg> written;
   for (const ir::Instruction& ins : vs.code)
@@ -147,7 +160,8 @@ std::optional<CompiledPair> compile_pair(const ir::Program& vs_listing,
   // (a vs_2_0's oFog moved to where a ps_3_0 reads fog0 first).
   const ir::Program vs_linked = ir::link_by_semantic(ir::feed_fog(vs_listing, ps_listing));
   const ir::Program ps_linked = ir::link_by_semantic(ps_listing);
-  return compile_linked_pair(vs_linked, ps_linked, options, diags);
+  return compile_linked_pair(vs_linked, ps_linked, ir::relative_input_links(vs_listing),
+                             ir::relative_input_links(ps_listing), options, diags);
 }
 
 } // namespace tierlift::codegen

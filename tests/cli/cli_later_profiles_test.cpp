@@ -69,17 +69,25 @@ TEST(CliLaterProfiles, SpirvAndRunTakeThemAndRefuseGradientsWithAPosition) {
   EXPECT_EQ(run.exit_code, 0) << run.err;
   EXPECT_TRUE(std::filesystem::exists(s.file("out.png")));
   EXPECT_EQ(run_cli("spirv " + s.file("v.vsh", kVs30) + " -o " + s.file("v.spv")).exit_code, 0);
-  // An input addressed relatively does not run yet: refused at the operand, nothing written.
+  // An input read relatively runs (NUMERICS.md F13); an output written relatively is refused
+  // at the operand, nothing written.
   const std::string rel =
       s.file("g.psh", "ps_3_0\ndcl_texcoord0 v0\ndcl_texcoord1 v1\ndefi i0, 2, 0, 1, 0\n"
                       "mov r0, c0\nloop aL, i0\nadd r0, r0, v0[aL]\nendloop\nmov oC0, r0\n");
-  auto g = run_cli("run --ps " + rel + " --backend cpu -o " + s.file("g.png"));
-  EXPECT_EQ(g.exit_code, 1);
-  EXPECT_NE(g.err.find("g.psh:7:13: error: not supported yet by the interpreter: v0 addressed "
-                       "relatively (only c# is)"),
-            std::string::npos)
-      << g.err;
-  EXPECT_FALSE(std::filesystem::exists(s.file("g.png")));
+  auto g =
+      run_cli("run --ps " + rel + " --const ps:c0=0,0,0,0 --backend cpu -o " + s.file("g.png"));
+  EXPECT_EQ(g.exit_code, 0) << g.err;
+  EXPECT_TRUE(std::filesystem::exists(s.file("g.png")));
+  const std::string out_rel =
+      s.file("h.vsh", "vs_3_0\ndcl_position v0\ndcl_position o0\ndcl_texcoord0 o1\n"
+                      "defi i0, 1, 1, 1, 0\nmov o0, v0\nloop aL, i0\nmov o[aL], v0\nendloop\n");
+  auto h = run_cli("spirv " + out_rel + " -o " + s.file("h.spv"));
+  EXPECT_EQ(h.exit_code, 1);
+  EXPECT_NE(h.err.find("h.vsh:8:5: error: not supported yet by SPIR-V: o"), std::string::npos)
+      << h.err;
+  EXPECT_NE(h.err.find("addressed relatively (a vs_3_0's o# link by semantic"), std::string::npos)
+      << h.err;
+  EXPECT_FALSE(std::filesystem::exists(s.file("h.spv")));
 }
 
 TEST(CliLaterProfiles, ProfilePresetsOfFxc) {

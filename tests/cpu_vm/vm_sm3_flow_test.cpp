@@ -143,13 +143,26 @@ TEST(VmSm3Flow, VposAndVface) {
 }
 
 TEST(VmSm3Flow, InputsLinkBySemantic) {
-  // dcl_texcoord2 v0 reads TC2, dcl_color1 v1 reads the second colour (saturated).
+  // dcl_texcoord2 v0 reads TC2, dcl_color1 v1 reads the second colour as it comes: a ps_3_0
+  // colour input is a float register, not saturated (NUMERICS.md F6): (1 + 0.5, 2 + 2,
+  // 3 + 0.25, 4 − 1).
   ShaderVM vm =
       vm_of(parse("ps_3_0\ndcl_texcoord2 v0\ndcl_color1 v1\nmov r0, v0\nadd oC0, r0, v1\n"), {});
   PixelInput in;
   in.tex[2] = {1, 2, 3, 4};
   in.color[1] = {0.5f, 2, 0.25f, -1};
-  EXPECT_VEC4(run_ps(vm, in).color[0], 1.5f, 3, 3.25f, 4);
+  EXPECT_VEC4(run_ps(vm, in).color[0], 1.5f, 4, 3.25f, 3);
+}
+
+TEST(VmSm3Flow, ColourInputsAreSaturatedBeforePs30Only) {
+  // The same colour (−0.5, 2, 0.25, 1) read as v0: a ps_2_0 reads it saturated (rule 26),
+  // a ps_3_0 as it is (F6).
+  PixelInput in;
+  in.color[0] = {-0.5f, 2, 0.25f, 1};
+  ShaderVM ps20 = vm_of(parse("ps_2_0\ndcl v0\nmov oC0, v0\n"), {});
+  ShaderVM ps30 = vm_of(parse("ps_3_0\ndcl_color0 v0\nmov oC0, v0\n"), {});
+  EXPECT_VEC4(run_ps(ps20, in).color[0], 0, 1, 0.25f, 1);
+  EXPECT_VEC4(run_ps(ps30, in).color[0], -0.5f, 2, 0.25f, 1);
 }
 
 TEST(VmSm3Flow, OutputsLinkBySemantic) {
@@ -187,4 +200,52 @@ TEST(VmSm3Flow, PredicatedTexkillTestsTheComponentsWhosePredicateHolds) {
     EXPECT_EQ(run_ps(vm, {}, nullptr, bank({r0, c.p, zero})).discarded, c.discarded)
         << *c.text << " p " << c.p[0] << c.p[1] << c.p[2] << c.p[3];
   }
+}
+
+// NUMERICS.md F13: v[aL + n] indexes the declared inputs by v# number, whatever registers
+// their semantics link to. v0 = texcoord0 (t0), v1 = color0 (v0, not saturated in ps_3_0),
+// v2 = texcoord3 (t3): aL = 0, 1, 2 sums (1 + 10 + 100, 2 + 20 + 200, 3 − 30 + 300,
+// 4 + 40 + 400).
+TEST(VmSm3Flow, RelativeInputReadIndexesTheDeclaredInputsByNumber) {
+  ShaderVM vm = vm_of(parse("ps_3_0\ndefi i0, 3, 0, 1, 0\ndef c0, 0, 0, 0, 0\n"
+                            "dcl_texcoord0 v0\ndcl_color0 v1\ndcl_texcoord3 v2\nmov r0, c0\n"
+                            "loop aL, i0\nadd r0, r0, v0[aL]\nendloop\nmov oC0, r0\n"),
+                      {});
+  PixelInput in;
+  in.tex[0] = {1, 2, 3, 4};
+  in.color[0] = {10, 20, -30, 40};
+  in.tex[3] = {100, 200, 300, 400};
+  in.tex[1] = {1000, 1000, 1000, 1000}; // linked to no v#: never read
+  EXPECT_VEC4(run_ps(vm, in).color[0], 111, 222, 273, 444);
+}
+
+// NUMERICS.md F13: an index on an undeclared v# or outside v0..v9 reads (0, 0, 0, 0). The
+// first loop (aL = 0, 3, 6, 9) reads v0 (texcoord0), v3 and v6 (undeclared), v9 (texcoord1);
+// the second (aL = 0, 1) v9 and v10, beyond ps_3_0's ten: t0 + 2·t1.
+TEST(VmSm3Flow, RelativeInputReadOutsideTheDeclaredOnesIsZero) {
+  ShaderVM vm = vm_of(parse("ps_3_0\ndefi i0, 4, 0, 3, 0\ndefi i1, 2, 0, 1, 0\n"
+                            "def c0, 0, 0, 0, 0\ndcl_texcoord0 v0\ndcl_texcoord1 v9\n"
+                            "mov r0, c0\nloop aL, i0\nadd r0, r0, v0[aL]\nendloop\n"
+                            "loop aL, i1\nadd r0, r0, v9[aL]\nendloop\nmov oC0, r0\n"),
+                      {});
+  PixelInput in;
+  for (int t = 0; t < 8; ++t) in.tex[static_cast<size_t>(t)] = {1000, 1000, 1000, 1000};
+  in.tex[0] = {1, 2, 3, 4};
+  in.tex[1] = {10, 20, 30, 40};
+  EXPECT_VEC4(run_ps(vm, in).color[0], 21, 42, 63, 84);
+}
+
+// A vs_3_0 reads its inputs relatively too (v[aL + n] with aL only): aL = 1, 2 adds v1 + v2
+// into the texcoord0 output o1.
+TEST(VmSm3Flow, Vs30RelativeInputRead) {
+  ShaderVM vm = vm_of(parse("vs_3_0\ndefi i0, 2, 1, 1, 0\ndef c0, 0, 0, 0, 0\n"
+                            "dcl_position v0\ndcl_texcoord0 v1\ndcl_texcoord1 v2\n"
+                            "dcl_position o0\ndcl_texcoord0 o1\nmov o0, v0\nmov r0, c0\n"
+                            "loop aL, i0\nadd r0, r0, v[aL]\nendloop\nmov o1, r0\n"),
+                      {});
+  VertexInput in;
+  in.v[0] = {0, 0, 0, 1};
+  in.v[1] = {1, 2, 3, 4};
+  in.v[2] = {0.5f, 0.25f, 0.125f, 8};
+  EXPECT_VEC4(run_vs(vm, in).tex[0], 1.5f, 2.25f, 3.125f, 12);
 }

@@ -122,7 +122,8 @@ TEST(LaterProfiles, CapsPresets) {
 
 TEST(LaterProfiles, WhatDoesNotRunYetIsRefusedWithAPosition) {
   // 2.x and 3.0 run on both devices (mov, setp, ...), except what each error names: here
-  // a predicated break and psize0 read by a pixel program (a vertex output only: NUMERICS.md F6).
+  // psize0 read by a pixel program (a vertex output only: NUMERICS.md F6). A predicated break
+  // is not Direct3D 9 at all: validate_ir refuses it (PredicatedFlowControlIsNotDirect3D9).
   Program p;
   p.profile = Profile::ps_3_0;
   p.version_loc = {1, 1, 1, 6};
@@ -142,22 +143,12 @@ TEST(LaterProfiles, WhatDoesNotRunYetIsRefusedWithAPosition) {
     EXPECT_TRUE(check_executable(p, "SPIR-V").ok());
     p.code.pop_back();
   }
-  Instruction kill; // a predicated texkill runs (NUMERICS.md F3); a predicated break does not
+  Instruction kill; // a predicated texkill runs (NUMERICS.md F3)
   kill.op = Opcode::TexKill;
   kill.pred.emplace();
   kill.loc = {1, 4, 2, 5};
   p.code.push_back(kill);
   EXPECT_TRUE(check_executable(p, "SPIR-V").ok());
-  p.code.back().op = Opcode::Break;
-  Status s = check_executable(p, "SPIR-V");
-  ASSERT_FALSE(s.ok());
-  ASSERT_EQ(s.diagnostics().size(), 1u);
-  EXPECT_EQ(s.diagnostics()[0].loc.line, 4u);
-  EXPECT_EQ(s.diagnostics()[0].loc.col, 2u);
-  EXPECT_NE(
-      s.diagnostics()[0].message.find("not supported yet by SPIR-V: predicated break in ps_3_0"),
-      std::string::npos)
-      << s.diagnostics()[0].message;
   p.code.pop_back();
   Declaration fog; // fog0 runs (an extra semantic, NUMERICS.md F6); psize0 is vertex-only
   fog.reg.file = RegFile::Input;
@@ -171,7 +162,7 @@ TEST(LaterProfiles, WhatDoesNotRunYetIsRefusedWithAPosition) {
   psize.usage = DeclUsage::PSize;
   psize.loc = {1, 6, 1, 4};
   p.decls.push_back(psize);
-  s = check_executable(p, "the interpreter");
+  const Status s = check_executable(p, "the interpreter");
   ASSERT_FALSE(s.ok());
   EXPECT_EQ(s.diagnostics()[0].loc.line, 6u);
   EXPECT_NE(s.diagnostics()[0].message.find("the semantic psize0 in a pixel program"),
@@ -295,8 +286,9 @@ TEST(LaterProfiles, Fog0IsAnExtraSemanticAndAVs20FeedsItsOFog) {
   EXPECT_EQ(feed_fog(vs20, no_fog).code[0].dst->file, RegFile::RastOut);
 }
 
-// vs_3_0 may address v# and o# with aL; the devices do not run that yet (only c#).
-TEST(LaterProfiles, RelativeInputsAndOutputsAreRefusedAtTheOperand) {
+// vs_3_0 may address v# and o# with aL: relative v# reads run (through the table of declared
+// inputs, NUMERICS.md F13), relative o# writes are refused at the operand.
+TEST(LaterProfiles, RelativeOutputsAreRefusedAtTheOperandRelativeInputsRun) {
   Program p;
   p.profile = Profile::vs_3_0;
   Instruction mov;
@@ -309,12 +301,69 @@ TEST(LaterProfiles, RelativeInputsAndOutputsAreRefusedAtTheOperand) {
   v.loc = {1, 2, 9, 7};
   mov.src.push_back(v);
   p.code.push_back(mov);
+  EXPECT_TRUE(check_executable(p, "SPIR-V").ok()); // v[aL + 1] runs
+  p.code[0].src[0].file = RegFile::Const;          // c[aL + 1] runs
+  EXPECT_TRUE(check_executable(p, "SPIR-V").ok());
+  p.code[0].dst = DstOperand{RegFile::Output, 1, kFullMask, {1, 2, 5, 2}};
+  p.code[0].dst->rel = RelAddr{RegFile::Loop, 0, {1, 2, 7, 2}};
   Status s = check_executable(p, "SPIR-V");
   ASSERT_FALSE(s.ok());
-  EXPECT_EQ(s.diagnostics()[0].loc.col, 9u);
-  EXPECT_NE(s.diagnostics()[0].message.find("v1 addressed relatively"), std::string::npos);
-  p.code[0].src[0].file = RegFile::Const; // c[aL + 1] runs
-  EXPECT_TRUE(check_executable(p, "SPIR-V").ok());
+  EXPECT_EQ(s.diagnostics()[0].loc.col, 5u);
+  EXPECT_NE(s.diagnostics()[0].message.find("o1 addressed relatively (a vs_3_0's o# link by "
+                                            "semantic"),
+            std::string::npos)
+      << s.diagnostics()[0].message;
+}
+
+// Direct3D 9 predicates arithmetic and texture instructions only: a predicated break, built
+// without the assembler's validator, is refused by the IR validator every device runs first,
+// at the predicate, as a Direct3D 9 rule (not as something missing).
+TEST(LaterProfiles, PredicatedFlowControlIsNotDirect3D9) {
+  Program p;
+  p.profile = Profile::ps_3_0;
+  Instruction brk;
+  brk.op = Opcode::Break;
+  brk.loc = {1, 4, 8, 13};
+  SrcOperand pred;
+  pred.file = RegFile::Predicate;
+  pred.loc = {1, 4, 2, 5};
+  brk.pred = pred;
+  p.code.push_back(brk);
+  const Status s = validate_ir(p);
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.diagnostics()[0].loc.col, 2u);
+  EXPECT_NE(s.diagnostics()[0].message.find(
+                "break cannot be predicated: Direct3D 9 predicates arithmetic and texture "
+                "instructions only"),
+            std::string::npos)
+      << s.diagnostics()[0].message;
+  p.code[0].pred.reset(); // break outside a loop is the assembler's to refuse, not this one's
+  EXPECT_TRUE(validate_ir(p).ok());
+}
+
+// relative_input_links: a ps_3_0's v# by number → the registers their semantics link to; a
+// vs_3_0's v# → themselves; undeclared numbers empty; other profiles no table.
+TEST(LaterProfiles, RelativeInputLinksFollowTheSemantics) {
+  Program ps;
+  ps.profile = Profile::ps_3_0;
+  ps.decls = {linked(RegFile::Input, 0, DeclUsage::TexCoord, 0, 1),
+              linked(RegFile::Input, 1, DeclUsage::Color, 0, 2),
+              linked(RegFile::Input, 2, DeclUsage::TexCoord, 3, 3)};
+  const RelativeLinks l = relative_input_links(ps);
+  ASSERT_EQ(l.size(), 10u);
+  EXPECT_EQ(l[0], (std::pair{RegFile::Texture, 0u}));
+  EXPECT_EQ(l[1], (std::pair{RegFile::Input, 0u}));
+  EXPECT_EQ(l[2], (std::pair{RegFile::Texture, 3u}));
+  EXPECT_FALSE(l[3].has_value());
+  Program vs;
+  vs.profile = Profile::vs_3_0;
+  vs.decls = {linked(RegFile::Input, 4, DeclUsage::Normal, 0, 1)};
+  const RelativeLinks v = relative_input_links(vs);
+  ASSERT_EQ(v.size(), 16u);
+  EXPECT_EQ(v[4], (std::pair{RegFile::Input, 4u}));
+  EXPECT_FALSE(v[0].has_value());
+  vs.profile = Profile::vs_2_0;
+  EXPECT_TRUE(relative_input_links(vs).empty());
 }
 
 // texldl runs in ps_3_0 (every texture has one level); vs_3_0's vertex texture fetch has no

@@ -307,7 +307,8 @@ const RuleCase kCases[] = {
      "predicate",
      4,
      1,
-     {"rep cannot be predicated"},
+     {"rep cannot be predicated: Direct3D 9 predicates arithmetic and texture instructions "
+      "only"},
      "vs_3_0\ndcl_position o0\nsetp_gt p0, c0, c1\nif p0.x\nendif\nmov o0, c0\n"},
 };
 

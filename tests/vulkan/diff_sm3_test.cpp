@@ -285,6 +285,69 @@ TEST_F(VulkanTest, Fog0ReadsTheScalarOfAVs20) {
   }
 }
 
+// NUMERICS.md F6 and rule 26: a colour is clamped to [0, 1] only where a stage before 3.0
+// holds it: a vs_2_0 writes oD0 saturated, a ps_2_0 reads v0 saturated, a vs_3_0 → ps_3_0
+// pair passes it as it is. The vertex program writes the flat colour (−0.5, 2, 0.25, 1), so
+// every pixel holds the closed form on both devices.
+TEST_F(VulkanTest, ColourIsClampedOnlyWhereAStageBefore30HoldsIt) {
+  const std::string vs30 = "vs_3_0\ndef c0, -0.5, 2, 0.25, 1\ndcl_position v0\ndcl_position o0\n"
+                           "dcl_color0 o1\nmov o0, v0\nmov o1, c0\n";
+  const std::string vs20 =
+      "vs_2_0\ndef c0, -0.5, 2, 0.25, 1\ndcl_position v0\nmov oPos, v0\nmov oD0, c0\n";
+  const std::string ps30 = "ps_3_0\ndcl_color0 v0\nmov oC0, v0\n";
+  const std::string ps20 = "ps_2_0\ndcl v0\nmov oC0, v0\n";
+  struct Pair {
+    const std::string* vs;
+    const std::string* ps;
+    std::array<float, 4> want;
+  };
+  const Pair pairs[] = {{&vs30, &ps30, {-0.5f, 2, 0.25f, 1}},
+                        {&vs20, &ps30, {0, 1, 0.25f, 1}},
+                        {&vs30, &ps20, {0, 1, 0.25f, 1}},
+                        {&vs20, &ps20, {0, 1, 0.25f, 1}}};
+  for (const Pair& pair : pairs) {
+    const std::string what = pair.vs->substr(0, 6) + " -> " + pair.ps->substr(0, 6);
+    DiffResult r = run_diff(*dev, *pair.vs, *pair.ps, DiffSetup{});
+    ASSERT_TRUE(r.ok) << what;
+    EXPECT_EQ(r.diff.max_scaled, 0.0) << what << ": " << r.diff.first_bad;
+    for (const img::Image* im : {&r.cpu, &r.vk})
+      for (size_t p = 0; p < im->rgba.size() / 4; ++p)
+        for (int c = 0; c < 4; ++c)
+          ASSERT_EQ(im->rgba[p * 4 + c], pair.want[c]) << what << " pixel " << p << " ." << c;
+  }
+}
+
+// NUMERICS.md F13: a ps_3_0's v[aL + n] indexes its declared inputs by v# number. The first
+// loop (aL = 0..3) reads v0 = texcoord0 (u), v1 = color0 ((−0.5, 2, 0, 1), unclamped between
+// 3.0 stages), v2 = texcoord3 (8v) and v3, undeclared: 0. The second (aL = 9, 10) reads v9 =
+// texcoord5 (4, 4, 4, 4) and v10, beyond ps_3_0's ten: 0. At pixel (x, y) u = (x + ½)/16 and
+// v = (y + ½)/16, so oC0 = (u + 8v + 4) + (−0.5, 2, 0, 1) on both devices.
+TEST_F(VulkanTest, RelativeInputReadsIndexTheDeclaredInputsByNumber) {
+  const std::string vs = "vs_3_0\ndef c0, -0.5, 2, 0, 1\ndef c1, 8, 8, 8, 8\n"
+                         "def c2, 4, 4, 4, 4\ndcl_position v0\ndcl_texcoord v3\n"
+                         "dcl_position o0\ndcl_texcoord0 o1\ndcl_color0 o2\ndcl_texcoord3 o3\n"
+                         "dcl_texcoord5 o4\nmov o0, v0\nmov o1, v3.x\nmov o2, c0\n"
+                         "mul o3, v3.y, c1\nmov o4, c2\n";
+  const std::string ps = "ps_3_0\ndefi i0, 4, 0, 1, 0\ndefi i1, 2, 9, 1, 0\n"
+                         "def c0, 0, 0, 0, 0\ndcl_texcoord0 v0\ndcl_color0 v1\n"
+                         "dcl_texcoord3 v2\ndcl_texcoord5 v9\nmov r0, c0\nloop aL, i0\n"
+                         "add r0, r0, v0[aL]\nendloop\nloop aL, i1\nadd r0, r0, v[aL]\n"
+                         "endloop\nmov oC0, r0\n";
+  DiffResult r = run_diff(*dev, vs, ps, DiffSetup{});
+  ASSERT_TRUE(r.ok);
+  EXPECT_LE(r.diff.max_scaled, 1e-5) << r.diff.first_bad;
+  for (const img::Image* im : {&r.cpu, &r.vk})
+    for (uint32_t y = 0; y < kDiffH; ++y)
+      for (uint32_t x = 0; x < kDiffW; ++x) {
+        const float u = (x + 0.5f) / kDiffW, v = (y + 0.5f) / kDiffH;
+        const float base = u + 8 * v + 4;
+        const float want[4] = {base - 0.5f, base + 2, base, base + 1};
+        const float* px = &im->rgba[(size_t{y} * kDiffW + x) * 4];
+        for (int c = 0; c < 4; ++c)
+          ASSERT_NEAR(px[c], want[c], 1e-5f) << "pixel (" << x << ", " << y << ") ." << c;
+      }
+}
+
 // NUMERICS.md F12: without multisampling `_centroid` samples where a plain input does, the
 // pixel centre (a covered pixel's one sample), on both devices: the interpolated texcoord is
 // the same image bit for bit with and without it.

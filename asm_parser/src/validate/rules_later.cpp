@@ -39,7 +39,9 @@ void check_predicate(Ctx& c, const ir::Instruction& ins) {
   if (!c.caps.predication) no_predication(c, p.loc, "a predicated instruction");
   if (info_of(ins).cls == ir::OpClass::Flow)
     c.error(p.loc, "predicate",
-            fmt::format("{} cannot be predicated (use if p0.x, callnz ..., p0.x or breakp)",
+            fmt::format("{} cannot be predicated: Direct3D 9 predicates arithmetic and texture "
+                        "instructions only (flow control reads p0 as an operand: if p0.x, "
+                        "callnz l#, p0.x, breakp p0.x)",
                         mnemonic(ins)));
   if (p.swizzle != ir::kIdentitySwizzle && !ir::is_replicate(p.swizzle))
     c.error(p.loc, "swizzle",

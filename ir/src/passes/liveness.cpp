@@ -32,7 +32,11 @@ RegisterReads registers_read(const Instruction& ins, Profile p) {
   for (size_t i = 0; i < ins.src.size(); ++i) {
     const SrcOperand& s = ins.src[i];
     const uint32_t rows = source_rows(ins, i);
-    for (uint32_t k = 0; k < rows; ++k) r.regs.push_back({s.file, s.index + k});
+    // A relative v# read (vs_3_0, ps_3_0) reaches the declared inputs through
+    // relative_input_links, not the register its base names: a caller that needs the
+    // inputs read takes them from there (codegen's pruning).
+    if (!(s.rel && s.file == RegFile::Input))
+      for (uint32_t k = 0; k < rows; ++k) r.regs.push_back({s.file, s.index + k});
     if (s.rel) {
       r.const_relative = true;
       r.regs.push_back({s.rel->file, 0});

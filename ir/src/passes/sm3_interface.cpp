@@ -206,9 +206,36 @@ Program link_by_semantic(const Program& program) {
   for (Declaration& d : out.decls) rename(d.reg.file, d.reg.index);
   for (Instruction& ins : out.code) {
     if (ins.dst) rename(ins.dst->file, ins.dst->index);
-    for (SrcOperand& s : ins.src) rename(s.file, s.index);
+    for (SrcOperand& s : ins.src)
+      if (!s.rel) rename(s.file, s.index); // v[aL + n] indexes relative_input_links
   }
   return out;
+}
+
+RelativeLinks relative_input_links(const Program& program) {
+  RelativeLinks out;
+  if (program.profile == Profile::vs_3_0) {
+    out.resize(16);
+    for (const Declaration& d : program.decls)
+      if (d.reg.file == RegFile::Input && d.reg.index < out.size())
+        out[d.reg.index] = std::pair{RegFile::Input, d.reg.index};
+  } else if (program.profile == Profile::ps_3_0) {
+    out.resize(10);
+    for (const auto& [index, reg] : renames(program, RegFile::Input))
+      if (index < out.size()) out[index] = reg;
+  }
+  return out;
+}
+
+bool reads_inputs_relatively(const Program& program) {
+  for (const Instruction& ins : program.code)
+    for (const SrcOperand& s : ins.src)
+      if (s.rel && s.file == RegFile::Input) return true;
+  return false;
+}
+
+bool saturates_colors(Profile profile) {
+  return profile != Profile::vs_3_0 && profile != Profile::ps_3_0;
 }
 
 std::optional<uint32_t> fog_slot(const Program& pixel) {

@@ -72,6 +72,16 @@ void check_instruction(DiagnosticSink& sink, Profile p, const Instruction& ins) 
       sink.error(ins.dst->loc, "ir", fmt::format("{} has an empty write mask", info.mnemonic));
     check_register(sink, p, ins.dst->file, ins.dst->index, ins.dst->loc);
   }
+  // Direct3D 9 predicates arithmetic and texture instructions only ([MS-ASM] setp_comp,
+  // "Applying the Predicate Register"); flow control takes p0 as an operand instead (if p0.x,
+  // callnz l#, p0.x, breakp p0.x). The assembler's validator refuses it too; this guards
+  // programs built or loaded without it.
+  if (ins.pred && info.cls == OpClass::Flow)
+    sink.error(ins.pred->loc.valid() ? ins.pred->loc : ins.loc, "ir",
+               fmt::format("{} cannot be predicated: Direct3D 9 predicates arithmetic and "
+                           "texture instructions only (flow control reads p0 as an operand: "
+                           "if p0.x, callnz l#, p0.x, breakp p0.x)",
+                           info.mnemonic));
   for (size_t k = 0; k < ins.src.size(); ++k) {
     const SrcOperand& s = ins.src[k];
     // Matrix rows must all exist; a relative base only needs to be addressable itself.
@@ -108,7 +118,6 @@ const char* not_yet(const Instruction& ins, ShaderStage stage) {
     break;
   default: break;
   }
-  if (ins.pred && op_info(ins.op).cls == OpClass::Flow) return "a predicate on flow control";
   return nullptr;
 }
 
@@ -131,16 +140,25 @@ Status check_executable(const Program& program, std::string_view backend) {
                fmt::format("not supported yet by {}: {} in {} ({})", backend, what,
                            profile_name(program.profile), why));
   }
-  // Relative addressing of anything but c# (vs_3_0's v[aL + n], o[aL + n]).
+  // Relative addressing: c# everywhere, and a vs_3_0's or ps_3_0's v# read through the table
+  // of its declared inputs (sm3_interface.h relative_input_links). A vs_3_0's o[a0 + n]
+  // writes outputs that link by semantic to 2.0 registers that need not be consecutive, which
+  // neither device indexes yet.
+  const bool sm3 = program.profile == Profile::vs_3_0 || program.profile == Profile::ps_3_0;
   for (const Instruction& ins : program.code) {
-    auto refuse = [&](RegFile f, uint32_t index, SourceLoc loc) {
+    auto refuse = [&](RegFile f, uint32_t index, SourceLoc loc, std::string_view why) {
       sink.error(loc, "not-supported",
-                 fmt::format("not supported yet by {}: {} addressed relatively (only c# is)",
-                             backend, register_name(f, index)));
+                 fmt::format("not supported yet by {}: {} addressed relatively ({})", backend,
+                             register_name(f, index), why));
     };
-    if (ins.dst && ins.dst->rel) refuse(ins.dst->file, ins.dst->index, ins.dst->loc);
+    if (ins.dst && ins.dst->rel)
+      refuse(ins.dst->file, ins.dst->index, ins.dst->loc,
+             "a vs_3_0's o# link by semantic to 2.0 registers that need not be consecutive, "
+             "and relative writes into them are not indexed yet; relative reads of c# and v# "
+             "run");
     for (const SrcOperand& s : ins.src)
-      if (s.rel && s.file != RegFile::Const) refuse(s.file, s.index, s.loc);
+      if (s.rel && s.file != RegFile::Const && !(sm3 && s.file == RegFile::Input))
+        refuse(s.file, s.index, s.loc, "only c# and, in vs_3_0 and ps_3_0, v# are");
   }
   check_semantic_interface(program, backend, sink);
   if (sink.has_errors()) return fail(sink);

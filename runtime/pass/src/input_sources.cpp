@@ -21,7 +21,8 @@ uint16_t registers_named(const ir::Program& listing, ir::RegFile file, uint32_t 
   for (const ir::Declaration& d : program.decls) add(d.reg.file, d.reg.index);
   for (const ir::Instruction& ins : program.code) {
     if (ins.dst) add(ins.dst->file, ins.dst->index);
-    for (const ir::SrcOperand& op : ins.src) add(op.file, op.index);
+    for (const ir::SrcOperand& op : ins.src)
+      if (!op.rel) add(op.file, op.index); // v[aL + n] reaches declared registers only
   }
   return mask;
 }

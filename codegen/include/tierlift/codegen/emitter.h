@@ -16,6 +16,7 @@
 #include "tierlift/ir/numeric_rules.h"
 #include "tierlift/ir/passes.h"
 #include "tierlift/ir/plain_values.h"
+#include "tierlift/ir/sm3_interface.h"
 
 namespace tierlift::codegen {
 
@@ -29,6 +30,9 @@ struct EmitPlan {
   // Vertex stage in a pair: exactly these outputs are declared (file, index); others are
   // not. nullopt: every output the program writes.
   std::optional<std::set<std::pair<ir::RegFile, uint32_t>>> vs_outputs;
+  // v[aL + n] of a vs_3_0/ps_3_0: the linked register of each v# number
+  // (ir::relative_input_links of the program before linking).
+  ir::RelativeLinks relative_inputs;
 };
 
 // A computed result waiting to be stored (co-issued pairs read before either writes).
@@ -140,6 +144,8 @@ public:
   Id register_var(ir::RegFile file, uint32_t index); // Private vec4 (a0: ivec4)
   Id input_var(ir::RegFile file, uint32_t index);    // Input vec4 at its location
   Id load_register(ir::RegFile file, uint32_t index, const std::optional<ir::RelAddr>& rel);
+  Id load_relative_input(uint32_t index, const ir::RelAddr& rel); // v[aL + n], NUMERICS.md F13
+  Id relative_offset(const ir::RelAddr& rel);                     // aL or a0.c as an int
   Id load_src(const ir::SrcOperand& s, uint32_t index_offset = 0);
   Id scalar_src(const ir::SrcOperand& s); // replicate-swizzle component (the w slot)
   bool const_within_unit(const ir::SrcOperand& s) const;

@@ -14,6 +14,7 @@
 
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include "tierlift/ir/diagnostic.h"
 #include "tierlift/ir/program.h"
@@ -30,8 +31,8 @@ std::optional<std::pair<RegFile, uint32_t>> semantic_register(ShaderStage stage,
 // Errors (rule "not-supported", at the declaration) for what the renaming cannot carry: a
 // pixel program's position0/psize0 (vertex outputs only), an extra semantic with no
 // free slot left, two declarations on one register. Adds nothing for a
-// program of another profile. (o#/v# addressed relatively are refused by
-// ir::check_executable, as every relative operand but c#.)
+// program of another profile. (o# addressed relatively is refused by ir::check_executable;
+// v# read relatively runs through relative_input_links.)
 void check_semantic_interface(const Program& program, std::string_view backend,
                               DiagnosticSink& sink);
 
@@ -44,7 +45,31 @@ Status check_semantic_pair(const Program& vertex, const Program& pixel);
 // The program with every vs_3_0 o# and ps_3_0 v# (declarations, destinations, sources)
 // renamed to its semantic_register or, for an extra semantic, its texcoord slot. Programs of other
 // profiles come back unchanged. Call only on a program check_semantic_interface accepts.
+// A source read relatively (v[aL + n]) keeps its v# number: it indexes
+// relative_input_links, not one register.
 Program link_by_semantic(const Program& program);
+
+// A vs_3_0 or ps_3_0 may read its inputs relatively, v[aL + n] (NUMERICS.md F13). Renamed by
+// semantic, consecutive v# need not land in consecutive registers, so such a read indexes
+// the program's declared inputs by v# number: entry k is the register v_k is read from once
+// linked (its link_by_semantic register in a ps_3_0, v_k itself in a vs_3_0), nullopt where
+// the program declares no v_k. A read of an index outside the table or of an undeclared
+// v_k gives (0, 0, 0, 0), the rule of an out-of-range relative c# read (Direct3D 9 leaves
+// both undefined). Sized to the profile's v# count (vs_3_0 16, ps_3_0 10); empty for the
+// other profiles. Takes the program before linking.
+using RelativeLinks = std::vector<std::optional<std::pair<RegFile, uint32_t>>>;
+RelativeLinks relative_input_links(const Program& program);
+
+// Whether some instruction reads a v# relatively (a source on RegFile::Input with rel).
+bool reads_inputs_relatively(const Program& program);
+
+// Whether a program of this profile holds its colours in [0, 1] (NUMERICS.md rule 26, F6).
+// Direct3D 9 clamps a colour only where a stage before shader model 3 holds it: a vs_1_x/2_x
+// writes oD0/oD1 saturated and a ps_1_x/2_x reads v0/v1 saturated. A vs_3_0's o# are general
+// outputs and a ps_3_0 colour input is a float register like a texture coordinate, so
+// neither clamps: false for vs_3_0 and ps_3_0, true for every earlier profile. Both devices
+// saturate a vertex program's colour outputs and a pixel program's colour inputs by this.
+bool saturates_colors(Profile profile);
 
 // The texcoord slot a ps_3_0 reads fog0 from (where link_by_semantic puts it); nullopt when
 // it declares no fog0 or is of another profile.

@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "raster.h"
+#include "tierlift/ir/sm3_interface.h"
 #include "tierlift/pass/srgb.h"
 #include "tierlift/pass/stencil.h"
 #include "tierlift/rounding/rounding.h"
@@ -336,11 +337,14 @@ std::string detail::setup_pass(const Pass& pass, const ShaderVM* vs, const Viewp
     scissor.y1 = std::min<int64_t>(scissor.y1, pass.scissor->y1);
   }
   std::vector<Triangle>& setup = out.triangles;
+  detail::ColorClamps clamps;
+  if (pass.vertex_program) clamps.vertex_out = ir::saturates_colors(pass.vertex_program->profile);
+  if (pass.pixel_program) clamps.pixel_in = ir::saturates_colors(pass.pixel_program->profile);
   for (const auto& t : tris) {
     if (t[0] >= outs.size() || t[1] >= outs.size() || t[2] >= outs.size())
       return "triangle index out of range";
     detail::setup_triangle({&outs[t[0]], &outs[t[1]], &outs[t[2]]}, vp, scissor, pass.conventions,
-                           setup);
+                           clamps, setup);
   }
   // setup_triangle calls the clockwise winding front; a counter-clockwise front swaps them.
   if (pass.front_face == tierlift::pass::FrontFace::CounterClockwise)

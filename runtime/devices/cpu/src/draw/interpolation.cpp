@@ -96,9 +96,9 @@ PixelInput interpolate_exact(const Triangle& t, const int64_t e[3]) {
     for (int k = 0; k < 3; ++k) q[k] = l[k];
   for (size_t r = 0; r < in.color.size(); ++r)
     for (int c = 0; c < 4; ++c)
-      in.color[r][c] =
-          clamp01(static_cast<float>(q[0] * t.v[0].out.color[r][c] + q[1] * t.v[1].out.color[r][c] +
-                                     q[2] * t.v[2].out.color[r][c]));
+      in.color[r][c] = color_in(t, static_cast<float>(q[0] * t.v[0].out.color[r][c] +
+                                                      q[1] * t.v[1].out.color[r][c] +
+                                                      q[2] * t.v[2].out.color[r][c]));
   for (size_t r = 0; r < in.tex.size(); ++r)
     for (int c = 0; c < 4; ++c)
       in.tex[r][c] = static_cast<float>(q[0] * t.v[0].out.tex[r][c] + q[1] * t.v[1].out.tex[r][c] +
@@ -114,7 +114,8 @@ PixelInput interpolate_llvmpipe(const Triangle& t, int64_t x, int64_t y) {
   const float oow = 1.0f / eval(p.oow, fx, fy);
   for (size_t r = 0; r < in.color.size(); ++r)
     if (!p.color_zero[r])
-      for (int c = 0; c < 4; ++c) in.color[r][c] = clamp01(perspective(p.color[r][c], fx, fy, oow));
+      for (int c = 0; c < 4; ++c)
+        in.color[r][c] = color_in(t, perspective(p.color[r][c], fx, fy, oow));
   for (size_t r = 0; r < in.tex.size(); ++r)
     if (!p.tex_zero[r])
       for (int c = 0; c < 4; ++c) in.tex[r][c] = perspective(p.tex[r][c], fx, fy, oow);
@@ -197,11 +198,12 @@ namespace {
       const Plane pl = p.color[r][c]; // a copy: no store to `out` can change it
       if (unit) {
 #pragma GCC unroll 1
-        for (int l = 0; l < kBlockLanes; ++l) out[l] = clamp01(eval(pl, fx[l], fy));
+        for (int l = 0; l < kBlockLanes; ++l) out[l] = color_in(t, eval(pl, fx[l], fy));
         continue;
       }
 #pragma GCC unroll 1
-      for (int l = 0; l < kBlockLanes; ++l) out[l] = clamp01(perspective(pl, fx[l], fy, oow[l]));
+      for (int l = 0; l < kBlockLanes; ++l)
+        out[l] = color_in(t, perspective(pl, fx[l], fy, oow[l]));
     }
   }
   for (size_t r = 0; r < 8; ++r) {

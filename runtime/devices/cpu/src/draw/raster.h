@@ -58,14 +58,24 @@ struct Triangle {
   PixelRect bounds;               // pixels whose sample point may be inside, ∩ scissor
   bool llvmpipe = false;          // interpolate with `planes` (else exact barycentrics)
   bool front = true;              // clockwise on screen as given (before the swap): vFace +1
+  bool saturate_colors = true;    // the pixel stage reads its colours saturated (ColorClamps)
   AttributePlanes planes;
+};
+
+// Where a pass's colours are clamped to [0, 1] (NUMERICS.md rule 26, F6,
+// ir::saturates_colors): as the vertex stage writes them (a vertex program before vs_3_0,
+// or none: the pass-through stage is a 2.0 one), and as the pixel stage reads them (a pixel
+// program before ps_3_0, or none).
+struct ColorClamps {
+  bool vertex_out = true;
+  bool pixel_in = true;
 };
 
 // Clips (0 ≤ z ≤ w, guard band) and transforms one triangle of vertex-stage outputs;
 // appends 0..n triangles (a clipped polygon is fanned).
 void setup_triangle(const std::array<const VertexOutput*, 3>& tri, const Viewport& viewport,
                     const PixelRect& scissor, const ir::Conventions& conventions,
-                    std::vector<Triangle>& out);
+                    ColorClamps clamps, std::vector<Triangle>& out);
 
 // A pass's vertex stage and triangle setup (the first half of a draw): the triangles to
 // rasterise in primitive order, the drawable rectangle, the sample offset, and whether the
@@ -112,6 +122,11 @@ inline float perspective(const Plane& p, float x, float y, float oow) {
 inline float clamp01(float v) {
   return v > 0 ? (v < 1 ? v : 1) : 0;
 } // NaN → 0
+// An interpolated colour as the pixel stage receives it: clamped to [0, 1] before ps_3_0,
+// as it is (a float register) in a ps_3_0 (NUMERICS.md rule 26, F6).
+inline float color_in(const Triangle& t, float v) {
+  return t.saturate_colors ? clamp01(v) : v;
+}
 
 // Everything the workers share, read-only except the target pixels they own.
 struct RasterJob {

@@ -93,7 +93,8 @@ void lavapipe_position(const VertexOutput& v, const Viewport& vp, float shift, S
   s.fy = std::fma(-v.pos[1] * s.oow, half_h, half_h + (static_cast<float>(vp.y) + shift));
 }
 
-ScreenVertex to_screen(const VertexOutput& v, const Viewport& vp, float shift) {
+ScreenVertex to_screen(const VertexOutput& v, const Viewport& vp, float shift,
+                       bool saturate_colors) {
   ScreenVertex s;
   lavapipe_position(v, vp, shift, s);
   double w = v.pos[3];
@@ -106,8 +107,9 @@ ScreenVertex to_screen(const VertexOutput& v, const Viewport& vp, float shift) {
   s.z = vp.min_z + nz * (static_cast<double>(vp.max_z) - vp.min_z);
   s.inv_w = 1.0 / w;
   s.out = v;
-  for (auto& c : s.out.color)
-    for (auto& x : c) x = saturate(x);
+  if (saturate_colors) // oD# leave a vertex stage before 3.0 saturated
+    for (auto& c : s.out.color)
+      for (auto& x : c) x = saturate(x);
   return s;
 }
 
@@ -122,8 +124,9 @@ int64_t floor_pixel(int64_t v, int64_t offset) {
 }
 
 void emit(ScreenVertex a, ScreenVertex b, ScreenVertex c, const PixelRect& scissor, int64_t offset,
-          bool llvmpipe, std::vector<Triangle>& out) {
+          bool llvmpipe, bool saturate_colors, std::vector<Triangle>& out) {
   Triangle t;
+  t.saturate_colors = saturate_colors;
   t.v = {a, b, c};
   t.area = edge(a, b, c.x, c.y);
   if (t.area == 0) return; // degenerate after snapping: covers nothing
@@ -162,7 +165,7 @@ int64_t sample_offset(const ir::Conventions& conventions) {
 
 void setup_triangle(const std::array<const VertexOutput*, 3>& tri, const Viewport& viewport,
                     const PixelRect& scissor, const ir::Conventions& conventions,
-                    std::vector<Triangle>& out) {
+                    ColorClamps clamps, std::vector<Triangle>& out) {
   const int64_t offset = sample_offset(conventions);
   const float shift = conventions.pixel_center == ir::PixelCenter::D3D9 ? 0.5f : 0.0f;
   const bool llvmpipe = conventions.rounding == ir::Rounding::Llvmpipe;
@@ -172,9 +175,9 @@ void setup_triangle(const std::array<const VertexOutput*, 3>& tri, const Viewpor
   if (poly.size() < 3) return;
   std::vector<ScreenVertex> s;
   s.reserve(poly.size());
-  for (const auto& v : poly) s.push_back(to_screen(v, viewport, shift));
+  for (const auto& v : poly) s.push_back(to_screen(v, viewport, shift, clamps.vertex_out));
   for (size_t i = 1; i + 1 < s.size(); ++i)
-    emit(s[0], s[i], s[i + 1], scissor, offset, llvmpipe, out);
+    emit(s[0], s[i], s[i + 1], scissor, offset, llvmpipe, clamps.pixel_in, out);
 }
 
 } // namespace tierlift::cpu::detail

@@ -320,13 +320,15 @@ TL_INLINE void run_steps_body(const Impl& im, const PixelBlockInput& in,
   const int n = std::clamp(in.count, 0, L);
   for (const auto& [slot, c] : im.zero_components)
     std::fill(std::begin(sc.reg[slot].c[c]), std::end(sc.reg[slot].c[c]), 0.0f);
-  // The inputs as run_pixel sets them: colours saturated; t# are the coordinates except in
-  // ps_1_1–1_3, where texture instructions fill them.
+  // The inputs as run_pixel sets them: colours saturated before ps_3_0; t# are the
+  // coordinates except in ps_1_1–1_3, where texture instructions fill them.
   for (int i = 0; i < 2; ++i)
     if (im.color_reads & (1u << i))
       for (int c = 0; c < 4; ++c)
         for (int l = 0; l < L; ++l)
-          sc.reg[vm::kInputBase + i].c[c][l] = num::legacy_saturate<D>(in.color[i].c[c][l]);
+          sc.reg[vm::kInputBase + i].c[c][l] = p.saturate_colors
+                                                   ? num::legacy_saturate<D>(in.color[i].c[c][l])
+                                                   : in.color[i].c[c][l];
   sc.in = &in;
   for (int i = 0; i < vm::kTexCount; ++i)
     if (im.tex_copies & (1u << i)) sc.reg[vm::kTexBase + i] = in.tex[i];

@@ -42,7 +42,8 @@ LaneVec4 splat4(const Vec4& v) {
 // Decides how one source is read; false when the block path does not take it.
 bool plan_src(const vm::SrcDesc& s, Impl& im, const ConstantBank& bank, BlockSrc& out) {
   switch (s.kind) {
-  case vm::SrcKind::ConstRel: return false;
+  case vm::SrcKind::ConstRel:
+  case vm::SrcKind::InputRel: return false;
   case vm::SrcKind::Const:
   case vm::SrcKind::Zero: {
     vm::Invocation inv;
@@ -133,10 +134,10 @@ void find_zero_components(Impl& im) {
 // Which steps read only sources that cannot hold a denormal (BlockStep::clean), walking the
 // steps in order with, per register component, whether what it holds can be one. At the
 // start: zeros, and the colours run() saturates (both clean); the texture coordinates of
-// ps_2_0 are not known. A source is clean when it is a folded constant with no denormal
-// component, or a plain or negated register read whose four swizzled components are clean
-// (a per-lane modifier, or coordinates read in place, count as not clean). A write leaves
-// its components clean when
+// ps_2_0 and the colours of ps_3_0 (not saturated) are not known. A source is clean when it is a
+// folded constant with no denormal component, or a plain or negated register read whose four
+// swizzled components are clean (a per-lane modifier, or coordinates read in place, count as not
+// clean). A write leaves its components clean when
 //  - the instruction's result is flushed by its rule (add, sub, mul, mad, lrp and the dot
 //    products round through FloatArith, whose results are flushed; slt and sge give 0 or
 //    1), or selects among clean sources (mov, abs, min, max, cmp, cnd with every source
@@ -152,6 +153,8 @@ void find_clean_sources(Impl& im) {
   clean.fill(0xF);
   if (!im.p.ps11_13)
     for (int i = 0; i < vm::kTexCount; ++i) clean[vm::kTexBase + i] = 0;
+  if (!im.p.saturate_colors)
+    for (int i = 0; i < 2; ++i) clean[vm::kInputBase + i] = 0;
   auto source_clean = [&](const BlockStep& b, int k) {
     const BlockSrc& s = b.src[static_cast<size_t>(k)];
     if (s.way == SrcWay::Folded) return s.no_denormal;

@@ -42,12 +42,13 @@ using ExecFn = void (*)(const Step&, Invocation&);
 // src0 in s[1..4]). Never writes registers: the store is separate (co-issue, macros).
 using ComputeFn = void (*)(const Step&, const Vec4* s, Vec4& out, Invocation&);
 
-enum class SrcKind : uint8_t { Slot, Const, ConstRel, Zero };
+// InputRel: v[aL + n] of a vs_3_0/ps_3_0, through Prepared::rel_inputs.
+enum class SrcKind : uint8_t { Slot, Const, ConstRel, InputRel, Zero };
 
 struct SrcDesc {
   SrcKind kind = SrcKind::Zero;
-  uint16_t slot = 0; // flat slot (Slot) or constant index (Const/ConstRel base)
-  int8_t rel = -1;   // ConstRel: 0..3 = a0.x..w, 4 = aL
+  uint16_t slot = 0; // flat slot (Slot), constant index (Const/ConstRel base), v# (InputRel)
+  int8_t rel = -1;   // ConstRel, InputRel: 0..3 = a0.x..w, 4 = aL
   uint8_t swz[4] = {0, 1, 2, 3};
   bool identity = true;
   ir::SrcMod mod = ir::SrcMod::None;
@@ -116,6 +117,12 @@ struct Prepared {
   bool ps11_13 = false;
   bool ps14 = false;
   bool vs11 = false;
+  // A pixel program before ps_3_0 reads v0/v1 saturated; a ps_3_0 reads them as they come
+  // (ir::saturates_colors, NUMERICS.md rule 26, F6).
+  bool saturate_colors = true;
+  // v[aL + n] (vs_3_0, ps_3_0): the flat slot each v# number is read from once linked, -1
+  // where none is declared (ir::relative_input_links).
+  std::vector<int16_t> rel_inputs;
   uint8_t fog_component = 0, pts_component = 0; // scalar outputs written via .y etc.
 };
 

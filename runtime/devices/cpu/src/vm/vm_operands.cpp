@@ -51,6 +51,12 @@ SrcDesc decode_src(const ir::SrcOperand& op, const Prepared& p) {
     }
     return s;
   }
+  if (op.file == RegFile::Input && op.rel) { // vs_3_0/ps_3_0 v[aL + n]: the input table
+    s.kind = SrcKind::InputRel;
+    s.slot = static_cast<uint16_t>(op.index > 0xFFFF ? 0xFFFF : op.index);
+    s.rel = op.rel->file == RegFile::Loop ? 4 : static_cast<int8_t>(op.rel->component & 3);
+    return s;
+  }
   int slot = flat_slot(op.file, op.index, p.program.stage());
   if (slot < 0) {
     // Samplers, labels, i#, b#, aL are not read as vectors: they stay Zero and the
@@ -112,6 +118,14 @@ Vec4 load(const SrcDesc& s, const Invocation& inv) {
   case SrcKind::ConstRel: {
     int32_t off = s.rel == 4 ? inv.al : inv.a0[s.rel];
     return constant_value(static_cast<int32_t>(s.slot) + off, inv);
+  }
+  case SrcKind::InputRel: {
+    // Outside the table or an undeclared v#: (0, 0, 0, 0) (NUMERICS.md F13).
+    const auto& table = inv.prog->rel_inputs;
+    const int64_t k = int64_t{s.slot} + (s.rel == 4 ? inv.al : inv.a0[s.rel]);
+    if (k < 0 || k >= static_cast<int64_t>(table.size()) || table[static_cast<size_t>(k)] < 0)
+      break;
+    return inv.reg[table[static_cast<size_t>(k)]];
   }
   case SrcKind::Zero: break;
   }

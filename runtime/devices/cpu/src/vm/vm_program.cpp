@@ -265,6 +265,11 @@ ir::Result<Prepared> prepare(const ir::Program& program, const ir::Conventions& 
   p.ps11_13 = ir::is_ps11_13(prof);
   p.ps14 = prof == ir::Profile::ps_1_4;
   p.vs11 = prof == ir::Profile::vs_1_1;
+  p.saturate_colors = ir::saturates_colors(prof);
+  for (const auto& link : ir::relative_input_links(program))
+    p.rel_inputs.push_back(
+        link ? static_cast<int16_t>(flat_slot(link->first, link->second, program.stage()))
+             : int16_t{-1});
   p.flush = conv.rounding == ir::Rounding::Llvmpipe;
   // Relative reads may reach any constant the device offers: 256 for vertex shaders (the
   // value DXVK and most D3D9 drivers report for MaxVertexShaderConst).

@@ -67,12 +67,14 @@ void begin_pixel(vm::Invocation& inv, const vm::Prepared& p, const PixelInput& i
   inv.tex = &textures;
   inv.pin = &in;
   inv.pout = &out;
-  // Colour inputs lie in [0, 1] in every pixel profile (docs/d3d9-rules.md §3.3, §3.5).
+  // Colour inputs lie in [0, 1] in every pixel profile before ps_3_0 (docs/d3d9-rules.md
+  // §3.3, §3.5); a ps_3_0 reads them as they come, like texture coordinates (NUMERICS.md F6).
   namespace num = ir::numerics;
   for (int i = 0; i < 2; ++i)
     for (int c = 0; c < 4; ++c)
-      inv.reg[vm::kInputBase + i][c] = p.flush ? num::legacy_saturate<num::kFlush>(in.color[i][c])
-                                               : num::legacy_saturate(in.color[i][c]);
+      inv.reg[vm::kInputBase + i][c] = !p.saturate_colors ? in.color[i][c]
+                                       : p.flush ? num::legacy_saturate<num::kFlush>(in.color[i][c])
+                                                 : num::legacy_saturate(in.color[i][c]);
   // ps_1_4 and ps_2_0 read t# as the interpolated coordinates; in ps_1_1–1_3 t# are
   // registers that texture instructions fill.
   if (!p.ps11_13)
