@@ -332,3 +332,30 @@ TEST(LaterProfiles, TexldlRunsInBothStages) {
   EXPECT_TRUE(check_executable(p, "the interpreter").ok());
   EXPECT_TRUE(check_executable(p, "SPIR-V").ok());
 }
+
+// vs_3_0's s0..s3 are its vertex samplers (texldl reads them): validate_ir lets the VM and the
+// code generator address those four and no more; vs_2_0 has none.
+TEST(LaterProfiles, Vs30AddressesFourSamplers) {
+  Program p;
+  p.profile = Profile::vs_3_0;
+  Instruction texldl;
+  texldl.op = Opcode::TexLdL;
+  texldl.loc = {1, 5, 1, 6};
+  texldl.dst = DstOperand{RegFile::Temp, 0, kFullMask, {}};
+  SrcOperand coord, sampler;
+  coord.file = RegFile::Const;
+  sampler.file = RegFile::Sampler;
+  sampler.index = 3;
+  texldl.src = {coord, sampler};
+  p.code.push_back(texldl);
+  EXPECT_TRUE(validate_ir(p).ok());
+  p.code[0].src[1].index = 4;
+  Status s = validate_ir(p);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("s4 is outside the 4 registers vs_3_0 can address"),
+            std::string::npos)
+      << s.message();
+  p.profile = Profile::vs_2_0;
+  p.code[0].src[1].index = 0;
+  EXPECT_FALSE(validate_ir(p).ok());
+}

@@ -30,7 +30,7 @@ uint32_t addressable(RegFile f, Profile p) {
   case RegFile::ConstInt: return l.int_consts;
   case RegFile::ColorOut: return vs ? 0 : 4;
   case RegFile::DepthOut: return vs ? 0 : 1;
-  case RegFile::Sampler: return vs ? 0 : 16;
+  case RegFile::Sampler: return vs ? l.samplers : 16; // vs_3_0: its 4 vertex samplers
   case RegFile::ConstBool: return l.bool_consts;
   case RegFile::Loop: return vs || p == Profile::ps_3_0 ? 1 : 0; // aL
   case RegFile::Label: return l.labels;
