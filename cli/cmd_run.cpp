@@ -393,8 +393,9 @@ void register_run_command(CLI::App& app) {
   sub->add_option("--input", f->inputs, "Pixel-stage input v#|t#=x,y,z,w (without --vs)");
   sub->add_option("--attr", f->attrs, "Vertex input vN=x,y,z,w or vN=quad-uv (with --vs)");
   sub->add_option("--texture", f->textures,
-                  "sN=FILE.png|FILE.pfm|builtin:NAME[:WxH]|cube:F0,..,F5|volume:S0,..|"
-                  "mips:L0,L1,.. (a 2D texture's levels)");
+                  "[vs:|ps:]sN=FILE.png|FILE.pfm|builtin:NAME[:WxH]|cube:F0,..,F5|volume:S0,..|"
+                  "mips:L0,L1,.. (a 2D texture's levels); no prefix: the pixel stage's s0..s15, "
+                  "vs: the vertex stage's s0..s3 (vs_3_0 texldl)");
   sub->add_option("--mips", f->mips,
                   "auto | N: give every one-image 2D texture a mip chain of N levels (auto: the "
                   "full chain), each a 2x2 box of the previous")

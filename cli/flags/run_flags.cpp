@@ -329,14 +329,22 @@ ir::Result<RegisterSetting> parse_attr_setting(std::string_view text) {
                            vec4_problem(value, "the value needs four numbers x,y,z,w or quad-uv")));
 }
 
+// "[vs:|ps:]sN=SOURCE", the prefix read as --const reads it; without one, the pixel stage's
+// sN (what every texture was before vertex texture fetch). vs:sN is the vertex stage's
+// sampler N, pass::kVertexSampler0 + N (N 0..3).
 ir::Result<TextureSetting> parse_texture_setting(std::string_view text) {
   TextureSetting t;
-  std::string_view name, value;
-  if (!split_assignment(text, name, value) || !parse_reg(name, "s", kMaxSamplers, t.sampler) ||
+  std::string_view body = text, name, value;
+  const bool vertex = take_stage_prefix(body) == StageMask::Vertex;
+  const uint32_t count = vertex ? pass::kMaxVertexSamplers : kMaxSamplers;
+  if (!split_assignment(body, name, value) || !parse_reg(name, "s", count, t.sampler) ||
       value.empty()) {
     return usage(
-        fmt::format("--texture '{}': expected sN=FILE.png|FILE.pfm|builtin:NAME[:WxH]", text));
+        fmt::format("--texture '{}': expected [ps:]sN=FILE.png|FILE.pfm|builtin:NAME[:WxH] "
+                    "(N 0..15) or vs:sN=... (the vertex stage's samplers, N 0..3)",
+                    text));
   }
+  if (vertex) t.sampler += pass::kVertexSampler0;
   t.source = std::string(value);
   return t;
 }

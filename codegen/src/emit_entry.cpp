@@ -178,7 +178,7 @@ std::optional<ShaderModule> Emitter::run() {
   }
   for (const auto& [stage, var] : samplers_)
     m.samplers.push_back(
-        {kDescriptorSet, kFirstSamplerBinding + stage, stage, sampler_type(stage), fetches(stage)});
+        {kDescriptorSet, sampler_binding(stage), stage, sampler_type(stage), fetches(stage)});
   m.spec_constants = spec_info_;
   m.block_defs.assign(block_defs_.begin(), block_defs_.end());
   m.writes_depth = writes_depth_;

@@ -1,6 +1,6 @@
 // Texture instructions (docs/d3d9-rules.md §5.5–§5.7): sampling through combined image samplers
-// at set 0, binding 2 + stage; ps_1_1…1_3 texture-address instructions with their pad
-// rows; texkill as OpKill or OpDemoteToHelperInvocation.
+// at set 0, binding 2 + stage (a vertex program's: 19 + stage); ps_1_1…1_3 texture-address
+// instructions with their pad rows; texkill as OpKill or OpDemoteToHelperInvocation.
 #include <array>
 
 #include <fmt/format.h>
@@ -45,14 +45,23 @@ Id Emitter::sampler_var(uint32_t stage) {
   const Id var =
       b.global_variable(b.type_pointer(SC::UniformConstant, sampled), SC::UniformConstant);
   b.decorate(var, spv::Decoration::DescriptorSet, kDescriptorSet);
-  b.decorate(var, spv::Decoration::Binding, kFirstSamplerBinding + stage);
+  b.decorate(var, spv::Decoration::Binding, sampler_binding(stage));
   b.name(var, fmt::format("s{}", stage)); // not "s" + temporary: GCC 12 -Wrestrict at -O3
   samplers_.emplace(stage, var);
   return var;
 }
 
+// The CodegenOptions stage_* arrays describe the pixel stage's samplers: a vertex program's
+// s# (vs_3_0 texldl) are other samplers, read with none of those options.
 bool Emitter::fetches(uint32_t stage) const {
-  return opt.stage_fetch_unorm8[stage & 15] && sampler_type(stage) == ir::SamplerType::Tex2D;
+  return prog.stage() == ir::ShaderStage::Pixel && opt.stage_fetch_unorm8[stage & 15] &&
+         sampler_type(stage) == ir::SamplerType::Tex2D;
+}
+
+uint32_t Emitter::sampler_binding(uint32_t stage) const {
+  return (prog.stage() == ir::ShaderStage::Vertex ? kFirstVertexSamplerBinding
+                                                  : kFirstSamplerBinding) +
+         stage;
 }
 
 Id Emitter::clamp_uv01(Id uv) {
@@ -125,7 +134,9 @@ Id Emitter::sample(uint32_t stage, Id coord, std::optional<Id> bias, std::option
   if (fetches(stage)) return fetch_unorm8(si, c);
   // A POINT/CLAMP read at the clamped coordinate: the same texel, and no u·N that
   // overflows the device's conversion to an index (CodegenOptions::stage_point_clamped).
-  if (type == ir::SamplerType::Tex2D && opt.stage_point_clamped[stage & 15]) c = clamp_uv01(c);
+  if (type == ir::SamplerType::Tex2D && prog.stage() == ir::ShaderStage::Pixel &&
+      opt.stage_point_clamped[stage & 15])
+    c = clamp_uv01(c);
   if (grad) // one level, minLod = maxLod = 0: level 0 whatever the gradients (rule F10)
     return b.op(Op::OpImageSampleExplicitLod, t_vec4,
                 {si, c, static_cast<uint32_t>(spv::ImageOperandsMask::Grad), coords(grad->first),

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <span>
 
 #include <fmt/format.h>
 
@@ -60,10 +61,10 @@ pass::Vec4 coordinate(Rng& rng) {
   return {c(), c(), c(), 1.0f};
 }
 
-// The stages a pixel program samples and the texture type each reads: ps_2_0 and later
-// declare it (dcl_2d, dcl_cube, dcl_volume); ps_1_x reads a cube with texm3x3tex,
-// texm3x3spec and texm3x3vspec (D3D9's texture-address instructions for environment maps),
-// a 2D texture otherwise.
+// The stages a program samples and the texture type each reads: ps_2_0 and later (and vs_3_0,
+// whose samplers are the vertex stage's) declare it (dcl_2d, dcl_cube, dcl_volume); ps_1_x reads a
+// cube with texm3x3tex, texm3x3spec and texm3x3vspec (D3D9's texture-address instructions for
+// environment maps), a 2D texture otherwise.
 std::vector<std::pair<uint32_t, ir::SamplerType>> sampled_stages(const ir::Program& p) {
   std::vector<std::pair<uint32_t, ir::SamplerType>> out;
   if (ir::is_sm2_or_later(p.profile)) { // ps_2_0, ps_2_x, ps_3_0 declare their samplers
@@ -174,6 +175,10 @@ pass::RunRequest request(const ir::Program& program,
       const bool is_uv = std::find(uv.begin(), uv.end(), v) != uv.end();
       r.attrs.push_back({ir::RegFile::Input, v, vec(rng, set), is_uv});
     }
+    // vs_3_0's texldl reads the vertex stage's own samplers (vertex texture fetch, NUMERICS.md
+    // F14): a generated texture at each one it declares, as a pixel program gets at its s#.
+    for (const auto& [s, type] : sampled_stages(program))
+      r.textures.emplace_back(pass::kVertexSampler0 + s, texture_source(rng, type));
   } else {
     r.ps = drawn;
     // ps_3_0 reads its v# by semantic (ir/sm3_interface.h): color0-1 are the colour inputs,
@@ -226,10 +231,14 @@ StageResult differential_run(const ir::Program& program, const std::string& id,
     const pass::RunRequest req = request(program, drawn, o, rng, set);
     ir::Result<pass::Pass> made = pass::prepare_pass(req);
     // A Vulkan device that filters cube maps across face edges refuses LINEAR cube reads
-    // (NUMERICS.md rule T4): there cubes are read with POINT filtering on every set.
+    // (NUMERICS.md rule T4): there cubes are read with POINT filtering on every set, in both
+    // stages (a vs_3_0 reads its own samplers, F14).
     if (made && !o.device->cube_faces_filtered_alone())
-      for (pass::TextureBinding& b : made->textures)
-        if (b.shape == pass::TextureShape::Cube) b.sampler.filter = pass::Filter::Point;
+      for (std::span<pass::TextureBinding> stage :
+           {std::span<pass::TextureBinding>(made->textures),
+            std::span<pass::TextureBinding>(made->vertex_textures)})
+        for (pass::TextureBinding& b : stage)
+          if (b.shape == pass::TextureShape::Cube) b.sampler.filter = pass::Filter::Point;
     ir::Result<effects::EffectGraph> graph =
         made ? effects::single_pass_graph(*made, req.width, req.height, req.format)
              : ir::Result<effects::EffectGraph>(made.failure());

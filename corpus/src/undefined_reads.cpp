@@ -70,9 +70,25 @@ private:
   mutable std::string first_;
 };
 
+// A vertex program's reads (vs_3_0 texldl): the program at each of the pass's vertices.
+std::string non_finite_vertex_read(const pass::Pass& pass) {
+  ir::Result<cpu::ShaderVM> vm = cpu::ShaderVM::create(*pass.vertex_program, pass.conventions);
+  if (!vm) return "";
+  const cpu::BoundTextures bound(pass.vertex_textures, pass.conventions.subtexel_bits,
+                                 pass.conventions.rounding == ir::Rounding::Llvmpipe);
+  const WatchedTextures watched(bound, *pass.vertex_program);
+  for (const pass::VertexInput& v : pass.vertices) {
+    vm->run_vertex(v, pass.vs_constants, watched);
+    if (!watched.first().empty()) return "vertex " + watched.first();
+  }
+  return "";
+}
+
 } // namespace
 
 std::string non_finite_read(const pass::Pass& pass) {
+  if (pass.vertex_program && !pass.pixel_program && pass.transformed.empty())
+    return non_finite_vertex_read(pass);
   if (!pass.pixel_program || pass.vertex_program || !pass.transformed.empty()) return "";
   ir::Result<cpu::ShaderVM> vm = cpu::ShaderVM::create(*pass.pixel_program, pass.conventions);
   if (!vm) return "";

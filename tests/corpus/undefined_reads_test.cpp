@@ -61,6 +61,22 @@ TEST(UndefinedReads, FiniteCoordinatesAndNoReadsAreDefined) {
   EXPECT_EQ(non_finite_read(plain), "");
 }
 
+// A vertex program alone (the differential run's pass of a vs_3_0) is judged at each of its
+// vertices: texldl of a vertex sampler at a NaN u is named, a finite one is not.
+TEST(UndefinedReads, VertexTextureFetchAtANonFiniteCoordinateIsNamed) {
+  auto vertex_pass = [&](float u) {
+    pass::Pass p;
+    p.vertex_program = program("vs_3_0\ndcl_position v0\ndcl_2d s0\ndcl_position o0\n"
+                               "dcl_texcoord0 o1\nmov o0, v0\ntexldl r0, c0, s0\nmov o1, r0\n");
+    p.vs_constants.f = {{u, 1, 0, 0}};
+    pass::set_full_screen_quad(p, 0);
+    p.vertex_textures[0].image = std::make_shared<img::Image>(4, 4, img::Format::RGBA32F);
+    return p;
+  };
+  EXPECT_EQ(non_finite_read(vertex_pass(std::nanf(""))), "vertex s0 at (nan, 1)");
+  EXPECT_EQ(non_finite_read(vertex_pass(0.5f)), "");
+}
+
 // The interpolated case is outside the rule: a pass with a vertex program excludes nothing.
 TEST(UndefinedReads, InterpolatedInputsAreNotJudged) {
   pass::Pass p = projected_pass(0.5f, 0.0f);

@@ -366,9 +366,9 @@ TEST(LaterProfiles, RelativeInputLinksFollowTheSemantics) {
   EXPECT_TRUE(relative_input_links(vs).empty());
 }
 
-// texldl runs in ps_3_0 (every texture has one level); vs_3_0's vertex texture fetch has no
-// vertex sampler stages to read yet and is refused at the instruction.
-TEST(LaterProfiles, TexldlRunsInPixelShadersOnly) {
+// texldl runs in both stages: ps_3_0's reads the pixel samplers, vs_3_0's (vertex texture
+// fetch) the pass's vertex samplers (NUMERICS.md F14).
+TEST(LaterProfiles, TexldlRunsInBothStages) {
   Program p;
   p.profile = Profile::ps_3_0;
   Instruction texldl;
@@ -377,9 +377,33 @@ TEST(LaterProfiles, TexldlRunsInPixelShadersOnly) {
   p.code.push_back(texldl);
   EXPECT_TRUE(check_executable(p, "SPIR-V").ok());
   p.profile = Profile::vs_3_0;
-  Status s = check_executable(p, "the interpreter");
+  EXPECT_TRUE(check_executable(p, "the interpreter").ok());
+  EXPECT_TRUE(check_executable(p, "SPIR-V").ok());
+}
+
+// vs_3_0's s0..s3 are its vertex samplers (texldl reads them): validate_ir lets the VM and the
+// code generator address those four and no more; vs_2_0 has none.
+TEST(LaterProfiles, Vs30AddressesFourSamplers) {
+  Program p;
+  p.profile = Profile::vs_3_0;
+  Instruction texldl;
+  texldl.op = Opcode::TexLdL;
+  texldl.loc = {1, 5, 1, 6};
+  texldl.dst = DstOperand{RegFile::Temp, 0, kFullMask, {}};
+  SrcOperand coord, sampler;
+  coord.file = RegFile::Const;
+  sampler.file = RegFile::Sampler;
+  sampler.index = 3;
+  texldl.src = {coord, sampler};
+  p.code.push_back(texldl);
+  EXPECT_TRUE(validate_ir(p).ok());
+  p.code[0].src[1].index = 4;
+  Status s = validate_ir(p);
   ASSERT_FALSE(s.ok());
-  EXPECT_EQ(s.diagnostics()[0].loc.line, 3u);
-  EXPECT_NE(s.diagnostics()[0].message.find("texldl in vs_3_0 (vertex texture fetch"),
-            std::string::npos);
+  EXPECT_NE(s.message().find("s4 is outside the 4 registers vs_3_0 can address"),
+            std::string::npos)
+      << s.message();
+  p.profile = Profile::vs_2_0;
+  p.code[0].src[1].index = 0;
+  EXPECT_FALSE(validate_ir(p).ok());
 }

@@ -135,6 +135,17 @@ bool Parser::instruction(const Token& mn, std::string_view base, std::string_vie
     }
   }
   size_t expected = (info->has_dst ? 1u : 0u) + info->num_src;
+  // An instruction this profile has in no form (texld in a vertex shader) is parsed as the
+  // form its operands fit, if it has one: the validator then says the profile lacks it, which
+  // helps more than an operand count that no form of the profile would have met either.
+  if (ops.size() != expected && !ir::legal_in(*info, prog_.profile))
+    for (const ir::OpInfo* r : ir::rows_for_mnemonic(base))
+      if ((r->has_dst ? 1u : 0u) + r->num_src == ops.size()) {
+        info = r;
+        ins.op = r->op;
+        expected = ops.size();
+        break;
+      }
   if (ops.size() != expected) {
     ir::SourceLoc loc = ops.size() > expected ? ops[expected].loc : mn.loc;
     return fail(loc, "operand-count",

@@ -20,6 +20,10 @@ std::string prepare(const PassDesc& pass, const EffectGraph& graph, const ImageM
   const TextureDesc* target = graph.find_texture(pass.target);
   if (!target) return fmt::format("pass '{}': unknown target '{}'", pass.name, pass.target);
   for (const TextureBind& b : pass.textures) {
+    if (pass::is_vertex_sampler(b.stage))
+      return fmt::format("pass '{}': the analytic model has no vertex texture fetch (vertex "
+                         "sampler {} bound)",
+                         pass.name, b.stage - pass::kVertexSampler0);
     auto it = images.find(b.texture);
     if (it == images.end() || b.stage >= pass::kMaxSamplers)
       return fmt::format("pass '{}': texture '{}' has no image", pass.name, b.texture);

@@ -92,13 +92,13 @@ ir::Result<pass::DrawReport> CpuPassDevice::draw(const PassDesc& desc) {
   for (const TextureBind& b : desc.textures) {
     settle(b.texture);
     auto tex = images_.find(b.texture);
-    if (tex == images_.end() || b.stage >= pass::kMaxSamplers)
+    pass::TextureBinding* bound = pass::sampler_binding(pass, b.stage); // either stage's
+    if (tex == images_.end() || !bound)
       return device_error(
           fmt::format("pass '{}': texture '{}' has no image", desc.name, b.texture));
     // Not owned: the image outlives the draw, and check_graph refuses a pass that reads its
     // own target, so no texture is written while it is sampled.
-    pass.textures[b.stage].image =
-        std::shared_ptr<const img::Image>(std::shared_ptr<void>(), &tex->second);
+    bound->image = std::shared_ptr<const img::Image>(std::shared_ptr<void>(), &tex->second);
   }
   // In place: cpu::draw fails only before it writes a pixel, so a failed draw leaves the
   // texture as it was.

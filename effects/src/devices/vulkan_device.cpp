@@ -111,9 +111,10 @@ private:
     }
     for (const TextureBind& b : desc.textures) {
       auto it = ids_.find(b.texture);
-      if (it == ids_.end() || b.stage >= out.stages.size())
+      const uint32_t slot = pass::sampler_slot(b.stage); // the vertex stage's sN after s0..s15
+      if (it == ids_.end() || slot >= out.stages.size())
         return fmt::format("pass '{}': texture '{}' has no image", desc.name, b.texture);
-      out.stages[b.stage] = it->second;
+      out.stages[slot] = it->second;
     }
     out.pass = graph_draw(desc, graph_->conventions);
     out.targets.color[0] = target->second;

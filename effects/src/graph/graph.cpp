@@ -138,7 +138,7 @@ std::string check_pass(const EffectGraph& g, const PassDesc& p) {
         return fmt::format("pass '{}': a frame of its per-frame constants is empty", p.name);
   std::set<uint32_t> stages;
   for (const TextureBind& b : p.textures) {
-    if (b.stage >= pass::kMaxSamplers)
+    if (!pass::sampler_binding(p.draw, b.stage)) // 0..15, or 257..260: the vertex stage's
       return fmt::format("pass '{}': sampler stage {} out of range", p.name, b.stage);
     if (!stages.insert(b.stage).second)
       return fmt::format("pass '{}': sampler stage {} bound twice", p.name, b.stage);

@@ -46,12 +46,17 @@ ir::Result<EffectGraph> single_pass_graph(pass::Pass pass, uint32_t width, uint3
   // its image leaves it for the graph, and the device binds it back by name.
   // An sRGB stage (SRGBTEXTURE) gets its image decoded once here, before filtering, as every
   // device would decode it (pass/srgb.h): one more input texture, read as a plain one.
+  // The vertex stage's samplers (vs_3_0 texldl) the same way, bound as stages 257 + N
+  // (TextureBind::stage); their textures are named vs_sN.
   std::map<std::pair<const img::Image*, bool>, std::string> names;
-  for (uint32_t s = 0; s < pass::kMaxSamplers; ++s) {
-    pass::TextureBinding& b = pass.textures[s];
+  for (uint32_t s = 0; s < pass::kSamplerSlots; ++s) {
+    const bool vertex = s >= pass::kMaxSamplers;
+    const uint32_t stage = vertex ? pass::kVertexSampler0 + (s - pass::kMaxSamplers) : s;
+    pass::TextureBinding& b = *pass::sampler_binding(pass, stage);
     if (!b.image) continue;
-    auto [it, added] =
-        names.emplace(std::pair{b.image.get(), b.sampler.srgb}, fmt::format("s{}", s));
+    auto [it, added] = names.emplace(std::pair{b.image.get(), b.sampler.srgb},
+                                     vertex ? fmt::format("vs_s{}", s - pass::kMaxSamplers)
+                                            : fmt::format("s{}", s));
     if (b.sampler.srgb) b = pass::srgb_resolved(b);
     std::shared_ptr<const img::Image> image = std::move(b.image);
     if (added) {
@@ -64,7 +69,7 @@ ir::Result<EffectGraph> single_pass_graph(pass::Pass pass, uint32_t width, uint3
       t.contents = std::move(image);
       graph.textures.push_back(std::move(t));
     }
-    desc.textures.push_back({s, it->second});
+    desc.textures.push_back({stage, it->second});
   }
   // oC0 into kSinglePassTarget, oC1..oC3 (MRT) into targets of the same size and format; the
   // graph names them (more_targets), and graph_draw counts them back into the draw.

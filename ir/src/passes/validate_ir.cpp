@@ -30,7 +30,7 @@ uint32_t addressable(RegFile f, Profile p) {
   case RegFile::ConstInt: return l.int_consts;
   case RegFile::ColorOut: return vs ? 0 : 4;
   case RegFile::DepthOut: return vs ? 0 : 1;
-  case RegFile::Sampler: return vs ? 0 : 16;
+  case RegFile::Sampler: return vs ? l.samplers : 16; // vs_3_0: its 4 vertex samplers
   case RegFile::ConstBool: return l.bool_consts;
   case RegFile::Loop: return vs || p == Profile::ps_3_0 ? 1 : 0; // aL
   case RegFile::Label: return l.labels;
@@ -105,41 +105,14 @@ Status validate_ir(const Program& program) {
   return ok_status();
 }
 
-namespace {
-
-// What the interpreter and the code generator do not run yet in 2.x and 3.0, or nullptr.
-const char* not_yet(const Instruction& ins, ShaderStage stage) {
-  switch (ins.op) {
-  case Opcode::TexLdL:
-    // ps_3_0 texldl runs (every texture has one level: the lod selects level 0); vs_3_0's
-    // vertex texture fetch needs vertex sampler stages, which a pass does not carry yet.
-    if (stage == ShaderStage::Vertex)
-      return "vertex texture fetch needs vertex sampler stages, which passes do not carry yet";
-    break;
-  default: break;
-  }
-  return nullptr;
-}
-
-} // namespace
-
 Status check_executable(const Program& program, std::string_view backend) {
   if (std::find(std::begin(kExecutableProfiles), std::end(kExecutableProfiles), program.profile) !=
       std::end(kExecutableProfiles))
     return ok_status();
-  // Shader models 2.x and 3.0: arithmetic, predication, static and dynamic flow control,
-  // vPos and vFace run; name each statement that does not, so the user sees what to change.
+  // Shader models 2.x and 3.0 run whole (texldl in both stages, NUMERICS.md F11 and F14; a
+  // predicate on flow control is refused by validate_ir as not Direct3D 9) except relative
+  // writes to o#; name each operand that uses one, so the user sees what to change.
   DiagnosticSink sink;
-  for (const Instruction& ins : program.code) {
-    const char* why = not_yet(ins, program.stage());
-    if (!why) continue;
-    const auto v = static_cast<int>(ins.op);
-    std::string what = v < kOpcodeCount ? std::string(op_info(ins.op).mnemonic) : "?";
-    if (ins.pred) what = "predicated " + what;
-    sink.error(ins.loc, "not-supported",
-               fmt::format("not supported yet by {}: {} in {} ({})", backend, what,
-                           profile_name(program.profile), why));
-  }
   // Relative addressing: c# everywhere, and a vs_3_0's or ps_3_0's v# read through the table
   // of its declared inputs (sm3_interface.h relative_input_links). A vs_3_0's o[a0 + n]
   // writes outputs that link by semantic to 2.0 registers that need not be consecutive, which

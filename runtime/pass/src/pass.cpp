@@ -53,6 +53,16 @@ bool reads_mips_by_lod(const Pass& pass) {
   return false;
 }
 
+TextureBinding* sampler_binding(Pass& pass, uint32_t stage) {
+  if (stage < kMaxSamplers) return &pass.textures[stage];
+  return is_vertex_sampler(stage) ? &pass.vertex_textures[stage - kVertexSampler0] : nullptr;
+}
+
+const TextureBinding* sampler_binding(const Pass& pass, uint32_t stage) {
+  if (stage < kMaxSamplers) return &pass.textures[stage];
+  return is_vertex_sampler(stage) ? &pass.vertex_textures[stage - kVertexSampler0] : nullptr;
+}
+
 uint32_t position_input(const ir::Program& vertex_program) {
   for (const ir::Declaration& d : vertex_program.decls)
     if (d.reg.file == ir::RegFile::Input && d.usage == ir::DeclUsage::Position &&

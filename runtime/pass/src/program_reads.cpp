@@ -36,8 +36,7 @@ std::vector<RegRead> constant_reads(const ir::Program& program, std::vector<RegR
 }
 
 std::vector<RegRead> sampler_reads(const ir::Program& program) {
-  std::vector<RegRead> out;
-  if (program.stage() != ir::ShaderStage::Pixel) return out;
+  std::vector<RegRead> out; // a vs_3_0 names its samplers as operands too (texldl)
   for (const ir::Instruction& ins : program.code) {
     for (const ir::SrcOperand& op : ins.src)
       if (op.file == ir::RegFile::Sampler) add_once(out, ir::RegFile::Sampler, op.index, op.loc);

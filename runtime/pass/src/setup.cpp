@@ -76,6 +76,13 @@ void set_sampler(const RunRequest& req, TextureBinding& b) {
   b.sampler.srgb = req.srgb_texture;
 }
 
+// How --texture names a sampler: sN for the pixel stage, vs:sN for the vertex stage's
+// (is_vertex_sampler).
+std::string sampler_flag(uint32_t sampler) {
+  return is_vertex_sampler(sampler) ? fmt::format("vs:s{}", sampler - kVertexSampler0)
+                                    : fmt::format("s{}", sampler);
+}
+
 // A 2D texture's levels: `levels` as given ("mips:"), or generated from its one image when
 // the request asks for a chain; an error names the stage.
 bool bind_2d(const RunRequest& req, const TextureSetting& t, bool given,
@@ -84,12 +91,37 @@ bool bind_2d(const RunRequest& req, const TextureSetting& t, bool given,
   if (!given && req.generated_levels != 1) levels = generate_mips(levels[0], req.generated_levels);
   ir::Result<TextureBinding> mb = mipmapped_binding(std::move(levels));
   if (!mb) {
-    diags.other.error({}, "texture", fmt::format("--texture s{}: {}", t.sampler, mb.message()));
+    diags.other.error({}, "texture",
+                      fmt::format("--texture {}: {}", sampler_flag(t.sampler), mb.message()));
     return false;
   }
   b.image = mb->image;
   b.levels = mb->levels;
   return true;
+}
+
+// The unbound-sampler and unused-texture warnings of one stage: `used` are the samplers its
+// listing reads (numbered as the listing numbers them), `first` the number its s0 has in
+// TextureSetting::sampler (0, or kVertexSampler0), `count` how many it has.
+void warn_bindings(const RunRequest& req, const std::vector<detail::RegRead>& used,
+                   const TextureBinding* bindings, uint32_t first, uint32_t count,
+                   ir::DiagnosticSink& sink, RunDiagnostics& diags) {
+  const char* listing = first == 0 ? "pixel" : "vertex";
+  for (const auto& r : used)
+    if (r.index >= count || !bindings[r.index].image)
+      sink.warning(r.loc, "unbound-sampler",
+                   fmt::format("sampler {} has no texture (--texture {}=...); it reads "
+                               "(0,0,0,1)",
+                               r.index, sampler_flag(first + r.index)));
+  for (const TextureSetting& t : req.textures) {
+    if (t.sampler < first || t.sampler >= first + count) continue;
+    bool read = false;
+    for (const auto& r : used) read = read || first + r.index == t.sampler;
+    if (!read)
+      diags.other.warning({}, "unused-texture",
+                          fmt::format("--texture {}: the {} listing never samples s{}",
+                                      sampler_flag(t.sampler), listing, t.sampler - first));
+  }
 }
 
 bool bind_textures(const RunRequest& req, Pass& pass, RunDiagnostics& diags) {
@@ -107,20 +139,22 @@ bool bind_textures(const RunRequest& req, Pass& pass, RunDiagnostics& diags) {
                                     : missing                    ? kRuleTextureMissing
                                                                  : std::string_view("texture");
       diags.other.error({}, std::string(rule),
-                        fmt::format("--texture s{}: {}", sampler, r.message()));
+                        fmt::format("--texture {}: {}", sampler_flag(sampler), r.message()));
       return std::shared_ptr<const img::Image>();
     }
     return loaded.emplace(source, std::make_shared<const img::Image>(std::move(r).value()))
         .first->second;
   };
   for (const TextureSetting& t : req.textures) {
-    if (t.sampler >= kMaxSamplers) {
+    TextureBinding* bound = sampler_binding(pass, t.sampler);
+    if (!bound) {
       diags.other.error({}, "texture",
-                        fmt::format("sampler s{} does not exist (s0..s15)", t.sampler));
+                        fmt::format("sampler {} does not exist (s0..s15, vs:s0..vs:s3)",
+                                    sampler_flag(t.sampler)));
       ok = false;
       continue;
     }
-    TextureBinding& b = pass.textures[t.sampler];
+    TextureBinding& b = *bound;
     if (t.image) {
       ok = bind_2d(req, t, false, {t.image}, b, diags) && ok;
       set_sampler(req, b);
@@ -143,7 +177,8 @@ bool bind_textures(const RunRequest& req, Pass& pass, RunDiagnostics& diags) {
     } else {
       ir::Result<TextureBinding> lb = layered_binding(shape, std::move(layers));
       if (!lb) {
-        diags.other.error({}, "texture", fmt::format("--texture s{}: {}", t.sampler, lb.message()));
+        diags.other.error({}, "texture",
+                          fmt::format("--texture {}: {}", sampler_flag(t.sampler), lb.message()));
         ok = false;
         continue;
       }
@@ -153,23 +188,12 @@ bool bind_textures(const RunRequest& req, Pass& pass, RunDiagnostics& diags) {
     }
     set_sampler(req, b);
   }
-  std::vector<detail::RegRead> used;
-  if (req.ps) used = detail::sampler_reads(*req.ps);
   if (!ok) return false; // the load error says it all; no unbound-stage warnings on top
-  for (const auto& r : used)
-    if (r.index >= kMaxSamplers || !pass.textures[r.index].image)
-      diags.ps.warning(r.loc, "unbound-sampler",
-                       fmt::format("sampler stage {} has no texture (--texture s{}=...); it reads "
-                                   "(0,0,0,1)",
-                                   r.index, r.index));
-  for (const TextureSetting& t : req.textures) {
-    bool read = false;
-    for (const auto& r : used) read = read || r.index == t.sampler;
-    if (!read)
-      diags.other.warning({}, "unused-texture",
-                          fmt::format("--texture s{}: the pixel listing never samples stage {}",
-                                      t.sampler, t.sampler));
-  }
+  const std::vector<detail::RegRead> none;
+  warn_bindings(req, req.ps ? detail::sampler_reads(*req.ps) : none, pass.textures.data(), 0,
+                kMaxSamplers, diags.ps, diags);
+  warn_bindings(req, req.vs ? detail::sampler_reads(*req.vs) : none, pass.vertex_textures.data(),
+                kVertexSampler0, kMaxVertexSamplers, diags.vs, diags);
   return ok;
 }
 

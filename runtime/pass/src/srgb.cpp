@@ -38,6 +38,8 @@ TextureBinding srgb_resolved(const TextureBinding& b) {
 bool reads_srgb(const Pass& pass) {
   for (const TextureBinding& b : pass.textures)
     if (b.sampler.srgb) return true;
+  for (const TextureBinding& b : pass.vertex_textures)
+    if (b.sampler.srgb) return true;
   return false;
 }
 

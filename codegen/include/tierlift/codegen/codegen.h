@@ -23,6 +23,9 @@ inline constexpr uint32_t kVertexConstantsBinding = 0;
 inline constexpr uint32_t kPixelConstantsBinding = 1;
 inline constexpr uint32_t kFirstSamplerBinding = 2; // binding = 2 + sampler/stage number
 inline constexpr uint32_t kTraceBinding = 18;       // CodegenOptions::trace's storage buffer
+// A vs_3_0's samplers (texldl, vertex texture fetch) bind at 19 + s#: apart from the pixel
+// stage's, since one descriptor set serves both stages (NUMERICS.md F14).
+inline constexpr uint32_t kFirstVertexSamplerBinding = 19;
 // Interface locations shared by both stages: tN/oTN at N, vN/oDN at 8 + N, oFog at 10.
 inline constexpr uint32_t kTexCoordLocation = 0;
 inline constexpr uint32_t kColorLocation = 8;

@@ -189,6 +189,7 @@ public:
             std::optional<Id> lod = std::nullopt,
             std::optional<std::pair<Id, Id>> grad = std::nullopt);
   bool fetches(uint32_t stage) const;               // CodegenOptions::stage_fetch_unorm8 applies
+  uint32_t sampler_binding(uint32_t stage) const;   // 2 + s#, or 19 + s# in a vertex program
   Id fetch_unorm8(Id sampled_image, Id coord_vec2); // the texel's k/255.0f
   Id point_texel_unorm8(Id sampled_image, Id coord_vec2); // its UNORM value, as the device has it
   Id clamp_uv01(Id coord_vec2); // NClamp(uv, 0, 1): u in [0, 1] kept, NaN → 0

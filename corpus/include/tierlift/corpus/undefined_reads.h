@@ -14,7 +14,9 @@ namespace tierlift::corpus {
 // with neither a vertex program nor transformed vertices: every pixel runs those inputs),
 // samples a texture at a non-finite coordinate. Returns the first such read as text
 // ("s2 at (inf, nan)"), or "" when there is none or the pass interpolates its inputs (the
-// rule then excludes nothing).
+// rule then excludes nothing). A pass of a vertex program alone (the corpus runner's) is
+// checked the same way at each of its vertices: its texldl reads of the vertex samplers
+// ("vertex s0 at (nan, 1)").
 std::string non_finite_read(const pass::Pass& pass);
 
 // The second case of the rule: `sincos` of an argument outside [−π, π] (Direct3D 9 defines it

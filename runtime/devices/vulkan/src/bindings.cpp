@@ -50,36 +50,45 @@ ir::Status add_uniform_blocks(Device::Impl& d, Cleanup& cleanup, const codegen::
   return ir::ok_status();
 }
 
-// The combined image samplers: each sampled stage's image with a sampler of its state.
+// The combined image samplers: each sampled stage's image with a sampler of its state, the
+// pixel program's for the fragment stage and the vertex program's (vs_3_0 texldl, bindings
+// 19 + s#) for the vertex stage.
 ir::Status add_textures(Device::Impl& d, Cleanup& cleanup, const codegen::CompiledPair& pair,
                         const pass::Pass& pass, const SampledImages& images, Resources& res) {
   VkFormatProperties tex_props;
   vkGetPhysicalDeviceFormatProperties(d.physical, VK_FORMAT_R32G32B32A32_SFLOAT, &tex_props);
-  for (const auto& si : pair.ps.samplers) {
-    const uint32_t stage = si.stage % pass::kMaxSamplers;
-    const pass::TextureBinding& tb = pass.textures[stage];
-    if (!images[stage]) return draw_failure(fmt::format("s{}: no texture to sample", si.stage));
-    if (tb.sampler.filter == pass::Filter::Linear &&
-        !(tex_props.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT))
-      return draw_failure("the Vulkan device cannot filter RGBA32F textures linearly");
-    const pass::TextureShape shape = images[stage]->shape;
-    if (shape == pass::TextureShape::Cube && tb.sampler.filter == pass::Filter::Linear &&
-        !d.cube_faces_alone)
-      return draw_failure(fmt::format(
-          "s{}: a LINEAR cube read is refused: {} filters cube maps across face edges here "
-          "(VK_EXT_non_seamless_cube_map not offered or not enabled), while Direct3D 9 and the "
-          "CPU device filter each face on its own",
-          si.stage, d.props.deviceName));
-    Resources::Texture t;
-    t.binding = si.binding;
-    t.view = images[stage]->view;
-    if (ir::Status err =
-            create_sampler(d, cleanup, tb.sampler, images[stage]->levels, shape, t.sampler);
-        !err)
-      return std::move(err).failure();
-    res.layout.push_back({t.binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
-                          VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
-    res.textures.push_back(t);
+  for (const bool vertex : {false, true}) {
+    for (const auto& si : (vertex ? pair.vs : pair.ps).samplers) {
+      const uint32_t number = vertex ? pass::kVertexSampler0 + si.stage : si.stage;
+      const uint32_t slot = pass::sampler_slot(number);
+      const pass::TextureBinding* tb = pass::sampler_binding(pass, number);
+      const char* which = vertex ? "vertex " : "";
+      if (!tb || !images[slot])
+        return draw_failure(fmt::format("{}s{}: no texture to sample", which, si.stage));
+      if (tb->sampler.filter == pass::Filter::Linear &&
+          !(tex_props.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT))
+        return draw_failure("the Vulkan device cannot filter RGBA32F textures linearly");
+      const pass::TextureShape shape = images[slot]->shape;
+      if (shape == pass::TextureShape::Cube && tb->sampler.filter == pass::Filter::Linear &&
+          !d.cube_faces_alone)
+        return draw_failure(fmt::format(
+            "{}s{}: a LINEAR cube read is refused: {} filters cube maps across face edges here "
+            "(VK_EXT_non_seamless_cube_map not offered or not enabled), while Direct3D 9 and "
+            "the CPU device filter each face on its own",
+            which, si.stage, d.props.deviceName));
+      Resources::Texture t;
+      t.binding = si.binding;
+      t.view = images[slot]->view;
+      if (ir::Status err =
+              create_sampler(d, cleanup, tb->sampler, images[slot]->levels, shape, t.sampler);
+          !err)
+        return std::move(err).failure();
+      res.layout.push_back(
+          {t.binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+           VkShaderStageFlags(vertex ? VK_SHADER_STAGE_VERTEX_BIT : VK_SHADER_STAGE_FRAGMENT_BIT),
+           nullptr});
+      res.textures.push_back(t);
+    }
   }
   return ir::ok_status();
 }
@@ -106,7 +115,7 @@ ir::Status create_set(Device::Impl& d, Cleanup& cleanup, const Resources& res, B
   VkDevice dev = d.device;
   VkResult r = VK_SUCCESS;
   VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2},
-                                   {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 16},
+                                   {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, pass::kSamplerSlots},
                                    {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}};
   VkDescriptorPoolCreateInfo dpi{};
   dpi.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;

@@ -13,9 +13,10 @@
 
 namespace tierlift::vulkan {
 
-// The image each sampler stage reads (R32G32B32A32_SFLOAT, in SHADER_READ_ONLY_OPTIMAL when
-// the draw runs); only the stages the pixel program samples need one.
-using SampledImages = std::array<const Image2D*, pass::kMaxSamplers>;
+// The image each sampler reads (R32G32B32A32_SFLOAT, in SHADER_READ_ONLY_OPTIMAL when the
+// draw runs), by pass::sampler_slot (the vertex stage's sN at kMaxSamplers + N); only the
+// samplers the programs read need one.
+using SampledImages = std::array<const Image2D*, pass::kSamplerSlots>;
 
 struct Bindings {
   VkPipelineLayout layout = VK_NULL_HANDLE;

@@ -22,8 +22,9 @@ std::optional<std::string> draw_key(const pass::Pass& pass, const DrawTextures& 
   k.put(textures.stencil);
   k.put(pass.color_targets);
   k.put(pass.depth_stencil);
-  for (uint32_t s = 0; s < pass::kMaxSamplers; ++s) {
-    const pass::TextureBinding& b = pass.textures[s];
+  for (uint32_t s = 0; s < pass::kSamplerSlots; ++s) { // both stages' samplers
+    const pass::TextureBinding& b =
+        s < pass::kMaxSamplers ? pass.textures[s] : pass.vertex_textures[s - pass::kMaxSamplers];
     if (!textures.stages[s] && b.image) return std::nullopt;       // host pixels: not cached
     if (b.shape != pass::TextureShape::Tex2D) return std::nullopt; // host layers: not either
     if (b.levels.size() > 1) return std::nullopt;                  // nor host mip levels

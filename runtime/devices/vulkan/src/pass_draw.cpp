@@ -245,8 +245,6 @@ ir::Status compile_programs(const Device::Impl& d, const pass::Pass& pass,
     if (!out) return draw_failure(join_diagnostics(diags));
     if (key) textures.reuse->keep_compiled(*key, pass.vertex_program, pass.pixel_program, *out);
   }
-  if (!out->vs.samplers.empty())
-    return draw_failure("vertex-stage texture sampling is not supported");
   return check_color_outputs(pass, out->ps);
 }
 
@@ -386,7 +384,7 @@ ir::Status prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawTextu
 }
 
 void record_draw(VkCommandBuffer cb, const Device::Impl& d, PreparedDraw& p) {
-  for (uint32_t s = 0; s < pass::kMaxSamplers; ++s)
+  for (uint32_t s = 0; s < pass::kSamplerSlots; ++s)
     if (Resident* r = p.sampled[s])
       p.fetched[s] ? record_as_fetched(cb, *r) : record_as_sampled(cb, d, *r);
   Resident& target = *p.target;

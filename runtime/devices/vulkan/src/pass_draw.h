@@ -23,10 +23,11 @@ namespace tierlift::vulkan {
 class ProgramReuse;
 
 struct DrawTextures {
-  // The texture each sampler stage reads. nullptr: the pass's own host image for that stage
-  // (pass.textures[s].image, uploaded as R32G32B32A32_SFLOAT for this draw only), or the
-  // unbound texture (0, 0, 0, 1) when it has none.
-  std::array<Resident*, pass::kMaxSamplers> stages{};
+  // The texture each sampler reads, by slot (StageTextures: the vertex stage's sN at
+  // kMaxSamplers + N). nullptr: the pass's own host image for that sampler (uploaded as
+  // R32G32B32A32_SFLOAT for this draw only), or the unbound texture (0, 0, 0, 1) when it has
+  // none.
+  std::array<Resident*, pass::kSamplerSlots> stages{};
   Resident* target = nullptr;
   // Render targets 1..3 (oC1..oC3), for a pass with pass.color_targets > 1, and the stencil
   // buffer (Resident::stencil) for a pass with a stencil test. Resident textures only.
@@ -50,8 +51,8 @@ struct DrawTextures {
 struct PreparedDraw {
   Cleanup objects;
   std::vector<std::unique_ptr<Resident>> host_textures;
-  std::array<Resident*, pass::kMaxSamplers> sampled{}; // the stages the pixel program reads
-  std::array<bool, pass::kMaxSamplers> fetched{};      // those reading RGBA8 bytes in place
+  std::array<Resident*, pass::kSamplerSlots> sampled{}; // by slot: those the programs read
+  std::array<bool, pass::kSamplerSlots> fetched{};      // those reading RGBA8 bytes in place
   Resident* target = nullptr;
   std::array<Resident*, 3> more_targets{}; // as in DrawTextures, those the pass draws into
   Resident* stencil = nullptr;

@@ -17,6 +17,11 @@ constexpr VkFormat kSampledFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 constexpr VkPipelineStageFlags kFragmentTests =
     VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
 
+// Sampled images are read by the pixel stage and, for vs_3_0's texldl (vertex texture fetch),
+// by the vertex stage.
+constexpr VkPipelineStageFlags kShaderReads =
+    VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
+
 struct Use {
   VkPipelineStageFlags stage;
   VkAccessFlags access;
@@ -31,7 +36,7 @@ Use last_use(VkImageLayout layout) {
   case VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL: return {VK_PIPELINE_STAGE_TRANSFER_BIT, 0};
   case VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL:
     return {VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT};
-  case VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL: return {VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0};
+  case VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL: return {kShaderReads, 0};
   case VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL:
     return {kFragmentTests, VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT};
   default: return {VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0};
@@ -49,8 +54,7 @@ Use next_use(VkImageLayout layout) {
     // loadOp LOAD and blending read the attachment, the store writes it.
     return {VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
             VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT};
-  case VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL:
-    return {VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT};
+  case VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL: return {kShaderReads, VK_ACCESS_SHADER_READ_BIT};
   case VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL:
     // loadOp LOAD and the stencil test read the buffer, the stencil operations write it.
     return {kFragmentTests, VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |

@@ -106,52 +106,74 @@ ir::Status host_mip_texture(Device::Impl& d, const pass::TextureBinding& b, Prep
   return ir::ok_status();
 }
 
-// The textures the pixel program samples: resident ones, else the pass's host images (or the
-// unbound texture) uploaded for this draw.
+namespace {
+
+// One sampler of either stage (`name` as messages show it: "s2", "vertex s0"), bound at
+// `slot`: its resident texture, else the binding's host image (or the unbound texture)
+// uploaded for this draw.
+ir::Status bind_one(Device::Impl& d, const pass::TextureBinding& raw, const DrawTextures& textures,
+                    const codegen::SamplerInfo& si, const std::string& name, uint32_t slot,
+                    PreparedDraw& out, SampledImages& images) {
+  Resident*& r = out.sampled[slot];
+  if (r) return ir::ok_status();
+  r = textures.stages[slot];
+  bool own = r && r == textures.target;
+  for (const Resident* m : textures.more_targets) own = own || (r && r == m);
+  if (own) return draw_failure(fmt::format("{}: a pass cannot sample its own render target", name));
+  ir::Status err = ir::ok_status();
+  // An sRGB stage reads its texels decoded before filtering (NUMERICS.md S1, S2), which
+  // this device does on the host (pass/srgb.h): a texture that lives on the device only
+  // (one an earlier pass rendered) has no host image to decode.
+  const pass::TextureBinding binding = pass::srgb_resolved(raw);
+  if (r && raw.sampler.srgb)
+    return draw_failure(fmt::format("{}: an sRGB read (SRGBTEXTURE) of a texture the device "
+                                    "rendered is not supported: only images given to the "
+                                    "pass are decoded",
+                                    name));
+  img::Image unbound(1, 1);
+  unbound.rgba = {0, 0, 0, 1}; // an unbound stage reads (0, 0, 0, 1), as in D3D9
+  if (si.type == ir::SamplerType::Cube || si.type == ir::SamplerType::Volume) {
+    // The binding's layers, uploaded with the draw (a resident texture is 2D: in an effect
+    // graph it holds the first layer only, effects::TextureBind).
+    const bool bound = r || binding.image || !binding.layers.empty();
+    r = nullptr;
+    err = host_layered_texture(d, si, binding, bound, out, r);
+  } else if (binding.shape != pass::TextureShape::Tex2D) {
+    err = draw_failure(fmt::format("{}: a 2D sampler cannot read a cube or volume texture", name));
+  } else if (raw.levels.size() > 1) {
+    r = nullptr; // the binding's levels, uploaded with the draw
+    err = host_mip_texture(d, raw, out, r);
+  } else if (!r) {
+    const img::Image& im = binding.image ? *binding.image : unbound;
+    err = host_texture(d, si.stage, im, out, r);
+  }
+  out.fetched[slot] = si.fetch_unorm8;
+  if (err && !si.fetch_unorm8) err = ensure_shadow(d, *r);
+  if (!err) return err;
+  images[slot] = si.fetch_unorm8 ? &r->stored.image : &r->sampled();
+  return ir::ok_status();
+}
+
+} // namespace
+
+// The textures the programs sample: the pixel program's s#, then the vertex program's (vs_3_0
+// texldl: the pass's vertex samplers, NUMERICS.md F14).
 ir::Status bind_sampled(Device::Impl& d, const pass::Pass& pass, const DrawTextures& textures,
                         const codegen::CompiledPair& pair, PreparedDraw& out,
                         SampledImages& images) {
-  img::Image unbound(1, 1);
-  unbound.rgba = {0, 0, 0, 1}; // an unbound stage reads (0, 0, 0, 1), as in D3D9
   for (const auto& si : pair.ps.samplers) {
     const uint32_t s = si.stage % pass::kMaxSamplers;
-    Resident*& r = out.sampled[s];
-    if (r) continue;
-    r = textures.stages[s];
-    bool own = r && r == textures.target;
-    for (const Resident* m : textures.more_targets) own = own || (r && r == m);
-    if (own)
-      return draw_failure(fmt::format("s{}: a pass cannot sample its own render target", si.stage));
-    ir::Status err = ir::ok_status();
-    // An sRGB stage reads its texels decoded before filtering (NUMERICS.md S1, S2), which
-    // this device does on the host (pass/srgb.h): a texture that lives on the device only
-    // (one an earlier pass rendered) has no host image to decode.
-    const pass::TextureBinding binding = pass::srgb_resolved(pass.textures[s]);
-    if (r && pass.textures[s].sampler.srgb)
-      return draw_failure(fmt::format("s{}: an sRGB read (SRGBTEXTURE) of a texture the device "
-                                      "rendered is not supported: only images given to the "
-                                      "pass are decoded",
-                                      si.stage));
-    if (si.type == ir::SamplerType::Cube || si.type == ir::SamplerType::Volume) {
-      // The binding's layers, uploaded with the draw (a resident texture is 2D: in an effect
-      // graph it holds the first layer only, effects::TextureBind).
-      const bool bound = r || binding.image || !binding.layers.empty();
-      r = nullptr;
-      err = host_layered_texture(d, si, binding, bound, out, r);
-    } else if (binding.shape != pass::TextureShape::Tex2D) {
-      err = draw_failure(
-          fmt::format("s{}: a 2D sampler cannot read a cube or volume texture", si.stage));
-    } else if (pass.textures[s].levels.size() > 1) {
-      r = nullptr; // the binding's levels, uploaded with the draw
-      err = host_mip_texture(d, pass.textures[s], out, r);
-    } else if (!r) {
-      const img::Image& im = binding.image ? *binding.image : unbound;
-      err = host_texture(d, si.stage, im, out, r);
-    }
-    out.fetched[s] = si.fetch_unorm8;
-    if (err && !si.fetch_unorm8) err = ensure_shadow(d, *r);
-    if (!err) return err;
-    images[s] = si.fetch_unorm8 ? &r->stored.image : &r->sampled();
+    if (ir::Status e = bind_one(d, pass.textures[s], textures, si, fmt::format("s{}", si.stage), s,
+                                out, images);
+        !e)
+      return e;
+  }
+  for (const auto& si : pair.vs.samplers) {
+    const std::string name = fmt::format("vertex s{}", si.stage);
+    const pass::TextureBinding* b = pass::sampler_binding(pass, pass::kVertexSampler0 + si.stage);
+    if (!b) return draw_failure(fmt::format("{}: the vertex stage has s0..s3 only", name));
+    const uint32_t slot = pass::sampler_slot(pass::kVertexSampler0 + si.stage);
+    if (ir::Status e = bind_one(d, *b, textures, si, name, slot, out, images); !e) return e;
   }
   return ir::ok_status();
 }

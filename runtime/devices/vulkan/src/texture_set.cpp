@@ -163,10 +163,12 @@ ir::Status resolve(TextureSet::State& s, const StageTextures& stages, const Rend
     out.stencil = s.find(targets.stencil);
     if (!out.stencil) return draw_failure("stencil buffer: " + unknown(targets.stencil));
   }
-  for (uint32_t k = 0; k < pass::kMaxSamplers; ++k) {
+  for (uint32_t k = 0; k < pass::kSamplerSlots; ++k) {
     if (stages[k] == TextureId::None) continue;
     out.stages[k] = s.find(stages[k]);
-    if (!out.stages[k]) return draw_failure(fmt::format("s{}: {}", k, unknown(stages[k])));
+    if (!out.stages[k])
+      return draw_failure(fmt::format("{}s{}: {}", k < pass::kMaxSamplers ? "" : "vertex ",
+                                      k % pass::kMaxSamplers, unknown(stages[k])));
   }
   return ir::ok_status();
 }

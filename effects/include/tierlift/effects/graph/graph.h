@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -44,7 +45,9 @@ struct TextureDesc {
 // first layer): the device that owns the texture puts its image there when it draws, so a
 // description holds no image.
 struct TextureBind {
-  uint32_t stage = 0; // sampler stage s# (ps_2_0) / texture stage (ps_1_x)
+  // Sampler stage s# (ps_2_0) / texture stage (ps_1_x); 257 + N: the vertex stage's sN (vs_3_0
+  // texldl, pass::is_vertex_sampler), bound to draw.vertex_textures[N].
+  uint32_t stage = 0;
   std::string texture;
 };
 
@@ -116,10 +119,12 @@ struct PassDesc {
   // This pass as frame `frame` (from 0) runs it: the per-frame constants put in place.
   PassDesc at_frame(unsigned frame) const;
   // The draw's own state of the stage `b` (one of `textures`) binds: its sampler state,
-  // texture-stage state and shape (std::out_of_range past pass::kMaxSamplers, which
-  // check_graph refuses).
+  // texture-stage state and shape (std::out_of_range for a number that names no sampler,
+  // which check_graph refuses).
   const pass::TextureBinding& binding(const TextureBind& b) const {
-    return draw.textures.at(b.stage);
+    const pass::TextureBinding* found = pass::sampler_binding(draw, b.stage);
+    if (!found) throw std::out_of_range("sampler stage out of range");
+    return *found;
   }
 };
 

@@ -314,7 +314,15 @@ std::string detail::setup_pass(const Pass& pass, const ShaderVM* vs, const Viewp
   const bool constant_inputs = out.constant_inputs = !vs && pass.transformed.empty();
   if (vs) {
     outs.reserve(pass.vertices.size());
-    for (const VertexInput& v : pass.vertices) outs.push_back(vs->run_vertex(v, pass.vs_constants));
+    // vs_3_0 texldl reads the vertex stage's own samplers with the pixel stage's sampling
+    // rules (NUMERICS.md F14); sRGB ones decoded as the draw decodes the pixel stage's.
+    std::array<pass::TextureBinding, pass::kMaxVertexSamplers> bindings;
+    for (uint32_t s = 0; s < bindings.size(); ++s)
+      bindings[s] = pass::srgb_resolved(pass.vertex_textures[s]);
+    const BoundTextures textures(bindings, pass.conventions.subtexel_bits,
+                                 pass.conventions.rounding == ir::Rounding::Llvmpipe);
+    for (const VertexInput& v : pass.vertices)
+      outs.push_back(vs->run_vertex(v, pass.vs_constants, textures));
   } else if (!constant_inputs) {
     outs = pass.transformed;
   } else {

@@ -44,7 +44,7 @@ Vec4 sample_texture(const img::Image& image, const SamplerState& sampler, float 
 }
 
 Vec4 BoundTextures::sample(uint32_t stage, const Vec4& coord, float lod_bias) const {
-  if (stage >= kMaxSamplers || !bindings_[stage].image) return {0, 0, 0, 1};
+  if (stage >= bindings_.size() || !bindings_[stage].image) return {0, 0, 0, 1};
   const TextureBinding& b = bindings_[stage];
   if (b.levels.size() > 1) { // a mip chain read without a quad: zero gradients
     pass::LodInput in;
@@ -61,7 +61,7 @@ Vec4 BoundTextures::sample(uint32_t stage, const Vec4& coord, float lod_bias) co
 }
 
 StageState BoundTextures::stage_state(uint32_t stage) const {
-  if (stage >= kMaxSamplers) return {};
+  if (stage >= bindings_.size()) return {};
   return bindings_[stage].stage;
 }
 

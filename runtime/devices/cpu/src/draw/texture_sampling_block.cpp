@@ -325,7 +325,7 @@ bool unaddressable_lane(const TextureBinding& b, const float* const coord[4], in
 
 void BoundTextures::sample_block(uint32_t stage, const float* const coord[4], const float* bias,
                                  int n, Lanes out[4]) const {
-  if (stage >= kMaxSamplers || !bindings_[stage].image || bindings_[stage].image->width == 0 ||
+  if (stage >= bindings_.size() || !bindings_[stage].image || bindings_[stage].image->width == 0 ||
       bindings_[stage].image->height == 0 ||
       bindings_[stage].shape != pass::TextureShape::Tex2D || // cubes and volumes: per lane
       bindings_[stage].levels.size() > 1) {                  // mip chains: sample() picks the level

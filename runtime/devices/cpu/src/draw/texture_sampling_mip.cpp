@@ -7,7 +7,7 @@
 namespace tierlift::cpu {
 
 Vec4 BoundTextures::sample_lod(uint32_t stage, const Vec4& coord, const pass::LodInput& lod) const {
-  if (stage >= kMaxSamplers || !bindings_[stage].image) return {0, 0, 0, 1};
+  if (stage >= bindings_.size() || !bindings_[stage].image) return {0, 0, 0, 1};
   const TextureBinding& b = bindings_[stage];
   if (b.levels.size() <= 1 || b.shape != pass::TextureShape::Tex2D)
     return sample(stage, coord, lod.bias);

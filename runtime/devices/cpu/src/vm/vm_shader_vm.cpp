@@ -40,9 +40,22 @@ void begin(vm::Invocation& inv, const vm::Prepared& p, const ConstantBank& const
 } // namespace
 
 VertexOutput ShaderVM::run_vertex(const VertexInput& in, const ConstantBank& constants) const {
+  return vertex(in, constants, nullptr);
+}
+
+VertexOutput ShaderVM::run_vertex(const VertexInput& in, const ConstantBank& constants,
+                                  const TextureUnit& textures) const {
+  return vertex(in, constants, &textures);
+}
+
+// One vertex. Its texldl reads `textures` (nullptr: (0, 0, 0, 1)) at the lod it gives: a
+// vertex has no neighbours, so no read of this stage takes gradients.
+VertexOutput ShaderVM::vertex(const VertexInput& in, const ConstantBank& constants,
+                              const TextureUnit* textures) const {
   const vm::Prepared& p = impl_->p;
   vm::Invocation inv;
   begin(inv, p, constants);
+  inv.tex = textures;
   for (int i = 0; i < vm::kInputCount; ++i) inv.reg[vm::kInputBase + i] = in.v[i];
   inv.reg[vm::kOutBase + vm::kOutPos] = {0, 0, 0, 1};
   vm::run(p, inv);

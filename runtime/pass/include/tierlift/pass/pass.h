@@ -94,10 +94,34 @@ inline bool reads_by_lod(const TextureBinding& b) {
 }
 
 inline constexpr uint32_t kMaxSamplers = 16;
+// Vertex texture fetch (vs_3_0 texldl, NUMERICS.md F14): the vertex stage has its own four
+// samplers, s0..s3 in the listing, D3DVERTEXTEXTURESAMPLER0..3 on the API side, which Direct3D
+// 9 numbers 257..260 in SetTexture and SetSamplerState. Where one number names a sampler of
+// either stage (pass::TextureSetting::sampler, effects::TextureBind::stage) it is that one:
+// 0..15 a pixel stage, 257 + N the vertex stage's sN (Pass::vertex_textures[N]).
+inline constexpr uint32_t kMaxVertexSamplers = 4;
+inline constexpr uint32_t kVertexSampler0 = 257;
+constexpr bool is_vertex_sampler(uint32_t stage) {
+  return stage >= kVertexSampler0 && stage < kVertexSampler0 + kMaxVertexSamplers;
+}
+// Arrays that hold both stages' samplers side by side (vulkan::StageTextures) put the pixel
+// stage's s# at # and the vertex stage's sN at kMaxSamplers + N: sampler_slot maps a sampler
+// number (above) to its slot, kSamplerSlots when it names none.
+inline constexpr uint32_t kSamplerSlots = kMaxSamplers + kMaxVertexSamplers;
+constexpr uint32_t sampler_slot(uint32_t stage) {
+  if (stage < kMaxSamplers) return stage;
+  return is_vertex_sampler(stage) ? kMaxSamplers + (stage - kVertexSampler0) : kSamplerSlots;
+}
 
 struct Pass;
-// Whether any sampler stage of `pass` holds a mip chain read by lod (reads_by_lod).
+// Whether any pixel-stage sampler of `pass` holds a mip chain read by lod (reads_by_lod): the
+// pixel stage then takes gradients by quads. (The vertex stage reads with texldl only, whose
+// lod is explicit.)
 bool reads_mips_by_lod(const Pass& pass);
+// The binding a sampler number (0..15, or 257 + N: is_vertex_sampler) names in `pass`:
+// pass.textures[stage] or pass.vertex_textures[stage − 257]; nullptr for any other number.
+TextureBinding* sampler_binding(Pass& pass, uint32_t stage);
+const TextureBinding* sampler_binding(const Pass& pass, uint32_t stage);
 
 enum class BlendMode : uint8_t {
   Replace,             // dst = src
@@ -182,6 +206,11 @@ struct Pass {
   std::shared_ptr<const ir::Program> pixel_program;
   ConstantBank vs_constants, ps_constants;
   std::array<TextureBinding, kMaxSamplers> textures{}; // pixel-stage sampler stages
+  // The vertex stage's samplers (vs_3_0 texldl; element N is the listing's sN, D3D9's
+  // D3DVERTEXTEXTURESAMPLER N): read with the pixel stage's sampling rules, at the lod texldl
+  // gives. Unbound ones read (0, 0, 0, 1), as an unbound pixel stage. 2D textures (a mip chain
+  // allowed); the texture-stage state (`stage`) is ps_1_x's and means nothing here.
+  std::array<TextureBinding, kMaxVertexSamplers> vertex_textures{};
 
   std::vector<VertexInput> vertices;
   std::vector<VertexOutput> transformed;

@@ -21,7 +21,7 @@ std::shared_ptr<const img::Image> srgb_decoded(const std::shared_ptr<const img::
 // flag cleared: what the stage reads, for a device that samples it as a plain texture.
 TextureBinding srgb_resolved(const TextureBinding& b);
 
-// Whether any stage of `pass` reads sRGB.
+// Whether any stage of `pass` reads sRGB (a pixel stage or a vertex sampler).
 bool reads_srgb(const Pass& pass);
 
 } // namespace tierlift::pass

@@ -89,6 +89,11 @@ public:
 
   // Thread-safe: all per-invocation state lives on the caller's stack.
   VertexOutput run_vertex(const VertexInput& in, const ConstantBank& constants) const;
+  // The same with the vertex stage's samplers (vs_3_0 texldl, vertex texture fetch): stage N
+  // of `textures` is the listing's sN, D3D9's D3DVERTEXTEXTURESAMPLER N. Without them every
+  // read is (0, 0, 0, 1), as from an unbound sampler.
+  VertexOutput run_vertex(const VertexInput& in, const ConstantBank& constants,
+                          const TextureUnit& textures) const;
   PixelOutput run_pixel(const PixelInput& in, const ConstantBank& constants,
                         const TextureUnit& textures) const;
   // The same, recording each instruction's destination into `trace` (sized to the program).
@@ -118,6 +123,8 @@ public:
                 InstructionTrace& trace, int traced) const;
 
 private:
+  VertexOutput vertex(const VertexInput& in, const ConstantBank& constants,
+                      const TextureUnit* textures) const;
   struct Impl;
   explicit ShaderVM(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;

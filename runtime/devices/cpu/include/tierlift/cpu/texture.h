@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 
 #include "tierlift/cpu/shader_vm.h"
 #include "tierlift/image/image.h"
@@ -50,8 +51,9 @@ Vec4 sample_volume(const TextureBinding& b, const Vec4& coord, bool llvmpipe, in
 // The TextureUnit the pixel stage of a draw sees: sample(stage, …) reads bindings[stage].
 class BoundTextures final : public TextureUnit {
 public:
-  BoundTextures(const std::array<TextureBinding, kMaxSamplers>& bindings, int subtexel_bits,
-                bool llvmpipe = false)
+  // `bindings`: a stage's samplers, stage s at [s] (Pass::textures, or Pass::vertex_textures
+  // for the vertex stage's texldl); a stage past its end reads (0, 0, 0, 1).
+  BoundTextures(std::span<const TextureBinding> bindings, int subtexel_bits, bool llvmpipe = false)
       : bindings_(bindings), subtexel_bits_(subtexel_bits), llvmpipe_(llvmpipe) {}
   // A stage with a mip chain (TextureBinding::levels) reads the levels pass::select_levels
   // picks (the exact rules, or lavapipe's when `llvmpipe`) and blends them (NUMERICS.md M3);
@@ -64,7 +66,7 @@ public:
                     Lanes out[4]) const override;
 
 private:
-  const std::array<TextureBinding, kMaxSamplers>& bindings_;
+  std::span<const TextureBinding> bindings_;
   int subtexel_bits_;
   bool llvmpipe_; // sample_texture_llvmpipe instead of sample_texture
 };

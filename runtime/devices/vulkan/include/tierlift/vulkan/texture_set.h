@@ -55,11 +55,13 @@ namespace tierlift::vulkan {
 // A texture of one TextureSet. None (0) is no texture; ids are never reused within a set.
 enum class TextureId : uint32_t { None = 0 };
 
-// The texture each pixel-stage sampler stage reads in TextureSet::draw. None: the pass's
-// own host image for that stage (pass.textures[s].image, uploaded for that draw only, as
-// Device::draw does), or the unbound texture (0, 0, 0, 1) when it has none. Sampler state
-// always comes from pass.textures[s].sampler.
-using StageTextures = std::array<TextureId, pass::kMaxSamplers>;
+// The texture each sampler reads in TextureSet::draw, by pass::sampler_slot: the pixel
+// stage's s# at #, the vertex stage's sN (vs_3_0 texldl) at pass::kMaxSamplers + N. None: the
+// pass's own host image for that sampler (pass.textures[s].image, or
+// pass.vertex_textures[N].image, uploaded for that draw only, as Device::draw does), or the
+// unbound texture (0, 0, 0, 1) when it has none. Sampler state always comes from the pass's
+// binding of that sampler.
+using StageTextures = std::array<TextureId, pass::kSamplerSlots>;
 
 // What a draw renders into: oC0..oC(n−1) in color[0..n−1] (n = pass.color_targets, every
 // one the same size, the rest None) and, for a pass with a stencil test, an 8-bit stencil
