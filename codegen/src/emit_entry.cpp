@@ -93,11 +93,10 @@ void Emitter::emit_entry() {
                        t_float);
         b.op_void(Op::OpStore, {var, x});
       } else {
-        // oD# of a vertex program before 3.0 reach the pixel stage saturated (docs/d3d9-rules.md
-        // §3.1); a vs_3_0's colour semantics are general outputs (NUMERICS.md F6).
+        // oD# reach the pixel stage saturated (docs/d3d9-rules.md §3.1) unless a vs_3_0 feeds
+        // a ps_3_0, whose colours are general outputs and float inputs (NUMERICS.md F6).
         const bool color = file == RegFile::AttrOut;
-        const Id value =
-            color && ir::saturates_colors(prog.profile) ? rule::saturate(arith(4), v) : v;
+        const Id value = color && plan.saturate_color_outputs ? rule::saturate(arith(4), v) : v;
         const Id var =
             output_var(make_iv(InterfaceKind::Output, file, index,
                                color ? kColorLocation + index : kTexCoordLocation + index, 4),

@@ -97,6 +97,7 @@ std::optional<CompiledPair> compile_linked_pair(const ir::Program& vs, const ir:
 
   EmitPlan vs_plan;
   vs_plan.relative_inputs = std::move(vs_links);
+  vs_plan.saturate_color_outputs = ir::saturates_vertex_colors(vs.profile, ps.profile);
   vs_plan.vs_outputs = wanted;
   std::set<Reg> written;
   for (const ir::Instruction& ins : vs.code)

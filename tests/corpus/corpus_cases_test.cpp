@@ -112,9 +112,10 @@ TEST(CorpusStages, InvalidListingFailsValidateAndSkipsTheRest) {
   EXPECT_EQ(r.failed_stage(), "validate");
 }
 
-TEST(CorpusStages, ShaderModel3RunsAndARelativeInputIsUnsupportedNotAFailure) {
-  // The front end takes both; SPIR-V runs the first (the differential run follows when a
-  // device is given), not yet the v0[aL] of the second.
+TEST(CorpusStages, ShaderModel3RunsAndARelativeOutputIsUnsupportedNotAFailure) {
+  // The front end takes all three; SPIR-V runs the first and the v0[aL] read of the second
+  // (the differential run follows when a device is given), not yet the o[aL] write of the
+  // third (NUMERICS.md F13).
   CaseResult r = run_listing("c", "c.psh", "ps_3_0\nmov oC0, c0\n", no_device());
   EXPECT_EQ(stage_verdict(r, kStageParse), Verdict::Pass);
   EXPECT_EQ(stage_verdict(r, kStageValidate), Verdict::Pass);
@@ -125,8 +126,15 @@ TEST(CorpusStages, ShaderModel3RunsAndARelativeInputIsUnsupportedNotAFailure) {
                              "mov r0, c0\nloop aL, i0\nadd r0, r0, v0[aL]\nendloop\nmov oC0, r0\n",
                              no_device());
   EXPECT_EQ(stage_verdict(g, kStageValidate), Verdict::Pass);
-  EXPECT_EQ(stage_verdict(g, kStageSpirv), Verdict::Unsupported);
-  EXPECT_EQ(g.verdict, Verdict::Unsupported);
+  EXPECT_EQ(stage_verdict(g, kStageSpirv), Verdict::Pass);
+  CaseResult h = run_listing("h", "h.vsh",
+                             "vs_3_0\ndcl_position v0\ndcl_position o0\ndcl_texcoord0 o1\n"
+                             "defi i0, 1, 1, 1, 0\nmov o0, v0\nloop aL, i0\nmov o[aL], v0\n"
+                             "endloop\n",
+                             no_device());
+  EXPECT_EQ(stage_verdict(h, kStageValidate), Verdict::Pass);
+  EXPECT_EQ(stage_verdict(h, kStageSpirv), Verdict::Unsupported);
+  EXPECT_EQ(h.verdict, Verdict::Unsupported);
 }
 
 TEST(CorpusStages, ShaderModel4IsUnsupportedNotAFailure) {

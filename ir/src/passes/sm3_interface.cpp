@@ -238,6 +238,10 @@ bool saturates_colors(Profile profile) {
   return profile != Profile::vs_3_0 && profile != Profile::ps_3_0;
 }
 
+bool saturates_vertex_colors(Profile vertex, Profile pixel) {
+  return saturates_colors(vertex) || saturates_colors(pixel);
+}
+
 std::optional<uint32_t> fog_slot(const Program& pixel) {
   if (pixel.profile != Profile::ps_3_0) return std::nullopt;
   const Placement placed = place_extras(pixel, RegFile::Input);

@@ -33,6 +33,9 @@ struct EmitPlan {
   // v[aL + n] of a vs_3_0/ps_3_0: the linked register of each v# number
   // (ir::relative_input_links of the program before linking).
   ir::RelativeLinks relative_inputs;
+  // Vertex stage: oD# leave it saturated (ir::saturates_vertex_colors in a pair,
+  // ir::saturates_colors of the program alone).
+  bool saturate_color_outputs = true;
 };
 
 // A computed result waiting to be stored (co-issued pairs read before either writes).

@@ -71,6 +71,13 @@ bool reads_inputs_relatively(const Program& program);
 // saturate a vertex program's colour outputs and a pixel program's colour inputs by this.
 bool saturates_colors(Profile profile);
 
+// Whether a vertex stage's colours are saturated as it writes them, in a pair: unless both
+// stages are shader model 3. A vs_3_0 before a ps_1_x/2_x has its colours clamped at its
+// output too (the ps_2_0 reads them clamped again), so that the interpolators see finite
+// values in [0, 1] as in every pair before 3.0; a pass without a vertex or pixel program
+// counts as a 2.0 stage there. Only a vs_3_0 → ps_3_0 pair interpolates colours unclamped.
+bool saturates_vertex_colors(Profile vertex, Profile pixel);
+
 // The texcoord slot a ps_3_0 reads fog0 from (where link_by_semantic puts it); nullopt when
 // it declares no fog0 or is of another profile.
 std::optional<uint32_t> fog_slot(const Program& pixel);

@@ -346,7 +346,9 @@ std::string detail::setup_pass(const Pass& pass, const ShaderVM* vs, const Viewp
   }
   std::vector<Triangle>& setup = out.triangles;
   detail::ColorClamps clamps;
-  if (pass.vertex_program) clamps.vertex_out = ir::saturates_colors(pass.vertex_program->profile);
+  if (pass.vertex_program && pass.pixel_program)
+    clamps.vertex_out =
+        ir::saturates_vertex_colors(pass.vertex_program->profile, pass.pixel_program->profile);
   if (pass.pixel_program) clamps.pixel_in = ir::saturates_colors(pass.pixel_program->profile);
   for (const auto& t : tris) {
     if (t[0] >= outs.size() || t[1] >= outs.size() || t[2] >= outs.size())

@@ -62,10 +62,10 @@ struct Triangle {
   AttributePlanes planes;
 };
 
-// Where a pass's colours are clamped to [0, 1] (NUMERICS.md rule 26, F6,
-// ir::saturates_colors): as the vertex stage writes them (a vertex program before vs_3_0,
-// or none: the pass-through stage is a 2.0 one), and as the pixel stage reads them (a pixel
-// program before ps_3_0, or none).
+// Where a pass's colours are clamped to [0, 1] (NUMERICS.md rule 26, F6): as the vertex
+// stage writes them (ir::saturates_vertex_colors: unless a vs_3_0 feeds a ps_3_0; a missing
+// program is a 2.0 stage), and as the pixel stage reads them (a pixel program before ps_3_0,
+// or none: ir::saturates_colors).
 struct ColorClamps {
   bool vertex_out = true;
   bool pixel_in = true;
