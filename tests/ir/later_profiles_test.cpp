@@ -400,8 +400,7 @@ TEST(LaterProfiles, Vs30AddressesFourSamplers) {
   p.code[0].src[1].index = 4;
   Status s = validate_ir(p);
   ASSERT_FALSE(s.ok());
-  EXPECT_NE(s.message().find("s4 is outside the 4 registers vs_3_0 can address"),
-            std::string::npos)
+  EXPECT_NE(s.message().find("s4 is outside the 4 registers vs_3_0 can address"), std::string::npos)
       << s.message();
   p.profile = Profile::vs_2_0;
   p.code[0].src[1].index = 0;
