@@ -20,8 +20,9 @@
 // pass.depth_stencil.depth_test (DrawTargets below; not both in one pass yet).
 //
 // Interpolation: oT# and oD# are perspective-correct (oD# saturated per vertex first, and
-// clamped to [0, 1] again per pixel); z/w is interpolated linearly in screen space (exact
-// edge functions, double) into PixelInput::depth. How the rounding goes is
+// clamped to [0, 1] again per pixel); z/w is interpolated linearly in screen space into
+// PixelInput::depth (under Rounding::Llvmpipe with lavapipe's z plane, else from the exact
+// edge functions in double: NUMERICS.md D4). How the rounding goes is
 // pass.conventions.rounding (ir::Rounding), a device-matching choice, since D3D9 leaves it to
 // the hardware:
 //   * Llvmpipe (default): Mesa llvmpipe's arithmetic, so that the CPU device and the Vulkan
