@@ -18,6 +18,7 @@
 #include "commands.h"
 #include "front_end.h"
 #include "report.h"
+#include "run_depth.h"
 #include "run_files.h"
 #include "run_flags.h"
 #include "run_output.h"
@@ -316,6 +317,11 @@ int run(const RunFlags& f) {
   if (int code = load_listings(f, *plan, listings, report); code != kExitOk)
     return report.finish(code);
   if (!complete_request(f, listings, req, report)) return report.finish(kExitUsage);
+  ir::Result<effects::SinglePassDepth> depth = depth_start(f, req.width, req.height);
+  if (!depth) {
+    report.error(ir::failed_with(depth, "io") ? "io" : "usage", depth.message());
+    return report.finish(kExitUsage);
+  }
   report_input_sources(req, report);
   double prepare_ms = 0;
   int exit_code = kExitOk;
@@ -326,7 +332,7 @@ int run(const RunFlags& f) {
   std::optional<pass::Pass> traced;
   if (plan->trace) traced = *prepared;
   ir::Result<effects::EffectGraph> graph =
-      effects::single_pass_graph(std::move(*prepared), req.width, req.height, req.format);
+      effects::single_pass_graph(std::move(*prepared), req.width, req.height, req.format, *depth);
   prepared.reset();
   if (!graph) {
     report.error("graph", graph.message());
@@ -346,10 +352,17 @@ int run(const RunFlags& f) {
   const bool both = r.draws.size() == 2;
   const std::optional<double> write_ms = write_outputs(f, shown, both ? &vk : nullptr, report);
   if (!write_ms) return report.finish(kExitUsage);
-  if (report.json())
+  if (std::string err = write_depth_outputs(f, r); !err.empty()) {
+    report.error("io", err, f.depth_out);
+    return report.finish(kExitUsage);
+  }
+  if (report.json()) {
     report.result() = run_json(f, req, r, shown, vk, *write_ms);
-  else
+    report.result()["depth"] = depth_json(f, req.depth_stencil, r);
+  } else {
     print_text_result(shown, vk, r.vulkan_device, r.agreement, r.verdict);
+    print_depth_agreement(r);
+  }
   for (size_t i = 0; i < r.more_agreement.size() && !report.json(); ++i)
     fmt::print("oC{}: cpu vs vulkan: max abs per channel {:.3g} {:.3g} {:.3g} {:.3g}, identical "
                "pixels {:.2f} %: {}\n",
@@ -368,6 +381,10 @@ int run(const RunFlags& f) {
       report.error("agreement", fmt::format("oC{}: {}", i + 1, r.more_verdicts[i].summary));
       return report.finish(kExitInvalid);
     }
+  if (r.depth_verdict && !r.depth_verdict->pass) {
+    report.error("agreement", "depth: " + r.depth_verdict->summary);
+    return report.finish(kExitInvalid);
+  }
   return report.finish(kExitOk);
 }
 
@@ -440,6 +457,19 @@ void register_run_command(CLI::App& app) {
                                 "same size and format and write it (.png or .pfm); the lower "
                                 "--outputN are needed too",
                                 i + 1));
+  sub->add_option("--depth-func", f->depth_func,
+                  "Draw with a depth buffer, D3DRS_ZFUNC: never | less | equal | lessequal "
+                  "(default) | greater | notequal | greaterequal | always");
+  sub->add_option("--depth-write", f->depth_write,
+                  "Draw with a depth buffer, D3DRS_ZWRITEENABLE: on (default) | off");
+  sub->add_option("--depth-clear", f->depth_clear,
+                  "Draw with a depth buffer cleared to V in [0, 1] (default 1)");
+  sub->add_option("--depth-in", f->depth_in,
+                  "Draw with a depth buffer starting as FILE.pfm's red channel (target-sized, "
+                  "values in [0, 1])");
+  sub->add_option("--depth-out", f->depth_out,
+                  "Draw with a depth buffer and write it after the draw (.pfm, one float per "
+                  "pixel; with --backend both the Vulkan one beside it)");
   add_front_end_options(sub, f->fe, true);
   sub->add_option("--threads", f->threads, "Worker threads (0 = every core)")
       ->capture_default_str();

@@ -18,18 +18,19 @@ std::string vulkan_output(const std::string& output) {
 
 // The files the run reads, which no output may replace.
 std::vector<std::string> input_files(const RunFlags& f, const pass::RunRequest& r) {
-  std::vector<std::string> inputs{f.vs, f.ps};
+  std::vector<std::string> inputs{f.vs, f.ps, f.depth_in};
   for (const pass::TextureSetting& t : r.textures)
     for (const std::string& s : pass::layered_sources(t.source).sources) inputs.push_back(s);
   return inputs;
 }
 
-// Every image file the run writes, in order: -o (oC0) and --output1..3 (oC1..oC3), each
-// followed by its Vulkan twin when both devices run (out.png → out-vulkan.png).
+// Every image file the run writes, in order: -o (oC0), --output1..3 (oC1..oC3) and
+// --depth-out, each followed by its Vulkan twin when both devices run (out.png →
+// out-vulkan.png).
 std::vector<std::string> output_files(const RunFlags& f, bool both) {
   std::vector<std::string> files;
   for (const std::string* o :
-       {&f.output, &f.more_outputs[0], &f.more_outputs[1], &f.more_outputs[2]}) {
+       {&f.output, &f.more_outputs[0], &f.more_outputs[1], &f.more_outputs[2], &f.depth_out}) {
     if (o->empty()) continue;
     files.push_back(*o);
     if (both && *o != "-") files.push_back(vulkan_output(*o));
@@ -49,6 +50,13 @@ bool outputs_ok(const RunFlags& f, const pass::RunRequest& req, bool both, Repor
       report.error(f.output == "-" ? "usage" : "io", why, f.output);
       return false;
     }
+  }
+  if (!f.depth_out.empty() && !f.depth_out.ends_with(".pfm")) {
+    report.error(
+        "usage",
+        "--depth-out takes a .pfm file: the depth buffer is floats, which a PNG would round",
+        f.depth_out);
+    return false;
   }
   std::vector<std::string> earlier;
   for (const std::string& o : output_files(f, both)) {

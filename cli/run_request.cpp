@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "run_depth.h"
 #include "run_flags.h"
 #include "tierlift/image/image.h"
 
@@ -110,6 +111,9 @@ ir::Result<pass::RunRequest> build_request(const RunFlags& f) {
   r.srgb_texture = f.srgb_texture;
   r.srgb_write = f.srgb_write;
   r.texcoords_from_quad = true; // a t# --input does not set is the quad's uv, as in glow
+  ir::Result<pass::DepthStencilState> depth = depth_state(f);
+  if (!depth) return std::move(depth).failure();
+  r.depth_stencil = *depth;
   return r;
 }
 

@@ -32,6 +32,9 @@ struct RunFlags {
   float lod_bias = 0.0f;
   int max_mip_level = 0;
   bool srgb_texture = false, srgb_write = false; // --srgb-texture, --srgb-write
+  // The depth buffer (run_depth.h): --depth-func, --depth-write on|off, --depth-clear V,
+  // --depth-in FILE.pfm, --depth-out FILE.pfm; empty: not given. Any of them draws with one.
+  std::string depth_func, depth_write, depth_clear, depth_in, depth_out;
 };
 
 // The request, or the first flag in error (rule "usage", exit 2), in the order the flags are

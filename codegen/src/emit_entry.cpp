@@ -124,7 +124,11 @@ void Emitter::emit_entry() {
     if (writes_depth_) {
       const Id var = output_var(
           make_iv(InterfaceKind::BuiltIn, RegFile::DepthOut, 0, 0, 1, "FragDepth"), t_float);
-      b.op_void(Op::OpStore, {var, comp(load(RegFile::DepthOut, 0), 0)});
+      // Clamped to the viewport's depth range [0, 1] by rule 23's selects (NaN → 0), as the
+      // CPU device does (pass/depth.h): Vulkan leaves FragDepth outside [0, 1] undefined for
+      // a float depth buffer without depth clamping, so lavapipe never sees such a value.
+      const Id depth = rule::saturate(arith(1), comp(load(RegFile::DepthOut, 0), 0));
+      b.op_void(Op::OpStore, {var, depth});
     }
   }
   b.op_void(Op::OpReturn, {});

@@ -15,15 +15,19 @@ ir::Status AnalyticPassDevice::begin_run(const EffectGraph& graph, const ImageMa
   midpoints_.clear();
   for (const TextureDesc& t : graph.textures) {
     auto it = inputs.find(t.name);
-    images_[t.name] = it != inputs.end() ? it->second
-                                         : img::Image(t.width, t.height,
-                                                      t.stencil ? img::Format::RGBA32F : t.format);
+    images_[t.name] =
+        it != inputs.end()
+            ? it->second
+            : img::Image(t.width, t.height, t.attachment() ? img::Format::RGBA32F : t.format);
   }
   return ir::ok_status();
 }
 
 ir::Result<pass::DrawReport> AnalyticPassDevice::draw(const PassDesc& pass) {
   if (!graph_) return device_error("no run was begun");
+  if (!pass.depth.empty()) // the model has no depth buffer: refused, never drawn without one
+    return device_error(
+        fmt::format("pass '{}': the analytic device has no depth buffer", pass.name));
   if (std::string e = detail::run_analytic_pass(pass, *graph_, images_, midpoints_, &notes_);
       !e.empty())
     return device_error(std::move(e));

@@ -33,9 +33,17 @@ ir::Status CpuPassDevice::begin_run(const EffectGraph& graph, const ImageMap& in
   kept.swap(images_);
   stale_.clear();
   stencils_.clear();
+  depths_.clear();
   for (const TextureDesc& t : graph.textures) {
     if (t.stencil) {
       stencils_[t.name].assign(size_t{t.width} * t.height, 0);
+      continue;
+    }
+    if (t.depth) { // the clear value, or the red channel of the image the graph carries
+      std::vector<float>& z = depths_[t.name];
+      z.assign(size_t{t.width} * t.height, t.depth_clear);
+      if (t.contents && t.contents->rgba.size() == z.size() * 4)
+        for (size_t i = 0; i < z.size(); ++i) z[i] = t.contents->rgba[4 * i];
       continue;
     }
     auto in = inputs.find(t.name);
@@ -88,6 +96,11 @@ ir::Result<pass::DrawReport> CpuPassDevice::draw(const PassDesc& desc) {
     if (s == stencils_.end())
       return device_error(fmt::format("no stencil texture '{}'", desc.stencil));
     targets.stencil = s->second.data();
+  }
+  if (!desc.depth.empty()) {
+    auto z = depths_.find(desc.depth);
+    if (z == depths_.end()) return device_error(fmt::format("no depth texture '{}'", desc.depth));
+    targets.depth = z->second.data();
   }
   for (const TextureBind& b : desc.textures) {
     settle(b.texture);
@@ -147,6 +160,13 @@ ir::Result<img::Image> CpuPassDevice::read_texture(const std::string& name) {
     if (!t) return device_error(fmt::format("no texture '{}'", name));
     img::Image out(t->width, t->height, img::Format::RGBA32F);
     for (size_t i = 0; i < s->second.size(); ++i) out.rgba[4 * i] = s->second[i];
+    return out;
+  }
+  if (auto z = depths_.find(name); z != depths_.end()) {
+    const TextureDesc* t = graph_ ? graph_->find_texture(name) : nullptr;
+    if (!t) return device_error(fmt::format("no texture '{}'", name));
+    img::Image out(t->width, t->height, img::Format::RGBA32F);
+    for (size_t i = 0; i < z->second.size(); ++i) out.rgba[4 * i] = z->second[i];
     return out;
   }
   settle(name);

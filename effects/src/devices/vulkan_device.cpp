@@ -1,8 +1,9 @@
 // The Vulkan device behind the PassDevice interface: the
 // graph's textures live in a vulkan::TextureSet for the run, so passes read and write device
 // memory and nothing comes back to the host until read_texture asks for it. A stencil
-// texture (TextureDesc::stencil) is a stencil buffer there; read_texture returns it as the
-// CPU device does (RGBA32F, the value in red), so the agreement table compares it too.
+// texture (TextureDesc::stencil) is a stencil buffer there, a depth texture (TextureDesc::depth)
+// a D32_SFLOAT depth buffer; read_texture returns either as the CPU device does (RGBA32F, the
+// value in red), so the agreement table compares them too.
 //
 // begin_run makes every pass's draw ahead (SPIR-V, pipeline, descriptor set, framebuffer:
 // the set keeps them), so a pass costs its commands only; passes are recorded into one
@@ -34,11 +35,15 @@ public:
     ids_.clear();
     textures_.clear();
     for (const TextureDesc& t : graph.textures) {
-      ir::Result<vulkan::TextureId> id = t.stencil ? textures_.create_stencil(t.width, t.height)
-                                                   : textures_.create(t.width, t.height, t.format);
+      ir::Result<vulkan::TextureId> id =
+          t.stencil ? textures_.create_stencil(t.width, t.height)
+          : t.depth ? textures_.create_depth(t.width, t.height, t.depth_clear)
+                    : textures_.create(t.width, t.height, t.format);
       ir::Status uploaded = ir::ok_status();
       if (auto it = inputs.find(t.name); id && it != inputs.end())
         uploaded = textures_.upload(*id, it->second);
+      else if (id && t.depth && t.contents) // a depth buffer's starting values (--depth-in)
+        uploaded = textures_.upload(*id, *t.contents);
       if (!id || !uploaded) {
         drop();
         return device_error(
@@ -108,6 +113,11 @@ private:
       auto s = ids_.find(desc.stencil);
       if (s == ids_.end()) return fmt::format("no stencil texture '{}'", desc.stencil);
       out.targets.stencil = s->second;
+    }
+    if (!desc.depth.empty()) {
+      auto z = ids_.find(desc.depth);
+      if (z == ids_.end()) return fmt::format("no depth texture '{}'", desc.depth);
+      out.targets.depth = z->second;
     }
     for (const TextureBind& b : desc.textures) {
       auto it = ids_.find(b.texture);

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "tierlift/pass/depth.h"
+
 namespace tierlift::effects {
 
 const TextureDesc* EffectGraph::find_texture(std::string_view name) const {
@@ -40,6 +42,28 @@ std::string check_textures(const EffectGraph& g) {
   return {};
 }
 
+// The depth buffer and its state: a depth state needs a depth texture of the target's size and
+// the reverse; not with a stencil buffer in the same pass (no device draws both yet).
+std::string check_depth(const EffectGraph& g, const PassDesc& p, const TextureDesc& target) {
+  const pass::DepthStencilState& ds = p.draw.depth_stencil;
+  if (p.depth.empty())
+    return pass::uses_depth(ds)
+               ? fmt::format("pass '{}': a depth state without a depth texture", p.name)
+               : std::string();
+  const TextureDesc* d = g.find_texture(p.depth);
+  if (!d || !d->depth)
+    return fmt::format("pass '{}': '{}' is not a depth texture", p.name, p.depth);
+  if (!pass::uses_depth(ds))
+    return fmt::format("pass '{}': a depth texture without a depth state", p.name);
+  if (!p.stencil.empty() || ds.stencil_test)
+    return fmt::format("pass '{}': a depth and a stencil buffer in one pass (not drawn yet)",
+                       p.name);
+  if (d->width != target.width || d->height != target.height)
+    return fmt::format("pass '{}': depth '{}' is {}x{}, the target {}x{}", p.name, p.depth,
+                       d->width, d->height, target.width, target.height);
+  return {};
+}
+
 // The targets beyond oC0, the stencil buffer and its state, the geometry.
 std::string check_outputs(const EffectGraph& g, const PassDesc& p, const TextureDesc& target) {
   if (p.more_targets.size() > 3)
@@ -49,7 +73,7 @@ std::string check_outputs(const EffectGraph& g, const PassDesc& p, const Texture
   for (const std::string& name : p.more_targets) {
     const TextureDesc* t = g.find_texture(name);
     if (!t) return fmt::format("pass '{}': unknown target '{}'", p.name, name);
-    if (t->input || t->stencil)
+    if (t->input || t->attachment())
       return fmt::format("pass '{}': cannot render colour into '{}'", p.name, name);
     if (!used.insert(name).second)
       return fmt::format("pass '{}': renders into '{}' twice", p.name, name);
@@ -58,10 +82,9 @@ std::string check_outputs(const EffectGraph& g, const PassDesc& p, const Texture
                          p.name, name, t->width, t->height, p.target, target.width, target.height);
   }
   const pass::DepthStencilState& ds = p.draw.depth_stencil;
-  if (ds.depth_test || ds.depth_write)
-    return fmt::format("pass '{}': no device has a depth buffer (stencil only)", p.name);
+  if (std::string e = check_depth(g, p, target); !e.empty()) return e;
   if (p.stencil.empty()) {
-    if (ds.enabled())
+    if (ds.stencil_test)
       return fmt::format("pass '{}': a stencil state without a stencil texture", p.name);
   } else {
     const TextureDesc* s = g.find_texture(p.stencil);
@@ -129,8 +152,9 @@ std::string check_pass(const EffectGraph& g, const PassDesc& p) {
   if (!target) return fmt::format("pass '{}': unknown target '{}'", p.name, p.target);
   if (target->input)
     return fmt::format("pass '{}': renders into the input texture '{}'", p.name, p.target);
-  if (target->stencil)
-    return fmt::format("pass '{}': renders colour into the stencil texture '{}'", p.name, p.target);
+  if (target->attachment())
+    return fmt::format("pass '{}': renders colour into the {} texture '{}'", p.name,
+                       target->stencil ? "stencil" : "depth", p.target);
   if (std::string e = check_outputs(g, p, *target); !e.empty()) return e;
   for (const auto* table : {&p.vs_constants_per_frame, &p.ps_constants_per_frame})
     for (const std::vector<pass::Vec4>& frame : *table)
@@ -149,8 +173,9 @@ std::string check_pass(const EffectGraph& g, const PassDesc& p) {
       return fmt::format("pass '{}': reads its own target '{}'", p.name, p.target);
     for (const std::string& t : p.more_targets)
       if (b.texture == t) return fmt::format("pass '{}': reads its own target '{}'", p.name, t);
-    if (g.find_texture(b.texture)->stencil)
-      return fmt::format("pass '{}': samples the stencil texture '{}'", p.name, b.texture);
+    if (const TextureDesc* t = g.find_texture(b.texture); t->attachment())
+      return fmt::format("pass '{}': samples the {} texture '{}'", p.name,
+                         t->stencil ? "stencil" : "depth", b.texture);
   }
   return {};
 }

@@ -95,7 +95,7 @@ ir::Status replace_inputs(const EffectGraph& graph, PassDevice& device, unsigned
   return ir::ok_status();
 }
 
-// A pass's target (and, when asked, its further targets and stencil) read back after it.
+// A pass's target (and, when asked, its further targets, stencil and depth) read back after it.
 ir::Status record_pass(const PassDesc& desc, PassDevice& device, bool keep_pass_images,
                        PassRecord& rec) {
   if (!keep_pass_images) return ir::ok_status();
@@ -111,6 +111,7 @@ ir::Status record_pass(const PassDesc& desc, PassDevice& device, bool keep_pass_
   device.rounding_midpoints(desc.target, rec.midpoints);
   std::vector<std::string> extra = desc.more_targets;
   if (!desc.stencil.empty() && desc.draw.depth_stencil.stencil_test) extra.push_back(desc.stencil);
+  if (!desc.depth.empty()) extra.push_back(desc.depth);
   for (const std::string& name : extra) {
     PassRecord::Extra x{name, {}, {}};
     if (ir::Status e = read(name, x.result); !e) return e;

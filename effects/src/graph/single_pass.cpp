@@ -8,6 +8,8 @@
 
 #include <fmt/format.h>
 
+#include "tierlift/pass/depth.h"
+
 #include "tierlift/pass/srgb.h"
 
 namespace tierlift::effects {
@@ -19,7 +21,7 @@ namespace {
 std::string unsupported(const pass::Pass& pass) {
   if (pass.color_targets < 1 || pass.color_targets > 4)
     return fmt::format("{} colour targets", pass.color_targets);
-  if (pass.depth_stencil.enabled()) return "a depth/stencil state";
+  if (pass.depth_stencil.stencil_test) return "a stencil state";
   if (pass.pixel_spirv) return "a SPIR-V pixel stage";
   return {};
 }
@@ -32,7 +34,7 @@ std::string single_pass_target(uint32_t index) {
 }
 
 ir::Result<EffectGraph> single_pass_graph(pass::Pass pass, uint32_t width, uint32_t height,
-                                          img::Format format) {
+                                          img::Format format, const SinglePassDepth& depth) {
   if (std::string what = unsupported(pass); !what.empty())
     return ir::fail("graph", "graph",
                     fmt::format("a graph pass cannot describe {} (tierlift run draws none)", what));
@@ -81,6 +83,21 @@ ir::Result<EffectGraph> single_pass_graph(pass::Pass pass, uint32_t width, uint3
     target.format = format;
     graph.textures.push_back(std::move(target));
     if (i > 0) desc.more_targets.push_back(single_pass_target(i));
+  }
+  if (pass::uses_depth(pass.depth_stencil)) {
+    if (depth.initial && (depth.initial->width != width || depth.initial->height != height))
+      return ir::fail("graph", "graph",
+                      fmt::format("the depth image is {}x{}, the target {}x{}",
+                                  depth.initial->width, depth.initial->height, width, height));
+    TextureDesc z;
+    z.name = std::string(kSinglePassDepth);
+    z.width = width;
+    z.height = height;
+    z.depth = true;
+    z.depth_clear = depth.clear;
+    z.contents = depth.initial;
+    graph.textures.push_back(std::move(z));
+    desc.depth = std::string(kSinglePassDepth);
   }
   desc.draw = std::move(pass);
   desc.draw.color_targets = 1;

@@ -53,7 +53,7 @@ std::optional<SinglePassDraw> draw_on(PassDevice& device, const EffectGraph& gra
   const PassRecord& pass = (*run)->passes.front();
   for (const ir::Diagnostic& d : pass.warnings) told.push_back(d);
   SinglePassDraw out{
-      device.name(), std::move(images.at(std::string(kSinglePassTarget))), pass.report, {}};
+      device.name(), std::move(images.at(std::string(kSinglePassTarget))), pass.report, {}, {}};
   out.report.setup_ms = (*run)->setup_ms; // textures, uploads, pipelines
   out.report.draw_ms = pass.ms;           // the pass, to the end of its work on the device
   for (uint32_t i = 1;; ++i) {            // oC1..: the graph's further targets, in order
@@ -61,6 +61,7 @@ std::optional<SinglePassDraw> draw_on(PassDevice& device, const EffectGraph& gra
     if (more == images.end()) break;
     out.more_images.push_back(std::move(more->second));
   }
+  if (auto z = images.find(kSinglePassDepth); z != images.end()) out.depth = std::move(z->second);
   return out;
 }
 
@@ -118,6 +119,19 @@ ir::Result<SinglePassRun> run_single_pass(const EffectGraph& graph, const Backen
       }
       out.more_agreement.push_back(*more);
       out.more_verdicts.push_back(img::judge(*more, t.format));
+    }
+    if (a.depth && b.depth) {
+      ir::Result<img::Comparison> z = img::compare(*a.depth, *b.depth);
+      if (!z) {
+        told.push_back(error("agreement", z.message()));
+        return failed(std::move(told));
+      }
+      out.depth_agreement = *z;
+      const bool same = z->identical_pixels == z->pixels;
+      out.depth_verdict =
+          img::Verdict{same, fmt::format("{}: {}", img::describe(*z),
+                                         same ? "bit for bit, as the depth rule requires"
+                                              : "NOT bit for bit (the depth rule requires it)")};
     }
   }
   ir::Result<SinglePassRun> result(std::move(out));

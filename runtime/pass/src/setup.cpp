@@ -335,6 +335,7 @@ std::optional<Pass> prepare(const RunRequest& req, RunDiagnostics& diags) {
   pass.front_face = req.front_face;
   pass.color_targets = req.color_targets;
   pass.srgb_write = req.srgb_write;
+  pass.depth_stencil = req.depth_stencil;
   if (req.vs) ok = build_constants(*req.vs, req.constants, pass.vs_constants, diags.vs) && ok;
   if (req.ps) ok = build_constants(*req.ps, req.constants, pass.ps_constants, diags.ps) && ok;
   ok = bind_textures(req, pass, diags) && ok;

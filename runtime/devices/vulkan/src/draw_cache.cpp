@@ -20,6 +20,7 @@ std::optional<std::string> draw_key(const pass::Pass& pass, const DrawTextures& 
   k.put(textures.target);
   for (const Resident* m : textures.more_targets) k.put(m);
   k.put(textures.stencil);
+  k.put(textures.depth);
   k.put(pass.color_targets);
   k.put(pass.depth_stencil);
   for (uint32_t s = 0; s < pass::kSamplerSlots; ++s) { // both stages' samplers

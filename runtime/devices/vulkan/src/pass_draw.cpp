@@ -15,6 +15,7 @@
 #include "sampled_textures.h"
 #include "synthetic_programs.h"
 #include "tierlift/ir/device_pipeline.h"
+#include "tierlift/pass/depth.h"
 
 namespace tierlift::vulkan {
 namespace {
@@ -89,7 +90,7 @@ std::string join_diagnostics(const ir::DiagnosticSink& diags) {
 // sampling's texel and the shadow's exact k/255.0f, so the image is the same; what it saves is
 // the shadow's conversion each time the texture changed.
 bool fetches_in_place(const Device::Impl& d, const Resident* r, const pass::SamplerState& s) {
-  return d.unorm8_in_place && r && !r->stencil && r->format == img::Format::RGBA8 &&
+  return d.unorm8_in_place && r && !r->depth_stencil() && r->format == img::Format::RGBA8 &&
          pass::point_clamped(s);
 }
 
@@ -139,7 +140,8 @@ ir::Status check_targets(const pass::Pass& pass, const DrawTextures& t) {
       continue;
     }
     if (!r) return draw_failure(fmt::format("render target {} (oC{}) is not bound", i, i));
-    if (r->stencil) return draw_failure(fmt::format("render target {} is a stencil buffer", i));
+    if (r->depth_stencil())
+      return draw_failure(fmt::format("render target {} is a depth or stencil buffer", i));
     if (r->width != first.width || r->height != first.height)
       return draw_failure(
           fmt::format("render target {} is {}x{}, render target 0 is {}x{}: every target of "
@@ -150,8 +152,18 @@ ir::Status check_targets(const pass::Pass& pass, const DrawTextures& t) {
     seen.push_back(r);
   }
   const pass::DepthStencilState& ds = pass.depth_stencil;
-  if (ds.depth_test || ds.depth_write)
-    return draw_failure("the vulkan device has a stencil buffer but no depth buffer");
+  if (pass::uses_depth(ds) && !t.depth)
+    return draw_failure("the pass has a depth state but no depth buffer is bound");
+  if (pass::uses_depth(ds) && (ds.stencil_test || t.stencil))
+    return draw_failure("a depth buffer and a stencil buffer in one pass are not drawn yet");
+  if (t.depth && !pass::uses_depth(ds))
+    return draw_failure("a depth buffer is bound, but the pass has no depth state");
+  if (t.depth) {
+    if (!t.depth->depth) return draw_failure("the depth buffer is not a depth texture");
+    if (t.depth->width != first.width || t.depth->height != first.height)
+      return draw_failure(fmt::format("the depth buffer is {}x{}, the render target {}x{}",
+                                      t.depth->width, t.depth->height, first.width, first.height));
+  }
   if (ds.stencil_test && !t.stencil)
     return draw_failure("the pass has a stencil test but no stencil buffer is bound");
   if (t.stencil) {
@@ -161,7 +173,7 @@ ir::Status check_targets(const pass::Pass& pass, const DrawTextures& t) {
                                       t.stencil->width, t.stencil->height, first.width,
                                       first.height));
   }
-  if (first.stencil) return draw_failure("render target 0 is a stencil buffer");
+  if (first.depth_stencil()) return draw_failure("render target 0 is a depth or stencil buffer");
   return ir::ok_status();
 }
 
@@ -286,11 +298,12 @@ ir::Status create_render_objects(Device::Impl& d, const pass::Pass& pass,
     formats.push_back(rt_format);
     attachments.push_back(&t.stored.image);
   }
-  if (textures.stencil) attachments.push_back(&textures.stencil->stored.image);
-  ir::Status err = create_render_pass(d, out.objects, formats,
-                                      textures.stencil ? textures.stencil->stored.image.format
-                                                       : VK_FORMAT_UNDEFINED,
-                                      out.render_pass);
+  // The depth/stencil attachment: the stencil buffer or the depth buffer (check_targets
+  // refuses both at once).
+  const Resident* ds = textures.stencil ? textures.stencil : textures.depth;
+  if (ds) attachments.push_back(&ds->stored.image);
+  const VkFormat ds_format = ds ? ds->stored.image.format : VK_FORMAT_UNDEFINED;
+  ir::Status err = create_render_pass(d, out.objects, formats, ds_format, out.render_pass);
   if (err) err = create_framebuffer(d, out.objects, out.render_pass, attachments, out.framebuffer);
   if (!err) return err;
   PipelineDesc pd;
@@ -303,16 +316,13 @@ ir::Status create_render_objects(Device::Impl& d, const pass::Pass& pass,
   pd.blend = pass.blend;
   pd.front_face = pass.front_face;
   pd.color_targets = pass.color_targets;
-  pd.stencil_attachment = textures.stencil != nullptr;
+  pd.stencil_attachment = ds != nullptr;
   pd.depth_stencil = pass.depth_stencil;
   pd.render_pass = out.render_pass;
   pd.layout = layout;
   pd.vertex_stride = kVertexStride;
   if (textures.reuse && !textures.trace)
-    return textures.reuse->pipeline(d, pd, formats,
-                                    textures.stencil ? textures.stencil->stored.image.format
-                                                     : VK_FORMAT_UNDEFINED,
-                                    layout_bindings, out.pipeline);
+    return textures.reuse->pipeline(d, pd, formats, ds_format, layout_bindings, out.pipeline);
   return create_pipeline(d, out.objects, pd, out.pipeline);
 }
 
@@ -352,7 +362,7 @@ ir::Status prepare_draw(Device::Impl& d, const pass::Pass& pass, const DrawTextu
   if (!textures.target) return draw_failure("no render target");
   out.target = textures.target;
   out.more_targets = textures.more_targets;
-  out.stencil = textures.stencil;
+  out.stencil = textures.stencil ? textures.stencil : textures.depth;
   if (pass.vertex_program && pass.vertex_program->stage() != ir::ShaderStage::Vertex)
     return draw_failure("the vertex program is not a vertex shader");
   if (pass.pixel_program && pass.pixel_program->stage() != ir::ShaderStage::Pixel)

@@ -33,6 +33,7 @@ struct DrawTextures {
   // buffer (Resident::stencil) for a pass with a stencil test. Resident textures only.
   std::array<Resident*, 3> more_targets{};
   Resident* stencil = nullptr;
+  Resident* depth = nullptr; // the depth buffer (Resident::depth) for a pass with a depth state
   // Device::draw: the target's starting contents, uploaded before the draw (setup), and
   // where the result is read back to after it (in the same submit as the draw). Must have
   // the target's size and format. nullptr: the target stays on the device.
@@ -55,7 +56,7 @@ struct PreparedDraw {
   std::array<bool, pass::kSamplerSlots> fetched{};      // those reading RGBA8 bytes in place
   Resident* target = nullptr;
   std::array<Resident*, 3> more_targets{}; // as in DrawTextures, those the pass draws into
-  Resident* stencil = nullptr;
+  Resident* stencil = nullptr; // the depth/stencil attachment: the stencil or the depth buffer
   VkRenderPass render_pass = VK_NULL_HANDLE;
   VkFramebuffer framebuffer = VK_NULL_HANDLE;
   VkPipeline pipeline = VK_NULL_HANDLE;

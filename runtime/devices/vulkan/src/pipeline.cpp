@@ -65,13 +65,17 @@ VkStencilOp stencil_op(pass::StencilOp op) {
   return VK_STENCIL_OP_KEEP;
 }
 
-// The pipeline's depth/stencil state: no depth test or write; D3D9's one-sided stencil for
-// both faces (culling is off, and D3D9 without D3DRS_TWOSIDEDSTENCILMODE treats both faces
-// alike). Reference and masks modulo 256: only the buffer's 8 bits take part.
+// The pipeline's depth/stencil state: D3D9's ZENABLE / ZWRITEENABLE / ZFUNC (Vulkan's
+// compare takes the incoming depth on the left, as D3DRS_ZFUNC does, and writes only while
+// the test is on, as D3D9 does: pass/depth.h); D3D9's one-sided stencil for both faces
+// (culling is off, and D3D9 without D3DRS_TWOSIDEDSTENCILMODE treats both faces alike).
+// Reference and masks modulo 256: only the buffer's 8 bits take part.
 VkPipelineDepthStencilStateCreateInfo depth_stencil_state(const pass::DepthStencilState& ds) {
   VkPipelineDepthStencilStateCreateInfo out{};
   out.sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO;
-  out.depthCompareOp = VK_COMPARE_OP_ALWAYS;
+  out.depthTestEnable = ds.depth_test ? VK_TRUE : VK_FALSE;
+  out.depthWriteEnable = ds.depth_test && ds.depth_write ? VK_TRUE : VK_FALSE;
+  out.depthCompareOp = ds.depth_test ? compare_op(ds.depth_func) : VK_COMPARE_OP_ALWAYS;
   out.stencilTestEnable = ds.stencil_test ? VK_TRUE : VK_FALSE;
   VkStencilOpState face{};
   face.failOp = stencil_op(ds.stencil_fail);

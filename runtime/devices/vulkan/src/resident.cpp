@@ -74,8 +74,8 @@ void clear_if_new(VkCommandBuffer cb, Resident& r) {
   transition(cb, r.stored, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
   const VkImageSubresourceRange range{r.stored.image.aspect, 0, VK_REMAINING_MIP_LEVELS, 0,
                                       VK_REMAINING_ARRAY_LAYERS};
-  if (r.stencil) {
-    const VkClearDepthStencilValue zero{1.0f, 0};
+  if (r.depth_stencil()) {
+    const VkClearDepthStencilValue zero{r.depth ? r.depth_clear : 1.0f, 0};
     vkCmdClearDepthStencilImage(cb, r.stored.image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                                 &zero, 1, &range);
   } else {
@@ -89,6 +89,7 @@ void clear_if_new(VkCommandBuffer cb, Resident& r) {
 VkBufferImageCopy whole_image(const Resident& r) {
   VkBufferImageCopy copy{};
   const VkImageAspectFlags aspect = r.stencil ? VkImageAspectFlags{VK_IMAGE_ASPECT_STENCIL_BIT}
+                                    : r.depth ? VkImageAspectFlags{VK_IMAGE_ASPECT_DEPTH_BIT}
                                               : VkImageAspectFlags{VK_IMAGE_ASPECT_COLOR_BIT};
   // A cube's six faces and a volume's slices lie one after the other in the buffer.
   const Image2D& im = r.stored.image;
@@ -178,8 +179,37 @@ ir::Status create_stencil_resident(Device::Impl& d, uint32_t width, uint32_t hei
   return ir::ok_status();
 }
 
+uint32_t Resident::packed_bytes() const {
+  return stencil ? 1u : depth ? 4u : bytes_per_pixel(format);
+}
+
+ir::Status create_depth_resident(Device::Impl& d, uint32_t width, uint32_t height, float clear,
+                                 std::unique_ptr<Resident>& out) {
+  constexpr VkFormatFeatureFlags kNeeds = VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT |
+                                          VK_FORMAT_FEATURE_TRANSFER_SRC_BIT |
+                                          VK_FORMAT_FEATURE_TRANSFER_DST_BIT;
+  VkFormatProperties props;
+  vkGetPhysicalDeviceFormatProperties(d.physical, VK_FORMAT_D32_SFLOAT, &props);
+  if ((props.optimalTilingFeatures & kNeeds) != kNeeds)
+    return draw_failure("the Vulkan device cannot render to and copy a D32_SFLOAT depth buffer");
+  auto r = std::make_unique<Resident>();
+  r->width = width;
+  r->height = height;
+  r->depth = true;
+  r->depth_clear = clear;
+  const VkImageUsageFlags usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
+                                  VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  if (ir::Status err =
+          create_image(d, r->objects, width, height, VK_FORMAT_D32_SFLOAT, usage, r->stored.image);
+      !err)
+    return err;
+  out = std::move(r);
+  return ir::ok_status();
+}
+
 ir::Status ensure_shadow(Device::Impl& d, Resident& r) {
   if (r.stencil) return draw_failure("a stencil buffer cannot be sampled");
+  if (r.depth) return draw_failure("a depth buffer cannot be sampled");
   if (r.samples_stored() || r.shadow) return ir::ok_status();
   const bool unorm8 = r.format == img::Format::RGBA8;
   VkFormatProperties src, dst;

@@ -49,6 +49,11 @@ struct Resident {
   // whose stencil aspect is the buffer; it is never sampled, and a readback returns one byte
   // per pixel. `format` is then meaningless.
   bool stencil = false;
+  // A D3D9 depth buffer (create_depth_resident): `stored` is a D32_SFLOAT image, never
+  // sampled; it starts at `depth_clear` (or what TextureSet::upload puts there), and a
+  // readback returns one float per pixel. `format` is then meaningless.
+  bool depth = false;
+  float depth_clear = 1.0f;
   TrackedImage stored;         // in `format`
   bool shadow_current = false; // shadow holds the stored values
   Unorm8Scratch unorm8;        // RGBA8 converted by compute: the conversion's buffers
@@ -61,7 +66,10 @@ struct Resident {
 
   ~Resident(); // where PreparedDraw is complete (resident.cpp)
 
-  bool samples_stored() const { return !stencil && format == img::Format::RGBA32F; }
+  bool samples_stored() const { return !stencil && !depth && format == img::Format::RGBA32F; }
+  bool depth_stencil() const { return stencil || depth; } // an attachment, never sampled
+  // Bytes of one pixel in an upload or readback buffer.
+  uint32_t packed_bytes() const;
   // The image passes sample and its tracked layout (valid after ensure_shadow).
   TrackedImage& sampled_tracked() { return samples_stored() ? stored : shadow->stored; }
   const Image2D& sampled() const { return samples_stored() ? stored.image : shadow->stored.image; }
@@ -87,6 +95,10 @@ ir::Status create_mip_resident(Device::Impl& d, uint32_t width, uint32_t height,
 // D32_SFLOAT_S8_UINT that it can (the depth aspect is never tested or written).
 ir::Status create_stencil_resident(Device::Impl& d, uint32_t width, uint32_t height,
                                    std::unique_ptr<Resident>& out);
+// A depth buffer of `width` × `height` (VK_FORMAT_D32_SFLOAT), every pixel `clear` until an
+// upload replaces it.
+ir::Status create_depth_resident(Device::Impl& d, uint32_t width, uint32_t height, float clear,
+                                 std::unique_ptr<Resident>& out);
 // Creates the float shadow if the texture needs one and has none (before recording).
 ir::Status ensure_shadow(Device::Impl& d, Resident& r);
 
@@ -100,7 +112,8 @@ void transition(VkCommandBuffer cb, TrackedImage& t, VkImageLayout to);
 void record_upload(VkCommandBuffer cb, Resident& r, VkBuffer staging);
 // Makes the stored image the colour attachment of a render pass (loadOp LOAD reads it).
 void record_as_target(VkCommandBuffer cb, Resident& r);
-// Makes a stencil buffer the depth/stencil attachment of a render pass (loaded and stored).
+// Makes a stencil or depth buffer the depth/stencil attachment of a render pass (loaded and
+// stored).
 void record_as_stencil(VkCommandBuffer cb, Resident& r);
 // Makes the image passes sample current and SHADER_READ_ONLY_OPTIMAL (ensure_shadow first).
 void record_as_sampled(VkCommandBuffer cb, const Device::Impl& d, Resident& r);

@@ -77,6 +77,18 @@ ir::Result<TextureId> TextureSet::create_stencil(uint32_t width, uint32_t height
   return static_cast<TextureId>(id);
 }
 
+ir::Result<TextureId> TextureSet::create_depth(uint32_t width, uint32_t height, float clear) {
+  if (!img::valid_size(width, height))
+    return draw_failure(fmt::format("depth buffer size {}x{}: each side must be 1..{}", width,
+                                    height, img::kMaxDimension));
+  std::unique_ptr<Resident> r;
+  if (ir::Status err = create_depth_resident(*device_.impl_, width, height, clear, r); !err)
+    return std::move(err).failure();
+  const uint32_t id = state_->next_id++;
+  state_->textures.emplace(id, std::move(r));
+  return static_cast<TextureId>(id);
+}
+
 ir::Status TextureSet::upload(TextureId id, const img::Image& image) {
   Resident* r = state_->find(id);
   if (!r) return draw_failure(unknown(id));
@@ -93,11 +105,14 @@ ir::Status TextureSet::upload(TextureId id, const img::Image& image) {
   Device::Impl& d = *device_.impl_;
   Cleanup cleanup;
   Buffer staging;
-  const VkDeviceSize bytes = VkDeviceSize{r->width} * r->height * bytes_per_pixel(r->format);
+  const VkDeviceSize bytes = VkDeviceSize{r->width} * r->height * r->packed_bytes();
   if (ir::Status err = create_buffer(d, cleanup, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, staging);
       !err)
     return std::move(err).failure();
-  if (image.format == r->format) {
+  if (r->depth) { // a depth buffer takes the image's red channel, one float per pixel
+    auto* out = static_cast<float*>(staging.mapped);
+    for (size_t i = 0; i < size_t{r->width} * r->height; ++i) out[i] = image.rgba[4 * i];
+  } else if (image.format == r->format) {
     pack_pixels(image, staging.mapped);
   } else {
     img::Image stored = image; // pack_pixels applies the store rule of image.format
@@ -122,8 +137,7 @@ ir::Result<img::Image> TextureSet::read(TextureId id) {
   Device::Impl& d = *device_.impl_;
   Cleanup cleanup;
   Buffer staging;
-  const VkDeviceSize bytes =
-      VkDeviceSize{r->width} * r->height * (r->stencil ? 1 : bytes_per_pixel(r->format));
+  const VkDeviceSize bytes = VkDeviceSize{r->width} * r->height * r->packed_bytes();
   if (ir::Status err = create_buffer(d, cleanup, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, staging);
       !err)
     return std::move(err).failure();
@@ -138,6 +152,12 @@ ir::Result<img::Image> TextureSet::read(TextureId id) {
     img::Image image(r->width, r->height, img::Format::RGBA32F);
     const auto* bytes_in = static_cast<const uint8_t*>(staging.mapped);
     for (size_t i = 0; i < size_t{r->width} * r->height; ++i) image.rgba[4 * i] = bytes_in[i];
+    return image;
+  }
+  if (r->depth) { // likewise a depth buffer: its float in red
+    img::Image image(r->width, r->height, img::Format::RGBA32F);
+    const auto* floats = static_cast<const float*>(staging.mapped);
+    for (size_t i = 0; i < size_t{r->width} * r->height; ++i) image.rgba[4 * i] = floats[i];
     return image;
   }
   img::Image image(r->width, r->height, r->format);
@@ -162,6 +182,10 @@ ir::Status resolve(TextureSet::State& s, const StageTextures& stages, const Rend
   if (targets.stencil != TextureId::None) {
     out.stencil = s.find(targets.stencil);
     if (!out.stencil) return draw_failure("stencil buffer: " + unknown(targets.stencil));
+  }
+  if (targets.depth != TextureId::None) {
+    out.depth = s.find(targets.depth);
+    if (!out.depth) return draw_failure("depth buffer: " + unknown(targets.depth));
   }
   for (uint32_t k = 0; k < pass::kSamplerSlots; ++k) {
     if (stages[k] == TextureId::None) continue;

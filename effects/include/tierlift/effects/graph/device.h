@@ -92,6 +92,7 @@ private:
   const EffectGraph* graph_ = nullptr;
   ImageMap images_;
   std::map<std::string, std::vector<uint8_t>, std::less<>> stencils_; // TextureDesc::stencil
+  std::map<std::string, std::vector<float>, std::less<>> depths_;     // TextureDesc::depth
   // Textures whose reused buffers still hold the run before's pixels where this run means
   // zeros: zeroed on first read, or by the draw of a pass that does not overwrite them all
   // (cpu::DrawTargets::stale) — a full-screen pass spares a clear of its target.

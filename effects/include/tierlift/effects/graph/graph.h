@@ -34,6 +34,14 @@ struct TextureDesc {
   // image whose red channel holds the stencil value (0..255), the other channels 0; `format`
   // is ignored.
   bool stencil = false;
+  // A depth buffer (a float per pixel) instead of a colour texture: a pass names it in
+  // PassDesc::depth; it is never sampled. It starts at `contents`' red channel when the graph
+  // carries one (a depth image given to `tierlift run --depth-in`), else at `depth_clear`
+  // (D3D9's usual clear, 1.0, by default). read_texture returns it as an RGBA32F image whose red
+  // channel holds the depth, the other channels 0; `format` is ignored.
+  bool depth = false;
+  float depth_clear = 1.0f;
+  bool attachment() const { return stencil || depth; } // never sampled nor a colour target
   // An input the graph carries itself (a glow image or a depth image a scene named, made
   // when the graph was built): used when the caller gives no image of that name.
   std::shared_ptr<const img::Image> contents{};
@@ -105,6 +113,9 @@ struct PassDesc {
   // A stencil texture (TextureDesc::stencil) for draw.depth_stencil; no stencil test when
   // `stencil` is empty (the state must then be disabled). No depth buffer.
   std::string stencil;
+  // A depth texture (TextureDesc::depth) for draw.depth_stencil's depth state (ZENABLE,
+  // ZWRITEENABLE, ZFUNC); required with that state, refused with it off or beside a stencil.
+  std::string depth;
   // A GLSL pass's source file (draw.pixel_spirv holds what it compiled to), and the reads the
   // analytic device evaluates for it (analytic = Kernel).
   std::string glsl_file;

@@ -30,6 +30,14 @@ namespace tierlift::effects {
 
 inline constexpr std::string_view kSinglePass = "run";          // the pass's name
 inline constexpr std::string_view kSinglePassTarget = "target"; // the texture it renders into
+inline constexpr std::string_view kSinglePassDepth = "depth";   // its depth buffer, if any
+
+// The depth buffer of a pass with a depth state (pass::uses_depth(pass.depth_stencil)): every pixel
+// starts at `clear`, or at `initial`'s red channel (a target-sized image) when given.
+struct SinglePassDepth {
+  float clear = 1.0f;
+  std::shared_ptr<const img::Image> initial;
+};
 
 // `pass` drawn into a new width × height target of `format` (zeros before the draw), as a
 // graph of one pass. The pass becomes the graph pass's draw as it is (PassDesc::draw: its
@@ -40,13 +48,15 @@ inline constexpr std::string_view kSinglePassTarget = "target"; // the texture i
 // that binds it (an image bound to several stages is one texture) and bound by that name.
 // The graph's conventions are the pass's. A pass with pass.color_targets = n > 1 (D3D9 MRT)
 // draws oC1..oC(n−1) into n − 1 more targets of the same size and format, named
-// single_pass_target(1..n−1). Refused (rule "graph"): a depth/stencil state, a SPIR-V pixel
+// single_pass_target(1..n−1). A pass with a depth state (ZENABLE / ZWRITEENABLE / ZFUNC)
+// draws with a depth texture named kSinglePassDepth of the target's size, starting as `depth`
+// says (default: cleared to 1.0). Refused (rule "graph"): a stencil state, a SPIR-V pixel
 // stage (`tierlift run` asks for neither), more than four colour targets, and whatever
 // check_graph refuses (pre-transformed vertices, a viewport other than the whole target, the
 // scalar executor: a CPU device's own choice, CpuPassDevice).
 std::string single_pass_target(uint32_t index); // 0: kSinglePassTarget; i: "target<i>"
 ir::Result<EffectGraph> single_pass_graph(pass::Pass pass, uint32_t width, uint32_t height,
-                                          img::Format format);
+                                          img::Format format, const SinglePassDepth& depth = {});
 
 // One device's draw of a graph of one pass: the target, and what the draw took (setup_ms:
 // textures, uploads, pipelines; draw_ms: the pass to the end of its work on the device).
@@ -55,6 +65,7 @@ struct SinglePassDraw {
   img::Image image;
   pass::DrawReport report;
   std::vector<img::Image> more_images; // oC1..oC(n−1) of a pass with n colour targets
+  std::optional<img::Image> depth;     // the depth buffer after the draw (depth in red)
 };
 
 struct SinglePassRun {
@@ -68,6 +79,10 @@ struct SinglePassRun {
   // The same for oC1..oC(n−1) of a pass with n colour targets, one entry per target.
   std::vector<img::Comparison> more_agreement;
   std::vector<img::Verdict> more_verdicts;
+  // The depth buffers compared, for a pass with one: they must agree bit for bit (NUMERICS.md
+  // D1-D4), so the verdict passes only when every pixel is identical.
+  std::optional<img::Comparison> depth_agreement;
+  std::optional<img::Verdict> depth_verdict;
 };
 
 // `graph` (single_pass_graph's) on each way `backends` asks for, then compared. The memory the

@@ -10,6 +10,7 @@
 
 #include "raster.h"
 #include "tierlift/ir/sm3_interface.h"
+#include "tierlift/pass/depth.h"
 #include "tierlift/pass/srgb.h"
 #include "tierlift/pass/stencil.h"
 #include "tierlift/rounding/rounding.h"
@@ -54,7 +55,7 @@ void shade_pixel(const RasterJob& job, const PixelInput& in, int64_t x, int64_t 
       return;
     }
   }
-  detail::store_shaded(job, out, x, y);
+  detail::store_shaded(job, out, in.depth, x, y);
 }
 
 void raster_rows(const RasterJob& job, int64_t y0, int64_t y1, WorkerStats& stats) {
@@ -84,14 +85,22 @@ void raster_rows(const RasterJob& job, int64_t y0, int64_t y1, WorkerStats& stat
 
 } // namespace
 
-void detail::store_shaded(const RasterJob& job, const PixelOutput& out, int64_t x, int64_t y) {
+void detail::store_shaded(const RasterJob& job, const PixelOutput& out, float interpolated_z,
+                          int64_t x, int64_t y) {
   const pass::DepthStencilState& ds = job.pass.depth_stencil;
+  const size_t at = static_cast<size_t>(y) * job.target.width + static_cast<size_t>(x);
   if (ds.stencil_test) {
-    uint8_t& s =
-        job.targets.stencil[static_cast<size_t>(y) * job.target.width + static_cast<size_t>(x)];
+    uint8_t& s = job.targets.stencil[at];
     const bool passed = pass::stencil_test(ds, s);
     s = pass::stencil_update(passed ? ds.stencil_pass : ds.stencil_fail, ds, s);
     if (!passed) return;
+  }
+  if (ds.depth_test) { // ZENABLE; without it ZWRITEENABLE writes nothing (pass/depth.h)
+    const float z = pass::fragment_depth(out.depth ? &*out.depth : nullptr, interpolated_z,
+                                         job.pass.conventions.rounding == ir::Rounding::Llvmpipe);
+    float& stored = job.targets.depth[at];
+    if (!pass::depth_passes(ds.depth_func, z, stored)) return;
+    if (ds.depth_write) stored = z;
   }
   for (uint32_t i = 0; i < job.pass.color_targets; ++i)
     store_pixel(job, *job.targets.color[i], out.color[i], x, y);
@@ -113,8 +122,10 @@ std::string check_targets(const Pass& pass, const DrawTargets& targets) {
     for (uint32_t j = 0; j < i; ++j)
       if (targets.color[j] == t) return fmt::format("render targets {} and {} are one image", j, i);
   }
-  if (pass.depth_stencil.depth_test || pass.depth_stencil.depth_write)
-    return "the cpu device has a stencil buffer but no depth buffer";
+  if (pass::uses_depth(pass.depth_stencil) && !targets.depth)
+    return "the pass has a depth state but no depth buffer is bound";
+  if (pass::uses_depth(pass.depth_stencil) && pass.depth_stencil.stencil_test)
+    return "a depth buffer and a stencil buffer in one pass are not drawn yet";
   if (pass.depth_stencil.stencil_test && !targets.stencil)
     return "the pass has a stencil test but no stencil buffer is bound";
   return {};
@@ -144,7 +155,7 @@ std::string check_inputs(const Pass& pass, const img::Image& target, const Viewp
 bool overwrites_all(const Pass& pass, const std::vector<Triangle>& setup, const PixelRect& scissor,
                     const img::Image& target, int64_t sample_offset) {
   if (pass.color_targets != 1 || pass.blend != BlendMode::Replace ||
-      pass.depth_stencil.stencil_test)
+      pass.depth_stencil.stencil_test || pass.depth_stencil.depth_test)
     return false;
   if (pass.pixel_program)
     for (const ir::Instruction& ins : pass.pixel_program->code)
@@ -182,9 +193,10 @@ ir::Result<DrawStats> draw_linear(const Pass& pass, const DrawTargets& targets, 
       !why.empty())
     return draw_failure(std::move(why));
   img::Image& target = *targets.color[0];
-  // The block executor stores oC0 into one target and knows no stencil and no sRGB write.
+  // The block executor stores oC0 into one target and knows no depth, no stencil and no sRGB
+  // write.
   const bool per_pixel_only =
-      pass.color_targets > 1 || pass.depth_stencil.stencil_test || pass.srgb_write;
+      pass.color_targets > 1 || pass.depth_stencil.enabled() || pass.srgb_write;
   Viewport vp = pass.viewport;
   if (vp.width == 0) vp.width = target.width;
   if (vp.height == 0) vp.height = target.height;

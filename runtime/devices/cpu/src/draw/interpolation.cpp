@@ -129,6 +129,7 @@ void setup_planes(Triangle& t) {
   const ScreenVertex &v0 = t.v[0], &v1 = t.v[1], &v2 = t.v[2];
   AttributePlanes& p = t.planes;
   p.oow = plane(s, v0.oow, v1.oow, v2.oow);
+  p.z = plane(s, v0.fz, v1.fz, v2.fz);
   for (size_t r = 0; r < p.color.size(); ++r) {
     p.color_zero[r] = all_positive_zero(v0.out.color[r], v1.out.color[r], v2.out.color[r]);
     for (int c = 0; c < 4; ++c)
@@ -146,7 +147,15 @@ void setup_planes(Triangle& t) {
 
 PixelInput interpolate(const Triangle& t, const int64_t e[3], int64_t x, int64_t y) {
   PixelInput in = t.llvmpipe ? interpolate_llvmpipe(t, x, y) : interpolate_exact(t, e);
-  // Depth is linear in screen space (z/w per vertex) under both schemes.
+  // Depth is linear in screen space under both schemes (NUMERICS.md D4). Llvmpipe: the z
+  // plane evaluated as every other plane is, then min(z, 1) — lavapipe's fragment stage clamps
+  // the interpolated z from above, since a plane referred to pixel (0, 0) can overshoot 1.
+  // Exact: barycentric weights from the edge functions, in double, rounded once.
+  if (t.llvmpipe) {
+    const float z = eval(t.planes.z, static_cast<float>(x), static_cast<float>(y));
+    in.depth = z > 1.0f ? 1.0f : z;
+    return in;
+  }
   const double area = static_cast<double>(t.area);
   double z = 0;
   for (int k = 0; k < 3; ++k) z += static_cast<double>(e[k]) / area * t.v[k].z;

@@ -31,6 +31,7 @@ struct ScreenVertex {
   // Rounding::Llvmpipe: the unsnapped float position in Vulkan's frame (pixel i spans
   // [i, i + 1)) and 1/w, rounded as lavapipe's vertex pipeline rounds them.
   float fx = 0, fy = 0, oow = 1;
+  float fz = 0; // z_s as lavapipe's viewport transform makes it: fma(z·(1/w), maxZ − minZ, minZ)
   VertexOutput out; // colours already saturated
 };
 
@@ -40,11 +41,12 @@ struct Plane {
 };
 
 // Rounding::Llvmpipe's planes of one triangle: each channel premultiplied by 1/w, and
-// 1/w itself. `zero` marks registers that are +0 at all three vertices (they stay +0).
+// 1/w itself; z_s, linear in screen space (not premultiplied). `zero` marks registers that
+// are +0 at all three vertices (they stay +0).
 struct AttributePlanes {
   std::array<std::array<Plane, 4>, 2> color;
   std::array<std::array<Plane, 4>, 8> tex;
-  Plane oow;
+  Plane oow, z;
   std::array<bool, 2> color_zero{};
   std::array<bool, 8> tex_zero{};
 };
@@ -177,7 +179,8 @@ void raster_rows_block(const RasterJob& job, int64_t y0, int64_t y1, BlockWorker
                        WorkerStats& stats);
 
 // A shaded pixel's stencil test and stores into every colour target (draw.cpp).
-void store_shaded(const RasterJob& job, const PixelOutput& out, int64_t x, int64_t y);
+void store_shaded(const RasterJob& job, const PixelOutput& out, float interpolated_z, int64_t x,
+                  int64_t y);
 
 // Rows [y0, y1) (y0 even) of every triangle, in primitive order, by 2x2 quads aligned on even
 // coordinates through job.ps->run_quad: the lanes outside the triangle (helper pixels) run

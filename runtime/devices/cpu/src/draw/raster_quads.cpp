@@ -57,7 +57,7 @@ void raster_quads(const RasterJob& job, int64_t y0, int64_t y1, WorkerStats& sta
             ++stats.killed;
             continue;
           }
-          store_shaded(job, out[l], qx + static_cast<int64_t>(l & 1),
+          store_shaded(job, out[l], in[l].depth, qx + static_cast<int64_t>(l & 1),
                        qy + static_cast<int64_t>(l >> 1));
         }
       }

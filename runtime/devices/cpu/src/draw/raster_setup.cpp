@@ -91,6 +91,7 @@ void lavapipe_position(const VertexOutput& v, const Viewport& vp, float shift, S
   s.oow = 1.0f / v.pos[3];
   s.fx = std::fma(v.pos[0] * s.oow, half_w, half_w + (static_cast<float>(vp.x) + shift));
   s.fy = std::fma(-v.pos[1] * s.oow, half_h, half_h + (static_cast<float>(vp.y) + shift));
+  s.fz = std::fma(v.pos[2] * s.oow, vp.max_z - vp.min_z, vp.min_z);
 }
 
 ScreenVertex to_screen(const VertexOutput& v, const Viewport& vp, float shift,

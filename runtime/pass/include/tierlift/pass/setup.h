@@ -130,6 +130,9 @@ struct RunRequest {
   uint32_t color_targets = 1;
   // D3DSAMP_SRGBTEXTURE on every sampler stage, D3DRS_SRGBWRITEENABLE (NUMERICS.md, sRGB).
   bool srgb_texture = false, srgb_write = false;
+  // ZENABLE / ZWRITEENABLE / ZFUNC (`tierlift run --depth-*`): the pass's depth state; the
+  // depth buffer's clear value and starting image are the graph's (effects::SinglePassDepth).
+  DepthStencilState depth_stencil;
 };
 
 // Problems, kept apart by where their positions point: into the vertex listing's

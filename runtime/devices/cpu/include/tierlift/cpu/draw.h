@@ -15,12 +15,14 @@
 //   * Clipping: 0 ≤ z ≤ w (D3D9's clip volume) and a guard band |x|, |y| ≤ 8·w; pixels
 //     outside the viewport and the target are not drawn.
 //
-// No culling (D3DCULL_NONE): both windings are drawn. No depth test; a stencil test on an
-// 8-bit stencil buffer when pass.depth_stencil.stencil_test (DrawTargets below).
+// No culling (D3DCULL_NONE): both windings are drawn. A stencil test on an 8-bit stencil
+// buffer when pass.depth_stencil.stencil_test, a depth test on a float depth buffer when
+// pass.depth_stencil.depth_test (DrawTargets below; not both in one pass yet).
 //
 // Interpolation: oT# and oD# are perspective-correct (oD# saturated per vertex first, and
-// clamped to [0, 1] again per pixel); z/w is interpolated linearly in screen space (exact
-// edge functions, double) into PixelInput::depth. How the rounding goes is
+// clamped to [0, 1] again per pixel); z/w is interpolated linearly in screen space into
+// PixelInput::depth (under Rounding::Llvmpipe with lavapipe's z plane, else from the exact
+// edge functions in double: NUMERICS.md D4). How the rounding goes is
 // pass.conventions.rounding (ir::Rounding), a device-matching choice, since D3D9 leaves it to
 // the hardware:
 //   * Llvmpipe (default): Mesa llvmpipe's arithmetic, so that the CPU device and the Vulkan
@@ -85,8 +87,7 @@ using pass::set_full_screen_quad;
 using pass::Viewport;
 
 // What the CPU device draws beyond one colour target with programmable stages: up to four
-// render targets (oC0..oC3) and a stencil buffer (no depth buffer: a pass that asks for a
-// depth test or depth writes is refused).
+// render targets (oC0..oC3) and a stencil buffer or a depth buffer.
 inline constexpr pass::Capabilities kCapabilities{.max_color_targets = 4, .depth_stencil = true};
 
 // The rule of a failed draw.
@@ -102,6 +103,13 @@ inline constexpr std::string_view kDrawRule = "draw";
 struct DrawTargets {
   std::array<img::Image*, 4> color{};
   uint8_t* stencil = nullptr;
+  // `depth`: color[0]'s width × height floats, row by row; required when
+  // pass::uses_depth(pass.depth_stencil). Per pixel, after texkill (a killed pixel writes no
+  // depth), with ZENABLE (depth_test): the pixel's depth (oDepth or the interpolated z/w,
+  // clamped to [0, 1]) is tested against the stored one with depth_func; failed → nothing is
+  // written; passed → the depth is stored when depth_write, and the colours are stored
+  // (pass/depth.h, NUMERICS.md D1-D4).
+  float* depth = nullptr;
   // The colour targets hold leftovers that stand for zeros (a device reusing a buffer it has
   // not cleared). The draw zeroes them before it writes, unless it overwrites every pixel
   // without reading one: one target, blend Replace, no stencil test, no texkill in the pixel
@@ -123,8 +131,8 @@ struct DrawStats {
 // img::kMaxDimension is a failure (rule kDrawRule, no subject) that says why nothing was
 // drawn, and leaves the target unchanged.
 ir::Result<DrawStats> draw(const Pass& pass, img::Image& target, unsigned threads = 0);
-// The same into several render targets and a stencil buffer (DrawTargets). Passes with more
-// than one target or a stencil test take the per-pixel executor.
+// The same into several render targets and a stencil or depth buffer (DrawTargets). Passes with
+// more than one target or a depth/stencil state take the per-pixel executor.
 ir::Result<DrawStats> draw(const Pass& pass, const DrawTargets& targets, unsigned threads = 0);
 
 // One pixel of a draw, traced (tierlift run --trace): the pixel program run at pixel (x, y)

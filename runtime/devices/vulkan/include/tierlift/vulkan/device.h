@@ -14,7 +14,9 @@
 //   * Render targets RGBA8 UNORM, RGBA16F, RGBA32F, up to four (MRT: oC# at colour
 //     attachment #, all blended alike); a stencil buffer is a depth/stencil attachment
 //     (S8_UINT where the device renders to it, else D24S8 / D32S8) with the pass's D3D9
-//     stencil state on both faces, loaded and stored like the colour targets. The target image's
+//     stencil state on both faces, loaded and stored like the colour targets; a depth buffer
+//     is a D32_SFLOAT attachment with the pass's ZENABLE / ZWRITEENABLE / ZFUNC (pass/depth.h:
+//     the SPIR-V clamps oDepth to [0, 1] before it writes FragDepth). The target image's
 //     current contents are uploaded first (loadOp LOAD), so blending sees the stored destination,
 //     and read back as floats (RGBA8: k/255; RGBA16F: the half's value). TextureSet (texture_set.h)
 //     keeps targets and textures on the device between draws instead; both paths share one draw.
@@ -45,10 +47,10 @@ class TextureSet;
 
 // What the Vulkan device draws beyond one colour target with programmable stages: up to four
 // render targets (oC0..oC3; TextureSet::draw binds them), an 8-bit stencil buffer with
-// D3D9's one-sided stencil state (no depth buffer), and a pixel stage given as SPIR-V (a
-// GLSL pass); a pass asking for more is refused (pass::check_supported). Device::draw has
-// one host target and no stencil buffer, so there a pass with more targets or a stencil
-// test is refused as "not bound".
+// D3D9's one-sided stencil state or a float depth buffer with its depth state (not both in one
+// pass), and a pixel stage given as SPIR-V (a GLSL pass); a pass asking for more is refused
+// (pass::check_supported). Device::draw has one host target and neither buffer, so there a
+// pass with more targets, a stencil test or a depth state is refused as "not bound".
 inline constexpr pass::Capabilities kCapabilities{
     .max_color_targets = 4, .depth_stencil = true, .spirv_pixel_stage = true};
 

@@ -65,10 +65,12 @@ using StageTextures = std::array<TextureId, pass::kSamplerSlots>;
 
 // What a draw renders into: oC0..oC(n−1) in color[0..n−1] (n = pass.color_targets, every
 // one the same size, the rest None) and, for a pass with a stencil test, an 8-bit stencil
-// buffer made by create_stencil (None: no stencil buffer).
+// buffer made by create_stencil (None: no stencil buffer); for a pass with a depth state, a
+// depth buffer made by create_depth (not both at once yet).
 struct RenderTargets {
   std::array<TextureId, 4> color{};
   TextureId stencil = TextureId::None;
+  TextureId depth = TextureId::None;
 };
 
 // What TextureSet::draw_traced records of one pixel (codegen::TracePixel): entry i belongs to
@@ -98,6 +100,10 @@ public:
   // uploaded; read() returns it as RGBA32F with the stencil value (0..255) in red and zeros
   // elsewhere.
   ir::Result<TextureId> create_stencil(uint32_t width, uint32_t height);
+  // A new `width` × `height` depth buffer (D32_SFLOAT), every pixel `clear`. It cannot be
+  // sampled; upload() replaces its values with an image's red channel, read() returns it as
+  // RGBA32F with the depth in red and zeros elsewhere.
+  ir::Result<TextureId> create_depth(uint32_t width, uint32_t height, float clear);
   // Replaces the texture's contents with `image` (same size; stored with the texture's
   // format's store rule whatever image.format says).
   ir::Status upload(TextureId id, const img::Image& image);
