@@ -9,7 +9,7 @@
 #include "tierlift/assembly/parser.h"
 
 namespace analytic = tierlift::analytic;
-namespace as = tierlift::assembly;
+namespace assembly = tierlift::assembly;
 
 namespace {
 

@@ -18,7 +18,7 @@ namespace analytic = tierlift::analytic;
 namespace cpu = tierlift::cpu;
 namespace img = tierlift::img;
 namespace ir = tierlift::ir;
-namespace as = tierlift::assembly;
+namespace assembly = tierlift::assembly;
 
 namespace {
 

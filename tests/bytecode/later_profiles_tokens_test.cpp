@@ -23,7 +23,7 @@ namespace {
 
 using Tokens = std::vector<uint32_t>;
 namespace ir = tierlift::ir;
-namespace as = tierlift::assembly;
+namespace assembly = tierlift::assembly;
 
 struct Case {
   const char* text;
