@@ -3,7 +3,7 @@
 #include <memory>
 #include <string>
 
-#include "tierlift/asm/parser.h"
+#include "tierlift/assembly/parser.h"
 #include <cstdlib>
 #include <string>
 
@@ -15,7 +15,7 @@ namespace {
 
 std::shared_ptr<const ir::Program> listing(const char* name) {
   auto text = listings::find_embedded(std::string("gpugems21/") + name);
-  auto r = as::parse_text(std::string(text.value_or("")), name);
+  auto r = assembly::parse_text(std::string(text.value_or("")), name);
   return r.program ? std::make_shared<const ir::Program>(std::move(*r.program)) : nullptr;
 }
 

@@ -5,8 +5,8 @@
 
 #include "glslang_peer.h"
 
-#include "tierlift/asm/parser.h"
-#include "tierlift/asm/validator.h"
+#include "tierlift/assembly/parser.h"
+#include "tierlift/assembly/validator.h"
 #include "tierlift/codegen/codegen.h"
 #include "tierlift/listings/embedded.h"
 
@@ -22,8 +22,8 @@ std::string article(const char* name) {
 void translate(benchmark::State& state, const char* name) {
   std::string text = article(name);
   for (auto _ : state) {
-    auto r = as::parse_text(text, name);
-    if (!r.program || !as::validate(*r.program, r.diags)) {
+    auto r = assembly::parse_text(text, name);
+    if (!r.program || !assembly::validate(*r.program, r.diags)) {
       state.SkipWithError("listing does not validate");
       return;
     }

@@ -8,9 +8,9 @@
 
 #include "bench_inputs.h"
 #include "glslang_peer.h"
-#include "tierlift/asm/bytecode.h"
-#include "tierlift/asm/parser.h"
-#include "tierlift/asm/validator.h"
+#include "tierlift/assembly/bytecode.h"
+#include "tierlift/assembly/parser.h"
+#include "tierlift/assembly/validator.h"
 
 using namespace tierlift;
 
@@ -20,8 +20,8 @@ void BM_ParseValidate(benchmark::State& state) {
   const auto& listings = bench::all_listings();
   for (auto _ : state) {
     for (const auto& l : listings) {
-      auto r = as::parse_text(l.text, l.name);
-      if (r.program) benchmark::DoNotOptimize(as::validate(*r.program, r.diags));
+      auto r = assembly::parse_text(l.text, l.name);
+      if (r.program) benchmark::DoNotOptimize(assembly::validate(*r.program, r.diags));
     }
   }
   state.SetBytesProcessed(int64_t(state.iterations()) * int64_t(bench::total_bytes(listings)));
@@ -32,7 +32,8 @@ BENCHMARK(BM_ParseValidate);
 std::vector<ir::Program> parsed_listings() {
   std::vector<ir::Program> out;
   for (const auto& l : bench::all_listings())
-    if (auto r = as::parse_text(l.text, l.name); r.program) out.push_back(std::move(*r.program));
+    if (auto r = assembly::parse_text(l.text, l.name); r.program)
+      out.push_back(std::move(*r.program));
   return out;
 }
 
@@ -40,9 +41,9 @@ void BM_ParseValidateAssemble(benchmark::State& state) {
   const auto& listings = bench::all_listings();
   for (auto _ : state) {
     for (const auto& l : listings) {
-      auto r = as::parse_text(l.text, l.name);
-      if (r.program && as::validate(*r.program, r.diags))
-        benchmark::DoNotOptimize(as::assemble(*r.program));
+      auto r = assembly::parse_text(l.text, l.name);
+      if (r.program && assembly::validate(*r.program, r.diags))
+        benchmark::DoNotOptimize(assembly::assemble(*r.program));
     }
   }
   state.SetBytesProcessed(int64_t(state.iterations()) * int64_t(bench::total_bytes(listings)));
@@ -53,7 +54,7 @@ BENCHMARK(BM_ParseValidateAssemble);
 void BM_AssembleOnly(benchmark::State& state) {
   auto programs = parsed_listings();
   for (auto _ : state)
-    for (const auto& p : programs) benchmark::DoNotOptimize(as::assemble(p));
+    for (const auto& p : programs) benchmark::DoNotOptimize(assembly::assemble(p));
   state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(programs.size()));
 }
 BENCHMARK(BM_AssembleOnly);
@@ -62,13 +63,13 @@ void BM_Disassemble(benchmark::State& state) {
   std::vector<std::vector<uint32_t>> streams;
   size_t bytes = 0;
   for (const auto& p : parsed_listings()) {
-    streams.push_back(as::assemble(p));
+    streams.push_back(assembly::assemble(p));
     bytes += streams.back().size() * 4;
   }
   for (auto _ : state)
     for (const auto& t : streams) {
       ir::DiagnosticSink d;
-      benchmark::DoNotOptimize(as::disassemble(t, d));
+      benchmark::DoNotOptimize(assembly::disassemble(t, d));
     }
   state.SetBytesProcessed(int64_t(state.iterations()) * int64_t(bytes));
   state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(streams.size()));

@@ -15,7 +15,7 @@
 #include <string>
 
 #include "blur8_pass.h"
-#include "tierlift/asm/parser.h"
+#include "tierlift/assembly/parser.h"
 #include "tierlift/cpu/draw.h"
 #include "tierlift/listings/embedded.h"
 #include "tierlift/pass/setup.h"

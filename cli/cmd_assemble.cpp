@@ -5,7 +5,7 @@
 #include "commands.h"
 #include "front_end.h"
 #include "report.h"
-#include "tierlift/asm/bytecode.h"
+#include "tierlift/assembly/bytecode.h"
 
 namespace tierlift::cli {
 namespace {
@@ -50,11 +50,11 @@ void register_assemble_command(CLI::App& app) {
     LoadedListing& l = *loaded;
     // The checked form: a field the token stream cannot carry is an error, not truncated.
     std::optional<std::vector<uint32_t>> tokens;
-    if (l.program) tokens = as::assemble(*l.program, l.diags);
+    if (l.program) tokens = assembly::assemble(*l.program, l.diags);
     report.diagnostics(l.diags, l.sources);
     if (!tokens) return report.finish(kExitInvalid);
     std::string bytes =
-        opts->c_array ? c_array(*tokens, opts->c_name) : as::tokens_to_bytes(*tokens);
+        opts->c_array ? c_array(*tokens, opts->c_name) : assembly::tokens_to_bytes(*tokens);
     if (std::string error = write_output(opts->output, bytes); !error.empty()) {
       report.error("io", error, opts->output);
       return report.finish(kExitUsage);

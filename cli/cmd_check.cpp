@@ -35,7 +35,7 @@ void register_check_command(CLI::App& app) {
       if (!valid && worst == kExitOk) worst = kExitInvalid;
       report.diagnostics(l.diags, l.sources);
       nlohmann::json entry = {{"file", path}, {"valid", valid}};
-      entry["form"] = as::listing_form_name(l.form);
+      entry["form"] = assembly::listing_form_name(l.form);
       if (l.program) {
         entry["profile"] = ir::profile_name(l.program->profile);
         entry["instructions"] = l.program->code.size();

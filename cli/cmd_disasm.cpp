@@ -6,9 +6,9 @@
 #include "commands.h"
 #include "front_end.h"
 #include "report.h"
-#include "tierlift/asm/constant_table.h"
-#include "tierlift/asm/printer.h"
-#include "tierlift/asm/text_form.h"
+#include "tierlift/assembly/constant_table.h"
+#include "tierlift/assembly/printer.h"
+#include "tierlift/assembly/text_form.h"
 
 namespace tierlift::cli {
 
@@ -43,10 +43,10 @@ void register_disasm_command(CLI::App& app) {
       return report.finish(kExitUsage);
     }
     LoadedListing& l = *loaded;
-    if (l.form == as::ListingForm::Text) {
+    if (l.form == assembly::ListingForm::Text) {
       // Say what it is: an empty file or a broken C array is not "assembly text".
       ir::DiagnosticSink why;
-      const std::string what = as::describe_text_form(l.sources.files[0].text, why);
+      const std::string what = assembly::describe_text_form(l.sources.files[0].text, why);
       report.error("listing-form",
                    what.empty() ? "this is assembly text, not a token stream; `tierlift fmt` "
                                   "prints it in canonical form, `tierlift assemble` makes a "
@@ -57,11 +57,11 @@ void register_disasm_command(CLI::App& app) {
       return report.finish(kExitInvalid);
     }
     report.diagnostics(l.diags, l.sources);
-    report.result()["form"] = as::listing_form_name(l.form);
+    report.result()["form"] = assembly::listing_form_name(l.form);
     if (l.constants) report.result()["constants"] = constants_json(*l.constants);
     if (!l.program || l.diags.has_errors()) return report.finish(kExitInvalid);
-    std::string text = as::print_program(*l.program);
-    if (l.constants) text = as::print_constant_table(*l.constants) + text;
+    std::string text = assembly::print_program(*l.program);
+    if (l.constants) text = assembly::print_constant_table(*l.constants) + text;
     if (opts->output == "-") {
       report.output("text", text);
       return report.finish(kExitOk);

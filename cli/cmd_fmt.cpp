@@ -5,8 +5,8 @@
 #include "commands.h"
 #include "front_end.h"
 #include "report.h"
-#include "tierlift/asm/preprocessor.h"
-#include "tierlift/asm/printer.h"
+#include "tierlift/assembly/preprocessor.h"
+#include "tierlift/assembly/printer.h"
 
 namespace tierlift::cli {
 namespace {
@@ -16,10 +16,11 @@ namespace {
 // #if branch not taken is gone, so it refuses rather than lose source.
 ir::DiagnosticSink preprocessor_kept(const LoadedListing& l, const FrontEndOptions& fe) {
   ir::DiagnosticSink out;
-  if (l.form != as::ListingForm::Text) return out; // a C array's #if 0 is not the listing's
-  as::ParseOptions po;
+  if (l.form != assembly::ListingForm::Text) return out; // a C array's #if 0 is not the listing's
+  assembly::ParseOptions po;
   po.defines = split_defines(fe.defines);
-  if (std::optional<as::PreprocessorUse> use = as::first_preprocessor_use(0, l.sources, po))
+  if (std::optional<assembly::PreprocessorUse> use =
+          assembly::first_preprocessor_use(0, l.sources, po))
     out.error(use->loc, "fmt-preprocessor",
               fmt::format("fmt cannot keep {}: it prints the parsed program, in which #include "
                           "is inlined, macros are expanded and the #if branch not taken is "
@@ -64,7 +65,8 @@ void register_fmt_command(CLI::App& app) {
       return report.finish(kExitInvalid);
     }
     // The listing's comments and paragraphs stay; a formatter must not delete them.
-    std::string text = as::print_program_with_comments(*l.program, l.sources.files[0].text, 0);
+    std::string text =
+        assembly::print_program_with_comments(*l.program, l.sources.files[0].text, 0);
     if (opts->output == "-") {
       report.output("text", text);
       return report.finish(kExitOk);

@@ -4,9 +4,9 @@
 
 #include "commands.h"
 #include "report.h"
-#include "tierlift/asm/parser.h"
-#include "tierlift/asm/printer.h"
-#include "tierlift/asm/validator.h"
+#include "tierlift/assembly/parser.h"
+#include "tierlift/assembly/printer.h"
+#include "tierlift/assembly/validator.h"
 #include "tierlift/effects/glow/stage_states.h"
 #include "tierlift/ir/profile.h"
 #include "tierlift/listings/embedded.h"
@@ -51,8 +51,8 @@ void register_listings_command(CLI::App& app) {
         if (!opts->quiet) fmt::print("{}{}\n", lowered->vs_text, lowered->ps_text);
         continue;
       }
-      auto parsed = as::parse_text(std::string(l.text), path);
-      bool ok = parsed.program && as::validate(*parsed.program, parsed.diags);
+      auto parsed = assembly::parse_text(std::string(l.text), path);
+      bool ok = parsed.program && assembly::validate(*parsed.program, parsed.diags);
       report.diagnostics(parsed.diags, parsed.sources);
       nlohmann::json entry = {{"file", path}, {"valid", ok}};
       if (!ok) {
@@ -63,7 +63,7 @@ void register_listings_command(CLI::App& app) {
       }
       entry["profile"] = ir::profile_name(parsed.program->profile);
       entry["instructions"] = parsed.program->code.size();
-      std::string text = as::print_program(*parsed.program);
+      std::string text = assembly::print_program(*parsed.program);
       if (!opts->quiet) entry["text"] = text;
       entries.push_back(std::move(entry));
       if (report.json()) continue;

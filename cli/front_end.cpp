@@ -5,8 +5,8 @@
 #include <fmt/format.h>
 
 #include "report.h"
-#include "tierlift/asm/parser.h"
-#include "tierlift/asm/preprocessor.h"
+#include "tierlift/assembly/parser.h"
+#include "tierlift/assembly/preprocessor.h"
 #include "tierlift/io/output_file.h"
 #include "tierlift/ir/passes.h"
 #include "tierlift/ir/profile.h"
@@ -26,10 +26,10 @@ namespace {
 // not lex) is a usage error (exit 2) when the flag is read, not an error of the listing
 // (exit 1). The preprocessor itself decides, on an empty listing, so the rule is its own.
 std::string define_problem(std::string& word) {
-  as::ParseOptions options;
+  assembly::ParseOptions options;
   options.defines = split_defines({word});
   options.allow_include = false;
-  as::ParseResult r = as::parse_text("vs_1_1\n", "-D", options);
+  assembly::ParseResult r = assembly::parse_text("vs_1_1\n", "-D", options);
   for (const ir::Diagnostic& d : r.diags.all())
     if (d.severity == ir::Severity::Error && d.rule == "preprocessor")
       return fmt::format("'{}' is not NAME or NAME=VALUE (NAME an identifier, VALUE tokens of "
@@ -71,7 +71,7 @@ ir::Status output_conflict(const std::string& output, const std::vector<std::str
 }
 
 ir::Status refuse_included(const std::string& output, const LoadedListing& listing) {
-  for (const std::string& inc : as::included_files(listing.sources))
+  for (const std::string& inc : assembly::included_files(listing.sources))
     if (io::same_file(output, inc))
       return ir::fail(output, "write",
                       fmt::format("{}: refusing to write over {}, which {} #includes{}", output,
@@ -138,7 +138,7 @@ ir::Result<LoadedListing> load_listing(const std::string& path, const FrontEndOp
                                   "ps_2_a ps_2_b ps_3_0)",
                                   options.profile));
   }
-  as::LoadOptions lopts;
+  assembly::LoadOptions lopts;
   lopts.parse.defines = split_defines(options.defines);
   lopts.parse.include_dirs = options.include_dirs;
   lopts.profile = target;
@@ -146,7 +146,7 @@ ir::Result<LoadedListing> load_listing(const std::string& path, const FrontEndOp
   lopts.skip_validation = options.skip_validation;
   lopts.strict = options.strict;
   uint32_t file = out.sources.add(path == "-" ? "<stdin>" : path, std::move(*text));
-  as::Loaded r = as::load_listing(file, out.sources, lopts);
+  assembly::Loaded r = assembly::load_listing(file, out.sources, lopts);
   out.form = r.form;
   out.constants = std::move(r.constants);
   ir::add_all(out.diags, r.program.diagnostics());
@@ -162,10 +162,10 @@ bool check_executable(LoadedListing& listing, std::string_view backend) {
   return false;
 }
 
-nlohmann::json constants_json(const as::ConstantTable& table) {
+nlohmann::json constants_json(const assembly::ConstantTable& table) {
   static constexpr const char* kSets[] = {"bool", "int4", "float4", "sampler"};
   nlohmann::json out = nlohmann::json::array();
-  for (const as::NamedConstant& c : table.constants)
+  for (const assembly::NamedConstant& c : table.constants)
     out.push_back({{"name", c.name},
                    {"registers", c.registers()},
                    {"set", kSets[static_cast<int>(c.set)]},

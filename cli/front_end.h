@@ -10,7 +10,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "tierlift/asm/load.h"
+#include "tierlift/assembly/load.h"
 #include "tierlift/io/bounded_read.h"
 #include "tierlift/ir/diagnostic.h"
 #include "tierlift/ir/program.h"
@@ -42,13 +42,14 @@ struct LoadedListing {
   ir::SourceManager sources;
   ir::DiagnosticSink diags;
   std::optional<ir::Program> program; // set when it parsed (and validated, unless skipped)
-  as::ListingForm form = as::ListingForm::Text; // text or token stream (detected by content)
-  std::optional<as::ConstantTable> constants;   // a token stream's CTAB
+  assembly::ListingForm form =
+      assembly::ListingForm::Text;                  // text or token stream (detected by content)
+  std::optional<assembly::ConstantTable> constants; // a token stream's CTAB
 };
 
 // Reads `path` ("-" = standard input) within io::kListingCap — assembly text (a UTF-8
 // byte-order mark is skipped) or a D3D9 token stream, told apart by content
-// (as::load_listing) — parses it, and validates it unless skipped.
+// (assembly::load_listing) — parses it, and validates it unless skipped.
 // `cap` is the reader's limit (disasm reads within io::kTokenFileCap).
 // A listing that could not be read, or a bad flag, is a failure (rule "io": exit 2); one that
 // was read carries its own diagnostics (LoadedListing::diags), whether it parsed or not.
@@ -79,6 +80,6 @@ ir::Status check_output(const std::string& output, const std::vector<std::string
 std::string write_output(const std::string& path, std::string_view bytes);
 
 // A CTAB as JSON: [{"name", "registers", "set", "index", "count", "type"}].
-nlohmann::json constants_json(const as::ConstantTable& table);
+nlohmann::json constants_json(const assembly::ConstantTable& table);
 
 } // namespace tierlift::cli

@@ -1,5 +1,5 @@
 // tierlift: thin command line over the libraries. Flags are parsed here; the work is done
-// by the modules (asm_parser, runtime, codegen).
+// by the modules (assembly, runtime, codegen).
 #include <fmt/format.h>
 
 #include <cstdio>

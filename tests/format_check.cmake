@@ -1,7 +1,7 @@
 # ctest "clang_format": every C++ file of ours must already be in clang-format's form
 # (.clang-format at the root). Run `clang-format -i` on the files it names.
 file(GLOB_RECURSE _files
-  ${ROOT}/ir/*.cpp ${ROOT}/ir/*.h ${ROOT}/asm_parser/*.cpp ${ROOT}/asm_parser/*.h
+  ${ROOT}/ir/*.cpp ${ROOT}/ir/*.h ${ROOT}/assembly/*.cpp ${ROOT}/assembly/*.h
   ${ROOT}/codegen/*.cpp ${ROOT}/codegen/*.h ${ROOT}/runtime/*.cpp ${ROOT}/runtime/*.h ${ROOT}/effects/*.cpp ${ROOT}/effects/*.h
   ${ROOT}/listings/*.cpp ${ROOT}/listings/*.h ${ROOT}/cli/*.cpp ${ROOT}/cli/*.h
   ${ROOT}/io/*.cpp ${ROOT}/io/*.h ${ROOT}/corpus/*.cpp ${ROOT}/corpus/*.h

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "run_flags.h"
-#include "tierlift/asm/constant_table.h"
+#include "tierlift/assembly/constant_table.h"
 
 namespace tierlift::cli {
 namespace {
@@ -212,7 +212,7 @@ ir::Result<ConstSetting> register_value(StageMask stage, RegisterName reg, std::
 // The registers a constant named by a constant table covers: a boolean takes one value, a
 // float or integer constant 4 per register in register order (a matrix or an array: up to
 // 4·count), a sampler none (it is bound with --texture).
-ir::Result<std::vector<ConstSetting>> named_value(StageMask stage, const as::NamedConstant& c,
+ir::Result<std::vector<ConstSetting>> named_value(StageMask stage, const assembly::NamedConstant& c,
                                                   std::string_view value, std::string_view text) {
   auto fail = [&](std::string why) {
     return usage(fmt::format("--const '{}': {}", text, std::move(why)));
@@ -220,10 +220,10 @@ ir::Result<std::vector<ConstSetting>> named_value(StageMask stage, const as::Nam
   std::vector<std::string_view> values;
   split_fields(value, 0, values);
   std::vector<ConstSetting> out;
-  if (c.set == as::ConstantSet::Sampler)
+  if (c.set == assembly::ConstantSet::Sampler)
     return fail(
         fmt::format("'{}' is a sampler ({}); bind it with --texture", c.name, c.registers()));
-  if (c.set == as::ConstantSet::Bool) {
+  if (c.set == assembly::ConstantSet::Bool) {
     if (values.size() != 1)
       return fail(fmt::format("'{}' ({}) takes one value, true or false", c.name, c.registers()));
     ir::Result<ConstSetting> b =
@@ -237,7 +237,7 @@ ir::Result<std::vector<ConstSetting>> named_value(StageMask stage, const as::Nam
                             c.name, c.registers(), c.type.empty() ? "?" : c.type, 4 * c.count,
                             values.size()));
   const ir::RegFile file =
-      c.set == as::ConstantSet::Int4 ? ir::RegFile::ConstInt : ir::RegFile::Const;
+      c.set == assembly::ConstantSet::Int4 ? ir::RegFile::ConstInt : ir::RegFile::Const;
   for (uint32_t r = 0; r < values.size() / 4; ++r) {
     const std::string_view* v = &values[4 * r];
     const std::string four = fmt::format("{},{},{},{}", v[0], v[1], v[2], v[3]);
@@ -251,8 +251,8 @@ ir::Result<std::vector<ConstSetting>> named_value(StageMask stage, const as::Nam
 } // namespace
 
 ir::Result<std::vector<ConstSetting>> parse_const_assignment(std::string_view text,
-                                                             const as::ConstantTable* vs,
-                                                             const as::ConstantTable* ps) {
+                                                             const assembly::ConstantTable* vs,
+                                                             const assembly::ConstantTable* ps) {
   std::string_view body = trim(text);
   const StageMask stage = take_stage_prefix(body);
   std::string_view name, value;
@@ -266,7 +266,7 @@ ir::Result<std::vector<ConstSetting>> parse_const_assignment(std::string_view te
   }
   std::vector<ConstSetting> out;
   for (auto [mask, table] : {std::pair{StageMask::Vertex, vs}, {StageMask::Pixel, ps}}) {
-    const as::NamedConstant* c =
+    const assembly::NamedConstant* c =
         table && (stage == StageMask::Both || stage == mask) ? table->find(name) : nullptr;
     if (!c) continue;
     ir::Result<std::vector<ConstSetting>> regs = named_value(mask, *c, value, text);
@@ -281,8 +281,8 @@ ir::Result<std::vector<ConstSetting>> parse_const_assignment(std::string_view te
 }
 
 ir::Result<std::vector<ConstSetting>> parse_const_assignments(const std::vector<std::string>& texts,
-                                                              const as::ConstantTable* vs,
-                                                              const as::ConstantTable* ps) {
+                                                              const assembly::ConstantTable* vs,
+                                                              const assembly::ConstantTable* ps) {
   std::vector<ConstSetting> out;
   for (const std::string& text : texts) {
     ir::Result<std::vector<ConstSetting>> one = parse_const_assignment(text, vs, ps);

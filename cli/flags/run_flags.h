@@ -14,9 +14,9 @@
 #include "tierlift/ir/result.h"
 #include "tierlift/pass/setup.h"
 
-namespace tierlift::as {
+namespace tierlift::assembly {
 struct ConstantTable;
-} // namespace tierlift::as
+} // namespace tierlift::assembly
 
 namespace tierlift::cli {
 
@@ -37,12 +37,12 @@ using pass::Vec4;
 // setting per register. Fails (rule "usage") when the name is in neither table or the value
 // does not fit.
 ir::Result<std::vector<ConstSetting>> parse_const_assignment(std::string_view text,
-                                                             const as::ConstantTable* vs,
-                                                             const as::ConstantTable* ps);
+                                                             const assembly::ConstantTable* vs,
+                                                             const assembly::ConstantTable* ps);
 // Every --const of a run, in order.
 ir::Result<std::vector<ConstSetting>> parse_const_assignments(const std::vector<std::string>& texts,
-                                                              const as::ConstantTable* vs,
-                                                              const as::ConstantTable* ps);
+                                                              const assembly::ConstantTable* vs,
+                                                              const assembly::ConstantTable* ps);
 // One register setting (no constant tables).
 ir::Result<ConstSetting> parse_const_setting(std::string_view text);
 // --input v#|t#=x,y,z,w (pixel stage)

@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "tierlift/asm/load.h"
+#include "tierlift/assembly/load.h"
 
 namespace tierlift::corpus {
 namespace fs = std::filesystem;
@@ -73,7 +73,7 @@ std::vector<std::string> list_entries(std::string_view text) {
 // A text file whose every entry names something that exists next to it. A listing's lines
 // ("ps_2_0", "mov oC0, c0") never all name files, so listings are never taken for lists.
 bool is_list_file(const fs::path& file, std::string_view bytes) {
-  if (as::detect_listing_form(bytes) != as::ListingForm::Text) return false;
+  if (assembly::detect_listing_form(bytes) != assembly::ListingForm::Text) return false;
   std::vector<std::string> entries = list_entries(bytes);
   if (entries.empty()) return false;
   std::error_code ec;
@@ -153,15 +153,15 @@ ir::Status add_root(Collector& col, const fs::path& root, const std::string& rel
 } // namespace
 
 bool looks_like_listing(std::string_view bytes) {
-  switch (as::detect_listing_form(bytes)) {
-  case as::ListingForm::TokenStream:
-  case as::ListingForm::TokenArray: return true;
-  case as::ListingForm::Binary:
+  switch (assembly::detect_listing_form(bytes)) {
+  case assembly::ListingForm::TokenStream:
+  case assembly::ListingForm::TokenArray: return true;
+  case assembly::ListingForm::Binary:
     // A token stream cut short (not a whole number of DWORDs) is still a shader file, one
     // that must fail its parse stage rather than vanish from the corpus.
     return bytes.size() >= 4 && (static_cast<unsigned char>(bytes[3]) == 0xFF) &&
            static_cast<unsigned char>(bytes[2]) >= 0xFE;
-  case as::ListingForm::Text: break;
+  case assembly::ListingForm::Text: break;
   }
   static const std::regex version(R"((^|\n)[ \t]*(vs|ps)[._][0-9][._][0-9xsw])", std::regex::icase);
   return std::regex_search(bytes.begin(), bytes.end(), version);

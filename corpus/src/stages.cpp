@@ -8,8 +8,8 @@
 #include <fmt/format.h>
 
 #include "diff_run.h"
-#include "tierlift/asm/bytecode.h"
-#include "tierlift/asm/load.h"
+#include "tierlift/assembly/bytecode.h"
+#include "tierlift/assembly/load.h"
 #include "tierlift/codegen/codegen.h"
 #include "tierlift/io/bounded_read.h"
 #include "tierlift/ir/passes.h"
@@ -39,8 +39,8 @@ std::string first_lines(const std::string& text, size_t lines = 3) {
 // Shader model 4 and newer (Direct3D 10's profiles) are no Direct3D 9 listings: the front end
 // refuses them and the case is "unsupported", not a failure. Told from the version line or
 // token. (Shader models 2.x and 3.0 parse; their SPIR-V stage says "unsupported".)
-bool newer_than_front_end(std::string_view bytes, as::ListingForm form) {
-  if (form == as::ListingForm::TokenStream || form == as::ListingForm::Binary) {
+bool newer_than_front_end(std::string_view bytes, assembly::ListingForm form) {
+  if (form == assembly::ListingForm::TokenStream || form == assembly::ListingForm::Binary) {
     if (bytes.size() < 4) return false;
     const unsigned major = static_cast<unsigned char>(bytes[1]);
     const unsigned kind = static_cast<unsigned char>(bytes[2]) |
@@ -48,7 +48,7 @@ bool newer_than_front_end(std::string_view bytes, as::ListingForm form) {
     return (kind == 0xFFFE || kind == 0xFFFF) && major >= 4;
   }
   static const std::regex version(R"((^|\n)[ \t]*(vs|ps)[._]([4-9])[._])", std::regex::icase);
-  if (form == as::ListingForm::TokenArray) {
+  if (form == assembly::ListingForm::TokenArray) {
     static const std::regex token(R"(0x[fF]{3}[eEfF]0[4-9]0)");
     return std::regex_search(bytes.begin(), bytes.end(), token);
   }
@@ -57,15 +57,15 @@ bool newer_than_front_end(std::string_view bytes, as::ListingForm form) {
 
 struct Front {
   ir::SourceManager sources;
-  std::optional<as::Loaded> loaded;
+  std::optional<assembly::Loaded> loaded;
 };
 
 Front load(const std::string& path, const std::string& bytes, bool validate) {
   Front f;
   uint32_t file = f.sources.add(path, bytes);
-  as::LoadOptions o;
+  assembly::LoadOptions o;
   o.skip_validation = !validate;
-  f.loaded.emplace(as::load_listing(file, f.sources, o));
+  f.loaded.emplace(assembly::load_listing(file, f.sources, o));
   return f;
 }
 
@@ -77,7 +77,7 @@ StageResult round_trip(const Front& parsed) {
   StageResult s{std::string(kStageRoundTrip), Verdict::Pass, {}, 0};
   const ir::Program& program = *parsed.loaded->program;
   ir::DiagnosticSink diags;
-  std::optional<std::vector<uint32_t>> tokens = as::assemble(program, diags);
+  std::optional<std::vector<uint32_t>> tokens = assembly::assemble(program, diags);
   if (!tokens) {
     s.verdict = Verdict::Fail;
     s.message = "assemble: " + first_lines(ir::render_text(diags, parsed.sources));
@@ -98,7 +98,7 @@ StageResult round_trip(const Front& parsed) {
     return s;
   }
   // Text in: disassemble ∘ assemble gives the same program.
-  std::optional<ir::Program> back = as::disassemble(*tokens, diags);
+  std::optional<ir::Program> back = assembly::disassemble(*tokens, diags);
   if (!back) {
     s.verdict = Verdict::Fail;
     s.message = "disassemble: " + first_lines(ir::render_text(diags, parsed.sources));
@@ -159,8 +159,8 @@ CaseResult run_listing(const std::string& id, const std::string& display_path, s
   CaseResult r;
   r.id = id;
   if (bytes.starts_with("\xEF\xBB\xBF")) bytes.erase(0, 3); // a UTF-8 byte-order mark
-  const as::ListingForm form = as::detect_listing_form(bytes);
-  r.form = std::string(as::listing_form_name(form));
+  const assembly::ListingForm form = assembly::detect_listing_form(bytes);
+  r.form = std::string(assembly::listing_form_name(form));
 
   const auto t_parse = Clock::now();
   Front parsed = load(display_path, bytes, false);

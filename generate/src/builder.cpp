@@ -8,7 +8,7 @@
 #include <limits>
 #include <set>
 
-#include "tierlift/asm/validator.h"
+#include "tierlift/assembly/validator.h"
 #include "tierlift/ir/profile.h"
 #include "tierlift/ir/semantics.h"
 
@@ -237,9 +237,9 @@ bool Builder::accept(const std::vector<ir::Instruction>& ins) {
   if (ins.empty()) return false;
   ir::Program p = assemble(ins);
   ir::DiagnosticSink diags;
-  as::ValidateOptions quiet;
+  assembly::ValidateOptions quiet;
   quiet.warnings = false;
-  if (!as::validate(p, profile, diags, quiet)) return false;
+  if (!assembly::validate(p, profile, diags, quiet)) return false;
   body_.insert(body_.end(), ins.begin(), ins.end());
   return true;
 }

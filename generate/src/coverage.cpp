@@ -4,8 +4,8 @@
 
 #include <fmt/format.h>
 
-#include "tierlift/asm/parser.h"
-#include "tierlift/asm/validator.h"
+#include "tierlift/assembly/parser.h"
+#include "tierlift/assembly/validator.h"
 #include "tierlift/generate/generate.h"
 #include "tierlift/ir/source_modifiers.h"
 
@@ -54,8 +54,8 @@ std::string line(const char* what, const std::map<std::string, std::size_t>& m) 
 } // namespace
 
 void Coverage::add(const std::string& listing) {
-  as::ParseResult r = as::parse_text(listing, "generated.asm");
-  if (!r.program || !as::validate(*r.program, r.diags)) {
+  assembly::ParseResult r = assembly::parse_text(listing, "generated.asm");
+  if (!r.program || !assembly::validate(*r.program, r.diags)) {
     ++invalid;
     return;
   }

@@ -2,7 +2,7 @@
 #include <string>
 
 #include "builder.h"
-#include "tierlift/asm/printer.h"
+#include "tierlift/assembly/printer.h"
 #include "tierlift/ir/profile.h"
 
 namespace tierlift::gen {
@@ -66,7 +66,7 @@ ir::Result<std::string> generate_listing(std::string_view profile_name, std::uin
     break;
   default: detail::instruction_loop(b, n, true, true); break;
   }
-  return as::print_program(b.finish());
+  return assembly::print_program(b.finish());
 }
 
 ir::Result<std::string> generate_listing(std::string_view profile, std::uint64_t seed,

@@ -6,10 +6,10 @@
 #include <sstream>
 
 #include "tierlift/analytic/taps.h"
-#include "tierlift/asm/parser.h"
+#include "tierlift/assembly/parser.h"
 
 namespace analytic = tierlift::analytic;
-namespace as = tierlift::as;
+namespace assembly = tierlift::assembly;
 
 namespace {
 
@@ -22,7 +22,7 @@ std::string read_listing(const std::string& name) {
 }
 
 tierlift::ir::Program parse(const std::string& text, const std::string& name) {
-  auto r = as::parse_text(text, name);
+  auto r = assembly::parse_text(text, name);
   EXPECT_TRUE(r.program.has_value()) << name << ": " << render_text(r.diags, r.sources);
   return r.program ? *r.program : tierlift::ir::Program{};
 }

@@ -15,7 +15,7 @@
 #include "corner_model.h"
 #include "tierlift/analytic/blur_model.h"
 #include "tierlift/analytic/taps.h"
-#include "tierlift/asm/parser.h"
+#include "tierlift/assembly/parser.h"
 #include "tierlift/cpu/draw.h"
 #include "tierlift/image/builtin.h"
 #include "tierlift/image/compare.h"
@@ -38,7 +38,7 @@ std::shared_ptr<const tierlift::ir::Program> listing(const std::string& name) {
                   std::ios::binary);
   std::stringstream s;
   s << f.rdbuf();
-  auto r = tierlift::as::parse_text(s.str(), name);
+  auto r = tierlift::assembly::parse_text(s.str(), name);
   EXPECT_TRUE(r.program.has_value()) << render_text(r.diags, r.sources);
   return std::make_shared<const tierlift::ir::Program>(r.program ? *r.program
                                                                  : tierlift::ir::Program{});

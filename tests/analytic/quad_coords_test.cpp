@@ -11,19 +11,19 @@
 
 #include "tierlift/analytic/quad_coords.h"
 #include "tierlift/analytic/taps.h"
-#include "tierlift/asm/parser.h"
+#include "tierlift/assembly/parser.h"
 #include "tierlift/cpu/draw.h"
 
 namespace analytic = tierlift::analytic;
 namespace cpu = tierlift::cpu;
 namespace img = tierlift::img;
 namespace ir = tierlift::ir;
-namespace as = tierlift::as;
+namespace assembly = tierlift::assembly;
 
 namespace {
 
 std::shared_ptr<const ir::Program> parse(const std::string& text) {
-  auto r = as::parse_text(text, "listing");
+  auto r = assembly::parse_text(text, "listing");
   EXPECT_TRUE(r.program.has_value()) << render_text(r.diags, r.sources);
   return r.program ? std::make_shared<const ir::Program>(*r.program) : nullptr;
 }

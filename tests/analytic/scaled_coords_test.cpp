@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "tierlift/analytic/taps.h"
-#include "tierlift/asm/parser.h"
+#include "tierlift/assembly/parser.h"
 
 namespace analytic = tierlift::analytic;
 
@@ -17,13 +17,13 @@ tierlift::ir::Program load(const std::string& path) {
   std::ifstream f(std::string(TIERLIFT_SOURCE_DIR) + "/listings/" + path, std::ios::binary);
   std::stringstream s;
   s << f.rdbuf();
-  auto r = tierlift::as::parse_text(s.str(), path);
+  auto r = tierlift::assembly::parse_text(s.str(), path);
   EXPECT_TRUE(r.program.has_value()) << path << ": " << render_text(r.diags, r.sources);
   return r.program ? *r.program : tierlift::ir::Program{};
 }
 
 tierlift::ir::Program parse(const std::string& text) {
-  auto r = tierlift::as::parse_text(text, "inline");
+  auto r = tierlift::assembly::parse_text(text, "inline");
   EXPECT_TRUE(r.program.has_value()) << render_text(r.diags, r.sources);
   return r.program ? *r.program : tierlift::ir::Program{};
 }

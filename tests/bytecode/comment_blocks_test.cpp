@@ -13,9 +13,9 @@
 #include "listing_files.h"
 #include "loaded_listing.h"
 #include "skip_policy.h"
-#include "tierlift/asm/bytecode.h"
-#include "tierlift/asm/parser.h"
-#include "tierlift/asm/printer.h"
+#include "tierlift/assembly/bytecode.h"
+#include "tierlift/assembly/parser.h"
+#include "tierlift/assembly/printer.h"
 
 namespace fs = std::filesystem;
 using namespace tierlift;
@@ -41,14 +41,14 @@ std::string hex(const Tokens& t) {
 // Bytes → program → text → program → bytes.
 Tokens through_text(const Tokens& tokens, std::string& text) {
   ir::DiagnosticSink diags;
-  auto p = as::disassemble(tokens, diags);
+  auto p = assembly::disassemble(tokens, diags);
   EXPECT_TRUE(p.has_value());
   if (!p) return {};
-  text = as::print_program(*p);
-  auto reparsed = as::parse_text(text, "disasm.asm");
+  text = assembly::print_program(*p);
+  auto reparsed = assembly::parse_text(text, "disasm.asm");
   EXPECT_TRUE(reparsed.program.has_value()) << ir::render_text(reparsed.diags, reparsed.sources);
   if (!reparsed.program) return {};
-  auto back = as::assemble(*reparsed.program, diags);
+  auto back = assembly::assemble(*reparsed.program, diags);
   EXPECT_TRUE(back.has_value());
   return back.value_or(Tokens{});
 }
@@ -58,7 +58,7 @@ struct FirstError {
   uint32_t line = 0, col = 0;
 };
 FirstError first_error(const std::string& text) {
-  auto r = as::parse_text(text, "t.asm");
+  auto r = assembly::parse_text(text, "t.asm");
   EXPECT_FALSE(r.program.has_value()) << text;
   for (const ir::Diagnostic& d : r.diags.all())
     if (d.severity == ir::Severity::Error) return {d.rule, d.message, d.loc.line, d.loc.col};
@@ -85,7 +85,7 @@ std::vector<fs::path> bytecode_files(const fs::path& dir) {
 size_t identity_on_streams(const fs::path& dir) {
   size_t streams = 0;
   for (const fs::path& file : bytecode_files(dir)) {
-    as::LoadOptions options;
+    assembly::LoadOptions options;
     options.parse.include_dirs.push_back(file.parent_path().string());
     test::LoadedListing l = test::load_bytes(test::read_file(file), file.string(), options);
     if (l.r().tokens.empty()) continue; // a text listing
@@ -93,7 +93,7 @@ size_t identity_on_streams(const fs::path& dir) {
     ++streams;
     EXPECT_TRUE(l.r().program.ok()) << l.rendered;
     if (!l.r().program.ok()) continue;
-    EXPECT_EQ(hex(as::assemble(*l.r().program)), hex(l.r().tokens));
+    EXPECT_EQ(hex(assembly::assemble(*l.r().program)), hex(l.r().tokens));
     std::string text;
     EXPECT_EQ(hex(through_text(l.r().tokens, text)), hex(l.r().tokens)) << text;
   }
@@ -104,21 +104,21 @@ size_t identity_on_streams(const fs::path& dir) {
 
 TEST(CommentBlocks, DisassemblyKeepsThemInPlace) {
   ir::DiagnosticSink diags;
-  auto p = as::disassemble(kStream, diags);
+  auto p = assembly::disassemble(kStream, diags);
   ASSERT_TRUE(p.has_value());
   ASSERT_EQ(p->comments.size(), 2u);
   EXPECT_EQ(p->comments[0].words, (Tokens{0x47554244, 0x0000001C, 0x00000000}));
   EXPECT_TRUE(p->comments[1].words.empty());
-  EXPECT_EQ(as::print_program(*p), kText);
-  EXPECT_EQ(hex(as::assemble(*p)), hex(kStream));
+  EXPECT_EQ(assembly::print_program(*p), kText);
+  EXPECT_EQ(hex(assembly::assemble(*p)), hex(kStream));
   std::string text;
   EXPECT_EQ(hex(through_text(kStream, text)), hex(kStream));
 }
 
 TEST(CommentBlocks, TextAssemblesToTheStream) {
-  auto r = as::parse_text(kText, "t.asm");
+  auto r = assembly::parse_text(kText, "t.asm");
   ASSERT_TRUE(r.program.has_value()) << ir::render_text(r.diags, r.sources);
-  EXPECT_EQ(hex(as::assemble(*r.program)), hex(kStream));
+  EXPECT_EQ(hex(assembly::assemble(*r.program)), hex(kStream));
   EXPECT_EQ(r.program->comments[0].loc.line, 2u);
   EXPECT_EQ(r.program->comments[0].loc.col, 1u);
 }
@@ -129,18 +129,19 @@ TEST(CommentBlocks, LongBlocksSpanLines) {
   for (uint32_t w = 1; w <= 9; ++w) stream.push_back(w);
   stream.push_back(0x0000FFFF);
   ir::DiagnosticSink diags;
-  auto p = as::disassemble(stream, diags);
+  auto p = assembly::disassemble(stream, diags);
   ASSERT_TRUE(p.has_value());
-  EXPECT_EQ(as::print_program(*p),
+  EXPECT_EQ(assembly::print_program(*p),
             "vs_2_0\n//!comment 0x00000001 0x00000002 0x00000003 0x00000004 0x00000005 "
             "0x00000006 0x00000007 0x00000008\n//!comment+ 0x00000009\n");
-  auto r = as::parse_text("vs_2_0\n//!comment 0x1 0x2 0X3 0x4\n//!comment+ 0x5 0x6 0x7 0x8 0x9\n");
+  auto r =
+      assembly::parse_text("vs_2_0\n//!comment 0x1 0x2 0X3 0x4\n//!comment+ 0x5 0x6 0x7 0x8 0x9\n");
   ASSERT_TRUE(r.program.has_value()) << ir::render_text(r.diags, r.sources);
-  EXPECT_EQ(hex(as::assemble(*r.program)), hex(stream));
+  EXPECT_EQ(hex(assembly::assemble(*r.program)), hex(stream));
   // Two "//!comment" lines are two blocks.
-  auto two = as::parse_text("vs_2_0\n//!comment 0x1\n//!comment 0x2\n");
+  auto two = assembly::parse_text("vs_2_0\n//!comment 0x1\n//!comment 0x2\n");
   ASSERT_TRUE(two.program.has_value());
-  EXPECT_EQ(hex(as::assemble(*two.program)),
+  EXPECT_EQ(hex(assembly::assemble(*two.program)),
             hex({0xFFFE0200, 0x0001FFFE, 1, 0x0001FFFE, 2, 0x0000FFFF}));
 }
 
@@ -163,8 +164,9 @@ TEST(CommentBlocks, ErrorsHavePositions) {
 
 TEST(CommentBlocks, OtherCommentsStayComments) {
   // "//!commentary" and "// !comment" are ordinary comments; a block in #if 0 is skipped.
-  auto r = as::parse_text("ps_2_0\n//!commentary 0xzz\n// !comment zz\n#if 0\n//!comment 0x1\n"
-                          "#endif\nmov oC0, c0\n");
+  auto r =
+      assembly::parse_text("ps_2_0\n//!commentary 0xzz\n// !comment zz\n#if 0\n//!comment 0x1\n"
+                           "#endif\nmov oC0, c0\n");
   ASSERT_TRUE(r.program.has_value()) << ir::render_text(r.diags, r.sources);
   EXPECT_TRUE(r.program->comments.empty());
 }
@@ -178,14 +180,14 @@ TEST(CommentBlocks, TooLongForTheTokenIsRefused) {
   big.loc = {0, 2, 1, 10};
   p.comments.push_back(big);
   ir::DiagnosticSink diags;
-  EXPECT_FALSE(as::assemble(p, diags).has_value());
+  EXPECT_FALSE(assembly::assemble(p, diags).has_value());
   ASSERT_EQ(diags.error_count(), 1u);
   EXPECT_EQ(diags.all()[0].rule, "bytecode");
   EXPECT_EQ(diags.all()[0].loc.line, 2u);
   big.words.resize(0x7FFF);
   p.comments = {big};
   ir::DiagnosticSink ok;
-  auto tokens = as::assemble(p, ok);
+  auto tokens = assembly::assemble(p, ok);
   ASSERT_TRUE(tokens.has_value());
   EXPECT_EQ((*tokens)[1], 0x7FFFFFFEu);
 }
@@ -193,9 +195,9 @@ TEST(CommentBlocks, TooLongForTheTokenIsRefused) {
 // fmt keeps a listing's own comments and prints each block once, where it stood.
 TEST(CommentBlocks, FormatterPrintsEachBlockOnce) {
   const std::string source = "ps_2_0\n// a note\n//!comment 0x1\nmov oC0, c0 // tail\n";
-  auto r = as::parse_text(source, "t.asm");
+  auto r = assembly::parse_text(source, "t.asm");
   ASSERT_TRUE(r.program.has_value());
-  EXPECT_EQ(as::print_program_with_comments(*r.program, source, 0),
+  EXPECT_EQ(assembly::print_program_with_comments(*r.program, source, 0),
             "ps_2_0\n// a note\n//!comment 0x00000001\nmov oC0, c0  // tail\n");
 }
 

@@ -2,8 +2,8 @@
 // (constant_table.h): one float4x4 "g_mWVP" in c4..c7 of a ps_2_0 shader.
 #include <gtest/gtest.h>
 
-#include "tierlift/asm/bytecode.h"
-#include "tierlift/asm/constant_table.h"
+#include "tierlift/assembly/bytecode.h"
+#include "tierlift/assembly/constant_table.h"
 
 namespace {
 
@@ -24,14 +24,14 @@ std::vector<uint32_t> stream_with_ctab() {
 
 TEST(ConstantTable, ReadsNamesRegistersAndTypes) {
   tierlift::ir::DiagnosticSink diags;
-  auto t = tierlift::as::read_constant_table(stream_with_ctab(), diags);
+  auto t = tierlift::assembly::read_constant_table(stream_with_ctab(), diags);
   ASSERT_TRUE(t.has_value());
   EXPECT_EQ(t->target, "ps_2_0");
   EXPECT_EQ(t->creator, "tl");
   ASSERT_EQ(t->constants.size(), 1u);
   const auto& c = t->constants[0];
   EXPECT_EQ(c.name, "g_mWVP");
-  EXPECT_EQ(c.set, tierlift::as::ConstantSet::Float4);
+  EXPECT_EQ(c.set, tierlift::assembly::ConstantSet::Float4);
   EXPECT_EQ(c.index, 4u);
   EXPECT_EQ(c.count, 4u);
   EXPECT_EQ(c.type, "float4x4");
@@ -40,14 +40,14 @@ TEST(ConstantTable, ReadsNamesRegistersAndTypes) {
   EXPECT_EQ(t->find("nope"), nullptr);
   EXPECT_TRUE(diags.all().empty());
   // The shader itself still disassembles (the comment is skipped).
-  EXPECT_TRUE(tierlift::as::disassemble(stream_with_ctab(), diags).has_value());
+  EXPECT_TRUE(tierlift::assembly::disassemble(stream_with_ctab(), diags).has_value());
 }
 
 TEST(ConstantTable, PrintedAsComments) {
   tierlift::ir::DiagnosticSink diags;
-  auto t = tierlift::as::read_constant_table(stream_with_ctab(), diags);
+  auto t = tierlift::assembly::read_constant_table(stream_with_ctab(), diags);
   ASSERT_TRUE(t.has_value());
-  EXPECT_EQ(tierlift::as::print_constant_table(*t),
+  EXPECT_EQ(tierlift::assembly::print_constant_table(*t),
             "// CTAB: ps_2_0, tl\n//   c4..c7  g_mWVP  float4x4\n");
 }
 
@@ -56,7 +56,7 @@ TEST(ConstantTable, BrokenTableIsAWarningNotACrash) {
   auto s = stream_with_ctab();
   s[10] = 5000; // the record's name offset
   tierlift::ir::DiagnosticSink diags;
-  EXPECT_FALSE(tierlift::as::read_constant_table(s, diags).has_value());
+  EXPECT_FALSE(tierlift::assembly::read_constant_table(s, diags).has_value());
   ASSERT_EQ(diags.all().size(), 1u);
   EXPECT_EQ(diags.all()[0].severity, tierlift::ir::Severity::Warning);
   EXPECT_EQ(diags.all()[0].loc.byte_offset, 4);
@@ -65,12 +65,13 @@ TEST(ConstantTable, BrokenTableIsAWarningNotACrash) {
     auto t = stream_with_ctab();
     t[i] = 0xFFFFFFFF;
     tierlift::ir::DiagnosticSink d;
-    (void)tierlift::as::read_constant_table(t, d);
+    (void)tierlift::assembly::read_constant_table(t, d);
   }
 }
 
 TEST(ConstantTable, NoCommentNoTable) {
   tierlift::ir::DiagnosticSink diags;
-  EXPECT_FALSE(tierlift::as::read_constant_table({0xFFFF0200, 0x0000FFFF}, diags).has_value());
+  EXPECT_FALSE(
+      tierlift::assembly::read_constant_table({0xFFFF0200, 0x0000FFFF}, diags).has_value());
   EXPECT_TRUE(diags.all().empty());
 }

@@ -14,7 +14,7 @@
 
 #include "listing_files.h"
 #include "loaded_listing.h"
-#include "tierlift/asm/bytecode.h"
+#include "tierlift/assembly/bytecode.h"
 
 namespace fs = std::filesystem;
 using namespace tierlift;
@@ -52,7 +52,7 @@ std::string hex(const std::vector<uint32_t>& t) {
 }
 
 test::LoadedListing load(const fs::path& file) {
-  as::LoadOptions options;
+  assembly::LoadOptions options;
   options.parse.include_dirs.push_back(file.parent_path().string());
   return test::load_bytes(test::read_file(file), file.string(), options);
 }
@@ -82,12 +82,12 @@ TEST(Corpus, FxcListingsAssembleToFxcBytes) {
     SCOPED_TRACE(header.string());
     test::LoadedListing bytes = load(header);
     test::LoadedListing listing = load(text);
-    ASSERT_EQ(bytes.r().form, as::ListingForm::TokenArray) << bytes.rendered;
+    ASSERT_EQ(bytes.r().form, assembly::ListingForm::TokenArray) << bytes.rendered;
     ASSERT_TRUE(bytes.r().program.ok()) << bytes.rendered;
     ASSERT_TRUE(listing.r().program.ok()) << listing.rendered;
     const std::vector<uint32_t> fxc = without_comments(bytes.r().tokens);
-    EXPECT_EQ(hex(as::assemble(*listing.r().program)), hex(fxc));
-    EXPECT_EQ(hex(as::assemble(*bytes.r().program)), hex(bytes.r().tokens));
+    EXPECT_EQ(hex(assembly::assemble(*listing.r().program)), hex(fxc));
+    EXPECT_EQ(hex(assembly::assemble(*bytes.r().program)), hex(bytes.r().tokens));
     ++pairs;
   }
   EXPECT_EQ(pairs, 19u); // 16 librw headers, 3 SDL headers
@@ -98,10 +98,10 @@ TEST(Corpus, FxcListingsAssembleToFxcBytes) {
 TEST(Corpus, SdlSourceWithThreeArrays) {
   test::LoadedListing l = load(kCorpus / "sdl" / "SDL_shaders_d3d.c");
   ASSERT_TRUE(l.r().program.ok()) << l.rendered;
-  EXPECT_EQ(l.r().form, as::ListingForm::TokenArray);
+  EXPECT_EQ(l.r().form, assembly::ListingForm::TokenArray);
   EXPECT_NE(l.rendered.find("3 arrays"), std::string::npos) << l.rendered;
   EXPECT_NE(l.rendered.find("'D3D9_PixelShader_YUV_JPEG'"), std::string::npos) << l.rendered;
   const std::vector<uint32_t> tokens = without_comments(l.r().tokens);
   EXPECT_NE(std::find(tokens.begin(), tokens.end(), 0x0400005Au), tokens.end());
-  EXPECT_EQ(hex(as::assemble(*l.r().program)), hex(l.r().tokens));
+  EXPECT_EQ(hex(assembly::assemble(*l.r().program)), hex(l.r().tokens));
 }

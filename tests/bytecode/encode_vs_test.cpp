@@ -131,12 +131,12 @@ TEST(BytecodeHand, CheckedAssemblyRefusesWhatTheStreamCannotCarry) {
   b.ins(Opcode::Mov, D(RegFile::Temp, 0), {Rel(S(RegFile::Const, 5), RegFile::Addr, 1)})
       .ins(Opcode::Mov, D(RegFile::Temp, 0), {S(RegFile::Const, 4096)});
   tierlift::ir::DiagnosticSink diags;
-  EXPECT_FALSE(tierlift::as::assemble(b.p, diags).has_value());
+  EXPECT_FALSE(tierlift::assembly::assemble(b.p, diags).has_value());
   ASSERT_EQ(diags.error_count(), 2u);
   EXPECT_NE(diags.all()[0].message.find("a0.x"), std::string::npos);
   EXPECT_NE(diags.all()[1].message.find("4096"), std::string::npos);
   // The unchecked form still gives a well-formed stream (fields truncated to their bits).
-  auto t = tierlift::as::assemble(b.p);
+  auto t = tierlift::assembly::assemble(b.p);
   EXPECT_EQ(t.back(), 0x0000FFFFu);
   EXPECT_EQ(t[6], 0xA0E40000u); // 4096 & 0x7FF = 0
 }
@@ -145,7 +145,7 @@ TEST(BytecodeHand, CheckedAssemblyRefusesOpcodeOfAnotherProfile) {
   Builder b(Profile::ps_1_1);
   b.ins(Opcode::Rcp, D(RegFile::Temp, 0), {S(RegFile::Temp, 1, 0)});
   tierlift::ir::DiagnosticSink diags;
-  EXPECT_FALSE(tierlift::as::assemble(b.p, diags).has_value());
+  EXPECT_FALSE(tierlift::assembly::assemble(b.p, diags).has_value());
   ASSERT_TRUE(diags.has_errors());
   EXPECT_EQ(diags.all()[0].rule, "bytecode");
 }

@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "tierlift/asm/bytecode.h"
+#include "tierlift/assembly/bytecode.h"
 #include "tierlift/ir/program.h"
 
 namespace tierlift::test {
@@ -19,11 +19,11 @@ inline std::string hex(const std::vector<uint32_t>& t) {
 
 inline void expect_tokens(const ir::Program& p, const std::vector<uint32_t>& expected) {
   ir::DiagnosticSink diags;
-  auto checked = as::assemble(p, diags);
+  auto checked = assembly::assemble(p, diags);
   ASSERT_TRUE(checked.has_value()) << (diags.all().empty() ? "" : diags.all()[0].message);
   EXPECT_EQ(hex(*checked), hex(expected));
-  EXPECT_EQ(as::assemble(p), expected);
-  auto back = as::disassemble(expected, diags);
+  EXPECT_EQ(assembly::assemble(p), expected);
+  auto back = assembly::disassemble(expected, diags);
   ASSERT_TRUE(back.has_value()) << (diags.all().empty() ? "" : diags.all()[0].message);
   EXPECT_TRUE(ir::same_ir(p, *back)) << ir::ir_difference(p, *back);
 }

@@ -12,10 +12,10 @@
 // l = 18 → 0xA0001000, p0 = 19 → 0xB0001000.
 #include <gtest/gtest.h>
 
-#include "tierlift/asm/bytecode.h"
-#include "tierlift/asm/constant_table.h"
-#include "tierlift/asm/parser.h"
-#include "tierlift/asm/printer.h"
+#include "tierlift/assembly/bytecode.h"
+#include "tierlift/assembly/constant_table.h"
+#include "tierlift/assembly/parser.h"
+#include "tierlift/assembly/printer.h"
 
 #include "hand_tokens_test.h"
 
@@ -23,7 +23,7 @@ namespace {
 
 using Tokens = std::vector<uint32_t>;
 namespace ir = tierlift::ir;
-namespace as = tierlift::as;
+namespace assembly = tierlift::assembly;
 
 struct Case {
   const char* text;
@@ -31,7 +31,7 @@ struct Case {
 };
 
 ir::Program parse(const std::string& text) {
-  auto r = as::parse_text(text);
+  auto r = assembly::parse_text(text);
   EXPECT_TRUE(r.program.has_value()) << ir::render_text(r.diags, r.sources);
   return r.program.value_or(ir::Program{});
 }
@@ -44,11 +44,11 @@ void expect_case(const Case& c) {
   ir::Program p = parse(c.text);
   tierlift::test::expect_tokens(p, c.tokens);
   ir::DiagnosticSink diags;
-  auto back = as::disassemble(c.tokens, diags);
+  auto back = assembly::disassemble(c.tokens, diags);
   ASSERT_TRUE(back.has_value()) << (diags.all().empty() ? "" : diags.all()[0].message);
-  ir::Program reparsed = parse(as::print_program(*back));
-  EXPECT_EQ(tierlift::test::hex(as::assemble(reparsed)), tierlift::test::hex(c.tokens))
-      << as::print_program(*back);
+  ir::Program reparsed = parse(assembly::print_program(*back));
+  EXPECT_EQ(tierlift::test::hex(assembly::assemble(reparsed)), tierlift::test::hex(c.tokens))
+      << assembly::print_program(*back);
 }
 
 } // namespace
@@ -188,10 +188,10 @@ TEST(LaterProfileTokens, EveryComparisonByHand) {
                  {0xfffe0201, 0x0300005e | cmp, 0xb00f1000, 0x80000000, 0xa0550001, 0x0000ffff}});
   }
   // The ifc_ / breakc_ spellings of other disassemblers are the same instructions.
-  EXPECT_EQ(as::assemble(parse("ps_3_0\nifc_lt r0.x, c1.y\nendif\n")),
-            as::assemble(parse("ps_3_0\nif_lt r0.x, c1.y\nendif\n")));
-  EXPECT_EQ(as::assemble(parse("vs_3_0\nrep i0\nbreakc_ne r0.x, c1.y\nendrep\n")),
-            as::assemble(parse("vs_3_0\nrep i0\nbreak_ne r0.x, c1.y\nendrep\n")));
+  EXPECT_EQ(assembly::assemble(parse("ps_3_0\nifc_lt r0.x, c1.y\nendif\n")),
+            assembly::assemble(parse("ps_3_0\nif_lt r0.x, c1.y\nendif\n")));
+  EXPECT_EQ(assembly::assemble(parse("vs_3_0\nrep i0\nbreakc_ne r0.x, c1.y\nendrep\n")),
+            assembly::assemble(parse("vs_3_0\nrep i0\nbreak_ne r0.x, c1.y\nendrep\n")));
 }
 
 // ps_3_0 keeps ps_2_0's texld forms (texldp control 1, texldb control 2) and predicated
@@ -212,12 +212,12 @@ TEST(LaterProfileTokens, Ps30TextureFormsByHand) {
 // addressing of a destination outside vs_3_0.
 TEST(LaterProfileTokens, PredicatedTokenOutsideTheLaterProfilesIsRefused) {
   ir::DiagnosticSink diags;
-  EXPECT_FALSE(as::disassemble(
+  EXPECT_FALSE(assembly::disassemble(
       {0xfffe0200, 0x14000002, 0x800f0002, 0xbde41000, 0x80e40002, 0x80e40003, 0x0000ffff}, diags));
   ASSERT_FALSE(diags.all().empty());
   EXPECT_NE(diags.all()[0].message.find("predicated"), std::string::npos);
   ir::DiagnosticSink d2;
-  EXPECT_FALSE(as::disassemble(
+  EXPECT_FALSE(assembly::disassemble(
       {0xffff0300, 0x03000001, 0x800f200c, 0xb0000000, 0x80e40000, 0x0000ffff}, d2));
 }
 
@@ -232,15 +232,15 @@ TEST(LaterProfileTokens, Ps30ConstantTableIsRead) {
                          0,          0x576D5F67, 0x00005056, 0x335F7370, 0x0000305F, 0x00006C74,
                          0x02000001, 0x800F0800, 0xA0E40004, 0x0000FFFF};
   ir::DiagnosticSink diags;
-  auto t = as::read_constant_table(stream, diags);
+  auto t = assembly::read_constant_table(stream, diags);
   ASSERT_TRUE(t.has_value());
   EXPECT_EQ(t->target, "ps_3_0");
   ASSERT_EQ(t->constants.size(), 1u);
   EXPECT_EQ(t->constants[0].registers(), "c4..c7");
-  auto p = as::disassemble(stream, diags);
+  auto p = assembly::disassemble(stream, diags);
   ASSERT_TRUE(p.has_value());
   EXPECT_EQ(p->profile, ir::Profile::ps_3_0);
-  EXPECT_EQ(as::print_program(*p),
+  EXPECT_EQ(assembly::print_program(*p),
             "ps_3_0\n"
             "//!comment 0x42415443 0x0000001c 0x00000050 0xffff0300 0x00000001 0x0000001c "
             "0x00000000 0x00000048\n"
@@ -248,5 +248,5 @@ TEST(LaterProfileTokens, Ps30ConstantTableIsRead) {
             "0x00040004 0x00000001\n"
             "//!comment+ 0x00000000 0x576d5f67 0x00005056 0x335f7370 0x0000305f 0x00006c74\n"
             "mov oC0, c4\n");
-  EXPECT_EQ(as::assemble(*p), stream);
+  EXPECT_EQ(assembly::assemble(*p), stream);
 }

@@ -6,8 +6,8 @@
 
 #include <fmt/format.h>
 
-#include "tierlift/asm/bytecode.h"
-#include "tierlift/asm/load.h"
+#include "tierlift/assembly/bytecode.h"
+#include "tierlift/assembly/load.h"
 
 #include "listing_files.h"
 #include "skip_policy.h"
@@ -19,10 +19,10 @@ using namespace tierlift;
 namespace {
 
 std::optional<ir::Program> load(std::string bytes, const std::string& name,
-                                as::ListingForm expect_form, std::string& rendered) {
+                                assembly::ListingForm expect_form, std::string& rendered) {
   ir::SourceManager sm;
   uint32_t f = sm.add(name, std::move(bytes));
-  as::Loaded r = as::load_listing(f, sm);
+  assembly::Loaded r = assembly::load_listing(f, sm);
   rendered = ir::render_text(r.program.diagnostics(), sm);
   EXPECT_EQ(r.form, expect_form) << name;
   if (!r.program) return std::nullopt;
@@ -35,18 +35,18 @@ size_t compare_forms(const std::vector<fs::path>& files) {
   for (const fs::path& file : files) {
     SCOPED_TRACE(file.string());
     std::string why;
-    auto text = load(test::read_file(file), file.string(), as::ListingForm::Text, why);
+    auto text = load(test::read_file(file), file.string(), assembly::ListingForm::Text, why);
     if (!text) continue; // a listing that is invalid as text is not ours to compare
-    auto tokens = as::assemble(*text);
-    auto raw = load(as::tokens_to_bytes(tokens), file.string() + ".bin",
-                    as::ListingForm::TokenStream, why);
+    auto tokens = assembly::assemble(*text);
+    auto raw = load(assembly::tokens_to_bytes(tokens), file.string() + ".bin",
+                    assembly::ListingForm::TokenStream, why);
     EXPECT_TRUE(raw.has_value()) << why;
     if (!raw) continue;
     EXPECT_TRUE(ir::same_ir(*text, *raw)) << ir::ir_difference(*text, *raw);
     std::string c_array = "const DWORD g[] = {";
     for (uint32_t t : tokens) c_array += fmt::format(" 0x{:08x},", t);
     c_array += " };\n";
-    auto arr = load(c_array, file.string() + ".h", as::ListingForm::TokenArray, why);
+    auto arr = load(c_array, file.string() + ".h", assembly::ListingForm::TokenArray, why);
     EXPECT_TRUE(arr.has_value()) << why;
     if (!arr) continue;
     EXPECT_TRUE(ir::same_ir(*text, *arr)) << ir::ir_difference(*text, *arr);

@@ -4,12 +4,12 @@
 
 #include <random>
 
-#include "tierlift/asm/bytecode.h"
-#include "tierlift/asm/parser.h"
-#include "tierlift/asm/printer.h"
+#include "tierlift/assembly/bytecode.h"
+#include "tierlift/assembly/parser.h"
+#include "tierlift/assembly/printer.h"
 
-using tierlift::as::assemble;
-using tierlift::as::disassemble;
+using tierlift::assembly::assemble;
+using tierlift::assembly::disassemble;
 using tierlift::ir::DiagnosticSink;
 
 namespace {
@@ -206,9 +206,9 @@ TEST(BytecodeMalformed, BitFlipsAreRejectedOrRoundTripExactly) {
         ++accepted;
         EXPECT_EQ(assemble(*p), t) << "token " << i << " bit " << bit;
         // And through the printed text (what `disasm` writes and `assemble` reads).
-        auto text = tierlift::as::parse_text(tierlift::as::print_program(*p), "d.asm");
-        ASSERT_TRUE(text.program.has_value()) << tierlift::as::print_program(*p);
-        EXPECT_EQ(assemble(*text.program), t) << tierlift::as::print_program(*p);
+        auto text = tierlift::assembly::parse_text(tierlift::assembly::print_program(*p), "d.asm");
+        ASSERT_TRUE(text.program.has_value()) << tierlift::assembly::print_program(*p);
+        EXPECT_EQ(assemble(*text.program), t) << tierlift::assembly::print_program(*p);
       }
     }
   }
@@ -225,8 +225,8 @@ TEST(BytecodeMalformed, BitFlipsAreRejectedOrRoundTripExactly) {
       continue;
     }
     EXPECT_EQ(assemble(*p), t);
-    auto text = tierlift::as::parse_text(tierlift::as::print_program(*p), "d.asm");
-    ASSERT_TRUE(text.program.has_value()) << tierlift::as::print_program(*p);
-    EXPECT_EQ(assemble(*text.program), t) << tierlift::as::print_program(*p);
+    auto text = tierlift::assembly::parse_text(tierlift::assembly::print_program(*p), "d.asm");
+    ASSERT_TRUE(text.program.has_value()) << tierlift::assembly::print_program(*p);
+    EXPECT_EQ(assemble(*text.program), t) << tierlift::assembly::print_program(*p);
   }
 }

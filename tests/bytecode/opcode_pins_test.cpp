@@ -18,8 +18,8 @@
 
 #include <fmt/format.h>
 
-#include "tierlift/asm/bytecode.h"
-#include "tierlift/asm/parser.h"
+#include "tierlift/assembly/bytecode.h"
+#include "tierlift/assembly/parser.h"
 #include "tierlift/ir/opcodes.h"
 #include "tierlift/ir/registers.h"
 
@@ -170,9 +170,9 @@ bool table_has(const OpcodePin& pin) {
 
 // The instruction token of a listing whose only statement is one instruction (or dcl/def).
 std::optional<uint32_t> instruction_token(std::string_view text) {
-  auto r = as::parse_text(std::string(text) + "\n");
+  auto r = assembly::parse_text(std::string(text) + "\n");
   if (!r.program) return std::nullopt;
-  std::vector<uint32_t> tokens = as::assemble(*r.program);
+  std::vector<uint32_t> tokens = assembly::assemble(*r.program);
   if (tokens.size() < 3) return std::nullopt;
   return tokens[1];
 }
@@ -290,9 +290,9 @@ TEST(OpcodePins, ModifierBits) {
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.text);
-    auto r = as::parse_text(std::string(c.text) + "\n");
+    auto r = assembly::parse_text(std::string(c.text) + "\n");
     ASSERT_TRUE(r.program.has_value()) << ir::render_text(r.diags, r.sources);
-    std::vector<uint32_t> t = as::assemble(*r.program);
+    std::vector<uint32_t> t = assembly::assemble(*r.program);
     ASSERT_GE(t.size(), 3u);
     EXPECT_EQ(t[t.size() - 2] & c.mask, c.expect) << fmt::format("0x{:08X}", t[t.size() - 2]);
   }
@@ -314,9 +314,9 @@ TEST(OpcodePins, ModifierBits) {
   };
   for (const Dst& d : dsts) {
     SCOPED_TRACE(d.text);
-    auto r = as::parse_text(std::string(d.text) + "\n");
+    auto r = assembly::parse_text(std::string(d.text) + "\n");
     ASSERT_TRUE(r.program.has_value()) << ir::render_text(r.diags, r.sources);
-    std::vector<uint32_t> t = as::assemble(*r.program);
+    std::vector<uint32_t> t = assembly::assemble(*r.program);
     // The destination follows the instruction token (dcl: after its usage token).
     const size_t at = std::string_view(d.text).find("dcl") != std::string_view::npos ? 3 : 2;
     ASSERT_GT(t.size(), at);

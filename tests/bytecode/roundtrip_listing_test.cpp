@@ -8,9 +8,9 @@
 #include <sstream>
 
 #include "skip_policy.h"
-#include "tierlift/asm/bytecode.h"
-#include "tierlift/asm/parser.h"
-#include "tierlift/asm/printer.h"
+#include "tierlift/assembly/bytecode.h"
+#include "tierlift/assembly/parser.h"
+#include "tierlift/assembly/printer.h"
 
 #include "listing_files.h"
 
@@ -32,28 +32,29 @@ std::string first_message(const DiagnosticSink& d) {
 // Both round trips for one listing; returns the tokens.
 Tokens round_trip(const fs::path& file) {
   SCOPED_TRACE(file.string());
-  auto parsed = tierlift::as::parse_text(slurp(file), file.filename().string());
+  auto parsed = tierlift::assembly::parse_text(slurp(file), file.filename().string());
   EXPECT_TRUE(parsed.program.has_value()) << first_message(parsed.diags);
   if (!parsed.program) return {};
   const auto& p = *parsed.program;
   DiagnosticSink diags;
-  auto tokens = tierlift::as::assemble(p, diags);
+  auto tokens = tierlift::assembly::assemble(p, diags);
   EXPECT_TRUE(tokens.has_value()) << first_message(diags);
   if (!tokens) return {};
-  auto back = tierlift::as::disassemble(*tokens, diags);
+  auto back = tierlift::assembly::disassemble(*tokens, diags);
   EXPECT_TRUE(back.has_value()) << first_message(diags);
   if (!back) return {};
   EXPECT_TRUE(tierlift::ir::same_ir(p, *back)) << tierlift::ir::ir_difference(p, *back);
-  EXPECT_EQ(tierlift::as::assemble(*back), *tokens);
+  EXPECT_EQ(tierlift::assembly::assemble(*back), *tokens);
   // What `tierlift disasm` shows must read back as the same program.
-  auto reparsed = tierlift::as::parse_text(tierlift::as::print_program(*back));
+  auto reparsed = tierlift::assembly::parse_text(tierlift::assembly::print_program(*back));
   EXPECT_TRUE(reparsed.program.has_value()) << first_message(reparsed.diags);
   if (reparsed.program) {
     EXPECT_TRUE(tierlift::ir::same_ir(*back, *reparsed.program))
         << tierlift::ir::ir_difference(*back, *reparsed.program);
   }
   // And through the file form.
-  auto reread = tierlift::as::read_token_file(tierlift::as::tokens_to_bytes(*tokens), diags);
+  auto reread =
+      tierlift::assembly::read_token_file(tierlift::assembly::tokens_to_bytes(*tokens), diags);
   EXPECT_TRUE(reread.has_value());
   if (reread) {
     EXPECT_EQ(*reread, *tokens);
@@ -170,8 +171,8 @@ TEST(BytecodeRoundTrip, ParsedInstructionsMatchHandTokens) {
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.text);
-    auto parsed = tierlift::as::parse_text(c.text);
+    auto parsed = tierlift::assembly::parse_text(c.text);
     ASSERT_TRUE(parsed.program.has_value()) << first_message(parsed.diags);
-    EXPECT_EQ(tierlift::as::assemble(*parsed.program), c.want);
+    EXPECT_EQ(tierlift::assembly::assemble(*parsed.program), c.want);
   }
 }

@@ -10,8 +10,8 @@
 
 #include "loaded_listing.h"
 #include "temp_dir.h"
-#include "tierlift/asm/bytecode.h"
-#include "tierlift/asm/load.h"
+#include "tierlift/assembly/bytecode.h"
+#include "tierlift/assembly/load.h"
 
 namespace {
 
@@ -23,7 +23,7 @@ using test::LoadedListing;
 Tokens tokens_of(const LoadedListing& l) {
   EXPECT_TRUE(l.r().program.ok()) << l.rendered;
   if (!l.r().program.ok()) return {};
-  return as::assemble(*l.r().program);
+  return assembly::assemble(*l.r().program);
 }
 
 // ps.1.1: tex t0; mul r0.rgb, v0, t0; co-issued mov r0.a, t0.
@@ -56,13 +56,13 @@ TEST(ShippedForms, CoissuePlusAtTheEndOfTheFirstLine) {
 TEST(ShippedForms, TrailingNulBytesEndTheText) {
   for (size_t nuls : {1u, 4u, 7u}) {
     LoadedListing l = load_bytes(std::string(kCoissueListing) + std::string(nuls, '\0'), "a.psh");
-    EXPECT_EQ(l.r().form, as::ListingForm::Text) << nuls;
+    EXPECT_EQ(l.r().form, assembly::ListingForm::Text) << nuls;
     EXPECT_EQ(tokens_of(l), kCoissuePair) << nuls;
   }
   // Positions are those of the file: an error on line 3, column 5.
   LoadedListing bad =
       load_bytes(std::string("ps.1.1\ntex t0\nmul q0, v0, t0\n") + std::string(2, '\0'), "b.psh");
-  EXPECT_EQ(bad.r().form, as::ListingForm::Text);
+  EXPECT_EQ(bad.r().form, assembly::ListingForm::Text);
   EXPECT_NE(bad.rendered.find("b.psh:3:5: error:"), std::string::npos) << bad.rendered;
   // A NUL byte with text after it is still a binary file.
   LoadedListing mid = load_bytes(std::string("ps.1.1\ntex t0") + '\0' + "mov r0, t0\n", "c.psh");
@@ -76,7 +76,7 @@ TEST(ShippedForms, CommentsInALegacyCodePage) {
                             "clairage diffus\n";
   const std::string cyrillic = "// \xCF\xF0\xE8\xE2\xE5\xF2\n";
   LoadedListing l = load_bytes(latin + cyrillic + kCoissueListing, "legacy.psh");
-  EXPECT_EQ(l.r().form, as::ListingForm::Text);
+  EXPECT_EQ(l.r().form, assembly::ListingForm::Text);
   EXPECT_EQ(tokens_of(l), kCoissuePair);
   // An error after such a comment on the same line: one byte is one column, as saved, and
   // the quoted line shows the byte read as Windows-1252 ("é" = U+00E9).
@@ -143,7 +143,7 @@ static const DWORD g_copy_ps[] = {0xffff0101, 0x00000001, 0x800f0000, 0x90e40000
 }
 )";
   LoadedListing l = load_bytes(source, "shaders.cpp");
-  EXPECT_EQ(l.r().form, as::ListingForm::TokenArray) << l.rendered;
+  EXPECT_EQ(l.r().form, assembly::ListingForm::TokenArray) << l.rendered;
   EXPECT_EQ(tokens_of(l), kCoissuePair);
   EXPECT_EQ(l.count(ir::Severity::Note, "token-file"), 1u) << l.rendered;
   EXPECT_NE(l.rendered.find("shaders.cpp:8:"), std::string::npos) << l.rendered;
@@ -173,8 +173,8 @@ std::string where(const LoadedListing& l, ir::Severity severity) {
   return out;
 }
 
-as::LoadOptions strict() {
-  as::LoadOptions o;
+assembly::LoadOptions strict() {
+  assembly::LoadOptions o;
   o.strict = true;
   return o;
 }

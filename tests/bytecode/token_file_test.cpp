@@ -1,10 +1,10 @@
 // read_token_file: raw little-endian bytes and the C-array text form.
 #include <gtest/gtest.h>
 
-#include "tierlift/asm/bytecode.h"
+#include "tierlift/assembly/bytecode.h"
 
-using tierlift::as::read_token_file;
-using tierlift::as::tokens_to_bytes;
+using tierlift::assembly::read_token_file;
+using tierlift::assembly::tokens_to_bytes;
 using tierlift::ir::DiagnosticSink;
 
 namespace {

@@ -6,9 +6,9 @@
 //   relative bit 13 = 0x2000; identity swizzle .xyzw = 0xE4
 #include <gtest/gtest.h>
 
-#include "tierlift/asm/bytecode.h"
-#include "tierlift/asm/parser.h"
-#include "tierlift/asm/printer.h"
+#include "tierlift/assembly/bytecode.h"
+#include "tierlift/assembly/parser.h"
+#include "tierlift/assembly/printer.h"
 
 #include "hand_tokens_test.h"
 
@@ -17,7 +17,7 @@ namespace {
 using Tokens = std::vector<uint32_t>;
 
 tierlift::ir::Program parse(const std::string& text) {
-  auto r = tierlift::as::parse_text(text);
+  auto r = tierlift::assembly::parse_text(text);
   EXPECT_TRUE(r.program.has_value()) << tierlift::ir::render_text(r.diags, r.sources);
   return r.program.value_or(tierlift::ir::Program{});
 }
@@ -28,10 +28,11 @@ void expect_assembles_to(const std::string& text, const Tokens& expected) {
   tierlift::ir::Program p = parse(text);
   tierlift::test::expect_tokens(p, expected);
   tierlift::ir::DiagnosticSink diags;
-  auto back = tierlift::as::disassemble(expected, diags);
+  auto back = tierlift::assembly::disassemble(expected, diags);
   ASSERT_TRUE(back.has_value());
-  tierlift::ir::Program reparsed = parse(tierlift::as::print_program(*back));
-  EXPECT_EQ(tierlift::as::assemble(reparsed), expected) << tierlift::as::print_program(*back);
+  tierlift::ir::Program reparsed = parse(tierlift::assembly::print_program(*back));
+  EXPECT_EQ(tierlift::assembly::assemble(reparsed), expected)
+      << tierlift::assembly::print_program(*back);
 }
 
 } // namespace
@@ -48,7 +49,7 @@ TEST(WindowsAssembler, DefineBodyContinuesAfterBackslash) {
 // A backslash joins lines for the statement after it too, and lines keep their numbers:
 // an error on the joined line is reported where it is.
 TEST(WindowsAssembler, ContinuationKeepsLineNumbers) {
-  auto r = tierlift::as::parse_text("vs.1.1\nmov r0,\\\n  c0\nfoo r0\n");
+  auto r = tierlift::assembly::parse_text("vs.1.1\nmov r0,\\\n  c0\nfoo r0\n");
   ASSERT_FALSE(r.program.has_value());
   ASSERT_FALSE(r.diags.all().empty());
   EXPECT_EQ(r.diags.all()[0].loc.line, 4u) << r.diags.all()[0].message;
@@ -93,7 +94,7 @@ TEST(WindowsAssembler, LoopRegisterReplicateStillReads) {
   Tokens t = {0xFFFE0200, 0x0200001B, 0xF0E40800, 0xF0E40000, 0x03000001,
               0x800F0000, 0xA0E42000, 0xF0000800, 0x0000001D, 0x0000FFFF};
   tierlift::ir::DiagnosticSink diags;
-  auto p = tierlift::as::disassemble(t, diags);
+  auto p = tierlift::assembly::disassemble(t, diags);
   ASSERT_TRUE(p.has_value()) << (diags.all().empty() ? "" : diags.all()[0].message);
-  EXPECT_EQ(tierlift::as::assemble(*p), t);
+  EXPECT_EQ(tierlift::assembly::assemble(*p), t);
 }

@@ -17,9 +17,9 @@
 
 #include <fmt/format.h>
 
-#include "tierlift/asm/bytecode.h"
-#include "tierlift/asm/parser.h"
-#include "tierlift/asm/printer.h"
+#include "tierlift/assembly/bytecode.h"
+#include "tierlift/assembly/parser.h"
+#include "tierlift/assembly/printer.h"
 
 namespace {
 
@@ -209,9 +209,9 @@ const Stream kStreams[] = {
 TEST(WindowsStreams, AssemblerWritesWhatWindowsWrote) {
   for (const Stream& s : kStreams) {
     SCOPED_TRACE(s.text);
-    auto r = as::parse_text(s.text);
+    auto r = assembly::parse_text(s.text);
     ASSERT_TRUE(r.program.has_value()) << ir::render_text(r.diags, r.sources);
-    EXPECT_EQ(hex(as::assemble(*r.program)), hex(s.tokens));
+    EXPECT_EQ(hex(assembly::assemble(*r.program)), hex(s.tokens));
   }
 }
 
@@ -219,13 +219,13 @@ TEST(WindowsStreams, StreamsReadBackToTheSameStream) {
   for (const Stream& s : kStreams) {
     SCOPED_TRACE(s.text);
     ir::DiagnosticSink diags;
-    auto program = as::disassemble(s.tokens, diags);
+    auto program = assembly::disassemble(s.tokens, diags);
     ASSERT_TRUE(program.has_value()) << (diags.all().empty() ? "" : diags.all()[0].message);
-    EXPECT_EQ(hex(as::assemble(*program)), hex(s.tokens));
+    EXPECT_EQ(hex(assembly::assemble(*program)), hex(s.tokens));
     // And through the text a user sees.
-    auto reparsed = as::parse_text(as::print_program(*program));
+    auto reparsed = assembly::parse_text(assembly::print_program(*program));
     ASSERT_TRUE(reparsed.program.has_value())
-        << as::print_program(*program) << ir::render_text(reparsed.diags, reparsed.sources);
-    EXPECT_EQ(hex(as::assemble(*reparsed.program)), hex(s.tokens));
+        << assembly::print_program(*program) << ir::render_text(reparsed.diags, reparsed.sources);
+    EXPECT_EQ(hex(assembly::assemble(*reparsed.program)), hex(s.tokens));
   }
 }

@@ -6,15 +6,15 @@
 
 #include "cli_test_util.h"
 #include "temp_dir.h"
-#include "tierlift/asm/parser.h"
-#include "tierlift/asm/validator.h"
+#include "tierlift/assembly/parser.h"
+#include "tierlift/assembly/validator.h"
 
 namespace tierlift::test {
 namespace {
 
 bool valid(const std::string& text) {
-  as::ParseResult r = as::parse_text(text, "generated");
-  return r.program && as::validate(*r.program, r.diags);
+  assembly::ParseResult r = assembly::parse_text(text, "generated");
+  return r.program && assembly::validate(*r.program, r.diags);
 }
 
 TEST(CliGenerate, WritesValidListingsNamedBySeedAndIndex) {

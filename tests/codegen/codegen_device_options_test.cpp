@@ -14,7 +14,7 @@
 #include <string>
 
 #include "compile_valid.h"
-#include "tierlift/asm/parser.h"
+#include "tierlift/assembly/parser.h"
 #include "tierlift/codegen/codegen.h"
 
 using namespace tierlift;
@@ -23,7 +23,7 @@ namespace {
 
 std::optional<codegen::ShaderModule> build(const std::string& text,
                                            const codegen::CodegenOptions& opt) {
-  auto parsed = as::parse_text(text, "<test>");
+  auto parsed = assembly::parse_text(text, "<test>");
   EXPECT_TRUE(parsed.program) << ir::render_text(parsed.diags, parsed.sources);
   if (!parsed.program) return std::nullopt;
   return test::compile_valid(*parsed.program, parsed.sources, opt);

@@ -7,7 +7,7 @@
 #include <limits>
 
 #include "spirv_eval.h"
-#include "tierlift/asm/parser.h"
+#include "tierlift/assembly/parser.h"
 #include "tierlift/codegen/codegen.h"
 #include "tierlift/ir/numerics.h"
 #include "tierlift/vulkan/uniforms.h"
@@ -45,7 +45,7 @@ codegen::CodegenOptions geforce3() {
 EvalResult run(const std::string& text, const Uniforms& u,
                const std::map<uint32_t, Vec4>& inputs = {},
                const codegen::CodegenOptions& opt = geforce3()) {
-  auto parsed = as::parse_text(text, "<eval>");
+  auto parsed = assembly::parse_text(text, "<eval>");
   EXPECT_TRUE(parsed.program) << ir::render_text(parsed.diags, parsed.sources);
   if (!parsed.program) return {};
   ir::DiagnosticSink diags;

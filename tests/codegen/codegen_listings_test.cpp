@@ -9,7 +9,7 @@
 
 #include "compile_valid.h"
 #include "skip_policy.h"
-#include "tierlift/asm/parser.h"
+#include "tierlift/assembly/parser.h"
 #include "tierlift/codegen/codegen.h"
 
 #include "listing_files.h"
@@ -23,7 +23,7 @@ using tierlift::test::read_file;
 
 void compile_listing(const fs::path& path) {
   SCOPED_TRACE(path.string());
-  auto parsed = as::parse_text(read_file(path), path.filename().string());
+  auto parsed = assembly::parse_text(read_file(path), path.filename().string());
   ASSERT_TRUE(parsed.program) << ir::render_text(parsed.diags, parsed.sources);
   auto module = tierlift::test::compile_valid(*parsed.program, parsed.sources);
   ASSERT_TRUE(module);
@@ -68,7 +68,7 @@ TEST(CodegenListings, EveryCorpusVertexShaderPairsWithEveryPixelShader) {
   for (const auto& f : listings_in(fs::path(TIERLIFT_SOURCE_DIR) / "listings/gpugems21"))
     files.push_back(f);
   for (const auto& f : files) {
-    auto parsed = as::parse_text(read_file(f), f.filename().string());
+    auto parsed = assembly::parse_text(read_file(f), f.filename().string());
     ASSERT_TRUE(parsed.program) << f;
     (parsed.program->stage() == ir::ShaderStage::Vertex ? vs : ps).push_back(*parsed.program);
   }

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "compile_valid.h"
-#include "tierlift/asm/parser.h"
+#include "tierlift/assembly/parser.h"
 #include "tierlift/codegen/codegen.h"
 #include "tierlift/ir/opcodes.h"
 
@@ -189,7 +189,7 @@ std::optional<std::string> listing_for(const ir::OpInfo& info, Profile p) {
 
 void expect_compiles(const std::string& text) {
   SCOPED_TRACE(text);
-  auto parsed = as::parse_text(text, "<generated>");
+  auto parsed = assembly::parse_text(text, "<generated>");
   ASSERT_TRUE(parsed.program) << ir::render_text(parsed.diags, parsed.sources);
   tierlift::test::compile_valid(*parsed.program, parsed.sources);
 }

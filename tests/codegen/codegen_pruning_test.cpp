@@ -12,7 +12,7 @@
 #include <set>
 #include <sstream>
 
-#include "tierlift/asm/parser.h"
+#include "tierlift/assembly/parser.h"
 #include "tierlift/codegen/codegen.h"
 
 namespace fs = std::filesystem;
@@ -25,7 +25,7 @@ ir::Program load(const std::string& name) {
   std::ifstream in(p, std::ios::binary);
   std::stringstream ss;
   ss << in.rdbuf();
-  auto parsed = as::parse_text(ss.str(), name);
+  auto parsed = assembly::parse_text(ss.str(), name);
   EXPECT_TRUE(parsed.program) << ir::render_text(parsed.diags, parsed.sources);
   return parsed.program ? *parsed.program : ir::Program{};
 }
@@ -135,7 +135,7 @@ TEST(CodegenPruning, StageMismatchIsAnError) {
 
 namespace {
 std::optional<ir::Program> parse(const std::string& text) {
-  auto parsed = as::parse_text(text, "<test>");
+  auto parsed = assembly::parse_text(text, "<test>");
   EXPECT_TRUE(parsed.program) << ir::render_text(parsed.diags, parsed.sources);
   return parsed.program;
 }

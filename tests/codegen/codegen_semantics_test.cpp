@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-#include "tierlift/asm/parser.h"
+#include "tierlift/assembly/parser.h"
 #include "tierlift/codegen/codegen.h"
 #include "tierlift/vulkan/uniforms.h"
 
@@ -18,7 +18,7 @@ namespace {
 
 std::optional<codegen::ShaderModule> build(const std::string& text,
                                            const codegen::CodegenOptions& opt = {}) {
-  auto parsed = as::parse_text(text, "<test>");
+  auto parsed = assembly::parse_text(text, "<test>");
   EXPECT_TRUE(parsed.program) << ir::render_text(parsed.diags, parsed.sources);
   if (!parsed.program) return std::nullopt;
   ir::DiagnosticSink diags;

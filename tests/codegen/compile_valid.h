@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "tierlift/asm/parser.h"
+#include "tierlift/assembly/parser.h"
 #include "tierlift/codegen/codegen.h"
 #include "tierlift/ir/diagnostic.h"
 
@@ -30,7 +30,7 @@ compile_valid(const ir::Program& program, const ir::SourceManager& sources,
 
 // `text` parsed (not validated); a parse error fails the test and gives an empty program.
 inline ir::Program parse_program(const std::string& text) {
-  auto parsed = as::parse_text(text, "<test>");
+  auto parsed = assembly::parse_text(text, "<test>");
   EXPECT_TRUE(parsed.program) << ir::render_text(parsed.diags, parsed.sources);
   return parsed.program ? *parsed.program : ir::Program{};
 }

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "compile_valid.h"
-#include "tierlift/asm/parser.h"
+#include "tierlift/assembly/parser.h"
 #include "tierlift/codegen/codegen.h"
 #include "tierlift/ir/plain_values.h"
 

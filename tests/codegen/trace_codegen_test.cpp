@@ -9,7 +9,7 @@
 #include "compile_valid.h"
 #include "listing_files.h"
 #include "skip_policy.h"
-#include "tierlift/asm/parser.h"
+#include "tierlift/assembly/parser.h"
 #include "tierlift/codegen/codegen.h"
 #include "tierlift/ir/semantics.h"
 
@@ -63,7 +63,7 @@ void check_traced(const ir::Program& program, const ir::SourceManager& sources,
 
 void check_listing(const fs::path& path) {
   SCOPED_TRACE(path.string());
-  auto parsed = as::parse_text(tierlift::test::read_file(path), path.filename().string());
+  auto parsed = assembly::parse_text(tierlift::test::read_file(path), path.filename().string());
   ASSERT_TRUE(parsed.program) << ir::render_text(parsed.diags, parsed.sources);
   if (parsed.program->stage() != ir::ShaderStage::Pixel) return;
   check_traced(*parsed.program, parsed.sources);
@@ -100,7 +100,7 @@ TEST(CodegenTrace, HardFormsValidate) {
   };
   for (const char* text : listings) {
     SCOPED_TRACE(text);
-    auto parsed = as::parse_text(text, "<test>");
+    auto parsed = assembly::parse_text(text, "<test>");
     ASSERT_TRUE(parsed.program) << ir::render_text(parsed.diags, parsed.sources);
     check_traced(*parsed.program, parsed.sources);
     codegen::CodegenOptions demote = traced();

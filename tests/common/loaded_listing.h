@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "tierlift/asm/load.h"
+#include "tierlift/assembly/load.h"
 #include "tierlift/ir/diagnostic.h"
 #include "tierlift/ir/result_diagnostics.h"
 
@@ -15,9 +15,9 @@ namespace tierlift::test {
 struct LoadedListing {
   ir::SourceManager sm;
   ir::DiagnosticSink diags;
-  // Empty until load_bytes fills it (as::Loaded has no "not loaded yet" state of its own).
-  std::optional<as::Loaded> loaded;
-  const as::Loaded& r() const { return *loaded; }
+  // Empty until load_bytes fills it (assembly::Loaded has no "not loaded yet" state of its own).
+  std::optional<assembly::Loaded> loaded;
+  const assembly::Loaded& r() const { return *loaded; }
   std::string rendered;
   // Diagnostics of `severity` under `rule`.
   size_t count(ir::Severity severity, const std::string& rule) const {
@@ -28,10 +28,10 @@ struct LoadedListing {
 };
 
 inline LoadedListing load_bytes(std::string bytes, std::string name = "shader.pso",
-                                as::LoadOptions options = {}) {
+                                assembly::LoadOptions options = {}) {
   LoadedListing l;
   uint32_t f = l.sm.add(std::move(name), std::move(bytes));
-  l.loaded = as::load_listing(f, l.sm, options);
+  l.loaded = assembly::load_listing(f, l.sm, options);
   ir::add_all(l.diags, l.loaded->program.diagnostics());
   l.rendered = ir::render_text(l.diags, l.sm);
   return l;

@@ -14,8 +14,8 @@
 #include "draw_helpers.h"
 #include "program_helpers.h"
 #include "random_passes.h"
-#include "tierlift/asm/parser.h"
-#include "tierlift/asm/validator.h"
+#include "tierlift/assembly/parser.h"
+#include "tierlift/assembly/validator.h"
 #include "tierlift/cpu/draw.h"
 
 namespace tierlift::cpu {
@@ -252,7 +252,7 @@ TEST(ExecutorIdentity, DenormalTexelsConstantsAndAttributes) {
     for (int m = 0; m < 2; ++m) {
       Pass pass;
       pass.pixel_program =
-          std::make_shared<const ir::Program>(*as::parse_text(text, "<test>").program);
+          std::make_shared<const ir::Program>(*assembly::parse_text(text, "<test>").program);
       for (int i = 0; i < 24; ++i) {
         VertexOutput v = test::screen_vertex(pos(rng), pos(rng), 71, 53, wclip(rng));
         // Every other triangle tiny at all three vertices: its planes and their products

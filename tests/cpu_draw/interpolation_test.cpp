@@ -6,8 +6,8 @@
 #include <random>
 
 #include "draw_helpers.h"
-#include "tierlift/asm/parser.h"
-#include "tierlift/asm/validator.h"
+#include "tierlift/assembly/parser.h"
+#include "tierlift/assembly/validator.h"
 
 namespace tierlift::cpu {
 namespace {
@@ -146,9 +146,10 @@ namespace {
 // texkill discards pixels whose t0 has a negative component. t0.x = u − 0.45 with D3D9
 // centres on an 8-wide quad is i/8 − 0.45: pixels 0..3 are killed (≤ −0.075), 4..7 drawn.
 TEST(PixelStage, TexkillDiscards) {
-  auto parsed = as::parse_text("ps_2_0\ndef c0, 1, 1, 1, 1\ndcl t0\ntexkill t0\nmov oC0, c0\n");
+  auto parsed =
+      assembly::parse_text("ps_2_0\ndef c0, 1, 1, 1, 1\ndcl t0\ntexkill t0\nmov oC0, c0\n");
   ASSERT_TRUE(parsed.program) << ir::render_text(parsed.diags, parsed.sources);
-  ASSERT_TRUE(as::validate(*parsed.program, parsed.diags))
+  ASSERT_TRUE(assembly::validate(*parsed.program, parsed.diags))
       << ir::render_text(parsed.diags, parsed.sources);
   Pass p;
   p.pixel_program = std::make_shared<const ir::Program>(*parsed.program);

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "program_helpers.h"
-#include "tierlift/asm/parser.h"
+#include "tierlift/assembly/parser.h"
 #include "tierlift/cpu/draw.h"
 #include "tierlift/pass/pass.h"
 

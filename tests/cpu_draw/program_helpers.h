@@ -9,8 +9,8 @@
 #include <sstream>
 #include <string>
 
-#include "tierlift/asm/parser.h"
-#include "tierlift/asm/validator.h"
+#include "tierlift/assembly/parser.h"
+#include "tierlift/assembly/validator.h"
 #include "tierlift/ir/diagnostic.h"
 
 namespace tierlift::cpu::test {
@@ -19,13 +19,13 @@ namespace tierlift::cpu::test {
 // null when it does not parse. Some tests draw programs the validator would refuse.
 inline std::shared_ptr<const ir::Program>
 parsed(const std::string& text, const std::string& name = "<test>", bool validate = false) {
-  auto r = as::parse_text(text, name);
+  auto r = assembly::parse_text(text, name);
   if (!r.program) {
     ADD_FAILURE() << name << ": " << ir::render_text(r.diags, r.sources);
     return nullptr;
   }
   if (validate) {
-    EXPECT_TRUE(as::validate(*r.program, r.diags)) << ir::render_text(r.diags, r.sources);
+    EXPECT_TRUE(assembly::validate(*r.program, r.diags)) << ir::render_text(r.diags, r.sources);
   }
   return std::make_shared<const ir::Program>(*r.program);
 }

@@ -6,7 +6,7 @@
 #include <random>
 
 #include "draw_helpers.h"
-#include "tierlift/asm/parser.h"
+#include "tierlift/assembly/parser.h"
 #include "tierlift/cpu/draw.h"
 
 namespace tierlift::cpu::test {
@@ -18,9 +18,9 @@ namespace tierlift::cpu::test {
 // edge, killed lanes among written ones.
 inline Pass random_perspective_pass(std::mt19937& rng, int vertices, uint32_t w, uint32_t h) {
   static const auto ps = std::make_shared<const ir::Program>(
-      *as::parse_text("ps_2_0\ndcl v0\ndcl t0\ndcl t1\ndcl_2d s0\ntexld r0, t0, s0\n"
-                      "mad r0, r0, v0, t1\ntexkill t1\nmov oC0, r0\n",
-                      "<test>")
+      *assembly::parse_text("ps_2_0\ndcl v0\ndcl t0\ndcl t1\ndcl_2d s0\ntexld r0, t0, s0\n"
+                            "mad r0, r0, v0, t1\ntexkill t1\nmov oC0, r0\n",
+                            "<test>")
            .program);
   std::uniform_real_distribution<double> x(-20.0, w + 20.0), y(-20.0, h + 20.0);
   std::uniform_real_distribution<float> val(-0.5f, 1.5f), wclip(0.5f, 3.0f), texel(0.0f, 1.0f);

@@ -16,9 +16,9 @@
 
 #include "program_helpers.h"
 #include "run_flags.h"
-#include "tierlift/asm/constant_table.h"
-#include "tierlift/asm/parser.h"
-#include "tierlift/asm/validator.h"
+#include "tierlift/assembly/constant_table.h"
+#include "tierlift/assembly/parser.h"
+#include "tierlift/assembly/validator.h"
 #include "tierlift/ir/result_diagnostics.h"
 
 #include "run_job.h"
@@ -328,12 +328,12 @@ TEST(RunJob, PointSamplingOnTheD3D9QuadPicksTexelI) {
 // directly. g_m (c4..c6, float4x3) takes 4 numbers per register; vs: picks the vertex
 // table, no prefix tries both (g_both is in each); bools take one value; samplers refuse.
 TEST(ConstAssignment, NamedConstantsBecomeTypedRegisters) {
-  as::ConstantTable vs, ps;
-  vs.constants = {{"g_m", as::ConstantSet::Float4, 4, 3, "float4x3"},
-                  {"g_both", as::ConstantSet::Int4, 2, 1, "int4"},
-                  {"g_on", as::ConstantSet::Bool, 5, 1, "bool"}};
-  ps.constants = {{"g_both", as::ConstantSet::Float4, 9, 1, "float4"},
-                  {"g_tex", as::ConstantSet::Sampler, 0, 1, "sampler2D"}};
+  assembly::ConstantTable vs, ps;
+  vs.constants = {{"g_m", assembly::ConstantSet::Float4, 4, 3, "float4x3"},
+                  {"g_both", assembly::ConstantSet::Int4, 2, 1, "int4"},
+                  {"g_on", assembly::ConstantSet::Bool, 5, 1, "bool"}};
+  ps.constants = {{"g_both", assembly::ConstantSet::Float4, 9, 1, "float4"},
+                  {"g_tex", assembly::ConstantSet::Sampler, 0, 1, "sampler2D"}};
   auto m = parse_const_assignment("g_m=1,2,3,4,5,6,7,8", &vs, &ps);
   ASSERT_TRUE(m) << m.message();
   ASSERT_EQ(m->size(), 2u); // two of the three registers given

@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "program_helpers.h"
-#include "tierlift/asm/parser.h"
-#include "tierlift/asm/validator.h"
+#include "tierlift/assembly/parser.h"
+#include "tierlift/assembly/validator.h"
 #include "tierlift/cpu/draw.h"
 #include "tierlift/pass/pass.h"
 #include "tierlift/pass/stencil.h"
@@ -113,10 +113,10 @@ TEST(Mrt, TargetsOfDifferentSizesAreRefused) {
 }
 
 TEST(Mrt, OC1WithoutOC0IsAPositionedValidatorError) {
-  auto r = as::parse_text("ps_2_0\nmov oC1, c1\n", "mrt.psh");
+  auto r = assembly::parse_text("ps_2_0\nmov oC1, c1\n", "mrt.psh");
   ASSERT_TRUE(r.program);
   ir::DiagnosticSink sink;
-  EXPECT_FALSE(as::validate(*r.program, sink));
+  EXPECT_FALSE(assembly::validate(*r.program, sink));
   const std::string text = ir::render_text(sink, r.sources);
   EXPECT_NE(text.find("mrt.psh:"), std::string::npos) << text;
   EXPECT_NE(text.find("oC0"), std::string::npos) << text;

@@ -167,10 +167,10 @@ void run_folder(const fs::path& dir, FolderResult& r) {
     std::ifstream f(e.path());
     std::stringstream ss;
     ss << f.rdbuf();
-    auto parsed = tierlift::as::parse_text(ss.str(), e.path().string());
+    auto parsed = tierlift::assembly::parse_text(ss.str(), e.path().string());
     if (!parsed.program) continue;
     ir::DiagnosticSink d;
-    if (!tierlift::as::validate(*parsed.program, d)) continue;
+    if (!tierlift::assembly::validate(*parsed.program, d)) continue;
     bool taken = false;
     uint32_t seed = 1;
     for (const ir::Conventions& conv : conventions_modes())

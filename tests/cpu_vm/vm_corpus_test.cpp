@@ -19,10 +19,10 @@ void run_folder(const fs::path& dir, int& ran) {
     std::ifstream f(e.path());
     std::stringstream ss;
     ss << f.rdbuf();
-    auto r = tierlift::as::parse_text(ss.str(), e.path().string());
+    auto r = tierlift::assembly::parse_text(ss.str(), e.path().string());
     if (!r.program) continue; // the parser's own tests judge these
     tierlift::ir::DiagnosticSink d;
-    if (!tierlift::as::validate(*r.program, d)) continue;
+    if (!tierlift::assembly::validate(*r.program, d)) continue;
     SCOPED_TRACE(e.path().string());
     ShaderVM vm = vm_of(*r.program, {});
     ConstantBank c;

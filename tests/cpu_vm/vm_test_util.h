@@ -1,5 +1,5 @@
 // Shared helpers of the VM tests: programs come from listing text through the real parser
-// (tierlift::as::parse_text), inputs are filled by hand, and a fake TextureUnit returns
+// (tierlift::assembly::parse_text), inputs are filled by hand, and a fake TextureUnit returns
 // its coordinate so that texture-address arithmetic can be checked by hand.
 #pragma once
 
@@ -14,8 +14,8 @@
 #include <string>
 #include <utility>
 
-#include "tierlift/asm/parser.h"
-#include "tierlift/asm/validator.h"
+#include "tierlift/assembly/parser.h"
+#include "tierlift/assembly/validator.h"
 #include "tierlift/cpu/shader_vm.h"
 #include "tierlift/ir/diagnostic.h"
 
@@ -32,7 +32,7 @@ using tierlift::cpu::VertexInput;
 using tierlift::cpu::VertexOutput;
 
 inline tierlift::ir::Program parse(const std::string& text, bool validate = true) {
-  auto r = tierlift::as::parse_text(text, "<test>");
+  auto r = tierlift::assembly::parse_text(text, "<test>");
   if (!r.program) {
     ADD_FAILURE() << "listing does not parse:\n" << render_text(r.diags, r.sources) << text;
     return {};
@@ -42,7 +42,7 @@ inline tierlift::ir::Program parse(const std::string& text, bool validate = true
   const char* env = std::getenv("TIERLIFT_VM_VALIDATE");
   if (validate && (!env || *env != '0')) {
     tierlift::ir::DiagnosticSink d;
-    if (!tierlift::as::validate(*r.program, d))
+    if (!tierlift::assembly::validate(*r.program, d))
       ADD_FAILURE() << "listing does not validate:\n" << render_text(d, r.sources) << text;
   }
   return *r.program;

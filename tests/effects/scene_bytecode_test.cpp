@@ -1,4 +1,4 @@
-// A scene's "listings" may name a token stream as well as text (as::load_listing decides by
+// A scene's "listings" may name a token stream as well as text (assembly::load_listing decides by
 // content), and "ps1x_max" picks the ps_1_x range preset of tier dx8.
 #include <gtest/gtest.h>
 
@@ -7,8 +7,8 @@
 #include <fstream>
 
 #include "listing_files.h"
-#include "tierlift/asm/bytecode.h"
-#include "tierlift/asm/parser.h"
+#include "tierlift/assembly/bytecode.h"
+#include "tierlift/assembly/parser.h"
 #include "tierlift/effects/glow/builtin_listing.h"
 #include "tierlift/effects/scenes/scene.h"
 
@@ -26,10 +26,11 @@ fs::path scratch_dir() {
 TEST(SceneBytecode, ListingFileMayBeATokenStream) {
   const std::string name = "gpugems21/listing4_blur4_weighted_sum.psh";
   auto text = test::read_file(fs::path(TIERLIFT_SOURCE_DIR) / "listings" / name);
-  auto parsed = as::parse_text(text);
+  auto parsed = assembly::parse_text(text);
   ASSERT_TRUE(parsed.program.has_value());
   auto pso = scratch_dir() / "l4.pso";
-  std::ofstream(pso, std::ios::binary) << as::tokens_to_bytes(as::assemble(*parsed.program));
+  std::ofstream(pso, std::ios::binary)
+      << assembly::tokens_to_bytes(assembly::assemble(*parsed.program));
   ListingResult from_tokens = glow_listing(name, {{name, pso.string()}});
   ASSERT_TRUE(from_tokens) << from_tokens.message();
   ListingResult built_in = builtin_listing(name);

@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "tierlift/asm/bytecode.h"
-#include "tierlift/asm/parser.h"
-#include "tierlift/asm/printer.h"
-#include "tierlift/asm/validator.h"
+#include "tierlift/assembly/bytecode.h"
+#include "tierlift/assembly/parser.h"
+#include "tierlift/assembly/printer.h"
+#include "tierlift/assembly/validator.h"
 
 using namespace tierlift;
 
@@ -30,30 +30,30 @@ bool has_identity_scalar_source(const ir::Program& program) {
 
 void check_stream(const std::vector<uint32_t>& tokens) {
   ir::DiagnosticSink diags;
-  auto program = as::disassemble(tokens, diags);
+  auto program = assembly::disassemble(tokens, diags);
   if (!program) {
     if (!diags.has_errors()) std::abort(); // a rejection always says why
     return;
   }
-  (void)as::validate(*program, diags);
-  (void)as::print_program(*program);
+  (void)assembly::validate(*program, diags);
+  (void)assembly::print_program(*program);
   // What the reader built, the writer must carry back to the same program.
   ir::DiagnosticSink d2;
-  auto again = as::assemble(*program, d2);
+  auto again = assembly::assemble(*program, d2);
   if (!again) return; // the writer says which statement it cannot carry
   if (*again != tokens) std::abort();
   ir::DiagnosticSink d3;
-  auto back = as::disassemble(*again, d3);
+  auto back = assembly::disassemble(*again, d3);
   if (!back || !ir::same_ir(*program, *back)) std::abort();
   // disasm ∘ assemble through the text form is the identity too, except where the text has
   // no spelling for the stream: a scalar source (rcp, rsq, exp, log, pow ...) with the
   // identity swizzle prints bare, and a bare scalar source reads .x in text, while the
   // runtime read .w (the windows leniency rewrites it to .w, with a warning, at validation).
   if (has_identity_scalar_source(*program)) return;
-  auto reparsed = as::parse_text(as::print_program(*program), "disasm.asm");
+  auto reparsed = assembly::parse_text(assembly::print_program(*program), "disasm.asm");
   if (!reparsed.program) std::abort();
   ir::DiagnosticSink d4;
-  auto from_text = as::assemble(*reparsed.program, d4);
+  auto from_text = assembly::assemble(*reparsed.program, d4);
   if (!from_text || *from_text != tokens) std::abort();
 }
 
@@ -62,7 +62,7 @@ void check_stream(const std::vector<uint32_t>& tokens) {
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string bytes(reinterpret_cast<const char*>(data), size);
   ir::DiagnosticSink diags;
-  if (auto tokens = as::read_token_file(bytes, diags))
+  if (auto tokens = assembly::read_token_file(bytes, diags))
     check_stream(*tokens);
   else if (!diags.has_errors())
     std::abort();

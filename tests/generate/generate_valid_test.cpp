@@ -8,9 +8,9 @@
 #include <string>
 
 #include "sanitizer_scale.h"
-#include "tierlift/asm/bytecode.h"
-#include "tierlift/asm/parser.h"
-#include "tierlift/asm/validator.h"
+#include "tierlift/assembly/bytecode.h"
+#include "tierlift/assembly/parser.h"
+#include "tierlift/assembly/validator.h"
 #include "tierlift/generate/generate.h"
 #include "tierlift/ir/opcodes.h"
 
@@ -22,8 +22,8 @@ const char* const kProfiles[] = {"vs_1_1", "vs_2_0", "ps_1_1", "ps_1_2",
 
 // The program of a listing that parses and validates with no error and no warning, or why not.
 std::optional<ir::Program> valid_program(const std::string& text, std::string& why) {
-  as::ParseResult r = as::parse_text(text, "generated.asm");
-  if (r.program && as::validate(*r.program, r.diags) && r.diags.warning_count() == 0)
+  assembly::ParseResult r = assembly::parse_text(text, "generated.asm");
+  if (r.program && assembly::validate(*r.program, r.diags) && r.diags.warning_count() == 0)
     return r.program;
   why = ir::render_text(r.diags, r.sources) + text;
   return std::nullopt;
@@ -81,9 +81,9 @@ TEST_P(GeneratedListings, TokenStreamRoundTrips) {
     auto prog = valid_program(text, why);
     ASSERT_TRUE(prog) << why;
     ir::DiagnosticSink diags;
-    auto tokens = as::assemble(*prog, diags);
+    auto tokens = assembly::assemble(*prog, diags);
     ASSERT_TRUE(tokens) << text;
-    auto back = as::disassemble(*tokens, diags);
+    auto back = assembly::disassemble(*tokens, diags);
     ASSERT_TRUE(back) << text;
     ASSERT_TRUE(ir::same_ir(*prog, *back)) << ir::ir_difference(*prog, *back) << "\n" << text;
   }

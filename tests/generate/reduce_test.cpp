@@ -8,16 +8,16 @@
 #include <string>
 #include <vector>
 
-#include "tierlift/asm/parser.h"
-#include "tierlift/asm/validator.h"
+#include "tierlift/assembly/parser.h"
+#include "tierlift/assembly/validator.h"
 #include "tierlift/generate/generate.h"
 
 namespace tierlift::gen {
 namespace {
 
 bool valid(const std::string& text) {
-  as::ParseResult r = as::parse_text(text, "reduce.asm");
-  return r.program && as::validate(*r.program, r.diags);
+  assembly::ParseResult r = assembly::parse_text(text, "reduce.asm");
+  return r.program && assembly::validate(*r.program, r.diags);
 }
 
 bool has_negated_mad(const std::string& text) {

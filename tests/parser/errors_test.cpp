@@ -1,7 +1,7 @@
 // Error positions (line and column, checked exactly), rule ids and recovery.
 #include "test_util.h"
 
-namespace tierlift::as::test {
+namespace tierlift::assembly::test {
 namespace {
 
 TEST(ParserErrors, UnknownMnemonic) {
@@ -125,4 +125,4 @@ TEST(ParserErrors, RenderedDiagnosticHasFileLineColAndCaret) {
 }
 
 } // namespace
-} // namespace tierlift::as::test
+} // namespace tierlift::assembly::test

@@ -2,7 +2,7 @@
 // assertion here, the benchmark measures speed).
 #include "test_util.h"
 
-namespace tierlift::as::test {
+namespace tierlift::assembly::test {
 namespace {
 
 TEST(ParserLargeInput, TenMegabyteListing) {
@@ -26,4 +26,4 @@ TEST(ParserLargeInput, OneHugeLineOfGarbageGivesFewErrors) {
 }
 
 } // namespace
-} // namespace tierlift::as::test
+} // namespace tierlift::assembly::test

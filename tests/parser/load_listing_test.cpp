@@ -1,11 +1,11 @@
-// as::load_listing: one entry for every form of listing file, told apart by content.
+// assembly::load_listing: one entry for every form of listing file, told apart by content.
 // Token streams here are written out by hand (docs/d3d9-rules.md §9): ps_1_1 = 0xFFFF0101,
 // mov = 0x01, r0 = 0x800F0000, v0 = 0x90E40000, c0 = 0xA0E40000, end = 0x0000FFFF.
 #include <gtest/gtest.h>
 
 #include "loaded_listing.h"
-#include "tierlift/asm/bytecode.h"
-#include "tierlift/asm/load.h"
+#include "tierlift/assembly/bytecode.h"
+#include "tierlift/assembly/load.h"
 
 namespace {
 
@@ -14,7 +14,7 @@ using Tokens = std::vector<uint32_t>;
 
 using Loaded = test::LoadedListing;
 
-Loaded load(std::string bytes, std::string name = "shader.pso", as::LoadOptions o = {}) {
+Loaded load(std::string bytes, std::string name = "shader.pso", assembly::LoadOptions o = {}) {
   return test::load_bytes(std::move(bytes), std::move(name), o);
 }
 
@@ -24,9 +24,9 @@ const Tokens kPs11Mov = {0xFFFF0101, 0x00000001, 0x800F0000, 0x90E40000, 0x0000F
 
 TEST(LoadListing, RawTokenStreamWhateverTheName) {
   for (const char* name : {"a.pso", "a.bin", "a.fxo", "a.psh", "noext"}) {
-    Loaded l = load(as::tokens_to_bytes(kPs11Mov), name);
+    Loaded l = load(assembly::tokens_to_bytes(kPs11Mov), name);
     ASSERT_TRUE(l.r().program.ok()) << name << "\n" << l.rendered;
-    EXPECT_EQ(l.r().form, as::ListingForm::TokenStream);
+    EXPECT_EQ(l.r().form, assembly::ListingForm::TokenStream);
     EXPECT_EQ(l.r().program->profile, ir::Profile::ps_1_1);
     EXPECT_EQ(l.r().program->code.size(), 1u);
   }
@@ -39,7 +39,7 @@ TEST(LoadListing, FxcHeaderByteArray) {
                   "      0,   0, 228, 144, 255, 255,   0,   0\n};\n";
   Loaded l = load(h, "shader.h");
   ASSERT_TRUE(l.r().program.ok()) << l.rendered;
-  EXPECT_EQ(l.r().form, as::ListingForm::TokenArray);
+  EXPECT_EQ(l.r().form, assembly::ListingForm::TokenArray);
   EXPECT_EQ(l.r().tokens, kPs11Mov);
 }
 
@@ -48,10 +48,10 @@ TEST(LoadListing, DwordArrayAndText) {
                   "0x0000ffff };\n",
                   "s.h");
   ASSERT_TRUE(a.r().program.ok()) << a.rendered;
-  EXPECT_EQ(a.r().form, as::ListingForm::TokenArray);
+  EXPECT_EQ(a.r().form, assembly::ListingForm::TokenArray);
   Loaded t = load("ps.1.1\nmov r0, v0\n", "s.psh");
   ASSERT_TRUE(t.r().program.ok()) << t.rendered;
-  EXPECT_EQ(t.r().form, as::ListingForm::Text);
+  EXPECT_EQ(t.r().form, assembly::ListingForm::Text);
 }
 
 // Diagnostics on a token stream name the byte offset of the token: an unknown opcode
@@ -59,7 +59,7 @@ TEST(LoadListing, DwordArrayAndText) {
 TEST(LoadListing, DiagnosticsNameTheTokenOffset) {
   Tokens t = kPs11Mov;
   t.insert(t.end() - 1, 0x000000AB);
-  Loaded l = load(as::tokens_to_bytes(t));
+  Loaded l = load(assembly::tokens_to_bytes(t));
   EXPECT_FALSE(l.r().program.ok());
   EXPECT_EQ(l.rendered.rfind("shader.pso:+0x10: error: ", 0), 0u) << l.rendered;
   // One line: no source line and no caret under it.
@@ -71,7 +71,7 @@ TEST(LoadListing, DiagnosticsNameTheTokenOffset) {
 TEST(LoadListing, ValidatorErrorsNameTheTokenOffset) {
   Tokens t = {0xFFFF0101, 0x00000001, 0x800F0002, 0x90E40000,
               0x00000001, 0x800F0000, 0x90E40000, 0x0000FFFF};
-  Loaded l = load(as::tokens_to_bytes(t));
+  Loaded l = load(assembly::tokens_to_bytes(t));
   EXPECT_FALSE(l.r().program.ok());
   EXPECT_NE(l.rendered.find("shader.pso:+0x8: error: "), std::string::npos) << l.rendered;
   EXPECT_NE(l.rendered.find("[register-range]"), std::string::npos) << l.rendered;
@@ -85,13 +85,13 @@ TEST(LoadListing, BinaryFilesGetOneLine) {
   } cases[] = {
       {std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16), "PNG image"},
       {std::string("DXBC\x01\x02\x03\x04\0\0\0\0", 12), "DXBC container"},
-      {as::tokens_to_bytes({0xFEFF0901, 0, 0, 0}), "effect"},
+      {assembly::tokens_to_bytes({0xFEFF0901, 0, 0, 0}), "effect"},
       {std::string(400, '\x01') + std::string("\0\0\0\0", 4), "binary file"},
   };
   for (const Case& c : cases) {
     Loaded l = load(c.bytes, "thing.bin");
     EXPECT_FALSE(l.r().program.ok());
-    EXPECT_EQ(l.r().form, as::ListingForm::Binary);
+    EXPECT_EQ(l.r().form, assembly::ListingForm::Binary);
     EXPECT_EQ(l.rendered.rfind("thing.bin: error: this is ", 0), 0u) << l.rendered;
     EXPECT_NE(l.rendered.find(c.expect), std::string::npos) << l.rendered;
     EXPECT_EQ(l.rendered.find('\n'), l.rendered.size() - 1) << l.rendered;
@@ -103,11 +103,11 @@ TEST(LoadListing, BinaryFilesGetOneLine) {
 TEST(LoadListing, TextAndTokensGiveTheSameProgram) {
   const char* text = "vs_2_0\ndcl_position v0\nloop aL, i0\nadd r0, r0, c0[aL + 1]\nendloop\n"
                      "def c10, 1, 2, 3, 4\nmov r1, c0[a0.y]\nmov oPos, v0\n";
-  as::LoadOptions skip;
+  assembly::LoadOptions skip;
   skip.skip_validation = true;
   Loaded t = load(text, "x.vsh", skip);
   ASSERT_TRUE(t.r().program.ok()) << t.rendered;
-  Loaded b = load(as::tokens_to_bytes(as::assemble(*t.r().program)), "x.vso", skip);
+  Loaded b = load(assembly::tokens_to_bytes(assembly::assemble(*t.r().program)), "x.vso", skip);
   ASSERT_TRUE(b.r().program.ok()) << b.rendered;
   EXPECT_TRUE(ir::same_ir(*t.r().program, *b.r().program))
       << ir::ir_difference(*t.r().program, *b.r().program);

@@ -9,9 +9,9 @@
 
 #include "skip_policy.h"
 #include "test_util.h"
-#include "tierlift/asm/printer.h"
+#include "tierlift/assembly/printer.h"
 
-namespace tierlift::as::test {
+namespace tierlift::assembly::test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -145,4 +145,4 @@ TEST(ParserMutation, MutatedListingsNeverCrashAndErrorsHavePositions) {
 }
 
 } // namespace
-} // namespace tierlift::as::test
+} // namespace tierlift::assembly::test

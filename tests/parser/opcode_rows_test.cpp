@@ -5,7 +5,7 @@
 #include "test_util.h"
 #include "tierlift/ir/opcodes.h"
 
-namespace tierlift::as::test {
+namespace tierlift::assembly::test {
 namespace {
 
 using ir::OperandKind;
@@ -87,4 +87,4 @@ TEST(ParserOpcodeRows, WrongOperandCountIsReportedAtTheMnemonicOrTheExtraOperand
 }
 
 } // namespace
-} // namespace tierlift::as::test
+} // namespace tierlift::assembly::test

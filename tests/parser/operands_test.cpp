@@ -1,7 +1,7 @@
 // Operands: registers, source modifiers, swizzles, masks and relative addressing.
 #include "test_util.h"
 
-namespace tierlift::as::test {
+namespace tierlift::assembly::test {
 namespace {
 
 using ir::RegFile;
@@ -162,4 +162,4 @@ TEST(ParserOperands, RelativeAddressWithSwizzleAndNegationHasPositions) {
 }
 
 } // namespace
-} // namespace tierlift::as::test
+} // namespace tierlift::assembly::test

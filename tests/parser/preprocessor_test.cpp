@@ -5,7 +5,7 @@
 #include "temp_dir.h"
 #include "test_util.h"
 
-namespace tierlift::as::test {
+namespace tierlift::assembly::test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -217,4 +217,4 @@ TEST_F(PreprocessorInclude, CyclesMissingFilesAndDepth) {
 }
 
 } // namespace
-} // namespace tierlift::as::test
+} // namespace tierlift::assembly::test

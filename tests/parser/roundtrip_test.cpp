@@ -6,11 +6,11 @@
 
 #include "skip_policy.h"
 #include "test_util.h"
-#include "tierlift/asm/printer.h"
+#include "tierlift/assembly/printer.h"
 
 #include "listing_files.h"
 
-namespace tierlift::as::test {
+namespace tierlift::assembly::test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -91,4 +91,4 @@ TEST(ParserRoundTrip, PrinterCanonicalText) {
 }
 
 } // namespace
-} // namespace tierlift::as::test
+} // namespace tierlift::assembly::test

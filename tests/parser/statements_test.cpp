@@ -3,7 +3,7 @@
 
 #include "test_util.h"
 
-namespace tierlift::as::test {
+namespace tierlift::assembly::test {
 namespace {
 
 using ir::Opcode;
@@ -180,4 +180,4 @@ TEST(ParserMods, SeveralStatementsOnOneLine) {
 }
 
 } // namespace
-} // namespace tierlift::as::test
+} // namespace tierlift::assembly::test

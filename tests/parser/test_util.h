@@ -7,10 +7,10 @@
 
 #include <gtest/gtest.h>
 
-#include "tierlift/asm/parser.h"
+#include "tierlift/assembly/parser.h"
 #include "tierlift/ir/diagnostic.h"
 
-namespace tierlift::as::test {
+namespace tierlift::assembly::test {
 
 // Parses and fails the test (with rendered diagnostics) when parsing did not succeed.
 inline ir::Program must_parse(const std::string& text, const ParseOptions& opts = {}) {
@@ -76,4 +76,4 @@ inline void expect_first_errors(std::initializer_list<ErrorCase> cases,
   }
 }
 
-} // namespace tierlift::as::test
+} // namespace tierlift::assembly::test

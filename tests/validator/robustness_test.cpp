@@ -5,7 +5,7 @@
 
 #include <random>
 
-#include "tierlift/asm/validator.h"
+#include "tierlift/assembly/validator.h"
 
 using namespace tierlift;
 
@@ -82,7 +82,7 @@ TEST(ValidatorRobustness, RandomProgramsAgainstEveryProfile) {
     ir::Program p = random_program(rng);
     for (ir::Profile target : ir::kAllProfiles) {
       ir::DiagnosticSink sink;
-      bool ok = as::validate(p, target, sink);
+      bool ok = assembly::validate(p, target, sink);
       EXPECT_EQ(ok, !sink.has_errors());
       errors += sink.error_count();
     }

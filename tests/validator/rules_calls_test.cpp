@@ -38,13 +38,13 @@ uint32_t call_line(int d) {
 
 // Validation under explicit 2.x caps; the errors of rule "call-nesting" as "line:col message".
 std::string call_errors(const std::string& text, ir::Profile target, ir::Caps2x caps) {
-  auto parsed = as::parse_text(text, "t.asm");
+  auto parsed = assembly::parse_text(text, "t.asm");
   EXPECT_TRUE(parsed.program.has_value());
   if (!parsed.program) return "?";
-  as::ValidateOptions o;
+  assembly::ValidateOptions o;
   o.caps = caps;
   ir::DiagnosticSink diags;
-  as::validate(*parsed.program, target, diags, o);
+  assembly::validate(*parsed.program, target, diags, o);
   std::string out;
   for (const ir::Diagnostic& d : diags.all())
     if (d.rule == "call-nesting")

@@ -85,12 +85,13 @@ TEST(DeclarationWarnings, Ps1xConstantOutsideClampRange) {
 }
 
 TEST(DeclarationWarnings, WarningsCanBeSwitchedOff) {
-  auto pr = tierlift::as::parse_text("vs_2_0\ndcl_position v0\ndcl_normal v1\nmov oPos, v0\n");
+  auto pr =
+      tierlift::assembly::parse_text("vs_2_0\ndcl_position v0\ndcl_normal v1\nmov oPos, v0\n");
   ASSERT_TRUE(pr.program);
   tierlift::ir::DiagnosticSink sink;
-  tierlift::as::ValidateOptions opt;
+  tierlift::assembly::ValidateOptions opt;
   opt.warnings = false;
-  EXPECT_TRUE(tierlift::as::validate(*pr.program, pr.program->profile, sink, opt));
+  EXPECT_TRUE(tierlift::assembly::validate(*pr.program, pr.program->profile, sink, opt));
   EXPECT_EQ(sink.all().size(), 0u);
 }
 

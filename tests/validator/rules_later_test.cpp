@@ -116,12 +116,12 @@ TEST(LaterProfiles, Ps2xCapsPresets) {
   auto run_with = [&](const char* preset) {
     auto caps = ir::caps_preset(preset);
     EXPECT_TRUE(caps.has_value());
-    auto parsed = tierlift::as::parse_text(text, "t.asm");
+    auto parsed = tierlift::assembly::parse_text(text, "t.asm");
     EXPECT_TRUE(parsed.program.has_value());
-    tierlift::as::ValidateOptions o;
+    tierlift::assembly::ValidateOptions o;
     o.caps = caps->second;
     ir::DiagnosticSink diags;
-    bool ok = tierlift::as::validate(*parsed.program, caps->first, diags, o);
+    bool ok = tierlift::assembly::validate(*parsed.program, caps->first, diags, o);
     std::string all;
     for (const ir::Diagnostic& d : diags.all())
       if (d.severity == ir::Severity::Error) all += d.rule + ": " + d.message + "\n";
@@ -139,13 +139,13 @@ TEST(LaterProfiles, Ps2xCapsPresets) {
 // The diagnostics of `text` validated as ps_2_x under the caps of fxc's target `preset`.
 ir::DiagnosticSink validate_ps2x_under(const std::string& text, const char* preset, bool& ok) {
   ir::DiagnosticSink diags;
-  auto parsed = tierlift::as::parse_text(text, "t.asm");
+  auto parsed = tierlift::assembly::parse_text(text, "t.asm");
   EXPECT_TRUE(parsed.program.has_value());
   ok = false;
   if (!parsed.program) return diags;
-  tierlift::as::ValidateOptions o;
+  tierlift::assembly::ValidateOptions o;
   o.caps = ir::caps_preset(preset)->second;
-  ok = tierlift::as::validate(*parsed.program, ir::Profile::ps_2_x, diags, o);
+  ok = tierlift::assembly::validate(*parsed.program, ir::Profile::ps_2_x, diags, o);
   return diags;
 }
 

@@ -7,7 +7,7 @@
 
 #include "listing_files.h"
 #include "skip_policy.h"
-#include "tierlift/asm/load.h"
+#include "tierlift/assembly/load.h"
 #include "tierlift/ir/passes.h"
 #include "tierlift/ir/result_diagnostics.h"
 
@@ -23,9 +23,9 @@ int check_folder(const fs::path& dir) {
     SCOPED_TRACE(file.string());
     ir::SourceManager sm;
     const uint32_t f = sm.add(file.string(), test::read_file(file));
-    as::LoadOptions options;
+    assembly::LoadOptions options;
     options.parse.include_dirs = {file.parent_path().string()};
-    as::Loaded l = as::load_listing(f, sm, options);
+    assembly::Loaded l = assembly::load_listing(f, sm, options);
     if (!l.program) continue; // helper fragments and deliberately broken files
     ++loaded;
     const ir::Status s = ir::validate_ir(*l.program);

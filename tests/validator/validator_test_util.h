@@ -9,22 +9,23 @@
 #include <string>
 #include <vector>
 
-#include "tierlift/asm/parser.h"
-#include "tierlift/asm/validator.h"
+#include "tierlift/assembly/parser.h"
+#include "tierlift/assembly/validator.h"
 
 namespace tierlift::vtest {
 
 struct Run {
-  as::ParseResult parsed;
+  assembly::ParseResult parsed;
   ir::DiagnosticSink diags;
   bool valid = false;
 };
 
 inline Run run(const std::string& text, std::optional<ir::Profile> target = std::nullopt) {
   Run r;
-  r.parsed = as::parse_text(text, "t.asm");
+  r.parsed = assembly::parse_text(text, "t.asm");
   if (r.parsed.program)
-    r.valid = as::validate(*r.parsed.program, target.value_or(r.parsed.program->profile), r.diags);
+    r.valid =
+        assembly::validate(*r.parsed.program, target.value_or(r.parsed.program->profile), r.diags);
   return r;
 }
 

@@ -6,9 +6,9 @@
 #include <gtest/gtest.h>
 
 #include "loaded_listing.h"
-#include "tierlift/asm/bytecode.h"
-#include "tierlift/asm/load.h"
-#include "tierlift/asm/parser.h"
+#include "tierlift/assembly/bytecode.h"
+#include "tierlift/assembly/load.h"
+#include "tierlift/assembly/parser.h"
 #include "tierlift/ir/semantics.h"
 
 namespace {
@@ -19,7 +19,7 @@ using Tokens = std::vector<uint32_t>;
 using Loaded = test::LoadedListing;
 
 Loaded load(std::string bytes, bool strict) {
-  as::LoadOptions o;
+  assembly::LoadOptions o;
   o.strict = strict;
   return test::load_bytes(std::move(bytes), "s.vso", o);
 }
@@ -35,7 +35,7 @@ Tokens d3d8_scalar_stream(uint32_t opcode) {
 TEST(WindowsLeniency, ScalarSourceWithoutReplicateReadsW) {
   for (uint32_t opcode : {0x0Eu /* exp */, 0x0Fu /* log */, 0x06u /* rcp */, 0x07u /* rsq */}) {
     SCOPED_TRACE(opcode);
-    Loaded l = load(as::tokens_to_bytes(d3d8_scalar_stream(opcode)), false);
+    Loaded l = load(assembly::tokens_to_bytes(d3d8_scalar_stream(opcode)), false);
     ASSERT_TRUE(l.r().program.ok()) << l.rendered;
     EXPECT_EQ(l.count(ir::Severity::Warning, "swizzle"), 1u) << l.rendered;
     // The warning sits on the source token (index 6, byte 0x18) and names c1.w.
@@ -47,7 +47,7 @@ TEST(WindowsLeniency, ScalarSourceWithoutReplicateReadsW) {
 }
 
 TEST(WindowsLeniency, StrictRejectsTheScalarSource) {
-  Loaded l = load(as::tokens_to_bytes(d3d8_scalar_stream(0x0E)), true);
+  Loaded l = load(assembly::tokens_to_bytes(d3d8_scalar_stream(0x0E)), true);
   EXPECT_FALSE(l.r().program.ok());
   EXPECT_EQ(l.count(ir::Severity::Error, "swizzle"), 1u) << l.rendered;
   EXPECT_NE(l.rendered.find("s.vso:+0x18: error: "), std::string::npos) << l.rendered;
@@ -81,12 +81,13 @@ TEST(WindowsLeniency, Ps14TexcrdWithoutMaskKeepsTheFullMask) {
                      0x00000000, 0x3F800000, 0x00000040, 0x800F0000, 0xB0E40000,
                      0x00000001, 0x80080000, 0xA0FF0000, 0x00000050, 0x800F0000,
                      0x80E40000, 0xA0E40001, 0xA0E40002, 0x0000FFFF};
-  EXPECT_EQ(as::assemble(*l.r().program), expected);
+  EXPECT_EQ(assembly::assemble(*l.r().program), expected);
   // texcrd_sat is refused by the validator; the assembler still writes its full mask.
-  as::ParseResult sat = as::parse_text("ps_1_4\ntexcrd_sat r4, t3\nmov r0.rgb, r4\n");
+  assembly::ParseResult sat = assembly::parse_text("ps_1_4\ntexcrd_sat r4, t3\nmov r0.rgb, r4\n");
   ASSERT_TRUE(sat.program.has_value());
-  EXPECT_EQ(as::assemble(*sat.program), (Tokens{0xFFFF0104, 0x00000040, 0x801F0004, 0xB0E40003,
-                                                0x00000001, 0x80070000, 0x80E40004, 0x0000FFFF}));
+  EXPECT_EQ(assembly::assemble(*sat.program),
+            (Tokens{0xFFFF0104, 0x00000040, 0x801F0004, 0xB0E40003, 0x00000001, 0x80070000,
+                    0x80E40004, 0x0000FFFF}));
   // _dw defines .rg.
   Loaded dw = load("ps_1_4\ntexcrd r0, t0_dw.xyw\nmov r0.a, c0.a\n", false);
   ASSERT_TRUE(dw.r().program.ok()) << dw.rendered;

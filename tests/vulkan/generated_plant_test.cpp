@@ -49,8 +49,8 @@ DiffSetup inputs() {
 }
 
 bool valid(const std::string& text) {
-  as::ParseResult r = as::parse_text(text, "generated.psh");
-  return r.program && as::validate(*r.program, r.diags);
+  assembly::ParseResult r = assembly::parse_text(text, "generated.psh");
+  return r.program && assembly::validate(*r.program, r.diags);
 }
 
 // The first disagreement between the interpreter and Vulkan on `ps`, or "" when they agree.

@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "skip_policy.h"
-#include "tierlift/asm/parser.h"
-#include "tierlift/asm/validator.h"
+#include "tierlift/assembly/parser.h"
+#include "tierlift/assembly/validator.h"
 #include "tierlift/codegen/codegen.h"
 #include "tierlift/cpu/draw.h"
 #include "tierlift/image/builtin.h"
@@ -131,12 +131,12 @@ protected:
 
 inline std::shared_ptr<const ir::Program> parse_listing(const std::string& text,
                                                         const std::string& name) {
-  auto r = as::parse_text(text, name);
+  auto r = assembly::parse_text(text, name);
   if (!r.program) {
     ADD_FAILURE() << name << ": " << ir::render_text(r.diags, r.sources);
     return nullptr;
   }
-  if (!as::validate(*r.program, r.diags)) {
+  if (!assembly::validate(*r.program, r.diags)) {
     ADD_FAILURE() << name << ": " << ir::render_text(r.diags, r.sources) << "\n" << text;
     return nullptr;
   }

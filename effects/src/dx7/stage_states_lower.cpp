@@ -9,7 +9,7 @@
 // `_sat`.
 #include <fmt/format.h>
 
-#include "tierlift/asm/load.h"
+#include "tierlift/assembly/load.h"
 #include "tierlift/effects/glow/stage_states.h"
 #include "tierlift/ir/result_diagnostics.h"
 
@@ -88,10 +88,10 @@ std::string op_comment(const Operation& o, uint32_t n, std::string_view state) {
 ir::Result<std::shared_ptr<const ir::Program>> read(std::string text, std::string name) {
   ir::SourceManager sources;
   const uint32_t file = sources.add(name, std::move(text));
-  as::LoadOptions options;
+  assembly::LoadOptions options;
   options.parse.allow_include = false;
   options.warnings = false;
-  as::Loaded r = as::load_listing(file, sources, options);
+  assembly::Loaded r = assembly::load_listing(file, sources, options);
   if (!r.program)
     return ir::fail(std::move(name), "listing", ir::render_text(r.program.diagnostics(), sources));
   return std::make_shared<const ir::Program>(std::move(r.program).value());

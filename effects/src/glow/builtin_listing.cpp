@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "tierlift/asm/load.h"
+#include "tierlift/assembly/load.h"
 #include "tierlift/io/bounded_read.h"
 #include "tierlift/ir/passes.h"
 #include "tierlift/ir/result_diagnostics.h"
@@ -13,12 +13,12 @@ namespace tierlift::effects {
 namespace {
 
 // Text or a D3D9 token stream (raw or a C array), told apart by content: a scene's
-// "listings" may name a .pso/.vso as well as a .psh/.vsh (as::load_listing).
+// "listings" may name a .pso/.vso as well as a .psh/.vsh (assembly::load_listing).
 ListingResult parse_and_validate(std::string text, std::string name, bool allow_include,
                                  const ListingOptions& listing) {
   ir::SourceManager sources;
   uint32_t file = sources.add(std::move(name), std::move(text));
-  as::LoadOptions options;
+  assembly::LoadOptions options;
   options.parse.defines = listing.defines;
   options.parse.include_dirs = listing.include_dirs;
   options.parse.allow_include = allow_include; // built-in text never reads files
@@ -29,13 +29,13 @@ ListingResult parse_and_validate(std::string text, std::string name, bool allow_
     // --profile checks the listings of its own stage only: every pass has one of each. The
     // stage is known once the listing is read, so read it first without validating.
     ir::SourceManager probe_sources = sources;
-    as::LoadOptions probe = options;
+    assembly::LoadOptions probe = options;
     probe.skip_validation = true;
-    as::Loaded p = as::load_listing(file, probe_sources, probe);
+    assembly::Loaded p = assembly::load_listing(file, probe_sources, probe);
     if (p.program && ir::stage_of(*listing.profile) == p.program->stage())
       options.profile = listing.profile;
   }
-  as::Loaded r = as::load_listing(file, sources, options);
+  assembly::Loaded r = assembly::load_listing(file, sources, options);
   if (!r.program)
     return ir::fail(sources.files[file].name, "listing",
                     ir::render_text(r.program.diagnostics(), sources));

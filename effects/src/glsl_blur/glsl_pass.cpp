@@ -5,7 +5,7 @@
 
 #include "tierlift/effects/glow/builtin_listing.h"
 
-#include "tierlift/asm/load.h"
+#include "tierlift/assembly/load.h"
 #include "tierlift/ir/result_diagnostics.h"
 
 namespace tierlift::effects {
@@ -30,9 +30,9 @@ std::string twin_text(const glsl::FragmentShader& shader) {
 ListingResult assemble(std::string text, const std::string& name) {
   ir::SourceManager sources;
   const uint32_t file = sources.add(name, std::move(text));
-  as::LoadOptions options;
+  assembly::LoadOptions options;
   options.warnings = false;
-  as::Loaded r = as::load_listing(file, sources, options);
+  assembly::Loaded r = assembly::load_listing(file, sources, options);
   if (!r.program)
     return ir::fail(name, "listing", ir::render_text(r.program.diagnostics(), sources));
   return std::make_shared<const ir::Program>(std::move(r.program).value());

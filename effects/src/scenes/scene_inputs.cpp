@@ -2,8 +2,8 @@
 // write over it.
 #include <algorithm>
 
-#include "tierlift/asm/load.h"
-#include "tierlift/asm/preprocessor.h"
+#include "tierlift/assembly/load.h"
+#include "tierlift/assembly/preprocessor.h"
 #include "tierlift/effects/scenes/scene.h"
 #include "tierlift/io/bounded_read.h"
 
@@ -19,15 +19,15 @@ void add(std::vector<std::string>& out, const std::string& path) {
 // be read: the run reports that itself).
 std::vector<std::string> includes_of(const std::string& path, const ListingOptions& listing) {
   ir::Result<std::string> text = io::read_bounded(path, io::kListingCap);
-  if (!text || as::detect_listing_form(*text) != as::ListingForm::Text) return {};
+  if (!text || assembly::detect_listing_form(*text) != assembly::ListingForm::Text) return {};
   ir::SourceManager sm;
   const uint32_t file = sm.add(path, std::move(*text));
-  as::ParseOptions options;
+  assembly::ParseOptions options;
   options.defines = listing.defines;
   options.include_dirs = listing.include_dirs;
   ir::DiagnosticSink ignored; // the run parses the listing again and says what is wrong
-  as::preprocess(file, sm, ignored, options);
-  return as::included_files(sm);
+  assembly::preprocess(file, sm, ignored, options);
+  return assembly::included_files(sm);
 }
 
 } // namespace

@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 #include <map>
 
-#include "tierlift/asm/printer.h"
+#include "tierlift/assembly/printer.h"
 #include "tierlift/ir/registers.h"
 
 namespace tierlift::effects {
@@ -81,7 +81,7 @@ PixelTraceTable make_trace_table(const ir::Program& program, uint32_t x, uint32_
     TraceRow row;
     row.index = static_cast<uint32_t>(i);
     row.line = ins.loc.line;
-    row.text = as::print_instruction(ins, program.profile);
+    row.text = assembly::print_instruction(ins, program.profile);
     if (ins.op == ir::Opcode::TexDepth || ins.op == ir::Opcode::TexM3x2Depth) {
       row.dest = "oDepth"; // what they write, on both devices
       row.mask = 0x1;

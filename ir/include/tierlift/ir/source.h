@@ -31,7 +31,7 @@ struct SourceFile {
   std::string name; // as given on the command line ("-" shows as "<stdin>")
   std::string text;
   // Read by the preprocessor's #include (name: the path it opened): an input of the command
-  // as much as the listing is (as::included_files).
+  // as much as the listing is (assembly::included_files).
   bool included = false;
 };
 
