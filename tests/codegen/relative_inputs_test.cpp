@@ -24,7 +24,7 @@ const char* kVs = "vs_3_0\ndefi i0, 2, 1, 1, 0\ndef c0, 0, 0, 0, 0\ndcl_position
 
 TEST(CodegenRelativeInputs, ModulesPassSpirvVal) {
   for (const char* text : {kPs, kVs}) {
-    auto parsed = as::parse_text(text, "<test>");
+    auto parsed = assembly::parse_text(text, "<test>");
     ASSERT_TRUE(parsed.program) << ir::render_text(parsed.diags, parsed.sources);
     EXPECT_TRUE(test::compile_valid(*parsed.program, parsed.sources)) << text;
   }
