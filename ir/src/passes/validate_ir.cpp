@@ -140,10 +140,10 @@ Status check_executable(const Program& program, std::string_view backend) {
                fmt::format("not supported yet by {}: {} in {} ({})", backend, what,
                            profile_name(program.profile), why));
   }
-  // Relative addressing: c# everywhere, and a vs_3_0's or ps_3_0's v# read through the table
-  // of its declared inputs (sm3_interface.h relative_input_links). A vs_3_0's o[a0 + n]
-  // writes outputs that link by semantic to 2.0 registers that need not be consecutive, which
-  // neither device indexes yet.
+  // Relative addressing: c# everywhere, a vs_3_0's or ps_3_0's v# read through the table of
+  // its declared inputs (sm3_interface.h relative_input_links) and a vs_3_0's o# written
+  // through the table of its declared outputs (relative_output_links). No profile allows
+  // another relative destination; one built without the assembler is refused here.
   const bool sm3 = program.profile == Profile::vs_3_0 || program.profile == Profile::ps_3_0;
   for (const Instruction& ins : program.code) {
     auto refuse = [&](RegFile f, uint32_t index, SourceLoc loc, std::string_view why) {
@@ -151,11 +151,10 @@ Status check_executable(const Program& program, std::string_view backend) {
                  fmt::format("not supported yet by {}: {} addressed relatively ({})", backend,
                              register_name(f, index), why));
     };
-    if (ins.dst && ins.dst->rel)
+    if (ins.dst && ins.dst->rel &&
+        !(program.profile == Profile::vs_3_0 && ins.dst->file == RegFile::Output))
       refuse(ins.dst->file, ins.dst->index, ins.dst->loc,
-             "a vs_3_0's o# link by semantic to 2.0 registers that need not be consecutive, "
-             "and relative writes into them are not indexed yet; relative reads of c# and v# "
-             "run");
+             "only a vs_3_0's o# is written relatively");
     for (const SrcOperand& s : ins.src)
       if (s.rel && s.file != RegFile::Const && !(sm3 && s.file == RegFile::Input))
         refuse(s.file, s.index, s.loc, "only c# and, in vs_3_0 and ps_3_0, v# are");
