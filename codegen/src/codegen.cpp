@@ -23,6 +23,7 @@ std::optional<ShaderModule> compile(const ir::Program& program, const CodegenOpt
   }
   EmitPlan plan;
   plan.relative_inputs = ir::relative_input_links(program);
+  plan.relative_outputs = ir::relative_output_links(program);
   plan.saturate_color_outputs = ir::saturates_colors(program.profile);
   // Shader model 3's o#/v# become the 2.0 registers of their semantics (sm3_interface.h).
   const ir::Program linked = ir::link_by_semantic(program);

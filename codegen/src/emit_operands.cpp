@@ -300,14 +300,36 @@ void Emitter::store(const PendingStore& st, bool ps1x_range) {
     v = rule::fixed_quantise(arith(4), v, splat(f(scale)), splat(ps1x_max_value()));
   }
   if (st.dst.file == RegFile::DepthOut) writes_depth_ = true;
-  const Id var = register_var(st.dst.file, st.dst.index);
+  if (st.dst.rel) {
+    // o[aL + n] in a vs_3_0: every declared output by o# number (plan.relative_outputs) is
+    // written where the index names it and keeps its value elsewhere; an index outside the
+    // table or on an undeclared o# writes nothing (NUMERICS.md F13). Selects, not branches.
+    const Id idx =
+        b.op(Op::OpIAdd, t_int,
+             {b.const_int(static_cast<int32_t>(st.dst.index)), relative_offset(*st.dst.rel)});
+    for (size_t k = 0; k < plan.relative_outputs.size(); ++k) {
+      const auto& link = plan.relative_outputs[k];
+      if (!link) continue;
+      const Id hit = b.op(Op::OpIEqual, t_bool, {idx, b.const_int(static_cast<int32_t>(k))});
+      write_register(register_var(link->first, link->second), v, st, hit);
+    }
+    return;
+  }
+  write_register(register_var(st.dst.file, st.dst.index), v, st);
+}
+
+void Emitter::write_register(Id var, Id v, const PendingStore& st, Id hit) {
+  const uint8_t mask = st.mask & 0xF;
   if (st.pred) // predicated: the old value where the predicate does not hold
     v = b.op(Op::OpSelect, t_vec4, {st.pred, v, b.op(Op::OpLoad, t_vec4, {var})});
-  if (mask != 0xF) {
+  if (mask != 0xF || hit) {
     const Id old = b.op(Op::OpLoad, t_vec4, {var});
-    uint32_t sel[4];
-    for (uint32_t i = 0; i < 4; ++i) sel[i] = (mask & (1u << i)) ? i : 4 + i;
-    v = b.op(Op::OpVectorShuffle, t_vec4, {v, old, sel[0], sel[1], sel[2], sel[3]});
+    if (mask != 0xF) {
+      uint32_t sel[4];
+      for (uint32_t i = 0; i < 4; ++i) sel[i] = (mask & (1u << i)) ? i : 4 + i;
+      v = b.op(Op::OpVectorShuffle, t_vec4, {v, old, sel[0], sel[1], sel[2], sel[3]});
+    }
+    if (hit) v = b.op(Op::OpSelect, t_vec4, {bsplat(hit), v, old});
   }
   b.op_void(Op::OpStore, {var, v});
 }

@@ -76,12 +76,12 @@ bool prunable(const ir::Program& p) {
 }
 
 // compile_pair after the checks, on programs linked by semantic.
-// `*_links`: ir::relative_input_links of each program before linking.
-std::optional<CompiledPair> compile_linked_pair(const ir::Program& vs, const ir::Program& ps,
-                                                ir::RelativeLinks vs_links,
-                                                ir::RelativeLinks ps_links,
-                                                const CodegenOptions& options,
-                                                ir::DiagnosticSink& diags) {
+// `*_links`: ir::relative_input_links of each program before linking; `vs_out_links`:
+// ir::relative_output_links of the vertex program.
+std::optional<CompiledPair>
+compile_linked_pair(const ir::Program& vs, const ir::Program& ps, ir::RelativeLinks vs_links,
+                    ir::RelativeLinks ps_links, ir::RelativeLinks vs_out_links,
+                    const CodegenOptions& options, ir::DiagnosticSink& diags) {
   CompiledPair pair;
   EmitPlan ps_plan;
   ps_plan.skip = prunable(ps) ? ir::dead_instructions(ps, ir::pixel_live_out(ps))
@@ -101,7 +101,12 @@ std::optional<CompiledPair> compile_linked_pair(const ir::Program& vs, const ir:
   vs_plan.vs_outputs = wanted;
   std::set<Reg> written;
   for (const ir::Instruction& ins : vs.code)
-    if (ins.dst) written.insert({ins.dst->file, ins.dst->index});
+    if (ins.dst && !ins.dst->rel) written.insert({ins.dst->file, ins.dst->index});
+  // o[aL + n] may write any output the vertex program declares.
+  if (ir::writes_outputs_relatively(vs))
+    for (const auto& link : vs_out_links)
+      if (link) written.insert(*link);
+  vs_plan.relative_outputs = std::move(vs_out_links);
   if (written.count({RegFile::RastOut, ir::kRastPts}))
     vs_plan.vs_outputs->insert({RegFile::RastOut, ir::kRastPts});
   for (const Reg& r : ir::dead_outputs(vs, wanted)) {
@@ -162,7 +167,8 @@ std::optional<CompiledPair> compile_pair(const ir::Program& vs_listing,
   const ir::Program vs_linked = ir::link_by_semantic(ir::feed_fog(vs_listing, ps_listing));
   const ir::Program ps_linked = ir::link_by_semantic(ps_listing);
   return compile_linked_pair(vs_linked, ps_linked, ir::relative_input_links(vs_listing),
-                             ir::relative_input_links(ps_listing), options, diags);
+                             ir::relative_input_links(ps_listing),
+                             ir::relative_output_links(vs_listing), options, diags);
 }
 
 } // namespace tierlift::codegen

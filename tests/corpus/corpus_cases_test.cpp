@@ -5,9 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include "skip_policy.h"
 #include "tierlift/corpus/cases.h"
 #include "tierlift/corpus/report.h"
 #include "tierlift/corpus/stages.h"
+#include "tierlift/vulkan/process_device.h"
 
 namespace fs = std::filesystem;
 using namespace tierlift::corpus;
@@ -112,10 +114,10 @@ TEST(CorpusStages, InvalidListingFailsValidateAndSkipsTheRest) {
   EXPECT_EQ(r.failed_stage(), "validate");
 }
 
-TEST(CorpusStages, ShaderModel3RunsAndARelativeOutputIsUnsupportedNotAFailure) {
-  // The front end takes all three; SPIR-V runs the first and the v0[aL] read of the second
-  // (the differential run follows when a device is given), not yet the o[aL] write of the
-  // third (NUMERICS.md F13).
+TEST(CorpusStages, ShaderModel3RunsAndARelativeOutputWriteToo) {
+  // The front end takes all three; SPIR-V runs the first, the v0[aL] read of the second and
+  // the o[aL] write of the third (NUMERICS.md F13); with a device the third's differential
+  // run agrees.
   CaseResult r = run_listing("c", "c.psh", "ps_3_0\nmov oC0, c0\n", no_device());
   EXPECT_EQ(stage_verdict(r, kStageParse), Verdict::Pass);
   EXPECT_EQ(stage_verdict(r, kStageValidate), Verdict::Pass);
@@ -127,14 +129,20 @@ TEST(CorpusStages, ShaderModel3RunsAndARelativeOutputIsUnsupportedNotAFailure) {
                              no_device());
   EXPECT_EQ(stage_verdict(g, kStageValidate), Verdict::Pass);
   EXPECT_EQ(stage_verdict(g, kStageSpirv), Verdict::Pass);
-  CaseResult h = run_listing("h", "h.vsh",
-                             "vs_3_0\ndcl_position v0\ndcl_position o0\ndcl_texcoord0 o1\n"
+  const std::string h_text = "vs_3_0\ndcl_position v0\ndcl_position o0\ndcl_texcoord0 o1\n"
                              "defi i0, 1, 1, 1, 0\nmov o0, v0\nloop aL, i0\nmov o[aL], v0\n"
-                             "endloop\n",
-                             no_device());
+                             "endloop\n";
+  CaseResult h = run_listing("h", "h.vsh", h_text, no_device());
   EXPECT_EQ(stage_verdict(h, kStageValidate), Verdict::Pass);
-  EXPECT_EQ(stage_verdict(h, kStageSpirv), Verdict::Unsupported);
-  EXPECT_EQ(h.verdict, Verdict::Unsupported);
+  EXPECT_EQ(stage_verdict(h, kStageSpirv), Verdict::Pass) << h.stages.back().message;
+  EXPECT_EQ(h.verdict, Verdict::Pass);
+  tierlift::ir::Result<tierlift::vulkan::Device*> device = tierlift::vulkan::process_device({});
+  if (!device) TIERLIFT_SKIP_UNLESS_REQUIRED(::tierlift::test::kRequireVulkan, "no Vulkan device");
+  StageOptions o;
+  o.device = *device;
+  const CaseResult d = run_listing("h", "h.vsh", h_text, o);
+  ASSERT_EQ(d.stages.back().stage, kStageDiff);
+  EXPECT_EQ(d.stages.back().verdict, Verdict::Pass) << d.stages.back().message;
 }
 
 TEST(CorpusStages, ShaderModel4IsUnsupportedNotAFailure) {

@@ -249,3 +249,41 @@ TEST(VmSm3Flow, Vs30RelativeInputRead) {
   in.v[2] = {0.5f, 0.25f, 0.125f, 8};
   EXPECT_VEC4(run_vs(vm, in).tex[0], 1.5f, 2.25f, 3.125f, 12);
 }
+
+// A vs_3_0 writes its outputs relatively (o[aL + n]): o3, o4, o5 are declared texcoord2,
+// texcoord0, color0, so aL = 3, 4, 5 writes oT2, oT0, oD0 (not three consecutive
+// registers). r0 = c0, then c0 + c1, then c0 + 2·c1: (1, 2, 3, 4), (11, 22, 33, 44),
+// (21, 42, 63, 84).
+TEST(VmSm3Flow, Vs30RelativeOutputWrite) {
+  ShaderVM vm = vm_of(parse("vs_3_0\ndefi i0, 3, 3, 1, 0\ndef c0, 1, 2, 3, 4\n"
+                            "def c1, 10, 20, 30, 40\ndcl_position v0\n"
+                            "dcl_position o0\ndcl_texcoord2 o3\ndcl_texcoord0 o4\n"
+                            "dcl_color0 o5\nmov o0, v0\nmov r0, c0\n"
+                            "loop aL, i0\nmov o[aL], r0\nadd r0, r0, c1\nendloop\n"),
+                      {});
+  const VertexOutput out = run_vs(vm);
+  EXPECT_VEC4(out.tex[2], 1, 2, 3, 4);
+  EXPECT_VEC4(out.tex[0], 11, 22, 33, 44);
+  EXPECT_VEC4(out.color[0], 21, 42, 63, 84);
+  EXPECT_EQ(out.tex_written, 0b101);
+  EXPECT_EQ(out.color_written, 0b01);
+}
+
+// An index on an undeclared o# (aL = 6, 7) or outside o0-o11 (a0.x = 12, -1) writes
+// nothing (NUMERICS.md F13); the mask and _sat apply to a write that lands: o[aL + 1].yw_sat
+// at aL = 4 writes .y = sat(3) = 1 and .w = 0.5 of o5 (color0) over its (9, 9, 9, 9).
+TEST(VmSm3Flow, Vs30RelativeOutputOutsideTheTableWritesNothing) {
+  ShaderVM vm = vm_of(parse("vs_3_0\ndefi i0, 2, 6, 1, 0\ndefi i1, 1, 4, 1, 0\n"
+                            "def c0, 7, 7, 7, 7\ndef c1, 12, -1, 0, 0\ndef c2, 9, 9, 9, 9\n"
+                            "def c3, -2, 3, 5, 0.5\ndcl_position v0\n"
+                            "dcl_position o0\ndcl_texcoord2 o3\ndcl_color0 o5\nmov o0, v0\n"
+                            "mov o3, c2\nmov o5, c2\nloop aL, i0\nmov o[aL], c0\nendloop\n"
+                            "mova a0.x, c1.x\nmov o[a0.x], c0\nmova a0.x, c1.y\n"
+                            "mov o[a0.x], c0\nloop aL, i1\nmov_sat o[aL + 1].yw, c3\nendloop\n"),
+                      {});
+  const VertexOutput out = run_vs(vm);
+  EXPECT_VEC4(out.tex[2], 9, 9, 9, 9);
+  EXPECT_VEC4(out.color[0], 9, 1, 9, 0.5f);
+  EXPECT_EQ(out.tex_written, 0b100);
+  EXPECT_EQ(out.color_written, 0b01);
+}

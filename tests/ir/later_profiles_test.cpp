@@ -288,7 +288,7 @@ TEST(LaterProfiles, Fog0IsAnExtraSemanticAndAVs20FeedsItsOFog) {
 
 // vs_3_0 may address v# and o# with aL: relative v# reads run (through the table of declared
 // inputs, NUMERICS.md F13), relative o# writes are refused at the operand.
-TEST(LaterProfiles, RelativeOutputsAreRefusedAtTheOperandRelativeInputsRun) {
+TEST(LaterProfiles, RelativeOutputsRunInVs30OnlyAndAreRefusedAtTheOperandElsewhere) {
   Program p;
   p.profile = Profile::vs_3_0;
   Instruction mov;
@@ -306,11 +306,14 @@ TEST(LaterProfiles, RelativeOutputsAreRefusedAtTheOperandRelativeInputsRun) {
   EXPECT_TRUE(check_executable(p, "SPIR-V").ok());
   p.code[0].dst = DstOperand{RegFile::Output, 1, kFullMask, {1, 2, 5, 2}};
   p.code[0].dst->rel = RelAddr{RegFile::Loop, 0, {1, 2, 7, 2}};
+  EXPECT_TRUE(check_executable(p, "SPIR-V").ok()); // o[aL + 1] runs (NUMERICS.md F13)
+  // No profile writes another register relatively: r[aL] built without the assembler.
+  p.code[0].dst->file = RegFile::Temp;
   Status s = check_executable(p, "SPIR-V");
   ASSERT_FALSE(s.ok());
   EXPECT_EQ(s.diagnostics()[0].loc.col, 5u);
-  EXPECT_NE(s.diagnostics()[0].message.find("o1 addressed relatively (a vs_3_0's o# link by "
-                                            "semantic"),
+  EXPECT_NE(s.diagnostics()[0].message.find("r1 addressed relatively (only a vs_3_0's o# is "
+                                            "written relatively)"),
             std::string::npos)
       << s.diagnostics()[0].message;
 }
@@ -364,6 +367,37 @@ TEST(LaterProfiles, RelativeInputLinksFollowTheSemantics) {
   EXPECT_FALSE(v[0].has_value());
   vs.profile = Profile::vs_2_0;
   EXPECT_TRUE(relative_input_links(vs).empty());
+}
+
+// relative_output_links: a vs_3_0's o# by number → the 2.0 registers their semantics link
+// to (texcoord2 → oT2, color0 → oD0, position0 → oPos); undeclared numbers empty; twelve
+// entries; other profiles no table. link_by_semantic keeps a relative destination's o#.
+TEST(LaterProfiles, RelativeOutputLinksFollowTheSemantics) {
+  Program vs;
+  vs.profile = Profile::vs_3_0;
+  vs.decls = {linked(RegFile::Output, 0, DeclUsage::Position, 0, 1),
+              linked(RegFile::Output, 3, DeclUsage::TexCoord, 2, 2),
+              linked(RegFile::Output, 4, DeclUsage::TexCoord, 0, 3),
+              linked(RegFile::Output, 5, DeclUsage::Color, 0, 4)};
+  const RelativeLinks l = relative_output_links(vs);
+  ASSERT_EQ(l.size(), 12u);
+  EXPECT_EQ(l[0], (std::pair{RegFile::RastOut, kRastPos}));
+  EXPECT_EQ(l[3], (std::pair{RegFile::TexCrdOut, 2u}));
+  EXPECT_EQ(l[4], (std::pair{RegFile::TexCrdOut, 0u}));
+  EXPECT_EQ(l[5], (std::pair{RegFile::AttrOut, 0u}));
+  EXPECT_FALSE(l[1].has_value());
+  EXPECT_FALSE(l[6].has_value());
+  Instruction mov;
+  mov.op = Opcode::Mov;
+  mov.dst = DstOperand{RegFile::Output, 3, kFullMask, {}};
+  mov.dst->rel = RelAddr{RegFile::Loop, 0, {}};
+  vs.code.push_back(mov);
+  EXPECT_TRUE(writes_outputs_relatively(vs));
+  const Program linked_vs = link_by_semantic(vs);
+  EXPECT_EQ(linked_vs.code[0].dst->file, RegFile::Output);
+  EXPECT_EQ(linked_vs.code[0].dst->index, 3u);
+  vs.profile = Profile::vs_2_0;
+  EXPECT_TRUE(relative_output_links(vs).empty());
 }
 
 // texldl runs in both stages: ps_3_0's reads the pixel samplers, vs_3_0's (vertex texture

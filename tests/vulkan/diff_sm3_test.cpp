@@ -348,6 +348,37 @@ TEST_F(VulkanTest, RelativeInputReadsIndexTheDeclaredInputsByNumber) {
       }
 }
 
+// NUMERICS.md F13: a vs_3_0's o[aL + n] writes the output declared as o# n + aL, wherever
+// its semantic lands. o3, o4, o5 are texcoord2, texcoord0, color0: aL = 3, 4, 5 writes r0 =
+// c0 + u, then + c1, then + 2·c1 into them: texcoord2 = (1, 2, 3, 4) + u, texcoord0 = (11,
+// 22, 33, 44) + u, color0 = (21, 42, 63, 84) + u (unclamped, 3.0 to 3.0). Writes on o6
+// (undeclared, aL = 6), o[a0.x] with a0.x = 12 and -1 (outside o0-o11) write nothing. The
+// pixel stage adds texcoord2 + 2·texcoord0 + 4·color0 = (107, 214, 321, 428) + 7u.
+TEST_F(VulkanTest, RelativeOutputWritesIndexTheDeclaredOutputsByNumber) {
+  const std::string vs = "vs_3_0\ndefi i0, 3, 3, 1, 0\ndefi i1, 1, 6, 1, 0\n"
+                         "def c0, 1, 2, 3, 4\ndef c1, 10, 20, 30, 40\ndef c2, 12, -1, 0, 0\n"
+                         "def c3, 1000, 1000, 1000, 1000\ndcl_position v0\ndcl_texcoord v3\n"
+                         "dcl_position o0\ndcl_texcoord2 o3\ndcl_texcoord0 o4\n"
+                         "dcl_color0 o5\nmov o0, v0\nadd r0, c0, v3.x\nloop aL, i0\n"
+                         "mov o[aL], r0\nadd r0, r0, c1\nendloop\nloop aL, i1\n"
+                         "mov o[aL], c3\nendloop\nmova a0.xy, c2\nmov o[a0.x], c3\n"
+                         "mov o[a0.y], c3\n";
+  const std::string ps = "ps_3_0\ndef c0, 2, 4, 0, 0\ndcl_texcoord0 v0\ndcl_texcoord2 v1\n"
+                         "dcl_color0 v2\nmov r1, v1\nmad r0, v0, c0.x, r1\nmad oC0, v2, c0.y, r0\n";
+  DiffResult r = run_diff(*dev, vs, ps, DiffSetup{});
+  ASSERT_TRUE(r.ok);
+  EXPECT_LE(r.diff.max_scaled, 1e-5) << r.diff.first_bad;
+  for (const img::Image* im : {&r.cpu, &r.vk})
+    for (uint32_t y = 0; y < kDiffH; ++y)
+      for (uint32_t x = 0; x < kDiffW; ++x) {
+        const float u = (x + 0.5f) / kDiffW;
+        const float want[4] = {107 + 7 * u, 214 + 7 * u, 321 + 7 * u, 428 + 7 * u};
+        const float* px = &im->rgba[(size_t{y} * kDiffW + x) * 4];
+        for (int c = 0; c < 4; ++c)
+          ASSERT_NEAR(px[c], want[c], 1e-5f * want[c]) << "pixel (" << x << ", " << y << ") ." << c;
+      }
+}
+
 // NUMERICS.md F12: without multisampling `_centroid` samples where a plain input does, the
 // pixel centre (a covered pixel's one sample), on both devices: the interpolated texcoord is
 // the same image bit for bit with and without it.

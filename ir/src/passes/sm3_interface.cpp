@@ -205,7 +205,7 @@ Program link_by_semantic(const Program& program) {
   };
   for (Declaration& d : out.decls) rename(d.reg.file, d.reg.index);
   for (Instruction& ins : out.code) {
-    if (ins.dst) rename(ins.dst->file, ins.dst->index);
+    if (ins.dst && !ins.dst->rel) rename(ins.dst->file, ins.dst->index); // relative_output_links
     for (SrcOperand& s : ins.src)
       if (!s.rel) rename(s.file, s.index); // v[aL + n] indexes relative_input_links
   }
@@ -225,6 +225,21 @@ RelativeLinks relative_input_links(const Program& program) {
       if (index < out.size()) out[index] = reg;
   }
   return out;
+}
+
+RelativeLinks relative_output_links(const Program& program) {
+  RelativeLinks out;
+  if (program.profile != Profile::vs_3_0) return out;
+  out.resize(12);
+  for (const auto& [index, reg] : renames(program, RegFile::Output))
+    if (index < out.size()) out[index] = reg;
+  return out;
+}
+
+bool writes_outputs_relatively(const Program& program) {
+  for (const Instruction& ins : program.code)
+    if (ins.dst && ins.dst->rel && ins.dst->file == RegFile::Output) return true;
+  return false;
 }
 
 bool reads_inputs_relatively(const Program& program) {

@@ -110,13 +110,13 @@ Status check_executable(const Program& program, std::string_view backend) {
       std::end(kExecutableProfiles))
     return ok_status();
   // Shader models 2.x and 3.0 run whole (texldl in both stages, NUMERICS.md F11 and F14; a
-  // predicate on flow control is refused by validate_ir as not Direct3D 9) except relative
-  // writes to o#; name each operand that uses one, so the user sees what to change.
+  // predicate on flow control is refused by validate_ir as not Direct3D 9). What is left to
+  // check is relative addressing a program built without the assembler may hold.
   DiagnosticSink sink;
-  // Relative addressing: c# everywhere, and a vs_3_0's or ps_3_0's v# read through the table
-  // of its declared inputs (sm3_interface.h relative_input_links). A vs_3_0's o[a0 + n]
-  // writes outputs that link by semantic to 2.0 registers that need not be consecutive, which
-  // neither device indexes yet.
+  // Relative addressing: c# everywhere, a vs_3_0's or ps_3_0's v# read through the table of
+  // its declared inputs (sm3_interface.h relative_input_links) and a vs_3_0's o# written
+  // through the table of its declared outputs (relative_output_links). No profile allows
+  // another relative destination; one built without the assembler is refused here.
   const bool sm3 = program.profile == Profile::vs_3_0 || program.profile == Profile::ps_3_0;
   for (const Instruction& ins : program.code) {
     auto refuse = [&](RegFile f, uint32_t index, SourceLoc loc, std::string_view why) {
@@ -124,11 +124,10 @@ Status check_executable(const Program& program, std::string_view backend) {
                  fmt::format("not supported yet by {}: {} addressed relatively ({})", backend,
                              register_name(f, index), why));
     };
-    if (ins.dst && ins.dst->rel)
+    if (ins.dst && ins.dst->rel &&
+        !(program.profile == Profile::vs_3_0 && ins.dst->file == RegFile::Output))
       refuse(ins.dst->file, ins.dst->index, ins.dst->loc,
-             "a vs_3_0's o# link by semantic to 2.0 registers that need not be consecutive, "
-             "and relative writes into them are not indexed yet; relative reads of c# and v# "
-             "run");
+             "only a vs_3_0's o# is written relatively");
     for (const SrcOperand& s : ins.src)
       if (s.rel && s.file != RegFile::Const && !(sm3 && s.file == RegFile::Input))
         refuse(s.file, s.index, s.loc, "only c# and, in vs_3_0 and ps_3_0, v# are");

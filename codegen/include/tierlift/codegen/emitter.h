@@ -33,6 +33,9 @@ struct EmitPlan {
   // v[aL + n] of a vs_3_0/ps_3_0: the linked register of each v# number
   // (ir::relative_input_links of the program before linking).
   ir::RelativeLinks relative_inputs;
+  // o[aL + n] of a vs_3_0: the linked register of each o# number
+  // (ir::relative_output_links of the program before linking).
+  ir::RelativeLinks relative_outputs;
   // Vertex stage: oD# leave it saturated (ir::saturates_vertex_colors in a pair,
   // ir::saturates_colors of the program alone).
   bool saturate_color_outputs = true;
@@ -160,6 +163,9 @@ public:
   Id bumpenv(uint32_t stage, uint32_t which); // ps_1_x: 0 matrix, 1 luminance (vec4)
   Id aL_var_ = 0;
   void store(const PendingStore& st, bool ps1x_range);
+  // The masked, predicated write of v into one register variable; where `hit` (a bool) is
+  // given, the register keeps its old value unless it holds (o[aL + n], NUMERICS.md F13).
+  void write_register(Id var, Id v, const PendingStore& st, Id hit = 0);
   Id ps1x_max_value() const { return spec_max_value_; }
 
   // ---- instruction emitters (emit_arith.cpp, emit_texture.cpp, emit_flow.cpp) ----

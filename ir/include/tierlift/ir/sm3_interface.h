@@ -31,8 +31,8 @@ std::optional<std::pair<RegFile, uint32_t>> semantic_register(ShaderStage stage,
 // Errors (rule "not-supported", at the declaration) for what the renaming cannot carry: a
 // pixel program's position0/psize0 (vertex outputs only), an extra semantic with no
 // free slot left, two declarations on one register. Adds nothing for a
-// program of another profile. (o# addressed relatively is refused by ir::check_executable;
-// v# read relatively runs through relative_input_links.)
+// program of another profile. (v# read relatively runs through relative_input_links, o#
+// written relatively through relative_output_links.)
 void check_semantic_interface(const Program& program, std::string_view backend,
                               DiagnosticSink& sink);
 
@@ -46,7 +46,8 @@ Status check_semantic_pair(const Program& vertex, const Program& pixel);
 // renamed to its semantic_register or, for an extra semantic, its texcoord slot. Programs of other
 // profiles come back unchanged. Call only on a program check_semantic_interface accepts.
 // A source read relatively (v[aL + n]) keeps its v# number: it indexes
-// relative_input_links, not one register.
+// relative_input_links, not one register; a destination written relatively (o[aL + n])
+// keeps its o# number likewise: it indexes relative_output_links.
 Program link_by_semantic(const Program& program);
 
 // A vs_3_0 or ps_3_0 may read its inputs relatively, v[aL + n] (NUMERICS.md F13). Renamed by
@@ -59,6 +60,18 @@ Program link_by_semantic(const Program& program);
 // other profiles. Takes the program before linking.
 using RelativeLinks = std::vector<std::optional<std::pair<RegFile, uint32_t>>>;
 RelativeLinks relative_input_links(const Program& program);
+
+// A vs_3_0 may write its outputs relatively, o[aL + n] or o[a0.c + n] (NUMERICS.md F13), the
+// mirror of relative_input_links: entry k is the 2.0 register o_k is renamed to by
+// link_by_semantic, nullopt where the program declares no o_k. A write whose index falls
+// outside the table or on an undeclared o_k writes nothing (Direct3D 9 leaves it
+// undefined); otherwise the write mask, _sat and a predicate apply as to a plain write of
+// that register. Sized to vs_3_0's 12 o#; empty for the other profiles. Takes the program
+// before linking.
+RelativeLinks relative_output_links(const Program& program);
+
+// Whether some instruction writes an o# relatively (a destination on RegFile::Output with rel).
+bool writes_outputs_relatively(const Program& program);
 
 // Whether some instruction reads a v# relatively (a source on RegFile::Input with rel).
 bool reads_inputs_relatively(const Program& program);

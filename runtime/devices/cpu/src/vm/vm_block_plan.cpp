@@ -305,7 +305,8 @@ std::unique_ptr<PixelBlockVM> PixelBlockVM::create(const ir::Program& program,
     if (st.ins->pred || st.exec == vm::exec_setp) return nullptr;
     b.op = *bop;
     if (b.op == BlockOp::Arith && st.exec == vm::exec_arith_pair) b.op = BlockOp::ArithPair;
-    if (st.dst.kind == vm::DstKind::AddrFloor || st.dst.kind == vm::DstKind::AddrRound)
+    if (st.dst.kind == vm::DstKind::AddrFloor || st.dst.kind == vm::DstKind::AddrRound ||
+        st.dst.kind == vm::DstKind::OutputRel)
       return nullptr;
     // Operands the executor reads (texkill reads its register as src[0]).
     const bool reads_srcs = b.op != BlockOp::Tex && b.op != BlockOp::TexCoord &&

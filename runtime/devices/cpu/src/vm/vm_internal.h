@@ -57,11 +57,13 @@ struct SrcDesc {
   bool simple = false;       // plain register read: no clamp, swizzle or modifier
 };
 
-enum class DstKind : uint8_t { None, Slot, AddrFloor, AddrRound };
+// OutputRel: o[aL + n] of a vs_3_0, through Prepared::rel_outputs.
+enum class DstKind : uint8_t { None, Slot, AddrFloor, AddrRound, OutputRel };
 
 struct DstDesc {
   DstKind kind = DstKind::None;
-  uint16_t slot = 0;
+  uint16_t slot = 0; // flat slot (Slot), o# number (OutputRel)
+  int8_t rel = -1;   // OutputRel: 0..3 = a0.x..w, 4 = aL
   uint8_t mask = 0xF;
   float scale = 1.0f; // instruction shift as a power of two (ps_1_x)
   bool sat = false;
@@ -123,6 +125,9 @@ struct Prepared {
   // v[aL + n] (vs_3_0, ps_3_0): the flat slot each v# number is read from once linked, -1
   // where none is declared (ir::relative_input_links).
   std::vector<int16_t> rel_inputs;
+  // o[aL + n] (vs_3_0): the flat slot each o# number writes once linked, -1 where none is
+  // declared (ir::relative_output_links).
+  std::vector<int16_t> rel_outputs;
   uint8_t fog_component = 0, pts_component = 0; // scalar outputs written via .y etc.
 };
 

@@ -81,6 +81,12 @@ ir::Result<DstDesc> decode_dst(const ir::DstOperand& op, const ir::InstrMods& mo
     d.kind = p.vs11 ? DstKind::AddrFloor : DstKind::AddrRound;
     return d;
   }
+  if (op.file == RegFile::Output && op.rel) { // vs_3_0 o[aL + n]: the output table
+    d.kind = DstKind::OutputRel;
+    d.slot = static_cast<uint16_t>(op.index > 0xFFFF ? 0xFFFF : op.index);
+    d.rel = op.rel->file == RegFile::Loop ? 4 : static_cast<int8_t>(op.rel->component & 3);
+    return d; // never `plain`: the store resolves the slot
+  }
   int slot = flat_slot(op.file, op.index, p.program.stage());
   if (slot < 0)
     return ir::fail("cpu", std::string(kVmRule),
@@ -164,6 +170,19 @@ template <Denormals D> void store_modified(const DstDesc& d, const Vec4& value, 
       if (d.mask & (1 << i)) inv.a0[i] = num::legacy_mova_round<D>(value[i]);
     return;
   case DstKind::Slot: break;
+  case DstKind::OutputRel: {
+    // Outside the table or an undeclared o#: nothing is written (NUMERICS.md F13).
+    const auto& table = inv.prog->rel_outputs;
+    const int64_t k = int64_t{d.slot} + (d.rel == 4 ? inv.al : inv.a0[d.rel]);
+    if (k < 0 || k >= static_cast<int64_t>(table.size()) || table[static_cast<size_t>(k)] < 0)
+      return;
+    DstDesc resolved = d;
+    resolved.kind = DstKind::Slot;
+    resolved.slot = static_cast<uint16_t>(table[static_cast<size_t>(k)]);
+    resolved.out_bit = static_cast<uint16_t>(1u << (resolved.slot - kOutBase));
+    store_modified<D>(resolved, value, inv);
+    return;
+  }
   }
   Vec4& r = inv.reg[d.slot];
   for (int i = 0; i < 4; ++i) {

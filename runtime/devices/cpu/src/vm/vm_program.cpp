@@ -270,6 +270,10 @@ ir::Result<Prepared> prepare(const ir::Program& program, const ir::Conventions& 
     p.rel_inputs.push_back(
         link ? static_cast<int16_t>(flat_slot(link->first, link->second, program.stage()))
              : int16_t{-1});
+  for (const auto& link : ir::relative_output_links(program))
+    p.rel_outputs.push_back(
+        link ? static_cast<int16_t>(flat_slot(link->first, link->second, program.stage()))
+             : int16_t{-1});
   p.flush = conv.rounding == ir::Rounding::Llvmpipe;
   // Relative reads may reach any constant the device offers: 256 for vertex shaders (the
   // value DXVK and most D3D9 drivers report for MaxVertexShaderConst).
