@@ -18,8 +18,8 @@ using vulkan::test::parse_listing;
 pass::Pass half_depth(pass::CompareFunc func) {
   pass::Pass p;
   p.vertex_program = parse_listing("vs_2_0\ndcl_position v0\nmov oPos, v0\n", "pos.vsh");
-  p.pixel_program =
-      parse_listing("ps_2_0\ndef c0, 0.5, 1, 1, 1\nmov oC0, c0.y\nmov oDepth, c0.x\n", "z.psh");
+  p.pixel_program = parse_listing(
+      "ps_2_0\ndef c0, 0.5, 1, 1, 1\ndef c1, 1, 1, 1, 1\nmov oC0, c1\nmov oDepth, c0.x\n", "z.psh");
   pass::set_full_screen_quad(p, 0);
   p.depth_stencil.depth_test = true;
   p.depth_stencil.depth_write = true;
@@ -66,7 +66,9 @@ TEST(DepthGraph, CheckGraphRefusesMismatchedDepth) {
   auto refused = [](const EffectGraph& graph, const char* why) {
     ir::Status s = check_graph(graph);
     EXPECT_FALSE(s) << why;
-    if (!s) EXPECT_NE(s.message().find(why), std::string::npos) << s.message();
+    if (!s) {
+      EXPECT_NE(s.message().find(why), std::string::npos) << s.message();
+    }
   };
   EffectGraph no_texture = *g;
   no_texture.passes[0].depth.clear();
