@@ -69,17 +69,17 @@ double ms_since(Clock::time_point t0) {
 // The driver's time for one stretch of work: pipeline creations and draw submissions.
 struct DriverTime {
   double create_ms = 0, create_cpu_ms = 0, draw_ms = 0, draw_cpu_ms = 0;
-  long pipelines = 0;
+  long pipelines = 0, submits = 0;
   static DriverTime now() {
     return {vulkan::pipeline_creation_ms(), vulkan::pipeline_creation_cpu_ms(),
-            vulkan::draw_submission_ms(), vulkan::draw_submission_cpu_ms(),
-            vulkan::pipeline_creations()};
+            vulkan::draw_submission_ms(),   vulkan::draw_submission_cpu_ms(),
+            vulkan::pipeline_creations(),   vulkan::queue_submissions()};
   }
   DriverTime since(const DriverTime& before) const {
     DriverTime d = now();
     return {d.create_ms - before.create_ms, d.create_cpu_ms - before.create_cpu_ms,
-            d.draw_ms - before.draw_ms, d.draw_cpu_ms - before.draw_cpu_ms,
-            d.pipelines - before.pipelines};
+            d.draw_ms - before.draw_ms,     d.draw_cpu_ms - before.draw_cpu_ms,
+            d.pipelines - before.pipelines, d.submits - before.submits};
   }
   void add(const DriverTime& o) {
     create_ms += o.create_ms;
@@ -87,6 +87,7 @@ struct DriverTime {
     draw_ms += o.draw_ms;
     draw_cpu_ms += o.draw_cpu_ms;
     pipelines += o.pipelines;
+    submits += o.submits;
   }
 };
 
@@ -146,6 +147,9 @@ void BM_Corpus_InProcess(benchmark::State& state, bool check_only, bool per_set,
   state.counters["floor_ms_per_case"] = lift_driver.create_ms / cases;
   state.counters["floor_cpu_ms_per_case"] = lift_driver.create_cpu_ms / cases;
   state.counters["pipelines_per_case"] = static_cast<double>(lift_driver.pipelines) / cases;
+  // Queue submissions (uploads, draws, read-backs), each a hand-over to lavapipe's queue
+  // thread and back.
+  state.counters["submits_per_case"] = static_cast<double>(lift_driver.submits) / cases;
   state.counters["floor2_ms_per_case"] = (floor.create_ms + floor.draw_ms) / cases;
   state.counters["floor2_cpu_ms_per_case"] = (floor.create_cpu_ms + floor.draw_cpu_ms) / cases;
   state.counters["floor2_draw_cpu_ms_per_case"] = floor.draw_cpu_ms / cases;

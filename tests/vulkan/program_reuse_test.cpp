@@ -54,7 +54,7 @@ TEST_F(ResidentTest, ReuseDrawsEveryConstantSetWithOnePipeline) {
 
 // draw_submission_ms (the second floor of bench/corpus_bench.cpp) counts the submissions that
 // carry draws, and only those: one per draw when each is submitted alone, one for a batch of
-// draws, none for uploads and readbacks.
+// draws, none for uploads and read-backs (queue_submissions counts every submission).
 TEST_F(ResidentTest, DrawSubmissionsCountOnlyTheSubmitsThatDraw) {
   const auto ps = parse_listing("ps_2_0\nmov oC0, c0\n", "constant.psh");
   const cpu::Pass p = quad_pass(two_coords_vs(), ps, {{0, 0, 0, 0}, {0, 0, 0, 0}},
@@ -72,8 +72,10 @@ TEST_F(ResidentTest, DrawSubmissionsCountOnlyTheSubmitsThatDraw) {
   for (int i = 0; i < 3; ++i) ASSERT_TRUE(set.draw(p, StageTextures{}, target).ok());
   EXPECT_EQ(draw_submissions() - before, 2); // recorded, not submitted yet
   img::Image out;
+  const long submits = queue_submissions();
   ASSERT_TRUE(succeeded(set.read(target), out));
-  EXPECT_EQ(draw_submissions() - before, 3); // the batch, at the read; the readback not
+  EXPECT_EQ(draw_submissions() - before, 3);   // the batch, at the read; the read-back not
+  EXPECT_EQ(queue_submissions() - submits, 2); // but counted among all submissions
   EXPECT_GT(draw_submission_ms(), ms_before);
   EXPECT_EQ(out.rgba[0], 0.5f);
 }

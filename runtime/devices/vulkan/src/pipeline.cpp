@@ -21,6 +21,7 @@ std::atomic<int64_t> g_pipeline_creation_cpu_ns{0};
 std::atomic<int64_t> g_draw_submission_ns{0};
 std::atomic<long> g_draw_submissions{0};
 std::atomic<int64_t> g_draw_submission_cpu_ns{0};
+std::atomic<long> g_queue_submissions{0}; // every submit, draws or not
 
 int64_t thread_cpu_ns() {
   timespec t{};
@@ -352,6 +353,13 @@ double draw_submission_cpu_ms() {
 }
 long draw_submissions() {
   return g_draw_submissions.load();
+}
+
+void count_queue_submission() {
+  ++g_queue_submissions;
+}
+long queue_submissions() {
+  return g_queue_submissions.load();
 }
 
 double pipeline_creation_cpu_ms() {

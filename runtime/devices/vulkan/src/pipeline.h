@@ -50,5 +50,7 @@ ir::Status create_pipeline(Device::Impl& d, Cleanup& cleanup, const PipelineDesc
 // draw_submission_ms (pipeline_stats.h): where llvmpipe compiles a pipeline's shaders to
 // machine code, at the first draw that uses it.
 ir::Status timed_draw_submission(const std::function<ir::Status()>& submit);
+// Counts one vkQueueSubmit for queue_submissions (pipeline_stats.h).
+void count_queue_submission();
 
 } // namespace tierlift::vulkan

@@ -24,5 +24,8 @@ double draw_submission_ms();
 double draw_submission_cpu_ms();
 // The number of those submissions.
 long draw_submissions();
+// Every queue submission (each waited for: uploads, draws, read-backs), every device of this
+// process so far: each is a hand-over to lavapipe's queue thread and back.
+long queue_submissions();
 
 } // namespace tierlift::vulkan
