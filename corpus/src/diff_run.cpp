@@ -199,9 +199,10 @@ pass::RunRequest request(const ir::Program& program,
 // One device's image of the graph, or why not.
 ir::Result<img::Image> draw(const effects::EffectGraph& graph, effects::PassDevice& device) {
   effects::ImageMap images;
-  ir::Result<effects::GraphRun> run = effects::run_graph(graph, device, images);
+  const std::string target(effects::kSinglePassTarget);
+  ir::Result<effects::GraphRun> run = effects::run_graph_reading(graph, device, images, {target});
   if (!run) return run.failure();
-  return std::move(images.at(std::string(effects::kSinglePassTarget)));
+  return std::move(images.at(target));
 }
 
 std::string why(const std::vector<ir::Diagnostic>& ds) {

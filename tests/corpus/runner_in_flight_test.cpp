@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "tierlift/corpus/report.h"
 #include "tierlift/corpus/runner.h"
 
 namespace fs = std::filesystem;
@@ -86,4 +87,34 @@ TEST(CorpusRunner, ACaseWrittenAheadOfADeathRunsInTheNextWorker) {
   EXPECT_EQ(v["b"], corpus::Verdict::Crash);
   EXPECT_EQ(v["c"], corpus::Verdict::Pass);
   EXPECT_EQ(v["d"], corpus::Verdict::Pass);
+}
+
+// run_corpus returns the results as it recorded them, not read back from results.jsonl: they
+// must be what the file holds, the last line of each id (a rerun's, a resumed run's cases).
+TEST(CorpusRunner, TheResultsReturnedAreWhatResultsJsonlHolds) {
+  const fs::path out =
+      fs::temp_directory_path() / ("tierlift_returned_" + std::to_string(::getpid()));
+  fs::remove_all(out);
+  fs::create_directories(out);
+  corpus::RunOptions o;
+  o.worker_argv = {"/bin/bash", "-c", kDiesOnB, "worker", out.string()};
+  o.jobs = 1;
+  o.timeout_s = 20;
+  o.out_dir = (out / "run").string();
+  o.repro = [](const corpus::Case& c) { return "again " + c.id; };
+  auto first = corpus::run_corpus(cases({"a", "b", "c"}), o); // b dies, then passes its rerun
+  ASSERT_TRUE(first) << first.message();
+  o.resume = true;
+  auto second = corpus::run_corpus(cases({"a", "b", "c", "d"}), o); // d alone runs
+  ASSERT_TRUE(second) << second.message();
+  const auto file = corpus::read_results_jsonl((out / "run" / "results.jsonl").string());
+  ASSERT_EQ(second->size(), 4u);
+  ASSERT_EQ(file.size(), 4u);
+  for (size_t i = 0; i < file.size(); ++i)
+    EXPECT_EQ(corpus::to_json((*second)[i]).dump(), corpus::to_json(file[i]).dump());
+  EXPECT_EQ((*second)[1].id, "b");
+  EXPECT_EQ((*second)[1].attempt, 2u); // the rerun's line, the last of b's two
+  EXPECT_TRUE((*second)[1].flaky);
+  EXPECT_EQ((*second)[3].repro, "again d");
+  fs::remove_all(out);
 }

@@ -45,6 +45,40 @@ TEST(SinglePassRun, TheCpuDrawsTheConstantColourEverywhere) {
   EXPECT_TRUE(run->vulkan_device.empty());
 }
 
+// run_graph_reading reads back only the textures it is asked for (the corpus's differential
+// run: its target, not the inputs it uploaded); run_graph reads back every texture.
+class CountingReads final : public PassDevice {
+public:
+  std::string name() const override { return "counting"; }
+  ir::Status begin_run(const EffectGraph& g, const ImageMap& in) override {
+    return cpu_.begin_run(g, in);
+  }
+  ir::Result<pass::DrawReport> draw(const PassDesc& p) override { return cpu_.draw(p); }
+  ir::Result<img::Image> read_texture(const std::string& name) override {
+    read.push_back(name);
+    return cpu_.read_texture(name);
+  }
+  std::vector<std::string> read;
+
+private:
+  CpuPassDevice cpu_{1};
+};
+
+TEST(SinglePassRun, RunGraphReadingReadsBackOnlyWhatItIsAsked) {
+  EffectGraph g = constant_colour_graph(2, 2);
+  g.textures.push_back({"unused_input", 2, 2, img::Format::RGBA32F, true});
+  const std::string target(kSinglePassTarget);
+  CountingReads all, one;
+  ImageMap in_all{{"unused_input", img::Image(2, 2, img::Format::RGBA32F)}}, in_one = in_all;
+  ASSERT_TRUE(run_graph(g, all, in_all));
+  ASSERT_TRUE(run_graph_reading(g, one, in_one, {target}));
+  EXPECT_EQ(all.read.size(), g.textures.size()); // every texture, the input too
+  EXPECT_EQ(one.read, std::vector<std::string>{target});
+  ASSERT_TRUE(in_one.contains(target));
+  EXPECT_EQ(in_one.at(target).rgba, in_all.at(target).rgba); // the same image
+  EXPECT_EQ(in_one.at(target).rgba[1], kColour[1]);
+}
+
 TEST(SinglePassRun, FailuresNameTheirRule) {
   // The refused run creates and destroys a Vulkan instance; a device the program keeps
   // (vk_test_util.h) keeps lavapipe loaded, so LeakSanitizer can still name the driver's

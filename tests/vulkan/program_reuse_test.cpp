@@ -52,5 +52,33 @@ TEST_F(ResidentTest, ReuseDrawsEveryConstantSetWithOnePipeline) {
   EXPECT_EQ(set.reused_pipelines(), 1u);
 }
 
+// draw_submission_ms (the second floor of bench/corpus_bench.cpp) counts the submissions that
+// carry draws, and only those: one per draw when each is submitted alone, one for a batch of
+// draws, none for uploads and read-backs (queue_submissions counts every submission).
+TEST_F(ResidentTest, DrawSubmissionsCountOnlyTheSubmitsThatDraw) {
+  const auto ps = parse_listing("ps_2_0\nmov oC0, c0\n", "constant.psh");
+  const cpu::Pass p = quad_pass(two_coords_vs(), ps, {{0, 0, 0, 0}, {0, 0, 0, 0}},
+                                {{0.5f, 0.25f, 1, 1}}, cpu::BlendMode::Replace);
+  TextureSet set(*dev);
+  TextureId target{};
+  ASSERT_TRUE(succeeded(set.create(2, 2, img::Format::RGBA32F), target));
+  const long before = draw_submissions();
+  const double ms_before = draw_submission_ms();
+  ASSERT_TRUE(set.upload(target, img::Image(2, 2, img::Format::RGBA32F)).ok());
+  EXPECT_EQ(draw_submissions() - before, 0); // an upload draws nothing
+  for (int i = 0; i < 2; ++i) ASSERT_TRUE(set.draw(p, StageTextures{}, target).ok());
+  EXPECT_EQ(draw_submissions() - before, 2); // each draw submitted alone
+  ASSERT_TRUE(set.set_batching(true).ok());
+  for (int i = 0; i < 3; ++i) ASSERT_TRUE(set.draw(p, StageTextures{}, target).ok());
+  EXPECT_EQ(draw_submissions() - before, 2); // recorded, not submitted yet
+  img::Image out;
+  const long submits = queue_submissions();
+  ASSERT_TRUE(succeeded(set.read(target), out));
+  EXPECT_EQ(draw_submissions() - before, 3);   // the batch, at the read; the read-back not
+  EXPECT_EQ(queue_submissions() - submits, 2); // but counted among all submissions
+  EXPECT_GT(draw_submission_ms(), ms_before);
+  EXPECT_EQ(out.rgba[0], 0.5f);
+}
+
 } // namespace
 } // namespace tierlift::vulkan::test

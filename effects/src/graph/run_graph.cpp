@@ -66,10 +66,13 @@ ir::Status begin_graph(const EffectGraph& graph, PassDevice& device, ImageMap& i
   return ir::ok_status();
 }
 
-// Every texture back into `images` (a failure leaves the map as it was given).
-ir::Status read_all(const EffectGraph& graph, PassDevice& device, ImageMap& images) {
+// Every texture back into `images`, or those `only` names when given (a failure leaves the
+// map as it was given).
+ir::Status read_all(const EffectGraph& graph, PassDevice& device, ImageMap& images,
+                    const std::vector<std::string>* only = nullptr) {
   ImageMap out;
   for (const TextureDesc& t : graph.textures) {
+    if (only && std::find(only->begin(), only->end(), t.name) == only->end()) continue;
     ir::Result<img::Image> image = device.read_texture(t.name);
     if (!image)
       return run_error(
@@ -123,8 +126,12 @@ ir::Status record_pass(const PassDesc& desc, PassDevice& device, bool keep_pass_
 
 } // namespace
 
-ir::Result<GraphRun> run_graph(const EffectGraph& graph, PassDevice& device, ImageMap& images,
-                               bool keep_pass_images, const PassProgress& progress) {
+namespace {
+
+ir::Result<GraphRun> run_graph_reading_back(const EffectGraph& graph, PassDevice& device,
+                                            ImageMap& images, bool keep_pass_images,
+                                            const PassProgress& progress,
+                                            const std::vector<std::string>* read_back) {
   GraphRun run;
   auto t_all = std::chrono::steady_clock::now();
   {
@@ -153,12 +160,25 @@ ir::Result<GraphRun> run_graph(const EffectGraph& graph, PassDevice& device, Ima
     run.passes.push_back(std::move(rec));
   }
   // Every texture back into the map (a failed run leaves the map as it was given).
-  if (ir::Status e = read_all(graph, device, images); !e) return e.failure();
+  if (ir::Status e = read_all(graph, device, images, read_back); !e) return e.failure();
   for (const TextureDesc& t : graph.textures)
     if (std::vector<uint8_t> mask; device.rounding_midpoints(t.name, mask))
       run.midpoints[t.name] = std::move(mask);
   run.total_ms = ms_since(t_all);
   return run;
+}
+
+} // namespace
+
+ir::Result<GraphRun> run_graph(const EffectGraph& graph, PassDevice& device, ImageMap& images,
+                               bool keep_pass_images, const PassProgress& progress) {
+  return run_graph_reading_back(graph, device, images, keep_pass_images, progress, nullptr);
+}
+
+ir::Result<GraphRun> run_graph_reading(const EffectGraph& graph, PassDevice& device,
+                                       ImageMap& images,
+                                       const std::vector<std::string>& read_back) {
+  return run_graph_reading_back(graph, device, images, false, {}, &read_back);
 }
 
 double FrameTimes::median_ms() const {

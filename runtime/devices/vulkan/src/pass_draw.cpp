@@ -430,7 +430,8 @@ ir::Status submit_draw(Device::Impl& d, PreparedDraw& draw) {
   if (draw.stencil) snapshot.save(*draw.stencil);
   for (Resident* r : draw.sampled)
     if (r) snapshot.save(*r);
-  ir::Status err = submit_and_wait(d, [&](VkCommandBuffer cb) { record_draw(cb, d, draw); });
+  ir::Status err = timed_draw_submission(
+      [&] { return submit_and_wait(d, [&](VkCommandBuffer cb) { record_draw(cb, d, draw); }); });
   if (!err) snapshot.restore();
   return err;
 }
@@ -465,18 +466,20 @@ ir::Result<pass::DrawReport> draw_pass(Device::Impl& d, const pass::Pass& pass,
   for (Resident* r : prepared.sampled)
     if (r) snapshot.save(*r);
   const auto t1 = Clock::now();
-  ir::Status err = submit_and_wait(d, [&](VkCommandBuffer cb) {
-    if (textures.host_target) record_upload(cb, target, rt_staging.buffer);
-    record_draw(cb, d, prepared);
-    if (prepared.trace.buffer) { // the pixel stage's record made visible to the host
-      VkMemoryBarrier mb{};
-      mb.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
-      mb.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-      mb.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-      vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0,
-                           1, &mb, 0, nullptr, 0, nullptr);
-    }
-    if (textures.host_target) record_readback(cb, target, rt_staging.buffer);
+  ir::Status err = timed_draw_submission([&] {
+    return submit_and_wait(d, [&](VkCommandBuffer cb) {
+      if (textures.host_target) record_upload(cb, target, rt_staging.buffer);
+      record_draw(cb, d, prepared);
+      if (prepared.trace.buffer) { // the pixel stage's record made visible to the host
+        VkMemoryBarrier mb{};
+        mb.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
+        mb.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+        mb.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+        vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+                             0, 1, &mb, 0, nullptr, 0, nullptr);
+      }
+      if (textures.host_target) record_readback(cb, target, rt_staging.buffer);
+    });
   });
   if (!err) {
     snapshot.restore();

@@ -17,10 +17,20 @@ namespace {
 std::atomic<int64_t> g_pipeline_creation_ns{0};
 std::atomic<long> g_pipeline_creations{0};
 std::atomic<int64_t> g_pipeline_creation_cpu_ns{0};
+// What draw_submission_ms reports: the submits that carry draws.
+std::atomic<int64_t> g_draw_submission_ns{0};
+std::atomic<long> g_draw_submissions{0};
+std::atomic<int64_t> g_draw_submission_cpu_ns{0};
+std::atomic<long> g_queue_submissions{0}; // every submit, draws or not
 
 int64_t thread_cpu_ns() {
   timespec t{};
   ::clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return int64_t{t.tv_sec} * 1000000000 + t.tv_nsec;
+}
+int64_t process_cpu_ns() {
+  timespec t{};
+  ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
   return int64_t{t.tv_sec} * 1000000000 + t.tv_nsec;
 }
 
@@ -340,6 +350,35 @@ ir::Status create_pipeline(Device::Impl& d, Cleanup& cleanup, const PipelineDesc
   d.pipeline_cache_dirty = true;
   cleanup.destroy_later(d.device, out, vkDestroyPipeline);
   return ir::ok_status();
+}
+
+ir::Status timed_draw_submission(const std::function<ir::Status()>& submit) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const int64_t cpu0 = process_cpu_ns();
+  ir::Status s = submit();
+  g_draw_submission_ns +=
+      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - t0)
+          .count();
+  g_draw_submission_cpu_ns += process_cpu_ns() - cpu0;
+  ++g_draw_submissions;
+  return s;
+}
+
+double draw_submission_ms() {
+  return static_cast<double>(g_draw_submission_ns.load()) / 1e6;
+}
+double draw_submission_cpu_ms() {
+  return static_cast<double>(g_draw_submission_cpu_ns.load()) / 1e6;
+}
+long draw_submissions() {
+  return g_draw_submissions.load();
+}
+
+void count_queue_submission() {
+  ++g_queue_submissions;
+}
+long queue_submissions() {
+  return g_queue_submissions.load();
 }
 
 double pipeline_creation_cpu_ms() {

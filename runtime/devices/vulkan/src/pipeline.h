@@ -2,6 +2,7 @@
 // graphics pipeline — created from the pass description and the compiled modules.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -46,5 +47,12 @@ struct PipelineDesc {
 };
 ir::Status create_pipeline(Device::Impl& d, Cleanup& cleanup, const PipelineDesc& desc,
                            VkPipeline& out);
+
+// Runs `submit` (a queue submission holding draws, waited for) and adds its time to
+// draw_submission_ms (pipeline_stats.h): where llvmpipe compiles a pipeline's shaders to
+// machine code, at the first draw that uses it.
+ir::Status timed_draw_submission(const std::function<ir::Status()>& submit);
+// Counts one vkQueueSubmit for queue_submissions (pipeline_stats.h).
+void count_queue_submission();
 
 } // namespace tierlift::vulkan

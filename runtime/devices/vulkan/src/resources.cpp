@@ -5,6 +5,7 @@
 #include <cstring>
 #include <fmt/format.h>
 
+#include "pipeline.h"
 #include "tierlift/rounding/rounding.h"
 #include "vk_internal.h"
 
@@ -221,6 +222,7 @@ ir::Status submit_commands(Device::Impl& d, VkCommandBuffer& cb) {
   si.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
   si.commandBufferCount = 1;
   si.pCommandBuffers = &owned;
+  count_queue_submission();
   if ((r = vkQueueSubmit(d.queue, 1, &si, fence)) != VK_SUCCESS)
     return draw_failure(vk_error("vkQueueSubmit", r));
   if ((r = vkWaitForFences(d.device, 1, &fence, VK_TRUE, UINT64_MAX)) != VK_SUCCESS)

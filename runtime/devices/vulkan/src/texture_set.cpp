@@ -8,6 +8,7 @@
 
 #include "draw_cache.h"
 #include "pass_draw.h"
+#include "pipeline.h"
 #include "program_reuse.h"
 #include "tierlift/ir/result.h"
 
@@ -32,8 +33,9 @@ struct TextureSet::State {
     auto it = textures.find(static_cast<uint32_t>(id));
     return it == textures.end() ? nullptr : it->second.get();
   }
-  ir::Status flush() {
-    return pending == VK_NULL_HANDLE ? ir::ok_status() : submit_commands(d, pending);
+  ir::Status flush() { // `pending` holds batched draws only
+    if (pending == VK_NULL_HANDLE) return ir::ok_status();
+    return timed_draw_submission([&] { return submit_commands(d, pending); });
   }
 };
 

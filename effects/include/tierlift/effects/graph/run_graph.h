@@ -62,6 +62,11 @@ inline constexpr std::string_view kRunRule = "run";
 using PassProgress = std::function<void(size_t index, size_t count, const PassDesc& pass)>;
 ir::Result<GraphRun> run_graph(const EffectGraph& graph, PassDevice& device, ImageMap& images,
                                bool keep_pass_images = false, const PassProgress& progress = {});
+// The same, reading back only the textures named in `read_back` (`images` gains those): for a
+// caller that compares one target, as `tierlift test`'s differential run does, every other
+// read-back (the inputs it uploaded) is a device round trip it does not need.
+ir::Result<GraphRun> run_graph_reading(const EffectGraph& graph, PassDevice& device,
+                                       ImageMap& images, const std::vector<std::string>& read_back);
 
 // Setup apart from the steady state: what a graph costs to start on a device, and then
 // what each frame costs.
