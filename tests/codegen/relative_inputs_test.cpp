@@ -62,7 +62,7 @@ const char* kPsReads = "ps_3_0\ndcl_texcoord0 v0\ndcl_texcoord2 v1\ndcl_color0 v
 } // namespace
 
 TEST(CodegenRelativeOutputs, ModulePassesSpirvVal) {
-  auto parsed = as::parse_text(kVsWrites, "<test>");
+  auto parsed = assembly::parse_text(kVsWrites, "<test>");
   ASSERT_TRUE(parsed.program) << ir::render_text(parsed.diags, parsed.sources);
   EXPECT_TRUE(test::compile_valid(*parsed.program, parsed.sources));
 }
