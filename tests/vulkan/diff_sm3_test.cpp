@@ -335,7 +335,9 @@ TEST_F(VulkanTest, RelativeInputReadsIndexTheDeclaredInputsByNumber) {
                          "endloop\nmov oC0, r0\n";
   DiffResult r = run_diff(*dev, vs, ps, DiffSetup{});
   ASSERT_TRUE(r.ok);
-  EXPECT_LE(r.diff.max_scaled, 1e-5) << r.diff.first_bad;
+  EXPECT_EQ(r.diff.max_scaled, 0.0) << r.diff.first_bad;
+  // Exact: u, v are multiples of 1/32 and every partial sum stays below 16, so each value
+  // needs at most 9 significant bits and no float addition rounds.
   for (const img::Image* im : {&r.cpu, &r.vk})
     for (uint32_t y = 0; y < kDiffH; ++y)
       for (uint32_t x = 0; x < kDiffW; ++x) {
@@ -344,7 +346,7 @@ TEST_F(VulkanTest, RelativeInputReadsIndexTheDeclaredInputsByNumber) {
         const float want[4] = {base - 0.5f, base + 2, base, base + 1};
         const float* px = &im->rgba[(size_t{y} * kDiffW + x) * 4];
         for (int c = 0; c < 4; ++c)
-          ASSERT_NEAR(px[c], want[c], 1e-5f) << "pixel (" << x << ", " << y << ") ." << c;
+          ASSERT_EQ(px[c], want[c]) << "pixel (" << x << ", " << y << ") ." << c;
       }
 }
 
@@ -367,7 +369,9 @@ TEST_F(VulkanTest, RelativeOutputWritesIndexTheDeclaredOutputsByNumber) {
                          "dcl_color0 v2\nmov r1, v1\nmad r0, v0, c0.x, r1\nmad oC0, v2, c0.y, r0\n";
   DiffResult r = run_diff(*dev, vs, ps, DiffSetup{});
   ASSERT_TRUE(r.ok);
-  EXPECT_LE(r.diff.max_scaled, 1e-5) << r.diff.first_bad;
+  EXPECT_EQ(r.diff.max_scaled, 0.0) << r.diff.first_bad;
+  // Exact: u is a multiple of 1/32 and every partial sum stays below 512, so each value needs
+  // at most 14 significant bits and no float operation (the mads included) rounds.
   for (const img::Image* im : {&r.cpu, &r.vk})
     for (uint32_t y = 0; y < kDiffH; ++y)
       for (uint32_t x = 0; x < kDiffW; ++x) {
@@ -375,7 +379,7 @@ TEST_F(VulkanTest, RelativeOutputWritesIndexTheDeclaredOutputsByNumber) {
         const float want[4] = {107 + 7 * u, 214 + 7 * u, 321 + 7 * u, 428 + 7 * u};
         const float* px = &im->rgba[(size_t{y} * kDiffW + x) * 4];
         for (int c = 0; c < 4; ++c)
-          ASSERT_NEAR(px[c], want[c], 1e-5f * want[c]) << "pixel (" << x << ", " << y << ") ." << c;
+          ASSERT_EQ(px[c], want[c]) << "pixel (" << x << ", " << y << ") ." << c;
       }
 }
 
