@@ -1,6 +1,7 @@
 // Shader models 2.x and 3.0 through the command line: check, fmt, assemble, disasm, spirv
-// and run take them; what does not run yet (gradients) is refused with a positioned message
-// and exit 1; --profile takes fxc's ps_2_a / ps_2_b presets.
+// and run take them; what no profile allows (a relative temp destination) is refused with a
+// positioned message and exit 1; --profile takes fxc's ps_2_a / ps_2_b presets, the second
+// without gradient instructions.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -59,7 +60,7 @@ TEST(CliLaterProfiles, CheckFmtAssembleDisasm) {
   EXPECT_EQ(run_cli("check " + s.file("v.vsh", kVs30)).exit_code, 0);
 }
 
-TEST(CliLaterProfiles, SpirvAndRunTakeThemAndRefuseGradientsWithAPosition) {
+TEST(CliLaterProfiles, SpirvAndRunTakeThemAndRefuseARelativeTempWithAPosition) {
   Scratch s;
   const std::string ps = s.file("a.psh", kPs30);
   auto spirv = run_cli("spirv " + ps + " -o " + s.file("a.spv"));
