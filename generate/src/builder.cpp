@@ -73,7 +73,8 @@ ir::Declaration decl(RegFile f, uint32_t index, ir::DeclUsage usage = ir::DeclUs
 } // namespace
 
 Builder::Builder(ir::Profile p, const GenerateOptions& o, std::uint64_t seed)
-    : profile(p), options(o), rng(seed), temps(std::min<uint32_t>(ir::limits(p).temps, 8)) {
+    : profile(p), options(o), rng(seed),
+      temps(std::min<uint32_t>(ir::limits(p).temps, generated_temps(p))) {
   base_.profile = p;
   if (!ir::is_vertex(p) && ir::is_sm2_or_later(p) && o.extra_outputs) {
     want_more_colours = rng.chance(0.2);

@@ -16,10 +16,14 @@
 namespace tierlift::gen::detail {
 
 // Constants the prelude defines (and the bank ones it leaves to the device).
-inline constexpr uint32_t kSinCosConst = 6;   // c6, c7: sincos's constants (vs_2_0, ps_2_0)
-inline constexpr uint32_t kBankConst = 8;     // c8..: set by the device, not defined
-inline constexpr uint32_t kRepCounter = 0;    // i0: rep count
-inline constexpr uint32_t kLoopCounter = 1;   // i1: loop count, start, step
+inline constexpr uint32_t kSinCosConst = 6; // c6, c7: sincos's constants (vs_2_0, ps_2_0)
+inline constexpr uint32_t kBankConst = 8;   // c8..: set by the device, not defined
+inline constexpr uint32_t kRepCounter = 0;  // i0: rep count
+inline constexpr uint32_t kLoopCounter = 1; // i1: loop count, start, step
+// r# the generator uses: 8 up to 2.0; the 2.x and 3.0 profiles have 12 or more, and use 12.
+constexpr uint32_t generated_temps(ir::Profile p) {
+  return ir::is_sm2x(p) || ir::is_sm3(p) ? 12 : 8;
+}
 inline constexpr uint32_t kPixel30Inputs = 4; // ps_3_0: v0..v3, each with a drawn semantic
 // vs_3_0: the o# declarations (o0 the position; finish() keeps the ones written).
 inline constexpr std::array<std::pair<ir::DeclUsage, uint8_t>, 5> kVertex30Outputs = {{
@@ -57,7 +61,7 @@ public:
   ir::Profile profile;
   const GenerateOptions& options;
   Rng rng;
-  uint32_t temps;                                     // r# the generator uses (at most 8)
+  uint32_t temps;                                     // r# the generator uses (generated_temps)
   std::vector<ir::Opcode> open;                       // open if/if_comp/rep/loop blocks
   std::vector<bool> has_else;                         // per open block
   std::vector<uint32_t> labels;                       // subroutines called so far

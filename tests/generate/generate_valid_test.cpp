@@ -108,6 +108,23 @@ TEST(GenerateListing, UnknownProfileFails) {
   EXPECT_EQ(text.diagnostics().front().rule, "usage");
 }
 
+// The 2.x and 3.0 profiles have at least 12 temporaries (the 2.x caps' minimum, 32 in 3.0):
+// their listings use r8..r11 too, which the older profiles' listings (8 at most) never do.
+TEST(GenerateListing, LaterProfilesUseTwelveTemps) {
+  for (const char* p : {"vs_2_x", "ps_2_x", "vs_3_0", "ps_3_0"}) {
+    std::set<uint32_t> temps;
+    for (std::size_t i = 0; i < 200; ++i) {
+      std::string why;
+      auto prog = valid_program(generate_listing(p, 5, i).value(), why);
+      ASSERT_TRUE(prog) << why;
+      for (const ir::Instruction& ins : prog->code)
+        if (ins.dst && ins.dst->file == ir::RegFile::Temp) temps.insert(ins.dst->index);
+    }
+    EXPECT_EQ(temps.size(), 12u) << p;
+    EXPECT_EQ(*temps.rbegin(), 11u) << p;
+  }
+}
+
 // Every profile the front end knows is written (the 2.x and 3.0 ones were refused until the
 // builder had their shapes), and the names the CLI prints are those eleven.
 TEST(GenerateListing, EveryFrontEndProfileIsWritten) {
