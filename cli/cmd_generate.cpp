@@ -71,7 +71,7 @@ void register_generate_command(CLI::App& app) {
   auto opts = std::make_shared<GenerateOpts>();
   CLI::App* sub =
       app.add_subcommand("generate", "Write random valid listings of a profile (docs/generate.md)");
-  sub->add_option("--profile", opts->profile, "Profile: vs_1_1, vs_2_0, ps_1_1 ... ps_2_0")
+  sub->add_option("--profile", opts->profile, "Profile: " + gen::generated_profile_names())
       ->required();
   sub->add_option("--seed", opts->seed, "Seed; a listing depends on (profile, seed, index) only")
       ->capture_default_str();

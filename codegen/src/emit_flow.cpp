@@ -166,8 +166,13 @@ bool Emitter::end_if(const ir::Instruction& ins) {
   return true;
 }
 
-// break: a branch to the innermost loop's merge block (which restores aL); the rest of the
-// block is unreachable. cond: break only when it holds (break_comp, breakp).
+// break: a branch to the innermost loop's merge block (which restores aL). cond: break only
+// when it holds (break_comp, breakp). A plain break branches on the constant true: the
+// statements after it then sit in a block the loop header still dominates. Branching
+// unconditionally left that block unreachable, and when it closed the body ("break" right
+// before "endrep") its branch to the continue target lay outside the loop construct, which
+// spirv-val rejects (generated vs_2_x, ps_2_x, vs_3_0 and ps_3_0 cases; CodegenEval.
+// BreakRightBeforeTheLoopsEndLeavesAfterOneIteration).
 bool Emitter::leave_loop(const ir::Instruction& ins, Id cond) {
   FlowFrame* loop = innermost_loop();
   if (!loop) {
@@ -177,11 +182,7 @@ bool Emitter::leave_loop(const ir::Instruction& ins, Id cond) {
     return false;
   }
   const Id out = loop->merge;
-  if (!cond) {
-    b.op_void(Op::OpBranch, {out});
-    b.begin_block(b.fresh_id());
-    return true;
-  }
+  if (!cond) cond = b.const_bool(true);
   const Id leave = b.fresh_id(), stay = b.fresh_id();
   b.op_void(Op::OpSelectionMerge,
             {stay, static_cast<uint32_t>(spv::SelectionControlMask::MaskNone)});

@@ -134,9 +134,10 @@ Id Emitter::sample(uint32_t stage, Id coord, std::optional<Id> bias, std::option
   if (fetches(stage)) return fetch_unorm8(si, c);
   // A POINT/CLAMP read at the clamped coordinate: the same texel, and no u·N that
   // overflows the device's conversion to an index (CodegenOptions::stage_point_clamped).
-  if (type == ir::SamplerType::Tex2D && prog.stage() == ir::ShaderStage::Pixel &&
-      opt.stage_point_clamped[stage & 15])
-    c = clamp_uv01(c);
+  const bool point_clamped = prog.stage() == ir::ShaderStage::Pixel
+                                 ? opt.stage_point_clamped[stage & 15]
+                                 : opt.vertex_point_clamped[stage & 3];
+  if (type == ir::SamplerType::Tex2D && point_clamped) c = clamp_uv01(c);
   if (grad) // one level, minLod = maxLod = 0: level 0 whatever the gradients (rule F10)
     return b.op(Op::OpImageSampleExplicitLod, t_vec4,
                 {si, c, static_cast<uint32_t>(spv::ImageOperandsMask::Grad), coords(grad->first),

@@ -131,12 +131,45 @@ ir::SrcOperand temp_x(uint32_t index) {
   return s;
 }
 
+// sincos in either form: two constants (2.0, 2.x) or one source (3.0, Opcode::SinCos3).
+bool is_sincos(const ir::Instruction& ins) {
+  return (ins.op == ir::Opcode::SinCos || ins.op == ir::Opcode::SinCos3) && !ins.src.empty();
+}
+
+// Where a vertex program's probe leaves its value: oT7. A vs_3_0 writes only declared o#, so
+// its copy declares a spare o# as texcoord7, which links to oT7 (ir/sm3_interface.h); nullopt
+// when it declares texcoord7 itself or uses every o#.
+std::optional<ir::DstOperand> vertex_probe_output(ir::Program& p) {
+  if (p.profile != ir::Profile::vs_3_0) return dst_x(ir::RegFile::TexCrdOut, 7);
+  std::optional<uint32_t> spare;
+  for (uint32_t o = ir::limits(p.profile).tex_outputs; o-- > 0;) {
+    bool used = written_or_read(p, ir::RegFile::Output, o);
+    for (const ir::Declaration& d : p.decls) {
+      if (d.reg.file != ir::RegFile::Output) continue;
+      if (d.usage == ir::DeclUsage::TexCoord && d.usage_index == 7) return std::nullopt;
+      used |= d.reg.index == o;
+    }
+    if (!used) {
+      spare = o;
+      break;
+    }
+  }
+  if (!spare) return std::nullopt;
+  ir::Declaration d;
+  d.reg = dst_x(ir::RegFile::Output, *spare);
+  d.reg.mask = ir::kFullMask;
+  d.usage = ir::DeclUsage::TexCoord;
+  d.usage_index = 7;
+  p.decls.push_back(d);
+  return dst_x(ir::RegFile::Output, *spare);
+}
+
 // The copy: before each sincos (subroutines too), |its argument| (the fourth swizzle slot, as
 // sincos reads a scalar) into rT.x and max(rA.x, rT.x) into rA.x (temporaries start at 0 in
 // the VM); where the main program ends, rA.x into `out`.
 std::optional<ir::Program> sincos_probe(const ir::Program& p, ir::DstOperand out) {
   bool any = false;
-  for (const ir::Instruction& ins : p.code) any |= ins.op == ir::Opcode::SinCos && !ins.src.empty();
+  for (const ir::Instruction& ins : p.code) any |= is_sincos(ins);
   if (!any || written_or_read(p, out.file, out.index)) return std::nullopt;
   const std::optional<uint32_t> acc = spare_temp(p, 256);
   const std::optional<uint32_t> arg = acc ? spare_temp(p, *acc) : std::nullopt;
@@ -162,7 +195,7 @@ std::optional<ir::Program> sincos_probe(const ir::Program& p, ir::DstOperand out
       q.code.push_back(mov);
     }
     last_seq = std::max(last_seq, ins.seq);
-    if (ins.op == ir::Opcode::SinCos && !ins.src.empty()) {
+    if (is_sincos(ins)) {
       ir::Instruction a;
       a.op = ir::Opcode::Abs;
       a.dst = dst_x(ir::RegFile::Temp, *arg);
@@ -193,9 +226,10 @@ std::string sincos_out_of_range(const pass::Pass& pass) {
   const bool pixel = pass.pixel_program && !pass.vertex_program && pass.transformed.empty();
   const bool vertex = pass.vertex_program && !pass.pixel_program;
   if (!pixel && !vertex) return "";
-  const ir::Program& p = pixel ? *pass.pixel_program : *pass.vertex_program;
-  const std::optional<ir::Program> probe =
-      sincos_probe(p, pixel ? dst_x(ir::RegFile::ColorOut, 3) : dst_x(ir::RegFile::TexCrdOut, 7));
+  ir::Program p = pixel ? *pass.pixel_program : *pass.vertex_program;
+  const std::optional<ir::DstOperand> out =
+      pixel ? dst_x(ir::RegFile::ColorOut, 3) : vertex_probe_output(p);
+  const std::optional<ir::Program> probe = out ? sincos_probe(p, *out) : std::nullopt;
   if (!probe) return "";
   ir::Result<cpu::ShaderVM> vm = cpu::ShaderVM::create(*probe, pass.conventions);
   if (!vm) return "";

@@ -73,9 +73,10 @@ ir::Declaration decl(RegFile f, uint32_t index, ir::DeclUsage usage = ir::DeclUs
 } // namespace
 
 Builder::Builder(ir::Profile p, const GenerateOptions& o, std::uint64_t seed)
-    : profile(p), options(o), rng(seed), temps(std::min<uint32_t>(ir::limits(p).temps, 8)) {
+    : profile(p), options(o), rng(seed),
+      temps(std::min<uint32_t>(ir::limits(p).temps, generated_temps(p))) {
   base_.profile = p;
-  if (p == ir::Profile::ps_2_0 && o.extra_outputs) {
+  if (!ir::is_vertex(p) && ir::is_sm2_or_later(p) && o.extra_outputs) {
     want_more_colours = rng.chance(0.2);
     want_depth = rng.chance(0.1);
   }
@@ -107,21 +108,26 @@ void Builder::prelude() {
         def_f(kSinCosConst, -1.5500992e-006f, -2.1701389e-005f, 0.0026041667f, 0.00026041668f));
     base_.defs.push_back(def_f(kSinCosConst + 1, -0.020833334f, -0.125f, 1.0f, 0.5f));
   }
+  if (profile != ir::Profile::vs_1_1 && profile != ir::Profile::ps_2_0) {
+    // rep / loop counters and the bool of if b# / callnz (vs_2_0 and the 2.x, 3.0 profiles).
+    base_.defs.push_back(def(RegFile::ConstInt, kRepCounter, {3, 0, 0, 0}));
+    base_.defs.push_back(def(RegFile::ConstInt, kLoopCounter, {2, 1, 2, 0}));
+    base_.defs.push_back(def(RegFile::ConstBool, 0, {1, 0, 0, 0}));
+  }
   if (ir::is_vertex(profile)) {
     base_.decls = {decl(RegFile::Input, 0, ir::DeclUsage::Position),
                    decl(RegFile::Input, 1, ir::DeclUsage::Normal),
                    decl(RegFile::Input, 2, ir::DeclUsage::Color),
                    decl(RegFile::Input, 3, ir::DeclUsage::TexCoord)};
-    if (profile == ir::Profile::vs_2_0) {
-      base_.defs.push_back(def(RegFile::ConstInt, kRepCounter, {3, 0, 0, 0}));
-      base_.defs.push_back(def(RegFile::ConstInt, kLoopCounter, {2, 1, 2, 0}));
-      base_.defs.push_back(def(RegFile::ConstBool, 0, {1, 0, 0, 0}));
-    }
+    if (profile == ir::Profile::vs_3_0) vertex30_declarations();
     return;
   }
-  // ps_2_0
-  for (uint32_t t = 0; t < 4; ++t) base_.decls.push_back(decl(RegFile::Texture, t));
-  for (uint32_t v = 0; v < 2; ++v) base_.decls.push_back(decl(RegFile::Input, v));
+  if (profile == ir::Profile::ps_3_0) {
+    pixel30_inputs();
+  } else {
+    for (uint32_t t = 0; t < 4; ++t) base_.decls.push_back(decl(RegFile::Texture, t));
+    for (uint32_t v = 0; v < 2; ++v) base_.decls.push_back(decl(RegFile::Input, v));
+  }
   const ir::SamplerType kinds[] = {ir::SamplerType::Tex2D, ir::SamplerType::Tex2D,
                                    ir::SamplerType::Cube, ir::SamplerType::Volume};
   for (uint32_t s = 0; s < 4; ++s) {
@@ -129,6 +135,38 @@ void Builder::prelude() {
     d.sampler_type = options.only_2d_samplers ? ir::SamplerType::Tex2D : kinds[s];
     base_.decls.push_back(d);
   }
+}
+
+// vs_3_0: every output is an o# declared with a semantic (o0 the position, the others the
+// colours and coordinates the pixel stage reads); s0..s3 are 2D for texldl (vertex texture
+// fetch). finish() keeps the outputs written and the samplers read.
+void Builder::vertex30_declarations() {
+  for (uint32_t o = 0; o < kVertex30Outputs.size(); ++o)
+    base_.decls.push_back(
+        decl(RegFile::Output, o, kVertex30Outputs[o].first, kVertex30Outputs[o].second));
+  for (uint32_t s = 0; s < 4; ++s) {
+    ir::Declaration d = decl(RegFile::Sampler, s);
+    d.sampler_type = ir::SamplerType::Tex2D;
+    base_.decls.push_back(d);
+  }
+}
+
+// ps_3_0: v0..v3 carry four distinct semantics drawn from the ones the differential run binds
+// (color0-1, texcoord0-7: ir/sm3_interface.h), so that the renaming by semantic is exercised
+// in every order; vPos (.xy) and vFace are declared too.
+void Builder::pixel30_inputs() {
+  std::vector<std::pair<ir::DeclUsage, uint8_t>> pool;
+  for (uint8_t i = 0; i < 2; ++i) pool.push_back({ir::DeclUsage::Color, i});
+  for (uint8_t i = 0; i < 8; ++i) pool.push_back({ir::DeclUsage::TexCoord, i});
+  for (uint32_t v = 0; v < kPixel30Inputs; ++v) {
+    const std::size_t k = rng.below(pool.size());
+    base_.decls.push_back(decl(RegFile::Input, v, pool[k].first, pool[k].second));
+    pool.erase(pool.begin() + static_cast<std::ptrdiff_t>(k));
+  }
+  ir::Declaration pos = decl(RegFile::Misc, ir::kMiscPosition);
+  pos.reg.mask = 0x3;
+  base_.decls.push_back(pos);
+  base_.decls.push_back(decl(RegFile::Misc, ir::kMiscFace));
 }
 
 uint8_t Builder::written(RegFile f, uint32_t index, bool this_phase) const {
@@ -146,9 +184,14 @@ uint8_t Builder::readable(RegFile f, uint32_t index) const {
   case RegFile::Temp: return written(f, index);
   case RegFile::Texture:
     if (ir::is_ps11_13(profile)) return written(f, index);
-    return profile == ir::Profile::ps_2_0 ? ir::kFullMask : 0;
+    return profile == ir::Profile::ps_2_0 || profile == ir::Profile::ps_2_x ? ir::kFullMask : 0;
   case RegFile::Input:
   case RegFile::Const: return ir::kFullMask;
+  case RegFile::Predicate: return written(f, index);
+  // ps_3_0: vPos is declared .xy; vFace is one value (its sign tells the facing).
+  case RegFile::Misc:
+    if (profile != ir::Profile::ps_3_0) return 0;
+    return index == ir::kMiscPosition ? 0x3 : 0x1;
   default: return 0;
   }
 }
@@ -177,25 +220,37 @@ static bool writes(const std::vector<ir::Instruction>& code, RegFile f, uint32_t
 
 // What closes the program: open blocks, the outputs the profile requires (and one that
 // shows the body's last result), then the subroutines the body called.
+Opcode closer(Opcode opener) {
+  switch (opener) {
+  case Opcode::Rep: return Opcode::EndRep;
+  case Opcode::Loop: return Opcode::EndLoop;
+  default: return Opcode::EndIf; // if b#, if p0, if_gt ... if_le
+  }
+}
+
 std::vector<ir::Instruction> Builder::tail(const std::vector<ir::Instruction>& code) const {
   std::vector<ir::Instruction> t;
   for (auto it = open.rbegin(); it != open.rend(); ++it)
-    t.push_back(make(*it == Opcode::If    ? Opcode::EndIf
-                     : *it == Opcode::Rep ? Opcode::EndRep
-                                          : Opcode::EndLoop,
-                     std::nullopt));
+    t.push_back(make(closer(*it), std::nullopt));
   std::vector<ir::Instruction> all = code;
   if (pending_phase) {
     t.push_back(make(Opcode::Phase, std::nullopt));
     all.push_back(t.back());
   }
   const std::optional<uint32_t> full = last_full_temp(all, profile, temps);
-  if (ir::is_vertex(profile)) {
+  if (profile == ir::Profile::vs_3_0) {
+    // o0 is dcl_position, o1 dcl_color0 (kVertex30Outputs).
+    t.push_back(make(Opcode::Mov, dst_reg(RegFile::Output, 0), {src_reg(RegFile::Input, 0)}));
+    if (full && !writes(code, RegFile::Output, 1))
+      t.push_back(make(Opcode::Mov, dst_reg(RegFile::Output, 1), {src_reg(RegFile::Temp, *full)}));
+  } else if (ir::is_vertex(profile)) {
     t.push_back(
         make(Opcode::Mov, dst_reg(RegFile::RastOut, ir::kRastPos), {src_reg(RegFile::Input, 0)}));
     if (full && !writes(code, RegFile::AttrOut, 0))
       t.push_back(make(Opcode::Mov, dst_reg(RegFile::AttrOut, 0), {src_reg(RegFile::Temp, *full)}));
-  } else if (profile == ir::Profile::ps_2_0) {
+  } else if (ir::is_sm2_or_later(profile)) {
+    // ps_2_0 / ps_2_x write each oC# once; ps_3_0 may write oC0 earlier, the tail's write
+    // is the last one either way.
     const ir::SrcOperand colour = full ? src_reg(RegFile::Temp, *full) : src_reg(RegFile::Input, 0);
     t.push_back(make(Opcode::Mov, dst_reg(RegFile::ColorOut, 0), {colour}));
     if (want_more_colours)
@@ -237,9 +292,15 @@ bool Builder::accept(const std::vector<ir::Instruction>& ins) {
   if (ins.empty()) return false;
   ir::Program p = assemble(ins);
   ir::DiagnosticSink diags;
-  assembly::ValidateOptions quiet;
-  quiet.warnings = false;
-  if (!assembly::validate(p, profile, diags, quiet)) return false;
+  // The 2.x and 3.0 profiles also refuse an instruction that draws a warning (a texld
+  // whose level of detail is undefined inside divergent flow, ...); "unused-input" aside,
+  // which finish() settles by dropping the declaration. The older profiles' rules have no
+  // warning a proposal can cause that the tail does not settle.
+  assembly::ValidateOptions options;
+  options.warnings = ir::is_sm2x(profile) || ir::is_sm3(profile);
+  if (!assembly::validate(p, profile, diags, options)) return false;
+  for (const ir::Diagnostic& d : diags.all())
+    if (d.severity == ir::Severity::Warning && d.rule != "unused-input") return false;
   body_.insert(body_.end(), ins.begin(), ins.end());
   return true;
 }
@@ -249,6 +310,11 @@ ir::Program Builder::finish() const {
   std::set<std::pair<RegFile, uint32_t>> read;
   for (const ir::Instruction& ins : p.code) {
     for (const ir::SrcOperand& s : ins.src) read.insert({s.file, s.index});
+    // vs_3_0 outputs: kept when written (an o[aL + n] write keeps them all).
+    if (ins.dst && ins.dst->file == RegFile::Output) {
+      for (uint32_t o = 0; o < kVertex30Outputs.size(); ++o)
+        if (ins.dst->rel || ins.dst->index == o) read.insert({RegFile::Output, o});
+    }
     if (ins.op == Opcode::TexKill && ins.dst) read.insert({ins.dst->file, ins.dst->index});
   }
   std::erase_if(p.decls, [&](const ir::Declaration& d) {

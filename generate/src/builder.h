@@ -2,8 +2,10 @@
 // accepted so far, and the validator as the judge of every proposed instruction.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "rng.h"
@@ -18,12 +20,28 @@ inline constexpr uint32_t kSinCosConst = 6; // c6, c7: sincos's constants (vs_2_
 inline constexpr uint32_t kBankConst = 8;   // c8..: set by the device, not defined
 inline constexpr uint32_t kRepCounter = 0;  // i0: rep count
 inline constexpr uint32_t kLoopCounter = 1; // i1: loop count, start, step
+// r# the generator uses: 8 up to 2.0; the 2.x and 3.0 profiles have 12 or more, and use 12.
+constexpr uint32_t generated_temps(ir::Profile p) {
+  return ir::is_sm2x(p) || ir::is_sm3(p) ? 12 : 8;
+}
+inline constexpr uint32_t kPixel30Inputs = 4; // ps_3_0: v0..v3, each with a drawn semantic
+// vs_3_0: the o# declarations (o0 the position; finish() keeps the ones written).
+inline constexpr std::array<std::pair<ir::DeclUsage, uint8_t>, 5> kVertex30Outputs = {{
+    {ir::DeclUsage::Position, 0},
+    {ir::DeclUsage::Color, 0},
+    {ir::DeclUsage::Color, 1},
+    {ir::DeclUsage::TexCoord, 0},
+    {ir::DeclUsage::TexCoord, 1},
+}};
 
 ir::SrcOperand src_reg(ir::RegFile f, uint32_t index, uint8_t swizzle = ir::kIdentitySwizzle,
                        ir::SrcMod mod = ir::SrcMod::None);
 ir::DstOperand dst_reg(ir::RegFile f, uint32_t index, uint8_t mask = ir::kFullMask);
 ir::Instruction make(ir::Opcode op, std::optional<ir::DstOperand> dst,
                      std::vector<ir::SrcOperand> src = {});
+
+// The statement that closes a block opened by `opener` (endif, endrep, endloop).
+ir::Opcode closer(ir::Opcode opener);
 
 class Builder {
 public:
@@ -43,11 +61,11 @@ public:
   ir::Profile profile;
   const GenerateOptions& options;
   Rng rng;
-  uint32_t temps;                                     // r# the generator uses (at most 8)
-  std::vector<ir::Opcode> open;                       // open if/rep/loop blocks (vs_2_0)
+  uint32_t temps;                                     // r# the generator uses (generated_temps)
+  std::vector<ir::Opcode> open;                       // open if/if_comp/rep/loop blocks
   std::vector<bool> has_else;                         // per open block
   std::vector<uint32_t> labels;                       // subroutines called so far
-  bool want_more_colours = false, want_depth = false; // ps_2_0 extra outputs (fixed per listing)
+  bool want_more_colours = false, want_depth = false; // ps_2_0/2_x/3_0 extra outputs (per listing)
   // ps_1_4: a phase marker will follow (the tail writes one meanwhile), so the instructions
   // proposed now are in phase 1 (bem is legal only there).
   bool pending_phase = false;
@@ -57,6 +75,8 @@ private:
   ir::Program assemble(const std::vector<ir::Instruction>& extra) const;
   std::vector<ir::Instruction> tail(const std::vector<ir::Instruction>& code) const;
   void prelude();
+  void vertex30_declarations();
+  void pixel30_inputs();
 
   ir::Program base_; // profile, decls, defs
   std::vector<ir::Instruction> body_;

@@ -1,6 +1,7 @@
 // Coverage: the names of what a listing uses, counted, for the coverage tests and the
 // `tierlift generate` summary.
 #include <cctype>
+#include <sstream>
 
 #include <fmt/format.h>
 
@@ -14,7 +15,8 @@ namespace {
 
 // "r", "oD", "oPos", "oFog": the register's name without its number.
 std::string file_name(ir::RegFile f, uint32_t index) {
-  std::string n = ir::register_name(f, f == ir::RegFile::RastOut ? index : 0);
+  const bool named_by_index = f == ir::RegFile::RastOut || f == ir::RegFile::Misc; // vFace
+  std::string n = ir::register_name(f, named_by_index ? index : 0);
   while (!n.empty() && std::isdigit(static_cast<unsigned char>(n.back()))) n.pop_back();
   return n;
 }
@@ -32,8 +34,11 @@ void count_instruction(Coverage& c, const ir::Instruction& ins) {
     const int s = ins.mods.shift;
     ++c.instruction_modifiers[fmt::format("_{}{}", s > 0 ? 'x' : 'd', 1 << (s > 0 ? s : -s))];
   }
+  if (ins.pred) ++c.instruction_modifiers["(p0)"];
   if (ins.dst) {
-    ++c.register_files[file_name(ins.dst->file, ins.dst->index)];
+    std::string file = file_name(ins.dst->file, ins.dst->index);
+    if (ins.dst->rel) file += ins.dst->rel->file == ir::RegFile::Loop ? "[aL]" : "[a0]";
+    ++c.register_files[file];
     ++c.write_masks[full_text(ir::mask_text(ins.dst->mask))];
   }
   for (const ir::SrcOperand& s : ins.src) {
@@ -42,6 +47,20 @@ void count_instruction(Coverage& c, const ir::Instruction& ins) {
     ++c.register_files[file];
     ++c.swizzles[full_text(ir::swizzle_text(s.swizzle))];
     if (s.mod != ir::SrcMod::None) ++c.source_modifiers[std::string(ir::src_mod_info(s.mod).name)];
+  }
+}
+
+// "dcl_texcoord v", "dcl_position o", "dcl_2d s", "dcl vPos" for a declaration line of the
+// listing ("dcl_texcoord1 v0"): the statement and register without their numbers and masks.
+void count_declarations(Coverage& c, const std::string& listing) {
+  std::istringstream lines(listing);
+  for (std::string text; std::getline(lines, text);) {
+    std::istringstream words(text);
+    std::string statement, reg;
+    if (!(words >> statement >> reg) || statement.rfind("dcl", 0) != 0) continue;
+    while (std::isdigit(static_cast<unsigned char>(statement.back()))) statement.pop_back();
+    reg = reg.substr(0, reg.find_first_of("0123456789."));
+    ++c.declarations[statement + " " + reg];
   }
 }
 
@@ -61,6 +80,7 @@ void Coverage::add(const std::string& listing) {
   }
   ++listings;
   for (const ir::Instruction& ins : r.program->code) count_instruction(*this, ins);
+  count_declarations(*this, listing);
 }
 
 std::string Coverage::summary() const {
@@ -68,7 +88,7 @@ std::string Coverage::summary() const {
          line("source modifiers", source_modifiers) +
          line("instruction modifiers", instruction_modifiers) +
          line("register files", register_files) + line("swizzles", swizzles) +
-         line("write masks", write_masks);
+         line("write masks", write_masks) + line("declarations", declarations);
 }
 
 } // namespace tierlift::gen

@@ -11,25 +11,36 @@ bool generates(ir::Profile p) {
   switch (p) {
   case ir::Profile::vs_1_1:
   case ir::Profile::vs_2_0:
+  case ir::Profile::vs_2_x:
+  case ir::Profile::vs_3_0:
   case ir::Profile::ps_1_1:
   case ir::Profile::ps_1_2:
   case ir::Profile::ps_1_3:
   case ir::Profile::ps_1_4:
-  case ir::Profile::ps_2_0: return true;
-  default: return false;
+  case ir::Profile::ps_2_0:
+  case ir::Profile::ps_2_x:
+  case ir::Profile::ps_3_0: return true;
   }
+  return false;
+}
+
+std::string generated_profile_names() {
+  std::string out;
+  for (ir::Profile p : ir::kAllProfiles)
+    if (generates(p)) out += (out.empty() ? "" : ", ") + std::string(ir::profile_name(p));
+  return out;
 }
 
 ir::Result<ir::Profile> generated_profile(std::string_view name) {
   const std::optional<ir::Profile> profile = ir::parse_profile(name);
   if (!profile)
     return ir::fail("--profile", "usage", "unknown profile '" + std::string(name) + "'");
-  // The profiles whose shapes (output rules, declarations) the builder knows: listings of
-  // ps_2_x or vs_3_0 from it would not validate (no oC0 write, no dcl of oPos).
+  // A profile added to the front end is refused until the builder knows its shapes (output
+  // rules, declarations): listings without them would not validate.
   if (!generates(*profile))
     return ir::fail("--profile", "usage",
-                    "the generator does not write " + std::string(name) +
-                        " programs (it writes vs_1_1, vs_2_0, ps_1_1 ... ps_1_4, ps_2_0)");
+                    "the generator does not write " + std::string(name) + " programs (it writes " +
+                        generated_profile_names() + ")");
   return *profile;
 }
 

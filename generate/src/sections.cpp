@@ -19,15 +19,30 @@ std::vector<const ir::OpInfo*> legal_rows(ir::Profile p, ir::OpClass cls) {
   return rows;
 }
 
+bool is_if(Opcode op) {
+  return op == Opcode::If || (op >= Opcode::IfGt && op <= Opcode::IfLe);
+}
+
 bool is_opener(Opcode op) {
-  return op == Opcode::If || op == Opcode::Rep || op == Opcode::Loop || op == Opcode::Call ||
+  return is_if(op) || op == Opcode::Rep || op == Opcode::Loop || op == Opcode::Call ||
          op == Opcode::CallNz;
+}
+
+bool in_loop_or_rep(const Builder& b) {
+  return std::any_of(b.open.begin(), b.open.end(),
+                     [](Opcode op) { return op == Opcode::Loop || op == Opcode::Rep; });
+}
+
+// break, break_comp, breakp: legal only inside a loop or rep (the validator's call).
+bool is_break(Opcode op) {
+  return op == Opcode::Break || op == Opcode::BreakP ||
+         (op >= Opcode::BreakGt && op <= Opcode::BreakLe);
 }
 
 // Closes the innermost block, or gives an open if its else. Reverted when refused.
 void close_block(Builder& b) {
   const Opcode top = b.open.back();
-  if (top == Opcode::If && !b.has_else.back() && b.rng.chance(0.4)) {
+  if (is_if(top) && !b.has_else.back() && b.rng.chance(0.4)) {
     b.has_else.back() = true;
     if (!b.accept({make(Opcode::Else, std::nullopt)})) b.has_else.back() = false;
     return;
@@ -35,10 +50,7 @@ void close_block(Builder& b) {
   const bool had_else = b.has_else.back();
   b.open.pop_back();
   b.has_else.pop_back();
-  const Opcode end = top == Opcode::If    ? Opcode::EndIf
-                     : top == Opcode::Rep ? Opcode::EndRep
-                                          : Opcode::EndLoop;
-  if (!b.accept({make(end, std::nullopt)})) {
+  if (!b.accept({make(closer(top), std::nullopt)})) {
     b.open.push_back(top);
     b.has_else.push_back(had_else);
   }
@@ -81,17 +93,31 @@ void instruction_loop(Builder& b, std::size_t count, bool texture_rows, bool ari
     auto t = legal_rows(b.profile, ir::OpClass::Texture);
     rows.insert(rows.end(), t.begin(), t.end());
   }
-  for (const ir::OpInfo* r : legal_rows(b.profile, ir::OpClass::Flow))
+  std::vector<const ir::OpInfo*> breaks;
+  for (const ir::OpInfo* r : legal_rows(b.profile, ir::OpClass::Flow)) {
     if (arith_rows && is_opener(r->op)) rows.push_back(r);
+    if (arith_rows && is_break(r->op)) breaks.push_back(r);
+  }
   if (rows.empty()) return;
   for (std::size_t i = 0; i < count; ++i) {
     if (!b.open.empty() && b.rng.chance(0.3)) {
       close_block(b);
       continue;
     }
-    const ir::OpInfo& row = *b.rng.pick(rows);
+    // Inside a loop or rep, a break of some kind now and then (2.x, 3.0: break, break_comp,
+    // breakp); elsewhere the validator would refuse one.
+    const bool take_break = !breaks.empty() && in_loop_or_rep(b) && b.rng.chance(0.15);
+    const ir::OpInfo* pick = take_break ? b.rng.pick(breaks) : b.rng.pick(rows);
+    // breakp needs p0 written inside the loop: favoured once it is, or it seldom appears.
+    if (take_break && b.readable(RegFile::Predicate, 0) && b.rng.chance(0.35))
+      pick = &ir::op_info(Opcode::BreakP);
+    const ir::OpInfo& row = *pick;
     // A row the profile rarely accepts gets a few tries, so that coverage reaches it.
     for (int attempt = 0; attempt < 8; ++attempt) {
+      if (row.cls == ir::OpClass::Flow && is_break(row.op)) {
+        if (b.accept(propose(b, row))) break;
+        continue;
+      }
       if (row.cls == ir::OpClass::Flow) {
         if (try_flow(b, row)) break;
         continue;

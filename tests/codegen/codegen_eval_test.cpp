@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "compile_valid.h"
 #include "spirv_eval.h"
 #include "tierlift/assembly/parser.h"
 #include "tierlift/codegen/codegen.h"
@@ -215,6 +216,28 @@ TEST(CodegenEval, LoopsRepsAndBranches) {
   expect_same(r.out[1], {255, 255, 255, 255}, "rep clamps to 255");
   expect_same(r.out[2], {1, 1, 1, 1}, "if b2");
   expect_same(r.out[3], {1, 1, 1, 1}, "callnz !b2 skipped, call taken");
+}
+
+// A break as the last statement of a rep or loop body (and one inside an if around the
+// loop) leaves after the first iteration: the module passes spirv-val (it did not: the
+// block after the break was unreachable and branched to the continue target) and adds c0
+// once, c[aL] once at aL = i1.y = 1, where three iterations would give 3 and c1 + c3 + c5.
+TEST(CodegenEval, BreakRightBeforeTheLoopsEndLeavesAfterOneIteration) {
+  Uniforms u = consts(
+      {{1, 2, 3, 4}, {10, 0, 0, 0}, {0, 0, 0, 0}, {100, 0, 0, 0}, {0, 0, 0, 0}, {1000, 0, 0, 0}});
+  u.bank.b[0] = true;
+  const std::string text = "vs_2_x\ndcl_position v0\ndefi i0, 3, 0, 0, 0\ndefi i1, 3, 1, 2, 0\n"
+                           "mov r0, c2\nrep i0\nadd r0, r0, c0\nbreak\nendrep\nmov oT0, r0\n"
+                           "mov r1, c2\nloop aL, i1\nadd r1, r1, c[aL]\nbreak\nendloop\n"
+                           "mov oT1, r1\nmov r2, c2\nif b0\nrep i0\nadd r2, r2, c0\nbreak\n"
+                           "endrep\nendif\nmov oT2, r2\nmov oPos, v0\n";
+  auto parsed = assembly::parse_text(text, "<eval>");
+  ASSERT_TRUE(parsed.program) << ir::render_text(parsed.diags, parsed.sources);
+  test::compile_valid(*parsed.program, parsed.sources, geforce3());
+  EvalResult r = run(text, u);
+  expect_same(r.out[0], {1, 2, 3, 4}, "rep: c0 once");
+  expect_same(r.out[1], {10, 0, 0, 0}, "loop: c1 once (aL = 1)");
+  expect_same(r.out[2], {1, 2, 3, 4}, "rep in if: c0 once");
 }
 
 TEST(CodegenEval, Ps1xClampsModifiersAndCoissue) {

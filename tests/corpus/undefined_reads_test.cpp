@@ -114,6 +114,27 @@ TEST(UndefinedReads, SincosOutsideMinusPiToPiIsNamed) {
   EXPECT_EQ(sincos_out_of_range(v), "sincos of 65504");
 }
 
+// Shader model 3's sincos takes one source (a row of its own, SinCos3); the probe missed it,
+// and a vs_3_0 writes only declared o#, so its copy declares a spare one as texcoord7 (oT7).
+// Generated vs_3_0 case 00201 of `tierlift test --generate 500 --profile vs_3_0 --seed 1`,
+// reduced: sin(−1e30) disagreed (interpreter 1, lavapipe 0.79) instead of being left out.
+TEST(UndefinedReads, SincosOfShaderModel3IsNamedInBothStages) {
+  pass::Pass ps;
+  ps.pixel_program = program("ps_3_0\nmov r0, c0\nmov r1, c1\nsincos r0.xy, r1.y\nmov oC0, r0\n");
+  ps.ps_constants.f = {{0, 0, 0, 0}, {0, -1e30f, 0, 0}};
+  EXPECT_EQ(sincos_out_of_range(ps), "sincos of 1e+30");
+  ps.ps_constants.f = {{0, 0, 0, 0}, {0, 2.5f, 0, 0}};
+  EXPECT_EQ(sincos_out_of_range(ps), "");
+
+  pass::Pass vs;
+  vs.vertex_program = program("vs_3_0\ndcl_position v0\ndcl_normal v1\ndcl_position o0\n"
+                              "dcl_color o1\nmov o0, v0\nsincos r6.xy, v1.x\nmov o1, r6.y\n");
+  vs.vertices.resize(3);
+  EXPECT_EQ(sincos_out_of_range(vs), "");
+  vs.vertices[2].v[1] = {-1e30f, 0, 0, 0};
+  EXPECT_EQ(sincos_out_of_range(vs), "sincos of 1e+30");
+}
+
 vulkan::Device* lavapipe() {
   ir::Result<vulkan::Device*> d = vulkan::process_device({});
   return d ? *d : nullptr;

@@ -15,7 +15,14 @@ struct Expected {
   const char* profile;
   std::set<std::string> source_modifiers, instruction_modifiers, register_files;
   std::size_t write_masks, min_swizzles;
+  // The 2.x and 3.0 features: opcodes and declarations each profile's listings must use.
+  std::set<std::string> opcodes = {}, declarations = {};
 };
+
+// Flow and predicates of the 2.x and 3.0 profiles (docs/d3d9-rules.md §14).
+const std::set<std::string> kFlow2x = {
+    "if",       "if_gt",  "if_lt",   "if_eq",   "if_ne",   "if_ge", "if_le", "break", "break_gt",
+    "break_le", "breakp", "setp_gt", "setp_eq", "setp_le", "rep",   "call",  "callnz"};
 
 const std::set<std::string> kPs1xMods = {"negate (-)", "_bias", "-_bias", "_bx2", "-_bx2", "1-"};
 const std::set<std::string> kPs14Mods = {"negate (-)", "_bias", "-_bias", "_bx2", "-_bx2",
@@ -33,6 +40,16 @@ const Expected kExpected[] = {
     {"ps_1_4", kPs14Mods, {"_sat", "_x2", "_x4", "_x8", "_d2", "_d4", "_d8", "+"}, {"r", "v", "c", "t"}, 15, 5},
     // ps_2_0: identity, the four replicates, .yzxw, .zxyw, .wzyx.
     {"ps_2_0", {"negate (-)"}, {"_sat", "_pp"}, {"r", "v", "c", "t", "s", "oC", "oDepth"}, 15, 8},
+    {"vs_2_x", {"negate (-)", "!"}, {"(p0)"}, {"r", "v", "c", "a", "c[a0]", "c[aL]", "aL", "b", "i", "l", "p", "oPos", "oD", "oT", "oFog", "oPts"}, 15, 200,
+     kFlow2x, {"dcl_position v", "dcl_texcoord v"}},
+    {"ps_2_x", {"negate (-)", "!"}, {"_sat", "_pp", "(p0)"}, {"r", "v", "c", "t", "s", "b", "i", "l", "p", "oC", "oDepth"}, 15, 100,
+     {"dsx", "dsy", "texldd", "texldp", "texldb", "texkill", "setp_ne", "if_gt", "break_ge", "breakp"}, {"dcl t", "dcl v", "dcl_2d s", "dcl_cube s", "dcl_volume s"}},
+    {"vs_3_0", {"negate (-)", "!"}, {"_sat", "(p0)"}, {"r", "v", "c", "a", "c[a0]", "c[aL]", "v[aL]", "o", "o[aL]", "aL", "b", "i", "l", "p", "s"}, 15, 200,
+     {"texldl", "loop", "setp_lt", "if_ge", "break_ne", "breakp", "sincos"},
+     {"dcl_position v", "dcl_color v", "dcl_texcoord v", "dcl_position o", "dcl_color o", "dcl_texcoord o", "dcl_2d s"}},
+    {"ps_3_0", {"negate (-)", "!"}, {"_sat", "_pp", "(p0)"}, {"r", "v", "c", "c[aL]", "v[aL]", "vPos", "vFace", "aL", "s", "p", "oC", "oDepth"}, 15, 100,
+     {"dsx", "dsy", "texld", "texldl", "texldd", "texldp", "texldb", "loop", "setp_gt", "if_eq", "break_lt", "breakp"},
+     {"dcl_texcoord v", "dcl_color v", "dcl vPos", "dcl vFace", "dcl_2d s", "dcl_cube s", "dcl_volume s"}},
 };
 // clang-format on
 
@@ -56,6 +73,8 @@ TEST_P(GeneratedCoverage, EveryModifierFileAndMaskAppears) {
   EXPECT_EQ(missing(e.register_files, c.register_files), "");
   EXPECT_EQ(c.write_masks.size(), e.write_masks);
   EXPECT_GE(c.swizzles.size(), e.min_swizzles);
+  EXPECT_EQ(missing(e.opcodes, c.opcodes), "");
+  EXPECT_EQ(missing(e.declarations, c.declarations), "");
   std::printf("[generate] %s coverage:\n%s", e.profile, c.summary().c_str());
 }
 

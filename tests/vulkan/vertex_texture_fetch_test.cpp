@@ -65,11 +65,19 @@ struct ReadCase {
 //   LINEAR (0.5, 0.75): u·4 − 0.5 = 1.5 → texels 1 and 2 half each; v·2 − 0.5 = 1 → row 1
 //     alone: (2.5, 20, −2.5, 0.75).
 //   LINEAR (0.5, 0.5): v·2 − 0.5 = 0.5 → rows 0 and 1 half each: (2.5, 15, −2.5, 0.75).
+//   POINT far outside, CLAMP: u = 1e10 or 1e30 → the last column, texel 3: (4, 20, −4, 1.5);
+//     u = −1e10 → texel 0: (1, 20, −1, 0); v = 1e10 → the last row, 1. (u·4 beyond the int
+//     range read texel 0 on lavapipe until its vertex stage clamped the coordinate too,
+//     CodegenOptions::vertex_point_clamped: generated vs_3_0 case 00071 of seed 1.)
 const ReadCase kReads[] = {
     {"point", pass::Filter::Point, {0.625f, 0.75f, 0, 3}, {3, 20, -3, 1}},
     {"point_negative_lod", pass::Filter::Point, {0.625f, 0.75f, 0, -5}, {3, 20, -3, 1}},
     {"linear_between_columns", pass::Filter::Linear, {0.5f, 0.75f, 0, 0}, {2.5f, 20, -2.5f, 0.75f}},
     {"linear_between_four", pass::Filter::Linear, {0.5f, 0.5f, 0, 7}, {2.5f, 15, -2.5f, 0.75f}},
+    {"point_clamp_far_right", pass::Filter::Point, {1e10f, 0.75f, 0, 0}, {4, 20, -4, 1.5f}},
+    {"point_clamp_farther_right", pass::Filter::Point, {1e30f, 0.75f, 0, 0}, {4, 20, -4, 1.5f}},
+    {"point_clamp_far_left", pass::Filter::Point, {-1e10f, 0.75f, 0, 0}, {1, 20, -1, 0}},
+    {"point_clamp_far_down", pass::Filter::Point, {0.625f, 1e10f, 0, 0}, {3, 20, -3, 1}},
 };
 
 void expect_every_pixel(const img::Image& im, const std::array<float, 4>& want,

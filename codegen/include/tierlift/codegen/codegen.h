@@ -80,6 +80,10 @@ struct CodegenOptions {
   // into texel 0 (u = 1e30 read texel 0 of an RGBA32F texture, where the interpreter reads
   // the last), and a clamped u never gets there.
   std::array<bool, 16> stage_point_clamped{};
+  // The same for a vs_3_0's own samplers s0..s3 (texldl, vertex texture fetch, NUMERICS.md
+  // F14): lavapipe's vertex stage reads texel 0 at u = 1e10 under POINT/CLAMP as its pixel
+  // stage does, where CLAMP (and the interpreter) give the edge texel.
+  std::array<bool, 4> vertex_point_clamped{};
   // How those reads turn the device's value into k/255.0f (unorm8_decode.h): the Vulkan
   // device chooses by reading every level once. The default is right on every device whose
   // value is within a few ulps of k/255.

@@ -239,6 +239,8 @@ ir::Status compile_programs(const Device::Impl& d, const pass::Pass& pass,
     co.stage_fetch_unorm8[s] = fetches_in_place(d, textures.stages[s], pass.textures[s].sampler);
     co.stage_point_clamped[s] = pass::point_clamped(pass.textures[s].sampler);
   }
+  for (uint32_t s = 0; s < pass::kMaxVertexSamplers; ++s)
+    co.vertex_point_clamped[s] = pass::point_clamped(pass.vertex_textures[s].sampler);
   // D3DRS_SRGBWRITEENABLE: the module encodes the outputs of RGBA8 targets (NUMERICS.md S3).
   for (uint32_t i = 0; i < pass.color_targets && i < co.srgb_write.size(); ++i) {
     const Resident* t = i == 0 ? textures.target : textures.more_targets[i - 1];

@@ -27,6 +27,7 @@ std::optional<std::string> compile_key(const ir::Program* vs, const ir::Program*
   k.put(o.stage_projected);
   k.put(o.stage_fetch_unorm8);
   k.put(o.stage_point_clamped);
+  k.put(o.vertex_point_clamped);
   k.put(o.unorm8_decode);
   k.put(o.point_sampling_floors);
   k.put(o.optimize);
