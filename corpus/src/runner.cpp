@@ -3,6 +3,7 @@
 // it arrives, reruns unexpected failures once, and writes the reports at the end.
 #include "tierlift/corpus/runner.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <climits>
@@ -26,11 +27,21 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Cases a worker holds at once: the one it runs and the next, written before the answer to
-// the first comes back, so the worker starts it as soon as it has answered instead of
-// waiting for the coordinator to wake, read, record and write (on a busy machine that wait
-// is a scheduling delay per case).
-constexpr size_t kCasesInFlight = 2;
+// Cases a worker holds at once: the one it runs and those written after it before its answer
+// comes back. The worker starts the next as soon as it has answered instead of waiting for the
+// coordinator to wake, read, record and write (on a busy machine that wait is a scheduling
+// delay per case), and the coordinator, woken once, takes every answer that has come in.
+// How many are written ahead follows the time a case takes: about kAheadMs of work, at least
+// one case and at most kCasesAhead. Fast cases (check-only: 0.1-0.2 ms) go many at a time, so
+// the coordinator, a third process on two cores, costs less per case; slow ones (a full lift:
+// milliseconds) one at a time, so the last cases of a run do not queue behind a busy worker
+// while another idles.
+constexpr size_t kCasesAhead = 15;
+constexpr double kAheadMs = 2.0;
+// What may wait in a worker's input pipe unread: a pipe holds at least PIPE_BUF bytes (a
+// user over the kernel's pipe-buffer limit gets one page), so writing no more than that
+// ahead never blocks the coordinator, whatever a busy or hung worker does.
+constexpr size_t kBytesAhead = PIPE_BUF;
 
 struct Worker {
   pid_t pid = -1;
@@ -39,8 +50,21 @@ struct Worker {
   // Indices into the case list, written and not yet answered, in order: the worker answers
   // them in this order, so the front one is running (a death or a timeout is its verdict).
   std::deque<size_t> jobs;
-  Clock::time_point started; // when the front case started: written, or the answer before it
+  std::deque<size_t> line_bytes; // the length of each job's line, in the same order
+  Clock::time_point started;     // when the front case started: written, or the answer before it
 };
+
+void pop_job(Worker& w) {
+  w.jobs.pop_front();
+  w.line_bytes.pop_front();
+}
+
+// The bytes of the cases written after the one the worker runs.
+size_t bytes_ahead(const Worker& w) {
+  size_t n = 0;
+  for (size_t k = 1; k < w.line_bytes.size(); ++k) n += w.line_bytes[k];
+  return n;
+}
 
 bool spawn(Worker& w, const std::vector<std::string>& argv, int log_fd) {
   int in[2], out[2];
@@ -184,15 +208,17 @@ private:
       size_t busy = 0;
       for (size_t k = 0; k < jobs; ++k) {
         Worker& w = workers_[k];
-        while (w.jobs.size() < kCasesInFlight && !pending.empty()) {
+        while (w.jobs.size() < 1 + cases_ahead() && !pending.empty()) {
           const std::string line = case_json(cases_[pending.front()]).dump() + "\n";
-          // A case written ahead must fit the pipe's buffer: a busy (or hung) worker reads
-          // nothing, and a longer write would block the coordinator and its timeouts.
-          if (!w.jobs.empty() && line.size() > PIPE_BUF) break;
+          // The cases written ahead must fit the pipe's buffer together: a busy (or hung)
+          // worker reads nothing, and a longer write would block the coordinator and its
+          // timeouts. The front case's line may be any length: its worker is reading it.
+          if (!w.jobs.empty() && bytes_ahead(w) + line.size() > kBytesAhead) break;
           if (w.pid < 0 && !spawn(w, o_.worker_argv, log_))
             return ir::fail("worker", "io", "cannot start a worker process");
           if (w.jobs.empty()) w.started = Clock::now();
           w.jobs.push_back(pending.front());
+          w.line_bytes.push_back(line.size());
           pending.pop_front();
           if (!write_all(w.to, line)) {
             finish_dead(w, reap(w, true));
@@ -234,7 +260,7 @@ private:
           lost(w, Verdict::Timeout,
                fmt::format("no answer within --timeout {} s; worker killed", o_.timeout_s));
       record(cases_[w.jobs.front()], r);
-      w.jobs.pop_front();
+      pop_job(w);
       give_back(w);
     }
     progress();
@@ -259,8 +285,11 @@ private:
         finish_dead(w, reap(w, true));
         return;
       }
+      // The first answer's time, then an average over the last few dozen (an exponential
+      // one).
+      mean_case_ms_ = answers_++ == 0 ? r->ms : mean_case_ms_ + (r->ms - mean_case_ms_) / 32;
       record(cases_[w.jobs.front()], *r);
-      w.jobs.pop_front();
+      pop_job(w);
       w.started = Clock::now(); // the next case, if any, starts now
     }
   }
@@ -279,12 +308,13 @@ private:
   void finish_dead(Worker& w, int status) {
     if (w.jobs.empty()) return;
     record(cases_[w.jobs.front()], lost(w, Verdict::Crash, death(status)));
-    w.jobs.pop_front();
+    pop_job(w);
     give_back(w);
   }
   void give_back(Worker& w) {
     pending_->insert(pending_->begin(), w.jobs.begin(), w.jobs.end());
     w.jobs.clear();
+    w.line_bytes.clear();
     w.buffer.clear();
   }
 
@@ -312,6 +342,12 @@ private:
     results_[r.id] = std::move(r);
   }
 
+  // Cases to write after the running one (kAheadMs).
+  size_t cases_ahead() const {
+    if (!(mean_case_ms_ > 0)) return kCasesAhead;
+    return std::clamp<size_t>(static_cast<size_t>(kAheadMs / mean_case_ms_), 1, kCasesAhead);
+  }
+
   size_t index_of(const Case& c) const { return static_cast<size_t>(&c - cases_.data()); }
 
   void progress() {
@@ -334,6 +370,10 @@ private:
   unsigned attempt_ = 1;
   size_t total_ = 0, finished_ = 0, failures_ = 0;
   Clock::time_point t0_;
+  // What a case takes in a worker, on average; until answers come, as much as a slow case
+  // (one written ahead).
+  double mean_case_ms_ = kAheadMs;
+  size_t answers_ = 0;
 };
 
 } // namespace

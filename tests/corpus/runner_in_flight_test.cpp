@@ -1,7 +1,7 @@
-// The coordinator writes a worker its next case before the answer to the one it runs comes
-// back (runner.cpp, kCasesInFlight), and a worker that dies with a case written ahead of it
-// costs only the case it was running. The workers here are small bash scripts that speak the
-// protocol of runner.h.
+// The coordinator writes a worker its next cases before the answer to the one it runs comes
+// back (runner.cpp, kCasesAhead: more of them when cases are fast), and a worker that dies with a
+// case written ahead of it costs only the case it was running. The workers here are small bash
+// scripts that speak the protocol of runner.h.
 #include <filesystem>
 #include <map>
 #include <string>
@@ -38,6 +38,25 @@ while IFS= read -r line; do
 done
 )";
 
+// Answers every case at once, each saying it took $2 ms, except case "e": before answering
+// it, the worker waits 0.5 s and counts the cases already waiting on its input, then answers
+// "e" with the count in its note ("waiting N") and the waiting ones after it.
+constexpr const char* kCountsWaiting = R"(
+answer() { printf '{"id":"%s","verdict":"pass","stages":{},"ms":%s,"note":"%s"}\n' "$1" "$2" "$3"; }
+while IFS= read -r line; do
+  id=${line#\{\"id\":\"}; id=${id%%\"*}
+  if [ "$id" != e ]; then answer "$id" "$2" ""; continue; fi
+  sleep 0.5
+  waiting=()
+  while read -t 0; do
+    IFS= read -r next
+    next=${next#\{\"id\":\"}; waiting+=("${next%%\"*}")
+  done
+  answer e "$2" "waiting ${#waiting[@]}"
+  for w in "${waiting[@]}"; do answer "$w" "$2" ""; done
+done
+)";
+
 std::vector<corpus::Case> cases(std::initializer_list<const char*> ids) {
   std::vector<corpus::Case> out;
   for (const char* id : ids) {
@@ -48,25 +67,42 @@ std::vector<corpus::Case> cases(std::initializer_list<const char*> ids) {
   return out;
 }
 
-std::map<std::string, corpus::Verdict> run(const std::vector<corpus::Case>& cs, const char* script,
-                                           const std::string& name) {
+std::vector<corpus::CaseResult> run_results(const std::vector<corpus::Case>& cs, const char* script,
+                                            const std::string& name,
+                                            const std::string& argument = "") {
   const fs::path out =
       fs::temp_directory_path() / ("tierlift_in_flight_" + name + std::to_string(::getpid()));
   fs::remove_all(out);
   fs::create_directories(out);
   corpus::RunOptions o;
   o.worker_argv = {"/bin/bash", "-c", script, "worker", out.string()};
+  if (!argument.empty()) o.worker_argv.push_back(argument);
   o.jobs = 1;
   o.timeout_s = 20;
   o.rerun = false;
   o.out_dir = (out / "run").string();
-  std::map<std::string, corpus::Verdict> verdicts;
   auto results = corpus::run_corpus(cs, o);
   EXPECT_TRUE(results) << results.message();
-  if (results)
-    for (const corpus::CaseResult& r : *results) verdicts[r.id] = r.verdict;
   fs::remove_all(out);
+  return results ? *results : std::vector<corpus::CaseResult>{};
+}
+
+std::map<std::string, corpus::Verdict> run(const std::vector<corpus::Case>& cs, const char* script,
+                                           const std::string& name) {
+  std::map<std::string, corpus::Verdict> verdicts;
+  for (const corpus::CaseResult& r : run_results(cs, script, name)) verdicts[r.id] = r.verdict;
   return verdicts;
+}
+
+// The note of case "e" when every case takes `ms` (kCountsWaiting).
+std::string waiting_at_e(const char* ms) {
+  const auto results =
+      run_results(cases({"a", "b", "c", "d", "e", "f", "g", "h", "i", "j", "k", "l", "m",
+                         "n", "o", "p", "q", "r", "s", "t", "u", "v", "w", "x", "y", "z"}),
+                  kCountsWaiting, std::string("waiting") + ms, ms);
+  for (const corpus::CaseResult& r : results)
+    if (r.id == "e") return r.note;
+  return "no answer for e";
 }
 
 } // namespace
@@ -87,6 +123,14 @@ TEST(CorpusRunner, ACaseWrittenAheadOfADeathRunsInTheNextWorker) {
   EXPECT_EQ(v["b"], corpus::Verdict::Crash);
   EXPECT_EQ(v["c"], corpus::Verdict::Pass);
   EXPECT_EQ(v["d"], corpus::Verdict::Pass);
+}
+
+// Cases that take 0.01 ms are written 15 ahead (the most, kCasesAhead: 2 ms of work would be
+// 200 of them); cases that take 50 ms one ahead. "e" is the fifth case: when it runs, a..d have
+// been answered, so the coordinator knows how long a case takes.
+TEST(CorpusRunner, FastCasesAreWrittenManyAheadSlowOnesOne) {
+  EXPECT_EQ(waiting_at_e("0.01"), "waiting 15");
+  EXPECT_EQ(waiting_at_e("50"), "waiting 1");
 }
 
 // run_corpus returns the results as it recorded them, not read back from results.jsonl: they
