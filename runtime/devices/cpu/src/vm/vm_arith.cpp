@@ -6,6 +6,7 @@
 // mode (NUMERICS.md rule 13), and the table of the program's mode is chosen at preparation.
 #include <array>
 #include <cmath>
+#include <type_traits>
 
 #include "tierlift/ir/numerics.h"
 #include "tierlift/rounding/rounding.h"
@@ -36,6 +37,13 @@ template <typename F> inline Vec4 each(const Vec4& a, const Vec4& b, F f) {
 template <typename F> inline Vec4 each(const Vec4& a, const Vec4& b, const Vec4& c, F f) {
   return {f(a[0], b[0], c[0]), f(a[1], b[1], c[1]), f(a[2], b[2], c[2]), f(a[3], b[3], c[3])};
 }
+
+// The back end of the rules that take exp2 or log2 (exp, log, pow, lit, expp, logp): flushing
+// denormals is Rounding::Llvmpipe, whose exp2 and log2 are lavapipe's polynomials; Exact's are
+// the C library's (rule 40).
+template <Denormals D>
+using ExpLogArith =
+    std::conditional_t<D == Denormals::Keep, num::FloatArith<D>, rounding::LlvmpipeArith<D>>;
 
 // Every compute function has the same signature; most use only some of the parameters.
 #define VM_OP(name)                                                                                \
@@ -84,13 +92,13 @@ VM_OP(op_rsq) {
   d = splat(num::legacy_rsq<D>(sc(s[0])));
 }
 VM_OP(op_exp) {
-  d = splat(num::legacy_exp<D>(sc(s[0])));
+  d = splat(num::rule::exp(ExpLogArith<D>{}, sc(s[0])));
 }
 VM_OP(op_log) {
-  d = splat(num::legacy_log<D>(sc(s[0])));
+  d = splat(num::rule::log(ExpLogArith<D>{}, sc(s[0])));
 }
 VM_OP(op_pow) {
-  d = splat(num::legacy_pow<D>(sc(s[0]), sc(s[1])));
+  d = splat(num::rule::pow(ExpLogArith<D>{}, sc(s[0]), sc(s[1])));
 }
 VM_OP(op_abs) {
   d = each(s[0], [](float a) { return std::fabs(a); });
@@ -115,7 +123,7 @@ VM_OP(op_cnd) {
 }
 
 VM_OP(op_lit) {
-  num::LitResult r = num::legacy_lit<D>(s[0][0], s[0][1], s[0][3]);
+  num::LitResult r = num::rule::lit(ExpLogArith<D>{}, s[0][0], s[0][1], s[0][3]);
   d = {r.x, r.y, r.z, r.w};
 }
 
@@ -156,16 +164,16 @@ VM_OP(op_dp2add) {
 VM_OP(op_expp) {
   float v = sc(s[0]);
   if (!inv.prog->vs11) {
-    d = splat(num::legacy_exp<D>(v));
+    d = splat(num::rule::exp(ExpLogArith<D>{}, v));
     return;
   }
-  const auto r = num::rule::expp_partial(num::FloatArith<D>{}, v);
+  const auto r = num::rule::expp_partial(ExpLogArith<D>{}, v);
   d = {r.x, r.y, r.z, r.w};
 }
 
 // logp: the D3D9 docs define it, in every version, as the scalar log of |v|.
 VM_OP(op_logp) {
-  d = splat(num::legacy_log<D>(sc(s[0])));
+  d = splat(num::rule::log(ExpLogArith<D>{}, sc(s[0])));
 }
 
 // Matrix macros: d[i] = dot(src0, row i); rows were fetched into s[1..rows].

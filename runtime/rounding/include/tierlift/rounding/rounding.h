@@ -23,6 +23,10 @@
 //   sin, cos (sincos)         Cody-Waite reduction by π/4 and a        sin/cos in double,
 //                             degree 7/8 polynomial in float with      rounded once
 //                             FMAs (sin_llvmpipe, cos_llvmpipe)        (sin_exact, cos_exact)
+//   exp2, log2 (exp, log,     exponent split and a degree-5 minimax    the C library's exp2f,
+//   pow, lit, expp, logp)     polynomial; mantissa y = (m−1)/(m+1)     log2f (FloatArith<Keep>)
+//                             and a degree-4 polynomial in y², FMAs
+//                             (exp2_llvmpipe, log2_llvmpipe, LlvmpipeArith)
 //   sRGB decode / encode      the exact rule on both devices: neither  IEC 61966-2-1 in double
 //                             uses a Vulkan sRGB format (srgb_*)       (srgb_decode_levels, …)
 //
@@ -213,6 +217,30 @@ float cos_exact(float a);
 // |a|·4/π ≥ 2^31 the octant is INT32_MIN's and the result is no sine at all.
 float sin_llvmpipe(float a);
 float cos_llvmpipe(float a);
+
+// ---- exp2 and log2 (exp, log, pow, lit, expp, logp; NUMERICS.md rule 40) ----------------
+
+// Exact: ir::numerics::FloatArith<Keep>'s exp2 and log2, the C library's (unchanged).
+
+// lavapipe (Mesa's gallivm, which lowers GLSL.std.450 Exp2 and Log2 to its own SSE/AVX code
+// rather than calling libm), written from its steps and constants and measured bit for bit
+// (tests/vulkan/exp_log_llvmpipe_test.cpp). exp2: a is clamped to [fl32(−126.99999), 128] (NaN
+// passes), split into floor(a) and the exact fraction f, and 2^floor(a) (built in the exponent
+// field; 0 for −127) multiplies a degree-5 polynomial in f, evaluated as two Horner chains of FMAs
+// in f² (even and odd coefficients) joined by one more FMA. log2: a < 0 (−inf included) and NaN
+// give NaN, ±0 and denormals −inf, +inf +inf; otherwise the exponent e and the mantissa m in [1, 2)
+// are read off a's bits, y = (m − 1)/(m + 1), and log2(a) = e + y·P(y²), P of degree 4 evaluated as
+// above, the last step one FMA. Denormals are flushed in and out of every step (rule 13).
+float exp2_llvmpipe(float a);
+float log2_llvmpipe(float a);
+
+// The fp32 back end of the Direct3D 9 rules (ir/numerics.h) with lavapipe's exp2 and log2:
+// what the CPU device runs exp, log, pow, lit, expp and logp on under Rounding::Llvmpipe (D
+// Flush or FlushResults). Every other operation is FloatArith's.
+template <ir::numerics::Denormals D> struct LlvmpipeArith : ir::numerics::FloatArith<D> {
+  static float exp2(float a) { return exp2_llvmpipe(a); }
+  static float log2(float a) { return log2_llvmpipe(a); }
+};
 // ---- Mip levels (NUMERICS.md, mip levels and LOD, M1-M3) --------------------------------
 //
 // lavapipe's level of detail, written from its sampler's steps (Mesa gallivm) and checked
