@@ -54,5 +54,28 @@ TEST(LavapipeWorkarounds, SgnOfADefHoldingNonFiniteValues) {
   EXPECT_EQ(r.stages.back().verdict, Verdict::Pass) << r.stages.back().message;
 }
 
+// `tierlift test --generate 3000 --profile vs_3_0 --seed 3`, case 01220, reduced: pow of two
+// defs (1e30 to the power −FLT_MIN), less a uniform, then frc. lavapipe's compiler folds exp2
+// and log2 of constants with the C library (2^-1.2e-36 = exactly 1) but computes them at run
+// time with its own polynomials, which the interpreter follows (NUMERICS.md rule 40: the
+// fraction of −1.2e-36 rounds to 1, and 2^-1·P(1) = 1 − 2^-24), and frc showed the last bit.
+// The differential run's modules read every def of a program that takes exp2 or log2 from
+// the uniform block, so nothing of it is folded.
+TEST(LavapipeWorkarounds, PowOfDefsIsComputedAtRunTime) {
+  vulkan::Device* device = lavapipe();
+  if (!device) TIERLIFT_SKIP_UNLESS_REQUIRED(::tierlift::test::kRequireVulkan, "no Vulkan device");
+  StageOptions o;
+  o.device = device;
+  o.seed = 3; // the run's seed, which with the id seeds the inputs
+  const char* text = "vs_3_0\ndcl_position v0\ndcl_normal v1\ndcl_color o1\n"
+                     "def c1, 1e+30, -1e+30, 1e-40, -1.1754944e-38\npow r7, c1.y, c1\n"
+                     "sub r4, r7, c4\nfrc r10, r4.y\nsetp_le p0, v1, r10\n(!p0.z) mov r4, c0\n"
+                     "mov o1, r4\n";
+  const CaseResult r =
+      run_listing("generated/vs_3_0/seed3/01220@989330651a2829e0", "pow.vsh", text, o);
+  ASSERT_EQ(r.stages.back().stage, kStageDiff);
+  EXPECT_EQ(r.stages.back().verdict, Verdict::Pass) << r.stages.back().message;
+}
+
 } // namespace
 } // namespace tierlift::corpus

@@ -119,7 +119,9 @@ struct CodegenOptions {
   // slot, instead of being a SPIR-V constant (ShaderModule::block_defs: the values the
   // device writes there): lavapipe's compiler folds some operations on such constants to
   // values the same operations give differently at run time (NUMERICS.md, "Lavapipe
-  // workarounds"). The Vulkan device sets it where its modules serve any constants
+  // workarounds"). So is every def of a program that takes exp2 or log2 (exp, log, pow, lit,
+  // expp, logp), which lavapipe folds with the C library but computes with its own
+  // polynomials (rule 40). The Vulkan device sets it where its modules serve any constants
   // (vulkan::TextureSet::set_reuse_programs).
   bool non_finite_defs_in_block = false;
   bool optimize = false; // run spirv-opt's performance passes after validation
