@@ -113,6 +113,12 @@ void Emitter::emit_entry() {
       std::vector<uint32_t> colors;
       for (const auto& [key, var] : regs_)
         if (key.first == RegFile::ColorOut) colors.push_back(key.second);
+      // A ps_3_0 may write no oC# (only oDepth, or nothing: a validator warning). D3D9 leaves
+      // the colour undefined; a Vulkan fragment shader without the output leaves the
+      // attachment's value undefined too, and lavapipe stores what its registers held. oC0 is
+      // stored from its register all the same, which starts at 0 as every register does
+      // (and as the interpreter's outputs do), so both devices draw (0, 0, 0, 0).
+      if (colors.empty()) colors.push_back(0);
       for (uint32_t n : colors) {
         const Id var =
             output_var(make_iv(InterfaceKind::Output, RegFile::ColorOut, n, n, 4), t_vec4);

@@ -52,23 +52,6 @@ bool replicated(const std::array<float, 4>& v) {
 }
 } // namespace
 
-namespace {
-// The instructions whose rules take GLSL.std.450 Exp2 or Log2 (ir/numeric_rules.h).
-bool takes_exp2_or_log2(const ir::Program& program) {
-  return std::any_of(program.code.begin(), program.code.end(), [](const ir::Instruction& in) {
-    switch (in.op) {
-    case ir::Opcode::Exp:
-    case ir::Opcode::Log:
-    case ir::Opcode::Pow:
-    case ir::Opcode::Lit:
-    case ir::Opcode::Expp:
-    case ir::Opcode::Logp: return true;
-    default: return false;
-    }
-  });
-}
-} // namespace
-
 Id Emitter::load_const(uint32_t index, const std::optional<ir::RelAddr>& rel) {
   // NUMERICS.md rule 13: under Rounding::Llvmpipe a def's denormals load as zeros of their
   // sign, as the interpreter loads them (runtime/devices/cpu/src/vm/vm_program.cpp): the driver
@@ -79,19 +62,15 @@ Id Emitter::load_const(uint32_t index, const std::optional<ir::RelAddr>& rel) {
     auto c = [&](int i) { return flush ? ir::numerics::flush_denormal(d.f(i)) : d.f(i); };
     return vec4_const(c(0), c(1), c(2), c(3));
   };
-  // CodegenOptions::non_finite_defs_in_block: such a def is read from its slot in the block,
-  // and so is every def of a program that takes exp2 or log2 (NUMERICS.md rule 40: lavapipe's
-  // compiler folds those of constants with the C library, at run time it uses its own).
+  // CodegenOptions::defs_in_block: the def is read from its slot in the block, where the
+  // device writes its value, so lavapipe's compiler folds no arithmetic on it.
   auto in_block = [&](uint32_t slot, const ir::ConstDef& d) {
-    if (!opt.non_finite_defs_in_block || slot >= relative_limit()) return false;
-    bool non_finite = takes_exp2_or_log2(prog);
-    for (int i = 0; i < 4; ++i) non_finite = non_finite || !std::isfinite(d.f(i));
-    if (non_finite)
-      block_defs_[slot] = {flush ? ir::numerics::flush_denormal(d.f(0)) : d.f(0),
-                           flush ? ir::numerics::flush_denormal(d.f(1)) : d.f(1),
-                           flush ? ir::numerics::flush_denormal(d.f(2)) : d.f(2),
-                           flush ? ir::numerics::flush_denormal(d.f(3)) : d.f(3)};
-    return non_finite;
+    if (!opt.defs_in_block || slot >= relative_limit()) return false;
+    block_defs_[slot] = {flush ? ir::numerics::flush_denormal(d.f(0)) : d.f(0),
+                         flush ? ir::numerics::flush_denormal(d.f(1)) : d.f(1),
+                         flush ? ir::numerics::flush_denormal(d.f(2)) : d.f(2),
+                         flush ? ir::numerics::flush_denormal(d.f(3)) : d.f(3)};
+    return true;
   };
   const Id ptr_vec4 = b.type_pointer(SC::Uniform, t_vec4);
   if (!rel) {

@@ -110,6 +110,27 @@ TEST(CliLaterProfiles, ProfilePresetsOfFxc) {
 // --front-face: the full-screen quad is wound clockwise, so vFace is +1 by default (Direct3D
 // 9's front face) and −1 with --front-face ccw, on both devices; anything else is a usage
 // error.
+// A ps_3_0 that writes no oC# (a validator warning) leaves the colour undefined in D3D9. Both
+// devices draw (0, 0, 0, 0), the value every register starts at: the SPIR-V stores oC0 from
+// its register all the same (lavapipe drew what its registers held, 0.549 and -1.07e-4 at one
+// pixel; generated ps_3_0 case 00147 of seed 2 was reduced to such a program).
+TEST(CliLaterProfiles, NoColourWrittenDrawsZeroOnBothDevices) {
+  Scratch s;
+  for (const char* body : {"", "def c0, 1, 2, 3, 4\nmov r0, c0\n"}) {
+    const std::string ps = s.file("n.psh", std::string("ps_3_0\n") + body);
+    for (const char* backend : {"cpu", "vulkan"}) {
+      auto r = run_cli("run --ps " + ps + " --size 4x4 --format rgba32f --probe 1,1 --probe 3,2" +
+                       " --json --backend " + backend);
+      if (no_vulkan(r)) break;
+      ASSERT_EQ(r.exit_code, 0) << backend << r.err;
+      auto j = nlohmann::json::parse(r.out);
+      for (int p = 0; p < 2; ++p)
+        for (int c = 0; c < 4; ++c)
+          EXPECT_EQ(j["result"]["probes"][p]["rgba"][c], 0.0) << backend << " " << body;
+    }
+  }
+}
+
 TEST(CliLaterProfiles, FrontFaceFlagDecidesVface) {
   Scratch s;
   const std::string ps = s.file("f.psh", "ps_3_0\ndcl vFace\nmov oC0, vFace\n");

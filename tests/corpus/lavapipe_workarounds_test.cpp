@@ -38,7 +38,7 @@ TEST(LavapipeWorkarounds, AbsOfAConstantVectorHoldingNan) {
 // holding inf, −inf and NaN, through lrp into oD0. lavapipe folded the constant expression to
 // a different alpha than it computes at run time (1 where the interpreter, and lavapipe on the
 // same values from a uniform, give 0). The differential run's modules read such a def from the
-// uniform block (codegen::CodegenOptions::non_finite_defs_in_block).
+// uniform block (codegen::CodegenOptions::defs_in_block).
 TEST(LavapipeWorkarounds, SgnOfADefHoldingNonFiniteValues) {
   vulkan::Device* device = lavapipe();
   if (!device) TIERLIFT_SKIP_UNLESS_REQUIRED(::tierlift::test::kRequireVulkan, "no Vulkan device");
@@ -73,6 +73,28 @@ TEST(LavapipeWorkarounds, PowOfDefsIsComputedAtRunTime) {
                      "mov o1, r4\n";
   const CaseResult r =
       run_listing("generated/vs_3_0/seed3/01220@989330651a2829e0", "pow.vsh", text, o);
+  ASSERT_EQ(r.stages.back().stage, kStageDiff);
+  EXPECT_EQ(r.stages.back().verdict, Verdict::Pass) << r.stages.back().message;
+}
+
+// `tierlift test --generate 300 --profile ps_3_0 --seed 2`, case 00147, reduced: m4x4 of a def
+// scalar by def rows, then texkill. Row c1 gives 0.0752·1e30 − 0.0752·1e30 + 0 − 8.8e-40: at
+// run time (denormals flushed, rule 13) the last product is −0 and no component is below 0,
+// so the pixel stays (the interpreter); folded by lavapipe's compiler, which keeps the
+// denormal, it is −8.8e-40 < 0 and the pixel was killed. The differential run's modules read
+// every def from the uniform block (codegen::CodegenOptions::defs_in_block), so nothing of it
+// is folded.
+TEST(LavapipeWorkarounds, TexkillOfADenormalFoldedFromDefs) {
+  vulkan::Device* device = lavapipe();
+  if (!device) TIERLIFT_SKIP_UNLESS_REQUIRED(::tierlift::test::kRequireVulkan, "no Vulkan device");
+  StageOptions o;
+  o.device = device;
+  const char* text = "ps_3_0\ndef c0, 0, -0, 1, -1\ndef c1, 1e+30, -1e+30, 1e-40, -1.1754944e-38\n"
+                     "def c3, -1.1994686, 0.07520628, 2.7075415, -0.53357077\n"
+                     "m4x4 r7, c3.y, c0\nif b1\ntexkill r7\nendif\nmov oC0, c0\n";
+  // The case's id: the inputs the reducer kept it failing on (b1 true in input set 0).
+  const CaseResult r =
+      run_listing("generated/ps_3_0/seed2/00147@8010c8d0afc25b5e", "kill.psh", text, o);
   ASSERT_EQ(r.stages.back().stage, kStageDiff);
   EXPECT_EQ(r.stages.back().verdict, Verdict::Pass) << r.stages.back().message;
 }

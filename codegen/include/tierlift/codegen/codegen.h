@@ -115,15 +115,14 @@ struct CodegenOptions {
   //    [−1, 1] clamp of a ps_1_x constant inside it; lavapipe, dx8 RGBA8 glow: 1.43 → 1.31 of
   //    the GLSL peer.
   std::optional<std::vector<std::array<float, 4>>> known_vs_constants, known_ps_constants;
-  // A def with an infinite or NaN component is read from the uniform block, at its register's
-  // slot, instead of being a SPIR-V constant (ShaderModule::block_defs: the values the
-  // device writes there): lavapipe's compiler folds some operations on such constants to
-  // values the same operations give differently at run time (NUMERICS.md, "Lavapipe
-  // workarounds"). So is every def of a program that takes exp2 or log2 (exp, log, pow, lit,
-  // expp, logp), which lavapipe folds with the C library but computes with its own
-  // polynomials (rule 40). The Vulkan device sets it where its modules serve any constants
-  // (vulkan::TextureSet::set_reuse_programs).
-  bool non_finite_defs_in_block = false;
+  // Every def is read from the uniform block, at its register's slot, instead of being a
+  // SPIR-V constant (ShaderModule::block_defs: the values the device writes there):
+  // lavapipe's compiler folds arithmetic on constants to values the same arithmetic gives
+  // differently at run time (NUMERICS.md, "Lavapipe workarounds": non-finite defs, exp2 and
+  // log2 folded with the C library, denormal results kept where run time flushes them). The
+  // Vulkan device sets it where its modules serve any constants
+  // (vulkan::TextureSet::set_reuse_programs: `tierlift test`'s differential run).
+  bool defs_in_block = false;
   bool optimize = false; // run spirv-opt's performance passes after validation
   // Pixel stage only (a vertex module ignores it): record one pixel's instruction results
   // (TracePixel). Unset, the module is exactly the one it always was.
@@ -222,7 +221,7 @@ struct ShaderModule {
   bool writes_depth = false;
   bool uses_kill = false;
   std::optional<TraceInfo> trace; // set when CodegenOptions::trace applied
-  // CodegenOptions::non_finite_defs_in_block: c# slots of the uniform block that hold a def
+  // CodegenOptions::defs_in_block: c# slots of the uniform block that hold a def
   // (denormals already flushed as the module would), written over the bound constants.
   std::vector<std::pair<uint32_t, std::array<float, 4>>> block_defs;
 };

@@ -219,7 +219,7 @@ ir::Status compile_programs(const Device::Impl& d, const pass::Pass& pass,
     co.known_vs_constants = pass.vs_constants.f; // the draw is cached under them
     co.known_ps_constants = pass.ps_constants.f;
   } else {
-    co.non_finite_defs_in_block = true; // NUMERICS.md, "Lavapipe workarounds"
+    co.defs_in_block = true; // NUMERICS.md, "Lavapipe workarounds"
   }
   co.point_sampling_floors = d.point_sampling_floors;
   if (textures.trace) {

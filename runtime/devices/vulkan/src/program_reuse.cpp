@@ -31,7 +31,7 @@ std::optional<std::string> compile_key(const ir::Program* vs, const ir::Program*
   k.put(o.unorm8_decode);
   k.put(o.point_sampling_floors);
   k.put(o.optimize);
-  k.put(o.non_finite_defs_in_block);
+  k.put(o.defs_in_block);
   k.put(o.srgb_write);
   k.put(o.entry_point.size());
   std::string key = k.take();
