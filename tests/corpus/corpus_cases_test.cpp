@@ -40,6 +40,17 @@ TEST(CorpusIds, Fnv1aOfKnownStrings) {
   EXPECT_EQ(case_id("x/a.psh", "a"), "x/a.psh@af63dc4c8601ec8c");
 }
 
+// A text file is a listing when a line starts (after blanks) with a version: vs or ps, '.'
+// or '_', a digit, '.' or '_', and a digit, x, s or w, in any case.
+TEST(CorpusDiscovery, TextIsAListingWhenALineStartsWithAVersion) {
+  for (const char* yes : {"ps_2_0\n", "  \tvs.1.1\nmov oPos, v0", "PS_3_SW",
+                          "; a comment\nps_2_x\n", "\nvs_1_1", "// c\r\n  Ps.1.4\r\n", "vs_3_0"})
+    EXPECT_TRUE(looks_like_listing(yes)) << yes;
+  for (const char* no : {"", "# README\nuse ps_2_0 here\n", "ps_2", "xps_2_0", "vs_3_q", "ps-2-0",
+                         "ps_a_0", "vx_1_1", "p s_2_0", "(ps_2_0)"})
+    EXPECT_FALSE(looks_like_listing(no)) << no;
+}
+
 TEST(CorpusDiscovery, FolderKeepsListingsOnlyWithIdsRelativeToTheRoot) {
   fs::path root = fresh_dir("folder") / "shaders";
   write(root / "sub" / "a.psh", kPs);
