@@ -17,21 +17,29 @@ vulkan::Device* lavapipe() {
   return d ? *d : nullptr;
 }
 
+// Runs `text` through every stage as case `id` of a run seeded `seed` and expects its
+// differential stage to pass. The id and the seed choose the generated inputs: a reduced
+// case keeps its id and its run's seed, so it is drawn on the inputs it failed on.
+void expect_differential_pass(vulkan::Device& device, const std::string& id, const char* name,
+                              const std::string& text, uint64_t seed = 1) {
+  StageOptions o;
+  o.device = &device;
+  o.seed = seed;
+  const CaseResult r = run_listing(id, name, text, o);
+  ASSERT_EQ(r.stages.back().stage, kStageDiff) << text;
+  EXPECT_EQ(r.stages.back().verdict, Verdict::Pass) << text << r.stages.back().message;
+}
+
 // `tierlift test --generate 200 --profile ps_2_0 --seed 3`, case 00075, reduced: abs of a
 // constant vector with a NaN in z came back unchanged from lavapipe (G: −inf, not inf) while
 // GLSL FAbs was the emitted form (codegen SpirvArith::abs now clears the sign bit).
 TEST(LavapipeWorkarounds, AbsOfAConstantVectorHoldingNan) {
   vulkan::Device* device = lavapipe();
   if (!device) TIERLIFT_SKIP_UNLESS_REQUIRED(::tierlift::test::kRequireVulkan, "no Vulkan device");
-  StageOptions o;
-  o.device = device;
   for (const char* text : {"ps_2_0\ndef c2, inf, -inf, 0x7fc00000, 0.5\nabs r7, c2\nmov oC0, r7\n",
                            "ps_2_0\ndef c2, 1, -2, 0x7fc00000, 0.5\nmov r0, c2\nabs r7, r0\n"
-                           "mov oC0, r7\n"}) {
-    const CaseResult r = run_listing("abs", "abs.psh", text, o);
-    ASSERT_EQ(r.stages.back().stage, kStageDiff);
-    EXPECT_EQ(r.stages.back().verdict, Verdict::Pass) << text << r.stages.back().message;
-  }
+                           "mov oC0, r7\n"})
+    expect_differential_pass(*device, "abs", "abs.psh", text);
 }
 
 // `tierlift test --generate 200 --profile vs_2_0 --seed 1`, case 00126, reduced: sgn of a def
@@ -42,16 +50,10 @@ TEST(LavapipeWorkarounds, AbsOfAConstantVectorHoldingNan) {
 TEST(LavapipeWorkarounds, SgnOfADefHoldingNonFiniteValues) {
   vulkan::Device* device = lavapipe();
   if (!device) TIERLIFT_SKIP_UNLESS_REQUIRED(::tierlift::test::kRequireVulkan, "no Vulkan device");
-  StageOptions o;
-  o.device = device;
-  const char* text = "vs_2_0\ndcl_position v0\ndef c2, inf, -inf, 0x7fc00000, 0.5\nrep i0\n"
-                     "endrep\nsgn r2, c2, r0, r2\nlrp r1, c0, r2, c0\nmov oPos, c0\n"
-                     "mov oD0, r1\n";
-  // The case's id: the inputs the reducer kept it failing on (they are seeded by the id).
-  const CaseResult r =
-      run_listing("generated/vs_2_0/seed1/00126@aef80c19a15f8799", "sgn.vsh", text, o);
-  ASSERT_EQ(r.stages.back().stage, kStageDiff);
-  EXPECT_EQ(r.stages.back().verdict, Verdict::Pass) << r.stages.back().message;
+  expect_differential_pass(*device, "generated/vs_2_0/seed1/00126@aef80c19a15f8799", "sgn.vsh",
+                           "vs_2_0\ndcl_position v0\ndef c2, inf, -inf, 0x7fc00000, 0.5\nrep i0\n"
+                           "endrep\nsgn r2, c2, r0, r2\nlrp r1, c0, r2, c0\nmov oPos, c0\n"
+                           "mov oD0, r1\n");
 }
 
 // `tierlift test --generate 3000 --profile vs_3_0 --seed 3`, case 01220, reduced: pow of two
@@ -59,22 +61,17 @@ TEST(LavapipeWorkarounds, SgnOfADefHoldingNonFiniteValues) {
 // and log2 of constants with the C library (2^-1.2e-36 = exactly 1) but computes them at run
 // time with its own polynomials, which the interpreter follows (NUMERICS.md rule 40: the
 // fraction of −1.2e-36 rounds to 1, and 2^-1·P(1) = 1 − 2^-24), and frc showed the last bit.
-// The differential run's modules read every def of a program that takes exp2 or log2 from
-// the uniform block, so nothing of it is folded.
+// The differential run's modules read every def from the uniform block
+// (codegen::CodegenOptions::defs_in_block), so nothing of it is folded.
 TEST(LavapipeWorkarounds, PowOfDefsIsComputedAtRunTime) {
   vulkan::Device* device = lavapipe();
   if (!device) TIERLIFT_SKIP_UNLESS_REQUIRED(::tierlift::test::kRequireVulkan, "no Vulkan device");
-  StageOptions o;
-  o.device = device;
-  o.seed = 3; // the run's seed, which with the id seeds the inputs
-  const char* text = "vs_3_0\ndcl_position v0\ndcl_normal v1\ndcl_color o1\n"
-                     "def c1, 1e+30, -1e+30, 1e-40, -1.1754944e-38\npow r7, c1.y, c1\n"
-                     "sub r4, r7, c4\nfrc r10, r4.y\nsetp_le p0, v1, r10\n(!p0.z) mov r4, c0\n"
-                     "mov o1, r4\n";
-  const CaseResult r =
-      run_listing("generated/vs_3_0/seed3/01220@989330651a2829e0", "pow.vsh", text, o);
-  ASSERT_EQ(r.stages.back().stage, kStageDiff);
-  EXPECT_EQ(r.stages.back().verdict, Verdict::Pass) << r.stages.back().message;
+  expect_differential_pass(*device, "generated/vs_3_0/seed3/01220@989330651a2829e0", "pow.vsh",
+                           "vs_3_0\ndcl_position v0\ndcl_normal v1\ndcl_color o1\n"
+                           "def c1, 1e+30, -1e+30, 1e-40, -1.1754944e-38\npow r7, c1.y, c1\n"
+                           "sub r4, r7, c4\nfrc r10, r4.y\nsetp_le p0, v1, r10\n"
+                           "(!p0.z) mov r4, c0\nmov o1, r4\n",
+                           3);
 }
 
 // `tierlift test --generate 300 --profile ps_3_0 --seed 2`, case 00147, reduced: m4x4 of a def
@@ -87,16 +84,12 @@ TEST(LavapipeWorkarounds, PowOfDefsIsComputedAtRunTime) {
 TEST(LavapipeWorkarounds, TexkillOfADenormalFoldedFromDefs) {
   vulkan::Device* device = lavapipe();
   if (!device) TIERLIFT_SKIP_UNLESS_REQUIRED(::tierlift::test::kRequireVulkan, "no Vulkan device");
-  StageOptions o;
-  o.device = device;
-  const char* text = "ps_3_0\ndef c0, 0, -0, 1, -1\ndef c1, 1e+30, -1e+30, 1e-40, -1.1754944e-38\n"
-                     "def c3, -1.1994686, 0.07520628, 2.7075415, -0.53357077\n"
-                     "m4x4 r7, c3.y, c0\nif b1\ntexkill r7\nendif\nmov oC0, c0\n";
-  // The case's id: the inputs the reducer kept it failing on (b1 true in input set 0).
-  const CaseResult r =
-      run_listing("generated/ps_3_0/seed2/00147@8010c8d0afc25b5e", "kill.psh", text, o);
-  ASSERT_EQ(r.stages.back().stage, kStageDiff);
-  EXPECT_EQ(r.stages.back().verdict, Verdict::Pass) << r.stages.back().message;
+  expect_differential_pass(*device, "generated/ps_3_0/seed2/00147@8010c8d0afc25b5e", "kill.psh",
+                           "ps_3_0\ndef c0, 0, -0, 1, -1\n"
+                           "def c1, 1e+30, -1e+30, 1e-40, -1.1754944e-38\n"
+                           "def c3, -1.1994686, 0.07520628, 2.7075415, -0.53357077\n"
+                           "m4x4 r7, c3.y, c0\nif b1\ntexkill r7\nendif\nmov oC0, c0\n",
+                           2);
 }
 
 } // namespace
