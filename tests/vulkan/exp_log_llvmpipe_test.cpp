@@ -77,13 +77,8 @@ std::vector<std::pair<float, float>> arguments() {
   return a;
 }
 
-bool same_bits(float x, float y) {
-  return std::bit_cast<uint32_t>(x) == std::bit_cast<uint32_t>(y) || (x != x && y != y);
-}
-
 TEST_F(VulkanTest, ExpLogPowMatchTheLlvmpipeModelBitForBit) {
-  if (dev->name().find("llvmpipe") == std::string::npos)
-    GTEST_SKIP() << "the rule models lavapipe; device is " << dev->name();
+  TIERLIFT_SKIP_UNLESS_LAVAPIPE(dev);
   const auto args = arguments();
   ASSERT_EQ(args.size(), size_t{kW} * kH);
   auto tex = std::make_shared<img::Image>(kW, kH, img::Format::RGBA32F);
@@ -91,46 +86,33 @@ TEST_F(VulkanTest, ExpLogPowMatchTheLlvmpipeModelBitForBit) {
     tex->rgba[4 * i] = args[i].first;
     tex->rgba[4 * i + 1] = args[i].second;
   }
-  cpu::Pass pass;
-  pass.vertex_program = parse_listing("vs_3_0\ndcl_position v0\ndcl_texcoord v3\n"
-                                      "dcl_position o0\ndcl_texcoord o1\nmov o0, v0\nmov o1, v3\n",
-                                      "explog.vsh");
-  pass.pixel_program = parse_listing("ps_3_0\ndcl_texcoord v0\ndcl_2d s0\ntexld r0, v0, s0\n"
-                                     "exp r1.x, r0.x\nlog r1.y, r0.x\npow r1.z, r0.x, r0.y\n"
-                                     "mov r1.w, r0.x\nmov oC0, r1\n",
-                                     "explog.psh");
+  const cpu::Pass pass = per_texel_pass(tex,
+                                        "ps_3_0\ndcl_texcoord v0\ndcl_2d s0\ntexld r0, v0, s0\n"
+                                        "exp r1.x, r0.x\nlog r1.y, r0.x\npow r1.z, r0.x, r0.y\n"
+                                        "mov r1.w, r0.x\nmov oC0, r1\n",
+                                        "explog");
   ASSERT_TRUE(pass.vertex_program && pass.pixel_program);
-  pass.textures[0].image = tex;
-  pass.textures[0].sampler.filter = cpu::Filter::Point;
-  pass.textures[0].sampler.address_u = pass.textures[0].sampler.address_v = cpu::AddressMode::Clamp;
-  cpu::set_full_screen_quad(pass, 0);
-  for (size_t k = 0; k < pass.vertices.size(); ++k) pass.vertices[k].v[3] = cpu::kQuadUV[k];
-  pass.conventions.pixel_center = ir::PixelCenter::Modern; // pixel i reads texel i
-  img::Image vk(kW, kH, img::Format::RGBA32F), cpu_llvmpipe = vk, cpu_exact = vk;
-  ir::Result<pass::DrawReport> r = dev->draw(pass, vk);
-  ASSERT_TRUE(r.ok()) << r.message();
-  ASSERT_TRUE(cpu::draw(pass, cpu_llvmpipe, 2).ok());
-  cpu::Pass exact = pass;
-  exact.conventions.rounding = ir::Rounding::Exact;
-  ASSERT_TRUE(cpu::draw(exact, cpu_exact, 2).ok());
+  const ThreeWays t = draw_three_ways(*dev, pass, img::Image(kW, kH, img::Format::RGBA32F));
+  ASSERT_TRUE(t.ok);
+  const img::Image &vk = t.vk, &cpu_llvmpipe = t.cpu, &cpu_exact = t.cpu_exact;
 
   const rounding::LlvmpipeArith<ir::numerics::Denormals::Flush> model;
   size_t model_off = 0, cpu_off = 0, exact_off = 0;
   for (size_t i = 0; i < args.size(); ++i) {
     const float* px = &vk.rgba[4 * i];
     const auto [x, y] = args[i];
-    ASSERT_TRUE(same_bits(px[3], x)) << "pixel " << i << " read another texel";
+    ASSERT_TRUE(same_float_bits(px[3], x)) << "pixel " << i << " read another texel";
     const float want[3] = {ir::numerics::rule::exp(model, x), ir::numerics::rule::log(model, x),
                            ir::numerics::rule::pow(model, x, y)};
     for (int c = 0; c < 3; ++c) {
-      if (!same_bits(px[c], want[c]) && model_off++ < 12)
+      if (!same_float_bits(px[c], want[c]) && model_off++ < 12)
         ADD_FAILURE() << fmt::format("{}({:a}, {:a}) [{}, {}]: lavapipe {:a} ({}), model {:a} ({})",
                                      c == 0   ? "exp"
                                      : c == 1 ? "log"
                                               : "pow",
                                      x, y, x, y, px[c], px[c], want[c], want[c]);
-      cpu_off += !same_bits(cpu_llvmpipe.rgba[4 * i + c], px[c]);
-      exact_off += !same_bits(cpu_exact.rgba[4 * i + c], px[c]);
+      cpu_off += !same_float_bits(cpu_llvmpipe.rgba[4 * i + c], px[c]);
+      exact_off += !same_float_bits(cpu_exact.rgba[4 * i + c], px[c]);
     }
   }
   EXPECT_EQ(model_off, 0u);
@@ -149,8 +131,7 @@ TEST_F(VulkanTest, ExpLogPowMatchTheLlvmpipeModelBitForBit) {
 // pow(1.9, 8.3): 205.899323 folded, 205.899246 computed at run time. This test records the
 // folding; it fails when lavapipe stops folding so (or folds with the polynomials).
 TEST_F(VulkanTest, ExpLogOfDefConstantsFoldWithTheCLibrary) {
-  if (dev->name().find("llvmpipe") == std::string::npos)
-    GTEST_SKIP() << "the rule models lavapipe; device is " << dev->name();
+  TIERLIFT_SKIP_UNLESS_LAVAPIPE(dev);
   cpu::Pass pass;
   pass.vertex_program =
       parse_listing("vs_3_0\ndcl_position v0\ndcl_position o0\nmov o0, v0\n", "fold.vsh");
@@ -170,9 +151,9 @@ TEST_F(VulkanTest, ExpLogOfDefConstantsFoldWithTheCLibrary) {
   const float run_time[3] = {num::rule::pow(model, 1.9f, 8.3f), num::rule::exp(model, 0.5f),
                              num::rule::log(model, 1.9f)};
   for (int c = 0; c < 3; ++c) {
-    EXPECT_TRUE(same_bits(vk.rgba[c], folded[c])) << c << ": " << vk.rgba[c];
-    EXPECT_TRUE(same_bits(cpu_llvmpipe.rgba[c], run_time[c])) << c;
-    EXPECT_FALSE(same_bits(folded[c], run_time[c])) << c;
+    EXPECT_TRUE(same_float_bits(vk.rgba[c], folded[c])) << c << ": " << vk.rgba[c];
+    EXPECT_TRUE(same_float_bits(cpu_llvmpipe.rgba[c], run_time[c])) << c;
+    EXPECT_FALSE(same_float_bits(folded[c], run_time[c])) << c;
   }
   EXPECT_EQ(std::bit_cast<uint32_t>(vk.rgba[0]), 0x434DE63Au); // 205.899323
 }

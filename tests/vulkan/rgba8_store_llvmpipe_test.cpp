@@ -51,18 +51,8 @@ std::shared_ptr<img::Image> source_values() {
 }
 
 cpu::Pass pass_reading(std::shared_ptr<const img::Image> tex, cpu::BlendMode blend) {
-  cpu::Pass p;
-  p.vertex_program = parse_listing(
-      "vs_2_0\ndcl_position v0\ndcl_texcoord v3\nmov oPos, v0\nmov oT0, v3\n", "store.vsh");
-  p.pixel_program =
-      parse_listing("ps_2_0\ndcl t0\ndcl_2d s0\ntexld r0, t0, s0\nmov oC0, r0\n", "store.psh");
-  p.textures[0].image = std::move(tex);
-  p.textures[0].sampler.filter = cpu::Filter::Point;
-  p.textures[0].sampler.address_u = p.textures[0].sampler.address_v = cpu::AddressMode::Clamp;
-  cpu::set_full_screen_quad(p, 0);
-  for (size_t k = 0; k < p.vertices.size(); ++k) p.vertices[k].v[3] = cpu::kQuadUV[k];
-  // Modern centres: pixel i reads texel i exactly (point sampling at (i + ½)/W).
-  p.conventions.pixel_center = ir::PixelCenter::Modern;
+  cpu::Pass p = per_texel_pass(
+      std::move(tex), "ps_2_0\ndcl t0\ndcl_2d s0\ntexld r0, t0, s0\nmov oC0, r0\n", "store");
   p.blend = blend;
   return p;
 }
@@ -79,8 +69,7 @@ size_t differing_values(const img::Image& a, const img::Image& b, std::string* f
 }
 
 TEST_F(VulkanTest, Rgba8StoreAndBlendMatchLavapipeByteForByte) {
-  if (dev->name().find("llvmpipe") == std::string::npos)
-    GTEST_SKIP() << "the rule models lavapipe; device is " << dev->name();
+  TIERLIFT_SKIP_UNLESS_LAVAPIPE(dev);
   const auto tex = source_values();
   img::Image dst(kW, kH, img::Format::RGBA8);
   uint64_t state = 77;
@@ -96,13 +85,9 @@ TEST_F(VulkanTest, Rgba8StoreAndBlendMatchLavapipeByteForByte) {
   for (const auto& [mode, min_exact_diffs] : modes) {
     SCOPED_TRACE(static_cast<int>(mode));
     const cpu::Pass pass = pass_reading(tex, mode);
-    img::Image vk = dst, cpu_llvmpipe = dst, cpu_exact = dst;
-    ir::Result<pass::DrawReport> r = dev->draw(pass, vk);
-    ASSERT_TRUE(r.ok()) << r.message();
-    ASSERT_TRUE(cpu::draw(pass, cpu_llvmpipe, 2).ok());
-    cpu::Pass exact = pass;
-    exact.conventions.rounding = ir::Rounding::Exact;
-    ASSERT_TRUE(cpu::draw(exact, cpu_exact, 2).ok());
+    const ThreeWays t = draw_three_ways(*dev, pass, dst);
+    ASSERT_TRUE(t.ok);
+    const img::Image &vk = t.vk, &cpu_llvmpipe = t.cpu, &cpu_exact = t.cpu_exact;
 
     std::string first;
     EXPECT_EQ(differing_values(cpu_llvmpipe, vk, &first), 0u) << first;

@@ -48,55 +48,37 @@ std::vector<float> arguments() {
   return a;
 }
 
-bool same_bits(float x, float y) {
-  return std::bit_cast<uint32_t>(x) == std::bit_cast<uint32_t>(y) || (x != x && y != y);
-}
-
 TEST_F(VulkanTest, SincosMatchesTheLlvmpipeModelBitForBit) {
   // The model is lavapipe's; on another Vulkan device (a GPU picked with --gpu) there is
   // nothing to compare it with. CI's device is lavapipe, so the test runs there and can fail.
-  if (dev->name().find("llvmpipe") == std::string::npos)
-    GTEST_SKIP() << "the rule models lavapipe; device is " << dev->name();
+  TIERLIFT_SKIP_UNLESS_LAVAPIPE(dev);
   const std::vector<float> args = arguments();
   auto tex = std::make_shared<img::Image>(kW, kH, img::Format::RGBA32F);
   for (size_t i = 0; i < args.size(); ++i) tex->rgba[4 * i] = args[i];
-  cpu::Pass pass;
-  pass.vertex_program = parse_listing("vs_3_0\ndcl_position v0\ndcl_texcoord v3\n"
-                                      "dcl_position o0\ndcl_texcoord o1\nmov o0, v0\nmov o1, v3\n",
-                                      "sincos.vsh");
-  pass.pixel_program =
-      parse_listing("ps_3_0\ndef c0, 0, 0, 0, 1\ndcl_texcoord v0\ndcl_2d s0\ntexld r0, v0, s0\n"
-                    "mov r1, c0\nsincos r1.xy, r0.x\nmov r1.z, r0.x\nmov oC0, r1\n",
-                    "sincos.psh");
+  const cpu::Pass pass =
+      per_texel_pass(tex,
+                     "ps_3_0\ndef c0, 0, 0, 0, 1\ndcl_texcoord v0\ndcl_2d s0\ntexld r0, v0, s0\n"
+                     "mov r1, c0\nsincos r1.xy, r0.x\nmov r1.z, r0.x\nmov oC0, r1\n",
+                     "sincos");
   ASSERT_TRUE(pass.vertex_program && pass.pixel_program);
-  pass.textures[0].image = tex;
-  pass.textures[0].sampler.filter = cpu::Filter::Point;
-  pass.textures[0].sampler.address_u = pass.textures[0].sampler.address_v = cpu::AddressMode::Clamp;
-  cpu::set_full_screen_quad(pass, 0);
-  for (size_t k = 0; k < pass.vertices.size(); ++k) pass.vertices[k].v[3] = cpu::kQuadUV[k];
-  pass.conventions.pixel_center = ir::PixelCenter::Modern; // pixel i reads texel i
-  img::Image vk(kW, kH, img::Format::RGBA32F), cpu_llvmpipe = vk, cpu_exact = vk;
-  ir::Result<pass::DrawReport> r = dev->draw(pass, vk);
-  ASSERT_TRUE(r.ok()) << r.message();
-  ASSERT_TRUE(cpu::draw(pass, cpu_llvmpipe, 2).ok());
-  cpu::Pass exact = pass;
-  exact.conventions.rounding = ir::Rounding::Exact;
-  ASSERT_TRUE(cpu::draw(exact, cpu_exact, 2).ok());
+  const ThreeWays t = draw_three_ways(*dev, pass, img::Image(kW, kH, img::Format::RGBA32F));
+  ASSERT_TRUE(t.ok);
+  const img::Image &vk = t.vk, &cpu_llvmpipe = t.cpu, &cpu_exact = t.cpu_exact;
 
   size_t model_off = 0, cpu_off = 0, exact_off = 0;
   for (size_t i = 0; i < args.size(); ++i) {
     const float* px = &vk.rgba[4 * i];
-    ASSERT_TRUE(same_bits(px[2], args[i])) << "pixel " << i << " read another texel";
+    ASSERT_TRUE(same_float_bits(px[2], args[i])) << "pixel " << i << " read another texel";
     const float want_cos = rounding::cos_llvmpipe(args[i]);
     const float want_sin = rounding::sin_llvmpipe(args[i]);
-    if (!same_bits(px[0], want_cos) || !same_bits(px[1], want_sin)) {
+    if (!same_float_bits(px[0], want_cos) || !same_float_bits(px[1], want_sin)) {
       if (model_off++ < 8)
         ADD_FAILURE() << fmt::format("sincos({:a}): lavapipe ({:a}, {:a}), model ({:a}, {:a})",
                                      args[i], px[0], px[1], want_cos, want_sin);
     }
     for (int c = 0; c < 2; ++c) {
-      cpu_off += !same_bits(cpu_llvmpipe.rgba[4 * i + c], px[c]);
-      exact_off += !same_bits(cpu_exact.rgba[4 * i + c], px[c]);
+      cpu_off += !same_float_bits(cpu_llvmpipe.rgba[4 * i + c], px[c]);
+      exact_off += !same_float_bits(cpu_exact.rgba[4 * i + c], px[c]);
     }
   }
   EXPECT_EQ(model_off, 0u);

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <link.h>
 
+#include <bit>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -177,6 +178,65 @@ inline TwoWays draw_both(vulkan::Device& dev, const cpu::Pass& pass, uint32_t w,
   EXPECT_TRUE(c) << c.message();
   if (c) t.cmp = *c;
   t.ok = s.ok() && r.ok() && c.ok();
+  return t;
+}
+
+// The rules that model lavapipe bit for bit (NUMERICS.md rules 35, 39, 40) have nothing to
+// compare on another device (a GPU picked for the tests), so their tests skip there; under
+// TIERLIFT_REQUIRE_VULKAN (CI, whose device is lavapipe) another device fails them instead, so
+// a skip cannot turn that run green. Like GTEST_SKIP it returns from the test body.
+#define TIERLIFT_SKIP_UNLESS_LAVAPIPE(device)                                                      \
+  do {                                                                                             \
+    if ((device)->name().find("llvmpipe") == std::string::npos)                                    \
+      TIERLIFT_SKIP_UNLESS_REQUIRED(::tierlift::test::kRequireVulkan,                              \
+                                    "the rule models lavapipe; device is " + (device)->name());    \
+  } while (0)
+
+// The same bits, or both NaN whatever their payloads.
+inline bool same_float_bits(float x, float y) {
+  return std::bit_cast<uint32_t>(x) == std::bit_cast<uint32_t>(y) || (x != x && y != y);
+}
+
+// A pass whose pixel i reads texel i of `tex` (POINT, CLAMP, modern pixel centres: point
+// sampling at (i + ½)/W) through `pixel_listing`, which reads the quad's uv from t0 (ps_2_0)
+// or from a dcl_texcoord v0 (ps_3_0), and a vertex program of the same model passing it on.
+inline cpu::Pass per_texel_pass(std::shared_ptr<const img::Image> tex,
+                                const std::string& pixel_listing, const std::string& name) {
+  cpu::Pass p;
+  const bool sm3 = pixel_listing.starts_with("ps_3_0");
+  p.vertex_program = parse_listing(
+      sm3 ? "vs_3_0\ndcl_position v0\ndcl_texcoord v3\ndcl_position o0\ndcl_texcoord o1\n"
+            "mov o0, v0\nmov o1, v3\n"
+          : "vs_2_0\ndcl_position v0\ndcl_texcoord v3\nmov oPos, v0\nmov oT0, v3\n",
+      name + ".vsh");
+  p.pixel_program = parse_listing(pixel_listing, name + ".psh");
+  p.textures[0].image = std::move(tex);
+  p.textures[0].sampler.filter = cpu::Filter::Point;
+  p.textures[0].sampler.address_u = p.textures[0].sampler.address_v = cpu::AddressMode::Clamp;
+  cpu::set_full_screen_quad(p, 0);
+  for (size_t k = 0; k < p.vertices.size(); ++k) p.vertices[k].v[3] = cpu::kQuadUV[k];
+  p.conventions.pixel_center = ir::PixelCenter::Modern;
+  return p;
+}
+
+// `pass` drawn on `dev` and on the CPU device under the pass's rounding and under
+// Rounding::Exact, each into a copy of `initial`: what a lavapipe-model test compares.
+struct ThreeWays {
+  img::Image vk, cpu, cpu_exact;
+  bool ok = false;
+};
+inline ThreeWays draw_three_ways(vulkan::Device& dev, const cpu::Pass& pass,
+                                 const img::Image& initial) {
+  ThreeWays t{initial, initial, initial};
+  ir::Result<pass::DrawReport> r = dev.draw(pass, t.vk);
+  EXPECT_TRUE(r.ok()) << r.message();
+  ir::Result<cpu::DrawStats> c = cpu::draw(pass, t.cpu, 2);
+  EXPECT_TRUE(c.ok()) << c.message();
+  cpu::Pass exact = pass;
+  exact.conventions.rounding = ir::Rounding::Exact;
+  ir::Result<cpu::DrawStats> e = cpu::draw(exact, t.cpu_exact, 2);
+  EXPECT_TRUE(e.ok()) << e.message();
+  t.ok = r.ok() && c.ok() && e.ok();
   return t;
 }
 
