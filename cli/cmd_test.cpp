@@ -12,6 +12,7 @@
 #include "commands.h"
 #include "report.h"
 #include "tierlift/corpus/cases.h"
+#include "tierlift/corpus/output_guard.h"
 #include "tierlift/corpus/report.h"
 #include "tierlift/corpus/runner.h"
 #include "tierlift/corpus/shard.h"
@@ -197,7 +198,14 @@ int run_test(const TestFlags& f) {
     for (const corpus::Case& c : *cases) fmt::print("{}\n", c.id);
     return report.finish(kExitOk);
   }
+  const std::vector<std::string> read = {f.baseline, f.flakes, f.skips, f.shard_costs};
+  if (ir::Status s = corpus::refuse_outputs_among_inputs(f.output, read); !s) {
+    report.error("write", s.message());
+    return report.finish(kExitUsage);
+  }
   corpus::RunOptions o;
+  if (!f.shard_costs.empty())
+    if (auto costs = corpus::read_costs(f.shard_costs)) o.costs = std::move(*costs);
   char self[4096];
   const ssize_t n = ::readlink("/proc/self/exe", self, sizeof self - 1);
   o.worker_argv = {n > 0 ? std::string(self, static_cast<size_t>(n)) : std::string("tierlift"),
@@ -241,6 +249,11 @@ int run_merge(const TestFlags& f) {
       report.error("usage", fmt::format("-o {} is one of the folders merged", f.merge_output));
       return report.finish(kExitUsage);
     }
+  const std::vector<std::string> read = {f.baseline, f.flakes, f.skips};
+  if (ir::Status s = corpus::refuse_outputs_among_inputs(f.merge_output, read); !s) {
+    report.error("write", s.message());
+    return report.finish(kExitUsage);
+  }
   auto e = expectations(f);
   if (!e) {
     report.error(e.diagnostics().front().rule, e.message());

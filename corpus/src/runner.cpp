@@ -20,6 +20,8 @@
 
 #include <fmt/format.h>
 
+#include "tierlift/corpus/output_guard.h"
+#include "tierlift/corpus/shard.h"
 #include "tierlift/io/output_file.h"
 
 namespace tierlift::corpus {
@@ -159,6 +161,10 @@ public:
     std::error_code ec;
     fs::create_directories(o_.out_dir, ec);
     jsonl_path_ = (fs::path(o_.out_dir) / "results.jsonl").string();
+    // The times of the run this folder holds, if any, before the file is replaced.
+    std::map<std::string, uint64_t> costs = o_.costs;
+    if (costs.empty() && fs::is_regular_file(jsonl_path_, ec))
+      if (auto earlier = read_costs(jsonl_path_)) costs = std::move(*earlier);
     std::set<std::string> done;
     if (o_.resume)
       for (CaseResult& r : read_results_jsonl(jsonl_path_)) {
@@ -171,7 +177,7 @@ public:
       return ir::fail(jsonl_path_, "io", fmt::format("{}: {}", jsonl_path_, std::strerror(errno)));
     const std::string log = (fs::path(o_.out_dir) / "workers.log").string();
     log_ = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    std::deque<size_t> pending;
+    std::vector<size_t> to_run;
     for (size_t i = 0; i < cases_.size(); ++i) {
       if (done.contains(cases_[i].id)) continue;
       if (Expectations::matches(o_.expectations.skips, cases_[i].id)) {
@@ -182,8 +188,13 @@ public:
         record(cases_[i], r);
         continue;
       }
-      pending.push_back(i);
+      to_run.push_back(i);
     }
+    // Costliest first: on a corpus where a few cases take a tenth of the time each, the last
+    // one handed out decides when the run ends.
+    flush_results();
+    to_run = costliest_first(cases_, std::move(to_run), costs);
+    std::deque<size_t> pending(to_run.begin(), to_run.end());
     total_ = pending.size();
     t0_ = Clock::now();
     std::signal(SIGPIPE, SIG_IGN);
@@ -193,6 +204,7 @@ public:
     for (Worker& w : workers_)
       if (w.pid > 0) reap(w, false);
     if (o_.progress) std::fputs("\n", stderr);
+    flush_results();
     ::close(jsonl_);
     if (log_ >= 0) ::close(log_);
     return s;
@@ -208,6 +220,9 @@ private:
       size_t busy = 0;
       for (size_t k = 0; k < jobs; ++k) {
         Worker& w = workers_[k];
+        // The lines of this round go out in one write: on a check-only run a round hands a
+        // worker up to kCasesAhead cases, and a write each was a system call a case.
+        std::string lines;
         while (w.jobs.size() < 1 + cases_ahead() && !pending.empty()) {
           const std::string line = case_json(cases_[pending.front()]).dump() + "\n";
           // The cases written ahead must fit the pipe's buffer together: a busy (or hung)
@@ -220,11 +235,9 @@ private:
           w.jobs.push_back(pending.front());
           w.line_bytes.push_back(line.size());
           pending.pop_front();
-          if (!write_all(w.to, line)) {
-            finish_dead(w, reap(w, true));
-            break;
-          }
+          lines += line;
         }
+        if (!lines.empty() && !write_all(w.to, lines)) finish_dead(w, reap(w, true));
         if (!w.jobs.empty()) ++busy;
       }
       if (busy == 0 && pending.empty()) return ir::ok_status();
@@ -263,7 +276,17 @@ private:
       pop_job(w);
       give_back(w);
     }
+    flush_results();
     progress();
+  }
+
+  // The results recorded since the last flush, in one write: those of one wake of the
+  // coordinator (a read can bring several answers), so a kill of the whole run loses none
+  // that a worker had answered before the wake ended.
+  void flush_results() {
+    if (jsonl_lines_.empty()) return;
+    write_all(jsonl_, jsonl_lines_);
+    jsonl_lines_.clear();
   }
 
   void read_from(Worker& w) {
@@ -277,10 +300,11 @@ private:
     w.buffer.append(chunk, static_cast<size_t>(n));
     // Every whole line: one read may bring the answers to both cases in flight.
     size_t nl;
-    while (!w.jobs.empty() && (nl = w.buffer.find('\n')) != std::string::npos) {
-      std::optional<CaseResult> r =
-          from_json(nlohmann::json::parse(w.buffer.substr(0, nl), nullptr, false));
-      w.buffer.erase(0, nl + 1);
+    size_t from = 0;
+    while (!w.jobs.empty() && (nl = w.buffer.find('\n', from)) != std::string::npos) {
+      std::string line = w.buffer.substr(from, nl - from);
+      from = nl + 1;
+      std::optional<CaseResult> r = from_json(nlohmann::json::parse(line, nullptr, false));
       if (!r) {
         finish_dead(w, reap(w, true));
         return;
@@ -288,10 +312,11 @@ private:
       // The first answer's time, then an average over the last few dozen (an exponential
       // one).
       mean_case_ms_ = answers_++ == 0 ? r->ms : mean_case_ms_ + (r->ms - mean_case_ms_) / 32;
-      record(cases_[w.jobs.front()], *r);
+      record(cases_[w.jobs.front()], std::move(*r), std::move(line));
       pop_job(w);
       w.started = Clock::now(); // the next case, if any, starts now
     }
+    w.buffer.erase(0, from);
   }
 
   CaseResult lost(const Worker& w, Verdict v, std::string note) {
@@ -318,28 +343,47 @@ private:
     w.buffer.clear();
   }
 
-  void record(const Case& c, CaseResult r) {
+  // `answered`: the worker's line, when the result is one. It goes to results.jsonl as it
+  // came, with the repro command added, unless the coordinator changed more of the result
+  // (a rerun's attempt, a flake, a reduced program): on a check-only run, serialising each
+  // result again was the larger part of the coordinator's time a case.
+  void record(const Case& c, CaseResult r, std::string answered = {}) {
+    bool as_answered = !answered.empty() && answered.back() == '}' && r.attempt == attempt_ &&
+                       r.repro.empty() && !r.flaky && r.reduced.empty();
     r.attempt = attempt_;
     if (o_.repro) r.repro = o_.repro(c);
     const bool unexpected = is_failure(r.verdict) && !o_.expectations.baseline.contains(r.id) &&
                             !Expectations::matches(o_.expectations.flakes, r.id);
     if (attempt_ == 1 && unexpected) rerun_.push_back(index_of(c));
     if (attempt_ == 2 && !is_failure(r.verdict)) r.flaky = true;
+    as_answered = as_answered && !r.flaky;
     if (!r.reduced.empty()) {
       namespace fs = std::filesystem;
       std::error_code ec;
       fs::create_directories(fs::path(o_.out_dir) / "reduced", ec);
       const std::string path =
           (fs::path(o_.out_dir) / "reduced" / (file_name_of(r.id) + ".asm")).string();
-      if (io::write_output(path, r.reduced))
+      if (!is_a_listing(path) && io::write_output(path, r.reduced))
         r.repro += fmt::format(" (reduced program: tierlift test {})", path);
     }
-    write_all(jsonl_, to_json(r).dump() + "\n");
+    if (as_answered && !r.repro.empty()) {
+      answered.pop_back();
+      answered += ",\"repro\":" + nlohmann::json(r.repro).dump() + "}";
+    }
+    jsonl_lines_ += as_answered ? answered : to_json(r).dump();
+    jsonl_lines_ += '\n';
     if (attempt_ == 1) {
       ++finished_;
       if (is_failure(r.verdict)) ++failures_;
     }
     results_[r.id] = std::move(r);
+  }
+
+  // A reduced program is not written over a listing of the run (a folder of earlier
+  // results tested again holds them).
+  bool is_a_listing(const std::string& path) const {
+    return std::any_of(cases_.begin(), cases_.end(),
+                       [&](const Case& c) { return io::same_file(path, c.path); });
   }
 
   // Cases to write after the running one (kAheadMs).
@@ -366,6 +410,7 @@ private:
   std::vector<size_t> rerun_;
   std::map<std::string, CaseResult> results_;
   std::string jsonl_path_;
+  std::string jsonl_lines_; // recorded, not yet written (flush_results)
   int jsonl_ = -1, log_ = -1;
   unsigned attempt_ = 1;
   size_t total_ = 0, finished_ = 0, failures_ = 0;
@@ -380,6 +425,10 @@ private:
 
 ir::Result<std::vector<CaseResult>> run_corpus(const std::vector<Case>& cases,
                                                const RunOptions& options) {
+  std::vector<std::string> paths;
+  for (const Case& c : cases)
+    if (!c.path.empty()) paths.push_back(c.path);
+  if (ir::Status s = refuse_outputs_among_inputs(options.out_dir, paths); !s) return s.failure();
   Coordinator coordinator(cases, options);
   if (ir::Status s = coordinator.run(); !s) return s.failure();
   std::vector<CaseResult> results = coordinator.take_results();

@@ -67,4 +67,29 @@ std::vector<Case> balanced_shard(const std::vector<Case>& cases,
   return out;
 }
 
+std::vector<size_t> costliest_first(const std::vector<Case>& cases, std::vector<size_t> which,
+                                    const std::map<std::string, uint64_t>& costs) {
+  const uint64_t unknown = median(costs);
+  // Costs that name none of these cases (another corpus's run) say nothing about them.
+  const bool by_time = std::any_of(which.begin(), which.end(),
+                                   [&](size_t i) { return costs.contains(cases[i].id); });
+  std::vector<uint64_t> cost(cases.size(), 0);
+  for (size_t i : which) {
+    const Case& c = cases[i];
+    if (by_time) {
+      auto it = costs.find(c.id);
+      cost[i] = it == costs.end() ? unknown : it->second;
+    } else if (c.generated || c.path.empty()) {
+      cost[i] = c.text.size();
+    } else {
+      std::error_code ec;
+      const uintmax_t bytes = std::filesystem::file_size(c.path, ec);
+      cost[i] = ec ? 0 : static_cast<uint64_t>(bytes);
+    }
+  }
+  std::stable_sort(which.begin(), which.end(),
+                   [&](size_t a, size_t b) { return cost[a] > cost[b]; });
+  return which;
+}
+
 } // namespace tierlift::corpus

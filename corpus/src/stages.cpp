@@ -10,6 +10,7 @@
 #include "diff_run.h"
 #include "tierlift/assembly/bytecode.h"
 #include "tierlift/assembly/load.h"
+#include "tierlift/assembly/validator.h"
 #include "tierlift/codegen/codegen.h"
 #include "tierlift/io/bounded_read.h"
 #include "tierlift/ir/passes.h"
@@ -60,11 +61,12 @@ struct Front {
   std::optional<assembly::Loaded> loaded;
 };
 
-Front load(const std::string& path, const std::string& bytes, bool validate) {
+// Parsed, Windows' leniency applied, not validated (the validate stage does that).
+Front load(const std::string& path, const std::string& bytes) {
   Front f;
   uint32_t file = f.sources.add(path, bytes);
   assembly::LoadOptions o;
-  o.skip_validation = !validate;
+  o.skip_validation = true;
   f.loaded.emplace(assembly::load_listing(file, f.sources, o));
   return f;
 }
@@ -163,7 +165,7 @@ CaseResult run_listing(const std::string& id, const std::string& display_path, s
   r.form = std::string(assembly::listing_form_name(form));
 
   const auto t_parse = Clock::now();
-  Front parsed = load(display_path, bytes, false);
+  Front parsed = load(display_path, bytes);
   StageResult parse{std::string(kStageParse), Verdict::Pass, {}, 0};
   if (!parsed.loaded->program) {
     parse.verdict = newer_than_front_end(bytes, form) ? Verdict::Unsupported : Verdict::Fail;
@@ -175,14 +177,20 @@ CaseResult run_listing(const std::string& id, const std::string& display_path, s
   const bool parsed_ok = parse.verdict == Verdict::Pass;
   r.stages.push_back(std::move(parse));
 
-  std::optional<Front> valid;
+  // The program the parse stage read (with Windows' leniency applied, as load_listing does
+  // before it validates), validated as load_listing would: the listing is read once.
+  const ir::Program* valid = nullptr;
   stage(r, kStageValidate, parsed_ok, "not parsed", [&] {
-    valid.emplace(load(display_path, bytes, true));
+    const ir::Program& program = *parsed.loaded->program;
+    assembly::ValidateOptions vo;
+    vo.windows_leniency = true;
+    ir::DiagnosticSink diags;
     StageResult s{std::string(kStageValidate), Verdict::Pass, {}, 0};
-    if (!valid->loaded->program) {
+    if (assembly::validate(program, program.profile, diags, vo)) {
+      valid = &program;
+    } else {
       s.verdict = Verdict::Fail;
-      s.message = rendered(valid->loaded->program, valid->sources);
-      valid.reset();
+      s.message = first_lines(ir::render_text(diags, parsed.sources));
     }
     return s;
   });
@@ -190,12 +198,11 @@ CaseResult run_listing(const std::string& id, const std::string& display_path, s
   const char* later = options.check_only ? "check only" : "not valid";
   stage(r, kStageRoundTrip, parsed_ok && run_more, options.check_only ? later : "not parsed",
         [&] { return round_trip(parsed); });
-  stage(r, kStageSpirv, valid.has_value() && run_more, later,
-        [&] { return spirv(*valid->loaded->program, valid->sources); });
+  stage(r, kStageSpirv, valid && run_more, later, [&] { return spirv(*valid, parsed.sources); });
   const bool spirv_ok = r.stages.back().verdict == Verdict::Pass;
   stage(r, kStageDiff, spirv_ok && run_more && options.device,
         !options.device && run_more ? "no Vulkan device" : "no SPIR-V",
-        [&] { return differential_run(*valid->loaded->program, id, options, r.difference); });
+        [&] { return differential_run(*valid, id, options, r.difference); });
   r.verdict = overall(r);
   r.ms = ms_since(t0);
   return r;

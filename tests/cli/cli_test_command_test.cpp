@@ -192,3 +192,27 @@ TEST(CliTest, ShardsMergeIntoTheSingleRunAndResumeFinishesARun) {
   EXPECT_EQ(read_all(dir / "resumed" / "results.csv"), read_all(dir / "one" / "results.csv"));
   EXPECT_EQ(tierlift_test("", "--shard 3/3 " + common).exit_code, 2);
 }
+
+// A baseline kept as the output folder's own failures.csv (or costs as its results.jsonl)
+// would be replaced by this run's: the run is refused before it writes, and the file stays.
+TEST(CliTest, AnInputInTheOutputFolderIsRefusedAndKept) {
+  fs::path root = corpus("own_input"), out = root.parent_path() / "out";
+  tierlift_test("", "--check-only -o " + out.string() + " " + root.string());
+  const std::string baseline = "id,verdict,stage\nc/old.psh@0,fail,parse\n";
+  write(out / "failures.csv", baseline);
+  const std::string jsonl = read_all(out / "results.jsonl");
+  TestRun r = tierlift_test("", "--check-only --baseline " + (out / "failures.csv").string() +
+                                    " -o " + out.string() + " " + root.string());
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.out.find("failures.csv: refusing to run"), std::string::npos) << r.out;
+  EXPECT_EQ(read_all(out / "failures.csv"), baseline);
+  r = tierlift_test("", "--check-only --shard 0/2 --shard-costs " +
+                            (out / "results.jsonl").string() + " -o " + out.string() + " " +
+                            root.string());
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_EQ(read_all(out / "results.jsonl"), jsonl);
+  r = tierlift_test("", "merge " + out.string() + " -o " + (out.parent_path() / "m").string());
+  r = tierlift_test("", "merge " + out.string() + " -o " + (out.parent_path() / "m").string() +
+                            " --baseline " + (out.parent_path() / "m" / "failures.csv").string());
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+}

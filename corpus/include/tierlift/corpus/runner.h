@@ -6,17 +6,21 @@
 // Protocol, one JSON object per line: the coordinator writes a case to the worker's standard
 // input ({"id", "path"} or {"id", "text", "generated": {...}}); the worker answers with the
 // case's results.jsonl line on its standard output, the cases in the order written. The
-// coordinator writes the next case (at most one, of at most PIPE_BUF bytes) before the answer
-// to the running one arrives, so a worker never waits for it between cases; a worker that
-// dies or hangs costs the case it was running, and the one written ahead of it goes to the
-// worker started next. End of input: the worker exits.
+// coordinator writes the next cases (about 2 ms of work by the times answered so far, 1 to
+// 15 cases, together at most PIPE_BUF bytes) before the answer to the running one arrives,
+// so a worker never waits for it between cases; a worker that dies or hangs costs the case
+// it was running, and those written ahead of it go to the worker started next. End of input:
+// the worker exits.
 //
-// Every result is appended to DIR/results.jsonl (and flushed) as it arrives, so a run killed
-// whole keeps what it finished, and `resume` continues from there.
+// Every result is appended to DIR/results.jsonl as it arrives (the answers one wake of the
+// coordinator brings, in one write), so a run killed whole keeps what it finished, and
+// `resume` continues from there. A worker's line is written as it came, the command that
+// reproduces the case added.
 #pragma once
 
 #include <cstdio>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -44,10 +48,17 @@ struct RunOptions {
   Expectations expectations;
   // The command that reproduces a case alone (stored with its result).
   std::function<std::string(const Case&)> repro;
+  // What each case took before (microseconds by id: an earlier run's results.jsonl,
+  // read_costs): the cases are handed out costliest first (shard.h, costliest_first). Empty:
+  // the times of the run last written in out_dir (its results.jsonl, read before it is
+  // replaced), else the cases' sizes in bytes.
+  std::map<std::string, uint64_t> costs;
 };
 
 // Runs `cases` (their --skips already applied by the caller or not: a case whose id matches
-// a skip pattern is recorded `skip` without running) and writes the reports. The results
+// a skip pattern is recorded `skip` without running) and writes the reports. A case whose
+// file is one of the files the run writes in the output folder (output_guard.h) is refused
+// (rule "write") before anything is written. The results
 // are every case of DIR/results.jsonl afterwards (resumed ones included), sorted by id.
 ir::Result<std::vector<CaseResult>> run_corpus(const std::vector<Case>& cases,
                                                const RunOptions& options);

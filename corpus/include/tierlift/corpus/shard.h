@@ -27,4 +27,15 @@ std::vector<Case> balanced_shard(const std::vector<Case>& cases,
                                  const std::map<std::string, uint64_t>& costs, size_t index,
                                  size_t count);
 
+// The order a run hands its cases out in: costliest first (longest processing time first),
+// so that a long case does not start last while the other workers run out of work and wait
+// for it. `which` are positions in `cases`; the result is the same positions reordered. With
+// costs (an earlier run's, read_costs), a case they do not name costs their median, as in
+// balanced_shard; with none (or none that names one of these cases), a case costs its size
+// in bytes (its file's, or a generated
+// case's text), which on the bytecode corpora follows the time closely enough to put the few
+// long cases first. Equal costs keep the order of `which`.
+std::vector<size_t> costliest_first(const std::vector<Case>& cases, std::vector<size_t> which,
+                                    const std::map<std::string, uint64_t>& costs);
+
 } // namespace tierlift::corpus
