@@ -44,4 +44,17 @@ ir::Status refuse_outputs_among_inputs(const std::string& dir,
   return ir::ok_status();
 }
 
+ir::Status refuse_foreign_folder(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec) || fs::exists(fs::path(dir) / "results.jsonl", ec))
+    return ir::ok_status(); // new, or an earlier run's (a path that is no folder fails later)
+  if (fs::directory_iterator(dir, ec) == fs::directory_iterator()) return ir::ok_status();
+  return ir::fail(dir, "write",
+                  fmt::format("{}: refusing to write the results there: the folder holds other "
+                              "files and no results.jsonl, and the run would replace any of "
+                              "{} (give a new or empty folder)",
+                              dir, "results.csv, failures.csv, junit.xml, summary.md"));
+}
+
 } // namespace tierlift::corpus

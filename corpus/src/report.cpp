@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "tierlift/corpus/output_guard.h"
 #include "tierlift/io/bounded_read.h"
 #include "tierlift/io/output_file.h"
 
@@ -260,6 +261,7 @@ ir::Status write_reports(const std::string& dir, const std::vector<CaseResult>& 
 
 ir::Result<std::vector<CaseResult>> merge_folders(const std::vector<std::string>& dirs,
                                                   const std::string& out, const Expectations& e) {
+  if (ir::Status s = refuse_foreign_folder(out); !s) return s.failure();
   std::map<std::string, CaseResult> all;
   for (const std::string& dir : dirs) {
     const std::string path = (std::filesystem::path(dir) / "results.jsonl").string();

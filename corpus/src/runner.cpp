@@ -428,6 +428,7 @@ ir::Result<std::vector<CaseResult>> run_corpus(const std::vector<Case>& cases,
   std::vector<std::string> paths;
   for (const Case& c : cases)
     if (!c.path.empty()) paths.push_back(c.path);
+  if (ir::Status s = refuse_foreign_folder(options.out_dir); !s) return s.failure();
   if (ir::Status s = refuse_outputs_among_inputs(options.out_dir, paths); !s) return s.failure();
   Coordinator coordinator(cases, options);
   if (ir::Status s = coordinator.run(); !s) return s.failure();

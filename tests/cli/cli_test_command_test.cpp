@@ -216,3 +216,15 @@ TEST(CliTest, AnInputInTheOutputFolderIsRefusedAndKept) {
                             " --baseline " + (out.parent_path() / "m" / "failures.csv").string());
   EXPECT_EQ(r.exit_code, 2) << r.out;
 }
+
+// `-o` naming a folder of the user's own files (here a summary.md of theirs) is refused, and
+// the file stays.
+TEST(CliTest, AFolderOfOtherFilesIsNotWrittenInto) {
+  fs::path root = corpus("foreign"), out = root.parent_path() / "notes";
+  write(out / "summary.md", "my notes\n");
+  TestRun r = tierlift_test("", "--check-only -o " + out.string() + " " + root.string());
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.out.find("no results.jsonl"), std::string::npos) << r.out;
+  EXPECT_EQ(read_all(out / "summary.md"), "my notes\n");
+  EXPECT_FALSE(fs::exists(out / "results.jsonl"));
+}

@@ -23,4 +23,10 @@ std::vector<std::string> output_files(const std::string& dir);
 // costs one stat a listing.
 ir::Status refuse_outputs_among_inputs(const std::string& dir, std::span<const std::string> inputs);
 
+// Success when `dir` does not exist, is empty, or holds a run's results (a results.jsonl):
+// a run replaces its report files there, and in a folder of other files (`-o .` in a project)
+// one of them could be the user's own summary.md or results.csv. Otherwise a failure (rule
+// "write") that says so.
+ir::Status refuse_foreign_folder(const std::string& dir);
+
 } // namespace tierlift::corpus

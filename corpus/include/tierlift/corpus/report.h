@@ -64,7 +64,8 @@ ir::Status write_reports(const std::string& dir, const std::vector<CaseResult>& 
 std::string failures_csv(const std::vector<CaseResult>& results, const Expectations& e);
 
 // `tierlift test merge`: the results.jsonl of every folder, as one run, reported in `out`
-// (results.jsonl too). An id in more than one folder is an error (shards overlap).
+// (results.jsonl too). An id in more than one folder is an error (shards overlap); so is an
+// `out` that holds other files and no results.jsonl (output_guard.h).
 ir::Result<std::vector<CaseResult>> merge_folders(const std::vector<std::string>& dirs,
                                                   const std::string& out, const Expectations& e);
 

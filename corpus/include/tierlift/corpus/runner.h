@@ -56,9 +56,9 @@ struct RunOptions {
 };
 
 // Runs `cases` (their --skips already applied by the caller or not: a case whose id matches
-// a skip pattern is recorded `skip` without running) and writes the reports. A case whose
-// file is one of the files the run writes in the output folder (output_guard.h) is refused
-// (rule "write") before anything is written. The results
+// a skip pattern is recorded `skip` without running) and writes the reports. An output folder
+// of other files, or a case whose file is one of those the run writes there (output_guard.h),
+// is refused (rule "write") before anything is written. The results
 // are every case of DIR/results.jsonl afterwards (resumed ones included), sorted by id.
 ir::Result<std::vector<CaseResult>> run_corpus(const std::vector<Case>& cases,
                                                const RunOptions& options);

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tierlift/corpus/output_guard.h"
+#include "tierlift/corpus/report.h"
 #include "tierlift/corpus/runner.h"
 #include "tierlift/corpus/shard.h"
 
@@ -141,5 +142,34 @@ TEST(OutputGuard, AnInputThatIsAnOutputOfTheFolderIsRefused) {
   std::ifstream in(out / "failures.csv");
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}),
             "id,verdict,stage\nx,fail,parse\n");
+  fs::remove_all(dir);
+}
+
+// A folder of the user's files (`-o .` in a project) is not written into: its summary.md or
+// results.csv could be theirs. A new folder, an empty one, and one that holds a run's
+// results.jsonl are.
+TEST(OutputGuard, AFolderOfOtherFilesIsNotWrittenInto) {
+  const fs::path dir = fresh_dir("foreign");
+  EXPECT_TRUE(corpus::refuse_foreign_folder((dir / "new").string()));
+  EXPECT_TRUE(corpus::refuse_foreign_folder(dir.string())); // empty
+  std::ofstream(dir / "summary.md") << "my notes\n";
+  ir::Status s = corpus::refuse_foreign_folder(dir.string());
+  ASSERT_FALSE(s);
+  EXPECT_NE(s.message().find("no results.jsonl"), std::string::npos) << s.message();
+  corpus::RunOptions o;
+  o.worker_argv = {"/bin/bash", "-c", kIdLengthMs, "worker"};
+  o.out_dir = dir.string();
+  auto run = corpus::run_corpus({named("a")}, o);
+  ASSERT_FALSE(run);
+  EXPECT_EQ(run.diagnostics().front().rule, "write");
+  auto merged = corpus::merge_folders({(dir / "new").string()}, dir.string(), {});
+  ASSERT_FALSE(merged);
+  EXPECT_EQ(merged.diagnostics().front().rule, "write");
+  std::ifstream in(dir / "summary.md");
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), "my notes\n");
+  EXPECT_FALSE(fs::exists(dir / "results.jsonl"));
+  // An earlier run's folder is run into again.
+  std::ofstream(dir / "results.jsonl") << "";
+  EXPECT_TRUE(corpus::refuse_foreign_folder(dir.string()));
   fs::remove_all(dir);
 }
