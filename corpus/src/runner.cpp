@@ -348,8 +348,10 @@ private:
   // (a rerun's attempt, a flake, a reduced program): on a check-only run, serialising each
   // result again was the larger part of the coordinator's time a case.
   void record(const Case& c, CaseResult r, std::string answered = {}) {
+    // (A line that names "repro" at all, even empty, would get the key twice.)
     bool as_answered = !answered.empty() && answered.back() == '}' && r.attempt == attempt_ &&
-                       r.repro.empty() && !r.flaky && r.reduced.empty();
+                       !r.flaky && r.reduced.empty() &&
+                       answered.find("\"repro\"") == std::string::npos;
     r.attempt = attempt_;
     if (o_.repro) r.repro = o_.repro(c);
     const bool unexpected = is_failure(r.verdict) && !o_.expectations.baseline.contains(r.id) &&

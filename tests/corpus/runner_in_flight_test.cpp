@@ -3,6 +3,7 @@
 // case written ahead of it costs only the case it was running. The workers here are small bash
 // scripts that speak the protocol of runner.h.
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <string>
 #include <unistd.h>
@@ -160,5 +161,37 @@ TEST(CorpusRunner, TheResultsReturnedAreWhatResultsJsonlHolds) {
   EXPECT_EQ((*second)[1].attempt, 2u); // the rerun's line, the last of b's two
   EXPECT_TRUE((*second)[1].flaky);
   EXPECT_EQ((*second)[3].repro, "again d");
+  fs::remove_all(out);
+}
+
+// A worker's answer goes to results.jsonl as it came, with the repro command added; an answer
+// that already names "repro" (here empty) is written again from its parse instead, so that
+// the line never holds the key twice.
+TEST(CorpusRunner, AnAnswerIsWrittenAsItCameWithTheReproAdded) {
+  constexpr const char* kAnswers = R"(
+while IFS= read -r line; do
+  id=${line#\{\"id\":\"}; id=${id%%\"*}
+  if [ "$id" = a ]; then
+    printf '{"id":"a","verdict":"pass","stages":{},"extra":1}\n'
+  else
+    printf '{"id":"b","verdict":"pass","stages":{},"repro":""}\n'
+  fi
+done
+)";
+  const fs::path out =
+      fs::temp_directory_path() / ("tierlift_as_came_" + std::to_string(::getpid()));
+  fs::remove_all(out);
+  corpus::RunOptions o;
+  o.worker_argv = {"/bin/bash", "-c", kAnswers, "worker"};
+  o.out_dir = out.string();
+  o.repro = [](const corpus::Case& c) { return "again " + c.id; };
+  ASSERT_TRUE(corpus::run_corpus(cases({"a", "b"}), o));
+  std::ifstream in(out / "results.jsonl");
+  std::string a, b;
+  std::getline(in, a);
+  std::getline(in, b);
+  EXPECT_EQ(a, R"({"id":"a","verdict":"pass","stages":{},"extra":1,"repro":"again a"})");
+  EXPECT_EQ(b.find("\"repro\""), b.rfind("\"repro\"")) << b; // once
+  EXPECT_NE(b.find(R"("repro":"again b")"), std::string::npos) << b;
   fs::remove_all(out);
 }
