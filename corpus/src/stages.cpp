@@ -10,7 +10,6 @@
 #include "diff_run.h"
 #include "tierlift/assembly/bytecode.h"
 #include "tierlift/assembly/load.h"
-#include "tierlift/assembly/validator.h"
 #include "tierlift/codegen/codegen.h"
 #include "tierlift/io/bounded_read.h"
 #include "tierlift/ir/passes.h"
@@ -61,13 +60,18 @@ struct Front {
   std::optional<assembly::Loaded> loaded;
 };
 
-// Parsed, Windows' leniency applied, not validated (the validate stage does that).
+// How a case is read: as `tierlift check` reads it (Windows' leniency applied), not validated
+// (the validate stage does that, assembly::validate_loaded, with the same options).
+assembly::LoadOptions front_end_options() {
+  assembly::LoadOptions o;
+  o.skip_validation = true;
+  return o;
+}
+
 Front load(const std::string& path, const std::string& bytes) {
   Front f;
   uint32_t file = f.sources.add(path, bytes);
-  assembly::LoadOptions o;
-  o.skip_validation = true;
-  f.loaded.emplace(assembly::load_listing(file, f.sources, o));
+  f.loaded.emplace(assembly::load_listing(file, f.sources, front_end_options()));
   return f;
 }
 
@@ -177,16 +181,14 @@ CaseResult run_listing(const std::string& id, const std::string& display_path, s
   const bool parsed_ok = parse.verdict == Verdict::Pass;
   r.stages.push_back(std::move(parse));
 
-  // The program the parse stage read (with Windows' leniency applied, as load_listing does
-  // before it validates), validated as load_listing would: the listing is read once.
+  // The program the parse stage read, validated as load_listing would: the listing is read
+  // once.
   const ir::Program* valid = nullptr;
   stage(r, kStageValidate, parsed_ok, "not parsed", [&] {
     const ir::Program& program = *parsed.loaded->program;
-    assembly::ValidateOptions vo;
-    vo.windows_leniency = true;
     ir::DiagnosticSink diags;
     StageResult s{std::string(kStageValidate), Verdict::Pass, {}, 0};
-    if (assembly::validate(program, program.profile, diags, vo)) {
+    if (assembly::validate_loaded(program, front_end_options(), diags)) {
       valid = &program;
     } else {
       s.verdict = Verdict::Fail;

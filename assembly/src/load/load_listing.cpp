@@ -42,15 +42,20 @@ std::optional<ir::Program> check_program(std::optional<ir::Program> program,
     return std::nullopt;
   }
   if (!options.strict) apply_windows_leniency(*program, profile, diags);
-  ValidateOptions vo;
-  vo.warnings = options.warnings;
-  vo.caps = options.caps;
-  vo.windows_leniency = !options.strict;
-  if (!options.skip_validation && !validate(*program, profile, diags, vo)) return std::nullopt;
+  if (!options.skip_validation && !validate_loaded(*program, options, diags)) return std::nullopt;
   return program;
 }
 
 } // namespace
+
+bool validate_loaded(const ir::Program& program, const LoadOptions& options,
+                     ir::DiagnosticSink& diags) {
+  ValidateOptions vo;
+  vo.warnings = options.warnings;
+  vo.caps = options.caps;
+  vo.windows_leniency = !options.strict;
+  return validate(program, options.profile.value_or(program.profile), diags, vo);
+}
 
 Loaded load_listing(uint32_t file, ir::SourceManager& sm, const LoadOptions& options) {
   // The readers and the validator report into a sink of their own; what it holds at the end

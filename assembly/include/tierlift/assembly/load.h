@@ -68,4 +68,12 @@ struct Loaded {
 // text is emptied afterwards: its diagnostics carry byte offsets, never lines to quote.
 Loaded load_listing(uint32_t file, ir::SourceManager& sm, const LoadOptions& options = {});
 
+// The validation load_listing runs on the program it read (against options.profile or the
+// program's own, with options.caps and options.warnings, Windows' leniency taken unless
+// strict), for a program loaded with skip_validation and validated later (`tierlift test`
+// reads a listing once and validates it as a stage of its own). options.skip_validation is
+// not looked at. True when no error was reported.
+bool validate_loaded(const ir::Program& program, const LoadOptions& options,
+                     ir::DiagnosticSink& diags);
+
 } // namespace tierlift::assembly
