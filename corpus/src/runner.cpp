@@ -144,7 +144,10 @@ std::string file_name_of(const std::string& id) {
 
 class Coordinator {
 public:
-  Coordinator(const std::vector<Case>& cases, const RunOptions& o) : cases_(cases), o_(o) {}
+  // `listings`: the files of the cases (a reduced program is never written over one).
+  Coordinator(const std::vector<Case>& cases, const RunOptions& o,
+              const std::vector<std::string>& listings)
+      : cases_(cases), o_(o), listings_(listings) {}
 
   // Every case's last result, by id: what results.jsonl holds after the run (the last line of
   // each id wins), kept as recorded instead of read back and parsed again at the end (on a
@@ -190,9 +193,9 @@ public:
       }
       to_run.push_back(i);
     }
+    flush_results(); // the skipped ones
     // Costliest first: on a corpus where a few cases take a tenth of the time each, the last
     // one handed out decides when the run ends.
-    flush_results();
     to_run = costliest_first(cases_, std::move(to_run), costs);
     std::deque<size_t> pending(to_run.begin(), to_run.end());
     total_ = pending.size();
@@ -348,24 +351,24 @@ private:
   // (a rerun's attempt, a flake, a reduced program): on a check-only run, serialising each
   // result again was the larger part of the coordinator's time a case.
   void record(const Case& c, CaseResult r, std::string answered = {}) {
-    // (A line that names "repro" at all, even empty, would get the key twice.)
-    bool as_answered = !answered.empty() && answered.back() == '}' && r.attempt == attempt_ &&
-                       !r.flaky && r.reduced.empty() &&
-                       answered.find("\"repro\"") == std::string::npos;
+    const unsigned answered_attempt = r.attempt;
     r.attempt = attempt_;
     if (o_.repro) r.repro = o_.repro(c);
     const bool unexpected = is_failure(r.verdict) && !o_.expectations.baseline.contains(r.id) &&
                             !Expectations::matches(o_.expectations.flakes, r.id);
     if (attempt_ == 1 && unexpected) rerun_.push_back(index_of(c));
     if (attempt_ == 2 && !is_failure(r.verdict)) r.flaky = true;
-    as_answered = as_answered && !r.flaky;
+    // (A line that names "repro" at all, even empty, would get the key twice.)
+    const bool as_answered = !answered.empty() && answered.back() == '}' &&
+                             answered_attempt == attempt_ && !r.flaky && r.reduced.empty() &&
+                             answered.find("\"repro\"") == std::string::npos;
     if (!r.reduced.empty()) {
       namespace fs = std::filesystem;
       std::error_code ec;
       fs::create_directories(fs::path(o_.out_dir) / "reduced", ec);
       const std::string path =
           (fs::path(o_.out_dir) / "reduced" / (file_name_of(r.id) + ".asm")).string();
-      if (!is_a_listing(path) && io::write_output(path, r.reduced))
+      if (io::refuse_if_input(path, listings_) && io::write_output(path, r.reduced))
         r.repro += fmt::format(" (reduced program: tierlift test {})", path);
     }
     if (as_answered && !r.repro.empty()) {
@@ -379,13 +382,6 @@ private:
       if (is_failure(r.verdict)) ++failures_;
     }
     results_[r.id] = std::move(r);
-  }
-
-  // A reduced program is not written over a listing of the run (a folder of earlier
-  // results tested again holds them).
-  bool is_a_listing(const std::string& path) const {
-    return std::any_of(cases_.begin(), cases_.end(),
-                       [&](const Case& c) { return io::same_file(path, c.path); });
   }
 
   // Cases to write after the running one (kAheadMs).
@@ -407,6 +403,7 @@ private:
 
   const std::vector<Case>& cases_;
   const RunOptions& o_;
+  const std::vector<std::string>& listings_;
   std::vector<Worker> workers_;
   std::deque<size_t>* pending_ = nullptr; // drain's queue: where a dead worker's cases go back
   std::vector<size_t> rerun_;
@@ -432,7 +429,7 @@ ir::Result<std::vector<CaseResult>> run_corpus(const std::vector<Case>& cases,
     if (!c.path.empty()) paths.push_back(c.path);
   if (ir::Status s = refuse_foreign_folder(options.out_dir); !s) return s.failure();
   if (ir::Status s = refuse_outputs_among_inputs(options.out_dir, paths); !s) return s.failure();
-  Coordinator coordinator(cases, options);
+  Coordinator coordinator(cases, options, paths);
   if (ir::Status s = coordinator.run(); !s) return s.failure();
   std::vector<CaseResult> results = coordinator.take_results();
   if (ir::Status s = write_reports(options.out_dir, results, options.expectations); !s)
