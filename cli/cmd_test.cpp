@@ -3,6 +3,7 @@
 // Flags, the worker's entry and printing live here; the run itself in tierlift_corpus.
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <stdexcept>
 #include <thread>
 #include <unistd.h>
@@ -109,7 +110,10 @@ ir::Result<corpus::Expectations> expectations(const TestFlags& f) {
   return e;
 }
 
-ir::Result<std::vector<corpus::Case>> gather(const TestFlags& f) {
+// The cases of the run; `costs`: those of --shard-costs, read once (they shard the run and
+// order its cases).
+ir::Result<std::vector<corpus::Case>> gather(const TestFlags& f,
+                                             std::map<std::string, uint64_t>& costs) {
   std::vector<corpus::Case> cases;
   if (!f.paths.empty()) {
     auto found = corpus::discover(f.paths);
@@ -135,9 +139,10 @@ ir::Result<std::vector<corpus::Case>> gather(const TestFlags& f) {
       return ir::fail("--shard", "usage",
                       fmt::format("--shard {}: expected I/N with 0 <= I < N", f.shard));
     if (!f.shard_costs.empty()) {
-      auto costs = corpus::read_costs(f.shard_costs);
-      if (!costs) return costs.failure();
-      cases = corpus::balanced_shard(cases, *costs, index, count);
+      auto read = corpus::read_costs(f.shard_costs);
+      if (!read) return read.failure();
+      costs = std::move(*read);
+      cases = corpus::balanced_shard(cases, costs, index, count);
     } else {
       std::erase_if(cases,
                     [&](const corpus::Case& c) { return !corpus::in_shard(c, index, count); });
@@ -189,7 +194,8 @@ int run_test(const TestFlags& f) {
     report.error(e.diagnostics().front().rule, e.message());
     return report.finish(kExitUsage);
   }
-  auto cases = gather(f);
+  std::map<std::string, uint64_t> costs;
+  auto cases = gather(f, costs);
   if (!cases) {
     report.error(cases.diagnostics().front().rule, cases.message());
     return report.finish(kExitUsage);
@@ -204,8 +210,7 @@ int run_test(const TestFlags& f) {
     return report.finish(kExitUsage);
   }
   corpus::RunOptions o;
-  if (!f.shard_costs.empty())
-    if (auto costs = corpus::read_costs(f.shard_costs)) o.costs = std::move(*costs);
+  o.costs = std::move(costs);
   char self[4096];
   const ssize_t n = ::readlink("/proc/self/exe", self, sizeof self - 1);
   o.worker_argv = {n > 0 ? std::string(self, static_cast<size_t>(n)) : std::string("tierlift"),
