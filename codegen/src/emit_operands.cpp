@@ -58,18 +58,20 @@ Id Emitter::load_const(uint32_t index, const std::optional<ir::RelAddr>& rel) {
   // would fold def-only arithmetic with denormals kept, the same arithmetic at run time
   // flushes them.
   const bool flush = opt.conventions.rounding == ir::Rounding::Llvmpipe;
+  auto loaded = [&](const ir::ConstDef& d) {
+    std::array<float, 4> v;
+    for (int i = 0; i < 4; ++i) v[i] = flush ? ir::numerics::flush_denormal(d.f(i)) : d.f(i);
+    return v;
+  };
   auto def_value = [&](const ir::ConstDef& d) {
-    auto c = [&](int i) { return flush ? ir::numerics::flush_denormal(d.f(i)) : d.f(i); };
-    return vec4_const(c(0), c(1), c(2), c(3));
+    const std::array<float, 4> v = loaded(d);
+    return vec4_const(v[0], v[1], v[2], v[3]);
   };
   // CodegenOptions::defs_in_block: the def is read from its slot in the block, where the
   // device writes its value, so lavapipe's compiler folds no arithmetic on it.
   auto in_block = [&](uint32_t slot, const ir::ConstDef& d) {
     if (!opt.defs_in_block || slot >= relative_limit()) return false;
-    block_defs_[slot] = {flush ? ir::numerics::flush_denormal(d.f(0)) : d.f(0),
-                         flush ? ir::numerics::flush_denormal(d.f(1)) : d.f(1),
-                         flush ? ir::numerics::flush_denormal(d.f(2)) : d.f(2),
-                         flush ? ir::numerics::flush_denormal(d.f(3)) : d.f(3)};
+    block_defs_[slot] = loaded(d);
     return true;
   };
   const Id ptr_vec4 = b.type_pointer(SC::Uniform, t_vec4);
