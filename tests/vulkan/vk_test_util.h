@@ -197,6 +197,15 @@ inline bool same_float_bits(float x, float y) {
   return std::bit_cast<uint32_t>(x) == std::bit_cast<uint32_t>(y) || (x != x && y != y);
 }
 
+// How many values differ in their bits (same_float_bits) between `a` and `b`, counting the
+// first `channels` channels of each pixel: the images the three-way draws give.
+inline size_t values_off(const img::Image& a, const img::Image& b, int channels) {
+  size_t n = 0;
+  for (size_t i = 0; i < a.rgba.size() && i < b.rgba.size(); ++i)
+    n += static_cast<int>(i % 4) < channels && !same_float_bits(a.rgba[i], b.rgba[i]);
+  return n;
+}
+
 // A pass whose pixel i reads texel i of `tex` (POINT, CLAMP, modern pixel centres: point
 // sampling at (i + ½)/W) through `pixel_listing`, which reads the quad's uv from t0 (ps_2_0)
 // or from a dcl_texcoord v0 (ps_3_0), and a vertex program of the same model passing it on.
