@@ -12,10 +12,17 @@
 namespace tierlift::corpus {
 namespace {
 
-vulkan::Device* lavapipe() {
-  ir::Result<vulkan::Device*> d = vulkan::process_device({});
-  return d ? *d : nullptr;
-}
+// The process's Vulkan device; without one every test skips, and fails under
+// TIERLIFT_REQUIRE_VULKAN (CI).
+class LavapipeWorkarounds : public ::testing::Test {
+protected:
+  void SetUp() override {
+    ir::Result<vulkan::Device*> d = vulkan::process_device({});
+    if (!d) TIERLIFT_SKIP_UNLESS_REQUIRED(::tierlift::test::kRequireVulkan, d.message());
+    device = *d;
+  }
+  vulkan::Device* device = nullptr;
+};
 
 // Runs `text` through every stage as case `id` of a run seeded `seed` and expects its
 // differential stage to pass. The id and the seed choose the generated inputs: a reduced
@@ -33,9 +40,7 @@ void expect_differential_pass(vulkan::Device& device, const std::string& id, con
 // `tierlift test --generate 200 --profile ps_2_0 --seed 3`, case 00075, reduced: abs of a
 // constant vector with a NaN in z came back unchanged from lavapipe (G: −inf, not inf) while
 // GLSL FAbs was the emitted form (codegen SpirvArith::abs now clears the sign bit).
-TEST(LavapipeWorkarounds, AbsOfAConstantVectorHoldingNan) {
-  vulkan::Device* device = lavapipe();
-  if (!device) TIERLIFT_SKIP_UNLESS_REQUIRED(::tierlift::test::kRequireVulkan, "no Vulkan device");
+TEST_F(LavapipeWorkarounds, AbsOfAConstantVectorHoldingNan) {
   for (const char* text : {"ps_2_0\ndef c2, inf, -inf, 0x7fc00000, 0.5\nabs r7, c2\nmov oC0, r7\n",
                            "ps_2_0\ndef c2, 1, -2, 0x7fc00000, 0.5\nmov r0, c2\nabs r7, r0\n"
                            "mov oC0, r7\n"})
@@ -47,9 +52,7 @@ TEST(LavapipeWorkarounds, AbsOfAConstantVectorHoldingNan) {
 // a different alpha than it computes at run time (1 where the interpreter, and lavapipe on the
 // same values from a uniform, give 0). The differential run's modules read such a def from the
 // uniform block (codegen::CodegenOptions::defs_in_block).
-TEST(LavapipeWorkarounds, SgnOfADefHoldingNonFiniteValues) {
-  vulkan::Device* device = lavapipe();
-  if (!device) TIERLIFT_SKIP_UNLESS_REQUIRED(::tierlift::test::kRequireVulkan, "no Vulkan device");
+TEST_F(LavapipeWorkarounds, SgnOfADefHoldingNonFiniteValues) {
   expect_differential_pass(*device, "generated/vs_2_0/seed1/00126@aef80c19a15f8799", "sgn.vsh",
                            "vs_2_0\ndcl_position v0\ndef c2, inf, -inf, 0x7fc00000, 0.5\nrep i0\n"
                            "endrep\nsgn r2, c2, r0, r2\nlrp r1, c0, r2, c0\nmov oPos, c0\n"
@@ -63,9 +66,7 @@ TEST(LavapipeWorkarounds, SgnOfADefHoldingNonFiniteValues) {
 // fraction of −1.2e-36 rounds to 1, and 2^-1·P(1) = 1 − 2^-24), and frc showed the last bit.
 // The differential run's modules read every def from the uniform block
 // (codegen::CodegenOptions::defs_in_block), so nothing of it is folded.
-TEST(LavapipeWorkarounds, PowOfDefsIsComputedAtRunTime) {
-  vulkan::Device* device = lavapipe();
-  if (!device) TIERLIFT_SKIP_UNLESS_REQUIRED(::tierlift::test::kRequireVulkan, "no Vulkan device");
+TEST_F(LavapipeWorkarounds, PowOfDefsIsComputedAtRunTime) {
   expect_differential_pass(*device, "generated/vs_3_0/seed3/01220@989330651a2829e0", "pow.vsh",
                            "vs_3_0\ndcl_position v0\ndcl_normal v1\ndcl_color o1\n"
                            "def c1, 1e+30, -1e+30, 1e-40, -1.1754944e-38\npow r7, c1.y, c1\n"
@@ -81,9 +82,7 @@ TEST(LavapipeWorkarounds, PowOfDefsIsComputedAtRunTime) {
 // denormal, it is −8.8e-40 < 0 and the pixel was killed. The differential run's modules read
 // every def from the uniform block (codegen::CodegenOptions::defs_in_block), so nothing of it
 // is folded.
-TEST(LavapipeWorkarounds, TexkillOfADenormalFoldedFromDefs) {
-  vulkan::Device* device = lavapipe();
-  if (!device) TIERLIFT_SKIP_UNLESS_REQUIRED(::tierlift::test::kRequireVulkan, "no Vulkan device");
+TEST_F(LavapipeWorkarounds, TexkillOfADenormalFoldedFromDefs) {
   expect_differential_pass(*device, "generated/ps_3_0/seed2/00147@8010c8d0afc25b5e", "kill.psh",
                            "ps_3_0\ndef c0, 0, -0, 1, -1\n"
                            "def c1, 1e+30, -1e+30, 1e-40, -1.1754944e-38\n"
