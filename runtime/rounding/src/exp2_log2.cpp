@@ -4,15 +4,14 @@
 #include <cstdint>
 #include <limits>
 
+#include "llvmpipe_fp32.h"
 #include "tierlift/rounding/rounding.h"
 
 namespace tierlift::rounding {
 namespace {
 
-// llvmpipe builds its constants from doubles: each is the double rounded to float.
-constexpr float single(double d) {
-  return static_cast<float>(d);
-}
+using namespace llvmpipe_fp32;
+
 // 2^f ≈ e0 + f·e1 + f²·e2 + … + f⁵·e5 for f in [0, 1) (a minimax fit whose constant term is
 // exactly 1, so that 2^integer is exact).
 constexpr float kExp[6] = {single(1.0),
@@ -29,29 +28,6 @@ constexpr float kLog[5] = {single(2.88539009343309178325), single(0.961791550404
 // exp2's argument is clamped to [kExpLow, 128]: 2^128 is +inf, and below −127 the integer part
 // would leave the exponent field.
 constexpr float kExpLow = single(-126.99999);
-
-// Each fp32 operation of llvmpipe's shader code reads and writes denormals as zeros (rule 13).
-float mul(float a, float b) {
-  return flush(flush(a) * flush(b));
-}
-float add(float a, float b) {
-  return flush(flush(a) + flush(b));
-}
-float sub(float a, float b) {
-  return flush(flush(a) - flush(b));
-}
-float divide(float a, float b) {
-  return flush(flush(a) / flush(b));
-}
-float fused(float a, float b, float c) { // llvm.fmuladd, one FMA on an x86-64 with FMA3
-  return flush(std::fma(flush(a), flush(b), flush(c)));
-}
-
-// cvttps2dq: truncation toward zero; NaN and values out of the int32 range give INT32_MIN.
-int32_t truncate_x86(float y) {
-  if (!(y > -2147483904.0f && y < 2147483648.0f)) return std::numeric_limits<int32_t>::min();
-  return static_cast<int32_t>(y);
-}
 
 // gallivm's polynomial evaluation: the even and the odd coefficients each in a Horner chain
 // of FMAs in x², then odd·x + even in one more FMA.

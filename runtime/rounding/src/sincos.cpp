@@ -4,15 +4,14 @@
 #include <cstdint>
 #include <limits>
 
+#include "llvmpipe_fp32.h"
 #include "tierlift/rounding/rounding.h"
 
 namespace tierlift::rounding {
 namespace {
 
-// llvmpipe builds its constants from doubles: each is the double rounded to float.
-constexpr float single(double d) {
-  return static_cast<float>(d);
-}
+using namespace llvmpipe_fp32;
+
 constexpr float kFourOverPi = single(1.27323954473516);
 // π/4 in three parts whose products by a small integer are exact (Cody and Waite).
 constexpr float kQuarterPi1 = single(0.78515625);
@@ -26,23 +25,6 @@ constexpr float kCos2 = single(4.166664568298827e-2);
 constexpr float kSin0 = single(-1.9515295891e-4);
 constexpr float kSin1 = single(8.3321608736e-3);
 constexpr float kSin2 = single(-1.6666654611e-1);
-
-// Each fp32 operation of llvmpipe's shader code reads and writes denormals as zeros (rule 13).
-float mul(float a, float b) {
-  return flush(flush(a) * flush(b));
-}
-float add(float a, float b) {
-  return flush(flush(a) + flush(b));
-}
-float fused(float a, float b, float c) { // llvm.fmuladd, one FMA on an x86-64 with FMA3
-  return flush(std::fma(flush(a), flush(b), flush(c)));
-}
-
-// cvttps2dq: truncation toward zero; NaN and values out of the int32 range give INT32_MIN.
-int32_t truncate_x86(float y) {
-  if (!(y > -2147483904.0f && y < 2147483648.0f)) return std::numeric_limits<int32_t>::min();
-  return static_cast<int32_t>(y);
-}
 
 // The octant j of |a| (even, the nearest multiple of π/4 at or above a/(π/4) rounded so),
 // the reduced argument r = |a| − j·π/4 in [−π/4, π/4], one of the two polynomials by j,
