@@ -1,5 +1,7 @@
 #include "tierlift/corpus/cases.h"
 
+#include "version_line.h"
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -165,28 +167,7 @@ bool looks_like_listing(std::string_view bytes) {
            static_cast<unsigned char>(bytes[2]) >= 0xFE;
   case assembly::ListingForm::Text: break;
   }
-  // A version line: at the start of a line, after blanks, vs or ps, '.' or '_', a digit,
-  // '.' or '_', then a digit, x, s or w ("ps_2_0", "vs.1.1", "ps_2_x", "PS_3_SW"), in any case.
-  // Scanned by hand: std::regex took most of the time of finding 2,000 listings in a folder.
-  auto lower = [](char c) {
-    return static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  };
-  auto version_at = [&](size_t i) {
-    while (i < bytes.size() && (bytes[i] == ' ' || bytes[i] == '\t')) ++i;
-    if (i + 6 > bytes.size()) return false;
-    const char a = lower(bytes[i]), b = lower(bytes[i + 1]), last = lower(bytes[i + 5]);
-    auto sep = [&](size_t k) { return bytes[k] == '.' || bytes[k] == '_'; };
-    auto digit = [&](size_t k) { return bytes[k] >= '0' && bytes[k] <= '9'; };
-    return (a == 'v' || a == 'p') && b == 's' && sep(i + 2) && digit(i + 3) && sep(i + 4) &&
-           ((last >= '0' && last <= '9') || last == 'x' || last == 's' || last == 'w');
-  };
-  for (size_t i = 0; i < bytes.size();) {
-    if (version_at(i)) return true;
-    const size_t newline = bytes.find('\n', i);
-    if (newline == std::string_view::npos) break;
-    i = newline + 1;
-  }
-  return false;
+  return version_line_major(bytes).has_value();
 }
 
 ir::Result<std::vector<Case>> discover(const std::vector<std::string>& roots) {

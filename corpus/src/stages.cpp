@@ -15,6 +15,7 @@
 #include "tierlift/ir/passes.h"
 #include "tierlift/ir/profile.h"
 #include "tierlift/ir/result_diagnostics.h"
+#include "version_line.h"
 
 namespace tierlift::corpus {
 namespace {
@@ -47,12 +48,12 @@ bool newer_than_front_end(std::string_view bytes, assembly::ListingForm form) {
                           (static_cast<unsigned>(static_cast<unsigned char>(bytes[3])) << 8);
     return (kind == 0xFFFE || kind == 0xFFFF) && major >= 4;
   }
-  static const std::regex version(R"((^|\n)[ \t]*(vs|ps)[._]([4-9])[._])", std::regex::icase);
   if (form == assembly::ListingForm::TokenArray) {
     static const std::regex token(R"(0x[fF]{3}[eEfF]0[4-9]0)");
     return std::regex_search(bytes.begin(), bytes.end(), token);
   }
-  return std::regex_search(bytes.begin(), bytes.end(), version);
+  const std::optional<char> major = version_line_major(bytes);
+  return major && *major >= '4';
 }
 
 struct Front {
